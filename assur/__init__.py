@@ -1,0 +1,62 @@
+"""assur: kinetostatic analysis of planar linkages, built on Assur groups.
+
+Describe a mechanism (links, revolute and prismatic joints, masses, loads, the driving
+crank), then get its structure, its kinematics over a sweep of driver positions, and its
+inertia loads, joint reactions and balancing torque.
+
+>>> import assur
+>>> mech = assur.catalog.slider_crank()
+>>> print(assur.structure(mech).formula)
+I(ground, crank) -> II(rod, slider)
+"""
+
+from importlib.metadata import PackageNotFoundError, version
+
+from assur import catalog
+from assur.analysis import Table, forces, kinematics
+from assur.errors import (
+    AssemblyError,
+    AssurError,
+    AssurWarning,
+    DecompositionError,
+    ModelError,
+    SingularConfigurationError,
+)
+from assur.io import dumps, load, loads, save
+from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
+from assur.structure import Group, Structure, mobility, structure
+
+try:
+    __version__ = version("assur")
+except PackageNotFoundError:  # pragma: no cover - running from a source tree
+    __version__ = "0.0.0"
+
+__all__ = [
+    "AssemblyError",
+    "AssurError",
+    "AssurWarning",
+    "DecompositionError",
+    "Driver",
+    "Group",
+    "Joint",
+    "Link",
+    "Load",
+    "LoadTable",
+    "Mechanism",
+    "ModelError",
+    "Point",
+    "SingularConfigurationError",
+    "Structure",
+    "Table",
+    "Toward",
+    "__version__",
+    "catalog",
+    "dumps",
+    "forces",
+    "kinematics",
+    "load",
+    "loads",
+    "mobility",
+    "save",
+    "structure",
+]

@@ -1,0 +1,103 @@
+"""Table columns of the file contract, built as views of the solved arrays.
+
+The order is: ``angle``; every moving link's angle and its derivatives; every joint's,
+extra point's and centre of mass's position and derivatives (prismatic joints also
+their slide); then the loads and reactions of a force analysis.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from assur._vec import Array
+from assur.kinematics import KinematicState
+from assur.kinetostatics import ForceState
+from assur.plan import Plan
+
+__all__ = ["build_columns"]
+
+POINT_SUFFIXES = ("x", "y", "vx", "vy", "ax", "ay", "jx", "jy")
+
+
+def build_columns(plan: Plan, state: KinematicState,
+                  forces: ForceState | None) -> tuple[tuple[str, ...], dict[str, Array]]:
+    """Return the column names and a name-to-array mapping for a solved sweep."""
+    data: dict[str, Array] = {}
+    drivers = plan.drivers
+    drive = [np.degrees(state.drive[:, i]) if d.kind == "R" else state.drive[:, i]
+             for i, d in enumerate(drivers)]
+    data["angle"] = drive[0]
+    if len(drivers) > 1:
+        for d, values in zip(drivers, drive):
+            data[f"{d.pair.name}.drive"] = values
+    driven = {d.body for d in drivers}
+    for b, name in enumerate(plan.bodies):
+        if b == 0 or "~" in name:
+            continue
+        angle = plan.angle0[b] + state.link[0, :, b]
+        if b not in driven and angle.size:
+            angle = np.unwrap(angle)
+            angle = angle - 2.0 * math.pi * np.round((angle[0] - _wrapped(angle[0])) / (2 * math.pi))
+        data[f"{name}.angle"] = np.degrees(angle)
+        for k, key in ((1, "omega"), (2, "alpha"), (3, "jerk")):
+            data[f"{name}.{key}"] = state.link[k, :, b]
+    for p, name in enumerate(plan.points):
+        for k in range(4):
+            data[f"{name}.{POINT_SUFFIXES[2 * k]}"] = state.point[k, :, p, 0]
+            data[f"{name}.{POINT_SUFFIXES[2 * k + 1]}"] = state.point[k, :, p, 1]
+        if name in state.slide:
+            for k, key in enumerate(("s", "v", "a", "j")):
+                data[f"{name}.{key}"] = state.slide[name][k]
+    if forces is not None:
+        _force_columns(plan, state, forces, data)
+    for values in data.values():
+        values.flags.writeable = False
+    return tuple(data), data
+
+
+def _wrapped(x: float) -> float:
+    return math.pi - (math.pi - x) % (2.0 * math.pi)
+
+
+def _force_columns(plan: Plan, state: KinematicState, forces: ForceState,
+                   data: dict[str, Array]) -> None:
+    from assur.loads import compile_loads
+
+    loads = compile_loads(plan)
+    for b, name in enumerate(plan.bodies):
+        if b and loads.mass[b] > 0 and "~" not in name:
+            data[f"{name}.Fi.x"] = forces.inertia_force[:, b, 0]
+            data[f"{name}.Fi.y"] = forces.inertia_force[:, b, 1]
+            data[f"{name}.Mi"] = forces.inertia_torque[:, b]
+    for name, pair in plan.pairs.items():
+        if pair.virtual:
+            continue
+        force, couple = forces.reactions[name]
+        data[f"{name}.Fx"] = force[:, 0]
+        data[f"{name}.Fy"] = force[:, 1]
+        data[f"{name}.F"] = np.hypot(force[:, 0], force[:, 1])
+        if pair.kind == "P":
+            data[f"{name}.M"] = couple
+            # the resultant normal force acts this far along the axis from the point
+            phi = state.link[0, :, pair.first]
+            n0 = pair.normal
+            normal = (force[:, 0] * (np.cos(phi) * n0[0] - np.sin(phi) * n0[1])
+                      + force[:, 1] * (np.sin(phi) * n0[0] + np.cos(phi) * n0[1]))
+            with np.errstate(divide="ignore", invalid="ignore"):
+                data[f"{name}.offset"] = np.where(np.abs(normal) > 1e-12, couple / normal,
+                                                  np.nan)
+    for i, d in enumerate(plan.drivers):
+        what = "torque" if d.kind == "R" else "force"
+        if i == 0:
+            data[f"driver.{what}"] = forces.balancing[:, 0]
+            data[f"driver.{what}_check"] = forces.check[:, 0]
+        if len(plan.drivers) > 1:
+            data[f"{d.pair.name}.{what}"] = forces.balancing[:, i]
+            data[f"{d.pair.name}.{what}_check"] = forces.check[:, i]
+    data["shaking.Fx"] = forces.shaking[:, 0]
+    data["shaking.Fy"] = forces.shaking[:, 1]
+    data["shaking.M"] = forces.shaking[:, 2]
+    data["residual.force"] = forces.residual[:, 0]
+    data["residual.moment"] = forces.residual[:, 1]

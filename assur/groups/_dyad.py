@@ -1,0 +1,210 @@
+"""What every dyad (class II group) shares: its coordinates, derivatives and reactions.
+
+Each of a dyad's two links hangs on a known link by an external pair, which leaves it
+one coordinate: its rotation (revolute pair, the body's origin is the pin) or its slide
+along the guide (prismatic pair, the body turns with the guide). The middle pair gives
+two equations in those two coordinates. Positions are closed form, one module per kind;
+velocities, accelerations and jerks solve the same 2x2 Jacobian with Cramer's rule,
+element by element over the batch; reactions eliminate the external pairs with one
+equation per link (the virtual power along that link's own coordinate).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from math import comb
+
+import numpy as np
+
+from assur._vec import Array
+from assur.groups._motion import Motion, direction, point
+from assur.groups._pairs import PairPlan, partials, residual, unit_wrenches
+
+__all__ = ["DyadPlan", "Wrench", "derivative", "jacobian", "reactions", "set_pose"]
+
+Wrench = list[Array]
+"""``[F_x, F_y, tau]``: a force (N) and its moment about the fixed origin (N m)."""
+
+
+@dataclass(frozen=True, slots=True)
+class DyadPlan:
+    """Precomputed data of one dyad.
+
+    ``bodies`` are the two links' indices in signature order, ``ext`` their external
+    pairs, ``mid`` the middle pair, ``known`` the known links the external pairs join,
+    ``d_known`` the external pairs' offsets on those links, ``d_mid`` the middle pair's
+    offsets on the two links, ``branch`` the assembly branch (+1 or -1).
+    """
+
+    kind: str
+    label: str
+    bodies: tuple[int, int]
+    ext: tuple[PairPlan, PairPlan]
+    mid: PairPlan
+    known: tuple[int, int]
+    d_known: tuple[Array, Array]
+    d_mid: tuple[Array, Array]
+    branch: float = 1.0
+
+
+def guide(plan: DyadPlan, bodies: list[Motion], b: int, k: int = 0) -> Array:
+    """k-th derivative of the slide direction of external prismatic pair ``b``."""
+    pair = plan.ext[b]
+    assert pair.axis is not None
+    return direction(bodies[plan.known[b]], pair.axis, k)
+
+
+def set_pose(plan: DyadPlan, bodies: list[Motion], q1: Array, q2: Array) -> None:
+    """Create the position level of both links from their coordinates (rad or m)."""
+    for b, q in ((0, q1), (1, q2)):
+        known = bodies[plan.known[b]]
+        anchor = point(known, plan.d_known[b], 0)
+        if plan.ext[b].kind == "R":
+            phi, o = q, anchor
+        else:
+            phi, o = known.phi[0], anchor + q[:, None] * guide(plan, bodies, b)
+        motion = Motion([phi, phi, phi, phi], [o, o, o, o])
+        motion.q = [q]
+        bodies[plan.bodies[b]] = motion
+
+
+def _fill(plan: DyadPlan, bodies: list[Motion], k: int) -> None:
+    """Set level k of both links with their own k-th coordinate derivative taken as 0."""
+    for b in (0, 1):
+        known = bodies[plan.known[b]]
+        m = bodies[plan.bodies[b]]
+        anchor = point(known, plan.d_known[b], k)
+        if plan.ext[b].kind == "R":
+            m.phi[k] = np.zeros_like(m.phi[0])
+            m.o[k] = anchor
+        else:
+            m.phi[k] = known.phi[k]
+            o = anchor
+            for j in range(k):  # Leibniz on sigma * e, the k-th term of sigma is unknown
+                o = o + comb(k, j) * m.q[j][:, None] * guide(plan, bodies, b, k - j)
+            m.o[k] = o
+
+
+def jacobian(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array, Array, Array]:
+    """Return the 2x2 Jacobian of the middle pair in the links' coordinates.
+
+    Returns ``(j00, j01, j10, j11)``, each of shape (n,): row = equation, column = link.
+    """
+    cols = []
+    for b in (0, 1):
+        rows = partials(plan.mid, bodies, plan.bodies[b])
+        if plan.ext[b].kind == "R":
+            cols.append((rows[0][2], rows[1][2]))
+        else:
+            e = guide(plan, bodies, b)
+            cols.append(tuple(r[0] * e[:, 0] + r[1] * e[:, 1] for r in rows))
+    return cols[0][0], cols[1][0], cols[0][1], cols[1][1]
+
+
+def conditioning(jac: tuple[Array, Array, Array, Array]) -> Array:
+    """Sine of the angle between the Jacobian's columns: 0 at a dead centre."""
+    j00, j01, j10, j11 = jac
+    det = j00 * j11 - j01 * j10
+    scale = np.hypot(j00, j10) * np.hypot(j01, j11)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.abs(det) / scale
+
+
+def solve2(jac: tuple[Array, Array, Array, Array], r0: Array, r1: Array) -> tuple[Array, Array]:
+    """Solve ``J x = -r`` by Cramer's rule, element by element."""
+    j00, j01, j10, j11 = jac
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = 1.0 / (j00 * j11 - j01 * j10)
+        return (j01 * r1 - j11 * r0) * inv, (j10 * r0 - j00 * r1) * inv
+
+
+def linear_step(plan: DyadPlan, bodies: list[Motion], q1: Array, q2: Array) -> tuple[Array, Array]:
+    """One Newton step from ``(q1, q2)``: exact where the equations are linear in them."""
+    set_pose(plan, bodies, q1, q2)
+    jac = jacobian(plan, bodies)
+    x1, x2 = solve2(jac, *residual(plan.mid, bodies, 0))
+    return q1 + x1, q2 + x2
+
+
+def derivative(plan: DyadPlan, bodies: list[Motion], k: int,
+               jac: tuple[Array, Array, Array, Array]) -> None:
+    """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of both links.
+
+    Notes
+    -----
+    The k-th derivative of the middle pair's equations is linear in the links' k-th
+    coordinate derivatives with the Jacobian as matrix; the rest (centripetal, Coriolis
+    and their derivatives) is the residual evaluated with those set to zero.
+    """
+    _fill(plan, bodies, k)
+    x = solve2(jac, *residual(plan.mid, bodies, k))
+    for b in (0, 1):
+        m = bodies[plan.bodies[b]]
+        del m.q[k:]
+        m.q.append(x[b])
+        if plan.ext[b].kind == "R":
+            m.phi[k] = x[b]
+        else:
+            m.o[k] = m.o[k] + x[b][:, None] * guide(plan, bodies, b)
+
+
+def _eliminator(plan: DyadPlan, bodies: list[Motion], b: int) -> tuple[Array, Array, Array]:
+    """Weights (w_x, w_y, w_tau) of the equation of link b free of its external pair.
+
+    Revolute: moments about the pin. Prismatic: forces along the guide.
+    """
+    m = bodies[plan.bodies[b]]
+    if plan.ext[b].kind == "R":
+        pin = m.o[0]
+        return pin[:, 1], -pin[:, 0], np.ones_like(pin[:, 0])
+    e = guide(plan, bodies, b)
+    return e[:, 0], e[:, 1], np.zeros_like(e[:, 0])
+
+
+def reactions(plan: DyadPlan, bodies: list[Motion], wrenches: list[Wrench],
+              out: dict[str, tuple[Array, Array]]) -> None:
+    """Solve the dyad's three reactions and pass the external ones to the known links.
+
+    Parameters
+    ----------
+    wrenches : list of Wrench
+        The known loads on every body (inertia, gravity, external, and reactions of
+        groups solved already); the known links' entries are increased by the
+        reactions of this dyad.
+    out : dict
+        Receives, per pair name, the force (n, 2) exerted by its first link on its
+        second and the couple (n,) about the pair's point (zero for revolute pairs).
+    """
+    cols = unit_wrenches(plan.mid, bodies)
+    rows, rhs, signs = [], [], []
+    for b in (0, 1):
+        w = _eliminator(plan, bodies, b)
+        sign = 1.0 if plan.bodies[b] == plan.mid.second else -1.0
+        rows.append([sign * (w[0] * c[0] + w[1] * c[1] + w[2] * c[2]) for c in cols])
+        load = wrenches[plan.bodies[b]]
+        rhs.append(w[0] * load[0] + w[1] * load[1] + w[2] * load[2])
+        signs.append(sign)
+    jac = (rows[0][0], rows[0][1], rows[1][0], rows[1][1])
+    lam = solve2(jac, rhs[0], rhs[1])
+    mid = [lam[0] * cols[0][i] + lam[1] * cols[1][i] for i in range(3)]
+    record(plan.mid, bodies, mid, out)
+    for b in (0, 1):
+        body = plan.bodies[b]
+        total = [wrenches[body][i] + signs[b] * mid[i] for i in range(3)]
+        known = wrenches[plan.known[b]]
+        for i in range(3):
+            known[i] = known[i] + total[i]
+        pair = plan.ext[b]
+        on_second = total if pair.second != body else [-t for t in total]
+        record(pair, bodies, on_second, out)
+
+
+def record(pair: PairPlan, bodies: list[Motion], wrench: Wrench,
+           out: dict[str, tuple[Array, Array]]) -> None:
+    """Store the wrench of ``pair`` on its second link as force and couple about its point."""
+    force = np.stack((wrench[0], wrench[1]), axis=-1)
+    if pair.kind == "R":
+        out[pair.name] = (force, np.zeros_like(wrench[0]))
+        return
+    q = point(bodies[pair.second], pair.d_second, 0)
+    out[pair.name] = (force, wrench[2] - (q[:, 0] * wrench[1] - q[:, 1] * wrench[0]))

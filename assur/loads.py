@@ -1,0 +1,113 @@
+"""Mass properties, gravity and external loads, compiled against a plan.
+
+Loads are constant or tabulated against a position (the first driver's, periodic for a
+crank, or a prismatic joint's slide) and interpolated linearly over the batch.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import numpy as np
+
+from assur._vec import Array
+from assur.errors import ModelError
+from assur.model import LoadTable, Mechanism, resolve_point
+from assur.plan import Plan, compile_plan
+
+__all__ = ["LoadPlan", "compile_loads", "table_values"]
+
+
+@dataclass(frozen=True, slots=True)
+class LoadPlan:
+    """Per-body mass (kg), centre offset (m) and inertia (kg m^2); forces and torques.
+
+    ``forces`` holds ``(body, offset, value, entry)`` with ``value`` a constant (2,)
+    array (N) or a :class:`LoadTable`; ``torques`` holds ``(body, value, entry)``.
+    """
+
+    mass: Array
+    center: Array
+    inertia: Array
+    gravity: Array
+    forces: tuple
+    torques: tuple
+
+    @property
+    def empty(self) -> bool:
+        """Whether no link has a mass and no load is applied."""
+        return not (self.mass.any() or self.forces or self.torques)
+
+
+def compile_loads(plan: Plan) -> LoadPlan:
+    """Collect the mass properties and loads of ``plan``'s mechanism.
+
+    Raises
+    ------
+    ModelError
+        When a link has a mass but no centre of mass or no moment of inertia.
+    """
+    return _compile(plan.mechanism)
+
+
+@functools.lru_cache(maxsize=128)
+def _compile(mech: Mechanism) -> LoadPlan:
+    """Memoised body of :func:`compile_loads`, keyed on the mechanism's value."""
+    plan = compile_plan(mech)
+    count = len(plan.bodies)
+    mass, inertia, center = np.zeros(count), np.zeros(count), np.zeros((count, 2))
+    for link in mech.links:
+        if not link.mass:
+            continue
+        for key in ("center", "inertia"):
+            if getattr(link, key) is None:
+                msg = (f"links.{link.name}: a link with a mass needs its '{key}' "
+                       f"({'centre of mass' if key == 'center' else 'moment of inertia about it, kg m^2'})"
+                       " for the force analysis")
+                raise ModelError(msg)
+        b = plan.body(link.name)
+        mass[b] = link.mass
+        inertia[b] = link.inertia
+        assert link.center is not None
+        center[b] = plan.offset(b, resolve_point(mech, link.center))
+    forces, torques = [], []
+    for i, load in enumerate(mech.loads):
+        b = plan.body(load.link)
+        if load.force is not None:
+            assert load.at is not None
+            offset = plan.offset(b, resolve_point(mech, load.at))
+            value = load.force if isinstance(load.force, LoadTable) else np.asarray(load.force, dtype=float)
+            forces.append((b, offset, value, f"loads[{i}].force"))
+        if load.torque is not None:
+            torques.append((b, load.torque, f"loads[{i}].torque"))
+    gravity = np.zeros(2) if mech.gravity is None else np.asarray(mech.gravity, dtype=float)
+    return LoadPlan(mass, inertia=inertia, center=center, gravity=gravity,
+                    forces=tuple(forces), torques=tuple(torques))
+
+
+def table_values(table: LoadTable, plan: Plan, drive: Array, slides: dict[str, Array],
+                 entry: str) -> list[Array]:
+    """Interpolate ``table`` at every analysed position; one array (n,) per component.
+
+    Raises
+    ------
+    ModelError
+        When a table over a slide or a prismatic driver does not cover the sweep.
+    """
+    xs = np.asarray(table.table, dtype=float)
+    if table.over == "driver":
+        first = plan.drivers[0]
+        if first.kind == "R":
+            at = np.degrees(drive[:, 0])
+            return [np.interp(at, xs, np.asarray(v), period=360.0) for v in table.values]
+        at, what = drive[:, 0], "the driver's position"
+    else:
+        at, what = slides[table.over], f"the slide of joint {table.over!r}"
+    low, high = float(np.min(at)), float(np.max(at))
+    tol = 1e-9 * max(1.0, abs(xs[0]), abs(xs[-1]))
+    if low < xs[0] - tol or high > xs[-1] + tol:
+        msg = (f"{entry}.table: covers {xs[0]:g} to {xs[-1]:g} m but {what} runs from "
+               f"{low:.6g} to {high:.6g} m; expected a table covering every analysed position")
+        raise ModelError(msg)
+    return [np.interp(at, xs, np.asarray(v)) for v in table.values]
