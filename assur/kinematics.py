@@ -83,7 +83,7 @@ def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Tr
             q1, q2 = DYADS[solver.kind].assemble(solver, bodies)
             _dyad.set_pose(solver, bodies, q1, q2)
             jac = _dyad.jacobian(solver, bodies)
-            cond = _dyad.conditioning(jac)
+            cond = _dyad.conditioning(solver, jac, plan.scale)
             failed = ~(np.isfinite(q1) & np.isfinite(q2))
         else:
             general.positions(solver, bodies, None if guesses is None else guesses[g])
@@ -91,7 +91,7 @@ def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Tr
             failed = ~np.isfinite(bodies[solver.bodies[0]].phi[0])
             jac = general.jacobian(solver, bodies)
             jac[failed] = np.eye(jac.shape[-1])
-            cond = 1.0 / np.linalg.cond(jac)
+            cond = general.conditioning(solver, jac)
         singular = ~failed & ~(cond >= SINGULAR)
         near = ~failed & ~singular & (cond < NEAR_SINGULAR)
         for what, mask in (("assembly", failed), ("singular", singular), ("near", near)):

@@ -101,9 +101,19 @@ def jacobian(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array, Array,
     return cols[0][0], cols[1][0], cols[0][1], cols[1][1]
 
 
-def conditioning(jac: tuple[Array, Array, Array, Array]) -> Array:
-    """Sine of the angle between the Jacobian's columns: 0 at a dead centre."""
+def conditioning(plan: DyadPlan, jac: tuple[Array, Array, Array, Array],
+                 scale: float) -> Array:
+    """Sine of the angle between the Jacobian's columns: 0 at a dead centre.
+
+    Slides are measured in units of the mechanism's size ``scale`` (m) and a prismatic
+    pair's normal equation divided by it, so that the measure has no units: for an RRR
+    dyad it is the sine of the transmission angle.
+    """
     j00, j01, j10, j11 = jac
+    c0, c1 = (1.0 if e.kind == "R" else scale for e in plan.ext)
+    r1 = 1.0 / scale if plan.mid.kind == "P" else 1.0
+    j00, j10 = j00 * c0, j10 * c0 * r1
+    j01, j11 = j01 * c1, j11 * c1 * r1
     det = j00 * j11 - j01 * j10
     scale = np.hypot(j00, j10) * np.hypot(j01, j11)
     with np.errstate(divide="ignore", invalid="ignore"):

@@ -18,7 +18,7 @@ from assur.groups._dyad import Wrench, record
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan, partials, residual, unit_wrenches
 
-__all__ = ["GeneralPlan", "derivative", "jacobian", "positions", "reactions"]
+__all__ = ["GeneralPlan", "conditioning", "derivative", "jacobian", "positions", "reactions"]
 
 MAX_ITERATIONS = 30
 TOLERANCE = 1e-13
@@ -56,6 +56,21 @@ def jacobian(plan: GeneralPlan, bodies: list[Motion]) -> Array:
                 for c in (0, 1, 2):
                     jac[:, 2 * j + r, column[body] + c] += rows[r][c]
     return jac
+
+
+def conditioning(plan: GeneralPlan, jac: Array) -> Array:
+    """Reciprocal condition number of the Jacobian made dimensionless.
+
+    Origins are measured in units of the group's size and a prismatic pair's rotation
+    equation multiplied by it, so that the measure does not depend on the units.
+    """
+    cols = np.ones(jac.shape[-1])
+    cols[2::3] = 1.0 / plan.scale
+    rows = np.ones(jac.shape[-2])
+    for j, pair in enumerate(plan.pairs):
+        if pair.kind == "P":
+            rows[2 * j] = plan.scale
+    return 1.0 / np.linalg.cond(jac * rows[:, None] * cols[None, :])
 
 
 def _residuals(plan: GeneralPlan, bodies: list[Motion], k: int) -> Array:
