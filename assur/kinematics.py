@@ -27,6 +27,8 @@ SINGULAR = 1e-9
 centre: velocities are undefined there."""
 NEAR_SINGULAR = 0.035
 """Below this (about 2 degrees of transmission angle) a pose is reported as near-singular."""
+NEAR_SINGULAR_GENERAL = 1e-3
+"""The same for the reciprocal condition number of a larger group's Jacobian."""
 CONTINUATION_STEP = math.radians(10.0)
 """Largest step of the driver along the continuation path of a Newton-solved group."""
 
@@ -93,7 +95,8 @@ def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Tr
             jac[failed] = np.eye(jac.shape[-1])
             cond = general.conditioning(solver, jac)
         singular = ~failed & ~(cond >= SINGULAR)
-        near = ~failed & ~singular & (cond < NEAR_SINGULAR)
+        limit = NEAR_SINGULAR if isinstance(solver, DyadPlan) else NEAR_SINGULAR_GENERAL
+        near = ~failed & ~singular & (cond < limit)
         for what, mask in (("assembly", failed), ("singular", singular), ("near", near)):
             if mask.any():
                 troubles.append(Trouble(solver.label, what, mask))
