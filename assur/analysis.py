@@ -210,7 +210,7 @@ def _sweep(mech: Mechanism, angles: Any, with_forces: bool, skip: bool) -> Table
     for start in range(0, max(n, 1), CHUNK):
         chunk = drive[start:start + CHUNK]
         bodies, found = _kin.solve(plan, chunk)
-        state = _kin.collect(plan, bodies)
+        state = _kin.collect(plan, bodies, chunk.shape[0])
         states.append(state)
         troubles.extend((t, start) for t in found)
         if with_forces:

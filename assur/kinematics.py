@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
-from assur._vec import Array, perp
+from assur._vec import Array
 from assur.groups import DYADS, _dyad, general
 from assur.groups._dyad import DyadPlan
 from assur.groups._motion import Motion
@@ -20,7 +21,8 @@ from assur.groups._pairs import slide
 from assur.groups.driver import motion
 from assur.plan import Plan
 
-__all__ = ["SINGULAR", "KinematicState", "Trouble", "collect", "solve", "velocity_coefficients"]
+__all__ = ["SINGULAR", "KinematicState", "Trouble", "collect", "solve",
+           "velocity_coefficients"]
 
 SINGULAR = 1e-9
 """Below this sine of the angle between a group's Jacobian columns a pose is a dead
@@ -35,8 +37,8 @@ CONTINUATION_STEP = math.radians(10.0)
 
 @dataclass(frozen=True, slots=True)
 class Trouble:
-    """Driver positions at which group ``group`` failed (``what``: "assembly",
-    "singular") or came near a dead centre ("near")."""
+    """Driver positions (``mask``) at which group ``group`` failed (``what``:
+    "assembly", "singular") or came near a dead centre ("near")."""
 
     group: str
     what: str
@@ -69,6 +71,11 @@ class KinematicState:
     slide: dict[str, Array]
 
 
+def _batch(q: Any, n: int) -> Array:
+    """``q`` as an array of n values (a group hanging on the frame alone is constant)."""
+    return q if np.ndim(q) else np.full(n, float(q))
+
+
 def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Trouble]]:
     """Solve the motion of every link at driver positions ``drive`` (n, d), SI units.
 
@@ -83,48 +90,48 @@ def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Tr
     for solver in plan.solvers:
         if isinstance(solver, DyadPlan):
             q1, q2 = DYADS[solver.kind].assemble(solver, bodies)
+            q1, q2 = _batch(q1, n), _batch(q2, n)
             _dyad.set_pose(solver, bodies, q1, q2)
-            jac = _dyad.jacobian(solver, bodies)
+            jac: Any = _dyad.jacobian(solver, bodies)
             cond = _dyad.conditioning(solver, jac, plan.scale)
             failed = ~(np.isfinite(q1) & np.isfinite(q2))
+            limit = NEAR_SINGULAR
         else:
-            general.positions(solver, bodies, None if guesses is None else guesses[g])
+            general.positions(solver, bodies, n, None if guesses is None else guesses[g])
             g += 1
             failed = ~np.isfinite(bodies[solver.bodies[0]].phi[0])
-            jac = general.jacobian(solver, bodies)
+            jac = general.jacobian(solver, bodies, n)
             jac[failed] = np.eye(jac.shape[-1])
             cond = general.conditioning(solver, jac)
+            limit = NEAR_SINGULAR_GENERAL
         singular = ~failed & ~(cond >= SINGULAR)
-        limit = NEAR_SINGULAR if isinstance(solver, DyadPlan) else NEAR_SINGULAR_GENERAL
         near = ~failed & ~singular & (cond < limit)
         for what, mask in (("assembly", failed), ("singular", singular), ("near", near)):
             if mask.any():
                 troubles.append(Trouble(solver.label, what, mask))
-        if not isinstance(solver, DyadPlan):
-            jac[singular] = np.eye(jac.shape[-1])
         for k in range(1, top + 1):
             if isinstance(solver, DyadPlan):
                 _dyad.derivative(solver, bodies, k, jac)
             else:
-                general.derivative(solver, bodies, k, jac)
-    del n
+                jac[singular] = np.eye(jac.shape[-1])
+                general.derivative(solver, bodies, k, jac, n)
     return bodies, troubles
 
 
 def _drivers(plan: Plan, drive: Array, rates: Array | None = None) -> list[Motion]:
-    n = drive.shape[0]
-    bodies: list[Motion] = [Motion.fixed(n, np.zeros(2))] * len(plan.bodies)
+    bodies: list[Motion] = [Motion.fixed()] * len(plan.bodies)
     for i, d in enumerate(plan.drivers):
-        bodies[d.body] = motion(d, drive[:, i], None if rates is None else rates[i])
+        bodies[d.body] = motion(d, drive[:, i], None if rates is None else float(rates[i]))
     return bodies
 
 
 def _continuation(plan: Plan, drive: Array) -> list:
     """Newton groups' poses along straight paths from the reference pose to ``drive``."""
+    n = drive.shape[0]
     reference = np.array([d.reference for d in plan.drivers])
     step = np.array([CONTINUATION_STEP if d.kind == "R" else 0.05 * plan.scale
                      for d in plan.drivers])
-    span = np.max(np.abs(drive - reference) / step) if drive.size else 0.0
+    span = float(np.max(np.abs(drive - reference) / step)) if drive.size else 0.0
     count = max(1, math.ceil(span))
     guesses: list = [None] * sum(not isinstance(s, DyadPlan) for s in plan.solvers)
     for s in range(1, count + 1):
@@ -132,9 +139,10 @@ def _continuation(plan: Plan, drive: Array) -> list:
         g = 0
         for solver in plan.solvers:
             if isinstance(solver, DyadPlan):
-                _dyad.set_pose(solver, bodies, *DYADS[solver.kind].assemble(solver, bodies))
+                q1, q2 = DYADS[solver.kind].assemble(solver, bodies)
+                _dyad.set_pose(solver, bodies, _batch(q1, n), _batch(q2, n))
             else:
-                guesses[g] = general.positions(solver, bodies, guesses[g])
+                guesses[g] = general.positions(solver, bodies, n, guesses[g])
                 g += 1
     return guesses
 
@@ -146,67 +154,95 @@ def velocity_coefficients(plan: Plan, bodies: list[Motion], which: int) -> list[
     partial derivative of every link's velocity with respect to that driver's speed,
     the weight of each load in the principle of virtual power.
     """
-    rates = np.zeros(len(plan.drivers))
-    rates[which] = 1.0
-    n = bodies[0].o[0].shape[0]
-    drive = np.zeros((n, len(plan.drivers)))
-    out = _drivers(plan, drive, rates)
+    n = np.shape(bodies[plan.drivers[0].body].phi[0])[0] if plan.drivers else 0
+    out: list[Motion] = list(bodies)
     for i, d in enumerate(plan.drivers):
-        m = out[d.body]
-        out[d.body] = _copy(bodies[d.body], m.phi[1], m.o[1])
+        rate = motion(d, np.zeros(1), 1.0 if i == which else 0.0)
+        out[d.body] = _copy(bodies[d.body], rate.phi[1], rate.ox[1], rate.oy[1])
     for solver in plan.solvers:
         for b in solver.bodies:
-            out[b] = _copy(bodies[b], None, None)
+            out[b] = _copy(bodies[b], 0.0, 0.0, 0.0)
         if isinstance(solver, DyadPlan):
             _dyad.derivative(solver, out, 1, _dyad.jacobian(solver, out))
         else:
-            jac = general.jacobian(solver, out)
-            bad = ~np.isfinite(jac).all(axis=(1, 2))
+            jac = general.jacobian(solver, out, n)
+            bad = ~np.isfinite(jac).all(axis=(1, 2)) | (general.conditioning(solver, jac)
+                                                        < SINGULAR)
             jac[bad] = np.eye(jac.shape[-1])
-            general.derivative(solver, out, 1, jac)
+            general.derivative(solver, out, 1, jac, n)
     return out
 
 
-def _copy(m: Motion, omega: Array | None, v: Array | None) -> Motion:
+def _copy(m: Motion, omega: Any, vx: Any, vy: Any) -> Motion:
     """A motion sharing ``m``'s pose with its velocity level replaced."""
     c = Motion.__new__(Motion)
-    c.phi = [m.phi[0], omega, None, None]
-    c.o = [m.o[0], v, None, None]
-    c.c, c.s = m.c, m.s
+    c.phi = [m.phi[0], omega, 0.0, 0.0]
+    c.ox = [m.ox[0], vx, 0.0, 0.0]
+    c.oy = [m.oy[0], vy, 0.0, 0.0]
+    c.c, c.s, c.rot = m.c, m.s, m.rot
     c.q = list(m.q[:1])
     return c
 
 
-def collect(plan: Plan, bodies: list[Motion]) -> KinematicState:
+def collect(plan: Plan, bodies: list[Motion], n: int) -> KinematicState:
     """Gather the links' motions into arrays and compute every reported point."""
-    n = bodies[0].o[0].shape[0]
-    link = np.empty((4, n, len(bodies)))
-    origin = np.empty((4, n, len(bodies), 2))
+    count = len(bodies)
+    link = np.empty((4, n, count))
+    origin = np.empty((4, n, count, 2))
     for b, m in enumerate(bodies):
         for k in range(4):
             link[k, :, b] = m.phi[k]
-            origin[k, :, b] = m.o[k]
+            origin[k, :, b, 0] = m.ox[k]
+            origin[k, :, b, 1] = m.oy[k]
     idx = plan.point_body
-    d = plan.point_offset
-    c = np.cos(link[0][:, idx])
-    s = np.sin(link[0][:, idx])
-    u = np.stack((c * d[:, 0] - s * d[:, 1], s * d[:, 0] + c * d[:, 1]), axis=-1)
-    pu = perp(u)
-    w, a, z = (link[k][:, idx, None] for k in (1, 2, 3))
+    dx, dy = plan.point_offset[:, 0], plan.point_offset[:, 1]
+    phi = link[0][:, idx]
+    c, s = np.cos(phi), np.sin(phi)
+    ux, uy = c * dx - s * dy, s * dx + c * dy
+    w, a, z = link[1][:, idx], link[2][:, idx], link[3][:, idx]
     point = np.empty((4, n, len(idx), 2))
-    point[0] = origin[0][:, idx] + u
-    point[1] = origin[1][:, idx] + w * pu
-    point[2] = origin[2][:, idx] + a * pu - w * w * u
-    point[3] = origin[3][:, idx] + (z - w * w * w) * pu - 3.0 * w * a * u
-    slides = {name: np.stack([slide(p, bodies, k) for k in range(4)])
-              for name, p in plan.pairs.items() if p.kind == "P"}
-    drive = np.stack([bodies[d.body].phi[0] + d.angle0 if d.kind == "R"
-                      else d.reference + _along(bodies[d.body].o[0] - d.origin, d)
-                      for d in plan.drivers], axis=-1)
+    o = origin[:, :, idx]
+    point[0, ..., 0], point[0, ..., 1] = o[0, ..., 0] + ux, o[0, ..., 1] + uy
+    point[1, ..., 0], point[1, ..., 1] = o[1, ..., 0] - w * uy, o[1, ..., 1] + w * ux
+    w2 = w * w
+    point[2, ..., 0] = o[2, ..., 0] - a * uy - w2 * ux
+    point[2, ..., 1] = o[2, ..., 1] + a * ux - w2 * uy
+    c1, c2 = z - w2 * w, 3.0 * w * a
+    point[3, ..., 0] = o[3, ..., 0] - c1 * uy - c2 * ux
+    point[3, ..., 1] = o[3, ..., 1] + c1 * ux - c2 * uy
+    slides = _slides(plan, bodies, n)
+    drive = np.empty((n, len(plan.drivers)))
+    for i, d in enumerate(plan.drivers):
+        m = bodies[d.body]
+        if d.kind == "R":
+            drive[:, i] = m.phi[0] + d.angle0
+        else:
+            ex, ey = d.pair.axis  # type: ignore[misc]
+            drive[:, i] = d.reference + (m.ox[0] - d.origin[0]) * ex + (m.oy[0] - d.origin[1]) * ey
     for arr in (link, origin, point, drive, *slides.values()):
         arr.flags.writeable = False
     return KinematicState(drive, link, origin, point, slides)
 
 
-def _along(gap: Array, d) -> Array:
-    return gap @ d.pair.axis
+def _slides(plan: Plan, bodies: list[Motion], n: int) -> dict[str, Array]:
+    """Slides of the prismatic pairs: a dyad's own coordinate where it is one."""
+    known: dict[str, tuple[int, float]] = {}
+    for solver in plan.solvers:
+        if isinstance(solver, DyadPlan):
+            for b, pair in zip(solver.bodies, solver.ext):
+                if pair.kind == "P":
+                    known[pair.name] = (b, 1.0 if pair.second == b else -1.0)
+    out = {}
+    for name, pair in plan.pairs.items():
+        if pair.kind != "P":
+            continue
+        arr = np.empty((4, n))
+        if name in known:
+            body, sign = known[name]
+            for k in range(4):
+                arr[k] = sign * bodies[body].q[k]
+        else:
+            for k in range(4):
+                arr[k] = slide(pair, bodies, k)
+        out[name] = arr
+    return out

@@ -10,6 +10,7 @@ The principle of virtual power gives the same balancing loads independently.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -56,6 +57,11 @@ class ForceState:
     residual: Array
 
 
+def _full(value: Any, n: int) -> Array:
+    """``value`` as an array of n entries."""
+    return np.broadcast_to(np.asarray(value, dtype=float), (n,))
+
+
 def applied_loads(plan: Plan, loads: LoadPlan, bodies: list[Motion],
                   state: KinematicState) -> tuple[list[Wrench], Array, Array]:
     """Return every link's applied wrench (inertia, gravity, external loads).
@@ -67,28 +73,32 @@ def applied_loads(plan: Plan, loads: LoadPlan, bodies: list[Motion],
     count = len(plan.bodies)
     inertia_force = np.zeros((n, count, 2))
     inertia_torque = np.zeros((n, count))
-    zero = np.zeros(n)
-    wrenches: list[Wrench] = [[zero, zero, zero] for _ in range(count)]
+    wrenches: list[Wrench] = [[0.0, 0.0, 0.0] for _ in range(count)]
     slides = {name: s[0] for name, s in state.slide.items()}
+    gx, gy = loads.gravity
     for b in np.flatnonzero(loads.mass):
         m = bodies[b]
-        g = point(m, loads.center[b], 0)
-        acc = point(m, loads.center[b], 2)
-        fi = -loads.mass[b] * acc
-        inertia_force[:, b] = fi
-        inertia_torque[:, b] = -loads.inertia[b] * m.phi[2]
-        f = fi + loads.mass[b] * loads.gravity
-        wrenches[b] = [f[:, 0], f[:, 1],
-                       g[:, 0] * f[:, 1] - g[:, 1] * f[:, 0] + inertia_torque[:, b]]
+        mass = loads.mass[b]
+        center = loads.center[b]
+        px, py = point(m, center, 0)
+        ax, ay = point(m, center, 2)
+        fx, fy = -mass * ax, -mass * ay
+        torque = -loads.inertia[b] * m.phi[2]
+        inertia_force[:, b, 0], inertia_force[:, b, 1] = fx, fy
+        inertia_torque[:, b] = torque
+        fx, fy = fx + mass * gx, fy + mass * gy
+        wrenches[b] = [fx, fy, px * fy - py * fx + torque]
     for b, offset, value, entry in loads.forces:
-        p = point(bodies[b], offset, 0)
-        fx, fy = (table_values(value, plan, state.drive, slides, entry)
-                  if not isinstance(value, np.ndarray) else (value[0], value[1]))
+        px, py = point(bodies[b], offset, 0)
+        if isinstance(value, tuple):
+            fx, fy = value
+        else:
+            fx, fy = table_values(value, plan, state.drive, slides, entry)
         w = wrenches[b]
-        wrenches[b] = [w[0] + fx, w[1] + fy, w[2] + p[:, 0] * fy - p[:, 1] * fx]
+        wrenches[b] = [w[0] + fx, w[1] + fy, w[2] + px * fy - py * fx]
     for b, value, entry in loads.torques:
-        t = (table_values(value, plan, state.drive, slides, entry)[0]
-             if not isinstance(value, int | float) else value)
+        t = value if isinstance(value, float) else table_values(
+            value, plan, state.drive, slides, entry)[0]
         w = wrenches[b]
         wrenches[b] = [w[0], w[1], w[2] + t]
     return wrenches, inertia_force, inertia_torque
@@ -96,27 +106,37 @@ def applied_loads(plan: Plan, loads: LoadPlan, bodies: list[Motion],
 
 def solve(plan: Plan, bodies: list[Motion], state: KinematicState) -> ForceState:
     """Solve the kinetostatics of a sweep whose motion is ``bodies`` / ``state``."""
+    n = state.drive.shape[0]
     loads = compile_loads(plan)
     applied, inertia_force, inertia_torque = applied_loads(plan, loads, bodies, state)
     wrenches = [list(w) for w in applied]
-    reactions: dict[str, tuple[Array, Array]] = {}
+    raw: dict[str, tuple[Any, Any, Any]] = {}
     for solver in reversed(plan.solvers):
         if isinstance(solver, DyadPlan):
-            _dyad.reactions(solver, bodies, wrenches, reactions)
+            _dyad.reactions(solver, bodies, wrenches, raw)
         else:
-            general.reactions(solver, bodies, wrenches, reactions)
-    balancing = np.stack([balance(d, bodies, wrenches, reactions) for d in plan.drivers],
-                         axis=-1)
-    check = np.stack([_virtual_power(plan, bodies, applied, i)
-                      for i in range(len(plan.drivers))], axis=-1)
-    shaking = np.stack(wrenches[0], axis=-1)
+            general.reactions(solver, bodies, wrenches, raw, n)
+    balancing = np.empty((n, len(plan.drivers)))
+    for i, d in enumerate(plan.drivers):
+        balancing[:, i] = balance(d, bodies, wrenches, raw)
+    check = np.empty_like(balancing)
+    for i in range(len(plan.drivers)):
+        check[:, i] = _virtual_power(plan, bodies, applied, i)
+    reactions = {}
+    for name, (fx, fy, couple) in raw.items():
+        force = np.empty((n, 2))
+        force[:, 0], force[:, 1] = fx, fy
+        reactions[name] = (force, _full(couple, n))
+    shaking = np.empty((n, 3))
+    for i in range(3):
+        shaking[:, i] = wrenches[0][i]
     residual = _residual(plan, bodies, applied, reactions, balancing)
     return ForceState(inertia_force, inertia_torque, reactions, balancing, check,
                       shaking, residual)
 
 
 def _virtual_power(plan: Plan, bodies: list[Motion], applied: list[Wrench],
-                   which: int) -> Array:
+                   which: int) -> Any:
     """Balancing load of driver ``which`` from the principle of virtual power.
 
     Notes
@@ -128,15 +148,14 @@ def _virtual_power(plan: Plan, bodies: list[Motion], applied: list[Wrench],
     origin about which :math:`\\tau_{b,O}` is taken.
     """
     coeff = velocity_coefficients(plan, bodies, which)
-    total = 0.0
+    total: Any = 0.0
     for b in range(1, len(plan.bodies)):
-        f_x, f_y, tau = applied[b]
-        w = coeff[b].phi[1]
-        v = coeff[b].o[1]
-        o = bodies[b].o[0]
-        vx = v[:, 0] + w * o[:, 1]
-        vy = v[:, 1] - w * o[:, 0]
-        total = total + f_x * vx + f_y * vy + tau * w
+        fx, fy, tau = applied[b]
+        if not (np.ndim(fx) or np.ndim(tau) or fx or fy or tau):
+            continue  # a massless, unloaded link does no work
+        m, v = bodies[b], coeff[b]
+        w = v.phi[1]
+        total = total + fx * (v.ox[1] + w * m.oy[0]) + fy * (v.oy[1] - w * m.ox[0]) + tau * w
     return -total
 
 
@@ -146,26 +165,27 @@ def _residual(plan: Plan, bodies: list[Motion], applied: list[Wrench],
     totals = [list(w) for w in applied]
     for name, (force, couple) in reactions.items():
         pair = plan.pairs[name]
-        q = point(bodies[pair.second], pair.d_second, 0)
-        tau = q[:, 0] * force[:, 1] - q[:, 1] * force[:, 0] + couple
+        qx, qy = point(bodies[pair.second], pair.d_second, 0)
+        fx, fy = force[:, 0], force[:, 1]
+        tau = qx * fy - qy * fx + couple
         for body, sign in ((pair.second, 1.0), (pair.first, -1.0)):
             t = totals[body]
-            totals[body] = [t[0] + sign * force[:, 0], t[1] + sign * force[:, 1],
-                            t[2] + sign * tau]
+            totals[body] = [t[0] + sign * fx, t[1] + sign * fy, t[2] + sign * tau]
     for i, d in enumerate(plan.drivers):
         t = totals[d.body]
         if d.kind == "R":
             totals[d.body] = [t[0], t[1], t[2] + balancing[:, i]]
         else:
-            f = balancing[:, i, None] * d.pair.axis
-            o = bodies[d.body].o[0]
-            totals[d.body] = [t[0] + f[:, 0], t[1] + f[:, 1],
-                              t[2] + o[:, 0] * f[:, 1] - o[:, 1] * f[:, 0]]
-    force = np.zeros(balancing.shape[0])
-    moment = np.zeros(balancing.shape[0])
+            ex, ey = d.pair.axis  # type: ignore[misc]
+            fx, fy = balancing[:, i] * ex, balancing[:, i] * ey
+            m = bodies[d.body]
+            totals[d.body] = [t[0] + fx, t[1] + fy, t[2] + m.ox[0] * fy - m.oy[0] * fx]
+    n = balancing.shape[0]
+    force = np.zeros(n)
+    moment = np.zeros(n)
     for b in range(1, len(plan.bodies)):
-        f_x, f_y, tau = totals[b]
-        o = bodies[b].o[0]
-        force = np.maximum(force, np.maximum(np.abs(f_x), np.abs(f_y)))
-        moment = np.maximum(moment, np.abs(tau - (o[:, 0] * f_y - o[:, 1] * f_x)))
+        fx, fy, tau = totals[b]
+        m = bodies[b]
+        force = np.maximum(force, np.maximum(np.abs(fx), np.abs(fy)))
+        moment = np.maximum(moment, np.abs(tau - (m.ox[0] * fy - m.oy[0] * fx)))
     return np.stack((force, moment), axis=-1)

@@ -28,9 +28,9 @@ class LoadPlan:
     """
 
     mass: Array
-    center: Array
+    center: tuple[tuple[float, float], ...]
     inertia: Array
-    gravity: Array
+    gravity: tuple[float, float]
     forces: tuple
     torques: tuple
 
@@ -71,18 +71,23 @@ def _compile(mech: Mechanism) -> LoadPlan:
         inertia[b] = link.inertia
         assert link.center is not None
         center[b] = plan.offset(b, resolve_point(mech, link.center))
+    centers = tuple((float(x), float(y)) for x, y in center)
     forces, torques = [], []
     for i, load in enumerate(mech.loads):
         b = plan.body(load.link)
         if load.force is not None:
             assert load.at is not None
-            offset = plan.offset(b, resolve_point(mech, load.at))
-            value = load.force if isinstance(load.force, LoadTable) else np.asarray(load.force, dtype=float)
+            ox, oy = plan.offset(b, resolve_point(mech, load.at))
+            offset = (float(ox), float(oy))
+            value = load.force if isinstance(load.force, LoadTable) else (
+                float(load.force[0]), float(load.force[1]))
             forces.append((b, offset, value, f"loads[{i}].force"))
         if load.torque is not None:
-            torques.append((b, load.torque, f"loads[{i}].torque"))
-    gravity = np.zeros(2) if mech.gravity is None else np.asarray(mech.gravity, dtype=float)
-    return LoadPlan(mass, inertia=inertia, center=center, gravity=gravity,
+            torque = load.torque if isinstance(load.torque, LoadTable) else float(load.torque)
+            torques.append((b, torque, f"loads[{i}].torque"))
+    gravity = (0.0, 0.0) if mech.gravity is None else (float(mech.gravity[0]),
+                                                       float(mech.gravity[1]))
+    return LoadPlan(mass, inertia=inertia, center=centers, gravity=gravity,
                     forces=tuple(forces), torques=tuple(torques))
 
 

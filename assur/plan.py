@@ -110,9 +110,9 @@ def compile_plan(mech: Mechanism) -> Plan:
     pairs = {}
     for p in topo.pairs:
         i, j = index[p.links[0]], index[p.links[1]]
-        pairs[p.name] = PairPlan(p.name, p.kind, i, j, pair_at[p.name] - origins[i],
-                                 pair_at[p.name] - origins[j],
-                                 None if p.axis is None else np.asarray(p.axis), p.virtual)
+        pairs[p.name] = PairPlan(p.name, p.kind, i, j, _pt(pair_at[p.name] - origins[i]),
+                                 _pt(pair_at[p.name] - origins[j]),
+                                 None if p.axis is None else _pt(p.axis), p.virtual)
     scale = max([float(np.hypot(*(a - b))) for a in pair_at.values()
                  for b in pair_at.values()] + [1e-3])
     angle0 = _angles0(mech, names)
@@ -123,6 +123,11 @@ def compile_plan(mech: Mechanism) -> Plan:
     points, body, offset = _points(mech, plan, index)
     return dataclasses.replace(plan, drivers=driver_plans, solvers=solvers,
                                points=points, point_body=body, point_offset=offset)
+
+
+def _pt(v: Any) -> tuple[float, float]:
+    """A 2-vector as a tuple of Python floats (cheap constants in the kernels)."""
+    return (float(v[0]), float(v[1]))
 
 
 def _pair(topo: Topology, name: str) -> Any:
@@ -145,14 +150,15 @@ def _driver(plan: Plan, mech: Mechanism, group: Group, index: dict[str, int]) ->
     body = index[group.links[1]]
     reference = float(plan.angle0[body]) if pair.kind == "R" else 0.0
     return DriverPlan(pair, body, float(driver.omega), float(driver.epsilon),
-                      float(plan.angle0[body]), plan.origins[body], reference)
+                      float(plan.angle0[body]), _pt(plan.origins[body]), reference)
 
 
 def _solver(plan: Plan, group: Group, index: dict[str, int]) -> Any:
     bodies = tuple(index[x] for x in group.links)
     if group.group_class == 2:
         return _dyad(plan, group, bodies)
-    return GeneralPlan(group.kind, group.label, bodies, plan.origins[list(bodies)],
+    return GeneralPlan(group.kind, group.label, bodies,
+                       tuple(_pt(plan.origins[b]) for b in bodies),
                        tuple(plan.pairs[p] for p in group.internal + group.external),
                        plan.scale)
 
@@ -165,12 +171,12 @@ def _dyad(plan: Plan, group: Group, bodies: tuple[int, int]) -> DyadPlan:
     d_mid = tuple(mid.d_first if mid.first == b else mid.d_second for b in bodies)
     dyad = DyadPlan(group.kind, group.label, bodies, ext, mid, known, d_known, d_mid)
     module = DYADS[group.kind]
-    reference = [Motion.fixed(1, o) for o in plan.origins]
+    reference = [Motion.fixed(*o) for o in plan.origins]
     best = None
     for branch in (1.0, -1.0):
         candidate = dataclasses.replace(dyad, branch=branch)
         q = module.assemble(candidate, list(reference))
-        miss = [abs(float(wrap(x[0]))) if e.kind == "R" else abs(float(x[0])) / plan.scale
+        miss = [float(np.abs(wrap(x))) if e.kind == "R" else float(np.abs(x)) / plan.scale
                 for x, e in zip(q, ext)]
         if best is None or max(miss) < best[0]:
             best = (max(miss), candidate, sorted(miss))

@@ -13,17 +13,18 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from math import comb
+from typing import Any
 
 import numpy as np
 
-from assur._vec import Array
-from assur.groups._motion import Motion, direction, point
+from assur.groups._motion import Motion, Vec, direction, point
 from assur.groups._pairs import PairPlan, partials, residual, unit_wrenches
 
 __all__ = ["DyadPlan", "Wrench", "derivative", "jacobian", "reactions", "set_pose"]
 
-Wrench = list[Array]
+Wrench = list[Any]
 """``[F_x, F_y, tau]``: a force (N) and its moment about the fixed origin (N m)."""
+Jacobian = tuple[Any, Any, Any, Any]
 
 
 @dataclass(frozen=True, slots=True)
@@ -42,28 +43,29 @@ class DyadPlan:
     ext: tuple[PairPlan, PairPlan]
     mid: PairPlan
     known: tuple[int, int]
-    d_known: tuple[Array, Array]
-    d_mid: tuple[Array, Array]
+    d_known: tuple[tuple[float, float], tuple[float, float]]
+    d_mid: tuple[tuple[float, float], tuple[float, float]]
     branch: float = 1.0
 
 
-def guide(plan: DyadPlan, bodies: list[Motion], b: int, k: int = 0) -> Array:
+def guide(plan: DyadPlan, bodies: list[Motion], b: int, k: int = 0) -> Vec:
     """k-th derivative of the slide direction of external prismatic pair ``b``."""
-    pair = plan.ext[b]
-    assert pair.axis is not None
-    return direction(bodies[plan.known[b]], pair.axis, k)
+    axis = plan.ext[b].axis
+    assert axis is not None
+    return direction(bodies[plan.known[b]], axis, k)
 
 
-def set_pose(plan: DyadPlan, bodies: list[Motion], q1: Array, q2: Array) -> None:
+def set_pose(plan: DyadPlan, bodies: list[Motion], q1: Any, q2: Any) -> None:
     """Create the position level of both links from their coordinates (rad or m)."""
     for b, q in ((0, q1), (1, q2)):
         known = bodies[plan.known[b]]
-        anchor = point(known, plan.d_known[b], 0)
+        ax, ay = point(known, plan.d_known[b], 0)
         if plan.ext[b].kind == "R":
-            phi, o = q, anchor
+            motion = Motion([q, 0.0, 0.0, 0.0], [ax, 0.0, 0.0, 0.0], [ay, 0.0, 0.0, 0.0])
         else:
-            phi, o = known.phi[0], anchor + q[:, None] * guide(plan, bodies, b)
-        motion = Motion([phi, phi, phi, phi], [o, o, o, o])
+            ex, ey = guide(plan, bodies, b)
+            motion = Motion([known.phi[0], 0.0, 0.0, 0.0], [ax + q * ex, 0.0, 0.0, 0.0],
+                            [ay + q * ey, 0.0, 0.0, 0.0])
         motion.q = [q]
         bodies[plan.bodies[b]] = motion
 
@@ -73,22 +75,22 @@ def _fill(plan: DyadPlan, bodies: list[Motion], k: int) -> None:
     for b in (0, 1):
         known = bodies[plan.known[b]]
         m = bodies[plan.bodies[b]]
-        anchor = point(known, plan.d_known[b], k)
+        ax, ay = point(known, plan.d_known[b], k)
         if plan.ext[b].kind == "R":
-            m.phi[k] = np.zeros_like(m.phi[0])
-            m.o[k] = anchor
+            m.phi[k] = 0.0
         else:
             m.phi[k] = known.phi[k]
-            o = anchor
             for j in range(k):  # Leibniz on sigma * e, the k-th term of sigma is unknown
-                o = o + comb(k, j) * m.q[j][:, None] * guide(plan, bodies, b, k - j)
-            m.o[k] = o
+                ex, ey = guide(plan, bodies, b, k - j)
+                coef = comb(k, j) * m.q[j]
+                ax, ay = ax + coef * ex, ay + coef * ey
+        m.ox[k], m.oy[k] = ax, ay
 
 
-def jacobian(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array, Array, Array]:
+def jacobian(plan: DyadPlan, bodies: list[Motion]) -> Jacobian:
     """Return the 2x2 Jacobian of the middle pair in the links' coordinates.
 
-    Returns ``(j00, j01, j10, j11)``, each of shape (n,): row = equation, column = link.
+    Returns ``(j00, j01, j10, j11)``: row = equation, column = link.
     """
     cols = []
     for b in (0, 1):
@@ -96,13 +98,12 @@ def jacobian(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array, Array,
         if plan.ext[b].kind == "R":
             cols.append((rows[0][2], rows[1][2]))
         else:
-            e = guide(plan, bodies, b)
-            cols.append(tuple(r[0] * e[:, 0] + r[1] * e[:, 1] for r in rows))
+            ex, ey = guide(plan, bodies, b)
+            cols.append(tuple(r[0] * ex + r[1] * ey for r in rows))
     return cols[0][0], cols[1][0], cols[0][1], cols[1][1]
 
 
-def conditioning(plan: DyadPlan, jac: tuple[Array, Array, Array, Array],
-                 scale: float) -> Array:
+def conditioning(plan: DyadPlan, jac: Jacobian, scale: float) -> Any:
     """Sine of the angle between the Jacobian's columns: 0 at a dead centre.
 
     Slides are measured in units of the mechanism's size ``scale`` (m) and a prismatic
@@ -115,12 +116,12 @@ def conditioning(plan: DyadPlan, jac: tuple[Array, Array, Array, Array],
     j00, j10 = j00 * c0, j10 * c0 * r1
     j01, j11 = j01 * c1, j11 * c1 * r1
     det = j00 * j11 - j01 * j10
-    scale = np.hypot(j00, j10) * np.hypot(j01, j11)
+    scale2 = np.hypot(j00, j10) * np.hypot(j01, j11)
     with np.errstate(divide="ignore", invalid="ignore"):
-        return np.abs(det) / scale
+        return np.abs(det) / scale2
 
 
-def solve2(jac: tuple[Array, Array, Array, Array], r0: Array, r1: Array) -> tuple[Array, Array]:
+def solve2(jac: Jacobian, r0: Any, r1: Any) -> tuple[Any, Any]:
     """Solve ``J x = -r`` by Cramer's rule, element by element."""
     j00, j01, j10, j11 = jac
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -128,16 +129,14 @@ def solve2(jac: tuple[Array, Array, Array, Array], r0: Array, r1: Array) -> tupl
         return (j01 * r1 - j11 * r0) * inv, (j10 * r0 - j00 * r1) * inv
 
 
-def linear_step(plan: DyadPlan, bodies: list[Motion], q1: Array, q2: Array) -> tuple[Array, Array]:
+def linear_step(plan: DyadPlan, bodies: list[Motion], q1: Any, q2: Any) -> tuple[Any, Any]:
     """One Newton step from ``(q1, q2)``: exact where the equations are linear in them."""
     set_pose(plan, bodies, q1, q2)
-    jac = jacobian(plan, bodies)
-    x1, x2 = solve2(jac, *residual(plan.mid, bodies, 0))
+    x1, x2 = solve2(jacobian(plan, bodies), *residual(plan.mid, bodies, 0))
     return q1 + x1, q2 + x2
 
 
-def derivative(plan: DyadPlan, bodies: list[Motion], k: int,
-               jac: tuple[Array, Array, Array, Array]) -> None:
+def derivative(plan: DyadPlan, bodies: list[Motion], k: int, jac: Jacobian) -> None:
     """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of both links.
 
     Notes
@@ -155,24 +154,25 @@ def derivative(plan: DyadPlan, bodies: list[Motion], k: int,
         if plan.ext[b].kind == "R":
             m.phi[k] = x[b]
         else:
-            m.o[k] = m.o[k] + x[b][:, None] * guide(plan, bodies, b)
+            ex, ey = guide(plan, bodies, b)
+            m.ox[k] = m.ox[k] + x[b] * ex
+            m.oy[k] = m.oy[k] + x[b] * ey
 
 
-def _eliminator(plan: DyadPlan, bodies: list[Motion], b: int) -> tuple[Array, Array, Array]:
+def _eliminator(plan: DyadPlan, bodies: list[Motion], b: int) -> tuple[Any, Any, Any]:
     """Weights (w_x, w_y, w_tau) of the equation of link b free of its external pair.
 
     Revolute: moments about the pin. Prismatic: forces along the guide.
     """
-    m = bodies[plan.bodies[b]]
     if plan.ext[b].kind == "R":
-        pin = m.o[0]
-        return pin[:, 1], -pin[:, 0], np.ones_like(pin[:, 0])
-    e = guide(plan, bodies, b)
-    return e[:, 0], e[:, 1], np.zeros_like(e[:, 0])
+        m = bodies[plan.bodies[b]]
+        return m.oy[0], -m.ox[0], 1.0
+    ex, ey = guide(plan, bodies, b)
+    return ex, ey, 0.0
 
 
 def reactions(plan: DyadPlan, bodies: list[Motion], wrenches: list[Wrench],
-              out: dict[str, tuple[Array, Array]]) -> None:
+              out: dict[str, tuple[Any, Any, Any]]) -> None:
     """Solve the dyad's three reactions and pass the external ones to the known links.
 
     Parameters
@@ -182,21 +182,21 @@ def reactions(plan: DyadPlan, bodies: list[Motion], wrenches: list[Wrench],
         groups solved already); the known links' entries are increased by the
         reactions of this dyad.
     out : dict
-        Receives, per pair name, the force (n, 2) exerted by its first link on its
-        second and the couple (n,) about the pair's point (zero for revolute pairs).
+        Receives, per pair name, the force ``(F_x, F_y)`` (N) exerted by its first link
+        on its second and the couple (N m) about the pair's point (zero for revolute
+        pairs).
     """
     cols = unit_wrenches(plan.mid, bodies)
     rows, rhs, signs = [], [], []
     for b in (0, 1):
-        w = _eliminator(plan, bodies, b)
+        wx, wy, wt = _eliminator(plan, bodies, b)
         sign = 1.0 if plan.bodies[b] == plan.mid.second else -1.0
-        rows.append([sign * (w[0] * c[0] + w[1] * c[1] + w[2] * c[2]) for c in cols])
+        rows.append([sign * (wx * c[0] + wy * c[1] + wt * c[2]) for c in cols])
         load = wrenches[plan.bodies[b]]
-        rhs.append(w[0] * load[0] + w[1] * load[1] + w[2] * load[2])
+        rhs.append(wx * load[0] + wy * load[1] + wt * load[2])
         signs.append(sign)
-    jac = (rows[0][0], rows[0][1], rows[1][0], rows[1][1])
-    lam = solve2(jac, rhs[0], rhs[1])
-    mid = [lam[0] * cols[0][i] + lam[1] * cols[1][i] for i in range(3)]
+    lam0, lam1 = solve2((rows[0][0], rows[0][1], rows[1][0], rows[1][1]), rhs[0], rhs[1])
+    mid = [lam0 * cols[0][i] + lam1 * cols[1][i] for i in range(3)]
     record(plan.mid, bodies, mid, out)
     for b in (0, 1):
         body = plan.bodies[b]
@@ -205,16 +205,15 @@ def reactions(plan: DyadPlan, bodies: list[Motion], wrenches: list[Wrench],
         for i in range(3):
             known[i] = known[i] + total[i]
         pair = plan.ext[b]
-        on_second = total if pair.second != body else [-t for t in total]
-        record(pair, bodies, on_second, out)
+        record(pair, bodies, total if pair.second != body else [-t for t in total], out)
 
 
 def record(pair: PairPlan, bodies: list[Motion], wrench: Wrench,
-           out: dict[str, tuple[Array, Array]]) -> None:
+           out: dict[str, tuple[Any, Any, Any]]) -> None:
     """Store the wrench of ``pair`` on its second link as force and couple about its point."""
-    force = np.stack((wrench[0], wrench[1]), axis=-1)
+    fx, fy, tau = wrench
     if pair.kind == "R":
-        out[pair.name] = (force, np.zeros_like(wrench[0]))
+        out[pair.name] = (fx, fy, 0.0)
         return
-    q = point(bodies[pair.second], pair.d_second, 0)
-    out[pair.name] = (force, wrench[2] - (q[:, 0] * wrench[1] - q[:, 1] * wrench[0]))
+    qx, qy = point(bodies[pair.second], pair.d_second, 0)
+    out[pair.name] = (fx, fy, tau - (qx * fy - qy * fx))

@@ -2,78 +2,91 @@
 
 A body's motion is its rotation from the reference pose and the path of its origin,
 each with three time derivatives. Every point of the body follows from them; these
-formulas are the only place where rigid-body kinematics is written out.
+formulas are the only place where rigid-body kinematics is written out. Vectors are
+pairs ``(x, y)`` of arrays of shape (n,) (or plain floats for what does not move, such
+as the frame): separate components keep every operation on contiguous memory, and
+constants cost nothing.
 """
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
-from assur._vec import Array, perp, rotate
+__all__ = ["Motion", "direction", "point", "rotated"]
 
-__all__ = ["Motion", "direction", "point"]
+Vec = tuple[Any, Any]
+"""A vector as ``(x, y)``, each an array (n,) or a float."""
 
 
 class Motion:
-    """Rotation ``phi[k]`` (rad, rad/s, ...) and origin ``o[k]`` (m, m/s, ...), k = 0..3.
+    """Rotation ``phi[k]`` (rad, rad/s, ...) and origin ``ox[k], oy[k]`` (m, m/s, ...).
 
-    A mutable record used only while a sweep is being solved; the solved motion is
-    copied into read-only arrays afterwards. ``c`` and ``s`` cache cos and sin of the
-    rotation.
+    A mutable record used only while a sweep is being solved, k = 0..3; the solved
+    motion is copied into read-only arrays afterwards. ``c`` and ``s`` cache the cosine
+    and sine of the rotation, ``rot`` the rotated body-fixed offsets, ``q`` the group's
+    own coordinate of the body by order.
     """
 
-    __slots__ = ("c", "o", "phi", "q", "s")
+    __slots__ = ("c", "ox", "oy", "phi", "q", "rot", "s")
 
-    def __init__(self, phi: list[Array], o: list[Array]) -> None:
+    def __init__(self, phi: list[Any], ox: list[Any], oy: list[Any]) -> None:
         self.phi = phi
-        self.o = o
-        self.q: list[Array] = []  # a group's own coordinate of this body, by order
-        self.c = np.cos(phi[0])
-        self.s = np.sin(phi[0])
+        self.ox = ox
+        self.oy = oy
+        self.q: list[Any] = []
+        self.set_pose(phi[0], ox[0], oy[0])
 
-    def set_pose(self, phi: Array, o: Array) -> None:
-        """Replace the position level and refresh the cached cosine and sine."""
-        self.phi[0] = phi
-        self.o[0] = o
-        self.c = np.cos(phi)
-        self.s = np.sin(phi)
+    def set_pose(self, phi: Any, ox: Any, oy: Any) -> None:
+        """Replace the position level and refresh the cached cosine, sine and offsets."""
+        self.phi[0], self.ox[0], self.oy[0] = phi, ox, oy
+        if np.ndim(phi):
+            self.c, self.s = np.cos(phi), np.sin(phi)
+        else:
+            self.c, self.s = float(np.cos(phi)), float(np.sin(phi))
+        self.rot: dict[tuple[float, float], Vec] = {}
 
     @classmethod
-    def fixed(cls, n: int, origin: Array) -> Motion:
-        """A body at rest at ``origin`` (the frame)."""
-        zero = np.zeros(n)
-        zero2 = np.zeros((n, 2))
-        return cls([zero, zero, zero, zero],
-                   [np.broadcast_to(origin, (n, 2)), zero2, zero2, zero2])
+    def fixed(cls, x: float = 0.0, y: float = 0.0) -> Motion:
+        """A body at rest with its origin at ``(x, y)`` (the frame)."""
+        return cls([0.0, 0.0, 0.0, 0.0], [x, 0.0, 0.0, 0.0], [y, 0.0, 0.0, 0.0])
 
 
-def _relative(m: Motion, u: Array, k: int) -> Array:
-    """k-th derivative of a body-fixed vector whose current value is ``u``."""
-    if k == 0:
-        return u
-    pu = perp(u)
-    w = m.phi[1][:, None]
+def rotated(m: Motion, d: tuple[float, float]) -> Vec:
+    """The body-fixed offset ``d`` (m, reference pose) turned with the body."""
+    u = m.rot.get(d)
+    if u is None:
+        c, s = m.c, m.s
+        u = m.rot[d] = (c * d[0] - s * d[1], s * d[0] + c * d[1])
+    return u
+
+
+def _relative(m: Motion, u: Vec, k: int) -> Vec:
+    """k-th derivative (k >= 1) of a body-fixed vector whose current value is ``u``."""
+    ux, uy = u
+    w = m.phi[1]
     if k == 1:
-        return w * pu
-    a = m.phi[2][:, None]
+        return -w * uy, w * ux
+    a = m.phi[2]
     if k == 2:
-        return a * pu - (w * w) * u
-    z = m.phi[3][:, None]
-    return (z - w * w * w) * pu - 3.0 * w * a * u
+        w2 = w * w
+        return -a * uy - w2 * ux, a * ux - w2 * uy
+    c1 = m.phi[3] - w * w * w
+    c2 = 3.0 * w * a
+    return -c1 * uy - c2 * ux, c1 * ux - c2 * uy
 
 
-def point(m: Motion, d: Array, k: int, u: Array | None = None) -> Array:
+def point(m: Motion, d: tuple[float, float], k: int) -> Vec:
     """Return the k-th time derivative of the body point with local offset ``d``.
 
     Parameters
     ----------
     m : Motion
-    d : ndarray of shape (2,)
+    d : tuple of float
         Offset of the point from the body's origin in the reference pose, m.
     k : int
-        0 position (m), 1 velocity, 2 acceleration, 3 jerk.
-    u : ndarray of shape (n, 2), optional
-        The rotated offset, when already known.
+        0 position (m), 1 velocity (m/s), 2 acceleration (m/s^2), 3 jerk (m/s^3).
 
     Notes
     -----
@@ -81,11 +94,14 @@ def point(m: Motion, d: Array, k: int, u: Array | None = None) -> Array:
     :math:`\\ddot u = \\alpha u^\\perp - \\omega^2 u` and
     :math:`\\dddot u = (\\dot\\alpha - \\omega^3) u^\\perp - 3\\omega\\alpha u`.
     """
-    if u is None:
-        u = rotate(m.c, m.s, d)
-    return m.o[k] + _relative(m, u, k)
+    u = rotated(m, d)
+    if k == 0:
+        return m.ox[0] + u[0], m.oy[0] + u[1]
+    rx, ry = _relative(m, u, k)
+    return m.ox[k] + rx, m.oy[k] + ry
 
 
-def direction(m: Motion, e: Array, k: int) -> Array:
-    """Return the k-th time derivative of the body-fixed direction ``e`` (2,)."""
-    return _relative(m, rotate(m.c, m.s, e), k)
+def direction(m: Motion, e: tuple[float, float], k: int) -> Vec:
+    """Return the k-th time derivative of the body-fixed direction ``e``."""
+    u = rotated(m, e)
+    return u if k == 0 else _relative(m, u, k)

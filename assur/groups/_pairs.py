@@ -12,11 +12,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from math import comb
+from typing import Any
 
-import numpy as np
-
-from assur._vec import Array, rotate, wrap
-from assur.groups._motion import Motion, direction, point
+from assur._vec import wrap
+from assur.groups._motion import Motion, Vec, direction, point, rotated
 
 __all__ = ["PairPlan", "partials", "residual", "slide", "unit_wrenches"]
 
@@ -26,27 +25,40 @@ class PairPlan:
     """A pair between bodies ``first`` and ``second`` (indices into the body list).
 
     ``d_first`` and ``d_second`` are the offsets (m) of the pair's reference point from
-    each body's origin; ``axis`` is the unit slide direction in the reference pose
-    (prismatic pairs only).
+    each body's origin; ``axis`` is the unit slide direction in the reference pose and
+    ``normal`` the axis turned by +90 degrees (prismatic pairs only).
     """
 
     name: str
     kind: str
     first: int
     second: int
-    d_first: Array
-    d_second: Array
-    axis: Array | None = None
+    d_first: tuple[float, float]
+    d_second: tuple[float, float]
+    axis: tuple[float, float] | None = None
     virtual: bool = False
 
     @property
-    def normal(self) -> Array:
+    def normal(self) -> tuple[float, float]:
         """Unit normal of the slide line in the reference pose."""
         assert self.axis is not None
-        return np.array([-self.axis[1], self.axis[0]])
+        return (-self.axis[1], self.axis[0])
 
 
-def residual(pair: PairPlan, bodies: list[Motion], k: int) -> tuple[Array, Array]:
+def _dot_leibniz(pair: PairPlan, bodies: list[Motion], e: tuple[float, float],
+                 k: int) -> Any:
+    """k-th derivative of ``e(t) . (q2 - q1)`` with ``e`` fixed in the first link."""
+    m1, m2 = bodies[pair.first], bodies[pair.second]
+    total: Any = 0.0
+    for m in range(k + 1):
+        p2 = point(m2, pair.d_second, k - m)
+        p1 = point(m1, pair.d_first, k - m)
+        ex, ey = direction(m1, e, m)
+        total = total + comb(k, m) * (ex * (p2[0] - p1[0]) + ey * (p2[1] - p1[1]))
+    return total
+
+
+def residual(pair: PairPlan, bodies: list[Motion], k: int) -> Vec:
     """Return the k-th time derivative of the pair's two constraint equations.
 
     Notes
@@ -57,49 +69,40 @@ def residual(pair: PairPlan, bodies: list[Motion], k: int) -> tuple[Array, Array
     """
     m1, m2 = bodies[pair.first], bodies[pair.second]
     if pair.kind == "R":
-        r = point(m1, pair.d_first, k) - point(m2, pair.d_second, k)
-        return r[:, 0], r[:, 1]
+        x1, y1 = point(m1, pair.d_first, k)
+        x2, y2 = point(m2, pair.d_second, k)
+        return x1 - x2, y1 - y2
     rot = m2.phi[k] - m1.phi[k]
     if k == 0:
         rot = wrap(rot)
-    n0 = pair.normal
-    normal = 0.0
-    for m in range(k + 1):
-        gap = point(m2, pair.d_second, k - m) - point(m1, pair.d_first, k - m)
-        dn = direction(m1, n0, m)
-        normal = normal + comb(k, m) * (dn[:, 0] * gap[:, 0] + dn[:, 1] * gap[:, 1])
-    return rot, normal
+    return rot, _dot_leibniz(pair, bodies, pair.normal, k)
 
 
-def partials(pair: PairPlan, bodies: list[Motion], body: int) -> tuple[tuple[Array, ...], ...]:
+def partials(pair: PairPlan, bodies: list[Motion], body: int) -> tuple[tuple[Any, ...], ...]:
     """Return d(residual)/d(o_x, o_y, phi) of one of the pair's bodies, per equation.
 
-    The result is two rows (one per equation), each a tuple of three arrays (n,):
-    the sensitivities to the body's top-order origin derivative (x, y) and rotation
+    The result is two rows (one per equation), each a tuple of three entries: the
+    sensitivities to the body's top-order origin derivative (x, y) and rotation
     derivative. They are the same at every derivative order.
     """
     m1, m2 = bodies[pair.first], bodies[pair.second]
-    n = m1.c.shape[0] if np.ndim(m1.c) else m2.c.shape[0]
-    one = np.ones(n)
-    zero = np.zeros(n)
     is_first = body == pair.first
     if pair.kind == "R":
         m, d, sign = (m1, pair.d_first, 1.0) if is_first else (m2, pair.d_second, -1.0)
-        u = rotate(m.c, m.s, d)
-        return ((sign * one, zero, -sign * u[:, 1]), (zero, sign * one, sign * u[:, 0]))
-    nv = rotate(m1.c, m1.s, pair.normal)
+        ux, uy = rotated(m, d)
+        return ((sign, 0.0, -sign * uy), (0.0, sign, sign * ux))
+    nx, ny = rotated(m1, pair.normal)
     if is_first:
-        u1 = rotate(m1.c, m1.s, pair.d_first)
-        gap = point(m2, pair.d_second, 0) - (m1.o[0] + u1)
-        dphi = (-nv[:, 1] * gap[:, 0] + nv[:, 0] * gap[:, 1]
-                - (nv[:, 0] * -u1[:, 1] + nv[:, 1] * u1[:, 0]))
-        return ((zero, zero, -one), (-nv[:, 0], -nv[:, 1], dphi))
-    u2 = rotate(m2.c, m2.s, pair.d_second)
-    dphi = nv[:, 0] * -u2[:, 1] + nv[:, 1] * u2[:, 0]
-    return ((zero, zero, one), (nv[:, 0], nv[:, 1], dphi))
+        ux, uy = rotated(m1, pair.d_first)
+        px, py = point(m2, pair.d_second, 0)
+        gx, gy = px - (m1.ox[0] + ux), py - (m1.oy[0] + uy)
+        dphi = -ny * gx + nx * gy + nx * uy - ny * ux
+        return ((0.0, 0.0, -1.0), (-nx, -ny, dphi))
+    ux, uy = rotated(m2, pair.d_second)
+    return ((0.0, 0.0, 1.0), (nx, ny, ny * ux - nx * uy))
 
 
-def unit_wrenches(pair: PairPlan, bodies: list[Motion]) -> tuple[tuple[Array, ...], ...]:
+def unit_wrenches(pair: PairPlan, bodies: list[Motion]) -> tuple[tuple[Any, ...], ...]:
     """Return the wrenches on the second link per unit reaction unknown.
 
     Each wrench is ``(F_x, F_y, tau)`` with the moment ``tau`` taken about the fixed
@@ -107,27 +110,18 @@ def unit_wrenches(pair: PairPlan, bodies: list[Motion]) -> tuple[tuple[Array, ..
     normal force along the slide line's normal (N) acting at the joint's point moving
     with the second link, and the couple (N m). The first link receives the opposite.
     """
-    m1, m2 = bodies[pair.first], bodies[pair.second]
-    q = point(m2, pair.d_second, 0)
-    zero = np.zeros(q.shape[0])
-    one = np.ones(q.shape[0])
+    qx, qy = point(bodies[pair.second], pair.d_second, 0)
     if pair.kind == "R":
-        return ((one, zero, -q[:, 1]), (zero, one, q[:, 0]))
-    nv = rotate(m1.c, m1.s, pair.normal)
-    return ((nv[:, 0], nv[:, 1], q[:, 0] * nv[:, 1] - q[:, 1] * nv[:, 0]), (zero, zero, one))
+        return ((1.0, 0.0, -qy), (0.0, 1.0, qx))
+    nx, ny = rotated(bodies[pair.first], pair.normal)
+    return ((nx, ny, qx * ny - qy * nx), (0.0, 0.0, 1.0))
 
 
-def slide(pair: PairPlan, bodies: list[Motion], k: int) -> Array:
+def slide(pair: PairPlan, bodies: list[Motion], k: int) -> Any:
     """Return the k-th derivative of a prismatic pair's slide (m, m/s, ...).
 
     The slide is the displacement of the second link's point relative to the first
     link's, along the axis fixed in the first link, zero in the reference pose.
     """
-    m1, m2 = bodies[pair.first], bodies[pair.second]
     assert pair.axis is not None
-    total = 0.0
-    for m in range(k + 1):
-        gap = point(m2, pair.d_second, k - m) - point(m1, pair.d_first, k - m)
-        de = direction(m1, pair.axis, m)
-        total = total + comb(k, m) * (de[:, 0] * gap[:, 0] + de[:, 1] * gap[:, 1])
-    return total
+    return _dot_leibniz(pair, bodies, pair.axis, k)

@@ -7,8 +7,7 @@ zero jerk); in the force analysis it takes the balancing load.
 from __future__ import annotations
 
 from dataclasses import dataclass
-
-import numpy as np
+from typing import Any
 
 from assur._vec import Array
 from assur.groups._dyad import Wrench, record
@@ -23,7 +22,8 @@ class DriverPlan:
     """Input link ``body`` driven through ``pair`` at speed ``omega``, acceleration ``epsilon``.
 
     ``angle0`` is the link's angle in the reference pose (rad): the driver position
-    of a revolute driver is the link's absolute angle. ``origin`` is the pair's point.
+    of a revolute driver is the link's absolute angle. ``origin`` is the pair's point
+    (m). ``reference`` is the driver position of the reference pose (rad or m).
     """
 
     pair: PairPlan
@@ -31,7 +31,7 @@ class DriverPlan:
     omega: float
     epsilon: float
     angle0: float
-    origin: Array
+    origin: tuple[float, float]
     reference: float
 
     @property
@@ -39,56 +39,52 @@ class DriverPlan:
         """``"R"`` for a crank, ``"P"`` for a slider."""
         return self.pair.kind
 
+    @property
+    def sign(self) -> float:
+        """+1 when the input link is the pair's second link, else -1."""
+        return 1.0 if self.pair.second == self.body else -1.0
+
 
 def motion(plan: DriverPlan, position: Array, rate: float | None = None) -> Motion:
     """Return the input link's motion at driver positions ``position`` (rad or m).
 
     ``rate`` replaces the speed (used for velocity coefficients).
     """
-    n = position.shape[0]
-    omega = np.full(n, plan.omega if rate is None else rate)
-    epsilon = np.full(n, plan.epsilon)
-    zero = np.zeros(n)
-    zero2 = np.zeros((n, 2))
+    omega = plan.omega if rate is None else rate
+    x0, y0 = plan.origin
     if plan.kind == "R":
-        origin = np.broadcast_to(plan.origin, (n, 2))
-        return Motion([position - plan.angle0, omega, epsilon, zero],
-                      [origin, zero2, zero2, zero2])
+        return Motion([position - plan.angle0, omega, plan.epsilon, 0.0],
+                      [x0, 0.0, 0.0, 0.0], [y0, 0.0, 0.0, 0.0])
     assert plan.pair.axis is not None
-    e = plan.pair.axis
+    ex, ey = plan.pair.axis
     s = position - plan.reference
-    return Motion([zero, zero, zero, zero],
-                  [plan.origin + s[:, None] * e, omega[:, None] * e, epsilon[:, None] * e,
-                   zero2])
+    eps = plan.epsilon
+    return Motion([0.0, 0.0, 0.0, 0.0], [x0 + s * ex, omega * ex, eps * ex, 0.0],
+                  [y0 + s * ey, omega * ey, eps * ey, 0.0])
 
 
 def balance(plan: DriverPlan, bodies: list[Motion], wrenches: list[Wrench],
-            out: dict[str, tuple[Array, Array]]) -> Array:
-    """Return the balancing torque (N m) or force (N) and the frame's reaction.
+            out: dict[str, tuple[Any, Any, Any]]) -> Any:
+    """Return the balancing torque (N m) or force (N) and store the frame's reaction.
 
-    The frame applies the reaction (stored in ``out``) and the balancing load that hold
-    the input link in (kinetostatic) equilibrium; the frame itself receives the sum
-    of the input link's loads.
+    The frame applies the reaction and the balancing load that hold the input link in
+    (kinetostatic) equilibrium; the frame itself receives the sum of the input link's
+    loads.
     """
-    load = wrenches[plan.body]
+    fx, fy, tau = wrenches[plan.body]
     m = bodies[plan.body]
-    pivot = m.o[0]
-    force = [-load[0], -load[1]]
-    couple = -(load[2] - (pivot[:, 0] * load[1] - pivot[:, 1] * load[0]))
+    px, py = m.ox[0], m.oy[0]
+    couple = px * fy - py * fx - tau  # about the joint's point, to balance the link
     if plan.kind == "R":
         balancing = couple
-        wrench_on_link = [force[0], force[1], pivot[:, 0] * force[1] - pivot[:, 1] * force[0]]
+        on_link = [-fx, -fy, -tau - couple]
     else:
-        e = plan.pair.axis
-        assert e is not None
-        balancing = force[0] * e[0] + force[1] * e[1]
-        normal = [force[0] - balancing * e[0], force[1] - balancing * e[1]]
-        wrench_on_link = [normal[0], normal[1],
-                          pivot[:, 0] * normal[1] - pivot[:, 1] * normal[0] + couple]
+        ex, ey = plan.pair.axis  # type: ignore[misc]
+        balancing = -(fx * ex + fy * ey)
+        nx, ny = -fx - balancing * ex, -fy - balancing * ey
+        on_link = [nx, ny, px * ny - py * nx + couple]
     ground = wrenches[0]
-    for i in (0, 1, 2):
-        ground[i] = ground[i] + load[i]
-    on_second = wrench_on_link if plan.pair.second == plan.body else [
-        -w for w in wrench_on_link]
-    record(plan.pair, bodies, on_second, out)
+    for i, value in enumerate((fx, fy, tau)):
+        ground[i] = ground[i] + value
+    record(plan.pair, bodies, on_link if plan.sign > 0 else [-w for w in on_link], out)
     return balancing

@@ -10,6 +10,7 @@ jerks and reactions solve stacked dense systems with ``numpy.linalg.solve``.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -27,34 +28,28 @@ TOLERANCE = 1e-13
 
 @dataclass(frozen=True, slots=True)
 class GeneralPlan:
-    """Links (body indices), their reference origins and every pair of the group."""
+    """Links (body indices), their reference origins (m) and every pair of the group."""
 
     kind: str
     label: str
     bodies: tuple[int, ...]
-    origins: Array
+    origins: tuple[tuple[float, float], ...]
     pairs: tuple[PairPlan, ...]
     scale: float
 
 
-def _blank(phi: Array, o: Array) -> Motion:
-    return Motion([phi, phi, phi, phi], [o, o, o, o])
-
-
-def jacobian(plan: GeneralPlan, bodies: list[Motion]) -> Array:
+def jacobian(plan: GeneralPlan, bodies: list[Motion], n: int) -> Array:
     """Return the constraint Jacobian, shape (n, 2p, 3k), in the links' unknowns."""
-    n = bodies[plan.bodies[0]].c.shape[0]
     size = 3 * len(plan.bodies)
     jac = np.zeros((n, size, size))
     column = {body: 3 * i for i, body in enumerate(plan.bodies)}
     for j, pair in enumerate(plan.pairs):
         for body in {pair.first, pair.second}:
-            if body not in column:
-                continue
-            rows = partials(pair, bodies, body)
-            for r in (0, 1):
-                for c in (0, 1, 2):
-                    jac[:, 2 * j + r, column[body] + c] += rows[r][c]
+            if body in column:
+                rows = partials(pair, bodies, body)
+                for r in (0, 1):
+                    for c in (0, 1, 2):
+                        jac[:, 2 * j + r, column[body] + c] += rows[r][c]
     return jac
 
 
@@ -73,63 +68,63 @@ def conditioning(plan: GeneralPlan, jac: Array) -> Array:
     return 1.0 / np.linalg.cond(jac * rows[:, None] * cols[None, :])
 
 
-def _residuals(plan: GeneralPlan, bodies: list[Motion], k: int) -> Array:
-    return np.stack([r for pair in plan.pairs for r in residual(pair, bodies, k)], axis=-1)
+def _residuals(plan: GeneralPlan, bodies: list[Motion], k: int, n: int) -> Array:
+    out = np.empty((n, 2 * len(plan.pairs)))
+    for j, pair in enumerate(plan.pairs):
+        out[:, 2 * j], out[:, 2 * j + 1] = residual(pair, bodies, k)
+    return out
 
 
-def positions(plan: GeneralPlan, bodies: list[Motion],
-              guess: list[tuple[Array, Array]] | None = None) -> list[tuple[Array, Array]]:
+def positions(plan: GeneralPlan, bodies: list[Motion], n: int,
+              guess: list[tuple[Any, Any, Any]] | None = None) -> list[tuple[Any, Any, Any]]:
     """Assemble the group by Newton's method; NaN where it does not converge.
 
-    Returns the solved ``(rotation, origin)`` of every link, the next guess of a
-    continuation.
+    Returns the solved ``(rotation, x, y)`` of every link's origin, the next guess of
+    a continuation.
     """
-    n = next(m for m in bodies if m is not None).o[0].shape[0]
     if guess is None:
-        guess = [(np.zeros(n), np.broadcast_to(o, (n, 2)).copy()) for o in plan.origins]
-    for body, (phi, o) in zip(plan.bodies, guess, strict=True):
-        bodies[body] = _blank(phi, o)
+        guess = [(np.zeros(n), np.full(n, o[0]), np.full(n, o[1])) for o in plan.origins]
+    for body, (phi, x, y) in zip(plan.bodies, guess, strict=True):
+        bodies[body] = Motion([phi, 0.0, 0.0, 0.0], [x, 0.0, 0.0, 0.0], [y, 0.0, 0.0, 0.0])
     done = np.zeros(n, dtype=bool)
     for _ in range(MAX_ITERATIONS):
-        res = _residuals(plan, bodies, 0)
+        res = _residuals(plan, bodies, 0, n)
         done = np.max(np.abs(res), axis=-1) <= TOLERANCE * plan.scale
         if done.all():
             break
-        jac = jacobian(plan, bodies)
+        jac = jacobian(plan, bodies, n)
         bad = ~np.isfinite(jac).all(axis=(1, 2)) | (np.abs(np.linalg.det(jac)) < 1e-300)
         jac[bad] = np.eye(jac.shape[-1])
         step = np.linalg.solve(jac, -res[..., None])[..., 0]
         step[bad | done] = 0.0
         for i, body in enumerate(plan.bodies):
             m = bodies[body]
-            m.set_pose(m.phi[0] + step[:, 3 * i + 2], m.o[0] + step[:, 3 * i:3 * i + 2])
+            m.set_pose(m.phi[0] + step[:, 3 * i + 2], m.ox[0] + step[:, 3 * i],
+                       m.oy[0] + step[:, 3 * i + 1])
     out = []
     for body in plan.bodies:
         m = bodies[body]
-        phi = np.where(done, m.phi[0], np.nan)
-        o = np.where(done[:, None], m.o[0], np.nan)
-        m.set_pose(phi, o)
-        out.append((phi, o))
+        pose = tuple(np.where(done, v, np.nan) for v in (m.phi[0], m.ox[0], m.oy[0]))
+        m.set_pose(*pose)
+        out.append(pose)
     return out
 
 
-def derivative(plan: GeneralPlan, bodies: list[Motion], k: int, jac: Array) -> None:
+def derivative(plan: GeneralPlan, bodies: list[Motion], k: int, jac: Array, n: int) -> None:
     """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of every link."""
     for body in plan.bodies:
         m = bodies[body]
-        m.phi[k] = np.zeros_like(m.phi[0])
-        m.o[k] = np.zeros_like(m.o[0])
-    x = np.linalg.solve(jac, -_residuals(plan, bodies, k)[..., None])[..., 0]
+        m.phi[k] = m.ox[k] = m.oy[k] = 0.0
+    x = np.linalg.solve(jac, -_residuals(plan, bodies, k, n)[..., None])[..., 0]
     for i, body in enumerate(plan.bodies):
-        bodies[body].o[k] = x[:, 3 * i:3 * i + 2]
-        bodies[body].phi[k] = x[:, 3 * i + 2]
+        m = bodies[body]
+        m.ox[k], m.oy[k], m.phi[k] = x[:, 3 * i], x[:, 3 * i + 1], x[:, 3 * i + 2]
 
 
 def reactions(plan: GeneralPlan, bodies: list[Motion], wrenches: list[Wrench],
-              out: dict[str, tuple[Array, Array]]) -> None:
+              out: dict[str, tuple[Any, Any, Any]], n: int) -> None:
     """Solve every reaction of the group from the three equilibrium equations per link."""
     row = {body: 3 * i for i, body in enumerate(plan.bodies)}
-    n = bodies[plan.bodies[0]].c.shape[0]
     size = 3 * len(plan.bodies)
     mat = np.zeros((n, size, size))
     units = [unit_wrenches(pair, bodies) for pair in plan.pairs]
@@ -139,7 +134,10 @@ def reactions(plan: GeneralPlan, bodies: list[Motion], wrenches: list[Wrench],
                 for c in (0, 1):
                     for i in (0, 1, 2):
                         mat[:, row[body] + i, 2 * j + c] += sign * units[j][c][i]
-    rhs = np.stack([-wrenches[body][i] for body in plan.bodies for i in (0, 1, 2)], axis=-1)
+    rhs = np.empty((n, size))
+    for body, r in row.items():
+        for i in (0, 1, 2):
+            rhs[:, r + i] = -wrenches[body][i]
     lam = np.linalg.solve(mat, rhs[..., None])[..., 0]
     for j, pair in enumerate(plan.pairs):
         wrench = [lam[:, 2 * j] * units[j][0][i] + lam[:, 2 * j + 1] * units[j][1][i]

@@ -7,17 +7,14 @@ the external guide fixes; what is left is linear in the slide.
 
 from __future__ import annotations
 
-import numpy as np
+from typing import Any
 
-from assur._vec import Array
 from assur.groups._dyad import DyadPlan, linear_step
 from assur.groups._motion import Motion
 
 __all__ = ["assemble"]
 
 
-def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array]:
+def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
     """Return the pinned link's rotation (rad) and the slider's slide (m)."""
-    phi = np.asarray(bodies[plan.known[1]].phi[0], dtype=float)
-    phi = np.broadcast_to(phi, bodies[plan.known[0]].o[0].shape[:1]).copy()
-    return linear_step(plan, bodies, phi, np.zeros_like(phi))
+    return linear_step(plan, bodies, bodies[plan.known[1]].phi[0], 0.0)

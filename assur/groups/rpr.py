@@ -6,16 +6,19 @@ rotation makes the slide line pass at the right distance from the other pin.
 
 from __future__ import annotations
 
+import math
+from typing import Any
+
 import numpy as np
 
-from assur._vec import Array, wrap
+from assur._vec import wrap
 from assur.groups._dyad import DyadPlan
 from assur.groups._motion import Motion, point
 
 __all__ = ["assemble"]
 
 
-def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array]:
+def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
     """Return the common rotation (rad) of both links, twice; NaN where it cannot close.
 
     Notes
@@ -27,11 +30,11 @@ def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array]:
     g = 0 if plan.bodies[0] == plan.mid.first else 1
     h = 1 - g
     pins = [point(bodies[plan.known[b]], plan.d_known[b], 0) for b in (0, 1)]
-    gap = pins[h] - pins[g]
+    gx, gy = pins[h][0] - pins[g][0], pins[h][1] - pins[g][1]
     n0 = plan.mid.normal
-    c0 = float(n0 @ (plan.d_mid[g] - plan.d_mid[h]))
+    dg, dh = plan.d_mid[g], plan.d_mid[h]
+    c0 = n0[0] * (dg[0] - dh[0]) + n0[1] * (dg[1] - dh[1])
     with np.errstate(invalid="ignore", divide="ignore"):
-        psi = np.arccos(c0 / np.hypot(gap[:, 0], gap[:, 1]))
-    phi = wrap(np.arctan2(gap[:, 1], gap[:, 0]) - np.arctan2(n0[1], n0[0])
-               - plan.branch * psi)
+        psi = np.arccos(c0 / np.hypot(gx, gy))
+    phi = wrap(np.arctan2(gy, gx) - math.atan2(n0[1], n0[0]) - plan.branch * psi)
     return phi, phi

@@ -6,16 +6,17 @@ branch is the intersection of the reference pose.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
-from assur._vec import Array, cross, dot, rotate
 from assur.groups._dyad import DyadPlan, guide
-from assur.groups._motion import Motion, point
+from assur.groups._motion import Motion, point, rotated
 
 __all__ = ["assemble"]
 
 
-def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array]:
+def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
     """Return the first link's rotation (rad) and the slider's slide (m); NaN if open.
 
     Notes
@@ -24,14 +25,16 @@ def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array]:
     :math:`|M - P| = r`: :math:`\\sigma = -w\\cdot e + \\beta\\sqrt{(w\\cdot e)^2 -
     |w|^2 + r^2}` with :math:`w = G - P`.
     """
-    pin = point(bodies[plan.known[0]], plan.d_known[0], 0)
+    px, py = point(bodies[plan.known[0]], plan.d_known[0], 0)
     slider = bodies[plan.known[1]]
-    e = guide(plan, bodies, 1)
-    base = point(slider, plan.d_known[1], 0) + rotate(slider.c, slider.s, plan.d_mid[1])
+    ex, ey = guide(plan, bodies, 1)
+    gx, gy = point(slider, plan.d_known[1], 0)
+    ux, uy = rotated(slider, plan.d_mid[1])
     d1 = plan.d_mid[0]
-    w = base - pin
-    b = dot(w, e)
+    wx, wy = gx + ux - px, gy + uy - py
+    b = wx * ex + wy * ey
     with np.errstate(invalid="ignore"):
-        sigma = -b + plan.branch * np.sqrt(b * b - dot(w, w) + dot(d1, d1))
-    u1 = w + sigma[:, None] * e
-    return np.arctan2(cross(d1, u1), dot(d1, u1)), sigma
+        sigma = plan.branch * np.sqrt(b * b - wx * wx - wy * wy
+                                      + d1[0] * d1[0] + d1[1] * d1[1]) - b
+    vx, vy = wx + sigma * ex, wy + sigma * ey
+    return np.arctan2(d1[0] * vy - d1[1] * vx, d1[0] * vx + d1[1] * vy), sigma

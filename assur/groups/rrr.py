@@ -6,16 +6,17 @@ two intersections) is the one of the reference pose.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
-from assur._vec import Array, cross, dot
 from assur.groups._dyad import DyadPlan
 from assur.groups._motion import Motion, point
 
 __all__ = ["assemble"]
 
 
-def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array]:
+def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
     """Return both links' rotations (rad); NaN where the dyad cannot close.
 
     Notes
@@ -24,20 +25,19 @@ def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Array, Array]:
     :math:`r_1, r_2`: :math:`a = (r_1^2 - r_2^2 + L^2)/2L`, :math:`h = \\sqrt{r_1^2-a^2}`,
     :math:`M = P_1 + a\\,\\hat D + \\beta h\\,\\hat D^\\perp`.
     """
-    p1 = point(bodies[plan.known[0]], plan.d_known[0], 0)
-    p2 = point(bodies[plan.known[1]], plan.d_known[1], 0)
+    x1, y1 = point(bodies[plan.known[0]], plan.d_known[0], 0)
+    x2, y2 = point(bodies[plan.known[1]], plan.d_known[1], 0)
     d1, d2 = plan.d_mid
-    r1 = float(np.hypot(*d1))
-    r2 = float(np.hypot(*d2))
-    gap = p2 - p1
-    length2 = dot(gap, gap)
+    r1 = d1[0] * d1[0] + d1[1] * d1[1]
+    r2 = d2[0] * d2[0] + d2[1] * d2[1]
+    gx, gy = x2 - x1, y2 - y1
     with np.errstate(divide="ignore", invalid="ignore"):
-        a = (r1 * r1 - r2 * r2 + length2) / (2.0 * length2)
-        h = np.sqrt(r1 * r1 / length2 - a * a)
-    m = p1 + a[:, None] * gap + (plan.branch * h)[:, None] * np.stack(
-        (-gap[:, 1], gap[:, 0]), axis=-1)
-    u1 = m - p1
-    u2 = m - p2
-    q1 = np.arctan2(cross(d1, u1), dot(d1, u1))
-    q2 = np.arctan2(cross(d2, u2), dot(d2, u2))
+        inv = 1.0 / (gx * gx + gy * gy)
+        a = 0.5 + 0.5 * (r1 - r2) * inv
+        h = plan.branch * np.sqrt(r1 * inv - a * a)
+    # u1 = M - P1 and u2 = M - P2 in components
+    u1x, u1y = a * gx - h * gy, a * gy + h * gx
+    u2x, u2y = u1x - gx, u1y - gy
+    q1 = np.arctan2(d1[0] * u1y - d1[1] * u1x, d1[0] * u1x + d1[1] * u1y)
+    q2 = np.arctan2(d2[0] * u2y - d2[1] * u2x, d2[0] * u2x + d2[1] * u2y)
     return q1, q2
