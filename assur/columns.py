@@ -26,7 +26,7 @@ def build_columns(plan: Plan, state: KinematicState,
     """Return the column names and a name-to-array mapping for a solved sweep."""
     data: dict[str, Array] = {}
     drivers = plan.drivers
-    drive = [np.degrees(state.drive[:, i]) if d.kind == "R" else state.drive[:, i]
+    drive = [state.drive[:, i] * (180.0 / math.pi) if d.kind == "R" else state.drive[:, i]
              for i, d in enumerate(drivers)]
     data["angle"] = drive[0]
     if len(drivers) > 1:
@@ -38,9 +38,8 @@ def build_columns(plan: Plan, state: KinematicState,
             continue
         angle = plan.angle0[b] + state.link[0, :, b]
         if b not in driven and angle.size:
-            angle = np.unwrap(angle)
-            angle = angle - 2.0 * math.pi * np.round((angle[0] - _wrapped(angle[0])) / (2 * math.pi))
-        data[f"{name}.angle"] = np.degrees(angle)
+            angle = _continuous(angle)
+        data[f"{name}.angle"] = angle * (180.0 / math.pi)
         for k, key in ((1, "omega"), (2, "alpha"), (3, "jerk")):
             data[f"{name}.{key}"] = state.link[k, :, b]
     for p, name in enumerate(plan.points):
@@ -53,12 +52,20 @@ def build_columns(plan: Plan, state: KinematicState,
     if forces is not None:
         _force_columns(plan, state, forces, data)
     for values in data.values():
-        values.flags.writeable = False
+        if values.flags.owndata:
+            values.flags.writeable = False
     return tuple(data), data
 
 
-def _wrapped(x: float) -> float:
-    return math.pi - (math.pi - x) % (2.0 * math.pi)
+def _continuous(angle: Array) -> Array:
+    """Angles (rad) without jumps of a turn, the first in (-pi, pi] about its link's
+    reference angle's turn."""
+    first = angle[0]
+    shift = first - (math.pi - (math.pi - first) % (2.0 * math.pi))
+    turns = np.round(np.diff(angle) * (0.5 / math.pi))
+    if turns.any():
+        angle = angle - 2.0 * math.pi * np.concatenate(([0.0], np.cumsum(turns)))
+    return angle - shift if shift else angle
 
 
 def _force_columns(plan: Plan, state: KinematicState, forces: ForceState,

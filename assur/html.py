@@ -284,3 +284,148 @@ def _charts(plan: Plan, table: Table) -> tuple[list[dict[str, Any]], list[str]]:
             if not p.virtual:
                 columns += [f"{p.name}.Fx", f"{p.name}.Fy"]
     return charts, list(dict.fromkeys(columns))
+
+
+def _number(v: float) -> str:
+    return f"{v:.5g}" if math.isfinite(v) else "–"
+
+
+def _meta(struct: Structure, table: Table, data: dict[str, Any]) -> str:
+    driver = data["driver"]
+    angle = np.asarray(table["angle"])
+    parts = [f"W = {struct.dof}", f"class {ROMAN.get(struct.mechanism_class)} mechanism",
+             f"{len(table)} positions, {driver['label']} {_number(angle[0])} to "
+             f"{_number(angle[-1])} {driver['unit']}",
+             "force analysis" if data["forces"] else "kinematics only (no masses or loads)"]
+    if table.skipped.size:
+        parts.append(f"{table.skipped.shape[0]} positions left out: they cannot be assembled")
+    return " · ".join(escape(p) for p in parts)
+
+
+def _structure_html(struct: Structure, data: dict[str, Any]) -> str:
+    rows = []
+    for step, (g, info) in enumerate(zip(_all_groups(struct), data["groups"]), 1):
+        kind = "input link" if g.group_class == 1 else g.kind
+        cells = [f'<span class="swatch" style="background:{info["colour"]}"></span>',
+                 str(step), info["roman"], str(g.order), kind,
+                 ", ".join(info["links"]), ", ".join(_public(x) for x in g.internal),
+                 ", ".join(_public(x) for x in g.external)]
+        rows.append("<tr>" + "".join(f"<td>{c if i == 0 else escape(c)}</td>"
+                                     for i, c in enumerate(cells)) + "</tr>")
+    head = "".join(f"<th>{h}</th>" for h in ("", "Step", "Class", "Order", "Kind",
+                                                 "Links", "Internal pairs",
+                                                 "External pairs"))
+    formula = escape(struct.formula.replace(" -> ", " → "))
+    return (f'<p class="formula">{formula}</p>\n'
+            f'<table class="groups"><thead><tr>{head}</tr></thead>\n<tbody>'
+            + "\n".join(rows) + "</tbody></table>\n"
+            f'<pre class="report">{escape(str(struct))}</pre>')
+
+
+def _legend_html(data: dict[str, Any]) -> str:
+    items = []
+    for g in data["groups"]:
+        what = ("driver" if g["class"] == 1
+                else f"order {g['order']} · {g['kind']}")
+        text = f"{g['roman']} · {what} · {', '.join(g['links'])}"
+        items.append(f'<li><span class="swatch" style="background:{g["colour"]}"></span>'
+                     f"{escape(text)}</li>")
+    return '<ul class="legend">' + "".join(items) + "</ul>"
+
+
+def _table_columns(plan: Plan, table: Table, data: dict[str, Any]) -> list[tuple[str, str]]:
+    driver = data["driver"]
+    columns = [("angle", f"{driver['label']} ({driver['unit']})")]
+    joints = [p for p in plan.pairs.values() if not p.virtual]
+    if table.force_state is not None:
+        columns += [(f"{p.name}.F", f"|F| {p.name} (N)") for p in joints]
+        for s in _balancing(plan)[0]:
+            unit = "N·m" if s["key"].endswith(("torque", "torque_check")) else "N"
+            columns.append((s["key"], f"{s['name']} ({unit})"))
+        return columns
+    columns += [(f"{x}.omega", f"ω {x} (rad/s)") for x in _moving_links(plan, table)]
+    columns += [(f"{p.name}.s", f"slide {p.name} (m)") for p in joints if p.kind == "P"
+                and "~" not in plan.bodies[p.second]]
+    return columns
+
+
+def _table_html(plan: Plan, table: Table, data: dict[str, Any]) -> str:
+    columns = _table_columns(plan, table, data)
+    step = 10 if len(table) > LONG_TABLE else 1
+    values = [np.asarray(table[key]) for key, _ in columns]
+    head = "".join(f"<th>{escape(title)}</th>" for _, title in columns)
+    rows = [f'<tr data-row="{i}">' + "".join(f"<td>{_number(float(v[i]))}</td>"
+                                             for v in values) + "</tr>"
+            for i in range(0, len(table), step)]
+    note = (f"Every {step}th of {len(table)} positions." if step > 1
+            else f"All {len(table)} positions.")
+    return (f'<p class="note">{note} The highlighted row is the position shown in the '
+            'drawing.</p>\n<div class="table-wrap"><table class="values" id="values">'
+            f"<thead><tr>{head}</tr></thead>\n<tbody>" + "\n".join(rows)
+            + "</tbody></table></div>")
+
+
+def _json(data: dict[str, Any]) -> str:
+    """JSON safe inside a script element: no '<', '>' or '&' can end or open a tag."""
+    text = json.dumps(data, separators=(",", ":"), allow_nan=False, ensure_ascii=False)
+    return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
+
+
+def _page(mech: Mechanism, struct: Structure, table: Table, data: dict[str, Any]) -> str:
+    title = escape(mech.name or "Mechanism")
+    description = (f'<p class="description">{escape(mech.description)}</p>'
+                   if mech.description else "")
+    forces_note = ('<p class="note" id="force-note"></p>' if data["forces"] else "")
+    table_title = "Reactions and balancing load" if data["forces"] else "Kinematics"
+    n = len(table)
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<meta name="viewport" content="width=device-width, initial-scale=1">
+<title>{title} · assur report</title>
+<style>{CSS}</style>
+</head>
+<body>
+<header>
+<h1>{title}</h1>
+{description}
+<p class="meta">{_meta(struct, table, data)}</p>
+</header>
+<main>
+<section class="card" id="drawing">
+<h2>Mechanism</h2>
+<svg id="mechanism" viewBox="0 0 640 460" role="img" aria-label="Drawing of the mechanism">
+<defs>
+<pattern id="hatch" width="6" height="6" patternUnits="userSpaceOnUse" patternTransform="rotate(45)"><line x1="0" y1="0" x2="0" y2="6" stroke="#9ca3af" stroke-width="1.6"/></pattern>
+<marker id="arrowhead" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="6" markerHeight="6" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="#c2185b"/></marker>
+</defs>
+</svg>
+<div class="controls">
+<button type="button" id="play">Play</button>
+<input type="range" id="angle" min="0" max="{n - 1}" step="1" value="0" aria-label="Driver position">
+<output id="readout" for="angle"></output>
+</div>
+{_legend_html(data)}
+{forces_note}
+</section>
+<section class="card" id="structure">
+<h2>Structure</h2>
+{_structure_html(struct, data)}
+</section>
+<section class="card wide" id="diagrams">
+<h2>Diagrams</h2>
+<div class="charts" id="charts"></div>
+</section>
+<section class="card wide" id="table">
+<h2>{table_title}</h2>
+{_table_html(compile_plan(mech), table, data)}
+</section>
+</main>
+<footer>assur report · SI units: m, N, N·m, rad/s; angles in degrees · the drawing and
+diagrams need JavaScript, the tables do not.</footer>
+<script type="application/json" id="assur-data">{_json(data)}</script>
+<script>{SCRIPT}</script>
+</body>
+</html>
+"""

@@ -187,29 +187,32 @@ def _copy(m: Motion, omega: Any, vx: Any, vy: Any) -> Motion:
 def collect(plan: Plan, bodies: list[Motion], n: int) -> KinematicState:
     """Gather the links' motions into arrays and compute every reported point."""
     count = len(bodies)
-    link = np.empty((4, n, count))
-    origin = np.empty((4, n, count, 2))
+    # filled with one driver position per contiguous row, exposed driver-position first
+    link = np.empty((4, count, n))
+    origin = np.empty((4, 2, count, n))
     for b, m in enumerate(bodies):
         for k in range(4):
-            link[k, :, b] = m.phi[k]
-            origin[k, :, b, 0] = m.ox[k]
-            origin[k, :, b, 1] = m.oy[k]
+            link[k, b] = m.phi[k]
+            origin[k, 0, b] = m.ox[k]
+            origin[k, 1, b] = m.oy[k]
     idx = plan.point_body
-    dx, dy = plan.point_offset[:, 0], plan.point_offset[:, 1]
-    phi = link[0][:, idx]
+    dx, dy = plan.point_offset[:, 0, None], plan.point_offset[:, 1, None]
+    phi = link[0, idx]
     c, s = np.cos(phi), np.sin(phi)
     ux, uy = c * dx - s * dy, s * dx + c * dy
-    w, a, z = link[1][:, idx], link[2][:, idx], link[3][:, idx]
-    point = np.empty((4, n, len(idx), 2))
+    w, a, z = link[1, idx], link[2, idx], link[3, idx]
     o = origin[:, :, idx]
-    point[0, ..., 0], point[0, ..., 1] = o[0, ..., 0] + ux, o[0, ..., 1] + uy
-    point[1, ..., 0], point[1, ..., 1] = o[1, ..., 0] - w * uy, o[1, ..., 1] + w * ux
+    point = np.empty((4, 2, len(idx), n))
+    np.add(o[0, 0], ux, out=point[0, 0])
+    np.add(o[0, 1], uy, out=point[0, 1])
+    point[1, 0] = o[1, 0] - w * uy
+    point[1, 1] = o[1, 1] + w * ux
     w2 = w * w
-    point[2, ..., 0] = o[2, ..., 0] - a * uy - w2 * ux
-    point[2, ..., 1] = o[2, ..., 1] + a * ux - w2 * uy
+    point[2, 0] = o[2, 0] - a * uy - w2 * ux
+    point[2, 1] = o[2, 1] + a * ux - w2 * uy
     c1, c2 = z - w2 * w, 3.0 * w * a
-    point[3, ..., 0] = o[3, ..., 0] - c1 * uy - c2 * ux
-    point[3, ..., 1] = o[3, ..., 1] + c1 * ux - c2 * uy
+    point[3, 0] = o[3, 0] - c1 * uy - c2 * ux
+    point[3, 1] = o[3, 1] + c1 * ux - c2 * uy
     slides = _slides(plan, bodies, n)
     drive = np.empty((n, len(plan.drivers)))
     for i, d in enumerate(plan.drivers):
@@ -218,10 +221,12 @@ def collect(plan: Plan, bodies: list[Motion], n: int) -> KinematicState:
             drive[:, i] = m.phi[0] + d.angle0
         else:
             ex, ey = d.pair.axis  # type: ignore[misc]
-            drive[:, i] = d.reference + (m.ox[0] - d.origin[0]) * ex + (m.oy[0] - d.origin[1]) * ey
+            drive[:, i] = (d.reference + (m.ox[0] - d.origin[0]) * ex
+                           + (m.oy[0] - d.origin[1]) * ey)
     for arr in (link, origin, point, drive, *slides.values()):
         arr.flags.writeable = False
-    return KinematicState(drive, link, origin, point, slides)
+    return KinematicState(drive, link.transpose(0, 2, 1), origin.transpose(0, 3, 2, 1),
+                          point.transpose(0, 3, 2, 1), slides)
 
 
 def _slides(plan: Plan, bodies: list[Motion], n: int) -> dict[str, Array]:
