@@ -206,18 +206,20 @@ def _sweep(mech: Mechanism, angles: Any, with_forces: bool, skip: bool) -> Table
     plan = compile_plan(mech)
     drive = _to_si(plan, angles)
     n = drive.shape[0]
-    states, force_states, troubles = [], [], []
-    for start in range(0, max(n, 1), CHUNK):
+    state = _kin.allocate(plan, n)
+    force_state = _kst.allocate(plan, n) if with_forces else None
+    troubles = []
+    for start in range(0, n, CHUNK):
         chunk = drive[start:start + CHUNK]
         bodies, found = _kin.solve(plan, chunk)
-        state = _kin.collect(plan, bodies, chunk.shape[0])
-        states.append(state)
+        part = _kin.collect(plan, bodies, chunk.shape[0], state, start)
         troubles.extend((t, start) for t in found)
-        if with_forces:
-            force_states.append(_kst.solve(plan, bodies, state))
+        if force_state is not None:
+            _kst.solve(plan, bodies, part, force_state, start)
     ok = _report(plan, drive, troubles, skip)
-    state = _concat_states(states)
-    force_state = _concat_forces(force_states) if with_forces else None
+    state = _kin.freeze(state)
+    if force_state is not None:
+        force_state = _kst.freeze(force_state)
     if not ok.all():
         state = _take_state(state, ok)
         force_state = _take_forces(force_state, ok) if force_state else None
@@ -288,34 +290,9 @@ def _ranges(plan: Plan, drive: Array, mask: Array) -> str:
     return "; ".join(runs[:6]) + ("; ..." if len(runs) > 6 else "")
 
 
-def _concat_states(states: list) -> _kin.KinematicState:
-    if len(states) == 1:
-        return states[0]
-    s0 = states[0]
-    return _kin.KinematicState(
-        np.concatenate([s.drive for s in states]),
-        np.concatenate([s.link for s in states], axis=1),
-        np.concatenate([s.origin for s in states], axis=1),
-        np.concatenate([s.point for s in states], axis=1),
-        {k: np.concatenate([s.slide[k] for s in states], axis=1) for k in s0.slide})
-
-
 def _take_state(s: _kin.KinematicState, ok: Array) -> _kin.KinematicState:
     return _kin.KinematicState(s.drive[ok], s.link[:, ok], s.origin[:, ok], s.point[:, ok],
                                {k: v[:, ok] for k, v in s.slide.items()})
-
-
-def _concat_forces(parts: list) -> _kst.ForceState:
-    if len(parts) == 1:
-        return parts[0]
-    p0 = parts[0]
-    return _kst.ForceState(
-        *(np.concatenate([getattr(p, f) for p in parts])
-          for f in ("inertia_force", "inertia_torque")),
-        {k: tuple(np.concatenate([p.reactions[k][i] for p in parts]) for i in (0, 1))
-         for k in p0.reactions},
-        *(np.concatenate([getattr(p, f) for p in parts])
-          for f in ("balancing", "check", "shaking", "residual")))
 
 
 def _take_forces(p: _kst.ForceState, ok: Array) -> _kst.ForceState:

@@ -17,6 +17,7 @@ from assur._vec import Array
 from assur.groups import DYADS, _dyad, general
 from assur.groups._dyad import DyadPlan
 from assur.groups._motion import Motion
+from assur.groups._motion import point as point_of
 from assur.groups._pairs import slide
 from assur.groups.driver import motion
 from assur.plan import Plan
@@ -184,37 +185,52 @@ def _copy(m: Motion, omega: Any, vx: Any, vy: Any) -> Motion:
     return c
 
 
-def collect(plan: Plan, bodies: list[Motion], n: int) -> KinematicState:
-    """Gather the links' motions into arrays and compute every reported point."""
-    count = len(bodies)
-    # filled with one driver position per contiguous row, exposed driver-position first
-    link = np.empty((4, count, n))
-    origin = np.empty((4, 2, count, n))
+def allocate(plan: Plan, n: int) -> KinematicState:
+    """Return a writable state for ``n`` driver positions, to be filled by chunks.
+
+    Each array is stored with the driver position last (contiguous rows per link and
+    point, so that chunks are written in place) and exposed driver position first.
+    """
+    count, points = len(plan.bodies), len(plan.points)
+    link = np.empty((4, count, n)).transpose(0, 2, 1)
+    origin = np.empty((4, 2, count, n)).transpose(0, 3, 2, 1)
+    point = np.empty((4, 2, points, n)).transpose(0, 3, 2, 1)
+    drive = np.empty((len(plan.drivers), n)).T
+    slides = {name: np.empty((4, n)) for name, p in plan.pairs.items() if p.kind == "P"}
+    return KinematicState(drive, link, origin, point, slides)
+
+
+def freeze(state: KinematicState) -> KinematicState:
+    """Make every array of ``state`` read-only."""
+    for arr in (state.drive, state.link, state.origin, state.point, *state.slide.values()):
+        arr.flags.writeable = False
+    return state
+
+
+def collect(plan: Plan, bodies: list[Motion], n: int,
+            out: KinematicState | None = None, start: int = 0) -> KinematicState:
+    """Gather the links' motions and every reported point into ``out[start:start+n]``.
+
+    Returns the state of this chunk (views of ``out`` when given).
+    """
+    if out is None:
+        out = allocate(plan, n)
+    rows = slice(start, start + n)
+    link, origin, point = out.link[:, rows], out.origin[:, rows], out.point[:, rows]
     for b, m in enumerate(bodies):
         for k in range(4):
-            link[k, b] = m.phi[k]
-            origin[k, 0, b] = m.ox[k]
-            origin[k, 1, b] = m.oy[k]
-    idx = plan.point_body
-    dx, dy = plan.point_offset[:, 0, None], plan.point_offset[:, 1, None]
-    phi = link[0, idx]
-    c, s = np.cos(phi), np.sin(phi)
-    ux, uy = c * dx - s * dy, s * dx + c * dy
-    w, a, z = link[1, idx], link[2, idx], link[3, idx]
-    o = origin[:, :, idx]
-    point = np.empty((4, 2, len(idx), n))
-    np.add(o[0, 0], ux, out=point[0, 0])
-    np.add(o[0, 1], uy, out=point[0, 1])
-    point[1, 0] = o[1, 0] - w * uy
-    point[1, 1] = o[1, 1] + w * ux
-    w2 = w * w
-    point[2, 0] = o[2, 0] - a * uy - w2 * ux
-    point[2, 1] = o[2, 1] + a * ux - w2 * uy
-    c1, c2 = z - w2 * w, 3.0 * w * a
-    point[3, 0] = o[3, 0] - c1 * uy - c2 * ux
-    point[3, 1] = o[3, 1] + c1 * ux - c2 * uy
-    slides = _slides(plan, bodies, n)
-    drive = np.empty((n, len(plan.drivers)))
+            link[k, :, b] = m.phi[k]
+            origin[k, :, b, 0] = m.ox[k]
+            origin[k, :, b, 1] = m.oy[k]
+    # point by point on rows of the chunk: temporaries stay small enough for the cache
+    # and below the allocator's mmap threshold, and rotations solved already are reused
+    for p, (b, d) in enumerate(zip(plan.point_body, plan.point_offsets)):
+        m = bodies[b]
+        for k in range(4):
+            point[k, :, p, 0], point[k, :, p, 1] = point_of(m, d, k)
+    slides = {name: arr[:, rows] for name, arr in out.slide.items()}
+    _slides(plan, bodies, slides)
+    drive = out.drive[rows]
     for i, d in enumerate(plan.drivers):
         m = bodies[d.body]
         if d.kind == "R":
@@ -223,13 +239,10 @@ def collect(plan: Plan, bodies: list[Motion], n: int) -> KinematicState:
             ex, ey = d.pair.axis  # type: ignore[misc]
             drive[:, i] = (d.reference + (m.ox[0] - d.origin[0]) * ex
                            + (m.oy[0] - d.origin[1]) * ey)
-    for arr in (link, origin, point, drive, *slides.values()):
-        arr.flags.writeable = False
-    return KinematicState(drive, link.transpose(0, 2, 1), origin.transpose(0, 3, 2, 1),
-                          point.transpose(0, 3, 2, 1), slides)
+    return KinematicState(drive, link, origin, point, slides)
 
 
-def _slides(plan: Plan, bodies: list[Motion], n: int) -> dict[str, Array]:
+def _slides(plan: Plan, bodies: list[Motion], out: dict[str, Array]) -> None:
     """Slides of the prismatic pairs: a dyad's own coordinate where it is one."""
     known: dict[str, tuple[int, float]] = {}
     for solver in plan.solvers:
@@ -237,17 +250,11 @@ def _slides(plan: Plan, bodies: list[Motion], n: int) -> dict[str, Array]:
             for b, pair in zip(solver.bodies, solver.ext):
                 if pair.kind == "P":
                     known[pair.name] = (b, 1.0 if pair.second == b else -1.0)
-    out = {}
-    for name, pair in plan.pairs.items():
-        if pair.kind != "P":
-            continue
-        arr = np.empty((4, n))
+    for name, arr in out.items():
         if name in known:
             body, sign = known[name]
             for k in range(4):
                 arr[k] = sign * bodies[body].q[k]
         else:
             for k in range(4):
-                arr[k] = slide(pair, bodies, k)
-        out[name] = arr
-    return out
+                arr[k] = slide(plan.pairs[name], bodies, k)

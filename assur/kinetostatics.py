@@ -57,22 +57,15 @@ class ForceState:
     residual: Array
 
 
-def _full(value: Any, n: int) -> Array:
-    """``value`` as an array of n entries."""
-    return np.broadcast_to(np.asarray(value, dtype=float), (n,))
-
-
 def applied_loads(plan: Plan, loads: LoadPlan, bodies: list[Motion],
-                  state: KinematicState) -> tuple[list[Wrench], Array, Array]:
+                  state: KinematicState, inertia_force: Array,
+                  inertia_torque: Array) -> list[Wrench]:
     """Return every link's applied wrench (inertia, gravity, external loads).
 
-    Returns the wrenches ``[F_x, F_y, tau about the origin]`` per body and the inertia
-    forces (n, B, 2) and torques (n, B).
+    Returns the wrenches ``[F_x, F_y, tau about the origin]`` per body; the inertia
+    forces (n, B, 2) and torques (n, B) are written to the arrays given.
     """
-    n = state.drive.shape[0]
     count = len(plan.bodies)
-    inertia_force = np.zeros((n, count, 2))
-    inertia_torque = np.zeros((n, count))
     wrenches: list[Wrench] = [[0.0, 0.0, 0.0] for _ in range(count)]
     slides = {name: s[0] for name, s in state.slide.items()}
     gx, gy = loads.gravity
@@ -101,14 +94,43 @@ def applied_loads(plan: Plan, loads: LoadPlan, bodies: list[Motion],
             value, plan, state.drive, slides, entry)[0]
         w = wrenches[b]
         wrenches[b] = [w[0], w[1], w[2] + t]
-    return wrenches, inertia_force, inertia_torque
+    return wrenches
 
 
-def solve(plan: Plan, bodies: list[Motion], state: KinematicState) -> ForceState:
-    """Solve the kinetostatics of a sweep whose motion is ``bodies`` / ``state``."""
+def allocate(plan: Plan, n: int) -> ForceState:
+    """Return a writable force state for ``n`` driver positions, filled by chunks."""
+    count, drivers = len(plan.bodies), len(plan.drivers)
+    reactions = {name: (np.empty((2, n)).T, np.empty(n)) for name in plan.pairs}
+    return ForceState(np.zeros((2, count, n)).transpose(2, 1, 0),
+                      np.zeros((count, n)).T, reactions, np.empty((drivers, n)).T,
+                      np.empty((drivers, n)).T, np.empty((3, n)).T, np.empty((2, n)).T)
+
+
+def freeze(state: ForceState) -> ForceState:
+    """Make every array of ``state`` read-only."""
+    arrays = [state.inertia_force, state.inertia_torque, state.balancing, state.check,
+              state.shaking, state.residual]
+    for force, couple in state.reactions.values():
+        arrays += [force, couple]
+    for arr in arrays:
+        arr.flags.writeable = False
+    return state
+
+
+def solve(plan: Plan, bodies: list[Motion], state: KinematicState,
+          out: ForceState | None = None, start: int = 0) -> ForceState:
+    """Solve the kinetostatics of the chunk whose motion is ``bodies`` / ``state``.
+
+    The results go to rows ``start`` to ``start + n`` of ``out`` (allocated when not
+    given), which is returned.
+    """
     n = state.drive.shape[0]
+    if out is None:
+        out = allocate(plan, n)
+    rows = slice(start, start + n)
     loads = compile_loads(plan)
-    applied, inertia_force, inertia_torque = applied_loads(plan, loads, bodies, state)
+    applied = applied_loads(plan, loads, bodies, state, out.inertia_force[rows],
+                            out.inertia_torque[rows])
     wrenches = [list(w) for w in applied]
     raw: dict[str, tuple[Any, Any, Any]] = {}
     for solver in reversed(plan.solvers):
@@ -116,23 +138,19 @@ def solve(plan: Plan, bodies: list[Motion], state: KinematicState) -> ForceState
             _dyad.reactions(solver, bodies, wrenches, raw)
         else:
             general.reactions(solver, bodies, wrenches, raw, n)
-    balancing = np.empty((n, len(plan.drivers)))
+    balancing = out.balancing[rows]
     for i, d in enumerate(plan.drivers):
         balancing[:, i] = balance(d, bodies, wrenches, raw)
-    check = np.empty_like(balancing)
-    for i in range(len(plan.drivers)):
-        check[:, i] = _virtual_power(plan, bodies, applied, i)
+        out.check[rows, i] = _virtual_power(plan, bodies, applied, i)
     reactions = {}
     for name, (fx, fy, couple) in raw.items():
-        force = np.empty((n, 2))
-        force[:, 0], force[:, 1] = fx, fy
-        reactions[name] = (force, _full(couple, n))
-    shaking = np.empty((n, 3))
+        force, moment = out.reactions[name]
+        force[rows, 0], force[rows, 1], moment[rows] = fx, fy, couple
+        reactions[name] = (force[rows], moment[rows])
     for i in range(3):
-        shaking[:, i] = wrenches[0][i]
-    residual = _residual(plan, bodies, applied, reactions, balancing)
-    return ForceState(inertia_force, inertia_torque, reactions, balancing, check,
-                      shaking, residual)
+        out.shaking[rows, i] = wrenches[0][i]
+    out.residual[rows] = _residual(plan, bodies, applied, reactions, balancing)
+    return out
 
 
 def _virtual_power(plan: Plan, bodies: list[Motion], applied: list[Wrench],
@@ -182,7 +200,7 @@ def _residual(plan: Plan, bodies: list[Motion], applied: list[Wrench],
             totals[d.body] = [t[0] + fx, t[1] + fy, t[2] + m.ox[0] * fy - m.oy[0] * fx]
     n = balancing.shape[0]
     force = np.zeros(n)
-    moment = np.zeros(n)
+    moment = np.zeros(n)  # filled as running maxima
     for b in range(1, len(plan.bodies)):
         fx, fy, tau = totals[b]
         m = bodies[b]

@@ -71,6 +71,11 @@ class Plan:
     scale: float
 
     @property
+    def point_offsets(self) -> tuple[tuple[float, float], ...]:
+        """``point_offset`` as tuples of floats, the kernels' constants."""
+        return tuple((float(x), float(y)) for x, y in self.point_offset)
+
+    @property
     def newton(self) -> bool:
         """Whether a group needs Newton's method (and so a continuation)."""
         return any(isinstance(s, GeneralPlan) for s in self.solvers)
