@@ -52,6 +52,8 @@ class Plan:
         points and centres of mass (``"L.G"``).
     point_body : ndarray of int (P,)
     point_offset : ndarray (P, 2)
+    point_offsets : tuple
+        The same offsets as tuples of floats, the kernels' constants.
     scale : float
         Size of the mechanism, m (largest distance between two pairs).
     """
@@ -69,11 +71,7 @@ class Plan:
     point_body: Array
     point_offset: Array
     scale: float
-
-    @property
-    def point_offsets(self) -> tuple[tuple[float, float], ...]:
-        """``point_offset`` as tuples of floats, the kernels' constants."""
-        return tuple((float(x), float(y)) for x, y in self.point_offset)
+    point_offsets: tuple[tuple[float, float], ...] = ()
 
     @property
     def newton(self) -> bool:
@@ -127,7 +125,8 @@ def compile_plan(mech: Mechanism) -> Plan:
     solvers = tuple(_solver(plan, g, index) for g in groups)
     points, body, offset = _points(mech, plan, index)
     return dataclasses.replace(plan, drivers=driver_plans, solvers=solvers,
-                               points=points, point_body=body, point_offset=offset)
+                               points=points, point_body=body, point_offset=offset,
+                               point_offsets=tuple(_pt(d) for d in offset))
 
 
 def _pt(v: Any) -> tuple[float, float]:
