@@ -172,7 +172,9 @@ def _cmd_forces(args: argparse.Namespace) -> int:
 def _summary_columns(table: Any, force: bool) -> list[str]:
     cols = table.columns
     if force:
-        picked = [c for c in cols if c.endswith(".F") or c.startswith("driver.")]
+        picked = [c for c in cols if c.endswith(".F") or c.startswith("driver.")
+                  or (c.endswith((".torque", ".force", "_check")) and "." in c
+                      and not c.startswith(("driver.", "shaking.")))]
     else:
         picked = [c for c in cols if c.endswith((".angle", ".omega", ".alpha"))]
     return ["angle", *picked]
