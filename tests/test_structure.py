@@ -1,0 +1,425 @@
+"""Structural analysis: mobility, Assur-group decomposition and the structure report.
+
+Decompositions of the bundled examples (the expected groups are stated in each file's
+header comment) and of small mechanisms built here: every dyad kind in both mirror
+images, a class III triad, a class IV group of order 2, a two-driver five-bar, a six-bar
+whose class depends on its input link, a slot replaced by a block, and the failures
+(wrong number of drivers, links left over).
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+import assur
+from assur import DecompositionError, Driver, Joint, Link, Mechanism
+
+from .conftest import EXAMPLES
+
+KINDS = {"R": "revolute", "P": "prismatic", "S": "slot"}
+
+
+def build(joints: list[tuple], drivers: list[str], name: str = "") -> Mechanism:
+    """A mechanism from ``(name, kind letter, (link, link), at[, axis])`` tuples.
+
+    The moving links are those the joints name, in order of appearance.
+    """
+    links: list[str] = []
+    for joint in joints:
+        links += [x for x in joint[2] if x != "ground" and x not in links]
+    return Mechanism(
+        links=tuple(Link(x) for x in links),
+        joints=tuple(
+            Joint(j[0], KINDS[j[1]], tuple(j[2]), j[3], j[4] if len(j) > 4 else None)
+            for j in joints
+        ),
+        drivers=tuple(Driver(d, 10.0) for d in drivers),
+        name=name,
+    )
+
+
+def summary(groups: tuple[assur.Group, ...]) -> list[tuple[str, frozenset[str]]]:
+    """Each group as (kind, set of links)."""
+    return [(g.kind, frozenset(g.links)) for g in groups]
+
+
+# --- bundled examples --------------------------------------------------------------
+
+# file stem -> (driver joints, [(kind, links) in order of attachment], mechanism class)
+EXPECTED = {
+    "four_bar": (["O2"], [("RRR", {"coupler", "rocker"})], 2),
+    "offset_slider_crank": (["A"], [("RRP", {"rod", "piston"})], 2),
+    "slider_crank_exercise": (["A"], [("RRP", {"rod", "slider"})], 2),
+    "whitworth": (["O2"], [("RPR", {"block", "lever"}), ("RRP", {"rod", "ram"})], 2),
+    "scotch_yoke": (["O2"], [("RPP", {"block", "yoke"})], 2),
+    "six_bar_lecture": (["A"], [("RRR", {"3", "4"}), ("RRR", {"5", "6"})], 2),
+    "class3": (["O2"], [("triad", {"rod", "plate", "left_rocker", "right_rocker"})], 3),
+    "five_bar_two_cranks": (["A", "E"], [("RRR", {"left_rod", "right_rod"})], 2),
+    "slot_mechanism": (
+        ["O2"],
+        [("RPR", {"rocker", "B~block"}), ("RRP", {"rod", "ram"})],
+        2,
+    ),
+    "lever_var9": (["A"], [("RRP", {"2", "3"}), ("PRP", {"4", "5"})], 2),
+}
+
+
+@pytest.mark.parametrize("stem", sorted(EXPECTED))
+def test_example_decomposition(stem):
+    path = EXAMPLES / f"{stem}.toml"
+    if not path.exists():
+        pytest.skip(f"{path.name} is not bundled")
+    drivers, groups, mechanism_class = EXPECTED[stem]
+    s = assur.structure(assur.load(path))
+    assert [g.internal[0] for g in s.drivers] == drivers
+    assert summary(s.groups) == [(kind, frozenset(links)) for kind, links in groups]
+    assert s.mechanism_class == mechanism_class
+    assert s.dof == len(drivers)
+
+
+def test_tenbar_decomposition():
+    s = assur.structure(assur.load(EXAMPLES / "tenbar.toml"))
+    assert [(g.group_class, g.kind, g.links) for g in s.drivers] == [
+        (1, "driver", ("ground", "1"))
+    ]
+    got = summary(s.groups)
+    assert got[0] == ("RRR", {"2", "3"})
+    # (4, 5) and (6, 7) both hang on link 2 and the frame: either may come first
+    assert sorted(got[1:3], key=lambda g: sorted(g[1])) == [
+        ("RRR", {"4", "5"}),
+        ("RRP", {"6", "7"}),
+    ]
+    assert got[3] == ("RRR", {"8", "9"})
+    assert s.formula.startswith("I(ground, 1) -> II(2, 3)")
+    assert s.mechanism_class == 2
+
+
+def test_lever_decomposition_details():
+    s = assur.structure(assur.load(EXAMPLES / "lever_var9.toml"))
+    rrp, prp = s.groups
+    assert (rrp.kind, rrp.links, rrp.internal, rrp.external) == (
+        "RRP",
+        ("2", "3"),
+        ("C",),
+        ("B", "guide_C"),
+    )
+    assert (prp.kind, set(prp.links), prp.internal) == ("PRP", {"4", "5"}, ("D",))
+    assert set(prp.external) == {"block", "guide_D"}
+    assert set(prp.attached_to) == {"2", "ground"}
+
+
+def test_every_example_decomposes(example):
+    s = assur.structure(example)
+    assert s.dof == len(example.drivers) == len(s.drivers)
+    placed = [link for g in s.groups for link in g.links]
+    placed += [g.links[1] for g in s.drivers]
+    names = [link.name for link in example.links]
+    blocks = [f"{j.name}~block" for j in example.joints if j.kind == "slot"]
+    assert sorted(placed) == sorted(names + blocks)
+    for g in s.groups:
+        assert 3 * len(g.links) == 2 * (len(g.internal) + len(g.external))
+        assert g.order == len(g.external)
+    json.dumps(s.to_dict())
+
+
+# --- dyads in both mirror images ---------------------------------------------------
+
+SIGNATURES = ["RRR", "RRP", "PRR", "RPR", "PRP", "RPP", "PPR"]
+
+
+def dyad(signature: str) -> Mechanism:
+    """A crank, then links x and y: pair 1 crank-x, pair 2 x-y, pair 3 y-frame."""
+    pairs = [
+        ("B", ("crank", "x"), (0.05, 0.0)),
+        ("C", ("x", "y"), (0.15, 0.08)),
+        ("D", ("y", "ground"), (0.25, 0.0)),
+    ]
+    joints: list[tuple] = [("A", "R", ("ground", "crank"), (0.0, 0.0))]
+    for letter, (name, links, at) in zip(signature, pairs, strict=True):
+        joints.append(
+            (name, letter, links, at, (1.0, 0.5))
+            if letter == "P"
+            else (name, letter, links, at)
+        )
+    return build(joints, ["A"], name=signature)
+
+
+@pytest.mark.parametrize("signature", SIGNATURES)
+def test_dyad_signature_is_normalised(signature):
+    s = assur.structure(dyad(signature))
+    (g,) = s.groups
+    canonical = {"PRR": "RRP", "PPR": "RPP"}.get(signature, signature)
+    assert (g.group_class, g.order, g.kind) == (2, 2, canonical)
+    assert set(g.links) == {"x", "y"}
+    assert g.internal == ("C",)
+    assert set(g.attached_to) == {"crank", "ground"}
+    # the signature reads from the external pair of the first link to the other one
+    kinds = {j.name: j.kind[0].upper() for j in dyad(signature).joints}
+    assert kinds[g.external[0]] + kinds["C"] + kinds[g.external[1]] == canonical
+    first = next(j for j in dyad(signature).joints if j.name == g.external[0])
+    assert g.links[0] in first.links
+
+
+@pytest.mark.parametrize("signature", ["RRP", "RPP"])
+def test_mirror_images_agree(signature):
+    left = assur.structure(dyad(signature)).groups[0]
+    right = assur.structure(dyad(signature[::-1])).groups[0]
+    assert left.kind == right.kind == signature
+    assert (left.links, left.external) == (("x", "y"), ("B", "D"))
+    assert (right.links, right.external) == (("y", "x"), ("D", "B"))
+
+
+def test_only_sliding_pairs_is_no_group():
+    with pytest.raises(DecompositionError, match=r"links x, y are left over"):
+        assur.structure(dyad("PPP"))
+
+
+# --- higher classes ----------------------------------------------------------------
+
+
+def six_bar() -> Mechanism:
+    """Crank, rod, ternary plate and two rockers on the frame (class3.toml's chain)."""
+    return build(
+        [
+            ("O2", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "R", ("crank", "rod"), (0.03, 0.02)),
+            ("C", "R", ("rod", "plate"), (0.24, -0.03)),
+            ("D", "R", ("plate", "left"), (0.20, 0.02)),
+            ("E", "R", ("plate", "right"), (0.30, 0.03)),
+            ("F", "R", ("left", "ground"), (0.20, 0.20)),
+            ("G", "R", ("right", "ground"), (0.31, 0.21)),
+        ],
+        ["O2"],
+        name="six-bar",
+    )
+
+
+def test_class_three_triad():
+    s = assur.structure(six_bar())
+    (g,) = s.groups
+    assert (g.group_class, g.order, g.kind) == (3, 3, "triad")
+    assert set(g.links) == {"rod", "plate", "left", "right"}
+    assert set(g.internal) == {"C", "D", "E"}
+    assert set(g.external) == {"B", "F", "G"}
+    assert set(g.attached_to) == {"crank", "ground"}
+    assert s.mechanism_class == 3
+    assert s.formula.startswith("I(ground, crank) -> III(")
+
+
+@pytest.mark.parametrize(("driver", "first"), [("F", "left"), ("G", "right")])
+def test_class_depends_on_the_input_link(driver, first):
+    s = assur.structure(six_bar(), driver=driver)
+    assert [g.links for g in s.drivers] == [("ground", first)]
+    assert [(g.group_class, g.kind) for g in s.groups] == [(2, "RRR"), (2, "RRR")]
+    assert set(s.groups[-1].links) == {"crank", "rod"}
+    assert s.mechanism_class == 2
+    assert assur.structure(six_bar(), driver="O2").mechanism_class == 3
+
+
+def test_driver_option_on_a_file():
+    mech = assur.load(EXAMPLES / "class3.toml")
+    assert assur.structure(mech).mechanism_class == 3
+    assert assur.structure(mech, driver="F").mechanism_class == 2
+
+
+def test_driver_option_unknown_joint():
+    with pytest.raises(DecompositionError, match=r"--driver: unknown joint 'Q'"):
+        assur.structure(six_bar(), driver="Q")
+
+
+def test_class_four_order_two_group():
+    # links a, b, c, d in a closed quadrilateral; external pairs on the opposite links
+    # a (to the crank) and c (to the frame): no smaller part is an Assur group.
+    mech = build(
+        [
+            ("A", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "R", ("crank", "a"), (1.0, 0.0)),
+            ("ab", "R", ("a", "b"), (1.5, 1.0)),
+            ("bc", "R", ("b", "c"), (3.0, 1.2)),
+            ("cd", "R", ("c", "d"), (3.2, -0.5)),
+            ("da", "R", ("d", "a"), (1.4, -0.6)),
+            ("Oc", "R", ("c", "ground"), (4.0, 0.0)),
+        ],
+        ["A"],
+    )
+    s = assur.structure(mech)
+    (g,) = s.groups
+    assert (g.group_class, g.order) == (4, 2)
+    assert set(g.links) == {"a", "b", "c", "d"}
+    assert set(g.external) == {"B", "Oc"}
+    assert s.mechanism_class == 4
+    assert "Class IV, order 2" in str(s)
+
+
+def test_two_driver_five_bar():
+    mech = build(
+        [
+            ("A", "R", ("ground", "left"), (0.0, 0.0)),
+            ("B", "R", ("left", "p"), (0.02, 0.035)),
+            ("C", "R", ("p", "q"), (0.08, 0.12)),
+            ("D", "R", ("q", "right"), (0.13, 0.035)),
+            ("E", "R", ("right", "ground"), (0.15, 0.0)),
+        ],
+        ["A", "E"],
+    )
+    assert assur.mobility(mech) == 2
+    s = assur.structure(mech)
+    assert s.dof == 2
+    assert [(g.group_class, g.links) for g in s.drivers] == [
+        (1, ("ground", "left")),
+        (1, ("ground", "right")),
+    ]
+    (g,) = s.groups
+    assert (g.kind, set(g.links), set(g.attached_to)) == (
+        "RRR",
+        {"p", "q"},
+        {"left", "right"},
+    )
+    assert s.formula == "I(ground, left) -> I(ground, right) -> II(p, q)"
+    assert str(s).count("Class I:") == 2
+
+
+# --- slots -------------------------------------------------------------------------
+
+
+def slotted_lever() -> Mechanism:
+    """A crank whose pin B slides in the straight slot of a rocker (a higher pair)."""
+    return build(
+        [
+            ("O2", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "S", ("rocker", "crank"), (0.03, 0.02), (0.03, 0.14)),
+            ("O4", "R", ("ground", "rocker"), (0.0, -0.12)),
+        ],
+        ["O2"],
+    )
+
+
+def test_slot_is_replaced_by_a_block():
+    mech = slotted_lever()
+    assert assur.mobility(mech) == 3 * 2 - 2 * 2 - 1 == 1
+    s = assur.structure(mech)
+    assert (s.links, s.lower_pairs, s.higher_pairs, s.dof) == (2, 2, 1, 1)
+    assert s.slots == ("B",)
+    (g,) = s.groups
+    assert g.kind == "RPR"
+    assert set(g.links) == {"rocker", "B~block"}
+    assert set(g.external) == {"O4", "B~pin"}
+    report = str(s)
+    assert "Slot B" in report
+    assert "block" in report
+    assert "p4 = 1" in report
+    assert "= 1" in report.splitlines()[2]
+    assert "B (block)" in s.formula
+    assert s.to_dict()["slots"] == ["B"]
+
+
+def test_slot_example_keeps_its_mobility():
+    mech = assur.load(EXAMPLES / "slot_mechanism.toml")
+    s = assur.structure(mech)
+    assert s.dof == assur.mobility(mech) == 1
+    assert s.higher_pairs == 1
+    assert "replaced by an equivalent block" in str(s)
+
+
+# --- mobility and failures ---------------------------------------------------------
+
+
+def test_mobility_chebyshev_gruebler():
+    assert assur.mobility(assur.catalog.four_bar()) == 3 * 3 - 2 * 4
+    assert assur.mobility(assur.catalog.slider_crank()) == 1
+    assert assur.mobility(six_bar()) == 3 * 5 - 2 * 7
+    truss = build(
+        [
+            ("A", "R", ("ground", "p"), (0.0, 0.0)),
+            ("B", "R", ("p", "q"), (1.0, 1.0)),
+            ("C", "R", ("q", "ground"), (2.0, 0.0)),
+        ],
+        [],
+    )
+    assert assur.mobility(truss) == 0
+
+
+def test_mobility_differs_from_drivers():
+    four_bar = assur.catalog.four_bar()
+    two = Mechanism(
+        four_bar.links, four_bar.joints, (Driver("A", 1.0), Driver("D", 1.0))
+    )
+    match = (
+        r"drivers: the mechanism has W = 3\*3 - 2\*4 - 0 = 1 degree\(s\) of "
+        r"freedom but 2 driver\(s\); expected one driver per degree of freedom"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(two)
+    none = Mechanism(four_bar.links, four_bar.joints, ())
+    with pytest.raises(DecompositionError, match=r"= 1 degree\(s\) of freedom but 0 "):
+        assur.structure(none)
+
+
+def test_leftover_links_are_named():
+    # links 2 and 3 are a rigid truss on the frame (over-constrained), links 4 and 5
+    # dangle from the crank: W = 3*5 - 2*7 = 1 but no Assur group attaches.
+    mech = build(
+        [
+            ("A", "R", ("ground", "1"), (0.0, 0.0)),
+            ("g1", "R", ("ground", "2"), (1.0, 1.0)),
+            ("g2", "R", ("ground", "2"), (1.0, 2.0)),
+            ("j23", "R", ("2", "3"), (2.0, 2.0)),
+            ("g3", "R", ("ground", "3"), (3.0, 3.0)),
+            ("j14", "R", ("1", "4"), (0.0, 1.0)),
+            ("j45", "R", ("4", "5"), (0.0, 2.0)),
+        ],
+        ["A"],
+    )
+    assert assur.mobility(mech) == 1
+    match = (
+        r"links 2, 3, 4, 5 are left over: they form no Assur group .* on the known "
+        r"links 1, ground; expected a chain made of Assur groups"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(mech)
+
+
+# --- report and serialisation ------------------------------------------------------
+
+
+def test_report_names_every_step():
+    s = assur.structure(assur.load(EXAMPLES / "tenbar.toml"))
+    report = str(s)
+    assert "W = 3n - 2p5 - p4 = 3*9 - 2*13 - 0 = 1" in report
+    assert (
+        "1. Class I: the frame and the input link 1 (driven through pair A)" in report
+    )
+    for step, g in enumerate(s.groups, start=2):
+        line = f"{step}. Class II, order 2, dyad {g.kind}: links {', '.join(g.links)}"
+        assert line in report
+    assert f"Structure formula: {s.formula}" in report
+    assert "Class of the mechanism: II" in report
+
+
+def test_report_of_a_triad():
+    report = str(assur.structure(six_bar()))
+    assert "Structure of six-bar" in report
+    assert "2. Class III, order 3, triad: links" in report
+    assert "Class of the mechanism: III" in report
+
+
+def test_to_dict_is_json():
+    s = assur.structure(assur.load(EXAMPLES / "whitworth.toml"))
+    data = json.loads(json.dumps(s.to_dict()))
+    assert data["dof"] == 1
+    assert data["formula"] == s.formula
+    assert data["mechanism_class"] == 2
+    assert [g["kind"] for g in data["groups"]] == ["RPR", "RRP"]
+    assert data["groups"][0]["class"] == 2
+    assert data["groups"][0]["class_roman"] == "II"
+    assert data["groups"][0]["order"] == 2
+    assert data["drivers"][0]["internal_pairs"] == ["O2"]
+    assert set(data["groups"][1]["attached_to"]) == {"lever", "ground"}
+
+
+def test_structure_does_not_change_the_mechanism():
+    mech = six_bar()
+    assur.structure(mech, driver="F")
+    assert mech.drivers == (Driver("O2", 10.0),)
