@@ -30,6 +30,7 @@ try:
     __version__ = version("assur")
 except PackageNotFoundError:  # pragma: no cover - running from a source tree
     __version__ = "0.0.0"
+del version, PackageNotFoundError
 
 __all__ = [
     "AssemblyError",

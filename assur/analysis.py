@@ -44,6 +44,7 @@ class Table:
     state: _kin.KinematicState
     force_state: _kst.ForceState | None = None
     skipped: Array = field(default_factory=lambda: np.zeros(0))
+    """Driver positions left out (deg, or m), with ``skip_unassembled``."""
 
     def __getitem__(self, name: str) -> Array:
         try:
@@ -119,6 +120,9 @@ def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
 def _to_si(plan: Plan, angles: Any) -> Array:
     arr = np.asarray(angles, dtype=float)
     d = len(plan.drivers)
+    if d == 0:
+        msg = "drivers: the mechanism has no driver; expected at least one [[drivers]] entry"
+        raise ModelError(msg)
     if arr.ndim == 0:
         arr = arr.reshape(1)
     if arr.ndim == 1 and d > 1:
@@ -223,8 +227,11 @@ def _sweep(mech: Mechanism, angles: Any, with_forces: bool, skip: bool) -> Table
     if not ok.all():
         state = _take_state(state, ok)
         force_state = _take_forces(force_state, ok) if force_state else None
-    columns, data = build_columns(plan, state, force_state)
-    return Table(mech, columns, data, state, force_state, drive[~ok])
+    given = np.asarray(angles, dtype=float).reshape(n, len(plan.drivers))
+    columns, data = build_columns(plan, state, force_state, given[ok])
+    skipped = given[~ok]
+    return Table(mech, columns, data, state, force_state,
+                 skipped[:, 0] if skipped.shape[1] == 1 else skipped)
 
 
 def _report(plan: Plan, drive: Array, troubles: list, skip: bool) -> Array:

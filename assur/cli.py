@@ -104,6 +104,12 @@ def _add_picture_commands(sub: Any) -> None:
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return the exit status (0 fine, 2 bad input)."""
     parser = _parser()
+    argv = list(sys.argv[1:] if argv is None else argv)
+    # a range may start below zero: keep "--angles -30:30:10" from reading as an option
+    for i in range(len(argv) - 1):
+        if argv[i] in ("--angles", "--angle") and argv[i + 1].startswith("-"):
+            argv[i:i + 2] = [f"{argv[i]}={argv[i + 1]}", ""]
+    argv = [a for a in argv if a != ""]
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:
@@ -183,6 +189,7 @@ def _summary_columns(table: Any, force: bool) -> list[str]:
 def _emit(args: argparse.Namespace, table: Any, summary: list[str]) -> int:
     if len(table.skipped):
         skipped = ", ".join(f"{x:g}" for x in np.ravel(table.skipped)[:20])
+        skipped += ", ..." if np.size(table.skipped) > 20 else ""
         print(f"assur: note: {args.file}: left out {len(table.skipped)} position(s) that "
               f"cannot be assembled: {skipped}", file=sys.stderr)
     if args.csv:

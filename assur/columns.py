@@ -21,13 +21,19 @@ __all__ = ["build_columns"]
 POINT_SUFFIXES = ("x", "y", "vx", "vy", "ax", "ay", "jx", "jy")
 
 
-def build_columns(plan: Plan, state: KinematicState,
-                  forces: ForceState | None) -> tuple[tuple[str, ...], dict[str, Array]]:
-    """Return the column names and a name-to-array mapping for a solved sweep."""
+def build_columns(plan: Plan, state: KinematicState, forces: ForceState | None,
+                  given: Array | None = None) -> tuple[tuple[str, ...], dict[str, Array]]:
+    """Return the column names and a name-to-array mapping for a solved sweep.
+
+    ``given`` holds the driver positions as the user gave them (deg or m), which the
+    ``angle`` columns repeat exactly.
+    """
     data: dict[str, Array] = {}
     drivers = plan.drivers
-    drive = [state.drive[:, i] * (180.0 / math.pi) if d.kind == "R" else state.drive[:, i]
-             for i, d in enumerate(drivers)]
+    if given is None:
+        given = np.stack([state.drive[:, i] * (180.0 / math.pi) if d.kind == "R"
+                          else state.drive[:, i] for i, d in enumerate(drivers)], axis=-1)
+    drive = [np.array(given[:, i]) for i in range(len(drivers))]
     data["angle"] = drive[0]
     if len(drivers) > 1:
         for d, values in zip(drivers, drive):
@@ -37,9 +43,15 @@ def build_columns(plan: Plan, state: KinematicState,
         if b == 0 or "~" in name:
             continue
         angle = plan.angle0[b] + state.link[0, :, b]
-        if b not in driven and angle.size:
-            angle = _continuous(angle)
-        data[f"{name}.angle"] = angle * (180.0 / math.pi)
+        if b in driven:
+            i = next(i for i, d in enumerate(drivers) if d.body == b)
+            if drivers[i].kind == "R":
+                data[f"{name}.angle"] = drive[i]
+            else:
+                data[f"{name}.angle"] = angle * (180.0 / math.pi)
+        else:
+            data[f"{name}.angle"] = (_continuous(angle) if angle.size else angle) * (
+                180.0 / math.pi)
         for k, key in ((1, "omega"), (2, "alpha"), (3, "jerk")):
             data[f"{name}.{key}"] = state.link[k, :, b]
     for p, name in enumerate(plan.points):

@@ -58,9 +58,13 @@ def load(path: str | Path) -> Mechanism:
     """
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")  # a byte-order mark is welcome
     except OSError as err:
         msg = f"{path}: cannot read the file ({err.strerror or err})"
+        raise ModelError(msg) from err
+    except UnicodeDecodeError as err:
+        msg = (f"{path}: not UTF-8 text (byte {err.start} cannot be decoded); expected a "
+               "TOML or JSON file saved as UTF-8")
         raise ModelError(msg) from err
     try:
         return loads(text, json_format=path.suffix.lower() == ".json")
@@ -72,7 +76,8 @@ def load(path: str | Path) -> Mechanism:
 def loads(text: str, json_format: bool = False) -> Mechanism:
     """Read a mechanism from TOML (or JSON) text."""
     try:
-        data = json.loads(text) if json_format else tomllib.loads(text)
+        data = (json.loads(text, object_pairs_hook=_unique_keys) if json_format
+                else tomllib.loads(text))
     except (tomllib.TOMLDecodeError, json.JSONDecodeError) as err:
         kind = "JSON" if json_format else "TOML"
         msg = f"not valid {kind}: {err}"
@@ -80,14 +85,36 @@ def loads(text: str, json_format: bool = False) -> Mechanism:
     return parse(data)
 
 
+class _Object(dict):  # type: ignore[type-arg]
+    """A JSON object that remembers the keys it was given twice."""
+
+    twice: tuple[str, ...] = ()
+
+
+def _unique_keys(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    """JSON object hook: a key given twice is an error, as it is in TOML."""
+    out = _Object(pairs)
+    if len(out) != len(pairs):
+        seen: set[str] = set()
+        out.twice = tuple(k for k, _ in pairs if k in seen or seen.add(k))
+    return out
+
+
 def _fail(entry: str, message: str) -> None:
     msg = f"{entry}: {message}" if entry else message
     raise ModelError(msg)
 
 
+def _check_twice(entry: str, data: Any) -> None:
+    for key in getattr(data, "twice", ()):
+        _fail(f"{entry}.{key}" if entry else key,
+              "given twice; expected every name once")
+
+
 def _check_keys(entry: str, data: Any, allowed: tuple[str, ...]) -> dict[str, Any]:
     if not isinstance(data, dict):
         _fail(entry, f"expected a table of keys ({', '.join(allowed)}), got {data!r}")
+    _check_twice(entry, data)
     for key in data:
         if key not in allowed:
             close = difflib.get_close_matches(key, allowed, n=1)
@@ -115,7 +142,8 @@ def _point(entry: str, value: Any) -> Any:
                 _fail(entry, f"missing key {key!r} of a point {{from, toward, distance}}")
         if not isinstance(d["distance"], int | float) or isinstance(d["distance"], bool):
             _fail(f"{entry}.distance", f"expected a number, got {d['distance']!r}")
-        return Toward(str(d["from"]), str(d["toward"]), float(d["distance"]))
+        return Toward(_text(f"{entry}.from", d["from"]), _text(f"{entry}.toward", d["toward"]),
+                      float(d["distance"]))
     return _vec(entry, value)
 
 
@@ -131,7 +159,14 @@ def _table(entry: str, value: dict, comps: tuple[str, ...], kind: str) -> LoadTa
                 isinstance(v, int | float) and not isinstance(v, bool) for v in seq):
             _fail(f"{entry}.{key}", f"expected a list of numbers, got {seq!r}")
         seqs.append(tuple(float(v) for v in seq))
-    return LoadTable(str(d.get("over", "driver")), seqs[-1], tuple(seqs[:-1]))
+    return LoadTable(_text(f"{entry}.over", d.get("over", "driver")), seqs[-1],
+                     tuple(seqs[:-1]))
+
+
+def _text(entry: str, value: Any) -> str:
+    if not isinstance(value, str):
+        _fail(entry, f"expected a name in quotes, got {value!r}")
+    return value
 
 
 def _number(entry: str, value: Any) -> float:
@@ -168,7 +203,8 @@ def parse(data: dict[str, Any]) -> Mechanism:
         pair = d["links"]
         if not (isinstance(pair, list) and all(isinstance(x, str) for x in pair)):
             _fail(f"{entry}.links", f"expected two link names, got {pair!r}")
-        joints.append(Joint(name, str(d["kind"]), tuple(pair), _point(f"{entry}.at", d["at"]),
+        joints.append(Joint(name, _text(f"{entry}.kind", d["kind"]), tuple(pair),
+                            _point(f"{entry}.at", d["at"]),
                             None if d.get("axis") is None else _vec(f"{entry}.axis", d["axis"])))
     drivers = []
     for i, d in enumerate(_list("drivers", data.get("drivers", []))):
@@ -177,7 +213,8 @@ def parse(data: dict[str, Any]) -> Mechanism:
         for key in ("joint", "omega"):
             if key not in d:
                 _fail(entry, f"missing key {key!r}")
-        drivers.append(Driver(str(d["joint"]), _number(f"{entry}.omega", d["omega"]),
+        drivers.append(Driver(_text(f"{entry}.joint", d["joint"]),
+                              _number(f"{entry}.omega", d["omega"]),
                               _number(f"{entry}.epsilon", d.get("epsilon", 0.0))))
     gravity = None
     if "gravity" in data:
@@ -191,16 +228,19 @@ def parse(data: dict[str, Any]) -> Mechanism:
         for key in ("link", "at"):
             if key not in d:
                 _fail(entry, f"missing key {key!r}")
-        points.append(Point(name, str(d["link"]), _point(f"{entry}.at", d["at"])))
+        points.append(Point(name, _text(f"{entry}.link", d["link"]),
+                            _point(f"{entry}.at", d["at"])))
     return Mechanism(tuple(links), tuple(joints), tuple(drivers),
-                     name=str(data.get("name", "")),
-                     description=str(data.get("description", "")), gravity=gravity,
+                     name=_text("name", data.get("name", "")),
+                     description=_text("description", data.get("description", "")),
+                     gravity=gravity,
                      loads=tuple(loads_), points=tuple(points))
 
 
 def _section(entry: str, value: Any) -> dict[str, Any]:
     if not isinstance(value, dict):
         _fail(entry, f"expected a table of named entries, got {value!r}")
+    _check_twice(entry, value)
     return value
 
 
@@ -229,21 +269,21 @@ def _load(entry: str, d: Any) -> Load:
     elif torque is not None:
         torque = _number(f"{entry}.torque", torque)
     at = None if d.get("at") is None else _point(f"{entry}.at", d["at"])
-    return Load(str(d["link"]), at, force, torque)
+    return Load(_text(f"{entry}.link", d["link"]), at, force, torque)
 
 
 _BARE = re.compile(r"^[A-Za-z0-9_-]+$")
 
 
 def _key(name: str) -> str:
-    return name if _BARE.match(name) else json.dumps(name)
+    return name if _BARE.match(name) else json.dumps(name, ensure_ascii=False)
 
 
 def _value(value: Any) -> str:
     if isinstance(value, str):
-        return json.dumps(value)
+        return json.dumps(value, ensure_ascii=False)
     if isinstance(value, Toward):
-        return (f"{{ from = {json.dumps(value.start)}, toward = {json.dumps(value.toward)}, "
+        return (f"{{ from = {_value(value.start)}, toward = {_value(value.toward)}, "
                 f"distance = {_value(value.distance)} }}")
     if isinstance(value, tuple | list):
         return "[" + ", ".join(_value(v) for v in value) + "]"

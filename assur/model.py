@@ -294,6 +294,8 @@ def _check_point(entry: str, spec: object, points: set[str]) -> None:
 
 def _validate(mech: Mechanism) -> None:
     """Check every reference and value of ``mech``; raise ModelError on the first fault."""
+    if not mech.links:
+        _fail("links", "no moving links; expected at least one [links.NAME] entry")
     link_names: list[str] = []
     for link in mech.links:
         entry = f"links.{link.name}"
@@ -433,10 +435,17 @@ def _validate_load(mech: Mechanism, entry: str, load: Load, link_names: list[str
 
 
 def _check_resolvable(mech: Mechanism) -> None:
+    """Every point must have coordinates (a from/toward pair must not coincide)."""
     for joint in mech.joints:
         resolve_point(mech, joint.at, f"joints.{joint.name}.at")
     for point in mech.points:
         resolve_point(mech, point.at, f"points.{point.name}.at")
+    for link in mech.links:
+        if link.center is not None:
+            resolve_point(mech, link.center, f"links.{link.name}.center")
+    for index, load in enumerate(mech.loads):
+        if load.at is not None:
+            resolve_point(mech, load.at, f"loads[{index}].at")
 
 
 def resolve_point(mech: Mechanism, spec: PointSpec, entry: str = "point",

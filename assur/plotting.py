@@ -89,7 +89,7 @@ class _Context:
     @property
     def r(self) -> float:
         """Radius of a revolute joint's circle, m."""
-        return 0.016 * self.size
+        return 0.012 * self.size
 
     def pose(self, row: int) -> _Pose:
         """The links' placement at ``row``."""
@@ -121,7 +121,11 @@ def _context(table: Table, groups: bool = True) -> _Context:
     travel = {name: (float(np.nanmin(s[0])), float(np.nanmax(s[0])))
               for name, s in table.state.slide.items()}
     pts = np.array([p.d_second + plan.origins[p.second] for p in plan.pairs.values()])
-    return _Context(table, plan, color, legend, travel, plan.scale, pts.mean(axis=0))
+    # symbols scale with the picture: the region swept by the points
+    swept = table.state.point[0].reshape(-1, 2)
+    swept = swept[np.isfinite(swept).all(axis=1)]
+    size = max(plan.scale, float(np.ptp(swept, axis=0).max()) if len(swept) else 0.0)
+    return _Context(table, plan, color, legend, travel, size, pts.mean(axis=0))
 
 
 def _row(table: Table, angle: Any) -> int:
@@ -272,7 +276,7 @@ def _draw_guide(ax: Any, ctx: _Context, start: np.ndarray, end: np.ndarray, name
         ax.plot(*np.transpose([start, end]), color=GROUND_COLOR, lw=0.8, ls="-.",
                 alpha=alpha, zorder=1)
         side = -1.0 if np.dot(n, ctx.centroid - start) > 0 else 1.0
-        shift = side * n * 0.022 * ctx.size
+        shift = side * n * 0.024 * ctx.size
         _hatched_line(ax, ctx, start + shift, end + shift, side * n, alpha)
         return
     if len(points):
@@ -291,7 +295,7 @@ def _draw_guide(ax: Any, ctx: _Context, start: np.ndarray, end: np.ndarray, name
         ax.add_patch(Polygon(outline, closed=True, facecolor="white", edgecolor=color,
                              lw=1.4, alpha=alpha, zorder=2.5))
     else:
-        _bar(ax, start, end, color, alpha, width=3.0)
+        _bar(ax, start, end, color, alpha)
 
 
 def _hatched_line(ax: Any, ctx: _Context, a: np.ndarray, b: np.ndarray, away: np.ndarray,
@@ -315,7 +319,7 @@ def _draw_block(ax: Any, ctx: _Context, centre: np.ndarray, e: np.ndarray, color
     from matplotlib.patches import Polygon
 
     n = np.array([-e[1], e[0]])
-    half_l, half_h = 0.055 * ctx.size, 0.022 * ctx.size
+    half_l, half_h = 0.05 * ctx.size, 0.024 * ctx.size
     corners = [centre + sl * half_l * e + sh * half_h * n
                for sl, sh in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
     ax.add_patch(Polygon(corners, closed=True, facecolor=_light(color), edgecolor=color,
@@ -339,7 +343,7 @@ def _draw_pivot(ax: Any, ctx: _Context, p: np.ndarray, alpha: float) -> None:
     else:
         down = np.array([np.sign(away[0]), 0.0])
     side = np.array([-down[1], down[0]])
-    h = 0.055 * ctx.size
+    h = 0.042 * ctx.size
     tri = [p, p + h * down + 0.6 * h * side, p + h * down - 0.6 * h * side]
     ax.add_patch(Polygon(tri, closed=True, facecolor="white", edgecolor=GROUND_COLOR,
                          lw=1.4, alpha=alpha, zorder=1.3))
@@ -406,15 +410,39 @@ def _draw_mechanism(ax: Any, ctx: _Context, pose: _Pose, full: set[int],
         if key not in joints or alpha(ends) > joints[key][1]:
             joints[key] = (p, alpha(ends))
     if labels:
-        _label_joints(ax, ctx, joints)
+        busy = [_skeleton(ctx, pose, drawn)]
+        _label_joints(ax, ctx, joints, busy)
+        busy = busy[1:] + [np.array([j[0] for j in joints.values()])]
         for body in sorted(drawn):
             if body and not ctx.hidden(body):
-                _label_link(ax, ctx, pose, body, alpha({body}))
+                _label_link(ax, ctx, pose, body, alpha({body}), busy)
     return _extent(ctx, pose, drawn)
 
 
-def _label_joints(ax: Any, ctx: _Context,
-                  joints: dict[str, tuple[np.ndarray, float]]) -> None:
+def _skeleton(ctx: _Context, pose: _Pose, bodies: set[int]) -> np.ndarray:
+    """Sample points along every bar, edge and guide drawn (to keep labels off them)."""
+    samples = []
+    for body in bodies:
+        if body == 0 or ctx.hidden(body):
+            continue
+        shape = _shape(ctx, pose, body)
+        segments = [(a, b) for i, a in enumerate(shape.points) for b in shape.points[i + 1:]]
+        segments += [(g[0], g[1]) for g in shape.guides]
+        for a, b in segments:
+            count = max(2, int(np.hypot(*(b - a)) / ctx.r) + 1)
+            samples.append(a + np.outer(np.linspace(0.0, 1.0, count), b - a))
+        samples += [np.array(shape.points).reshape(-1, 2)]
+    return np.vstack(samples) if samples else np.zeros((0, 2))
+
+
+def _clearance(at: np.ndarray, busy: list[np.ndarray]) -> float:
+    pts = np.vstack(busy) if busy else np.zeros((0, 2))
+    return float(np.min(np.hypot(*(pts - at).T))) if len(pts) else math.inf
+
+
+def _label_joints(ax: Any, ctx: _Context, joints: dict[str, tuple[np.ndarray, float]],
+                  busy: list[np.ndarray]) -> None:
+    """Name the joints, each on the side of its circle with the most room."""
     merged: list[list[Any]] = []
     for name, (p, alpha) in joints.items():
         for m in merged:
@@ -424,31 +452,40 @@ def _label_joints(ax: Any, ctx: _Context,
                 break
         else:
             merged.append([p, [name], alpha])
+    turns = np.radians([45, 135, 90, 0, 180, 225, 315, 270])
     for p, names, alpha in merged:
-        away = p - ctx.centroid
-        norm = np.hypot(*away)
-        away = away / norm if norm > 1e-9 * ctx.size else np.array([0.6, 0.8])
-        # lean the label towards the upper right so it clears the bars in most poses
-        d = away + np.array([0.5, 0.7])
-        d /= np.hypot(*d)
-        at = p + 2.4 * ctx.r * d
+        best = max(((_clearance(p + 2.6 * ctx.r * np.array([math.cos(t), math.sin(t)]),
+                                busy), -k, t) for k, t in enumerate(turns)))
+        d = np.array([math.cos(best[2]), math.sin(best[2])])
+        at = p + 2.0 * ctx.r * d
+        busy.append(at[None, :])
         ax.text(at[0], at[1], ", ".join(names), fontsize=9, fontweight="bold",
-                ha="left" if d[0] > -0.3 else "right", va="bottom" if d[1] > -0.3 else "top",
+                ha="left" if d[0] > 0.3 else "right" if d[0] < -0.3 else "center",
+                va="bottom" if d[1] > 0.3 else "top" if d[1] < -0.3 else "center",
                 color="#1a1a1a", alpha=max(alpha, 0.35), zorder=7)
 
 
-def _label_link(ax: Any, ctx: _Context, pose: _Pose, body: int, alpha: float) -> None:
+def _label_link(ax: Any, ctx: _Context, pose: _Pose, body: int, alpha: float,
+                busy: list[np.ndarray]) -> None:
+    """Name a link on its bar or plate, where it is farthest from other labels."""
     shape = _shape(ctx, pose, body)
     pts = np.array(shape.points).reshape(-1, 2)
-    if len(pts) >= 2:
-        at = pts.mean(axis=0) if len(pts) > 2 else 0.5 * (pts[0] + pts[1])
-    elif shape.guides:
-        at = 0.5 * (shape.guides[0][0] + shape.guides[0][1])
+    if len(pts) > 2:
+        c = pts.mean(axis=0)
+        candidates = [c] + [c + 0.4 * (q - c) for q in pts]
+    elif len(pts) == 2 or shape.guides:
+        a, b = (pts[0], pts[1]) if len(pts) == 2 else shape.guides[0][:2]
+        candidates = [a + t * (b - a) for t in (0.5, 0.36, 0.64, 0.25, 0.75)]
     elif shape.blocks:
         centre, e = shape.blocks[0]
-        at = centre + 0.055 * ctx.size * np.array([-e[1], e[0]])
+        n = np.array([-e[1], e[0]])
+        candidates = [centre + 0.07 * ctx.size * s * n for s in (1, -1)]
     else:
         return
+    scores = [_clearance(q, busy) for q in candidates]
+    good = [k for k, v in enumerate(scores) if v > 4.0 * ctx.r]
+    at = candidates[good[0] if good else int(np.argmax(scores))]
+    busy.append(at[None, :])
     ax.text(at[0], at[1], ctx.plan.bodies[body], fontsize=8.5, ha="center", va="center",
             color=ctx.color[body], alpha=max(alpha, 0.35), zorder=6.5,
             bbox={"boxstyle": "round,pad=0.25", "facecolor": "white",
@@ -463,7 +500,7 @@ def _frame_axes(ax: Any, points: Sequence[np.ndarray], size: float,
     pad = margin * max(size, *(high - low))
     ax.set_xlim(low[0] - pad, high[0] + pad)
     ax.set_ylim(low[1] - pad, high[1] + pad)
-    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_aspect("equal", adjustable="box")
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
 
@@ -567,32 +604,35 @@ def _scale(arrows: Iterable[_Arrow], size: float) -> float:
 
 
 def _draw_arrows(ax: Any, ctx: _Context, arrows: list[_Arrow], scale: float,
-                 values: bool) -> list[np.ndarray]:
-    """Draw ``arrows`` at ``scale`` N per cm; return their extreme points."""
+                 text: str | None) -> list[np.ndarray]:
+    """Draw ``arrows`` at ``scale`` N per cm; return their extreme points.
+
+    ``text`` is ``"values"`` (name and value), ``"names"`` or None (no labels).
+    """
     from matplotlib.patches import FancyArrowPatch
     from matplotlib.path import Path
 
     seen = []
     per_metre = scale * 100.0
     tiny = 1e-9 * max([abs(a.couple or 0) for a in arrows] + [1.0])
+    box = {"boxstyle": "round,pad=0.1", "facecolor": "white", "edgecolor": "none",
+           "alpha": 0.75}
     for a in arrows:
-        if a.force is not None:
+        if a.force is not None and float(np.hypot(*a.force)) > 0:
             mag = float(np.hypot(*a.force))
-            if not mag > 0:
-                continue
             tip = a.point + a.force / per_metre
             ax.add_patch(FancyArrowPatch(tuple(a.point), tuple(tip), arrowstyle="-|>",
                                          mutation_scale=13, color=a.color, lw=1.7,
                                          shrinkA=0, shrinkB=0, zorder=6))
             seen.append(tip)
-            if values:
-                text = f"{a.label} = {mag:.3g} {a.value}"
+            if text:
                 u = a.force / mag
-                ax.text(*(tip + 0.6 * ctx.r * u), text, fontsize=7.5, color=a.color,
+                words = f"{a.label} = {mag:.3g} {a.value}" if text == "values" else a.label
+                ax.text(*(tip + 0.5 * ctx.r * u), words, fontsize=7.5, color=a.color,
                         ha="left" if u[0] >= 0 else "right",
-                        va="bottom" if u[1] >= 0 else "top", zorder=7)
+                        va="bottom" if u[1] >= 0 else "top", zorder=7, bbox=box)
         if a.couple is not None and abs(a.couple) > tiny:
-            rad = (3.2 if a.color == DRIVER_COLOR else 2.2) * ctx.r
+            rad = (3.4 if a.color == DRIVER_COLOR else 2.3) * ctx.r
             t = np.linspace(math.radians(-100), math.radians(150), 40)
             if a.couple < 0:
                 t = t[::-1]
@@ -601,10 +641,14 @@ def _draw_arrows(ax: Any, ctx: _Context, arrows: list[_Arrow], scale: float,
                                          mutation_scale=11, color=a.color, lw=1.5,
                                          zorder=6))
             seen += [a.point - rad, a.point + rad]
-            if values:
-                at = a.point + rad * np.array([0.75, 0.85])
+            if text == "values" or (text and a.color == DRIVER_COLOR):
+                at = a.point + rad * np.array([0.7, 0.8])
                 ax.text(*at, f"{a.label} = {a.couple:.3g} {a.value}", fontsize=7.5,
-                        color=a.color, ha="left", va="bottom", zorder=7)
+                        color=a.color, ha="left", va="bottom", zorder=7, bbox=box)
+            elif text:
+                at = a.point + rad * np.array([0.7, 0.8])
+                ax.text(*at, a.label, fontsize=7.5, color=a.color, ha="left",
+                        va="bottom", zorder=7, bbox=box)
     return seen
 
 
@@ -619,7 +663,7 @@ def _legend(ax: Any, entries: list[tuple[str, str]], title: str | None = None,
             outside: bool = True) -> None:
     from matplotlib.lines import Line2D
 
-    handles = [Line2D([], [], color=c, lw=4 if c else 0, label=text)
+    handles = [Line2D([], [], color=c or "none", lw=4 if c else 0, label=text)
                for text, c in entries]
     kw = {"loc": "upper left", "bbox_to_anchor": (1.02, 1.0)} if outside else {}
     ax.legend(handles=handles, fontsize=8, title=title, title_fontsize=8,
@@ -695,7 +739,7 @@ def _draw_row(ax: Any, ctx: _Context, row: int, forces: bool, scale: float | Non
     if forces:
         arrows = _overview_arrows(ctx, pose, row)
         scale = scale or _scale(arrows, ctx.size)
-        seen += _draw_arrows(ax, ctx, arrows, scale, labels)
+        seen += _draw_arrows(ax, ctx, arrows, scale, "names" if labels else None)
         entries += [("reaction, by first link on second", REACTION_COLOR),
                     ("inertia force and torque", INERTIA_COLOR),
                     ("balancing load", DRIVER_COLOR),
@@ -856,7 +900,7 @@ def draw_free_body(table: Table, group_index: int, angle: Any = None, ax: Any = 
     seen = _draw_mechanism(ax, ctx, pose, bodies)
     arrows = _free_body_arrows(table, group_index, row)
     scale = scale or _scale(arrows, 0.8 * ctx.size)
-    seen += _draw_arrows(ax, ctx, arrows, scale, True)
+    seen += _draw_arrows(ax, ctx, arrows, scale, "values")
     seen += [a.point for a in arrows]
     _frame_axes(ax, seen, 0.5 * ctx.size, margin=0.12)
     text, color, _ = ctx.legend[len(ctx.plan.drivers) + group_index]
@@ -866,3 +910,379 @@ def draw_free_body(table: Table, group_index: int, angle: Any = None, ax: Any = 
                  ("gravity, external load", LOAD_COLOR),
                  (f"force scale: 1 cm = {scale:g} N", "")])
     return ax
+
+
+# ------------------------------------------------------------ diagrams over a sweep
+
+def _driver_axis(ax: Any, table: Table) -> np.ndarray:
+    """Label the horizontal axis with the driver position; return its values."""
+    from matplotlib.ticker import MultipleLocator
+
+    from assur.plan import compile_plan
+
+    x = np.asarray(table["angle"])
+    if compile_plan(table.mechanism).drivers[0].kind == "R":
+        ax.set_xlabel("driver angle φ [deg]")
+        if np.ptp(x) >= 180.0:
+            ax.xaxis.set_major_locator(MultipleLocator(90.0 if np.ptp(x) > 400 else 45.0))
+    else:
+        ax.set_xlabel("driver position s [m]")
+    ax.grid(True, lw=0.5, alpha=0.5)
+    return x
+
+
+def _public_links(plan: Plan) -> list[str]:
+    return [b for b in plan.bodies[1:] if "~" not in b]
+
+
+def _moving_points(table: Table, extra_first: bool = True) -> list[str]:
+    """Reported points that move (joints and extra points, not centres of mass)."""
+    from assur.plan import compile_plan
+
+    plan = compile_plan(table.mechanism)
+    extra = [p.name for p in table.mechanism.points]
+    joints = [n for n, pair in plan.pairs.items() if not pair.virtual]
+    names, paths = [], []
+    for name in (extra + joints) if extra_first else (joints + extra):
+        path = np.column_stack([table[f"{name}.x"], table[f"{name}.y"]])
+        if np.ptp(path, axis=0).max() <= 1e-9 * plan.scale:
+            continue  # a pivot on the frame has no path
+        if any(np.allclose(path, q, rtol=0, atol=1e-9 * plan.scale) for q in paths):
+            continue  # a slider's guide point runs with its pin
+        names.append(name)
+        paths.append(path)
+    return names
+
+
+def plot_motion(table: Table, names: Sequence[str] | str | None = None,
+                quantity: str = "omega", ax: Any = None) -> Any:
+    """Plot one quantity of links or points against the driver position.
+
+    Parameters
+    ----------
+    table : Table
+    names : str or sequence of str, optional
+        Links, or points (joints, extra points, centres ``"L.G"``). Default: every
+        moving link for a link quantity, every moving point otherwise.
+    quantity : str
+        For links ``"angle"`` (deg), ``"omega"``, ``"alpha"``, ``"jerk"``; for points
+        ``"x"``, ``"v"``, ``"a"``, ``"j"`` (both components) or one column suffix
+        such as ``"vy"``; for prismatic joints also ``"s"`` and, as their slide's
+        derivatives, ``"v"``, ``"a"``, ``"j"``.
+    ax : matplotlib Axes, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Raises
+    ------
+    ModelError
+        When the table has no such column for one of ``names``.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import assur
+    >>> t = assur.kinematics(assur.catalog.four_bar(), range(0, 360, 10))
+    >>> len(plot_motion(t, ["coupler", "rocker"], "omega").lines)
+    2
+    """
+    from assur.plan import compile_plan
+
+    plan = compile_plan(table.mechanism)
+    if names is None:
+        names = (_public_links(plan) if quantity in LINK_UNITS
+                 else _moving_points(table, extra_first=False))
+    elif isinstance(names, str):
+        names = [names]
+    ax = _new_axes(ax, (8.0, 4.5))
+    x = _driver_axis(ax, table)
+    ctx = _context(table)
+    for name in names:
+        color = ctx.color[plan.body(name)] if name in plan.bodies else None
+        if f"{name}.{quantity}" in table:
+            line = ax.plot(x, table[f"{name}.{quantity}"], lw=1.6, label=name, color=color)
+        elif quantity in POINT_PARTS and f"{name}.{POINT_PARTS[quantity][0]}" in table:
+            cx, cy = POINT_PARTS[quantity]
+            line = ax.plot(x, table[f"{name}.{cx}"], lw=1.6, label=f"{name} {cx}")
+            ax.plot(x, table[f"{name}.{cy}"], lw=1.6, ls="--", color=line[0].get_color(),
+                    label=f"{name} {cy}")
+        else:
+            have = sorted({c.rsplit(".", 1)[1] for c in table.columns
+                           if c.rsplit(".", 1)[0] == name})
+            msg = (f"plot_motion: no quantity {quantity!r} for {name!r}; expected one of "
+                   f"{', '.join(have + [q for q in POINT_PARTS if f'{name}.x' in table]) or 'a link or point name'}")
+            raise ModelError(msg)
+    unit = LINK_UNITS.get(quantity) or POINT_UNITS.get(quantity, "")
+    ax.set_ylabel(f"{quantity} [{unit}]")
+    ax.set_title(f"{table.mechanism.name or 'Mechanism'}: {quantity}", fontsize=10)
+    ax.legend(fontsize=8, ncols=2 if len(ax.lines) > 8 else 1)
+    return ax
+
+
+def plot_paths(table: Table, points: Sequence[str] | None = None, angle: Any = None,
+               ax: Any = None) -> Any:
+    """Plot the paths of points over the sweep, over the mechanism drawn faintly.
+
+    Parameters
+    ----------
+    table : Table
+    points : sequence of str, optional
+        Point names (joints, extra points, centres ``"L.G"``). Default: every extra
+        point (coupler curves, drawn thicker) and every moving joint.
+    angle : float, optional
+        Driver position of the faint mechanism, deg (default: the first row).
+    ax : matplotlib Axes, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    ctx = _context(table)
+    row = _row(table, angle)
+    ax = _new_axes(ax)
+    seen = _draw_mechanism(ax, ctx, ctx.pose(row), set(), set(range(len(ctx.plan.bodies))))
+    extra = {p.name for p in table.mechanism.points}
+    names = list(points) if points is not None else _moving_points(table)
+    colors = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf",
+              "#8c564b", "#e377c2", "#bcbd22", "#7f7f7f")
+    for k, name in enumerate(names):
+        if f"{name}.x" not in table:
+            msg = f"plot_paths: no point {name!r}; expected a joint or an extra point"
+            raise ModelError(msg)
+        xy = np.column_stack([table[f"{name}.x"], table[f"{name}.y"]])
+        color = colors[k % len(colors)]
+        coupler = name in extra
+        ax.plot(xy[:, 0], xy[:, 1], color=color, lw=2.4 if coupler else 1.4, zorder=5,
+                label=f"{name} (coupler curve)" if coupler else name)
+        _direction(ax, xy, color)
+        seen += list(xy)
+    _frame_axes(ax, seen, ctx.size, margin=0.06)
+    ax.set_title(f"{table.mechanism.name or 'Mechanism'}: paths of points", fontsize=10)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
+    return ax
+
+
+def _direction(ax: Any, xy: np.ndarray, color: str) -> None:
+    """An arrowhead a third of the way along a path, showing the sense of motion."""
+    from matplotlib.patches import FancyArrowPatch
+
+    k = len(xy) // 3
+    if len(xy) < 3 or not np.all(np.isfinite(xy[k:k + 2])):
+        return
+    ax.add_patch(FancyArrowPatch(tuple(xy[k]), tuple(xy[k + 1]), arrowstyle="-|>",
+                                 mutation_scale=14, color=color, lw=0, zorder=5.5,
+                                 shrinkA=0, shrinkB=0))
+
+
+def plot_torque(table: Table, ax: Any = None) -> Any:
+    """Plot the balancing torque (or force) and its virtual-power check.
+
+    Parameters
+    ----------
+    table : Table
+        A forces table.
+    ax : matplotlib Axes, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    _need_forces(table, "plot_torque")
+    from assur.plan import compile_plan
+
+    plan = compile_plan(table.mechanism)
+    ax = _new_axes(ax, (8.0, 4.5))
+    x = _driver_axis(ax, table)
+    fs = table.force_state
+    colors = (DRIVER_COLOR, "#e6550d", "#31a354")
+    step = max(1, len(x) // 36)
+    for i, d in enumerate(plan.drivers):
+        what, unit = ("torque", "N m") if d.kind == "R" else ("force", "N")
+        name = f" at {d.pair.name}" if len(plan.drivers) > 1 else ""
+        color = colors[i % len(colors)]
+        ax.plot(x, fs.balancing[:, i], color=color, lw=1.8,
+                label=f"balancing {what}{name} (equilibrium)")
+        ax.plot(x[::step], fs.check[::step, i], ls="none", marker="o", mfc="none",
+                color=color, ms=5, label=f"virtual-power check{name}")
+        mean = float(np.mean(fs.balancing[:, i]))
+        ax.axhline(mean, color=color, lw=0.9, ls=":",
+                   label=f"mean {mean:.4g} {unit}{name}")
+    ax.axhline(0.0, color="black", lw=0.6)
+    unit = "N m" if plan.drivers[0].kind == "R" else "N"
+    ax.set_ylabel(f"balancing load [{unit}]")
+    ax.set_title(f"{table.mechanism.name or 'Mechanism'}: balancing load", fontsize=10)
+    ax.legend(fontsize=8)
+    return ax
+
+
+def _locus(ax: Any, table: Table, fx: np.ndarray, fy: np.ndarray, color: str) -> None:
+    """The hodograph of a force: its tip's path, the origin and a few driver marks."""
+    ax.plot(fx, fy, color=color, lw=1.5)
+    ax.plot([0], [0], marker="+", color="black", ms=9)
+    ax.axhline(0.0, color="#999999", lw=0.5)
+    ax.axvline(0.0, color="#999999", lw=0.5)
+    marks = np.linspace(0, len(fx), 5, dtype=int)[:-1] if len(fx) >= 4 else [0]
+    ax.annotate("", xy=(fx[0], fy[0]), xytext=(0, 0),
+                arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.0})
+    for k in marks:
+        ax.plot([fx[k]], [fy[k]], marker="o", ms=3.5, color=color)
+        ax.annotate(f"{table['angle'][k]:.0f}°" if _revolute(table) else
+                    f"{table['angle'][k]:.3g} m", (fx[k], fy[k]), fontsize=7,
+                    xytext=(3, 3), textcoords="offset points")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, lw=0.4, alpha=0.5)
+
+
+def _revolute(table: Table) -> bool:
+    from assur.plan import compile_plan
+
+    return compile_plan(table.mechanism).drivers[0].kind == "R"
+
+
+def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
+    """Plot the hodograph (polar diagram) of every joint reaction: Fy against Fx.
+
+    Each panel traces the tip of the reaction vector (by the joint's first link on
+    its second) over the sweep, from the origin; dots mark four driver positions.
+
+    Parameters
+    ----------
+    table : Table
+        A forces table.
+    joints : sequence of str, optional
+        Joints to show; default every joint.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    import matplotlib.pyplot as plt
+
+    _need_forces(table, "plot_hodographs")
+    ctx = _context(table)
+    names = list(joints) if joints is not None else [
+        n for n, p in ctx.plan.pairs.items() if not p.virtual]
+    for name in names:
+        if name not in ctx.plan.pairs or ctx.plan.pairs[name].virtual:
+            msg = f"plot_hodographs: no joint {name!r}; expected one of the file's joints"
+            raise ModelError(msg)
+    ncols = min(4, len(names))
+    nrows = math.ceil(len(names) / ncols)
+    fig, axes = plt.subplots(nrows, ncols, figsize=(3.4 * ncols, 3.3 * nrows + 0.4),
+                             layout="constrained", squeeze=False)
+    for ax, name in zip(axes.flat, names):
+        pair = ctx.plan.pairs[name]
+        force = ctx.table.force_state.reactions[name][0]
+        _locus(ax, table, force[:, 0], force[:, 1], ctx.color[pair.second])
+        first, second = (ctx.plan.bodies[b] for b in (pair.first, pair.second))
+        ax.set_title(f"{name}: {first} on {_public(second)}\n"
+                     f"max {np.nanmax(np.hypot(force[:, 0], force[:, 1])):.4g} N",
+                     fontsize=8.5)
+        ax.set_xlabel("Fx [N]", fontsize=8)
+        ax.set_ylabel("Fy [N]", fontsize=8)
+        ax.tick_params(labelsize=7)
+    for ax in list(axes.flat)[len(names):]:
+        ax.set_axis_off()
+    fig.suptitle(f"{table.mechanism.name or 'Mechanism'}: hodographs of the joint "
+                 "reactions", fontsize=10)
+    return fig
+
+
+def plot_shaking(table: Table) -> Any:
+    """Plot the shaking force (its hodograph and components) and shaking moment.
+
+    The shaking force and moment are the resultant of every load the moving links
+    put on the frame (moment about the origin).
+
+    Parameters
+    ----------
+    table : Table
+        A forces table.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    import matplotlib.pyplot as plt
+
+    _need_forces(table, "plot_shaking")
+    shaking = table.force_state.shaking
+    fig = plt.figure(figsize=(11.0, 4.8), layout="constrained")
+    grid = fig.add_gridspec(2, 2, width_ratios=(1.0, 1.4))
+    polar = fig.add_subplot(grid[:, 0])
+    _locus(polar, table, shaking[:, 0], shaking[:, 1], "#1f77b4")
+    polar.set_xlabel("Fx [N]")
+    polar.set_ylabel("Fy [N]")
+    polar.set_title("hodograph of the shaking force", fontsize=9)
+    force = fig.add_subplot(grid[0, 1])
+    x = _driver_axis(force, table)
+    force.plot(x, shaking[:, 0], label="Fx", lw=1.5)
+    force.plot(x, shaking[:, 1], label="Fy", lw=1.5)
+    force.plot(x, np.hypot(shaking[:, 0], shaking[:, 1]), label="|F|", lw=1.5,
+               color="black")
+    force.set_ylabel("force [N]")
+    force.legend(fontsize=8, ncols=3)
+    force.set_xlabel("")
+    moment = fig.add_subplot(grid[1, 1], sharex=force)
+    _driver_axis(moment, table)
+    moment.plot(x, shaking[:, 2], color="#d62728", lw=1.5, label="M about the origin")
+    moment.set_ylabel("moment [N m]")
+    moment.legend(fontsize=8)
+    fig.suptitle(f"{table.mechanism.name or 'Mechanism'}: shaking force and moment on "
+                 "the frame", fontsize=10)
+    return fig
+
+
+def animate(table: Table, path: Any, forces: bool = False, fps: float = 20,
+            dpi: float = 80) -> int:
+    """Write an animated GIF of the sweep, one frame per row of ``table``.
+
+    Parameters
+    ----------
+    table : Table
+    path : str or path-like
+        The GIF file to write.
+    forces : bool
+        Draw the joint reactions and the other loads too, at one scale for the whole
+        sweep (needs a forces table).
+    fps : float
+        Frames per second.
+    dpi : float
+        Resolution of the frames (the figure is 8 x 5.5 inches).
+
+    Returns
+    -------
+    int
+        The number of frames written.
+    """
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import PillowWriter
+
+    if forces:
+        _need_forces(table, "animate(forces=True)")
+    ctx = _context(table)
+    rows = range(len(table))
+    limits: list[np.ndarray] = []
+    scale = None
+    if forces:
+        scale = _scale([a for r in rows for a in _overview_arrows(ctx, ctx.pose(r), r)],
+                       ctx.size)
+    for r in rows:
+        limits += _extent(ctx, ctx.pose(r))
+    low = np.nanmin(np.array(limits), axis=0)
+    high = np.nanmax(np.array(limits), axis=0)
+    corners = [low - 0.12 * ctx.size * forces, high + 0.12 * ctx.size * forces]
+    fig, ax = plt.subplots(figsize=(8.0, 5.5), layout="constrained")
+    try:
+        writer = PillowWriter(fps=fps)
+        with writer.saving(fig, str(path), dpi):
+            for r in rows:
+                ax.clear()
+                _draw_row(ax, ctx, r, forces, scale, True, True, corners)
+                writer.grab_frame()
+    finally:
+        plt.close(fig)
+    return len(table)

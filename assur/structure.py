@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from assur.errors import DecompositionError
+from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, resolve_point
 
 __all__ = ["Group", "Pair", "Structure", "Topology", "decompose", "mobility",
@@ -232,7 +232,11 @@ def structure(mech: Mechanism, driver: str | None = None) -> Structure:
             msg = f"--driver: unknown joint {driver!r}"
             raise DecompositionError(msg)
         omega = mech.drivers[0].omega if mech.drivers else 1.0
-        mech = dataclasses.replace(mech, drivers=(Driver(driver, omega),))
+        try:
+            mech = dataclasses.replace(mech, drivers=(Driver(driver, omega),))
+        except ModelError as err:
+            msg = f"--driver: {str(err).split(': ', 1)[-1]}"
+            raise DecompositionError(msg) from None
     drivers, groups, topo = decompose(mech)
     n = len(mech.links)
     p4 = len(topo.slots)

@@ -85,11 +85,6 @@ def test_missing_file(tmp_path, capsys):
     assert text.startswith("cannot read the file")
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a file that is not UTF-8 ends in a "
-    "UnicodeDecodeError traceback instead of one error line",
-)
 def test_file_not_in_utf8(tmp_path, capsys):
     path = tmp_path / "latin1.toml"
     path.write_bytes(
@@ -129,11 +124,6 @@ def test_driver_option_unknown_joint(capsys):
     )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="--driver with a joint off the frame reports the "
-    "entry 'drivers[0].joint', which is not in the file",
-)
 def test_driver_option_off_the_frame(capsys):
     path = EXAMPLES / "class3.toml"
     text = fails(capsys, ["structure", path, "--driver", "C"], path)
@@ -288,11 +278,6 @@ def test_angle_ranges(spec, angles, capsys):
     np.testing.assert_allclose(parse_angles(spec), angles, rtol=0, atol=1e-12)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="argparse takes '-30:30:10' after --angles for an "
-    "option: a range starting below zero needs --angles=-30:30:10",
-)
 def test_negative_start_as_a_separate_argument(capsys):
     succeeds(
         capsys, ["kinematics", EXAMPLES / "four_bar.toml", "--angles", "-30:30:10"]
@@ -436,11 +421,6 @@ def test_skip_unassembled(double_rocker, capsys):
     assert "left out 9 position(s)" in err
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the note lists the left-out positions in radians "
-    "(0, 1.5708, 2.0944, ...) though --angles gives them in degrees",
-)
 def test_skip_unassembled_lists_positions_in_degrees(double_rocker, capsys):
     _, err = succeeds(
         capsys,

@@ -427,11 +427,6 @@ def test_unreadable_file(tmp_path):
         assur.load(tmp_path)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a file that is not UTF-8 raises "
-    "UnicodeDecodeError from Path.read_text in io.load, not ModelError",
-)
 def test_file_not_in_utf8(tmp_path):
     path = tmp_path / "latin1.toml"
     path.write_bytes(
@@ -441,11 +436,6 @@ def test_file_not_in_utf8(tmp_path):
         assur.load(path)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a UTF-8 byte-order mark (as Windows editors "
-    "write) makes the file 'not valid TOML: Invalid statement'",
-)
 def test_file_with_a_byte_order_mark(tmp_path):
     path = tmp_path / "bom.toml"
     path.write_text("\ufeff" + BASE, encoding="utf-8")
@@ -476,11 +466,6 @@ def test_duplicate_link_in_code():
         )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="json.loads merges duplicate keys silently (the "
-    "last wins), so a JSON file with two joints of one name reads fine",
-)
 def test_duplicate_joint_in_json(tmp_path):
     path = tmp_path / "twice.json"
     text = json_with_duplicate_joint()
@@ -490,12 +475,6 @@ def test_duplicate_joint_in_json(tmp_path):
         assur.load(path)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a centre given as {from, toward} whose two "
-    "points coincide in the pose is caught only by the analysis, with the "
-    "entry 'point' instead of 'links.rod.center'",
-)
 def test_center_toward_coinciding_points(tmp_path):
     # C moved onto B: the rod's centre {from = B, toward = C} has no direction
     path = tmp_path / "zero_rod.toml"

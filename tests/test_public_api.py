@@ -93,12 +93,6 @@ def test_all_is_complete():
     assert stray == []
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="__init__ leaves importlib.metadata's 'version' "
-    "and 'PackageNotFoundError' in the namespace: assur.version('numpy') "
-    "works and shows in dir(assur) and tab completion",
-)
 def test_no_foreign_names_in_the_namespace():
     stray = [
         name
