@@ -1,0 +1,69 @@
+"""The gallery scripts and the documentation's Python snippets run as written.
+
+Every ``examples/plot_*.py`` runs top to bottom under matplotlib's Agg backend and
+must draw at least one figure. The ``>>>`` examples of the documentation pages run
+as doctests from the repository's root, where their relative paths point.
+"""
+
+from __future__ import annotations
+
+import doctest
+import runpy
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+SCRIPTS = sorted((ROOT / "examples").glob("plot_*.py"))
+PAGES = sorted(
+    page
+    for page in (ROOT / "docs").glob("*.rst")
+    if ">>>" in page.read_text(encoding="utf-8")
+)
+
+
+@pytest.fixture
+def agg(monkeypatch):
+    """Draw off screen, make ``plt.show()`` a no-op and close every figure after."""
+    matplotlib = pytest.importorskip("matplotlib")
+    monkeypatch.setenv("MPLBACKEND", "Agg")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    plt.close("all")
+    monkeypatch.setattr(plt, "show", lambda *args, **kwargs: None)
+    yield plt
+    plt.close("all")
+
+
+def test_there_are_gallery_scripts():
+    assert len(SCRIPTS) >= 6
+
+
+@pytest.mark.parametrize("script", SCRIPTS, ids=lambda path: path.stem)
+def test_gallery_script_draws(script, agg, tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)  # the scripts find their files through __file__
+    runpy.run_path(str(script), run_name="__main__")
+    assert agg.get_fignums(), f"{script.name} drew no figure"
+    for number in agg.get_fignums():
+        assert agg.figure(number).axes, f"{script.name}: figure {number} is empty"
+    assert list(tmp_path.iterdir()) == [], f"{script.name} wrote files"
+
+
+def test_gallery_scripts_have_a_title():
+    for script in SCRIPTS:
+        text = script.read_text(encoding="utf-8")
+        assert text.startswith('"""\n'), script.name
+        title, underline = text.splitlines()[1:3]
+        assert set(underline) == {"="}, script.name
+        assert len(underline) == len(title), script.name
+
+
+@pytest.mark.parametrize("page", PAGES, ids=lambda path: path.stem)
+def test_documentation_snippets(page, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    flags = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE
+    result = doctest.testfile(
+        str(page), module_relative=False, optionflags=flags, verbose=False, report=False
+    )
+    assert result.failed == 0, f"{page.name}: {result.failed} doctest(s) failed"
