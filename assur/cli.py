@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import sys
 import warnings
 from collections.abc import Callable, Sequence
@@ -115,6 +116,16 @@ def main(argv: Sequence[str] | None = None) -> int:
     except SystemExit as exc:
         return int(exc.code or 0)
     handler = COMMANDS.get(args.command) or globals()[f"_cmd_{args.command}"]
+    try:
+        return _run(handler, args)
+    except BrokenPipeError:
+        # the reader (``| head``) has gone: stop quietly, as command-line tools do
+        sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - keeps exit from flushing
+        return 0
+
+
+def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace) -> int:
+    """Run one command, turning assur's errors and warnings into one-line messages."""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", AssurWarning)
         try:

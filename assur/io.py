@@ -176,7 +176,7 @@ def _number(entry: str, value: Any) -> float:
 
 
 def parse(data: dict[str, Any]) -> Mechanism:
-    """Build a :class:`Mechanism` from the parsed contents of a mechanism file."""
+    """Build a :class:`~assur.model.Mechanism` from the parsed contents of a mechanism file."""
     _check_keys("", data, KEYS[""])
     version = data.get("format", FORMAT_VERSION)
     if version != FORMAT_VERSION:

@@ -80,7 +80,7 @@ def _batch(q: Any, n: int) -> Array:
 def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Trouble]]:
     """Solve the motion of every link at driver positions ``drive`` (n, d), SI units.
 
-    Returns the links' motions (levels 0..``top``) and the troubles met. Positions that
+    Returns the links' motions (levels 0 to ``top``) and the troubles met. Positions that
     fail hold NaN.
     """
     n = drive.shape[0]
