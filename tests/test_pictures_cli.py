@@ -1,0 +1,377 @@
+"""The picture commands: ``assur plot|diagrams|animate|report`` (assur.pictures_cli).
+
+Each command is run through ``assur.cli.main`` with files in ``tmp_path``; the tests
+check the exit status, the one-line errors, that the files written are valid and
+that no figure is left open.
+"""
+
+from __future__ import annotations
+
+import sys
+import types
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+import pytest
+
+from assur.cli import main
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+from PIL import Image
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+TENBAR = str(EXAMPLES / "tenbar.toml")
+SLIDER = str(EXAMPLES / "slider_crank_exercise.toml")
+SLOT = str(EXAMPLES / "slot_mechanism.toml")
+FIVE_BAR = str(EXAMPLES / "five_bar_two_cranks.toml")
+KINEMATIC = {"motion.png", "paths.png", "decomposition.png"}
+KINETIC = {"torque.png", "hodographs.png", "shaking.png"}
+
+
+@pytest.fixture(autouse=True)
+def _no_figure_left_open():
+    before = plt.get_fignums()
+    yield
+    assert plt.get_fignums() == before
+
+
+def _run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
+    status = main(list(argv))
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def _error_line(err: str, *parts: str) -> None:
+    """One line, in the command line's format, mentioning every part."""
+    assert err.count("\n") == 1
+    assert err.startswith("assur: error: ")
+    for part in parts:
+        assert part in err
+
+
+def _png(path: Path) -> tuple[int, int]:
+    with Image.open(path) as im:
+        assert im.format == "PNG"
+        return im.size
+
+
+# ------------------------------------------------------------------------ plot
+
+
+@pytest.mark.parametrize("file", [TENBAR, SLIDER, SLOT, FIVE_BAR])
+def test_plot_png(
+    file: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "m.png"
+    status, stdout, err = _run(capsys, "plot", file, "-o", str(out))
+    assert status == 0, err
+    assert stdout == f"wrote {out}\n"
+    width, height = _png(out)
+    assert width > 600
+    assert height > 200
+
+
+def test_plot_forces_at_an_angle(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "forces.png"
+    status, _, err = _run(
+        capsys,
+        "plot",
+        SLIDER,
+        "--angle",
+        "30",
+        "--forces",
+        "--scale",
+        "1000",
+        "-o",
+        str(out),
+    )
+    assert status == 0, err
+    _png(out)
+
+
+@pytest.mark.parametrize(("suffix", "magic"), [(".svg", b"<?xml"), (".pdf", b"%PDF")])
+def test_plot_svg_and_pdf(
+    suffix: str, magic: bytes, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / f"m{suffix.upper()}"
+    status, _, err = _run(
+        capsys, "plot", SLOT, "--angle", "100", "--no-labels", "-o", str(out)
+    )
+    assert status == 0, err
+    assert out.read_bytes().startswith(magic)
+
+
+def test_plot_two_drivers_one_angle_each(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "five.png"
+    assert (
+        _run(capsys, "plot", FIVE_BAR, "--angle", "70,100", "--forces", "-o", str(out))[
+            0
+        ]
+        == 0
+    )
+    _png(out)
+    status, _, err = _run(capsys, "plot", FIVE_BAR, "--angle", "70", "-o", str(out))
+    assert status == 2
+    _error_line(err, FIVE_BAR, "1 range(s) given for 2 driver(s)")
+
+
+@pytest.mark.parametrize(
+    ("argv", "parts"),
+    [
+        (["--forces"], ["tenbar.toml", "no link has a mass"]),
+        (["--angle", "0:90:45"], ["--angle 0:90:45: 3 positions"]),
+        (["--angle", "abc"], ["cannot read 'abc'"]),
+        (["--scale", "-5"], ["--scale -5: expected a positive number"]),
+        (["--dpi", "0"], ["--dpi 0: expected a positive resolution"]),
+    ],
+)
+def test_plot_bad_options(
+    argv: list[str],
+    parts: list[str],
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    out = tmp_path / "m.png"
+    status, stdout, err = _run(capsys, "plot", TENBAR, *argv, "-o", str(out))
+    assert status == 2
+    assert stdout == ""
+    _error_line(err, *parts)
+    assert not out.exists()
+
+
+def test_plot_unknown_suffix(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    status, _, err = _run(capsys, "plot", TENBAR, "-o", str(tmp_path / "m.bmp"))
+    assert status == 2
+    _error_line(err, "unknown file type '.bmp'; expected .png or .svg or .pdf")
+
+
+def test_plot_missing_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    missing = tmp_path / "nope.toml"
+    status, _, err = _run(capsys, "plot", str(missing), "-o", str(tmp_path / "m.png"))
+    assert status == 2
+    _error_line(err, str(missing), "cannot read the file")
+
+
+def test_plot_unwritable_output(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "no" / "such" / "folder" / "m.png"
+    status, _, err = _run(capsys, "plot", TENBAR, "-o", str(out))
+    assert status == 2
+    _error_line(err, "cannot write the file")
+
+
+def test_plot_needs_an_output(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["plot", TENBAR]) == 2
+    assert "-o/--output" in capsys.readouterr().err
+
+
+# -------------------------------------------------------------------- diagrams
+
+
+def test_diagrams_kinematics_only(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "tenbar"
+    status, stdout, err = _run(
+        capsys,
+        "diagrams",
+        TENBAR,
+        "--angles",
+        "0:360:30",
+        "--dpi",
+        "40",
+        "-o",
+        str(out),
+    )
+    assert status == 0, err
+    assert {p.name for p in out.iterdir()} == KINEMATIC
+    assert stdout.count("wrote ") == 3
+    for path in out.iterdir():
+        _png(path)
+
+
+def test_diagrams_with_forces(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "d"
+    status, _, err = _run(
+        capsys, "diagrams", SLOT, "--angles", "40:400:30", "--dpi", "40", "-o", str(out)
+    )
+    assert status == 0, err
+    assert {p.name for p in out.iterdir()} == KINEMATIC | KINETIC
+    for path in out.iterdir():
+        _png(path)
+
+
+def test_diagrams_two_drivers(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    status, _, err = _run(
+        capsys,
+        "diagrams",
+        FIVE_BAR,
+        "--angles",
+        "60:420:30,120:480:30",
+        "--dpi",
+        "40",
+        "-o",
+        str(tmp_path),
+    )
+    assert status == 0, err
+    assert {p.name for p in tmp_path.iterdir()} == KINEMATIC | KINETIC
+
+
+def test_diagrams_into_a_file(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    target = tmp_path / "taken.png"
+    target.write_text("x")
+    status, _, err = _run(capsys, "diagrams", TENBAR, "-o", str(target))
+    assert status == 2
+    _error_line(err, "is a file; expected a folder")
+
+
+# --------------------------------------------------------------------- animate
+
+
+def test_animate_gif(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out = tmp_path / "slot.gif"
+    status, stdout, err = _run(
+        capsys,
+        "animate",
+        SLOT,
+        "--frames",
+        "3",
+        "--forces",
+        "--fps",
+        "5",
+        "-o",
+        str(out),
+    )
+    assert status == 0, err
+    assert stdout == f"wrote {out} (3 frames)\n"
+    with Image.open(out) as gif:
+        assert gif.format == "GIF"
+        assert gif.n_frames == 3
+        assert gif.info["duration"] == pytest.approx(200, abs=10)
+
+
+def test_animate_frames_spread_over_the_angles(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "five.gif"
+    status, stdout, _ = _run(
+        capsys, "animate", FIVE_BAR, "--angles", "60:120:30,120:180:30", "-o", str(out)
+    )
+    assert status == 0
+    assert stdout.endswith("(3 frames)\n")
+    with Image.open(out) as gif:
+        assert gif.n_frames == 3
+
+
+@pytest.mark.parametrize(
+    ("argv", "parts"),
+    [
+        (["-o", "x.mp4"], ["unknown file type '.mp4'; expected .gif"]),
+        (["--frames", "0", "-o", "x.gif"], ["expected at least one frame"]),
+        (["--forces", "-o", "x.gif"], ["no link has a mass"]),
+    ],
+)
+def test_animate_bad_input(
+    argv: list[str],
+    parts: list[str],
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    status, _, err = _run(capsys, "animate", TENBAR, *argv)
+    assert status == 2
+    _error_line(err, *parts)
+    assert list(tmp_path.iterdir()) == []
+
+
+# ---------------------------------------------------------------------- report
+
+
+@pytest.fixture
+def fake_html(monkeypatch: pytest.MonkeyPatch) -> list[tuple]:
+    """Stand in for assur.html and record how write_report is called."""
+    calls: list[tuple] = []
+
+    def write_report(mechanism, path, angles=None):
+        calls.append((mechanism, path, angles))
+        Path(path).write_text("<html></html>")
+
+    module = types.ModuleType("assur.html")
+    module.write_report = write_report
+    monkeypatch.setitem(sys.modules, "assur.html", module)
+    return calls
+
+
+def test_report_calls_write_report(
+    fake_html: list[tuple], tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "r.html"
+    status, stdout, _ = _run(capsys, "report", SLIDER, "-o", str(out))
+    assert status == 0
+    assert stdout == f"wrote {out}\n"
+    ((mech, path, angles),) = fake_html
+    assert mech.name == "Slider-crank exercise"
+    assert Path(path) == out
+    assert angles is None
+
+
+def test_report_passes_the_angles(
+    fake_html: list[tuple], tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert (
+        _run(
+            capsys,
+            "report",
+            SLIDER,
+            "--angles",
+            "0:90:45",
+            "-o",
+            str(tmp_path / "r.htm"),
+        )[0]
+        == 0
+    )
+    np.testing.assert_array_equal(fake_html[0][2], [0.0, 45.0, 90.0])
+
+
+def test_report_bad_suffix(
+    fake_html: list[tuple], tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    status, _, err = _run(capsys, "report", SLIDER, "-o", str(tmp_path / "r.txt"))
+    assert status == 2
+    _error_line(err, "unknown file type '.txt'; expected .html or .htm")
+    assert fake_html == []
+
+
+def test_report_without_the_html_module(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    monkeypatch.setitem(sys.modules, "assur.html", None)  # makes the import fail
+    status, _, err = _run(capsys, "report", SLIDER, "-o", str(tmp_path / "r.html"))
+    assert status == 2
+    _error_line(err, "the HTML report (assur.html) is not available")
+
+
+def test_report_real(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("assur.html")
+    out = tmp_path / "slot.html"
+    status, _, err = _run(
+        capsys, "report", SLOT, "--angles", "30:390:30", "-o", str(out)
+    )
+    assert status == 0, err
+    assert "<html" in out.read_text(encoding="utf-8").lower()

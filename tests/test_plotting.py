@@ -1,0 +1,453 @@
+"""Pictures of mechanisms and diagrams (assur.plotting), drawn on the Agg backend.
+
+No image baselines: the tests check the artists drawn (counts, data, legend texts),
+that the numbers in the pictures are the table's, that a free-body diagram is in
+equilibrium, and that the files written are valid.
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+import pytest
+
+import assur
+from assur import plotting
+from assur.analysis import default_positions
+from assur.plan import compile_plan
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+from matplotlib.patches import Circle, FancyArrowPatch
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+SWEEP = np.arange(0.0, 360.0, 10.0)
+
+
+@pytest.fixture(autouse=True)
+def _close_figures():
+    yield
+    plt.close("all")
+
+
+def _load(name: str) -> assur.Mechanism:
+    return assur.load(EXAMPLES / f"{name}.toml")
+
+
+@pytest.fixture(scope="module")
+def slider_crank() -> assur.Table:
+    mech = _load("slider_crank_exercise")
+    return assur.forces(mech, default_positions(mech)[::10])
+
+
+@pytest.fixture(scope="module")
+def tenbar() -> assur.Table:
+    return assur.kinematics(_load("tenbar"), SWEEP)
+
+
+@pytest.fixture(scope="module")
+def slot() -> assur.Table:
+    mech = _load("slot_mechanism")
+    return assur.forces(mech, default_positions(mech)[::10])
+
+
+@pytest.fixture(scope="module")
+def five_bar() -> assur.Table:
+    mech = _load("five_bar_two_cranks")
+    return assur.forces(mech, default_positions(mech)[::15])
+
+
+@pytest.fixture(scope="module")
+def six_bar() -> assur.Table:
+    mech = _load("six_bar_lecture")
+    return assur.forces(mech, default_positions(mech)[::10])
+
+
+def _revolute_pairs(table: assur.Table) -> int:
+    return sum(p.kind == "R" for p in compile_plan(table.mechanism).pairs.values())
+
+
+def _legend_texts(ax) -> list[str]:
+    legend = ax.get_legend()
+    return [t.get_text() for t in legend.get_texts()] if legend else []
+
+
+# ------------------------------------------------------------------------ draw
+
+
+def test_draw_every_example(example: assur.Mechanism) -> None:
+    table = assur.kinematics(example, default_positions(example)[:2])
+    ax = plotting.draw(table)
+    circles = [p for p in ax.patches if isinstance(p, Circle)]
+    # one circle per revolute pair (a slot's pin included), none for anything else
+    assert len(circles) == _revolute_pairs(table)
+    plan = compile_plan(example)
+    assert len(_legend_texts(ax)) == len(plan.drivers) + len(plan.groups)
+    assert ax.get_aspect() == 1.0
+    assert ax.get_xlabel() == "x [m]"
+
+
+def test_draw_names_groups_by_class_order_and_kind(tenbar: assur.Table) -> None:
+    ax = plotting.draw(tenbar, angle=51.0)
+    texts = _legend_texts(ax)
+    assert texts[0] == "I, driver (ground, 1)"
+    assert "II, order 2, RRR (2, 3)" in texts
+    assert "II, order 2, RRP (6, 7)" in texts
+    labels = {t.get_text() for t in ax.texts}
+    assert {"A", "B", "H", "K", "1", "2", "9"} <= labels
+    assert "50.0°" in ax.get_title()
+    # each group has its own colour, the driver another one
+    colors = [h.get_color() for h in ax.get_legend().legend_handles]
+    assert len(set(colors)) == len(colors)
+
+
+def test_draw_joint_circles_sit_on_the_joints(tenbar: assur.Table) -> None:
+    row = 4
+    ax = plotting.draw(tenbar, angle=float(tenbar["angle"][row]))
+    centres = np.array([p.center for p in ax.patches if isinstance(p, Circle)])
+    for joint in ("A", "B", "C", "K", "M"):
+        where = np.array([tenbar[f"{joint}.x"][row], tenbar[f"{joint}.y"][row]])
+        assert np.min(np.hypot(*(centres - where).T)) < 1e-12
+
+
+def test_draw_limits_hold_the_whole_mechanism(tenbar: assur.Table) -> None:
+    ax = plotting.draw(tenbar, angle=120.0)
+    row = int(np.argmin(np.abs(tenbar["angle"] - 120.0)))
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    for joint in ("A", "B", "C", "D", "E", "F", "G", "H", "K", "L", "M", "S"):
+        assert x0 < tenbar[f"{joint}.x"][row] < x1
+        assert y0 < tenbar[f"{joint}.y"][row] < y1
+
+
+def test_draw_without_labels_or_groups(tenbar: assur.Table) -> None:
+    ax = plotting.draw(tenbar, labels=False, groups=False)
+    assert len(ax.texts) == 0
+    assert ax.get_legend() is None
+
+
+def test_draw_slider_and_slot(slot: assur.Table) -> None:
+    ax = plotting.draw(slot)
+    polygons = [p for p in ax.patches if type(p).__name__ == "Polygon"]
+    # the ram's block, the slot's outline and the frame's triangles (O2, O4)
+    assert len(polygons) >= 4
+    assert "B" in {t.get_text() for t in ax.texts}
+    assert not any("~" in t.get_text() for t in ax.texts)
+
+
+def test_draw_on_given_axes_returns_them(tenbar: assur.Table) -> None:
+    fig, ax = plt.subplots()
+    assert plotting.draw(tenbar, ax=ax) is ax
+    assert len(fig.axes) == 1
+
+
+def test_nearest_row_compares_angles_modulo_a_turn(tenbar: assur.Table) -> None:
+    assert plotting._row(tenbar, None) == 0
+    assert plotting._row(tenbar, 42.0) == 4
+    assert plotting._row(tenbar, 400.0) == 4
+    assert plotting._row(tenbar, -10.0) == 35
+
+
+def test_nearest_row_with_two_drivers(five_bar: assur.Table) -> None:
+    row = 3
+    want = np.degrees(five_bar.state.drive[row])
+    assert plotting._row(five_bar, want.tolist()) == row
+    with pytest.raises(assur.ModelError, match="3 values for 2 driver"):
+        plotting._row(five_bar, [1.0, 2.0, 3.0])
+
+
+def test_table_plot_forwards_to_draw(slider_crank: assur.Table) -> None:
+    ax = slider_crank.plot(96.0, forces=True, labels=False)
+    assert "95.0°" in ax.get_title()
+    assert any(isinstance(p, FancyArrowPatch) for p in ax.patches)
+
+
+# ---------------------------------------------------------------------- forces
+
+
+def test_draw_forces_arrows_and_scale(slider_crank: assur.Table) -> None:
+    ax = plotting.draw(slider_crank, angle=45.0, forces=True, scale=500.0)
+    arrows = [p for p in ax.patches if isinstance(p, FancyArrowPatch)]
+    plan = compile_plan(slider_crank.mechanism)
+    # a reaction per joint, a balancing torque, inertia force and torque of the rod
+    assert len(arrows) >= len(plan.pairs) + 3
+    assert "force scale: 1 cm = 500 N" in _legend_texts(ax)
+
+
+def test_force_arrows_carry_the_table_values(slider_crank: assur.Table) -> None:
+    row = 5
+    ctx = plotting._context(slider_crank)
+    arrows = plotting._overview_arrows(ctx, ctx.pose(row), row)
+    reactions = {a.label: a for a in arrows if a.kind == "reaction"}
+    a = reactions[r"$R_{\mathrm{A}}$"]
+    np.testing.assert_allclose(
+        a.force, [slider_crank["A.Fx"][row], slider_crank["A.Fy"][row]], rtol=1e-12
+    )
+    np.testing.assert_allclose(a.point, [0.0, 0.0], atol=1e-12)
+    (torque,) = [a for a in arrows if a.kind == "balancing"]
+    assert torque.couple == pytest.approx(slider_crank["driver.torque"][row], rel=1e-12)
+
+
+def test_default_force_scale_is_round_and_fits(slider_crank: assur.Table) -> None:
+    row = 0
+    ctx = plotting._context(slider_crank)
+    arrows = plotting._overview_arrows(ctx, ctx.pose(row), row)
+    scale = plotting._scale(arrows, ctx.size)
+    mantissa = scale / 10 ** np.floor(np.log10(scale))
+    assert min(abs(mantissa - m) for m in (1.0, 2.0, 5.0)) < 1e-9
+    longest = max(np.hypot(*a.force) for a in arrows if a.force is not None)
+    length = longest / (scale * 100.0)  # m of drawing
+    assert plotting.ARROW_LENGTH * ctx.size / 2.5 <= length
+    assert length <= plotting.ARROW_LENGTH * ctx.size * (1 + 1e-9)
+
+
+def test_nice_numbers() -> None:
+    assert [plotting._nice(x) for x in (0.7, 1.0, 1.2, 3.0, 7.0, 1234.0)] == [
+        1.0,
+        1.0,
+        2.0,
+        5.0,
+        10.0,
+        2000.0,
+    ]
+    assert plotting._nice(0.0) == 1.0
+
+
+def test_draw_forces_needs_a_forces_table(tenbar: assur.Table) -> None:
+    with pytest.raises(assur.ModelError, match="needs a forces table"):
+        plotting.draw(tenbar, forces=True)
+
+
+def test_animation_scale_covers_two_drivers(five_bar: assur.Table) -> None:
+    ax = plotting.draw(five_bar, forces=True)
+    labels = [t.get_text() for t in ax.texts]
+    assert any("T_{b,\\mathrm{A}}" in t for t in labels)
+    assert any("T_{b,\\mathrm{E}}" in t for t in labels)
+
+
+# ---------------------------------------------------- decomposition, free body
+
+
+def test_decomposition_has_a_panel_per_step(tenbar: assur.Table) -> None:
+    fig = plotting.draw_decomposition(tenbar, angle=30.0)
+    panels = [ax for ax in fig.axes if ax.axison]
+    assert len(panels) == 5
+    assert panels[0].get_title().startswith("1. I: driver (ground, 1)")
+    assert panels[1].get_title().startswith("2. II, order 2, RRR (2, 3)")
+    assert "hangs on: 6, 7" in panels[4].get_title()
+    assert "I(ground, 1) -> II(2, 3)" in fig.get_suptitle()
+    # the first panel draws only the crank's pivots; the group panels theirs
+    assert sum(isinstance(p, Circle) for p in panels[0].patches) == 2
+
+
+def test_decomposition_with_two_drivers_and_a_slot(
+    five_bar: assur.Table, slot: assur.Table
+) -> None:
+    assert (
+        len([ax for ax in plotting.draw_decomposition(five_bar).axes if ax.axison]) == 3
+    )
+    titles = [ax.get_title() for ax in plotting.draw_decomposition(slot).axes]
+    assert any("RPR (rocker, B (block))" in t for t in titles)
+
+
+@pytest.mark.parametrize(
+    "name",
+    [
+        "slider_crank_exercise",
+        "six_bar_lecture",
+        "slot_mechanism",
+        "class3",
+        "whitworth",
+        "scotch_yoke",
+    ],
+)
+def test_free_body_is_in_equilibrium(name: str) -> None:
+    mech = _load(name)
+    table = assur.forces(mech, default_positions(mech)[::45])
+    for group in range(len(compile_plan(mech).groups)):
+        for row in range(len(table)):
+            arrows = [
+                a
+                for a in plotting._free_body_arrows(table, group, row)
+                if a.kind != "internal"
+            ]
+            forces = np.array([a.force for a in arrows if a.force is not None])
+            moments = [
+                a.point[0] * a.force[1] - a.point[1] * a.force[0]
+                for a in arrows
+                if a.force is not None
+            ]
+            moments += [a.couple for a in arrows if a.couple is not None]
+            big = np.max(np.abs(forces))
+            np.testing.assert_allclose(forces.sum(axis=0), 0.0, atol=1e-9 * big)
+            assert abs(sum(moments)) < 1e-9 * big * compile_plan(mech).scale
+
+
+def test_free_body_labels_values(six_bar: assur.Table) -> None:
+    ax = plotting.draw_free_body(six_bar, 0, angle=60.0)
+    texts = [t.get_text() for t in ax.texts]
+    row = plotting._row(six_bar, 60.0)
+    value = f"{six_bar['B.F'][row]:.3g} N"
+    assert any(t.startswith(r"$R_{\mathrm{B}}$") and t.endswith(value) for t in texts)
+    assert any(r"\to" in t for t in texts)  # the internal pair C
+    assert any(t.startswith("$G_") for t in texts)  # gravity is on
+    assert "RRR (3, 4)" in ax.get_title()
+    # cut free: no bearing triangles of the frame
+    assert not any(
+        type(p).__name__ == "Polygon"
+        and len(p.get_xy()) == 4
+        and p.get_facecolor()[:3] == (1.0, 1.0, 1.0)
+        for p in ax.patches
+    )
+
+
+def test_free_body_errors(six_bar: assur.Table, tenbar: assur.Table) -> None:
+    with pytest.raises(
+        assur.ModelError,
+        match="group_index: 2 is out of range; the mechanism has 2 Assur group",
+    ):
+        plotting.draw_free_body(six_bar, 2)
+    with pytest.raises(assur.ModelError, match="needs a forces table"):
+        plotting.draw_free_body(tenbar, 0)
+
+
+# ---------------------------------------------------------------- sweeps
+
+
+def test_plot_motion_lines_are_the_columns(tenbar: assur.Table) -> None:
+    ax = plotting.plot_motion(tenbar, ["2", "3"], "omega")
+    assert [ln.get_label() for ln in ax.lines] == ["2", "3"]
+    np.testing.assert_array_equal(ax.lines[1].get_ydata(), tenbar["3.omega"])
+    np.testing.assert_array_equal(ax.lines[1].get_xdata(), tenbar["angle"])
+    assert ax.get_ylabel() == "omega [rad/s]"
+    # same group, same colour, another dash
+    assert ax.lines[0].get_color() == ax.lines[1].get_color()
+    assert ax.lines[0].get_linestyle() != ax.lines[1].get_linestyle()
+
+
+def test_plot_motion_defaults_and_points(tenbar: assur.Table) -> None:
+    ax = plotting.plot_motion(tenbar, quantity="alpha")
+    # every link but the slider 7, which does not turn
+    assert [ln.get_label() for ln in ax.lines] == [
+        "1",
+        "2",
+        "3",
+        "4",
+        "5",
+        "6",
+        "8",
+        "9",
+    ]
+    ax = plotting.plot_motion(tenbar, ["K", "M"], "v")
+    assert len(ax.lines) == 4
+    np.testing.assert_array_equal(ax.lines[3].get_ydata(), tenbar["M.vy"])
+    assert ax.get_ylabel() == "v [m/s]"
+    ax = plotting.plot_motion(tenbar, "guide", "s")
+    np.testing.assert_array_equal(ax.lines[0].get_ydata(), tenbar["guide.s"])
+
+
+def test_plot_motion_unknown_quantity(tenbar: assur.Table) -> None:
+    with pytest.raises(
+        assur.ModelError,
+        match="no quantity 'speed' for '2'; expected one of alpha, angle, jerk, omega",
+    ):
+        plotting.plot_motion(tenbar, ["2"], "speed")
+
+
+def test_plot_paths(tenbar: assur.Table) -> None:
+    ax = plotting.plot_paths(tenbar)
+    paths = {
+        ln.get_label(): ln for ln in ax.lines if not ln.get_label().startswith("_")
+    }
+    # every moving joint once: the pivots A, D, G stay put, the guide runs with S
+    assert set(paths) == {"B", "C", "E", "F", "H", "K", "L", "S", "M"}
+    np.testing.assert_array_equal(paths["H"].get_xdata(), tenbar["H.x"])
+    with pytest.raises(assur.ModelError, match="no point 'Z'"):
+        plotting.plot_paths(tenbar, ["Z"])
+
+
+def test_plot_torque(slider_crank: assur.Table) -> None:
+    ax = plotting.plot_torque(slider_crank)
+    torque, check = ax.lines[0], ax.lines[1]
+    np.testing.assert_array_equal(torque.get_ydata(), slider_crank["driver.torque"])
+    np.testing.assert_allclose(
+        check.get_ydata(),
+        slider_crank["driver.torque_check"][:: max(1, len(slider_crank) // 36)],
+        rtol=1e-12,
+    )
+    assert "balancing torque (equilibrium)" in _legend_texts(ax)
+    assert ax.get_ylabel() == "balancing load [N m]"
+
+
+def test_plot_torque_two_drivers(five_bar: assur.Table) -> None:
+    ax = plotting.plot_torque(five_bar)
+    np.testing.assert_array_equal(ax.lines[3].get_ydata(), five_bar["E.torque"])
+
+
+def test_plot_hodographs(slot: assur.Table) -> None:
+    fig = plotting.plot_hodographs(slot)
+    panels = [ax for ax in fig.axes if ax.axison]
+    plan = compile_plan(slot.mechanism)
+    assert len(panels) == sum(not p.virtual for p in plan.pairs.values())
+    titles = [ax.get_title() for ax in panels]
+    assert any(t.startswith("B: rocker on crank (pin)") for t in titles)
+    o4 = panels[[t.split(":")[0] for t in titles].index("O4")]
+    np.testing.assert_array_equal(o4.lines[0].get_xdata(), slot["O4.Fx"])
+    np.testing.assert_array_equal(o4.lines[0].get_ydata(), slot["O4.Fy"])
+    fig = plotting.plot_hodographs(slot, ["E"])
+    assert len([ax for ax in fig.axes if ax.axison]) == 1
+    with pytest.raises(assur.ModelError, match="no joint 'B~pin'"):
+        plotting.plot_hodographs(slot, ["B~pin"])
+
+
+def test_plot_shaking(six_bar: assur.Table) -> None:
+    fig = plotting.plot_shaking(six_bar)
+    polar, force, moment = fig.axes
+    np.testing.assert_array_equal(polar.lines[0].get_ydata(), six_bar["shaking.Fy"])
+    np.testing.assert_array_equal(force.lines[0].get_ydata(), six_bar["shaking.Fx"])
+    np.testing.assert_array_equal(moment.lines[0].get_ydata(), six_bar["shaking.M"])
+
+
+@pytest.mark.parametrize(
+    "function", [plotting.plot_torque, plotting.plot_hodographs, plotting.plot_shaking]
+)
+def test_sweep_force_diagrams_need_forces(function, tenbar: assur.Table) -> None:
+    with pytest.raises(assur.ModelError, match="needs a forces table"):
+        function(tenbar)
+
+
+# ------------------------------------------------------------------ animation
+
+
+def test_animate_writes_a_gif(tmp_path: Path, slot: assur.Table) -> None:
+    from PIL import Image
+
+    small = assur.forces(slot.mechanism, [30.0, 120.0, 210.0])
+    before = plt.get_fignums()
+    path = tmp_path / "slot.gif"
+    assert plotting.animate(small, path, forces=True, fps=10) == 3
+    assert plt.get_fignums() == before
+    with Image.open(path) as gif:
+        assert gif.format == "GIF"
+        assert gif.n_frames == 3
+        assert gif.size[0] > 300
+
+
+def test_animate_needs_forces_for_arrows(tmp_path: Path, tenbar: assur.Table) -> None:
+    with pytest.raises(assur.ModelError, match="needs a forces table"):
+        plotting.animate(tenbar, tmp_path / "x.gif", forces=True)
+    assert not (tmp_path / "x.gif").exists()
+
+
+def test_import_assur_loads_no_matplotlib() -> None:
+    code = (
+        "import sys, assur, assur.plotting, assur.pictures_cli; "
+        "print('matplotlib' in sys.modules)"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    )
+    assert out.stdout.strip() == "False"
