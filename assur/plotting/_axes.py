@@ -1,0 +1,79 @@
+"""Axes and legends shared by the pictures: new axes, framing, driver axis, legend.
+
+matplotlib is imported inside the functions only.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur.plotting._context import _revolute
+
+if TYPE_CHECKING:
+    from assur.analysis import Table
+
+
+def _new_axes(ax: Any, figsize: tuple[float, float] = (9.0, 6.0)) -> Any:
+    """Return ``ax``, or new axes on a new figure of ``figsize`` (in)."""
+    if ax is not None:
+        return ax
+    import matplotlib.pyplot as plt
+
+    _, ax = plt.subplots(figsize=figsize, layout="constrained")
+    return ax
+
+
+def _frame_axes(
+    ax: Any, points: Sequence[np.ndarray], size: float, margin: float = 0.1
+) -> None:
+    """Fit equal-aspect axes to ``points`` with a ``margin`` of ``size`` (m)."""
+    pts = np.array(points).reshape(-1, 2)
+    pts = pts[np.isfinite(pts).all(axis=1)]
+    low, high = pts.min(axis=0), pts.max(axis=0)
+    pad = margin * max(size, *(high - low))
+    ax.set_xlim(low[0] - pad, high[0] + pad)
+    ax.set_ylim(low[1] - pad, high[1] + pad)
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_xlabel("x [m]")
+    ax.set_ylabel("y [m]")
+
+
+def _driver_axis(ax: Any, table: Table) -> np.ndarray:
+    """Label the horizontal axis with the driver position; return its values."""
+    from matplotlib.ticker import MultipleLocator
+
+    x = np.asarray(table["angle"])
+    if _revolute(table):
+        ax.set_xlabel("driver angle φ [deg]")
+        if np.ptp(x) >= 180.0:
+            ax.xaxis.set_major_locator(
+                MultipleLocator(90.0 if np.ptp(x) > 400 else 45.0)
+            )
+    else:
+        ax.set_xlabel("driver position s [m]")
+    ax.grid(True, lw=0.5, alpha=0.5)
+    return x
+
+
+def _handles(entries: list[tuple[str, str]]) -> list[Any]:
+    """Legend handles: a thick line in each colour (none for a note such as a scale)."""
+    from matplotlib.lines import Line2D
+
+    return [
+        Line2D([], [], color=c or "none", lw=4 if c else 0, label=text)
+        for text, c in entries
+    ]
+
+
+def _legend(ax: Any, entries: list[tuple[str, str]]) -> None:
+    """Put a legend of ``entries`` (text, colour) right of ``ax``."""
+    ax.legend(
+        handles=_handles(entries),
+        fontsize=8,
+        frameon=False,
+        loc="upper left",
+        bbox_to_anchor=(1.02, 1.0),
+    )

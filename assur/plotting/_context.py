@@ -1,0 +1,172 @@
+"""What every picture of one table needs: the links' placement at a row and colours.
+
+A :class:`_Context` is built once per picture from a table; it names each body's
+colour, the legend's entries, the travel of every slide and the size of the symbols.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur.errors import ModelError
+from assur.plotting._style import (
+    DRIVER_COLOR,
+    GROUND_COLOR,
+    GROUP_COLORS,
+    PLAIN_COLOR,
+    ROMAN,
+)
+
+if TYPE_CHECKING:
+    from assur.analysis import Table
+    from assur.plan import Plan
+
+Legend = list[tuple[str, str, tuple[int, ...]]]
+"""Legend entries: text, colour and the bodies drawn in that colour."""
+
+
+@dataclass(frozen=True)
+class _Pose:
+    """Every link's placement at one row of a table."""
+
+    phi: np.ndarray
+    origin: np.ndarray
+
+    def turn(self, body: int, v: Any) -> np.ndarray:
+        """Vector ``v`` fixed in ``body``, in the fixed frame."""
+        c, s = math.cos(self.phi[body]), math.sin(self.phi[body])
+        return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1]])
+
+    def at(self, body: int, offset: Any) -> np.ndarray:
+        """Point of ``body`` at body-fixed ``offset`` from its origin, m."""
+        return self.origin[body] + self.turn(body, offset)
+
+
+@dataclass(frozen=True)
+class _Context:
+    """What every picture of one table needs: plan, colours, symbol sizes, travel."""
+
+    table: Table
+    plan: Plan
+    color: dict[int, str]
+    legend: Legend
+    travel: dict[str, tuple[float, float]]
+    size: float
+    centroid: np.ndarray
+
+    @property
+    def r(self) -> float:
+        """Radius of a revolute joint's circle, m."""
+        return 0.012 * self.size
+
+    def pose(self, row: int) -> _Pose:
+        """Return the links' placement at ``row``."""
+        state = self.table.state
+        return _Pose(state.link[0, row], state.origin[0, row])
+
+    def hidden(self, body: int) -> bool:
+        """Whether ``body`` is a virtual block standing for a slot."""
+        return "~" in self.plan.bodies[body]
+
+
+def _colors(plan: Plan, groups: bool) -> tuple[dict[int, str], Legend]:
+    """Colour each body by its Assur group (or all alike); return the legend too."""
+    color: dict[int, str] = {0: GROUND_COLOR}
+    legend = []
+    for d in plan.drivers:
+        color[d.body] = DRIVER_COLOR if groups else PLAIN_COLOR
+        legend.append(
+            (f"I, driver (ground, {plan.bodies[d.body]})", color[d.body], (d.body,))
+        )
+    for k, g in enumerate(plan.groups):
+        c = GROUP_COLORS[k % len(GROUP_COLORS)] if groups else PLAIN_COLOR
+        bodies = tuple(plan.body(x) for x in g.links)
+        for b in bodies:
+            color[b] = c
+        name = ROMAN.get(g.group_class, g.group_class)
+        legend.append((f"{name}, order {g.order}, {g.label}", c, bodies))
+    return color, legend
+
+
+def _context(table: Table, groups: bool = True) -> _Context:
+    """Return the context of the pictures of ``table`` (``groups``: colour by group)."""
+    from assur.plan import compile_plan
+
+    plan = compile_plan(table.mechanism)
+    color, legend = _colors(plan, groups)
+    travel = {
+        name: (float(np.nanmin(s[0])), float(np.nanmax(s[0])))
+        for name, s in table.state.slide.items()
+    }
+    pts = np.array([p.d_second + plan.origins[p.second] for p in plan.pairs.values()])
+    # symbols scale with the picture: the region swept by the points
+    swept = table.state.point[0].reshape(-1, 2)
+    swept = swept[np.isfinite(swept).all(axis=1)]
+    size = max(plan.scale, float(np.ptp(swept, axis=0).max()) if len(swept) else 0.0)
+    return _Context(table, plan, color, legend, travel, size, pts.mean(axis=0))
+
+
+def _row(table: Table, angle: Any) -> int:
+    """Index of the row nearest to driver position ``angle`` (deg, or m)."""
+    if len(table) == 0:
+        msg = "table: no rows to draw; expected at least one driver position"
+        raise ModelError(msg)
+    if angle is None:
+        return 0
+    from assur.plan import compile_plan
+
+    plan = compile_plan(table.mechanism)
+    want = np.atleast_1d(np.asarray(angle, dtype=float))
+    drive = table.state.drive
+    if want.shape[0] not in (1, drive.shape[1]):
+        msg = (
+            f"angle: {want.shape[0]} values for {drive.shape[1]} driver(s); expected "
+            "one position per driver"
+        )
+        raise ModelError(msg)
+    gap = np.zeros(drive.shape[0])
+    for i in range(want.shape[0]):
+        if plan.drivers[i].kind == "R":
+            diff = np.degrees(drive[:, i]) - want[i]
+            gap += ((diff + 180.0) % 360.0 - 180.0) ** 2
+        else:
+            gap += (drive[:, i] - want[i]) ** 2
+    return int(np.argmin(gap))
+
+
+def _position_text(table: Table, row: int) -> str:
+    """Driver position(s) at ``row`` for a title: "φ = 30.0°" or "s = 0.1 m"."""
+    from assur.plan import compile_plan
+
+    plan = compile_plan(table.mechanism)
+    drive = table.state.drive[row]
+    parts = [
+        f"φ = {math.degrees(x):.1f}°" if d.kind == "R" else f"s = {x:.4g} m"
+        for d, x in zip(plan.drivers, drive, strict=True)
+    ]
+    if len(parts) > 1:
+        parts = [
+            f"{d.pair.name}: {p}" for d, p in zip(plan.drivers, parts, strict=True)
+        ]
+    return ", ".join(parts)
+
+
+def _need_forces(table: Table, what: str) -> None:
+    """Raise unless ``table`` holds forces; ``what`` names the caller."""
+    if table.force_state is None:
+        msg = (
+            f"{what}: needs a forces table (assur.forces); this table holds "
+            "kinematics only"
+        )
+        raise ModelError(msg)
+
+
+def _revolute(table: Table) -> bool:
+    """Whether the (first) driver of ``table`` turns rather than slides."""
+    from assur.plan import compile_plan
+
+    return compile_plan(table.mechanism).drivers[0].kind == "R"

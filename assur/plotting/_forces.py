@@ -1,0 +1,234 @@
+"""Force arrows: the loads a picture shows, their scale and how they are drawn.
+
+An :class:`_Arrow` is a force at a point or a couple; forces are drawn to a scale in
+N per cm of drawing (the drawing is in metres), couples as arcs.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur.plotting._geometry import _nice
+from assur.plotting._style import (
+    ARROW_LENGTH,
+    DRIVER_COLOR,
+    INERTIA_COLOR,
+    REACTION_COLOR,
+)
+
+if TYPE_CHECKING:
+    from assur.analysis import Table
+    from assur.plotting._context import _Context, _Pose
+
+LABEL_BOX = {
+    "boxstyle": "round,pad=0.1",
+    "facecolor": "white",
+    "edgecolor": "none",
+    "alpha": 0.75,
+}
+"""Background of a force's label."""
+
+
+@dataclass(frozen=True)
+class _Arrow:
+    """One load of a picture: a force at a point or a couple (N, N m).
+
+    ``value`` is the unit; ``kind`` one of "inertia", "gravity", "load", "reaction"
+    (on the body or group drawn), "internal" (between two links of a group) and
+    "balancing".
+    """
+
+    label: str
+    point: np.ndarray
+    force: np.ndarray | None
+    couple: float | None
+    color: str
+    value: str
+    kind: str
+
+
+def _tex(name: str) -> str:
+    """Return ``name`` as upright TeX, safe inside a subscript."""
+    safe = "".join(c if c.isalnum() else "\\_" if c == "_" else "." for c in name)
+    return f"\\mathrm{{{safe}}}"
+
+
+def _reaction(
+    ctx: _Context, pose: _Pose, row: int, name: str, sign: float = 1.0
+) -> tuple[np.ndarray, np.ndarray, float | None]:
+    """Reaction of pair ``name`` on its second link (``sign`` -1: on its first).
+
+    A prismatic pair's normal force is placed where it balances the pair's couple;
+    the couple is returned separately when that point lies too far away.
+    """
+    pair = ctx.plan.pairs[name]
+    force, couple = ctx.table.force_state.reactions[name]
+    f = sign * np.asarray(force[row], dtype=float)
+    q = pose.at(pair.second, pair.d_second)
+    if pair.kind == "R":
+        return q, f, None
+    e = pose.turn(pair.first, pair.axis)
+    normal = float(np.dot(f, np.array([-e[1], e[0]])))
+    m = sign * float(couple[row])
+    if abs(normal) > 1e-9 and abs(m / normal) < 0.5 * ctx.size:
+        return q + (m / normal) * e, f, None
+    return q, f, m
+
+
+def _centre(table: Table, link: str, row: int) -> np.ndarray:
+    """Centre of mass of ``link`` at ``row``, m."""
+    return np.array([table[f"{link}.G.x"][row], table[f"{link}.G.y"][row]])
+
+
+def _inertia_arrows(ctx: _Context, row: int, links: Iterable[str]) -> list[_Arrow]:
+    """Inertia force at the centre of mass and inertia torque of each massive link."""
+    fs = ctx.table.force_state
+    arrows = []
+    for link in links:
+        if not ctx.table.mechanism.link(link).mass:
+            continue
+        b, g, name = ctx.plan.body(link), _centre(ctx.table, link, row), _tex(link)
+        force, torque = fs.inertia_force[row, b], float(fs.inertia_torque[row, b])
+        arrows += [
+            _Arrow(f"$F_{{i,{name}}}$", g, force, None, INERTIA_COLOR, "N", "inertia"),
+            _Arrow(
+                f"$M_{{i,{name}}}$", g, None, torque, INERTIA_COLOR, "N m", "inertia"
+            ),
+        ]
+    return arrows
+
+
+def _overview_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
+    """Inertia loads, reactions and balancing loads at ``row`` for :func:`draw`."""
+    links = [link.name for link in ctx.table.mechanism.links]
+    arrows = _inertia_arrows(ctx, row, links)
+    for name, pair in ctx.plan.pairs.items():
+        if not pair.virtual:
+            q, f, m = _reaction(ctx, pose, row, name)
+            label = f"$R_{{{_tex(name)}}}$"
+            arrows.append(_Arrow(label, q, f, m, REACTION_COLOR, "N", "reaction"))
+    return arrows + _balancing_arrows(ctx, pose, row)
+
+
+def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
+    """Return the balancing torque (force, for a prismatic driver) of each driver."""
+    drivers = ctx.plan.drivers
+    arrows = []
+    for i, d in enumerate(drivers):
+        p = pose.at(d.pair.second, d.pair.d_second)
+        value = float(ctx.table.force_state.balancing[row, i])
+        label = f"$T_{{b,{_tex(d.pair.name)}}}$" if len(drivers) > 1 else "$T_b$"
+        if d.kind == "R":
+            arrow = _Arrow(label, p, None, value, DRIVER_COLOR, "N m", "balancing")
+        else:
+            e = pose.turn(d.pair.first, d.pair.axis)
+            label = label.replace("T", "F")
+            arrow = _Arrow(label, p, value * e, None, DRIVER_COLOR, "N", "balancing")
+        arrows.append(arrow)
+    return arrows
+
+
+def _scale(arrows: Iterable[_Arrow], size: float) -> float:
+    """Return the default force scale, N per cm: the largest arrow 28 % of ``size``."""
+    big = max(
+        (float(np.hypot(*a.force)) for a in arrows if a.force is not None), default=0.0
+    )
+    return _nice(big / (ARROW_LENGTH * size * 100.0))
+
+
+def _draw_arrows(
+    ax: Any, ctx: _Context, arrows: list[_Arrow], scale: float, text: str | None
+) -> list[np.ndarray]:
+    """Draw ``arrows`` at ``scale`` N per cm; return their extreme points.
+
+    ``text`` is ``"values"`` (name and value), ``"names"`` or None (no labels).
+    """
+    seen = []
+    tiny = 1e-9 * max([abs(a.couple or 0) for a in arrows] + [1.0])
+    for a in arrows:
+        if a.force is not None and float(np.hypot(*a.force)) > 0:
+            seen.append(_draw_force(ax, ctx, a, scale, text))
+        if a.couple is not None and abs(a.couple) > tiny:
+            seen += _draw_couple(ax, ctx, a, text)
+    return seen
+
+
+def _draw_force(
+    ax: Any, ctx: _Context, a: _Arrow, scale: float, text: str | None
+) -> np.ndarray:
+    """Draw the force of ``a`` as a straight arrow from its point; return its tip."""
+    from matplotlib.patches import FancyArrowPatch
+
+    mag = float(np.hypot(*a.force))
+    tip = a.point + a.force / (scale * 100.0)
+    ax.add_patch(
+        FancyArrowPatch(
+            tuple(a.point),
+            tuple(tip),
+            arrowstyle="-|>",
+            mutation_scale=13,
+            color=a.color,
+            lw=1.7,
+            shrinkA=0,
+            shrinkB=0,
+            zorder=6,
+        )
+    )
+    if text:
+        u = a.force / mag
+        words = f"{a.label} = {mag:.3g} {a.value}" if text == "values" else a.label
+        ax.text(
+            *(tip + 0.5 * ctx.r * u),
+            words,
+            fontsize=7.5,
+            color=a.color,
+            ha="left" if u[0] >= 0 else "right",
+            va="bottom" if u[1] >= 0 else "top",
+            zorder=7,
+            bbox=LABEL_BOX,
+        )
+    return tip
+
+
+def _draw_couple(
+    ax: Any, ctx: _Context, a: _Arrow, text: str | None
+) -> list[np.ndarray]:
+    """Draw the couple of ``a`` as a curved arrow round its point; return its box."""
+    from matplotlib.patches import FancyArrowPatch
+    from matplotlib.path import Path
+
+    rad = (3.4 if a.color == DRIVER_COLOR else 2.3) * ctx.r
+    t = np.linspace(math.radians(-100), math.radians(150), 40)
+    if a.couple < 0:
+        t = t[::-1]
+    arc = a.point + rad * np.column_stack([np.cos(t), np.sin(t)])
+    ax.add_patch(
+        FancyArrowPatch(
+            path=Path(arc),
+            arrowstyle="-|>",
+            mutation_scale=11,
+            color=a.color,
+            lw=1.5,
+            zorder=6,
+        )
+    )
+    if text:
+        # the balancing torque always shows its value
+        value = text == "values" or a.color == DRIVER_COLOR
+        words = f"{a.label} = {a.couple:.3g} {a.value}" if value else a.label
+        ax.text(
+            *(a.point + rad * np.array([0.7, 0.8])),
+            words,
+            fontsize=7.5,
+            color=a.color,
+            ha="left",
+            va="bottom",
+            zorder=7,
+            bbox=LABEL_BOX,
+        )
+    return [a.point - rad, a.point + rad]

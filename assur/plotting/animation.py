@@ -1,0 +1,116 @@
+"""An animated GIF of a sweep, one frame per row of a table.
+
+Every frame has the same limits, layout and force scale, so that the mechanism and
+its arrows can be compared from frame to frame.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur.plotting._axes import _handles
+from assur.plotting._context import _Context, _context, _need_forces
+from assur.plotting._forces import _overview_arrows, _scale
+from assur.plotting._geometry import _extent
+from assur.plotting.mechanism import _draw_row
+
+if TYPE_CHECKING:
+    from assur.analysis import Table
+
+__all__ = ["animate"]
+
+WIDTH = 6.0
+"""Width of the drawing in every frame, in."""
+
+
+def animate(
+    table: Table, path: Any, forces: bool = False, fps: float = 20, dpi: float = 80
+) -> int:
+    """Write an animated GIF of the sweep, one frame per row of ``table``.
+
+    Parameters
+    ----------
+    table : Table
+    path : str or path-like
+        The GIF file to write.
+    forces : bool
+        Draw the joint reactions and the other loads too, at one scale for the whole
+        sweep (needs a forces table).
+    fps : float
+        Frames per second.
+    dpi : float
+        Resolution of the frames, dots per inch (the drawing is 6 inches wide).
+
+    Returns
+    -------
+    int
+        The number of frames written.
+    """
+    import matplotlib.pyplot as plt
+    from matplotlib.animation import PillowWriter
+
+    if forces:
+        _need_forces(table, "animate(forces=True)")
+    ctx = _context(table)
+    corners, scale = _film_limits(ctx, forces)
+    fig, ax, size = _film_figure(ctx, corners)
+    try:
+        writer = PillowWriter(fps=fps)
+        with writer.saving(fig, str(path), dpi):
+            for r in range(len(table)):
+                ax.clear()
+                entries = _draw_row(
+                    ax, ctx, r, forces, scale, True, True, corners, False
+                )
+                if r == 0:
+                    # one legend for the whole film, outside the axes that are redrawn
+                    fig.legend(
+                        handles=_handles(entries),
+                        loc="upper left",
+                        fontsize=8,
+                        bbox_to_anchor=((1.0 + WIDTH) / size[0], 1.0 - 0.4 / size[1]),
+                        frameon=False,
+                    )
+                writer.grab_frame()
+    finally:
+        plt.close(fig)
+    return len(table)
+
+
+def _film_limits(ctx: _Context, forces: bool) -> tuple[list[Any], float | None]:
+    """Corners of a frame that holds every row (m) and the force scale (N per cm)."""
+    rows = range(len(ctx.table))
+    limits = [p for r in rows for p in _extent(ctx, ctx.pose(r))]
+    scale = None
+    if forces:
+        # one scale and one frame for the whole film, so arrows compare across frames
+        arrows = [a for r in rows for a in _overview_arrows(ctx, ctx.pose(r), r)]
+        scale = _scale(arrows, ctx.size)
+        limits += [
+            a.point + a.force / (scale * 100.0) for a in arrows if a.force is not None
+        ]
+    return [np.nanmin(limits, axis=0), np.nanmax(limits, axis=0)], scale
+
+
+def _film_figure(
+    ctx: _Context, corners: list[Any]
+) -> tuple[Any, Any, tuple[float, float]]:
+    """Return a figure and axes of fixed layout sized to the drawing, and its size (in).
+
+    The axes must not jump between frames, so their place is set by hand.
+    """
+    import matplotlib.pyplot as plt
+
+    span = corners[1] - corners[0] + 0.2 * max(ctx.size, *(corners[1] - corners[0]))
+    height = float(np.clip(WIDTH * span[1] / span[0], 2.0, 6.0))
+    size = (WIDTH + 4.2, height + 1.1)
+    fig, ax = plt.subplots(figsize=size)
+    fig.subplots_adjust(
+        left=0.8 / size[0],
+        right=(0.8 + WIDTH) / size[0],
+        bottom=0.7 / size[1],
+        top=1.0 - 0.4 / size[1],
+    )
+    return fig, ax, size

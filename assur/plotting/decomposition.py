@@ -1,0 +1,306 @@
+"""The decomposition into Assur groups, step by step, and a group's free-body diagram.
+
+:func:`draw_decomposition` shows how the mechanism is built, driver first, each group
+on the links it hangs on; :func:`draw_free_body` cuts one group free and draws every
+load on it.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur.errors import ModelError
+from assur.plotting._axes import _frame_axes, _legend, _new_axes
+from assur.plotting._context import (
+    _Context,
+    _context,
+    _need_forces,
+    _Pose,
+    _position_text,
+    _row,
+)
+from assur.plotting._forces import (
+    _Arrow,
+    _centre,
+    _draw_arrows,
+    _inertia_arrows,
+    _reaction,
+    _scale,
+    _tex,
+)
+from assur.plotting._geometry import _anchor, _extent, _public
+from assur.plotting._style import INERTIA_COLOR, LOAD_COLOR, REACTION_COLOR
+from assur.plotting.mechanism import _draw_mechanism
+
+if TYPE_CHECKING:
+    from assur.analysis import Table
+
+__all__ = ["draw_decomposition", "draw_free_body"]
+
+
+def draw_decomposition(table: Table, angle: Any = None) -> Any:
+    """Draw the decomposition into Assur groups, one panel per step.
+
+    The driving links come first, then each Assur group in order of attachment,
+    drawn in full with the known links it hangs on drawn faintly.
+
+    Parameters
+    ----------
+    table : Table
+    angle : float, optional
+        Driver position, deg (nearest row; default the first).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from assur.structure import structure
+
+    ctx = _context(table)
+    row = _row(table, angle)
+    pose = ctx.pose(row)
+    steps = _steps(ctx)
+    every = _extent(ctx, pose)
+    fig, axes = _panels(ctx, every, len(steps))
+    for k, ax in enumerate(axes.flat):
+        if k >= len(steps):
+            ax.set_axis_off()
+            continue
+        text, full, faint = steps[k]
+        _draw_mechanism(ax, ctx, pose, full, faint - full)
+        _frame_axes(ax, every, ctx.size, margin=0.08)
+        on = sorted(_public(ctx.plan.bodies[b]) for b in faint)
+        ax.set_title(f"{k + 1}. {text}\nhangs on: {', '.join(on)}", fontsize=9)
+    formula = structure(table.mechanism).formula
+    fig.suptitle(
+        f"{table.mechanism.name or 'Mechanism'}: {formula}\n"
+        f"{_position_text(table, row)}",
+        fontsize=10,
+    )
+    return fig
+
+
+def _steps(ctx: _Context) -> list[tuple[str, set[int], set[int]]]:
+    """Return the steps: title, bodies added, the bodies they hang on."""
+    plan = ctx.plan
+    steps = [
+        (f"I: driver (ground, {plan.bodies[d.body]})", {d.body}, {0})
+        for d in plan.drivers
+    ]
+    for g, (text, _, bodies) in zip(
+        plan.groups, ctx.legend[len(plan.drivers) :], strict=True
+    ):
+        steps.append((text, set(bodies), {plan.body(x) for x in g.attached_to}))
+    return steps
+
+
+def _panels(ctx: _Context, every: list[np.ndarray], count: int) -> tuple[Any, Any]:
+    """Return a figure and a grid of ``count`` panels (or a few more), three a row."""
+    import matplotlib.pyplot as plt
+
+    ncols = min(3, count)
+    nrows = math.ceil(count / ncols)
+    span = np.ptp(np.array(every), axis=0)
+    span = span + 0.16 * max(ctx.size, *span)
+    # the panels keep the drawing's proportions: about 3.4 in of axes per panel width
+    height = float(np.clip(3.4 * span[1] / span[0], 0.8, 5.5)) + 1.1
+    return plt.subplots(
+        nrows,
+        ncols,
+        figsize=(4.2 * ncols, height * nrows + 0.6),
+        layout="constrained",
+        squeeze=False,
+    )
+
+
+def draw_free_body(
+    table: Table,
+    group_index: int,
+    angle: Any = None,
+    ax: Any = None,
+    scale: float | None = None,
+) -> Any:
+    """Draw the free-body diagram of one Assur group at one driver position.
+
+    The group is cut free from the links it hangs on; the arrows are its inertia
+    loads, gravity and external loads, the reactions of the known links at its
+    external pairs (acting on the group) and those at its internal pairs (by the
+    pair's first link on its second), each labelled with its value.
+
+    Parameters
+    ----------
+    table : Table
+        A forces table.
+    group_index : int
+        Index of the group in the order of attachment (0: the first Assur group;
+        drivers are not counted).
+    angle : float, optional
+        Driver position, deg (nearest row; default the first).
+    ax : matplotlib Axes, optional
+    scale : float, optional
+        Force scale, N per cm of drawing.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Raises
+    ------
+    ModelError
+        For a kinematics table or a group index out of range.
+    """
+    _need_forces(table, "draw_free_body")
+    ctx = _context(table)
+    group_index = _group(ctx, group_index)
+    row = _row(table, angle)
+    pose = ctx.pose(row)
+    group = ctx.plan.groups[group_index]
+    bodies = {ctx.plan.body(x) for x in group.links}
+    ax = _new_axes(ax, (9.0, 6.5))
+    seen = _draw_mechanism(ax, ctx, pose, bodies, frame=False)
+    arrows = _free_body_arrows(table, group_index, row)
+    scale = scale or _scale(arrows, 0.8 * ctx.size)
+    seen += _draw_arrows(ax, ctx, arrows, scale, "values")
+    seen += [a.point for a in arrows]
+    _frame_axes(ax, seen, 0.5 * ctx.size, margin=0.12)
+    text, color, _ = ctx.legend[len(ctx.plan.drivers) + group_index]
+    ax.set_title(
+        f"Free body of group {text}\n{_position_text(table, row)}", fontsize=10
+    )
+    _legend(
+        ax,
+        [
+            (text, color),
+            ("reaction", REACTION_COLOR),
+            ("inertia force and torque", INERTIA_COLOR),
+            ("gravity, external load", LOAD_COLOR),
+            (f"force scale: 1 cm = {scale:g} N", ""),
+        ],
+    )
+    return ax
+
+
+def _group(ctx: _Context, group_index: int) -> int:
+    """Check ``group_index`` (negative counts from the end); return it from 0."""
+    count = len(ctx.plan.groups)
+    if not -count <= group_index < count:
+        msg = (
+            f"group_index: {group_index} is out of range; the mechanism has {count} "
+            f"Assur group(s), expected 0 to {count - 1}"
+        )
+        raise ModelError(msg)
+    return group_index % count
+
+
+def _free_body_arrows(table: Table, group_index: int, row: int) -> list[_Arrow]:
+    """Return the loads on Assur group ``group_index`` at ``row`` (N, N m).
+
+    External reactions act on the group; internal ones on the pair's second link.
+    """
+    ctx = _context(table)
+    group = ctx.plan.groups[group_index]
+    links = [x for x in group.links if "~" not in x]
+    bodies = {ctx.plan.body(x) for x in group.links}
+    pose = ctx.pose(row)
+    return (
+        _inertia_arrows(ctx, row, links)
+        + _gravity_arrows(table, links, row)
+        + _load_arrows(ctx, pose, row, bodies)
+        + _pair_arrows(ctx, pose, row, bodies)
+    )
+
+
+def _gravity_arrows(table: Table, links: list[str], row: int) -> list[_Arrow]:
+    """Return the weight of each massive link of ``links``, at its centre of mass."""
+    mech = table.mechanism
+    if mech.gravity is None or not any(mech.gravity):
+        return []
+    g = np.asarray(mech.gravity, dtype=float)
+    return [
+        _Arrow(
+            f"$G_{{{_tex(x)}}}$",
+            _centre(table, x, row),
+            mech.link(x).mass * g,
+            None,
+            LOAD_COLOR,
+            "N",
+            "gravity",
+        )
+        for x in links
+        if mech.link(x).mass
+    ]
+
+
+def _load_arrows(
+    ctx: _Context, pose: _Pose, row: int, bodies: set[int]
+) -> list[_Arrow]:
+    """Return the external forces and torques on ``bodies`` at ``row``."""
+    from assur.model import resolve_point
+
+    plan, mech = ctx.plan, ctx.table.mechanism
+    arrows = []
+    for i, load in enumerate(mech.loads):
+        b = plan.body(load.link)
+        if b not in bodies:
+            continue
+        name = _tex(load.link)
+        if load.force is not None:
+            at = pose.at(b, plan.offset(b, resolve_point(mech, load.at)))
+            force = _load_value(ctx, row, load.force, f"loads[{i}].force")
+            arrows.append(
+                _Arrow(f"$F_{{{name}}}$", at, force, None, LOAD_COLOR, "N", "load")
+            )
+        if load.torque is not None:
+            at = _anchor(ctx, pose, b)
+            torque = _load_value(ctx, row, load.torque, f"loads[{i}].torque")
+            arrows.append(
+                _Arrow(
+                    f"$T_{{{name}}}$",
+                    at,
+                    None,
+                    float(torque[0]),
+                    LOAD_COLOR,
+                    "N m",
+                    "load",
+                )
+            )
+    return arrows
+
+
+def _load_value(ctx: _Context, row: int, value: Any, entry: str) -> np.ndarray:
+    """Return a load's value at ``row``: constant, or from its load table (N, N m)."""
+    from assur.loads import table_values
+    from assur.model import LoadTable
+
+    if not isinstance(value, LoadTable):
+        return np.atleast_1d(np.asarray(value, dtype=float))
+    state = ctx.table.state
+    drive = state.drive[row : row + 1]
+    slides = {k: s[0, row : row + 1] for k, s in state.slide.items()}
+    values = table_values(value, ctx.plan, drive, slides, entry)
+    return np.array([c[0] for c in values])
+
+
+def _pair_arrows(
+    ctx: _Context, pose: _Pose, row: int, bodies: set[int]
+) -> list[_Arrow]:
+    """Return the reactions at the pairs of ``bodies``: on the group, or inside it."""
+    plan = ctx.plan
+    arrows = []
+    for name, pair in plan.pairs.items():
+        inside = (pair.first in bodies, pair.second in bodies)
+        if not any(inside):
+            continue
+        label = _tex(_public(name))
+        if all(inside):
+            first, second = (
+                _tex(_public(plan.bodies[x])) for x in (pair.first, pair.second)
+            )
+            label = f"{label},{first}\\to {second}"
+        q, f, m = _reaction(ctx, pose, row, name, 1.0 if inside[1] else -1.0)
+        kind = "internal" if all(inside) else "reaction"
+        arrows.append(_Arrow(f"$R_{{{label}}}$", q, f, m, REACTION_COLOR, "N", kind))
+    return arrows

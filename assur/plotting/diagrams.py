@@ -1,0 +1,243 @@
+"""Motion over a sweep: quantities of links and points against the driver, paths.
+
+:func:`plot_motion` plots a column of the table against the driver position;
+:func:`plot_paths` draws the paths of points over the mechanism drawn faintly.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur.errors import ModelError
+from assur.plotting._axes import _driver_axis, _frame_axes, _new_axes
+from assur.plotting._context import _Context, _context, _row
+from assur.plotting._style import LINK_UNITS, PATH_COLORS, POINT_PARTS, POINT_UNITS
+from assur.plotting.mechanism import _draw_mechanism
+
+if TYPE_CHECKING:
+    from assur.analysis import Table
+    from assur.plan import Plan
+
+__all__ = ["plot_motion", "plot_paths"]
+
+DASHES = ("-", "--", ":", "-.")
+"""Line styles of the links of one group, in order (cycled)."""
+
+
+def plot_motion(
+    table: Table,
+    names: Sequence[str] | str | None = None,
+    quantity: str = "omega",
+    ax: Any = None,
+) -> Any:
+    """Plot one quantity of links or points against the driver position.
+
+    Parameters
+    ----------
+    table : Table
+    names : str or sequence of str, optional
+        Links, or points (joints, extra points, centres ``"L.G"``). Default: every
+        moving link for a link quantity, every moving point otherwise.
+    quantity : str
+        For links ``"angle"`` (deg), ``"omega"``, ``"alpha"``, ``"jerk"``; for points
+        ``"x"``, ``"v"``, ``"a"``, ``"j"`` (both components) or one column suffix
+        such as ``"vy"``; for prismatic joints also ``"s"`` and, as their slide's
+        derivatives, ``"v"``, ``"a"``, ``"j"``.
+    ax : matplotlib Axes, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+
+    Raises
+    ------
+    ModelError
+        When the table has no such column for one of ``names``.
+
+    Examples
+    --------
+    >>> import matplotlib
+    >>> matplotlib.use("Agg")
+    >>> import assur
+    >>> t = assur.kinematics(assur.catalog.four_bar(), range(0, 360, 10))
+    >>> ax = plot_motion(t, ["coupler", "rocker"], "omega")
+    >>> len(ax.lines)
+    2
+    >>> import matplotlib.pyplot as plt
+    >>> plt.close(ax.figure)
+    """
+    if names is None:
+        names = _moving(table, quantity)
+    elif isinstance(names, str):
+        names = [names]
+    ax = _new_axes(ax, (8.0, 4.5))
+    x = _driver_axis(ax, table)
+    ctx = _context(table)
+    for name in names:
+        _plot_quantity(ax, ctx, x, name, quantity)
+    unit = LINK_UNITS.get(quantity) or POINT_UNITS.get(quantity, "")
+    ax.set_ylabel(f"{quantity} [{unit}]")
+    ax.set_title(f"{table.mechanism.name or 'Mechanism'}: {quantity}", fontsize=10)
+    ax.legend(fontsize=8, ncols=2 if len(ax.lines) > 8 else 1)
+    return ax
+
+
+def _moving(table: Table, quantity: str) -> list[str]:
+    """Links that turn, for a link ``quantity``; else the points that move."""
+    from assur.plan import compile_plan
+
+    if quantity not in LINK_UNITS:
+        return _moving_points(table, extra_first=False)
+    # links that only slide (their angle is constant) would add flat lines
+    links = _public_links(compile_plan(table.mechanism))
+    return [x for x in links if np.ptp(table[f"{x}.angle"]) > 1e-9]
+
+
+def _plot_quantity(
+    ax: Any, ctx: _Context, x: np.ndarray, name: str, quantity: str
+) -> None:
+    """Plot ``quantity`` of link or point ``name`` (both components of a vector)."""
+    table = ctx.table
+    color, style = _link_style(ctx, name)
+    if f"{name}.{quantity}" in table:
+        ax.plot(
+            x, table[f"{name}.{quantity}"], lw=1.6, label=name, color=color, ls=style
+        )
+    elif quantity in POINT_PARTS and f"{name}.{POINT_PARTS[quantity][0]}" in table:
+        cx, cy = POINT_PARTS[quantity]
+        line = ax.plot(x, table[f"{name}.{cx}"], lw=1.6, label=f"{name} {cx}")
+        ax.plot(
+            x,
+            table[f"{name}.{cy}"],
+            lw=1.6,
+            ls="--",
+            color=line[0].get_color(),
+            label=f"{name} {cy}",
+        )
+    else:
+        msg = _no_quantity(table, name, quantity)
+        raise ModelError(msg)
+
+
+def _link_style(ctx: _Context, name: str) -> tuple[str | None, str]:
+    """Colour and dashes of link ``name``: its group's colour, a dash per link."""
+    if name not in ctx.plan.bodies:
+        return None, "-"
+    body = ctx.plan.body(name)
+    color = ctx.color[body]
+    # links of one group share its colour; their order in it sets the dashes
+    same = [b for b in range(body) if ctx.color[b] == color]
+    return color, DASHES[len(same) % len(DASHES)]
+
+
+def _no_quantity(table: Table, name: str, quantity: str) -> str:
+    """Return the message for a missing ``quantity`` of ``name``, with those it has."""
+    have = sorted(
+        {c.rsplit(".", 1)[1] for c in table.columns if c.rsplit(".", 1)[0] == name}
+    )
+    have += [q for q in POINT_PARTS if f"{name}.x" in table]
+    if not have:
+        return f"plot_motion: no link or point {name!r} in the table"
+    return (
+        f"plot_motion: no quantity {quantity!r} for {name!r}; expected one of "
+        f"{', '.join(have)}"
+    )
+
+
+def _public_links(plan: Plan) -> list[str]:
+    """Return the moving links as the file names them (no slot blocks)."""
+    return [b for b in plan.bodies[1:] if "~" not in b]
+
+
+def _moving_points(table: Table, extra_first: bool = True) -> list[str]:
+    """Return the reported points that move (joints, extra points; no centres)."""
+    from assur.plan import compile_plan
+
+    plan = compile_plan(table.mechanism)
+    extra = [p.name for p in table.mechanism.points]
+    joints = [n for n, pair in plan.pairs.items() if not pair.virtual]
+    names, paths = [], []
+    for name in (extra + joints) if extra_first else (joints + extra):
+        path = np.column_stack([table[f"{name}.x"], table[f"{name}.y"]])
+        if np.ptp(path, axis=0).max() <= 1e-9 * plan.scale:
+            continue  # a pivot on the frame has no path
+        if any(np.allclose(path, q, rtol=0, atol=1e-9 * plan.scale) for q in paths):
+            continue  # a slider's guide point runs with its pin
+        names.append(name)
+        paths.append(path)
+    return names
+
+
+def plot_paths(
+    table: Table, points: Sequence[str] | None = None, angle: Any = None, ax: Any = None
+) -> Any:
+    """Plot the paths of points over the sweep, over the mechanism drawn faintly.
+
+    Parameters
+    ----------
+    table : Table
+    points : sequence of str, optional
+        Point names (joints, extra points, centres ``"L.G"``). Default: every extra
+        point (coupler curves, drawn thicker) and every moving joint.
+    angle : float, optional
+        Driver position of the faint mechanism, deg (default: the first row).
+    ax : matplotlib Axes, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    ctx = _context(table)
+    row = _row(table, angle)
+    ax = _new_axes(ax)
+    seen = _draw_mechanism(
+        ax, ctx, ctx.pose(row), set(), set(range(len(ctx.plan.bodies)))
+    )
+    extra = {p.name for p in table.mechanism.points}
+    names = list(points) if points is not None else _moving_points(table)
+    for k, name in enumerate(names):
+        if f"{name}.x" not in table:
+            msg = f"plot_paths: no point {name!r}; expected a joint or an extra point"
+            raise ModelError(msg)
+        xy = np.column_stack([table[f"{name}.x"], table[f"{name}.y"]])
+        color = PATH_COLORS[k % len(PATH_COLORS)]
+        coupler = name in extra
+        ax.plot(
+            xy[:, 0],
+            xy[:, 1],
+            color=color,
+            lw=2.4 if coupler else 1.4,
+            zorder=5,
+            label=f"{name} (coupler curve)" if coupler else name,
+        )
+        _sense(ax, xy, color)
+        seen += list(xy)
+    _frame_axes(ax, seen, ctx.size, margin=0.06)
+    ax.set_title(f"{table.mechanism.name or 'Mechanism'}: paths of points", fontsize=10)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
+    return ax
+
+
+def _sense(ax: Any, xy: np.ndarray, color: str) -> None:
+    """Draw an arrowhead a third of the way along a path: the sense of motion."""
+    from matplotlib.patches import FancyArrowPatch
+
+    k = len(xy) // 3
+    if len(xy) < 3 or not np.all(np.isfinite(xy[k : k + 2])):
+        return
+    ax.add_patch(
+        FancyArrowPatch(
+            tuple(xy[k]),
+            tuple(xy[k + 1]),
+            arrowstyle="-|>",
+            mutation_scale=14,
+            color=color,
+            lw=0,
+            zorder=5.5,
+            shrinkA=0,
+            shrinkB=0,
+        )
+    )

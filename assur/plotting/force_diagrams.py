@@ -1,0 +1,226 @@
+"""Forces over a sweep: balancing load, hodographs of the reactions, shaking force.
+
+Each diagram needs a forces table; the hodographs trace the tip of a force vector
+over the sweep from the origin.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur.errors import ModelError
+from assur.plotting._axes import _driver_axis, _new_axes
+from assur.plotting._context import _context, _need_forces, _revolute
+from assur.plotting._geometry import _on
+from assur.plotting._style import DRIVER_COLOR
+
+if TYPE_CHECKING:
+    from assur.analysis import Table
+
+__all__ = ["plot_hodographs", "plot_shaking", "plot_torque"]
+
+BALANCING_COLORS = (DRIVER_COLOR, "#e6550d", "#31a354")
+"""Colours of the balancing loads, one per driver (cycled)."""
+
+
+def plot_torque(table: Table, ax: Any = None) -> Any:
+    """Plot the balancing torque (or force) and its virtual-power check.
+
+    Parameters
+    ----------
+    table : Table
+        A forces table.
+    ax : matplotlib Axes, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    _need_forces(table, "plot_torque")
+    from assur.plan import compile_plan
+
+    plan = compile_plan(table.mechanism)
+    ax = _new_axes(ax, (8.0, 4.5))
+    x = _driver_axis(ax, table)
+    for i, d in enumerate(plan.drivers):
+        name = f" at {d.pair.name}" if len(plan.drivers) > 1 else ""
+        _plot_balancing(ax, table, x, i, d.kind == "R", name)
+    ax.axhline(0.0, color="black", lw=0.6)
+    unit = "N m" if plan.drivers[0].kind == "R" else "N"
+    ax.set_ylabel(f"balancing load [{unit}]")
+    ax.set_title(f"{table.mechanism.name or 'Mechanism'}: balancing load", fontsize=10)
+    ax.legend(fontsize=8)
+    return ax
+
+
+def _plot_balancing(
+    ax: Any, table: Table, x: np.ndarray, i: int, revolute: bool, name: str
+) -> None:
+    """Plot driver ``i``'s balancing load, its check (dots) and its mean."""
+    what, unit = ("torque", "N m") if revolute else ("force", "N")
+    color = BALANCING_COLORS[i % len(BALANCING_COLORS)]
+    balancing = table.force_state.balancing[:, i]
+    step = max(1, len(x) // 36)
+    ax.plot(
+        x, balancing, color=color, lw=1.8, label=f"balancing {what}{name} (equilibrium)"
+    )
+    ax.plot(
+        x[::step],
+        table.force_state.check[::step, i],
+        ls="none",
+        marker="o",
+        mfc="none",
+        color=color,
+        ms=5,
+        label=f"virtual-power check{name}",
+    )
+    mean = float(np.mean(balancing))
+    if abs(mean) < 1e-9 * float(np.max(np.abs(balancing))):
+        mean = 0.0  # a full turn of a conservative system: zero up to rounding
+    ax.axhline(mean, color=color, lw=0.9, ls=":", label=f"mean {mean:.4g} {unit}{name}")
+
+
+def _locus(ax: Any, table: Table, fx: np.ndarray, fy: np.ndarray, color: str) -> None:
+    """Draw the hodograph of a force: its tip's path, the origin, a few marks."""
+    ax.plot(fx, fy, color=color, lw=1.5)
+    ax.plot([0], [0], marker="+", color="black", ms=9)
+    ax.axhline(0.0, color="#999999", lw=0.5)
+    ax.axvline(0.0, color="#999999", lw=0.5)
+    marks = np.linspace(0, len(fx), 5, dtype=int)[:-1] if len(fx) >= 4 else [0]
+    ax.annotate(
+        "",
+        xy=(fx[0], fy[0]),
+        xytext=(0, 0),
+        arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.0},
+    )
+    revolute = _revolute(table)
+    for k in marks:
+        ax.plot([fx[k]], [fy[k]], marker="o", ms=3.5, color=color)
+        angle = table["angle"][k]
+        ax.annotate(
+            f"{angle:.0f}°" if revolute else f"{angle:.3g} m",
+            (fx[k], fy[k]),
+            fontsize=7,
+            xytext=(3, 3),
+            textcoords="offset points",
+        )
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, lw=0.4, alpha=0.5)
+
+
+def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
+    """Plot the hodograph (polar diagram) of every joint reaction: Fy against Fx.
+
+    Each panel traces the tip of the reaction vector (by the joint's first link on
+    its second) over the sweep, from the origin; dots mark four driver positions.
+
+    Parameters
+    ----------
+    table : Table
+        A forces table.
+    joints : sequence of str, optional
+        Joints to show; default every joint.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    import matplotlib.pyplot as plt
+
+    _need_forces(table, "plot_hodographs")
+    ctx = _context(table)
+    pairs = ctx.plan.pairs
+    names = _joints(pairs, joints)
+    ncols = min(4, len(names))
+    nrows = math.ceil(len(names) / ncols)
+    fig, axes = plt.subplots(
+        nrows,
+        ncols,
+        figsize=(3.4 * ncols, 3.3 * nrows + 0.4),
+        layout="constrained",
+        squeeze=False,
+    )
+    for ax, name in zip(axes.flat, names, strict=False):
+        force = table.force_state.reactions[name][0]
+        _locus(ax, table, force[:, 0], force[:, 1], ctx.color[pairs[name].second])
+        ax.set_title(
+            f"{name}: {_on(ctx.plan, name)}\n"
+            f"max {np.nanmax(np.hypot(force[:, 0], force[:, 1])):.4g} N",
+            fontsize=8.5,
+        )
+        ax.set_xlabel("Fx [N]", fontsize=8)
+        ax.set_ylabel("Fy [N]", fontsize=8)
+        ax.tick_params(labelsize=7)
+    for ax in list(axes.flat)[len(names) :]:
+        ax.set_axis_off()
+    fig.suptitle(
+        f"{table.mechanism.name or 'Mechanism'}: hodographs of the joint reactions",
+        fontsize=10,
+    )
+    return fig
+
+
+def _joints(pairs: dict[str, Any], joints: Sequence[str] | None) -> list[str]:
+    """Return ``joints`` (default: every joint) once checked against ``pairs``."""
+    if joints is None:
+        return [n for n, p in pairs.items() if not p.virtual]
+    names = list(joints)
+    for name in names:
+        if name not in pairs or pairs[name].virtual:
+            msg = (
+                f"plot_hodographs: no joint {name!r}; expected one of the file's joints"
+            )
+            raise ModelError(msg)
+    return names
+
+
+def plot_shaking(table: Table) -> Any:
+    """Plot the shaking force (its hodograph and components) and shaking moment.
+
+    The shaking force and moment are the resultant of every load the moving links
+    put on the frame (moment about the origin).
+
+    Parameters
+    ----------
+    table : Table
+        A forces table.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    import matplotlib.pyplot as plt
+
+    _need_forces(table, "plot_shaking")
+    shaking = table.force_state.shaking
+    fig = plt.figure(figsize=(11.0, 4.8), layout="constrained")
+    grid = fig.add_gridspec(2, 2, width_ratios=(1.0, 1.4))
+    polar = fig.add_subplot(grid[:, 0])
+    _locus(polar, table, shaking[:, 0], shaking[:, 1], "#1f77b4")
+    polar.set_xlabel("Fx [N]")
+    polar.set_ylabel("Fy [N]")
+    polar.set_title("hodograph of the shaking force", fontsize=9)
+    force = fig.add_subplot(grid[0, 1])
+    x = _driver_axis(force, table)
+    force.plot(x, shaking[:, 0], label="Fx", lw=1.5)
+    force.plot(x, shaking[:, 1], label="Fy", lw=1.5)
+    force.plot(
+        x, np.hypot(shaking[:, 0], shaking[:, 1]), label="|F|", lw=1.5, color="black"
+    )
+    force.set_ylabel("force [N]")
+    force.legend(fontsize=8, ncols=3)
+    force.set_xlabel("")
+    moment = fig.add_subplot(grid[1, 1], sharex=force)
+    _driver_axis(moment, table)
+    moment.plot(x, shaking[:, 2], color="#d62728", lw=1.5, label="M about the origin")
+    moment.set_ylabel("moment [N m]")
+    moment.legend(fontsize=8)
+    fig.suptitle(
+        f"{table.mechanism.name or 'Mechanism'}: shaking force and moment on the frame",
+        fontsize=10,
+    )
+    return fig
