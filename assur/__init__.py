@@ -10,8 +10,6 @@ inertia loads, joint reactions and balancing torque.
 I(ground, crank) -> II(rod, slider)
 """
 
-from importlib.metadata import PackageNotFoundError, version
-
 from assur import catalog
 from assur.analysis import Table, forces, kinematics
 from assur.errors import (
@@ -26,11 +24,7 @@ from assur.io import dumps, load, loads, save
 from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
 from assur.structure import Group, Structure, mobility, structure
 
-try:
-    __version__ = version("assur")
-except PackageNotFoundError:  # pragma: no cover - running from a source tree
-    __version__ = "0.0.0"
-del version, PackageNotFoundError
+__version__ = "0.1.0"
 
 __all__ = [
     "AssemblyError",

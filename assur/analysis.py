@@ -305,4 +305,6 @@ def _take_state(s: _kin.KinematicState, ok: Array) -> _kin.KinematicState:
 def _take_forces(p: _kst.ForceState, ok: Array) -> _kst.ForceState:
     return _kst.ForceState(p.inertia_force[ok], p.inertia_torque[ok],
                            {k: (v[0][ok], v[1][ok]) for k, v in p.reactions.items()},
-                           p.balancing[ok], p.check[ok], p.shaking[ok], p.residual[ok])
+                           p.balancing[ok], p.check[ok], p.shaking[ok], p.residual[ok],
+                           {k: v[ok] for k, v in p.magnitude.items()},
+                           {k: v[ok] for k, v in p.offset.items()})

@@ -96,17 +96,10 @@ def _force_columns(plan: Plan, state: KinematicState, forces: ForceState,
         force, couple = forces.reactions[name]
         data[f"{name}.Fx"] = force[:, 0]
         data[f"{name}.Fy"] = force[:, 1]
-        data[f"{name}.F"] = np.hypot(force[:, 0], force[:, 1])
+        data[f"{name}.F"] = forces.magnitude[name]
         if pair.kind == "P":
             data[f"{name}.M"] = couple
-            # the resultant normal force acts this far along the axis from the point
-            phi = state.link[0, :, pair.first]
-            n0 = pair.normal
-            normal = (force[:, 0] * (np.cos(phi) * n0[0] - np.sin(phi) * n0[1])
-                      + force[:, 1] * (np.sin(phi) * n0[0] + np.cos(phi) * n0[1]))
-            with np.errstate(divide="ignore", invalid="ignore"):
-                data[f"{name}.offset"] = np.where(np.abs(normal) > 1e-12, couple / normal,
-                                                  np.nan)
+            data[f"{name}.offset"] = forces.offset[name]
     for i, d in enumerate(plan.drivers):
         what = "torque" if d.kind == "R" else "force"
         if i == 0:

@@ -223,11 +223,19 @@ def collect(plan: Plan, bodies: list[Motion], n: int,
             origin[k, :, b, 0] = m.ox[k]
             origin[k, :, b, 1] = m.oy[k]
     # point by point on rows of the chunk: temporaries stay small enough for the cache
-    # and below the allocator's mmap threshold, and rotations solved already are reused
-    for p, (b, d) in enumerate(zip(plan.point_body, plan.point_offsets)):
+    # and below the allocator's mmap threshold, and rotations solved already are reused;
+    # coincident points are computed once, a body's origin and a still body's
+    # derivatives need no rotation terms
+    for b, d, idx in plan.point_sets:
         m = bodies[b]
+        still = all(m.phi[j].__class__ is float and not m.phi[j] for j in (1, 2, 3))
         for k in range(4):
-            point[k, :, p, 0], point[k, :, p, 1] = point_of(m, d, k)
+            if d == (0.0, 0.0) or (k and still):
+                xy = (m.ox[k], m.oy[k])
+            else:
+                xy = point_of(m, d, k)
+            for p in idx:
+                point[k, :, p, 0], point[k, :, p, 1] = xy
     slides = {name: arr[:, rows] for name, arr in out.slide.items()}
     _slides(plan, bodies, slides)
     drive = out.drive[rows]

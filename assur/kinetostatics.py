@@ -9,7 +9,7 @@ The principle of virtual power gives the same balancing loads independently.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -17,7 +17,8 @@ import numpy as np
 from assur._vec import Array
 from assur.groups import _dyad, general
 from assur.groups._dyad import DyadPlan, Wrench
-from assur.groups._motion import Motion, point
+from assur.groups._motion import Motion, point, rotated
+from assur.groups._pairs import PairPlan
 from assur.groups.driver import balance
 from assur.kinematics import KinematicState, velocity_coefficients
 from assur.loads import LoadPlan, compile_loads, table_values
@@ -46,6 +47,11 @@ class ForceState:
         Resultant force (N) and moment about the origin (N m) of all loads on the frame.
     residual : ndarray (n, 2)
         Largest force (N) and moment (N m) left unbalanced on any link.
+    magnitude : dict of str to ndarray (n,)
+        Magnitude of every pair's reaction force, N.
+    offset : dict of str to ndarray (n,)
+        For prismatic pairs: where the normal force acts, m along the axis from the
+        pair's point (NaN without normal force).
     """
 
     inertia_force: Array
@@ -55,6 +61,8 @@ class ForceState:
     check: Array
     shaking: Array
     residual: Array
+    magnitude: dict[str, Array] = field(default_factory=dict)
+    offset: dict[str, Array] = field(default_factory=dict)
 
 
 def applied_loads(plan: Plan, loads: LoadPlan, bodies: list[Motion],
@@ -72,9 +80,9 @@ def applied_loads(plan: Plan, loads: LoadPlan, bodies: list[Motion],
     for b in np.flatnonzero(loads.mass):
         m = bodies[b]
         mass = loads.mass[b]
-        center = loads.center[b]
-        px, py = point(m, center, 0)
-        ax, ay = point(m, center, 2)
+        p = loads.center_point[b]  # the centre's motion is in the state already
+        px, py = state.point[0, :, p, 0], state.point[0, :, p, 1]
+        ax, ay = state.point[2, :, p, 0], state.point[2, :, p, 1]
         fx, fy = -mass * ax, -mass * ay
         torque = -loads.inertia[b] * m.phi[2]
         inertia_force[:, b, 0], inertia_force[:, b, 1] = fx, fy
@@ -103,7 +111,9 @@ def allocate(plan: Plan, n: int) -> ForceState:
     reactions = {name: (np.empty((2, n)).T, np.empty(n)) for name in plan.pairs}
     return ForceState(np.zeros((2, count, n)).transpose(2, 1, 0),
                       np.zeros((count, n)).T, reactions, np.empty((drivers, n)).T,
-                      np.empty((drivers, n)).T, np.empty((3, n)).T, np.empty((2, n)).T)
+                      np.empty((drivers, n)).T, np.empty((3, n)).T, np.empty((2, n)).T,
+                      {name: np.empty(n) for name in plan.pairs},
+                      {name: np.empty(n) for name, p in plan.pairs.items() if p.kind == "P"})
 
 
 def freeze(state: ForceState) -> ForceState:
@@ -112,6 +122,7 @@ def freeze(state: ForceState) -> ForceState:
               state.shaking, state.residual]
     for force, couple in state.reactions.values():
         arrays += [force, couple]
+    arrays += [*state.magnitude.values(), *state.offset.values()]
     for arr in arrays:
         arr.flags.writeable = False
     return state
@@ -149,7 +160,12 @@ def solve(plan: Plan, bodies: list[Motion], state: KinematicState,
         reactions[name] = (force[rows], moment[rows])
     for i in range(3):
         out.shaking[rows, i] = wrenches[0][i]
-    out.residual[rows] = _residual(plan, bodies, applied, reactions, balancing)
+    out.residual[rows] = _residual(plan, bodies, applied, reactions, balancing, state)
+    for name, (force, couple) in reactions.items():
+        out.magnitude[name][rows] = np.hypot(force[:, 0], force[:, 1])
+        pair = plan.pairs[name]
+        if pair.kind == "P":
+            out.offset[name][rows] = _offset(pair, bodies, force, couple)
     return out
 
 
@@ -165,7 +181,11 @@ def _virtual_power(plan: Plan, bodies: list[Motion], applied: list[Wrench],
     :math:`v_{b,O} = v_b - \\omega_b o_b^\\perp` is the velocity of the body point at the
     origin about which :math:`\\tau_{b,O}` is taken.
     """
-    coeff = velocity_coefficients(plan, bodies, which)
+    speed = plan.drivers[which].omega
+    if len(plan.drivers) == 1 and speed:
+        coeff, scale = bodies, 1.0 / speed  # velocities are linear in the one speed
+    else:
+        coeff, scale = velocity_coefficients(plan, bodies, which), 1.0
     total: Any = 0.0
     for b in range(1, len(plan.bodies)):
         fx, fy, tau = applied[b]
@@ -174,16 +194,33 @@ def _virtual_power(plan: Plan, bodies: list[Motion], applied: list[Wrench],
         m, v = bodies[b], coeff[b]
         w = v.phi[1]
         total = total + fx * (v.ox[1] + w * m.oy[0]) + fy * (v.oy[1] - w * m.ox[0]) + tau * w
-    return -total
+    return -scale * total
+
+
+def _offset(pair: PairPlan, bodies: list[Motion], force: Array, couple: Array) -> Array:
+    """Where a prismatic pair's normal force acts: distance along the axis (m).
+
+    The couple about the pair's point moves the resultant normal force ``N`` by
+    ``M / N`` along the slide line; NaN where there is no normal force.
+    """
+    nx, ny = rotated(bodies[pair.first], pair.normal)
+    normal = force[:, 0] * nx + force[:, 1] * ny
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(np.abs(normal) > 1e-12, couple / normal, np.nan)
 
 
 def _residual(plan: Plan, bodies: list[Motion], applied: list[Wrench],
-              reactions: dict[str, tuple[Array, Array]], balancing: Array) -> Array:
+              reactions: dict[str, tuple[Array, Array]], balancing: Array,
+              state: KinematicState) -> Array:
     """Largest unbalanced force (N) and moment about the link's origin (N m)."""
     totals = [list(w) for w in applied]
     for name, (force, couple) in reactions.items():
         pair = plan.pairs[name]
-        qx, qy = point(bodies[pair.second], pair.d_second, 0)
+        p = plan.point_index.get(name)
+        if p is None:
+            qx, qy = point(bodies[pair.second], pair.d_second, 0)
+        else:
+            qx, qy = state.point[0, :, p, 0], state.point[0, :, p, 1]
         fx, fy = force[:, 0], force[:, 1]
         tau = qx * fy - qy * fx + couple
         for body, sign in ((pair.second, 1.0), (pair.first, -1.0)):

@@ -23,12 +23,16 @@ __all__ = ["LoadPlan", "compile_loads", "table_values"]
 class LoadPlan:
     """Per-body mass (kg), centre offset (m) and inertia (kg m^2); forces and torques.
 
+    ``center_point`` is the index of each body's centre among the plan's reported
+    points (-1 without one).
+
     ``forces`` holds ``(body, offset, value, entry)`` with ``value`` a constant (2,)
     array (N) or a :class:`LoadTable`; ``torques`` holds ``(body, value, entry)``.
     """
 
     mass: Array
     center: tuple[tuple[float, float], ...]
+    center_point: tuple[int, ...]
     inertia: Array
     gravity: tuple[float, float]
     forces: tuple
@@ -87,7 +91,9 @@ def _compile(mech: Mechanism) -> LoadPlan:
             torques.append((b, torque, f"loads[{i}].torque"))
     gravity = (0.0, 0.0) if mech.gravity is None else (float(mech.gravity[0]),
                                                        float(mech.gravity[1]))
-    return LoadPlan(mass, inertia=inertia, center=centers, gravity=gravity,
+    center_point = tuple(plan.point_index.get(f"{name}.G", -1) for name in plan.bodies)
+    return LoadPlan(mass, inertia=inertia, center=centers, center_point=center_point,
+                    gravity=gravity,
                     forces=tuple(forces), torques=tuple(torques))
 
 

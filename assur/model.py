@@ -223,11 +223,20 @@ class Mechanism:
     gravity: Vec2 | None = None
     loads: tuple[Load, ...] = ()
     points: tuple[Point, ...] = field(default=())
+    _hash: int | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         for attr in ("links", "joints", "drivers", "loads", "points"):
             object.__setattr__(self, attr, tuple(getattr(self, attr)))
         _validate(self)
+
+    def __hash__(self) -> int:
+        # a mechanism keys the memoised plans of every sweep: hash its fields once
+        if self._hash is None:
+            value = hash((self.links, self.joints, self.drivers, self.name,
+                          self.description, self.gravity, self.loads, self.points))
+            object.__setattr__(self, "_hash", value)
+        return self._hash  # type: ignore[return-value]
 
     def link(self, name: str) -> Link:
         """Return the link called ``name``."""

@@ -54,6 +54,11 @@ class Plan:
     point_offset : ndarray (P, 2)
     point_offsets : tuple
         The same offsets as tuples of floats, the kernels' constants.
+    point_sets : tuple
+        Distinct ``(body, offset)`` with the indices of the reported points there
+        (a joint, a centre of mass and a load point often coincide).
+    point_index : dict of str to int
+        Index of every reported point by name.
     scale : float
         Size of the mechanism, m (largest distance between two pairs).
     """
@@ -72,6 +77,8 @@ class Plan:
     point_offset: Array
     scale: float
     point_offsets: tuple[tuple[float, float], ...] = ()
+    point_sets: tuple[tuple[int, tuple[float, float], tuple[int, ...]], ...] = ()
+    point_index: dict[str, int] = dataclasses.field(default_factory=dict)
 
     @property
     def newton(self) -> bool:
@@ -124,9 +131,15 @@ def compile_plan(mech: Mechanism) -> Plan:
     driver_plans = tuple(_driver(plan, mech, g, index) for g in drivers)
     solvers = tuple(_solver(plan, g, index) for g in groups)
     points, body, offset = _points(mech, plan, index)
-    return dataclasses.replace(plan, drivers=driver_plans, solvers=solvers,
-                               points=points, point_body=body, point_offset=offset,
-                               point_offsets=tuple(_pt(d) for d in offset))
+    offsets = tuple(_pt(d) for d in offset)
+    sets: dict[tuple[int, tuple[float, float]], list[int]] = {}
+    for p, (b, d) in enumerate(zip(body.tolist(), offsets)):
+        sets.setdefault((b, d), []).append(p)
+    return dataclasses.replace(
+        plan, drivers=driver_plans, solvers=solvers, points=points, point_body=body,
+        point_offset=offset, point_offsets=offsets,
+        point_sets=tuple((b, d, tuple(idx)) for (b, d), idx in sets.items()),
+        point_index={name: p for p, name in enumerate(points)})
 
 
 def _pt(v: Any) -> tuple[float, float]:
