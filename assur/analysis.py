@@ -18,7 +18,12 @@ import numpy as np
 from assur import kinematics as _kin
 from assur import kinetostatics as _kst
 from assur._vec import Array
-from assur.errors import AssemblyError, AssurWarning, ModelError, SingularConfigurationError
+from assur.errors import (
+    AssemblyError,
+    AssurWarning,
+    ModelError,
+    SingularConfigurationError,
+)
 from assur.loads import compile_loads
 from assur.model import Mechanism
 from assur.plan import Plan, compile_plan
@@ -79,9 +84,14 @@ class Table:
     def to_dict(self) -> dict[str, Any]:
         """Return JSON-ready data: the mechanism's name, the columns and the rows."""
         rows = self.to_array()
-        return {"name": self.mechanism.name, "columns": list(self.columns),
-                "rows": [{c: _json_number(v) for c, v in zip(self.columns, row)}
-                         for row in rows]}
+        return {
+            "name": self.mechanism.name,
+            "columns": list(self.columns),
+            "rows": [
+                {c: _json_number(v) for c, v in zip(self.columns, row, strict=True)}
+                for row in rows
+            ],
+        }
 
     def to_pandas(self) -> Any:
         """Return a pandas DataFrame (pandas must be installed)."""
@@ -101,7 +111,7 @@ def _json_number(v: float) -> float | None:
 
 
 def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
-    """One full turn from the reference pose in steps of ``step`` degrees (360 / step rows).
+    """Return one full turn from the reference pose in steps of ``step`` degrees.
 
     For a prismatic driver: 101 positions over +-20 % of the mechanism's size.
     """
@@ -121,14 +131,16 @@ def _to_si(plan: Plan, angles: Any) -> Array:
     arr = np.asarray(angles, dtype=float)
     d = len(plan.drivers)
     if d == 0:
-        msg = "drivers: the mechanism has no driver; expected at least one [[drivers]] entry"
+        msg = "drivers: the mechanism has no driver; expected a [[drivers]] entry"
         raise ModelError(msg)
     if arr.ndim == 0:
         arr = arr.reshape(1)
     if arr.ndim == 1 and d > 1:
         if arr.shape[0] != d:
-            msg = (f"angles: the mechanism has {d} drivers; expected an array of shape "
-                   f"(n, {d}), got shape {arr.shape}")
+            msg = (
+                f"angles: the mechanism has {d} drivers; expected an array of shape "
+                f"(n, {d}), got shape {arr.shape}"
+            )
             raise ModelError(msg)
         arr = arr[None, :]
     if arr.ndim == 1:
@@ -139,12 +151,17 @@ def _to_si(plan: Plan, angles: Any) -> Array:
     if not np.all(np.isfinite(arr)):
         msg = "angles: expected finite driver positions"
         raise ModelError(msg)
-    scale = np.array([math.radians(1.0) if p.kind == "R" else 1.0 for p in plan.drivers])
+    scale = np.array(
+        [math.radians(1.0) if p.kind == "R" else 1.0 for p in plan.drivers]
+    )
     return arr * scale
 
 
-def kinematics(mechanism: Mechanism, angles: Sequence[float] | Array,
-               skip_unassembled: bool = False) -> Table:
+def kinematics(
+    mechanism: Mechanism,
+    angles: Sequence[float] | Array,
+    skip_unassembled: bool = False,
+) -> Table:
     """Positions, velocities, accelerations and jerks over driver positions.
 
     Parameters
@@ -177,8 +194,11 @@ def kinematics(mechanism: Mechanism, angles: Sequence[float] | Array,
     return _sweep(mechanism, angles, False, skip_unassembled)
 
 
-def forces(mechanism: Mechanism, angles: Sequence[float] | Array,
-           skip_unassembled: bool = False) -> Table:
+def forces(
+    mechanism: Mechanism,
+    angles: Sequence[float] | Array,
+    skip_unassembled: bool = False,
+) -> Table:
     """Kinematics plus inertia loads, joint reactions and balancing loads.
 
     Parameters are those of :func:`kinematics`.
@@ -198,8 +218,10 @@ def forces(mechanism: Mechanism, angles: Sequence[float] | Array,
     """
     plan = compile_plan(mechanism)
     if compile_loads(plan).empty:
-        msg = ("forces: no link has a mass and no load is applied; expected 'mass', "
-               "'center' and 'inertia' on the links or [[loads]] for a force analysis")
+        msg = (
+            "forces: no link has a mass and no load is applied; expected 'mass', "
+            "'center' and 'inertia' on the links or [[loads]] for a force analysis"
+        )
         raise ModelError(msg)
     return _sweep(mechanism, angles, True, skip_unassembled)
 
@@ -214,7 +236,7 @@ def _sweep(mech: Mechanism, angles: Any, with_forces: bool, skip: bool) -> Table
     force_state = _kst.allocate(plan, n) if with_forces else None
     troubles = []
     for start in range(0, n, CHUNK):
-        chunk = drive[start:start + CHUNK]
+        chunk = drive[start : start + CHUNK]
         bodies, found = _kin.solve(plan, chunk)
         part = _kin.collect(plan, bodies, chunk.shape[0], state, start)
         troubles.extend((t, start) for t in found)
@@ -230,18 +252,24 @@ def _sweep(mech: Mechanism, angles: Any, with_forces: bool, skip: bool) -> Table
     given = np.asarray(angles, dtype=float).reshape(n, len(plan.drivers))
     columns, data = build_columns(plan, state, force_state, given[ok])
     skipped = given[~ok]
-    return Table(mech, columns, data, state, force_state,
-                 skipped[:, 0] if skipped.shape[1] == 1 else skipped)
+    return Table(
+        mech,
+        columns,
+        data,
+        state,
+        force_state,
+        skipped[:, 0] if skipped.shape[1] == 1 else skipped,
+    )
 
 
 def _report(plan: Plan, drive: Array, troubles: list, skip: bool) -> Array:
-    """Raise or warn about the troubles of a sweep; return the mask of good positions."""
+    """Raise or warn about the troubles of a sweep; return the good positions' mask."""
     n = drive.shape[0]
     ok = np.ones(n, dtype=bool)
     near: dict[str, Array] = {}
     for trouble, start in troubles:
         mask = np.zeros(n, dtype=bool)
-        mask[start:start + trouble.mask.shape[0]] = trouble.mask
+        mask[start : start + trouble.mask.shape[0]] = trouble.mask
         if trouble.what == "near":
             near[trouble.group] = near.get(trouble.group, mask) | mask
             continue
@@ -250,21 +278,29 @@ def _report(plan: Plan, drive: Array, troubles: list, skip: bool) -> Array:
             where = _position_text(plan, drive[first])
             good = _ranges(plan, drive, ~_all_failures(troubles, n))
             if trouble.what == "assembly":
-                msg = (f"group {trouble.group}: cannot be assembled at driver position "
-                       f"{where} ({int(mask.sum())} of {n} positions fail); it assembles "
-                       f"for {good or 'none of them'}")
+                msg = (
+                    f"group {trouble.group}: cannot be assembled at driver position "
+                    f"{where} ({int(mask.sum())} of {n} positions fail); it assembles "
+                    f"for {good or 'none of them'}"
+                )
                 raise AssemblyError(msg)
-            msg = (f"group {trouble.group}: dead centre at driver position {where} "
-                   "(its velocity equations are singular there); expected positions "
-                   "away from dead centres")
+            msg = (
+                f"group {trouble.group}: dead centre at driver position {where} "
+                "(its velocity equations are singular there); expected positions "
+                "away from dead centres"
+            )
             raise SingularConfigurationError(msg)
         ok &= ~mask
     for group, mask in near.items():
         mask &= ok
         if mask.any():
-            warnings.warn(f"group {group}: near a dead centre (within about 2 degrees of "
-                          f"transmission angle 0 or 180) at driver positions "
-                          f"{_ranges(plan, drive, mask)}", AssurWarning, stacklevel=4)
+            warnings.warn(
+                f"group {group}: near a dead centre (within about 2 degrees of "
+                f"transmission angle 0 or 180) at driver positions "
+                f"{_ranges(plan, drive, mask)}",
+                AssurWarning,
+                stacklevel=4,
+            )
     return ok
 
 
@@ -272,18 +308,20 @@ def _all_failures(troubles: list, n: int) -> Array:
     bad = np.zeros(n, dtype=bool)
     for trouble, start in troubles:
         if trouble.what != "near":
-            bad[start:start + trouble.mask.shape[0]] |= trouble.mask
+            bad[start : start + trouble.mask.shape[0]] |= trouble.mask
     return bad
 
 
 def _position_text(plan: Plan, position: Array) -> str:
-    parts = [f"{math.degrees(x):.6g} deg" if d.kind == "R" else f"{x:.6g} m"
-             for d, x in zip(plan.drivers, position)]
+    parts = [
+        f"{math.degrees(x):.6g} deg" if d.kind == "R" else f"{x:.6g} m"
+        for d, x in zip(plan.drivers, position, strict=False)
+    ]
     return ", ".join(parts)
 
 
 def _ranges(plan: Plan, drive: Array, mask: Array) -> str:
-    """Runs of consecutive positions in ``mask``, as text."""
+    """Describe the runs of consecutive positions in ``mask``."""
     idx = np.flatnonzero(mask)
     if idx.size == 0:
         return ""
@@ -291,20 +329,31 @@ def _ranges(plan: Plan, drive: Array, mask: Array) -> str:
     starts = np.r_[idx[0], idx[breaks + 1]]
     ends = np.r_[idx[breaks], idx[-1]]
     runs = []
-    for a, b in zip(starts, ends):
+    for a, b in zip(starts, ends, strict=False):
         first, last = _position_text(plan, drive[a]), _position_text(plan, drive[b])
         runs.append(first if a == b else f"{first} to {last}")
     return "; ".join(runs[:6]) + ("; ..." if len(runs) > 6 else "")
 
 
 def _take_state(s: _kin.KinematicState, ok: Array) -> _kin.KinematicState:
-    return _kin.KinematicState(s.drive[ok], s.link[:, ok], s.origin[:, ok], s.point[:, ok],
-                               {k: v[:, ok] for k, v in s.slide.items()})
+    return _kin.KinematicState(
+        s.drive[ok],
+        s.link[:, ok],
+        s.origin[:, ok],
+        s.point[:, ok],
+        {k: v[:, ok] for k, v in s.slide.items()},
+    )
 
 
 def _take_forces(p: _kst.ForceState, ok: Array) -> _kst.ForceState:
-    return _kst.ForceState(p.inertia_force[ok], p.inertia_torque[ok],
-                           {k: (v[0][ok], v[1][ok]) for k, v in p.reactions.items()},
-                           p.balancing[ok], p.check[ok], p.shaking[ok], p.residual[ok],
-                           {k: v[ok] for k, v in p.magnitude.items()},
-                           {k: v[ok] for k, v in p.offset.items()})
+    return _kst.ForceState(
+        p.inertia_force[ok],
+        p.inertia_torque[ok],
+        {k: (v[0][ok], v[1][ok]) for k, v in p.reactions.items()},
+        p.balancing[ok],
+        p.check[ok],
+        p.shaking[ok],
+        p.residual[ok],
+        {k: v[ok] for k, v in p.magnitude.items()},
+        {k: v[ok] for k, v in p.offset.items()},
+    )

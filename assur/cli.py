@@ -40,8 +40,10 @@ def parse_angles(spec: str, drivers: int = 1) -> np.ndarray:
     """
     parts = spec.split(",")
     if len(parts) != drivers:
-        msg = (f"--angles: {len(parts)} range(s) given for {drivers} driver(s); expected "
-               "one START:STOP:STEP per driver, separated by commas")
+        msg = (
+            f"--angles: {len(parts)} range(s) given for {drivers} driver(s); expected "
+            "one START:STOP:STEP per driver, separated by commas"
+        )
         raise ModelError(msg)
     ranges = [_one_range(part) for part in parts]
     if len({len(r) for r in ranges}) != 1:
@@ -59,10 +61,16 @@ def _one_range(text: str) -> np.ndarray:
         values = []
     if len(values) == 1 and math.isfinite(values[0]):
         return np.array(values)
-    if len(values) != 3 or not all(map(math.isfinite, values)) or values[2] == 0 or \
-            (values[1] - values[0]) / values[2] < 0:
-        msg = (f"--angles: cannot read {text!r}; expected START:STOP:STEP with a step "
-               "that leads from START to STOP, or a single value")
+    if (
+        len(values) != 3
+        or not all(map(math.isfinite, values))
+        or values[2] == 0
+        or (values[1] - values[0]) / values[2] < 0
+    ):
+        msg = (
+            f"--angles: cannot read {text!r}; expected START:STOP:STEP with a step "
+            "that leads from START to STOP, or a single value"
+        )
         raise ModelError(msg)
     start, stop, step = values
     count = math.floor((stop - start) / step + 1e-9) + 1
@@ -71,24 +79,39 @@ def _one_range(text: str) -> np.ndarray:
 
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog="assur", description="Kinetostatic analysis of planar linkages, built on "
-        "Assur groups.")
+        prog="assur",
+        description="Kinetostatic analysis of planar linkages, built on Assur groups.",
+    )
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     p = sub.add_parser("structure", help="degrees of freedom and Assur groups")
     p.add_argument("file", type=Path)
-    p.add_argument("--json", action="store_true", help="print JSON instead of the report")
+    p.add_argument(
+        "--json", action="store_true", help="print JSON instead of the report"
+    )
     p.add_argument("--driver", metavar="JOINT", help="analyse with this joint as input")
-    for name, text in (("kinematics", "positions, velocities, accelerations, jerks"),
-                       ("forces", "inertia loads, joint reactions, balancing torque")):
+    for name, text in (
+        ("kinematics", "positions, velocities, accelerations, jerks"),
+        ("forces", "inertia loads, joint reactions, balancing torque"),
+    ):
         p = sub.add_parser(name, help=text)
         p.add_argument("file", type=Path)
-        p.add_argument("--angles", metavar="START:STOP:STEP",
-                       help="driver positions, deg (m for a prismatic driver); default: "
-                       "one turn from the reference pose in steps of 1 deg")
-        p.add_argument("--csv", metavar="PATH", help="write the full table as CSV ('-': stdout)")
-        p.add_argument("--json", action="store_true", help="print the full table as JSON")
-        p.add_argument("--skip-unassembled", action="store_true",
-                       help="leave out positions that cannot be assembled")
+        p.add_argument(
+            "--angles",
+            metavar="START:STOP:STEP",
+            help="driver positions, deg (m for a prismatic driver); default: "
+            "one turn from the reference pose in steps of 1 deg",
+        )
+        p.add_argument(
+            "--csv", metavar="PATH", help="write the full table as CSV ('-': stdout)"
+        )
+        p.add_argument(
+            "--json", action="store_true", help="print the full table as JSON"
+        )
+        p.add_argument(
+            "--skip-unassembled",
+            action="store_true",
+            help="leave out positions that cannot be assembled",
+        )
     _add_picture_commands(sub)
     return parser
 
@@ -109,7 +132,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     # a range may start below zero: keep "--angles -30:30:10" from reading as an option
     for i in range(len(argv) - 1):
         if argv[i] in ("--angles", "--angle") and argv[i + 1].startswith("-"):
-            argv[i:i + 2] = [f"{argv[i]}={argv[i + 1]}", ""]
+            argv[i : i + 2] = [f"{argv[i]}={argv[i + 1]}", ""]
     argv = [a for a in argv if a != ""]
     try:
         args = parser.parse_args(argv)
@@ -189,9 +212,17 @@ def _cmd_forces(args: argparse.Namespace) -> int:
 def _summary_columns(table: Any, force: bool) -> list[str]:
     cols = table.columns
     if force:
-        picked = [c for c in cols if c.endswith(".F") or c.startswith("driver.")
-                  or (c.endswith((".torque", ".force", "_check")) and "." in c
-                      and not c.startswith(("driver.", "shaking.")))]
+        picked = [
+            c
+            for c in cols
+            if c.endswith(".F")
+            or c.startswith("driver.")
+            or (
+                c.endswith((".torque", ".force", "_check"))
+                and "." in c
+                and not c.startswith(("driver.", "shaking."))
+            )
+        ]
     else:
         picked = [c for c in cols if c.endswith((".angle", ".omega", ".alpha"))]
     return ["angle", *picked]
@@ -201,23 +232,39 @@ def _emit(args: argparse.Namespace, table: Any, summary: list[str]) -> int:
     if len(table.skipped):
         skipped = ", ".join(f"{x:g}" for x in np.ravel(table.skipped)[:20])
         skipped += ", ..." if np.size(table.skipped) > 20 else ""
-        print(f"assur: note: {args.file}: left out {len(table.skipped)} position(s) that "
-              f"cannot be assembled: {skipped}", file=sys.stderr)
+        print(
+            f"assur: note: {args.file}: left out {len(table.skipped)} position(s) that "
+            f"cannot be assembled: {skipped}",
+            file=sys.stderr,
+        )
     if args.csv:
         table.to_csv(args.csv if args.csv == "-" else Path(args.csv))
         if args.csv != "-":
-            print(f"wrote {len(table)} rows x {len(table.columns)} columns to {args.csv}")
+            print(
+                f"wrote {len(table)} rows x {len(table.columns)} columns to {args.csv}"
+            )
         return 0
     if args.json:
         print(json.dumps(table.to_dict()))
         return 0
     print(format_table(table, summary))
-    print(f"({len(table.columns)} columns in all: --csv PATH or --json for the full table)")
+    print(
+        f"({len(table.columns)} columns in all: --csv PATH or --json for the full "
+        "table)"
+    )
     return 0
 
 
-UNITS = {".angle": "deg", ".omega": "rad/s", ".alpha": "rad/s2", ".F": "N",
-         "torque": "N m", "torque_check": "N m", "force": "N", "force_check": "N"}
+UNITS = {
+    ".angle": "deg",
+    ".omega": "rad/s",
+    ".alpha": "rad/s2",
+    ".F": "N",
+    "torque": "N m",
+    "torque_check": "N m",
+    "force": "N",
+    "force_check": "N",
+}
 
 
 def _unit(column: str, table: Any) -> str:
@@ -237,16 +284,25 @@ def _revolute_driver(table: Any) -> bool:
 
 def format_table(table: Any, columns: list[str], limit: int = 400) -> str:
     """Return an aligned text table of ``columns`` with a units row."""
-    heads = [c for c in columns]
+    heads = list(columns)
     units = [f"[{_unit(c, table)}]" if _unit(c, table) else "" for c in columns]
-    rows = [[f"{v:.6g}" for v in values] for values in zip(*(table[c] for c in columns))]
+    rows = [
+        [f"{v:.6g}" for v in values]
+        for values in zip(*(table[c] for c in columns), strict=True)
+    ]
     if len(rows) > limit:
         rows = rows[:limit]
-    widths = [max(len(h), len(u), *(len(r[i]) for r in rows)) if rows else max(len(h), len(u))
-              for i, (h, u) in enumerate(zip(heads, units))]
-    lines = ["  ".join(h.rjust(w) for h, w in zip(heads, widths)),
-             "  ".join(u.rjust(w) for u, w in zip(units, widths))]
-    lines += ["  ".join(v.rjust(w) for v, w in zip(r, widths)) for r in rows]
+    widths = [
+        max(len(h), len(u), *(len(r[i]) for r in rows)) if rows else max(len(h), len(u))
+        for i, (h, u) in enumerate(zip(heads, units, strict=False))
+    ]
+    lines = [
+        "  ".join(h.rjust(w) for h, w in zip(heads, widths, strict=False)),
+        "  ".join(u.rjust(w) for u, w in zip(units, widths, strict=False)),
+    ]
+    lines += [
+        "  ".join(v.rjust(w) for v, w in zip(r, widths, strict=True)) for r in rows
+    ]
     return "\n".join(lines)
 
 

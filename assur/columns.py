@@ -21,8 +21,12 @@ __all__ = ["build_columns"]
 POINT_SUFFIXES = ("x", "y", "vx", "vy", "ax", "ay", "jx", "jy")
 
 
-def build_columns(plan: Plan, state: KinematicState, forces: ForceState | None,
-                  given: Array | None = None) -> tuple[tuple[str, ...], dict[str, Array]]:
+def build_columns(
+    plan: Plan,
+    state: KinematicState,
+    forces: ForceState | None,
+    given: Array | None = None,
+) -> tuple[tuple[str, ...], dict[str, Array]]:
     """Return the column names and a name-to-array mapping for a solved sweep.
 
     ``given`` holds the driver positions as the user gave them (deg or m), which the
@@ -31,12 +35,19 @@ def build_columns(plan: Plan, state: KinematicState, forces: ForceState | None,
     data: dict[str, Array] = {}
     drivers = plan.drivers
     if given is None:
-        given = np.stack([state.drive[:, i] * (180.0 / math.pi) if d.kind == "R"
-                          else state.drive[:, i] for i, d in enumerate(drivers)], axis=-1)
+        given = np.stack(
+            [
+                state.drive[:, i] * (180.0 / math.pi)
+                if d.kind == "R"
+                else state.drive[:, i]
+                for i, d in enumerate(drivers)
+            ],
+            axis=-1,
+        )
     drive = [np.array(given[:, i]) for i in range(len(drivers))]
     data["angle"] = drive[0]
     if len(drivers) > 1:
-        for d, values in zip(drivers, drive):
+        for d, values in zip(drivers, drive, strict=False):
             data[f"{d.pair.name}.drive"] = values
     driven = {d.body for d in drivers}
     for b, name in enumerate(plan.bodies):
@@ -51,7 +62,8 @@ def build_columns(plan: Plan, state: KinematicState, forces: ForceState | None,
                 data[f"{name}.angle"] = angle * (180.0 / math.pi)
         else:
             data[f"{name}.angle"] = (_continuous(angle) if angle.size else angle) * (
-                180.0 / math.pi)
+                180.0 / math.pi
+            )
         for k, key in ((1, "omega"), (2, "alpha"), (3, "jerk")):
             data[f"{name}.{key}"] = state.link[k, :, b]
     for p, name in enumerate(plan.points):
@@ -70,8 +82,7 @@ def build_columns(plan: Plan, state: KinematicState, forces: ForceState | None,
 
 
 def _continuous(angle: Array) -> Array:
-    """Angles (rad) without jumps of a turn, the first in (-pi, pi] about its link's
-    reference angle's turn."""
+    """Remove the jumps of a turn from angles (rad); the first is put in (-pi, pi]."""
     first = angle[0]
     shift = first - (math.pi - (math.pi - first) % (2.0 * math.pi))
     turns = np.round(np.diff(angle) * (0.5 / math.pi))
@@ -80,8 +91,9 @@ def _continuous(angle: Array) -> Array:
     return angle - shift if shift else angle
 
 
-def _force_columns(plan: Plan, state: KinematicState, forces: ForceState,
-                   data: dict[str, Array]) -> None:
+def _force_columns(
+    plan: Plan, state: KinematicState, forces: ForceState, data: dict[str, Array]
+) -> None:
     from assur.loads import compile_loads
 
     loads = compile_loads(plan)

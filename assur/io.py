@@ -25,8 +25,17 @@ __all__ = ["dumps", "load", "loads", "parse", "save", "write_csv"]
 
 FORMAT_VERSION = 1
 KEYS = {
-    "": ("format", "name", "description", "links", "joints", "drivers", "gravity",
-         "loads", "points"),
+    "": (
+        "format",
+        "name",
+        "description",
+        "links",
+        "joints",
+        "drivers",
+        "gravity",
+        "loads",
+        "points",
+    ),
     "link": ("axis", "mass", "center", "inertia"),
     "joint": ("kind", "links", "at", "axis"),
     "driver": ("joint", "omega", "epsilon"),
@@ -63,8 +72,10 @@ def load(path: str | Path) -> Mechanism:
         msg = f"{path}: cannot read the file ({err.strerror or err})"
         raise ModelError(msg) from err
     except UnicodeDecodeError as err:
-        msg = (f"{path}: not UTF-8 text (byte {err.start} cannot be decoded); expected a "
-               "TOML or JSON file saved as UTF-8")
+        msg = (
+            f"{path}: not UTF-8 text (byte {err.start} cannot be decoded); expected a "
+            "TOML or JSON file saved as UTF-8"
+        )
         raise ModelError(msg) from err
     try:
         return loads(text, json_format=path.suffix.lower() == ".json")
@@ -76,8 +87,11 @@ def load(path: str | Path) -> Mechanism:
 def loads(text: str, json_format: bool = False) -> Mechanism:
     """Read a mechanism from TOML (or JSON) text."""
     try:
-        data = (json.loads(text, object_pairs_hook=_unique_keys) if json_format
-                else tomllib.loads(text))
+        data = (
+            json.loads(text, object_pairs_hook=_unique_keys)
+            if json_format
+            else tomllib.loads(text)
+        )
     except (tomllib.TOMLDecodeError, json.JSONDecodeError) as err:
         kind = "JSON" if json_format else "TOML"
         msg = f"not valid {kind}: {err}"
@@ -107,8 +121,9 @@ def _fail(entry: str, message: str) -> None:
 
 def _check_twice(entry: str, data: Any) -> None:
     for key in getattr(data, "twice", ()):
-        _fail(f"{entry}.{key}" if entry else key,
-              "given twice; expected every name once")
+        _fail(
+            f"{entry}.{key}" if entry else key, "given twice; expected every name once"
+        )
 
 
 def _check_keys(entry: str, data: Any, allowed: tuple[str, ...]) -> dict[str, Any]:
@@ -118,16 +133,22 @@ def _check_keys(entry: str, data: Any, allowed: tuple[str, ...]) -> dict[str, An
     for key in data:
         if key not in allowed:
             close = difflib.get_close_matches(key, allowed, n=1)
-            hint = f"; did you mean {close[0]!r}?" if close else \
-                f"; expected one of {', '.join(allowed)}"
+            hint = (
+                f"; did you mean {close[0]!r}?"
+                if close
+                else f"; expected one of {', '.join(allowed)}"
+            )
             where = f"{entry}.{key}" if entry else key
             _fail(where, f"unknown key {key!r}{hint}")
     return data
 
 
 def _vec(entry: str, value: Any) -> tuple[float, float]:
-    if not (isinstance(value, list | tuple) and len(value) == 2
-            and all(isinstance(v, int | float) and not isinstance(v, bool) for v in value)):
+    if not (
+        isinstance(value, list | tuple)
+        and len(value) == 2
+        and all(isinstance(v, int | float) and not isinstance(v, bool) for v in value)
+    ):
         _fail(entry, f"expected two numbers [x, y], got {value!r}")
     return (float(value[0]), float(value[1]))
 
@@ -139,11 +160,18 @@ def _point(entry: str, value: Any) -> Any:
         d = _check_keys(entry, value, KEYS["toward"])
         for key in KEYS["toward"]:
             if key not in d:
-                _fail(entry, f"missing key {key!r} of a point {{from, toward, distance}}")
-        if not isinstance(d["distance"], int | float) or isinstance(d["distance"], bool):
+                _fail(
+                    entry, f"missing key {key!r} of a point {{from, toward, distance}}"
+                )
+        if not isinstance(d["distance"], int | float) or isinstance(
+            d["distance"], bool
+        ):
             _fail(f"{entry}.distance", f"expected a number, got {d['distance']!r}")
-        return Toward(_text(f"{entry}.from", d["from"]), _text(f"{entry}.toward", d["toward"]),
-                      float(d["distance"]))
+        return Toward(
+            _text(f"{entry}.from", d["from"]),
+            _text(f"{entry}.toward", d["toward"]),
+            float(d["distance"]),
+        )
     return _vec(entry, value)
 
 
@@ -156,11 +184,13 @@ def _table(entry: str, value: dict, comps: tuple[str, ...], kind: str) -> LoadTa
     for key in (*comps, "table"):
         seq = d[key]
         if not isinstance(seq, list) or not all(
-                isinstance(v, int | float) and not isinstance(v, bool) for v in seq):
+            isinstance(v, int | float) and not isinstance(v, bool) for v in seq
+        ):
             _fail(f"{entry}.{key}", f"expected a list of numbers, got {seq!r}")
         seqs.append(tuple(float(v) for v in seq))
-    return LoadTable(_text(f"{entry}.over", d.get("over", "driver")), seqs[-1],
-                     tuple(seqs[:-1]))
+    return LoadTable(
+        _text(f"{entry}.over", d.get("over", "driver")), seqs[-1], tuple(seqs[:-1])
+    )
 
 
 def _text(entry: str, value: Any) -> str:
@@ -176,23 +206,35 @@ def _number(entry: str, value: Any) -> float:
 
 
 def parse(data: dict[str, Any]) -> Mechanism:
-    """Build a :class:`~assur.model.Mechanism` from the parsed contents of a mechanism file."""
+    """Build a :class:`~assur.model.Mechanism` from a mechanism file's contents."""
     _check_keys("", data, KEYS[""])
     version = data.get("format", FORMAT_VERSION)
     if version != FORMAT_VERSION:
-        _fail("format", f"version {version!r} is not supported; expected {FORMAT_VERSION}")
+        _fail(
+            "format", f"version {version!r} is not supported; expected {FORMAT_VERSION}"
+        )
     links = []
     for name, d in _section("links", data.get("links", {})).items():
         entry = f"links.{name}"
         _check_keys(entry, d, KEYS["link"])
         axis = d.get("axis")
-        if axis is not None and not (isinstance(axis, list) and len(axis) == 2
-                                     and all(isinstance(a, str) for a in axis)):
+        if axis is not None and not (
+            isinstance(axis, list)
+            and len(axis) == 2
+            and all(isinstance(a, str) for a in axis)
+        ):
             _fail(f"{entry}.axis", f"expected two point names, got {axis!r}")
-        links.append(Link(name, None if axis is None else tuple(axis),
-                          _opt_number(f"{entry}.mass", d.get("mass")),
-                          None if d.get("center") is None else _point(f"{entry}.center", d["center"]),
-                          _opt_number(f"{entry}.inertia", d.get("inertia"))))
+        links.append(
+            Link(
+                name,
+                None if axis is None else tuple(axis),
+                _opt_number(f"{entry}.mass", d.get("mass")),
+                None
+                if d.get("center") is None
+                else _point(f"{entry}.center", d["center"]),
+                _opt_number(f"{entry}.inertia", d.get("inertia")),
+            )
+        )
     joints = []
     for name, d in _section("joints", data.get("joints", {})).items():
         entry = f"joints.{name}"
@@ -203,9 +245,15 @@ def parse(data: dict[str, Any]) -> Mechanism:
         pair = d["links"]
         if not (isinstance(pair, list) and all(isinstance(x, str) for x in pair)):
             _fail(f"{entry}.links", f"expected two link names, got {pair!r}")
-        joints.append(Joint(name, _text(f"{entry}.kind", d["kind"]), tuple(pair),
-                            _point(f"{entry}.at", d["at"]),
-                            None if d.get("axis") is None else _vec(f"{entry}.axis", d["axis"])))
+        joints.append(
+            Joint(
+                name,
+                _text(f"{entry}.kind", d["kind"]),
+                tuple(pair),
+                _point(f"{entry}.at", d["at"]),
+                None if d.get("axis") is None else _vec(f"{entry}.axis", d["axis"]),
+            )
+        )
     drivers = []
     for i, d in enumerate(_list("drivers", data.get("drivers", []))):
         entry = f"drivers[{i}]"
@@ -213,14 +261,21 @@ def parse(data: dict[str, Any]) -> Mechanism:
         for key in ("joint", "omega"):
             if key not in d:
                 _fail(entry, f"missing key {key!r}")
-        drivers.append(Driver(_text(f"{entry}.joint", d["joint"]),
-                              _number(f"{entry}.omega", d["omega"]),
-                              _number(f"{entry}.epsilon", d.get("epsilon", 0.0))))
+        drivers.append(
+            Driver(
+                _text(f"{entry}.joint", d["joint"]),
+                _number(f"{entry}.omega", d["omega"]),
+                _number(f"{entry}.epsilon", d.get("epsilon", 0.0)),
+            )
+        )
     gravity = None
     if "gravity" in data:
         g = _check_keys("gravity", data["gravity"], KEYS["gravity"])
         gravity = _vec("gravity.g", g.get("g", [0.0, -9.81]))
-    loads_ = [_load(f"loads[{i}]", d) for i, d in enumerate(_list("loads", data.get("loads", [])))]
+    loads_ = [
+        _load(f"loads[{i}]", d)
+        for i, d in enumerate(_list("loads", data.get("loads", [])))
+    ]
     points = []
     for name, d in _section("points", data.get("points", {})).items():
         entry = f"points.{name}"
@@ -228,13 +283,21 @@ def parse(data: dict[str, Any]) -> Mechanism:
         for key in ("link", "at"):
             if key not in d:
                 _fail(entry, f"missing key {key!r}")
-        points.append(Point(name, _text(f"{entry}.link", d["link"]),
-                            _point(f"{entry}.at", d["at"])))
-    return Mechanism(tuple(links), tuple(joints), tuple(drivers),
-                     name=_text("name", data.get("name", "")),
-                     description=_text("description", data.get("description", "")),
-                     gravity=gravity,
-                     loads=tuple(loads_), points=tuple(points))
+        points.append(
+            Point(
+                name, _text(f"{entry}.link", d["link"]), _point(f"{entry}.at", d["at"])
+            )
+        )
+    return Mechanism(
+        tuple(links),
+        tuple(joints),
+        tuple(drivers),
+        name=_text("name", data.get("name", "")),
+        description=_text("description", data.get("description", "")),
+        gravity=gravity,
+        loads=tuple(loads_),
+        points=tuple(points),
+    )
 
 
 def _section(entry: str, value: Any) -> dict[str, Any]:
@@ -283,8 +346,10 @@ def _value(value: Any) -> str:
     if isinstance(value, str):
         return json.dumps(value, ensure_ascii=False)
     if isinstance(value, Toward):
-        return (f"{{ from = {_value(value.start)}, toward = {_value(value.toward)}, "
-                f"distance = {_value(value.distance)} }}")
+        return (
+            f"{{ from = {_value(value.start)}, toward = {_value(value.toward)}, "
+            f"distance = {_value(value.distance)} }}"
+        )
     if isinstance(value, tuple | list):
         return "[" + ", ".join(_value(v) for v in value) + "]"
     if isinstance(value, float):
@@ -293,8 +358,12 @@ def _value(value: Any) -> str:
 
 
 def _table_text(t: LoadTable, comps: tuple[str, ...]) -> str:
-    parts = [f"{c} = {_value(v)}" for c, v in zip(comps, t.values)]
-    return "{ " + ", ".join([*parts, f"over = {_value(t.over)}", f"table = {_value(t.table)}"]) + " }"
+    parts = [f"{c} = {_value(v)}" for c, v in zip(comps, t.values, strict=False)]
+    return (
+        "{ "
+        + ", ".join([*parts, f"over = {_value(t.over)}", f"table = {_value(t.table)}"])
+        + " }"
+    )
 
 
 def dumps(mech: Mechanism) -> str:
@@ -309,13 +378,20 @@ def dumps(mech: Mechanism) -> str:
                 out.append(f"{key} = {_value(getattr(link, key))}")
     for joint in mech.joints:
         out.append(f"\n[joints.{_key(joint.name)}]")
-        out += [f"kind = {_value(joint.kind)}", f"links = {_value(joint.links)}",
-                f"at = {_value(joint.at)}"]
+        out += [
+            f"kind = {_value(joint.kind)}",
+            f"links = {_value(joint.links)}",
+            f"at = {_value(joint.at)}",
+        ]
         if joint.axis is not None:
             out.append(f"axis = {_value(joint.axis)}")
     for driver in mech.drivers:
-        out += ["\n[[drivers]]", f"joint = {_value(driver.joint)}",
-                f"omega = {_value(driver.omega)}", f"epsilon = {_value(driver.epsilon)}"]
+        out += [
+            "\n[[drivers]]",
+            f"joint = {_value(driver.joint)}",
+            f"omega = {_value(driver.omega)}",
+            f"epsilon = {_value(driver.epsilon)}",
+        ]
     if mech.gravity is not None:
         out += ["\n[gravity]", f"g = {_value(mech.gravity)}"]
     for load in mech.loads:
@@ -333,7 +409,9 @@ def dumps(mech: Mechanism) -> str:
     if mech.points:
         out.append("\n[points]")
         for p in mech.points:
-            out.append(f"{_key(p.name)} = {{ link = {_value(p.link)}, at = {_value(p.at)} }}")
+            out.append(
+                f"{_key(p.name)} = {{ link = {_value(p.link)}, at = {_value(p.at)} }}"
+            )
     return "\n".join(out) + "\n"
 
 
@@ -343,7 +421,7 @@ def save(mech: Mechanism, path: str | Path) -> None:
 
 
 def write_csv(table: Any, path: Any = None) -> str | None:
-    """Write a result table as CSV (12 significant digits); return the text if no path."""
+    """Write a result table as CSV (12 significant digits); return it without path."""
     buffer = _io.StringIO()
     buffer.write(",".join(table.columns) + "\n")
     if len(table):

@@ -22,14 +22,20 @@ from assur.groups._pairs import slide
 from assur.groups.driver import motion
 from assur.plan import Plan
 
-__all__ = ["SINGULAR", "KinematicState", "Trouble", "collect", "solve",
-           "velocity_coefficients"]
+__all__ = [
+    "SINGULAR",
+    "KinematicState",
+    "Trouble",
+    "collect",
+    "solve",
+    "velocity_coefficients",
+]
 
 SINGULAR = 1e-9
 """Below this sine of the angle between a group's Jacobian columns a pose is a dead
 centre: velocities are undefined there."""
 NEAR_SINGULAR = 0.035
-"""Below this (about 2 degrees of transmission angle) a pose is reported as near-singular."""
+"""Below this (about 2 degrees of transmission angle) a pose is near-singular."""
 NEAR_SINGULAR_GENERAL = 1e-3
 """The same for the reciprocal condition number of a larger group's Jacobian."""
 CONTINUATION_STEP = math.radians(10.0)
@@ -38,8 +44,11 @@ CONTINUATION_STEP = math.radians(10.0)
 
 @dataclass(frozen=True, slots=True)
 class Trouble:
-    """Driver positions (``mask``) at which group ``group`` failed (``what``:
-    "assembly", "singular") or came near a dead centre ("near")."""
+    """Driver positions (``mask``) where a group met trouble.
+
+    Group ``group`` failed (``what``:
+    "assembly", "singular") or came near a dead centre ("near").
+    """
 
     group: str
     what: str
@@ -73,14 +82,15 @@ class KinematicState:
 
 
 def _batch(q: Any, n: int) -> Array:
-    """``q`` as an array of n values (a group hanging on the frame alone is constant)."""
+    """Return ``q`` as n values (a group hanging on the frame alone is constant)."""
     return q if np.ndim(q) else np.full(n, float(q))
 
 
 def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Trouble]]:
     """Solve the motion of every link at driver positions ``drive`` (n, d), SI units.
 
-    Returns the links' motions (levels 0 to ``top``) and the troubles met. Positions that
+    Returns the links' motions (levels 0 to ``top``) and the troubles met.
+    Positions that
     fail hold NaN.
     """
     n = drive.shape[0]
@@ -98,7 +108,9 @@ def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Tr
             failed = ~(np.isfinite(q1) & np.isfinite(q2))
             limit = NEAR_SINGULAR
         else:
-            general.positions(solver, bodies, n, None if guesses is None else guesses[g])
+            general.positions(
+                solver, bodies, n, None if guesses is None else guesses[g]
+            )
             g += 1
             failed = ~np.isfinite(bodies[solver.bodies[0]].phi[0])
             jac = general.jacobian(solver, bodies, n)
@@ -107,7 +119,11 @@ def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Tr
             limit = NEAR_SINGULAR_GENERAL
         singular = ~failed & ~(cond >= SINGULAR)
         near = ~failed & ~singular & (cond < limit)
-        for what, mask in (("assembly", failed), ("singular", singular), ("near", near)):
+        for what, mask in (
+            ("assembly", failed),
+            ("singular", singular),
+            ("near", near),
+        ):
             if mask.any():
                 troubles.append(Trouble(solver.label, what, mask))
         for k in range(1, top + 1):
@@ -122,16 +138,22 @@ def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Tr
 def _drivers(plan: Plan, drive: Array, rates: Array | None = None) -> list[Motion]:
     bodies: list[Motion] = [Motion.fixed()] * len(plan.bodies)
     for i, d in enumerate(plan.drivers):
-        bodies[d.body] = motion(d, drive[:, i], None if rates is None else float(rates[i]))
+        bodies[d.body] = motion(
+            d, drive[:, i], None if rates is None else float(rates[i])
+        )
     return bodies
 
 
 def _continuation(plan: Plan, drive: Array) -> list:
-    """Newton groups' poses along straight paths from the reference pose to ``drive``."""
+    """Follow the Newton groups along straight paths from the reference pose."""
     n = drive.shape[0]
     reference = np.array([d.reference for d in plan.drivers])
-    step = np.array([CONTINUATION_STEP if d.kind == "R" else 0.05 * plan.scale
-                     for d in plan.drivers])
+    step = np.array(
+        [
+            CONTINUATION_STEP if d.kind == "R" else 0.05 * plan.scale
+            for d in plan.drivers
+        ]
+    )
     span = float(np.max(np.abs(drive - reference) / step)) if drive.size else 0.0
     count = max(1, math.ceil(span))
     guesses: list = [None] * sum(not isinstance(s, DyadPlan) for s in plan.solvers)
@@ -167,15 +189,16 @@ def velocity_coefficients(plan: Plan, bodies: list[Motion], which: int) -> list[
             _dyad.derivative(solver, out, 1, _dyad.jacobian(solver, out))
         else:
             jac = general.jacobian(solver, out, n)
-            bad = ~np.isfinite(jac).all(axis=(1, 2)) | (general.conditioning(solver, jac)
-                                                        < SINGULAR)
+            bad = ~np.isfinite(jac).all(axis=(1, 2)) | (
+                general.conditioning(solver, jac) < SINGULAR
+            )
             jac[bad] = np.eye(jac.shape[-1])
             general.derivative(solver, out, 1, jac, n)
     return out
 
 
 def _copy(m: Motion, omega: Any, vx: Any, vy: Any) -> Motion:
-    """A motion sharing ``m``'s pose with its velocity level replaced."""
+    """Return a motion sharing ``m``'s pose with its velocity level replaced."""
     c = Motion.__new__(Motion)
     c.phi = [m.phi[0], omega, 0.0, 0.0]
     c.ox = [m.ox[0], vx, 0.0, 0.0]
@@ -202,13 +225,24 @@ def allocate(plan: Plan, n: int) -> KinematicState:
 
 def freeze(state: KinematicState) -> KinematicState:
     """Make every array of ``state`` read-only."""
-    for arr in (state.drive, state.link, state.origin, state.point, *state.slide.values()):
+    for arr in (
+        state.drive,
+        state.link,
+        state.origin,
+        state.point,
+        *state.slide.values(),
+    ):
         arr.flags.writeable = False
     return state
 
 
-def collect(plan: Plan, bodies: list[Motion], n: int,
-            out: KinematicState | None = None, start: int = 0) -> KinematicState:
+def collect(
+    plan: Plan,
+    bodies: list[Motion],
+    n: int,
+    out: KinematicState | None = None,
+    start: int = 0,
+) -> KinematicState:
     """Gather the links' motions and every reported point into ``out[start:start+n]``.
 
     Returns the state of this chunk (views of ``out`` when given).
@@ -245,8 +279,11 @@ def collect(plan: Plan, bodies: list[Motion], n: int,
             drive[:, i] = m.phi[0] + d.angle0
         else:
             ex, ey = d.pair.axis  # type: ignore[misc]
-            drive[:, i] = (d.reference + (m.ox[0] - d.origin[0]) * ex
-                           + (m.oy[0] - d.origin[1]) * ey)
+            drive[:, i] = (
+                d.reference
+                + (m.ox[0] - d.origin[0]) * ex
+                + (m.oy[0] - d.origin[1]) * ey
+            )
     return KinematicState(drive, link, origin, point, slides)
 
 
@@ -255,7 +292,7 @@ def _slides(plan: Plan, bodies: list[Motion], out: dict[str, Array]) -> None:
     known: dict[str, tuple[int, float]] = {}
     for solver in plan.solvers:
         if isinstance(solver, DyadPlan):
-            for b, pair in zip(solver.bodies, solver.ext):
+            for b, pair in zip(solver.bodies, solver.ext, strict=False):
                 if pair.kind == "P":
                     known[pair.name] = (b, 1.0 if pair.second == b else -1.0)
     for name, arr in out.items():

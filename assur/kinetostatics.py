@@ -65,9 +65,14 @@ class ForceState:
     offset: dict[str, Array] = field(default_factory=dict)
 
 
-def applied_loads(plan: Plan, loads: LoadPlan, bodies: list[Motion],
-                  state: KinematicState, inertia_force: Array,
-                  inertia_torque: Array) -> list[Wrench]:
+def applied_loads(
+    plan: Plan,
+    loads: LoadPlan,
+    bodies: list[Motion],
+    state: KinematicState,
+    inertia_force: Array,
+    inertia_torque: Array,
+) -> list[Wrench]:
     """Return every link's applied wrench (inertia, gravity, external loads).
 
     Returns the wrenches ``[F_x, F_y, tau about the origin]`` per body; the inertia
@@ -98,8 +103,11 @@ def applied_loads(plan: Plan, loads: LoadPlan, bodies: list[Motion],
         w = wrenches[b]
         wrenches[b] = [w[0] + fx, w[1] + fy, w[2] + px * fy - py * fx]
     for b, value, entry in loads.torques:
-        t = value if isinstance(value, float) else table_values(
-            value, plan, state.drive, slides, entry)[0]
+        t = (
+            value
+            if isinstance(value, float)
+            else table_values(value, plan, state.drive, slides, entry)[0]
+        )
         w = wrenches[b]
         wrenches[b] = [w[0], w[1], w[2] + t]
     return wrenches
@@ -109,17 +117,29 @@ def allocate(plan: Plan, n: int) -> ForceState:
     """Return a writable force state for ``n`` driver positions, filled by chunks."""
     count, drivers = len(plan.bodies), len(plan.drivers)
     reactions = {name: (np.empty((2, n)).T, np.empty(n)) for name in plan.pairs}
-    return ForceState(np.zeros((2, count, n)).transpose(2, 1, 0),
-                      np.zeros((count, n)).T, reactions, np.empty((drivers, n)).T,
-                      np.empty((drivers, n)).T, np.empty((3, n)).T, np.empty((2, n)).T,
-                      {name: np.empty(n) for name in plan.pairs},
-                      {name: np.empty(n) for name, p in plan.pairs.items() if p.kind == "P"})
+    return ForceState(
+        np.zeros((2, count, n)).transpose(2, 1, 0),
+        np.zeros((count, n)).T,
+        reactions,
+        np.empty((drivers, n)).T,
+        np.empty((drivers, n)).T,
+        np.empty((3, n)).T,
+        np.empty((2, n)).T,
+        {name: np.empty(n) for name in plan.pairs},
+        {name: np.empty(n) for name, p in plan.pairs.items() if p.kind == "P"},
+    )
 
 
 def freeze(state: ForceState) -> ForceState:
     """Make every array of ``state`` read-only."""
-    arrays = [state.inertia_force, state.inertia_torque, state.balancing, state.check,
-              state.shaking, state.residual]
+    arrays = [
+        state.inertia_force,
+        state.inertia_torque,
+        state.balancing,
+        state.check,
+        state.shaking,
+        state.residual,
+    ]
     for force, couple in state.reactions.values():
         arrays += [force, couple]
     arrays += [*state.magnitude.values(), *state.offset.values()]
@@ -128,8 +148,13 @@ def freeze(state: ForceState) -> ForceState:
     return state
 
 
-def solve(plan: Plan, bodies: list[Motion], state: KinematicState,
-          out: ForceState | None = None, start: int = 0) -> ForceState:
+def solve(
+    plan: Plan,
+    bodies: list[Motion],
+    state: KinematicState,
+    out: ForceState | None = None,
+    start: int = 0,
+) -> ForceState:
     """Solve the kinetostatics of the chunk whose motion is ``bodies`` / ``state``.
 
     The results go to rows ``start`` to ``start + n`` of ``out`` (allocated when not
@@ -140,8 +165,9 @@ def solve(plan: Plan, bodies: list[Motion], state: KinematicState,
         out = allocate(plan, n)
     rows = slice(start, start + n)
     loads = compile_loads(plan)
-    applied = applied_loads(plan, loads, bodies, state, out.inertia_force[rows],
-                            out.inertia_torque[rows])
+    applied = applied_loads(
+        plan, loads, bodies, state, out.inertia_force[rows], out.inertia_torque[rows]
+    )
     wrenches = [list(w) for w in applied]
     raw: dict[str, tuple[Any, Any, Any]] = {}
     for solver in reversed(plan.solvers):
@@ -169,17 +195,18 @@ def solve(plan: Plan, bodies: list[Motion], state: KinematicState,
     return out
 
 
-def _virtual_power(plan: Plan, bodies: list[Motion], applied: list[Wrench],
-                   which: int) -> Any:
-    """Balancing load of driver ``which`` from the principle of virtual power.
+def _virtual_power(
+    plan: Plan, bodies: list[Motion], applied: list[Wrench], which: int
+) -> Any:
+    r"""Balancing load of driver ``which`` from the principle of virtual power.
 
     Notes
     -----
     For a unit speed of the driver (the others held), the power of the balancing load
     plus that of every applied load (inertia loads included) is zero:
-    :math:`T = -\\sum_b (F_b \\cdot v_{b,O} + \\tau_{b,O}\\,\\omega_b)`, where
-    :math:`v_{b,O} = v_b - \\omega_b o_b^\\perp` is the velocity of the body point at the
-    origin about which :math:`\\tau_{b,O}` is taken.
+    :math:`T = -\sum_b (F_b \cdot v_{b,O} + \tau_{b,O}\,\omega_b)`, where
+    :math:`v_{b,O} = v_b - \omega_b o_b^\perp` is the velocity of the body point at the
+    origin about which :math:`\tau_{b,O}` is taken.
     """
     speed = plan.drivers[which].omega
     if len(plan.drivers) == 1 and speed:
@@ -193,7 +220,12 @@ def _virtual_power(plan: Plan, bodies: list[Motion], applied: list[Wrench],
             continue  # a massless, unloaded link does no work
         m, v = bodies[b], coeff[b]
         w = v.phi[1]
-        total = total + fx * (v.ox[1] + w * m.oy[0]) + fy * (v.oy[1] - w * m.ox[0]) + tau * w
+        total = (
+            total
+            + fx * (v.ox[1] + w * m.oy[0])
+            + fy * (v.oy[1] - w * m.ox[0])
+            + tau * w
+        )
     return -scale * total
 
 
@@ -209,9 +241,14 @@ def _offset(pair: PairPlan, bodies: list[Motion], force: Array, couple: Array) -
         return np.where(np.abs(normal) > 1e-12, couple / normal, np.nan)
 
 
-def _residual(plan: Plan, bodies: list[Motion], applied: list[Wrench],
-              reactions: dict[str, tuple[Array, Array]], balancing: Array,
-              state: KinematicState) -> Array:
+def _residual(
+    plan: Plan,
+    bodies: list[Motion],
+    applied: list[Wrench],
+    reactions: dict[str, tuple[Array, Array]],
+    balancing: Array,
+    state: KinematicState,
+) -> Array:
     """Largest unbalanced force (N) and moment about the link's origin (N m)."""
     totals = [list(w) for w in applied]
     for name, (force, couple) in reactions.items():

@@ -18,6 +18,8 @@ from assur.plan import Plan, compile_plan
 
 __all__ = ["LoadPlan", "compile_loads", "table_values"]
 
+WHAT = {"center": "centre of mass", "inertia": "moment of inertia about it, kg m^2"}
+
 
 @dataclass(frozen=True, slots=True)
 class LoadPlan:
@@ -66,9 +68,11 @@ def _compile(mech: Mechanism) -> LoadPlan:
             continue
         for key in ("center", "inertia"):
             if getattr(link, key) is None:
-                msg = (f"links.{link.name}: a link with a mass needs its '{key}' "
-                       f"({'centre of mass' if key == 'center' else 'moment of inertia about it, kg m^2'})"
-                       " for the force analysis")
+                msg = (
+                    f"links.{link.name}: a link with a mass needs its '{key}' "
+                    f"({WHAT[key]})"
+                    " for the force analysis"
+                )
                 raise ModelError(msg)
         b = plan.body(link.name)
         mass[b] = link.mass
@@ -83,22 +87,39 @@ def _compile(mech: Mechanism) -> LoadPlan:
             assert load.at is not None
             ox, oy = plan.offset(b, resolve_point(mech, load.at))
             offset = (float(ox), float(oy))
-            value = load.force if isinstance(load.force, LoadTable) else (
-                float(load.force[0]), float(load.force[1]))
+            value = (
+                load.force
+                if isinstance(load.force, LoadTable)
+                else (float(load.force[0]), float(load.force[1]))
+            )
             forces.append((b, offset, value, f"loads[{i}].force"))
         if load.torque is not None:
-            torque = load.torque if isinstance(load.torque, LoadTable) else float(load.torque)
+            torque = (
+                load.torque
+                if isinstance(load.torque, LoadTable)
+                else float(load.torque)
+            )
             torques.append((b, torque, f"loads[{i}].torque"))
-    gravity = (0.0, 0.0) if mech.gravity is None else (float(mech.gravity[0]),
-                                                       float(mech.gravity[1]))
+    gravity = (
+        (0.0, 0.0)
+        if mech.gravity is None
+        else (float(mech.gravity[0]), float(mech.gravity[1]))
+    )
     center_point = tuple(plan.point_index.get(f"{name}.G", -1) for name in plan.bodies)
-    return LoadPlan(mass, inertia=inertia, center=centers, center_point=center_point,
-                    gravity=gravity,
-                    forces=tuple(forces), torques=tuple(torques))
+    return LoadPlan(
+        mass,
+        inertia=inertia,
+        center=centers,
+        center_point=center_point,
+        gravity=gravity,
+        forces=tuple(forces),
+        torques=tuple(torques),
+    )
 
 
-def table_values(table: LoadTable, plan: Plan, drive: Array, slides: dict[str, Array],
-                 entry: str) -> list[Array]:
+def table_values(
+    table: LoadTable, plan: Plan, drive: Array, slides: dict[str, Array], entry: str
+) -> list[Array]:
     """Interpolate ``table`` at every analysed position; one array (n,) per component.
 
     Raises
@@ -111,14 +132,19 @@ def table_values(table: LoadTable, plan: Plan, drive: Array, slides: dict[str, A
         first = plan.drivers[0]
         if first.kind == "R":
             at = np.degrees(drive[:, 0])
-            return [np.interp(at, xs, np.asarray(v), period=360.0) for v in table.values]
+            return [
+                np.interp(at, xs, np.asarray(v), period=360.0) for v in table.values
+            ]
         at, what = drive[:, 0], "the driver's position"
     else:
         at, what = slides[table.over], f"the slide of joint {table.over!r}"
     low, high = float(np.min(at)), float(np.max(at))
     tol = 1e-9 * max(1.0, abs(xs[0]), abs(xs[-1]))
     if low < xs[0] - tol or high > xs[-1] + tol:
-        msg = (f"{entry}.table: covers {xs[0]:g} to {xs[-1]:g} m but {what} runs from "
-               f"{low:.6g} to {high:.6g} m; expected a table covering every analysed position")
+        msg = (
+            f"{entry}.table: covers {xs[0]:g} to {xs[-1]:g} m but {what} runs from "
+            f"{low:.6g} to {high:.6g} m; expected a table covering every analysed "
+            "position"
+        )
         raise ModelError(msg)
     return [np.interp(at, xs, np.asarray(v)) for v in table.values]

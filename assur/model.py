@@ -56,7 +56,7 @@ class Toward:
 
 
 PointSpec = Vec2 | str | Toward
-"""A point of the reference pose: coordinates (m), a point's name, or a :class:`Toward`."""
+"""A point of the reference pose: coordinates (m), a point's name, or a Toward."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -233,8 +233,18 @@ class Mechanism:
     def __hash__(self) -> int:
         # a mechanism keys the memoised plans of every sweep: hash its fields once
         if self._hash is None:
-            value = hash((self.links, self.joints, self.drivers, self.name,
-                          self.description, self.gravity, self.loads, self.points))
+            value = hash(
+                (
+                    self.links,
+                    self.joints,
+                    self.drivers,
+                    self.name,
+                    self.description,
+                    self.gravity,
+                    self.loads,
+                    self.points,
+                )
+            )
             object.__setattr__(self, "_hash", value)
         return self._hash  # type: ignore[return-value]
 
@@ -261,11 +271,17 @@ def _fail(entry: str, message: str) -> None:
 
 
 def _finite(value: object) -> bool:
-    return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
+    return (
+        isinstance(value, int | float)
+        and not isinstance(value, bool)
+        and math.isfinite(value)
+    )
 
 
 def _check_vec(entry: str, value: object) -> None:
-    ok = isinstance(value, tuple | list) and len(value) == 2 and all(map(_finite, value))
+    ok = (
+        isinstance(value, tuple | list) and len(value) == 2 and all(map(_finite, value))
+    )
     if not ok:
         _fail(entry, f"expected two finite numbers [x, y], got {value!r}")
 
@@ -291,18 +307,26 @@ def _check_point(entry: str, spec: object, points: set[str]) -> None:
     elif isinstance(spec, Toward):
         for key, ref in (("from", spec.start), ("toward", spec.toward)):
             if ref not in points:
-                _fail(f"{entry}.{key}", f"unknown point {ref!r}{_suggest(ref, list(points))}")
+                _fail(
+                    f"{entry}.{key}",
+                    f"unknown point {ref!r}{_suggest(ref, list(points))}",
+                )
         if spec.start == spec.toward:
-            _fail(entry, f"'from' and 'toward' are the same point {spec.start!r}; "
-                  "expected two distinct points")
+            _fail(
+                entry,
+                f"'from' and 'toward' are the same point {spec.start!r}; "
+                "expected two distinct points",
+            )
         if not _finite(spec.distance):
-            _fail(f"{entry}.distance", f"expected a finite number, got {spec.distance!r}")
+            _fail(
+                f"{entry}.distance", f"expected a finite number, got {spec.distance!r}"
+            )
     else:
         _check_vec(entry, spec)
 
 
 def _validate(mech: Mechanism) -> None:
-    """Check every reference and value of ``mech``; raise ModelError on the first fault."""
+    """Check every reference and value of ``mech``; raise on the first fault."""
     if not mech.links:
         _fail("links", "no moving links; expected at least one [links.NAME] entry")
     link_names: list[str] = []
@@ -327,23 +351,34 @@ def _validate(mech: Mechanism) -> None:
             _fail(entry, "two joints with one name")
         joint_names.append(joint.name)
         if joint.kind not in JOINT_KINDS:
-            _fail(f"{entry}.kind", f"unknown kind {joint.kind!r}; expected one of "
-                  + ", ".join(JOINT_KINDS))
+            _fail(
+                f"{entry}.kind",
+                f"unknown kind {joint.kind!r}; expected one of "
+                + ", ".join(JOINT_KINDS),
+            )
         if len(joint.links) != 2:
             _fail(f"{entry}.links", f"expected two links, got {list(joint.links)!r}")
         for name in joint.links:
             if name not in all_links:
-                _fail(f"{entry}.links", f"unknown link {name!r}{_suggest(name, all_links)}")
+                _fail(
+                    f"{entry}.links",
+                    f"unknown link {name!r}{_suggest(name, all_links)}",
+                )
         if joint.links[0] == joint.links[1]:
-            _fail(f"{entry}.links", f"joins link {joint.links[0]!r} to itself; "
-                  "expected two different links")
+            _fail(
+                f"{entry}.links",
+                f"joins link {joint.links[0]!r} to itself; "
+                "expected two different links",
+            )
         if joint.kind != "revolute":
             if joint.axis is None:
                 _fail(entry, f"a {joint.kind} joint needs an 'axis' [x, y]")
             _check_vec(f"{entry}.axis", joint.axis)
             if math.hypot(*joint.axis) < 1e-12:
-                _fail(f"{entry}.axis", f"zero axis {list(joint.axis)!r}; expected a "
-                      "nonzero direction")
+                _fail(
+                    f"{entry}.axis",
+                    f"zero axis {list(joint.axis)!r}; expected a nonzero direction",
+                )
     point_names = set(joint_names)
     for point in mech.points:
         entry = f"points.{point.name}"
@@ -351,7 +386,10 @@ def _validate(mech: Mechanism) -> None:
         if point.name in point_names:
             _fail(entry, "a point or joint with this name exists already")
         if point.link not in link_names:
-            _fail(f"{entry}.link", f"unknown link {point.link!r}{_suggest(point.link, link_names)}")
+            _fail(
+                f"{entry}.link",
+                f"unknown link {point.link!r}{_suggest(point.link, link_names)}",
+            )
         point_names.add(point.name)
     for joint in mech.joints:
         _check_point(f"joints.{joint.name}.at", joint.at, point_names - {joint.name})
@@ -367,10 +405,15 @@ def _validate(mech: Mechanism) -> None:
         if link.axis is not None:
             on_link = point_links(mech)
             if len(link.axis) != 2 or link.axis[0] == link.axis[1]:
-                _fail(f"{entry}.axis", f"expected two distinct points, got {list(link.axis)!r}")
+                _fail(
+                    f"{entry}.axis",
+                    f"expected two distinct points, got {list(link.axis)!r}",
+                )
             for name in link.axis:
                 if link.name not in on_link.get(name, ()):
-                    _fail(f"{entry}.axis", f"point {name!r} is not on link {link.name!r}")
+                    _fail(
+                        f"{entry}.axis", f"point {name!r} is not on link {link.name!r}"
+                    )
     _validate_drivers(mech, all_links)
     if mech.gravity is not None:
         _check_vec("gravity.g", mech.gravity)
@@ -385,30 +428,44 @@ def _validate_drivers(mech: Mechanism, all_links: list[str]) -> None:
     for index, driver in enumerate(mech.drivers):
         entry = f"drivers[{index}]"
         if driver.joint not in joints:
-            _fail(f"{entry}.joint", f"unknown joint {driver.joint!r}"
-                  + _suggest(driver.joint, list(joints)))
+            _fail(
+                f"{entry}.joint",
+                f"unknown joint {driver.joint!r}"
+                + _suggest(driver.joint, list(joints)),
+            )
         if driver.joint in seen:
             _fail(f"{entry}.joint", f"joint {driver.joint!r} is driven twice")
         seen.add(driver.joint)
         joint = joints[driver.joint]
         if joint.kind not in ("revolute", "prismatic"):
-            _fail(f"{entry}.joint", f"joint {driver.joint!r} is a {joint.kind} joint; "
-                  "expected a revolute or prismatic joint")
+            _fail(
+                f"{entry}.joint",
+                f"joint {driver.joint!r} is a {joint.kind} joint; "
+                "expected a revolute or prismatic joint",
+            )
         if GROUND not in joint.links:
-            _fail(f"{entry}.joint", f"joint {driver.joint!r} joins {joint.links[0]!r} "
-                  f"and {joint.links[1]!r}; a driver must act between the frame "
-                  "('ground') and its input link")
+            _fail(
+                f"{entry}.joint",
+                f"joint {driver.joint!r} joins {joint.links[0]!r} "
+                f"and {joint.links[1]!r}; a driver must act between the frame "
+                "('ground') and its input link",
+            )
         for key in ("omega", "epsilon"):
             if not _finite(getattr(driver, key)):
-                _fail(f"{entry}.{key}", f"expected a finite number, got "
-                      f"{getattr(driver, key)!r}")
+                _fail(
+                    f"{entry}.{key}",
+                    f"expected a finite number, got {getattr(driver, key)!r}",
+                )
 
 
 def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -> None:
     prismatic = [j.name for j in mech.joints if j.kind != "revolute"]
     if table.over != "driver" and table.over not in prismatic:
-        _fail(f"{entry}.over", f"expected 'driver' or a prismatic joint, got "
-              f"{table.over!r}{_suggest(table.over, ['driver', *prismatic])}")
+        _fail(
+            f"{entry}.over",
+            f"expected 'driver' or a prismatic joint, got "
+            f"{table.over!r}{_suggest(table.over, ['driver', *prismatic])}",
+        )
     xs = np.asarray(table.table, dtype=float)
     if xs.ndim != 1 or len(xs) < 2 or not np.all(np.isfinite(xs)):
         _fail(f"{entry}.table", "expected at least two finite positions")
@@ -418,14 +475,25 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
         _fail(entry, f"expected {ncomp} value sequence(s), got {len(table.values)}")
     for values in table.values:
         if len(values) != len(xs) or not all(map(_finite, values)):
-            _fail(entry, f"expected {len(xs)} finite values, one per table position, "
-                  f"got {list(values)!r}")
+            _fail(
+                entry,
+                f"expected {len(xs)} finite values, one per table position, "
+                f"got {list(values)!r}",
+            )
 
 
-def _validate_load(mech: Mechanism, entry: str, load: Load, link_names: list[str],
-                   point_names: set[str]) -> None:
+def _validate_load(
+    mech: Mechanism,
+    entry: str,
+    load: Load,
+    link_names: list[str],
+    point_names: set[str],
+) -> None:
     if load.link not in link_names:
-        _fail(f"{entry}.link", f"unknown link {load.link!r}{_suggest(load.link, link_names)}")
+        _fail(
+            f"{entry}.link",
+            f"unknown link {load.link!r}{_suggest(load.link, link_names)}",
+        )
     if load.force is None and load.torque is None:
         _fail(entry, "expected a 'force' or a 'torque'")
     if load.force is not None:
@@ -457,8 +525,9 @@ def _check_resolvable(mech: Mechanism) -> None:
             resolve_point(mech, load.at, f"loads[{index}].at")
 
 
-def resolve_point(mech: Mechanism, spec: PointSpec, entry: str = "point",
-                  _depth: int = 0) -> np.ndarray:
+def resolve_point(
+    mech: Mechanism, spec: PointSpec, entry: str = "point", _depth: int = 0
+) -> np.ndarray:
     """Return the reference-pose coordinates (m) of a point specification.
 
     Parameters
@@ -488,8 +557,11 @@ def resolve_point(mech: Mechanism, spec: PointSpec, entry: str = "point",
         b = resolve_point(mech, spec.toward, entry, _depth + 1)
         length = float(np.hypot(*(b - a)))
         if length < 1e-12:
-            _fail(entry, f"points {spec.start!r} and {spec.toward!r} coincide; "
-                  "expected two distinct points")
+            _fail(
+                entry,
+                f"points {spec.start!r} and {spec.toward!r} coincide; "
+                "expected two distinct points",
+            )
         return a + (b - a) * (spec.distance / length)
     return np.asarray(spec, dtype=float)
 

@@ -106,7 +106,9 @@ def compile_plan(mech: Mechanism) -> Plan:
         When a group is at a dead centre in the reference pose.
     """
     drivers, groups, topo = decompose(mech)
-    names = [GROUND] + [g.links[1] for g in drivers] + [x for g in groups for x in g.links]
+    names = (
+        [GROUND] + [g.links[1] for g in drivers] + [x for g in groups for x in g.links]
+    )
     index = {name: i for i, name in enumerate(names)}
     pair_at = {p.name: np.asarray(p.at) for p in topo.pairs}
     origins = np.zeros((len(names), 2))
@@ -114,36 +116,65 @@ def compile_plan(mech: Mechanism) -> Plan:
         origins[index[g.links[1]]] = pair_at[g.internal[0]]
     for g in groups:
         for link in g.links:
-            pair = next(p for p in g.external + g.internal
-                        if link in _pair(topo, p).links)
+            pair = next(
+                p for p in g.external + g.internal if link in _pair(topo, p).links
+            )
             origins[index[link]] = pair_at[pair]
     pairs = {}
     for p in topo.pairs:
         i, j = index[p.links[0]], index[p.links[1]]
-        pairs[p.name] = PairPlan(p.name, p.kind, i, j, _pt(pair_at[p.name] - origins[i]),
-                                 _pt(pair_at[p.name] - origins[j]),
-                                 None if p.axis is None else _pt(p.axis), p.virtual)
-    scale = max([float(np.hypot(*(a - b))) for a in pair_at.values()
-                 for b in pair_at.values()] + [1e-3])
+        pairs[p.name] = PairPlan(
+            p.name,
+            p.kind,
+            i,
+            j,
+            _pt(pair_at[p.name] - origins[i]),
+            _pt(pair_at[p.name] - origins[j]),
+            None if p.axis is None else _pt(p.axis),
+            p.virtual,
+        )
+    scale = max(
+        [float(np.hypot(*(a - b))) for a in pair_at.values() for b in pair_at.values()]
+        + [1e-3]
+    )
     angle0 = _angles0(mech, names)
-    plan = Plan(mech, topo, groups, tuple(names), origins, angle0, (), (), pairs, (),
-                np.zeros(0, dtype=int), np.zeros((0, 2)), scale)
+    plan = Plan(
+        mech,
+        topo,
+        groups,
+        tuple(names),
+        origins,
+        angle0,
+        (),
+        (),
+        pairs,
+        (),
+        np.zeros(0, dtype=int),
+        np.zeros((0, 2)),
+        scale,
+    )
     driver_plans = tuple(_driver(plan, mech, g, index) for g in drivers)
     solvers = tuple(_solver(plan, g, index) for g in groups)
     points, body, offset = _points(mech, plan, index)
     offsets = tuple(_pt(d) for d in offset)
     sets: dict[tuple[int, tuple[float, float]], list[int]] = {}
-    for p, (b, d) in enumerate(zip(body.tolist(), offsets)):
+    for p, (b, d) in enumerate(zip(body.tolist(), offsets, strict=False)):
         sets.setdefault((b, d), []).append(p)
     return dataclasses.replace(
-        plan, drivers=driver_plans, solvers=solvers, points=points, point_body=body,
-        point_offset=offset, point_offsets=offsets,
+        plan,
+        drivers=driver_plans,
+        solvers=solvers,
+        points=points,
+        point_body=body,
+        point_offset=offset,
+        point_offsets=offsets,
         point_sets=tuple((b, d, tuple(idx)) for (b, d), idx in sets.items()),
-        point_index={name: p for p, name in enumerate(points)})
+        point_index={name: p for p, name in enumerate(points)},
+    )
 
 
 def _pt(v: Any) -> tuple[float, float]:
-    """A 2-vector as a tuple of Python floats (cheap constants in the kernels)."""
+    """Return a 2-vector as a tuple of floats (cheap constants in the kernels)."""
     return (float(v[0]), float(v[1]))
 
 
@@ -161,30 +192,49 @@ def _angles0(mech: Mechanism, names: list[str]) -> Array:
     return angle0
 
 
-def _driver(plan: Plan, mech: Mechanism, group: Group, index: dict[str, int]) -> DriverPlan:
+def _driver(
+    plan: Plan, mech: Mechanism, group: Group, index: dict[str, int]
+) -> DriverPlan:
     driver = next(d for d in mech.drivers if d.joint == group.internal[0])
     pair = plan.pairs[driver.joint]
     body = index[group.links[1]]
     reference = float(plan.angle0[body]) if pair.kind == "R" else 0.0
-    return DriverPlan(pair, body, float(driver.omega), float(driver.epsilon),
-                      float(plan.angle0[body]), _pt(plan.origins[body]), reference)
+    return DriverPlan(
+        pair,
+        body,
+        float(driver.omega),
+        float(driver.epsilon),
+        float(plan.angle0[body]),
+        _pt(plan.origins[body]),
+        reference,
+    )
 
 
 def _solver(plan: Plan, group: Group, index: dict[str, int]) -> Any:
     bodies = tuple(index[x] for x in group.links)
     if group.group_class == 2:
         return _dyad(plan, group, bodies)
-    return GeneralPlan(group.kind, group.label, bodies,
-                       tuple(_pt(plan.origins[b]) for b in bodies),
-                       tuple(plan.pairs[p] for p in group.internal + group.external),
-                       plan.scale)
+    return GeneralPlan(
+        group.kind,
+        group.label,
+        bodies,
+        tuple(_pt(plan.origins[b]) for b in bodies),
+        tuple(plan.pairs[p] for p in group.internal + group.external),
+        plan.scale,
+    )
 
 
 def _dyad(plan: Plan, group: Group, bodies: tuple[int, int]) -> DyadPlan:
     ext = tuple(plan.pairs[p] for p in group.external)
     mid = plan.pairs[group.internal[0]]
-    known = tuple(e.first if e.second == b else e.second for e, b in zip(ext, bodies))
-    d_known = tuple(e.d_first if e.first == k else e.d_second for e, k in zip(ext, known))
+    known = tuple(
+        e.first if e.second == b else e.second
+        for e, b in zip(ext, bodies, strict=False)
+    )
+    d_known = tuple(
+        e.d_first if e.first == k else e.d_second
+        for e, k in zip(ext, known, strict=False)
+    )
     d_mid = tuple(mid.d_first if mid.first == b else mid.d_second for b in bodies)
     dyad = DyadPlan(group.kind, group.label, bodies, ext, mid, known, d_known, d_mid)
     module = DYADS[group.kind]
@@ -193,21 +243,26 @@ def _dyad(plan: Plan, group: Group, bodies: tuple[int, int]) -> DyadPlan:
     for branch in (1.0, -1.0):
         candidate = dataclasses.replace(dyad, branch=branch)
         q = module.assemble(candidate, list(reference))
-        miss = [float(np.abs(wrap(x))) if e.kind == "R" else float(np.abs(x)) / plan.scale
-                for x, e in zip(q, ext)]
+        miss = [
+            float(np.abs(wrap(x))) if e.kind == "R" else float(np.abs(x)) / plan.scale
+            for x, e in zip(q, ext, strict=False)
+        ]
         if best is None or max(miss) < best[0]:
             best = (max(miss), candidate, sorted(miss))
     assert best is not None
     if not best[0] <= BRANCH_TOLERANCE:
-        msg = (f"group {group.label}: the reference pose is not an assembled pose of this "
-               f"group or sits at its dead centre (closes {best[0]:.3g} away); expected "
-               "every point where it is in one assembled pose")
+        msg = (
+            f"group {group.label}: the reference pose is not an assembled pose of this "
+            f"group or sits at its dead centre (closes {best[0]:.3g} away); expected "
+            "every point where it is in one assembled pose"
+        )
         raise ModelError(msg)
     return best[1]
 
 
-def _points(mech: Mechanism, plan: Plan, index: dict[str, int]) -> tuple[
-        tuple[str, ...], Array, Array]:
+def _points(
+    mech: Mechanism, plan: Plan, index: dict[str, int]
+) -> tuple[tuple[str, ...], Array, Array]:
     names, body, offset = [], [], []
     for pair in plan.pairs.values():
         if not pair.virtual:

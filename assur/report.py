@@ -23,40 +23,58 @@ def _names(items: tuple[str, ...]) -> str:
 def _why(g: Group) -> str:
     k = len(g.links)
     p = len(g.internal) + len(g.external)
-    return (f"k = {k} links, p = {p} lower pairs: 3k = {3 * k} = 2p = {2 * p}, so the "
-            "chain has zero mobility on the known links, and no smaller part of it does")
+    return (
+        f"k = {k} links, p = {p} lower pairs: 3k = {3 * k} = 2p = {2 * p}, so the "
+        "chain has zero mobility on the known links, and no smaller part of it does"
+    )
 
 
 def structure_report(s: Structure) -> str:
     """Return the teaching report of a structural analysis."""
     n, p5, p4 = s.links, s.lower_pairs, s.higher_pairs
     lines = [f"Structure of {s.name or 'the mechanism'}", ""]
-    lines.append(f"Degrees of freedom (Chebyshev-Gruebler): W = 3n - 2p5 - p4 = 3*{n} - "
-                 f"2*{p5} - {p4} = {s.dof}")
-    lines.append(f"  n = {n} moving links, p5 = {p5} lower pairs, p4 = {p4} higher pairs;"
-                 f" {len(s.drivers)} driver(s).")
+    lines.append(
+        f"Degrees of freedom (Chebyshev-Gruebler): W = 3n - 2p5 - p4 = 3*{n} - "
+        f"2*{p5} - {p4} = {s.dof}"
+    )
+    lines.append(
+        f"  n = {n} moving links, p5 = {p5} lower pairs, p4 = {p4} higher pairs;"
+        f" {len(s.drivers)} driver(s)."
+    )
     for slot in s.slots:
-        lines.append(f"  Slot {slot} (a pin in a slot, a higher pair) is replaced by an "
-                     f"equivalent block '{slot}~block' with a prismatic pair {slot} and a "
-                     f"revolute pair {slot}~pin: one more link and two lower pairs keep W.")
+        lines.append(
+            f"  Slot {slot} (a pin in a slot, a higher pair) is replaced by an "
+            f"equivalent block '{slot}~block' with a prismatic pair {slot} and a "
+            f"revolute pair {slot}~pin: one more link and two lower pairs keep W."
+        )
     lines += ["", "Decomposition into Assur groups, in order of attachment:"]
     step = 0
     for g in s.drivers:
         step += 1
-        lines.append(f"  {step}. Class I: the frame and the input link {g.links[1]} "
-                     f"(driven through pair {g.internal[0]}).")
+        lines.append(
+            f"  {step}. Class I: the frame and the input link {g.links[1]} "
+            f"(driven through pair {g.internal[0]})."
+        )
     for g in s.groups:
         step += 1
         roman = ROMAN.get(g.group_class, str(g.group_class))
         kind = {"triad": "triad", "general": "group"}.get(g.kind, f"dyad {g.kind}")
-        lines.append(f"  {step}. Class {roman}, order {g.order}, {kind}: links "
-                     f"{_names(g.links)}")
-        lines.append(f"     internal pairs {_names(g.internal)}; external pairs "
-                     f"{_names(g.external)} on the known links {_names(g.attached_to)}.")
+        lines.append(
+            f"  {step}. Class {roman}, order {g.order}, {kind}: links {_names(g.links)}"
+        )
+        lines.append(
+            f"     internal pairs {_names(g.internal)}; external pairs "
+            f"{_names(g.external)} on the known links {_names(g.attached_to)}."
+        )
         lines.append(f"     Why an Assur group: {_why(g)}.")
-    lines += ["", f"Structure formula: {s.formula}",
-              f"Class of the mechanism: {ROMAN.get(s.mechanism_class)} (the highest class "
-              "of its groups)"]
-    lines.append("Kinematics runs through the groups in this order; the force analysis in "
-                 "the reverse order.")
+    lines += [
+        "",
+        f"Structure formula: {s.formula}",
+        f"Class of the mechanism: {ROMAN.get(s.mechanism_class)} (the highest class "
+        "of its groups)",
+    ]
+    lines.append(
+        "Kinematics runs through the groups in this order; the force analysis in "
+        "the reverse order."
+    )
     return "\n".join(lines)

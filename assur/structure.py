@@ -20,8 +20,16 @@ import numpy as np
 from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, resolve_point
 
-__all__ = ["Group", "Pair", "Structure", "Topology", "decompose", "mobility",
-           "structure", "topology"]
+__all__ = [
+    "Group",
+    "Pair",
+    "Structure",
+    "Topology",
+    "decompose",
+    "mobility",
+    "structure",
+    "topology",
+]
 
 ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V", 6: "VI", 7: "VII", 8: "VIII"}
 MAX_GROUP_LINKS = 8
@@ -115,22 +123,39 @@ class Structure:
     @property
     def formula(self) -> str:
         """Structure formula, e.g. ``I(ground, 1) -> II(2, 3)``."""
-        steps = [f"{ROMAN.get(g.group_class, g.group_class)}"
-                 f"({', '.join(_public(g.links))})" for g in (*self.drivers, *self.groups)]
+        steps = [
+            f"{ROMAN.get(g.group_class, g.group_class)}({', '.join(_public(g.links))})"
+            for g in (*self.drivers, *self.groups)
+        ]
         return " -> ".join(steps)
 
     def to_dict(self) -> dict[str, Any]:
         """Return the structure as plain JSON-ready data."""
+
         def group(g: Group) -> dict[str, Any]:
-            return {"class": g.group_class, "class_roman": ROMAN.get(g.group_class),
-                    "order": g.order, "kind": g.kind, "links": list(g.links),
-                    "internal_pairs": list(g.internal), "external_pairs": list(g.external),
-                    "attached_to": list(g.attached_to)}
-        return {"name": self.name, "links": self.links, "lower_pairs": self.lower_pairs,
-                "higher_pairs": self.higher_pairs, "dof": self.dof,
-                "drivers": [group(g) for g in self.drivers],
-                "groups": [group(g) for g in self.groups], "formula": self.formula,
-                "mechanism_class": self.mechanism_class, "slots": list(self.slots)}
+            return {
+                "class": g.group_class,
+                "class_roman": ROMAN.get(g.group_class),
+                "order": g.order,
+                "kind": g.kind,
+                "links": list(g.links),
+                "internal_pairs": list(g.internal),
+                "external_pairs": list(g.external),
+                "attached_to": list(g.attached_to),
+            }
+
+        return {
+            "name": self.name,
+            "links": self.links,
+            "lower_pairs": self.lower_pairs,
+            "higher_pairs": self.higher_pairs,
+            "dof": self.dof,
+            "drivers": [group(g) for g in self.drivers],
+            "groups": [group(g) for g in self.groups],
+            "formula": self.formula,
+            "mechanism_class": self.mechanism_class,
+            "slots": list(self.slots),
+        }
 
     def __str__(self) -> str:
         from assur.report import structure_report
@@ -159,8 +184,11 @@ def topology(mech: Mechanism) -> Topology:
             links.append(block)
             slots.append(joint.name)
             pairs.append(Pair(joint.name, "P", (joint.links[0], block), at, axis))
-            pairs.append(Pair(f"{joint.name}~pin", "R", (block, joint.links[1]), at,
-                              virtual=True))
+            pairs.append(
+                Pair(
+                    f"{joint.name}~pin", "R", (block, joint.links[1]), at, virtual=True
+                )
+            )
     return Topology(tuple(links), tuple(pairs), tuple(slots))
 
 
@@ -190,7 +218,7 @@ def mobility(mech: Mechanism) -> int:
 
 
 def graph(mech: Mechanism) -> Any:
-    """Return the mechanism as a networkx multigraph: links as nodes, joints as edges."""
+    """Return the mechanism as a networkx multigraph: links as nodes, joints edges."""
     import networkx as nx
 
     g = nx.MultiGraph()
@@ -240,8 +268,16 @@ def structure(mech: Mechanism, driver: str | None = None) -> Structure:
     drivers, groups, topo = decompose(mech)
     n = len(mech.links)
     p4 = len(topo.slots)
-    return Structure(mech.name, n, len(mech.joints) - p4, p4, mobility(mech),
-                     drivers, groups, topo.slots)
+    return Structure(
+        mech.name,
+        n,
+        len(mech.joints) - p4,
+        p4,
+        mobility(mech),
+        drivers,
+        groups,
+        topo.slots,
+    )
 
 
 def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], Topology]:
@@ -259,9 +295,11 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     if w != len(mech.drivers):
         n = len(mech.links)
         p4 = sum(j.kind == "slot" for j in mech.joints)
-        msg = (f"drivers: the mechanism has W = 3*{n} - 2*{len(mech.joints) - p4} - {p4}"
-               f" = {w} degree(s) of freedom but {len(mech.drivers)} driver(s); "
-               "expected one driver per degree of freedom")
+        msg = (
+            f"drivers: the mechanism has W = 3*{n} - 2*{len(mech.joints) - p4} - {p4}"
+            f" = {w} degree(s) of freedom but {len(mech.drivers)} driver(s); "
+            "expected one driver per degree of freedom"
+        )
         raise DecompositionError(msg)
     topo = topology(mech)
     by_name = {p.name: p for p in topo.pairs}
@@ -277,9 +315,11 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     while unknown:
         found = _find_group(topo.pairs, known, unknown)
         if found is None:
-            msg = (f"links {', '.join(_public(tuple(unknown)))} are left over: they form "
-                   "no Assur group (3k = 2p, every part movable) on the known links "
-                   f"{', '.join(sorted(known))}; expected a chain made of Assur groups")
+            msg = (
+                f"links {', '.join(_public(tuple(unknown)))} are left over: they form "
+                "no Assur group (3k = 2p, every part movable) on the known links "
+                f"{', '.join(sorted(known))}; expected a chain made of Assur groups"
+            )
             raise DecompositionError(msg)
         groups.append(found)
         known.update(found.links)
@@ -287,14 +327,21 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     return tuple(drivers), tuple(groups), topo
 
 
-def _counted(pairs: tuple[Pair, ...], links: frozenset[str], known: set[str]) -> list[Pair]:
+def _counted(
+    pairs: tuple[Pair, ...], links: frozenset[str], known: set[str]
+) -> list[Pair]:
     """Pairs with one end in ``links`` and the other in ``links`` or ``known``."""
-    return [p for p in pairs
-            if (p.links[0] in links or p.links[1] in links)
-            and all(x in links or x in known for x in p.links)]
+    return [
+        p
+        for p in pairs
+        if (p.links[0] in links or p.links[1] in links)
+        and all(x in links or x in known for x in p.links)
+    ]
 
 
-def _find_group(pairs: tuple[Pair, ...], known: set[str], unknown: list[str]) -> Group | None:
+def _find_group(
+    pairs: tuple[Pair, ...], known: set[str], unknown: list[str]
+) -> Group | None:
     """Return the smallest Assur group on ``known``, or None."""
     adjacency: dict[str, set[str]] = {name: set() for name in unknown}
     for p in pairs:
@@ -304,8 +351,9 @@ def _find_group(pairs: tuple[Pair, ...], known: set[str], unknown: list[str]) ->
             adjacency[b].add(a)
     rank = {name: i for i, name in enumerate(unknown)}
     for k in range(2, min(len(unknown), MAX_GROUP_LINKS) + 1, 2):
-        candidates = sorted(_connected_subsets(adjacency, k),
-                            key=lambda s: sorted(rank[x] for x in s))
+        candidates = sorted(
+            _connected_subsets(adjacency, k), key=lambda s: sorted(rank[x] for x in s)
+        )
         for subset in candidates:
             counted = _counted(pairs, subset, known)
             if 2 * len(counted) == 3 * k and _determinate(pairs, subset, known):
@@ -328,7 +376,9 @@ def _connected_subsets(adjacency: dict[str, set[str]], k: int) -> set[frozenset[
     return found
 
 
-def _determinate(pairs: tuple[Pair, ...], subset: frozenset[str], known: set[str]) -> bool:
+def _determinate(
+    pairs: tuple[Pair, ...], subset: frozenset[str], known: set[str]
+) -> bool:
     """Every part of the chain keeps mobility >= 0 (no over-constrained part)."""
     items = sorted(subset)
     if all(p.kind == "P" for p in _counted(pairs, subset, known)):
@@ -356,15 +406,25 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
     longest = max((len(c) for c in nx.simple_cycles(g)), default=0)
     degree = max(dict(g.degree()).values())
     group_class = max(longest, degree, 2)
-    kind = "triad" if (group_class == 3 and len(links) == 4 and len(external) == 3) \
+    kind = (
+        "triad"
+        if (group_class == 3 and len(links) == 4 and len(external) == 3)
         else "general"
-    return Group(group_class, len(external), kind, tuple(links),
-                 tuple(p.name for p in internal), tuple(p.name for p in external),
-                 tuple(attached))
+    )
+    return Group(
+        group_class,
+        len(external),
+        kind,
+        tuple(links),
+        tuple(p.name for p in internal),
+        tuple(p.name for p in external),
+        tuple(attached),
+    )
 
 
-def _describe_dyad(links: list[str], middle: Pair, external: list[Pair],
-                   attached: list[str]) -> Group:
+def _describe_dyad(
+    links: list[str], middle: Pair, external: list[Pair], attached: list[str]
+) -> Group:
     """Order a dyad's links and external pairs so that its signature is canonical."""
     first, second = links
     e1 = next(p for p in external if first in p.links)
@@ -373,8 +433,9 @@ def _describe_dyad(links: list[str], middle: Pair, external: list[Pair],
     if forward[::-1] > forward:
         first, second, e1, e2 = second, first, e2, e1
     kind = max(forward, forward[::-1])
-    return Group(2, 2, kind, (first, second), (middle.name,), (e1.name, e2.name),
-                 tuple(attached))
+    return Group(
+        2, 2, kind, (first, second), (middle.name,), (e1.name, e2.name), tuple(attached)
+    )
 
 
 def reference_points(topo: Topology) -> dict[str, np.ndarray]:

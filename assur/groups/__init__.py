@@ -14,5 +14,11 @@ from assur.groups import prp, rpp, rpr, rrp, rrr
 
 __all__ = ["DYADS"]
 
-DYADS: dict[str, ModuleType] = {"RRR": rrr, "RRP": rrp, "RPR": rpr, "PRP": prp, "RPP": rpp}
+DYADS: dict[str, ModuleType] = {
+    "RRR": rrr,
+    "RRP": rrp,
+    "RPR": rpr,
+    "PRP": prp,
+    "RPP": rpp,
+}
 """Closed-form assembly of each dyad kind, by signature."""

@@ -61,17 +61,22 @@ def set_pose(plan: DyadPlan, bodies: list[Motion], q1: Any, q2: Any) -> None:
         known = bodies[plan.known[b]]
         ax, ay = point(known, plan.d_known[b], 0)
         if plan.ext[b].kind == "R":
-            motion = Motion([q, 0.0, 0.0, 0.0], [ax, 0.0, 0.0, 0.0], [ay, 0.0, 0.0, 0.0])
+            motion = Motion(
+                [q, 0.0, 0.0, 0.0], [ax, 0.0, 0.0, 0.0], [ay, 0.0, 0.0, 0.0]
+            )
         else:
             ex, ey = guide(plan, bodies, b)
-            motion = Motion([known.phi[0], 0.0, 0.0, 0.0], [ax + q * ex, 0.0, 0.0, 0.0],
-                            [ay + q * ey, 0.0, 0.0, 0.0])
+            motion = Motion(
+                [known.phi[0], 0.0, 0.0, 0.0],
+                [ax + q * ex, 0.0, 0.0, 0.0],
+                [ay + q * ey, 0.0, 0.0, 0.0],
+            )
         motion.q = [q]
         bodies[plan.bodies[b]] = motion
 
 
 def _fill(plan: DyadPlan, bodies: list[Motion], k: int) -> None:
-    """Set level k of both links with their own k-th coordinate derivative taken as 0."""
+    """Set level k of both links, their own k-th coordinate derivative taken as 0."""
     for b in (0, 1):
         known = bodies[plan.known[b]]
         m = bodies[plan.bodies[b]]
@@ -80,7 +85,9 @@ def _fill(plan: DyadPlan, bodies: list[Motion], k: int) -> None:
             m.phi[k] = 0.0
         else:
             m.phi[k] = known.phi[k]
-            for j in range(k):  # Leibniz on sigma * e, the k-th term of sigma is unknown
+            for j in range(
+                k
+            ):  # Leibniz on sigma * e, the k-th term of sigma is unknown
                 ex, ey = guide(plan, bodies, b, k - j)
                 coef = comb(k, j) * m.q[j]
                 ax, ay = ax + coef * ex, ay + coef * ey
@@ -129,8 +136,10 @@ def solve2(jac: Jacobian, r0: Any, r1: Any) -> tuple[Any, Any]:
         return (j01 * r1 - j11 * r0) * inv, (j10 * r0 - j00 * r1) * inv
 
 
-def linear_step(plan: DyadPlan, bodies: list[Motion], q1: Any, q2: Any) -> tuple[Any, Any]:
-    """One Newton step from ``(q1, q2)``: exact where the equations are linear in them."""
+def linear_step(
+    plan: DyadPlan, bodies: list[Motion], q1: Any, q2: Any
+) -> tuple[Any, Any]:
+    """Take one Newton step from ``(q1, q2)``: exact where the equations are linear."""
     set_pose(plan, bodies, q1, q2)
     x1, x2 = solve2(jacobian(plan, bodies), *residual(plan.mid, bodies, 0))
     return q1 + x1, q2 + x2
@@ -171,8 +180,12 @@ def _eliminator(plan: DyadPlan, bodies: list[Motion], b: int) -> tuple[Any, Any,
     return ex, ey, 0.0
 
 
-def reactions(plan: DyadPlan, bodies: list[Motion], wrenches: list[Wrench],
-              out: dict[str, tuple[Any, Any, Any]]) -> None:
+def reactions(
+    plan: DyadPlan,
+    bodies: list[Motion],
+    wrenches: list[Wrench],
+    out: dict[str, tuple[Any, Any, Any]],
+) -> None:
     """Solve the dyad's three reactions and pass the external ones to the known links.
 
     Parameters
@@ -195,7 +208,9 @@ def reactions(plan: DyadPlan, bodies: list[Motion], wrenches: list[Wrench],
         load = wrenches[plan.bodies[b]]
         rhs.append(wx * load[0] + wy * load[1] + wt * load[2])
         signs.append(sign)
-    lam0, lam1 = solve2((rows[0][0], rows[0][1], rows[1][0], rows[1][1]), rhs[0], rhs[1])
+    lam0, lam1 = solve2(
+        (rows[0][0], rows[0][1], rows[1][0], rows[1][1]), rhs[0], rhs[1]
+    )
     mid = [lam0 * cols[0][i] + lam1 * cols[1][i] for i in range(3)]
     record(plan.mid, bodies, mid, out)
     for b in (0, 1):
@@ -208,9 +223,13 @@ def reactions(plan: DyadPlan, bodies: list[Motion], wrenches: list[Wrench],
         record(pair, bodies, total if pair.second != body else [-t for t in total], out)
 
 
-def record(pair: PairPlan, bodies: list[Motion], wrench: Wrench,
-           out: dict[str, tuple[Any, Any, Any]]) -> None:
-    """Store the wrench of ``pair`` on its second link as force and couple about its point."""
+def record(
+    pair: PairPlan,
+    bodies: list[Motion],
+    wrench: Wrench,
+    out: dict[str, tuple[Any, Any, Any]],
+) -> None:
+    """Store the wrench of ``pair`` on its second link: force, couple about its point."""
     fx, fy, tau = wrench
     if pair.kind == "R":
         out[pair.name] = (fx, fy, 0.0)

@@ -39,7 +39,7 @@ class Motion:
         self.set_pose(phi[0], ox[0], oy[0])
 
     def set_pose(self, phi: Any, ox: Any, oy: Any) -> None:
-        """Replace the position level and refresh the cached cosine, sine and offsets."""
+        """Replace the position level; refresh the cached cosine, sine and offsets."""
         self.phi[0], self.ox[0], self.oy[0] = phi, ox, oy
         if np.ndim(phi):
             self.c, self.s = np.cos(phi), np.sin(phi)
@@ -49,12 +49,12 @@ class Motion:
 
     @classmethod
     def fixed(cls, x: float = 0.0, y: float = 0.0) -> Motion:
-        """A body at rest with its origin at ``(x, y)`` (the frame)."""
+        """Return a body at rest with its origin at ``(x, y)`` (the frame)."""
         return cls([0.0, 0.0, 0.0, 0.0], [x, 0.0, 0.0, 0.0], [y, 0.0, 0.0, 0.0])
 
 
 def rotated(m: Motion, d: tuple[float, float]) -> Vec:
-    """The body-fixed offset ``d`` (m, reference pose) turned with the body."""
+    """Return the body-fixed offset ``d`` (m, reference pose) turned with the body."""
     u = m.rot.get(d)
     if u is None:
         c, s = m.c, m.s
@@ -78,7 +78,7 @@ def _relative(m: Motion, u: Vec, k: int) -> Vec:
 
 
 def point(m: Motion, d: tuple[float, float], k: int) -> Vec:
-    """Return the k-th time derivative of the body point with local offset ``d``.
+    r"""Return the k-th time derivative of the body point with local offset ``d``.
 
     Parameters
     ----------
@@ -90,9 +90,9 @@ def point(m: Motion, d: tuple[float, float], k: int) -> Vec:
 
     Notes
     -----
-    With :math:`u = R(\\varphi) d`, :math:`\\dot u = \\omega u^\\perp`,
-    :math:`\\ddot u = \\alpha u^\\perp - \\omega^2 u` and
-    :math:`\\dddot u = (\\dot\\alpha - \\omega^3) u^\\perp - 3\\omega\\alpha u`.
+    With :math:`u = R(\varphi) d`, :math:`\dot u = \omega u^\perp`,
+    :math:`\ddot u = \alpha u^\perp - \omega^2 u` and
+    :math:`\dddot u = (\dot\alpha - \omega^3) u^\perp - 3\omega\alpha u`.
     """
     u = rotated(m, d)
     if k == 0:

@@ -45,8 +45,9 @@ class PairPlan:
         return (-self.axis[1], self.axis[0])
 
 
-def _dot_leibniz(pair: PairPlan, bodies: list[Motion], e: tuple[float, float],
-                 k: int) -> Any:
+def _dot_leibniz(
+    pair: PairPlan, bodies: list[Motion], e: tuple[float, float], k: int
+) -> Any:
     """k-th derivative of ``e(t) . (q2 - q1)`` with ``e`` fixed in the first link."""
     m1, m2 = bodies[pair.first], bodies[pair.second]
     total: Any = 0.0
@@ -59,12 +60,12 @@ def _dot_leibniz(pair: PairPlan, bodies: list[Motion], e: tuple[float, float],
 
 
 def residual(pair: PairPlan, bodies: list[Motion], k: int) -> Vec:
-    """Return the k-th time derivative of the pair's two constraint equations.
+    r"""Return the k-th time derivative of the pair's two constraint equations.
 
     Notes
     -----
-    Revolute: :math:`p_1 - p_2 = 0`. Prismatic: :math:`\\varphi_2 - \\varphi_1 = 0` and
-    :math:`n \\cdot (q_2 - q_1) = 0` with :math:`n` fixed in the first link; the k-th
+    Revolute: :math:`p_1 - p_2 = 0`. Prismatic: :math:`\varphi_2 - \varphi_1 = 0` and
+    :math:`n \cdot (q_2 - q_1) = 0` with :math:`n` fixed in the first link; the k-th
     derivative of the product follows Leibniz's rule.
     """
     m1, m2 = bodies[pair.first], bodies[pair.second]
@@ -78,7 +79,9 @@ def residual(pair: PairPlan, bodies: list[Motion], k: int) -> Vec:
     return rot, _dot_leibniz(pair, bodies, pair.normal, k)
 
 
-def partials(pair: PairPlan, bodies: list[Motion], body: int) -> tuple[tuple[Any, ...], ...]:
+def partials(
+    pair: PairPlan, bodies: list[Motion], body: int
+) -> tuple[tuple[Any, ...], ...]:
     """Return d(residual)/d(o_x, o_y, phi) of one of the pair's bodies, per equation.
 
     The result is two rows (one per equation), each a tuple of three entries: the

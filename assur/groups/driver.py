@@ -19,7 +19,7 @@ __all__ = ["DriverPlan", "balance", "motion"]
 
 @dataclass(frozen=True, slots=True)
 class DriverPlan:
-    """Input link ``body`` driven through ``pair`` at speed ``omega``, acceleration ``epsilon``.
+    """Input link ``body`` driven through ``pair`` at ``omega`` and ``epsilon``.
 
     ``angle0`` is the link's angle in the reference pose (rad): the driver position
     of a revolute driver is the link's absolute angle. ``origin`` is the pair's point
@@ -53,18 +53,28 @@ def motion(plan: DriverPlan, position: Array, rate: float | None = None) -> Moti
     omega = plan.omega if rate is None else rate
     x0, y0 = plan.origin
     if plan.kind == "R":
-        return Motion([position - plan.angle0, omega, plan.epsilon, 0.0],
-                      [x0, 0.0, 0.0, 0.0], [y0, 0.0, 0.0, 0.0])
+        return Motion(
+            [position - plan.angle0, omega, plan.epsilon, 0.0],
+            [x0, 0.0, 0.0, 0.0],
+            [y0, 0.0, 0.0, 0.0],
+        )
     assert plan.pair.axis is not None
     ex, ey = plan.pair.axis
     s = position - plan.reference
     eps = plan.epsilon
-    return Motion([0.0, 0.0, 0.0, 0.0], [x0 + s * ex, omega * ex, eps * ex, 0.0],
-                  [y0 + s * ey, omega * ey, eps * ey, 0.0])
+    return Motion(
+        [0.0, 0.0, 0.0, 0.0],
+        [x0 + s * ex, omega * ex, eps * ex, 0.0],
+        [y0 + s * ey, omega * ey, eps * ey, 0.0],
+    )
 
 
-def balance(plan: DriverPlan, bodies: list[Motion], wrenches: list[Wrench],
-            out: dict[str, tuple[Any, Any, Any]]) -> Any:
+def balance(
+    plan: DriverPlan,
+    bodies: list[Motion],
+    wrenches: list[Wrench],
+    out: dict[str, tuple[Any, Any, Any]],
+) -> Any:
     """Return the balancing torque (N m) or force (N) and store the frame's reaction.
 
     The frame applies the reaction and the balancing load that hold the input link in

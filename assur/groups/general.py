@@ -19,7 +19,14 @@ from assur.groups._dyad import Wrench, record
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan, partials, residual, unit_wrenches
 
-__all__ = ["GeneralPlan", "conditioning", "derivative", "jacobian", "positions", "reactions"]
+__all__ = [
+    "GeneralPlan",
+    "conditioning",
+    "derivative",
+    "jacobian",
+    "positions",
+    "reactions",
+]
 
 MAX_ITERATIONS = 30
 TOLERANCE = 1e-13
@@ -75,17 +82,25 @@ def _residuals(plan: GeneralPlan, bodies: list[Motion], k: int, n: int) -> Array
     return out
 
 
-def positions(plan: GeneralPlan, bodies: list[Motion], n: int,
-              guess: list[tuple[Any, Any, Any]] | None = None) -> list[tuple[Any, Any, Any]]:
+def positions(
+    plan: GeneralPlan,
+    bodies: list[Motion],
+    n: int,
+    guess: list[tuple[Any, Any, Any]] | None = None,
+) -> list[tuple[Any, Any, Any]]:
     """Assemble the group by Newton's method; NaN where it does not converge.
 
     Returns the solved ``(rotation, x, y)`` of every link's origin, the next guess of
     a continuation.
     """
     if guess is None:
-        guess = [(np.zeros(n), np.full(n, o[0]), np.full(n, o[1])) for o in plan.origins]
+        guess = [
+            (np.zeros(n), np.full(n, o[0]), np.full(n, o[1])) for o in plan.origins
+        ]
     for body, (phi, x, y) in zip(plan.bodies, guess, strict=True):
-        bodies[body] = Motion([phi, 0.0, 0.0, 0.0], [x, 0.0, 0.0, 0.0], [y, 0.0, 0.0, 0.0])
+        bodies[body] = Motion(
+            [phi, 0.0, 0.0, 0.0], [x, 0.0, 0.0, 0.0], [y, 0.0, 0.0, 0.0]
+        )
     done = np.zeros(n, dtype=bool)
     for _ in range(MAX_ITERATIONS):
         res = _residuals(plan, bodies, 0, n)
@@ -99,8 +114,11 @@ def positions(plan: GeneralPlan, bodies: list[Motion], n: int,
         step[bad | done] = 0.0
         for i, body in enumerate(plan.bodies):
             m = bodies[body]
-            m.set_pose(m.phi[0] + step[:, 3 * i + 2], m.ox[0] + step[:, 3 * i],
-                       m.oy[0] + step[:, 3 * i + 1])
+            m.set_pose(
+                m.phi[0] + step[:, 3 * i + 2],
+                m.ox[0] + step[:, 3 * i],
+                m.oy[0] + step[:, 3 * i + 1],
+            )
     out = []
     for body in plan.bodies:
         m = bodies[body]
@@ -110,7 +128,9 @@ def positions(plan: GeneralPlan, bodies: list[Motion], n: int,
     return out
 
 
-def derivative(plan: GeneralPlan, bodies: list[Motion], k: int, jac: Array, n: int) -> None:
+def derivative(
+    plan: GeneralPlan, bodies: list[Motion], k: int, jac: Array, n: int
+) -> None:
     """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of every link."""
     for body in plan.bodies:
         m = bodies[body]
@@ -121,9 +141,14 @@ def derivative(plan: GeneralPlan, bodies: list[Motion], k: int, jac: Array, n: i
         m.ox[k], m.oy[k], m.phi[k] = x[:, 3 * i], x[:, 3 * i + 1], x[:, 3 * i + 2]
 
 
-def reactions(plan: GeneralPlan, bodies: list[Motion], wrenches: list[Wrench],
-              out: dict[str, tuple[Any, Any, Any]], n: int) -> None:
-    """Solve every reaction of the group from the three equilibrium equations per link."""
+def reactions(
+    plan: GeneralPlan,
+    bodies: list[Motion],
+    wrenches: list[Wrench],
+    out: dict[str, tuple[Any, Any, Any]],
+    n: int,
+) -> None:
+    """Solve every reaction of the group from three equilibrium equations per link."""
     row = {body: 3 * i for i, body in enumerate(plan.bodies)}
     size = 3 * len(plan.bodies)
     mat = np.zeros((n, size, size))
@@ -140,8 +165,10 @@ def reactions(plan: GeneralPlan, bodies: list[Motion], wrenches: list[Wrench],
             rhs[:, r + i] = -wrenches[body][i]
     lam = np.linalg.solve(mat, rhs[..., None])[..., 0]
     for j, pair in enumerate(plan.pairs):
-        wrench = [lam[:, 2 * j] * units[j][0][i] + lam[:, 2 * j + 1] * units[j][1][i]
-                  for i in (0, 1, 2)]
+        wrench = [
+            lam[:, 2 * j] * units[j][0][i] + lam[:, 2 * j + 1] * units[j][1][i]
+            for i in (0, 1, 2)
+        ]
         record(pair, bodies, wrench, out)
         for body, sign in ((pair.second, 1.0), (pair.first, -1.0)):
             if body not in row:

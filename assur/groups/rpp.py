@@ -1,5 +1,4 @@
-"""RPP dyad: a link pinned to a known link that slides in (or carries) a slider on a
-known guide.
+"""RPP dyad: a pinned link sliding in (or carrying) a slider on a known guide.
 
 The middle prismatic pair makes the pinned link turn with the slider, whose rotation
 the external guide fixes; what is left is linear in the slide.

@@ -19,13 +19,13 @@ __all__ = ["assemble"]
 
 
 def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
-    """Return the common rotation (rad) of both links, twice; NaN where it cannot close.
+    r"""Return the common rotation (rad) of both links, twice; NaN if it cannot close.
 
     Notes
     -----
     With :math:`D = P_h - P_g` from the guide link's pin to the other's and the
-    reference normal :math:`n_0` at angle :math:`\\nu`:
-    :math:`|D|\\cos(\\angle D - \\nu - \\varphi) = n_0\\cdot(d_g - d_h)`.
+    reference normal :math:`n_0` at angle :math:`\nu`:
+    :math:`|D|\cos(\angle D - \nu - \varphi) = n_0\cdot(d_g - d_h)`.
     """
     g = 0 if plan.bodies[0] == plan.mid.first else 1
     h = 1 - g

@@ -17,12 +17,12 @@ __all__ = ["assemble"]
 
 
 def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
-    """Return the first link's rotation (rad) and the slider's slide (m); NaN if open.
+    r"""Return the first link's rotation (rad) and the slider's slide (m); NaN if open.
 
     Notes
     -----
-    The middle pin is :math:`M = G + \\sigma e` on the slider's line and
-    :math:`|M - P| = r`: :math:`\\sigma = -w\\cdot e + \\beta\\sqrt{(w\\cdot e)^2 -
+    The middle pin is :math:`M = G + \sigma e` on the slider's line and
+    :math:`|M - P| = r`: :math:`\sigma = -w\cdot e + \beta\sqrt{(w\cdot e)^2 -
     |w|^2 + r^2}` with :math:`w = G - P`.
     """
     px, py = point(bodies[plan.known[0]], plan.d_known[0], 0)
@@ -34,7 +34,10 @@ def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
     wx, wy = gx + ux - px, gy + uy - py
     b = wx * ex + wy * ey
     with np.errstate(invalid="ignore"):
-        sigma = plan.branch * np.sqrt(b * b - wx * wx - wy * wy
-                                      + d1[0] * d1[0] + d1[1] * d1[1]) - b
+        sigma = (
+            plan.branch
+            * np.sqrt(b * b - wx * wx - wy * wy + d1[0] * d1[0] + d1[1] * d1[1])
+            - b
+        )
     vx, vy = wx + sigma * ex, wy + sigma * ey
     return np.arctan2(d1[0] * vy - d1[1] * vx, d1[0] * vx + d1[1] * vy), sigma

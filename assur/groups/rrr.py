@@ -17,13 +17,14 @@ __all__ = ["assemble"]
 
 
 def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
-    """Return both links' rotations (rad); NaN where the dyad cannot close.
+    r"""Return both links' rotations (rad); NaN where the dyad cannot close.
 
     Notes
     -----
     With pins :math:`P_1, P_2` a distance :math:`L` apart and link radii
-    :math:`r_1, r_2`: :math:`a = (r_1^2 - r_2^2 + L^2)/2L`, :math:`h = \\sqrt{r_1^2-a^2}`,
-    :math:`M = P_1 + a\\,\\hat D + \\beta h\\,\\hat D^\\perp`.
+    :math:`r_1, r_2`: :math:`a = (r_1^2 - r_2^2 + L^2)/2L`,
+    :math:`h = \sqrt{r_1^2-a^2}`,
+    :math:`M = P_1 + a\,\hat D + \beta h\,\hat D^\perp`.
     """
     x1, y1 = point(bodies[plan.known[0]], plan.d_known[0], 0)
     x2, y2 = point(bodies[plan.known[1]], plan.d_known[1], 0)
