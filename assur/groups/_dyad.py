@@ -229,7 +229,7 @@ def record(
     wrench: Wrench,
     out: dict[str, tuple[Any, Any, Any]],
 ) -> None:
-    """Store the wrench of ``pair`` on its second link: force, couple about its point."""
+    """Store the wrench of ``pair`` on its second link as force and couple."""
     fx, fy, tau = wrench
     if pair.kind == "R":
         out[pair.name] = (fx, fy, 0.0)
