@@ -1,0 +1,664 @@
+"""Independent reference computations for the invariant tests.
+
+Nothing here calls assur's solvers: everything is rebuilt from the mechanism's data
+(points, axes, masses, loads) and the columns of a kinematics table.
+
+- poses: each link's rotation from its angle column, the current position (velocity,
+  acceleration) of any point given in the reference pose;
+- kinematic invariants: rigid links, points on slide lines, finite differences in time,
+  trapezoidal consistency of consecutive rows;
+- kinetostatics: every link's applied loads (d'Alembert inertia loads, gravity,
+  external loads), the equilibrium residual of each link under a table's reactions,
+  and a global solve of all links' equilibrium equations at once.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+import assur
+
+GROUND = "ground"
+
+
+# ------------------------------------------------------------------------------------
+# Reference pose
+
+
+def resolve(mech: assur.Mechanism, spec) -> np.ndarray:
+    """Reference-pose coordinates (m) of a point specification."""
+    if isinstance(spec, str):
+        for joint in mech.joints:
+            if joint.name == spec:
+                return resolve(mech, joint.at)
+        for point in mech.points:
+            if point.name == spec:
+                return resolve(mech, point.at)
+        raise KeyError(spec)
+    if isinstance(spec, assur.Toward):
+        a = resolve(mech, spec.start)
+        b = resolve(mech, spec.toward)
+        return a + (b - a) * spec.distance / np.hypot(*(b - a))
+    return np.asarray(spec, dtype=float)
+
+
+def angle0(mech: assur.Mechanism, link: str) -> float:
+    """A link's angle in the reference pose (rad): its axis direction, or 0."""
+    axis = mech.link(link).axis
+    if axis is None:
+        return 0.0
+    d = resolve(mech, axis[1]) - resolve(mech, axis[0])
+    return math.atan2(d[1], d[0])
+
+
+def unit_axis(joint: assur.Joint) -> np.ndarray:
+    axis = np.asarray(joint.axis, dtype=float)
+    return axis / np.hypot(*axis)
+
+
+def reported_points(mech: assur.Mechanism, link: str) -> list[tuple[str, np.ndarray]]:
+    """Points of ``link`` that a table reports, with their reference positions.
+
+    Revolute joints of the link; prismatic and slot joints whose second link it is
+    (their point moves with the second link); its extra points; its centre of mass.
+    """
+    out = []
+    for joint in mech.joints:
+        if link in joint.links and (joint.kind == "revolute" or joint.links[1] == link):
+            out.append((joint.name, resolve(mech, joint.at)))
+    for point in mech.points:
+        if point.link == link:
+            out.append((point.name, resolve(mech, point.at)))
+    data = mech.link(link)
+    if data.center is not None and data.mass:
+        out.append((f"{link}.G", resolve(mech, data.center)))
+    return out
+
+
+def column_pair(table: assur.Table, name: str, level: int) -> np.ndarray:
+    """(n, 2) array of a reported point's position (0), velocity (1), acceleration (2)
+    or jerk (3)."""
+    sx, sy = (("x", "y"), ("vx", "vy"), ("ax", "ay"), ("jx", "jy"))[level]
+    return np.stack([table[f"{name}.{sx}"], table[f"{name}.{sy}"]], axis=-1)
+
+
+def turn(angle: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Rotate the fixed vector(s) ``v`` by the angles ``angle`` (n,): shape (n, 2)."""
+    c, s = np.cos(angle), np.sin(angle)
+    v = np.asarray(v, dtype=float)
+    return np.stack(
+        [c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]], axis=-1
+    )
+
+
+def perp(v: np.ndarray) -> np.ndarray:
+    return np.stack([-v[..., 1], v[..., 0]], axis=-1)
+
+
+@dataclass
+class Pose:
+    """A link's motion from its table columns: rotation from the reference pose and
+    its derivatives (rad, rad/s, ...), and an anchor point with its motion."""
+
+    rotation: np.ndarray
+    rates: tuple[np.ndarray, np.ndarray, np.ndarray]
+    anchor_ref: np.ndarray
+    anchor: tuple[np.ndarray, ...]
+
+    def point(self, ref: np.ndarray, level: int = 0) -> np.ndarray:
+        """Position (0), velocity (1) or acceleration (2) of a body point given by its
+        reference-pose coordinates."""
+        u = turn(self.rotation, np.asarray(ref, dtype=float) - self.anchor_ref)
+        if level == 0:
+            return self.anchor[0] + u
+        w = self.rates[0][:, None]
+        if level == 1:
+            return self.anchor[1] + w * perp(u)
+        a = self.rates[1][:, None]
+        return self.anchor[2] + a * perp(u) - w * w * u
+
+
+def pose(mech: assur.Mechanism, table: assur.Table, link: str) -> Pose:
+    """The motion of ``link`` (the frame included) read from ``table``."""
+    n = len(table)
+    if link == GROUND:
+        zero = np.zeros(n)
+        fixed = np.zeros((n, 2))
+        return Pose(zero, (zero, zero, zero), np.zeros(2), (fixed, fixed, fixed, fixed))
+    rotation = np.radians(table[f"{link}.angle"]) - angle0(mech, link)
+    rates = (table[f"{link}.omega"], table[f"{link}.alpha"], table[f"{link}.jerk"])
+    points = reported_points(mech, link)
+    if not points:
+        msg = f"link {link!r} has no reported point"
+        raise ValueError(msg)
+    name, ref = points[0]
+    anchor = tuple(column_pair(table, name, k) for k in range(4))
+    return Pose(rotation, rates, ref, anchor)
+
+
+# ------------------------------------------------------------------------------------
+# Kinematic invariants
+
+
+def rigid_errors(mech: assur.Mechanism, table: assur.Table) -> dict[str, float]:
+    """Largest error (m) per link of its reported points against the rigid motion
+    given by its angle column and one of its points; and of pairwise distances."""
+    out = {}
+    for link in (lk.name for lk in mech.links):
+        pts = reported_points(mech, link)
+        p = pose(mech, table, link)
+        worst = 0.0
+        for name, ref in pts:
+            now = column_pair(table, name, 0)
+            worst = max(worst, float(np.max(np.abs(now - p.point(ref)))))
+            for other, ref2 in pts:
+                length = np.hypot(*(ref2 - ref))
+                got = np.hypot(*(column_pair(table, other, 0) - now).T)
+                worst = max(worst, float(np.max(np.abs(got - length))))
+        out[link] = worst
+    return out
+
+
+def slide_errors(
+    mech: assur.Mechanism, table: assur.Table
+) -> dict[str, tuple[float, ...]]:
+    """Per prismatic or slot joint: distance (m) of its point from the slide line fixed
+    in its first link, relative rotation of its links (rad, prismatic only), and the
+    error (m) of its slide column."""
+    out = {}
+    for joint in mech.joints:
+        if joint.kind == "revolute":
+            continue
+        first, second = joint.links
+        p1 = pose(mech, table, first)
+        at = resolve(mech, joint.at)
+        base = p1.point(at)
+        direction = turn(p1.rotation, unit_axis(joint))
+        gap = column_pair(table, joint.name, 0) - base
+        off = float(
+            np.max(np.abs(gap[:, 0] * direction[:, 1] - gap[:, 1] * direction[:, 0]))
+        )
+        rot = 0.0
+        if joint.kind == "prismatic":
+            rel = pose(mech, table, second).rotation - p1.rotation
+            rot = float(np.max(np.abs(np.angle(np.exp(1j * rel)))))
+        slide = np.sum(gap * direction, axis=-1)
+        err = (
+            float(np.max(np.abs(slide - table[f"{joint.name}.s"])))
+            if joint.kind == "prismatic"
+            else 0.0
+        )
+        out[joint.name] = (off, rot, err)
+    return out
+
+
+def families(table: assur.Table) -> dict[str, list[np.ndarray]]:
+    """Every quantity with its three time derivatives, in SI units (angles in rad)."""
+    out: dict[str, list[np.ndarray]] = {}
+    for column in table.columns:
+        if column.endswith(".angle"):
+            base = column[:-6]
+            out[base + ".angle"] = [np.radians(table[column])] + [
+                table[f"{base}.{k}"] for k in ("omega", "alpha", "jerk")
+            ]
+        elif column.endswith(".x") and f"{column[:-2]}.vx" in table:
+            base = column[:-2]
+            for c in ("x", "y"):
+                out[f"{base}.{c}"] = [
+                    table[f"{base}.{p}{c}"] for p in ("", "v", "a", "j")
+                ]
+        elif column.endswith(".s") and f"{column[:-2]}.j" in table:
+            base = column[:-2]
+            out[f"{base}.s"] = [table[f"{base}.{k}"] for k in ("s", "v", "a", "j")]
+    return out
+
+
+def driver_rates(mech: assur.Mechanism) -> np.ndarray:
+    return np.array([d.omega for d in mech.drivers])
+
+
+def driver_kinds(mech: assur.Mechanism) -> list[str]:
+    return [mech.joint(d.joint).kind for d in mech.drivers]
+
+
+def to_table_units(mech: assur.Mechanism, drive: np.ndarray) -> np.ndarray:
+    """Driver positions (n, d) in SI (rad, m) to table units (deg, m)."""
+    scale = np.array(
+        [180.0 / math.pi if k == "revolute" else 1.0 for k in driver_kinds(mech)]
+    )
+    out = drive * scale
+    return out[:, 0] if out.shape[1] == 1 else out
+
+
+def stencil_table(
+    mech: assur.Mechanism, centres: np.ndarray, tau: float
+) -> assur.Table:
+    """Kinematics at ``centres`` (n, d) (SI) and a time step ``tau`` before and after,
+    along the motion at the drivers' constant rates: rows (-, 0, +) per centre."""
+    rates = driver_rates(mech)
+    offsets = np.array([-tau, 0.0, tau])[None, :, None] * rates[None, None, :]
+    drive = (centres[:, None, :] + offsets).reshape(-1, len(rates))
+    return assur.kinematics(mech, to_table_units(mech, drive))
+
+
+def difference_errors(
+    mech: assur.Mechanism, centres: np.ndarray, h: float = 1e-3
+) -> dict[str, tuple[float, float]]:
+    """Compare each derivative column with the central difference of the one below.
+
+    ``centres`` are SI driver positions (n, d); the time step moves the fastest driver
+    by ``h`` (rad, or ``h`` times 0.1 m for a prismatic driver). Returns, per quantity
+    and level, the largest error and the tolerance: three times the difference's own
+    truncation error ``tau^2/6 |x^(k+2)|`` (the fourth and fifth derivatives estimated
+    from the jerk's own differences) plus a rounding allowance.
+    """
+    rates = driver_rates(mech)
+    moves = np.array([h if k == "revolute" else 0.1 * h for k in driver_kinds(mech)])
+    tau = float(np.min(moves / np.maximum(np.abs(rates), 1e-300)))
+    table = stencil_table(mech, centres, tau)
+    size = mechanism_size(mech)
+    speed = float(
+        np.max(
+            np.abs(rates)
+            / np.where(np.array(driver_kinds(mech)) == "revolute", 1.0, size)
+        )
+    )
+    out = {}
+    for name, levels in families(table).items():
+        x = [v.reshape(-1, 3) for v in levels]
+        x3 = x[3]
+        x4 = (x3[:, 2] - x3[:, 0]) / (2 * tau)
+        x5 = (x3[:, 2] - 2 * x3[:, 1] + x3[:, 0]) / tau**2
+        higher = {
+            1: np.max(np.abs(x3[:, 1])),
+            2: np.max(np.abs(x4)),
+            3: np.max(np.abs(x5)),
+        }
+        length = 1.0 if name.endswith(".angle") else size
+        for k in (1, 2, 3):
+            below = x[k - 1]
+            if k == 1 and name.endswith(".angle"):
+                step = np.angle(np.exp(1j * (below[:, 2] - below[:, 0])))
+            else:
+                step = below[:, 2] - below[:, 0]
+            fd = step / (2 * tau)
+            err = float(np.max(np.abs(fd - x[k][:, 1])))
+            tol = (
+                3.0 * tau**2 / 6.0 * higher[k]
+                + 1e-12
+                * max(float(np.max(np.abs(below))), length * speed ** (k - 1))
+                / tau
+                + 1e-10 * length * speed**k
+            )
+            out[f"{name}[{k}]"] = (err, tol)
+    return out
+
+
+def mechanism_size(mech: assur.Mechanism) -> float:
+    """Extent plus largest distance from the origin (m) of the joints and points."""
+    pts = np.array(
+        [resolve(mech, j.at) for j in mech.joints]
+        + [resolve(mech, p.at) for p in mech.points]
+    )
+    return max(float(np.max(np.ptp(pts, axis=0)) + np.max(np.abs(pts))), 1e-3)
+
+
+def trapezoid_errors(
+    table: assur.Table, dt: np.ndarray, size: float = 1.0
+) -> dict[str, tuple[float, float]]:
+    """Consecutive rows against the trapezoidal rule.
+
+    x_{i+1} - x_i ~ (v_i + v_{i+1}) dt/2 with error at most dt^3/12 |x'''|; a jump to
+    another branch breaks it.
+
+    ``dt`` (n-1,) is the time between consecutive rows at the drivers' rates; ``size``
+    (m) scales the rounding allowance.
+    """
+    out = {}
+    for name, levels in families(table).items():
+        x, v, _, j = levels
+        step = np.diff(x)
+        if name.endswith(".angle"):
+            step = np.angle(np.exp(1j * step))
+        err = np.abs(step - 0.5 * (v[1:] + v[:-1]) * dt)
+        bound = dt**3 / 12.0 * np.maximum(np.abs(j[1:]), np.abs(j[:-1]))
+        # jerk may peak between rows: allow for its variation over the step
+        length = 1.0 if name.endswith(".angle") else size
+        bound = (
+            3.0 * bound
+            + dt**3 / 12.0 * np.abs(np.diff(j)) * 3.0
+            + 1e-12 * (np.abs(x[1:]) + np.abs(v[1:] * dt) + length)
+        )
+        worst = int(np.argmax(err / bound))
+        out[name] = (float(err[worst]), float(bound[worst]))
+    return out
+
+
+# ------------------------------------------------------------------------------------
+# Kinetostatics
+
+
+def load_value(
+    mech: assur.Mechanism, table: assur.Table, value, components: int
+) -> list:
+    """A constant or tabulated load component by component, one array (n,) each."""
+    n = len(table)
+    if not isinstance(value, assur.LoadTable):
+        vals = np.atleast_1d(np.asarray(value, dtype=float))
+        return [np.full(n, v) for v in vals[:components]]
+    xs = np.asarray(value.table, dtype=float)
+    if value.over == "driver":
+        at = table["angle"]
+        periodic = mech.joint(mech.drivers[0].joint).kind == "revolute"
+        return [
+            np.interp(at, xs, np.asarray(v), period=360.0 if periodic else None)
+            for v in value.values
+        ]
+    at = table[f"{value.over}.s"]
+    return [np.interp(at, xs, np.asarray(v)) for v in value.values]
+
+
+@dataclass
+class Applied:
+    """Per link: resultant force (n, 2), moment about the fixed origin (n,) and power
+    (n,) of its inertia loads, gravity and external loads."""
+
+    force: dict[str, np.ndarray]
+    moment: dict[str, np.ndarray]
+    power: dict[str, np.ndarray]
+    inertia_force: dict[str, np.ndarray]
+    inertia_torque: dict[str, np.ndarray]
+
+
+def applied_loads(
+    mech: assur.Mechanism, table: assur.Table, inertia: bool = True
+) -> Applied:
+    """Every moving link's applied loads, from the mechanism's data and the table's
+    kinematics: ``-m a_G`` at G, ``-J alpha``, ``m g`` at G, forces and torques."""
+    n = len(table)
+    gravity = (
+        np.zeros(2) if mech.gravity is None else np.asarray(mech.gravity, dtype=float)
+    )
+    force, moment, power, fi, mi = {}, {}, {}, {}, {}
+    for link in mech.links:
+        name = link.name
+        f = np.zeros((n, 2))
+        m = np.zeros(n)
+        p = np.zeros(n)
+        w = table[f"{name}.omega"]
+        if link.mass:
+            g_at = column_pair(table, f"{name}.G", 0)
+            g_vel = column_pair(table, f"{name}.G", 1)
+            fi[name] = -link.mass * column_pair(table, f"{name}.G", 2)
+            mi[name] = -link.inertia * table[f"{name}.alpha"]
+            total = link.mass * gravity + (fi[name] if inertia else np.zeros((n, 2)))
+            couple = mi[name] if inertia else np.zeros(n)
+            f += total
+            m += g_at[:, 0] * total[:, 1] - g_at[:, 1] * total[:, 0] + couple
+            p += np.sum(total * g_vel, axis=-1) + couple * w
+        force[name], moment[name], power[name] = f, m, p
+    for load in mech.loads:
+        name = load.link
+        body = pose(mech, table, name)
+        if load.force is not None:
+            ref = resolve(mech, load.at)
+            at, vel = body.point(ref, 0), body.point(ref, 1)
+            fx, fy = load_value(mech, table, load.force, 2)
+            vec = np.stack([fx, fy], axis=-1)
+            force[name] = force[name] + vec
+            moment[name] = moment[name] + at[:, 0] * fy - at[:, 1] * fx
+            power[name] = power[name] + np.sum(vec * vel, axis=-1)
+        if load.torque is not None:
+            (tau,) = load_value(mech, table, load.torque, 1)
+            moment[name] = moment[name] + tau
+            power[name] = power[name] + tau * table[f"{name}.omega"]
+    return Applied(force, moment, power, fi, mi)
+
+
+@dataclass
+class Reactions:
+    """Per joint the force by its first link on its second (n, 2) and the couple (n,)
+    about its point (prismatic and slot joints); per driver the balancing load."""
+
+    force: dict[str, np.ndarray]
+    couple: dict[str, np.ndarray]
+    balancing: np.ndarray
+
+
+def _driver_link(mech: assur.Mechanism, driver: assur.Driver) -> str:
+    a, b = mech.joint(driver.joint).links
+    return b if a == GROUND else a
+
+
+def _unit_wrenches(
+    mech: assur.Mechanism, table: assur.Table, joint: assur.Joint
+) -> list:
+    """Wrenches (force (n, 2), couple (n,)) on the joint's second link per unit unknown,
+    with the point they act at (n, 2)."""
+    n = len(table)
+    at = column_pair(table, joint.name, 0)
+    zero = np.zeros(n)
+    if joint.kind == "revolute":
+        return [
+            (np.tile([1.0, 0.0], (n, 1)), zero, at),
+            (np.tile([0.0, 1.0], (n, 1)), zero, at),
+        ]
+    normal = turn(pose(mech, table, joint.links[0]).rotation, perp(unit_axis(joint)))
+    wrenches = [(normal, zero, at)]
+    if joint.kind == "prismatic":
+        wrenches.append((np.zeros((n, 2)), np.ones(n), at))
+    return wrenches
+
+
+def global_solve(mech: assur.Mechanism, table: assur.Table) -> Reactions:
+    """Solve every link's three equilibrium equations at once for all the reactions and
+    balancing loads (two unknowns per revolute or prismatic joint, one per slot, one
+    per driver), batch over the table's rows."""
+    n = len(table)
+    links = [lk.name for lk in mech.links]
+    row = {name: 3 * i for i, name in enumerate(links)}
+    columns = []  # per unknown: list of (link, sign, force, couple, at)
+    owners = []
+    for joint in mech.joints:
+        for k, (f, c, at) in enumerate(_unit_wrenches(mech, table, joint)):
+            columns.append(
+                [(joint.links[1], 1.0, f, c, at), (joint.links[0], -1.0, f, c, at)]
+            )
+            owners.append((joint.name, k))
+    for i, driver in enumerate(mech.drivers):
+        link = _driver_link(mech, driver)
+        joint = mech.joint(driver.joint)
+        if joint.kind == "revolute":
+            wrench = (np.zeros((n, 2)), np.ones(n), np.zeros((n, 2)))
+        else:
+            wrench = (
+                np.tile(unit_axis(joint), (n, 1)),
+                np.zeros(n),
+                column_pair(table, joint.name, 0),
+            )
+        columns.append([(link, 1.0, *wrench)])
+        owners.append(("driver", i))
+    size = 3 * len(links)
+    if len(columns) != size:
+        msg = f"{len(columns)} unknowns for {size} equations"
+        raise ValueError(msg)
+    mat = np.zeros((n, size, size))
+    for j, entries in enumerate(columns):
+        for link, sign, f, c, at in entries:
+            if link == GROUND:
+                continue
+            r = row[link]
+            mat[:, r, j] += sign * f[:, 0]
+            mat[:, r + 1, j] += sign * f[:, 1]
+            mat[:, r + 2, j] += sign * (at[:, 0] * f[:, 1] - at[:, 1] * f[:, 0] + c)
+    loads = applied_loads(mech, table)
+    rhs = np.zeros((n, size))
+    for link in links:
+        r = row[link]
+        rhs[:, r : r + 2] = -loads.force[link]
+        rhs[:, r + 2] = -loads.moment[link]
+    x = np.linalg.solve(mat, rhs[..., None])[..., 0]
+    force, couple = {}, {}
+    balancing = np.zeros((n, len(mech.drivers)))
+    for j, (owner, k) in enumerate(owners):
+        if owner == "driver":
+            balancing[:, k] = x[:, j]
+            continue
+        joint = mech.joint(owner)
+        f, c, _ = _unit_wrenches(mech, table, joint)[k]
+        force[owner] = force.get(owner, np.zeros((n, 2))) + x[:, j, None] * f
+        couple[owner] = couple.get(owner, np.zeros(n)) + x[:, j] * c
+    return Reactions(force, couple, balancing)
+
+
+def table_reactions(mech: assur.Mechanism, table: assur.Table) -> Reactions:
+    """The reactions and balancing loads as the table gives them."""
+    force, couple = {}, {}
+    for joint in mech.joints:
+        force[joint.name] = np.stack(
+            [table[f"{joint.name}.Fx"], table[f"{joint.name}.Fy"]], axis=-1
+        )
+        couple[joint.name] = (
+            table[f"{joint.name}.M"]
+            if joint.kind != "revolute"
+            else np.zeros(len(table))
+        )
+    balancing = np.stack(
+        [balancing_column(mech, table, i) for i in range(len(mech.drivers))], axis=-1
+    )
+    return Reactions(force, couple, balancing)
+
+
+def balancing_column(
+    mech: assur.Mechanism, table: assur.Table, i: int, check: bool = False
+) -> np.ndarray:
+    driver = mech.drivers[i]
+    what = "torque" if mech.joint(driver.joint).kind == "revolute" else "force"
+    suffix = "_check" if check else ""
+    if len(mech.drivers) == 1:
+        return table[f"driver.{what}{suffix}"]
+    return table[f"{driver.joint}.{what}{suffix}"]
+
+
+def link_residuals(
+    mech: assur.Mechanism, table: assur.Table, reactions: Reactions
+) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Each moving link's unbalanced force (n, 2) and moment about the origin (n,)
+    under its applied loads, the given reactions and balancing loads."""
+    loads = applied_loads(mech, table)
+    force = {k: v.copy() for k, v in loads.force.items()}
+    moment = {k: v.copy() for k, v in loads.moment.items()}
+    force[GROUND] = np.zeros((len(table), 2))
+    moment[GROUND] = np.zeros(len(table))
+    for joint in mech.joints:
+        f = reactions.force[joint.name]
+        at = column_pair(table, joint.name, 0)
+        tau = at[:, 0] * f[:, 1] - at[:, 1] * f[:, 0] + reactions.couple[joint.name]
+        for link, sign in ((joint.links[1], 1.0), (joint.links[0], -1.0)):
+            force[link] = force[link] + sign * f
+            moment[link] = moment[link] + sign * tau
+    for i, driver in enumerate(mech.drivers):
+        link = _driver_link(mech, driver)
+        joint = mech.joint(driver.joint)
+        b = reactions.balancing[:, i]
+        if joint.kind == "revolute":
+            moment[link] = moment[link] + b
+            moment[GROUND] = moment[GROUND] - b
+        else:
+            f = b[:, None] * unit_axis(joint)
+            at = column_pair(table, joint.name, 0)
+            tau = at[:, 0] * f[:, 1] - at[:, 1] * f[:, 0]
+            force[link] = force[link] + f
+            moment[link] = moment[link] + tau
+            force[GROUND] = force[GROUND] - f
+            moment[GROUND] = moment[GROUND] - tau
+    return {k: (force[k], moment[k]) for k in force}
+
+
+def load_scale(mech: assur.Mechanism, table: assur.Table) -> tuple[float, float]:
+    """The largest force (N) among applied loads and reactions, and the mechanism's size
+    (m), to scale tolerances."""
+    loads = applied_loads(mech, table)
+    biggest = max(float(np.max(np.abs(f))) for f in loads.force.values())
+    for joint in mech.joints:
+        biggest = max(
+            biggest,
+            float(np.max(np.abs(table[f"{joint.name}.Fx"]))),
+            float(np.max(np.abs(table[f"{joint.name}.Fy"]))),
+        )
+    pts = np.array([resolve(mech, j.at) for j in mech.joints])
+    size = float(np.max(np.ptp(pts, axis=0))) + float(np.max(np.abs(pts)))
+    return max(biggest, 1e-12), max(size, 1e-3)
+
+
+# ------------------------------------------------------------------------------------
+# Assertions shared by the test modules
+
+
+def assert_rigid(
+    mech: assur.Mechanism, table: assur.Table, rtol: float = 1e-10
+) -> None:
+    """Every link's reported points move rigidly with its angle column."""
+    limit = rtol * mechanism_size(mech)
+    errors = rigid_errors(mech, table)
+    bad = {k: v for k, v in errors.items() if not v <= limit}
+    assert not bad, f"points off their rigid link (m, limit {limit:.3g}): {bad}"
+
+
+def assert_slides(
+    mech: assur.Mechanism, table: assur.Table, rtol: float = 1e-10
+) -> None:
+    """Every prismatic or slot joint's point stays on the line fixed in its first link,
+    prismatic joints keep their links' relative rotation, slide columns agree."""
+    size = mechanism_size(mech)
+    for name, (off, rot, err) in slide_errors(mech, table).items():
+        assert off <= rtol * size, f"{name}: point {off:.3g} m off its slide line"
+        assert rot <= rtol, f"{name}: links turned {rot:.3g} rad relative to each other"
+        assert err <= rtol * size, f"{name}: slide column off by {err:.3g} m"
+
+
+def assert_reference_pose(
+    mech: assur.Mechanism, table: assur.Table, row: int, rtol: float = 1e-10
+) -> None:
+    """Row ``row`` (at the reference drive) puts every reported point where it is in the
+    reference pose."""
+    limit = rtol * mechanism_size(mech)
+    for link in mech.links:
+        for name, ref in reported_points(mech, link.name):
+            got = column_pair(table, name, 0)[row]
+            assert np.max(np.abs(got - ref)) <= limit, (
+                f"{name}: {got} in the reference pose, expected {ref}"
+            )
+
+
+def assert_differences(
+    mech: assur.Mechanism, centres: np.ndarray, h: float = 1e-3
+) -> None:
+    """Velocity, acceleration and jerk columns equal the central differences in time of
+    the columns below them (``centres``: SI driver positions (n, d))."""
+    errors = difference_errors(
+        mech, np.asarray(centres, dtype=float).reshape(len(centres), -1), h
+    )
+    bad = {k: v for k, v in errors.items() if not v[0] <= v[1]}
+    assert not bad, f"derivative != finite difference (error, tolerance): {bad}"
+
+
+def assert_continuous(table: assur.Table, dt: float) -> None:
+    """Consecutive rows (``dt`` s apart) are linked by the trapezoidal rule: no jump."""
+    errors = trapezoid_errors(
+        table, np.full(len(table) - 1, dt), mechanism_size(table.mechanism)
+    )
+    bad = {k: v for k, v in errors.items() if not v[0] <= v[1]}
+    assert not bad, f"rows jump (error, bound): {bad}"
+
+
+def si(mech: assur.Mechanism, positions: np.ndarray) -> np.ndarray:
+    """Table-unit driver positions (n,) or (n, d) to SI (n, d)."""
+    arr = np.asarray(positions, dtype=float).reshape(len(positions), -1)
+    scale = np.array(
+        [math.pi / 180.0 if k == "revolute" else 1.0 for k in driver_kinds(mech)]
+    )
+    return arr * scale
