@@ -25,14 +25,30 @@ from assur.structure import ROMAN, Group, Structure, structure
 
 __all__ = ["render_report", "write_report"]
 
-PALETTE = ("#334155", "#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00",
-           "#56b4e9", "#8c564b", "#6b7280", "#b8860b")
+PALETTE = (
+    "#334155",
+    "#0072b2",
+    "#d55e00",
+    "#009e73",
+    "#cc79a7",
+    "#e69f00",
+    "#56b4e9",
+    "#8c564b",
+    "#6b7280",
+    "#b8860b",
+)
 """Group colours in order of attachment: the first driver slate, then Okabe-Ito hues."""
 DIGITS = 6
 """Significant digits of the numbers embedded in the page."""
 GUIDE_MARGIN = 0.08
 """Length a guide line runs past the slide's travel at each end, times the
 mechanism's size."""
+DRAWING_WIDTH = 556
+"""Width (px) of the drawing inside its margins."""
+ROTATING = 1e-12
+"""Largest angular velocity (rad/s) of a link that counts as not rotating."""
+ROUND_OFF = 1e-9
+"""Values below this (N, N m, m, rad/s) are round-off and show as 0."""
 LONG_TABLE = 60
 """Tables with more rows than this show every 10th row."""
 
@@ -62,7 +78,7 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
 
     Notes
     -----
-    Positions that cannot be assembled are left out and named in the page. A force
+    Positions that cannot be assembled are left out and counted in the page. A force
     analysis runs when a link has a mass or a load is applied; otherwise the report
     shows the kinematics only.
 
@@ -80,16 +96,19 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
     sweep = forces if with_forces else kinematics
     table = sweep(mechanism, angles, skip_unassembled=True)
     if len(table) == 0:
-        msg = (f"report of {mechanism.name or 'the mechanism'}: no driver position of "
-               "the sweep can be assembled; expected at least one")
+        msg = (
+            f"report of {mechanism.name or 'the mechanism'}: no driver position of "
+            "the sweep can be assembled; expected at least one"
+        )
         raise AssemblyError(msg)
     struct = structure(mechanism)
-    data = report_data(plan, struct, table)
-    return _page(mechanism, struct, table, data)
+    data = _report_data(plan, struct, table)
+    return _page(plan, struct, table, data)
 
 
-def write_report(mechanism: Mechanism, path: str | os.PathLike[str],
-                 angles: Any = None) -> None:
+def write_report(
+    mechanism: Mechanism, path: str | os.PathLike[str], angles: Any = None
+) -> None:
     """Write the HTML report of ``mechanism`` to ``path`` (UTF-8).
 
     Parameters are those of :func:`render_report`.
@@ -109,7 +128,7 @@ def write_report(mechanism: Mechanism, path: str | os.PathLike[str],
         stream.write(text)
 
 
-def report_data(plan: Plan, struct: Structure, table: Table) -> dict[str, Any]:
+def _report_data(plan: Plan, struct: Structure, table: Table) -> dict[str, Any]:
     """Return the JSON-ready data the page draws from.
 
     Positions are in m, angles in deg (or m for a prismatic driver), forces in N,
@@ -121,36 +140,61 @@ def report_data(plan: Plan, struct: Structure, table: Table) -> dict[str, Any]:
     data: dict[str, Any] = {
         "name": plan.mechanism.name,
         "description": plan.mechanism.description,
-        "driver": {"label": "driver position" if prismatic else "driver angle",
-                   "unit": "m" if prismatic else "deg"},
+        "driver": {
+            "label": "driver position" if prismatic else "driver angle",
+            "unit": "m" if prismatic else "deg",
+        },
         "rows": len(table),
         "angle": _floats(table["angle"]),
         "analysis": "forces" if table.force_state is not None else "kinematics",
         "groups": _groups(struct),
         "links": _links(plan, colours),
-        "joints": [{"name": p.name, "kind": p.kind, "first": plan.bodies[p.first],
-                    "second": plan.bodies[p.second],
-                    "slot": "~" in plan.bodies[p.second]} for p in joints],
-        "points": {name: {"x": _floats(table[f"{name}.x"]),
-                          "y": _floats(table[f"{name}.y"])} for name in plan.points},
+        "joints": [
+            {
+                "name": p.name,
+                "kind": p.kind,
+                "first": plan.bodies[p.first],
+                "second": plan.bodies[p.second],
+                "slot": "~" in plan.bodies[p.second],
+            }
+            for p in joints
+        ],
+        "points": {
+            name: {"x": _floats(table[f"{name}.x"]), "y": _floats(table[f"{name}.y"])}
+            for name in plan.points
+        },
         "extra_points": [p.name for p in plan.mechanism.points],
         "guides": [_guide(plan, table, p) for p in joints if p.kind == "P"],
     }
     data["bounds"] = _bounds(plan, data)
-    charts, columns = _charts(plan, table)
-    data["charts"] = charts
+    data["charts"] = _charts(plan, table)
+    data["current"] = _current(plan, table)
+    # the series the page plots or lists, once each; positions are in "points"
+    columns = [s["key"] for c in data["charts"] for s in c["series"]]
+    columns += [
+        key
+        for rows in data["current"].values()
+        for row in rows
+        for key in row["keys"]
+        if not key.endswith((".x", ".y"))
+    ]
+    columns = list(dict.fromkeys(columns))
     data["columns"] = {key: _floats(table[key]) for key in columns}
     data["forces"] = None
     if table.force_state is not None:
-        data["forces"] = {"joints": [p.name for p in joints],
-                          "balancing": _balancing(plan)[0]}
+        data["forces"] = {
+            "joints": [p.name for p in joints],
+            "balancing": _balancing(plan)[0],
+        }
     return data
 
 
 def _floats(values: Array) -> list[float | None]:
     """Round to DIGITS significant digits for a compact page; NaN becomes null."""
-    return [float(f"{v:.{DIGITS}g}") if math.isfinite(v) else None
-            for v in np.asarray(values, dtype=float).tolist()]
+    return [
+        float(f"{v:.{DIGITS}g}") if math.isfinite(v) else None
+        for v in np.asarray(values, dtype=float).tolist()
+    ]
 
 
 def _public(name: str) -> str:
@@ -171,12 +215,18 @@ def _body_colours(struct: Structure) -> dict[str, str]:
 
 
 def _groups(struct: Structure) -> list[dict[str, Any]]:
-    return [{"label": "driver" if g.group_class == 1 else g.label,
-             "class": g.group_class, "roman": ROMAN.get(g.group_class, str(g.group_class)),
-             "order": g.order, "kind": g.kind,
-             "links": [_public(x) for x in g.links if x != GROUND],
-             "colour": PALETTE[i % len(PALETTE)]}
-            for i, g in enumerate(_all_groups(struct))]
+    return [
+        {
+            "label": "driver" if g.group_class == 1 else g.label,
+            "class": g.group_class,
+            "roman": ROMAN.get(g.group_class, str(g.group_class)),
+            "order": g.order,
+            "kind": g.kind,
+            "links": [_public(x) for x in g.links if x != GROUND],
+            "colour": PALETTE[i % len(PALETTE)],
+        }
+        for i, g in enumerate(_all_groups(struct))
+    ]
 
 
 def _links(plan: Plan, colours: dict[str, str]) -> list[dict[str, Any]]:
@@ -197,19 +247,37 @@ def _links(plan: Plan, colours: dict[str, str]) -> list[dict[str, Any]]:
         if "~" in name:
             continue
         center = f"{name}.G" if f"{name}.G" in plan.points else None
-        out.append({"name": name, "colour": colours[name], "points": points,
-                    "center": center})
+        guides = [
+            p.name
+            for p in plan.pairs.values()
+            if p.kind == "P" and p.first == b and not p.virtual
+        ]
+        out.append(
+            {
+                "name": name,
+                "colour": colours[name],
+                "points": points,
+                "guides": guides,
+                "center": center,
+            }
+        )
     return out
 
 
 def _guide(plan: Plan, table: Table, pair: Any) -> dict[str, Any]:
-    """The slide line of a prismatic pair over the sweep, fixed in its first link."""
+    """Return a prismatic pair's slide line (ends, m; direction) over the sweep.
+
+    The line is fixed in the pair's first link and covers the slide's travel.
+    """
     slide = np.asarray(table[f"{pair.name}.s"])
     margin = GUIDE_MARGIN * plan.scale
     axis = np.asarray(pair.axis, dtype=float)
     # the reference point's offset from the first link's origin, in its own frame
     at = pair.d_first
-    ends = [at + axis * (np.nanmin(slide) - margin), at + axis * (np.nanmax(slide) + margin)]
+    ends = [
+        at + axis * (np.nanmin(slide) - margin),
+        at + axis * (np.nanmax(slide) + margin),
+    ]
     phi = table.state.link[0, :, pair.first]
     origin = table.state.origin[0, :, pair.first]
     c, s = np.cos(phi), np.sin(phi)
@@ -223,8 +291,10 @@ def _guide(plan: Plan, table: Table, pair: Any) -> dict[str, Any]:
 
 
 def _bounds(plan: Plan, data: dict[str, Any]) -> list[float]:
-    """Box (m) holding every point and guide over the sweep, never thinner than a tenth
-    of the mechanism's size."""
+    """Return the box (m) that holds every point and guide over the sweep.
+
+    The box is never thinner than a tenth of the mechanism's size.
+    """
     xs = [v for p in data["points"].values() for v in p["x"] if v is not None]
     ys = [v for p in data["points"].values() for v in p["y"] if v is not None]
     for g in data["guides"]:
@@ -249,8 +319,13 @@ def _balancing(plan: Plan) -> tuple[list[dict[str, str]], str]:
         key = "driver" if len(plan.drivers) == 1 else d.pair.name
         tag = f" at {d.pair.name}" if len(plan.drivers) > 1 else ""
         series.append({"name": f"balancing {what}{tag}", "key": f"{key}.{what}"})
-        series.append({"name": f"check by virtual power{tag}",
-                       "key": f"{key}.{what}_check", "dashed": True})
+        series.append(
+            {
+                "name": f"check by virtual power{tag}",
+                "key": f"{key}.{what}_check",
+                "dashed": True,
+            }
+        )
     return series, " or ".join(sorted(units))
 
 
@@ -259,81 +334,173 @@ def _moving_links(plan: Plan, table: Table) -> list[str]:
     out = []
     for name in plan.bodies[1:]:
         key = f"{name}.omega"
-        if "~" not in name and key in table and np.nanmax(np.abs(table[key])) > 1e-12:
+        if "~" in name or key not in table:
+            continue
+        if np.nanmax(np.abs(table[key])) > ROTATING:
             out.append(name)
     return out
 
 
-def _charts(plan: Plan, table: Table) -> tuple[list[dict[str, Any]], list[str]]:
-    """Diagram specifications and the table columns they need."""
+def _current(plan: Plan, table: Table) -> dict[str, list[dict[str, Any]]]:
+    """Rows of the live tables of values at the shown position (column keys)."""
+    joints = [p for p in plan.pairs.values() if not p.virtual]
+    forced = table.force_state is not None
+    links = [
+        {"name": x, "keys": [f"{x}.angle", f"{x}.omega", f"{x}.alpha"]}
+        for x in _moving_links(plan, table)
+    ]
+    slides = [
+        {"name": p.name, "keys": [f"{p.name}.s", f"{p.name}.v", f"{p.name}.a"]}
+        for p in joints
+        if p.kind == "P"
+    ]
+    suffixes = ("Fx", "Fy", "F") if forced else ("x", "y")
+    points = [
+        {"name": p.name, "keys": [f"{p.name}.{x}" for x in suffixes]} for p in joints
+    ]
+    return {"links": links, "slides": slides, "joints": points}
+
+
+def _charts(plan: Plan, table: Table) -> list[dict[str, Any]]:
+    """Diagram specifications: title, unit and the column key of each series."""
     charts = []
     if table.force_state is not None:
         series, unit = _balancing(plan)
-        charts.append({"id": "chart-balancing", "title": "Balancing load and its check",
-                       "unit": unit, "series": series})
+        charts.append(
+            {
+                "id": "chart-balancing",
+                "title": "Balancing load and its check",
+                "unit": unit,
+                "series": series,
+            }
+        )
         joints = [p.name for p in plan.pairs.values() if not p.virtual]
-        charts.append({"id": "chart-reactions", "title": "Joint reactions |F|",
-                       "unit": "N", "series": [{"name": j, "key": f"{j}.F"} for j in joints]})
+        charts.append(
+            {
+                "id": "chart-reactions",
+                "title": "Joint reactions |F|",
+                "unit": "N",
+                "series": [{"name": j, "key": f"{j}.F"} for j in joints],
+            }
+        )
     links = _moving_links(plan, table)
-    charts.append({"id": "chart-omega", "title": "Angular velocities of the links",
-                   "unit": "rad/s",
-                   "series": [{"name": x, "key": f"{x}.omega"} for x in links]})
-    columns = [s["key"] for c in charts for s in c["series"]]
-    if table.force_state is not None:
-        for p in plan.pairs.values():
-            if not p.virtual:
-                columns += [f"{p.name}.Fx", f"{p.name}.Fy"]
-    return charts, list(dict.fromkeys(columns))
+    charts.append(
+        {
+            "id": "chart-omega",
+            "title": "Angular velocities of the links",
+            "unit": "rad/s",
+            "series": [{"name": x, "key": f"{x}.omega"} for x in links],
+        }
+    )
+    return charts
+
+
+def _drawing_height(bounds: list[float]) -> int:
+    """Height (px) of the 640 px wide drawing that fits the mechanism's box."""
+    ratio = (bounds[3] - bounds[2]) / (bounds[1] - bounds[0])
+    return int(min(max(round(DRAWING_WIDTH * ratio) + 90, 260), 560))
 
 
 def _number(v: float) -> str:
-    return f"{v:.5g}" if math.isfinite(v) else "–"
+    """Format a table value; round-off below ROUND_OFF shows as 0."""
+    if not math.isfinite(v):
+        return "–"
+    return "0" if abs(v) < ROUND_OFF else f"{v:.5g}"
 
 
 def _meta(struct: Structure, table: Table, data: dict[str, Any]) -> str:
     driver = data["driver"]
     angle = np.asarray(table["angle"])
-    parts = [f"W = {struct.dof}", f"class {ROMAN.get(struct.mechanism_class)} mechanism",
-             f"{len(table)} positions, {driver['label']} {_number(angle[0])} to "
-             f"{_number(angle[-1])} {driver['unit']}",
-             "force analysis" if data["forces"] else "kinematics only (no masses or loads)"]
+    parts = [
+        f"W = {struct.dof}",
+        f"class {ROMAN.get(struct.mechanism_class)} mechanism",
+        f"{len(table)} positions, {driver['label']} {_number(angle[0])} to "
+        f"{_number(angle[-1])} {driver['unit']}",
+        "force analysis" if data["forces"] else "kinematics only (no masses or loads)",
+    ]
     if table.skipped.size:
-        parts.append(f"{table.skipped.shape[0]} positions left out: they cannot be assembled")
+        total = len(table) + table.skipped.shape[0]
+        parts.append(
+            f"{table.skipped.shape[0]} of {total} positions left out (the mechanism "
+            "cannot be assembled there)"
+        )
     return " · ".join(escape(p) for p in parts)
 
 
 def _structure_html(struct: Structure, data: dict[str, Any]) -> str:
     rows = []
-    for step, (g, info) in enumerate(zip(_all_groups(struct), data["groups"]), 1):
+    for step, (g, info) in enumerate(
+        zip(_all_groups(struct), data["groups"], strict=True), 1
+    ):
         kind = "input link" if g.group_class == 1 else g.kind
-        cells = [f'<span class="swatch" style="background:{info["colour"]}"></span>',
-                 str(step), info["roman"], str(g.order), kind,
-                 ", ".join(info["links"]), ", ".join(_public(x) for x in g.internal),
-                 ", ".join(_public(x) for x in g.external)]
-        rows.append("<tr>" + "".join(f"<td>{c if i == 0 else escape(c)}</td>"
-                                     for i, c in enumerate(cells)) + "</tr>")
-    head = "".join(f"<th>{h}</th>" for h in ("", "Step", "Class", "Order", "Kind",
-                                                 "Links", "Internal pairs",
-                                                 "External pairs"))
+        cells = [
+            f'<span class="swatch" style="background:{info["colour"]}"></span>',
+            str(step),
+            info["roman"],
+            str(g.order),
+            kind,
+            ", ".join(info["links"]),
+            ", ".join(_public(x) for x in g.internal),
+            ", ".join(_public(x) for x in g.external),
+        ]
+        rows.append(
+            "<tr>"
+            + "".join(
+                f"<td>{c if i == 0 else escape(c)}</td>" for i, c in enumerate(cells)
+            )
+            + "</tr>"
+        )
+    head = "".join(
+        f"<th>{h}</th>"
+        for h in (
+            "",
+            "Step",
+            "Class",
+            "Order",
+            "Kind",
+            "Links",
+            "Internal pairs",
+            "External pairs",
+        )
+    )
     formula = escape(struct.formula.replace(" -> ", " → "))
-    return (f'<p class="formula">{formula}</p>\n'
-            f'<table class="groups"><thead><tr>{head}</tr></thead>\n<tbody>'
-            + "\n".join(rows) + "</tbody></table>\n"
-            f'<pre class="report">{escape(str(struct))}</pre>')
+    return (
+        f'<p class="formula">{formula}</p>\n'
+        f'<table class="groups"><thead><tr>{head}</tr></thead>\n<tbody>'
+        + "\n".join(rows)
+        + "</tbody></table>\n"
+        + _report_html(str(struct))
+    )
+
+
+def _report_html(text: str) -> str:
+    """Return the teaching report as HTML, one block per line.
+
+    A line that wraps goes on indented under its start.
+    """
+    lines = []
+    for line in text.splitlines():
+        indent = len(line) - len(line.lstrip(" "))
+        body = escape(line.strip()) or "&nbsp;"
+        lines.append(
+            f'<div style="padding-left:{indent + 4}ch;text-indent:-4ch">{body}</div>'
+        )
+    return '<div class="report">' + "\n".join(lines) + "</div>"
 
 
 def _legend_html(data: dict[str, Any]) -> str:
     items = []
     for g in data["groups"]:
-        what = ("driver" if g["class"] == 1
-                else f"order {g['order']} · {g['kind']}")
+        what = "driver" if g["class"] == 1 else f"order {g['order']} · {g['kind']}"
         text = f"{g['roman']} · {what} · {', '.join(g['links'])}"
-        items.append(f'<li><span class="swatch" style="background:{g["colour"]}"></span>'
-                     f"{escape(text)}</li>")
+        swatch = f'<span class="swatch" style="background:{g["colour"]}"></span>'
+        items.append(f"<li>{swatch}{escape(text)}</li>")
     return '<ul class="legend">' + "".join(items) + "</ul>"
 
 
-def _table_columns(plan: Plan, table: Table, data: dict[str, Any]) -> list[tuple[str, str]]:
+def _table_columns(
+    plan: Plan, table: Table, data: dict[str, Any]
+) -> list[tuple[str, str]]:
     driver = data["driver"]
     columns = [("angle", f"{driver['label']} ({driver['unit']})")]
     joints = [p for p in plan.pairs.values() if not p.virtual]
@@ -344,8 +511,11 @@ def _table_columns(plan: Plan, table: Table, data: dict[str, Any]) -> list[tuple
             columns.append((s["key"], f"{s['name']} ({unit})"))
         return columns
     columns += [(f"{x}.omega", f"ω {x} (rad/s)") for x in _moving_links(plan, table)]
-    columns += [(f"{p.name}.s", f"slide {p.name} (m)") for p in joints if p.kind == "P"
-                and "~" not in plan.bodies[p.second]]
+    columns += [
+        (f"{p.name}.s", f"slide {p.name} (m)")
+        for p in joints
+        if p.kind == "P" and "~" not in plan.bodies[p.second]
+    ]
     return columns
 
 
@@ -354,15 +524,24 @@ def _table_html(plan: Plan, table: Table, data: dict[str, Any]) -> str:
     step = 10 if len(table) > LONG_TABLE else 1
     values = [np.asarray(table[key]) for key, _ in columns]
     head = "".join(f"<th>{escape(title)}</th>" for _, title in columns)
-    rows = [f'<tr data-row="{i}">' + "".join(f"<td>{_number(float(v[i]))}</td>"
-                                             for v in values) + "</tr>"
-            for i in range(0, len(table), step)]
-    note = (f"Every {step}th of {len(table)} positions." if step > 1
-            else f"All {len(table)} positions.")
-    return (f'<p class="note">{note} The highlighted row is the position shown in the '
-            'drawing.</p>\n<div class="table-wrap"><table class="values" id="values">'
-            f"<thead><tr>{head}</tr></thead>\n<tbody>" + "\n".join(rows)
-            + "</tbody></table></div>")
+    rows = [
+        f'<tr data-row="{i}">'
+        + "".join(f"<td>{_number(float(v[i]))}</td>" for v in values)
+        + "</tr>"
+        for i in range(0, len(table), step)
+    ]
+    note = (
+        f"Every {step}th of {len(table)} positions."
+        if step > 1
+        else f"All {len(table)} positions."
+    )
+    return (
+        f'<p class="note">{note} The highlighted row is the position shown in the '
+        'drawing.</p>\n<div class="table-wrap"><table class="values" id="values">'
+        f"<thead><tr>{head}</tr></thead>\n<tbody>"
+        + "\n".join(rows)
+        + "</tbody></table></div>"
+    )
 
 
 def _json(data: dict[str, Any]) -> str:
@@ -371,11 +550,15 @@ def _json(data: dict[str, Any]) -> str:
     return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
 
 
-def _page(mech: Mechanism, struct: Structure, table: Table, data: dict[str, Any]) -> str:
+def _page(plan: Plan, struct: Structure, table: Table, data: dict[str, Any]) -> str:
+    mech = plan.mechanism
     title = escape(mech.name or "Mechanism")
-    description = (f'<p class="description">{escape(mech.description)}</p>'
-                   if mech.description else "")
-    forces_note = ('<p class="note" id="force-note"></p>' if data["forces"] else "")
+    description = (
+        f'<p class="description">{escape(mech.description)}</p>'
+        if mech.description
+        else ""
+    )
+    forces_note = '<p class="note" id="force-note"></p>' if data["forces"] else ""
     table_title = "Reactions and balancing load" if data["forces"] else "Kinematics"
     n = len(table)
     return f"""<!DOCTYPE html>
@@ -393,33 +576,47 @@ def _page(mech: Mechanism, struct: Structure, table: Table, data: dict[str, Any]
 <p class="meta">{_meta(struct, table, data)}</p>
 </header>
 <main>
+<div class="column">
 <section class="card" id="drawing">
 <h2>Mechanism</h2>
-<svg id="mechanism" viewBox="0 0 640 460" role="img" aria-label="Drawing of the mechanism">
+<svg id="mechanism" viewBox="0 0 640 {_drawing_height(data["bounds"])}" role="img"
+ aria-label="Drawing of the mechanism">
 <defs>
-<pattern id="hatch" width="6" height="6" patternUnits="userSpaceOnUse" patternTransform="rotate(45)"><line x1="0" y1="0" x2="0" y2="6" stroke="#9ca3af" stroke-width="1.6"/></pattern>
-<marker id="arrowhead" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="6" markerHeight="6" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="#c2185b"/></marker>
+<pattern id="hatch" width="6" height="6" patternUnits="userSpaceOnUse"
+ patternTransform="rotate(45)">
+<line x1="0" y1="0" x2="0" y2="6" stroke="#9ca3af" stroke-width="1.6"/></pattern>
+<marker id="arrowhead" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="6"
+ markerHeight="6" orient="auto-start-reverse">
+<path d="M0,0 L10,5 L0,10 z" fill="#c2185b"/></marker>
 </defs>
 </svg>
 <div class="controls">
 <button type="button" id="play">Play</button>
-<input type="range" id="angle" min="0" max="{n - 1}" step="1" value="0" aria-label="Driver position">
+<input type="range" id="angle" min="0" max="{n - 1}" step="1" value="0"
+ aria-label="Driver position">
 <output id="readout" for="angle"></output>
 </div>
 {_legend_html(data)}
 {forces_note}
 </section>
+<section class="card" id="position">
+<h2>At this position</h2>
+<div class="current" id="current"></div>
+</section>
+</div>
+<div class="column">
 <section class="card" id="structure">
 <h2>Structure</h2>
 {_structure_html(struct, data)}
 </section>
+</div>
 <section class="card wide" id="diagrams">
 <h2>Diagrams</h2>
 <div class="charts" id="charts"></div>
 </section>
 <section class="card wide" id="table">
 <h2>{table_title}</h2>
-{_table_html(compile_plan(mech), table, data)}
+{_table_html(plan, table, data)}
 </section>
 </main>
 <footer>assur report · SI units: m, N, N·m, rad/s; angles in degrees · the drawing and
@@ -462,10 +659,17 @@ output { font-variant-numeric: tabular-nums; font-size: 0.9rem; min-width: 15em;
 .swatch { display: inline-block; width: 12px; height: 12px; border-radius: 3px;
   margin-right: 6px; vertical-align: -1px; }
 .formula { font-weight: 600; margin: 0 0 10px; }
-pre.report { font: 12px/1.45 ui-monospace, SFMono-Regular, Menlo, Consolas, monospace;
-  background: #f3f4f6; border-radius: 6px; padding: 10px 12px; margin: 12px 0 0;
-  white-space: pre-wrap; overflow-wrap: anywhere; }
-table { border-collapse: collapse; font-size: 0.85rem; font-variant-numeric: tabular-nums; }
+.report { font: 12px/1.5 ui-monospace, SFMono-Regular, Menlo, Consolas, monospace;
+  background: #f3f4f6; border-radius: 6px; padding: 10px 12px; margin: 14px 0 0; }
+.report div { white-space: pre-wrap; }
+.column { display: flex; flex-direction: column; gap: 18px; min-width: 0; }
+.current { display: flex; flex-wrap: wrap; gap: 10px 28px; align-items: flex-start; }
+.current table td { text-align: right; min-width: 5.5em; }
+.current table td:first-child { text-align: left; min-width: 0; font-weight: 600; }
+.current table th { text-align: right; }
+.current table th:first-child { text-align: left; }
+table { border-collapse: collapse; font-size: 0.85rem;
+  font-variant-numeric: tabular-nums; }
 th, td { padding: 3px 9px; border-bottom: 1px solid var(--line); }
 th { font-weight: 600; text-align: left; color: #374151; }
 table.groups td:first-child { padding-right: 0; }
@@ -473,10 +677,11 @@ table.groups td:first-child { padding-right: 0; }
   border-radius: 6px; }
 table.values th { position: sticky; top: 0; background: #f9fafb; text-align: right; }
 table.values td { text-align: right; }
-table.values tr.current td { background: #e0ecff; }
-.charts { display: grid; grid-template-columns: repeat(auto-fit, minmax(380px, 1fr));
+table.values tr.shown td { background: #e0ecff; }
+.charts { display: grid; grid-template-columns: repeat(auto-fit, minmax(340px, 1fr));
   gap: 14px 22px; }
 figure { margin: 0; }
+.charts figure { max-width: 640px; }
 figcaption { font-size: 0.9rem; font-weight: 600; margin-bottom: 4px; }
 figure svg { display: block; width: 100%; height: auto; }
 .chart-legend { display: flex; flex-wrap: wrap; gap: 2px 14px; font-size: 0.8rem;
@@ -484,7 +689,8 @@ figure svg { display: block; width: 100%; height: auto; }
 .chart-legend i { display: inline-block; width: 16px; margin-right: 5px;
   vertical-align: 3px; border-top: 2.5px solid; }
 .chart-legend i.dashed { border-top-style: dashed; }
-svg text { font-family: system-ui, -apple-system, "Segoe UI", Roboto, Arial, sans-serif; }
+svg text { font-family: system-ui, -apple-system, "Segoe UI", Roboto, Arial,
+  sans-serif; }
 .label { font-size: 12px; fill: #374151; paint-order: stroke; stroke: #fcfcfd;
   stroke-width: 3px; stroke-linejoin: round; }
 .axis text { font-size: 11px; fill: var(--muted); }
@@ -518,7 +724,8 @@ SCRIPT = r"""
   }
   function fmt(v) {
     if (v === null || v === undefined || !isFinite(v)) return "–";
-    return String(Number(v.toPrecision(4)));
+    // round-off (a frictionless guide's 1e-14 N) reads as the zero it is
+    return Math.abs(v) < 1e-9 ? "0" : String(Number(v.toPrecision(4)));
   }
 
   // model (m, y up) to drawing (px, y down), one scale for the whole sweep
@@ -535,8 +742,8 @@ SCRIPT = r"""
   for (const link of data.links) colour[link.name] = link.colour;
 
   const layer = {};
-  for (const name of ["guides", "links", "blocks", "pivots", "joints", "marks", "forces",
-    "labels"]) layer[name] = el("g", {class: name}, svg);
+  for (const name of ["guides", "links", "blocks", "pivots", "joints", "marks",
+    "forces", "labels"]) layer[name] = el("g", {class: name}, svg);
 
   // guides: a hatched rail on the frame, a slot (channel) in a moving link
   const guides = data.guides.map((g) => {
@@ -569,34 +776,60 @@ SCRIPT = r"""
     if (ny < 0 || (Math.abs(ny) < 1e-9 && nx < 0)) { nx = -nx; ny = -ny; }
     const h = 10, w = 7;
     set(item.axis, ends);
-    set(item.rail, {x1: a[0] + nx * h, y1: a[1] + ny * h, x2: b[0] + nx * h, y2: b[1] + ny * h});
+    set(item.rail, {x1: a[0] + nx * h, y1: a[1] + ny * h, x2: b[0] + nx * h,
+      y2: b[1] + ny * h});
     set(item.hatch, {points: [a, b, b, a].map((p, j) => {
       const d = j < 2 ? h : h + w;
       return (p[0] + nx * d) + "," + (p[1] + ny * d);
     }).join(" ")});
   }
 
-  // links: a bar between two points, a plate through three or more
-  const links = data.links.filter((l) => l.points.length > 1).map((l) => {
-    let order = l.points.slice();
-    if (order.length > 2) {
-      const p = order.map((name) => at(name, 0));
-      const cx = p.reduce((s, q) => s + q[0], 0) / p.length;
-      const cy = p.reduce((s, q) => s + q[1], 0) / p.length;
-      const angle = p.map((q) => Math.atan2(q[1] - cy, q[0] - cx));
-      order = order.map((name, j) => [angle[j], name]).sort((u, v) => u[0] - v[0])
-        .map((u) => u[1]);
+  // links: a bar between two points, a plate through three or more; a guide fixed in
+  // a link counts as a point at its middle, so that the link reaches its slot
+  const guideOf = {};
+  for (const g of data.guides) guideOf[g.joint] = g;
+  function anchor(a, i) {
+    if (!a.guide) return at(a.name, i);
+    const g = guideOf[a.name];
+    return [X((g.x1[i] + g.x2[i]) / 2), Y((g.y1[i] + g.y2[i]) / 2)];
+  }
+  const links = data.links.map((l) => {
+    let order = l.points.map((name) => ({name: name, guide: false}))
+      .concat(l.guides.map((name) => ({name: name, guide: true})));
+    if (order.length < 2) return null;
+    const p = order.map((a) => anchor(a, 0));
+    let area = 0;
+    p.forEach((q, j) => {
+      const r = p[(j + 1) % p.length];
+      area += q[0] * r[1] - r[0] * q[1];
+    });
+    if (Math.abs(area) < 1e-3 * W * H) {
+      // (nearly) on one line: a bar between the two points farthest apart
+      let best = [0, 1], far = -1;
+      for (let a = 0; a < p.length; a++) {
+        for (let b = a + 1; b < p.length; b++) {
+          const d = Math.hypot(p[a][0] - p[b][0], p[a][1] - p[b][1]);
+          if (d > far) { far = d; best = [a, b]; }
+        }
+      }
+      order = best.map((j) => order[j]);
+    } else {
+      const cx = p.reduce((sum, q) => sum + q[0], 0) / p.length;
+      const cy = p.reduce((sum, q) => sum + q[1], 0) / p.length;
+      order = order.map((a, j) => [Math.atan2(p[j][1] - cy, p[j][0] - cx), a])
+        .sort((u, v) => u[0] - v[0]).map((u) => u[1]);
     }
     const attrs = {"data-link": l.name, stroke: l.colour, "stroke-linecap": "round",
       "stroke-linejoin": "round"};
     const node = order.length === 2
-      ? el("line", Object.assign(attrs, {"stroke-width": 9, "stroke-opacity": 0.9}), layer.links)
+      ? el("line", Object.assign(attrs, {"stroke-width": 9, "stroke-opacity": 0.9}),
+        layer.links)
       : el("polygon", Object.assign(attrs, {"stroke-width": 6, fill: l.colour,
         "fill-opacity": 0.2}), layer.links);
     return {node: node, order: order};
-  });
+  }).filter((item) => item !== null);
   function drawLink(item, i) {
-    const p = item.order.map((name) => at(name, i));
+    const p = item.order.map((a) => anchor(a, i));
     if (item.order.length === 2) {
       set(item.node, {x1: p[0][0], y1: p[0][1], x2: p[1][0], y2: p[1][1]});
     } else {
@@ -607,8 +840,19 @@ SCRIPT = r"""
   const moving = (node, x, y, deg) => set(node, {transform:
     "translate(" + x + " " + y + ")" + (deg ? " rotate(" + deg + ")" : "")});
   const blocks = [], pivots = [], circles = [], labels = [], marks = [];
-  const guideOf = {};
-  for (const item of guides) guideOf[item.g.joint] = item.g;
+  const together = (a, b) => data.points[a].x.every((x, i) => x === null ||
+    Math.hypot(x - data.points[b].x[i], data.points[a].y[i] - data.points[b].y[i]) <
+    1e-6 * (bx1 - bx0));
+  function label(name, offset) {
+    const same = labels.find((item) => together(item.name, name));
+    if (same) {
+      same.node.textContent += ", " + name;
+      return;
+    }
+    const text = el("text", {class: "label", dx: offset, dy: -offset}, layer.labels);
+    text.textContent = name;
+    labels.push({node: text, name: name});
+  }
   for (const j of data.joints) {
     if (j.kind === "P" && !j.slot) {
       const group = el("g", {"data-block": j.name}, layer.blocks);
@@ -631,18 +875,14 @@ SCRIPT = r"""
         "stroke-width": 2, "data-joint": j.name}, layer.joints);
       circles.push({node: circle, name: j.name});
     }
-    const text = el("text", {class: "label", dx: 9, dy: -9}, layer.labels);
-    text.textContent = j.name;
-    labels.push({node: text, name: j.name});
+    label(j.name, 9);
   }
   for (const name of data.extra_points) {
     const link = data.links.find((l) => l.points.includes(name));
     const dot = el("circle", {r: 4, fill: link ? link.colour : "#111827",
       "data-point": name}, layer.joints);
     circles.push({node: dot, name: name});
-    const text = el("text", {class: "label", dx: 8, dy: -8}, layer.labels);
-    text.textContent = name;
-    labels.push({node: text, name: name});
+    label(name, 8);
   }
   if (data.forces) {
     for (const l of data.links) {
@@ -661,13 +901,13 @@ SCRIPT = r"""
   if (data.forces) {
     let most = 0;
     for (const j of data.forces.joints) {
-      for (const v of data.columns[j + ".Fx"].map((x, i) =>
-        Math.hypot(x, data.columns[j + ".Fy"][i]))) if (isFinite(v)) most = Math.max(most, v);
+      for (const v of data.columns[j + ".F"]) if (v !== null) most = Math.max(most, v);
     }
     const BAR = 60;
     const raw = most * BAR / (0.24 * Math.min(W, H)) || 1;
     const mag = Math.pow(10, Math.floor(Math.log10(raw)));
-    const newtons = [1, 2, 5, 10].map((m) => m * mag).find((s) => s >= raw * (1 - 1e-9));
+    const newtons = [1, 2, 5, 10].map((m) => m * mag)
+      .find((s) => s >= raw * (1 - 1e-9));
     perNewton = BAR / newtons;
     for (const j of data.forces.joints) {
       const line = el("line", {stroke: "#c2185b", "stroke-width": 2.2,
@@ -679,9 +919,10 @@ SCRIPT = r"""
       "stroke-width": 2.2, "marker-end": "url(#arrowhead)"}, bar);
     const label = el("text", {x: 20 + BAR, y: H - 12, class: "label"}, bar);
     label.textContent = fmt(newtons) + " N";
-    document.getElementById("force-note").textContent = "Arrows: the reaction at each " +
-      "joint, the force of its first link on its second (the bar in the lower left corner " +
-      "is " + fmt(newtons) + " N). Filled circles mark the centres of mass.";
+    document.getElementById("force-note").textContent = "Arrows: the reaction at " +
+      "each joint, the force of its first link on its second (the bar in the lower " +
+      "left corner is " + fmt(newtons) + " N). Filled circles mark the centres of " +
+      "mass.";
   }
 
   function drawMechanism(i) {
@@ -704,7 +945,8 @@ SCRIPT = r"""
     }
     for (const item of arrows) {
       const p = at(item.name, i);
-      const fx = data.columns[item.name + ".Fx"][i], fy = data.columns[item.name + ".Fy"][i];
+      const fx = data.columns[item.name + ".Fx"][i];
+      const fy = data.columns[item.name + ".Fy"][i];
       const shown = Math.hypot(fx, fy) * perNewton > 3;
       set(item.node, {x1: p[0], y1: p[1], x2: p[0] + fx * perNewton,
         y2: p[1] - fy * perNewton, visibility: shown ? "visible" : "hidden"});
@@ -736,8 +978,9 @@ SCRIPT = r"""
     figure.appendChild(legend);
     document.getElementById("charts").appendChild(figure);
     const xs = data.angle;
-    const series = spec.series.map((item, j) => Object.assign({values:
-      data.columns[item.key], colour: item.dashed ? "#111827" : SERIES[j % SERIES.length]}, item));
+    const series = spec.series.map((item, j) => Object.assign({
+      values: data.columns[item.key],
+      colour: item.dashed ? "#111827" : SERIES[j % SERIES.length]}, item));
     const finite = series.flatMap((item) => item.values.filter((v) => v !== null));
     let lo = Math.min(...finite), hi = Math.max(...finite);
     if (!(hi - lo > 1e-12 * Math.max(1, Math.abs(hi)))) {
@@ -762,16 +1005,18 @@ SCRIPT = r"""
     const xstep = ticks(xa, xb, 6, degrees);
     for (let x = Math.ceil(xa / xstep - 1e-9) * xstep, j = 0; x <= xb + 1e-9 && j < 60;
       x += xstep, j++) {
-      el("line", {x1: px(x), x2: px(x), y1: m.t, y2: CH - m.b, stroke: "#eef0f3"}, axis);
-      el("text", {x: px(x), y: CH - m.b + 15, "text-anchor": "middle"}, axis).textContent =
-        fmt(x);
+      el("line", {x1: px(x), x2: px(x), y1: m.t, y2: CH - m.b, stroke: "#eef0f3"},
+        axis);
+      el("text", {x: px(x), y: CH - m.b + 15, "text-anchor": "middle"}, axis)
+        .textContent = fmt(x);
     }
     el("rect", {x: m.l, y: m.t, width: CW - m.l - m.r, height: CH - m.t - m.b,
       fill: "none", stroke: "#d1d5db"}, axis);
     el("text", {x: (m.l + CW - m.r) / 2, y: CH - 6, "text-anchor": "middle"}, axis)
       .textContent = data.driver.label + " (" + data.driver.unit + ")";
-    el("text", {x: 13, y: (m.t + CH - m.b) / 2, "text-anchor": "middle",
-      transform: "rotate(-90 13 " + (m.t + CH - m.b) / 2 + ")"}, axis).textContent = spec.unit;
+    const middle = (m.t + CH - m.b) / 2;
+    el("text", {x: 13, y: middle, "text-anchor": "middle",
+      transform: "rotate(-90 13 " + middle + ")"}, axis).textContent = spec.unit;
     const cursor = el("line", {y1: m.t, y2: CH - m.b, stroke: "#6b7280",
       "stroke-dasharray": "3 3", class: "cursor"}, s);
     const dots = [];
@@ -804,7 +1049,33 @@ SCRIPT = r"""
       });
     };
   }
-  const marks_ = data.charts.filter((spec) => spec.series.length).map(chart);
+  const cursors = data.charts.filter((spec) => spec.series.length).map(chart);
+
+  // live tables of the values at the shown position
+  const live = [];
+  const value = (key, i) => key in data.columns ? data.columns[key][i]
+    : data.points[key.slice(0, -2)][key.slice(-1)][i];
+  function liveTable(head, rows) {
+    if (!rows.length) return;
+    const table = document.createElement("table");
+    const tr = table.createTHead().insertRow();
+    for (const text of head) {
+      const th = document.createElement("th");
+      th.textContent = text;
+      tr.appendChild(th);
+    }
+    const body = table.createTBody();
+    for (const row of rows) {
+      const line = body.insertRow();
+      line.insertCell().textContent = row.name;
+      for (const key of row.keys) live.push({cell: line.insertCell(), key: key});
+    }
+    document.getElementById("current").appendChild(table);
+  }
+  liveTable(["link", "angle (deg)", "ω (rad/s)", "α (rad/s²)"], data.current.links);
+  liveTable(["slide", "s (m)", "v (m/s)", "a (m/s²)"], data.current.slides);
+  liveTable(data.forces ? ["joint", "Fx (N)", "Fy (N)", "|F| (N)"]
+    : ["joint", "x (m)", "y (m)"], data.current.joints);
 
   const rows = {};
   for (const row of document.querySelectorAll("#values tr[data-row]")) {
@@ -813,9 +1084,10 @@ SCRIPT = r"""
   let current = null;
   function update(i) {
     drawMechanism(i);
-    marks_.forEach((mark) => mark(i));
-    let text = data.driver.label + " " + fmt(data.angle[i]) + " " +
-      (data.driver.unit === "deg" ? "°" : "m");
+    cursors.forEach((mark) => mark(i));
+    for (const item of live) item.cell.textContent = fmt(value(item.key, i));
+    let text = data.driver.label + " " + fmt(data.angle[i]) +
+      (data.driver.unit === "deg" ? "°" : " m");
     if (data.forces) {
       for (const item of data.forces.balancing) {
         if (item.dashed) continue;
@@ -824,9 +1096,9 @@ SCRIPT = r"""
       }
     }
     readout.textContent = text;
-    if (current) current.classList.remove("current");
+    if (current) current.classList.remove("shown");
     current = rows[i] || null;
-    if (current) current.classList.add("current");
+    if (current) current.classList.add("shown");
   }
   slider.addEventListener("input", () => update(Number(slider.value)));
 
