@@ -339,7 +339,7 @@ def _take_state(s: _kin.KinematicState, ok: Array) -> _kin.KinematicState:
     return _kin.KinematicState(
         s.drive[ok],
         s.link[:, ok],
-        s.origin[:, ok],
+        s.origin[ok],
         s.point[:, ok],
         {k: v[:, ok] for k, v in s.slide.items()},
     )

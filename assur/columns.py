@@ -66,7 +66,8 @@ def build_columns(
             )
         for k, key in ((1, "omega"), (2, "alpha"), (3, "jerk")):
             data[f"{name}.{key}"] = state.link[k, :, b]
-    for p, name in enumerate(plan.points):
+    for name in plan.points:
+        p = plan.point_index[name]
         for k in range(4):
             data[f"{name}.{POINT_SUFFIXES[2 * k]}"] = state.point[k, :, p, 0]
             data[f"{name}.{POINT_SUFFIXES[2 * k + 1]}"] = state.point[k, :, p, 1]

@@ -66,10 +66,11 @@ class KinematicState:
     link : ndarray (4, n, B)
         Each link's rotation from the reference pose (rad) and its derivatives
         (rad/s, rad/s^2, rad/s^3); index 0 is the frame.
-    origin : ndarray (4, n, B, 2)
-        Each link's origin (m) and its derivatives.
-    point : ndarray (4, n, P, 2)
-        Position (m), velocity, acceleration and jerk of every reported point.
+    origin : ndarray (n, B, 2)
+        Each link's origin, m (the point its body-fixed offsets start from).
+    point : ndarray (4, n, U, 2)
+        Position (m), velocity, acceleration and jerk of every distinct reported
+        point; ``Plan.point_index`` gives a point's slot by name.
     slide : dict of str to ndarray (4, n)
         Slide (m) of every prismatic pair and its derivatives.
     """
@@ -214,9 +215,9 @@ def allocate(plan: Plan, n: int) -> KinematicState:
     Each array is stored with the driver position last (contiguous rows per link and
     point, so that chunks are written in place) and exposed driver position first.
     """
-    count, points = len(plan.bodies), len(plan.points)
+    count, points = len(plan.bodies), len(plan.point_sets)
     link = np.empty((4, count, n)).transpose(0, 2, 1)
-    origin = np.empty((4, 2, count, n)).transpose(0, 3, 2, 1)
+    origin = np.empty((2, count, n)).transpose(2, 1, 0)
     point = np.empty((4, 2, points, n)).transpose(0, 3, 2, 1)
     drive = np.empty((len(plan.drivers), n)).T
     slides = {name: np.empty((4, n)) for name, p in plan.pairs.items() if p.kind == "P"}
@@ -250,17 +251,17 @@ def collect(
     if out is None:
         out = allocate(plan, n)
     rows = slice(start, start + n)
-    link, origin, point = out.link[:, rows], out.origin[:, rows], out.point[:, rows]
+    link, origin, point = out.link[:, rows], out.origin[rows], out.point[:, rows]
     for b, m in enumerate(bodies):
         for k in range(4):
             link[k, :, b] = m.phi[k]
-            origin[k, :, b, 0] = m.ox[k]
-            origin[k, :, b, 1] = m.oy[k]
+        origin[:, b, 0] = m.ox[0]
+        origin[:, b, 1] = m.oy[0]
     # point by point on rows of the chunk: temporaries stay small enough for the cache
     # and below the allocator's mmap threshold, and rotations solved already are reused;
     # coincident points are computed once, a body's origin and a still body's
     # derivatives need no rotation terms
-    for b, d, idx in plan.point_sets:
+    for slot, (b, d) in enumerate(plan.point_sets):
         m = bodies[b]
         still = all(m.phi[j].__class__ is float and not m.phi[j] for j in (1, 2, 3))
         for k in range(4):
@@ -268,8 +269,7 @@ def collect(
                 xy = (m.ox[k], m.oy[k])
             else:
                 xy = point_of(m, d, k)
-            for p in idx:
-                point[k, :, p, 0], point[k, :, p, 1] = xy
+            point[k, :, slot, 0], point[k, :, slot, 1] = xy
     slides = {name: arr[:, rows] for name, arr in out.slide.items()}
     _slides(plan, bodies, slides)
     drive = out.drive[rows]

@@ -55,10 +55,10 @@ class Plan:
     point_offsets : tuple
         The same offsets as tuples of floats, the kernels' constants.
     point_sets : tuple
-        Distinct ``(body, offset)`` with the indices of the reported points there
-        (a joint, a centre of mass and a load point often coincide).
+        The distinct ``(body, offset)`` among the reported points (a joint, a centre
+        of mass and a load point often coincide): the slots of a state's points.
     point_index : dict of str to int
-        Index of every reported point by name.
+        The slot of every reported point, by name.
     scale : float
         Size of the mechanism, m (largest distance between two pairs).
     """
@@ -77,7 +77,7 @@ class Plan:
     point_offset: Array
     scale: float
     point_offsets: tuple[tuple[float, float], ...] = ()
-    point_sets: tuple[tuple[int, tuple[float, float], tuple[int, ...]], ...] = ()
+    point_sets: tuple[tuple[int, tuple[float, float]], ...] = ()
     point_index: dict[str, int] = dataclasses.field(default_factory=dict)
 
     @property
@@ -157,9 +157,9 @@ def compile_plan(mech: Mechanism) -> Plan:
     solvers = tuple(_solver(plan, g, index) for g in groups)
     points, body, offset = _points(mech, plan, index)
     offsets = tuple(_pt(d) for d in offset)
-    sets: dict[tuple[int, tuple[float, float]], list[int]] = {}
-    for p, (b, d) in enumerate(zip(body.tolist(), offsets, strict=False)):
-        sets.setdefault((b, d), []).append(p)
+    slots: dict[tuple[int, tuple[float, float]], int] = {}
+    for b, d in zip(body.tolist(), offsets, strict=True):
+        slots.setdefault((b, d), len(slots))
     return dataclasses.replace(
         plan,
         drivers=driver_plans,
@@ -168,8 +168,11 @@ def compile_plan(mech: Mechanism) -> Plan:
         point_body=body,
         point_offset=offset,
         point_offsets=offsets,
-        point_sets=tuple((b, d, tuple(idx)) for (b, d), idx in sets.items()),
-        point_index={name: p for p, name in enumerate(points)},
+        point_sets=tuple(slots),
+        point_index={
+            name: slots[(b, d)]
+            for name, b, d in zip(points, body.tolist(), offsets, strict=True)
+        },
     )
 
 

@@ -66,7 +66,7 @@ class _Context:
     def pose(self, row: int) -> _Pose:
         """Return the links' placement at ``row``."""
         state = self.table.state
-        return _Pose(state.link[0, row], state.origin[0, row])
+        return _Pose(state.link[0, row], state.origin[row])
 
     def hidden(self, body: int) -> bool:
         """Whether ``body`` is a virtual block standing for a slot."""
