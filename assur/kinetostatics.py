@@ -188,7 +188,7 @@ def solve(
         out.shaking[rows, i] = wrenches[0][i]
     out.residual[rows] = _residual(plan, bodies, applied, reactions, balancing, state)
     for name, (force, couple) in reactions.items():
-        out.magnitude[name][rows] = np.hypot(force[:, 0], force[:, 1])
+        out.magnitude[name][rows] = np.sqrt(force[:, 0] ** 2 + force[:, 1] ** 2)
         pair = plan.pairs[name]
         if pair.kind == "P":
             out.offset[name][rows] = _offset(pair, bodies, force, couple)
