@@ -1,0 +1,97 @@
+"""A self-contained HTML report: structure, animated drawing, diagrams and tables.
+
+The report is one file with inline CSS and JavaScript and its numbers embedded as JSON,
+so it opens offline in any browser. Python gathers the data from the numerical core;
+plain JavaScript in the page draws the mechanism and the diagrams as SVG. The style
+sheet, the script and the page template are data files of this package.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+from assur.analysis import default_positions, forces, kinematics
+from assur.errors import AssemblyError
+from assur.html._data import report_data
+from assur.html._page import assemble_page
+from assur.loads import compile_loads
+from assur.model import Mechanism
+from assur.plan import compile_plan
+from assur.structure import structure
+
+__all__ = ["render_report", "write_report"]
+
+
+def render_report(mechanism: Mechanism, angles: Any = None) -> str:
+    """Return the HTML report of ``mechanism`` as one self-contained page.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+    angles : array_like, optional
+        Driver positions, deg (m for a prismatic driver); shape (n,) or, with several
+        drivers, (n, drivers). By default one turn from the reference pose in steps
+        of 1 deg (:func:`assur.analysis.default_positions`).
+
+    Returns
+    -------
+    str
+        The page: structure report, an animated SVG drawing with a range slider
+        (``id="angle"``), diagrams over the sweep and a table; the data as JSON in
+        ``<script type="application/json" id="assur-data">``.
+
+    Raises
+    ------
+    AssemblyError
+        When no driver position of the sweep can be assembled.
+
+    Notes
+    -----
+    Positions that cannot be assembled are left out and counted in the page. A force
+    analysis runs when a link has a mass or a load is applied; otherwise the report
+    shows the kinematics only.
+
+    Examples
+    --------
+    >>> from assur import catalog
+    >>> page = render_report(catalog.slider_crank(), angles=range(0, 360, 30))
+    >>> page.startswith("<!DOCTYPE html>") and 'id="assur-data"' in page
+    True
+    """
+    plan = compile_plan(mechanism)
+    with_forces = not compile_loads(plan).empty
+    if angles is None:
+        angles = default_positions(mechanism)
+    sweep = forces if with_forces else kinematics
+    table = sweep(mechanism, angles, skip_unassembled=True)
+    if len(table) == 0:
+        msg = (
+            f"report of {mechanism.name or 'the mechanism'}: no driver position of "
+            "the sweep can be assembled; expected at least one"
+        )
+        raise AssemblyError(msg)
+    struct = structure(mechanism)
+    return assemble_page(plan, struct, table, report_data(plan, struct, table))
+
+
+def write_report(
+    mechanism: Mechanism, path: str | os.PathLike[str], angles: Any = None
+) -> None:
+    """Write the HTML report of ``mechanism`` to ``path`` (UTF-8).
+
+    Parameters are those of :func:`render_report`.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> from assur import catalog
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     target = pathlib.Path(tmp) / "four_bar.html"
+    ...     write_report(catalog.four_bar(), target, angles=[0.0, 90.0])
+    ...     target.read_text(encoding="utf-8").count("<html")
+    1
+    """
+    text = render_report(mechanism, angles)
+    with open(path, "w", encoding="utf-8", newline="\n") as stream:
+        stream.write(text)

@@ -1,0 +1,62 @@
+"""Assembly of the report page from its template, its sections and its data.
+
+The template ``page.html``, the style sheet ``report.css`` and the script
+``report.js`` are data files of this package, read when a page is rendered and
+inlined, so that the page stays one file that opens offline.
+"""
+
+from __future__ import annotations
+
+from html import escape
+from importlib.resources import files
+from string import Template
+from typing import Any
+
+from assur.analysis import Table
+from assur.html._data import to_json
+from assur.html._sections import legend_html, meta_html, structure_html, table_html
+from assur.plan import Plan
+from assur.structure import Structure
+
+DRAWING_WIDTH = 556
+"""Width (px) of the drawing inside its margins."""
+
+
+def assemble_page(
+    plan: Plan, struct: Structure, table: Table, data: dict[str, Any]
+) -> str:
+    """Return the whole page: the template filled with sections, data and assets."""
+    mech = plan.mechanism
+    description = (
+        f'<p class="description">{escape(mech.description)}</p>'
+        if mech.description
+        else ""
+    )
+    forced = data["forces"] is not None
+    fields = {
+        "title": escape(mech.name or "Mechanism"),
+        "description": description,
+        "meta": meta_html(struct, table, data),
+        "drawing_height": drawing_height(data["bounds"]),
+        "last_row": len(table) - 1,
+        "legend": legend_html(data),
+        "force_note": '<p class="note" id="force-note"></p>' if forced else "",
+        "structure": structure_html(struct, data),
+        "table_title": "Reactions and balancing load" if forced else "Kinematics",
+        "table": table_html(plan, table),
+        "data": to_json(data),
+        "css": _asset("report.css"),
+        "script": _asset("report.js"),
+    }
+    return Template(_asset("page.html")).substitute(fields)
+
+
+def drawing_height(bounds: list[float]) -> int:
+    """Return the height (px) of the 640 px wide drawing that fits the box (m)."""
+    ratio = (bounds[3] - bounds[2]) / (bounds[1] - bounds[0])
+    return int(min(max(round(DRAWING_WIDTH * ratio) + 90, 260), 560))
+
+
+def _asset(name: str) -> str:
+    """Return the text of the package data file ``name``."""
+    return files("assur.html").joinpath(name).read_text(encoding="utf-8")

@@ -1,0 +1,151 @@
+"""The parts of the report written in HTML by Python, readable without JavaScript.
+
+The summary line under the title, the group legend, the structure section and the
+table of values; every name and number from the model is escaped here.
+"""
+
+from __future__ import annotations
+
+import math
+from html import escape
+from typing import Any
+
+import numpy as np
+
+from assur.analysis import Table
+from assur.html._data import all_groups, public
+from assur.html._series import table_columns
+from assur.plan import Plan
+from assur.structure import ROMAN, Structure
+
+ROUND_OFF = 1e-9
+"""Values below this (N, N m, m, rad/s) are round-off and show as 0."""
+LONG_TABLE = 60
+"""Tables with more rows than this show every 10th row."""
+GROUP_HEADINGS = (
+    "",
+    "Step",
+    "Class",
+    "Order",
+    "Kind",
+    "Links",
+    "Internal pairs",
+    "External pairs",
+)
+"""Column headings of the table of groups; the first column holds the colour."""
+
+
+def number(v: float) -> str:
+    """Format a table value; round-off below ROUND_OFF shows as 0."""
+    if not math.isfinite(v):
+        return "–"
+    return "0" if abs(v) < ROUND_OFF else f"{v:.5g}"
+
+
+def meta_html(struct: Structure, table: Table, data: dict[str, Any]) -> str:
+    """Return the summary under the title: mobility, class, sweep and analysis."""
+    driver = data["driver"]
+    angle = np.asarray(table["angle"])
+    parts = [
+        f"W = {struct.dof}",
+        f"class {ROMAN.get(struct.mechanism_class)} mechanism",
+        f"{len(table)} positions, {driver['label']} {number(angle[0])} to "
+        f"{number(angle[-1])} {driver['unit']}",
+        "force analysis" if data["forces"] else "kinematics only (no masses or loads)",
+    ]
+    if table.skipped.size:
+        total = len(table) + table.skipped.shape[0]
+        parts.append(
+            f"{table.skipped.shape[0]} of {total} positions left out (the mechanism "
+            "cannot be assembled there)"
+        )
+    return " · ".join(escape(p) for p in parts)
+
+
+def legend_html(data: dict[str, Any]) -> str:
+    """Return the legend of the drawing: one coloured entry per group."""
+    items = []
+    for g in data["groups"]:
+        what = "driver" if g["class"] == 1 else f"order {g['order']} · {g['kind']}"
+        text = f"{g['roman']} · {what} · {', '.join(g['links'])}"
+        swatch = f'<span class="swatch" style="background:{g["colour"]}"></span>'
+        items.append(f"<li>{swatch}{escape(text)}</li>")
+    return '<ul class="legend">' + "".join(items) + "</ul>"
+
+
+def structure_html(struct: Structure, data: dict[str, Any]) -> str:
+    """Return the structure section: formula, table of groups and teaching report."""
+    rows = []
+    for step, (g, info) in enumerate(
+        zip(all_groups(struct), data["groups"], strict=True), 1
+    ):
+        kind = "input link" if g.group_class == 1 else g.kind
+        cells = [
+            str(step),
+            info["roman"],
+            str(g.order),
+            kind,
+            ", ".join(info["links"]),
+            ", ".join(public(x) for x in g.internal),
+            ", ".join(public(x) for x in g.external),
+        ]
+        swatch = f'<span class="swatch" style="background:{info["colour"]}"></span>'
+        rows.append(
+            f"<tr><td>{swatch}</td>"
+            + "".join(f"<td>{escape(c)}</td>" for c in cells)
+            + "</tr>"
+        )
+    head = "".join(f"<th>{h}</th>" for h in GROUP_HEADINGS)
+    formula = escape(struct.formula.replace(" -> ", " → "))
+    return (
+        f'<p class="formula">{formula}</p>\n'
+        f'<table class="groups"><thead><tr>{head}</tr></thead>\n<tbody>'
+        + "\n".join(rows)
+        + "</tbody></table>\n"
+        + _report_html(str(struct))
+    )
+
+
+def _report_html(text: str) -> str:
+    """Return the teaching report as HTML, one block per line.
+
+    A line that wraps goes on indented under its start.
+    """
+    lines = []
+    for line in text.splitlines():
+        indent = len(line) - len(line.lstrip(" "))
+        body = escape(line.strip()) or "&nbsp;"
+        lines.append(
+            f'<div style="padding-left:{indent + 4}ch;text-indent:-4ch">{body}</div>'
+        )
+    return '<div class="report">' + "\n".join(lines) + "</div>"
+
+
+def table_html(plan: Plan, table: Table) -> str:
+    """Return the table of values over the sweep, every 10th row of a long one.
+
+    Each row carries ``data-row``, its index in the sweep, for the script to
+    highlight the position shown.
+    """
+    columns = table_columns(plan, table)
+    step = 10 if len(table) > LONG_TABLE else 1
+    values = [np.asarray(table[key]) for key, _ in columns]
+    head = "".join(f"<th>{escape(title)}</th>" for _, title in columns)
+    rows = [
+        f'<tr data-row="{i}">'
+        + "".join(f"<td>{number(float(v[i]))}</td>" for v in values)
+        + "</tr>"
+        for i in range(0, len(table), step)
+    ]
+    note = (
+        f"Every {step}th of {len(table)} positions."
+        if step > 1
+        else f"All {len(table)} positions."
+    )
+    return (
+        f'<p class="note">{note} The highlighted row is the position shown in the '
+        'drawing.</p>\n<div class="table-wrap"><table class="values" id="values">'
+        f"<thead><tr>{head}</tr></thead>\n<tbody>"
+        + "\n".join(rows)
+        + "</tbody></table></div>"
+    )
