@@ -15,6 +15,7 @@ from 0 and 180 degrees.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -1252,3 +1253,105 @@ def any_case() -> st.SearchStrategy[Case]:
         slider_cases(),
         triad_cases(),
     )
+
+
+# ------------------------------------------------------------------------------------
+# Rigid motions and similarity of a whole mechanism
+
+
+def moved(
+    mech: assur.Mechanism, angle: float = 0.0, shift=(0.0, 0.0), scale: float = 1.0
+) -> assur.Mechanism:
+    """``mech`` turned by ``angle`` (rad) about the origin, scaled by ``scale`` and then
+    shifted by ``shift`` (m): every point, axis, force and gravity turned with it.
+
+    Similarity: lengths times ``scale`` with the same masses and speeds, so moments of
+    inertia go with ``scale**2``, gravity and forces with ``scale`` (accelerations do)
+    and torques with ``scale**2``; every force in the result is then ``scale`` times
+    the original's and every torque ``scale**2`` times. Load tables over a crank's
+    position follow its angle.
+    """
+    c, s = math.cos(angle), math.sin(angle)
+    off = np.asarray(shift, dtype=float)
+
+    def vec(v, k: float = 1.0) -> tuple[float, float]:
+        return (k * (c * v[0] - s * v[1]), k * (s * v[0] + c * v[1]))
+
+    def at(spec):
+        if spec is None or isinstance(spec, str):
+            return spec
+        if isinstance(spec, assur.Toward):
+            return assur.Toward(spec.start, spec.toward, spec.distance * scale)
+        return xy(np.array(vec(spec, scale)) + off)
+
+    def force(value):
+        if isinstance(value, assur.LoadTable):
+            x, y = value.values
+            turned = [vec(p, scale) for p in zip(x, y, strict=True)]
+            values = (tuple(p[0] for p in turned), tuple(p[1] for p in turned))
+            return assur.LoadTable(value.over, _over(value), values)
+        return vec(value, scale)
+
+    def torque(value):
+        if isinstance(value, assur.LoadTable):
+            return assur.LoadTable(
+                value.over,
+                _over(value),
+                (tuple(v * scale**2 for v in value.values[0]),),
+            )
+        return value * scale**2
+
+    def _over(value: assur.LoadTable) -> tuple[float, ...]:
+        if value.over == "driver" and _crank_driven(mech):
+            # the driver's position is its link's absolute angle when it has an axis
+            joint = mech.joint(mech.drivers[0].joint)
+            link = joint.links[1] if joint.links[0] == GROUND else joint.links[0]
+            turn = math.degrees(angle) if mech.link(link).axis is not None else 0.0
+            return tuple(x + turn for x in value.table)
+        return tuple(x * scale for x in value.table)
+
+    links = tuple(
+        dataclasses.replace(
+            link,
+            center=at(link.center),
+            inertia=None if link.inertia is None else link.inertia * scale**2,
+        )
+        for link in mech.links
+    )
+    joints = tuple(
+        dataclasses.replace(
+            j, at=at(j.at), axis=None if j.axis is None else vec(j.axis)
+        )
+        for j in mech.joints
+    )
+    drivers = tuple(
+        d
+        if _crank_driven(mech, d)
+        else dataclasses.replace(d, omega=d.omega * scale, epsilon=d.epsilon * scale)
+        for d in mech.drivers
+    )
+    loads = tuple(
+        dataclasses.replace(
+            load,
+            at=at(load.at),
+            force=None if load.force is None else force(load.force),
+            torque=None if load.torque is None else torque(load.torque),
+        )
+        for load in mech.loads
+    )
+    points = tuple(dataclasses.replace(p, at=at(p.at)) for p in mech.points)
+    gravity = None if mech.gravity is None else vec(mech.gravity, scale)
+    return dataclasses.replace(
+        mech,
+        links=links,
+        joints=joints,
+        drivers=drivers,
+        loads=loads,
+        points=points,
+        gravity=gravity,
+    )
+
+
+def _crank_driven(mech: assur.Mechanism, driver: assur.Driver | None = None) -> bool:
+    driver = driver or mech.drivers[0]
+    return mech.joint(driver.joint).kind == "revolute"

@@ -662,3 +662,114 @@ def si(mech: assur.Mechanism, positions: np.ndarray) -> np.ndarray:
         [math.pi / 180.0 if k == "revolute" else 1.0 for k in driver_kinds(mech)]
     )
     return arr * scale
+
+
+def moved_columns(
+    mech: assur.Mechanism,
+    table: assur.Table,
+    angle: float,
+    shift=(0.0, 0.0),
+    scale: float = 1.0,
+) -> dict[str, np.ndarray]:
+    """What ``table``'s columns become for the mechanism turned by ``angle`` (rad),
+    scaled by ``scale`` and shifted by ``shift`` (see ``mechanisms.moved``).
+
+    Angle columns (deg) are to be compared modulo 360.
+    """
+    c, s = math.cos(angle), math.sin(angle)
+    off = np.asarray(shift, dtype=float)
+    deg = math.degrees(angle)
+    out: dict[str, np.ndarray] = {}
+    kinds = {d.joint: mech.joint(d.joint).kind for d in mech.drivers}
+
+    def turned(name: str, x: str, y: str, k: float, add=(0.0, 0.0)) -> None:
+        vx, vy = table[f"{name}{x}"], table[f"{name}{y}"]
+        out[f"{name}{x}"] = k * (c * vx - s * vy) + add[0]
+        out[f"{name}{y}"] = k * (s * vx + c * vy) + add[1]
+
+    def drive(values: np.ndarray, joint: str) -> np.ndarray:
+        if kinds[joint] != "revolute":
+            return values * scale
+        a, b = mech.joint(joint).links
+        link = b if a == GROUND else a
+        return values + (deg if mech.link(link).axis is not None else 0.0)
+
+    out["angle"] = drive(table["angle"], mech.drivers[0].joint)
+    for d in mech.drivers:
+        if f"{d.joint}.drive" in table:
+            out[f"{d.joint}.drive"] = drive(table[f"{d.joint}.drive"], d.joint)
+    for link in mech.links:
+        name = link.name
+        out[f"{name}.angle"] = table[f"{name}.angle"] + (deg if link.axis else 0.0)
+        for key in ("omega", "alpha", "jerk"):
+            out[f"{name}.{key}"] = table[f"{name}.{key}"]
+        if f"{name}.Fi.x" in table:
+            turned(f"{name}.Fi", ".x", ".y", scale)
+            out[f"{name}.Mi"] = table[f"{name}.Mi"] * scale**2
+    for column in table.columns:
+        if column.endswith(".vx"):
+            base = column[:-3]
+            turned(base, ".x", ".y", scale, off)
+            for p in ("v", "a", "j"):
+                turned(base, f".{p}x", f".{p}y", scale)
+        if column.endswith(".j") and f"{column[:-2]}.s" in table:
+            base = column[:-2]
+            for key in ("s", "v", "a", "j"):
+                out[f"{base}.{key}"] = table[f"{base}.{key}"] * scale
+    if "shaking.Fx" not in table:
+        return out
+    for joint in mech.joints:
+        turned(joint.name, ".Fx", ".Fy", scale)
+        out[f"{joint.name}.F"] = table[f"{joint.name}.F"] * scale
+        if joint.kind != "revolute":
+            out[f"{joint.name}.M"] = table[f"{joint.name}.M"] * scale**2
+            out[f"{joint.name}.offset"] = table[f"{joint.name}.offset"] * scale
+    for column in table.columns:
+        if column.startswith("driver.") or column.endswith(
+            (".torque", ".torque_check", ".force", ".force_check")
+        ):
+            k = scale**2 if "torque" in column else scale
+            out[column] = table[column] * k
+    turned("shaking", ".Fx", ".Fy", scale)
+    out["shaking.M"] = (
+        table["shaking.M"] * scale**2
+        + off[0] * out["shaking.Fy"]
+        - off[1] * out["shaking.Fx"]
+    )
+    return out
+
+
+ORDER = {"x": 0, "y": 0, "s": 0, "vx": 1, "vy": 1, "v": 1, "omega": 1, "ax": 2, "ay": 2}
+ORDER.update({"a": 2, "alpha": 2, "jx": 3, "jy": 3, "j": 3, "jerk": 3})
+"""Time-derivative order of each kind of kinematic column."""
+
+
+def assert_columns(
+    mech: assur.Mechanism, table: assur.Table, expected: dict[str, np.ndarray]
+) -> None:
+    """``table`` (of ``mech``) has the ``expected`` columns: angles to 1e-7 deg modulo
+    360, kinematics and loads to 1e-8 relative with floors from the mechanism's size,
+    speed and largest load."""
+    size = mechanism_size(mech)
+    speed = max(max(abs(d.omega) for d in mech.drivers), 1.0)
+    force = length = None
+    for column, want in expected.items():
+        got = table[column]
+        key = column.rsplit(".", 1)[-1]
+        if key in ("angle", "drive"):
+            diff = got - want
+            if column != "angle" and key != "drive":
+                diff = (diff + 180.0) % 360.0 - 180.0
+            assert np.max(np.abs(diff)) < 1e-7, f"{column}: off by {diff}"
+            continue
+        if key == "offset":
+            continue
+        if key in ORDER:
+            scale = 1.0 if key in ("omega", "alpha", "jerk") else size
+            atol = 1e-10 * scale * speed ** ORDER[key]
+        else:
+            if force is None:
+                force, length = load_scale(mech, table)
+            moment = key in ("M", "Mi") or "torque" in column
+            atol = 1e-9 * force * (length if moment else 1.0) + 1e-15
+        np.testing.assert_allclose(got, want, rtol=1e-8, atol=atol, err_msg=column)

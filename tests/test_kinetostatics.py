@@ -18,6 +18,7 @@ integrand but only O(h^2) at the kinks of a load table.
 from __future__ import annotations
 
 import dataclasses
+import math
 from pathlib import Path
 
 import numpy as np
@@ -31,7 +32,9 @@ from . import oracle
 from .mechanisms import (
     DYAD_STRATEGIES,
     Case,
+    any_case,
     five_bar_cases,
+    moved,
     reference_drive,
     slider_cases,
     slot_cases,
@@ -229,7 +232,7 @@ def assert_prismatic_columns(mech: assur.Mechanism, table: assur.Table) -> None:
     for joint in mech.joints:
         fx, fy = table[f"{joint.name}.Fx"], table[f"{joint.name}.Fy"]
         np.testing.assert_allclose(
-            table[f"{joint.name}.F"], np.hypot(fx, fy), rtol=1e-12
+            table[f"{joint.name}.F"], np.hypot(fx, fy), rtol=1e-12, atol=1e-12 * force
         )
         if joint.kind == "revolute":
             continue
@@ -406,3 +409,27 @@ def test_load_tables_over_a_slide(case, values):
     )
     mech = dataclasses.replace(mech, loads=loads)
     assert_all(mech, assur.forces(mech, positions))
+
+
+@SETTINGS
+@given(
+    case=any_case(),
+    angle=st.floats(-math.pi, math.pi),
+    shift=st.tuples(st.floats(-1.0, 1.0), st.floats(-1.0, 1.0)),
+    scale=st.sampled_from([0.05, 1.0, 20.0]),
+)
+def test_rigid_motion_and_similarity(case, angle, shift, scale):
+    """Turning, shifting and scaling the whole mechanism (inertias with the square of
+    the scale, forces and gravity with it, torques with its square) turns and scales
+    every force and scales every torque by the square; the shaking moment about the
+    origin picks up the moment of the shaking force about the shifted origin."""
+    mech = case.mechanism
+    positions, _ = case.path(13)
+    table = assur.forces(mech, positions)
+    expected = oracle.moved_columns(mech, table, angle, shift, scale)
+    other = moved(mech, angle, shift, scale)
+    if len(mech.drivers) == 1:
+        at = expected["angle"]
+    else:
+        at = np.stack([expected[f"{d.joint}.drive"] for d in mech.drivers], -1)
+    oracle.assert_columns(other, assur.forces(other, at), expected)
