@@ -159,13 +159,13 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
             if not text.startswith(path):
                 text = f"{path}: {text}"
             print(f"assur: error: {text}", file=sys.stderr)
-            return 2
-        finally:
-            for w in caught:
-                if issubclass(w.category, AssurWarning):
-                    print(f"assur: warning: {args.file}: {w.message}", file=sys.stderr)
-                else:
-                    warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+            status = 2
+    # shown only once the recording has stopped, so showing cannot record again
+    for w in caught:
+        if issubclass(w.category, AssurWarning):
+            print(f"assur: warning: {args.file}: {w.message}", file=sys.stderr)
+        else:
+            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
     return status
 
 

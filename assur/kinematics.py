@@ -38,7 +38,7 @@ NEAR_SINGULAR = 0.035
 """Below this (about 2 degrees of transmission angle) a pose is near-singular."""
 NEAR_SINGULAR_GENERAL = 1e-3
 """The same for the reciprocal condition number of a larger group's Jacobian."""
-CONTINUATION_STEP = math.radians(10.0)
+CONTINUATION_STEP = math.radians(5.0)
 """Largest step of the driver along the continuation path of a Newton-solved group."""
 
 

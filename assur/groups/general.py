@@ -108,7 +108,9 @@ def positions(
         if done.all():
             break
         jac = jacobian(plan, bodies, n)
-        bad = ~np.isfinite(jac).all(axis=(1, 2)) | (np.abs(np.linalg.det(jac)) < 1e-300)
+        bad = ~np.isfinite(jac).all(axis=(1, 2))
+        jac[bad] = 0.0  # replaced below; keeps det from meeting NaN
+        bad |= np.abs(np.linalg.det(jac)) < 1e-300
         jac[bad] = np.eye(jac.shape[-1])
         step = np.linalg.solve(jac, -res[..., None])[..., 0]
         step[bad | done] = 0.0
