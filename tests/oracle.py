@@ -186,11 +186,9 @@ def slide_errors(
             rel = pose(mech, table, second).rotation - p1.rotation
             rot = float(np.max(np.abs(np.angle(np.exp(1j * rel)))))
         slide = np.sum(gap * direction, axis=-1)
-        err = (
-            float(np.max(np.abs(slide - table[f"{joint.name}.s"])))
-            if joint.kind == "prismatic"
-            else 0.0
-        )
+        # a slot's slide is its pin's (its block's) along the slot
+        assert f"{joint.name}.s" in table, f"no slide column for {joint.name}"
+        err = float(np.max(np.abs(slide - table[f"{joint.name}.s"])))
         out[joint.name] = (off, rot, err)
     return out
 

@@ -338,10 +338,18 @@ def test_flipped_driver_joint_changes_only_the_sign_of_its_reaction():
 # Random mechanisms
 
 
+def accelerated(mech: assur.Mechanism, epsilon: float) -> assur.Mechanism:
+    drivers = tuple(
+        dataclasses.replace(d, epsilon=epsilon * (-1) ** i)
+        for i, d in enumerate(mech.drivers)
+    )
+    return dataclasses.replace(mech, drivers=drivers)
+
+
 @SETTINGS
-@given(case=crank_cases())
-def test_random_mechanism(case):
-    mech = case.mechanism
+@given(case=crank_cases(), epsilon=st.sampled_from([0.0, 0.0, 25.0, -400.0]))
+def test_random_mechanism(case, epsilon):
+    mech = accelerated(case.mechanism, epsilon)
     positions, _ = case.path(19)
     assert_all(mech, assur.forces(mech, positions))
 
@@ -378,36 +386,56 @@ def test_random_mechanism_slow_or_at_rest(case, omega):
 
 
 @settings(SETTINGS, max_examples=15)
-@given(case=slider_cases())
-def test_prismatic_driver(case):
-    mech = case.mechanism
+@given(case=slider_cases(), epsilon=st.sampled_from([0.0, 2.0, -30.0]))
+def test_prismatic_driver(case, epsilon):
+    mech = accelerated(case.mechanism, epsilon)
     positions, _ = case.path(19)
     assert_all(mech, assur.forces(mech, positions))
 
 
+def with_tables(
+    mech: assur.Mechanism, over: str, low: float, high: float, values: list[float]
+) -> assur.Mechanism:
+    """``mech`` with a force on its last link and a torque on its first tabulated
+    against ``over`` from ``low`` to ``high``."""
+    grid = tuple(float(x) for x in np.linspace(low, high, len(values)))
+    force = assur.LoadTable(over, grid, (tuple(values), tuple(v / 3 for v in values)))
+    torque = assur.LoadTable(over, grid, (tuple(v / 100 for v in values[::-1]),))
+    last = mech.links[-1].name
+    loads = (
+        *mech.loads,
+        assur.Load(last, at=f"{last}_p", force=force),
+        assur.Load(mech.links[0].name, torque=torque),
+    )
+    return dataclasses.replace(mech, loads=loads)
+
+
 @SETTINGS
 @given(
-    case=DYAD_STRATEGIES["RRP"](attach="crank"),
+    case=st.one_of(DYAD_STRATEGIES["RRP"](), slot_cases(), DYAD_STRATEGIES["PRP"]()),
     values=st.lists(st.floats(-500.0, 500.0), min_size=3, max_size=6),
 )
 def test_load_tables_over_a_slide(case, values):
-    """A force and a torque tabulated against the slider's slide, linearly interpolated
-    (the table covers the slide's whole range over the sweep)."""
+    """A force and a torque tabulated against a prismatic or slot joint's slide,
+    linearly interpolated (the table covers the slide's range over the sweep)."""
     mech = case.mechanism
+    joint = next(j.name for j in mech.joints if j.kind != "revolute")
     positions, _ = case.path(37)
-    slide = assur.kinematics(mech, positions)["P.s"]
-    grid = tuple(
-        float(x)
-        for x in np.linspace(slide.min() - 1e-3, slide.max() + 1e-3, len(values))
-    )
-    force = assur.LoadTable("P", grid, (tuple(values), tuple(v / 3 for v in values)))
-    torque = assur.LoadTable("P", grid, (tuple(v / 100 for v in values[::-1]),))
-    loads = (
-        *mech.loads,
-        assur.Load("link3", at="link3_p", force=force),
-        assur.Load("link2", torque=torque),
-    )
-    mech = dataclasses.replace(mech, loads=loads)
+    slide = assur.kinematics(mech, positions)[f"{joint}.s"]
+    mech = with_tables(mech, joint, slide.min() - 1e-3, slide.max() + 1e-3, values)
+    assert_all(mech, assur.forces(mech, positions))
+
+
+@settings(SETTINGS, max_examples=10)
+@given(
+    case=slider_cases(),
+    values=st.lists(st.floats(-500.0, 500.0), min_size=3, max_size=6),
+)
+def test_load_tables_over_a_prismatic_driver(case, values):
+    """Tables over a slider driver's position (m), not periodic."""
+    lo, hi = float(case.span[0, 0]), float(case.span[1, 0])
+    mech = with_tables(case.mechanism, "driver", lo, hi, values)
+    positions, _ = case.path(19)
     assert_all(mech, assur.forces(mech, positions))
 
 

@@ -20,7 +20,7 @@ from .. import oracle
 from ..mechanisms import triad_cases
 
 SETTINGS = settings(
-    max_examples=20,
+    max_examples=12,
     deadline=None,
     derandomize=True,
     suppress_health_check=[
