@@ -99,7 +99,7 @@ def test_example_angle_columns_continuous(example, start):
     """Angles of links that are not driven start in (-180, 180] and never jump by a
     turn; a driven crank's angle is the driver position itself."""
     mech = steady(example)
-    positions, dt = turn_path(mech, 721)
+    positions, dt = turn_path(mech, 181)
     positions = np.concatenate(
         [positions, positions[1:] + (positions[-1] - positions[0])]
     )
