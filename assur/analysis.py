@@ -237,11 +237,13 @@ def _sweep(mech: Mechanism, angles: Any, with_forces: bool, skip: bool) -> Table
     troubles = []
     for start in range(0, n, CHUNK):
         chunk = drive[start : start + CHUNK]
-        bodies, found = _kin.solve(plan, chunk)
-        part = _kin.collect(plan, bodies, chunk.shape[0], state, start)
+        # failed or dead-centre positions carry NaN through; _report names them
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            bodies, found = _kin.solve(plan, chunk)
+            part = _kin.collect(plan, bodies, chunk.shape[0], state, start)
+            if force_state is not None:
+                _kst.solve(plan, bodies, part, force_state, start)
         troubles.extend((t, start) for t in found)
-        if force_state is not None:
-            _kst.solve(plan, bodies, part, force_state, start)
     ok = _report(plan, drive, troubles, skip)
     state = _kin.freeze(state)
     if force_state is not None:

@@ -24,6 +24,8 @@ from assur.errors import AssurError, AssurWarning, ModelError
 __all__ = ["main", "parse_angles"]
 
 COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {}
+MAX_POSITIONS = 10_000_000
+"""Most driver positions one command analyses (the library takes any number)."""
 
 
 def parse_angles(spec: str, drivers: int = 1) -> np.ndarray:
@@ -74,6 +76,12 @@ def _one_range(text: str) -> np.ndarray:
         raise ModelError(msg)
     start, stop, step = values
     count = math.floor((stop - start) / step + 1e-9) + 1
+    if count > MAX_POSITIONS:
+        msg = (
+            f"--angles: {text!r} gives {count} positions; expected at most "
+            f"{MAX_POSITIONS} (a larger step)"
+        )
+        raise ModelError(msg)
     return start + step * np.arange(count)
 
 
@@ -159,6 +167,13 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
             if not text.startswith(path):
                 text = f"{path}: {text}"
             print(f"assur: error: {text}", file=sys.stderr)
+            status = 2
+        except OSError as err:  # an output path that cannot be written
+            where = err.filename or args.file
+            print(
+                f"assur: error: {where}: cannot write ({err.strerror or err})",
+                file=sys.stderr,
+            )
             status = 2
     # shown only once the recording has stopped, so showing cannot record again
     for w in caught:

@@ -95,11 +95,8 @@ def _continuous(angle: Array) -> Array:
 def _force_columns(
     plan: Plan, state: KinematicState, forces: ForceState, data: dict[str, Array]
 ) -> None:
-    from assur.loads import compile_loads
-
-    loads = compile_loads(plan)
     for b, name in enumerate(plan.bodies):
-        if b and loads.mass[b] > 0 and "~" not in name:
+        if b and "~" not in name:
             data[f"{name}.Fi.x"] = forces.inertia_force[:, b, 0]
             data[f"{name}.Fi.y"] = forces.inertia_force[:, b, 1]
             data[f"{name}.Mi"] = forces.inertia_torque[:, b]

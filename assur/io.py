@@ -150,7 +150,7 @@ def _vec(entry: str, value: Any) -> tuple[float, float]:
         and all(isinstance(v, int | float) and not isinstance(v, bool) for v in value)
     ):
         _fail(entry, f"expected two numbers [x, y], got {value!r}")
-    return (float(value[0]), float(value[1]))
+    return (_number(entry, value[0]), _number(entry, value[1]))
 
 
 def _point(entry: str, value: Any) -> Any:
@@ -202,14 +202,18 @@ def _text(entry: str, value: Any) -> str:
 def _number(entry: str, value: Any) -> float:
     if not isinstance(value, int | float) or isinstance(value, bool):
         _fail(entry, f"expected a number, got {value!r}")
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError:
+        _fail(entry, f"the number {value} is too large; expected a finite number")
+        raise  # unreachable: _fail raises
 
 
 def parse(data: dict[str, Any]) -> Mechanism:
     """Build a :class:`~assur.model.Mechanism` from a mechanism file's contents."""
     _check_keys("", data, KEYS[""])
     version = data.get("format", FORMAT_VERSION)
-    if version != FORMAT_VERSION:
+    if type(version) is not int or version != FORMAT_VERSION:
         _fail(
             "format", f"version {version!r} is not supported; expected {FORMAT_VERSION}"
         )

@@ -146,7 +146,37 @@ def _drivers(plan: Plan, drive: Array, rates: Array | None = None) -> list[Motio
 
 
 def _continuation(plan: Plan, drive: Array) -> list:
-    """Follow the Newton groups along straight paths from the reference pose."""
+    """Follow the Newton groups from the reference pose to ``drive``.
+
+    Each position is reached along the straight path of the driver from the reference
+    pose; a crank position that path cannot reach (the group does not assemble
+    somewhere on the way) is tried again the other way round the circle.
+    """
+    guesses = _walk(plan, drive)
+    if len(plan.drivers) != 1 or plan.drivers[0].kind != "R" or not guesses:
+        return guesses
+    failed = np.zeros(drive.shape[0], dtype=bool)
+    for group in guesses:
+        failed |= ~np.isfinite(group[0][0])
+    if not failed.any():
+        return guesses
+    gap = drive[failed] - plan.drivers[0].reference
+    retry = _walk(plan, drive[failed] - 2.0 * math.pi * np.where(gap >= 0, 1.0, -1.0))
+    for group, again in zip(guesses, retry, strict=True):
+        for i, (pose, other) in enumerate(zip(group, again, strict=True)):
+            merged = []
+            for value, alternative in zip(pose, other, strict=True):
+                value = value.copy()
+                value[failed] = np.where(
+                    np.isfinite(value[failed]), value[failed], alternative
+                )
+                merged.append(value)
+            group[i] = tuple(merged)
+    return guesses
+
+
+def _walk(plan: Plan, drive: Array) -> list:
+    """Return the Newton groups' poses along straight paths to ``drive``."""
     n = drive.shape[0]
     reference = np.array([d.reference for d in plan.drivers])
     step = np.array(
@@ -171,14 +201,15 @@ def _continuation(plan: Plan, drive: Array) -> list:
     return guesses
 
 
-def velocity_coefficients(plan: Plan, bodies: list[Motion], which: int) -> list[Motion]:
+def velocity_coefficients(
+    plan: Plan, bodies: list[Motion], which: int, n: int
+) -> list[Motion]:
     """Return the links' velocities for a unit speed of driver ``which``, others still.
 
     Only the velocity level (index 1) of the returned motions is meaningful; it is the
     partial derivative of every link's velocity with respect to that driver's speed,
     the weight of each load in the principle of virtual power.
     """
-    n = np.shape(bodies[plan.drivers[0].body].phi[0])[0] if plan.drivers else 0
     out: list[Motion] = list(bodies)
     for i, d in enumerate(plan.drivers):
         rate = motion(d, np.zeros(1), 1.0 if i == which else 0.0)

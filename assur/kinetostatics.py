@@ -178,7 +178,7 @@ def solve(
     balancing = out.balancing[rows]
     for i, d in enumerate(plan.drivers):
         balancing[:, i] = balance(d, bodies, wrenches, raw)
-        out.check[rows, i] = _virtual_power(plan, bodies, applied, i)
+        out.check[rows, i] = _virtual_power(plan, bodies, applied, i, n)
     reactions = {}
     for name, (fx, fy, couple) in raw.items():
         force, moment = out.reactions[name]
@@ -196,7 +196,7 @@ def solve(
 
 
 def _virtual_power(
-    plan: Plan, bodies: list[Motion], applied: list[Wrench], which: int
+    plan: Plan, bodies: list[Motion], applied: list[Wrench], which: int, n: int
 ) -> Any:
     r"""Balancing load of driver ``which`` from the principle of virtual power.
 
@@ -212,7 +212,7 @@ def _virtual_power(
     if len(plan.drivers) == 1 and speed:
         coeff, scale = bodies, 1.0 / speed  # velocities are linear in the one speed
     else:
-        coeff, scale = velocity_coefficients(plan, bodies, which), 1.0
+        coeff, scale = velocity_coefficients(plan, bodies, which, n), 1.0
     total: Any = 0.0
     for b in range(1, len(plan.bodies)):
         fx, fy, tau = applied[b]

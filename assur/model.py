@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -34,6 +35,8 @@ GROUND = "ground"
 
 JOINT_KINDS = ("revolute", "prismatic", "slot")
 RESERVED = ("~", ".", ",")
+RESERVED_NAMES = ("angle", "driver", "shaking", "residual")
+"""Names the tables use for their own columns."""
 
 Vec2 = tuple[float, float]
 
@@ -53,6 +56,9 @@ class Toward:
     start: str
     toward: str
     distance: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "distance", _plain(self.distance))
 
 
 PointSpec = Vec2 | str | Toward
@@ -84,6 +90,9 @@ class Link:
     center: PointSpec | None = None
     inertia: float | None = None
 
+    def __post_init__(self) -> None:
+        _tuples(self, "axis", "center")
+
 
 @dataclass(frozen=True, slots=True)
 class Joint:
@@ -111,6 +120,9 @@ class Joint:
     links: tuple[str, str]
     at: PointSpec
     axis: Vec2 | None = None
+
+    def __post_init__(self) -> None:
+        _tuples(self, "links", "at", "axis")
 
 
 @dataclass(frozen=True, slots=True)
@@ -153,6 +165,10 @@ class LoadTable:
     table: tuple[float, ...]
     values: tuple[tuple[float, ...], ...]
 
+    def __post_init__(self) -> None:
+        _tuples(self, "table")
+        object.__setattr__(self, "values", tuple(_plain(v) for v in self.values))
+
 
 @dataclass(frozen=True, slots=True)
 class Load:
@@ -175,6 +191,9 @@ class Load:
     force: Vec2 | LoadTable | None = None
     torque: float | LoadTable | None = None
 
+    def __post_init__(self) -> None:
+        _tuples(self, "at", "force")
+
 
 @dataclass(frozen=True, slots=True)
 class Point:
@@ -183,6 +202,9 @@ class Point:
     name: str
     link: str
     at: PointSpec
+
+    def __post_init__(self) -> None:
+        _tuples(self, "at")
 
 
 @dataclass(frozen=True, slots=True)
@@ -228,6 +250,7 @@ class Mechanism:
     def __post_init__(self) -> None:
         for attr in ("links", "joints", "drivers", "loads", "points"):
             object.__setattr__(self, attr, tuple(getattr(self, attr)))
+        _tuples(self, "gravity")
         _validate(self)
 
     def __hash__(self) -> int:
@@ -265,6 +288,23 @@ class Mechanism:
         raise KeyError(msg)
 
 
+def _plain(value: Any) -> Any:
+    """Return lists and arrays as tuples, numpy numbers as Python's (hashable)."""
+    if isinstance(value, np.ndarray | list | tuple):
+        return tuple(_plain(v) for v in value)
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def _tuples(obj: Any, *names: str) -> None:
+    """Store the fields ``names`` of a frozen dataclass as plain tuples."""
+    for name in names:
+        value = getattr(obj, name)
+        if isinstance(value, np.ndarray | list | tuple | np.generic):
+            object.__setattr__(obj, name, _plain(value))
+
+
 def _fail(entry: str, message: str) -> None:
     msg = f"{entry}: {message}"
     raise ModelError(msg)
@@ -289,6 +329,12 @@ def _check_vec(entry: str, value: object) -> None:
 def _check_name(entry: str, name: object) -> None:
     if not isinstance(name, str) or not name or any(c in name for c in RESERVED):
         _fail(entry, f"expected a non-empty name without '~', '.' or ',', got {name!r}")
+    if name in RESERVED_NAMES:
+        _fail(
+            entry,
+            f"the name {name!r} is taken by the result tables; expected "
+            f"another name (not {', '.join(RESERVED_NAMES)})",
+        )
 
 
 def _suggest(name: str, known: list[str]) -> str:

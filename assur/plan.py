@@ -19,6 +19,9 @@ from assur._vec import Array, wrap
 from assur.errors import ModelError
 from assur.groups import DYADS
 from assur.groups._dyad import DyadPlan
+from assur.groups._dyad import conditioning as _conditioning
+from assur.groups._dyad import jacobian as _jacobian
+from assur.groups._dyad import set_pose as _set_pose
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan
 from assur.groups.driver import DriverPlan
@@ -28,6 +31,8 @@ from assur.structure import Group, Topology, decompose
 
 __all__ = ["Plan", "compile_plan"]
 
+DEAD_CENTRE = 1e-6
+"""Smallest sine of a dyad's transmission angle accepted in the reference pose."""
 BRANCH_TOLERANCE = 1e-7
 """Largest coordinate (rad, or m relative to the mechanism's size) that the chosen
 branch may miss the reference pose by."""
@@ -135,7 +140,7 @@ def compile_plan(mech: Mechanism) -> Plan:
         )
     scale = max(
         [float(np.hypot(*(a - b))) for a in pair_at.values() for b in pair_at.values()]
-        + [1e-3]
+        + [1e-12]
     )
     angle0 = _angles0(mech, names)
     plan = Plan(
@@ -253,6 +258,16 @@ def _dyad(plan: Plan, group: Group, bodies: tuple[int, int]) -> DyadPlan:
         if best is None or max(miss) < best[0]:
             best = (max(miss), candidate, sorted(miss))
     assert best is not None
+    dyad = best[1]
+    bodies = list(reference)
+    _set_pose(dyad, bodies, *module.assemble(dyad, bodies))
+    if not _conditioning(dyad, _jacobian(dyad, bodies), plan.scale) >= DEAD_CENTRE:
+        msg = (
+            f"group {group.label}: the reference pose is at a dead centre of this "
+            "group, where its branch is undefined; expected a reference pose away from "
+            "dead centres"
+        )
+        raise ModelError(msg)
     if not best[0] <= BRANCH_TOLERANCE:
         msg = (
             f"group {group.label}: the reference pose is not an assembled pose of this "

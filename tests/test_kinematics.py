@@ -448,13 +448,6 @@ def test_rigid_motion_and_similarity(case, angle, shift, scale):
     )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    raises=assur.AssemblyError,
-    reason="class III triad 300 m from the origin (1000 times its size): Newton's "
-    "tolerance 1e-13 * size is below the rounding of the coordinates, so it never "
-    "converges: AssemblyError at 31 deg (358 of 360 positions fail)",
-)
 def test_triad_far_from_the_origin():
     from .conftest import EXAMPLES
 
@@ -466,13 +459,6 @@ def test_triad_far_from_the_origin():
     oracle.assert_columns(far, assur.kinematics(far, positions), expected)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    raises=assur.AssurWarning,
-    reason="plan.scale has a floor of 1 mm, so for a mechanism smaller than that the "
-    "dimensionless dead-centre measure is not: the Whitworth mechanism scaled to "
-    "0.15 mm warns of a dead centre of its RPR dyad at 66..114 deg",
-)
 def test_sub_millimetre_mechanism():
     from .conftest import EXAMPLES
 

@@ -29,8 +29,10 @@ __all__ = [
 ]
 
 MAX_ITERATIONS = 30
+SINGULAR = 1e-12
+"""Reciprocal condition number below which a group's equations count as singular."""
 TOLERANCE = 1e-13
-"""Newton's stopping tolerance, relative to the mechanism's size."""
+"""Newton's stopping tolerance, relative to the size of the coordinates."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,6 +45,15 @@ class GeneralPlan:
     origins: tuple[tuple[float, float], ...]
     pairs: tuple[PairPlan, ...]
     scale: float
+
+    @property
+    def reach(self) -> float:
+        """Size of the numbers Newton works with, m (it bounds their rounding).
+
+        The group's size or its distance from the origin, whichever is larger.
+        """
+        far = max(abs(v) for o in self.origins for v in o)
+        return max(self.scale, far)
 
 
 def jacobian(plan: GeneralPlan, bodies: list[Motion], n: int) -> Array:
@@ -104,7 +115,7 @@ def positions(
     done = np.zeros(n, dtype=bool)
     for _ in range(MAX_ITERATIONS):
         res = _residuals(plan, bodies, 0, n)
-        done = np.max(np.abs(res), axis=-1) <= TOLERANCE * plan.scale
+        done = np.max(np.abs(res), axis=-1) <= TOLERANCE * plan.reach
         if done.all():
             break
         jac = jacobian(plan, bodies, n)
@@ -121,6 +132,10 @@ def positions(
                 m.ox[0] + step[:, 3 * i],
                 m.oy[0] + step[:, 3 * i + 1],
             )
+    done = (
+        np.max(np.abs(_residuals(plan, bodies, 0, n)), axis=-1)
+        <= TOLERANCE * plan.reach
+    )
     out = []
     for body in plan.bodies:
         m = bodies[body]
@@ -165,7 +180,20 @@ def reactions(
     for body, r in row.items():
         for i in (0, 1, 2):
             rhs[:, r + i] = -wrenches[body][i]
+    # a dead centre or a failed pose gives NaN rows, not an error for the whole batch
+    bad = ~np.isfinite(mat).all(axis=(1, 2))
+    mat[bad] = np.eye(size)
+    # moments and couples in units of the group's size: a measure free of units
+    rows = np.ones(size)
+    rows[2::3] = 1.0 / plan.scale
+    cols = np.ones(size)
+    for j, pair in enumerate(plan.pairs):
+        if pair.kind == "P":
+            cols[2 * j + 1] = 1.0 / plan.scale
+    bad |= 1.0 / np.linalg.cond(mat * rows[:, None] * cols[None, :]) < SINGULAR
+    mat[bad] = np.eye(size)
     lam = np.linalg.solve(mat, rhs[..., None])[..., 0]
+    lam[bad] = np.nan
     for j, pair in enumerate(plan.pairs):
         wrench = [
             lam[:, 2 * j] * units[j][0][i] + lam[:, 2 * j + 1] * units[j][1][i]
