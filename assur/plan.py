@@ -17,7 +17,7 @@ import numpy as np
 
 from assur._vec import Array, wrap
 from assur.errors import ModelError
-from assur.groups import DYADS
+from assur.groups import DYADS, general
 from assur.groups._dyad import DyadPlan
 from assur.groups._dyad import conditioning as _conditioning
 from assur.groups._dyad import jacobian as _jacobian
@@ -222,7 +222,7 @@ def _solver(plan: Plan, group: Group, index: dict[str, int]) -> Any:
     bodies = tuple(index[x] for x in group.links)
     if group.group_class == 2:
         return _dyad(plan, group, bodies)
-    return GeneralPlan(
+    solver = GeneralPlan(
         group.kind,
         group.label,
         bodies,
@@ -230,6 +230,19 @@ def _solver(plan: Plan, group: Group, index: dict[str, int]) -> Any:
         tuple(plan.pairs[p] for p in group.internal + group.external),
         plan.scale,
     )
+    reference = [Motion.fixed(*o) for o in plan.origins]
+    jac = general.jacobian(solver, reference, 1)
+    if not general.conditioning(solver, jac)[0] >= DEAD_CENTRE:
+        _dead_centre(group)
+    return solver
+
+
+def _dead_centre(group: Group) -> None:
+    msg = (
+        f"group {group.label}: the reference pose is at a dead centre of this group, "
+        "where its branch is undefined; expected a reference pose away from dead centres"
+    )
+    raise ModelError(msg)
 
 
 def _dyad(plan: Plan, group: Group, bodies: tuple[int, int]) -> DyadPlan:
@@ -262,12 +275,7 @@ def _dyad(plan: Plan, group: Group, bodies: tuple[int, int]) -> DyadPlan:
     bodies = list(reference)
     _set_pose(dyad, bodies, *module.assemble(dyad, bodies))
     if not _conditioning(dyad, _jacobian(dyad, bodies), plan.scale) >= DEAD_CENTRE:
-        msg = (
-            f"group {group.label}: the reference pose is at a dead centre of this "
-            "group, where its branch is undefined; expected a reference pose away from "
-            "dead centres"
-        )
-        raise ModelError(msg)
+        _dead_centre(group)
     if not best[0] <= BRANCH_TOLERANCE:
         msg = (
             f"group {group.label}: the reference pose is not an assembled pose of this "

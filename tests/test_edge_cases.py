@@ -1,0 +1,130 @@
+"""Edge cases found in review: each was a traceback, a wrong answer or a lost pose.
+
+Mechanism files in tests/data/edge: a class III triad with a prismatic pair whose
+crank positions past 114 deg are reached only the other way round the circle, and a
+triad with three parallel links that stands at a dead centre at 90 deg.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+import assur
+from assur.cli import main
+
+from .conftest import DATA, EXAMPLES
+
+EDGE = DATA / "edge"
+
+
+def test_still_prismatic_driver_has_forces():
+    """A slider driven at zero speed: the virtual-power check needs its own rates."""
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    mech = dataclasses.replace(mech, drivers=(assur.Driver("guide", 0.0),))
+    t = assur.forces(mech, [0.0, 0.01])
+    np.testing.assert_allclose(t["driver.force"], t["driver.force_check"], rtol=1e-9)
+
+
+def test_triad_reached_the_other_way_round():
+    mech = assur.load(EDGE / "triadP.toml")
+    t = assur.kinematics(mech, [300.0, -60.0])
+    np.testing.assert_allclose(t["plate.angle"][0], t["plate.angle"][1], atol=1e-9)
+    np.testing.assert_allclose(t["D.x"][0], t["D.x"][1], atol=1e-12)
+
+
+def test_triad_at_a_dead_centre_gives_one_error(capsys):
+    """Three parallel links: the reference pose itself is a dead centre."""
+    path = EDGE / "triad_singular.toml"
+    with pytest.raises(
+        assur.ModelError, match=r"triad \(rod, plate, left, right\).*dead"
+    ):
+        assur.forces(assur.load(path), [80.0, 90.0])
+    assert main(["forces", str(path), "--angles", "90"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    assert err.startswith("assur: error:")
+
+
+def test_reference_pose_at_a_dead_centre_is_refused():
+    mech = assur.catalog.four_bar()
+    coupler = mech.joint("B").at
+    # put the rocker's pivot on the line B-C beyond C: coupler and rocker in line
+    c = np.asarray(mech.joint("C").at)
+    d = c + 0.08 * (c - np.asarray(coupler)) / np.hypot(*(c - np.asarray(coupler)))
+    joints = tuple(
+        dataclasses.replace(j, at=tuple(d)) if j.name == "D" else j for j in mech.joints
+    )
+    with pytest.raises(assur.ModelError, match=r"RRR \(coupler, rocker\).*dead centre"):
+        assur.kinematics(dataclasses.replace(mech, joints=joints), [60.0])
+
+
+def test_mechanism_built_from_lists_and_arrays():
+    joints = [
+        assur.Joint("A", "revolute", ["ground", "crank"], [0.0, 0.0]),
+        assur.Joint("B", "revolute", ["crank", "rod"], np.array([0.05, 0.0])),
+        assur.Joint("C", "revolute", ["rod", "slider"], [0.25, 0.0]),
+        assur.Joint("g", "prismatic", ["ground", "slider"], [0.25, 0.0], [1, 0]),
+    ]
+    links = [assur.Link("crank", ["A", "B"]), assur.Link("rod"), assur.Link("slider")]
+    mech = assur.Mechanism(links, joints, [assur.Driver("A", 10.0)])
+    t = assur.kinematics(mech, [0.0, 90.0])
+    np.testing.assert_allclose(t["C.x"][0], 0.25, rtol=1e-12)
+    assert mech == assur.loads(assur.dumps(mech))
+
+
+@pytest.mark.parametrize("name", ["shaking", "residual", "driver", "angle"])
+def test_names_of_table_columns_are_reserved(name):
+    mech = assur.catalog.slider_crank()
+    joints = tuple(
+        dataclasses.replace(j, name=name) if j.name == "guide" else j
+        for j in mech.joints
+    )
+    with pytest.raises(
+        assur.ModelError, match=f"joints.{name}: the name '{name}' is taken"
+    ):
+        dataclasses.replace(mech, joints=joints)
+
+
+@pytest.mark.parametrize("value", ["true", "1.0", "2"])
+def test_format_must_be_the_integer_one(value):
+    text = assur.dumps(assur.catalog.four_bar()).replace(
+        "format = 1", f"format = {value}"
+    )
+    with pytest.raises(assur.ModelError, match="format: version .* is not supported"):
+        assur.loads(text)
+
+
+def test_huge_number_is_one_error():
+    text = assur.dumps(assur.catalog.four_bar()).replace(
+        "omega = 10.0", "omega = 1" + "0" * 400
+    )
+    with pytest.raises(assur.ModelError, match=r"drivers\[0\]\.omega: the number"):
+        assur.loads(text)
+
+
+def test_unwritable_csv_is_one_error(tmp_path, capsys):
+    path = str(EXAMPLES / "four_bar.toml")
+    assert main(["kinematics", path, "--angles", "0", "--csv", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    assert "cannot write" in err
+
+
+def test_too_many_positions_is_one_error(capsys):
+    path = str(EXAMPLES / "four_bar.toml")
+    assert main(["kinematics", path, "--angles", "0:1e12:1e-3"]) == 2
+    assert "expected at most" in capsys.readouterr().err
+
+
+def test_massless_link_has_zero_inertia_columns():
+    mech = assur.catalog.four_bar()
+    links = tuple(
+        dataclasses.replace(l, mass=None) if l.name == "rocker" else l
+        for l in mech.links
+    )
+    t = assur.forces(dataclasses.replace(mech, links=links), [0.0, 45.0])
+    for column in ("rocker.Fi.x", "rocker.Fi.y", "rocker.Mi"):
+        np.testing.assert_array_equal(t[column], 0.0)
