@@ -238,9 +238,11 @@ def _solver(plan: Plan, group: Group, index: dict[str, int]) -> Any:
 
 
 def _dead_centre(group: Group) -> None:
+    """Raise the error of a reference pose at a group's dead centre."""
     msg = (
         f"group {group.label}: the reference pose is at a dead centre of this group, "
-        "where its branch is undefined; expected a reference pose away from dead centres"
+        "where its branch is undefined; expected a reference pose away from dead "
+        "centres"
     )
     raise ModelError(msg)
 
