@@ -34,16 +34,9 @@ def build_columns(
     """
     data: dict[str, Array] = {}
     drivers = plan.drivers
-    if given is None:
-        given = np.stack(
-            [
-                state.drive[:, i] * (180.0 / math.pi)
-                if d.kind == "R"
-                else state.drive[:, i]
-                for i, d in enumerate(drivers)
-            ],
-            axis=-1,
-        )
+    if given is None:  # positions as the user would give them: deg for a crank
+        scale = [180.0 / math.pi if d.kind == "R" else 1.0 for d in drivers]
+        given = state.drive * np.asarray(scale)
     drive = [np.array(given[:, i]) for i in range(len(drivers))]
     data["angle"] = drive[0]
     if len(drivers) > 1:

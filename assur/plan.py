@@ -57,8 +57,6 @@ class Plan:
         points and centres of mass (``"L.G"``).
     point_body : ndarray of int (P,)
     point_offset : ndarray (P, 2)
-    point_offsets : tuple
-        The same offsets as tuples of floats, the kernels' constants.
     point_sets : tuple
         The distinct ``(body, offset)`` among the reported points (a joint, a centre
         of mass and a load point often coincide): the slots of a state's points.
@@ -81,7 +79,6 @@ class Plan:
     point_body: Array
     point_offset: Array
     scale: float
-    point_offsets: tuple[tuple[float, float], ...] = ()
     point_sets: tuple[tuple[int, tuple[float, float]], ...] = ()
     point_index: dict[str, int] = dataclasses.field(default_factory=dict)
 
@@ -172,7 +169,6 @@ def compile_plan(mech: Mechanism) -> Plan:
         points=points,
         point_body=body,
         point_offset=offset,
-        point_offsets=offsets,
         point_sets=tuple(slots),
         point_index={
             name: slots[(b, d)]

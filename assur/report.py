@@ -13,8 +13,6 @@ if TYPE_CHECKING:
 
 __all__ = ["structure_report"]
 
-ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V", 6: "VI", 7: "VII", 8: "VIII"}
-
 
 def _names(items: tuple[str, ...]) -> str:
     return ", ".join(x.replace("~block", " (block)") for x in items)
@@ -31,6 +29,8 @@ def _why(g: Group) -> str:
 
 def structure_report(s: Structure) -> str:
     """Return the teaching report of a structural analysis."""
+    from assur.structure import ROMAN
+
     n, p5, p4 = s.links, s.lower_pairs, s.higher_pairs
     lines = [f"Structure of {s.name or 'the mechanism'}", ""]
     lines.append(

@@ -15,8 +15,6 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
-
 from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, resolve_point
 
@@ -436,8 +434,3 @@ def _describe_dyad(
     return Group(
         2, 2, kind, (first, second), (middle.name,), (e1.name, e2.name), tuple(attached)
     )
-
-
-def reference_points(topo: Topology) -> dict[str, np.ndarray]:
-    """Reference-pose coordinates of every pair, by name."""
-    return {p.name: np.asarray(p.at) for p in topo.pairs}
