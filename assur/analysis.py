@@ -30,7 +30,7 @@ from assur.plan import Plan, compile_plan
 
 __all__ = ["Table", "default_positions", "forces", "kinematics"]
 
-CHUNK = 4096
+CHUNK = 8192
 """Driver positions solved at once; long sweeps run in slices of this size."""
 
 

@@ -42,7 +42,7 @@ import reference as ref  # noqa: E402
 
 FULL_SIZES = (360, 10**3, 10**4, 10**5, 10**6)
 QUICK_SIZES = (360, 10**3, 10**4)
-FULL_REPEATS = {360: 50, 10**3: 30, 10**4: 15, 10**5: 7, 10**6: 3}
+FULL_REPEATS = {360: 50, 10**3: 30, 10**4: 15, 10**5: 15, 10**6: 3}
 QUICK_REPEATS = {360: 10, 10**3: 5, 10**4: 3}
 LOOP_SIZES = (360, 10**3)
 RATIO_SIZE = 10**5
