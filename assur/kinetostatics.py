@@ -116,7 +116,12 @@ def applied_loads(
 def allocate(plan: Plan, n: int) -> ForceState:
     """Return a writable force state for ``n`` driver positions, filled by chunks."""
     count, drivers = len(plan.bodies), len(plan.drivers)
-    reactions = {name: (np.empty((2, n)).T, np.empty(n)) for name in plan.pairs}
+    # a revolute pair has no couple: its entries share one array of zeros, never written
+    none = np.zeros(n)
+    reactions = {
+        name: (np.empty((2, n)).T, np.empty(n) if p.kind == "P" else none)
+        for name, p in plan.pairs.items()
+    }
     return ForceState(
         np.zeros((2, count, n)).transpose(2, 1, 0),
         np.zeros((count, n)).T,
@@ -182,7 +187,9 @@ def solve(
     reactions = {}
     for name, (fx, fy, couple) in raw.items():
         force, moment = out.reactions[name]
-        force[rows, 0], force[rows, 1], moment[rows] = fx, fy, couple
+        force[rows, 0], force[rows, 1] = fx, fy
+        if plan.pairs[name].kind == "P":
+            moment[rows] = couple
         reactions[name] = (force[rows], moment[rows])
     for i in range(3):
         out.shaking[rows, i] = wrenches[0][i]
@@ -249,8 +256,17 @@ def _residual(
     balancing: Array,
     state: KinematicState,
 ) -> Array:
-    """Largest unbalanced force (N) and moment about the link's origin (N m)."""
-    totals = [list(w) for w in applied]
+    """Largest unbalanced force (N) and moment about the link's origin (N m).
+
+    Every link's loads are summed again from the applied loads, the reactions of all
+    its pairs and the balancing loads: an independent check of the reverse pass.
+    """
+    n = balancing.shape[0]
+    # rows: the bodies; one array per component, summed in place
+    total = np.empty((3, len(plan.bodies), n))
+    for b, wrench in enumerate(applied):
+        for i in range(3):
+            total[i, b] = wrench[i]
     for name, (force, couple) in reactions.items():
         pair = plan.pairs[name]
         p = plan.point_index.get(name)
@@ -259,25 +275,24 @@ def _residual(
         else:
             qx, qy = state.point[0, :, p, 0], state.point[0, :, p, 1]
         fx, fy = force[:, 0], force[:, 1]
-        tau = qx * fy - qy * fx + couple
-        for body, sign in ((pair.second, 1.0), (pair.first, -1.0)):
-            t = totals[body]
-            totals[body] = [t[0] + sign * fx, t[1] + sign * fy, t[2] + sign * tau]
+        tau = qx * fy - qy * fx
+        if pair.kind == "P":
+            tau += couple
+        for i, value in enumerate((fx, fy, tau)):
+            total[i, pair.second] += value
+            total[i, pair.first] -= value
     for i, d in enumerate(plan.drivers):
-        t = totals[d.body]
         if d.kind == "R":
-            totals[d.body] = [t[0], t[1], t[2] + balancing[:, i]]
+            total[2, d.body] += balancing[:, i]
         else:
             ex, ey = d.pair.axis  # type: ignore[misc]
             fx, fy = balancing[:, i] * ex, balancing[:, i] * ey
             m = bodies[d.body]
-            totals[d.body] = [t[0] + fx, t[1] + fy, t[2] + m.ox[0] * fy - m.oy[0] * fx]
-    n = balancing.shape[0]
-    force = np.zeros(n)
-    moment = np.zeros(n)  # filled as running maxima
-    for b in range(1, len(plan.bodies)):
-        fx, fy, tau = totals[b]
-        m = bodies[b]
-        force = np.maximum(force, np.maximum(np.abs(fx), np.abs(fy)))
-        moment = np.maximum(moment, np.abs(tau - (m.ox[0] * fy - m.oy[0] * fx)))
+            total[0, d.body] += fx
+            total[1, d.body] += fy
+            total[2, d.body] += m.ox[0] * fy - m.oy[0] * fx
+    moving = total[:, 1:]
+    ox, oy = state.origin[:, 1:, 0].T, state.origin[:, 1:, 1].T
+    moment = np.abs(moving[2] - (ox * moving[1] - oy * moving[0])).max(axis=0)
+    force = np.maximum(np.abs(moving[0]).max(axis=0), np.abs(moving[1]).max(axis=0))
     return np.stack((force, moment), axis=-1)

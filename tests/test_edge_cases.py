@@ -128,3 +128,15 @@ def test_massless_link_has_zero_inertia_columns():
     t = assur.forces(dataclasses.replace(mech, links=links), [0.0, 45.0])
     for column in ("rocker.Fi.x", "rocker.Fi.y", "rocker.Mi"):
         np.testing.assert_array_equal(t[column], 0.0)
+
+
+@pytest.mark.parametrize(
+    "name", ["slider_crank_exercise", "six_bar_lecture", "class3", "slot_mechanism"]
+)
+def test_residual_columns_are_round_off(name):
+    """The table's own equilibrium check stays at round-off over a turn."""
+    mech = assur.load(EXAMPLES / f"{name}.toml")
+    t = assur.forces(mech, np.arange(0.0, 360.0, 10.0))
+    largest = max(float(np.max(t[c])) for c in t.columns if c.endswith(".F"))
+    assert np.max(t["residual.force"]) <= 1e-9 * largest
+    assert np.max(t["residual.moment"]) <= 1e-9 * largest * 1.0
