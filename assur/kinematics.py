@@ -133,6 +133,9 @@ def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Tr
             else:
                 jac[singular] = np.eye(jac.shape[-1])
                 general.derivative(solver, bodies, k, jac, n)
+        if top == 3:
+            for b in solver.bodies:
+                bodies[b].finish()
     return bodies, troubles
 
 
@@ -142,6 +145,8 @@ def _drivers(plan: Plan, drive: Array, rates: Array | None = None) -> list[Motio
         bodies[d.body] = motion(
             d, drive[:, i], None if rates is None else float(rates[i])
         )
+        if rates is None:
+            bodies[d.body].finish()
     return bodies
 
 
@@ -236,6 +241,7 @@ def _copy(m: Motion, omega: Any, vx: Any, vy: Any) -> Motion:
     c.ox = [m.ox[0], vx, 0.0, 0.0]
     c.oy = [m.oy[0], vy, 0.0, 0.0]
     c.c, c.s, c.rot = m.c, m.s, m.rot
+    c.memo = None  # other velocities: nothing of ``m``'s may be reused
     c.q = list(m.q[:1])
     return c
 

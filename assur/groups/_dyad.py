@@ -113,19 +113,17 @@ def jacobian(plan: DyadPlan, bodies: list[Motion]) -> Jacobian:
 def conditioning(plan: DyadPlan, jac: Jacobian, scale: float) -> Any:
     """Sine of the angle between the Jacobian's columns: 0 at a dead centre.
 
-    Slides are measured in units of the mechanism's size ``scale`` (m) and a prismatic
-    pair's normal equation divided by it, so that the measure has no units: for an RRR
-    dyad it is the sine of the transmission angle.
+    The sine does not change when a column is scaled, so the units of the links'
+    coordinates (rad or m) do not matter; a prismatic pair's normal equation is divided
+    by the mechanism's size ``scale`` (m) to weigh like its rotation equation. For an
+    RRR dyad the measure is the sine of the transmission angle.
     """
     j00, j01, j10, j11 = jac
-    c0, c1 = (1.0 if e.kind == "R" else scale for e in plan.ext)
-    r1 = 1.0 / scale if plan.mid.kind == "P" else 1.0
-    j00, j10 = j00 * c0, j10 * c0 * r1
-    j01, j11 = j01 * c1, j11 * c1 * r1
+    if plan.mid.kind == "P":
+        j10, j11 = j10 / scale, j11 / scale
     det = j00 * j11 - j01 * j10
-    scale2 = np.hypot(j00, j10) * np.hypot(j01, j11)
     with np.errstate(divide="ignore", invalid="ignore"):
-        return np.abs(det) / scale2
+        return np.abs(det) / np.sqrt((j00 * j00 + j10 * j10) * (j01 * j01 + j11 * j11))
 
 
 def solve2(jac: Jacobian, r0: Any, r1: Any) -> tuple[Any, Any]:

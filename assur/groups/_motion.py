@@ -29,14 +29,20 @@ class Motion:
     own coordinate of the body by order.
     """
 
-    __slots__ = ("c", "ox", "oy", "phi", "q", "rot", "s")
+    __slots__ = ("c", "memo", "ox", "oy", "phi", "q", "rot", "s")
 
     def __init__(self, phi: list[Any], ox: list[Any], oy: list[Any]) -> None:
         self.phi = phi
         self.ox = ox
         self.oy = oy
         self.q: list[Any] = []
+        # points' derivatives, kept once the motion is final (see ``finish``)
+        self.memo: dict[tuple[tuple[float, float], int], Vec] | None = None
         self.set_pose(phi[0], ox[0], oy[0])
+
+    def finish(self) -> None:
+        """Declare every level solved: from now on points' derivatives are kept."""
+        self.memo = {}
 
     def set_pose(self, phi: Any, ox: Any, oy: Any) -> None:
         """Replace the position level; refresh the cached cosine, sine and offsets."""
@@ -46,11 +52,14 @@ class Motion:
         else:
             self.c, self.s = float(np.cos(phi)), float(np.sin(phi))
         self.rot: dict[tuple[float, float], Vec] = {}
+        self.memo = None  # a new pose is not final
 
     @classmethod
     def fixed(cls, x: float = 0.0, y: float = 0.0) -> Motion:
         """Return a body at rest with its origin at ``(x, y)`` (the frame)."""
-        return cls([0.0, 0.0, 0.0, 0.0], [x, 0.0, 0.0, 0.0], [y, 0.0, 0.0, 0.0])
+        m = cls([0.0, 0.0, 0.0, 0.0], [x, 0.0, 0.0, 0.0], [y, 0.0, 0.0, 0.0])
+        m.finish()
+        return m
 
 
 def rotated(m: Motion, d: tuple[float, float]) -> Vec:
@@ -71,9 +80,13 @@ def _relative(m: Motion, u: Vec, k: int) -> Vec:
     a = m.phi[2]
     if k == 2:
         w2 = w * w
+        if a.__class__ is float and not a:  # a crank at constant speed
+            return -w2 * ux, -w2 * uy
         return -a * uy - w2 * ux, a * ux - w2 * uy
     c1 = m.phi[3] - w * w * w
     c2 = 3.0 * w * a
+    if c2.__class__ is float and not c2:
+        return -c1 * uy, c1 * ux
     return -c1 * uy - c2 * ux, c1 * ux - c2 * uy
 
 
@@ -94,11 +107,20 @@ def point(m: Motion, d: tuple[float, float], k: int) -> Vec:
     :math:`\ddot u = \alpha u^\perp - \omega^2 u` and
     :math:`\dddot u = (\dot\alpha - \omega^3) u^\perp - 3\omega\alpha u`.
     """
+    memo = m.memo
+    if memo is not None:
+        found = memo.get((d, k))
+        if found is not None:
+            return found
     u = rotated(m, d)
     if k == 0:
-        return m.ox[0] + u[0], m.oy[0] + u[1]
-    rx, ry = _relative(m, u, k)
-    return m.ox[k] + rx, m.oy[k] + ry
+        value = m.ox[0] + u[0], m.oy[0] + u[1]
+    else:
+        rx, ry = _relative(m, u, k)
+        value = m.ox[k] + rx, m.oy[k] + ry
+    if memo is not None:
+        memo[(d, k)] = value
+    return value
 
 
 def direction(m: Motion, e: tuple[float, float], k: int) -> Vec:
