@@ -19,6 +19,7 @@ import dataclasses
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from hypothesis import assume
@@ -1355,3 +1356,19 @@ def moved(
 def _crank_driven(mech: assur.Mechanism, driver: assur.Driver | None = None) -> bool:
     driver = driver or mech.drivers[0]
     return mech.joint(driver.joint).kind == "revolute"
+
+
+def bounded(max_examples: int) -> Any:
+    """Hypothesis settings of these tests: few examples, deterministic, no deadline."""
+    from hypothesis import HealthCheck, settings
+
+    return settings(
+        max_examples=max_examples,
+        deadline=None,
+        derandomize=True,
+        suppress_health_check=[
+            HealthCheck.too_slow,
+            HealthCheck.filter_too_much,
+            HealthCheck.data_too_large,
+        ],
+    )

@@ -16,7 +16,7 @@ import warnings
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 import assur
@@ -26,6 +26,7 @@ from .mechanisms import (
     DYAD_STRATEGIES,
     Case,
     any_case,
+    bounded,
     five_bar_cases,
     moved,
     reference_drive,
@@ -33,16 +34,7 @@ from .mechanisms import (
     triad_cases,
 )
 
-SETTINGS = settings(
-    max_examples=12,
-    deadline=None,
-    derandomize=True,
-    suppress_health_check=[
-        HealthCheck.too_slow,
-        HealthCheck.filter_too_much,
-        HealthCheck.data_too_large,
-    ],
-)
+SETTINGS = bounded(12)
 
 
 def steady(mech: assur.Mechanism, **changes) -> assur.Mechanism:

@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import assur
@@ -33,6 +33,7 @@ from .mechanisms import (
     DYAD_STRATEGIES,
     Case,
     any_case,
+    bounded,
     five_bar_cases,
     moved,
     reference_drive,
@@ -41,16 +42,7 @@ from .mechanisms import (
     triad_cases,
 )
 
-SETTINGS = settings(
-    max_examples=25,
-    deadline=None,
-    derandomize=True,
-    suppress_health_check=[
-        HealthCheck.too_slow,
-        HealthCheck.filter_too_much,
-        HealthCheck.data_too_large,
-    ],
-)
+SETTINGS = bounded(25)
 
 RTOL = 1e-9
 

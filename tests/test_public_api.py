@@ -15,8 +15,6 @@ import sys
 import types
 from pathlib import Path
 
-import pytest
-
 import assur
 
 ROOT = Path(__file__).resolve().parent.parent

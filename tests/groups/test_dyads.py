@@ -18,20 +18,15 @@ kept and consecutive rows are linked smoothly; (d) the structure finds the kind.
 from __future__ import annotations
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 import assur
 
 from .. import oracle
-from ..mechanisms import DYAD_STRATEGIES
+from ..mechanisms import DYAD_STRATEGIES, bounded
 
-SETTINGS = settings(
-    max_examples=8,
-    deadline=None,
-    derandomize=True,
-    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
-)
+SETTINGS = bounded(8)
 
 VARIANTS = [
     ("RRR", {"flip": False, "branch": 1.0}),

@@ -12,23 +12,14 @@ central differences in time, and the structure's class III group.
 from __future__ import annotations
 
 import numpy as np
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given
 
 import assur
 
 from .. import oracle
-from ..mechanisms import triad_cases
+from ..mechanisms import bounded, triad_cases
 
-SETTINGS = settings(
-    max_examples=12,
-    deadline=None,
-    derandomize=True,
-    suppress_health_check=[
-        HealthCheck.too_slow,
-        HealthCheck.filter_too_much,
-        HealthCheck.data_too_large,
-    ],
-)
+SETTINGS = bounded(12)
 
 
 @SETTINGS
