@@ -168,6 +168,8 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
                 text = f"{path}: {text}"
             print(f"assur: error: {text}", file=sys.stderr)
             status = 2
+        except BrokenPipeError:
+            raise  # the reader has gone: main stops quietly
         except OSError as err:  # an output path that cannot be written
             where = err.filename or args.file
             print(
@@ -225,21 +227,26 @@ def _cmd_forces(args: argparse.Namespace) -> int:
 
 
 def _summary_columns(table: Any, force: bool) -> list[str]:
-    cols = table.columns
-    if force:
-        picked = [
-            c
-            for c in cols
-            if c.endswith(".F")
-            or c.startswith("driver.")
-            or (
-                c.endswith((".torque", ".force", "_check"))
-                and "." in c
-                and not c.startswith(("driver.", "shaking."))
-            )
+    """Pick the readable table's columns.
+
+    Reaction magnitudes and balancing loads, or the links' angles, speeds and
+    accelerations.
+    """
+    if not force:
+        return [
+            "angle",
+            *(c for c in table.columns if c.endswith((".angle", ".omega", ".alpha"))),
         ]
-    else:
-        picked = [c for c in cols if c.endswith((".angle", ".omega", ".alpha"))]
+    drivers = {
+        f"{d.joint}.{what}"
+        for d in table.mechanism.drivers
+        for what in ("torque", "force", "torque_check", "force_check")
+    }
+    picked = [
+        c
+        for c in table.columns
+        if c.endswith(".F") or c.startswith("driver.") or c in drivers
+    ]
     return ["angle", *picked]
 
 

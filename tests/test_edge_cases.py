@@ -140,3 +140,38 @@ def test_residual_columns_are_round_off(name):
     largest = max(float(np.max(t[c])) for c in t.columns if c.endswith(".F"))
     assert np.max(t["residual.force"]) <= 1e-9 * largest
     assert np.max(t["residual.moment"]) <= 1e-9 * largest * 1.0
+
+
+def test_closed_pipe_is_quiet():
+    """``assur forces FILE | head`` stops without an error line."""
+    import subprocess
+    import sys
+
+    path = EXAMPLES / "slider_crank_exercise.toml"
+    run = subprocess.run(
+        f"{sys.executable} -m assur forces {path} --csv - | head -1",
+        shell=True,
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert run.stdout.startswith("angle")
+    assert "error" not in run.stderr
+    assert "Traceback" not in run.stderr
+
+
+def test_summary_leaves_out_the_residual(capsys):
+    assert (
+        main(["forces", str(EXAMPLES / "slider_crank_exercise.toml"), "--angles", "45"])
+        == 0
+    )
+    header = capsys.readouterr().out.splitlines()[0].split()
+    assert header == [
+        "angle",
+        "A.F",
+        "B.F",
+        "C.F",
+        "guide.F",
+        "driver.torque",
+        "driver.torque_check",
+    ]
