@@ -89,6 +89,8 @@ def _fill(plan: DyadPlan, bodies: list[Motion], k: int) -> None:
                 k
             ):  # Leibniz on sigma * e, the k-th term of sigma is unknown
                 ex, ey = guide(plan, bodies, b, k - j)
+                if ex.__class__ is float and ey.__class__ is float and not (ex or ey):
+                    continue  # a guide that does not turn: no term
                 coef = comb(k, j) * m.q[j]
                 ax, ay = ax + coef * ex, ay + coef * ey
         m.ox[k], m.oy[k] = ax, ay
