@@ -22,7 +22,7 @@ from assur.errors import (
 )
 from assur.io import dumps, load, loads, save
 from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
-from assur.structure import Group, Structure, mobility, structure
+from assur.structure import Group, Structure, graph, mobility, structure
 
 __version__ = "0.1.0"
 
@@ -48,6 +48,7 @@ __all__ = [
     "catalog",
     "dumps",
     "forces",
+    "graph",
     "kinematics",
     "load",
     "loads",

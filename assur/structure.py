@@ -24,6 +24,7 @@ __all__ = [
     "Structure",
     "Topology",
     "decompose",
+    "graph",
     "mobility",
     "structure",
     "topology",
@@ -216,7 +217,17 @@ def mobility(mech: Mechanism) -> int:
 
 
 def graph(mech: Mechanism) -> Any:
-    """Return the mechanism as a networkx multigraph: links as nodes, joints edges."""
+    """Return the mechanism as a networkx multigraph: links as nodes, joints edges.
+
+    Each edge is keyed by the joint's name and carries its ``kind``.
+
+    Examples
+    --------
+    >>> from assur import catalog
+    >>> g = graph(catalog.four_bar())
+    >>> sorted(g.nodes), g.number_of_edges()
+    (['coupler', 'crank', 'ground', 'rocker'], 4)
+    """
     import networkx as nx
 
     g = nx.MultiGraph()

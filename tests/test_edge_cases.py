@@ -175,3 +175,17 @@ def test_summary_leaves_out_the_residual(capsys):
         "driver.torque",
         "driver.torque_check",
     ]
+
+
+def test_graph_of_every_example():
+    """Links as nodes, joints as edges keyed by name, one connected mechanism."""
+    import networkx as nx
+
+    for path in sorted(EXAMPLES.glob("*.toml")):
+        mech = assur.load(path)
+        g = assur.graph(mech)
+        assert set(g.nodes) == {"ground", *(link.name for link in mech.links)}
+        assert sorted(k for _, _, k in g.edges(keys=True)) == sorted(
+            j.name for j in mech.joints
+        )
+        assert nx.is_connected(g)
