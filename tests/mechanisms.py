@@ -334,6 +334,17 @@ def _case(
 # Dyads on a crank. The crank turns about A; ``theta0`` is its reference angle (rad).
 
 
+def _bcd_branch(branch: float) -> Callable[[assur.Table], np.ndarray]:
+    """Branch indicator of an RRR dyad B-C-D: the sign of (C - B) x (D - C)."""
+
+    def indicator(table: assur.Table) -> np.ndarray:
+        u2 = np.stack([table["C.x"] - table["B.x"], table["C.y"] - table["B.y"]], -1)
+        u3 = np.stack([table["D.x"] - table["C.x"], table["D.y"] - table["C.y"]], -1)
+        return -branch * cross(u2, u3)
+
+    return indicator
+
+
 def rrr(
     origin,
     theta0,
@@ -381,10 +392,7 @@ def rrr(
         reverse,
     )
 
-    def indicator(t: assur.Table) -> np.ndarray:
-        u2 = np.stack([t["C.x"] - t["B.x"], t["C.y"] - t["B.y"]], axis=-1)
-        u3 = np.stack([t["D.x"] - t["C.x"], t["D.y"] - t["C.y"]], axis=-1)
-        return -branch * cross(u2, u3)
+    indicator = _bcd_branch(branch)
 
     return _case(mech, "RRR", {"link2", "link3"}, TURN, indicator, crank=r, frame=d)
 
@@ -764,10 +772,7 @@ def five_bar(
         reverse,
     )
 
-    def indicator(t: assur.Table) -> np.ndarray:
-        u2 = np.stack([t["C.x"] - t["B.x"], t["C.y"] - t["B.y"]], axis=-1)
-        u3 = np.stack([t["D.x"] - t["C.x"], t["D.y"] - t["C.y"]], axis=-1)
-        return -branch * cross(u2, u3)
+    indicator = _bcd_branch(branch)
 
     return _case(
         mech,
@@ -837,14 +842,7 @@ def slider_driven(
     )
     half = 0.5 * (x_hi - x_lo) * 0.98
 
-    def indicator(table: assur.Table) -> np.ndarray:
-        u2 = np.stack(
-            [table["C.x"] - table["B.x"], table["C.y"] - table["B.y"]], axis=-1
-        )
-        u3 = np.stack(
-            [table["D.x"] - table["C.x"], table["D.y"] - table["C.y"]], axis=-1
-        )
-        return -branch * cross(u2, u3)
+    indicator = _bcd_branch(branch)
 
     return _case(
         mech, "RRR", {"link2", "link3"}, np.array([[-half], [half]]), indicator
