@@ -11,6 +11,7 @@ I(ground, crank) -> II(rod, slider)
 """
 
 from assur import catalog
+from assur._structure import Group, Structure, graph, mobility, structure
 from assur.analysis import Table, forces, kinematics
 from assur.errors import (
     AssemblyError,
@@ -22,7 +23,6 @@ from assur.errors import (
 )
 from assur.io import dumps, load, loads, save
 from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
-from assur.structure import Group, Structure, graph, mobility, structure
 
 __version__ = "0.1.0"
 

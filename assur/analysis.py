@@ -15,8 +15,10 @@ from typing import Any
 
 import numpy as np
 
-from assur import kinematics as _kin
+from assur import _kinematics as _kin
 from assur import kinetostatics as _kst
+from assur._loads import compile_loads
+from assur._text import suggest
 from assur._vec import Array
 from assur.errors import (
     AssemblyError,
@@ -24,7 +26,6 @@ from assur.errors import (
     ModelError,
     SingularConfigurationError,
 )
-from assur.loads import compile_loads
 from assur.model import Mechanism
 from assur.plan import Plan, compile_plan
 
@@ -55,11 +56,7 @@ class Table:
         try:
             return self.data[name]
         except KeyError:
-            import difflib
-
-            close = difflib.get_close_matches(name, self.columns, n=3)
-            hint = f"; did you mean {', '.join(map(repr, close))}?" if close else ""
-            msg = f"no column {name!r}{hint}"
+            msg = f"no column {name!r}{suggest(name, self.columns, listing=False)}"
             raise KeyError(msg) from None
 
     def __len__(self) -> int:

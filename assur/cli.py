@@ -203,7 +203,7 @@ def positions(mech: Any, spec: str | None) -> np.ndarray:
 
 
 def _cmd_structure(args: argparse.Namespace) -> int:
-    from assur.structure import structure
+    from assur._structure import structure
 
     s = structure(load_mechanism(args.file), driver=args.driver)
     print(json.dumps(s.to_dict(), indent=2) if args.json else str(s))

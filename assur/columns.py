@@ -11,8 +11,8 @@ import math
 
 import numpy as np
 
+from assur._kinematics import KinematicState
 from assur._vec import Array
-from assur.kinematics import KinematicState
 from assur.kinetostatics import ForceState
 from assur.plan import Plan
 

@@ -2,6 +2,8 @@
 
 Every error carries one line that names the object, what is wrong, the value received
 and what was expected; the command line prints that line and exits with status 2.
+Each error also derives from the built-in exception that fits it, so code that knows
+nothing of assur can still catch a ``ValueError`` or an ``OSError``.
 """
 
 from __future__ import annotations
@@ -10,9 +12,12 @@ __all__ = [
     "AssemblyError",
     "AssurError",
     "AssurWarning",
+    "ConvergenceError",
     "DecompositionError",
     "ModelError",
+    "OutputError",
     "SingularConfigurationError",
+    "UsageError",
 ]
 
 
@@ -21,19 +26,31 @@ class AssurError(Exception):
 
 
 class ModelError(AssurError, ValueError):
-    """An invalid mechanism, load or file contents."""
+    """An invalid mechanism, load or mechanism file."""
 
 
-class DecompositionError(AssurError):
+class DecompositionError(AssurError, ValueError):
     """The mechanism does not split into supported Assur groups."""
 
 
-class AssemblyError(AssurError):
+class AssemblyError(AssurError, ValueError):
     """A group cannot be closed at some driver position."""
 
 
-class SingularConfigurationError(AssurError):
+class SingularConfigurationError(AssurError, ValueError):
     """A dead centre: the velocity or force system of a group is singular."""
+
+
+class ConvergenceError(AssurError, RuntimeError):
+    """An iteration (Newton's method, a continuation) did not reach its tolerance."""
+
+
+class UsageError(AssurError, ValueError):
+    """A command-line option or a library argument that cannot be used as given."""
+
+
+class OutputError(AssurError, OSError):
+    """An output file that cannot be written (the old file, if any, is kept)."""
 
 
 class AssurWarning(UserWarning):

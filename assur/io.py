@@ -6,7 +6,6 @@ of any fault; writing gives back a file that reads to the same mechanism.
 
 from __future__ import annotations
 
-import difflib
 import io as _io
 import json
 import math
@@ -18,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._text import suggest
 from assur.errors import AssurError, ModelError
 from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
 
@@ -132,11 +132,8 @@ def _check_keys(entry: str, data: Any, allowed: tuple[str, ...]) -> dict[str, An
     _check_twice(entry, data)
     for key in data:
         if key not in allowed:
-            close = difflib.get_close_matches(key, allowed, n=1)
-            hint = (
-                f"; did you mean {close[0]!r}?"
-                if close
-                else f"; expected one of {', '.join(allowed)}"
+            hint = suggest(key, allowed, listing=False) or (
+                f"; expected one of {', '.join(allowed)}"
             )
             where = f"{entry}.{key}" if entry else key
             _fail(where, f"unknown key {key!r}{hint}")

@@ -14,14 +14,14 @@ from typing import Any
 
 import numpy as np
 
+from assur._kinematics import KinematicState, velocity_coefficients
+from assur._loads import LoadPlan, compile_loads, table_values
 from assur._vec import Array
 from assur.groups import _dyad, general
 from assur.groups._dyad import DyadPlan, Wrench
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.groups.driver import balance
-from assur.kinematics import KinematicState, velocity_coefficients
-from assur.loads import LoadPlan, compile_loads, table_values
 from assur.plan import Plan
 
 __all__ = ["ForceState", "applied_loads", "solve"]

@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._text import suggest
 from assur.errors import ModelError
 
 __all__ = [
@@ -337,25 +338,16 @@ def _check_name(entry: str, name: object) -> None:
         )
 
 
-def _suggest(name: str, known: list[str]) -> str:
-    import difflib
-
-    close = difflib.get_close_matches(name, known, n=1)
-    listing = ", ".join(sorted(known)) or "none"
-    hint = f"; did you mean {close[0]!r}?" if close else f" (known: {listing})"
-    return hint
-
-
 def _check_point(entry: str, spec: object, points: set[str]) -> None:
     if isinstance(spec, str):
         if spec not in points:
-            _fail(entry, f"unknown point {spec!r}{_suggest(spec, list(points))}")
+            _fail(entry, f"unknown point {spec!r}{suggest(spec, list(points))}")
     elif isinstance(spec, Toward):
         for key, ref in (("from", spec.start), ("toward", spec.toward)):
             if ref not in points:
                 _fail(
                     f"{entry}.{key}",
-                    f"unknown point {ref!r}{_suggest(ref, list(points))}",
+                    f"unknown point {ref!r}{suggest(ref, list(points))}",
                 )
         if spec.start == spec.toward:
             _fail(
@@ -408,7 +400,7 @@ def _validate(mech: Mechanism) -> None:
             if name not in all_links:
                 _fail(
                     f"{entry}.links",
-                    f"unknown link {name!r}{_suggest(name, all_links)}",
+                    f"unknown link {name!r}{suggest(name, all_links)}",
                 )
         if joint.links[0] == joint.links[1]:
             _fail(
@@ -434,7 +426,7 @@ def _validate(mech: Mechanism) -> None:
         if point.link not in link_names:
             _fail(
                 f"{entry}.link",
-                f"unknown link {point.link!r}{_suggest(point.link, link_names)}",
+                f"unknown link {point.link!r}{suggest(point.link, link_names)}",
             )
         point_names.add(point.name)
     for joint in mech.joints:
@@ -476,8 +468,7 @@ def _validate_drivers(mech: Mechanism, all_links: list[str]) -> None:
         if driver.joint not in joints:
             _fail(
                 f"{entry}.joint",
-                f"unknown joint {driver.joint!r}"
-                + _suggest(driver.joint, list(joints)),
+                f"unknown joint {driver.joint!r}" + suggest(driver.joint, list(joints)),
             )
         if driver.joint in seen:
             _fail(f"{entry}.joint", f"joint {driver.joint!r} is driven twice")
@@ -510,7 +501,7 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
         _fail(
             f"{entry}.over",
             f"expected 'driver' or a prismatic joint, got "
-            f"{table.over!r}{_suggest(table.over, ['driver', *prismatic])}",
+            f"{table.over!r}{suggest(table.over, ['driver', *prismatic])}",
         )
     xs = np.asarray(table.table, dtype=float)
     if xs.ndim != 1 or len(xs) < 2 or not np.all(np.isfinite(xs)):
@@ -538,7 +529,7 @@ def _validate_load(
     if load.link not in link_names:
         _fail(
             f"{entry}.link",
-            f"unknown link {load.link!r}{_suggest(load.link, link_names)}",
+            f"unknown link {load.link!r}{suggest(load.link, link_names)}",
         )
     if load.force is None and load.torque is None:
         _fail(entry, "expected a 'force' or a 'torque'")

@@ -192,8 +192,8 @@ def _cmd_plot(args: argparse.Namespace) -> int:
 
 def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:
     """Return the mechanism and its table over ``--angles`` (forces if it has loads)."""
+    from assur._loads import compile_loads
     from assur.cli import load_mechanism, positions
-    from assur.loads import compile_loads
     from assur.plan import compile_plan
 
     mech = load_mechanism(args.file)

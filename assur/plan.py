@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._structure import Group, Topology, decompose
 from assur._vec import Array, wrap
 from assur.errors import ModelError
 from assur.groups import DYADS, general
@@ -27,7 +28,6 @@ from assur.groups._pairs import PairPlan
 from assur.groups.driver import DriverPlan
 from assur.groups.general import GeneralPlan
 from assur.model import GROUND, Mechanism, resolve_point
-from assur.structure import Group, Topology, decompose
 
 __all__ = ["Plan", "compile_plan"]
 

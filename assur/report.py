@@ -8,8 +8,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from assur._text import roman
+
 if TYPE_CHECKING:
-    from assur.structure import Group, Structure
+    from assur._structure import Group, Structure
 
 __all__ = ["structure_report"]
 
@@ -29,8 +31,6 @@ def _why(g: Group) -> str:
 
 def structure_report(s: Structure) -> str:
     """Return the teaching report of a structural analysis."""
-    from assur.structure import ROMAN
-
     n, p5, p4 = s.links, s.lower_pairs, s.higher_pairs
     lines = [f"Structure of {s.name or 'the mechanism'}", ""]
     lines.append(
@@ -57,10 +57,11 @@ def structure_report(s: Structure) -> str:
         )
     for g in s.groups:
         step += 1
-        roman = ROMAN.get(g.group_class, str(g.group_class))
+        numeral = roman(g.group_class)
         kind = {"triad": "triad", "general": "group"}.get(g.kind, f"dyad {g.kind}")
         lines.append(
-            f"  {step}. Class {roman}, order {g.order}, {kind}: links {_names(g.links)}"
+            f"  {step}. Class {numeral}, order {g.order}, {kind}: "
+            f"links {_names(g.links)}"
         )
         lines.append(
             f"     internal pairs {_names(g.internal)}; external pairs "
@@ -70,7 +71,7 @@ def structure_report(s: Structure) -> str:
     lines += [
         "",
         f"Structure formula: {s.formula}",
-        f"Class of the mechanism: {ROMAN.get(s.mechanism_class)} (the highest class "
+        f"Class of the mechanism: {roman(s.mechanism_class)} (the highest class "
         "of its groups)",
     ]
     lines.append(

@@ -33,8 +33,8 @@ except ImportError:  # run from a source tree without the package installed
     import assur
 
 CASES = ((100_000, 1), (360, 300))
-PHASES = (("assur.analysis", "_to_si"), ("assur.kinematics", "allocate"),
-          ("assur.kinematics", "solve"), ("assur.kinematics", "collect"),
+PHASES = (("assur.analysis", "_to_si"), ("assur._kinematics", "allocate"),
+          ("assur._kinematics", "solve"), ("assur._kinematics", "collect"),
           ("assur.kinetostatics", "allocate"), ("assur.kinetostatics", "solve"),
           ("assur.analysis", "_report"), ("assur.columns", "build_columns"))
 

@@ -106,8 +106,8 @@ else:  # pragma: no cover - the docs extra installs the theme
 
 API_MODULES = [
     "assur.model",
-    "assur.structure",
-    "assur.kinematics",
+    "assur._structure",
+    "assur._kinematics",
     "assur.kinetostatics",
     "assur.analysis",
     "assur.io",

@@ -20,7 +20,7 @@ from .conftest import example_files
 
 
 def has_forces(path) -> bool:
-    from assur.loads import compile_loads
+    from assur._loads import compile_loads
     from assur.plan import compile_plan
 
     return not compile_loads(compile_plan(assur.load(path))).empty

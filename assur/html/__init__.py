@@ -11,14 +11,14 @@ from __future__ import annotations
 import os
 from typing import Any
 
+from assur._loads import compile_loads
+from assur._structure import structure
 from assur.analysis import default_positions, forces, kinematics
 from assur.errors import AssemblyError
 from assur.html._data import report_data
 from assur.html._page import assemble_page
-from assur.loads import compile_loads
 from assur.model import Mechanism
 from assur.plan import compile_plan
-from assur.structure import structure
 
 __all__ = ["render_report", "write_report"]
 

@@ -13,13 +13,14 @@ from typing import Any
 
 import numpy as np
 
+from assur._structure import Group, Structure
+from assur._text import roman
 from assur._vec import Array
 from assur.analysis import Table
 from assur.groups._pairs import PairPlan
 from assur.html._series import balancing, charts, current, driver_label, visible_pairs
 from assur.model import GROUND
 from assur.plan import Plan
-from assur.structure import ROMAN, Group, Structure
 
 PALETTE = (
     "#334155",
@@ -130,7 +131,7 @@ def _groups(struct: Structure) -> list[dict[str, Any]]:
         {
             "label": "driver" if g.group_class == 1 else g.label,
             "class": g.group_class,
-            "roman": ROMAN.get(g.group_class, str(g.group_class)),
+            "roman": roman(g.group_class),
             "order": g.order,
             "kind": g.kind,
             "links": [public(x) for x in g.links if x != GROUND],

@@ -12,11 +12,11 @@ from importlib.resources import files
 from string import Template
 from typing import Any
 
+from assur._structure import Structure
 from assur.analysis import Table
 from assur.html._data import to_json
 from assur.html._sections import legend_html, meta_html, structure_html, table_html
 from assur.plan import Plan
-from assur.structure import Structure
 
 DRAWING_WIDTH = 556
 """Width (px) of the drawing inside its margins."""

@@ -12,11 +12,12 @@ from typing import Any
 
 import numpy as np
 
+from assur._structure import Structure
+from assur._text import roman
 from assur.analysis import Table
 from assur.html._data import all_groups, public
 from assur.html._series import table_columns
 from assur.plan import Plan
-from assur.structure import ROMAN, Structure
 
 ROUND_OFF = 1e-9
 """Values below this (N, N m, m, rad/s) are round-off and show as 0."""
@@ -48,7 +49,7 @@ def meta_html(struct: Structure, table: Table, data: dict[str, Any]) -> str:
     angle = np.asarray(table["angle"])
     parts = [
         f"W = {struct.dof}",
-        f"class {ROMAN.get(struct.mechanism_class)} mechanism",
+        f"class {roman(struct.mechanism_class)} mechanism",
         f"{len(table)} positions, {driver['label']} {number(angle[0])} to "
         f"{number(angle[-1])} {driver['unit']}",
         "force analysis" if data["forces"] else "kinematics only (no masses or loads)",

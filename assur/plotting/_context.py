@@ -12,13 +12,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._text import roman
 from assur.errors import ModelError
 from assur.plotting._style import (
     DRIVER_COLOR,
     GROUND_COLOR,
     GROUP_COLORS,
     PLAIN_COLOR,
-    ROMAN,
 )
 
 if TYPE_CHECKING:
@@ -87,7 +87,7 @@ def _colors(plan: Plan, groups: bool) -> tuple[dict[int, str], Legend]:
         bodies = tuple(plan.body(x) for x in g.links)
         for b in bodies:
             color[b] = c
-        name = ROMAN.get(g.group_class, g.group_class)
+        name = roman(g.group_class)
         legend.append((f"{name}, order {g.order}, {g.label}", c, bodies))
     return color, legend
 

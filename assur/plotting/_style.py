@@ -36,7 +36,6 @@ FAINT = 0.22
 """Opacity of the links drawn only for orientation."""
 ARROW_LENGTH = 0.28
 """Length of the largest force arrow at the default scale, relative to the mechanism."""
-ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V", 6: "VI", 7: "VII", 8: "VIII"}
 LINK_UNITS = {"angle": "deg", "omega": "rad/s", "alpha": "rad/s²", "jerk": "rad/s³"}
 POINT_PARTS = {"x": ("x", "y"), "v": ("vx", "vy"), "a": ("ax", "ay"), "j": ("jx", "jy")}
 POINT_UNITS = {

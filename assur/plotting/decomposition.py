@@ -57,7 +57,7 @@ def draw_decomposition(table: Table, angle: Any = None) -> Any:
     -------
     matplotlib.figure.Figure
     """
-    from assur.structure import structure
+    from assur._structure import structure
 
     ctx = _context(table)
     row = _row(table, angle)
@@ -272,7 +272,7 @@ def _load_arrows(
 
 def _load_value(ctx: _Context, row: int, value: Any, entry: str) -> np.ndarray:
     """Return a load's value at ``row``: constant, or from its load table (N, N m)."""
-    from assur.loads import table_values
+    from assur._loads import table_values
     from assur.model import LoadTable
 
     if not isinstance(value, LoadTable):

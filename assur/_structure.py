@@ -15,6 +15,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
+from assur._text import roman
 from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, resolve_point
 
@@ -30,7 +31,6 @@ __all__ = [
     "topology",
 ]
 
-ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V", 6: "VI", 7: "VII", 8: "VIII"}
 MAX_GROUP_LINKS = 8
 
 
@@ -123,7 +123,7 @@ class Structure:
     def formula(self) -> str:
         """Structure formula, e.g. ``I(ground, 1) -> II(2, 3)``."""
         steps = [
-            f"{ROMAN.get(g.group_class, g.group_class)}({', '.join(_public(g.links))})"
+            f"{roman(g.group_class)}({', '.join(_public(g.links))})"
             for g in (*self.drivers, *self.groups)
         ]
         return " -> ".join(steps)
@@ -134,7 +134,7 @@ class Structure:
         def group(g: Group) -> dict[str, Any]:
             return {
                 "class": g.group_class,
-                "class_roman": ROMAN.get(g.group_class),
+                "class_roman": roman(g.group_class),
                 "order": g.order,
                 "kind": g.kind,
                 "links": list(g.links),

@@ -1,0 +1,124 @@
+"""Words shared by every message and report: numerals, suggestions, echoed values.
+
+The one place where roman numerals, "did you mean" hints, driver positions and values
+echoed back to the user are written out, so that the model, the file reader, the
+tables, the reports and the pictures word them alike.
+"""
+
+from __future__ import annotations
+
+import datetime
+import difflib
+import math
+from collections.abc import Iterable, Mapping, Sequence
+
+__all__ = [
+    "ROMAN",
+    "describe",
+    "position_text",
+    "roman",
+    "suggest",
+]
+
+ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V", 6: "VI", 7: "VII", 8: "VIII"}
+"""Roman numerals of the classes of Assur groups."""
+ECHO_LIMIT = 60
+"""Most characters of a value echoed back in a message."""
+ITEMS_SHOWN = 4
+"""Most items of a list or keys of a table echoed back in a message."""
+
+
+def roman(number: int) -> str:
+    """Return the roman numeral of a group's class (digits beyond VIII)."""
+    return ROMAN.get(number, str(number))
+
+
+def suggest(name: str, known: Iterable[str], listing: bool = True) -> str:
+    """Return a hint for an unknown ``name``: the closest of ``known``, or all of them.
+
+    Examples
+    --------
+    >>> suggest("rodd", ["crank", "rod"])
+    "; did you mean 'rod'?"
+    >>> suggest("zz", ["a", "b"])
+    ' (known: a, b)'
+    """
+    names = sorted(str(k) for k in known)
+    close = difflib.get_close_matches(str(name), names, n=1)
+    if close:
+        return f"; did you mean {close[0]!r}?"
+    if not listing:
+        return ""
+    shown = ", ".join(names[:12]) + (", ..." if len(names) > 12 else "")
+    return f" (known: {shown or 'none'})"
+
+
+def describe(value: object, limit: int = ECHO_LIMIT) -> str:
+    """Return ``value`` as a message echoes it: short, in the file's own words.
+
+    Long strings and lists are cut, tables show their keys, dates and times their
+    ISO form; never a Python repr of a foreign object.
+
+    Examples
+    --------
+    >>> describe(list(range(10000)))
+    '[0, 1, 2, 3, ... (10000 items)]'
+    >>> describe(datetime.date(2020, 1, 1))
+    'the date 2020-01-01'
+    """
+    text = _describe(value, limit)
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def _describe(value: object, limit: int) -> str:
+    """Body of :func:`describe`, before the final cut."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, str):
+        shown = value if len(value) <= limit else value[: limit - 5] + "..."
+        return repr(shown)
+    if isinstance(value, int):
+        digits = len(str(abs(value))) if abs(value) < 10**50 else None
+        if digits is None:
+            return f"an integer of {_digits(value)} digits"
+        return str(value)
+    if isinstance(value, float):
+        return repr(value) if math.isfinite(value) else str(value)
+    if isinstance(value, datetime.datetime):
+        return f"the date and time {value.isoformat()}"
+    if isinstance(value, datetime.date):
+        return f"the date {value.isoformat()}"
+    if isinstance(value, datetime.time):
+        return f"the time {value.isoformat()}"
+    if isinstance(value, Mapping):
+        keys = [str(k) for k in list(value)[: ITEMS_SHOWN + 1]]
+        more = ", ..." if len(value) > ITEMS_SHOWN else ""
+        return "a table {" + ", ".join(keys[:ITEMS_SHOWN]) + more + "}"
+    if isinstance(value, Sequence):
+        items = [_describe(v, limit // 2) for v in list(value[: ITEMS_SHOWN + 1])]
+        if len(value) > ITEMS_SHOWN:
+            return "[" + ", ".join(items[:ITEMS_SHOWN]) + f", ... ({len(value)} items)]"
+        return "[" + ", ".join(items) + "]"
+    return f"a value of type {type(value).__name__}"
+
+
+def _digits(value: int) -> int:
+    """Count the decimal digits of a huge integer without turning it into text."""
+    return max(1, math.floor(value.bit_length() * math.log10(2)) + 1)
+
+
+def position_text(kinds: Sequence[str], values: Sequence[float]) -> str:
+    """Return driver positions for a message: "30 deg" or "0.1 m", comma-separated.
+
+    ``kinds`` holds each driver's pair kind ("R" or "P"), ``values`` its position in
+    the user's units (deg, or m).
+
+    Examples
+    --------
+    >>> position_text(["R", "P"], [30.0, 0.125])
+    '30 deg, 0.125 m'
+    """
+    return ", ".join(
+        f"{x:.6g} deg" if kind == "R" else f"{x:.6g} m"
+        for kind, x in zip(kinds, values, strict=False)
+    )
