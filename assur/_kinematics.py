@@ -2,7 +2,9 @@
 
 The driving links move as prescribed; each Assur group then follows from the links it
 hangs on, in the order of attachment, for the whole batch of driver positions at once.
-The result is a :class:`KinematicState` of read-only arrays, driver position first.
+The result is a :class:`KinematicState` of read-only arrays, driver position first: the
+motion of every link (its rotation and the path of its origin, with their derivatives),
+from which every point of every link follows.
 """
 
 from __future__ import annotations
@@ -14,40 +16,34 @@ from typing import Any
 import numpy as np
 
 from assur._vec import Array
-from assur.groups import DYADS, _dyad, general
-from assur.groups._dyad import DyadPlan
 from assur.groups._motion import Motion
-from assur.groups._motion import point as point_of
 from assur.groups._pairs import slide
 from assur.groups.driver import motion
 from assur.plan import Plan
 
 __all__ = [
-    "SINGULAR",
     "KinematicState",
     "Trouble",
+    "allocate",
     "collect",
+    "freeze",
+    "motions",
     "solve",
     "velocity_coefficients",
 ]
 
-SINGULAR = 1e-9
-"""Below this sine of the angle between a group's Jacobian columns a pose is a dead
-centre: velocities are undefined there."""
-NEAR_SINGULAR = 0.035
-"""Below this (about 2 degrees of transmission angle) a pose is near-singular."""
-NEAR_SINGULAR_GENERAL = 1e-3
-"""The same for the reciprocal condition number of a larger group's Jacobian."""
 CONTINUATION_STEP = math.radians(5.0)
 """Largest step of the driver along the continuation path of a Newton-solved group."""
+LEVELS = 4
+"""Position, velocity, acceleration and jerk."""
 
 
 @dataclass(frozen=True, slots=True)
 class Trouble:
     """Driver positions (``mask``) where a group met trouble.
 
-    Group ``group`` failed (``what``:
-    "assembly", "singular") or came near a dead centre ("near").
+    Group ``group`` failed (``what``: "assembly", "singular") or came near a dead
+    centre ("near").
     """
 
     group: str
@@ -57,69 +53,93 @@ class Trouble:
 
 @dataclass(frozen=True, slots=True)
 class KinematicState:
-    """The motion of every link and reported point over a sweep.
+    """The motion of every link over a sweep: the forward pass's frozen result.
 
     Attributes
     ----------
     drive : ndarray (n, d)
-        Driver positions, rad (m for a prismatic driver).
+        Driver positions, rad (m for a prismatic driver), as solved: a crank's angle
+        within half a turn of the reference pose.
+    speed, acceleration : ndarray (n, d)
+        Each driver's speed (rad/s or m/s) and acceleration (rad/s^2 or m/s^2).
     link : ndarray (4, n, B)
         Each link's rotation from the reference pose (rad) and its derivatives
         (rad/s, rad/s^2, rad/s^3); index 0 is the frame.
-    origin : ndarray (n, B, 2)
-        Each link's origin, m (the point its body-fixed offsets start from).
-    point : ndarray (4, n, U, 2)
-        Position (m), velocity, acceleration and jerk of every distinct reported
-        point; ``Plan.point_index`` gives a point's slot by name.
+    origin : ndarray (4, n, B, 2)
+        Each link's origin (m, core coordinates: see ``Plan.shift``) and its
+        velocity, acceleration and jerk.
     slide : dict of str to ndarray (4, n)
         Slide (m) of every prismatic pair and its derivatives.
+    top : int
+        The highest derivative solved (3: jerks; 2: accelerations).
+    scalars : tuple
+        Per body, the twelve quantities ``phi[k], ox[k], oy[k]`` (k = 0..3) that do
+        not change over the sweep, as floats (None where they do): what
+        :func:`motions` needs to rebuild the forward pass's motions exactly.
     """
 
     drive: Array
+    speed: Array
+    acceleration: Array
     link: Array
     origin: Array
-    point: Array
     slide: dict[str, Array]
+    top: int = 3
+    scalars: tuple[tuple[Any, ...], ...] = ()
+
+    def __len__(self) -> int:
+        return int(self.drive.shape[0])
+
+    def rows(self, rows: slice) -> KinematicState:
+        """Return the state at a slice of rows, as views."""
+        return KinematicState(
+            self.drive[rows],
+            self.speed[rows],
+            self.acceleration[rows],
+            self.link[:, rows],
+            self.origin[:, rows],
+            {k: v[:, rows] for k, v in self.slide.items()},
+            self.top,
+            self.scalars,
+        )
+
+    def take(self, rows: Any) -> KinematicState:
+        """Return the state at ``rows`` (a mask or indices), a copy."""
+        return KinematicState(
+            self.drive[rows],
+            self.speed[rows],
+            self.acceleration[rows],
+            self.link[:, rows],
+            self.origin[:, rows],
+            {k: v[:, rows] for k, v in self.slide.items()},
+            self.top,
+            self.scalars,
+        )
 
 
-def _batch(q: Any, n: int) -> Array:
-    """Return ``q`` as n values (a group hanging on the frame alone is constant)."""
-    return q if np.ndim(q) else np.full(n, float(q))
-
-
-def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Trouble]]:
+def solve(
+    plan: Plan, drive: Array, speed: Any, acceleration: Any, top: int = 3
+) -> tuple[list[Motion], list[Trouble]]:
     """Solve the motion of every link at driver positions ``drive`` (n, d), SI units.
 
-    Returns the links' motions (levels 0 to ``top``) and the troubles met.
-    Positions that
-    fail hold NaN.
+    ``speed`` and ``acceleration`` hold each driver's rate: a float per driver (a
+    sequence) or an array (n,) per driver. Returns the links' motions (levels 0 to
+    ``top``) and the troubles met; positions that fail hold NaN.
     """
     n = drive.shape[0]
     guesses = _continuation(plan, drive) if plan.newton else None
-    bodies = _drivers(plan, drive)
+    bodies = drivers(plan, drive, speed, acceleration)
     troubles: list[Trouble] = []
     g = 0
     for solver in plan.solvers:
-        if isinstance(solver, DyadPlan):
-            q1, q2 = DYADS[solver.kind].assemble(solver, bodies)
-            q1, q2 = _batch(q1, n), _batch(q2, n)
-            _dyad.set_pose(solver, bodies, q1, q2)
-            jac: Any = _dyad.jacobian(solver, bodies)
-            cond = _dyad.conditioning(solver, jac, plan.scale)
-            failed = ~(np.isfinite(q1) & np.isfinite(q2))
-            limit = NEAR_SINGULAR
-        else:
-            general.positions(
-                solver, bodies, n, None if guesses is None else guesses[g]
-            )
-            g += 1
-            failed = ~np.isfinite(bodies[solver.bodies[0]].phi[0])
-            jac = general.jacobian(solver, bodies, n)
-            jac[failed] = np.eye(jac.shape[-1])
-            cond = general.conditioning(solver, jac)
-            limit = NEAR_SINGULAR_GENERAL
-        singular = ~failed & ~(cond >= SINGULAR)
-        near = ~failed & ~singular & (cond < limit)
+        guess = None
+        if solver.newton:
+            assert guesses is not None
+            guess, g = guesses[g], g + 1
+        failed = solver.assemble(bodies, n, guess).failed
+        lin = solver.linearize(bodies)
+        singular = ~failed & lin.singular
+        near = ~failed & ~singular & (lin.conditioning < solver.near)
         for what, mask in (
             ("assembly", failed),
             ("singular", singular),
@@ -128,29 +148,23 @@ def solve(plan: Plan, drive: Array, top: int = 3) -> tuple[list[Motion], list[Tr
             if mask.any():
                 troubles.append(Trouble(solver.label, what, mask))
         for k in range(1, top + 1):
-            if isinstance(solver, DyadPlan):
-                _dyad.derivative(solver, bodies, k, jac)
-            else:
-                jac[singular] = np.eye(jac.shape[-1])
-                general.derivative(solver, bodies, k, jac, n)
-        if top == 3:
-            for b in solver.bodies:
-                bodies[b].finish()
+            solver.derivative(bodies, k, lin)
+        for b in solver.bodies:
+            bodies[b].finish()
     return bodies, troubles
 
 
-def _drivers(plan: Plan, drive: Array, rates: Array | None = None) -> list[Motion]:
+def drivers(plan: Plan, drive: Array, speed: Any, acceleration: Any) -> list[Motion]:
+    """Return every body at rest but the driving links, which move as prescribed."""
     bodies: list[Motion] = [Motion.fixed()] * len(plan.bodies)
     for i, d in enumerate(plan.drivers):
-        bodies[d.body] = motion(
-            d, drive[:, i], None if rates is None else float(rates[i])
-        )
-        if rates is None:
-            bodies[d.body].finish()
+        m = motion(d, drive[:, i], speed[i], acceleration[i])
+        m.finish()
+        bodies[d.body] = m
     return bodies
 
 
-def _continuation(plan: Plan, drive: Array) -> list:
+def _continuation(plan: Plan, drive: Array) -> list[Any]:
     """Follow the Newton groups from the reference pose to ``drive``.
 
     Each position is reached along the straight path of the driver from the reference
@@ -180,7 +194,7 @@ def _continuation(plan: Plan, drive: Array) -> list:
     return guesses
 
 
-def _walk(plan: Plan, drive: Array) -> list:
+def _walk(plan: Plan, drive: Array) -> list[Any]:
     """Return the Newton groups' poses along straight paths to ``drive``."""
     n = drive.shape[0]
     reference = np.array([d.reference for d in plan.drivers])
@@ -192,23 +206,23 @@ def _walk(plan: Plan, drive: Array) -> list:
     )
     span = float(np.max(np.abs(drive - reference) / step)) if drive.size else 0.0
     count = max(1, math.ceil(span))
-    guesses: list = [None] * sum(not isinstance(s, DyadPlan) for s in plan.solvers)
+    still = [0.0] * len(plan.drivers)
+    guesses: list[Any] = [None] * sum(s.newton for s in plan.solvers)
     for s in range(1, count + 1):
-        bodies = _drivers(plan, reference + (drive - reference) * (s / count))
+        bodies = drivers(
+            plan, reference + (drive - reference) * (s / count), still, still
+        )
         g = 0
         for solver in plan.solvers:
-            if isinstance(solver, DyadPlan):
-                q1, q2 = DYADS[solver.kind].assemble(solver, bodies)
-                _dyad.set_pose(solver, bodies, _batch(q1, n), _batch(q2, n))
-            else:
-                guesses[g] = general.positions(solver, bodies, n, guesses[g])
+            if solver.newton:
+                guesses[g] = solver.assemble(bodies, n, guesses[g]).guess
                 g += 1
+            else:
+                solver.assemble(bodies, n)
     return guesses
 
 
-def velocity_coefficients(
-    plan: Plan, bodies: list[Motion], which: int, n: int
-) -> list[Motion]:
+def velocity_coefficients(plan: Plan, bodies: list[Motion], which: int) -> list[Motion]:
     """Return the links' velocities for a unit speed of driver ``which``, others still.
 
     Only the velocity level (index 1) of the returned motions is meaningful; it is the
@@ -217,20 +231,12 @@ def velocity_coefficients(
     """
     out: list[Motion] = list(bodies)
     for i, d in enumerate(plan.drivers):
-        rate = motion(d, np.zeros(1), 1.0 if i == which else 0.0)
+        rate = motion(d, np.zeros(1), 1.0 if i == which else 0.0, 0.0)
         out[d.body] = _copy(bodies[d.body], rate.phi[1], rate.ox[1], rate.oy[1])
     for solver in plan.solvers:
         for b in solver.bodies:
             out[b] = _copy(bodies[b], 0.0, 0.0, 0.0)
-        if isinstance(solver, DyadPlan):
-            _dyad.derivative(solver, out, 1, _dyad.jacobian(solver, out))
-        else:
-            jac = general.jacobian(solver, out, n)
-            bad = ~np.isfinite(jac).all(axis=(1, 2)) | (
-                general.conditioning(solver, jac) < SINGULAR
-            )
-            jac[bad] = np.eye(jac.shape[-1])
-            general.derivative(solver, out, 1, jac, n)
+        solver.derivative(out, 1, solver.linearize(out))
     return out
 
 
@@ -246,28 +252,36 @@ def _copy(m: Motion, omega: Any, vx: Any, vy: Any) -> Motion:
     return c
 
 
-def allocate(plan: Plan, n: int) -> KinematicState:
+def allocate(plan: Plan, n: int, top: int = 3) -> KinematicState:
     """Return a writable state for ``n`` driver positions, to be filled by chunks.
 
-    Each array is stored with the driver position last (contiguous rows per link and
-    point, so that chunks are written in place) and exposed driver position first.
+    Each array is stored with the driver position last (contiguous rows per link, so
+    that chunks are written in place) and exposed driver position first.
     """
-    count, points = len(plan.bodies), len(plan.point_sets)
-    link = np.empty((4, count, n)).transpose(0, 2, 1)
-    origin = np.empty((2, count, n)).transpose(2, 1, 0)
-    point = np.empty((4, 2, points, n)).transpose(0, 3, 2, 1)
-    drive = np.empty((len(plan.drivers), n)).T
-    slides = {name: np.empty((4, n)) for name, p in plan.pairs.items() if p.kind == "P"}
-    return KinematicState(drive, link, origin, point, slides)
+    count, d = len(plan.bodies), len(plan.drivers)
+    return KinematicState(
+        np.empty((d, n)).T,
+        np.empty((d, n)).T,
+        np.empty((d, n)).T,
+        np.empty((LEVELS, count, n)).transpose(0, 2, 1),
+        np.empty((LEVELS, 2, count, n)).transpose(0, 3, 2, 1),
+        {
+            name: np.empty((LEVELS, n))
+            for name, p in plan.pairs.items()
+            if p.kind == "P"
+        },
+        top,
+    )
 
 
 def freeze(state: KinematicState) -> KinematicState:
     """Make every array of ``state`` read-only."""
     for arr in (
         state.drive,
+        state.speed,
+        state.acceleration,
         state.link,
         state.origin,
-        state.point,
         *state.slide.values(),
     ):
         arr.flags.writeable = False
@@ -277,66 +291,90 @@ def freeze(state: KinematicState) -> KinematicState:
 def collect(
     plan: Plan,
     bodies: list[Motion],
-    n: int,
-    out: KinematicState | None = None,
+    drive: Array,
+    rates: tuple[Any, Any],
+    out: KinematicState,
     start: int = 0,
 ) -> KinematicState:
-    """Gather the links' motions and every reported point into ``out[start:start+n]``.
+    """Write the links' motions into rows ``start`` onwards of ``out``.
 
-    Returns the state of this chunk (views of ``out`` when given).
+    ``rates`` holds the drivers' speeds and accelerations as given to :func:`solve`.
+    Returns ``out`` with the scalars of the motions recorded.
     """
-    if out is None:
-        out = allocate(plan, n)
+    n = drive.shape[0]
     rows = slice(start, start + n)
-    link, origin, point = out.link[:, rows], out.origin[rows], out.point[:, rows]
+    link, origin = out.link[:, rows], out.origin[:, rows]
+    top = out.top
     for b, m in enumerate(bodies):
-        for k in range(4):
+        for k in range(top + 1):
             link[k, :, b] = m.phi[k]
-        origin[:, b, 0] = m.ox[0]
-        origin[:, b, 1] = m.oy[0]
-    # point by point on rows of the chunk: temporaries stay small enough for the cache
-    # and below the allocator's mmap threshold, and rotations solved already are reused;
-    # coincident points are computed once, a body's origin and a still body's
-    # derivatives need no rotation terms
-    for slot, (b, d) in enumerate(plan.point_sets):
-        m = bodies[b]
-        still = all(m.phi[j].__class__ is float and not m.phi[j] for j in (1, 2, 3))
-        for k in range(4):
-            if d == (0.0, 0.0) or (k and still):
-                xy = (m.ox[k], m.oy[k])
-            else:
-                xy = point_of(m, d, k)
-            point[k, :, slot, 0], point[k, :, slot, 1] = xy
-    slides = {name: arr[:, rows] for name, arr in out.slide.items()}
-    _slides(plan, bodies, slides)
-    drive = out.drive[rows]
-    for i, d in enumerate(plan.drivers):
-        m = bodies[d.body]
-        if d.kind == "R":
-            drive[:, i] = m.phi[0] + d.angle0
-        else:
-            ex, ey = d.pair.axis  # type: ignore[misc]
-            drive[:, i] = (
-                d.reference
-                + (m.ox[0] - d.origin[0]) * ex
-                + (m.oy[0] - d.origin[1]) * ey
-            )
-    return KinematicState(drive, link, origin, point, slides)
+            origin[k, :, b, 0] = m.ox[k]
+            origin[k, :, b, 1] = m.oy[k]
+    out.drive[rows] = drive
+    for i in range(len(plan.drivers)):
+        out.speed[rows, i] = rates[0][i]
+        out.acceleration[rows, i] = rates[1][i]
+    _slides(plan, bodies, {name: arr[:, rows] for name, arr in out.slide.items()}, top)
+    if out.scalars:
+        return out
+    scalars = tuple(
+        tuple(
+            v if v.__class__ is float else None
+            for v in (*m.phi[: top + 1], *m.ox[: top + 1], *m.oy[: top + 1])
+        )
+        for m in bodies
+    )
+    return KinematicState(
+        out.drive,
+        out.speed,
+        out.acceleration,
+        out.link,
+        out.origin,
+        out.slide,
+        top,
+        scalars,
+    )
 
 
-def _slides(plan: Plan, bodies: list[Motion], out: dict[str, Array]) -> None:
-    """Slides of the prismatic pairs: a dyad's own coordinate where it is one."""
-    known: dict[str, tuple[int, float]] = {}
+def _slides(plan: Plan, bodies: list[Motion], out: dict[str, Array], top: int) -> None:
+    """Slides of the prismatic pairs: a group's own coordinate where it is one."""
+    own: dict[str, tuple[int, float]] = {}
     for solver in plan.solvers:
-        if isinstance(solver, DyadPlan):
-            for b, pair in zip(solver.bodies, solver.ext, strict=False):
-                if pair.kind == "P":
-                    known[pair.name] = (b, 1.0 if pair.second == b else -1.0)
+        own.update(solver.own_slides())
     for name, arr in out.items():
-        if name in known:
-            body, sign = known[name]
-            for k in range(4):
+        if name in own:
+            body, sign = own[name]
+            for k in range(top + 1):
                 arr[k] = sign * bodies[body].q[k]
         else:
-            for k in range(4):
+            for k in range(top + 1):
                 arr[k] = slide(plan.pairs[name], bodies, k)
+
+
+def motions(plan: Plan, state: KinematicState, rows: Any = slice(None)) -> list[Motion]:
+    """Rebuild the forward pass's motions from a frozen state, at ``rows``.
+
+    The quantities that were constant floats in the forward pass are floats again, so
+    every kernel run on the rebuilt motions takes the same steps and gives the same
+    numbers as on the originals.
+    """
+    levels = state.top + 1
+    pad = [0.0] * (LEVELS - levels)
+    out = []
+    for b, scalars in enumerate(state.scalars):
+        arrays = (state.link[:, rows, b], *state.origin[:, rows, b].transpose(2, 0, 1))
+        parts = [
+            [
+                arr[k] if scalars[j * levels + k] is None else scalars[j * levels + k]
+                for k in range(levels)
+            ]
+            + pad
+            for j, arr in enumerate(arrays)
+        ]
+        out.append(Motion(*parts))
+    for solver in plan.solvers:
+        for name, (body, sign) in solver.own_slides().items():
+            out[body].q = [sign * v for v in state.slide[name][:levels, rows]]
+    for m in out:
+        m.finish()
+    return out

@@ -6,15 +6,15 @@ crank, or a prismatic joint's slide) and interpolated linearly over the batch.
 
 from __future__ import annotations
 
-import functools
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from assur._vec import Array
 from assur.errors import ModelError
-from assur.model import LoadTable, Mechanism, resolve_point
-from assur.plan import Plan, compile_plan
+from assur.model import LoadTable, resolve_point
+from assur.plan import Plan
 
 __all__ = ["LoadPlan", "compile_loads", "table_values"]
 
@@ -25,20 +25,17 @@ WHAT = {"center": "centre of mass", "inertia": "moment of inertia about it, kg m
 class LoadPlan:
     """Per-body mass (kg), centre offset (m) and inertia (kg m^2); forces and torques.
 
-    ``center_point`` is the index of each body's centre among the plan's reported
-    points (-1 without one).
-
-    ``forces`` holds ``(body, offset, value, entry)`` with ``value`` a constant (2,)
-    array (N) or a :class:`LoadTable`; ``torques`` holds ``(body, value, entry)``.
+    ``forces`` holds ``(body, offset, value, entry)`` with ``value`` a constant force
+    ``(F_x, F_y)`` (N) or a :class:`LoadTable`; ``torques`` holds ``(body, value,
+    entry)``.
     """
 
     mass: Array
     center: tuple[tuple[float, float], ...]
-    center_point: tuple[int, ...]
     inertia: Array
     gravity: tuple[float, float]
-    forces: tuple
-    torques: tuple
+    forces: tuple[tuple[int, tuple[float, float], Any, str], ...]
+    torques: tuple[tuple[int, Any, str], ...]
 
     @property
     def empty(self) -> bool:
@@ -47,20 +44,22 @@ class LoadPlan:
 
 
 def compile_loads(plan: Plan) -> LoadPlan:
-    """Collect the mass properties and loads of ``plan``'s mechanism.
+    """Collect the mass properties and loads of ``plan``'s mechanism (once per plan).
 
     Raises
     ------
     ModelError
         When a link has a mass but no centre of mass or no moment of inertia.
     """
-    return _compile(plan.mechanism)
+    found = plan.memo.get("loads")
+    if found is None:
+        found = plan.memo["loads"] = _compile(plan)
+    return found  # type: ignore[no-any-return]
 
 
-@functools.lru_cache(maxsize=128)
-def _compile(mech: Mechanism) -> LoadPlan:
-    """Memoised body of :func:`compile_loads`, keyed on the mechanism's value."""
-    plan = compile_plan(mech)
+def _compile(plan: Plan) -> LoadPlan:
+    """Body of :func:`compile_loads`."""
+    mech = plan.mechanism
     count = len(plan.bodies)
     mass, inertia, center = np.zeros(count), np.zeros(count), np.zeros((count, 2))
     for link in mech.links:
@@ -70,8 +69,7 @@ def _compile(mech: Mechanism) -> LoadPlan:
             if getattr(link, key) is None:
                 msg = (
                     f"links.{link.name}: a link with a mass needs its '{key}' "
-                    f"({WHAT[key]})"
-                    " for the force analysis"
+                    f"({WHAT[key]}) for the force analysis"
                 )
                 raise ModelError(msg)
         b = plan.body(link.name)
@@ -86,13 +84,12 @@ def _compile(mech: Mechanism) -> LoadPlan:
         if load.force is not None:
             assert load.at is not None
             ox, oy = plan.offset(b, resolve_point(mech, load.at))
-            offset = (float(ox), float(oy))
             value = (
                 load.force
                 if isinstance(load.force, LoadTable)
                 else (float(load.force[0]), float(load.force[1]))
             )
-            forces.append((b, offset, value, f"loads[{i}].force"))
+            forces.append((b, (float(ox), float(oy)), value, f"loads[{i}].force"))
         if load.torque is not None:
             torque = (
                 load.torque
@@ -105,15 +102,13 @@ def _compile(mech: Mechanism) -> LoadPlan:
         if mech.gravity is None
         else (float(mech.gravity[0]), float(mech.gravity[1]))
     )
-    center_point = tuple(plan.point_index.get(f"{name}.G", -1) for name in plan.bodies)
     return LoadPlan(
         mass,
-        inertia=inertia,
-        center=centers,
-        center_point=center_point,
-        gravity=gravity,
-        forces=tuple(forces),
-        torques=tuple(torques),
+        centers,
+        inertia,
+        gravity,
+        tuple(forces),
+        tuple(torques),
     )
 
 

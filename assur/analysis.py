@@ -1,7 +1,8 @@
-"""Sweeps over driver positions: the library's main entry points and their tables.
+"""Sweeps over driver positions: the library's main entry points.
 
-:func:`kinematics` and :func:`forces` run the forward and reverse passes over a whole
-sweep (in slices, so temporaries stay in cache) and return a :class:`Table` whose
+:func:`kinematics` and :func:`forces` check their arguments, run the forward and
+reverse passes over the whole sweep in slices (so temporaries stay in cache), report
+the positions where a group failed, and return a :class:`~assur.table.Table` whose
 columns are the mechanism file contract's.
 """
 
@@ -10,7 +11,6 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Sequence
-from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -18,93 +18,28 @@ import numpy as np
 from assur import _kinematics as _kin
 from assur import kinetostatics as _kst
 from assur._loads import compile_loads
-from assur._text import suggest
+from assur._text import position_text, suggest
 from assur._vec import Array
+from assur.columns import Column, schema
 from assur.errors import (
     AssemblyError,
     AssurWarning,
     ModelError,
     SingularConfigurationError,
+    UsageError,
 )
 from assur.model import Mechanism
-from assur.plan import Plan, compile_plan
+from assur.plan import Plan, plan_of
+from assur.table import Table
 
 __all__ = ["Table", "default_positions", "forces", "kinematics"]
 
 CHUNK = 8192
 """Driver positions solved at once; long sweeps run in slices of this size."""
 
-
-@dataclass(frozen=True)
-class Table:
-    """Results per driver position, by column name.
-
-    ``table["rod.omega"]`` is a read-only array with one value per position;
-    ``columns`` lists the names in order. ``state`` and ``force_state`` keep the
-    arrays the columns come from, for plotting.
-    """
-
-    mechanism: Mechanism
-    columns: tuple[str, ...]
-    data: dict[str, Array]
-    state: _kin.KinematicState
-    force_state: _kst.ForceState | None = None
-    skipped: Array = field(default_factory=lambda: np.zeros(0))
-    """Driver positions left out (deg, or m), with ``skip_unassembled``."""
-
-    def __getitem__(self, name: str) -> Array:
-        try:
-            return self.data[name]
-        except KeyError:
-            msg = f"no column {name!r}{suggest(name, self.columns, listing=False)}"
-            raise KeyError(msg) from None
-
-    def __len__(self) -> int:
-        return int(self.state.drive.shape[0])
-
-    def __contains__(self, name: object) -> bool:
-        return name in self.data
-
-    def to_array(self) -> Array:
-        """Return the table as one array (rows, columns)."""
-        return np.column_stack([self.data[c] for c in self.columns])
-
-    def to_csv(self, path: Any = None) -> str | None:
-        """Write the table as CSV to ``path`` (a path, a file object or ``"-"``).
-
-        Without ``path`` the CSV text is returned.
-        """
-        from assur.io import write_csv
-
-        return write_csv(self, path)
-
-    def to_dict(self) -> dict[str, Any]:
-        """Return JSON-ready data: the mechanism's name, the columns and the rows."""
-        rows = self.to_array()
-        return {
-            "name": self.mechanism.name,
-            "columns": list(self.columns),
-            "rows": [
-                {c: _json_number(v) for c, v in zip(self.columns, row, strict=True)}
-                for row in rows
-            ],
-        }
-
-    def to_pandas(self) -> Any:
-        """Return a pandas DataFrame (pandas must be installed)."""
-        import pandas as pd
-
-        return pd.DataFrame({c: self.data[c] for c in self.columns})
-
-    def plot(self, angle: float | None = None, **kwargs: Any) -> Any:
-        """Draw the mechanism at a driver position (see :func:`assur.plotting.draw`)."""
-        from assur.plotting import draw
-
-        return draw(self, angle=angle, **kwargs)
-
-
-def _json_number(v: float) -> float | None:
-    return float(v) if math.isfinite(v) else None
+Rates = tuple[tuple[Any, ...], tuple[Any, ...]]
+"""Each driver's speed and acceleration: a float, or an array with one value per
+position."""
 
 
 def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
@@ -112,7 +47,7 @@ def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
 
     For a prismatic driver: 101 positions over +-20 % of the mechanism's size.
     """
-    plan = compile_plan(mech)
+    plan = plan_of(mech)
     starts = []
     for d in plan.drivers:
         if d.kind == "R":
@@ -124,40 +59,14 @@ def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
     return out[:, 0] if out.shape[1] == 1 else out
 
 
-def _to_si(plan: Plan, angles: Any) -> Array:
-    arr = np.asarray(angles, dtype=float)
-    d = len(plan.drivers)
-    if d == 0:
-        msg = "drivers: the mechanism has no driver; expected a [[drivers]] entry"
-        raise ModelError(msg)
-    if arr.ndim == 0:
-        arr = arr.reshape(1)
-    if arr.ndim == 1 and d > 1:
-        if arr.shape[0] != d:
-            msg = (
-                f"angles: the mechanism has {d} drivers; expected an array of shape "
-                f"(n, {d}), got shape {arr.shape}"
-            )
-            raise ModelError(msg)
-        arr = arr[None, :]
-    if arr.ndim == 1:
-        arr = arr[:, None]
-    if arr.ndim != 2 or arr.shape[1] != d:
-        msg = f"angles: expected shape (n, {d}) for {d} driver(s), got {arr.shape}"
-        raise ModelError(msg)
-    if not np.all(np.isfinite(arr)):
-        msg = "angles: expected finite driver positions"
-        raise ModelError(msg)
-    scale = np.array(
-        [math.radians(1.0) if p.kind == "R" else 1.0 for p in plan.drivers]
-    )
-    return arr * scale
-
-
 def kinematics(
     mechanism: Mechanism,
     angles: Sequence[float] | Array,
     skip_unassembled: bool = False,
+    *,
+    omega: Any = None,
+    epsilon: Any = None,
+    columns: Sequence[str] | None = None,
 ) -> Table:
     """Positions, velocities, accelerations and jerks over driver positions.
 
@@ -170,6 +79,12 @@ def kinematics(
     skip_unassembled : bool
         Leave out the positions where a group cannot be assembled instead of raising;
         ``Table.skipped`` lists them.
+    omega, epsilon : float or array_like, optional
+        The driver's speed (rad/s; m/s for a prismatic driver) and acceleration
+        (rad/s^2; m/s^2) at every position, replacing the file's constants: a number,
+        or one value per position (shape (n,); (n, drivers) with several drivers).
+    columns : sequence of str, optional
+        Compute only these columns (and ``angle``).
 
     Returns
     -------
@@ -180,6 +95,8 @@ def kinematics(
     AssemblyError, SingularConfigurationError
         At the first driver position where a group cannot close or is at a dead
         centre, naming the group.
+    UsageError
+        When an argument cannot be used (shape, values, unknown column).
 
     Examples
     --------
@@ -188,13 +105,17 @@ def kinematics(
     >>> t["crank.omega"].tolist()
     [10.0, 10.0]
     """
-    return _sweep(mechanism, angles, False, skip_unassembled)
+    return _sweep(mechanism, angles, False, skip_unassembled, omega, epsilon, columns)
 
 
 def forces(
     mechanism: Mechanism,
     angles: Sequence[float] | Array,
     skip_unassembled: bool = False,
+    *,
+    omega: Any = None,
+    epsilon: Any = None,
+    columns: Sequence[str] | None = None,
 ) -> Table:
     """Kinematics plus inertia loads, joint reactions and balancing loads.
 
@@ -213,57 +134,213 @@ def forces(
     >>> bool(abs(t["driver.torque"][0] - t["driver.torque_check"][0]) < 1e-9)
     True
     """
-    plan = compile_plan(mechanism)
+    plan = plan_of(mechanism)
     if compile_loads(plan).empty:
         msg = (
             "forces: no link has a mass and no load is applied; expected 'mass', "
             "'center' and 'inertia' on the links or [[loads]] for a force analysis"
         )
         raise ModelError(msg)
-    return _sweep(mechanism, angles, True, skip_unassembled)
+    return _sweep(mechanism, angles, True, skip_unassembled, omega, epsilon, columns)
 
 
-def _sweep(mech: Mechanism, angles: Any, with_forces: bool, skip: bool) -> Table:
-    from assur.columns import build_columns
-
-    plan = compile_plan(mech)
-    drive = _to_si(plan, angles)
+def _sweep(
+    mech: Mechanism,
+    angles: Any,
+    with_forces: bool,
+    skip: bool,
+    omega: Any,
+    epsilon: Any,
+    names: Sequence[str] | None,
+) -> Table:
+    plan = plan_of(mech)
+    given = positions(plan, angles)
+    drive = to_si(plan, given)
     n = drive.shape[0]
-    state = _kin.allocate(plan, n)
-    force_state = _kst.allocate(plan, n) if with_forces else None
+    rates = driver_rates(plan, omega, epsilon, n)
+    chosen = select(plan, with_forces, names)
+    need_forces = any(c.forces for c in chosen)
+    top = max(2 if need_forces else 0, *(c.level for c in chosen))
+    loads = compile_loads(plan) if need_forces else None
+    state = _kin.allocate(plan, n, top)
+    force_state = _kst.allocate(plan, n) if need_forces else None
     troubles = []
     for start in range(0, n, CHUNK):
-        chunk = drive[start : start + CHUNK]
+        rows = slice(start, min(start + CHUNK, n))
+        part = _at(rates, rows)
         # failed or dead-centre positions carry NaN through; _report names them
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            bodies, found = _kin.solve(plan, chunk)
-            part = _kin.collect(plan, bodies, chunk.shape[0], state, start)
+            bodies, found = _kin.solve(plan, drive[rows], *part, top=top)
+            state = _kin.collect(plan, bodies, drive[rows], part, state, start)
             if force_state is not None:
-                _kst.solve(plan, bodies, part, force_state, start)
+                assert loads is not None
+                _kst.solve(plan, loads, bodies, state.rows(rows), force_state, start)
         troubles.extend((t, start) for t in found)
-    ok = _report(plan, drive, troubles, skip)
+    ok = _report(plan, given, troubles, skip)
     state = _kin.freeze(state)
     if force_state is not None:
         force_state = _kst.freeze(force_state)
-    if not ok.all():
-        state = _take_state(state, ok)
-        force_state = _take_forces(force_state, ok) if force_state else None
-    given = np.asarray(angles, dtype=float).reshape(n, len(plan.drivers))
-    columns, data = build_columns(plan, state, force_state, given[ok])
     skipped = given[~ok]
+    if not ok.all():
+        state = state.take(ok)
+        force_state = force_state.take(ok) if force_state is not None else None
+        rates = _at(rates, ok)
     return Table(
-        mech,
-        columns,
-        data,
+        plan,
+        chosen,
+        given[ok],
         state,
         force_state,
         skipped[:, 0] if skipped.shape[1] == 1 else skipped,
+        rates,
     )
 
 
-def _report(plan: Plan, drive: Array, troubles: list, skip: bool) -> Array:
+def _at(rates: Rates, rows: Any) -> Rates:
+    """Return the rates at ``rows``: floats stay floats."""
+    speed, accel = rates
+    return (
+        tuple(v if isinstance(v, float) else v[rows] for v in speed),
+        tuple(v if isinstance(v, float) else v[rows] for v in accel),
+    )
+
+
+def select(
+    plan: Plan, with_forces: bool, names: Sequence[str] | None
+) -> tuple[Column, ...]:
+    """Return the columns of a sweep: every one, or ``angle`` and those named.
+
+    Raises
+    ------
+    UsageError
+        For a name that is not a column of such a table.
+    """
+    full = schema(plan, with_forces)
+    if names is None:
+        return full
+    if isinstance(names, str):
+        names = [names]
+    index = {c.name: c for c in full}
+    wanted = {"angle"}
+    for name in names:
+        if not isinstance(name, str) or name not in index:
+            extra = ""
+            if not with_forces and name in {c.name for c in schema(plan, True)}:
+                extra = " (a force column: use assur.forces)"
+            msg = (
+                f"columns: no column {name!r}{extra}"
+                f"{suggest(str(name), index, listing=False)}"
+            )
+            raise UsageError(msg)
+        wanted.add(name)
+    return tuple(c for c in full if c.name in wanted)
+
+
+def positions(plan: Plan, angles: Any) -> Array:
+    """Return the driver positions as given (deg, or m), shape (n, drivers).
+
+    Raises
+    ------
+    UsageError
+        For positions that are not real finite numbers of the right shape.
+    """
+    d = len(plan.drivers)
+    if d == 0:
+        msg = "drivers: the mechanism has no driver; expected a [[drivers]] entry"
+        raise ModelError(msg)
+    arr = _real(angles, "angles", "driver positions")
+    if arr.ndim == 0:
+        arr = arr.reshape(1)
+    if arr.ndim == 1 and d > 1:
+        if arr.shape[0] != d:
+            msg = (
+                f"angles: the mechanism has {d} drivers; expected an array of shape "
+                f"(n, {d}), got shape {arr.shape}"
+            )
+            raise UsageError(msg)
+        arr = arr[None, :]
+    if arr.ndim == 1:
+        arr = arr[:, None]
+    if arr.ndim != 2 or arr.shape[1] != d:
+        msg = f"angles: expected shape (n, {d}) for {d} driver(s), got {arr.shape}"
+        raise UsageError(msg)
+    if not np.all(np.isfinite(arr)):
+        msg = "angles: expected finite driver positions"
+        raise UsageError(msg)
+    return arr
+
+
+def _real(values: Any, entry: str, what: str) -> Array:
+    """Return ``values`` as a float array; refuse complex numbers and other types."""
+    try:
+        arr = np.asarray(values)
+    except (TypeError, ValueError) as err:
+        msg = f"{entry}: expected real numbers ({what}), got {type(values).__name__}"
+        raise UsageError(msg) from err
+    if arr.dtype.kind not in "biuf":
+        kind = "complex numbers" if arr.dtype.kind == "c" else f"{arr.dtype} values"
+        msg = f"{entry}: expected real numbers ({what}), got {kind}"
+        raise UsageError(msg)
+    return arr.astype(float, copy=False)
+
+
+def to_si(plan: Plan, given: Array) -> Array:
+    """Return driver positions in SI units (rad or m).
+
+    A crank's angle is brought within half a turn of the reference pose, reduced
+    exactly in degrees first.
+    """
+    out = np.empty_like(given)
+    for i, d in enumerate(plan.drivers):
+        if d.kind == "R":
+            # reducing in degrees is exact; radians of a huge angle are not
+            ref = math.degrees(d.reference)
+            reduced = np.remainder(given[:, i], 360.0)
+            reduced += 360.0 * np.round((ref - reduced) / 360.0)
+            out[:, i] = np.radians(reduced)
+        else:
+            out[:, i] = given[:, i]
+    return out
+
+
+def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
+    """Return each driver's speed and acceleration for a sweep of ``n`` positions.
+
+    Without ``omega`` (``epsilon``) the file's constants; a number, or one value per
+    position, otherwise.
+    """
+    d = len(plan.drivers)
+    out = []
+    for entry, value, default in (
+        ("omega", omega, [p.omega for p in plan.drivers]),
+        ("epsilon", epsilon, [p.epsilon for p in plan.drivers]),
+    ):
+        if value is None:
+            out.append(tuple(float(v) for v in default))
+            continue
+        arr = _real(value, entry, "rad/s or m/s" if entry == "omega" else "rad/s^2")
+        if not np.all(np.isfinite(arr)):
+            msg = f"{entry}: expected finite numbers"
+            raise UsageError(msg)
+        if arr.ndim == 0 and d == 1:
+            out.append((float(arr),))
+        elif arr.ndim == 1 and d == 1 and arr.shape[0] == n:
+            out.append((np.ascontiguousarray(arr),))
+        elif arr.ndim == 2 and arr.shape == (n, d):
+            out.append(tuple(np.ascontiguousarray(arr[:, i]) for i in range(d)))
+        else:
+            shape = "(n,)" if d == 1 else f"(n, {d})"
+            msg = (
+                f"{entry}: expected a number or one value per position, shape "
+                f"{shape} with n = {n}; got shape {arr.shape}"
+            )
+            raise UsageError(msg)
+    return out[0], out[1]
+
+
+def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Array:
     """Raise or warn about the troubles of a sweep; return the good positions' mask."""
-    n = drive.shape[0]
+    n = given.shape[0]
     ok = np.ones(n, dtype=bool)
     near: dict[str, Array] = {}
     for trouble, start in troubles:
@@ -274,8 +351,8 @@ def _report(plan: Plan, drive: Array, troubles: list, skip: bool) -> Array:
             continue
         if not skip:
             first = int(np.flatnonzero(mask)[0])
-            where = _position_text(plan, drive[first])
-            good = _ranges(plan, drive, ~_all_failures(troubles, n))
+            where = _where(plan, given[first])
+            good = _ranges(plan, given, ~_all_failures(troubles, n))
             if trouble.what == "assembly":
                 msg = (
                     f"group {trouble.group}: cannot be assembled at driver position "
@@ -296,14 +373,14 @@ def _report(plan: Plan, drive: Array, troubles: list, skip: bool) -> Array:
             warnings.warn(
                 f"group {group}: near a dead centre (within about 2 degrees of "
                 f"transmission angle 0 or 180) at driver positions "
-                f"{_ranges(plan, drive, mask)}",
+                f"{_ranges(plan, given, mask)}",
                 AssurWarning,
                 stacklevel=4,
             )
     return ok
 
 
-def _all_failures(troubles: list, n: int) -> Array:
+def _all_failures(troubles: list[Any], n: int) -> Array:
     bad = np.zeros(n, dtype=bool)
     for trouble, start in troubles:
         if trouble.what != "near":
@@ -311,15 +388,12 @@ def _all_failures(troubles: list, n: int) -> Array:
     return bad
 
 
-def _position_text(plan: Plan, position: Array) -> str:
-    parts = [
-        f"{math.degrees(x):.6g} deg" if d.kind == "R" else f"{x:.6g} m"
-        for d, x in zip(plan.drivers, position, strict=False)
-    ]
-    return ", ".join(parts)
+def _where(plan: Plan, position: Array) -> str:
+    """Describe one position of the drivers (as given) for a message."""
+    return position_text([d.kind for d in plan.drivers], position.tolist())
 
 
-def _ranges(plan: Plan, drive: Array, mask: Array) -> str:
+def _ranges(plan: Plan, given: Array, mask: Array) -> str:
     """Describe the runs of consecutive positions in ``mask``."""
     idx = np.flatnonzero(mask)
     if idx.size == 0:
@@ -328,31 +402,7 @@ def _ranges(plan: Plan, drive: Array, mask: Array) -> str:
     starts = np.r_[idx[0], idx[breaks + 1]]
     ends = np.r_[idx[breaks], idx[-1]]
     runs = []
-    for a, b in zip(starts, ends, strict=False):
-        first, last = _position_text(plan, drive[a]), _position_text(plan, drive[b])
+    for a, b in zip(starts, ends, strict=True):
+        first, last = _where(plan, given[a]), _where(plan, given[b])
         runs.append(first if a == b else f"{first} to {last}")
     return "; ".join(runs[:6]) + ("; ..." if len(runs) > 6 else "")
-
-
-def _take_state(s: _kin.KinematicState, ok: Array) -> _kin.KinematicState:
-    return _kin.KinematicState(
-        s.drive[ok],
-        s.link[:, ok],
-        s.origin[ok],
-        s.point[:, ok],
-        {k: v[:, ok] for k, v in s.slide.items()},
-    )
-
-
-def _take_forces(p: _kst.ForceState, ok: Array) -> _kst.ForceState:
-    return _kst.ForceState(
-        p.inertia_force[ok],
-        p.inertia_torque[ok],
-        {k: (v[0][ok], v[1][ok]) for k, v in p.reactions.items()},
-        p.balancing[ok],
-        p.check[ok],
-        p.shaking[ok],
-        p.residual[ok],
-        {k: v[ok] for k, v in p.magnitude.items()},
-        {k: v[ok] for k, v in p.offset.items()},
-    )

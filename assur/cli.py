@@ -299,9 +299,7 @@ def _unit(column: str, table: Any) -> str:
 
 
 def _revolute_driver(table: Any) -> bool:
-    from assur.plan import compile_plan
-
-    return compile_plan(table.mechanism).drivers[0].kind == "R"
+    return bool(table.plan.drivers[0].kind == "R")
 
 
 def format_table(table: Any, columns: list[str], limit: int = 400) -> str:

@@ -1,118 +1,456 @@
-"""Table columns of the file contract, built as views of the solved arrays.
+"""The table columns of the file contract: one schema, and how each is computed.
 
-The order is: ``angle``; every moving link's angle and its derivatives; every joint's,
-extra point's and centre of mass's position and derivatives (prismatic joints also
-their slide); then the loads and reactions of a force analysis.
+A :class:`Column` names a column, what it belongs to (a link, a joint, a point, the
+driver), the quantity and its unit; the schema of a plan lists every column in table
+order and is built once. The command line, the pictures and the report read units and
+labels from here. Each column is computed from the frozen kinematic and force states
+(:func:`evaluate`), only when it is asked for.
+
+Column order: ``angle`` (and every driver's position); every moving link's angle, its
+derivatives and its instant centre; every joint's, extra point's and centre of mass's
+position and derivatives (prismatic joints also their slide); then the loads and
+reactions of a force analysis.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._kinematics import KinematicState
 from assur._vec import Array
-from assur.kinetostatics import ForceState
 from assur.plan import Plan
 
-__all__ = ["build_columns"]
+if TYPE_CHECKING:
+    from assur.analysis import Table
 
-POINT_SUFFIXES = ("x", "y", "vx", "vy", "ax", "ay", "jx", "jy")
+__all__ = ["Column", "evaluate", "pretty_unit", "schema"]
+
+POINT_PARTS = (("x", "y"), ("vx", "vy"), ("ax", "ay"), ("jx", "jy"))
+"""Column suffixes of a point's position, velocity, acceleration and jerk."""
+LINEAR_UNITS = ("m", "m/s", "m/s^2", "m/s^3")
+ANGULAR_UNITS = ("deg", "rad/s", "rad/s^2", "rad/s^3")
+LINK_PARTS = ("angle", "omega", "alpha", "jerk")
+SLIDE_PARTS = ("s", "v", "a", "j")
+CHUNK = 8192
+"""Rows computed at once when a column is derived from the states."""
+TRANSLATION = 1e-12
+"""A link whose angular speed times the mechanism's size is below this fraction of
+its origin's speed translates: its instant centre is at infinity (NaN)."""
 
 
-def build_columns(
-    plan: Plan,
-    state: KinematicState,
-    forces: ForceState | None,
-    given: Array | None = None,
-) -> tuple[tuple[str, ...], dict[str, Array]]:
-    """Return the column names and a name-to-array mapping for a solved sweep.
+@dataclass(frozen=True, slots=True)
+class Column:
+    """One column of a table.
 
-    ``given`` holds the driver positions as the user gave them (deg or m), which the
-    ``angle`` columns repeat exactly.
+    Attributes
+    ----------
+    name : str
+        The column's name, e.g. ``"rod.omega"`` or ``"B.Fx"``.
+    owner : str
+        What it belongs to: a link, a joint, a reported point (``"rod.G"`` for a
+        centre of mass), ``"driver"``, ``"shaking"``, ``"residual"`` or ``"angle"``.
+    quantity : str
+        The quantity, e.g. ``"omega"``, ``"vx"``, ``"Fx"``, ``"torque"``.
+    unit : str
+        SI unit in plain text (``"rad/s^2"``, ``"N m"``); angles in degrees.
+    family : str
+        How it is computed (see :func:`evaluate`).
+    key : tuple
+        What the family needs to compute it (body index, level, component, ...).
+    level : int
+        Highest time derivative of the motion it needs (0 to 3).
+    forces : bool
+        Whether it needs the force analysis.
     """
-    data: dict[str, Array] = {}
+
+    name: str
+    owner: str
+    quantity: str
+    unit: str
+    family: str
+    key: tuple[Any, ...]
+    level: int
+    forces: bool = False
+
+    @property
+    def label(self) -> str:
+        """The name with its unit, e.g. ``"rod.omega [rad/s]"``."""
+        return f"{self.name} [{self.unit}]" if self.unit else self.name
+
+
+def pretty_unit(unit: str) -> str:
+    """Return a unit as pictures write it: ``"rad/s²"``, ``"N·m"``."""
+    return unit.replace("^2", "²").replace("^3", "³").replace("N m", "N·m")
+
+
+def schema(plan: Plan, forces: bool) -> tuple[Column, ...]:
+    """Return every column of a kinematics (or forces) table of ``plan``, in order.
+
+    Built once per plan and kept in ``plan.memo``.
+    """
+    key = "schema-forces" if forces else "schema-kinematics"
+    found = plan.memo.get(key)
+    if found is None:
+        found = _kinematic_columns(plan)
+        if forces:
+            found += _force_columns(plan)
+        found = plan.memo[key] = tuple(found)
+    return found  # type: ignore[no-any-return]
+
+
+def _position_unit(plan: Plan, i: int) -> str:
+    return "deg" if plan.drivers[i].kind == "R" else "m"
+
+
+def _kinematic_columns(plan: Plan) -> list[Column]:
     drivers = plan.drivers
-    if given is None:  # positions as the user would give them: deg for a crank
-        scale = [180.0 / math.pi if d.kind == "R" else 1.0 for d in drivers]
-        given = state.drive * np.asarray(scale)
-    drive = [np.array(given[:, i]) for i in range(len(drivers))]
-    data["angle"] = drive[0]
+    cols = [
+        Column("angle", "angle", "angle", _position_unit(plan, 0), "given", (0,), 0)
+    ]
     if len(drivers) > 1:
-        for d, values in zip(drivers, drive, strict=False):
-            data[f"{d.pair.name}.drive"] = values
-    driven = {d.body for d in drivers}
+        for i, d in enumerate(drivers):
+            cols.append(
+                Column(
+                    f"{d.pair.name}.drive",
+                    d.pair.name,
+                    "drive",
+                    _position_unit(plan, i),
+                    "given",
+                    (i,),
+                    0,
+                )
+            )
     for b, name in enumerate(plan.bodies):
         if b == 0 or "~" in name:
             continue
-        angle = plan.angle0[b] + state.link[0, :, b]
-        if b in driven:
-            i = next(i for i, d in enumerate(drivers) if d.body == b)
-            if drivers[i].kind == "R":
-                data[f"{name}.angle"] = drive[i]
-            else:
-                data[f"{name}.angle"] = angle * (180.0 / math.pi)
-        else:
-            data[f"{name}.angle"] = (_continuous(angle) if angle.size else angle) * (
-                180.0 / math.pi
+        cols.append(Column(f"{name}.angle", name, "angle", "deg", "angle", (b,), 0))
+        for k in (1, 2, 3):
+            part = LINK_PARTS[k]
+            cols.append(
+                Column(
+                    f"{name}.{part}", name, part, ANGULAR_UNITS[k], "link", (b, k), k
+                )
             )
-        for k, key in ((1, "omega"), (2, "alpha"), (3, "jerk")):
-            data[f"{name}.{key}"] = state.link[k, :, b]
-    for name in plan.points:
-        p = plan.point_index[name]
+        for c, part in enumerate(("x", "y")):
+            cols.append(
+                Column(f"{name}.ic.{part}", name, f"ic.{part}", "m", "ic", (b, c), 1)
+            )
+    for p, name in enumerate(plan.points):
         for k in range(4):
-            data[f"{name}.{POINT_SUFFIXES[2 * k]}"] = state.point[k, :, p, 0]
-            data[f"{name}.{POINT_SUFFIXES[2 * k + 1]}"] = state.point[k, :, p, 1]
-        if name in state.slide:
-            for k, key in enumerate(("s", "v", "a", "j")):
-                data[f"{name}.{key}"] = state.slide[name][k]
-    if forces is not None:
-        _force_columns(plan, state, forces, data)
-    for values in data.values():
-        if values.flags.owndata:
-            values.flags.writeable = False
-    return tuple(data), data
+            for c, part in enumerate(POINT_PARTS[k]):
+                cols.append(
+                    Column(
+                        f"{name}.{part}",
+                        name,
+                        part,
+                        LINEAR_UNITS[k],
+                        "point",
+                        (p, k, c),
+                        k,
+                    )
+                )
+        pair = plan.pairs.get(name)
+        if pair is not None and pair.kind == "P":
+            for k, part in enumerate(SLIDE_PARTS):
+                cols.append(
+                    Column(
+                        f"{name}.{part}", name, part, LINEAR_UNITS[k], "slide", (k,), k
+                    )
+                )
+    return cols
+
+
+def _force_columns(plan: Plan) -> list[Column]:
+    cols = []
+    for b, name in enumerate(plan.bodies):
+        if b and "~" not in name:
+            for c, part in enumerate(("Fi.x", "Fi.y")):
+                cols.append(
+                    Column(
+                        f"{name}.{part}", name, part, "N", "inertia", (b, c), 2, True
+                    )
+                )
+            cols.append(
+                Column(f"{name}.Mi", name, "Mi", "N m", "inertia", (b, 2), 2, True)
+            )
+    for name, pair in plan.pairs.items():
+        if pair.virtual:
+            continue
+        for c, part in enumerate(("Fx", "Fy")):
+            cols.append(
+                Column(f"{name}.{part}", name, part, "N", "reaction", (c,), 2, True)
+            )
+        cols.append(Column(f"{name}.F", name, "F", "N", "magnitude", (), 2, True))
+        if pair.kind == "P":
+            cols.append(
+                Column(f"{name}.M", name, "M", "N m", "reaction", (2,), 2, True)
+            )
+            cols.append(
+                Column(f"{name}.offset", name, "offset", "m", "offset", (), 2, True)
+            )
+    for i, d in enumerate(plan.drivers):
+        what, unit = ("torque", "N m") if d.kind == "R" else ("force", "N")
+        owners = ["driver"] if i == 0 else []
+        if len(plan.drivers) > 1:
+            owners.append(d.pair.name)
+        for owner in owners:
+            cols.append(
+                Column(f"{owner}.{what}", owner, what, unit, "balancing", (i,), 2, True)
+            )
+            cols.append(
+                Column(
+                    f"{owner}.{what}_check",
+                    owner,
+                    f"{what}_check",
+                    unit,
+                    "check",
+                    (i,),
+                    2,
+                    True,
+                )
+            )
+    for c, (part, unit) in enumerate((("Fx", "N"), ("Fy", "N"), ("M", "N m"))):
+        cols.append(
+            Column(f"shaking.{part}", "shaking", part, unit, "shaking", (c,), 2, True)
+        )
+    for c, (part, unit) in enumerate((("force", "N"), ("moment", "N m"))):
+        cols.append(
+            Column(
+                f"residual.{part}", "residual", part, unit, "residual", (c,), 2, True
+            )
+        )
+    return cols
+
+
+Evaluator = Callable[["Table", Column], dict[str, Array]]
+
+
+def evaluate(table: Table, column: Column) -> dict[str, Array]:
+    """Compute ``column`` of ``table``, with the columns computed along with it.
+
+    Returns arrays by column name; a family computed as a whole (a point's positions
+    and derivatives, the virtual-power checks) gives all its columns at once.
+    """
+    return FAMILIES[column.family](table, column)
+
+
+def _given(table: Table, column: Column) -> dict[str, Array]:
+    return {column.name: table.given[:, column.key[0]]}
+
+
+def _angle(table: Table, column: Column) -> dict[str, Array]:
+    (b,) = column.key
+    plan = table.plan
+    for i, d in enumerate(plan.drivers):
+        if d.body == b and d.kind == "R":
+            return {column.name: table.given[:, i]}
+    angle = plan.angle0[b] + table.state.link[0, :, b]
+    if not any(d.body == b for d in plan.drivers) and angle.size:
+        angle = _continuous(angle)
+    return {column.name: angle * (180.0 / math.pi)}
 
 
 def _continuous(angle: Array) -> Array:
     """Remove the jumps of a turn from angles (rad); the first is put in (-pi, pi]."""
     first = angle[0]
     shift = first - (math.pi - (math.pi - first) % (2.0 * math.pi))
-    turns = np.round(np.diff(angle) * (0.5 / math.pi))
-    if turns.any():
+    with np.errstate(invalid="ignore"):
+        turns = np.round(np.diff(angle) * (0.5 / math.pi))
+    if np.any(turns):
+        turns = np.nan_to_num(turns)
         angle = angle - 2.0 * math.pi * np.concatenate(([0.0], np.cumsum(turns)))
     return angle - shift if shift else angle
 
 
-def _force_columns(
-    plan: Plan, state: KinematicState, forces: ForceState, data: dict[str, Array]
-) -> None:
-    for b, name in enumerate(plan.bodies):
-        if b and "~" not in name:
-            data[f"{name}.Fi.x"] = forces.inertia_force[:, b, 0]
-            data[f"{name}.Fi.y"] = forces.inertia_force[:, b, 1]
-            data[f"{name}.Mi"] = forces.inertia_torque[:, b]
-    for name, pair in plan.pairs.items():
-        if pair.virtual:
-            continue
-        force, couple = forces.reactions[name]
-        data[f"{name}.Fx"] = force[:, 0]
-        data[f"{name}.Fy"] = force[:, 1]
-        data[f"{name}.F"] = forces.magnitude[name]
-        if pair.kind == "P":
-            data[f"{name}.M"] = couple
-            data[f"{name}.offset"] = forces.offset[name]
-    for i, d in enumerate(plan.drivers):
-        what = "torque" if d.kind == "R" else "force"
-        if i == 0:
-            data[f"driver.{what}"] = forces.balancing[:, 0]
-            data[f"driver.{what}_check"] = forces.check[:, 0]
-        if len(plan.drivers) > 1:
-            data[f"{d.pair.name}.{what}"] = forces.balancing[:, i]
-            data[f"{d.pair.name}.{what}_check"] = forces.check[:, i]
-    data["shaking.Fx"] = forces.shaking[:, 0]
-    data["shaking.Fy"] = forces.shaking[:, 1]
-    data["shaking.M"] = forces.shaking[:, 2]
-    data["residual.force"] = forces.residual[:, 0]
-    data["residual.moment"] = forces.residual[:, 1]
+def _link(table: Table, column: Column) -> dict[str, Array]:
+    b, k = column.key
+    return {column.name: table.state.link[k, :, b]}
+
+
+def _ic(table: Table, column: Column) -> dict[str, Array]:
+    r"""Instant centre of a link: :math:`p = o + \hat z \times v_o / \omega`."""
+    (b, _) = column.key
+    state, plan = table.state, table.plan
+    name = plan.bodies[b]
+    omega = state.link[1, :, b]
+    ox, oy = state.origin[0, :, b, 0], state.origin[0, :, b, 1]
+    vx, vy = state.origin[1, :, b, 0], state.origin[1, :, b, 1]
+    speed = np.hypot(vx, vy)
+    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * speed)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x = np.where(translating, np.nan, plan.shift[0] + ox - vy / omega)
+        y = np.where(translating, np.nan, plan.shift[1] + oy + vx / omega)
+    return {f"{name}.ic.x": x, f"{name}.ic.y": y}
+
+
+def _point(table: Table, column: Column) -> dict[str, Array]:
+    from assur._kinematics import motions
+    from assur.groups._motion import point
+
+    p = column.key[0]
+    plan, state = table.plan, table.state
+    name = plan.points[p]
+    body, offset = plan.point_body[p], plan.point_offset[p]
+    levels = state.top + 1
+    out = {}
+    if offset == (0.0, 0.0):
+        for k in range(levels):
+            for c, part in enumerate(POINT_PARTS[k]):
+                values = state.origin[k, :, body, c]
+                out[f"{name}.{part}"] = values + plan.shift[c] if k == 0 else values
+        return out
+    n = len(state)
+    arrays = np.empty((levels, 2, n))
+    for start in range(0, n, CHUNK):
+        rows = slice(start, min(start + CHUNK, n))
+        m = motions(plan, state, rows)[body]
+        for k in range(levels):
+            arrays[k, 0, rows], arrays[k, 1, rows] = point(m, offset, k)
+    for k in range(levels):
+        for c, part in enumerate(POINT_PARTS[k]):
+            out[f"{name}.{part}"] = (
+                arrays[k, c] + plan.shift[c] if k == 0 else arrays[k, c]
+            )
+    return out
+
+
+def _slide(table: Table, column: Column) -> dict[str, Array]:
+    (k,) = column.key
+    return {column.name: table.state.slide[column.owner][k]}
+
+
+def _forces(table: Table) -> Any:
+    assert table.force_state is not None
+    return table.force_state
+
+
+def _inertia(table: Table, column: Column) -> dict[str, Array]:
+    b, c = column.key
+    fs = _forces(table)
+    return {
+        column.name: fs.inertia_torque[:, b] if c == 2 else fs.inertia_force[:, b, c]
+    }
+
+
+def _reaction(table: Table, column: Column) -> dict[str, Array]:
+    (c,) = column.key
+    force, couple = _forces(table).reactions[column.owner]
+    return {column.name: couple if c == 2 else force[:, c]}
+
+
+def _magnitude(table: Table, column: Column) -> dict[str, Array]:
+    force, _ = _forces(table).reactions[column.owner]
+    return {column.name: np.hypot(force[:, 0], force[:, 1])}
+
+
+def _offset(table: Table, column: Column) -> dict[str, Array]:
+    from assur._kinematics import motions
+    from assur.kinetostatics import offset
+
+    plan, state = table.plan, table.state
+    pair = plan.pairs[column.owner]
+    force, couple = _forces(table).reactions[column.owner]
+    n = len(state)
+    out = np.empty(n)
+    for start in range(0, n, CHUNK):
+        rows = slice(start, min(start + CHUNK, n))
+        bodies = motions(plan, state, rows)
+        out[rows] = offset(pair, bodies, force[rows], couple[rows])
+    return {column.name: out}
+
+
+def _balancing(table: Table, column: Column) -> dict[str, Array]:
+    (i,) = column.key
+    return {column.name: _forces(table).balancing[:, i]}
+
+
+def _shaking(table: Table, column: Column) -> dict[str, Array]:
+    (c,) = column.key
+    return {column.name: _forces(table).shaking[:, c]}
+
+
+def _by_chunks(
+    table: Table, width: int, compute: Callable[[Any, Any, slice], Array]
+) -> Array:
+    """Fill an array (n, width) by chunks: ``compute(bodies, applied, rows)``."""
+    from assur._kinematics import motions
+    from assur._loads import compile_loads
+    from assur.kinetostatics import applied_loads
+
+    plan, state = table.plan, table.state
+    loads = compile_loads(plan)
+    n = len(state)
+    out = np.empty((n, width))
+    for start in range(0, n, CHUNK):
+        rows = slice(start, min(start + CHUNK, n))
+        bodies = motions(plan, state, rows)
+        applied = applied_loads(plan, loads, bodies, state.rows(rows))
+        out[rows] = compute(bodies, applied, rows)
+    return out
+
+
+def _check(table: Table, column: Column) -> dict[str, Array]:
+    from assur.kinetostatics import virtual_power
+
+    plan = table.plan
+    count = len(plan.drivers)
+    speeds = table.rates[0]
+
+    def compute(bodies: Any, applied: Any, rows: slice) -> Array:
+        size = rows.stop - rows.start
+        return np.stack(
+            [
+                np.broadcast_to(
+                    virtual_power(plan, bodies, applied, i, _at(speeds[i], rows)),
+                    (size,),
+                )
+                for i in range(count)
+            ],
+            axis=-1,
+        )
+
+    values = _by_chunks(table, count, compute)
+    return {
+        c.name: values[:, c.key[0]] for c in schema(plan, True) if c.family == "check"
+    }
+
+
+def _at(value: Any, rows: slice) -> Any:
+    """Return a driver's rate at ``rows`` (a float stays a float)."""
+    return value if isinstance(value, float) else value[rows]
+
+
+def _residual(table: Table, column: Column) -> dict[str, Array]:
+    from assur.kinetostatics import residual
+
+    fs = _forces(table)
+
+    def compute(bodies: Any, applied: Any, rows: slice) -> Array:
+        reactions = {k: (f[rows], c[rows]) for k, (f, c) in fs.reactions.items()}
+        return residual(table.plan, bodies, applied, reactions, fs.balancing[rows])
+
+    values = _by_chunks(table, 2, compute)
+    return {"residual.force": values[:, 0], "residual.moment": values[:, 1]}
+
+
+FAMILIES: dict[str, Evaluator] = {
+    "given": _given,
+    "angle": _angle,
+    "link": _link,
+    "ic": _ic,
+    "point": _point,
+    "slide": _slide,
+    "inertia": _inertia,
+    "reaction": _reaction,
+    "magnitude": _magnitude,
+    "offset": _offset,
+    "balancing": _balancing,
+    "check": _check,
+    "shaking": _shaking,
+    "residual": _residual,
+}
+"""How each family of columns is computed from a table's states."""

@@ -4,27 +4,70 @@ Every link gets its d'Alembert loads (``-m a_G`` at the centre of mass and ``-J_
 alpha``), gravity and external loads. The groups are then solved in the reverse order
 of attachment, each statically determinate and receiving the reactions of the groups
 solved before it; the driving links come last and give the balancing torque (or force).
-The principle of virtual power gives the same balancing loads independently.
+Each step returns a record (:class:`~assur.groups._protocol.Equilibrium`,
+:class:`~assur.groups.driver.Balance`). The principle of virtual power gives the same
+balancing loads independently (:func:`virtual_power`), and every link's equilibrium
+can be checked again from the reactions (:func:`residual`).
+
+Everything here reads the links' motions only; they come from the forward pass or are
+rebuilt from a frozen :class:`~assur._kinematics.KinematicState`.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from assur._kinematics import KinematicState, velocity_coefficients
-from assur._loads import LoadPlan, compile_loads, table_values
+from assur._loads import LoadPlan, table_values
 from assur._vec import Array
-from assur.groups import _dyad, general
-from assur.groups._dyad import DyadPlan, Wrench
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import PairPlan
-from assur.groups.driver import balance
+from assur.groups._protocol import Equilibrium, Wrench
+from assur.groups.driver import Balance, balance
 from assur.plan import Plan
 
-__all__ = ["ForceState", "applied_loads", "solve"]
+__all__ = [
+    "Applied",
+    "ForceState",
+    "Reverse",
+    "allocate",
+    "applied_loads",
+    "freeze",
+    "offset",
+    "residual",
+    "reverse",
+    "solve",
+    "virtual_power",
+]
+
+
+@dataclass(frozen=True, slots=True)
+class Applied:
+    """Every link's applied loads over a batch.
+
+    ``wrenches`` holds per body ``[F_x, F_y, tau]`` (N, N m about the core's origin):
+    inertia loads, gravity and external loads. ``inertia`` holds per body the inertia
+    force ``(F_x, F_y)`` (N) and torque (N m), or None for a massless body.
+    """
+
+    wrenches: tuple[Wrench, ...]
+    inertia: tuple[tuple[Any, Any, Any] | None, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Reverse:
+    """The records of one reverse pass: each group's equilibrium and each driver's.
+
+    ``groups`` are in the order they were solved (the reverse of attachment);
+    ``frame`` is the resultant load on the frame (N, N m about the core's origin).
+    """
+
+    groups: tuple[Equilibrium, ...]
+    drivers: tuple[Balance, ...]
+    frame: Wrench
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,77 +83,92 @@ class ForceState:
     reactions : dict of str to (ndarray (n, 2), ndarray (n,))
         Per pair: force exerted by its first link on its second (N) and, for prismatic
         pairs, the couple about the pair's point moving with the second link (N m).
-    balancing, check : ndarray (n, d)
-        Balancing torque (N m) or force (N) per driver, from equilibrium and from the
-        principle of virtual power.
+    balancing : ndarray (n, d)
+        Balancing torque (N m) or force (N) per driver.
     shaking : ndarray (n, 3)
-        Resultant force (N) and moment about the origin (N m) of all loads on the frame.
-    residual : ndarray (n, 2)
-        Largest force (N) and moment (N m) left unbalanced on any link.
-    magnitude : dict of str to ndarray (n,)
-        Magnitude of every pair's reaction force, N.
-    offset : dict of str to ndarray (n,)
-        For prismatic pairs: where the normal force acts, m along the axis from the
-        pair's point (NaN without normal force).
+        Resultant force (N) and moment about the file's origin (N m) of all loads on
+        the frame.
     """
 
     inertia_force: Array
     inertia_torque: Array
     reactions: dict[str, tuple[Array, Array]]
     balancing: Array
-    check: Array
     shaking: Array
-    residual: Array
-    magnitude: dict[str, Array] = field(default_factory=dict)
-    offset: dict[str, Array] = field(default_factory=dict)
+
+    def take(self, rows: Any) -> ForceState:
+        """Return the force state at ``rows`` (a mask or indices), a copy."""
+        return ForceState(
+            self.inertia_force[rows],
+            self.inertia_torque[rows],
+            {k: (f[rows], c[rows]) for k, (f, c) in self.reactions.items()},
+            self.balancing[rows],
+            self.shaking[rows],
+        )
 
 
 def applied_loads(
-    plan: Plan,
-    loads: LoadPlan,
-    bodies: list[Motion],
-    state: KinematicState,
-    inertia_force: Array,
-    inertia_torque: Array,
-) -> list[Wrench]:
-    """Return every link's applied wrench (inertia, gravity, external loads).
+    plan: Plan, loads: LoadPlan, bodies: list[Motion], state: KinematicState
+) -> Applied:
+    """Return every link's applied loads: inertia, gravity and external loads.
 
-    Returns the wrenches ``[F_x, F_y, tau about the origin]`` per body; the inertia
-    forces (n, B, 2) and torques (n, B) are written to the arrays given.
+    ``state`` gives the driver positions and slides of the batch (for tabulated
+    loads); the motions give everything else.
     """
     count = len(plan.bodies)
     wrenches: list[Wrench] = [[0.0, 0.0, 0.0] for _ in range(count)]
-    slides = {name: s[0] for name, s in state.slide.items()}
+    inertia: list[tuple[Any, Any, Any] | None] = [None] * count
     gx, gy = loads.gravity
-    for b in np.flatnonzero(loads.mass):
+    for b in np.flatnonzero(loads.mass).tolist():
         m = bodies[b]
-        mass = loads.mass[b]
-        p = loads.center_point[b]  # the centre's motion is in the state already
-        px, py = state.point[0, :, p, 0], state.point[0, :, p, 1]
-        ax, ay = state.point[2, :, p, 0], state.point[2, :, p, 1]
+        mass = float(loads.mass[b])
+        px, py = point(m, loads.center[b], 0)
+        ax, ay = point(m, loads.center[b], 2)
         fx, fy = -mass * ax, -mass * ay
-        torque = -loads.inertia[b] * m.phi[2]
-        inertia_force[:, b, 0], inertia_force[:, b, 1] = fx, fy
-        inertia_torque[:, b] = torque
+        torque = -float(loads.inertia[b]) * m.phi[2]
+        inertia[b] = (fx, fy, torque)
         fx, fy = fx + mass * gx, fy + mass * gy
         wrenches[b] = [fx, fy, px * fy - py * fx + torque]
-    for b, offset, value, entry in loads.forces:
-        px, py = point(bodies[b], offset, 0)
+    slides: dict[str, Array] | None = None
+    for b, offset_, value, entry in loads.forces:
+        px, py = point(bodies[b], offset_, 0)
         if isinstance(value, tuple):
             fx, fy = value
         else:
+            slides = slides or {name: s[0] for name, s in state.slide.items()}
             fx, fy = table_values(value, plan, state.drive, slides, entry)
         w = wrenches[b]
         wrenches[b] = [w[0] + fx, w[1] + fy, w[2] + px * fy - py * fx]
     for b, value, entry in loads.torques:
-        t = (
-            value
-            if isinstance(value, float)
-            else table_values(value, plan, state.drive, slides, entry)[0]
-        )
+        if isinstance(value, float):
+            t = value
+        else:
+            slides = slides or {name: s[0] for name, s in state.slide.items()}
+            t = table_values(value, plan, state.drive, slides, entry)[0]
         w = wrenches[b]
         wrenches[b] = [w[0], w[1], w[2] + t]
-    return wrenches
+    return Applied(tuple(wrenches), tuple(inertia))
+
+
+def reverse(plan: Plan, bodies: list[Motion], applied: Applied) -> Reverse:
+    """Solve the groups in the reverse order of attachment, then the drivers.
+
+    Each group receives its links' applied loads plus the reactions of the groups
+    solved before it; what it passes to the links it hangs on is added to theirs.
+    """
+    loads: list[Wrench] = list(applied.wrenches)
+    groups = []
+    for solver in reversed(plan.solvers):
+        record = solver.equilibrium(bodies, loads)
+        for body, wrench in record.passed:
+            loads[body] = [a + b for a, b in zip(loads[body], wrench, strict=True)]
+        groups.append(record)
+    drivers = []
+    for d in plan.drivers:
+        record_ = balance(d, bodies, loads)
+        loads[0] = [a + b for a, b in zip(loads[0], record_.load, strict=True)]
+        drivers.append(record_)
+    return Reverse(tuple(groups), tuple(drivers), loads[0])
 
 
 def allocate(plan: Plan, n: int) -> ForceState:
@@ -118,6 +176,7 @@ def allocate(plan: Plan, n: int) -> ForceState:
     count, drivers = len(plan.bodies), len(plan.drivers)
     # a revolute pair has no couple: its entries share one array of zeros, never written
     none = np.zeros(n)
+    none.flags.writeable = False
     reactions = {
         name: (np.empty((2, n)).T, np.empty(n) if p.kind == "P" else none)
         for name, p in plan.pairs.items()
@@ -127,11 +186,7 @@ def allocate(plan: Plan, n: int) -> ForceState:
         np.zeros((count, n)).T,
         reactions,
         np.empty((drivers, n)).T,
-        np.empty((drivers, n)).T,
         np.empty((3, n)).T,
-        np.empty((2, n)).T,
-        {name: np.empty(n) for name in plan.pairs},
-        {name: np.empty(n) for name, p in plan.pairs.items() if p.kind == "P"},
     )
 
 
@@ -141,13 +196,10 @@ def freeze(state: ForceState) -> ForceState:
         state.inertia_force,
         state.inertia_torque,
         state.balancing,
-        state.check,
         state.shaking,
-        state.residual,
     ]
     for force, couple in state.reactions.values():
         arrays += [force, couple]
-    arrays += [*state.magnitude.values(), *state.offset.values()]
     for arr in arrays:
         arr.flags.writeable = False
     return state
@@ -155,57 +207,59 @@ def freeze(state: ForceState) -> ForceState:
 
 def solve(
     plan: Plan,
+    loads: LoadPlan,
     bodies: list[Motion],
     state: KinematicState,
-    out: ForceState | None = None,
+    out: ForceState,
     start: int = 0,
-) -> ForceState:
-    """Solve the kinetostatics of the chunk whose motion is ``bodies`` / ``state``.
+) -> Reverse:
+    """Solve the kinetostatics of one chunk into rows ``start`` onwards of ``out``.
 
-    The results go to rows ``start`` to ``start + n`` of ``out`` (allocated when not
-    given), which is returned.
+    ``bodies`` and ``state`` are the chunk's motions and its kinematic state.
+    Returns the reverse pass's records.
     """
     n = state.drive.shape[0]
-    if out is None:
-        out = allocate(plan, n)
     rows = slice(start, start + n)
-    loads = compile_loads(plan)
-    applied = applied_loads(
-        plan, loads, bodies, state, out.inertia_force[rows], out.inertia_torque[rows]
-    )
-    wrenches = [list(w) for w in applied]
-    raw: dict[str, tuple[Any, Any, Any]] = {}
-    for solver in reversed(plan.solvers):
-        if isinstance(solver, DyadPlan):
-            _dyad.reactions(solver, bodies, wrenches, raw)
-        else:
-            general.reactions(solver, bodies, wrenches, raw, n)
-    balancing = out.balancing[rows]
-    for i, d in enumerate(plan.drivers):
-        balancing[:, i] = balance(d, bodies, wrenches, raw)
-        out.check[rows, i] = _virtual_power(plan, bodies, applied, i, n)
-    reactions = {}
-    for name, (fx, fy, couple) in raw.items():
-        force, moment = out.reactions[name]
-        force[rows, 0], force[rows, 1] = fx, fy
-        if plan.pairs[name].kind == "P":
-            moment[rows] = couple
-        reactions[name] = (force[rows], moment[rows])
-    for i in range(3):
-        out.shaking[rows, i] = wrenches[0][i]
-    out.residual[rows] = _residual(plan, bodies, applied, reactions, balancing, state)
-    for name, (force, couple) in reactions.items():
-        out.magnitude[name][rows] = np.sqrt(force[:, 0] ** 2 + force[:, 1] ** 2)
-        pair = plan.pairs[name]
-        if pair.kind == "P":
-            out.offset[name][rows] = _offset(pair, bodies, force, couple)
-    return out
+    applied = applied_loads(plan, loads, bodies, state)
+    for b, values in enumerate(applied.inertia):
+        if values is not None:
+            out.inertia_force[rows, b, 0] = values[0]
+            out.inertia_force[rows, b, 1] = values[1]
+            out.inertia_torque[rows, b] = values[2]
+    result = reverse(plan, bodies, applied)
+    for record in result.groups:
+        for name, r in record.reactions.items():
+            _store(plan.pairs[name], out.reactions[name], rows, r.fx, r.fy, r.couple)
+    for i, (d, record_) in enumerate(zip(plan.drivers, result.drivers, strict=True)):
+        r = record_.reaction
+        _store(d.pair, out.reactions[d.pair.name], rows, r.fx, r.fy, r.couple)
+        out.balancing[rows, i] = record_.balancing
+    fx, fy, tau = result.frame
+    sx, sy = plan.shift
+    out.shaking[rows, 0] = fx
+    out.shaking[rows, 1] = fy
+    out.shaking[rows, 2] = tau + (sx * fy - sy * fx) if (sx or sy) else tau
+    return result
 
 
-def _virtual_power(
-    plan: Plan, bodies: list[Motion], applied: list[Wrench], which: int, n: int
+def _store(
+    pair: PairPlan, target: tuple[Array, Array], rows: slice, fx: Any, fy: Any, c: Any
+) -> None:
+    """Write a pair's reaction into its arrays."""
+    force, couple = target
+    force[rows, 0] = fx
+    force[rows, 1] = fy
+    if pair.kind == "P":
+        couple[rows] = c
+
+
+def virtual_power(
+    plan: Plan, bodies: list[Motion], applied: Applied, which: int, speed: Any
 ) -> Any:
     r"""Balancing load of driver ``which`` from the principle of virtual power.
+
+    ``speed`` is the driver's speed in ``bodies`` (rad/s or m/s; a float or one value
+    per position).
 
     Notes
     -----
@@ -215,14 +269,14 @@ def _virtual_power(
     :math:`v_{b,O} = v_b - \omega_b o_b^\perp` is the velocity of the body point at the
     origin about which :math:`\tau_{b,O}` is taken.
     """
-    speed = plan.drivers[which].omega
-    if len(plan.drivers) == 1 and speed:
+    scale: Any
+    if len(plan.drivers) == 1 and np.all(speed != 0.0):
         coeff, scale = bodies, 1.0 / speed  # velocities are linear in the one speed
     else:
-        coeff, scale = velocity_coefficients(plan, bodies, which, n), 1.0
+        coeff, scale = velocity_coefficients(plan, bodies, which), 1.0
     total: Any = 0.0
     for b in range(1, len(plan.bodies)):
-        fx, fy, tau = applied[b]
+        fx, fy, tau = applied.wrenches[b]
         if not (np.ndim(fx) or np.ndim(tau) or fx or fy or tau):
             continue  # a massless, unloaded link does no work
         m, v = bodies[b], coeff[b]
@@ -236,7 +290,7 @@ def _virtual_power(
     return -scale * total
 
 
-def _offset(pair: PairPlan, bodies: list[Motion], force: Array, couple: Array) -> Array:
+def offset(pair: PairPlan, bodies: list[Motion], force: Array, couple: Array) -> Array:
     """Where a prismatic pair's normal force acts: distance along the axis (m).
 
     The couple about the pair's point moves the resultant normal force ``N`` by
@@ -248,36 +302,31 @@ def _offset(pair: PairPlan, bodies: list[Motion], force: Array, couple: Array) -
         return np.where(np.abs(normal) > 1e-12, couple / normal, np.nan)
 
 
-def _residual(
+def residual(
     plan: Plan,
     bodies: list[Motion],
-    applied: list[Wrench],
+    applied: Applied,
     reactions: dict[str, tuple[Array, Array]],
     balancing: Array,
-    state: KinematicState,
 ) -> Array:
     """Largest unbalanced force (N) and moment about the link's origin (N m).
 
     Every link's loads are summed again from the applied loads, the reactions of all
     its pairs and the balancing loads: an independent check of the reverse pass.
+    Returns an array (n, 2).
     """
     n = balancing.shape[0]
-    # rows: the bodies; one array per component, summed in place
     total = np.empty((3, len(plan.bodies), n))
-    for b, wrench in enumerate(applied):
+    for b, wrench in enumerate(applied.wrenches):
         for i in range(3):
             total[i, b] = wrench[i]
     for name, (force, couple) in reactions.items():
         pair = plan.pairs[name]
-        p = plan.point_index.get(name)
-        if p is None:
-            qx, qy = point(bodies[pair.second], pair.d_second, 0)
-        else:
-            qx, qy = state.point[0, :, p, 0], state.point[0, :, p, 1]
+        qx, qy = point(bodies[pair.second], pair.d_second, 0)
         fx, fy = force[:, 0], force[:, 1]
         tau = qx * fy - qy * fx
         if pair.kind == "P":
-            tau += couple
+            tau = tau + couple
         for i, value in enumerate((fx, fy, tau)):
             total[i, pair.second] += value
             total[i, pair.first] -= value
@@ -285,14 +334,16 @@ def _residual(
         if d.kind == "R":
             total[2, d.body] += balancing[:, i]
         else:
-            ex, ey = d.pair.axis  # type: ignore[misc]
+            assert d.pair.axis is not None
+            ex, ey = d.pair.axis
             fx, fy = balancing[:, i] * ex, balancing[:, i] * ey
             m = bodies[d.body]
             total[0, d.body] += fx
             total[1, d.body] += fy
             total[2, d.body] += m.ox[0] * fy - m.oy[0] * fx
     moving = total[:, 1:]
-    ox, oy = state.origin[:, 1:, 0].T, state.origin[:, 1:, 1].T
+    ox = np.stack([np.broadcast_to(bodies[b].ox[0], n) for b in range(1, len(bodies))])
+    oy = np.stack([np.broadcast_to(bodies[b].oy[0], n) for b in range(1, len(bodies))])
     moment = np.abs(moving[2] - (ox * moving[1] - oy * moving[0])).max(axis=0)
-    force = np.maximum(np.abs(moving[0]).max(axis=0), np.abs(moving[1]).max(axis=0))
-    return np.stack((force, moment), axis=-1)
+    force_ = np.maximum(np.abs(moving[0]).max(axis=0), np.abs(moving[1]).max(axis=0))
+    return np.stack((force_, moment), axis=-1)

@@ -194,10 +194,10 @@ def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:
     """Return the mechanism and its table over ``--angles`` (forces if it has loads)."""
     from assur._loads import compile_loads
     from assur.cli import load_mechanism, positions
-    from assur.plan import compile_plan
+    from assur.plan import plan_of
 
     mech = load_mechanism(args.file)
-    loaded = not compile_loads(compile_plan(mech)).empty
+    loaded = not compile_loads(plan_of(mech)).empty
     return mech, _table(
         mech, positions(mech, args.angles), loaded if forces is None else forces
     )

@@ -1,24 +1,41 @@
-"""Solvers of the Assur groups, one module per dyad kind.
+"""Solvers of the Assur groups: one module per group family, and their registry.
 
-The registry maps a dyad's pair signature to the module that assembles it in closed
-form; everything else a dyad needs is shared (``_dyad``). Groups of class III and above
-are solved by :mod:`assur.groups.general`. Adding a dyad kind means one module and one
-line here.
+Every family module has a ``compile_group(context, group)`` function that returns an
+object answering the group-solver protocol (:mod:`assur.groups._protocol`): assemble,
+linearise, derivatives of any order, equilibrium. The five dyad kinds share their
+derivatives and reactions (``_dyad``) and differ in their closed-form assembly;
+class III triads and larger groups are solved by Newton's method (``general``).
+Adding a group family means one module and one line in :data:`FAMILIES`.
 """
 
 from __future__ import annotations
 
-from types import ModuleType
+from collections.abc import Callable
+from typing import TYPE_CHECKING
 
-from assur.groups import prp, rpp, rpr, rrp, rrr
+from assur.groups import general, prp, rpp, rpr, rrp, rrr
+from assur.groups._protocol import CompileContext, GroupSolver
 
-__all__ = ["DYADS"]
+if TYPE_CHECKING:
+    from assur._structure import Group
 
-DYADS: dict[str, ModuleType] = {
-    "RRR": rrr,
-    "RRP": rrp,
-    "RPR": rpr,
-    "PRP": prp,
-    "RPP": rpp,
+__all__ = ["FAMILIES", "Compiler", "compile_group"]
+
+Compiler = Callable[[CompileContext, "Group"], GroupSolver]
+"""A family's compile function: the solver of one group of a mechanism."""
+
+FAMILIES: dict[str, Compiler] = {
+    "RRR": rrr.compile_group,
+    "RRP": rrp.compile_group,
+    "RPR": rpr.compile_group,
+    "PRP": prp.compile_group,
+    "RPP": rpp.compile_group,
+    "triad": general.compile_group,
+    "general": general.compile_group,
 }
-"""Closed-form assembly of each dyad kind, by signature."""
+"""The solver family of each group kind of the decomposition."""
+
+
+def compile_group(context: CompileContext, group: Group) -> GroupSolver:
+    """Return the solver of ``group``, from the family its kind names."""
+    return FAMILIES[group.kind](context, group)

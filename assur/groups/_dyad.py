@@ -3,59 +3,148 @@
 Each of a dyad's two links hangs on a known link by an external pair, which leaves it
 one coordinate: its rotation (revolute pair, the body's origin is the pin) or its slide
 along the guide (prismatic pair, the body turns with the guide). The middle pair gives
-two equations in those two coordinates. Positions are closed form, one module per kind;
-velocities, accelerations and jerks solve the same 2x2 Jacobian with Cramer's rule,
-element by element over the batch; reactions eliminate the external pairs with one
-equation per link (the virtual power along that link's own coordinate).
+two equations in those two coordinates. Positions are closed form, one module per kind
+(its ``closure``); velocities, accelerations and jerks solve the same 2x2 Jacobian with
+Cramer's rule, element by element over the batch; reactions eliminate the external
+pairs with one equation per link (the virtual power along that link's own coordinate).
 """
 
 from __future__ import annotations
 
+import dataclasses
+from collections.abc import Callable
 from dataclasses import dataclass
 from math import comb
-from typing import Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
+from assur._vec import wrap
+from assur.errors import ModelError
 from assur.groups._motion import Motion, Vec, direction, point
 from assur.groups._pairs import PairPlan, partials, residual, unit_wrenches
+from assur.groups._protocol import (
+    Assembly,
+    CompileContext,
+    Equilibrium,
+    Linearization,
+    Reaction,
+    Wrench,
+)
 
-__all__ = ["DyadPlan", "Wrench", "derivative", "jacobian", "reactions", "set_pose"]
+if TYPE_CHECKING:
+    from assur._structure import Group
 
-Wrench = list[Any]
-"""``[F_x, F_y, tau]``: a force (N) and its moment about the fixed origin (N m)."""
+__all__ = [
+    "BRANCH_TOLERANCE",
+    "DEAD_CENTRE",
+    "Closure",
+    "DyadSolver",
+    "compile_dyad",
+    "linear_step",
+    "reaction",
+    "solve2",
+]
+
 Jacobian = tuple[Any, Any, Any, Any]
+Closure = Callable[["DyadSolver", list[Motion], Any], tuple[Any, Any]]
+"""A dyad kind's closed-form assembly: ``(dyad, bodies, branch) -> (q1, q2)``."""
+
+DEAD_CENTRE = 1e-6
+"""Smallest sine of a dyad's transmission angle accepted in the reference pose."""
+BRANCH_TOLERANCE = 1e-7
+"""Largest coordinate (rad, or m relative to the mechanism's size) that the chosen
+branch may miss the reference pose by."""
 
 
 @dataclass(frozen=True, slots=True)
-class DyadPlan:
-    """Precomputed data of one dyad.
+class DyadSolver:
+    """A compiled dyad: the :class:`~assur.groups._protocol.GroupSolver` of class II.
 
     ``bodies`` are the two links' indices in signature order, ``ext`` their external
     pairs, ``mid`` the middle pair, ``known`` the known links the external pairs join,
     ``d_known`` the external pairs' offsets on those links, ``d_mid`` the middle pair's
-    offsets on the two links, ``branch`` the assembly branch (+1 or -1).
+    offsets on the two links, ``closure`` the kind's closed-form assembly, ``branch``
+    the assembly branch of the reference pose (+1 or -1) and ``scale`` the
+    mechanism's size (m).
     """
 
-    kind: str
-    label: str
+    group: Group
     bodies: tuple[int, int]
     ext: tuple[PairPlan, PairPlan]
     mid: PairPlan
     known: tuple[int, int]
     d_known: tuple[tuple[float, float], tuple[float, float]]
     d_mid: tuple[tuple[float, float], tuple[float, float]]
+    closure: Closure
+    scale: float
     branch: float = 1.0
 
+    newton: ClassVar[bool] = False
+    singular: ClassVar[float] = 1e-9
+    """Sine of the angle between the Jacobian's columns below which a pose is a dead
+    centre, where velocities are undefined."""
+    near: ClassVar[float] = 0.035
+    """Below this (about 2 degrees of transmission angle) a pose is near-singular."""
 
-def guide(plan: DyadPlan, bodies: list[Motion], b: int, k: int = 0) -> Vec:
+    @property
+    def kind(self) -> str:
+        """The dyad's signature, e.g. ``"RRP"``."""
+        return self.group.kind
+
+    @property
+    def label(self) -> str:
+        """Short label such as ``"RRR (coupler, rocker)"``."""
+        return self.group.label
+
+    def assemble(
+        self, bodies: list[Motion], n: int, guess: Any = None, branch: Any = None
+    ) -> Assembly:
+        """Set both links' poses in closed form; NaN where the dyad cannot close."""
+        q1, q2 = self.closure(self, bodies, self.branch if branch is None else branch)
+        q1, q2 = _batch(q1, n), _batch(q2, n)
+        set_pose(self, bodies, q1, q2)
+        return Assembly(~(np.isfinite(q1) & np.isfinite(q2)))
+
+    def linearize(self, bodies: list[Motion]) -> Linearization:
+        """Return the 2x2 Jacobian and the sine of the angle between its columns."""
+        jac = jacobian(self, bodies)
+        cond = conditioning(self, jac)
+        return Linearization(jac, cond, ~(cond >= self.singular))
+
+    def derivative(self, bodies: list[Motion], k: int, lin: Linearization) -> None:
+        """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of both links."""
+        derivative(self, bodies, k, lin.jacobian)
+
+    def equilibrium(self, bodies: list[Motion], loads: list[Wrench]) -> Equilibrium:
+        """Solve the dyad's three reactions in closed form."""
+        return equilibrium(self, bodies, loads)
+
+    def own_slides(self) -> dict[str, tuple[int, float]]:
+        """External prismatic pairs whose slide is a link's own coordinate.
+
+        Maps the pair's name to the link and the sign relating the two.
+        """
+        return {
+            pair.name: (body, 1.0 if pair.second == body else -1.0)
+            for body, pair in zip(self.bodies, self.ext, strict=True)
+            if pair.kind == "P"
+        }
+
+
+def _batch(q: Any, n: int) -> Any:
+    """Return ``q`` as n values (a group hanging on the frame alone is constant)."""
+    return q if np.ndim(q) else np.full(n, float(q))
+
+
+def guide(plan: DyadSolver, bodies: list[Motion], b: int, k: int = 0) -> Vec:
     """k-th derivative of the slide direction of external prismatic pair ``b``."""
     axis = plan.ext[b].axis
     assert axis is not None
     return direction(bodies[plan.known[b]], axis, k)
 
 
-def set_pose(plan: DyadPlan, bodies: list[Motion], q1: Any, q2: Any) -> None:
+def set_pose(plan: DyadSolver, bodies: list[Motion], q1: Any, q2: Any) -> None:
     """Create the position level of both links from their coordinates (rad or m)."""
     for b, q in ((0, q1), (1, q2)):
         known = bodies[plan.known[b]]
@@ -75,7 +164,7 @@ def set_pose(plan: DyadPlan, bodies: list[Motion], q1: Any, q2: Any) -> None:
         bodies[plan.bodies[b]] = motion
 
 
-def _fill(plan: DyadPlan, bodies: list[Motion], k: int) -> None:
+def _fill(plan: DyadSolver, bodies: list[Motion], k: int) -> None:
     """Set level k of both links, their own k-th coordinate derivative taken as 0."""
     for b in (0, 1):
         known = bodies[plan.known[b]]
@@ -85,9 +174,8 @@ def _fill(plan: DyadPlan, bodies: list[Motion], k: int) -> None:
             m.phi[k] = 0.0
         else:
             m.phi[k] = known.phi[k]
-            for j in range(
-                k
-            ):  # Leibniz on sigma * e, the k-th term of sigma is unknown
+            # Leibniz on sigma * e: the k-th term of sigma is the unknown
+            for j in range(k):
                 ex, ey = guide(plan, bodies, b, k - j)
                 if ex.__class__ is float and ey.__class__ is float and not (ex or ey):
                     continue  # a guide that does not turn: no term
@@ -96,7 +184,7 @@ def _fill(plan: DyadPlan, bodies: list[Motion], k: int) -> None:
         m.ox[k], m.oy[k] = ax, ay
 
 
-def jacobian(plan: DyadPlan, bodies: list[Motion]) -> Jacobian:
+def jacobian(plan: DyadSolver, bodies: list[Motion]) -> Jacobian:
     """Return the 2x2 Jacobian of the middle pair in the links' coordinates.
 
     Returns ``(j00, j01, j10, j11)``: row = equation, column = link.
@@ -112,7 +200,7 @@ def jacobian(plan: DyadPlan, bodies: list[Motion]) -> Jacobian:
     return cols[0][0], cols[1][0], cols[0][1], cols[1][1]
 
 
-def conditioning(plan: DyadPlan, jac: Jacobian, scale: float) -> Any:
+def conditioning(plan: DyadSolver, jac: Jacobian) -> Any:
     """Sine of the angle between the Jacobian's columns: 0 at a dead centre.
 
     The sine does not change when a column is scaled, so the units of the links'
@@ -122,7 +210,7 @@ def conditioning(plan: DyadPlan, jac: Jacobian, scale: float) -> Any:
     """
     j00, j01, j10, j11 = jac
     if plan.mid.kind == "P":
-        j10, j11 = j10 / scale, j11 / scale
+        j10, j11 = j10 / plan.scale, j11 / plan.scale
     det = j00 * j11 - j01 * j10
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.abs(det) / np.sqrt((j00 * j00 + j10 * j10) * (j01 * j01 + j11 * j11))
@@ -137,7 +225,7 @@ def solve2(jac: Jacobian, r0: Any, r1: Any) -> tuple[Any, Any]:
 
 
 def linear_step(
-    plan: DyadPlan, bodies: list[Motion], q1: Any, q2: Any
+    plan: DyadSolver, bodies: list[Motion], q1: Any, q2: Any
 ) -> tuple[Any, Any]:
     """Take one Newton step from ``(q1, q2)``: exact where the equations are linear."""
     set_pose(plan, bodies, q1, q2)
@@ -145,7 +233,7 @@ def linear_step(
     return q1 + x1, q2 + x2
 
 
-def derivative(plan: DyadPlan, bodies: list[Motion], k: int, jac: Jacobian) -> None:
+def derivative(plan: DyadSolver, bodies: list[Motion], k: int, jac: Jacobian) -> None:
     """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of both links.
 
     Notes
@@ -168,7 +256,7 @@ def derivative(plan: DyadPlan, bodies: list[Motion], k: int, jac: Jacobian) -> N
             m.oy[k] = m.oy[k] + x[b] * ey
 
 
-def _eliminator(plan: DyadPlan, bodies: list[Motion], b: int) -> tuple[Any, Any, Any]:
+def _eliminator(plan: DyadSolver, bodies: list[Motion], b: int) -> tuple[Any, Any, Any]:
     """Weights (w_x, w_y, w_tau) of the equation of link b free of its external pair.
 
     Revolute: moments about the pin. Prismatic: forces along the guide.
@@ -180,24 +268,16 @@ def _eliminator(plan: DyadPlan, bodies: list[Motion], b: int) -> tuple[Any, Any,
     return ex, ey, 0.0
 
 
-def reactions(
-    plan: DyadPlan,
-    bodies: list[Motion],
-    wrenches: list[Wrench],
-    out: dict[str, tuple[Any, Any, Any]],
-) -> None:
-    """Solve the dyad's three reactions and pass the external ones to the known links.
+def equilibrium(
+    plan: DyadSolver, bodies: list[Motion], loads: list[Wrench]
+) -> Equilibrium:
+    """Solve the dyad's three reactions; return them and the loads on the known links.
 
-    Parameters
-    ----------
-    wrenches : list of Wrench
-        The known loads on every body (inertia, gravity, external, and reactions of
-        groups solved already); the known links' entries are increased by the
-        reactions of this dyad.
-    out : dict
-        Receives, per pair name, the force ``(F_x, F_y)`` (N) exerted by its first link
-        on its second and the couple (N m) about the pair's point (zero for revolute
-        pairs).
+    Notes
+    -----
+    One equation per link is free of that link's external pair (moments about its pin,
+    or forces along its guide); together they give the middle pair's two unknowns by
+    Cramer's rule. Each link's force and moment sums then give its external reaction.
     """
     cols = unit_wrenches(plan.mid, bodies)
     rows, rhs, signs = [], [], []
@@ -205,34 +285,106 @@ def reactions(
         wx, wy, wt = _eliminator(plan, bodies, b)
         sign = 1.0 if plan.bodies[b] == plan.mid.second else -1.0
         rows.append([sign * (wx * c[0] + wy * c[1] + wt * c[2]) for c in cols])
-        load = wrenches[plan.bodies[b]]
+        load = loads[plan.bodies[b]]
         rhs.append(wx * load[0] + wy * load[1] + wt * load[2])
         signs.append(sign)
     lam0, lam1 = solve2(
         (rows[0][0], rows[0][1], rows[1][0], rows[1][1]), rhs[0], rhs[1]
     )
     mid = [lam0 * cols[0][i] + lam1 * cols[1][i] for i in range(3)]
-    record(plan.mid, bodies, mid, out)
+    reactions = {plan.mid.name: reaction(plan.mid, bodies, mid)}
+    passed = []
     for b in (0, 1):
         body = plan.bodies[b]
-        total = [wrenches[body][i] + signs[b] * mid[i] for i in range(3)]
-        known = wrenches[plan.known[b]]
-        for i in range(3):
-            known[i] = known[i] + total[i]
+        total = [loads[body][i] + signs[b] * mid[i] for i in range(3)]
+        passed.append((plan.known[b], total))
         pair = plan.ext[b]
-        record(pair, bodies, total if pair.second != body else [-t for t in total], out)
+        on_second = total if pair.second != body else [-t for t in total]
+        reactions[pair.name] = reaction(pair, bodies, on_second)
+    return Equilibrium(
+        plan.label,
+        plan.bodies,
+        (loads[plan.bodies[0]], loads[plan.bodies[1]]),
+        (plan.mid, *plan.ext),
+        reactions,
+        tuple(passed),
+        plan.d_mid,
+    )
 
 
-def record(
-    pair: PairPlan,
-    bodies: list[Motion],
-    wrench: Wrench,
-    out: dict[str, tuple[Any, Any, Any]],
-) -> None:
-    """Store the wrench of ``pair`` on its second link as force and couple."""
+def reaction(pair: PairPlan, bodies: list[Motion], wrench: Wrench) -> Reaction:
+    """Return the reaction of ``pair`` from the wrench on its second link.
+
+    The wrench's moment is about the core's origin; a prismatic pair's couple is
+    taken about the pair's point.
+    """
     fx, fy, tau = wrench
     if pair.kind == "R":
-        out[pair.name] = (fx, fy, 0.0)
-        return
+        return Reaction(fx, fy)
     qx, qy = point(bodies[pair.second], pair.d_second, 0)
-    out[pair.name] = (fx, fy, tau - (qx * fy - qy * fx))
+    return Reaction(fx, fy, tau - (qx * fy - qy * fx))
+
+
+def compile_dyad(context: CompileContext, group: Group, closure: Closure) -> DyadSolver:
+    """Compile a dyad of ``group``'s kind: offsets, and the reference pose's branch.
+
+    Raises
+    ------
+    ModelError
+        When the reference pose is not an assembled pose of the dyad or sits at its
+        dead centre.
+    """
+    bodies = (context.index[group.links[0]], context.index[group.links[1]])
+    ext = (context.pairs[group.external[0]], context.pairs[group.external[1]])
+    mid = context.pairs[group.internal[0]]
+    known = (
+        ext[0].first if ext[0].second == bodies[0] else ext[0].second,
+        ext[1].first if ext[1].second == bodies[1] else ext[1].second,
+    )
+    d_known = (
+        ext[0].d_first if ext[0].first == known[0] else ext[0].d_second,
+        ext[1].d_first if ext[1].first == known[1] else ext[1].d_second,
+    )
+    d_mid = (
+        mid.d_first if mid.first == bodies[0] else mid.d_second,
+        mid.d_first if mid.first == bodies[1] else mid.d_second,
+    )
+    dyad = DyadSolver(
+        group, bodies, ext, mid, known, d_known, d_mid, closure, context.scale
+    )
+    best: tuple[float, DyadSolver] | None = None
+    for branch in (1.0, -1.0):
+        candidate = dataclasses.replace(dyad, branch=branch)
+        q = closure(candidate, context.reference(), branch)
+        miss = max(
+            float(np.abs(wrap(x)))
+            if e.kind == "R"
+            else float(np.abs(x)) / context.scale
+            for x, e in zip(q, ext, strict=True)
+        )
+        if best is None or miss < best[0]:
+            best = (miss, candidate)
+    assert best is not None
+    miss, dyad = best
+    reference = context.reference()
+    dyad.assemble(reference, 1)
+    if not conditioning(dyad, jacobian(dyad, reference)) >= DEAD_CENTRE:
+        dead_centre(group)
+    if not miss <= BRANCH_TOLERANCE:
+        msg = (
+            f"group {group.label}: the reference pose is not an assembled pose of this "
+            f"group or sits at its dead centre (closes {miss:.3g} away); expected "
+            "every point where it is in one assembled pose"
+        )
+        raise ModelError(msg)
+    return dyad
+
+
+def dead_centre(group: Group) -> None:
+    """Raise the error of a reference pose at a group's dead centre."""
+    msg = (
+        f"group {group.label}: the reference pose is at a dead centre of this group, "
+        "where its branch is undefined; expected a reference pose away from dead "
+        "centres"
+    )
+    raise ModelError(msg)

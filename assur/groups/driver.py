@@ -10,20 +10,23 @@ from dataclasses import dataclass
 from typing import Any
 
 from assur._vec import Array
-from assur.groups._dyad import Wrench, record
+from assur.groups._dyad import reaction
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan
+from assur.groups._protocol import Reaction, Wrench
 
-__all__ = ["DriverPlan", "balance", "motion"]
+__all__ = ["Balance", "DriverPlan", "balance", "motion"]
 
 
 @dataclass(frozen=True, slots=True)
 class DriverPlan:
-    """Input link ``body`` driven through ``pair`` at ``omega`` and ``epsilon``.
+    """Input link ``body`` driven through ``pair``.
 
     ``angle0`` is the link's angle in the reference pose (rad): the driver position
     of a revolute driver is the link's absolute angle. ``origin`` is the pair's point
-    (m). ``reference`` is the driver position of the reference pose (rad or m).
+    (m, core coordinates). ``reference`` is the driver position of the reference pose
+    (rad or m). ``omega`` and ``epsilon`` are the file's speed and acceleration
+    (rad/s, rad/s^2; m/s, m/s^2), used when a sweep is not given its own.
     """
 
     pair: PairPlan
@@ -45,43 +48,53 @@ class DriverPlan:
         return 1.0 if self.pair.second == self.body else -1.0
 
 
-def motion(plan: DriverPlan, position: Array, rate: float | None = None) -> Motion:
+@dataclass(frozen=True, slots=True)
+class Balance:
+    """The input link's equilibrium: the frame's reaction and the balancing load.
+
+    ``load`` is the known wrench on the input link (its applied loads and the
+    reactions of the groups on it); ``reaction`` the frame's reaction in the driving
+    pair; ``balancing`` the torque (N m) or force (N) that holds the link.
+    """
+
+    label: str
+    body: int
+    load: Wrench
+    reaction: Reaction
+    balancing: Any
+
+
+def motion(plan: DriverPlan, position: Array, omega: Any, epsilon: Any) -> Motion:
     """Return the input link's motion at driver positions ``position`` (rad or m).
 
-    ``rate`` replaces the speed (used for velocity coefficients).
+    ``omega`` and ``epsilon`` are the speed and acceleration, a float or one value
+    per position.
     """
-    omega = plan.omega if rate is None else rate
     x0, y0 = plan.origin
     if plan.kind == "R":
         return Motion(
-            [position - plan.angle0, omega, plan.epsilon, 0.0],
+            [position - plan.angle0, omega, epsilon, 0.0],
             [x0, 0.0, 0.0, 0.0],
             [y0, 0.0, 0.0, 0.0],
         )
     assert plan.pair.axis is not None
     ex, ey = plan.pair.axis
     s = position - plan.reference
-    eps = plan.epsilon
     return Motion(
         [0.0, 0.0, 0.0, 0.0],
-        [x0 + s * ex, omega * ex, eps * ex, 0.0],
-        [y0 + s * ey, omega * ey, eps * ey, 0.0],
+        [x0 + s * ex, omega * ex, epsilon * ex, 0.0],
+        [y0 + s * ey, omega * ey, epsilon * ey, 0.0],
     )
 
 
-def balance(
-    plan: DriverPlan,
-    bodies: list[Motion],
-    wrenches: list[Wrench],
-    out: dict[str, tuple[Any, Any, Any]],
-) -> Any:
-    """Return the balancing torque (N m) or force (N) and store the frame's reaction.
+def balance(plan: DriverPlan, bodies: list[Motion], loads: list[Wrench]) -> Balance:
+    """Return the balancing torque (N m) or force (N) and the frame's reaction.
 
     The frame applies the reaction and the balancing load that hold the input link in
     (kinetostatic) equilibrium; the frame itself receives the sum of the input link's
     loads.
     """
-    fx, fy, tau = wrenches[plan.body]
+    fx, fy, tau = loads[plan.body]
     m = bodies[plan.body]
     px, py = m.ox[0], m.oy[0]
     couple = px * fy - py * fx - tau  # about the joint's point, to balance the link
@@ -89,12 +102,17 @@ def balance(
         balancing = couple
         on_link = [-fx, -fy, -tau - couple]
     else:
-        ex, ey = plan.pair.axis  # type: ignore[misc]
+        assert plan.pair.axis is not None
+        ex, ey = plan.pair.axis
         balancing = -(fx * ex + fy * ey)
         nx, ny = -fx - balancing * ex, -fy - balancing * ey
         on_link = [nx, ny, px * ny - py * nx + couple]
-    ground = wrenches[0]
-    for i, value in enumerate((fx, fy, tau)):
-        ground[i] = ground[i] + value
-    record(plan.pair, bodies, on_link if plan.sign > 0 else [-w for w in on_link], out)
-    return balancing
+    on_second = on_link if plan.sign > 0 else [-w for w in on_link]
+    label = f"driver ({plan.pair.name})"
+    return Balance(
+        label,
+        plan.body,
+        loads[plan.body],
+        reaction(plan.pair, bodies, on_second),
+        balancing,
+    )

@@ -10,53 +10,121 @@ jerks and reactions solve stacked dense systems with ``numpy.linalg.solve``.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
 from assur._vec import Array
-from assur.groups._dyad import Wrench, record
+from assur.groups._dyad import dead_centre, reaction
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan, partials, residual, unit_wrenches
+from assur.groups._protocol import (
+    Assembly,
+    CompileContext,
+    Equilibrium,
+    Linearization,
+    Reaction,
+    Wrench,
+)
 
-__all__ = [
-    "GeneralPlan",
-    "conditioning",
-    "derivative",
-    "jacobian",
-    "positions",
-    "reactions",
-]
+if TYPE_CHECKING:
+    from assur._structure import Group
+
+__all__ = ["GeneralSolver", "compile_group"]
 
 MAX_ITERATIONS = 30
-SINGULAR = 1e-12
-"""Reciprocal condition number below which a group's equations count as singular."""
+SINGULAR_FORCES = 1e-12
+"""Reciprocal condition number below which a group's equilibrium equations count as
+singular."""
 TOLERANCE = 1e-13
 """Newton's stopping tolerance, relative to the size of the coordinates."""
+DEAD_CENTRE = 1e-6
+"""Smallest reciprocal condition number accepted in the reference pose."""
+
+Pose = tuple[Any, Any, Any]
+"""A link's ``(rotation, origin x, origin y)`` over a batch."""
 
 
 @dataclass(frozen=True, slots=True)
-class GeneralPlan:
-    """Links (body indices), their reference origins (m) and every pair of the group."""
+class GeneralSolver:
+    """A group solved by Newton's method; answers the group-solver protocol.
 
-    kind: str
-    label: str
+    ``bodies`` are the group's links, ``origins`` their reference origins (m),
+    ``pairs`` every pair of the group (internal, then external) and ``scale`` the
+    mechanism's size (m).
+    """
+
+    group: Group
     bodies: tuple[int, ...]
     origins: tuple[tuple[float, float], ...]
     pairs: tuple[PairPlan, ...]
     scale: float
 
+    newton: ClassVar[bool] = True
+    singular: ClassVar[float] = 1e-9
+    """Reciprocal condition number of the Jacobian below which a pose is a dead
+    centre."""
+    near: ClassVar[float] = 1e-3
+    """The same, below which a pose is near a dead centre (a warning)."""
+
+    @property
+    def kind(self) -> str:
+        """``"triad"`` or ``"general"``."""
+        return self.group.kind
+
+    @property
+    def label(self) -> str:
+        """Short label such as ``"triad (2, 3, 4, 5)"``."""
+        return self.group.label
+
     @property
     def reach(self) -> float:
         """Size of the numbers Newton works with, m (it bounds their rounding).
 
-        The group's size or its distance from the origin, whichever is larger.
+        The group's size or its distance from the core's origin, whichever is larger.
         """
         far = max(abs(v) for o in self.origins for v in o)
         return max(self.scale, far)
 
+    def assemble(
+        self, bodies: list[Motion], n: int, guess: Any = None, branch: Any = None
+    ) -> Assembly:
+        """Assemble the group by Newton's method; NaN where it does not converge.
 
-def jacobian(plan: GeneralPlan, bodies: list[Motion], n: int) -> Array:
+        ``guess`` holds every link's ``(rotation, x, y)`` to start from (the reference
+        pose without one); the solved poses are the next step's guess.
+        """
+        return positions(self, bodies, n, guess)
+
+    def linearize(self, bodies: list[Motion]) -> Linearization:
+        """Return the Jacobian, with the rows of failed positions made harmless."""
+        jac = jacobian(self, bodies, _count(self, bodies))
+        failed = ~np.isfinite(jac).all(axis=(1, 2))
+        jac[failed] = np.eye(jac.shape[-1])
+        cond = conditioning(self, jac)
+        singular = ~failed & ~(cond >= self.singular)
+        jac[singular] = np.eye(jac.shape[-1])  # their derivatives are not defined
+        return Linearization(jac, cond, singular)
+
+    def derivative(self, bodies: list[Motion], k: int, lin: Linearization) -> None:
+        """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of every link."""
+        derivative(self, bodies, k, lin.jacobian)
+
+    def equilibrium(self, bodies: list[Motion], loads: list[Wrench]) -> Equilibrium:
+        """Solve every reaction of the group from three equations per link."""
+        return equilibrium(self, bodies, loads)
+
+    def own_slides(self) -> dict[str, tuple[int, float]]:
+        """No slide is a link's own coordinate here (links have x, y, rotation)."""
+        return {}
+
+
+def _count(plan: GeneralSolver, bodies: list[Motion]) -> int:
+    """Return the number of positions the group's links are solved at."""
+    return int(np.size(bodies[plan.bodies[0]].phi[0]))
+
+
+def jacobian(plan: GeneralSolver, bodies: list[Motion], n: int) -> Array:
     """Return the constraint Jacobian, shape (n, 2p, 3k), in the links' unknowns."""
     size = 3 * len(plan.bodies)
     jac = np.zeros((n, size, size))
@@ -71,7 +139,7 @@ def jacobian(plan: GeneralPlan, bodies: list[Motion], n: int) -> Array:
     return jac
 
 
-def conditioning(plan: GeneralPlan, jac: Array) -> Array:
+def conditioning(plan: GeneralSolver, jac: Array) -> Array:
     """Reciprocal condition number of the Jacobian made dimensionless.
 
     Origins are measured in units of the group's size and a prismatic pair's rotation
@@ -86,7 +154,7 @@ def conditioning(plan: GeneralPlan, jac: Array) -> Array:
     return 1.0 / np.linalg.cond(jac * rows[:, None] * cols[None, :])
 
 
-def _residuals(plan: GeneralPlan, bodies: list[Motion], k: int, n: int) -> Array:
+def _residuals(plan: GeneralSolver, bodies: list[Motion], k: int, n: int) -> Array:
     out = np.empty((n, 2 * len(plan.pairs)))
     for j, pair in enumerate(plan.pairs):
         out[:, 2 * j], out[:, 2 * j + 1] = residual(pair, bodies, k)
@@ -94,16 +162,9 @@ def _residuals(plan: GeneralPlan, bodies: list[Motion], k: int, n: int) -> Array
 
 
 def positions(
-    plan: GeneralPlan,
-    bodies: list[Motion],
-    n: int,
-    guess: list[tuple[Any, Any, Any]] | None = None,
-) -> list[tuple[Any, Any, Any]]:
-    """Assemble the group by Newton's method; NaN where it does not converge.
-
-    Returns the solved ``(rotation, x, y)`` of every link's origin, the next guess of
-    a continuation.
-    """
+    plan: GeneralSolver, bodies: list[Motion], n: int, guess: list[Pose] | None = None
+) -> Assembly:
+    """Assemble the group by Newton's method; NaN where it does not converge."""
     if guess is None:
         guess = [
             (np.zeros(n), np.full(n, o[0]), np.full(n, o[1])) for o in plan.origins
@@ -112,7 +173,6 @@ def positions(
         bodies[body] = Motion(
             [phi, 0.0, 0.0, 0.0], [x, 0.0, 0.0, 0.0], [y, 0.0, 0.0, 0.0]
         )
-    done = np.zeros(n, dtype=bool)
     for _ in range(MAX_ITERATIONS):
         res = _residuals(plan, bodies, 0, n)
         done = np.max(np.abs(res), axis=-1) <= TOLERANCE * plan.reach
@@ -142,13 +202,12 @@ def positions(
         pose = tuple(np.where(done, v, np.nan) for v in (m.phi[0], m.ox[0], m.oy[0]))
         m.set_pose(*pose)
         out.append(pose)
-    return out
+    return Assembly(~done, out)
 
 
-def derivative(
-    plan: GeneralPlan, bodies: list[Motion], k: int, jac: Array, n: int
-) -> None:
+def derivative(plan: GeneralSolver, bodies: list[Motion], k: int, jac: Array) -> None:
     """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of every link."""
+    n = jac.shape[0]
     for body in plan.bodies:
         m = bodies[body]
         m.phi[k] = m.ox[k] = m.oy[k] = 0.0
@@ -158,14 +217,15 @@ def derivative(
         m.ox[k], m.oy[k], m.phi[k] = x[:, 3 * i], x[:, 3 * i + 1], x[:, 3 * i + 2]
 
 
-def reactions(
-    plan: GeneralPlan,
-    bodies: list[Motion],
-    wrenches: list[Wrench],
-    out: dict[str, tuple[Any, Any, Any]],
-    n: int,
-) -> None:
-    """Solve every reaction of the group from three equilibrium equations per link."""
+def equilibrium(
+    plan: GeneralSolver, bodies: list[Motion], loads: list[Wrench]
+) -> Equilibrium:
+    """Solve every reaction of the group from three equilibrium equations per link.
+
+    Positions where the equations are singular (a dead centre) or the pose failed
+    hold NaN; the sweep reports those positions.
+    """
+    n = _count(plan, bodies)
     row = {body: 3 * i for i, body in enumerate(plan.bodies)}
     size = 3 * len(plan.bodies)
     mat = np.zeros((n, size, size))
@@ -179,8 +239,7 @@ def reactions(
     rhs = np.empty((n, size))
     for body, r in row.items():
         for i in (0, 1, 2):
-            rhs[:, r + i] = -wrenches[body][i]
-    # a dead centre or a failed pose gives NaN rows, not an error for the whole batch
+            rhs[:, r + i] = -loads[body][i]
     bad = ~np.isfinite(mat).all(axis=(1, 2))
     mat[bad] = np.eye(size)
     # moments and couples in units of the group's size: a measure free of units
@@ -190,18 +249,49 @@ def reactions(
     for j, pair in enumerate(plan.pairs):
         if pair.kind == "P":
             cols[2 * j + 1] = 1.0 / plan.scale
-    bad |= 1.0 / np.linalg.cond(mat * rows[:, None] * cols[None, :]) < SINGULAR
+    bad |= 1.0 / np.linalg.cond(mat * rows[:, None] * cols[None, :]) < SINGULAR_FORCES
     mat[bad] = np.eye(size)
     lam = np.linalg.solve(mat, rhs[..., None])[..., 0]
     lam[bad] = np.nan
+    reactions: dict[str, Reaction] = {}
+    passed = []
     for j, pair in enumerate(plan.pairs):
         wrench = [
             lam[:, 2 * j] * units[j][0][i] + lam[:, 2 * j + 1] * units[j][1][i]
             for i in (0, 1, 2)
         ]
-        record(pair, bodies, wrench, out)
+        reactions[pair.name] = reaction(pair, bodies, wrench)
         for body, sign in ((pair.second, 1.0), (pair.first, -1.0)):
             if body not in row:
-                known = wrenches[body]
-                for i in (0, 1, 2):
-                    known[i] = known[i] + sign * wrench[i]
+                passed.append((body, [sign * w for w in wrench]))
+    return Equilibrium(
+        plan.label,
+        plan.bodies,
+        tuple(loads[b] for b in plan.bodies),
+        plan.pairs,
+        reactions,
+        tuple(passed),
+        tuple((0.0, 0.0) for _ in plan.bodies),
+    )
+
+
+def compile_group(context: CompileContext, group: Group) -> GeneralSolver:
+    """Compile a group solved by Newton's method; refuse a reference dead centre.
+
+    Raises
+    ------
+    ModelError
+        When the reference pose is at a dead centre of the group.
+    """
+    bodies = tuple(context.index[x] for x in group.links)
+    solver = GeneralSolver(
+        group,
+        bodies,
+        tuple((float(x), float(y)) for x, y in context.origins[list(bodies)]),
+        tuple(context.pairs[p] for p in group.internal + group.external),
+        context.scale,
+    )
+    jac = jacobian(solver, context.reference(), 1)
+    if not conditioning(solver, jac)[0] >= DEAD_CENTRE:
+        dead_centre(group)
+    return solver

@@ -7,18 +7,22 @@ rotation makes the slide line pass at the right distance from the other pin.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from assur._vec import wrap
-from assur.groups._dyad import DyadPlan
+from assur.groups._dyad import DyadSolver, compile_dyad
 from assur.groups._motion import Motion, point
+from assur.groups._protocol import CompileContext
 
-__all__ = ["assemble"]
+if TYPE_CHECKING:
+    from assur._structure import Group
+
+__all__ = ["assemble", "compile_group"]
 
 
-def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
+def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, Any]:
     r"""Return the common rotation (rad) of both links, twice; NaN if it cannot close.
 
     Notes
@@ -36,5 +40,10 @@ def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
     c0 = n0[0] * (dg[0] - dh[0]) + n0[1] * (dg[1] - dh[1])
     with np.errstate(invalid="ignore", divide="ignore"):
         psi = np.arccos(c0 / np.hypot(gx, gy))
-    phi = wrap(np.arctan2(gy, gx) - math.atan2(n0[1], n0[0]) - plan.branch * psi)
+    phi = wrap(np.arctan2(gy, gx) - math.atan2(n0[1], n0[0]) - branch * psi)
     return phi, phi
+
+
+def compile_group(context: CompileContext, group: Group) -> DyadSolver:
+    """Compile an RPR dyad of a mechanism (its branch from the reference pose)."""
+    return compile_dyad(context, group, assemble)

@@ -6,17 +6,21 @@ branch is the intersection of the reference pose.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur.groups._dyad import DyadPlan, guide
+from assur.groups._dyad import DyadSolver, compile_dyad, guide
 from assur.groups._motion import Motion, point, rotated
+from assur.groups._protocol import CompileContext
 
-__all__ = ["assemble"]
+if TYPE_CHECKING:
+    from assur._structure import Group
+
+__all__ = ["assemble", "compile_group"]
 
 
-def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
+def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, Any]:
     r"""Return the first link's rotation (rad) and the slider's slide (m); NaN if open.
 
     Notes
@@ -35,9 +39,13 @@ def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
     b = wx * ex + wy * ey
     with np.errstate(invalid="ignore"):
         sigma = (
-            plan.branch
-            * np.sqrt(b * b - wx * wx - wy * wy + d1[0] * d1[0] + d1[1] * d1[1])
+            branch * np.sqrt(b * b - wx * wx - wy * wy + d1[0] * d1[0] + d1[1] * d1[1])
             - b
         )
     vx, vy = wx + sigma * ex, wy + sigma * ey
     return np.arctan2(d1[0] * vy - d1[1] * vx, d1[0] * vx + d1[1] * vy), sigma
+
+
+def compile_group(context: CompileContext, group: Group) -> DyadSolver:
+    """Compile an RRP dyad of a mechanism (its branch from the reference pose)."""
+    return compile_dyad(context, group, assemble)

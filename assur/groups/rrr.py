@@ -6,17 +6,21 @@ two intersections) is the one of the reference pose.
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur.groups._dyad import DyadPlan
+from assur.groups._dyad import DyadSolver, compile_dyad
 from assur.groups._motion import Motion, point
+from assur.groups._protocol import CompileContext
 
-__all__ = ["assemble"]
+if TYPE_CHECKING:
+    from assur._structure import Group
+
+__all__ = ["assemble", "compile_group"]
 
 
-def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
+def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, Any]:
     r"""Return both links' rotations (rad); NaN where the dyad cannot close.
 
     Notes
@@ -35,10 +39,15 @@ def assemble(plan: DyadPlan, bodies: list[Motion]) -> tuple[Any, Any]:
     with np.errstate(divide="ignore", invalid="ignore"):
         inv = 1.0 / (gx * gx + gy * gy)
         a = 0.5 + 0.5 * (r1 - r2) * inv
-        h = plan.branch * np.sqrt(r1 * inv - a * a)
+        h = branch * np.sqrt(r1 * inv - a * a)
     # u1 = M - P1 and u2 = M - P2 in components
     u1x, u1y = a * gx - h * gy, a * gy + h * gx
     u2x, u2y = u1x - gx, u1y - gy
     q1 = np.arctan2(d1[0] * u1y - d1[1] * u1x, d1[0] * u1x + d1[1] * u1y)
     q2 = np.arctan2(d2[0] * u2y - d2[1] * u2x, d2[0] * u2x + d2[1] * u2y)
     return q1, q2
+
+
+def compile_group(context: CompileContext, group: Group) -> DyadSolver:
+    """Compile an RRR dyad of a mechanism (its branch from the reference pose)."""
+    return compile_dyad(context, group, assemble)

@@ -18,7 +18,7 @@ from assur.errors import AssemblyError
 from assur.html._data import report_data
 from assur.html._page import assemble_page
 from assur.model import Mechanism
-from assur.plan import compile_plan
+from assur.plan import plan_of
 
 __all__ = ["render_report", "write_report"]
 
@@ -59,7 +59,7 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
     >>> page.startswith("<!DOCTYPE html>") and 'id="assur-data"' in page
     True
     """
-    plan = compile_plan(mechanism)
+    plan = plan_of(mechanism)
     with_forces = not compile_loads(plan).empty
     if angles is None:
         angles = default_positions(mechanism)

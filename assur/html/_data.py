@@ -207,7 +207,7 @@ def _guide(plan: Plan, table: Table, pair: PairPlan) -> dict[str, Any]:
         at + axis * (np.nanmax(slide) + margin),
     ]
     phi = table.state.link[0, :, pair.first]
-    origin = table.state.origin[:, pair.first]
+    origin = table.state.origin[0, :, pair.first] + np.asarray(plan.shift)
     c, s = np.cos(phi), np.sin(phi)
     out: dict[str, Any] = {"joint": pair.name, "body": plan.bodies[pair.first]}
     for tag, (dx, dy) in (("1", ends[0]), ("2", ends[1])):

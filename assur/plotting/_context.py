@@ -66,7 +66,7 @@ class _Context:
     def pose(self, row: int) -> _Pose:
         """Return the links' placement at ``row``."""
         state = self.table.state
-        return _Pose(state.link[0, row], state.origin[row])
+        return _Pose(state.link[0, row], state.origin[0, row] + self.plan.shift)
 
     def hidden(self, body: int) -> bool:
         """Whether ``body`` is a virtual block standing for a slot."""
@@ -94,17 +94,18 @@ def _colors(plan: Plan, groups: bool) -> tuple[dict[int, str], Legend]:
 
 def _context(table: Table, groups: bool = True) -> _Context:
     """Return the context of the pictures of ``table`` (``groups``: colour by group)."""
-    from assur.plan import compile_plan
-
-    plan = compile_plan(table.mechanism)
+    plan = table.plan
     color, legend = _colors(plan, groups)
     travel = {
         name: (float(np.nanmin(s[0])), float(np.nanmax(s[0])))
         for name, s in table.state.slide.items()
     }
     pts = np.array([p.d_second + plan.origins[p.second] for p in plan.pairs.values()])
+    pts = pts + np.asarray(plan.shift)
     # symbols scale with the picture: the region swept by the points
-    swept = table.state.point[0].reshape(-1, 2)
+    swept = np.concatenate(
+        [np.column_stack([table[f"{p}.x"], table[f"{p}.y"]]) for p in plan.points]
+    )
     swept = swept[np.isfinite(swept).all(axis=1)]
     size = max(plan.scale, float(np.ptp(swept, axis=0).max()) if len(swept) else 0.0)
     return _Context(table, plan, color, legend, travel, size, pts.mean(axis=0))
@@ -117,11 +118,9 @@ def _row(table: Table, angle: Any) -> int:
         raise ModelError(msg)
     if angle is None:
         return 0
-    from assur.plan import compile_plan
-
-    plan = compile_plan(table.mechanism)
+    plan = table.plan
     want = np.atleast_1d(np.asarray(angle, dtype=float))
-    drive = table.state.drive
+    drive = table.given
     if want.shape[0] not in (1, drive.shape[1]):
         msg = (
             f"angle: {want.shape[0]} values for {drive.shape[1]} driver(s); expected "
@@ -131,7 +130,7 @@ def _row(table: Table, angle: Any) -> int:
     gap = np.zeros(drive.shape[0])
     for i in range(want.shape[0]):
         if plan.drivers[i].kind == "R":
-            diff = np.degrees(drive[:, i]) - want[i]
+            diff = drive[:, i] - want[i]
             gap += ((diff + 180.0) % 360.0 - 180.0) ** 2
         else:
             gap += (drive[:, i] - want[i]) ** 2
@@ -140,12 +139,10 @@ def _row(table: Table, angle: Any) -> int:
 
 def _position_text(table: Table, row: int) -> str:
     """Driver position(s) at ``row`` for a title: "φ = 30.0°" or "s = 0.1 m"."""
-    from assur.plan import compile_plan
-
-    plan = compile_plan(table.mechanism)
-    drive = table.state.drive[row]
+    plan = table.plan
+    drive = table.given[row]
     parts = [
-        f"φ = {math.degrees(x):.1f}°" if d.kind == "R" else f"s = {x:.4g} m"
+        f"φ = {x:.1f}°" if d.kind == "R" else f"s = {x:.4g} m"
         for d, x in zip(plan.drivers, drive, strict=True)
     ]
     if len(parts) > 1:
@@ -167,6 +164,4 @@ def _need_forces(table: Table, what: str) -> None:
 
 def _revolute(table: Table) -> bool:
     """Whether the (first) driver of ``table`` turns rather than slides."""
-    from assur.plan import compile_plan
-
-    return compile_plan(table.mechanism).drivers[0].kind == "R"
+    return table.plan.drivers[0].kind == "R"

@@ -87,12 +87,10 @@ def plot_motion(
 
 def _moving(table: Table, quantity: str) -> list[str]:
     """Links that turn, for a link ``quantity``; else the points that move."""
-    from assur.plan import compile_plan
-
     if quantity not in LINK_UNITS:
         return _moving_points(table, extra_first=False)
     # links that only slide (their angle is constant) would add flat lines
-    links = _public_links(compile_plan(table.mechanism))
+    links = _public_links(table.plan)
     return [x for x in links if np.ptp(table[f"{x}.angle"]) > 1e-9]
 
 
@@ -154,9 +152,7 @@ def _public_links(plan: Plan) -> list[str]:
 
 def _moving_points(table: Table, extra_first: bool = True) -> list[str]:
     """Return the reported points that move (joints, extra points; no centres)."""
-    from assur.plan import compile_plan
-
-    plan = compile_plan(table.mechanism)
+    plan = table.plan
     extra = [p.name for p in table.mechanism.points]
     joints = [n for n, pair in plan.pairs.items() if not pair.virtual]
     names, paths = [], []

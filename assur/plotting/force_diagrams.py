@@ -41,9 +41,7 @@ def plot_torque(table: Table, ax: Any = None) -> Any:
     matplotlib.axes.Axes
     """
     _need_forces(table, "plot_torque")
-    from assur.plan import compile_plan
-
-    plan = compile_plan(table.mechanism)
+    plan = table.plan
     ax = _new_axes(ax, (8.0, 4.5))
     x = _driver_axis(ax, table)
     for i, d in enumerate(plan.drivers):
@@ -70,7 +68,7 @@ def _plot_balancing(
     )
     ax.plot(
         x[::step],
-        table.force_state.check[::step, i],
+        _check_column(table, i)[::step],
         ls="none",
         marker="o",
         mfc="none",
@@ -224,3 +222,11 @@ def plot_shaking(table: Table) -> Any:
         fontsize=10,
     )
     return fig
+
+
+def _check_column(table: Table, i: int) -> np.ndarray:
+    """Return driver ``i``'s virtual-power check of its balancing load."""
+    d = table.plan.drivers[i]
+    what = "torque" if d.kind == "R" else "force"
+    owner = "driver" if len(table.plan.drivers) == 1 else d.pair.name
+    return table[f"{owner}.{what}_check"]

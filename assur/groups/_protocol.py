@@ -1,0 +1,260 @@
+"""The protocol every Assur-group solver answers, and the records its steps return.
+
+The forward pass asks each group, in order of attachment, to assemble itself on the
+links already known, to linearise its closure equations there and to solve their time
+derivatives; the reverse pass asks each group, in the reverse order, for its
+equilibrium. Both passes are plain loops over objects that answer this one protocol,
+so a new group family is one module (a ``compile`` function returning such an object)
+plus one line in the registry of :mod:`assur.groups`.
+
+Each step returns a frozen record rather than writing into shared lists: an
+:class:`Assembly` (which positions failed, the next guess of a continuation), a
+:class:`Linearization` (the Jacobian and how well conditioned it is) and an
+:class:`Equilibrium` (the group's loads, unknowns, equations and solved reactions).
+The explanatory note prints these records; a friction iteration solves them again.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Protocol
+
+import numpy as np
+
+from assur._vec import Array
+from assur.groups._motion import Motion, point
+
+if TYPE_CHECKING:
+    from assur._structure import Group
+    from assur.groups._pairs import PairPlan
+
+__all__ = [
+    "Assembly",
+    "CompileContext",
+    "Equations",
+    "Equilibrium",
+    "GroupSolver",
+    "Linearization",
+    "Reaction",
+    "Wrench",
+]
+
+Wrench = list[Any]
+"""``[F_x, F_y, tau]``: a force (N) and its moment about the core's origin (N m)."""
+
+
+@dataclass(frozen=True, slots=True)
+class CompileContext:
+    """What a group family needs to compile one group of a mechanism.
+
+    Attributes
+    ----------
+    bodies : tuple of str
+        Link names by body index; index 0 is the frame.
+    index : dict of str to int
+        Body index by link name.
+    pairs : dict of str to PairPlan
+        Every lower pair, by name.
+    origins : ndarray (B, 2)
+        Each body's origin in the reference pose, m, in the core's coordinates.
+    scale : float
+        Size of the mechanism, m (largest distance between two pairs).
+    motions : tuple of Motion
+        Every body at rest in the reference pose.
+    """
+
+    bodies: tuple[str, ...]
+    index: dict[str, int]
+    pairs: dict[str, PairPlan]
+    origins: Array
+    scale: float
+    motions: tuple[Motion, ...]
+
+    def reference(self) -> list[Motion]:
+        """Return every body at rest in the reference pose (a list to assemble in)."""
+        return list(self.motions)
+
+
+@dataclass(frozen=True, slots=True)
+class Assembly:
+    """Result of assembling a group over a batch.
+
+    ``failed`` marks the positions where the group does not close (its links' poses
+    hold NaN there); ``guess`` is what a continuation starts the next step from (None
+    for closed forms).
+    """
+
+    failed: Array
+    guess: Any = None
+
+
+@dataclass(frozen=True, slots=True)
+class Linearization:
+    """The group's Jacobian at the solved pose and its conditioning.
+
+    ``jacobian`` is in the family's own form; ``conditioning`` (n,) is dimensionless,
+    1 for a well-posed group and 0 at a dead centre; ``singular`` marks the positions
+    below the family's threshold, where derivatives are not defined.
+    """
+
+    jacobian: Any
+    conditioning: Array
+    singular: Array
+
+
+@dataclass(frozen=True, slots=True)
+class Reaction:
+    """A pair's reaction: force by its first link on its second, and a couple.
+
+    ``fx``, ``fy`` in N; ``couple`` in N m about the pair's point moving with the
+    second link (zero for a revolute pair).
+    """
+
+    fx: Any
+    fy: Any
+    couple: Any = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class Equations:
+    """A group's equilibrium equations, written as a textbook writes them.
+
+    ``matrix @ unknowns = rhs`` at every position: ``matrix`` (n, m, m), ``rhs``
+    (n, m). Row ``i`` is the equation named ``rows[i]`` (for example "moment of rod
+    about C"); column ``j`` is the unknown named ``unknowns[j]`` (for example
+    "B.Fx"). ``solution`` (n, m) holds the unknowns the group's step found.
+    """
+
+    rows: tuple[str, ...]
+    unknowns: tuple[str, ...]
+    matrix: Array
+    rhs: Array
+    solution: Array
+
+    @property
+    def residual(self) -> Array:
+        """Largest equation residual at each position (N or N m)."""
+        left = np.einsum("nij,nj->ni", self.matrix, self.solution)
+        return np.max(np.abs(left - self.rhs), axis=-1)
+
+
+@dataclass(frozen=True, slots=True)
+class Equilibrium:
+    """The record of one group's equilibrium step.
+
+    Attributes
+    ----------
+    label : str
+        The group, e.g. ``"RRR (coupler, rocker)"``.
+    bodies : tuple of int
+        The group's links.
+    loads : tuple of Wrench
+        The known loads on each of the group's links when it was solved (applied
+        loads, inertia loads and the reactions of groups solved before it).
+    pairs : tuple of PairPlan
+        The pairs whose reactions the step solved (internal, then external).
+    reactions : dict of str to Reaction
+        The solved reaction of each of those pairs.
+    passed : tuple of (int, Wrench)
+        The load each known link receives from the group.
+    moment_points : tuple of (float, float)
+        For each link, the body-fixed offset of the point its textbook moment
+        equation is taken about.
+    """
+
+    label: str
+    bodies: tuple[int, ...]
+    loads: tuple[Wrench, ...]
+    pairs: tuple[PairPlan, ...]
+    reactions: dict[str, Reaction]
+    passed: tuple[tuple[int, Wrench], ...]
+    moment_points: tuple[tuple[float, float], ...]
+
+    @property
+    def unknowns(self) -> tuple[str, ...]:
+        """Return the unknowns' names.
+
+        ``J.Fx, J.Fy`` per revolute pair; ``J.N, J.M`` per prismatic pair (normal
+        force, N; couple, N m).
+        """
+        names: list[str] = []
+        for pair in self.pairs:
+            names += (
+                [f"{pair.name}.Fx", f"{pair.name}.Fy"]
+                if pair.kind == "R"
+                else [f"{pair.name}.N", f"{pair.name}.M"]
+            )
+        return tuple(names)
+
+    def equations(self, bodies: list[Motion], names: tuple[str, ...]) -> Equations:
+        """Return the equations: each link's force sums and moment equation.
+
+        Parameters
+        ----------
+        bodies : list of Motion
+            The links' motions the step was solved on.
+        names : tuple of str
+            Link names by body index, for the rows' names.
+        """
+        from assur.groups._equations import equations
+
+        return equations(self, bodies, names)
+
+
+class GroupSolver(Protocol):
+    """What the forward and reverse passes ask of every Assur group.
+
+    Attributes
+    ----------
+    group : Group
+        The group of the decomposition this solver solves.
+    bodies : tuple of int
+        Its links' body indices.
+    newton : bool
+        Whether positions are found iteratively (and so need a continuation).
+    singular, near : float
+        Conditioning below which a pose is a dead centre, and below which it is
+        near one (a warning).
+    """
+
+    group: Group
+    bodies: tuple[int, ...]
+    newton: bool
+    singular: float
+    near: float
+
+    @property
+    def label(self) -> str:
+        """Short label such as ``"RRR (coupler, rocker)"``."""
+        ...
+
+    def assemble(
+        self, bodies: list[Motion], n: int, guess: Any = None, branch: Any = None
+    ) -> Assembly:
+        """Set the position level of the group's links in ``bodies``."""
+        ...
+
+    def linearize(self, bodies: list[Motion]) -> Linearization:
+        """Return the Jacobian of the closure equations at the solved pose."""
+        ...
+
+    def derivative(self, bodies: list[Motion], k: int, lin: Linearization) -> None:
+        """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of the links."""
+        ...
+
+    def equilibrium(self, bodies: list[Motion], loads: list[Wrench]) -> Equilibrium:
+        """Solve the group's reactions under the known ``loads`` of every body."""
+        ...
+
+    def own_slides(self) -> dict[str, tuple[int, float]]:
+        """Prismatic pairs whose slide is one of the group's own coordinates.
+
+        Maps the pair's name to the link carrying that coordinate and the sign that
+        relates the two (the slide's derivatives are then read, not recomputed).
+        """
+        ...
+
+
+def pair_point(pair: PairPlan, bodies: list[Motion]) -> tuple[Any, Any]:
+    """Return a pair's point (m), the one moving with its second link."""
+    return point(bodies[pair.second], pair.d_second, 0)

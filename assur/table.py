@@ -1,0 +1,145 @@
+"""The result of a sweep: a table of columns over driver positions.
+
+A :class:`Table` carries the plan it was computed from, the frozen kinematic and force
+states and the column schema; each column is computed from the states when it is first
+asked for and kept, read-only.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from assur._kinematics import KinematicState
+from assur._text import suggest
+from assur._vec import Array
+from assur.columns import Column, evaluate
+from assur.kinetostatics import ForceState
+from assur.model import Mechanism
+from assur.plan import Plan
+
+__all__ = ["Table"]
+
+
+@dataclass(frozen=True)
+class Table:
+    """Results per driver position, by column name.
+
+    ``table["rod.omega"]`` is a read-only array with one value per position;
+    ``columns`` lists the names in order and ``schema`` describes each column (its
+    owner, quantity and unit).
+
+    Attributes
+    ----------
+    plan : Plan
+        The compiled mechanism the table was computed from.
+    schema : tuple of Column
+        The table's columns.
+    given : ndarray (n, d)
+        The driver positions as given (deg, or m for a prismatic driver).
+    state : KinematicState
+        The links' motions.
+    force_state : ForceState or None
+        Inertia loads, reactions and balancing loads (a force analysis only).
+    skipped : ndarray
+        Driver positions left out (deg, or m), with ``skip_unassembled``.
+    rates : tuple
+        Each driver's speed and acceleration as the sweep used them: a float, or one
+        value per row.
+    """
+
+    plan: Plan
+    schema: tuple[Column, ...]
+    given: Array
+    state: KinematicState
+    force_state: ForceState | None = None
+    skipped: Array = field(default_factory=lambda: np.zeros(0))
+    rates: tuple[tuple[Any, ...], tuple[Any, ...]] = ((), ())
+    _cache: dict[str, Array] = field(default_factory=dict, repr=False, compare=False)
+    _index: dict[str, Column] = field(default_factory=dict, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        self._index.update((c.name, c) for c in self.schema)
+
+    @property
+    def mechanism(self) -> Mechanism:
+        """The mechanism the table was computed for."""
+        return self.plan.mechanism
+
+    @property
+    def columns(self) -> tuple[str, ...]:
+        """The column names, in order."""
+        return tuple(self._index)
+
+    def column(self, name: str) -> Column:
+        """Return the description of column ``name`` (owner, quantity, unit)."""
+        try:
+            return self._index[name]
+        except KeyError:
+            msg = f"no column {name!r}{suggest(name, self._index, listing=False)}"
+            raise KeyError(msg) from None
+
+    def __getitem__(self, name: str) -> Array:
+        found = self._cache.get(name)
+        if found is not None:
+            return found
+        column = self.column(name)
+        for key, values in evaluate(self, column).items():
+            if key in self._index and key not in self._cache:
+                if values.flags.writeable:
+                    values.flags.writeable = False
+                self._cache[key] = values
+        return self._cache[name]
+
+    def __len__(self) -> int:
+        return int(self.given.shape[0])
+
+    def __contains__(self, name: object) -> bool:
+        return name in self._index
+
+    def to_array(self) -> Array:
+        """Return the table as one array (rows, columns)."""
+        out = np.empty((len(self), len(self._index)))
+        for j, name in enumerate(self._index):
+            out[:, j] = self[name]
+        return out
+
+    def to_csv(self, path: Any = None) -> str | None:
+        """Write the table as CSV to ``path`` (a path, a file object or ``"-"``).
+
+        Without ``path`` the CSV text is returned.
+        """
+        from assur.io import write_csv
+
+        return write_csv(self, path)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Return JSON-ready data: the mechanism's name, the columns and the rows."""
+        rows = self.to_array()
+        return {
+            "name": self.mechanism.name,
+            "columns": list(self.columns),
+            "rows": [
+                {c: _json_number(v) for c, v in zip(self.columns, row, strict=True)}
+                for row in rows.tolist()
+            ],
+        }
+
+    def to_pandas(self) -> Any:
+        """Return a pandas DataFrame (pandas must be installed)."""
+        import pandas as pd
+
+        return pd.DataFrame({c: self[c] for c in self.columns})
+
+    def plot(self, angle: float | None = None, **kwargs: Any) -> Any:
+        """Draw the mechanism at a driver position (see :func:`assur.plotting.draw`)."""
+        from assur.plotting import draw
+
+        return draw(self, angle=angle, **kwargs)
+
+
+def _json_number(v: float) -> float | None:
+    return float(v) if math.isfinite(v) else None
