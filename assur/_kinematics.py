@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._vec import Array
+from assur._vec import Array, Leaf, is_array, take_rows
 from assur.groups._motion import Motion
 from assur.groups._pairs import slide
 from assur.groups.driver import motion
@@ -24,11 +24,10 @@ from assur.plan import Plan
 __all__ = [
     "KinematicState",
     "Trouble",
-    "allocate",
-    "collect",
-    "freeze",
+    "extend",
     "motions",
     "solve",
+    "state_of",
     "velocity_coefficients",
 ]
 
@@ -55,66 +54,71 @@ class Trouble:
 class KinematicState:
     """The motion of every link over a sweep: the forward pass's frozen result.
 
+    Every quantity is a leaf: an array with one value per position, or a float where
+    it does not change over the sweep (the frame, a crank's constant speed).
+
     Attributes
     ----------
     drive : ndarray (n, d)
         Driver positions, rad (m for a prismatic driver), as solved: a crank's angle
         within half a turn of the reference pose.
-    speed, acceleration : ndarray (n, d)
+    speed, acceleration : tuple of leaves
         Each driver's speed (rad/s or m/s) and acceleration (rad/s^2 or m/s^2).
-    link : ndarray (4, n, B)
-        Each link's rotation from the reference pose (rad) and its derivatives
-        (rad/s, rad/s^2, rad/s^3); index 0 is the frame.
-    origin : ndarray (4, n, B, 2)
-        Each link's origin (m, core coordinates: see ``Plan.shift``) and its
-        velocity, acceleration and jerk.
-    slide : dict of str to ndarray (4, n)
-        Slide (m) of every prismatic pair and its derivatives.
+    motion : tuple
+        Per body (index 0 is the frame), its rotation from the reference pose and the
+        path of its origin (m, core coordinates: see ``Plan.shift``) with their
+        derivatives: ``phi[0..top], ox[0..top], oy[0..top]``.
+    slide : dict of str to tuple
+        Slide (m) of every prismatic pair and its derivatives, levels 0 to ``top``.
     top : int
-        The highest derivative solved (3: jerks; 2: accelerations).
-    scalars : tuple
-        Per body, the twelve quantities ``phi[k], ox[k], oy[k]`` (k = 0..3) that do
-        not change over the sweep, as floats (None where they do): what
-        :func:`motions` needs to rebuild the forward pass's motions exactly.
+        The highest time derivative solved (2: accelerations; 3: jerks).
     """
 
     drive: Array
-    speed: Array
-    acceleration: Array
-    link: Array
-    origin: Array
-    slide: dict[str, Array]
-    top: int = 3
-    scalars: tuple[tuple[Any, ...], ...] = ()
+    speed: tuple[Leaf, ...]
+    acceleration: tuple[Leaf, ...]
+    motion: tuple[tuple[Leaf, ...], ...]
+    slide: dict[str, tuple[Leaf, ...]]
+    top: int
 
     def __len__(self) -> int:
         return int(self.drive.shape[0])
 
-    def rows(self, rows: slice) -> KinematicState:
-        """Return the state at a slice of rows, as views."""
+    def rotation(self, body: int, k: int) -> Leaf:
+        """Return level ``k`` of a body's rotation (rad, rad/s, ...)."""
+        return self.motion[body][k]
+
+    def origin(self, body: int, k: int) -> tuple[Leaf, Leaf]:
+        """Return level ``k`` of a body's origin (m, m/s, ..., core coordinates)."""
+        levels = self.top + 1
+        entries = self.motion[body]
+        return entries[levels + k], entries[2 * levels + k]
+
+    def pose(self, row: int) -> tuple[Array, Array]:
+        """Return every body's rotation (B,) and origin (B, 2) at ``row`` (core)."""
+        levels = self.top + 1
+        phi = np.array([_at(m[0], row) for m in self.motion])
+        origin = np.array(
+            [[_at(m[levels], row), _at(m[2 * levels], row)] for m in self.motion]
+        )
+        return phi, origin
+
+    def rows(self, rows: Any) -> KinematicState:
+        """Return the state at ``rows`` (a slice gives views, a mask copies)."""
+        motion, slide = take_rows((self.motion, self.slide), rows)
         return KinematicState(
             self.drive[rows],
-            self.speed[rows],
-            self.acceleration[rows],
-            self.link[:, rows],
-            self.origin[:, rows],
-            {k: v[:, rows] for k, v in self.slide.items()},
+            take_rows(self.speed, rows),
+            take_rows(self.acceleration, rows),
+            motion,
+            slide,
             self.top,
-            self.scalars,
         )
 
-    def take(self, rows: Any) -> KinematicState:
-        """Return the state at ``rows`` (a mask or indices), a copy."""
-        return KinematicState(
-            self.drive[rows],
-            self.speed[rows],
-            self.acceleration[rows],
-            self.link[:, rows],
-            self.origin[:, rows],
-            {k: v[:, rows] for k, v in self.slide.items()},
-            self.top,
-            self.scalars,
-        )
+
+def _at(value: Leaf, row: int) -> float:
+    """Return a leaf's value at one row."""
+    return float(value[row]) if is_array(value) else float(value)
 
 
 def solve(
@@ -252,129 +256,81 @@ def _copy(m: Motion, omega: Any, vx: Any, vy: Any) -> Motion:
     return c
 
 
-def allocate(plan: Plan, n: int, top: int = 3) -> KinematicState:
-    """Return a writable state for ``n`` driver positions, to be filled by chunks.
-
-    Each array is stored with the driver position last (contiguous rows per link, so
-    that chunks are written in place) and exposed driver position first.
-    """
-    count, d = len(plan.bodies), len(plan.drivers)
-    return KinematicState(
-        np.empty((d, n)).T,
-        np.empty((d, n)).T,
-        np.empty((d, n)).T,
-        np.empty((LEVELS, count, n)).transpose(0, 2, 1),
-        np.empty((LEVELS, 2, count, n)).transpose(0, 3, 2, 1),
-        {
-            name: np.empty((LEVELS, n))
-            for name, p in plan.pairs.items()
-            if p.kind == "P"
-        },
-        top,
-    )
-
-
-def freeze(state: KinematicState) -> KinematicState:
-    """Make every array of ``state`` read-only."""
-    for arr in (
-        state.drive,
-        state.speed,
-        state.acceleration,
-        state.link,
-        state.origin,
-        *state.slide.values(),
-    ):
-        arr.flags.writeable = False
-    return state
-
-
-def collect(
+def state_of(
     plan: Plan,
     bodies: list[Motion],
     drive: Array,
-    rates: tuple[Any, Any],
-    out: KinematicState,
-    start: int = 0,
+    rates: tuple[tuple[Leaf, ...], tuple[Leaf, ...]],
+    top: int,
 ) -> KinematicState:
-    """Write the links' motions into rows ``start`` onwards of ``out``.
+    """Return the state of a batch whose motions the forward pass has solved.
 
-    ``rates`` holds the drivers' speeds and accelerations as given to :func:`solve`.
-    Returns ``out`` with the scalars of the motions recorded.
+    The motions' arrays become the state's own (nothing is copied).
     """
-    n = drive.shape[0]
-    rows = slice(start, start + n)
-    link, origin = out.link[:, rows], out.origin[:, rows]
-    top = out.top
-    for b, m in enumerate(bodies):
-        for k in range(top + 1):
-            link[k, :, b] = m.phi[k]
-            origin[k, :, b, 0] = m.ox[k]
-            origin[k, :, b, 1] = m.oy[k]
-    out.drive[rows] = drive
-    for i in range(len(plan.drivers)):
-        out.speed[rows, i] = rates[0][i]
-        out.acceleration[rows, i] = rates[1][i]
-    _slides(plan, bodies, {name: arr[:, rows] for name, arr in out.slide.items()}, top)
-    if out.scalars:
-        return out
-    scalars = tuple(
-        tuple(
-            v if v.__class__ is float else None
-            for v in (*m.phi[: top + 1], *m.ox[: top + 1], *m.oy[: top + 1])
-        )
-        for m in bodies
+    motion = tuple(
+        (*m.phi[: top + 1], *m.ox[: top + 1], *m.oy[: top + 1]) for m in bodies
     )
     return KinematicState(
-        out.drive,
-        out.speed,
-        out.acceleration,
-        out.link,
-        out.origin,
-        out.slide,
-        top,
-        scalars,
+        drive, rates[0], rates[1], motion, _slides(plan, bodies, top), top
     )
 
 
-def _slides(plan: Plan, bodies: list[Motion], out: dict[str, Array], top: int) -> None:
+def _slides(plan: Plan, bodies: list[Motion], top: int) -> dict[str, tuple[Leaf, ...]]:
     """Slides of the prismatic pairs: a group's own coordinate where it is one."""
     own: dict[str, tuple[int, float]] = {}
     for solver in plan.solvers:
         own.update(solver.own_slides())
-    for name, arr in out.items():
+    out = {}
+    for name, pair in plan.pairs.items():
+        if pair.kind != "P":
+            continue
         if name in own:
             body, sign = own[name]
-            for k in range(top + 1):
-                arr[k] = sign * bodies[body].q[k]
+            q = bodies[body].q
+            out[name] = tuple(q[k] if sign > 0 else -q[k] for k in range(top + 1))
         else:
-            for k in range(top + 1):
-                arr[k] = slide(plan.pairs[name], bodies, k)
+            out[name] = tuple(slide(pair, bodies, k) for k in range(top + 1))
+    return out
 
 
-def motions(plan: Plan, state: KinematicState, rows: Any = slice(None)) -> list[Motion]:
-    """Rebuild the forward pass's motions from a frozen state, at ``rows``.
+def motions(plan: Plan, state: KinematicState, finished: bool = True) -> list[Motion]:
+    """Rebuild the forward pass's motions from a frozen state.
 
-    The quantities that were constant floats in the forward pass are floats again, so
-    every kernel run on the rebuilt motions takes the same steps and gives the same
-    numbers as on the originals.
+    The quantities that were floats in the forward pass are floats again, so every
+    kernel run on the rebuilt motions takes the same steps and gives the same numbers
+    as on the originals. Levels above ``state.top`` are zero. ``finished=False``
+    leaves the groups' links open to solving a further level (see :func:`extend`).
     """
     levels = state.top + 1
     pad = [0.0] * (LEVELS - levels)
     out = []
-    for b, scalars in enumerate(state.scalars):
-        arrays = (state.link[:, rows, b], *state.origin[:, rows, b].transpose(2, 0, 1))
-        parts = [
-            [
-                arr[k] if scalars[j * levels + k] is None else scalars[j * levels + k]
-                for k in range(levels)
-            ]
-            + pad
-            for j, arr in enumerate(arrays)
-        ]
-        out.append(Motion(*parts))
+    for entries in state.motion:
+        out.append(
+            Motion(
+                [*entries[:levels], *pad],
+                [*entries[levels : 2 * levels], *pad],
+                [*entries[2 * levels :], *pad],
+            )
+        )
     for solver in plan.solvers:
         for name, (body, sign) in solver.own_slides().items():
-            out[body].q = [sign * v for v in state.slide[name][:levels, rows]]
-    for m in out:
-        m.finish()
+            values = state.slide[name]
+            out[body].q = [v if sign > 0 else -v for v in values]
+    moving = {b for solver in plan.solvers for b in solver.bodies}
+    for b, m in enumerate(out):
+        if finished or b not in moving:
+            m.finish()
     return out
+
+
+def extend(plan: Plan, state: KinematicState) -> KinematicState:
+    """Return ``state`` with the jerks solved too (level 3), group by group."""
+    if state.top >= 3:
+        return state
+    bodies = motions(plan, state, finished=False)
+    for solver in plan.solvers:
+        solver.derivative(bodies, 3, solver.linearize(bodies))
+        for b in solver.bodies:
+            bodies[b].finish()
+    rates = (state.speed, state.acceleration)
+    return state_of(plan, bodies, state.drive, rates, 3)

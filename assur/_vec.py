@@ -1,9 +1,14 @@
-"""Private numerical helpers shared by the core: the array type and angle wrapping.
+"""Private numerical helpers shared by the core: arrays, angles and batched leaves.
 
 The kernels work on vectors as ``(x, y)`` pairs of arrays (see ``groups._motion``).
+A quantity that does not change over a batch stays a float (a "leaf"); the states of
+a sweep are nested tuples and dicts of such leaves, filled chunk by chunk.
 """
 
 from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -14,3 +19,86 @@ Array = NDArray[np.float64]
 def wrap(phi: Array) -> Array:
     """Wrap angles to (-pi, pi]."""
     return np.pi - np.mod(np.pi - phi, 2.0 * np.pi)
+
+
+Leaf = Any
+"""A quantity over a batch: an array (n,), or a number (or None) where it does not
+change over the batch."""
+
+
+def is_array(value: Leaf) -> bool:
+    """Whether a leaf varies over the batch (an array) rather than being constant."""
+    return isinstance(value, np.ndarray) and value.ndim > 0
+
+
+def full(value: Leaf, n: int) -> Array:
+    """Return a leaf as an array of ``n`` values (a constant is repeated)."""
+    if is_array(value):
+        return value  # type: ignore[no-any-return]
+    out = np.full(n, np.nan if value is None else float(value))
+    out.flags.writeable = False
+    return out
+
+
+def leaves(tree: Any) -> list[Any]:
+    """Return the leaves of nested tuples, lists and dicts, in a fixed order."""
+    if isinstance(tree, dict):
+        return [x for key in tree for x in leaves(tree[key])]
+    if isinstance(tree, tuple | list):
+        return [x for item in tree for x in leaves(item)]
+    return [tree]
+
+
+def rebuild(tree: Any, values: Iterator[Any]) -> Any:
+    """Return ``tree`` with its leaves replaced, in order, by ``values``."""
+    if isinstance(tree, dict):
+        return {key: rebuild(tree[key], values) for key in tree}
+    if isinstance(tree, tuple | list):
+        return type(tree)(rebuild(item, values) for item in tree)
+    return next(values)
+
+
+def allocate_like(tree: Any, n: int) -> Any:
+    """Return a tree shaped as ``tree`` with an empty array (n,) for every array leaf.
+
+    Constant leaves (quantities that do not change over a batch) stay as they are.
+    """
+    return rebuild(
+        tree, iter([np.empty(n) if is_array(x) else x for x in leaves(tree)])
+    )
+
+
+def write_rows(target: Any, piece: Any, rows: slice) -> None:
+    """Write the leaves of ``piece`` into rows ``rows`` of ``target``'s arrays."""
+    for whole, part in zip(leaves(target), leaves(piece), strict=True):
+        if is_array(whole):
+            whole[rows] = part
+
+
+def freeze(tree: Any) -> Any:
+    """Make every array leaf of ``tree`` read-only; return ``tree``."""
+    for x in leaves(tree):
+        if isinstance(x, np.ndarray):
+            x.flags.writeable = False
+    return tree
+
+
+def take_rows(tree: Any, rows: Any) -> Any:
+    """Return ``tree`` with every array leaf indexed by ``rows`` (constants stay)."""
+    return rebuild(tree, iter([x[rows] if is_array(x) else x for x in leaves(tree)]))
+
+
+def gather(n: int, pieces: Iterable[tuple[slice, Any]]) -> Any:
+    """Return the tree of a whole batch of ``n`` rows from the trees of its slices.
+
+    A single slice covering every row is returned as it is (nothing is copied);
+    otherwise every array leaf is allocated once and filled slice by slice.
+    """
+    whole: Any = None
+    for rows, piece in pieces:
+        if whole is None:
+            if rows.start == 0 and rows.stop >= n:
+                return piece
+            whole = allocate_like(piece, n)
+        write_rows(whole, piece, rows)
+    return whole

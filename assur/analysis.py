@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from typing import Any
 
 import numpy as np
@@ -18,9 +18,9 @@ import numpy as np
 from assur import _kinematics as _kin
 from assur import kinetostatics as _kst
 from assur._loads import compile_loads
-from assur._text import position_text, suggest
-from assur._vec import Array
-from assur.columns import Column, schema
+from assur._text import position_text
+from assur._vec import Array, freeze, gather
+from assur.columns import selection
 from assur.errors import (
     AssemblyError,
     AssurWarning,
@@ -158,41 +158,42 @@ def _sweep(
     drive = to_si(plan, given)
     n = drive.shape[0]
     rates = driver_rates(plan, omega, epsilon, n)
-    chosen = select(plan, with_forces, names)
-    need_forces = any(c.forces for c in chosen)
-    top = max(2 if need_forces else 0, *(c.level for c in chosen))
-    loads = compile_loads(plan) if need_forces else None
-    state = _kin.allocate(plan, n, top)
-    force_state = _kst.allocate(plan, n) if need_forces else None
-    troubles = []
-    for start in range(0, n, CHUNK):
-        rows = slice(start, min(start + CHUNK, n))
-        part = _at(rates, rows)
-        # failed or dead-centre positions carry NaN through; _report names them
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-            bodies, found = _kin.solve(plan, drive[rows], *part, top=top)
-            state = _kin.collect(plan, bodies, drive[rows], part, state, start)
-            if force_state is not None:
-                assert loads is not None
-                _kst.solve(plan, loads, bodies, state.rows(rows), force_state, start)
-        troubles.extend((t, start) for t in found)
+    chosen = selection(plan, with_forces, names)
+    # jerks are solved when a jerk column is first read, unless asked for by name
+    top = chosen.top if names is not None else min(chosen.top, 2)
+    loads = compile_loads(plan) if chosen.forces else None
+    troubles: list[Any] = []
+
+    def pieces() -> Iterator[tuple[slice, Any]]:
+        for start in range(0, max(n, 1), CHUNK):  # an empty sweep has one slice
+            rows = slice(start, min(start + CHUNK, n))
+            part = _at(rates, rows)
+            # failed or dead-centre positions carry NaN through; _report names them
+            with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+                bodies, found = _kin.solve(plan, drive[rows], *part, top=top)
+                kin = _kin.state_of(plan, bodies, drive[rows], part, top)
+                fields = None
+                if loads is not None:
+                    fields = _kst.solve(plan, loads, bodies, kin)[0].fields()
+            troubles.extend((t, start) for t in found)
+            yield rows, (kin.motion, kin.slide, fields)
+
+    motion, slide, fields = freeze(gather(n, pieces()))
+    state = _kin.KinematicState(drive, rates[0], rates[1], motion, slide, top)
+    force_state = None if fields is None else _kst.ForceState(*fields)
     ok = _report(plan, given, troubles, skip)
-    state = _kin.freeze(state)
-    if force_state is not None:
-        force_state = _kst.freeze(force_state)
     skipped = given[~ok]
     if not ok.all():
-        state = state.take(ok)
-        force_state = force_state.take(ok) if force_state is not None else None
-        rates = _at(rates, ok)
+        state = state.rows(ok)
+        force_state = force_state.rows(ok) if force_state is not None else None
     return Table(
         plan,
-        chosen,
+        chosen.columns,
         given[ok],
         state,
         force_state,
         skipped[:, 0] if skipped.shape[1] == 1 else skipped,
-        rates,
+        _index=chosen.index,
     )
 
 
@@ -203,37 +204,6 @@ def _at(rates: Rates, rows: Any) -> Rates:
         tuple(v if isinstance(v, float) else v[rows] for v in speed),
         tuple(v if isinstance(v, float) else v[rows] for v in accel),
     )
-
-
-def select(
-    plan: Plan, with_forces: bool, names: Sequence[str] | None
-) -> tuple[Column, ...]:
-    """Return the columns of a sweep: every one, or ``angle`` and those named.
-
-    Raises
-    ------
-    UsageError
-        For a name that is not a column of such a table.
-    """
-    full = schema(plan, with_forces)
-    if names is None:
-        return full
-    if isinstance(names, str):
-        names = [names]
-    index = {c.name: c for c in full}
-    wanted = {"angle"}
-    for name in names:
-        if not isinstance(name, str) or name not in index:
-            extra = ""
-            if not with_forces and name in {c.name for c in schema(plan, True)}:
-                extra = " (a force column: use assur.forces)"
-            msg = (
-                f"columns: no column {name!r}{extra}"
-                f"{suggest(str(name), index, listing=False)}"
-            )
-            raise UsageError(msg)
-        wanted.add(name)
-    return tuple(c for c in full if c.name in wanted)
 
 
 def positions(plan: Plan, angles: Any) -> Array:

@@ -21,13 +21,16 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._vec import Array
+from assur._text import describe, suggest
+from assur._vec import Array, full, is_array, take_rows
+from assur.errors import UsageError
 from assur.plan import Plan
 
 if TYPE_CHECKING:
-    from assur.analysis import Table
+    from assur.kinetostatics import ForceState
+    from assur.table import Table
 
-__all__ = ["Column", "evaluate", "pretty_unit", "schema"]
+__all__ = ["Column", "Selection", "evaluate", "pretty_unit", "schema", "selection"]
 
 POINT_PARTS = (("x", "y"), ("vx", "vy"), ("ax", "ay"), ("jx", "jy"))
 """Column suffixes of a point's position, velocity, acceleration and jerk."""
@@ -226,6 +229,59 @@ def _force_columns(plan: Plan) -> list[Column]:
     return cols
 
 
+@dataclass(frozen=True, slots=True)
+class Selection:
+    """The columns a sweep computes, by name, and what the sweep must solve for them.
+
+    ``forces``: whether a force analysis is needed; ``top``: the highest time
+    derivative of the motion.
+    """
+
+    columns: tuple[Column, ...]
+    index: dict[str, Column]
+    forces: bool
+    top: int
+
+
+def selection(plan: Plan, forces: bool, names: Any = None) -> Selection:
+    """Return every column of a sweep, or ``angle`` and the columns ``names``.
+
+    Raises
+    ------
+    UsageError
+        For a name that is not a column of such a table.
+    """
+    full = schema(plan, forces)
+    if names is None:
+        key = f"selection-{forces}"
+        found = plan.memo.get(key)
+        if found is None:
+            found = plan.memo[key] = _selection(full)
+        return found  # type: ignore[no-any-return]
+    if isinstance(names, str):
+        names = [names]
+    index = {c.name: c for c in full}
+    wanted = {"angle"}
+    for name in names:
+        if not isinstance(name, str) or name not in index:
+            extra = ""
+            if not forces and name in {c.name for c in schema(plan, True)}:
+                extra = " (a force column: use assur.forces)"
+            msg = (
+                f"columns: no column {describe(name)}{extra}"
+                f"{suggest(str(name), index, listing=False)}"
+            )
+            raise UsageError(msg)
+        wanted.add(name)
+    return _selection(tuple(c for c in full if c.name in wanted))
+
+
+def _selection(columns: tuple[Column, ...]) -> Selection:
+    forces = any(c.forces for c in columns)
+    top = max(2 if forces else 0, *(c.level for c in columns))
+    return Selection(columns, {c.name: c for c in columns}, forces, top)
+
+
 Evaluator = Callable[["Table", Column], dict[str, Array]]
 
 
@@ -248,7 +304,7 @@ def _angle(table: Table, column: Column) -> dict[str, Array]:
     for i, d in enumerate(plan.drivers):
         if d.body == b and d.kind == "R":
             return {column.name: table.given[:, i]}
-    angle = plan.angle0[b] + table.state.link[0, :, b]
+    angle = plan.angle0[b] + full(table.state.rotation(b, 0), len(table))
     if not any(d.body == b for d in plan.drivers) and angle.size:
         angle = _continuous(angle)
     return {column.name: angle * (180.0 / math.pi)}
@@ -268,17 +324,17 @@ def _continuous(angle: Array) -> Array:
 
 def _link(table: Table, column: Column) -> dict[str, Array]:
     b, k = column.key
-    return {column.name: table.state.link[k, :, b]}
+    return {column.name: full(table.motion(k).rotation(b, k), len(table))}
 
 
 def _ic(table: Table, column: Column) -> dict[str, Array]:
     r"""Instant centre of a link: :math:`p = o + \hat z \times v_o / \omega`."""
     (b, _) = column.key
-    state, plan = table.state, table.plan
+    state, plan, n = table.state, table.plan, len(table)
     name = plan.bodies[b]
-    omega = state.link[1, :, b]
-    ox, oy = state.origin[0, :, b, 0], state.origin[0, :, b, 1]
-    vx, vy = state.origin[1, :, b, 0], state.origin[1, :, b, 1]
+    omega = full(state.rotation(b, 1), n)
+    ox, oy = (full(v, n) for v in state.origin(b, 0))
+    vx, vy = (full(v, n) for v in state.origin(b, 1))
     speed = np.hypot(vx, vy)
     translating = ~(np.abs(omega) * plan.scale > TRANSLATION * speed)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -288,93 +344,92 @@ def _ic(table: Table, column: Column) -> dict[str, Array]:
 
 
 def _point(table: Table, column: Column) -> dict[str, Array]:
+    """Compute a point's position and derivatives (up to the state's), or its jerk."""
     from assur._kinematics import motions
     from assur.groups._motion import point
 
     p = column.key[0]
-    plan, state = table.plan, table.state
-    name = plan.points[p]
+    plan, n = table.plan, len(table)
+    jerk = column.level > table.state.top
+    state = table.motion(column.level) if jerk else table.state
+    levels = [3] if jerk else list(range(state.top + 1))
     body, offset = plan.point_body[p], plan.point_offset[p]
-    levels = state.top + 1
-    out = {}
-    if offset == (0.0, 0.0):
-        for k in range(levels):
-            for c, part in enumerate(POINT_PARTS[k]):
-                values = state.origin[k, :, body, c]
-                out[f"{name}.{part}"] = values + plan.shift[c] if k == 0 else values
-        return out
-    n = len(state)
-    arrays = np.empty((levels, 2, n))
+    arrays = np.empty((4, 2, n))
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
-        m = motions(plan, state, rows)[body]
-        for k in range(levels):
-            arrays[k, 0, rows], arrays[k, 1, rows] = point(m, offset, k)
-    for k in range(levels):
-        for c, part in enumerate(POINT_PARTS[k]):
-            out[f"{name}.{part}"] = (
-                arrays[k, c] + plan.shift[c] if k == 0 else arrays[k, c]
-            )
-    return out
+        m = None if offset == (0.0, 0.0) else motions(plan, state.rows(rows))[body]
+        for k in levels:
+            if m is None:
+                x, y = state.origin(body, k)
+                arrays[k, 0, rows] = x[rows] if is_array(x) else x
+                arrays[k, 1, rows] = y[rows] if is_array(y) else y
+            else:
+                arrays[k, 0, rows], arrays[k, 1, rows] = point(m, offset, k)
+    if 0 in levels:
+        arrays[0, 0] += plan.shift[0]
+        arrays[0, 1] += plan.shift[1]
+    name = plan.points[p]
+    return {
+        f"{name}.{part}": arrays[k, c]
+        for k in levels
+        for c, part in enumerate(POINT_PARTS[k])
+    }
 
 
 def _slide(table: Table, column: Column) -> dict[str, Array]:
     (k,) = column.key
-    return {column.name: table.state.slide[column.owner][k]}
+    return {column.name: full(table.motion(k).slide[column.owner][k], len(table))}
 
 
-def _forces(table: Table) -> Any:
+def _forces(table: Table) -> ForceState:
     assert table.force_state is not None
     return table.force_state
 
 
 def _inertia(table: Table, column: Column) -> dict[str, Array]:
     b, c = column.key
-    fs = _forces(table)
-    return {
-        column.name: fs.inertia_torque[:, b] if c == 2 else fs.inertia_force[:, b, c]
-    }
+    values = _forces(table).inertia[b]
+    return {column.name: full(0.0 if values is None else values[c], len(table))}
 
 
 def _reaction(table: Table, column: Column) -> dict[str, Array]:
     (c,) = column.key
-    force, couple = _forces(table).reactions[column.owner]
-    return {column.name: couple if c == 2 else force[:, c]}
+    return {column.name: full(_forces(table).reactions[column.owner][c], len(table))}
 
 
 def _magnitude(table: Table, column: Column) -> dict[str, Array]:
-    force, _ = _forces(table).reactions[column.owner]
-    return {column.name: np.hypot(force[:, 0], force[:, 1])}
+    fx, fy, _ = _forces(table).reactions[column.owner]
+    n = len(table)
+    return {column.name: np.hypot(full(fx, n), full(fy, n))}
 
 
 def _offset(table: Table, column: Column) -> dict[str, Array]:
     from assur._kinematics import motions
     from assur.kinetostatics import offset
 
-    plan, state = table.plan, table.state
+    plan, state, n = table.plan, table.state, len(table)
     pair = plan.pairs[column.owner]
-    force, couple = _forces(table).reactions[column.owner]
-    n = len(state)
+    fx, fy, couple = (full(v, n) for v in _forces(table).reactions[column.owner])
     out = np.empty(n)
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
-        bodies = motions(plan, state, rows)
-        out[rows] = offset(pair, bodies, force[rows], couple[rows])
+        bodies = motions(plan, state.rows(rows))
+        out[rows] = offset(pair, bodies, fx[rows], fy[rows], couple[rows])
     return {column.name: out}
 
 
 def _balancing(table: Table, column: Column) -> dict[str, Array]:
     (i,) = column.key
-    return {column.name: _forces(table).balancing[:, i]}
+    return {column.name: full(_forces(table).balancing[i], len(table))}
 
 
 def _shaking(table: Table, column: Column) -> dict[str, Array]:
     (c,) = column.key
-    return {column.name: _forces(table).shaking[:, c]}
+    return {column.name: full(_forces(table).shaking[c], len(table))}
 
 
 def _by_chunks(
-    table: Table, width: int, compute: Callable[[Any, Any, slice], Array]
+    table: Table, width: int, compute: Callable[[Any, Any, slice], Any]
 ) -> Array:
     """Fill an array (n, width) by chunks: ``compute(bodies, applied, rows)``."""
     from assur._kinematics import motions
@@ -387,27 +442,25 @@ def _by_chunks(
     out = np.empty((n, width))
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
-        bodies = motions(plan, state, rows)
-        applied = applied_loads(plan, loads, bodies, state.rows(rows))
-        out[rows] = compute(bodies, applied, rows)
+        part = state.rows(rows)
+        bodies = motions(plan, part)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            out[rows] = compute(bodies, applied_loads(plan, loads, bodies, part), rows)
     return out
 
 
 def _check(table: Table, column: Column) -> dict[str, Array]:
     from assur.kinetostatics import virtual_power
 
-    plan = table.plan
+    plan, state = table.plan, table.state
     count = len(plan.drivers)
-    speeds = table.rates[0]
 
     def compute(bodies: Any, applied: Any, rows: slice) -> Array:
+        speeds = take_rows(state.speed, rows)
         size = rows.stop - rows.start
         return np.stack(
             [
-                np.broadcast_to(
-                    virtual_power(plan, bodies, applied, i, _at(speeds[i], rows)),
-                    (size,),
-                )
+                full(virtual_power(plan, bodies, applied, i, speeds[i]), size)
                 for i in range(count)
             ],
             axis=-1,
@@ -419,19 +472,14 @@ def _check(table: Table, column: Column) -> dict[str, Array]:
     }
 
 
-def _at(value: Any, rows: slice) -> Any:
-    """Return a driver's rate at ``rows`` (a float stays a float)."""
-    return value if isinstance(value, float) else value[rows]
-
-
 def _residual(table: Table, column: Column) -> dict[str, Array]:
     from assur.kinetostatics import residual
 
     fs = _forces(table)
 
     def compute(bodies: Any, applied: Any, rows: slice) -> Array:
-        reactions = {k: (f[rows], c[rows]) for k, (f, c) in fs.reactions.items()}
-        return residual(table.plan, bodies, applied, reactions, fs.balancing[rows])
+        size = rows.stop - rows.start
+        return residual(table.plan, bodies, applied, fs.rows(rows), size)
 
     values = _by_chunks(table, 2, compute)
     return {"residual.force": values[:, 0], "residual.moment": values[:, 1]}

@@ -22,7 +22,7 @@ import numpy as np
 
 from assur._kinematics import KinematicState, velocity_coefficients
 from assur._loads import LoadPlan, table_values
-from assur._vec import Array
+from assur._vec import Array, Leaf, full, take_rows
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium, Wrench
@@ -33,9 +33,7 @@ __all__ = [
     "Applied",
     "ForceState",
     "Reverse",
-    "allocate",
     "applied_loads",
-    "freeze",
     "offset",
     "residual",
     "reverse",
@@ -72,39 +70,48 @@ class Reverse:
 
 @dataclass(frozen=True, slots=True)
 class ForceState:
-    """Loads and reactions over a sweep.
+    """Loads and reactions over a sweep, as leaves (an array, or a constant).
 
     Attributes
     ----------
-    inertia_force : ndarray (n, B, 2)
-        ``-m a_G`` of every link, N.
-    inertia_torque : ndarray (n, B)
-        ``-J_G alpha``, N m.
-    reactions : dict of str to (ndarray (n, 2), ndarray (n,))
-        Per pair: force exerted by its first link on its second (N) and, for prismatic
-        pairs, the couple about the pair's point moving with the second link (N m).
-    balancing : ndarray (n, d)
+    inertia : tuple
+        Per body, ``(F_x, F_y, M)``: the inertia force ``-m a_G`` (N) and torque
+        ``-J_G alpha`` (N m); None for a massless body.
+    reactions : dict of str to tuple
+        Per pair, ``(F_x, F_y, M)``: the force exerted by its first link on its second
+        (N) and, for a prismatic pair, the couple about the pair's point moving with
+        the second link (N m; 0 for a revolute pair).
+    balancing : tuple
         Balancing torque (N m) or force (N) per driver.
-    shaking : ndarray (n, 3)
-        Resultant force (N) and moment about the file's origin (N m) of all loads on
-        the frame.
+    shaking : tuple
+        ``(F_x, F_y, M)``: resultant force (N) and moment about the file's origin
+        (N m) of all loads on the frame.
     """
 
-    inertia_force: Array
-    inertia_torque: Array
-    reactions: dict[str, tuple[Array, Array]]
-    balancing: Array
-    shaking: Array
+    inertia: tuple[tuple[Leaf, Leaf, Leaf] | None, ...]
+    reactions: dict[str, tuple[Leaf, Leaf, Leaf]]
+    balancing: tuple[Leaf, ...]
+    shaking: tuple[Leaf, Leaf, Leaf]
 
-    def take(self, rows: Any) -> ForceState:
-        """Return the force state at ``rows`` (a mask or indices), a copy."""
-        return ForceState(
-            self.inertia_force[rows],
-            self.inertia_torque[rows],
-            {k: (f[rows], c[rows]) for k, (f, c) in self.reactions.items()},
-            self.balancing[rows],
-            self.shaking[rows],
+    def rows(self, rows: Any) -> ForceState:
+        """Return the force state at ``rows`` (a slice gives views, a mask copies)."""
+        return ForceState(*take_rows(self.fields(), rows))
+
+    def reaction(self, name: str, n: int) -> tuple[Array, Array]:
+        """Return pair ``name``'s force (n, 2), N, and couple (n,), N m, as arrays."""
+        fx, fy, couple = self.reactions[name]
+        return np.column_stack((full(fx, n), full(fy, n))), full(couple, n)
+
+    def inertia_load(self, body: int, n: int) -> tuple[Array, Array]:
+        """Return a body's inertia force (n, 2), N, and torque (n,), N m, as arrays."""
+        values = self.inertia[body] or (0.0, 0.0, 0.0)
+        return np.column_stack((full(values[0], n), full(values[1], n))), full(
+            values[2], n
         )
+
+    def fields(self) -> tuple[Any, ...]:
+        """Return the fields as a tuple (a tree of leaves)."""
+        return (self.inertia, self.reactions, self.balancing, self.shaking)
 
 
 def applied_loads(
@@ -171,86 +178,34 @@ def reverse(plan: Plan, bodies: list[Motion], applied: Applied) -> Reverse:
     return Reverse(tuple(groups), tuple(drivers), loads[0])
 
 
-def allocate(plan: Plan, n: int) -> ForceState:
-    """Return a writable force state for ``n`` driver positions, filled by chunks."""
-    count, drivers = len(plan.bodies), len(plan.drivers)
-    # a revolute pair has no couple: its entries share one array of zeros, never written
-    none = np.zeros(n)
-    none.flags.writeable = False
-    reactions = {
-        name: (np.empty((2, n)).T, np.empty(n) if p.kind == "P" else none)
-        for name, p in plan.pairs.items()
-    }
-    return ForceState(
-        np.zeros((2, count, n)).transpose(2, 1, 0),
-        np.zeros((count, n)).T,
-        reactions,
-        np.empty((drivers, n)).T,
-        np.empty((3, n)).T,
-    )
-
-
-def freeze(state: ForceState) -> ForceState:
-    """Make every array of ``state`` read-only."""
-    arrays = [
-        state.inertia_force,
-        state.inertia_torque,
-        state.balancing,
-        state.shaking,
-    ]
-    for force, couple in state.reactions.values():
-        arrays += [force, couple]
-    for arr in arrays:
-        arr.flags.writeable = False
-    return state
-
-
 def solve(
-    plan: Plan,
-    loads: LoadPlan,
-    bodies: list[Motion],
-    state: KinematicState,
-    out: ForceState,
-    start: int = 0,
-) -> Reverse:
-    """Solve the kinetostatics of one chunk into rows ``start`` onwards of ``out``.
+    plan: Plan, loads: LoadPlan, bodies: list[Motion], state: KinematicState
+) -> tuple[ForceState, Reverse]:
+    """Solve the kinetostatics of a batch whose motions are ``bodies``.
 
-    ``bodies`` and ``state`` are the chunk's motions and its kinematic state.
-    Returns the reverse pass's records.
+    ``state`` is the batch's kinematic state (for its driver positions and slides).
+    Returns the force state (its arrays are the records' own) and the records.
     """
-    n = state.drive.shape[0]
-    rows = slice(start, start + n)
     applied = applied_loads(plan, loads, bodies, state)
-    for b, values in enumerate(applied.inertia):
-        if values is not None:
-            out.inertia_force[rows, b, 0] = values[0]
-            out.inertia_force[rows, b, 1] = values[1]
-            out.inertia_torque[rows, b] = values[2]
     result = reverse(plan, bodies, applied)
+    reactions: dict[str, tuple[Leaf, Leaf, Leaf]] = {}
     for record in result.groups:
         for name, r in record.reactions.items():
-            _store(plan.pairs[name], out.reactions[name], rows, r.fx, r.fy, r.couple)
-    for i, (d, record_) in enumerate(zip(plan.drivers, result.drivers, strict=True)):
-        r = record_.reaction
-        _store(d.pair, out.reactions[d.pair.name], rows, r.fx, r.fy, r.couple)
-        out.balancing[rows, i] = record_.balancing
+            reactions[name] = (r.fx, r.fy, r.couple)
+    for d, balance_ in zip(plan.drivers, result.drivers, strict=True):
+        r = balance_.reaction
+        reactions[d.pair.name] = (r.fx, r.fy, r.couple)
     fx, fy, tau = result.frame
     sx, sy = plan.shift
-    out.shaking[rows, 0] = fx
-    out.shaking[rows, 1] = fy
-    out.shaking[rows, 2] = tau + (sx * fy - sy * fx) if (sx or sy) else tau
-    return result
-
-
-def _store(
-    pair: PairPlan, target: tuple[Array, Array], rows: slice, fx: Any, fy: Any, c: Any
-) -> None:
-    """Write a pair's reaction into its arrays."""
-    force, couple = target
-    force[rows, 0] = fx
-    force[rows, 1] = fy
-    if pair.kind == "P":
-        couple[rows] = c
+    if sx or sy:
+        tau = tau + (sx * fy - sy * fx)
+    forces = ForceState(
+        applied.inertia,
+        {name: reactions[name] for name in plan.pairs},
+        tuple(b.balancing for b in result.drivers),
+        (fx, fy, tau),
+    )
+    return forces, result
 
 
 def virtual_power(
@@ -290,24 +245,20 @@ def virtual_power(
     return -scale * total
 
 
-def offset(pair: PairPlan, bodies: list[Motion], force: Array, couple: Array) -> Array:
+def offset(pair: PairPlan, bodies: list[Motion], fx: Any, fy: Any, couple: Any) -> Any:
     """Where a prismatic pair's normal force acts: distance along the axis (m).
 
     The couple about the pair's point moves the resultant normal force ``N`` by
     ``M / N`` along the slide line; NaN where there is no normal force.
     """
     nx, ny = rotated(bodies[pair.first], pair.normal)
-    normal = force[:, 0] * nx + force[:, 1] * ny
+    normal = fx * nx + fy * ny
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.where(np.abs(normal) > 1e-12, couple / normal, np.nan)
 
 
 def residual(
-    plan: Plan,
-    bodies: list[Motion],
-    applied: Applied,
-    reactions: dict[str, tuple[Array, Array]],
-    balancing: Array,
+    plan: Plan, bodies: list[Motion], applied: Applied, forces: ForceState, n: int
 ) -> Array:
     """Largest unbalanced force (N) and moment about the link's origin (N m).
 
@@ -315,35 +266,33 @@ def residual(
     its pairs and the balancing loads: an independent check of the reverse pass.
     Returns an array (n, 2).
     """
-    n = balancing.shape[0]
-    total = np.empty((3, len(plan.bodies), n))
+    total = np.zeros((3, len(plan.bodies), n))
     for b, wrench in enumerate(applied.wrenches):
         for i in range(3):
-            total[i, b] = wrench[i]
-    for name, (force, couple) in reactions.items():
+            total[i, b] += wrench[i]
+    for name, (fx, fy, couple) in forces.reactions.items():
         pair = plan.pairs[name]
         qx, qy = point(bodies[pair.second], pair.d_second, 0)
-        fx, fy = force[:, 0], force[:, 1]
         tau = qx * fy - qy * fx
         if pair.kind == "P":
             tau = tau + couple
         for i, value in enumerate((fx, fy, tau)):
             total[i, pair.second] += value
             total[i, pair.first] -= value
-    for i, d in enumerate(plan.drivers):
+    for d, value in zip(plan.drivers, forces.balancing, strict=True):
         if d.kind == "R":
-            total[2, d.body] += balancing[:, i]
+            total[2, d.body] += value
         else:
             assert d.pair.axis is not None
             ex, ey = d.pair.axis
-            fx, fy = balancing[:, i] * ex, balancing[:, i] * ey
+            fx, fy = value * ex, value * ey
             m = bodies[d.body]
             total[0, d.body] += fx
             total[1, d.body] += fy
             total[2, d.body] += m.ox[0] * fy - m.oy[0] * fx
     moving = total[:, 1:]
-    ox = np.stack([np.broadcast_to(bodies[b].ox[0], n) for b in range(1, len(bodies))])
-    oy = np.stack([np.broadcast_to(bodies[b].oy[0], n) for b in range(1, len(bodies))])
+    ox = np.stack([full(bodies[b].ox[0], n) for b in range(1, len(bodies))])
+    oy = np.stack([full(bodies[b].oy[0], n) for b in range(1, len(bodies))])
     moment = np.abs(moving[2] - (ox * moving[1] - oy * moving[0])).max(axis=0)
-    force_ = np.maximum(np.abs(moving[0]).max(axis=0), np.abs(moving[1]).max(axis=0))
-    return np.stack((force_, moment), axis=-1)
+    force = np.maximum(np.abs(moving[0]).max(axis=0), np.abs(moving[1]).max(axis=0))
+    return np.stack((force, moment), axis=-1)

@@ -46,9 +46,6 @@ class Table:
         Inertia loads, reactions and balancing loads (a force analysis only).
     skipped : ndarray
         Driver positions left out (deg, or m), with ``skip_unassembled``.
-    rates : tuple
-        Each driver's speed and acceleration as the sweep used them: a float, or one
-        value per row.
     """
 
     plan: Plan
@@ -57,12 +54,15 @@ class Table:
     state: KinematicState
     force_state: ForceState | None = None
     skipped: Array = field(default_factory=lambda: np.zeros(0))
-    rates: tuple[tuple[Any, ...], tuple[Any, ...]] = ((), ())
     _cache: dict[str, Array] = field(default_factory=dict, repr=False, compare=False)
     _index: dict[str, Column] = field(default_factory=dict, repr=False, compare=False)
+    _states: dict[int, KinematicState] = field(
+        default_factory=dict, repr=False, compare=False
+    )
 
     def __post_init__(self) -> None:
-        self._index.update((c.name, c) for c in self.schema)
+        if not self._index:
+            self._index.update((c.name, c) for c in self.schema)
 
     @property
     def mechanism(self) -> Mechanism:
@@ -73,6 +73,21 @@ class Table:
     def columns(self) -> tuple[str, ...]:
         """The column names, in order."""
         return tuple(self._index)
+
+    def motion(self, level: int = 2) -> KinematicState:
+        """Return the kinematic state solved up to time derivative ``level`` at least.
+
+        A sweep solves up to accelerations; the jerks are solved, group by group, when
+        first asked for.
+        """
+        if self.state.top >= level:
+            return self.state
+        found = self._states.get(level)
+        if found is None:
+            from assur._kinematics import extend
+
+            found = self._states[level] = extend(self.plan, self.state)
+        return found
 
     def column(self, name: str) -> Column:
         """Return the description of column ``name`` (owner, quantity, unit)."""

@@ -52,10 +52,13 @@ def _dot_leibniz(
     m1, m2 = bodies[pair.first], bodies[pair.second]
     total: Any = 0.0
     for m in range(k + 1):
+        ex, ey = direction(m1, e, m)
+        if m and ex.__class__ is float and ey.__class__ is float and not (ex or ey):
+            continue  # the first link does not turn: e's derivatives are zero
         p2 = point(m2, pair.d_second, k - m)
         p1 = point(m1, pair.d_first, k - m)
-        ex, ey = direction(m1, e, m)
-        total = total + comb(k, m) * (ex * (p2[0] - p1[0]) + ey * (p2[1] - p1[1]))
+        term = ex * (p2[0] - p1[0]) + ey * (p2[1] - p1[1])
+        total = total + (comb(k, m) * term if m and m < k else term)
     return total
 
 

@@ -15,7 +15,7 @@ import numpy as np
 
 from assur._structure import Group, Structure
 from assur._text import roman
-from assur._vec import Array
+from assur._vec import Array, full
 from assur.analysis import Table
 from assur.groups._pairs import PairPlan
 from assur.html._series import balancing, charts, current, driver_label, visible_pairs
@@ -206,8 +206,10 @@ def _guide(plan: Plan, table: Table, pair: PairPlan) -> dict[str, Any]:
         at + axis * (np.nanmin(slide) - margin),
         at + axis * (np.nanmax(slide) + margin),
     ]
-    phi = table.state.link[0, :, pair.first]
-    origin = table.state.origin[0, :, pair.first] + np.asarray(plan.shift)
+    n = len(table)
+    phi = full(table.state.rotation(pair.first, 0), n)
+    ox, oy = (full(v, n) for v in table.state.origin(pair.first, 0))
+    origin = np.column_stack((ox + plan.shift[0], oy + plan.shift[1]))
     c, s = np.cos(phi), np.sin(phi)
     out: dict[str, Any] = {"joint": pair.name, "body": plan.bodies[pair.first]}
     for tag, (dx, dy) in (("1", ends[0]), ("2", ends[1])):

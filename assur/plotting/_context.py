@@ -65,8 +65,8 @@ class _Context:
 
     def pose(self, row: int) -> _Pose:
         """Return the links' placement at ``row``."""
-        state = self.table.state
-        return _Pose(state.link[0, row], state.origin[0, row] + self.plan.shift)
+        phi, origin = self.table.state.pose(row)
+        return _Pose(phi, origin + np.asarray(self.plan.shift))
 
     def hidden(self, body: int) -> bool:
         """Whether ``body`` is a virtual block standing for a slot."""
@@ -97,8 +97,12 @@ def _context(table: Table, groups: bool = True) -> _Context:
     plan = table.plan
     color, legend = _colors(plan, groups)
     travel = {
-        name: (float(np.nanmin(s[0])), float(np.nanmax(s[0])))
-        for name, s in table.state.slide.items()
+        name: (
+            float(np.nanmin(table[f"{name}.s"])),
+            float(np.nanmax(table[f"{name}.s"])),
+        )
+        for name, pair in plan.pairs.items()
+        if pair.kind == "P" and f"{name}.s" in table
     }
     pts = np.array([p.d_second + plan.origins[p.second] for p in plan.pairs.values()])
     pts = pts + np.asarray(plan.shift)

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._vec import full
 from assur.plotting._geometry import _nice
 from assur.plotting._style import (
     ARROW_LENGTH,
@@ -67,7 +68,7 @@ def _reaction(
     the couple is returned separately when that point lies too far away.
     """
     pair = ctx.plan.pairs[name]
-    force, couple = ctx.table.force_state.reactions[name]
+    force, couple = ctx.table.force_state.reaction(name, len(ctx.table))
     f = sign * np.asarray(force[row], dtype=float)
     q = pose.at(pair.second, pair.d_second)
     if pair.kind == "R":
@@ -93,7 +94,8 @@ def _inertia_arrows(ctx: _Context, row: int, links: Iterable[str]) -> list[_Arro
         if not ctx.table.mechanism.link(link).mass:
             continue
         b, g, name = ctx.plan.body(link), _centre(ctx.table, link, row), _tex(link)
-        force, torque = fs.inertia_force[row, b], float(fs.inertia_torque[row, b])
+        forces, torques = fs.inertia_load(b, len(ctx.table))
+        force, torque = forces[row], float(torques[row])
         arrows += [
             _Arrow(f"$F_{{i,{name}}}$", g, force, None, INERTIA_COLOR, "N", "inertia"),
             _Arrow(
@@ -121,7 +123,7 @@ def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
     arrows = []
     for i, d in enumerate(drivers):
         p = pose.at(d.pair.second, d.pair.d_second)
-        value = float(ctx.table.force_state.balancing[row, i])
+        value = float(full(ctx.table.force_state.balancing[i], len(ctx.table))[row])
         label = f"$T_{{b,{_tex(d.pair.name)}}}$" if len(drivers) > 1 else "$T_b$"
         if d.kind == "R":
             arrow = _Arrow(label, p, None, value, DRIVER_COLOR, "N m", "balancing")

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._vec import full
 from assur.errors import ModelError
 from assur.plotting._axes import _frame_axes, _legend, _new_axes
 from assur.plotting._context import (
@@ -279,7 +280,9 @@ def _load_value(ctx: _Context, row: int, value: Any, entry: str) -> np.ndarray:
         return np.atleast_1d(np.asarray(value, dtype=float))
     state = ctx.table.state
     drive = state.drive[row : row + 1]
-    slides = {k: s[0, row : row + 1] for k, s in state.slide.items()}
+    slides = {
+        k: full(s[0], len(ctx.table))[row : row + 1] for k, s in state.slide.items()
+    }
     values = table_values(value, ctx.plan, drive, slides, entry)
     return np.array([c[0] for c in values])
 

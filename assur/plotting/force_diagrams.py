@@ -61,14 +61,14 @@ def _plot_balancing(
     """Plot driver ``i``'s balancing load, its check (dots) and its mean."""
     what, unit = ("torque", "N m") if revolute else ("force", "N")
     color = BALANCING_COLORS[i % len(BALANCING_COLORS)]
-    balancing = table.force_state.balancing[:, i]
+    balancing = _driver_column(table, i, "")
     step = max(1, len(x) // 36)
     ax.plot(
         x, balancing, color=color, lw=1.8, label=f"balancing {what}{name} (equilibrium)"
     )
     ax.plot(
         x[::step],
-        _check_column(table, i)[::step],
+        _driver_column(table, i, "_check")[::step],
         ls="none",
         marker="o",
         mfc="none",
@@ -143,7 +143,7 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
         squeeze=False,
     )
     for ax, name in zip(axes.flat, names, strict=False):
-        force = table.force_state.reactions[name][0]
+        force = table.force_state.reaction(name, len(table))[0]
         _locus(ax, table, force[:, 0], force[:, 1], ctx.color[pairs[name].second])
         ax.set_title(
             f"{name}: {_on(ctx.plan, name)}\n"
@@ -194,7 +194,7 @@ def plot_shaking(table: Table) -> Any:
     import matplotlib.pyplot as plt
 
     _need_forces(table, "plot_shaking")
-    shaking = table.force_state.shaking
+    shaking = np.column_stack([table[f"shaking.{part}"] for part in ("Fx", "Fy", "M")])
     fig = plt.figure(figsize=(11.0, 4.8), layout="constrained")
     grid = fig.add_gridspec(2, 2, width_ratios=(1.0, 1.4))
     polar = fig.add_subplot(grid[:, 0])
@@ -224,9 +224,9 @@ def plot_shaking(table: Table) -> Any:
     return fig
 
 
-def _check_column(table: Table, i: int) -> np.ndarray:
-    """Return driver ``i``'s virtual-power check of its balancing load."""
+def _driver_column(table: Table, i: int, suffix: str) -> np.ndarray:
+    """Return driver ``i``'s balancing load (``suffix`` "_check": its check)."""
     d = table.plan.drivers[i]
     what = "torque" if d.kind == "R" else "force"
     owner = "driver" if len(table.plan.drivers) == 1 else d.pair.name
-    return table[f"{owner}.{what}_check"]
+    return table[f"{owner}.{what}{suffix}"]
