@@ -42,11 +42,18 @@ def full(value: Leaf, n: int) -> Array:
 
 def leaves(tree: Any) -> list[Any]:
     """Return the leaves of nested tuples, lists and dicts, in a fixed order."""
-    if isinstance(tree, dict):
-        return [x for key in tree for x in leaves(tree[key])]
-    if isinstance(tree, tuple | list):
-        return [x for item in tree for x in leaves(item)]
-    return [tree]
+    out: list[Any] = []
+    stack = [tree]
+    while stack:
+        item = stack.pop()
+        kind = item.__class__
+        if kind is tuple or kind is list:
+            stack.extend(reversed(item))
+        elif kind is dict:
+            stack.extend(reversed(list(item.values())))
+        else:
+            out.append(item)
+    return out
 
 
 def rebuild(tree: Any, values: Iterator[Any]) -> Any:
@@ -78,7 +85,7 @@ def write_rows(target: Any, piece: Any, rows: slice) -> None:
 def freeze(tree: Any) -> Any:
     """Make every array leaf of ``tree`` read-only; return ``tree``."""
     for x in leaves(tree):
-        if isinstance(x, np.ndarray):
+        if x.__class__ is np.ndarray:
             x.flags.writeable = False
     return tree
 
