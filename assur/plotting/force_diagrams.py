@@ -20,6 +20,7 @@ from assur.plotting._style import DRIVER_COLOR
 
 if TYPE_CHECKING:
     from assur.analysis import Table
+    from assur.kinetostatics import ForceState
 
 __all__ = ["plot_hodographs", "plot_shaking", "plot_torque"]
 
@@ -40,7 +41,7 @@ def plot_torque(table: Table, ax: Any = None) -> Any:
     -------
     matplotlib.axes.Axes
     """
-    _need_forces(table, "plot_torque")
+    forces = _need_forces(table, "plot_torque")
     from assur.plan import compile_plan
 
     plan = compile_plan(table.mechanism)
@@ -48,7 +49,7 @@ def plot_torque(table: Table, ax: Any = None) -> Any:
     x = _driver_axis(ax, table)
     for i, d in enumerate(plan.drivers):
         name = f" at {d.pair.name}" if len(plan.drivers) > 1 else ""
-        _plot_balancing(ax, table, x, i, d.kind == "R", name)
+        _plot_balancing(ax, forces, x, i, d.kind == "R", name)
     ax.axhline(0.0, color="black", lw=0.6)
     unit = "N m" if plan.drivers[0].kind == "R" else "N"
     ax.set_ylabel(f"balancing load [{unit}]")
@@ -58,19 +59,19 @@ def plot_torque(table: Table, ax: Any = None) -> Any:
 
 
 def _plot_balancing(
-    ax: Any, table: Table, x: np.ndarray, i: int, revolute: bool, name: str
+    ax: Any, forces: ForceState, x: np.ndarray, i: int, revolute: bool, name: str
 ) -> None:
     """Plot driver ``i``'s balancing load, its check (dots) and its mean."""
     what, unit = ("torque", "N m") if revolute else ("force", "N")
     color = BALANCING_COLORS[i % len(BALANCING_COLORS)]
-    balancing = table.force_state.balancing[:, i]
+    balancing = forces.balancing[:, i]
     step = max(1, len(x) // 36)
     ax.plot(
         x, balancing, color=color, lw=1.8, label=f"balancing {what}{name} (equilibrium)"
     )
     ax.plot(
         x[::step],
-        table.force_state.check[::step, i],
+        forces.check[::step, i],
         ls="none",
         marker="o",
         mfc="none",
@@ -131,7 +132,7 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
     """
     import matplotlib.pyplot as plt
 
-    _need_forces(table, "plot_hodographs")
+    forces = _need_forces(table, "plot_hodographs")
     ctx = _context(table)
     pairs = ctx.plan.pairs
     names = _joints(pairs, joints)
@@ -145,7 +146,7 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
         squeeze=False,
     )
     for ax, name in zip(axes.flat, names, strict=False):
-        force = table.force_state.reactions[name][0]
+        force = forces.reactions[name][0]
         _locus(ax, table, force[:, 0], force[:, 1], ctx.color[pairs[name].second])
         ax.set_title(
             f"{name}: {_on(ctx.plan, name)}\n"
@@ -195,8 +196,7 @@ def plot_shaking(table: Table) -> Any:
     """
     import matplotlib.pyplot as plt
 
-    _need_forces(table, "plot_shaking")
-    shaking = table.force_state.shaking
+    shaking = _need_forces(table, "plot_shaking").shaking
     fig = plt.figure(figsize=(11.0, 4.8), layout="constrained")
     grid = fig.add_gridspec(2, 2, width_ratios=(1.0, 1.4))
     polar = fig.add_subplot(grid[:, 0])
