@@ -56,8 +56,10 @@ MECHANISMS = {
     "four-bar": lambda: assur.catalog.four_bar(),
     "ten-bar": lambda: assur.load(ROOT / "examples" / "tenbar.toml"),
 }
-HAND_KIN = {"slider-crank": ref.slider_crank_kinematics,
-            "four-bar": ref.four_bar_kinematics}
+HAND_KIN = {
+    "slider-crank": ref.slider_crank_kinematics,
+    "four-bar": ref.four_bar_kinematics,
+}
 HAND_FORCES = {"slider-crank": ref.slider_crank_forces, "four-bar": ref.four_bar_forces}
 FSOLVE = {"slider-crank": ref.slider_crank_fsolve, "four-bar": ref.four_bar_fsolve}
 
@@ -67,8 +69,9 @@ def angles(n: int) -> np.ndarray:
     return np.arange(n) * (360.0 / n)
 
 
-def run_times(fns: dict, repeats: int, warmup: bool = True,
-              interleave: bool = True) -> dict:
+def run_times(
+    fns: dict, repeats: int, warmup: bool = True, interleave: bool = True
+) -> dict:
     """Wall times (s) of every ``fns[key]()`` over ``repeats`` runs.
 
     With ``interleave`` the functions take turns within each round, so a change in the
@@ -98,8 +101,14 @@ def run_times(fns: dict, repeats: int, warmup: bool = True,
 
 def entry(n: int, times: list) -> dict:
     med = statistics.median(times)
-    return {"n": n, "median_s": med, "min_s": min(times), "rate": n / med,
-            "repeats": len(times), "times_s": list(times)}
+    return {
+        "n": n,
+        "median_s": med,
+        "min_s": min(times),
+        "rate": n / med,
+        "repeats": len(times),
+        "times_s": list(times),
+    }
 
 
 def paired_ratio(a: dict, b: dict) -> float:
@@ -149,9 +158,14 @@ def compare(hand: dict, table) -> dict:
         err = float(np.max(np.abs(a[ok] - b[ok]))) / scale
         if err > worst:
             worst, where = err, name
-    return {"n": VERIFY_N, "max_rel_error": worst, "worst_column": where,
-            "missing_columns": missing, "extra_columns": extra,
-            "ok": worst <= TOLERANCE and not missing and not extra}
+    return {
+        "n": VERIFY_N,
+        "max_rel_error": worst,
+        "worst_column": where,
+        "missing_columns": missing,
+        "extra_columns": extra,
+        "ok": worst <= TOLERANCE and not missing and not extra,
+    }
 
 
 def verify(mechs: dict) -> dict:
@@ -159,10 +173,12 @@ def verify(mechs: dict) -> dict:
     deg = np.concatenate([angles(VERIFY_N - 9), rng.uniform(-720.0, 720.0, 9)])
     out = {}
     for name in HAND_KIN:
-        out[f"{name} kinematics"] = compare(HAND_KIN[name](deg),
-                                            assur.kinematics(mechs[name], deg))
-        out[f"{name} forces"] = compare(HAND_FORCES[name](deg),
-                                        assur.forces(mechs[name], deg))
+        out[f"{name} kinematics"] = compare(
+            HAND_KIN[name](deg), assur.kinematics(mechs[name], deg)
+        )
+        out[f"{name} forces"] = compare(
+            HAND_FORCES[name](deg), assur.forces(mechs[name], deg)
+        )
         # fsolve: same positions and rates as assur (a sanity check, loose tolerance)
         small = angles(360)
         fs = FSOLVE[name](small)
@@ -170,10 +186,15 @@ def verify(mechs: dict) -> dict:
         if name == "slider-crank":
             want = [np.radians(t["rod.angle"]), t["C.x"], t["rod.omega"], t["C.vx"]]
         else:
-            want = [np.radians(t["coupler.angle"]), np.radians(t["rocker.angle"]),
-                    t["coupler.omega"], t["rocker.omega"]]
-        err = max(float(np.max(np.abs(np.asarray(w) - fs[:, i])))
-                  for i, w in enumerate(want))
+            want = [
+                np.radians(t["coupler.angle"]),
+                np.radians(t["rocker.angle"]),
+                t["coupler.omega"],
+                t["rocker.omega"],
+            ]
+        err = max(
+            float(np.max(np.abs(np.asarray(w) - fs[:, i]))) for i, w in enumerate(want)
+        )
         out[f"{name} fsolve"] = {"n": 360, "max_abs_error": err, "ok": err < 1e-6}
     return out
 
@@ -197,17 +218,27 @@ def import_time(runs: int = 5) -> dict:
 
     def wall(env: dict, code: str, *flags: str) -> tuple[float, str]:
         t0 = time.perf_counter()
-        done = subprocess.run([sys.executable, *flags, "-c", code], env=env, cwd=ROOT,
-                              capture_output=True, text=True, check=True)
+        done = subprocess.run(
+            [sys.executable, *flags, "-c", code],
+            env=env,
+            cwd=ROOT,
+            capture_output=True,
+            text=True,
+            check=True,
+        )
         return time.perf_counter() - t0, done.stderr
 
     def measure(env: dict) -> dict:
         wall(env, "import assur")  # fill the bytecode and file caches
+
         def median(code: str) -> float:
             return statistics.median(wall(env, code)[0] for _ in range(runs))
 
-        bare, full, numpy_only = median("pass"), median("import assur"), median(
-            "import numpy")
+        bare, full, numpy_only = (
+            median("pass"),
+            median("import assur"),
+            median("import numpy"),
+        )
         cumulative, rows = [], []
         for _ in range(runs):
             _, err = wall(env, "import assur", "-X", "importtime")
@@ -217,19 +248,29 @@ def import_time(runs: int = 5) -> dict:
                 if m:
                     rows.append((int(m[1]), int(m[2]), len(m[3]), m[4]))
             cumulative += [r[1] * 1e-6 for r in rows if r[3] == "assur" and r[2] == 1]
-        return {"python_bare_s": bare, "python_import_assur_s": full,
-                "import_s": full - bare, "numpy_import_s": numpy_only - bare,
-                "importtime_cumulative_s": statistics.median(cumulative) if cumulative
-                else None,
-                "largest_cumulative_us": [
-                    {"module": r[3], "cumulative_us": r[1], "self_us": r[0]}
-                    for r in sorted(rows, key=lambda r: -r[1])[:12]]}
+        return {
+            "python_bare_s": bare,
+            "python_import_assur_s": full,
+            "import_s": full - bare,
+            "numpy_import_s": numpy_only - bare,
+            "importtime_cumulative_s": statistics.median(cumulative)
+            if cumulative
+            else None,
+            "largest_cumulative_us": [
+                {"module": r[3], "cumulative_us": r[1], "self_us": r[0]}
+                for r in sorted(rows, key=lambda r: -r[1])[:12]
+            ],
+        }
 
     with tempfile.TemporaryDirectory(prefix="assur-pycache-") as cache:
         warm = measure({**base, "PYTHONPYCACHEPREFIX": cache})
     cold = measure({**base, "PYTHONDONTWRITEBYTECODE": "1"})
-    return {"runs": runs, "import_s": warm["import_s"], "cached_bytecode": warm,
-            "no_bytecode_cache": cold}
+    return {
+        "runs": runs,
+        "import_s": warm["import_s"],
+        "cached_bytecode": warm,
+        "no_bytecode_cache": cold,
+    }
 
 
 def run(quick: bool) -> dict:
@@ -241,9 +282,15 @@ def run(quick: bool) -> dict:
     res: dict = {
         "quick": quick,
         "sizes": list(sizes),
-        "machine": {"python": platform.python_version(), "numpy": np.__version__,
-                    "platform": platform.platform(), "processor": _cpu(),
-                    "cpus": os.cpu_count(), "assur": assur.__version__, **_git()},
+        "machine": {
+            "python": platform.python_version(),
+            "numpy": np.__version__,
+            "platform": platform.platform(),
+            "processor": _cpu(),
+            "cpus": os.cpu_count(),
+            "assur": assur.__version__,
+            **_git(),
+        },
         "tolerance": TOLERANCE,
     }
     res["load_average_start"] = _load()
@@ -274,13 +321,19 @@ def run(quick: bool) -> dict:
         for name in HAND_KIN:
             m = mechs[name]
             progress(f"per-position loop {name} n={n}")
-            loop.setdefault(name, {})[n] = entry(n, run_times(
-                {0: lambda m=m, d=deg: [assur.kinematics(m, [a]) for a in d]},
-                loop_repeats, False)[0])
+            loop.setdefault(name, {})[n] = entry(
+                n,
+                run_times(
+                    {0: lambda m=m, d=deg: [assur.kinematics(m, [a]) for a in d]},
+                    loop_repeats,
+                    False,
+                )[0],
+            )
             progress(f"fsolve {name} n={n}")
             fn = FSOLVE[name]
             fsolve.setdefault(name, {})[n] = entry(
-                n, run_times({0: lambda fn=fn, d=deg: fn(d)}, loop_repeats + 2)[0])
+                n, run_times({0: lambda fn=fn, d=deg: fn(d)}, loop_repeats + 2)[0]
+            )
     res["loop"] = loop
     res["fsolve"] = fsolve
 
@@ -288,8 +341,14 @@ def run(quick: bool) -> dict:
     sc = mechs["slider-crank"]
     deg = angles(360)
     many = 50 if quick else 300
-    times = run_times({"kinematics": lambda: assur.kinematics(sc, deg),
-                       "forces": lambda: assur.forces(sc, deg)}, many, interleave=False)
+    times = run_times(
+        {
+            "kinematics": lambda: assur.kinematics(sc, deg),
+            "forces": lambda: assur.forces(sc, deg),
+        },
+        many,
+        interleave=False,
+    )
     res["interactive"] = {"runs": many}
     for key, values in times.items():
         res["interactive"][f"{key}_360_ms"] = 1e3 * statistics.median(values)
@@ -310,14 +369,19 @@ def _load() -> list | None:
 
 def _git() -> dict:
     """The commit benchmarked and whether the package's sources differ from it."""
+
     def git(*args: str) -> str:
         try:
-            return subprocess.run(["git", *args], cwd=ROOT, capture_output=True,
-                                  text=True, check=True).stdout.strip()
+            return subprocess.run(
+                ["git", *args], cwd=ROOT, capture_output=True, text=True, check=True
+            ).stdout.strip()
         except (OSError, subprocess.CalledProcessError):
             return ""
-    return {"commit": git("rev-parse", "HEAD"),
-            "assur_modified": bool(git("status", "--porcelain", "--", "assur"))}
+
+    return {
+        "commit": git("rev-parse", "HEAD"),
+        "assur_modified": bool(git("status", "--porcelain", "--", "assur")),
+    }
 
 
 def _cpu() -> str:
@@ -341,8 +405,15 @@ def ratios(res: dict) -> tuple[dict, list]:
 
     def target(label, value, limit, above):
         ok = value >= limit if above else value <= limit
-        targets.append({"target": label, "value": value, "limit": limit,
-                        "kind": ">=" if above else "<=", "pass": bool(ok)})
+        targets.append(
+            {
+                "target": label,
+                "value": value,
+                "limit": limit,
+                "kind": ">=" if above else "<=",
+                "pass": bool(ok),
+            }
+        )
 
     for name in HAND_KIN:
         r = paired_ratio(kin[name][big], hk[name][big])
@@ -359,13 +430,21 @@ def ratios(res: dict) -> tuple[dict, list]:
         r = kin[name][big]["rate"] / res["loop"][name][loop_n]["rate"]
         out[f"{name} assur/per-position loop rate"] = r
         target(f"{name} assur at n={big} / per-position loop rate", r, 50.0, True)
-        out[f"{name} assur/fsolve rate"] = (kin[name][big]["rate"]
-                                            / res["fsolve"][name][loop_n]["rate"])
-    target("slider-crank 360-position kinematics sweep, ms",
-           res["interactive"]["kinematics_360_ms"], 0.5, False)
-    out["slider-crank 360-position forces sweep, ms"] = res["interactive"]["forces_360_ms"]
-    target("import assur (with bytecode cache), s", res["import"]["import_s"], 0.15,
-           False)
+        out[f"{name} assur/fsolve rate"] = (
+            kin[name][big]["rate"] / res["fsolve"][name][loop_n]["rate"]
+        )
+    target(
+        "slider-crank 360-position kinematics sweep, ms",
+        res["interactive"]["kinematics_360_ms"],
+        0.5,
+        False,
+    )
+    out["slider-crank 360-position forces sweep, ms"] = res["interactive"][
+        "forces_360_ms"
+    ]
+    target(
+        "import assur (with bytecode cache), s", res["import"]["import_s"], 0.15, False
+    )
     return out, targets
 
 
@@ -379,28 +458,39 @@ def report(res: dict) -> str:
     commit = m["commit"][:10] or "?"
     if m["assur_modified"]:
         commit += " + local changes"
-    lines.append(f"assur {m['assur']} ({commit}), Python {m['python']}, "
-                 f"numpy {m['numpy']}, {m['processor']} x{m['cpus']}"
-                 + (" [--quick]" if res["quick"] else ""))
+    lines.append(
+        f"assur {m['assur']} ({commit}), Python {m['python']}, "
+        f"numpy {m['numpy']}, {m['processor']} x{m['cpus']}"
+        + (" [--quick]" if res["quick"] else "")
+    )
     la, lb = res.get("load_average_start"), res.get("load_average_end")
     if la and lb:
-        lines.append(f"load average (1 min) at start {la[0]:.2f}, at end {lb[0]:.2f}"
-                     + ("  -- the machine was busy: figures are noisy"
-                        if la[0] > 0.5 * (m["cpus"] or 1) else ""))
+        lines.append(
+            f"load average (1 min) at start {la[0]:.2f}, at end {lb[0]:.2f}"
+            + (
+                "  -- the machine was busy: figures are noisy"
+                if la[0] > 0.5 * (m["cpus"] or 1)
+                else ""
+            )
+        )
     lines.append("")
-    lines.append("Verification of the references against assur "
-                 f"(max |diff| / max(1, max |column|), limit {TOLERANCE:g}):")
+    lines.append(
+        "Verification of the references against assur "
+        f"(max |diff| / max(1, max |column|), limit {TOLERANCE:g}):"
+    )
     for key, v in res["verification"].items():
         if "max_rel_error" in v:
             note = f"{v['max_rel_error']:.2e} (worst {v['worst_column']})"
             if v["missing_columns"] or v["extra_columns"]:
-                note += (f" missing {v['missing_columns']} extra {v['extra_columns']}")
+                note += f" missing {v['missing_columns']} extra {v['extra_columns']}"
         else:
             note = f"max abs error {v['max_abs_error']:.2e} (positions and rates)"
         lines.append(f"  {'ok  ' if v['ok'] else 'BAD '} {key:28s} {note}")
     if not all(v["ok"] for v in res["verification"].values()):
-        lines.append("  WARNING: a reference disagrees with assur; the ratios below "
-                     "are not a fair comparison")
+        lines.append(
+            "  WARNING: a reference disagrees with assur; the ratios below "
+            "are not a fair comparison"
+        )
     lines.append("")
     width = 12
     head = f"{'positions per second':46s}" + "".join(f"{n:>{width}d}" for n in sizes)
@@ -408,8 +498,10 @@ def report(res: dict) -> str:
     lines.append("-" * len(head))
 
     def row(label, data):
-        cells = "".join(f"{rate_text(data[n]['rate']) if n in data else '':>{width}s}"
-                        for n in sizes)
+        cells = "".join(
+            f"{rate_text(data[n]['rate']) if n in data else '':>{width}s}"
+            for n in sizes
+        )
         lines.append(f"{label:46s}{cells}")
 
     for name in MECHANISMS:
@@ -426,20 +518,26 @@ def report(res: dict) -> str:
         row(f"hand-written numpy forces {name}", res["hand_forces"][name])
     lines.append("")
     it, im = res["interactive"], res["import"]
-    lines.append(f"slider-crank, 360 positions (median of {it['runs']}): "
-                 f"kinematics {it['kinematics_360_ms']:.3f} ms, "
-                 f"forces {it['forces_360_ms']:.3f} ms")
-    for key, what in (("cached_bytecode", "with bytecode cache"),
-                      ("no_bytecode_cache", "without bytecode cache")):
+    lines.append(
+        f"slider-crank, 360 positions (median of {it['runs']}): "
+        f"kinematics {it['kinematics_360_ms']:.3f} ms, "
+        f"forces {it['forces_360_ms']:.3f} ms"
+    )
+    for key, what in (
+        ("cached_bytecode", "with bytecode cache"),
+        ("no_bytecode_cache", "without bytecode cache"),
+    ):
         v = im[key]
         cum = v["importtime_cumulative_s"]
-        lines.append(f"import assur, fresh interpreter {what} "
-                     f"(median of {im['runs']}): "
-                     f"{v['import_s'] * 1e3:.1f} ms over a bare interpreter"
-                     + (f" (-X importtime: {cum * 1e3:.1f} ms)" if cum else "")
-                     + f"; numpy alone {v['numpy_import_s'] * 1e3:.1f} ms, assur "
-                     f"beyond numpy {(v['import_s'] - v['numpy_import_s']) * 1e3:.1f}"
-                     " ms")
+        lines.append(
+            f"import assur, fresh interpreter {what} "
+            f"(median of {im['runs']}): "
+            f"{v['import_s'] * 1e3:.1f} ms over a bare interpreter"
+            + (f" (-X importtime: {cum * 1e3:.1f} ms)" if cum else "")
+            + f"; numpy alone {v['numpy_import_s'] * 1e3:.1f} ms, assur "
+            f"beyond numpy {(v['import_s'] - v['numpy_import_s']) * 1e3:.1f}"
+            " ms"
+        )
     lines.append("")
     lines.append("Ratios:")
     for key, v in res["ratios"].items():
@@ -448,17 +546,23 @@ def report(res: dict) -> str:
     lines.append("")
     lines.append("Targets:")
     for t in res["targets"]:
-        lines.append(f"  {'PASS' if t['pass'] else 'FAIL'}  {t['target']:58s} "
-                     f"{t['value']:9.3g} {t['kind']} {t['limit']:g}")
+        lines.append(
+            f"  {'PASS' if t['pass'] else 'FAIL'}  {t['target']:58s} "
+            f"{t['value']:9.3g} {t['kind']} {t['limit']:g}"
+        )
     return "\n".join(lines)
 
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true",
-                        help="only up to 10^4 positions, few repeats (a smoke test)")
-    parser.add_argument("--output", type=Path, default=None,
-                        help="where to write the JSON results")
+    parser.add_argument(
+        "--quick",
+        action="store_true",
+        help="only up to 10^4 positions, few repeats (a smoke test)",
+    )
+    parser.add_argument(
+        "--output", type=Path, default=None, help="where to write the JSON results"
+    )
     args = parser.parse_args(argv)
     name = "results-quick.json" if args.quick else "results.json"
     output = args.output or HERE / name

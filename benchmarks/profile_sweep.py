@@ -33,10 +33,16 @@ except ImportError:  # run from a source tree without the package installed
     import assur
 
 CASES = ((100_000, 1), (360, 300))
-PHASES = (("assur.analysis", "_to_si"), ("assur._kinematics", "allocate"),
-          ("assur._kinematics", "solve"), ("assur._kinematics", "collect"),
-          ("assur.kinetostatics", "allocate"), ("assur.kinetostatics", "solve"),
-          ("assur.analysis", "_report"), ("assur.columns", "build_columns"))
+PHASES = (
+    ("assur.analysis", "_to_si"),
+    ("assur._kinematics", "allocate"),
+    ("assur._kinematics", "solve"),
+    ("assur._kinematics", "collect"),
+    ("assur.kinetostatics", "allocate"),
+    ("assur.kinetostatics", "solve"),
+    ("assur.analysis", "_report"),
+    ("assur.columns", "build_columns"),
+)
 
 
 def phases() -> str:
@@ -74,11 +80,14 @@ def phases() -> str:
                 for _ in range(calls):
                     fn(mech, deg)
                 total = (time.perf_counter() - t0) / calls
-                parts = ", ".join(f"{k} {v / calls * 1e3:.3f}"
-                                  for k, v in spent.items())
+                parts = ", ".join(
+                    f"{k} {v / calls * 1e3:.3f}" for k, v in spent.items()
+                )
                 rest = total - sum(spent.values()) / calls
-                out.write(f"{fn.__name__:10s} n={n:<6d} total {total * 1e3:8.3f}: "
-                          f"{parts}, other {rest * 1e3:.3f}\n")
+                out.write(
+                    f"{fn.__name__:10s} n={n:<6d} total {total * 1e3:8.3f}: "
+                    f"{parts}, other {rest * 1e3:.3f}\n"
+                )
     finally:
         for module, name, fn in saved:
             setattr(module, name, fn)
@@ -96,8 +105,10 @@ def profile(fn, mech, n: int, calls: int, top: int) -> str:
     prof.disable()
     wall = (time.perf_counter() - t0) / calls
     out = io.StringIO()
-    out.write(f"=== assur.{fn.__name__}(slider_crank, {n} positions) x {calls}: "
-              f"{wall * 1e3:.3f} ms per call under the profiler ===\n")
+    out.write(
+        f"=== assur.{fn.__name__}(slider_crank, {n} positions) x {calls}: "
+        f"{wall * 1e3:.3f} ms per call under the profiler ===\n"
+    )
     stats = pstats.Stats(prof, stream=out).strip_dirs()
     out.write("--- by cumulative time ---\n")
     stats.sort_stats("cumulative").print_stats(top)
@@ -113,8 +124,11 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     mech = assur.catalog.slider_crank()
     parts = [phases()]
-    parts += [profile(fn, mech, n, calls, args.top)
-             for fn in (assur.kinematics, assur.forces) for n, calls in CASES]
+    parts += [
+        profile(fn, mech, n, calls, args.top)
+        for fn in (assur.kinematics, assur.forces)
+        for n, calls in CASES
+    ]
     text = "\n".join(parts)
     print(text)
     if args.output:

@@ -27,15 +27,28 @@ CHUNK = 4096
 # 45 deg, 200 rad/s; masses 10, 0.5, 0.4 kg; centres 0.020 from A on the crank and
 # 0.060 from B on the rod.
 SC = {
-    "crank": 0.074, "rod": 0.200, "offset": 0.0, "angle0": 45.0,
-    "omega": 200.0, "epsilon": 0.0,
-    "m": (10.0, 0.5, 0.4), "J": (0.0, 0.0018, 0.0), "g_crank": 0.020, "g_rod": 0.060,
+    "crank": 0.074,
+    "rod": 0.200,
+    "offset": 0.0,
+    "angle0": 45.0,
+    "omega": 200.0,
+    "epsilon": 0.0,
+    "m": (10.0, 0.5, 0.4),
+    "J": (0.0, 0.0018, 0.0),
+    "g_crank": 0.020,
+    "g_rod": 0.060,
 }
 # assur.catalog.four_bar(): A = (0, 0), D = (0.1, 0); crank 0.04, coupler 0.12, rocker
 # 0.08; 10 rad/s; bars of 2 kg/m with slender-bar inertia, centres at mid-length;
 # coupler point P at mid-coupler.
-FB = {"crank": 0.04, "coupler": 0.12, "rocker": 0.08, "frame": 0.10,
-      "omega": 10.0, "epsilon": 0.0}
+FB = {
+    "crank": 0.04,
+    "coupler": 0.12,
+    "rocker": 0.08,
+    "frame": 0.10,
+    "omega": 10.0,
+    "epsilon": 0.0,
+}
 
 
 def _rigid(p, u_x, u_y, w, al, je):
@@ -48,10 +61,16 @@ def _rigid(p, u_x, u_y, w, al, je):
     w2 = w * w
     k = je - w2 * w
     q = 3.0 * w * al
-    return (px + u_x, py + u_y,
-            vx - w * u_y, vy + w * u_x,
-            ax - al * u_y - w2 * u_x, ay + al * u_x - w2 * u_y,
-            jx - k * u_y - q * u_x, jy + k * u_x - q * u_y)
+    return (
+        px + u_x,
+        py + u_y,
+        vx - w * u_y,
+        vy + w * u_x,
+        ax - al * u_y - w2 * u_x,
+        ay + al * u_x - w2 * u_y,
+        jx - k * u_y - q * u_x,
+        jy + k * u_x - q * u_y,
+    )
 
 
 def _maxabs(*values):
@@ -71,8 +90,12 @@ def _point_cols(name, p):
 
 
 def _link_cols(name, angle_deg, w, al, je):
-    return [(f"{name}.angle", angle_deg), (f"{name}.omega", w),
-            (f"{name}.alpha", al), (f"{name}.jerk", je)]
+    return [
+        (f"{name}.angle", angle_deg),
+        (f"{name}.omega", w),
+        (f"{name}.alpha", al),
+        (f"{name}.jerk", je),
+    ]
 
 
 def _sweep(kernel, deg):
@@ -82,11 +105,11 @@ def _sweep(kernel, deg):
     names = None
     out = None
     for start in range(0, n, CHUNK):
-        cols = kernel(deg[start:start + CHUNK])
+        cols = kernel(deg[start : start + CHUNK])
         if out is None:
             names = [c[0] for c in cols]
             out = np.empty((len(cols), n))
-        block = out[:, start:start + CHUNK]
+        block = out[:, start : start + CHUNK]
         for i, (_, v) in enumerate(cols):
             block[i] = v
     return dict(zip(names, out, strict=True))
@@ -123,15 +146,20 @@ def _sc_kin_cols(deg, th, B, sphi, cphi, rod, C):
     G2 = tuple(kc * v for v in B)
     G3 = _rigid(B, kr * L * cphi, kr * L * sphi, w3, al3, j3)
     x0 = p["crank"] * math.cos(math.radians(p["angle0"])) + math.sqrt(
-        L * L - (p["offset"] - p["crank"] * math.sin(math.radians(p["angle0"]))) ** 2)
+        L * L - (p["offset"] - p["crank"] * math.sin(math.radians(p["angle0"]))) ** 2
+    )
     cols = [("angle", deg)]
     cols += _link_cols("crank", deg, p["omega"], p["epsilon"], 0.0)
     cols += _link_cols("rod", np.degrees(np.arctan2(sphi, cphi)), w3, al3, j3)
     cols += _link_cols("slider", 0.0, 0.0, 0.0, 0.0)
     cols += _point_cols("A", _FIXED) + _point_cols("B", B) + _point_cols("C", C)
     cols += _point_cols("guide", C)
-    cols += [("guide.s", C[0] - x0), ("guide.v", C[2]), ("guide.a", C[4]),
-             ("guide.j", C[6])]
+    cols += [
+        ("guide.s", C[0] - x0),
+        ("guide.v", C[2]),
+        ("guide.a", C[4]),
+        ("guide.j", C[6]),
+    ]
     cols += _point_cols("crank.G", G2) + _point_cols("rod.G", G3)
     cols += _point_cols("slider.G", C)
     return cols, G2, G3
@@ -154,41 +182,81 @@ def _sc_forces_kernel(deg):
     F2x, F2y, M2 = -m2 * G2[4], -m2 * G2[5], -J2 * al2
     F3x, F3y, M3 = -m3 * G3[4], -m3 * G3[5], -J3 * al3
     F4x, F4y, M4 = -m4 * C[4], -m4 * C[5], -J4 * 0.0
-    ux, uy = C[0] - B[0], C[1] - B[1]          # B -> C
-    gx, gy = G3[0] - B[0], G3[1] - B[1]        # B -> G3
+    ux, uy = C[0] - B[0], C[1] - B[1]  # B -> C
+    gx, gy = G3[0] - B[0], G3[1] - B[1]  # B -> G3
     # slider along the guide: the rod's push balances the slider's x load
     RCx = -F4x
     # rod, moments about B: (C - B) x (-R_C) + (G3 - B) x F3 + M3 = 0
     RCy = (uy * RCx + gx * F3y - gy * F3x + M3) / ux
-    RBx, RBy = RCx - F3x, RCy - F3y            # crank on rod
-    Rgx, Rgy = 0.0 * RCx, -RCy - F4y           # ground on slider (normal to the guide)
-    Mg = -M4                                   # guide couple about C (G4 = C)
-    RAx, RAy = RBx - F2x, RBy - F2y            # ground on crank
+    RBx, RBy = RCx - F3x, RCy - F3y  # crank on rod
+    Rgx, Rgy = 0.0 * RCx, -RCy - F4y  # ground on slider (normal to the guide)
+    Mg = -M4  # guide couple about C (G4 = C)
+    RAx, RAy = RBx - F2x, RBy - F2y  # ground on crank
     T = B[0] * RBy - B[1] * RBx - (G2[0] * F2y - G2[1] * F2x) - M2
     # virtual power: T w2 + sum of the applied loads' power = 0
-    check = -(F2x * G2[2] + F2y * G2[3] + M2 * w2 + F3x * G3[2] + F3y * G3[3] + M3 * w3
-              + F4x * C[2] + F4y * C[3]) / w2
+    check = (
+        -(
+            F2x * G2[2]
+            + F2y * G2[3]
+            + M2 * w2
+            + F3x * G3[2]
+            + F3y * G3[3]
+            + M3 * w3
+            + F4x * C[2]
+            + F4y * C[3]
+        )
+        / w2
+    )
     shx, shy = -(RAx + Rgx), -(RAy + Rgy)
     shm = -(C[0] * Rgy - C[1] * Rgx + Mg) - T
     # residuals: every link's resultant force and moment about its origin (A, B, C)
-    rf = _maxabs(RAx - RBx + F2x, RAy - RBy + F2y, RBx - RCx + F3x, RBy - RCy + F3y,
-                 RCx + Rgx + F4x, RCy + Rgy + F4y)
-    rm = _maxabs(T - (B[0] * RBy - B[1] * RBx) + G2[0] * F2y - G2[1] * F2x + M2,
-                 -(ux * RCy - uy * RCx) + gx * F3y - gy * F3x + M3,
-                 Mg + M4)
+    rf = _maxabs(
+        RAx - RBx + F2x,
+        RAy - RBy + F2y,
+        RBx - RCx + F3x,
+        RBy - RCy + F3y,
+        RCx + Rgx + F4x,
+        RCy + Rgy + F4y,
+    )
+    rm = _maxabs(
+        T - (B[0] * RBy - B[1] * RBx) + G2[0] * F2y - G2[1] * F2x + M2,
+        -(ux * RCy - uy * RCx) + gx * F3y - gy * F3x + M3,
+        Mg + M4,
+    )
     with np.errstate(divide="ignore", invalid="ignore"):
         offset = np.where(np.abs(Rgy) > 1e-12, Mg / Rgy, np.nan)
-    cols += [("crank.Fi.x", F2x), ("crank.Fi.y", F2y), ("crank.Mi", M2),
-             ("rod.Fi.x", F3x), ("rod.Fi.y", F3y), ("rod.Mi", M3),
-             ("slider.Fi.x", F4x), ("slider.Fi.y", F4y), ("slider.Mi", M4),
-             ("A.Fx", RAx), ("A.Fy", RAy), ("A.F", np.hypot(RAx, RAy)),
-             ("B.Fx", RBx), ("B.Fy", RBy), ("B.F", np.hypot(RBx, RBy)),
-             ("C.Fx", RCx), ("C.Fy", RCy), ("C.F", np.hypot(RCx, RCy)),
-             ("guide.Fx", Rgx), ("guide.Fy", Rgy), ("guide.F", np.abs(Rgy)),
-             ("guide.M", Mg), ("guide.offset", offset),
-             ("driver.torque", T), ("driver.torque_check", check),
-             ("shaking.Fx", shx), ("shaking.Fy", shy), ("shaking.M", shm),
-             ("residual.force", rf), ("residual.moment", rm)]
+    cols += [
+        ("crank.Fi.x", F2x),
+        ("crank.Fi.y", F2y),
+        ("crank.Mi", M2),
+        ("rod.Fi.x", F3x),
+        ("rod.Fi.y", F3y),
+        ("rod.Mi", M3),
+        ("slider.Fi.x", F4x),
+        ("slider.Fi.y", F4y),
+        ("slider.Mi", M4),
+        ("A.Fx", RAx),
+        ("A.Fy", RAy),
+        ("A.F", np.hypot(RAx, RAy)),
+        ("B.Fx", RBx),
+        ("B.Fy", RBy),
+        ("B.F", np.hypot(RBx, RBy)),
+        ("C.Fx", RCx),
+        ("C.Fy", RCy),
+        ("C.F", np.hypot(RCx, RCy)),
+        ("guide.Fx", Rgx),
+        ("guide.Fy", Rgy),
+        ("guide.F", np.abs(Rgy)),
+        ("guide.M", Mg),
+        ("guide.offset", offset),
+        ("driver.torque", T),
+        ("driver.torque_check", check),
+        ("shaking.Fx", shx),
+        ("shaking.Fy", shy),
+        ("shaking.M", shm),
+        ("residual.force", rf),
+        ("residual.moment", rm),
+    ]
     return cols
 
 
@@ -216,8 +284,8 @@ def _fb_motion(deg):
     L2 = dx * dx + dy * dy
     a = (r3 * r3 - r4 * r4 + L2) / (2.0 * L2)
     h = np.sqrt(r3 * r3 / L2 - a * a)
-    u3x, u3y = a * dx - h * dy, a * dy + h * dx          # B -> C
-    u4x, u4y = B[0] + u3x - d, B[1] + u3y                # D -> C
+    u3x, u3y = a * dx - h * dy, a * dy + h * dx  # B -> C
+    u4x, u4y = B[0] + u3x - d, B[1] + u3y  # D -> C
     # Cramer on  w3 perp(u3) - w4 perp(u4) = rhs  (the loop's k-th derivative)
     inv = 1.0 / (u3y * u4x - u3x * u4y)
 
@@ -229,8 +297,10 @@ def _fb_motion(deg):
     al3, al4 = solve(-B[4] + w3s * u3x - w4s * u4x, -B[5] + w3s * u3y - w4s * u4y)
     c3, c4 = w3s * w3, w4s * w4
     q3, q4 = 3.0 * w3 * al3, 3.0 * w4 * al4
-    j3, j4 = solve(-B[6] - c3 * u3y + q3 * u3x + c4 * u4y - q4 * u4x,
-                   -B[7] + c3 * u3x + q3 * u3y - c4 * u4x - q4 * u4y)
+    j3, j4 = solve(
+        -B[6] - c3 * u3y + q3 * u3x + c4 * u4y - q4 * u4x,
+        -B[7] + c3 * u3x + q3 * u3y - c4 * u4x - q4 * u4y,
+    )
     C = _rigid(B, u3x, u3y, w3, al3, j3)
     return th, B, (u3x, u3y, w3, al3, j3), (u4x, u4y, w4, al4, j4), C
 
@@ -247,9 +317,16 @@ def _fb_kin_cols(deg, B, cpl, rck, C):
     cols += _link_cols("crank", deg, p["omega"], p["epsilon"], 0.0)
     cols += _link_cols("coupler", np.degrees(np.arctan2(u3y, u3x)), w3, al3, j3)
     cols += _link_cols("rocker", np.degrees(np.arctan2(u4y, u4x)), w4, al4, j4)
-    cols += (_point_cols("A", _FIXED) + _point_cols("B", B) + _point_cols("C", C)
-             + _point_cols("D", D) + _point_cols("P", G3) + _point_cols("crank.G", G2)
-             + _point_cols("coupler.G", G3) + _point_cols("rocker.G", G4))
+    cols += (
+        _point_cols("A", _FIXED)
+        + _point_cols("B", B)
+        + _point_cols("C", C)
+        + _point_cols("D", D)
+        + _point_cols("P", G3)
+        + _point_cols("crank.G", G2)
+        + _point_cols("coupler.G", G3)
+        + _point_cols("rocker.G", G4)
+    )
     return cols, G2, G3, G4
 
 
@@ -278,31 +355,71 @@ def _fb_forces_kernel(deg):
     inv = 1.0 / (u3x * u4y - u3y * u4x)
     RCx = (k3 * u4x + k4 * u3x) * inv
     RCy = (k3 * u4y + k4 * u3y) * inv
-    RBx, RBy = RCx - F3x, RCy - F3y        # crank on coupler
-    RDx, RDy = -RCx - F4x, -RCy - F4y      # ground on rocker
-    RAx, RAy = RBx - F2x, RBy - F2y        # ground on crank
+    RBx, RBy = RCx - F3x, RCy - F3y  # crank on coupler
+    RDx, RDy = -RCx - F4x, -RCy - F4y  # ground on rocker
+    RAx, RAy = RBx - F2x, RBy - F2y  # ground on crank
     T = B[0] * RBy - B[1] * RBx - (G2[0] * F2y - G2[1] * F2x) - M2
     # virtual power: T w2 + sum of the applied loads' power = 0
-    check = -(F2x * G2[2] + F2y * G2[3] + M2 * w2 + F3x * G3[2] + F3y * G3[3] + M3 * w3
-              + F4x * G4[2] + F4y * G4[3] + M4 * w4) / w2
+    check = (
+        -(
+            F2x * G2[2]
+            + F2y * G2[3]
+            + M2 * w2
+            + F3x * G3[2]
+            + F3y * G3[3]
+            + M3 * w3
+            + F4x * G4[2]
+            + F4y * G4[3]
+            + M4 * w4
+        )
+        / w2
+    )
     shx, shy = -(RAx + RDx), -(RAy + RDy)
     shm = -d * RDy - T
     # residuals: every link's resultant force and moment about its pivot (A, B, D)
-    rf = _maxabs(RAx - RBx + F2x, RAy - RBy + F2y, RBx - RCx + F3x, RBy - RCy + F3y,
-                 RCx + RDx + F4x, RCy + RDy + F4y)
-    rm = _maxabs(T - (B[0] * RBy - B[1] * RBx) + G2[0] * F2y - G2[1] * F2x + M2,
-                 k3 - (u3x * RCy - u3y * RCx),
-                 k4 + (u4x * RCy - u4y * RCx))
-    cols += [("crank.Fi.x", F2x), ("crank.Fi.y", F2y), ("crank.Mi", M2),
-             ("coupler.Fi.x", F3x), ("coupler.Fi.y", F3y), ("coupler.Mi", M3),
-             ("rocker.Fi.x", F4x), ("rocker.Fi.y", F4y), ("rocker.Mi", M4),
-             ("A.Fx", RAx), ("A.Fy", RAy), ("A.F", np.hypot(RAx, RAy)),
-             ("B.Fx", RBx), ("B.Fy", RBy), ("B.F", np.hypot(RBx, RBy)),
-             ("C.Fx", RCx), ("C.Fy", RCy), ("C.F", np.hypot(RCx, RCy)),
-             ("D.Fx", RDx), ("D.Fy", RDy), ("D.F", np.hypot(RDx, RDy)),
-             ("driver.torque", T), ("driver.torque_check", check),
-             ("shaking.Fx", shx), ("shaking.Fy", shy), ("shaking.M", shm),
-             ("residual.force", rf), ("residual.moment", rm)]
+    rf = _maxabs(
+        RAx - RBx + F2x,
+        RAy - RBy + F2y,
+        RBx - RCx + F3x,
+        RBy - RCy + F3y,
+        RCx + RDx + F4x,
+        RCy + RDy + F4y,
+    )
+    rm = _maxabs(
+        T - (B[0] * RBy - B[1] * RBx) + G2[0] * F2y - G2[1] * F2x + M2,
+        k3 - (u3x * RCy - u3y * RCx),
+        k4 + (u4x * RCy - u4y * RCx),
+    )
+    cols += [
+        ("crank.Fi.x", F2x),
+        ("crank.Fi.y", F2y),
+        ("crank.Mi", M2),
+        ("coupler.Fi.x", F3x),
+        ("coupler.Fi.y", F3y),
+        ("coupler.Mi", M3),
+        ("rocker.Fi.x", F4x),
+        ("rocker.Fi.y", F4y),
+        ("rocker.Mi", M4),
+        ("A.Fx", RAx),
+        ("A.Fy", RAy),
+        ("A.F", np.hypot(RAx, RAy)),
+        ("B.Fx", RBx),
+        ("B.Fy", RBy),
+        ("B.F", np.hypot(RBx, RBy)),
+        ("C.Fx", RCx),
+        ("C.Fy", RCy),
+        ("C.F", np.hypot(RCx, RCy)),
+        ("D.Fx", RDx),
+        ("D.Fy", RDy),
+        ("D.F", np.hypot(RDx, RDy)),
+        ("driver.torque", T),
+        ("driver.torque_check", check),
+        ("shaking.Fx", shx),
+        ("shaking.Fy", shy),
+        ("shaking.M", shm),
+        ("residual.force", rf),
+        ("residual.moment", rm),
+    ]
     return cols
 
 
@@ -357,13 +474,19 @@ def four_bar_fsolve(deg):
         c, s = math.cos(a), math.sin(a)
 
         def loop(q, c=c, s=s):
-            return [r2 * c + r3 * math.cos(q[0]) - r4 * math.cos(q[1]) - d,
-                    r2 * s + r3 * math.sin(q[0]) - r4 * math.sin(q[1])]
+            return [
+                r2 * c + r3 * math.cos(q[0]) - r4 * math.cos(q[1]) - d,
+                r2 * s + r3 * math.sin(q[0]) - r4 * math.sin(q[1]),
+            ]
 
         guess = fsolve(loop, guess)
         t3, t4 = guess
-        jac = np.array([[-r3 * math.sin(t3), r4 * math.sin(t4)],
-                        [r3 * math.cos(t3), -r4 * math.cos(t4)]])
+        jac = np.array(
+            [
+                [-r3 * math.sin(t3), r4 * math.sin(t4)],
+                [r3 * math.cos(t3), -r4 * math.cos(t4)],
+            ]
+        )
         rates = np.linalg.solve(jac, [r2 * s * w, -r2 * c * w])
         out[i] = t3, t4, rates[0], rates[1]
     return out

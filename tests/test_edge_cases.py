@@ -93,7 +93,7 @@ def test_format_must_be_the_integer_one(value):
     text = assur.dumps(assur.catalog.four_bar()).replace(
         "format = 1", f"format = {value}"
     )
-    with pytest.raises(assur.ModelError, match="format: version .* is not supported"):
+    with pytest.raises(assur.ModelError, match=r"format: version .* is not supported"):
         assur.loads(text)
 
 
@@ -122,8 +122,8 @@ def test_too_many_positions_is_one_error(capsys):
 def test_massless_link_has_zero_inertia_columns():
     mech = assur.catalog.four_bar()
     links = tuple(
-        dataclasses.replace(l, mass=None) if l.name == "rocker" else l
-        for l in mech.links
+        dataclasses.replace(link, mass=None) if link.name == "rocker" else link
+        for link in mech.links
     )
     t = assur.forces(dataclasses.replace(mech, links=links), [0.0, 45.0])
     for column in ("rocker.Fi.x", "rocker.Fi.y", "rocker.Mi"):

@@ -26,6 +26,7 @@ def has_forces(path) -> bool:
     return not compile_loads(compile_plan(assur.load(path))).empty
 
 
+@pytest.mark.pictures
 @pytest.mark.parametrize("path", example_files(), ids=lambda p: p.stem)
 def test_every_command_writes_a_valid_file(path, tmp_path, capsys):
     from PIL import Image
@@ -64,6 +65,7 @@ def test_every_command_writes_a_valid_file(path, tmp_path, capsys):
     capsys.readouterr()
 
 
+@pytest.mark.pictures
 @pytest.mark.parametrize("path", example_files()[:4], ids=lambda p: p.stem)
 def test_diagrams_of_examples(path, tmp_path):
     out = tmp_path / "diagrams"

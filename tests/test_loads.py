@@ -23,8 +23,10 @@ ANGLES = np.arange(0.0, 360.0, 15.0)
 def crank_slider(load: Load, omega: float = 0.0, gravity=None) -> assur.Mechanism:
     """The catalog slider-crank without masses, with one load, at rest by default."""
     mech = assur.catalog.slider_crank(omega=omega)
-    links = tuple(dataclasses.replace(link, mass=None, inertia=None, center=None)
-                  for link in mech.links)
+    links = tuple(
+        dataclasses.replace(link, mass=None, inertia=None, center=None)
+        for link in mech.links
+    )
     return dataclasses.replace(mech, links=links, loads=(load,), gravity=gravity)
 
 
@@ -32,27 +34,33 @@ def test_static_piston_force_matches_lever_arm():
     """At rest, torque = force times the crank's effective arm dx_C/dphi."""
     mech = crank_slider(Load("slider", "C", (-1000.0, 0.0)))
     t = assur.forces(mech, ANGLES)
-    kin = assur.kinematics(dataclasses.replace(mech, drivers=(assur.Driver("A", 1.0),)),
-                           ANGLES)
+    kin = assur.kinematics(
+        dataclasses.replace(mech, drivers=(assur.Driver("A", 1.0),)), ANGLES
+    )
     # virtual work: T * dphi + F * dx_C = 0, and dx_C/dphi is C.vx at omega = 1 rad/s
     np.testing.assert_allclose(t["driver.torque"], 1000.0 * kin["C.vx"], atol=1e-9)
 
 
 def test_table_over_driver_equals_constant_load():
     table = LoadTable("driver", (0.0, 180.0, 360.0), ((-500.0,) * 3, (20.0,) * 3))
-    const = assur.forces(crank_slider(Load("slider", "C", (-500.0, 20.0)), 50.0), ANGLES)
+    const = assur.forces(
+        crank_slider(Load("slider", "C", (-500.0, 20.0)), 50.0), ANGLES
+    )
     tab = assur.forces(crank_slider(Load("slider", "C", table), 50.0), ANGLES)
     np.testing.assert_allclose(tab["driver.torque"], const["driver.torque"], rtol=1e-12)
 
 
 def test_table_over_driver_is_periodic_and_linear():
-    table = LoadTable("driver", (0.0, 90.0, 360.0), ((0.0, -900.0, 0.0), (0.0, 0.0, 0.0)))
+    table = LoadTable(
+        "driver", (0.0, 90.0, 360.0), ((0.0, -900.0, 0.0), (0.0, 0.0, 0.0))
+    )
     at = np.array([45.0, 405.0, 90.0 + 135.0, -315.0])
     t = assur.forces(crank_slider(Load("slider", "C", table)), at)
     unit = assur.forces(crank_slider(Load("slider", "C", (-1.0, 0.0))), at)
     expected_force = np.array([450.0, 450.0, 450.0, 450.0])
-    np.testing.assert_allclose(t["driver.torque"], expected_force * unit["driver.torque"],
-                               rtol=1e-9)
+    np.testing.assert_allclose(
+        t["driver.torque"], expected_force * unit["driver.torque"], rtol=1e-9
+    )
 
 
 def test_table_over_slide_follows_the_piston():
@@ -61,8 +69,9 @@ def test_table_over_slide_follows_the_piston():
     t = assur.forces(crank_slider(Load("slider", "C", table)), ANGLES)
     unit = assur.forces(crank_slider(Load("slider", "C", (1.0, 0.0))), ANGLES)
     force = 1e4 * t["guide.s"]
-    np.testing.assert_allclose(t["driver.torque"], force * unit["driver.torque"],
-                               rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(
+        t["driver.torque"], force * unit["driver.torque"], rtol=1e-9, atol=1e-9
+    )
 
 
 def test_torque_table_and_constant_torque():
@@ -76,12 +85,18 @@ def test_gravity_equals_weights_as_external_forces():
     mech = assur.catalog.slider_crank()
     g = (0.0, -9.81)
     with_gravity = assur.forces(dataclasses.replace(mech, gravity=g), ANGLES)
-    weights = tuple(Load(link.name, link.center, (0.0, -9.81 * link.mass))
-                    for link in mech.links)
+    weights = tuple(
+        Load(link.name, link.center, (0.0, -9.81 * link.mass)) for link in mech.links
+    )
     with_loads = assur.forces(dataclasses.replace(mech, loads=weights), ANGLES)
     for column in ("driver.torque", "A.Fx", "A.Fy", "B.Fy", "guide.Fy", "guide.M"):
-        np.testing.assert_allclose(with_gravity[column], with_loads[column],
-                                   rtol=1e-9, atol=1e-9, err_msg=column)
+        np.testing.assert_allclose(
+            with_gravity[column],
+            with_loads[column],
+            rtol=1e-9,
+            atol=1e-9,
+            err_msg=column,
+        )
 
 
 def test_table_over_slide_must_cover_the_sweep():

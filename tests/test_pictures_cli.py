@@ -60,6 +60,7 @@ def _png(path: Path) -> tuple[int, int]:
 # ------------------------------------------------------------------------ plot
 
 
+@pytest.mark.pictures
 @pytest.mark.parametrize("file", [TENBAR, SLIDER, SLOT, FIVE_BAR])
 def test_plot_png(
     file: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
@@ -73,6 +74,7 @@ def test_plot_png(
     assert height > 200
 
 
+@pytest.mark.pictures
 def test_plot_forces_at_an_angle(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -93,6 +95,7 @@ def test_plot_forces_at_an_angle(
     _png(out)
 
 
+@pytest.mark.pictures
 @pytest.mark.parametrize(("suffix", "magic"), [(".svg", b"<?xml"), (".pdf", b"%PDF")])
 def test_plot_svg_and_pdf(
     suffix: str, magic: bytes, tmp_path: Path, capsys: pytest.CaptureFixture[str]
@@ -105,6 +108,7 @@ def test_plot_svg_and_pdf(
     assert out.read_bytes().startswith(magic)
 
 
+@pytest.mark.pictures
 def test_plot_two_drivers_one_angle_each(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -177,6 +181,7 @@ def test_plot_needs_an_output(capsys: pytest.CaptureFixture[str]) -> None:
 # -------------------------------------------------------------------- diagrams
 
 
+@pytest.mark.pictures
 def test_diagrams_kinematics_only(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -199,6 +204,7 @@ def test_diagrams_kinematics_only(
         _png(path)
 
 
+@pytest.mark.pictures
 def test_diagrams_with_forces(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -212,6 +218,7 @@ def test_diagrams_with_forces(
         _png(path)
 
 
+@pytest.mark.pictures
 def test_diagrams_two_drivers(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
@@ -243,6 +250,7 @@ def test_diagrams_into_a_file(
 # --------------------------------------------------------------------- animate
 
 
+@pytest.mark.pictures
 def test_animate_gif(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     out = tmp_path / "slot.gif"
     status, stdout, err = _run(
@@ -265,6 +273,7 @@ def test_animate_gif(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None
         assert gif.info["duration"] == pytest.approx(200, abs=10)
 
 
+@pytest.mark.pictures
 def test_animate_frames_spread_over_the_angles(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

@@ -422,6 +422,7 @@ def test_sweep_force_diagrams_need_forces(function, tenbar: assur.Table) -> None
 # ------------------------------------------------------------------ animation
 
 
+@pytest.mark.pictures
 def test_animate_writes_a_gif(tmp_path: Path, slot: assur.Table) -> None:
     from PIL import Image
 

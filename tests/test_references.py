@@ -22,7 +22,12 @@ CASES = [
     ("tenbar.toml", "tenbar_0p01.csv", False, None),
     ("lever_var9.toml", "lever_var9.csv", False, None),
     ("slider_crank_exercise.toml", "slider_crank_exercise.csv", True, None),
-    ("slider_crank_exercise.toml", "slider_crank_exercise_gravity.csv", True, (0.0, -9.81)),
+    (
+        "slider_crank_exercise.toml",
+        "slider_crank_exercise_gravity.csv",
+        True,
+        (0.0, -9.81),
+    ),
 ]
 
 
@@ -41,8 +46,9 @@ def compare(table: assur.Table, reference: dict[str, np.ndarray]) -> None:
             np.testing.assert_allclose(diff, 0.0, atol=1e-6, err_msg=column)
         else:
             scale = np.max(np.abs(expected))
-            np.testing.assert_allclose(got, expected, rtol=1e-6, atol=1e-6 * max(scale, 1e-3),
-                                       err_msg=column)
+            np.testing.assert_allclose(
+                got, expected, rtol=1e-6, atol=1e-6 * max(scale, 1e-3), err_msg=column
+            )
 
 
 @pytest.mark.parametrize(("mechanism", "table", "with_forces", "gravity"), CASES)
@@ -63,9 +69,14 @@ def test_slider_crank_lecture_numbers():
     a_g1 = np.hypot(t["crank.G.ax"], t["crank.G.ay"])[0]
     a_g2 = np.hypot(t["rod.G.ax"], t["rod.G.ay"])[0]
     a_c = abs(t["C.ax"][0])
-    np.testing.assert_allclose([a_g1, a_g2, t["rod.alpha"][0], a_c],
-                               [800.0, 2565.132, 10046.125, 2134.726], rtol=1e-6)
-    fi = [np.hypot(t[f"{n}.Fi.x"], t[f"{n}.Fi.y"])[0] for n in ("crank", "rod", "slider")]
+    np.testing.assert_allclose(
+        [a_g1, a_g2, t["rod.alpha"][0], a_c],
+        [800.0, 2565.132, 10046.125, 2134.726],
+        rtol=1e-6,
+    )
+    fi = [
+        np.hypot(t[f"{n}.Fi.x"], t[f"{n}.Fi.y"])[0] for n in ("crank", "rod", "slider")
+    ]
     np.testing.assert_allclose(fi, [8000.0, 1282.566, 853.890], rtol=1e-6)
     np.testing.assert_allclose(abs(t["rod.Mi"][0]), 18.083, rtol=1e-4)
     np.testing.assert_allclose(t["driver.torque"][0], 84.625, rtol=1e-6)

@@ -162,8 +162,8 @@ def _members(plan: Plan) -> dict[int, list[str]]:
         for b in bodies:
             if b and point not in members[b]:
                 members[b].append(point)
-    for point in plan.mechanism.points:
-        members[plan.body(point.link)].append(point.name)
+    for extra in plan.mechanism.points:
+        members[plan.body(extra.link)].append(extra.name)
     return members
 
 

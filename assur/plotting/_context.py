@@ -23,6 +23,7 @@ from assur.plotting._style import (
 
 if TYPE_CHECKING:
     from assur.analysis import Table
+    from assur.kinetostatics import ForceState
     from assur.plan import Plan
 
 Legend = list[tuple[str, str, tuple[int, ...]]]
@@ -59,6 +60,11 @@ class _Context:
     centroid: np.ndarray
 
     @property
+    def forces(self) -> ForceState:
+        """Loads and reactions of the table, for the pictures of a forces table."""
+        return _need_forces(self.table, "force arrows")
+
+    @property
     def r(self) -> float:
         """Radius of a revolute joint's circle, m."""
         return 0.012 * self.size
@@ -76,7 +82,7 @@ class _Context:
 def _colors(plan: Plan, groups: bool) -> tuple[dict[int, str], Legend]:
     """Colour each body by its Assur group (or all alike); return the legend too."""
     color: dict[int, str] = {0: GROUND_COLOR}
-    legend = []
+    legend: Legend = []
     for d in plan.drivers:
         color[d.body] = DRIVER_COLOR if groups else PLAIN_COLOR
         legend.append(
@@ -156,14 +162,18 @@ def _position_text(table: Table, row: int) -> str:
     return ", ".join(parts)
 
 
-def _need_forces(table: Table, what: str) -> None:
-    """Raise unless ``table`` holds forces; ``what`` names the caller."""
+def _need_forces(table: Table, what: str) -> ForceState:
+    """Return the loads and reactions of ``table``; raise if it holds kinematics only.
+
+    ``what`` names the caller in the message.
+    """
     if table.force_state is None:
         msg = (
             f"{what}: needs a forces table (assur.forces); this table holds "
             "kinematics only"
         )
         raise ModelError(msg)
+    return table.force_state
 
 
 def _revolute(table: Table) -> bool:

@@ -68,7 +68,7 @@ def _reaction(
     the couple is returned separately when that point lies too far away.
     """
     pair = ctx.plan.pairs[name]
-    force, couple = ctx.table.force_state.reaction(name, len(ctx.table))
+    force, couple = ctx.forces.reaction(name, len(ctx.table))
     f = sign * np.asarray(force[row], dtype=float)
     q = pose.at(pair.second, pair.d_second)
     if pair.kind == "R":
@@ -88,7 +88,7 @@ def _centre(table: Table, link: str, row: int) -> np.ndarray:
 
 def _inertia_arrows(ctx: _Context, row: int, links: Iterable[str]) -> list[_Arrow]:
     """Inertia force at the centre of mass and inertia torque of each massive link."""
-    fs = ctx.table.force_state
+    fs = ctx.forces
     arrows = []
     for link in links:
         if not ctx.table.mechanism.link(link).mass:
@@ -123,7 +123,7 @@ def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
     arrows = []
     for i, d in enumerate(drivers):
         p = pose.at(d.pair.second, d.pair.d_second)
-        value = float(full(ctx.table.force_state.balancing[i], len(ctx.table))[row])
+        value = float(full(ctx.forces.balancing[i], len(ctx.table))[row])
         label = f"$T_{{b,{_tex(d.pair.name)}}}$" if len(drivers) > 1 else "$T_b$"
         if d.kind == "R":
             arrow = _Arrow(label, p, None, value, DRIVER_COLOR, "N m", "balancing")
@@ -154,20 +154,25 @@ def _draw_arrows(
     tiny = 1e-9 * max([abs(a.couple or 0) for a in arrows] + [1.0])
     for a in arrows:
         if a.force is not None and float(np.hypot(*a.force)) > 0:
-            seen.append(_draw_force(ax, ctx, a, scale, text))
+            seen.append(_draw_force(ax, ctx, a, a.force, scale, text))
         if a.couple is not None and abs(a.couple) > tiny:
-            seen += _draw_couple(ax, ctx, a, text)
+            seen += _draw_couple(ax, ctx, a, a.couple, text)
     return seen
 
 
 def _draw_force(
-    ax: Any, ctx: _Context, a: _Arrow, scale: float, text: str | None
+    ax: Any,
+    ctx: _Context,
+    a: _Arrow,
+    force: np.ndarray,
+    scale: float,
+    text: str | None,
 ) -> np.ndarray:
-    """Draw the force of ``a`` as a straight arrow from its point; return its tip."""
+    """Draw the force of ``a`` (``force``) as a straight arrow; return its tip."""
     from matplotlib.patches import FancyArrowPatch
 
-    mag = float(np.hypot(*a.force))
-    tip = a.point + a.force / (scale * 100.0)
+    mag = float(np.hypot(*force))
+    tip = a.point + force / (scale * 100.0)
     ax.add_patch(
         FancyArrowPatch(
             tuple(a.point),
@@ -182,7 +187,7 @@ def _draw_force(
         )
     )
     if text:
-        u = a.force / mag
+        u = force / mag
         words = f"{a.label} = {mag:.3g} {a.value}" if text == "values" else a.label
         ax.text(
             *(tip + 0.5 * ctx.r * u),
@@ -198,15 +203,15 @@ def _draw_force(
 
 
 def _draw_couple(
-    ax: Any, ctx: _Context, a: _Arrow, text: str | None
+    ax: Any, ctx: _Context, a: _Arrow, couple: float, text: str | None
 ) -> list[np.ndarray]:
-    """Draw the couple of ``a`` as a curved arrow round its point; return its box."""
+    """Draw the couple of ``a`` (``couple``) as a curved arrow; return its box."""
     from matplotlib.patches import FancyArrowPatch
     from matplotlib.path import Path
 
     rad = (3.4 if a.color == DRIVER_COLOR else 2.3) * ctx.r
     t = np.linspace(math.radians(-100), math.radians(150), 40)
-    if a.couple < 0:
+    if couple < 0:
         t = t[::-1]
     arc = a.point + rad * np.column_stack([np.cos(t), np.sin(t)])
     ax.add_patch(
@@ -222,7 +227,7 @@ def _draw_couple(
     if text:
         # the balancing torque always shows its value
         value = text == "values" or a.color == DRIVER_COLOR
-        words = f"{a.label} = {a.couple:.3g} {a.value}" if value else a.label
+        words = f"{a.label} = {couple:.3g} {a.value}" if value else a.label
         ax.text(
             *(a.point + rad * np.array([0.7, 0.8])),
             words,

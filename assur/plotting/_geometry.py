@@ -124,7 +124,7 @@ def _extent(
     for body in sorted(bodies):
         shape = _shape(ctx, pose, body)
         if body and not ctx.hidden(body):
-            seen += shape.points + [g[k] for g in shape.guides for k in (0, 1)]
+            seen += shape.points + [p for g in shape.guides for p in g[:2]]
     for start, end, name in _shape(ctx, pose, 0).guides:
         if ctx.plan.pairs[name].second in bodies:
             seen += [start, end]

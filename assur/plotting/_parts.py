@@ -191,7 +191,7 @@ def _hatched_line(
     tips = starts + (away - e) * 0.6 * step
     ax.add_collection(
         LineCollection(
-            np.stack([starts, tips], axis=1),
+            list(zip(starts, tips, strict=True)),
             colors=GROUND_COLOR,
             linewidths=0.8,
             alpha=alpha,

@@ -57,7 +57,8 @@ def animate(
     corners, scale = _film_limits(ctx, forces)
     fig, ax, size = _film_figure(ctx, corners)
     try:
-        writer = PillowWriter(fps=fps)
+        # matplotlib's stubs say int, but the writer only uses 1000 / fps
+        writer = PillowWriter(fps=fps)  # type: ignore[arg-type]
         with writer.saving(fig, str(path), dpi):
             for r in range(len(table)):
                 ax.clear()

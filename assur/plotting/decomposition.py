@@ -249,6 +249,7 @@ def _load_arrows(
             continue
         name = _tex(load.link)
         if load.force is not None:
+            assert load.at is not None  # the model requires a force's point
             at = pose.at(b, plan.offset(b, resolve_point(mech, load.at)))
             force = _load_value(ctx, row, load.force, f"loads[{i}].force")
             arrows.append(

@@ -155,7 +155,8 @@ def _moving_points(table: Table, extra_first: bool = True) -> list[str]:
     plan = table.plan
     extra = [p.name for p in table.mechanism.points]
     joints = [n for n, pair in plan.pairs.items() if not pair.virtual]
-    names, paths = [], []
+    names: list[str] = []
+    paths: list[np.ndarray] = []
     for name in (extra + joints) if extra_first else (joints + extra):
         path = np.column_stack([table[f"{name}.x"], table[f"{name}.y"]])
         if np.ptp(path, axis=0).max() <= 1e-9 * plan.scale:

@@ -129,7 +129,7 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
     """
     import matplotlib.pyplot as plt
 
-    _need_forces(table, "plot_hodographs")
+    forces = _need_forces(table, "plot_hodographs")
     ctx = _context(table)
     pairs = ctx.plan.pairs
     names = _joints(pairs, joints)
@@ -143,7 +143,7 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
         squeeze=False,
     )
     for ax, name in zip(axes.flat, names, strict=False):
-        force = table.force_state.reaction(name, len(table))[0]
+        force = forces.reaction(name, len(table))[0]
         _locus(ax, table, force[:, 0], force[:, 1], ctx.color[pairs[name].second])
         ax.set_title(
             f"{name}: {_on(ctx.plan, name)}\n"

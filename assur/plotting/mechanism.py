@@ -7,7 +7,7 @@ decomposition, the free-body diagrams and the paths of points as well.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Sequence, Set
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -151,7 +151,7 @@ def _draw_mechanism(
     ctx: _Context,
     pose: _Pose,
     full: set[int],
-    faint: set[int] = frozenset(),
+    faint: Set[int] = frozenset(),
     labels: bool = True,
     frame: bool = True,
 ) -> list[np.ndarray]:
