@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._vec import Array, Leaf, is_array, take_rows
+from assur._vec import Array, Leaf, Mask, is_array, take_rows
 from assur.groups._motion import Motion
 from assur.groups._pairs import slide
 from assur.groups.driver import motion
@@ -47,7 +47,7 @@ class Trouble:
 
     group: str
     what: str
-    mask: Array
+    mask: Mask
 
 
 @dataclass(frozen=True, slots=True)

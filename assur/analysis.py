@@ -19,7 +19,7 @@ from assur import _kinematics as _kin
 from assur import kinetostatics as _kst
 from assur._loads import compile_loads
 from assur._text import position_text
-from assur._vec import Array, freeze, gather
+from assur._vec import Array, Mask, freeze, gather
 from assur.columns import selection
 from assur.errors import (
     AssemblyError,
@@ -280,7 +280,7 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
     position, otherwise.
     """
     d = len(plan.drivers)
-    out = []
+    out: list[tuple[Any, ...]] = []
     for entry, value, default in (
         ("omega", omega, [p.omega for p in plan.drivers]),
         ("epsilon", epsilon, [p.epsilon for p in plan.drivers]),
@@ -308,11 +308,11 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
     return out[0], out[1]
 
 
-def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Array:
+def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask:
     """Raise or warn about the troubles of a sweep; return the good positions' mask."""
     n = given.shape[0]
     ok = np.ones(n, dtype=bool)
-    near: dict[str, Array] = {}
+    near: dict[str, Mask] = {}
     for trouble, start in troubles:
         mask = np.zeros(n, dtype=bool)
         mask[start : start + trouble.mask.shape[0]] = trouble.mask
@@ -350,7 +350,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Array:
     return ok
 
 
-def _all_failures(troubles: list[Any], n: int) -> Array:
+def _all_failures(troubles: list[Any], n: int) -> Mask:
     bad = np.zeros(n, dtype=bool)
     for trouble, start in troubles:
         if trouble.what != "near":
@@ -363,7 +363,7 @@ def _where(plan: Plan, position: Array) -> str:
     return position_text([d.kind for d in plan.drivers], position.tolist())
 
 
-def _ranges(plan: Plan, given: Array, mask: Array) -> str:
+def _ranges(plan: Plan, given: Array, mask: Mask) -> str:
     """Describe the runs of consecutive positions in ``mask``."""
     idx = np.flatnonzero(mask)
     if idx.size == 0:

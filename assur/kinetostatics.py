@@ -147,6 +147,7 @@ def applied_loads(
         w = wrenches[b]
         wrenches[b] = [w[0] + fx, w[1] + fy, w[2] + px * fy - py * fx]
     for b, value, entry in loads.torques:
+        t: Any
         if isinstance(value, float):
             t = value
         else:

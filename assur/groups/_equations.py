@@ -11,6 +11,7 @@ them and a test can check that the solved unknowns satisfy them.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -20,9 +21,32 @@ from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import unit_wrenches
 
 if TYPE_CHECKING:
-    from assur.groups._protocol import Equations, Equilibrium
+    from assur.groups._protocol import Equilibrium
 
-__all__ = ["equations"]
+__all__ = ["Equations", "equations"]
+
+
+@dataclass(frozen=True, slots=True)
+class Equations:
+    """A group's equilibrium equations, written as a textbook writes them.
+
+    ``matrix @ unknowns = rhs`` at every position: ``matrix`` (n, m, m), ``rhs``
+    (n, m). Row ``i`` is the equation named ``rows[i]`` (for example "moment of rod
+    about C"); column ``j`` is the unknown named ``unknowns[j]`` (for example
+    "B.Fx"). ``solution`` (n, m) holds the unknowns the group's step found.
+    """
+
+    rows: tuple[str, ...]
+    unknowns: tuple[str, ...]
+    matrix: Array
+    rhs: Array
+    solution: Array
+
+    @property
+    def residual(self) -> Array:
+        """Largest equation residual at each position (N or N m)."""
+        left = np.einsum("nij,nj->ni", self.matrix, self.solution)
+        return np.max(np.abs(left - self.rhs), axis=-1)
 
 
 def _link_rows(
@@ -86,8 +110,6 @@ def equations(
     names : tuple of str
         Link names by body index.
     """
-    from assur.groups._protocol import Equations
-
     n = _size(rec)
     link = [_link_rows(rec, bodies, b, n) for b in range(len(rec.bodies))]
     label = [names[body] for body in rec.bodies]

@@ -17,11 +17,10 @@ The explanatory note prints these records; a friction iteration solves them agai
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
-import numpy as np
-
-from assur._vec import Array
+from assur._vec import Array, Mask
+from assur.groups._equations import Equations, equations
 from assur.groups._motion import Motion, point
 
 if TYPE_CHECKING:
@@ -84,7 +83,7 @@ class Assembly:
     for closed forms).
     """
 
-    failed: Array
+    failed: Mask
     guess: Any = None
 
 
@@ -99,7 +98,7 @@ class Linearization:
 
     jacobian: Any
     conditioning: Array
-    singular: Array
+    singular: Mask
 
 
 @dataclass(frozen=True, slots=True)
@@ -113,29 +112,6 @@ class Reaction:
     fx: Any
     fy: Any
     couple: Any = 0.0
-
-
-@dataclass(frozen=True, slots=True)
-class Equations:
-    """A group's equilibrium equations, written as a textbook writes them.
-
-    ``matrix @ unknowns = rhs`` at every position: ``matrix`` (n, m, m), ``rhs``
-    (n, m). Row ``i`` is the equation named ``rows[i]`` (for example "moment of rod
-    about C"); column ``j`` is the unknown named ``unknowns[j]`` (for example
-    "B.Fx"). ``solution`` (n, m) holds the unknowns the group's step found.
-    """
-
-    rows: tuple[str, ...]
-    unknowns: tuple[str, ...]
-    matrix: Array
-    rhs: Array
-    solution: Array
-
-    @property
-    def residual(self) -> Array:
-        """Largest equation residual at each position (N or N m)."""
-        left = np.einsum("nij,nj->ni", self.matrix, self.solution)
-        return np.max(np.abs(left - self.rhs), axis=-1)
 
 
 @dataclass(frozen=True, slots=True)
@@ -196,8 +172,6 @@ class Equilibrium:
         names : tuple of str
             Link names by body index, for the rows' names.
         """
-        from assur.groups._equations import equations
-
         return equations(self, bodies, names)
 
 
@@ -217,11 +191,19 @@ class GroupSolver(Protocol):
         near one (a warning).
     """
 
-    group: Group
-    bodies: tuple[int, ...]
-    newton: bool
-    singular: float
-    near: float
+    newton: ClassVar[bool]
+    singular: ClassVar[float]
+    near: ClassVar[float]
+
+    @property
+    def group(self) -> Group:
+        """The group of the decomposition."""
+        ...
+
+    @property
+    def bodies(self) -> tuple[int, ...]:
+        """The group's links, by body index."""
+        ...
 
     @property
     def label(self) -> str:
