@@ -110,3 +110,32 @@ def gather(n: int, pieces: Iterable[tuple[slice, Any]]) -> Any:
             whole = allocate_like(piece, n)
         write_rows(whole, piece, rows)
     return whole
+
+
+def add(a: Leaf, b: Leaf) -> Leaf:
+    """Return ``a + b``, skipping a term that is the float zero (no array is made)."""
+    if b.__class__ is float and not b:
+        return a
+    if a.__class__ is float and not a:
+        return b
+    return a + b
+
+
+def dot(weights: Iterable[Leaf], values: Iterable[Leaf]) -> Leaf:
+    """Return the sum of the products ``w * v`` with as few array operations as may be.
+
+    Terms with a float zero are skipped and a float one is not multiplied by: over
+    small batches each array operation saved counts.
+    """
+    total: Leaf = 0.0
+    for w, v in zip(weights, values, strict=True):
+        if (w.__class__ is float and not w) or (v.__class__ is float and not v):
+            continue
+        if w.__class__ is float and w == 1.0:
+            term = v
+        elif v.__class__ is float and v == 1.0:
+            term = w
+        else:
+            term = w * v
+        total = term if (total.__class__ is float and not total) else total + term
+    return total

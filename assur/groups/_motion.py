@@ -14,6 +14,8 @@ from typing import Any
 
 import numpy as np
 
+from assur._vec import add
+
 __all__ = ["Motion", "direction", "point", "rotated"]
 
 Vec = tuple[Any, Any]
@@ -114,10 +116,10 @@ def point(m: Motion, d: tuple[float, float], k: int) -> Vec:
             return found
     u = rotated(m, d)
     if k == 0:
-        value = m.ox[0] + u[0], m.oy[0] + u[1]
+        value = add(m.ox[0], u[0]), add(m.oy[0], u[1])
     else:
         rx, ry = _relative(m, u, k)
-        value = m.ox[k] + rx, m.oy[k] + ry
+        value = add(m.ox[k], rx), add(m.oy[k], ry)
     if memo is not None:
         memo[(d, k)] = value
     return value
