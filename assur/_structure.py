@@ -172,21 +172,21 @@ def topology(mech: Mechanism) -> Topology:
     pairs = []
     slots = []
     for joint in mech.joints:
-        at = tuple(float(v) for v in resolve_point(mech, joint.at))
+        x, y = resolve_point(mech, joint.at)
+        at = (float(x), float(y))
         axis = None if joint.axis is None else _unit(joint.axis)
+        first, second = joint.links
         if joint.kind == "revolute":
-            pairs.append(Pair(joint.name, "R", tuple(joint.links), at))
+            pairs.append(Pair(joint.name, "R", (first, second), at))
         elif joint.kind == "prismatic":
-            pairs.append(Pair(joint.name, "P", tuple(joint.links), at, axis))
+            pairs.append(Pair(joint.name, "P", (first, second), at, axis))
         else:
             block = f"{joint.name}~block"
             links.append(block)
             slots.append(joint.name)
-            pairs.append(Pair(joint.name, "P", (joint.links[0], block), at, axis))
+            pairs.append(Pair(joint.name, "P", (first, block), at, axis))
             pairs.append(
-                Pair(
-                    f"{joint.name}~pin", "R", (block, joint.links[1]), at, virtual=True
-                )
+                Pair(f"{joint.name}~pin", "R", (block, second), at, virtual=True)
             )
     return Topology(tuple(links), tuple(pairs), tuple(slots))
 
