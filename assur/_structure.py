@@ -305,18 +305,21 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     Raises
     ------
     DecompositionError
-        When the mobility differs from the number of drivers or links are left over.
+        When the mobility differs from the number of drivers, or links are left
+        over (the message then names two joints between the same two links or a
+        rigid part among the links left over, when there is one).
 
     Notes
     -----
     Each step attaches the smallest Assur group on the links known so far (the
     frame, the input links and the groups before it); among groups of one size, the
     one whose links come first in the mechanism's order. An Assur group of k links
-    and p lower pairs (those among its links and to known links) has 3k = 2p, no
-    part of it has a negative mobility 3k' - 2p' and not all its pairs slide.
-    Candidates are connected sets of unknown links; only those next to a link that
-    became known are examined again, so a chain of small groups decomposes in time
-    about linear in its length.
+    and p lower pairs (those among its links and to known links) has 3k = 2p, every
+    proper part of it keeps a positive mobility 3k' - 2p' > 0, no part of its own
+    links is rigid (2p'' < 3(k'' - 1) for the pairs p'' among k'' of its links), and
+    not all its pairs slide. Candidates are connected sets of unknown links; only
+    those next to a link that became known are examined again, so a chain of small
+    groups decomposes in time about linear in its length.
     """
     w = mobility(mech)
     if w != len(mech.drivers):
@@ -372,6 +375,14 @@ def _index(topo: Topology) -> _Index:
     )
 
 
+@dataclass(frozen=True, slots=True)
+class _Rigid:
+    """Links of a candidate joined so tightly that no motion is left between them."""
+
+    links: tuple[str, ...]
+    pairs: tuple[str, ...]
+
+
 def _attach(index: _Index, known: set[str]) -> Iterator[Group]:
     """Yield the Assur groups on ``known`` one after another (``known`` grows).
 
@@ -387,6 +398,7 @@ def _attach(index: _Index, known: set[str]) -> Iterator[Group]:
     }
     pending: dict[int, set[str]] = {k: set() for k in sizes}
     stamp: dict[str, int] = {}
+    rigid: list[_Rigid] = []
     clock = 0
 
     def touch(new: set[str]) -> None:
@@ -407,14 +419,17 @@ def _attach(index: _Index, known: set[str]) -> Iterator[Group]:
             seeds = pending[k] & unknown
             pending[k] = set()
             for subset in _connected(index, unknown, seeds, k):
-                if _is_group(index, subset, known):
+                group, part = _is_group(index, subset, known)
+                if group:
                     key = tuple(sorted(index.rank[x] for x in subset))
                     heapq.heappush(heaps[k], (key, clock, subset))
+                elif part is not None:
+                    rigid.append(part)
             found = _pop(heaps[k], unknown, stamp)
             if found is not None:
                 break
         if found is None:
-            raise DecompositionError(_leftover(index, unknown, known))
+            raise DecompositionError(_leftover(index, unknown, known, rigid))
         links = sorted(found, key=index.rank.__getitem__)
         yield _describe(links, _counted(index, found, known), known)
         known.update(found)
@@ -466,22 +481,39 @@ def _counted(index: _Index, links: frozenset[str], known: set[str]) -> list[Pair
     return [index.pairs[i] for i in sorted(found)]
 
 
-def _is_group(index: _Index, subset: frozenset[str], known: set[str]) -> bool:
-    """Return whether ``subset`` is an Assur group on ``known``."""
+def _is_group(
+    index: _Index, subset: frozenset[str], known: set[str]
+) -> tuple[bool, _Rigid | None]:
+    """Return whether ``subset`` is an Assur group on ``known`` (see `decompose`).
+
+    Also return the smallest rigid part of a chain with 3k = 2p, which explains a
+    failure if the decomposition stops.
+    """
     counted = _counted(index, subset, known)
     k = len(subset)
     if 2 * len(counted) != 3 * k:
-        return False
+        return False, None
     if all(p.kind == "P" for p in counted):
-        return False  # a chain of only sliding pairs cannot fix its rotation
+        return False, None  # a chain of only sliding pairs cannot fix its rotation
     links = sorted(subset, key=index.rank.__getitem__)
     bit = {name: 1 << i for i, name in enumerate(links)}
     masks = [sum(bit[x] for x in p.links if x in bit) for p in counted]
-    # every part of the chain keeps mobility >= 0 (no over-constrained part)
-    return all(
-        2 * sum(m & part == m for m in masks) <= 3 * part.bit_count()
-        for part in _parts(k)
-    )
+    minimal = True
+    for part in _parts(k):
+        inside = [m for m in masks if m & part == m]
+        own = [m for m in inside if m.bit_count() == 2]
+        size = part.bit_count()
+        if size > 1 and 2 * len(own) >= 3 * (size - 1):
+            names = tuple(x for x in links if bit[x] & part)
+            pairs = tuple(
+                p.name
+                for p, m in zip(counted, masks, strict=True)
+                if m.bit_count() == 2 and m & part == m
+            )
+            return False, _Rigid(names, pairs)
+        if size < k and 2 * len(inside) >= 3 * size:
+            minimal = False  # a proper part without mobility
+    return minimal, None
 
 
 @functools.cache
@@ -490,14 +522,76 @@ def _parts(k: int) -> tuple[int, ...]:
     return tuple(sorted(range(1, 1 << k), key=lambda m: (m.bit_count(), m)))
 
 
-def _leftover(index: _Index, unknown: set[str], known: set[str]) -> str:
+def _leftover(
+    index: _Index, unknown: set[str], known: set[str], rigid: list[_Rigid]
+) -> str:
     """Return the message of a decomposition that stops with links left over."""
     left = tuple(name for name in index.links if name in unknown)
-    return (
+    head = (
         f"links {', '.join(_public(left))} are left over: they form no Assur group "
         "(3k = 2p, every part movable) on the known links "
-        f"{', '.join(sorted(known))}; expected a chain made of Assur groups"
+        f"{', '.join(sorted(known))}"
     )
+    parallel = _parallel(index, unknown)
+    if parallel is not None:
+        first, second = parallel
+        a, b = _public(first.links)
+        return (
+            f"{head}, because joints {first.name} and {second.name} both join {a} "
+            f"and {b}: {_parallel_reason(index, first, second)}; expected one joint "
+            "between two links (or one link in place of two welded ones)"
+        )
+    stuck = [r for r in rigid if unknown.issuperset(r.links)]
+    if stuck:
+        r = min(stuck, key=lambda r: (len(r.links), [index.rank[x] for x in r.links]))
+        k, p = len(r.links), len(r.pairs)
+        return (
+            f"{head}, because joints {', '.join(_public(r.pairs))} join links "
+            f"{', '.join(_public(r.links))} into a rigid or over-constrained chain "
+            f"(k = {k} links, p = {p} pairs among them: 2p = {2 * p} >= 3(k - 1) = "
+            f"{3 * (k - 1)}, no motion left between them); expected one link in "
+            "their place, or fewer joints between them"
+        )
+    return f"{head}; expected a chain made of Assur groups"
+
+
+def _parallel(index: _Index, unknown: set[str]) -> tuple[Pair, Pair] | None:
+    """Return the first two pairs between the same two links, one of them unknown."""
+    for name in index.links:
+        if name not in unknown:
+            continue
+        seen: dict[str, Pair] = {}
+        for i in index.incident[name]:
+            pair = index.pairs[i]
+            other = pair.links[1] if pair.links[0] == name else pair.links[0]
+            if other in seen:
+                return seen[other], pair
+            seen[other] = pair
+    return None
+
+
+SAME_POINT = 1e-9
+"""Two revolute pairs closer than this, relative to the mechanism's size, coincide."""
+
+
+def _parallel_reason(index: _Index, first: Pair, second: Pair) -> str:
+    """Return what two lower pairs between the same two links do to them."""
+    kinds = first.kind + second.kind
+    if kinds == "RR":
+        scale = max([abs(c) for p in index.pairs for c in p.at] + [1.0])
+        if math.dist(first.at, second.at) <= SAME_POINT * scale:
+            return "two revolute pairs at one point repeat one constraint"
+        return "two revolute pairs at two points weld the links into one rigid body"
+    if kinds == "PP":
+        (ax, ay), (bx, by) = first.axis or (1.0, 0.0), second.axis or (1.0, 0.0)
+        cross = ax * by - ay * bx
+        if abs(cross) <= SAME_POINT:
+            return "two prismatic pairs along parallel lines repeat one constraint"
+        return (
+            "two prismatic pairs along different lines weld the links into one "
+            "rigid body"
+        )
+    return "a revolute and a prismatic pair together weld the links into one rigid body"
 
 
 def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
@@ -515,7 +609,16 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
     g.add_edges_from(p.links for p in internal)
     longest = max((len(c) for c in nx.simple_cycles(g)), default=0)
     degree = max(dict(g.degree()).values())
-    group_class = max(longest, degree, 2)
+    group_class = max(longest, degree)
+    if group_class < 3:
+        # the search never yields one: such a chain holds a dyad without mobility
+        msg = (
+            f"links {', '.join(_public(tuple(links)))}: a chain of {len(links)} links "
+            "whose joints among them form an open path is no minimal Assur group (a "
+            "class II group is a dyad); expected a dyad or a group of class III or "
+            "higher"
+        )
+        raise DecompositionError(msg)
     kind = (
         "triad"
         if (group_class == 3 and len(links) == 4 and len(external) == 3)

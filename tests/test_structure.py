@@ -4,11 +4,13 @@ Decompositions of the bundled examples (the expected groups are stated in each f
 header comment) and of small mechanisms built here: every dyad kind in both mirror
 images, a class III triad, a class IV group of order 2, a two-driver five-bar, a six-bar
 whose class depends on its input link, a slot replaced by a block, and the failures
-(wrong number of drivers, links left over).
+(wrong number of drivers, links left over, two joints between two links, rigid parts
+and chains that are no minimal Assur groups).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import pytest
@@ -38,6 +40,25 @@ def build(joints: list[tuple], drivers: list[str], name: str = "") -> Mechanism:
         drivers=tuple(Driver(d, 10.0) for d in drivers),
         name=name,
     )
+
+
+DYADS = ("RRR", "RRP", "RPR", "PRP", "RPP")
+
+
+def check_group(g: assur.Group) -> None:
+    """A group's class, order and kind agree with its links and pairs."""
+    k, p = len(g.links), len(g.internal) + len(g.external)
+    assert 3 * k == 2 * p
+    assert g.order == len(g.external) >= 2
+    assert len(set(g.links)) == k
+    if g.group_class == 2:
+        assert (k, g.kind) in {(2, kind) for kind in DYADS}
+    elif g.kind == "triad":
+        assert (g.group_class, k, g.order) == (3, 4, 3)
+    else:
+        assert g.kind == "general"
+        assert g.group_class >= 3
+        assert k >= 4
 
 
 def summary(groups: tuple[assur.Group, ...]) -> list[tuple[str, frozenset[str]]]:
@@ -119,8 +140,7 @@ def test_every_example_decomposes(example):
     blocks = [f"{j.name}~block" for j in example.joints if j.kind == "slot"]
     assert sorted(placed) == sorted(names + blocks)
     for g in s.groups:
-        assert 3 * len(g.links) == 2 * (len(g.internal) + len(g.external))
-        assert g.order == len(g.external)
+        check_group(g)
     json.dumps(s.to_dict())
 
 
@@ -358,8 +378,33 @@ def test_mobility_differs_from_drivers():
 
 
 def test_leftover_links_are_named():
-    # links 2 and 3 are a rigid truss on the frame (over-constrained), links 4 and 5
-    # dangle from the crank: W = 3*5 - 2*7 = 1 but no Assur group attaches.
+    # link 2 is pinned to the frame and to the crank, link 3 to 2 and to the frame
+    # (over-constrained), links 4 and 5 dangle from the crank: W = 3*5 - 2*7 = 1 but
+    # no Assur group attaches.
+    mech = build(
+        [
+            ("A", "R", ("ground", "1"), (0.0, 0.0)),
+            ("g1", "R", ("ground", "2"), (1.0, 1.0)),
+            ("j12", "R", ("1", "2"), (1.0, 2.0)),
+            ("j23", "R", ("2", "3"), (2.0, 2.0)),
+            ("g3", "R", ("ground", "3"), (3.0, 3.0)),
+            ("j14", "R", ("1", "4"), (0.0, 1.0)),
+            ("j45", "R", ("4", "5"), (0.0, 2.0)),
+        ],
+        ["A"],
+    )
+    assert assur.mobility(mech) == 1
+    match = (
+        r"^links 2, 3, 4, 5 are left over: they form no Assur group \(3k = 2p, every "
+        r"part movable\) on the known links 1, ground; expected a chain made of "
+        r"Assur groups$"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(mech)
+
+
+def test_leftover_names_two_joints_between_two_links():
+    # link 2 is pinned twice to the frame: a rigid truss with link 3
     mech = build(
         [
             ("A", "R", ("ground", "1"), (0.0, 0.0)),
@@ -372,13 +417,147 @@ def test_leftover_links_are_named():
         ],
         ["A"],
     )
-    assert assur.mobility(mech) == 1
     match = (
-        r"links 2, 3, 4, 5 are left over: they form no Assur group .* on the known "
-        r"links 1, ground; expected a chain made of Assur groups"
+        r"^links 2, 3, 4, 5 are left over: they form no Assur group .* on the known "
+        r"links 1, ground, because joints g1 and g2 both join ground and 2: two "
+        r"revolute pairs at two points weld the links into one rigid body; expected "
+        r"one joint between two links \(or one link in place of two welded ones\)$"
     )
     with pytest.raises(DecompositionError, match=match):
         assur.structure(mech)
+
+
+# --- robustness: chains that are no Assur groups -----------------------------------
+
+PARALLEL = [
+    ("R", (0.15, 0.08), None, "two revolute pairs at two points weld the links"),
+    ("R", (0.25, 0.0), None, "two revolute pairs at one point repeat one constraint"),
+    ("P", (0.15, 0.08), (1.0, 0.5), "a revolute and a prismatic pair together weld"),
+]
+
+
+@pytest.mark.parametrize(("kind", "at", "axis", "reason"), PARALLEL)
+def test_two_joints_between_two_links(kind, at, axis, reason):
+    # a crank, then x and y: B crank-x, D y-x and a second joint E between x and y
+    joint = ("E", kind, ("x", "y"), at) + ((axis,) if axis else ())
+    mech = build(
+        [
+            ("A", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "R", ("crank", "x"), (0.05, 0.0)),
+            ("D", "R", ("y", "x"), (0.25, 0.0)),
+            joint,
+        ],
+        ["A"],
+    )
+    assert assur.mobility(mech) == 1
+    match = (
+        r"^links x, y are left over: .* on the known links crank, ground, because "
+        rf"joints D and E both join y and x: {reason}"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(mech)
+
+
+def relinked(path: str, joint: str, links: tuple[str, str]) -> Mechanism:
+    """The example ``path`` with the links of ``joint`` replaced."""
+    mech = assur.load(EXAMPLES / path)
+    joints = tuple(
+        dataclasses.replace(j, links=links) if j.name == joint else j
+        for j in mech.joints
+    )
+    return dataclasses.replace(mech, joints=joints)
+
+
+@pytest.mark.parametrize(
+    ("links", "match"),
+    [
+        (("coupler", "rocker"), r"joints B and O4 both join coupler and rocker"),
+        (("rocker", "coupler"), r"joints B and O4 both join coupler and rocker"),
+    ],
+)
+def test_four_bar_with_its_ground_pivot_relinked(links, match):
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(relinked("four_bar.toml", "O4", links))
+
+
+def test_four_bar_with_its_rocker_pinned_to_the_crank():
+    # coupler and rocker hang on the crank alone: still a dyad, rigid with the crank
+    s = assur.structure(relinked("four_bar.toml", "O4", ("crank", "rocker")))
+    (g,) = s.groups
+    assert (g.group_class, g.kind, g.attached_to) == (2, "RRR", ("crank",))
+
+
+def test_whitworth_with_a_rigid_triangle():
+    # lever, rod and ram pinned to one another in a triangle: a truss, not links
+    # of an Assur group (the chain was reported as a class III group before)
+    match = (
+        r"^links block, lever, rod, ram are left over: .* because joints O4, E, F "
+        r"join links lever, rod, ram into a rigid or over-constrained chain \(k = 3 "
+        r"links, p = 3 pairs among them: 2p = 6 >= 3\(k - 1\) = 6, no motion left "
+        r"between them\); expected one link in their place, or fewer joints "
+        r"between them$"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(relinked("whitworth.toml", "O4", ("lever", "ram")))
+
+
+def test_whitworth_with_two_joints_between_lever_and_rod():
+    # the chain block-lever-rod-ram was reported as a class II "general" group
+    with pytest.raises(
+        DecompositionError, match=r"joints O4 and E both join lever and rod"
+    ):
+        assur.structure(relinked("whitworth.toml", "O4", ("lever", "rod")))
+
+
+def test_group_of_order_one_is_refused():
+    # links 6..9 hang on one external pair H (this was a class IV group of order 1):
+    # the guide between 6 and 9 closes the rigid triangle 6, 7, 9
+    match = r"because joints L, S, guide join links 6, 7, 9 into a rigid"
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(relinked("tenbar.toml", "guide", ("6", "9")))
+
+
+def test_open_chain_with_a_sliding_dyad_is_no_group():
+    # a-b-c-d in a row; c and d slide on the frame and on each other (a dyad of
+    # sliding pairs only, which cannot fix its rotation); the whole row has 3k = 2p
+    # but is no minimal Assur group (it was reported as a class II "general" group)
+    mech = build(
+        [
+            ("A", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "R", ("crank", "a"), (0.05, 0.0)),
+            ("C", "R", ("a", "b"), (0.1, 0.05)),
+            ("D", "R", ("b", "c"), (0.2, 0.05)),
+            ("E", "P", ("c", "d"), (0.3, 0.05), (1.0, 1.0)),
+            ("F", "P", ("ground", "c"), (0.2, 0.0), (1.0, 0.0)),
+            ("G", "P", ("ground", "d"), (0.3, 0.0), (0.0, 1.0)),
+        ],
+        ["A"],
+    )
+    assert assur.mobility(mech) == 1
+    with pytest.raises(DecompositionError, match=r"^links a, b, c, d are left over"):
+        assur.structure(mech)
+
+
+def test_open_path_of_four_links_is_never_described_as_a_group():
+    from assur._structure import Pair, _describe
+
+    def pair(name: str, a: str, b: str) -> Pair:
+        return Pair(name, "R", (a, b), (0.0, 0.0))
+
+    chain = [
+        pair("B", "crank", "a"),
+        pair("C", "a", "b"),
+        pair("D", "b", "c"),
+        pair("E", "c", "d"),
+        pair("F", "c", "ground"),
+        pair("G", "d", "ground"),
+    ]
+    match = (
+        r"^links a, b, c, d: a chain of 4 links whose joints among them form an "
+        r"open path is no minimal Assur group"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        _describe(["a", "b", "c", "d"], chain, {"crank", "ground"})
 
 
 # --- report and serialisation ------------------------------------------------------
