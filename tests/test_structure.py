@@ -301,6 +301,79 @@ def test_two_driver_five_bar():
     assert str(s).count("Class I:") == 2
 
 
+# --- long chains -------------------------------------------------------------------
+
+
+def dyad_chain(count: int) -> Mechanism:
+    """A crank, then ``count`` RRR dyads on the previous rocker and the frame.
+
+    Dyad i has the coupler ``c{i}`` and the rocker ``r{i}`` (the crank is rocker 0).
+    """
+    joints: list[tuple] = [("O", "R", ("ground", "crank"), (0.0, 0.0))]
+    previous = "crank"
+    for i in range(1, count + 1):
+        joints += [
+            (f"A{i}", "R", (previous, f"c{i}"), (i - 0.9, 0.3)),
+            (f"B{i}", "R", (f"c{i}", f"r{i}"), (float(i), 0.8)),
+            (f"O{i}", "R", (f"r{i}", "ground"), (i + 0.1, 0.0)),
+        ]
+        previous = f"r{i}"
+    return build(joints, ["O"])
+
+
+def triad_chain(count: int) -> Mechanism:
+    """A crank, then ``count`` triads: a plate ``t{i}`` on three rods.
+
+    Rod ``u{i}`` hangs on the previous triad's rod ``w{i-1}`` (on the crank first),
+    rods ``v{i}`` and ``w{i}`` on the frame.
+    """
+    joints: list[tuple] = [("O", "R", ("ground", "crank"), (0.0, 0.0))]
+    previous = "crank"
+    for i in range(1, count + 1):
+        x = 2.0 * i
+        joints += [
+            (f"U{i}", "R", (previous, f"u{i}"), (x - 1.0, 0.5)),
+            (f"TU{i}", "R", (f"u{i}", f"t{i}"), (x - 0.5, 1.0)),
+            (f"TV{i}", "R", (f"t{i}", f"v{i}"), (x, 1.2)),
+            (f"TW{i}", "R", (f"t{i}", f"w{i}"), (x + 0.5, 1.0)),
+            (f"V{i}", "R", (f"v{i}", "ground"), (x, 0.0)),
+            (f"W{i}", "R", (f"w{i}", "ground"), (x + 0.6, 0.0)),
+        ]
+        previous = f"w{i}"
+    return build(joints, ["O"])
+
+
+def reversed_links(mech: Mechanism) -> Mechanism:
+    """The same mechanism with its links listed backwards."""
+    return dataclasses.replace(mech, links=mech.links[::-1])
+
+
+def test_chain_of_500_dyads():
+    mech = dyad_chain(500)
+    s = assur.structure(mech)
+    assert s.dof == 1
+    assert len(s.groups) == 500
+    assert {(g.group_class, g.order, g.kind) for g in s.groups} == {(2, 2, "RRR")}
+    assert [g.links for g in s.groups] == [(f"c{i}", f"r{i}") for i in range(1, 501)]
+    assert s.groups[0].attached_to == ("crank", "ground")
+    assert s.groups[-1].attached_to == ("ground", "r499")
+    assert s.mechanism_class == 2
+    # listed backwards, the links still attach in the only possible order
+    backwards = assur.structure(reversed_links(mech))
+    assert [set(g.links) for g in backwards.groups] == [set(g.links) for g in s.groups]
+
+
+def test_chain_of_triads():
+    s = assur.structure(reversed_links(triad_chain(40)))
+    assert len(s.groups) == 40
+    assert {(g.group_class, g.order, g.kind) for g in s.groups} == {(3, 3, "triad")}
+    assert [set(g.links) for g in s.groups] == [
+        {f"t{i}", f"u{i}", f"v{i}", f"w{i}"} for i in range(1, 41)
+    ]
+    for g in s.groups:
+        check_group(g)
+
+
 # --- slots -------------------------------------------------------------------------
 
 
