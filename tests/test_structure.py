@@ -249,10 +249,13 @@ def test_driver_option_unknown_joint():
         assur.structure(six_bar(), driver="Q")
 
 
-def test_class_four_order_two_group():
-    # links a, b, c, d in a closed quadrilateral; external pairs on the opposite links
-    # a (to the crank) and c (to the frame): no smaller part is an Assur group.
-    mech = build(
+def class_four() -> Mechanism:
+    """Links a, b, c, d in a closed quadrilateral, hung on the crank and the frame.
+
+    The external pairs are on the opposite links a (to the crank) and c (to the
+    frame): no smaller part is an Assur group.
+    """
+    return build(
         [
             ("A", "R", ("ground", "crank"), (0.0, 0.0)),
             ("B", "R", ("crank", "a"), (1.0, 0.0)),
@@ -264,8 +267,12 @@ def test_class_four_order_two_group():
         ],
         ["A"],
     )
-    s = assur.structure(mech)
+
+
+def test_class_four_order_two_group():
+    s = assur.structure(class_four())
     (g,) = s.groups
+    check_group(g)
     assert (g.group_class, g.order) == (4, 2)
     assert set(g.links) == {"a", "b", "c", "d"}
     assert set(g.external) == {"B", "Oc"}
@@ -650,11 +657,38 @@ def test_report_names_every_step():
     assert "Class of the mechanism: II" in report
 
 
+WHY = (
+    "Why an Assur group: k = {k} links, p = {p} lower pairs: 3k = {n} = 2p = {n}, so "
+    "the chain has zero mobility on the known links, and no smaller part of it does."
+)
+
+
 def test_report_of_a_triad():
     report = str(assur.structure(six_bar()))
     assert "Structure of six-bar" in report
     assert "2. Class III, order 3, triad: links" in report
+    assert "internal pairs C, D, E; external pairs B, F, G on the known links" in report
+    assert WHY.format(k=4, p=6, n=12) in report
     assert "Class of the mechanism: III" in report
+
+
+def test_report_of_a_dyad_counts_its_pairs_and_links():
+    report = str(assur.structure(assur.catalog.four_bar()))
+    assert "internal pair C; external pairs B, D on the known links crank, ground." in (
+        report
+    )
+    assert WHY.format(k=2, p=3, n=6) in report
+    pinned = str(assur.structure(relinked("four_bar.toml", "O4", ("crank", "rocker"))))
+    assert "external pairs A, O4 on the known link crank." in pinned
+
+
+def test_report_of_a_general_group():
+    report = str(assur.structure(class_four()))
+    assert "2. Class IV, order 2, group: links a, b, c, d" in report
+    assert "internal pairs ab, bc, cd, da; external pairs B, Oc on the known links" in (
+        report
+    )
+    assert WHY.format(k=4, p=6, n=12) in report
 
 
 def test_to_dict_is_json():

@@ -5,7 +5,7 @@ few times (a link of a joint swapped for another link, a joint dropped or duplic
 a joint's kind changed between revolute and prismatic) and analysed: each case must
 end in a Structure whose groups are consistent, or in an AssurError (a ModelError when
 the mechanism is built, a DecompositionError from the analysis), never in another
-exception. The default run takes two thousand cases; the slow run (-m slow) thirty thousand.
+exception. The default run takes two thousand cases; ``-m slow`` thirty thousand more.
 """
 
 from __future__ import annotations
