@@ -78,7 +78,9 @@ class Group:
     kind : str
         ``"driver"``, a dyad's pair signature (``"RRR"``, ``"RRP"``, ``"RPR"``,
         ``"PRP"``, ``"RPP"``) read from one external pair to the other, ``"triad"`` for
-        the class III group of a ternary and three binary links, or ``"general"``.
+        the class III group of a ternary and three binary links, or ``"general"``
+        for any other group. Class II groups are always dyads; triads and general
+        groups are of class III or higher.
     links : tuple of str
         The group's links, in solving order (a dyad's first link carries the first
         external pair of its signature).

@@ -28,9 +28,7 @@ def build(joints: list[tuple], drivers: list[str], name: str = "") -> Mechanism:
 
     The moving links are those the joints name, in order of appearance.
     """
-    links: list[str] = []
-    for joint in joints:
-        links += [x for x in joint[2] if x != "ground" and x not in links]
+    links = dict.fromkeys(x for joint in joints for x in joint[2] if x != "ground")
     return Mechanism(
         links=tuple(Link(x) for x in links),
         joints=tuple(
