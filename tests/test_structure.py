@@ -368,6 +368,32 @@ def test_chain_of_500_dyads():
     assert [set(g.links) for g in backwards.groups] == [set(g.links) for g in s.groups]
 
 
+def test_a_group_spoiled_by_the_group_before_it():
+    # x, y is a dyad on the crank and the frame until p becomes known: the pair H
+    # between x and p then makes it over-constrained (w, v dangle, keeping W = 1)
+    mech = build(
+        [
+            ("A", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "R", ("crank", "p"), (0.1, 0.0)),
+            ("C", "R", ("p", "q"), (0.2, 0.1)),
+            ("D", "R", ("q", "ground"), (0.3, 0.0)),
+            ("E", "R", ("crank", "x"), (-0.1, 0.0)),
+            ("F", "R", ("x", "y"), (-0.2, 0.1)),
+            ("G", "R", ("y", "ground"), (-0.3, 0.0)),
+            ("H", "R", ("x", "p"), (0.0, 0.2)),
+            ("K", "R", ("crank", "w"), (0.0, -0.1)),
+            ("L", "R", ("w", "v"), (0.0, -0.2)),
+        ],
+        ["A"],
+    )
+    assert assur.mobility(mech) == 1
+    match = (
+        r"^links x, y, w, v are left over: .* on the known links crank, ground, p, q;"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(mech)
+
+
 def test_chain_of_triads():
     s = assur.structure(reversed_links(triad_chain(40)))
     assert len(s.groups) == 40

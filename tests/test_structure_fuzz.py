@@ -18,11 +18,17 @@ import random
 import pytest
 
 import assur
-from assur import AssurError, Joint, Link, Mechanism, ModelError
+from assur import AssurError, Joint, Link, Mechanism, ModelError, _structure
 from assur.model import resolve_point
 
 from .conftest import example_files
-from .test_structure import check_group
+from .test_structure import (
+    check_group,
+    class_four,
+    dyad_chain,
+    reversed_links,
+    triad_chain,
+)
 
 
 def stripped(mech: Mechanism) -> Mechanism:
@@ -116,6 +122,64 @@ def run(count: int, seed: int) -> collections.Counter[str]:
             check_structure(mech, result)
             outcomes["Structure"] += 1
     return outcomes
+
+
+def reference(mech: Mechanism) -> list[tuple] | None:
+    """The groups found by trying every connected set at every step, or None.
+
+    The plain search the decomposition replaces: same rule (smallest size, then
+    first links), same test of a group, no bookkeeping of what changed.
+    """
+    topo = _structure.topology(mech)
+    index = _structure._index(topo)
+    by_name = {p.name: p for p in topo.pairs}
+    known = {"ground"} | {x for d in mech.drivers for x in by_name[d.joint].links}
+    unknown = [name for name in topo.links if name not in known]
+    groups = []
+    while unknown:
+        for k in range(2, min(len(unknown), _structure.MAX_GROUP_LINKS) + 1, 2):
+            candidates = _structure._connected(index, set(unknown), set(unknown), k)
+            found = [s for s in candidates if _structure._is_group(index, s, known)[0]]
+            if found:
+                best = min(found, key=lambda s: sorted(index.rank[x] for x in s))
+                break
+        else:
+            return None
+        links = sorted(best, key=index.rank.__getitem__)
+        counted = _structure._counted(index, best, known)
+        groups.append(dataclasses.astuple(_structure._describe(links, counted, known)))
+        known |= best
+        unknown = [name for name in unknown if name not in best]
+    return groups
+
+
+def test_search_agrees_with_trying_every_set():
+    rng = random.Random(7)
+    mechanisms = bases()
+    compared = 0
+    for case in range(600):
+        try:
+            mech = mutant(mechanisms[case % len(mechanisms)], rng)
+        except ModelError:
+            continue
+        if assur.mobility(mech) != len(mech.drivers):
+            continue
+        result = analyse(mech)
+        expected = reference(mech)
+        if isinstance(result, AssurError):
+            assert expected is None, (case, str(result))
+        else:
+            assert [dataclasses.astuple(g) for g in result.groups] == expected, case
+            compared += 1
+    assert compared >= 50
+
+
+def test_search_agrees_on_chains_and_examples():
+    chains = [dyad_chain(12), triad_chain(6), class_four()]
+    for mech in chains + bases():
+        for order in (mech, reversed_links(mech)):
+            groups = assur.structure(order).groups
+            assert [dataclasses.astuple(g) for g in groups] == reference(order)
 
 
 def test_mutants_end_in_a_structure_or_an_assur_error():
