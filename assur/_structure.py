@@ -582,13 +582,16 @@ def _parallel_reason(index: _Index, first: Pair, second: Pair) -> str:
     if kinds == "RR":
         scale = max([abs(c) for p in index.pairs for c in p.at] + [1.0])
         if math.dist(first.at, second.at) <= SAME_POINT * scale:
-            return "two revolute pairs at one point repeat one constraint"
+            return "two revolute pairs at one point are one pair counted twice"
         return "two revolute pairs at two points weld the links into one rigid body"
     if kinds == "PP":
         (ax, ay), (bx, by) = first.axis or (1.0, 0.0), second.axis or (1.0, 0.0)
         cross = ax * by - ay * bx
         if abs(cross) <= SAME_POINT:
-            return "two prismatic pairs along parallel lines repeat one constraint"
+            return (
+                "two prismatic pairs along parallel lines are one sliding pair "
+                "counted twice"
+            )
         return (
             "two prismatic pairs along different lines weld the links into one "
             "rigid body"

@@ -533,23 +533,27 @@ def test_leftover_names_two_joints_between_two_links():
 
 # --- robustness: chains that are no Assur groups -----------------------------------
 
+# the kinds of D and E, where E is and its axis, what the two do to links x and y
 PARALLEL = [
-    ("R", (0.15, 0.08), None, "two revolute pairs at two points weld the links"),
-    ("R", (0.25, 0.0), None, "two revolute pairs at one point repeat one constraint"),
-    ("P", (0.15, 0.08), (1.0, 0.5), "a revolute and a prismatic pair together weld"),
+    ("RR", (0.15, 0.08), None, "two revolute pairs at two points weld the links"),
+    ("RR", (0.25, 0.0), None, "two revolute pairs at one point are one pair counted"),
+    ("RP", (0.15, 0.08), (1.0, 0.5), "a revolute and a prismatic pair together weld"),
+    ("PP", (0.15, 0.08), (-2.0, -1.0), "two prismatic pairs along parallel lines are"),
+    ("PP", (0.15, 0.08), (0.0, 1.0), "two prismatic pairs along different lines weld"),
 ]
 
 
-@pytest.mark.parametrize(("kind", "at", "axis", "reason"), PARALLEL)
-def test_two_joints_between_two_links(kind, at, axis, reason):
+@pytest.mark.parametrize(("kinds", "at", "axis", "reason"), PARALLEL)
+def test_two_joints_between_two_links(kinds, at, axis, reason):
     # a crank, then x and y: B crank-x, D y-x and a second joint E between x and y
-    joint = ("E", kind, ("x", "y"), at) + ((axis,) if axis else ())
+    d = ("D", kinds[0], ("y", "x"), (0.25, 0.0), (1.0, 0.5))
+    e = ("E", kinds[1], ("x", "y"), at, axis)
     mech = build(
         [
             ("A", "R", ("ground", "crank"), (0.0, 0.0)),
             ("B", "R", ("crank", "x"), (0.05, 0.0)),
-            ("D", "R", ("y", "x"), (0.25, 0.0)),
-            joint,
+            d if kinds[0] == "P" else d[:4],
+            e if kinds[1] == "P" else e[:4],
         ],
         ["A"],
     )
