@@ -10,8 +10,10 @@ passes.
 from __future__ import annotations
 
 import dataclasses
-import itertools
+import functools
+import heapq
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
@@ -76,7 +78,9 @@ class Group:
     kind : str
         ``"driver"``, a dyad's pair signature (``"RRR"``, ``"RRP"``, ``"RPR"``,
         ``"PRP"``, ``"RPP"``) read from one external pair to the other, ``"triad"`` for
-        the class III group of a ternary and three binary links, or ``"general"``.
+        the class III group of a ternary and three binary links, or ``"general"``
+        for any other group. Class II groups are always dyads; triads and general
+        groups are of class III or higher.
     links : tuple of str
         The group's links, in solving order (a dyad's first link carries the first
         external pair of its signature).
@@ -172,21 +176,21 @@ def topology(mech: Mechanism) -> Topology:
     pairs = []
     slots = []
     for joint in mech.joints:
-        at = tuple(float(v) for v in resolve_point(mech, joint.at))
+        x, y = resolve_point(mech, joint.at)
+        at = (float(x), float(y))
         axis = None if joint.axis is None else _unit(joint.axis)
+        first, second = joint.links
         if joint.kind == "revolute":
-            pairs.append(Pair(joint.name, "R", tuple(joint.links), at))
+            pairs.append(Pair(joint.name, "R", (first, second), at))
         elif joint.kind == "prismatic":
-            pairs.append(Pair(joint.name, "P", tuple(joint.links), at, axis))
+            pairs.append(Pair(joint.name, "P", (first, second), at, axis))
         else:
             block = f"{joint.name}~block"
             links.append(block)
             slots.append(joint.name)
-            pairs.append(Pair(joint.name, "P", (joint.links[0], block), at, axis))
+            pairs.append(Pair(joint.name, "P", (first, block), at, axis))
             pairs.append(
-                Pair(
-                    f"{joint.name}~pin", "R", (block, joint.links[1]), at, virtual=True
-                )
+                Pair(f"{joint.name}~pin", "R", (block, second), at, virtual=True)
             )
     return Topology(tuple(links), tuple(pairs), tuple(slots))
 
@@ -299,6 +303,25 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     groups : tuple of Group
         Assur groups in the order they attach.
     topology : Topology
+
+    Raises
+    ------
+    DecompositionError
+        When the mobility differs from the number of drivers, or links are left
+        over (the message then names two joints between the same two links or a
+        rigid part among the links left over, when there is one).
+
+    Notes
+    -----
+    Each step attaches the smallest Assur group on the links known so far (the
+    frame, the input links and the groups before it); among groups of one size, the
+    one whose links come first in the mechanism's order. An Assur group of k links
+    and p lower pairs (those among its links and to known links) has 3k = 2p, every
+    proper part of it keeps a positive mobility 3k' - 2p' > 0, no part of its own
+    links is rigid (2p'' < 3(k'' - 1) for the pairs p'' among k'' of its links), and
+    not all its pairs slide. Candidates are connected sets of unknown links; only
+    those next to a link that became known are examined again, so a chain of small
+    groups decomposes in time about linear in its length.
     """
     w = mobility(mech)
     if w != len(mech.drivers):
@@ -319,84 +342,261 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
         link = pair.links[1] if pair.links[0] == GROUND else pair.links[0]
         drivers.append(Group(1, 0, "driver", (GROUND, link), (d.joint,), (), (GROUND,)))
         known.add(link)
-    groups = []
-    unknown = [name for name in topo.links if name not in known]
+    groups = tuple(_attach(_index(topo), known))
+    return tuple(drivers), groups, topo
+
+
+@dataclass(frozen=True, slots=True)
+class _Index:
+    """Pairs indexed by link, built once per decomposition."""
+
+    pairs: tuple[Pair, ...]
+    links: tuple[str, ...]
+    rank: dict[str, int]
+    incident: dict[str, tuple[int, ...]]
+    neighbours: dict[str, frozenset[str]]
+
+
+def _index(topo: Topology) -> _Index:
+    """Index the pairs of ``topo`` by the links they join."""
+    incident: dict[str, list[int]] = {GROUND: []}
+    incident.update({name: [] for name in topo.links})
+    neighbours: dict[str, set[str]] = {name: set() for name in incident}
+    for i, pair in enumerate(topo.pairs):
+        a, b = pair.links
+        incident[a].append(i)
+        incident[b].append(i)
+        neighbours[a].add(b)
+        neighbours[b].add(a)
+    return _Index(
+        topo.pairs,
+        topo.links,
+        {name: i for i, name in enumerate(topo.links)},
+        {name: tuple(v) for name, v in incident.items()},
+        {name: frozenset(v) for name, v in neighbours.items()},
+    )
+
+
+@dataclass(frozen=True, slots=True)
+class _Rigid:
+    """Links of a candidate joined so tightly that no motion is left between them."""
+
+    links: tuple[str, ...]
+    pairs: tuple[str, ...]
+
+
+def _attach(index: _Index, known: set[str]) -> Iterator[Group]:
+    """Yield the Assur groups on ``known`` one after another (``known`` grows).
+
+    A heap per group size holds every candidate found to be a group, keyed by the
+    ranks of its links; a candidate is examined again only when a link next to it
+    becomes known (its stamp then outdates the heap entry).
+    """
+    known = set(known)
+    unknown = {name for name in index.links if name not in known}
+    sizes = range(2, MAX_GROUP_LINKS + 1, 2)
+    heaps: dict[int, list[tuple[tuple[int, ...], int, frozenset[str]]]] = {
+        k: [] for k in sizes
+    }
+    pending: dict[int, set[str]] = {k: set() for k in sizes}
+    stamp: dict[str, int] = {}
+    rigid: list[_Rigid] = []
+    clock = 0
+
+    def touch(new: set[str]) -> None:
+        nonlocal clock
+        clock += 1
+        near = {x for n in new for x in index.neighbours[n] if x in unknown}
+        for name in near:
+            stamp[name] = clock
+        for k in sizes:
+            pending[k] |= near
+
+    touch(known)
     while unknown:
-        found = _find_group(topo.pairs, known, unknown)
+        found = None
+        for k in sizes:
+            if k > len(unknown):
+                break
+            seeds = pending[k] & unknown
+            pending[k] = set()
+            for subset in _connected(index, unknown, seeds, k):
+                group, part = _is_group(index, subset, known)
+                if group:
+                    key = tuple(sorted(index.rank[x] for x in subset))
+                    heapq.heappush(heaps[k], (key, clock, subset))
+                elif part is not None:
+                    rigid.append(part)
+            found = _pop(heaps[k], unknown, stamp)
+            if found is not None:
+                break
         if found is None:
-            msg = (
-                f"links {', '.join(_public(tuple(unknown)))} are left over: they form "
-                "no Assur group (3k = 2p, every part movable) on the known links "
-                f"{', '.join(sorted(known))}; expected a chain made of Assur groups"
-            )
-            raise DecompositionError(msg)
-        groups.append(found)
-        known.update(found.links)
-        unknown = [name for name in unknown if name not in known]
-    return tuple(drivers), tuple(groups), topo
+            raise DecompositionError(_leftover(index, unknown, known, rigid))
+        links = sorted(found, key=index.rank.__getitem__)
+        yield _describe(links, _counted(index, found, known), known)
+        known.update(found)
+        unknown -= found
+        touch(set(found))
 
 
-def _counted(
-    pairs: tuple[Pair, ...], links: frozenset[str], known: set[str]
-) -> list[Pair]:
-    """Pairs with one end in ``links`` and the other in ``links`` or ``known``."""
-    return [
-        p
-        for p in pairs
-        if (p.links[0] in links or p.links[1] in links)
-        and all(x in links or x in known for x in p.links)
-    ]
-
-
-def _find_group(
-    pairs: tuple[Pair, ...], known: set[str], unknown: list[str]
-) -> Group | None:
-    """Return the smallest Assur group on ``known``, or None."""
-    adjacency: dict[str, set[str]] = {name: set() for name in unknown}
-    for p in pairs:
-        a, b = p.links
-        if a in adjacency and b in adjacency:
-            adjacency[a].add(b)
-            adjacency[b].add(a)
-    rank = {name: i for i, name in enumerate(unknown)}
-    for k in range(2, min(len(unknown), MAX_GROUP_LINKS) + 1, 2):
-        candidates = sorted(
-            _connected_subsets(adjacency, k), key=lambda s: sorted(rank[x] for x in s)
-        )
-        for subset in candidates:
-            counted = _counted(pairs, subset, known)
-            if 2 * len(counted) == 3 * k and _determinate(pairs, subset, known):
-                return _describe(sorted(subset, key=rank.__getitem__), counted, known)
+def _pop(
+    heap: list[tuple[tuple[int, ...], int, frozenset[str]]],
+    unknown: set[str],
+    stamp: dict[str, int],
+) -> frozenset[str] | None:
+    """Return the first candidate of ``heap`` still a group (drop stale ones)."""
+    while heap:
+        _, when, subset = heap[0]
+        if subset <= unknown and all(stamp.get(x, 0) <= when for x in subset):
+            return subset
+        heapq.heappop(heap)
     return None
 
 
-def _connected_subsets(adjacency: dict[str, set[str]], k: int) -> set[frozenset[str]]:
-    """All connected sets of ``k`` nodes of a small graph."""
-    found: set[frozenset[str]] = set()
-    frontier = {frozenset([node]) for node in adjacency}
+def _connected(
+    index: _Index, unknown: set[str], seeds: set[str], k: int
+) -> set[frozenset[str]]:
+    """All connected sets of ``k`` unknown links holding at least one of ``seeds``."""
+    frontier = {frozenset([seed]) for seed in seeds}
     for _ in range(k - 1):
         grown = set()
         for subset in frontier:
             for node in subset:
-                for other in adjacency[node] - subset:
-                    grown.add(subset | {other})
+                for other in index.neighbours[node]:
+                    if other in unknown and other not in subset:
+                        grown.add(subset | {other})
         frontier = grown
-    found.update(frontier)
-    return found
+    return frontier
 
 
-def _determinate(
-    pairs: tuple[Pair, ...], subset: frozenset[str], known: set[str]
-) -> bool:
-    """Every part of the chain keeps mobility >= 0 (no over-constrained part)."""
-    items = sorted(subset)
-    if all(p.kind == "P" for p in _counted(pairs, subset, known)):
-        return False  # a chain of only sliding pairs cannot fix its rotation
-    for size in range(1, len(items)):
-        for part in itertools.combinations(items, size):
-            if 2 * len(_counted(pairs, frozenset(part), known)) > 3 * size:
-                return False
-    return True
+def _counted(index: _Index, links: frozenset[str], known: set[str]) -> list[Pair]:
+    """Pairs with one end in ``links`` and the other in ``links`` or ``known``.
+
+    In the order of the topology's pairs.
+    """
+    found = {
+        i
+        for name in links
+        for i in index.incident[name]
+        if all(x in links or x in known for x in index.pairs[i].links)
+    }
+    return [index.pairs[i] for i in sorted(found)]
+
+
+def _is_group(
+    index: _Index, subset: frozenset[str], known: set[str]
+) -> tuple[bool, _Rigid | None]:
+    """Return whether ``subset`` is an Assur group on ``known`` (see `decompose`).
+
+    Also return the smallest rigid part of a chain with 3k = 2p, which explains a
+    failure if the decomposition stops.
+    """
+    counted = _counted(index, subset, known)
+    k = len(subset)
+    if 2 * len(counted) != 3 * k:
+        return False, None
+    if all(p.kind == "P" for p in counted):
+        return False, None  # a chain of only sliding pairs cannot fix its rotation
+    links = sorted(subset, key=index.rank.__getitem__)
+    bit = {name: 1 << i for i, name in enumerate(links)}
+    masks = [sum(bit[x] for x in p.links if x in bit) for p in counted]
+    minimal = True
+    for part in _parts(k):
+        inside = [m for m in masks if m & part == m]
+        own = [m for m in inside if m.bit_count() == 2]
+        size = part.bit_count()
+        if size > 1 and 2 * len(own) >= 3 * (size - 1):
+            names = tuple(x for x in links if bit[x] & part)
+            pairs = tuple(
+                p.name
+                for p, m in zip(counted, masks, strict=True)
+                if m.bit_count() == 2 and m & part == m
+            )
+            return False, _Rigid(names, pairs)
+        if size < k and 2 * len(inside) >= 3 * size:
+            minimal = False  # a proper part without mobility
+    return minimal, None
+
+
+@functools.cache
+def _parts(k: int) -> tuple[int, ...]:
+    """Bit masks of the nonempty parts of a set of ``k`` links, smallest first."""
+    return tuple(sorted(range(1, 1 << k), key=lambda m: (m.bit_count(), m)))
+
+
+def _leftover(
+    index: _Index, unknown: set[str], known: set[str], rigid: list[_Rigid]
+) -> str:
+    """Return the message of a decomposition that stops with links left over."""
+    left = tuple(name for name in index.links if name in unknown)
+    head = (
+        f"links {', '.join(_public(left))} are left over: they form no Assur group "
+        "(3k = 2p, every part movable) on the known links "
+        f"{', '.join(sorted(known))}"
+    )
+    parallel = _parallel(index, unknown)
+    if parallel is not None:
+        first, second = parallel
+        a, b = _public(first.links)
+        return (
+            f"{head}, because joints {first.name} and {second.name} both join {a} "
+            f"and {b}: {_parallel_reason(index, first, second)}; expected one joint "
+            "between two links (or one link in place of two welded ones)"
+        )
+    stuck = [r for r in rigid if unknown.issuperset(r.links)]
+    if stuck:
+        r = min(stuck, key=lambda r: (len(r.links), [index.rank[x] for x in r.links]))
+        k, p = len(r.links), len(r.pairs)
+        return (
+            f"{head}, because joints {', '.join(_public(r.pairs))} join links "
+            f"{', '.join(_public(r.links))} into a rigid or over-constrained chain "
+            f"(k = {k} links, p = {p} pairs among them: 2p = {2 * p} >= 3(k - 1) = "
+            f"{3 * (k - 1)}, no motion left between them); expected one link in "
+            "their place, or fewer joints between them"
+        )
+    return f"{head}; expected a chain made of Assur groups"
+
+
+def _parallel(index: _Index, unknown: set[str]) -> tuple[Pair, Pair] | None:
+    """Return the first two pairs between the same two links, one of them unknown."""
+    for name in index.links:
+        if name not in unknown:
+            continue
+        seen: dict[str, Pair] = {}
+        for i in index.incident[name]:
+            pair = index.pairs[i]
+            other = pair.links[1] if pair.links[0] == name else pair.links[0]
+            if other in seen:
+                return seen[other], pair
+            seen[other] = pair
+    return None
+
+
+SAME_POINT = 1e-9
+"""Two revolute pairs closer than this, relative to the mechanism's size, coincide."""
+
+
+def _parallel_reason(index: _Index, first: Pair, second: Pair) -> str:
+    """Return what two lower pairs between the same two links do to them."""
+    kinds = first.kind + second.kind
+    if kinds == "RR":
+        scale = max([abs(c) for p in index.pairs for c in p.at] + [1.0])
+        if math.dist(first.at, second.at) <= SAME_POINT * scale:
+            return "two revolute pairs at one point are one pair counted twice"
+        return "two revolute pairs at two points weld the links into one rigid body"
+    if kinds == "PP":
+        (ax, ay), (bx, by) = first.axis or (1.0, 0.0), second.axis or (1.0, 0.0)
+        cross = ax * by - ay * bx
+        if abs(cross) <= SAME_POINT:
+            return (
+                "two prismatic pairs along parallel lines are one sliding pair "
+                "counted twice"
+            )
+        return (
+            "two prismatic pairs along different lines weld the links into one "
+            "rigid body"
+        )
+    return "a revolute and a prismatic pair together weld the links into one rigid body"
 
 
 def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
@@ -414,7 +614,16 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
     g.add_edges_from(p.links for p in internal)
     longest = max((len(c) for c in nx.simple_cycles(g)), default=0)
     degree = max(dict(g.degree()).values())
-    group_class = max(longest, degree, 2)
+    group_class = max(longest, degree)
+    if group_class < 3:
+        # the search never yields one: such a chain holds a dyad without mobility
+        msg = (
+            f"links {', '.join(_public(tuple(links)))}: a chain of {len(links)} links "
+            "whose joints among them form an open path is no minimal Assur group (a "
+            "class II group is a dyad); expected a dyad or a group of class III or "
+            "higher"
+        )
+        raise DecompositionError(msg)
     kind = (
         "triad"
         if (group_class == 3 and len(links) == 4 and len(external) == 3)

@@ -20,6 +20,11 @@ def _names(items: tuple[str, ...]) -> str:
     return ", ".join(x.replace("~block", " (block)") for x in items)
 
 
+def _counted(noun: str, items: tuple[str, ...]) -> str:
+    """Return ``noun`` (in the plural for several items) and the items' names."""
+    return f"{noun}{'' if len(items) == 1 else 's'} {_names(items)}"
+
+
 def _why(g: Group) -> str:
     k = len(g.links)
     p = len(g.internal) + len(g.external)
@@ -64,8 +69,9 @@ def structure_report(s: Structure) -> str:
             f"links {_names(g.links)}"
         )
         lines.append(
-            f"     internal pairs {_names(g.internal)}; external pairs "
-            f"{_names(g.external)} on the known links {_names(g.attached_to)}."
+            f"     {_counted('internal pair', g.internal)}; "
+            f"{_counted('external pair', g.external)} on the "
+            f"{_counted('known link', g.attached_to)}."
         )
         lines.append(f"     Why an Assur group: {_why(g)}.")
     lines += [

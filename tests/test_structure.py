@@ -4,11 +4,13 @@ Decompositions of the bundled examples (the expected groups are stated in each f
 header comment) and of small mechanisms built here: every dyad kind in both mirror
 images, a class III triad, a class IV group of order 2, a two-driver five-bar, a six-bar
 whose class depends on its input link, a slot replaced by a block, and the failures
-(wrong number of drivers, links left over).
+(wrong number of drivers, links left over, two joints between two links, rigid parts
+and chains that are no minimal Assur groups).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import pytest
@@ -26,9 +28,7 @@ def build(joints: list[tuple], drivers: list[str], name: str = "") -> Mechanism:
 
     The moving links are those the joints name, in order of appearance.
     """
-    links: list[str] = []
-    for joint in joints:
-        links += [x for x in joint[2] if x != "ground" and x not in links]
+    links = dict.fromkeys(x for joint in joints for x in joint[2] if x != "ground")
     return Mechanism(
         links=tuple(Link(x) for x in links),
         joints=tuple(
@@ -38,6 +38,25 @@ def build(joints: list[tuple], drivers: list[str], name: str = "") -> Mechanism:
         drivers=tuple(Driver(d, 10.0) for d in drivers),
         name=name,
     )
+
+
+DYADS = ("RRR", "RRP", "RPR", "PRP", "RPP")
+
+
+def check_group(g: assur.Group) -> None:
+    """A group's class, order and kind agree with its links and pairs."""
+    k, p = len(g.links), len(g.internal) + len(g.external)
+    assert 3 * k == 2 * p
+    assert g.order == len(g.external) >= 2
+    assert len(set(g.links)) == k
+    if g.group_class == 2:
+        assert (k, g.kind) in {(2, kind) for kind in DYADS}
+    elif g.kind == "triad":
+        assert (g.group_class, k, g.order) == (3, 4, 3)
+    else:
+        assert g.kind == "general"
+        assert g.group_class >= 3
+        assert k >= 4
 
 
 def summary(groups: tuple[assur.Group, ...]) -> list[tuple[str, frozenset[str]]]:
@@ -119,8 +138,7 @@ def test_every_example_decomposes(example):
     blocks = [f"{j.name}~block" for j in example.joints if j.kind == "slot"]
     assert sorted(placed) == sorted(names + blocks)
     for g in s.groups:
-        assert 3 * len(g.links) == 2 * (len(g.internal) + len(g.external))
-        assert g.order == len(g.external)
+        check_group(g)
     json.dumps(s.to_dict())
 
 
@@ -229,10 +247,13 @@ def test_driver_option_unknown_joint():
         assur.structure(six_bar(), driver="Q")
 
 
-def test_class_four_order_two_group():
-    # links a, b, c, d in a closed quadrilateral; external pairs on the opposite links
-    # a (to the crank) and c (to the frame): no smaller part is an Assur group.
-    mech = build(
+def class_four() -> Mechanism:
+    """Links a, b, c, d in a closed quadrilateral, hung on the crank and the frame.
+
+    The external pairs are on the opposite links a (to the crank) and c (to the
+    frame): no smaller part is an Assur group.
+    """
+    return build(
         [
             ("A", "R", ("ground", "crank"), (0.0, 0.0)),
             ("B", "R", ("crank", "a"), (1.0, 0.0)),
@@ -244,8 +265,12 @@ def test_class_four_order_two_group():
         ],
         ["A"],
     )
-    s = assur.structure(mech)
+
+
+def test_class_four_order_two_group():
+    s = assur.structure(class_four())
     (g,) = s.groups
+    check_group(g)
     assert (g.group_class, g.order) == (4, 2)
     assert set(g.links) == {"a", "b", "c", "d"}
     assert set(g.external) == {"B", "Oc"}
@@ -279,6 +304,105 @@ def test_two_driver_five_bar():
     )
     assert s.formula == "I(ground, left) -> I(ground, right) -> II(p, q)"
     assert str(s).count("Class I:") == 2
+
+
+# --- long chains -------------------------------------------------------------------
+
+
+def dyad_chain(count: int) -> Mechanism:
+    """A crank, then ``count`` RRR dyads on the previous rocker and the frame.
+
+    Dyad i has the coupler ``c{i}`` and the rocker ``r{i}`` (the crank is rocker 0).
+    """
+    joints: list[tuple] = [("O", "R", ("ground", "crank"), (0.0, 0.0))]
+    previous = "crank"
+    for i in range(1, count + 1):
+        joints += [
+            (f"A{i}", "R", (previous, f"c{i}"), (i - 0.9, 0.3)),
+            (f"B{i}", "R", (f"c{i}", f"r{i}"), (float(i), 0.8)),
+            (f"O{i}", "R", (f"r{i}", "ground"), (i + 0.1, 0.0)),
+        ]
+        previous = f"r{i}"
+    return build(joints, ["O"])
+
+
+def triad_chain(count: int) -> Mechanism:
+    """A crank, then ``count`` triads: a plate ``t{i}`` on three rods.
+
+    Rod ``u{i}`` hangs on the previous triad's rod ``w{i-1}`` (on the crank first),
+    rods ``v{i}`` and ``w{i}`` on the frame.
+    """
+    joints: list[tuple] = [("O", "R", ("ground", "crank"), (0.0, 0.0))]
+    previous = "crank"
+    for i in range(1, count + 1):
+        x = 2.0 * i
+        joints += [
+            (f"U{i}", "R", (previous, f"u{i}"), (x - 1.0, 0.5)),
+            (f"TU{i}", "R", (f"u{i}", f"t{i}"), (x - 0.5, 1.0)),
+            (f"TV{i}", "R", (f"t{i}", f"v{i}"), (x, 1.2)),
+            (f"TW{i}", "R", (f"t{i}", f"w{i}"), (x + 0.5, 1.0)),
+            (f"V{i}", "R", (f"v{i}", "ground"), (x, 0.0)),
+            (f"W{i}", "R", (f"w{i}", "ground"), (x + 0.6, 0.0)),
+        ]
+        previous = f"w{i}"
+    return build(joints, ["O"])
+
+
+def reversed_links(mech: Mechanism) -> Mechanism:
+    """The same mechanism with its links listed backwards."""
+    return dataclasses.replace(mech, links=mech.links[::-1])
+
+
+def test_chain_of_500_dyads():
+    mech = dyad_chain(500)
+    s = assur.structure(mech)
+    assert s.dof == 1
+    assert len(s.groups) == 500
+    assert {(g.group_class, g.order, g.kind) for g in s.groups} == {(2, 2, "RRR")}
+    assert [g.links for g in s.groups] == [(f"c{i}", f"r{i}") for i in range(1, 501)]
+    assert s.groups[0].attached_to == ("crank", "ground")
+    assert s.groups[-1].attached_to == ("ground", "r499")
+    assert s.mechanism_class == 2
+    # listed backwards, the links still attach in the only possible order
+    backwards = assur.structure(reversed_links(mech))
+    assert [set(g.links) for g in backwards.groups] == [set(g.links) for g in s.groups]
+
+
+def test_a_group_spoiled_by_the_group_before_it():
+    # x, y is a dyad on the crank and the frame until p becomes known: the pair H
+    # between x and p then makes it over-constrained (w, v dangle, keeping W = 1)
+    mech = build(
+        [
+            ("A", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "R", ("crank", "p"), (0.1, 0.0)),
+            ("C", "R", ("p", "q"), (0.2, 0.1)),
+            ("D", "R", ("q", "ground"), (0.3, 0.0)),
+            ("E", "R", ("crank", "x"), (-0.1, 0.0)),
+            ("F", "R", ("x", "y"), (-0.2, 0.1)),
+            ("G", "R", ("y", "ground"), (-0.3, 0.0)),
+            ("H", "R", ("x", "p"), (0.0, 0.2)),
+            ("K", "R", ("crank", "w"), (0.0, -0.1)),
+            ("L", "R", ("w", "v"), (0.0, -0.2)),
+        ],
+        ["A"],
+    )
+    assert assur.mobility(mech) == 1
+    match = (
+        r"^links x, y, w, v are left over: .* on the known links crank, ground, p, q;"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(mech)
+
+
+def test_chain_of_triads():
+    s = assur.structure(reversed_links(triad_chain(40)))
+    assert len(s.groups) == 40
+    assert {(g.group_class, g.order, g.kind) for g in s.groups} == {(3, 3, "triad")}
+    assert [set(g.links) for g in s.groups] == [
+        {f"t{i}", f"u{i}", f"v{i}", f"w{i}"} for i in range(1, 41)
+    ]
+    for g in s.groups:
+        check_group(g)
 
 
 # --- slots -------------------------------------------------------------------------
@@ -358,8 +482,33 @@ def test_mobility_differs_from_drivers():
 
 
 def test_leftover_links_are_named():
-    # links 2 and 3 are a rigid truss on the frame (over-constrained), links 4 and 5
-    # dangle from the crank: W = 3*5 - 2*7 = 1 but no Assur group attaches.
+    # link 2 is pinned to the frame and to the crank, link 3 to 2 and to the frame
+    # (over-constrained), links 4 and 5 dangle from the crank: W = 3*5 - 2*7 = 1 but
+    # no Assur group attaches.
+    mech = build(
+        [
+            ("A", "R", ("ground", "1"), (0.0, 0.0)),
+            ("g1", "R", ("ground", "2"), (1.0, 1.0)),
+            ("j12", "R", ("1", "2"), (1.0, 2.0)),
+            ("j23", "R", ("2", "3"), (2.0, 2.0)),
+            ("g3", "R", ("ground", "3"), (3.0, 3.0)),
+            ("j14", "R", ("1", "4"), (0.0, 1.0)),
+            ("j45", "R", ("4", "5"), (0.0, 2.0)),
+        ],
+        ["A"],
+    )
+    assert assur.mobility(mech) == 1
+    match = (
+        r"^links 2, 3, 4, 5 are left over: they form no Assur group \(3k = 2p, every "
+        r"part movable\) on the known links 1, ground; expected a chain made of "
+        r"Assur groups$"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(mech)
+
+
+def test_leftover_names_two_joints_between_two_links():
+    # link 2 is pinned twice to the frame: a rigid truss with link 3
     mech = build(
         [
             ("A", "R", ("ground", "1"), (0.0, 0.0)),
@@ -372,13 +521,151 @@ def test_leftover_links_are_named():
         ],
         ["A"],
     )
-    assert assur.mobility(mech) == 1
     match = (
-        r"links 2, 3, 4, 5 are left over: they form no Assur group .* on the known "
-        r"links 1, ground; expected a chain made of Assur groups"
+        r"^links 2, 3, 4, 5 are left over: they form no Assur group .* on the known "
+        r"links 1, ground, because joints g1 and g2 both join ground and 2: two "
+        r"revolute pairs at two points weld the links into one rigid body; expected "
+        r"one joint between two links \(or one link in place of two welded ones\)$"
     )
     with pytest.raises(DecompositionError, match=match):
         assur.structure(mech)
+
+
+# --- robustness: chains that are no Assur groups -----------------------------------
+
+# the kinds of D and E, where E is and its axis, what the two do to links x and y
+PARALLEL = [
+    ("RR", (0.15, 0.08), None, "two revolute pairs at two points weld the links"),
+    ("RR", (0.25, 0.0), None, "two revolute pairs at one point are one pair counted"),
+    ("RP", (0.15, 0.08), (1.0, 0.5), "a revolute and a prismatic pair together weld"),
+    ("PP", (0.15, 0.08), (-2.0, -1.0), "two prismatic pairs along parallel lines are"),
+    ("PP", (0.15, 0.08), (0.0, 1.0), "two prismatic pairs along different lines weld"),
+]
+
+
+@pytest.mark.parametrize(("kinds", "at", "axis", "reason"), PARALLEL)
+def test_two_joints_between_two_links(kinds, at, axis, reason):
+    # a crank, then x and y: B crank-x, D y-x and a second joint E between x and y
+    d = ("D", kinds[0], ("y", "x"), (0.25, 0.0), (1.0, 0.5))
+    e = ("E", kinds[1], ("x", "y"), at, axis)
+    mech = build(
+        [
+            ("A", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "R", ("crank", "x"), (0.05, 0.0)),
+            d if kinds[0] == "P" else d[:4],
+            e if kinds[1] == "P" else e[:4],
+        ],
+        ["A"],
+    )
+    assert assur.mobility(mech) == 1
+    match = (
+        r"^links x, y are left over: .* on the known links crank, ground, because "
+        rf"joints D and E both join y and x: {reason}"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(mech)
+
+
+def relinked(path: str, joint: str, links: tuple[str, str]) -> Mechanism:
+    """The example ``path`` with the links of ``joint`` replaced."""
+    mech = assur.load(EXAMPLES / path)
+    joints = tuple(
+        dataclasses.replace(j, links=links) if j.name == joint else j
+        for j in mech.joints
+    )
+    return dataclasses.replace(mech, joints=joints)
+
+
+@pytest.mark.parametrize(
+    ("links", "match"),
+    [
+        (("coupler", "rocker"), r"joints B and O4 both join coupler and rocker"),
+        (("rocker", "coupler"), r"joints B and O4 both join coupler and rocker"),
+    ],
+)
+def test_four_bar_with_its_ground_pivot_relinked(links, match):
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(relinked("four_bar.toml", "O4", links))
+
+
+def test_four_bar_with_its_rocker_pinned_to_the_crank():
+    # coupler and rocker hang on the crank alone: still a dyad, rigid with the crank
+    s = assur.structure(relinked("four_bar.toml", "O4", ("crank", "rocker")))
+    (g,) = s.groups
+    assert (g.group_class, g.kind, g.attached_to) == (2, "RRR", ("crank",))
+
+
+def test_whitworth_with_a_rigid_triangle():
+    # lever, rod and ram pinned to one another in a triangle: a truss, not links
+    # of an Assur group (the chain was reported as a class III group before)
+    match = (
+        r"^links block, lever, rod, ram are left over: .* because joints O4, E, F "
+        r"join links lever, rod, ram into a rigid or over-constrained chain \(k = 3 "
+        r"links, p = 3 pairs among them: 2p = 6 >= 3\(k - 1\) = 6, no motion left "
+        r"between them\); expected one link in their place, or fewer joints "
+        r"between them$"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(relinked("whitworth.toml", "O4", ("lever", "ram")))
+
+
+def test_whitworth_with_two_joints_between_lever_and_rod():
+    # the chain block-lever-rod-ram was reported as a class II "general" group
+    with pytest.raises(
+        DecompositionError, match=r"joints O4 and E both join lever and rod"
+    ):
+        assur.structure(relinked("whitworth.toml", "O4", ("lever", "rod")))
+
+
+def test_group_of_order_one_is_refused():
+    # links 6..9 hang on one external pair H (this was a class IV group of order 1):
+    # the guide between 6 and 9 closes the rigid triangle 6, 7, 9
+    match = r"because joints L, S, guide join links 6, 7, 9 into a rigid"
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(relinked("tenbar.toml", "guide", ("6", "9")))
+
+
+def test_open_chain_with_a_sliding_dyad_is_no_group():
+    # a-b-c-d in a row; c and d slide on the frame and on each other (a dyad of
+    # sliding pairs only, which cannot fix its rotation); the whole row has 3k = 2p
+    # but is no minimal Assur group (it was reported as a class II "general" group)
+    mech = build(
+        [
+            ("A", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "R", ("crank", "a"), (0.05, 0.0)),
+            ("C", "R", ("a", "b"), (0.1, 0.05)),
+            ("D", "R", ("b", "c"), (0.2, 0.05)),
+            ("E", "P", ("c", "d"), (0.3, 0.05), (1.0, 1.0)),
+            ("F", "P", ("ground", "c"), (0.2, 0.0), (1.0, 0.0)),
+            ("G", "P", ("ground", "d"), (0.3, 0.0), (0.0, 1.0)),
+        ],
+        ["A"],
+    )
+    assert assur.mobility(mech) == 1
+    with pytest.raises(DecompositionError, match=r"^links a, b, c, d are left over"):
+        assur.structure(mech)
+
+
+def test_open_path_of_four_links_is_never_described_as_a_group():
+    from assur._structure import Pair, _describe
+
+    def pair(name: str, a: str, b: str) -> Pair:
+        return Pair(name, "R", (a, b), (0.0, 0.0))
+
+    chain = [
+        pair("B", "crank", "a"),
+        pair("C", "a", "b"),
+        pair("D", "b", "c"),
+        pair("E", "c", "d"),
+        pair("F", "c", "ground"),
+        pair("G", "d", "ground"),
+    ]
+    match = (
+        r"^links a, b, c, d: a chain of 4 links whose joints among them form an "
+        r"open path is no minimal Assur group"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        _describe(["a", "b", "c", "d"], chain, {"crank", "ground"})
 
 
 # --- report and serialisation ------------------------------------------------------
@@ -398,11 +685,38 @@ def test_report_names_every_step():
     assert "Class of the mechanism: II" in report
 
 
+WHY = (
+    "Why an Assur group: k = {k} links, p = {p} lower pairs: 3k = {n} = 2p = {n}, so "
+    "the chain has zero mobility on the known links, and no smaller part of it does."
+)
+
+
 def test_report_of_a_triad():
     report = str(assur.structure(six_bar()))
     assert "Structure of six-bar" in report
     assert "2. Class III, order 3, triad: links" in report
+    assert "internal pairs C, D, E; external pairs B, F, G on the known links" in report
+    assert WHY.format(k=4, p=6, n=12) in report
     assert "Class of the mechanism: III" in report
+
+
+def test_report_of_a_dyad_counts_its_pairs_and_links():
+    report = str(assur.structure(assur.catalog.four_bar()))
+    assert "internal pair C; external pairs B, D on the known links crank, ground." in (
+        report
+    )
+    assert WHY.format(k=2, p=3, n=6) in report
+    pinned = str(assur.structure(relinked("four_bar.toml", "O4", ("crank", "rocker"))))
+    assert "external pairs A, O4 on the known link crank." in pinned
+
+
+def test_report_of_a_general_group():
+    report = str(assur.structure(class_four()))
+    assert "2. Class IV, order 2, group: links a, b, c, d" in report
+    assert "internal pairs ab, bc, cd, da; external pairs B, Oc on the known links" in (
+        report
+    )
+    assert WHY.format(k=4, p=6, n=12) in report
 
 
 def test_to_dict_is_json():
