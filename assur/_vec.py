@@ -139,3 +139,32 @@ def dot(weights: Iterable[Leaf], values: Iterable[Leaf]) -> Leaf:
             term = w * v
         total = term if (total.__class__ is float and not total) else total + term
     return total
+
+
+def sub(a: Leaf, b: Leaf) -> Leaf:
+    """Return ``a - b``, skipping a term that is the float zero."""
+    if b.__class__ is float and not b:
+        return a
+    if a.__class__ is float and not a:
+        return -b
+    return a - b
+
+
+def mul(a: Leaf, b: Leaf) -> Leaf:
+    """Return ``a * b``; a float zero or one factor makes no array."""
+    if a.__class__ is float:
+        if not a:
+            return 0.0
+        if a == 1.0:
+            return b
+    if b.__class__ is float:
+        if not b:
+            return 0.0
+        if b == 1.0:
+            return a
+    return a * b
+
+
+def cross(ax: Leaf, ay: Leaf, bx: Leaf, by: Leaf) -> Leaf:
+    """Return the z component of ``a x b``: ``ax by - ay bx``, skipping zero terms."""
+    return sub(mul(ax, by), mul(ay, bx))

@@ -22,7 +22,7 @@ import numpy as np
 
 from assur._kinematics import KinematicState, velocity_coefficients
 from assur._loads import LoadPlan, table_values
-from assur._vec import Array, Leaf, full, take_rows
+from assur._vec import Array, Leaf, add, cross, full, mul, take_rows
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium, Wrench
@@ -131,11 +131,11 @@ def applied_loads(
         mass = float(loads.mass[b])
         px, py = point(m, loads.center[b], 0)
         ax, ay = point(m, loads.center[b], 2)
-        fx, fy = -mass * ax, -mass * ay
-        torque = -float(loads.inertia[b]) * m.phi[2]
+        fx, fy = mul(-mass, ax), mul(-mass, ay)
+        torque = mul(-float(loads.inertia[b]), m.phi[2])
         inertia[b] = (fx, fy, torque)
-        fx, fy = fx + mass * gx, fy + mass * gy
-        wrenches[b] = [fx, fy, px * fy - py * fx + torque]
+        fx, fy = add(fx, mass * gx), add(fy, mass * gy)
+        wrenches[b] = [fx, fy, add(cross(px, py, fx, fy), torque)]
     slides: dict[str, Array] | None = None
     for b, offset_, value, entry in loads.forces:
         px, py = point(bodies[b], offset_, 0)
@@ -145,7 +145,7 @@ def applied_loads(
             slides = slides or {name: s[0] for name, s in state.slide.items()}
             fx, fy = table_values(value, plan, state.drive, slides, entry)
         w = wrenches[b]
-        wrenches[b] = [w[0] + fx, w[1] + fy, w[2] + px * fy - py * fx]
+        wrenches[b] = [add(w[0], fx), add(w[1], fy), add(w[2], cross(px, py, fx, fy))]
     for b, value, entry in loads.torques:
         t: Any
         if isinstance(value, float):
@@ -154,7 +154,7 @@ def applied_loads(
             slides = slides or {name: s[0] for name, s in state.slide.items()}
             t = table_values(value, plan, state.drive, slides, entry)[0]
         w = wrenches[b]
-        wrenches[b] = [w[0], w[1], w[2] + t]
+        wrenches[b] = [w[0], w[1], add(w[2], t)]
     return Applied(tuple(wrenches), tuple(inertia))
 
 
@@ -169,12 +169,12 @@ def reverse(plan: Plan, bodies: list[Motion], applied: Applied) -> Reverse:
     for solver in reversed(plan.solvers):
         record = solver.equilibrium(bodies, loads)
         for body, wrench in record.passed:
-            loads[body] = [a + b for a, b in zip(loads[body], wrench, strict=True)]
+            loads[body] = [add(a, b) for a, b in zip(loads[body], wrench, strict=True)]
         groups.append(record)
     drivers = []
     for d in plan.drivers:
         record_ = balance(d, bodies, loads)
-        loads[0] = [a + b for a, b in zip(loads[0], record_.load, strict=True)]
+        loads[0] = [add(a, b) for a, b in zip(loads[0], record_.load, strict=True)]
         drivers.append(record_)
     return Reverse(tuple(groups), tuple(drivers), loads[0])
 

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
-from assur._vec import wrap
+from assur._vec import add, cross, dot, mul, sub, wrap
 from assur.errors import ModelError
 from assur.groups._motion import Motion, Vec, direction, point
 from assur.groups._pairs import PairPlan, partials, residual, unit_wrenches
@@ -157,8 +157,8 @@ def set_pose(plan: DyadSolver, bodies: list[Motion], q1: Any, q2: Any) -> None:
             ex, ey = guide(plan, bodies, b)
             motion = Motion(
                 [known.phi[0], 0.0, 0.0, 0.0],
-                [ax + q * ex, 0.0, 0.0, 0.0],
-                [ay + q * ey, 0.0, 0.0, 0.0],
+                [add(ax, mul(q, ex)), 0.0, 0.0, 0.0],
+                [add(ay, mul(q, ey)), 0.0, 0.0, 0.0],
             )
         motion.q = [q]
         bodies[plan.bodies[b]] = motion
@@ -179,8 +179,8 @@ def _fill(plan: DyadSolver, bodies: list[Motion], k: int) -> None:
                 ex, ey = guide(plan, bodies, b, k - j)
                 if ex.__class__ is float and ey.__class__ is float and not (ex or ey):
                     continue  # a guide that does not turn: no term
-                coef = comb(k, j) * m.q[j]
-                ax, ay = ax + coef * ex, ay + coef * ey
+                coef = mul(float(comb(k, j)), m.q[j])
+                ax, ay = add(ax, mul(coef, ex)), add(ay, mul(coef, ey))
         m.ox[k], m.oy[k] = ax, ay
 
 
@@ -196,7 +196,7 @@ def jacobian(plan: DyadSolver, bodies: list[Motion]) -> Jacobian:
             cols.append((rows[0][2], rows[1][2]))
         else:
             ex, ey = guide(plan, bodies, b)
-            cols.append(tuple(r[0] * ex + r[1] * ey for r in rows))
+            cols.append(tuple(dot((r[0], r[1]), (ex, ey)) for r in rows))
     return cols[0][0], cols[1][0], cols[0][1], cols[1][1]
 
 
@@ -220,8 +220,10 @@ def solve2(jac: Jacobian, r0: Any, r1: Any) -> tuple[Any, Any]:
     """Solve ``J x = -r`` by Cramer's rule, element by element."""
     j00, j01, j10, j11 = jac
     with np.errstate(divide="ignore", invalid="ignore"):
-        inv = 1.0 / (j00 * j11 - j01 * j10)
-        return (j01 * r1 - j11 * r0) * inv, (j10 * r0 - j00 * r1) * inv
+        inv = 1.0 / sub(mul(j00, j11), mul(j01, j10))
+        return mul(sub(mul(j01, r1), mul(j11, r0)), inv), mul(
+            sub(mul(j10, r0), mul(j00, r1)), inv
+        )
 
 
 def linear_step(
@@ -252,8 +254,8 @@ def derivative(plan: DyadSolver, bodies: list[Motion], k: int, jac: Jacobian) ->
             m.phi[k] = x[b]
         else:
             ex, ey = guide(plan, bodies, b)
-            m.ox[k] = m.ox[k] + x[b] * ex
-            m.oy[k] = m.oy[k] + x[b] * ey
+            m.ox[k] = add(m.ox[k], mul(x[b], ex))
+            m.oy[k] = add(m.oy[k], mul(x[b], ey))
 
 
 def _eliminator(plan: DyadSolver, bodies: list[Motion], b: int) -> tuple[Any, Any, Any]:
@@ -263,7 +265,7 @@ def _eliminator(plan: DyadSolver, bodies: list[Motion], b: int) -> tuple[Any, An
     """
     if plan.ext[b].kind == "R":
         m = bodies[plan.bodies[b]]
-        return m.oy[0], -m.ox[0], 1.0
+        return m.oy[0], mul(-1.0, m.ox[0]), 1.0
     ex, ey = guide(plan, bodies, b)
     return ex, ey, 0.0
 
@@ -284,22 +286,22 @@ def equilibrium(
     for b in (0, 1):
         wx, wy, wt = _eliminator(plan, bodies, b)
         sign = 1.0 if plan.bodies[b] == plan.mid.second else -1.0
-        rows.append([sign * (wx * c[0] + wy * c[1] + wt * c[2]) for c in cols])
-        load = loads[plan.bodies[b]]
-        rhs.append(wx * load[0] + wy * load[1] + wt * load[2])
+        rows.append([mul(sign, dot((wx, wy, wt), c)) for c in cols])
+        rhs.append(dot((wx, wy, wt), loads[plan.bodies[b]]))
         signs.append(sign)
     lam0, lam1 = solve2(
         (rows[0][0], rows[0][1], rows[1][0], rows[1][1]), rhs[0], rhs[1]
     )
-    mid = [lam0 * cols[0][i] + lam1 * cols[1][i] for i in range(3)]
+    mid = [dot((lam0, lam1), (cols[0][i], cols[1][i])) for i in range(3)]
     reactions = {plan.mid.name: reaction(plan.mid, bodies, mid)}
     passed = []
     for b in (0, 1):
         body = plan.bodies[b]
-        total = [loads[body][i] + signs[b] * mid[i] for i in range(3)]
+        add_or_sub = add if signs[b] > 0 else sub
+        total = [add_or_sub(loads[body][i], mid[i]) for i in range(3)]
         passed.append((plan.known[b], total))
         pair = plan.ext[b]
-        on_second = total if pair.second != body else [-t for t in total]
+        on_second = total if pair.second != body else [mul(-1.0, t) for t in total]
         reactions[pair.name] = reaction(pair, bodies, on_second)
     return Equilibrium(
         plan.label,
@@ -322,7 +324,7 @@ def reaction(pair: PairPlan, bodies: list[Motion], wrench: Wrench) -> Reaction:
     if pair.kind == "R":
         return Reaction(fx, fy)
     qx, qy = point(bodies[pair.second], pair.d_second, 0)
-    return Reaction(fx, fy, tau - (qx * fy - qy * fx))
+    return Reaction(fx, fy, sub(tau, cross(qx, qy, fx, fy)))
 
 
 def compile_dyad(context: CompileContext, group: Group, closure: Closure) -> DyadSolver:

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from math import comb
 from typing import Any
 
-from assur._vec import wrap
+from assur._vec import add, cross, dot, mul, sub, wrap
 from assur.groups._motion import Motion, Vec, direction, point, rotated
 
 __all__ = ["PairPlan", "partials", "residual", "slide", "unit_wrenches"]
@@ -57,8 +57,8 @@ def _dot_leibniz(
             continue  # the first link does not turn: e's derivatives are zero
         p2 = point(m2, pair.d_second, k - m)
         p1 = point(m1, pair.d_first, k - m)
-        term = ex * (p2[0] - p1[0]) + ey * (p2[1] - p1[1])
-        total = total + (comb(k, m) * term if m and m < k else term)
+        term = dot((ex, ey), (sub(p2[0], p1[0]), sub(p2[1], p1[1])))
+        total = add(total, mul(float(comb(k, m)), term))
     return total
 
 
@@ -75,8 +75,8 @@ def residual(pair: PairPlan, bodies: list[Motion], k: int) -> Vec:
     if pair.kind == "R":
         x1, y1 = point(m1, pair.d_first, k)
         x2, y2 = point(m2, pair.d_second, k)
-        return x1 - x2, y1 - y2
-    rot = m2.phi[k] - m1.phi[k]
+        return sub(x1, x2), sub(y1, y2)
+    rot = sub(m2.phi[k], m1.phi[k])
     if k == 0:
         rot = wrap(rot)
     return rot, _dot_leibniz(pair, bodies, pair.normal, k)
@@ -96,16 +96,16 @@ def partials(
     if pair.kind == "R":
         m, d, sign = (m1, pair.d_first, 1.0) if is_first else (m2, pair.d_second, -1.0)
         ux, uy = rotated(m, d)
-        return ((sign, 0.0, -sign * uy), (0.0, sign, sign * ux))
+        return ((sign, 0.0, mul(-sign, uy)), (0.0, sign, mul(sign, ux)))
     nx, ny = rotated(m1, pair.normal)
     if is_first:
         ux, uy = rotated(m1, pair.d_first)
         px, py = point(m2, pair.d_second, 0)
-        gx, gy = px - (m1.ox[0] + ux), py - (m1.oy[0] + uy)
-        dphi = -ny * gx + nx * gy + nx * uy - ny * ux
-        return ((0.0, 0.0, -1.0), (-nx, -ny, dphi))
+        gx, gy = sub(px, add(m1.ox[0], ux)), sub(py, add(m1.oy[0], uy))
+        dphi = add(cross(nx, ny, gx, gy), cross(nx, ny, ux, uy))
+        return ((0.0, 0.0, -1.0), (mul(-1.0, nx), mul(-1.0, ny), dphi))
     ux, uy = rotated(m2, pair.d_second)
-    return ((0.0, 0.0, 1.0), (nx, ny, ny * ux - nx * uy))
+    return ((0.0, 0.0, 1.0), (nx, ny, cross(ny, nx, uy, ux)))
 
 
 def unit_wrenches(pair: PairPlan, bodies: list[Motion]) -> tuple[tuple[Any, ...], ...]:
@@ -118,9 +118,9 @@ def unit_wrenches(pair: PairPlan, bodies: list[Motion]) -> tuple[tuple[Any, ...]
     """
     qx, qy = point(bodies[pair.second], pair.d_second, 0)
     if pair.kind == "R":
-        return ((1.0, 0.0, -qy), (0.0, 1.0, qx))
+        return ((1.0, 0.0, mul(-1.0, qy)), (0.0, 1.0, qx))
     nx, ny = rotated(bodies[pair.first], pair.normal)
-    return ((nx, ny, qx * ny - qy * nx), (0.0, 0.0, 1.0))
+    return ((nx, ny, cross(qx, qy, nx, ny)), (0.0, 0.0, 1.0))
 
 
 def slide(pair: PairPlan, bodies: list[Motion], k: int) -> Any:

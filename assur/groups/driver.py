@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from assur._vec import Array
+from assur._vec import Array, add, cross, dot, mul, sub
 from assur.groups._dyad import reaction
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan
@@ -97,17 +97,18 @@ def balance(plan: DriverPlan, bodies: list[Motion], loads: list[Wrench]) -> Bala
     fx, fy, tau = loads[plan.body]
     m = bodies[plan.body]
     px, py = m.ox[0], m.oy[0]
-    couple = px * fy - py * fx - tau  # about the joint's point, to balance the link
+    couple = sub(cross(px, py, fx, fy), tau)  # about the joint's point
     if plan.kind == "R":
         balancing = couple
-        on_link = [-fx, -fy, -tau - couple]
+        on_link = [mul(-1.0, fx), mul(-1.0, fy), mul(-1.0, add(tau, couple))]
     else:
         assert plan.pair.axis is not None
         ex, ey = plan.pair.axis
-        balancing = -(fx * ex + fy * ey)
-        nx, ny = -fx - balancing * ex, -fy - balancing * ey
-        on_link = [nx, ny, px * ny - py * nx + couple]
-    on_second = on_link if plan.sign > 0 else [-w for w in on_link]
+        balancing = mul(-1.0, dot((fx, fy), (ex, ey)))
+        nx = mul(-1.0, add(fx, mul(balancing, ex)))
+        ny = mul(-1.0, add(fy, mul(balancing, ey)))
+        on_link = [nx, ny, add(cross(px, py, nx, ny), couple)]
+    on_second = on_link if plan.sign > 0 else [mul(-1.0, w) for w in on_link]
     label = f"driver ({plan.pair.name})"
     return Balance(
         label,
