@@ -11,10 +11,12 @@ place. A failed write raises :class:`~assur.errors.OutputError` naming the outpu
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import secrets
 import shutil
 import stat
+import sys
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
@@ -26,7 +28,9 @@ __all__ = [
     "output_folder",
     "output_path",
     "path_text",
+    "write_all",
     "write_bytes",
+    "write_stdout",
     "write_text",
 ]
 
@@ -70,7 +74,37 @@ def write_bytes(path: str | os.PathLike[str], data: bytes) -> None:
         When the file cannot be written; an old file of that name is kept.
     """
     with output_path(path) as temporary, open(temporary, "wb") as stream:
-        stream.write(data)
+        write_all(stream, data)
+
+
+def write_all(stream: Any, data: bytes) -> None:
+    """Write every byte of ``data`` to a binary stream, or raise its OSError.
+
+    A buffered stream may write part of a large block and drop the rest when the
+    disk fills up; writing again what is left makes the fault show.
+    """
+    view = memoryview(data)
+    while view:
+        count = stream.write(view)
+        if not count:
+            msg = "the stream took no data"
+            raise OSError(errno.EIO, msg)
+        view = view[count:]
+    stream.flush()
+
+
+def write_stdout(text: str) -> None:
+    """Write ``text`` to standard output, all of it or an OSError.
+
+    Characters that its encoding cannot show are written as backslash escapes.
+    """
+    stream = sys.stdout
+    buffer = getattr(stream, "buffer", None)
+    if buffer is None:  # a notebook's stream: no bytes below
+        stream.write(text)
+        return
+    stream.flush()
+    write_all(buffer, text.encode(stream.encoding or "utf-8", "backslashreplace"))
 
 
 @contextlib.contextmanager
@@ -229,8 +263,24 @@ def _reported(where: str, any_error: bool) -> Iterator[None]:
     except Exception as err:
         if not any_error:
             raise
+        cause = _os_error(err)
+        if cause is not None:  # a writer that fails again on cleaning up
+            msg = f"{where}: cannot write the file ({cause.strerror or cause})"
+            raise OutputError(msg) from err
         reason = " ".join(f"{type(err).__name__}: {err}".split())
         if len(reason) > 120:
             reason = reason[:117] + "..."
         msg = f"{where}: cannot write the file ({reason})"
         raise OutputError(msg) from err
+
+
+def _os_error(err: BaseException) -> OSError | None:
+    """Return the OSError behind ``err`` (its cause or context), if any."""
+    seen: set[int] = set()
+    cause: BaseException | None = err
+    while cause is not None and id(cause) not in seen:
+        if isinstance(cause, OSError):
+            return cause
+        seen.add(id(cause))
+        cause = cause.__cause__ or cause.__context__
+    return None

@@ -18,7 +18,7 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-from assur._output import path_text, write_text
+from assur._output import path_text, write_stdout, write_text
 from assur._text import describe, suggest
 from assur.errors import AssurError, ModelError
 from assur.model import (
@@ -196,8 +196,8 @@ def _check_depth(data: Any) -> None:
 
 
 _HEADER = re.compile(r"^\s*(\[\[?)\s*([^\[\]#]+?)\s*\]\]?\s*(#.*)?$")
-_TOML_KEY = re.compile(r"([A-Za-z0-9_.\- \"']+?)\s*=\s*[+-]?$")
-_JSON_KEY = re.compile(r'"([^"\\]{1,40})"\s*:\s*-?$')
+_TOML_KEY = re.compile(r"([A-Za-z0-9_.\- \"']+?)\s*=\s*[^={}]*$")
+_JSON_KEY = re.compile(r'"([^"\\]{1,40})"\s*:\s*[^"{}:]*$')
 
 
 def _long_integer(text: str, json_format: bool) -> str | None:
@@ -644,7 +644,7 @@ def write_csv(table: Any, path: Any = None) -> str | None:
     if path is None:
         return text
     if isinstance(path, str) and path == "-":
-        sys.stdout.write(text)
+        write_stdout(text)
     elif hasattr(path, "write"):
         path.write(text)
     else:
