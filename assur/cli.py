@@ -1,8 +1,8 @@
 """Command line: ``assur structure|kinematics|forces|plot|diagrams|animate|report``.
 
 A thin edge over the library: it parses arguments, reads the mechanism file, runs the
-analysis and writes text, CSV or JSON. Any error of the input becomes one line on
-standard error and exit status 2.
+analysis and writes text, CSV or JSON. Any error of the input, of an option or of an
+output becomes one line on standard error and exit status 2; Ctrl-C exits with 130.
 """
 
 from __future__ import annotations
@@ -27,7 +27,13 @@ from assur._cli_common import (
 )
 from assur._output import path_text, write_stdout
 from assur._text import describe, suggest
-from assur.errors import AssurError, AssurWarning, OutputError
+from assur.errors import (
+    AssurError,
+    AssurWarning,
+    DecompositionError,
+    OutputError,
+    UsageError,
+)
 
 __all__ = ["main", "parse_angles"]
 
@@ -192,8 +198,11 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
         except BrokenPipeError:
             raise  # the reader of standard output has gone: main stops quietly
         except OSError as err:
-            where = path_text(err.filename) if err.filename else "standard output"
-            _error(f"{where}: cannot write ({err.strerror or err})")
+            reason = err.strerror or str(err)
+            if err.filename:
+                _error(f"{path_text(err.filename)}: {reason}")
+            else:
+                _error(f"standard output: cannot write ({reason})")
             status = 2
         except MemoryError:
             _error(
@@ -228,7 +237,13 @@ def _error(text: str) -> None:
 def _cmd_structure(args: argparse.Namespace) -> int:
     from assur._structure import structure
 
-    s = structure(load_mechanism(args.file), driver=args.driver)
+    mech = load_mechanism(args.file)
+    try:
+        s = structure(mech, driver=args.driver)
+    except DecompositionError as err:
+        if args.driver is not None and str(err).startswith("--driver:"):
+            raise UsageError(str(err)) from err  # the option, not the file
+        raise
     _say(json.dumps(s.to_dict(), indent=2) if args.json else str(s))
     return 0
 

@@ -79,17 +79,21 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     )
     p.add_argument("--angles", **angles)
     p = sub.add_parser("animate", help="write an animated GIF of the sweep")
-    _common(p, "PATH", "GIF file to write", 80.0)
+    _common(p, "PATH", "GIF file to write", 80.0, GIF_DPI_RANGE)
     p.add_argument("--angles", **angles)
     p.add_argument(
         "--frames",
         type=int,
         default=72,
         metavar="N",
-        help="at most N frames, evenly spread over the sweep (default 72)",
+        help="at most N frames, evenly spread over the sweep (default 72, "
+        f"{FRAMES_RANGE[0]} to {FRAMES_RANGE[1]})",
     )
     p.add_argument(
-        "--fps", type=float, default=20.0, help="frames per second (default 20)"
+        "--fps",
+        type=float,
+        default=20.0,
+        help=f"frames per second (default 20, {FPS_RANGE[0]:g} to {FPS_RANGE[1]:g})",
     )
     p.add_argument("--forces", action="store_true", help="draw the loads and reactions")
     p = sub.add_parser("report", help="write an HTML report of the analysis")
@@ -104,7 +108,11 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
 
 
 def _common(
-    p: argparse.ArgumentParser, metavar: str, text: str, dpi: float | None = None
+    p: argparse.ArgumentParser,
+    metavar: str,
+    text: str,
+    dpi: float | None = None,
+    dpi_range: tuple[float, float] = DPI_RANGE,
 ) -> None:
     p.add_argument("file", type=Path)
     p.add_argument(
@@ -115,7 +123,8 @@ def _common(
             "--dpi",
             type=float,
             default=dpi,
-            help=f"resolution, dots per inch (default {dpi:g})",
+            help=f"resolution, dots per inch (default {dpi:g}, {dpi_range[0]:g} to "
+            f"{dpi_range[1]:g})",
         )
 
 

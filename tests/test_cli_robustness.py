@@ -7,6 +7,7 @@ output survives a failed write.
 
 from __future__ import annotations
 
+import argparse
 import os
 import signal
 import subprocess
@@ -301,6 +302,18 @@ def test_option_errors_are_usage_errors_not_model_errors():
         parse_angles("abc")
     assert not isinstance(info.value, ModelError)
     assert isinstance(info.value, ValueError)
+
+
+@pytest.mark.parametrize("joint", ["Q", "C"])
+def test_the_driver_option_is_a_usage_error(monkeypatch, joint, capsys):
+    seen = []
+    monkeypatch.setattr(cli, "_error", seen.append)
+    path = EXAMPLES / "class3.toml"
+    status = cli.main(["structure", str(path), "--driver", joint])
+    assert status == 2
+    with pytest.raises(UsageError, match=r"^--driver: "):
+        cli._cmd_structure(argparse.Namespace(file=path, driver=joint, json=False))
+    assert seen[0].startswith(f"{path}: --driver: ")
 
 
 def test_a_long_option_is_echoed_briefly(capsys):
