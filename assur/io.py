@@ -615,7 +615,7 @@ def save(mech: Mechanism, path: str | Path) -> None:
     write_text(path, dumps(mech))
 
 
-def csv_text(table: Any) -> str:
+def _csv_text(table: Any) -> str:
     """Return a result table as CSV text: a header of column names, 12 digits."""
     buffer = _io.StringIO()
     # names may hold quotes: the header follows the CSV rules like any row
@@ -640,7 +640,7 @@ def write_csv(table: Any, path: Any = None) -> str | None:
     OutputError
         When the file cannot be written; an old file of that name is kept.
     """
-    text = csv_text(table)
+    text = _csv_text(table)
     if path is None:
         return text
     if isinstance(path, str) and path == "-":
