@@ -289,7 +289,7 @@ class Mechanism:
         for link in self.links:
             if link.name == name:
                 return link
-        msg = f"unknown link {name!r}"
+        msg = f"unknown link {describe(name)}"
         raise KeyError(msg)
 
     def joint(self, name: str) -> Joint:
@@ -297,7 +297,7 @@ class Mechanism:
         for joint in self.joints:
             if joint.name == name:
                 return joint
-        msg = f"unknown joint {name!r}"
+        msg = f"unknown joint {describe(name)}"
         raise KeyError(msg)
 
 
