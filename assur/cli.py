@@ -1,91 +1,51 @@
 """Command line: ``assur structure|kinematics|forces|plot|diagrams|animate|report``.
 
 A thin edge over the library: it parses arguments, reads the mechanism file, runs the
-analysis and writes text, CSV or JSON. Any error of the input becomes one line on
-standard error and exit status 2.
+analysis and writes text, CSV or JSON. Any error of the input, of an option or of an
+output becomes one line on standard error and exit status 2; Ctrl-C exits with 130.
 """
 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
-import math
 import os
 import sys
 import warnings
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from assur.errors import AssurError, AssurWarning, ModelError
+from assur._cli_common import (
+    check_not_input,
+    load_mechanism,
+    parse_angles,
+    positions,
+)
+from assur._output import path_text, write_stdout
+from assur._text import describe, suggest
+from assur.errors import (
+    AssurError,
+    AssurWarning,
+    DecompositionError,
+    OutputError,
+    UsageError,
+)
 
 __all__ = ["main", "parse_angles"]
 
 COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {}
-MAX_POSITIONS = 10_000_000
-"""Most driver positions one command analyses (the library takes any number)."""
+INTERRUPTED = 130
+"""Exit status after Ctrl-C (128 + SIGINT), as shells report it."""
+SUMMARY_ROWS = 400
+"""Most rows of the readable table; --csv and --json give them all."""
 
 
-def parse_angles(spec: str, drivers: int = 1) -> np.ndarray:
-    """Parse ``START:STOP:STEP`` (STOP included when on the grid) or a single value.
-
-    Several drivers take one range each, separated by commas, with equal counts.
-
-    Examples
-    --------
-    >>> parse_angles("0:90:45").tolist()
-    [0.0, 45.0, 90.0]
-    >>> parse_angles("0:10:5,30:40:5", drivers=2).tolist()
-    [[0.0, 30.0], [5.0, 35.0], [10.0, 40.0]]
-    """
-    parts = spec.split(",")
-    if len(parts) != drivers:
-        msg = (
-            f"--angles: {len(parts)} range(s) given for {drivers} driver(s); expected "
-            "one START:STOP:STEP per driver, separated by commas"
-        )
-        raise ModelError(msg)
-    ranges = [_one_range(part) for part in parts]
-    if len({len(r) for r in ranges}) != 1:
-        counts = ", ".join(str(len(r)) for r in ranges)
-        msg = f"--angles: the ranges have {counts} positions; expected equal counts"
-        raise ModelError(msg)
-    return ranges[0] if drivers == 1 else np.stack(ranges, axis=-1)
-
-
-def _one_range(text: str) -> np.ndarray:
-    fields = text.split(":")
-    try:
-        values = [float(f) for f in fields]
-    except ValueError:
-        values = []
-    if len(values) == 1 and math.isfinite(values[0]):
-        return np.array(values)
-    if (
-        len(values) != 3
-        or not all(map(math.isfinite, values))
-        or values[2] == 0
-        or (values[1] - values[0]) / values[2] < 0
-    ):
-        msg = (
-            f"--angles: cannot read {text!r}; expected START:STOP:STEP with a step "
-            "that leads from START to STOP, or a single value"
-        )
-        raise ModelError(msg)
-    start, stop, step = values
-    count = math.floor((stop - start) / step + 1e-9) + 1
-    if count > MAX_POSITIONS:
-        msg = (
-            f"--angles: {text!r} gives {count} positions; expected at most "
-            f"{MAX_POSITIONS} (a larger step)"
-        )
-        raise ModelError(msg)
-    return start + step * np.arange(count)
-
-
-def _parser() -> argparse.ArgumentParser:
+def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
+    """Return the parser and the names of its commands."""
     parser = argparse.ArgumentParser(
         prog="assur",
         description="Kinetostatic analysis of planar linkages, built on Assur groups.",
@@ -121,7 +81,7 @@ def _parser() -> argparse.ArgumentParser:
             help="leave out positions that cannot be assembled",
         )
     _add_picture_commands(sub)
-    return parser
+    return parser, list(sub.choices)
 
 
 def _add_picture_commands(sub: Any) -> None:
@@ -134,85 +94,165 @@ def _add_picture_commands(sub: Any) -> None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the command line; return the exit status (0 fine, 2 bad input)."""
-    parser = _parser()
-    argv = list(sys.argv[1:] if argv is None else argv)
+    """Run the command line; return the exit status.
+
+    0 when done, 2 for bad input or an output that cannot be written (one line on
+    standard error), 130 after Ctrl-C. A reader of standard output that has gone
+    (``| head``) ends the command quietly with status 0.
+    """
+    try:
+        with _lenient_streams():
+            return _main(list(sys.argv[1:] if argv is None else argv))
+    except KeyboardInterrupt:
+        try:
+            sys.stdout.flush()
+        except OSError:
+            _quiet_stdout()
+        print("assur: interrupted", file=sys.stderr)
+        return INTERRUPTED
+
+
+def _main(argv: list[str]) -> int:
+    """Parse ``argv`` and run its command (see :func:`main`)."""
+    parser, commands = _parser()
     # a range may start below zero: keep "--angles -30:30:10" from reading as an option
     for i in range(len(argv) - 1):
         if argv[i] in ("--angles", "--angle") and argv[i + 1].startswith("-"):
             argv[i : i + 2] = [f"{argv[i]}={argv[i + 1]}", ""]
     argv = [a for a in argv if a != ""]
+    if argv and not argv[0].startswith("-") and argv[0] not in commands:
+        parser.print_usage(sys.stderr)
+        hint = suggest(argv[0], commands)
+        print(
+            f"assur: error: unknown command {describe(argv[0])}{hint}", file=sys.stderr
+        )
+        return 2
     try:
         args = parser.parse_args(argv)
     except SystemExit as exc:
         return int(exc.code or 0)
     handler = COMMANDS.get(args.command) or globals()[f"_cmd_{args.command}"]
     try:
-        return _run(handler, args)
+        status = _run(handler, args)
+        sys.stdout.flush()
     except BrokenPipeError:
         # the reader (``| head``) has gone: stop quietly, as command-line tools do
-        sys.stdout = open(os.devnull, "w")  # noqa: SIM115 - keeps exit from flushing
+        _quiet_stdout()
         return 0
+    except OSError as err:  # standard output on a full disk, say
+        _quiet_stdout()
+        print(
+            f"assur: error: standard output: cannot write ({err.strerror or err})",
+            file=sys.stderr,
+        )
+        return 2
+    return status
+
+
+@contextlib.contextmanager
+def _lenient_streams() -> Iterator[None]:
+    """Write what a terminal's encoding cannot show as backslash escapes."""
+    saved = []
+    for stream in (sys.stdout, sys.stderr):
+        errors = getattr(stream, "errors", None)
+        if errors in (None, "backslashreplace") or not hasattr(stream, "reconfigure"):
+            continue
+        with contextlib.suppress(OSError, ValueError):
+            stream.reconfigure(errors="backslashreplace")
+            saved.append((stream, errors))
+    try:
+        yield
+    finally:
+        for stream, errors in saved:
+            with contextlib.suppress(OSError, ValueError):
+                stream.reconfigure(errors=errors)
+
+
+def _quiet_stdout() -> None:
+    """Point standard output at nothing, so the exit does not flush it again."""
+    try:
+        descriptor = sys.stdout.fileno()
+    except (AttributeError, OSError, ValueError):
+        return  # not a file: nothing flushes at exit
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, descriptor)
+    finally:
+        os.close(devnull)
 
 
 def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace) -> int:
     """Run one command, turning assur's errors and warnings into one-line messages."""
+    source = path_text(args.file)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", AssurWarning)
         try:
             status = handler(args)
+        except OutputError as err:  # names the output, not the mechanism file
+            _error(str(err))
+            status = 2
         except AssurError as err:
             text = str(err)
-            path = str(args.file)
-            if not text.startswith(path):
-                text = f"{path}: {text}"
-            print(f"assur: error: {text}", file=sys.stderr)
+            _error(text if text.startswith(source) else f"{source}: {text}")
             status = 2
         except BrokenPipeError:
-            raise  # the reader has gone: main stops quietly
-        except OSError as err:  # an output path that cannot be written
-            where = err.filename or args.file
-            print(
-                f"assur: error: {where}: cannot write ({err.strerror or err})",
-                file=sys.stderr,
+            raise  # the reader of standard output has gone: main stops quietly
+        except OSError as err:
+            reason = err.strerror or str(err)
+            if err.filename:
+                _error(f"{path_text(err.filename)}: {reason}")
+            else:
+                _error(f"standard output: cannot write ({reason})")
+            status = 2
+        except MemoryError:
+            _error(
+                f"{source}: out of memory; expected fewer positions (--angles) or a "
+                "smaller output"
             )
             status = 2
     # shown only once the recording has stopped, so showing cannot record again
     for w in caught:
         if issubclass(w.category, AssurWarning):
-            print(f"assur: warning: {args.file}: {w.message}", file=sys.stderr)
+            print(f"assur: warning: {source}: {_one_line(w.message)}", file=sys.stderr)
         else:
             warnings.showwarning(w.message, w.category, w.filename, w.lineno)
     return status
 
 
-def load_mechanism(path: Path) -> Any:
-    """Read the mechanism file named on the command line."""
-    from assur.io import load
-
-    return load(path)
+def _one_line(text: object) -> str:
+    """Return a message on one line."""
+    return " ".join(str(text).split())
 
 
-def positions(mech: Any, spec: str | None) -> np.ndarray:
-    """Driver positions from ``--angles`` or the default full turn."""
-    from assur.analysis import default_positions
+def _say(text: str) -> None:
+    """Print ``text`` on standard output; a write that fails there raises."""
+    write_stdout(text + "\n")
 
-    if spec is None:
-        return default_positions(mech)
-    return parse_angles(spec, max(1, len(mech.drivers)))
+
+def _error(text: str) -> None:
+    """Print the one error line of a command."""
+    print(f"assur: error: {_one_line(text)}", file=sys.stderr)
 
 
 def _cmd_structure(args: argparse.Namespace) -> int:
     from assur._structure import structure
 
-    s = structure(load_mechanism(args.file), driver=args.driver)
-    print(json.dumps(s.to_dict(), indent=2) if args.json else str(s))
+    mech = load_mechanism(args.file)
+    try:
+        s = structure(mech, driver=args.driver)
+    except DecompositionError as err:
+        if args.driver is not None and str(err).startswith("--driver:"):
+            raise UsageError(str(err)) from err  # the option, not the file
+        raise
+    _say(json.dumps(s.to_dict(), indent=2) if args.json else str(s))
     return 0
 
 
 def _cmd_kinematics(args: argparse.Namespace) -> int:
     from assur.analysis import kinematics
 
+    if args.csv:
+        check_not_input("--csv", args.csv, args.file)
     mech = load_mechanism(args.file)
     table = kinematics(mech, positions(mech, args.angles), args.skip_unassembled)
     return _emit(args, table, _summary_columns(table, force=False))
@@ -221,6 +261,8 @@ def _cmd_kinematics(args: argparse.Namespace) -> int:
 def _cmd_forces(args: argparse.Namespace) -> int:
     from assur.analysis import forces
 
+    if args.csv:
+        check_not_input("--csv", args.csv, args.file)
     mech = load_mechanism(args.file)
     table = forces(mech, positions(mech, args.angles), args.skip_unassembled)
     return _emit(args, table, _summary_columns(table, force=True))
@@ -255,21 +297,22 @@ def _emit(args: argparse.Namespace, table: Any, summary: list[str]) -> int:
         skipped = ", ".join(f"{x:g}" for x in np.ravel(table.skipped)[:20])
         skipped += ", ..." if np.size(table.skipped) > 20 else ""
         print(
-            f"assur: note: {args.file}: left out {len(table.skipped)} position(s) that "
-            f"cannot be assembled: {skipped}",
+            f"assur: note: {path_text(args.file)}: left out {len(table.skipped)} "
+            f"position(s) that cannot be assembled: {skipped}",
             file=sys.stderr,
         )
     if args.csv:
         table.to_csv(args.csv if args.csv == "-" else Path(args.csv))
         if args.csv != "-":
             print(
-                f"wrote {len(table)} rows x {len(table.columns)} columns to {args.csv}"
+                f"wrote {len(table)} rows x {len(table.columns)} columns to "
+                f"{path_text(args.csv)}"
             )
         return 0
     if args.json:
-        print(json.dumps(table.to_dict()))
+        _say(json.dumps(table.to_dict()))
         return 0
-    print(format_table(table, summary))
+    _say(format_table(table, summary))
     print(
         f"({len(table.columns)} columns in all: --csv PATH or --json for the full "
         "table)"
@@ -302,16 +345,17 @@ def _revolute_driver(table: Any) -> bool:
     return bool(table.plan.drivers[0].kind == "R")
 
 
-def format_table(table: Any, columns: list[str], limit: int = 400) -> str:
-    """Return an aligned text table of ``columns`` with a units row."""
+def format_table(table: Any, columns: list[str], limit: int = SUMMARY_ROWS) -> str:
+    """Return an aligned text table of ``columns`` with a units row.
+
+    Beyond ``limit`` rows, a last line says how many were left out.
+    """
     heads = list(columns)
     units = [f"[{_unit(c, table)}]" if _unit(c, table) else "" for c in columns]
     rows = [
         [f"{v:.6g}" for v in values]
-        for values in zip(*(table[c] for c in columns), strict=True)
+        for values in zip(*(table[c][:limit] for c in columns), strict=True)
     ]
-    if len(rows) > limit:
-        rows = rows[:limit]
     widths = [
         max(len(h), len(u), *(len(r[i]) for r in rows)) if rows else max(len(h), len(u))
         for i, (h, u) in enumerate(zip(heads, units, strict=False))
@@ -323,6 +367,10 @@ def format_table(table: Any, columns: list[str], limit: int = 400) -> str:
     lines += [
         "  ".join(v.rjust(w) for v, w in zip(r, widths, strict=True)) for r in rows
     ]
+    if len(table) > limit:
+        lines.append(
+            f"... {len(table) - limit} more rows: --csv PATH or --json for all"
+        )
     return "\n".join(lines)
 
 

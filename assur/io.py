@@ -6,6 +6,7 @@ of any fault; writing gives back a file that reads to the same mechanism.
 
 from __future__ import annotations
 
+import csv
 import io as _io
 import json
 import math
@@ -13,17 +14,32 @@ import re
 import sys
 import tomllib
 from pathlib import Path
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 
-from assur._text import suggest
+from assur._output import path_text, write_stdout, write_text
+from assur._text import describe, suggest
 from assur.errors import AssurError, ModelError
-from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
+from assur.model import (
+    LARGEST,
+    Driver,
+    Joint,
+    Link,
+    Load,
+    LoadTable,
+    Mechanism,
+    Point,
+    PointSpec,
+    Toward,
+    key_text,
+)
 
 __all__ = ["dumps", "load", "loads", "parse", "save", "write_csv"]
 
 FORMAT_VERSION = 1
+MAX_FILE_BYTES = 16 * 2**20
+"""Largest mechanism file read, bytes (16 MiB; a mechanism takes a few kB)."""
 KEYS = {
     "": (
         "format",
@@ -51,6 +67,12 @@ KEYS = {
 def load(path: str | Path) -> Mechanism:
     """Read a mechanism file (``.toml`` or ``.json``).
 
+    Parameters
+    ----------
+    path : str or path-like
+        The file; at most :data:`MAX_FILE_BYTES` bytes of UTF-8 text (a byte-order
+        mark is welcome). A ``.json`` suffix (any case) reads JSON, any other TOML.
+
     Raises
     ------
     ModelError
@@ -66,26 +88,59 @@ def load(path: str | Path) -> Mechanism:
     True
     """
     path = Path(path)
+    where = path_text(path)
+    data = _read(path, where)
     try:
-        text = path.read_text(encoding="utf-8-sig")  # a byte-order mark is welcome
-    except OSError as err:
-        msg = f"{path}: cannot read the file ({err.strerror or err})"
-        raise ModelError(msg) from err
+        text = data.decode("utf-8-sig")  # a byte-order mark is welcome
     except UnicodeDecodeError as err:
         msg = (
-            f"{path}: not UTF-8 text (byte {err.start} cannot be decoded); expected a "
+            f"{where}: not UTF-8 text (byte {err.start} cannot be decoded); expected a "
             "TOML or JSON file saved as UTF-8"
         )
         raise ModelError(msg) from err
     try:
         return loads(text, json_format=path.suffix.lower() == ".json")
     except AssurError as err:
-        msg = f"{path}: {err}"
+        msg = f"{where}: {err}"
         raise type(err)(msg) from err
 
 
+def _read(path: Path, where: str) -> bytes:
+    """Return the bytes of the file ``path``, at most :data:`MAX_FILE_BYTES`."""
+    try:
+        with open(path, "rb") as stream:
+            # one byte beyond the cap tells a file too large from one just large
+            data = stream.read(MAX_FILE_BYTES + 1)
+    except IsADirectoryError as err:
+        msg = (
+            f"{where}: cannot read the file (it is a folder); expected a TOML or "
+            "JSON file"
+        )
+        raise ModelError(msg) from err
+    except OSError as err:
+        msg = f"{where}: cannot read the file ({err.strerror or err})"
+        raise ModelError(msg) from err
+    except ValueError as err:  # a name with a NUL character
+        msg = f"{where}: cannot read the file ({err})"
+        raise ModelError(msg) from err
+    if len(data) > MAX_FILE_BYTES:
+        msg = (
+            f"{where}: larger than {MAX_FILE_BYTES // 2**20} MiB; expected a "
+            "mechanism file (a few kilobytes of TOML or JSON)"
+        )
+        raise ModelError(msg)
+    return data
+
+
 def loads(text: str, json_format: bool = False) -> Mechanism:
-    """Read a mechanism from TOML (or JSON) text."""
+    """Read a mechanism from TOML (or JSON) text.
+
+    Raises
+    ------
+    ModelError
+        With a one-line message naming the entry and what is wrong.
+    """
+    kind = "JSON" if json_format else "TOML"
     try:
         data = (
             json.loads(text, object_pairs_hook=_unique_keys)
@@ -93,10 +148,97 @@ def loads(text: str, json_format: bool = False) -> Mechanism:
             else tomllib.loads(text)
         )
     except (tomllib.TOMLDecodeError, json.JSONDecodeError) as err:
-        kind = "JSON" if json_format else "TOML"
-        msg = f"not valid {kind}: {err}"
+        msg = f"not valid {kind}: {_one_line(str(err))}"
         raise ModelError(msg) from err
+    except RecursionError as err:
+        msg = (
+            f"not valid {kind}: nested too deeply (more than the parser can follow); "
+            f"expected the few levels of a mechanism file"
+        )
+        raise ModelError(msg) from err
+    except ValueError as err:  # an integer too long to convert
+        msg = (
+            _long_integer(text, json_format)
+            or f"not valid {kind}: {_one_line(str(err))}"
+        )
+        raise ModelError(msg) from err
+    _check_depth(data)
     return parse(data)
+
+
+def _one_line(text: str) -> str:
+    """Return a parser's message on one line."""
+    return " ".join(text.split())
+
+
+MAX_NESTING = 16
+"""Deepest nesting of tables and arrays read; a mechanism file needs five levels."""
+
+
+def _check_depth(data: Any) -> None:
+    """Refuse data nested deeper than :data:`MAX_NESTING` (no recursion here)."""
+    stack: list[tuple[Any, str, int]] = [(data, "", 0)]
+    while stack:
+        value, entry, depth = stack.pop()
+        if depth > MAX_NESTING:
+            _fail(
+                entry,
+                f"nested too deeply (more than {MAX_NESTING} levels); expected the "
+                "few levels of a mechanism file",
+            )
+        if isinstance(value, dict):
+            stack += [
+                (v, f"{entry}.{key_text(k)}" if entry else key_text(k), depth + 1)
+                for k, v in value.items()
+            ]
+        elif isinstance(value, list):
+            stack += [(v, f"{entry}[{i}]", depth + 1) for i, v in enumerate(value)]
+
+
+_HEADER = re.compile(r"^\s*(\[\[?)\s*([^\[\]#]+?)\s*\]\]?\s*(#.*)?$")
+_TOML_KEY = re.compile(r"([A-Za-z0-9_.\- \"']+?)\s*=\s*[^={}]*$")
+_JSON_KEY = re.compile(r'"([^"\\]{1,40})"\s*:\s*[^"{}:]*$')
+
+
+def _long_integer(text: str, json_format: bool) -> str | None:
+    """Return the message of an integer too long for Python, naming its entry."""
+    limit = sys.get_int_max_str_digits()
+    if limit == 0:
+        return None
+    for match in re.finditer(rf"[0-9][0-9_]{{{limit},}}", text):
+        digits = sum(c.isdigit() for c in match.group())
+        if digits <= limit:
+            continue
+        start = match.start()
+        line = text.count("\n", 0, start) + 1
+        before = text[text.rfind("\n", 0, start) + 1 : start]
+        key = (_JSON_KEY if json_format else _TOML_KEY).search(before)
+        entry = "" if key is None else key.group(1).strip().strip("\"'")
+        if entry and not json_format:
+            entry = _toml_table(text, start) + entry
+        where = f"{key_text(entry)} (line {line})" if entry else f"line {line}"
+        return (
+            f"{where}: an integer of {digits} digits; expected a number of at most "
+            f"{limit} digits"
+        )
+    return None
+
+
+def _toml_table(text: str, end: int) -> str:
+    """Return the dotted name, with a dot, of the TOML table open at ``end``."""
+    table = ""
+    counts: dict[str, int] = {}
+    for line in text[:end].splitlines():
+        match = _HEADER.match(line)
+        if match is None:
+            continue
+        name = ".".join(part.strip().strip("\"'") for part in match.group(2).split("."))
+        if match.group(1) == "[[":
+            counts[name] = counts.get(name, -1) + 1
+            table = f"{name}[{counts[name]}]."
+        else:
+            table = f"{name}."
+    return table
 
 
 class _Object(dict):  # type: ignore[type-arg]
@@ -110,34 +252,55 @@ def _unique_keys(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
     out = _Object(pairs)
     if len(out) != len(pairs):
         seen: set[str] = set()
-        out.twice = tuple(k for k, _ in pairs if k in seen or seen.add(k))
+        twice = []
+        for key, _ in pairs:
+            if key in seen:
+                twice.append(key)
+            seen.add(key)
+        out.twice = tuple(twice)
     return out
 
 
-def _fail(entry: str, message: str) -> None:
+def _fail(entry: str, message: str) -> NoReturn:
     msg = f"{entry}: {message}" if entry else message
     raise ModelError(msg)
 
 
+def _echo(value: Any) -> str:
+    """Return a value of the file as a message echoes it (JSON's null included)."""
+    return "null" if value is None else describe(value)
+
+
+def _join(entry: str, key: Any) -> str:
+    """Return the entry of ``key`` inside ``entry``."""
+    return f"{entry}.{key_text(key)}" if entry else key_text(key)
+
+
 def _check_twice(entry: str, data: Any) -> None:
     for key in getattr(data, "twice", ()):
-        _fail(
-            f"{entry}.{key}" if entry else key, "given twice; expected every name once"
-        )
+        _fail(_join(entry, key), "given twice; expected every name once")
 
 
 def _check_keys(entry: str, data: Any, allowed: tuple[str, ...]) -> dict[str, Any]:
     if not isinstance(data, dict):
-        _fail(entry, f"expected a table of keys ({', '.join(allowed)}), got {data!r}")
+        _fail(
+            entry, f"expected a table of keys ({', '.join(allowed)}), got {_echo(data)}"
+        )
     _check_twice(entry, data)
     for key in data:
         if key not in allowed:
             hint = suggest(key, allowed, listing=False) or (
                 f"; expected one of {', '.join(allowed)}"
             )
-            where = f"{entry}.{key}" if entry else key
-            _fail(where, f"unknown key {key!r}{hint}")
+            _fail(_join(entry, key), f"unknown key {describe(key)}{hint}")
     return data
+
+
+def _require(entry: str, data: dict[str, Any], *keys: str, what: str = "") -> None:
+    """Fail on the first of ``keys`` missing from ``data``."""
+    for key in keys:
+        if key not in data:
+            _fail(entry, f"missing key {key!r}{what}")
 
 
 def _vec(entry: str, value: Any) -> tuple[float, float]:
@@ -146,45 +309,64 @@ def _vec(entry: str, value: Any) -> tuple[float, float]:
         and len(value) == 2
         and all(isinstance(v, int | float) and not isinstance(v, bool) for v in value)
     ):
-        _fail(entry, f"expected two numbers [x, y], got {value!r}")
+        _fail(entry, f"expected two numbers [x, y], got {_echo(value)}")
     return (_number(entry, value[0]), _number(entry, value[1]))
 
 
-def _point(entry: str, value: Any) -> Any:
+def _point(entry: str, value: Any) -> PointSpec:
+    """Read a point: ``[x, y]``, a point's name or ``{from, toward, distance}``."""
     if isinstance(value, str):
         return value
     if isinstance(value, dict):
         d = _check_keys(entry, value, KEYS["toward"])
-        for key in KEYS["toward"]:
-            if key not in d:
-                _fail(
-                    entry, f"missing key {key!r} of a point {{from, toward, distance}}"
-                )
-        if not isinstance(d["distance"], int | float) or isinstance(
-            d["distance"], bool
-        ):
-            _fail(f"{entry}.distance", f"expected a number, got {d['distance']!r}")
+        _require(entry, d, *KEYS["toward"], what=" of a point {from, toward, distance}")
         return Toward(
             _text(f"{entry}.from", d["from"]),
             _text(f"{entry}.toward", d["toward"]),
-            float(d["distance"]),
+            _number(f"{entry}.distance", d["distance"]),
+        )
+    if (
+        isinstance(value, list)
+        and value
+        and all(isinstance(v, list | dict | str) for v in value)
+    ):
+        _fail(
+            entry,
+            f"expected one point ([x, y], a point's name or "
+            f"{{from, toward, distance}}), got {_echo(value)}",
         )
     return _vec(entry, value)
 
 
+def _axis(entry: str, value: Any) -> tuple[PointSpec, PointSpec]:
+    """Read a link's axis: two points of any form."""
+    if not isinstance(value, list) or len(value) != 2:
+        _fail(
+            entry,
+            "expected two points (each [x, y], a point's name or "
+            f"{{from, toward, distance}}), got {_echo(value)}",
+        )
+    if all(isinstance(v, int | float) and not isinstance(v, bool) for v in value):
+        _fail(
+            entry,
+            f"expected two points, got the direction {_echo(value)}; a direction "
+            "[x, y] is the axis of a prismatic joint, a link's axis runs between "
+            'two points such as ["A", "B"] or [[0.0, 0.0], [0.1, 0.0]]',
+        )
+    return (_point(f"{entry}[0]", value[0]), _point(f"{entry}[1]", value[1]))
+
+
 def _table(entry: str, value: dict, comps: tuple[str, ...], kind: str) -> LoadTable:
     d = _check_keys(entry, value, KEYS[kind])
-    for key in (*comps, "table"):
-        if key not in d:
-            _fail(entry, f"missing key {key!r} of a tabulated load")
+    _require(entry, d, *comps, "table", what=" of a tabulated load")
     seqs = []
     for key in (*comps, "table"):
         seq = d[key]
         if not isinstance(seq, list) or not all(
             isinstance(v, int | float) and not isinstance(v, bool) for v in seq
         ):
-            _fail(f"{entry}.{key}", f"expected a list of numbers, got {seq!r}")
-        seqs.append(tuple(float(v) for v in seq))
+            _fail(f"{entry}.{key}", f"expected a list of numbers, got {_echo(seq)}")
+        seqs.append(tuple(_number(f"{entry}.{key}", v) for v in seq))
     return LoadTable(
         _text(f"{entry}.over", d.get("over", "driver")), seqs[-1], tuple(seqs[:-1])
     )
@@ -192,83 +374,50 @@ def _table(entry: str, value: dict, comps: tuple[str, ...], kind: str) -> LoadTa
 
 def _text(entry: str, value: Any) -> str:
     if not isinstance(value, str):
-        _fail(entry, f"expected a name in quotes, got {value!r}")
+        _fail(entry, f"expected a name in quotes, got {_echo(value)}")
     return value
 
 
 def _number(entry: str, value: Any) -> float:
     if not isinstance(value, int | float) or isinstance(value, bool):
-        _fail(entry, f"expected a number, got {value!r}")
+        _fail(entry, f"expected a number, got {_echo(value)}")
     try:
         return float(value)
     except OverflowError:
-        _fail(entry, f"the number {value} is too large; expected a finite number")
-        raise  # unreachable: _fail raises
+        _fail(
+            entry,
+            f"the number is too large ({describe(value)}); expected a number of "
+            f"magnitude at most {LARGEST:g}",
+        )
 
 
 def parse(data: dict[str, Any]) -> Mechanism:
-    """Build a :class:`~assur.model.Mechanism` from a mechanism file's contents."""
+    """Build a :class:`~assur.model.Mechanism` from a mechanism file's contents.
+
+    Raises
+    ------
+    ModelError
+        With a one-line message naming the entry and what is wrong.
+    """
     _check_keys("", data, KEYS[""])
     version = data.get("format", FORMAT_VERSION)
     if type(version) is not int or version != FORMAT_VERSION:
         _fail(
-            "format", f"version {version!r} is not supported; expected {FORMAT_VERSION}"
+            "format",
+            f"version {_echo(version)} is not supported; expected {FORMAT_VERSION}",
         )
-    links = []
-    for name, d in _section("links", data.get("links", {})).items():
-        entry = f"links.{name}"
-        _check_keys(entry, d, KEYS["link"])
-        axis = d.get("axis")
-        if axis is not None and not (
-            isinstance(axis, list)
-            and len(axis) == 2
-            and all(isinstance(a, str) for a in axis)
-        ):
-            _fail(f"{entry}.axis", f"expected two point names, got {axis!r}")
-        links.append(
-            Link(
-                name,
-                None if axis is None else tuple(axis),
-                _opt_number(f"{entry}.mass", d.get("mass")),
-                None
-                if d.get("center") is None
-                else _point(f"{entry}.center", d["center"]),
-                _opt_number(f"{entry}.inertia", d.get("inertia")),
-            )
-        )
-    joints = []
-    for name, d in _section("joints", data.get("joints", {})).items():
-        entry = f"joints.{name}"
-        _check_keys(entry, d, KEYS["joint"])
-        for key in ("kind", "links", "at"):
-            if key not in d:
-                _fail(entry, f"missing key {key!r}")
-        pair = d["links"]
-        if not (isinstance(pair, list) and all(isinstance(x, str) for x in pair)):
-            _fail(f"{entry}.links", f"expected two link names, got {pair!r}")
-        joints.append(
-            Joint(
-                name,
-                _text(f"{entry}.kind", d["kind"]),
-                tuple(pair),
-                _point(f"{entry}.at", d["at"]),
-                None if d.get("axis") is None else _vec(f"{entry}.axis", d["axis"]),
-            )
-        )
-    drivers = []
-    for i, d in enumerate(_list("drivers", data.get("drivers", []))):
-        entry = f"drivers[{i}]"
-        _check_keys(entry, d, KEYS["driver"])
-        for key in ("joint", "omega"):
-            if key not in d:
-                _fail(entry, f"missing key {key!r}")
-        drivers.append(
-            Driver(
-                _text(f"{entry}.joint", d["joint"]),
-                _number(f"{entry}.omega", d["omega"]),
-                _number(f"{entry}.epsilon", d.get("epsilon", 0.0)),
-            )
-        )
+    links = [
+        _link(f"links.{key_text(name)}", name, d)
+        for name, d in _section("links", data.get("links", {})).items()
+    ]
+    joints = [
+        _joint(f"joints.{key_text(name)}", name, d)
+        for name, d in _section("joints", data.get("joints", {})).items()
+    ]
+    drivers = [
+        _driver(f"drivers[{i}]", d)
+        for i, d in enumerate(_list("drivers", data.get("drivers", [])))
+    ]
     gravity = None
     if "gravity" in data:
         g = _check_keys("gravity", data["gravity"], KEYS["gravity"])
@@ -279,11 +428,9 @@ def parse(data: dict[str, Any]) -> Mechanism:
     ]
     points = []
     for name, d in _section("points", data.get("points", {})).items():
-        entry = f"points.{name}"
+        entry = f"points.{key_text(name)}"
         _check_keys(entry, d, KEYS["point"])
-        for key in ("link", "at"):
-            if key not in d:
-                _fail(entry, f"missing key {key!r}")
+        _require(entry, d, "link", "at")
         points.append(
             Point(
                 name, _text(f"{entry}.link", d["link"]), _point(f"{entry}.at", d["at"])
@@ -301,16 +448,56 @@ def parse(data: dict[str, Any]) -> Mechanism:
     )
 
 
+def _link(entry: str, name: str, d: Any) -> Link:
+    _check_keys(entry, d, KEYS["link"])
+    return Link(
+        name,
+        None if d.get("axis") is None else _axis(f"{entry}.axis", d["axis"]),
+        _opt_number(f"{entry}.mass", d.get("mass")),
+        None if d.get("center") is None else _point(f"{entry}.center", d["center"]),
+        _opt_number(f"{entry}.inertia", d.get("inertia")),
+    )
+
+
+def _joint(entry: str, name: str, d: Any) -> Joint:
+    _check_keys(entry, d, KEYS["joint"])
+    _require(entry, d, "kind", "links", "at")
+    pair = d["links"]
+    if not (
+        isinstance(pair, list)
+        and len(pair) == 2
+        and all(isinstance(x, str) for x in pair)
+    ):
+        _fail(f"{entry}.links", f"expected two link names, got {_echo(pair)}")
+    return Joint(
+        name,
+        _text(f"{entry}.kind", d["kind"]),
+        (pair[0], pair[1]),
+        _point(f"{entry}.at", d["at"]),
+        None if d.get("axis") is None else _vec(f"{entry}.axis", d["axis"]),
+    )
+
+
+def _driver(entry: str, d: Any) -> Driver:
+    _check_keys(entry, d, KEYS["driver"])
+    _require(entry, d, "joint", "omega")
+    return Driver(
+        _text(f"{entry}.joint", d["joint"]),
+        _number(f"{entry}.omega", d["omega"]),
+        _number(f"{entry}.epsilon", d.get("epsilon", 0.0)),
+    )
+
+
 def _section(entry: str, value: Any) -> dict[str, Any]:
     if not isinstance(value, dict):
-        _fail(entry, f"expected a table of named entries, got {value!r}")
+        _fail(entry, f"expected a table of named entries, got {_echo(value)}")
     _check_twice(entry, value)
     return value
 
 
 def _list(entry: str, value: Any) -> list[Any]:
     if not isinstance(value, list):
-        _fail(entry, f"expected a list of tables ([[{entry}]]), got {value!r}")
+        _fail(entry, f"expected a list of tables ([[{entry}]]), got {_echo(value)}")
     return value
 
 
@@ -320,8 +507,7 @@ def _opt_number(entry: str, value: Any) -> float | None:
 
 def _load(entry: str, d: Any) -> Load:
     _check_keys(entry, d, KEYS["load"])
-    if "link" not in d:
-        _fail(entry, "missing key 'link'")
+    _require(entry, d, "link")
     force = d.get("force")
     if isinstance(force, dict):
         force = _table(f"{entry}.force", force, ("x", "y"), "force_table")
@@ -417,23 +603,50 @@ def dumps(mech: Mechanism) -> str:
 
 
 def save(mech: Mechanism, path: str | Path) -> None:
-    """Write ``mech`` as a TOML mechanism file."""
-    Path(path).write_text(dumps(mech), encoding="utf-8")
+    """Write ``mech`` as a TOML mechanism file.
+
+    The file is written whole or not at all (:func:`assur._output.write_text`).
+
+    Raises
+    ------
+    OutputError
+        When the file cannot be written; an old file of that name is kept.
+    """
+    write_text(path, dumps(mech))
+
+
+def _csv_text(table: Any) -> str:
+    """Return a result table as CSV text: a header of column names, 12 digits."""
+    buffer = _io.StringIO()
+    # names may hold quotes: the header follows the CSV rules like any row
+    csv.writer(buffer, lineterminator="\n").writerow(table.columns)
+    if len(table):
+        np.savetxt(buffer, table.to_array(), fmt="%.12g", delimiter=",")
+    return buffer.getvalue()
 
 
 def write_csv(table: Any, path: Any = None) -> str | None:
-    """Write a result table as CSV (12 significant digits); return it without path."""
-    buffer = _io.StringIO()
-    buffer.write(",".join(table.columns) + "\n")
-    if len(table):
-        np.savetxt(buffer, table.to_array(), fmt="%.12g", delimiter=",")
-    text = buffer.getvalue()
+    """Write a result table as CSV (12 significant digits); return it without path.
+
+    Parameters
+    ----------
+    table : Table
+    path : str, path-like, file object or "-", optional
+        Where to write: a file (written whole or not at all, see
+        :mod:`assur._output`), an open text stream, or ``"-"`` for standard output.
+
+    Raises
+    ------
+    OutputError
+        When the file cannot be written; an old file of that name is kept.
+    """
+    text = _csv_text(table)
     if path is None:
         return text
-    if path == "-":
-        sys.stdout.write(text)
+    if isinstance(path, str) and path == "-":
+        write_stdout(text)
     elif hasattr(path, "write"):
         path.write(text)
     else:
-        Path(path).write_text(text, encoding="utf-8")
+        write_text(path, text)
     return None

@@ -9,12 +9,14 @@ Validation happens here, once, so the numerical core can trust its input.
 from __future__ import annotations
 
 import math
+import unicodedata
+from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 
-from assur._text import suggest
+from assur._text import describe, suggest
 from assur.errors import ModelError
 
 __all__ = [
@@ -38,6 +40,12 @@ JOINT_KINDS = ("revolute", "prismatic", "slot")
 RESERVED = ("~", ".", ",")
 RESERVED_NAMES = ("angle", "driver", "shaking", "residual")
 """Names the tables use for their own columns."""
+LARGEST = 1e15
+"""Largest magnitude of a number in a mechanism (m, kg, N, rad/s, ...): products of
+a few such numbers (an acceleration, a jerk, a moment) stay far from overflow."""
+COINCIDENT = 1e-12
+"""Distance under which two points coincide, m (relative to the coordinates' size
+beyond 1 m, where round-off grows with them)."""
 
 Vec2 = tuple[float, float]
 
@@ -59,7 +67,7 @@ class Toward:
     distance: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "distance", _plain(self.distance))
+        _tuples(self, "distance")
 
 
 PointSpec = Vec2 | str | Toward
@@ -74,9 +82,11 @@ class Link:
     ----------
     name : str
         Identifier chosen by the user; ``"ground"`` is reserved for the frame.
-    axis : tuple of str, optional
-        Two points of the link; the link's angle is the direction from the first to
-        the second. Without an axis the angle is the rotation from the reference pose.
+    axis : tuple of two PointSpec, optional
+        Two distinct points; the link's angle is the direction from the first to the
+        second in the reference pose, turning with the link. A name stands for where
+        that point is in the reference pose, on this link or not. Without an axis the
+        angle is the rotation from the reference pose.
     mass : float, optional
         Mass, kg. A link without mass is massless.
     center : PointSpec, optional
@@ -86,13 +96,13 @@ class Link:
     """
 
     name: str
-    axis: tuple[str, str] | None = None
+    axis: tuple[PointSpec, PointSpec] | None = None
     mass: float | None = None
     center: PointSpec | None = None
     inertia: float | None = None
 
     def __post_init__(self) -> None:
-        _tuples(self, "axis", "center")
+        _tuples(self, "axis", "mass", "center", "inertia")
 
 
 @dataclass(frozen=True, slots=True)
@@ -145,6 +155,9 @@ class Driver:
     omega: float
     epsilon: float = 0.0
 
+    def __post_init__(self) -> None:
+        _tuples(self, "omega", "epsilon")
+
 
 @dataclass(frozen=True, slots=True)
 class LoadTable:
@@ -167,8 +180,7 @@ class LoadTable:
     values: tuple[tuple[float, ...], ...]
 
     def __post_init__(self) -> None:
-        _tuples(self, "table")
-        object.__setattr__(self, "values", tuple(_plain(v) for v in self.values))
+        _tuples(self, "table", "values")
 
 
 @dataclass(frozen=True, slots=True)
@@ -193,7 +205,7 @@ class Load:
     torque: float | LoadTable | None = None
 
     def __post_init__(self) -> None:
-        _tuples(self, "at", "force")
+        _tuples(self, "at", "force", "torque")
 
 
 @dataclass(frozen=True, slots=True)
@@ -249,8 +261,8 @@ class Mechanism:
     _hash: int | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        for attr in ("links", "joints", "drivers", "loads", "points"):
-            object.__setattr__(self, attr, tuple(getattr(self, attr)))
+        for attr, kind in _PARTS.items():
+            object.__setattr__(self, attr, _parts(attr, getattr(self, attr), kind))
         _tuples(self, "gravity")
         _validate(self)
 
@@ -277,7 +289,7 @@ class Mechanism:
         for link in self.links:
             if link.name == name:
                 return link
-        msg = f"unknown link {name!r}"
+        msg = f"unknown link {describe(name)}"
         raise KeyError(msg)
 
     def joint(self, name: str) -> Joint:
@@ -285,8 +297,31 @@ class Mechanism:
         for joint in self.joints:
             if joint.name == name:
                 return joint
-        msg = f"unknown joint {name!r}"
+        msg = f"unknown joint {describe(name)}"
         raise KeyError(msg)
+
+
+_PARTS = {
+    "links": Link,
+    "joints": Joint,
+    "drivers": Driver,
+    "loads": Load,
+    "points": Point,
+}
+
+
+def _parts(entry: str, value: Any, kind: type) -> tuple[Any, ...]:
+    """Return a mechanism's collection ``value`` as a tuple of ``kind``."""
+    if isinstance(value, str | bytes | dict) or not isinstance(value, Iterable):
+        _fail(entry, f"expected a sequence of {kind.__name__}, got {describe(value)}")
+    items = tuple(value)
+    for index, item in enumerate(items):
+        if not isinstance(item, kind):
+            _fail(
+                f"{entry}[{index}]",
+                f"expected a {kind.__name__}, got {describe(item)}",
+            )
+    return items
 
 
 def _plain(value: Any) -> Any:
@@ -306,59 +341,122 @@ def _tuples(obj: Any, *names: str) -> None:
             object.__setattr__(obj, name, _plain(value))
 
 
-def _fail(entry: str, message: str) -> None:
+def _fail(entry: str, message: str) -> NoReturn:
     msg = f"{entry}: {message}"
     raise ModelError(msg)
 
 
+def key_text(name: object) -> str:
+    """Return a user's name as it reads in an entry: as it is, or quoted and cut.
+
+    A name that is not a short printable string (a newline in it, a number, a
+    thousand characters) is echoed by :func:`assur._text.describe`, so that a
+    message stays one short line.
+    """
+    if isinstance(name, str) and name.isprintable() and 0 < len(name) <= 40:
+        return name
+    return describe(name, 40)
+
+
+def _spec_text(spec: object) -> str:
+    """Return a point specification as the file writes it, shortened."""
+    if isinstance(spec, Toward):
+        return (
+            f"{{from = {describe(spec.start)}, toward = {describe(spec.toward)}, "
+            f"distance = {describe(spec.distance)}}}"
+        )
+    return describe(spec)
+
+
+def _number(value: object) -> bool:
+    """Whether ``value`` is a number (not a boolean)."""
+    return isinstance(value, int | float) and not isinstance(value, bool)
+
+
 def _finite(value: object) -> bool:
-    return (
-        isinstance(value, int | float)
-        and not isinstance(value, bool)
-        and math.isfinite(value)
-    )
+    """Whether ``value`` is a number of magnitude at most :data:`LARGEST`."""
+    return _number(value) and abs(value) <= LARGEST  # type: ignore[arg-type]
+
+
+def _number_fault(value: object) -> str:
+    """Return what is wrong with a number that is not :func:`_finite`."""
+    if not _number(value):
+        return f"expected a number, got {describe(value)}"
+    if not math.isfinite(value):  # type: ignore[arg-type]
+        return f"expected a finite number, got {describe(value)}"
+    return f"expected a number of magnitude at most {LARGEST:g}, got {describe(value)}"
+
+
+def _check_number(entry: str, value: object, minimum: float | None = None) -> None:
+    if not _finite(value):
+        _fail(entry, _number_fault(value))
+    if minimum is not None and value < minimum:  # type: ignore[operator]
+        _fail(entry, f"expected a number >= {minimum:g}, got {describe(value)}")
 
 
 def _check_vec(entry: str, value: object) -> None:
     ok = (
         isinstance(value, tuple | list) and len(value) == 2 and all(map(_finite, value))
     )
-    if not ok:
-        _fail(entry, f"expected two finite numbers [x, y], got {value!r}")
+    if ok:
+        return
+    if isinstance(value, tuple | list) and len(value) == 2 and all(map(_number, value)):
+        bad = next(v for v in value if not _finite(v))
+        _fail(entry, f"{_number_fault(bad)} in {describe(value)}")
+    _fail(entry, f"expected two finite numbers [x, y], got {describe(value)}")
+
+
+def _control(name: str) -> str | None:
+    """Return the first control character of ``name`` (or a line separator)."""
+    for c in name:
+        if unicodedata.category(c) in ("Cc", "Zl", "Zp"):
+            return c
+    return None
 
 
 def _check_name(entry: str, name: object) -> None:
     if not isinstance(name, str) or not name or any(c in name for c in RESERVED):
-        _fail(entry, f"expected a non-empty name without '~', '.' or ',', got {name!r}")
+        _fail(
+            entry,
+            f"expected a non-empty name without '~', '.' or ',', got {describe(name)}",
+        )
+    control = _control(name)
+    if control is not None:
+        _fail(
+            entry,
+            f"the name {describe(name)} holds the control character "
+            f"{control!a}; expected printable characters only",
+        )
     if name in RESERVED_NAMES:
         _fail(
             entry,
-            f"the name {name!r} is taken by the result tables; expected "
+            f"the name {describe(name)} is taken by the result tables; expected "
             f"another name (not {', '.join(RESERVED_NAMES)})",
         )
+
+
+def _unknown(kind: str, name: object, known: Iterable[str]) -> str:
+    """Return the message of an unknown reference ``name``, with a hint."""
+    hint = suggest(name, known) if isinstance(name, str) else ""
+    return f"unknown {kind} {describe(name)}{hint}"
 
 
 def _check_point(entry: str, spec: object, points: set[str]) -> None:
     if isinstance(spec, str):
         if spec not in points:
-            _fail(entry, f"unknown point {spec!r}{suggest(spec, list(points))}")
+            _fail(entry, _unknown("point", spec, points))
     elif isinstance(spec, Toward):
         for key, ref in (("from", spec.start), ("toward", spec.toward)):
-            if ref not in points:
-                _fail(
-                    f"{entry}.{key}",
-                    f"unknown point {ref!r}{suggest(ref, list(points))}",
-                )
+            if not isinstance(ref, str) or ref not in points:
+                _fail(f"{entry}.{key}", _unknown("point", ref, points))
         if spec.start == spec.toward:
             _fail(
                 entry,
-                f"'from' and 'toward' are the same point {spec.start!r}; "
+                f"'from' and 'toward' are the same point {describe(spec.start)}; "
                 "expected two distinct points",
             )
         if not _finite(spec.distance):
-            _fail(
-                f"{entry}.distance", f"expected a finite number, got {spec.distance!r}"
-            )
+            _fail(f"{entry}.distance", _number_fault(spec.distance))
     else:
         _check_vec(entry, spec)
 
@@ -367,9 +465,52 @@ def _validate(mech: Mechanism) -> None:
     """Check every reference and value of ``mech``; raise on the first fault."""
     if not mech.links:
         _fail("links", "no moving links; expected at least one [links.NAME] entry")
+    for attr in ("name", "description"):
+        if not isinstance(getattr(mech, attr), str):
+            _fail(attr, f"expected a text, got {describe(getattr(mech, attr))}")
+    link_names = _validate_links(mech)
+    all_links = [GROUND, *link_names]
+    joint_names = _validate_joints(mech, all_links)
+    point_names = set(joint_names)
+    for point in mech.points:
+        entry = f"points.{key_text(point.name)}"
+        _check_name(entry, point.name)
+        if point.name in point_names:
+            _fail(entry, "a point or joint with this name exists already")
+        if not isinstance(point.link, str) or point.link not in link_names:
+            _fail(f"{entry}.link", _unknown("link", point.link, link_names))
+        point_names.add(point.name)
+    for joint in mech.joints:
+        _check_point(
+            f"joints.{key_text(joint.name)}.at", joint.at, point_names - {joint.name}
+        )
+    for point in mech.points:
+        _check_point(
+            f"points.{key_text(point.name)}.at", point.at, point_names - {point.name}
+        )
+    used = {name for joint in mech.joints for name in joint.links}
+    for link in mech.links:
+        entry = f"links.{key_text(link.name)}"
+        if link.name not in used:
+            _fail(entry, "a link with no joints; expected it in some joint's links")
+        if link.center is not None:
+            _check_point(f"{entry}.center", link.center, point_names)
+        if link.axis is not None:
+            _check_axis(f"{entry}.axis", link.axis, point_names)
+    _validate_drivers(mech)
+    if mech.gravity is not None:
+        _check_vec("gravity.g", mech.gravity)
+    for index, load in enumerate(mech.loads):
+        _validate_load(mech, f"loads[{index}]", load, link_names, point_names)
+    _check_resolvable(mech)
+    _check_cranks(mech)
+
+
+def _validate_links(mech: Mechanism) -> list[str]:
+    """Check the links' names and mass properties; return their names."""
     link_names: list[str] = []
     for link in mech.links:
-        entry = f"links.{link.name}"
+        entry = f"links.{key_text(link.name)}"
         _check_name(entry, link.name)
         if link.name == GROUND:
             _fail(entry, "'ground' is the frame and takes no entry")
@@ -378,144 +519,147 @@ def _validate(mech: Mechanism) -> None:
         link_names.append(link.name)
         for key in ("mass", "inertia"):
             value = getattr(link, key)
-            if value is not None and (not _finite(value) or value < 0):
-                _fail(f"{entry}.{key}", f"expected a number >= 0, got {value!r}")
-    all_links = [GROUND, *link_names]
+            if value is not None:
+                _check_number(f"{entry}.{key}", value, minimum=0.0)
+    return link_names
+
+
+def _validate_joints(mech: Mechanism, all_links: list[str]) -> list[str]:
+    """Check the joints' names, kinds, links and axes; return their names."""
     joint_names: list[str] = []
     for joint in mech.joints:
-        entry = f"joints.{joint.name}"
+        entry = f"joints.{key_text(joint.name)}"
         _check_name(entry, joint.name)
         if joint.name in joint_names:
             _fail(entry, "two joints with one name")
         joint_names.append(joint.name)
-        if joint.kind not in JOINT_KINDS:
+        if not isinstance(joint.kind, str) or joint.kind not in JOINT_KINDS:
             _fail(
                 f"{entry}.kind",
-                f"unknown kind {joint.kind!r}; expected one of "
+                f"unknown kind {describe(joint.kind)}; expected one of "
                 + ", ".join(JOINT_KINDS),
             )
-        if len(joint.links) != 2:
-            _fail(f"{entry}.links", f"expected two links, got {list(joint.links)!r}")
-        for name in joint.links:
-            if name not in all_links:
-                _fail(
-                    f"{entry}.links",
-                    f"unknown link {name!r}{suggest(name, all_links)}",
-                )
-        if joint.links[0] == joint.links[1]:
+        links = joint.links
+        if not isinstance(links, tuple) or len(links) != 2:
+            _fail(f"{entry}.links", f"expected two links, got {describe(links)}")
+        for name in links:
+            if not isinstance(name, str) or name not in all_links:
+                _fail(f"{entry}.links", _unknown("link", name, all_links))
+        if links[0] == links[1]:
             _fail(
                 f"{entry}.links",
-                f"joins link {joint.links[0]!r} to itself; "
+                f"joins link {describe(links[0])} to itself; "
                 "expected two different links",
             )
-        if joint.kind != "revolute":
-            if joint.axis is None:
-                _fail(entry, f"a {joint.kind} joint needs an 'axis' [x, y]")
-            _check_vec(f"{entry}.axis", joint.axis)
-            if math.hypot(*joint.axis) < 1e-12:
-                _fail(
-                    f"{entry}.axis",
-                    f"zero axis {list(joint.axis)!r}; expected a nonzero direction",
-                )
-    point_names = set(joint_names)
-    for point in mech.points:
-        entry = f"points.{point.name}"
-        _check_name(entry, point.name)
-        if point.name in point_names:
-            _fail(entry, "a point or joint with this name exists already")
-        if point.link not in link_names:
+        _check_joint_axis(entry, joint)
+    return joint_names
+
+
+def _check_joint_axis(entry: str, joint: Joint) -> None:
+    """Check a joint's slide line: required on prismatic and slot joints only."""
+    if joint.kind == "revolute":
+        if joint.axis is not None:
             _fail(
-                f"{entry}.link",
-                f"unknown link {point.link!r}{suggest(point.link, link_names)}",
+                f"{entry}.axis",
+                f"a revolute joint has no slide line, got {describe(joint.axis)}; "
+                "expected 'axis' only on prismatic and slot joints",
             )
-        point_names.add(point.name)
-    for joint in mech.joints:
-        _check_point(f"joints.{joint.name}.at", joint.at, point_names - {joint.name})
-    for point in mech.points:
-        _check_point(f"points.{point.name}.at", point.at, point_names - {point.name})
-    used = {name for joint in mech.joints for name in joint.links}
-    for link in mech.links:
-        entry = f"links.{link.name}"
-        if link.name not in used:
-            _fail(entry, "a link with no joints; expected it in some joint's links")
-        if link.center is not None:
-            _check_point(f"{entry}.center", link.center, point_names)
-        if link.axis is not None:
-            on_link = point_links(mech)
-            if len(link.axis) != 2 or link.axis[0] == link.axis[1]:
-                _fail(
-                    f"{entry}.axis",
-                    f"expected two distinct points, got {list(link.axis)!r}",
-                )
-            for name in link.axis:
-                if link.name not in on_link.get(name, ()):
-                    _fail(
-                        f"{entry}.axis", f"point {name!r} is not on link {link.name!r}"
-                    )
-    _validate_drivers(mech, all_links)
-    if mech.gravity is not None:
-        _check_vec("gravity.g", mech.gravity)
-    for index, load in enumerate(mech.loads):
-        _validate_load(mech, f"loads[{index}]", load, link_names, point_names)
-    _check_resolvable(mech)
+        return
+    if joint.axis is None:
+        _fail(entry, f"a {joint.kind} joint needs an 'axis' [x, y]")
+    _check_vec(f"{entry}.axis", joint.axis)
+    assert joint.axis is not None
+    if math.hypot(*joint.axis) < COINCIDENT:
+        _fail(
+            f"{entry}.axis",
+            f"zero axis {describe(joint.axis)}; expected a nonzero direction",
+        )
 
 
-def _validate_drivers(mech: Mechanism, all_links: list[str]) -> None:
+def _check_axis(entry: str, axis: object, points: set[str]) -> None:
+    """Check a link's axis: two points, each of any form."""
+    if not isinstance(axis, tuple) or len(axis) != 2 or all(map(_number, axis)):
+        hint = (
+            " (a direction [x, y] is the axis of a prismatic joint)"
+            if isinstance(axis, tuple) and len(axis) == 2
+            else ""
+        )
+        _fail(
+            entry,
+            f"expected two points (each [x, y], a point's name or "
+            f"{{from, toward, distance}}), got {describe(axis)}{hint}",
+        )
+    for index, spec in enumerate(axis):
+        _check_point(f"{entry}[{index}]", spec, points)
+
+
+def _validate_drivers(mech: Mechanism) -> None:
     joints = {joint.name: joint for joint in mech.joints}
     seen = set()
     for index, driver in enumerate(mech.drivers):
         entry = f"drivers[{index}]"
-        if driver.joint not in joints:
-            _fail(
-                f"{entry}.joint",
-                f"unknown joint {driver.joint!r}" + suggest(driver.joint, list(joints)),
-            )
+        if not isinstance(driver.joint, str) or driver.joint not in joints:
+            _fail(f"{entry}.joint", _unknown("joint", driver.joint, joints))
         if driver.joint in seen:
-            _fail(f"{entry}.joint", f"joint {driver.joint!r} is driven twice")
+            _fail(f"{entry}.joint", f"joint {describe(driver.joint)} is driven twice")
         seen.add(driver.joint)
         joint = joints[driver.joint]
         if joint.kind not in ("revolute", "prismatic"):
             _fail(
                 f"{entry}.joint",
-                f"joint {driver.joint!r} is a {joint.kind} joint; "
+                f"joint {describe(driver.joint)} is a {joint.kind} joint; "
                 "expected a revolute or prismatic joint",
             )
         if GROUND not in joint.links:
             _fail(
                 f"{entry}.joint",
-                f"joint {driver.joint!r} joins {joint.links[0]!r} "
-                f"and {joint.links[1]!r}; a driver must act between the frame "
-                "('ground') and its input link",
+                f"joint {describe(driver.joint)} joins {describe(joint.links[0])} "
+                f"and {describe(joint.links[1])}; a driver must act between the "
+                "frame ('ground') and its input link",
             )
         for key in ("omega", "epsilon"):
             if not _finite(getattr(driver, key)):
-                _fail(
-                    f"{entry}.{key}",
-                    f"expected a finite number, got {getattr(driver, key)!r}",
-                )
+                _fail(f"{entry}.{key}", _number_fault(getattr(driver, key)))
 
 
 def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -> None:
     prismatic = [j.name for j in mech.joints if j.kind != "revolute"]
     if table.over != "driver" and table.over not in prismatic:
+        hint = (
+            suggest(table.over, ["driver", *prismatic])
+            if isinstance(table.over, str)
+            else ""
+        )
         _fail(
             f"{entry}.over",
-            f"expected 'driver' or a prismatic joint, got "
-            f"{table.over!r}{suggest(table.over, ['driver', *prismatic])}",
+            f"expected 'driver' or a prismatic joint, got {describe(table.over)}{hint}",
+        )
+    if (
+        not isinstance(table.table, tuple)
+        or len(table.table) < 2
+        or not all(map(_finite, table.table))
+    ):
+        _fail(
+            f"{entry}.table",
+            f"expected at least two finite positions, got {describe(table.table)}",
         )
     xs = np.asarray(table.table, dtype=float)
-    if xs.ndim != 1 or len(xs) < 2 or not np.all(np.isfinite(xs)):
-        _fail(f"{entry}.table", "expected at least two finite positions")
     if np.any(np.diff(xs) <= 0):
         _fail(f"{entry}.table", "expected strictly increasing positions")
-    if len(table.values) != ncomp:
-        _fail(entry, f"expected {ncomp} value sequence(s), got {len(table.values)}")
-    for values in table.values:
-        if len(values) != len(xs) or not all(map(_finite, values)):
+    values = table.values
+    if not isinstance(values, tuple) or len(values) != ncomp:
+        count = len(values) if isinstance(values, tuple) else describe(values)
+        _fail(entry, f"expected {ncomp} value sequence(s), got {count}")
+    for seq in values:
+        if (
+            not isinstance(seq, tuple)
+            or len(seq) != len(xs)
+            or not all(map(_finite, seq))
+        ):
             _fail(
                 entry,
                 f"expected {len(xs)} finite values, one per table position, "
-                f"got {list(values)!r}",
+                f"got {describe(seq)}",
             )
 
 
@@ -526,11 +670,8 @@ def _validate_load(
     link_names: list[str],
     point_names: set[str],
 ) -> None:
-    if load.link not in link_names:
-        _fail(
-            f"{entry}.link",
-            f"unknown link {load.link!r}{suggest(load.link, link_names)}",
-        )
+    if not isinstance(load.link, str) or load.link not in link_names:
+        _fail(f"{entry}.link", _unknown("link", load.link, link_names))
     if load.force is None and load.torque is None:
         _fail(entry, "expected a 'force' or a 'torque'")
     if load.force is not None:
@@ -545,21 +686,64 @@ def _validate_load(
     if isinstance(load.torque, LoadTable):
         _validate_table(f"{entry}.torque", load.torque, 1, mech)
     elif load.torque is not None and not _finite(load.torque):
-        _fail(f"{entry}.torque", f"expected a finite number, got {load.torque!r}")
+        _fail(f"{entry}.torque", _number_fault(load.torque))
 
 
 def _check_resolvable(mech: Mechanism) -> None:
     """Every point must have coordinates (a from/toward pair must not coincide)."""
     for joint in mech.joints:
-        resolve_point(mech, joint.at, f"joints.{joint.name}.at")
+        resolve_point(mech, joint.at, f"joints.{key_text(joint.name)}.at")
     for point in mech.points:
-        resolve_point(mech, point.at, f"points.{point.name}.at")
+        resolve_point(mech, point.at, f"points.{key_text(point.name)}.at")
     for link in mech.links:
         if link.center is not None:
-            resolve_point(mech, link.center, f"links.{link.name}.center")
+            resolve_point(mech, link.center, f"links.{key_text(link.name)}.center")
+        if link.axis is not None:
+            entry = f"links.{key_text(link.name)}.axis"
+            a, b = (
+                resolve_point(mech, p, f"{entry}[{i}]") for i, p in enumerate(link.axis)
+            )
+            if _coincide(a, b):
+                _fail(
+                    entry,
+                    f"its two points {_spec_text(link.axis[0])} and "
+                    f"{_spec_text(link.axis[1])} coincide at ({a[0]:.6g}, {a[1]:.6g}) "
+                    "in the reference pose; expected two distinct points",
+                )
     for index, load in enumerate(mech.loads):
         if load.at is not None:
             resolve_point(mech, load.at, f"loads[{index}].at")
+
+
+def _check_cranks(mech: Mechanism) -> None:
+    """Refuse a crank whose joints all sit at its pivot: it would drive nothing."""
+    for index, driver in enumerate(mech.drivers):
+        joint = mech.joint(driver.joint)
+        if joint.kind != "revolute":
+            continue
+        link = joint.links[1] if joint.links[0] == GROUND else joint.links[0]
+        pivot = resolve_point(mech, joint.at)
+        others = [j for j in mech.joints if j is not joint and link in j.links]
+        moving = [
+            j
+            for j in others
+            if j.kind != "revolute" or not _coincide(pivot, resolve_point(mech, j.at))
+        ]
+        if others and not moving:
+            names = ", ".join(describe(j.name) for j in others[:4])
+            _fail(
+                f"drivers[{index}].joint",
+                f"the input link {describe(link)} has its joints {names} at the "
+                f"pivot of {describe(joint.name)} (a crank of zero length), so the "
+                "driver moves nothing; expected a joint of the input link away from "
+                "its pivot",
+            )
+
+
+def _coincide(a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether two reference-pose points are one (see :data:`COINCIDENT`)."""
+    size = max(1.0, float(np.max(np.abs(a))), float(np.max(np.abs(b))))
+    return float(np.hypot(*(b - a))) <= COINCIDENT * size
 
 
 def resolve_point(
@@ -571,7 +755,9 @@ def resolve_point(
     ----------
     mech : Mechanism
     spec : PointSpec
-        Coordinates, a joint's or extra point's name, or a :class:`Toward`.
+        Coordinates, a joint's or extra point's name, or a :class:`Toward`. A name
+        stands for where that joint or point is in the reference pose, whichever
+        link the specification belongs to.
     entry : str
         Where the specification was found, for error messages.
 
@@ -588,17 +774,17 @@ def resolve_point(
         for point in mech.points:
             if point.name == spec:
                 return resolve_point(mech, point.at, entry, _depth + 1)
-        _fail(entry, f"unknown point {spec!r}")
+        _fail(entry, f"unknown point {describe(spec)}")
     if isinstance(spec, Toward):
         a = resolve_point(mech, spec.start, entry, _depth + 1)
         b = resolve_point(mech, spec.toward, entry, _depth + 1)
-        length = float(np.hypot(*(b - a)))
-        if length < 1e-12:
+        if _coincide(a, b):
             _fail(
                 entry,
-                f"points {spec.start!r} and {spec.toward!r} coincide; "
+                f"points {describe(spec.start)} and {describe(spec.toward)} coincide; "
                 "expected two distinct points",
             )
+        length = float(np.hypot(*(b - a)))
         return a + (b - a) * (spec.distance / length)
     return np.asarray(spec, dtype=float)
 

@@ -3,26 +3,47 @@
 :mod:`assur.cli` calls :func:`register` to add these commands. Each handler reads the
 mechanism file, runs the analysis and writes pictures with matplotlib's Agg backend,
 closing every figure it opens; bad input raises an :class:`~assur.errors.AssurError`
-that the command line prints as one line.
+that the command line prints as one line. Every picture is written whole or not at
+all (:mod:`assur._output`), the diagrams as one set.
 """
 
 from __future__ import annotations
 
 import argparse
 import contextlib
+import math
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from assur.errors import ModelError
+from assur._cli_common import (
+    check_not_input,
+    check_range,
+    load_mechanism,
+    parse_angles,
+    positions,
+)
+from assur._output import output_folder, output_path, path_text
+from assur._text import describe
+from assur.errors import UsageError
 
 __all__ = ["register"]
 
 PICTURE_SUFFIXES = (".png", ".svg", ".pdf")
 DPI = 150
 """Resolution of the PNG pictures, dots per inch."""
+DPI_RANGE = (10.0, 1200.0)
+"""Resolutions accepted for pictures, dots per inch."""
+GIF_DPI_RANGE = (10.0, 300.0)
+"""Resolutions accepted for animations, dots per inch (every frame is kept)."""
+FPS_RANGE = (0.1, 100.0)
+"""Frame rates accepted, frames per second (a GIF counts in hundredths of a second)."""
+FRAMES_RANGE = (1, 1000)
+"""Numbers of frames accepted in an animation."""
+DIAGRAMS = ("motion", "paths", "decomposition", "torque", "hodographs", "shaking")
+"""Names of the diagrams (PNG files) that ``assur diagrams`` writes."""
 
 
 def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
@@ -58,17 +79,21 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     )
     p.add_argument("--angles", **angles)
     p = sub.add_parser("animate", help="write an animated GIF of the sweep")
-    _common(p, "PATH", "GIF file to write", 80.0)
+    _common(p, "PATH", "GIF file to write", 80.0, GIF_DPI_RANGE)
     p.add_argument("--angles", **angles)
     p.add_argument(
         "--frames",
         type=int,
         default=72,
         metavar="N",
-        help="at most N frames, evenly spread over the sweep (default 72)",
+        help="at most N frames, evenly spread over the sweep (default 72, "
+        f"{FRAMES_RANGE[0]} to {FRAMES_RANGE[1]})",
     )
     p.add_argument(
-        "--fps", type=float, default=20.0, help="frames per second (default 20)"
+        "--fps",
+        type=float,
+        default=20.0,
+        help=f"frames per second (default 20, {FPS_RANGE[0]:g} to {FPS_RANGE[1]:g})",
     )
     p.add_argument("--forces", action="store_true", help="draw the loads and reactions")
     p = sub.add_parser("report", help="write an HTML report of the analysis")
@@ -83,7 +108,11 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
 
 
 def _common(
-    p: argparse.ArgumentParser, metavar: str, text: str, dpi: float | None = None
+    p: argparse.ArgumentParser,
+    metavar: str,
+    text: str,
+    dpi: float | None = None,
+    dpi_range: tuple[float, float] = DPI_RANGE,
 ) -> None:
     p.add_argument("file", type=Path)
     p.add_argument(
@@ -94,15 +123,15 @@ def _common(
             "--dpi",
             type=float,
             default=dpi,
-            help=f"resolution, dots per inch (default {dpi:g})",
+            help=f"resolution, dots per inch (default {dpi:g}, {dpi_range[0]:g} to "
+            f"{dpi_range[1]:g})",
         )
 
 
-def _check_dpi(args: argparse.Namespace) -> float:
-    if not args.dpi > 0:
-        msg = f"--dpi {args.dpi:g}: expected a positive resolution, dots per inch"
-        raise ModelError(msg)
-    return float(args.dpi)
+def _check_dpi(args: argparse.Namespace, bounds: tuple[float, float]) -> float:
+    return check_range(
+        "--dpi", args.dpi, *bounds, "a positive resolution", "dots per inch"
+    )
 
 
 def _pyplot() -> Any:
@@ -127,12 +156,19 @@ def _figures() -> Iterator[Any]:
             plt.close(number)
 
 
-def _suffix(path: Path, allowed: tuple[str, ...]) -> None:
+def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
+    """Return ``-o``, checked: a known suffix and not the mechanism file."""
+    path: Path = args.output
     suffix = path.suffix.lower()
     if suffix not in allowed:
         wanted = " or ".join(allowed)
-        msg = f"-o {path}: unknown file type {suffix or '(none)'!r}; expected {wanted}"
-        raise ModelError(msg)
+        msg = (
+            f"-o {path_text(path)}: unknown file type {describe(suffix or '(none)')}; "
+            f"expected {wanted}"
+        )
+        raise UsageError(msg)
+    check_not_input("-o", path, args.file)
+    return path
 
 
 def _table(mech: Any, positions: Any, forces: bool) -> Any:
@@ -142,40 +178,45 @@ def _table(mech: Any, positions: Any, forces: bool) -> Any:
     return force_table(mech, positions) if forces else kinematics(mech, positions)
 
 
-def _save(fig: Any, path: Path, dpi: float) -> None:
-    """Write ``fig`` and close it; a path that cannot be written is bad input."""
+def _draw(fig: Any, path: Path, dpi: float) -> None:
+    """Write ``fig`` to ``path`` in the format of its suffix and close it."""
     try:
-        fig.savefig(path, dpi=dpi, bbox_inches="tight")
-    except OSError as err:
-        msg = f"-o {path}: cannot write the file ({err.strerror or err})"
-        raise ModelError(msg) from err
+        fig.savefig(path, dpi=dpi, bbox_inches="tight", format=path.suffix[1:].lower())
     finally:
         _pyplot().close(fig)
-    print(f"wrote {path}")
+
+
+def _save(fig: Any, path: Path, dpi: float) -> None:
+    """Write ``fig`` to ``path``, whole or not at all, and close it."""
+    try:
+        with output_path(path, any_error=True) as temporary:
+            _draw(fig, temporary, dpi)
+    finally:
+        _pyplot().close(fig)
+    print(f"wrote {path_text(path)}")
 
 
 def _cmd_plot(args: argparse.Namespace) -> int:
     from assur.analysis import default_positions
-    from assur.cli import load_mechanism, parse_angles
     from assur.plotting import draw
 
-    _suffix(args.output, PICTURE_SUFFIXES)
-    dpi = _check_dpi(args)
+    output = _output(args, PICTURE_SUFFIXES)
+    dpi = _check_dpi(args, DPI_RANGE)
+    if args.scale is not None and not 0 < args.scale < math.inf:
+        msg = f"--scale {args.scale:g}: expected a positive number of newtons per cm"
+        raise UsageError(msg)
     mech = load_mechanism(args.file)
     drivers = max(1, len(mech.drivers))
     if args.angle is None:
         position = default_positions(mech)[:1]
     else:
-        position = parse_angles(args.angle.replace("--angles", "--angle"), drivers)
+        position = parse_angles(args.angle, drivers, option="--angle")
         if position.shape[0] != 1:
             msg = (
-                f"--angle {args.angle}: {position.shape[0]} positions; expected one "
-                "value per driver"
+                f"--angle {describe(args.angle)[1:-1]}: {position.shape[0]} positions; "
+                "expected one value per driver"
             )
-            raise ModelError(msg)
-    if args.scale is not None and not args.scale > 0:
-        msg = f"--scale {args.scale:g}: expected a positive number of newtons per cm"
-        raise ModelError(msg)
+            raise UsageError(msg)
     table = _table(mech, position, args.forces)
     with _figures() as plt:
         fig, ax = plt.subplots(figsize=(9.0, 6.0), layout="constrained")
@@ -186,14 +227,13 @@ def _cmd_plot(args: argparse.Namespace) -> int:
             scale=args.scale,
             labels=not args.no_labels,
         )
-        _save(fig, args.output, dpi)
+        _save(fig, output, dpi)
     return 0
 
 
 def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:
     """Return the mechanism and its table over ``--angles`` (forces if it has loads)."""
     from assur._loads import compile_loads
-    from assur.cli import load_mechanism, positions
     from assur.plan import plan_of
 
     mech = load_mechanism(args.file)
@@ -206,24 +246,23 @@ def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:
 def _cmd_diagrams(args: argparse.Namespace) -> int:
     from assur import plotting
 
-    dpi = _check_dpi(args)
-    _, table = _sweep(args, None)
+    dpi = _check_dpi(args, DPI_RANGE)
     out: Path = args.output
     if out.exists() and not out.is_dir():
-        msg = f"-o {out}: is a file; expected a folder for the diagrams"
-        raise ModelError(msg)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as err:
-        msg = f"-o {out}: cannot create the folder ({err.strerror or err})"
-        raise ModelError(msg) from err
-    with _figures() as plt:
-        _diagrams(plotting, plt, table, out, dpi)
+        msg = f"-o {path_text(out)}: is a file; expected a folder for the diagrams"
+        raise UsageError(msg)
+    for name in DIAGRAMS:
+        check_not_input("-o", out / f"{name}.png", args.file)
+    _, table = _sweep(args, None)
+    with _figures() as plt, output_folder(out, any_error=True) as folder:
+        written = _diagrams(plotting, plt, table, folder, dpi)
+    for name in written:
+        print(f"wrote {path_text(out / name)}")
     return 0
 
 
-def _diagrams(plotting: Any, plt: Any, table: Any, out: Path, dpi: float) -> None:
-    """Write the set of diagrams of ``table`` to the folder ``out``."""
+def _diagrams(plotting: Any, plt: Any, table: Any, out: Path, dpi: float) -> list[str]:
+    """Write the set of diagrams of ``table`` to the folder ``out``; name them."""
     fig, axes = plt.subplots(
         3, 1, figsize=(8.0, 9.0), sharex=True, layout="constrained"
     )
@@ -235,63 +274,62 @@ def _diagrams(plotting: Any, plt: Any, table: Any, out: Path, dpi: float) -> Non
     )
     for ax in axes[:-1]:
         ax.set_xlabel("")
-    _save(fig, out / "motion.png", dpi)
-    _save(plotting.plot_paths(table).figure, out / "paths.png", dpi)
-    _save(plotting.draw_decomposition(table), out / "decomposition.png", dpi)
+    figures = {
+        "motion": lambda: fig,
+        "paths": lambda: plotting.plot_paths(table).figure,
+        "decomposition": lambda: plotting.draw_decomposition(table),
+    }
     if table.force_state is not None:
-        _save(plotting.plot_torque(table).figure, out / "torque.png", dpi)
-        _save(plotting.plot_hodographs(table), out / "hodographs.png", dpi)
-        _save(plotting.plot_shaking(table), out / "shaking.png", dpi)
+        figures |= {
+            "torque": lambda: plotting.plot_torque(table).figure,
+            "hodographs": lambda: plotting.plot_hodographs(table),
+            "shaking": lambda: plotting.plot_shaking(table),
+        }
+    written = []
+    for name, make in figures.items():
+        _draw(make(), out / f"{name}.png", dpi)
+        written.append(f"{name}.png")
+    return written
 
 
 def _cmd_animate(args: argparse.Namespace) -> int:
-    from assur.cli import load_mechanism, positions
     from assur.plotting import animate
 
-    _suffix(args.output, (".gif",))
-    dpi = _check_dpi(args)
-    if args.frames < 1 or not args.fps > 0:
+    output = _output(args, (".gif",))
+    dpi = _check_dpi(args, GIF_DPI_RANGE)
+    if not FRAMES_RANGE[0] <= args.frames <= FRAMES_RANGE[1]:
         msg = (
-            f"--frames {args.frames}, --fps {args.fps:g}: expected at least one frame "
-            "and a positive frame rate"
+            f"--frames {args.frames}: expected at least one frame and at most "
+            f"{FRAMES_RANGE[1]}"
         )
-        raise ModelError(msg)
+        raise UsageError(msg)
+    fps = check_range(
+        "--fps", args.fps, *FPS_RANGE, "a frame rate", "frames per second"
+    )
     mech = load_mechanism(args.file)
     sweep = positions(mech, args.angles)
     pick = np.unique(
         np.linspace(0, len(sweep) - 1, min(args.frames, len(sweep))).round().astype(int)
     )
     table = _table(mech, sweep[pick], args.forces)
-    try:
-        with _figures():
-            count = animate(
-                table, args.output, forces=args.forces, fps=args.fps, dpi=dpi
-            )
-    except OSError as err:
-        msg = f"-o {args.output}: cannot write the file ({err.strerror or err})"
-        raise ModelError(msg) from err
-    print(f"wrote {args.output} ({count} frames)")
+    with _figures(), output_path(output, any_error=True) as temporary:
+        count = animate(table, temporary, forces=args.forces, fps=fps, dpi=dpi)
+    print(f"wrote {path_text(output)} ({count} frames)")
     return 0
 
 
 def _cmd_report(args: argparse.Namespace) -> int:
-    from assur.cli import load_mechanism, positions
-
-    _suffix(args.output, (".html", ".htm"))
+    output = _output(args, (".html", ".htm"))
     try:
         from assur.html import write_report
     except ImportError as err:
         msg = (
             "report: the HTML report (assur.html) is not available in this installation"
         )
-        raise ModelError(msg) from err
+        raise UsageError(msg) from err
     mech = load_mechanism(args.file)
     angles = None if args.angles is None else positions(mech, args.angles)
-    try:
-        with _figures():
-            write_report(mech, args.output, angles=angles)
-    except OSError as err:
-        msg = f"-o {args.output}: cannot write the file ({err.strerror or err})"
-        raise ModelError(msg) from err
-    print(f"wrote {args.output}")
+    with _figures():
+        write_report(mech, output, angles=angles)
+    print(f"wrote {path_text(output)}")
     return 0

@@ -44,6 +44,7 @@ RANKS = {
     "assur.catalog": 10,
     # the public API re-exports the core and io
     "assur": 11,
+    "assur._cli_common": 12,
     "assur.cli": 12,
     "assur.pictures_cli": 12,
     "assur.__main__": 13,
@@ -60,11 +61,7 @@ AGAINST_THE_DIRECTION = {
 }
 
 # (importer, imported): imports left out of the cycle check, each with its reason.
-KNOWN_CYCLES = {
-    # being removed: cli registers the picture commands of pictures_cli, which borrows
-    # cli's load_mechanism, parse_angles and positions inside its commands
-    ("assur.pictures_cli", "assur.cli"),
-}
+KNOWN_CYCLES: set[tuple[str, str]] = set()
 
 
 def _module_name(path: Path) -> str:

@@ -12,6 +12,7 @@ import os
 from typing import Any
 
 from assur._loads import compile_loads
+from assur._output import write_text
 from assur._structure import structure
 from assur.analysis import default_positions, forces, kinematics
 from assur.errors import AssemblyError
@@ -80,7 +81,13 @@ def write_report(
 ) -> None:
     """Write the HTML report of ``mechanism`` to ``path`` (UTF-8).
 
-    Parameters are those of :func:`render_report`.
+    Parameters are those of :func:`render_report`. The file is written whole or not
+    at all: a failed write keeps an old file of that name.
+
+    Raises
+    ------
+    OutputError
+        When the file cannot be written.
 
     Examples
     --------
@@ -92,6 +99,4 @@ def write_report(
     ...     target.read_text(encoding="utf-8").count("<html")
     1
     """
-    text = render_report(mechanism, angles)
-    with open(path, "w", encoding="utf-8", newline="\n") as stream:
-        stream.write(text)
+    write_text(path, render_report(mechanism, angles))

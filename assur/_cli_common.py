@@ -1,0 +1,145 @@
+"""What every command of the command line shares: positions, the file, option checks.
+
+:mod:`assur.cli` and :mod:`assur.pictures_cli` both read the mechanism file, turn
+``--angles`` into driver positions and check their options here, so that neither
+imports the other. Faults of an option raise :class:`~assur.errors.UsageError`.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from assur._output import path_text
+from assur._text import describe
+from assur.errors import UsageError
+
+__all__ = [
+    "MAX_POSITIONS",
+    "check_not_input",
+    "check_range",
+    "load_mechanism",
+    "parse_angles",
+    "positions",
+]
+
+MAX_POSITIONS = 10_000_000
+"""Most driver positions one command analyses (the library takes any number)."""
+
+
+def parse_angles(spec: str, drivers: int = 1, option: str = "--angles") -> np.ndarray:
+    """Parse ``START:STOP:STEP`` (STOP included when on the grid) or a single value.
+
+    Several drivers take one range each, separated by commas, with equal counts.
+    ``option`` names the option in messages.
+
+    Raises
+    ------
+    UsageError
+        When ``spec`` cannot be read or gives more than :data:`MAX_POSITIONS`.
+
+    Examples
+    --------
+    >>> parse_angles("0:90:45").tolist()
+    [0.0, 45.0, 90.0]
+    >>> parse_angles("0:10:5,30:40:5", drivers=2).tolist()
+    [[0.0, 30.0], [5.0, 35.0], [10.0, 40.0]]
+    """
+    parts = spec.split(",")
+    if len(parts) != drivers:
+        msg = (
+            f"{option}: {len(parts)} range(s) given for {drivers} driver(s); expected "
+            "one START:STOP:STEP per driver, separated by commas"
+        )
+        raise UsageError(msg)
+    ranges = [_one_range(part, option) for part in parts]
+    if len({len(r) for r in ranges}) != 1:
+        counts = ", ".join(str(len(r)) for r in ranges)
+        msg = f"{option}: the ranges have {counts} positions; expected equal counts"
+        raise UsageError(msg)
+    return ranges[0] if drivers == 1 else np.stack(ranges, axis=-1)
+
+
+def _one_range(text: str, option: str) -> np.ndarray:
+    """Return the positions of one ``START:STOP:STEP`` or of a single value."""
+    fields = text.split(":")
+    try:
+        values = [float(f) for f in fields]
+    except ValueError:
+        values = []
+    if len(values) == 1 and math.isfinite(values[0]):
+        return np.array(values)
+    if (
+        len(values) != 3
+        or not all(map(math.isfinite, values))
+        or values[2] == 0
+        or (values[1] - values[0]) * math.copysign(1.0, values[2]) < 0
+    ):
+        msg = (
+            f"{option}: cannot read {describe(text)}; expected START:STOP:STEP with a "
+            "step that leads from START to STOP, or a single value"
+        )
+        raise UsageError(msg)
+    start, stop, step = values
+    # halves first: STOP - START may overflow where their halves do not
+    count = (stop / 2 - start / 2) / step * 2
+    if not count < MAX_POSITIONS:
+        shown = f"{math.floor(count) + 1}" if math.isfinite(count) else "too many"
+        msg = (
+            f"{option}: {describe(text)} gives {shown} positions; expected at most "
+            f"{MAX_POSITIONS} (a larger step)"
+        )
+        raise UsageError(msg)
+    return start + step * np.arange(math.floor(count + 1e-9) + 1)
+
+
+def positions(mech: Any, spec: str | None, option: str = "--angles") -> np.ndarray:
+    """Driver positions from ``--angles`` or the default full turn."""
+    from assur.analysis import default_positions
+
+    if spec is None:
+        return default_positions(mech)
+    return parse_angles(spec, max(1, len(mech.drivers)), option)
+
+
+def load_mechanism(path: Path) -> Any:
+    """Read the mechanism file named on the command line."""
+    from assur.io import load
+
+    return load(path)
+
+
+def check_range(
+    option: str, value: float, low: float, high: float, wanted: str, unit: str
+) -> float:
+    """Return ``value`` if it lies in [low, high], else raise a UsageError.
+
+    Examples
+    --------
+    >>> check_range("--dpi", 150.0, 10, 1200, "a resolution", "dots per inch")
+    150.0
+    """
+    if not low <= value <= high:
+        msg = f"{option} {value:g}: expected {wanted} from {low:g} to {high:g} {unit}"
+        raise UsageError(msg)
+    return float(value)
+
+
+def check_not_input(option: str, output: Any, source: Path) -> None:
+    """Refuse an output that is the mechanism file read (the same file, any name)."""
+    if str(output) == "-":
+        return
+    try:
+        same = os.path.samefile(output, source)
+    except (OSError, ValueError):
+        same = os.path.realpath(output) == os.path.realpath(source)
+    if same:
+        msg = (
+            f"{option} {path_text(output)}: is the mechanism file being read; "
+            "expected another file for the output"
+        )
+        raise UsageError(msg)

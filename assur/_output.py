@@ -1,0 +1,286 @@
+"""Outputs written whole or not at all: files and sets of files.
+
+Every file that assur writes (mechanism files, CSV tables, pictures, animations, HTML
+reports) is first written to a temporary file in the target's folder and then moved
+over the target with :func:`os.replace`, so that a write that fails midway (a full
+disk, Ctrl-C, a killed process) leaves the old file as it was and no partial file.
+Targets that are not regular files (standard output, a FIFO, a device) are written in
+place. A failed write raises :class:`~assur.errors.OutputError` naming the output.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import errno
+import os
+import secrets
+import shutil
+import stat
+import sys
+import tempfile
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+from assur.errors import AssurError, OutputError
+
+__all__ = [
+    "output_folder",
+    "output_path",
+    "path_text",
+    "write_all",
+    "write_bytes",
+    "write_stdout",
+    "write_text",
+]
+
+NAME_KEPT = 80
+"""Most characters of the target's name kept in a temporary name (names are short)."""
+IN_PLACE = ("/dev/", "/proc/")
+"""Folders whose entries are written in place (``/dev/stdout`` is not to replace)."""
+
+
+def path_text(path: Any) -> str:
+    """Return a path as a message shows it: as it is, control characters escaped."""
+    text = os.fsdecode(path) if isinstance(path, bytes | os.PathLike) else str(path)
+    return "".join(c if c.isprintable() else ascii(c)[1:-1] for c in text)
+
+
+def write_text(path: str | os.PathLike[str], text: str) -> None:
+    r"""Write ``text`` to the file ``path`` as UTF-8, whole or not at all.
+
+    Raises
+    ------
+    OutputError
+        When the file cannot be written; an old file of that name is kept.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> target = pathlib.Path(tempfile.mkdtemp()) / "note.txt"
+    >>> write_text(target, "one line\n")
+    >>> target.read_text()
+    'one line\n'
+    """
+    write_bytes(path, text.encode("utf-8"))
+
+
+def write_bytes(path: str | os.PathLike[str], data: bytes) -> None:
+    """Write ``data`` to the file ``path``, whole or not at all.
+
+    Raises
+    ------
+    OutputError
+        When the file cannot be written; an old file of that name is kept.
+    """
+    with output_path(path) as temporary, open(temporary, "wb") as stream:
+        write_all(stream, data)
+
+
+def write_all(stream: Any, data: bytes) -> None:
+    """Write every byte of ``data`` to a binary stream, or raise its OSError.
+
+    A buffered stream may write part of a large block and drop the rest when the
+    disk fills up; writing again what is left makes the fault show.
+    """
+    view = memoryview(data)
+    while view:
+        count = stream.write(view)
+        if not count:
+            msg = "the stream took no data"
+            raise OSError(errno.EIO, msg)
+        view = view[count:]
+    stream.flush()
+
+
+def write_stdout(text: str) -> None:
+    """Write ``text`` to standard output, all of it or an OSError.
+
+    Characters that its encoding cannot show are written as backslash escapes.
+    """
+    stream = sys.stdout
+    buffer = getattr(stream, "buffer", None)
+    if buffer is None:  # a notebook's stream: no bytes below
+        stream.write(text)
+        return
+    stream.flush()
+    write_all(buffer, text.encode(stream.encoding or "utf-8", "backslashreplace"))
+
+
+@contextlib.contextmanager
+def output_path(
+    path: str | os.PathLike[str], any_error: bool = False
+) -> Iterator[Path]:
+    """Yield the path a writer should write to; it replaces ``path`` on success.
+
+    For a regular file (or a new one) the path is a temporary file beside ``path``
+    with the same suffix, so writers that choose the format by the suffix
+    (matplotlib's ``savefig``, GIF writers) still do; when the block ends without
+    an exception the temporary file replaces ``path``, otherwise it is removed and
+    ``path`` is left as it was. A FIFO, a device or another target that is not a
+    regular file is yielded as it is and written in place.
+
+    Parameters
+    ----------
+    path : str or path-like
+        The output file.
+    any_error : bool
+        Report any exception of the writer (not only an :class:`OSError`) as an
+        :class:`OutputError`: picture writers fail in many ways on a full disk.
+        Errors of assur itself pass unchanged.
+
+    Raises
+    ------
+    OutputError
+        When the file cannot be written.
+    """
+    target, in_place = _target(Path(path))
+    where = path_text(path)
+    if in_place:
+        with _reported(where, any_error):
+            yield target
+        return
+    with _reported(where, any_error):
+        temporary = _reserve(target)
+    try:
+        with _reported(where, any_error):
+            yield temporary
+            _sync(temporary)
+            os.replace(temporary, target)
+    except BaseException:
+        _remove(temporary)
+        raise
+
+
+@contextlib.contextmanager
+def output_folder(
+    path: str | os.PathLike[str], any_error: bool = False
+) -> Iterator[Path]:
+    """Yield an empty temporary folder; on success its files move into ``path``.
+
+    The writer puts a set of files (the diagrams of a sweep, say) in the yielded
+    folder, which lies beside ``path``. When the block ends without an exception the
+    folder ``path`` is created if need be and every file replaces its namesake
+    there; otherwise none of them lands. The temporary folder is removed either way.
+
+    Raises
+    ------
+    OutputError
+        When ``path`` is a file or the files cannot be written.
+    """
+    target = Path(path)
+    where = path_text(path)
+    if target.exists() and not target.is_dir():
+        msg = f"{where}: is a file; expected a folder"
+        raise OutputError(msg)
+    base = target
+    while not base.is_dir() and base != base.parent:
+        base = base.parent
+    with _reported(where, any_error):
+        temporary = Path(
+            tempfile.mkdtemp(prefix=f".{target.name[:NAME_KEPT]}.", dir=base)
+        )
+    try:
+        with _reported(where, any_error):
+            yield temporary
+            target.mkdir(parents=True, exist_ok=True)
+            for item in sorted(temporary.iterdir()):
+                _sync(item)
+                os.replace(item, target / item.name)
+    finally:
+        shutil.rmtree(temporary, ignore_errors=True)
+
+
+def _target(path: Path) -> tuple[Path, bool]:
+    """Return the file to replace (links followed) and whether to write in place."""
+    if str(path).startswith(IN_PLACE):
+        return path, True
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        mode = None
+    except OSError:
+        return path, True  # let the writer meet the fault and name it
+    except ValueError as err:  # a NUL character in the name
+        msg = f"{path_text(path)}: cannot write the file ({err})"
+        raise OutputError(msg) from err
+    if mode is not None and stat.S_ISDIR(mode):
+        msg = f"{path_text(path)}: cannot write the file (it is a folder)"
+        raise OutputError(msg)
+    if mode is not None and not stat.S_ISREG(mode):
+        return path, True
+    real = Path(os.path.realpath(path))
+    return real, str(real).startswith(IN_PLACE)
+
+
+def _reserve(target: Path) -> Path:
+    """Create an empty temporary file beside ``target``, with its permissions."""
+    try:
+        mode = stat.S_IMODE(os.stat(target).st_mode)
+    except OSError:
+        mode = None
+    flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
+    while True:
+        name = f".{target.name[:NAME_KEPT]}.{secrets.token_hex(4)}.tmp{target.suffix}"
+        temporary = target.with_name(name)
+        try:
+            # 0o666 less the umask, as a new file gets; an old file's own mode
+            descriptor = os.open(temporary, flags, 0o666)
+        except FileExistsError:
+            continue
+        os.close(descriptor)
+        if mode is not None:
+            with contextlib.suppress(OSError):
+                os.chmod(temporary, mode)
+        return temporary
+
+
+def _sync(path: Path) -> None:
+    """Flush ``path`` to the disk, so a crash after the rename finds it whole."""
+    descriptor = os.open(path, os.O_RDONLY)
+    try:
+        os.fsync(descriptor)
+    finally:
+        os.close(descriptor)
+
+
+def _remove(path: Path) -> None:
+    """Remove a temporary file, if it is still there."""
+    with contextlib.suppress(OSError):
+        os.unlink(path)
+
+
+@contextlib.contextmanager
+def _reported(where: str, any_error: bool) -> Iterator[None]:
+    """Turn the failure of a write into an :class:`OutputError` naming ``where``."""
+    try:
+        yield
+    except AssurError:
+        raise
+    except OSError as err:
+        msg = f"{where}: cannot write the file ({err.strerror or err})"
+        raise OutputError(msg) from err
+    except Exception as err:
+        if not any_error:
+            raise
+        cause = _os_error(err)
+        if cause is not None:  # a writer that fails again on cleaning up
+            msg = f"{where}: cannot write the file ({cause.strerror or cause})"
+            raise OutputError(msg) from err
+        reason = " ".join(f"{type(err).__name__}: {err}".split())
+        if len(reason) > 120:
+            reason = reason[:117] + "..."
+        msg = f"{where}: cannot write the file ({reason})"
+        raise OutputError(msg) from err
+
+
+def _os_error(err: BaseException) -> OSError | None:
+    """Return the OSError behind ``err`` (its cause or context), if any."""
+    seen: set[int] = set()
+    cause: BaseException | None = err
+    while cause is not None and id(cause) not in seen:
+        if isinstance(cause, OSError):
+            return cause
+        seen.add(id(cause))
+        cause = cause.__cause__ or cause.__context__
+    return None

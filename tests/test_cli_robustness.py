@@ -1,0 +1,399 @@
+"""The command line under stress: Ctrl-C, closed or failing outputs, odd options.
+
+Every fault is one line on standard error and exit status 2 (130 after Ctrl-C); an
+output that cannot be written is named, not the mechanism file; the old file of an
+output survives a failed write.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur import cli
+from assur._cli_common import MAX_POSITIONS, parse_angles
+from assur.errors import ModelError, UsageError
+
+from .conftest import EXAMPLES
+
+ROOT = Path(__file__).resolve().parent.parent
+FOUR_BAR = EXAMPLES / "four_bar.toml"
+SLIDER = EXAMPLES / "slider_crank_exercise.toml"
+
+
+def run(capsys, *argv) -> tuple[int, str, str]:
+    status = cli.main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def one_error(capsys, *argv) -> str:
+    """Run ``argv``; check exit 2 and one error line; return the line."""
+    status, out, err = run(capsys, *argv)
+    assert status == 2, err
+    assert out == ""
+    assert "Traceback" not in err
+    assert err.count("\n") == 1, err
+    assert err.startswith("assur: error: ")
+    return err.rstrip("\n")
+
+
+def subprocess_env(**extra: str) -> dict[str, str]:
+    env = dict(os.environ, PYTHONPATH=str(ROOT), **extra)
+    env.pop("PYTHONIOENCODING", None)
+    env.update(extra)
+    return env
+
+
+# --- Ctrl-C ---------------------------------------------------------------------
+
+
+def test_ctrl_c_anywhere_is_status_130(monkeypatch, capsys):
+    def interrupted(args):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(cli, "_cmd_structure", interrupted)
+    status, _out, err = run(capsys, "structure", FOUR_BAR)
+    assert status == 130
+    assert err == "assur: interrupted\n"
+
+
+def test_ctrl_c_during_an_animation_keeps_the_old_file(tmp_path: Path):
+    target = tmp_path / "film.gif"
+    target.write_bytes(b"the old film")
+    process = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "assur",
+            "animate",
+            str(FOUR_BAR),
+            "--angles",
+            "0:3600:1",
+            "--frames",
+            "1000",
+            "-o",
+            str(target),
+        ],
+        cwd=tmp_path,
+        env=subprocess_env(),
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
+    deadline = time.monotonic() + 60
+    # wait until the film is being written, in its temporary file
+    while len(os.listdir(tmp_path)) < 2 and time.monotonic() < deadline:
+        time.sleep(0.05)
+    process.send_signal(signal.SIGINT)
+    try:
+        _out, err = process.communicate(timeout=60)
+    finally:
+        process.kill()
+    assert process.returncode == 130, err
+    assert err == "assur: interrupted\n"
+    assert target.read_bytes() == b"the old film"
+    assert os.listdir(tmp_path) == ["film.gif"]
+
+
+# --- outputs that fail ----------------------------------------------------------
+
+
+def test_output_error_names_the_output_not_the_input(tmp_path: Path, capsys):
+    target = tmp_path / "no" / "such" / "t.csv"
+    line = one_error(capsys, "kinematics", FOUR_BAR, "--angles", "0", "--csv", target)
+    assert line == (
+        f"assur: error: {target}: cannot write the file (No such file or directory)"
+    )
+
+
+def test_a_picture_writer_that_fails_keeps_the_old_picture(
+    monkeypatch, tmp_path: Path, capsys
+):
+    import matplotlib.figure
+
+    target = tmp_path / "m.pdf"
+    target.write_bytes(b"the old picture")
+
+    def broken(self, path, **kwargs):
+        Path(path).write_bytes(b"half a pict")
+        msg = "'Stream' object has no attribute 'pos'"
+        raise AttributeError(msg)
+
+    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", broken)
+    line = one_error(capsys, "plot", FOUR_BAR, "-o", target)
+    assert line == (
+        f"assur: error: {target}: cannot write the file (AttributeError: 'Stream' "
+        "object has no attribute 'pos')"
+    )
+    assert target.read_bytes() == b"the old picture"
+    assert os.listdir(tmp_path) == ["m.pdf"]
+
+
+def test_diagrams_land_all_or_none(monkeypatch, tmp_path: Path, capsys):
+    from assur import plotting
+
+    out = tmp_path / "d"
+    out.mkdir()
+    (out / "motion.png").write_bytes(b"old motion")
+
+    def broken(table):
+        msg = "No space left on device"
+        raise OSError(28, msg)
+
+    monkeypatch.setattr(plotting, "draw_decomposition", broken)
+    line = one_error(capsys, "diagrams", FOUR_BAR, "--dpi", "20", "-o", out)
+    assert (
+        line == f"assur: error: {out}: cannot write the file (No space left on device)"
+    )
+    assert os.listdir(out) == ["motion.png"]
+    assert (out / "motion.png").read_bytes() == b"old motion"
+
+
+def read_fifo(fifo: Path, limit: int | None, into: list[bytes]) -> threading.Thread:
+    """Start a reader of ``fifo`` that stops after ``limit`` bytes (None: all)."""
+
+    def reader() -> None:
+        with open(fifo, "rb") as stream:
+            into.append(stream.read() if limit is None else stream.read(limit))
+
+    thread = threading.Thread(target=reader)
+    thread.start()
+    return thread
+
+
+def test_csv_into_a_fifo(tmp_path: Path, capsys):
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    received: list[bytes] = []
+    thread = read_fifo(fifo, None, received)
+    status, out, err = run(
+        capsys, "kinematics", FOUR_BAR, "--angles", "0:90:10", "--csv", fifo
+    )
+    thread.join(timeout=30)
+    assert status == 0, err
+    table = assur.kinematics(assur.load(FOUR_BAR), np.arange(0.0, 91.0, 10.0))
+    assert out == f"wrote 10 rows x {len(table.columns)} columns to {fifo}\n"
+    assert received == [table.to_csv().encode()]
+    assert os.listdir(tmp_path) == ["pipe"]
+
+
+def test_a_fifo_whose_reader_stops_early_is_one_error(tmp_path: Path, capsys):
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    received: list[bytes] = []
+    thread = read_fifo(fifo, 100, received)
+    line = one_error(
+        capsys, "kinematics", FOUR_BAR, "--angles", "0:360:0.05", "--csv", fifo
+    )
+    thread.join(timeout=30)
+    assert line == f"assur: error: {fifo}: cannot write the file (Broken pipe)"
+
+
+def test_csv_to_dev_stdout_in_a_pipe(tmp_path: Path):
+    result = subprocess.run(
+        f"{sys.executable} -m assur kinematics {FOUR_BAR} --angles 0 "
+        "--csv /dev/stdout | cat",
+        shell=True,
+        cwd=tmp_path,
+        env=subprocess_env(),
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("angle,crank.angle,")
+    count = len(assur.kinematics(assur.load(FOUR_BAR), [0.0]).columns)
+    assert result.stdout.endswith(f"wrote 1 rows x {count} columns to /dev/stdout\n")
+
+
+# --- outputs over the input -----------------------------------------------------
+
+
+def test_csv_over_the_mechanism_file_is_refused(tmp_path: Path, capsys):
+    mech = tmp_path / "m.toml"
+    mech.write_bytes(FOUR_BAR.read_bytes())
+    os.link(mech, tmp_path / "hard.toml")
+    for name in (mech, tmp_path / "sub" / ".." / "m.toml", tmp_path / "hard.toml"):
+        (tmp_path / "sub").mkdir(exist_ok=True)
+        line = one_error(capsys, "forces", mech, "--angles", "0", "--csv", name)
+        assert line == (
+            f"assur: error: {mech}: --csv {name}: is the mechanism file being read; "
+            "expected another file for the output"
+        )
+    assert mech.read_bytes() == FOUR_BAR.read_bytes()
+
+
+@pytest.mark.parametrize(
+    ("command", "name"),
+    [("plot", "m.png"), ("animate", "m.gif"), ("report", "m.html")],
+)
+def test_a_picture_over_the_mechanism_file_is_refused(
+    command, name, tmp_path: Path, capsys
+):
+    mech = tmp_path / name
+    mech.write_bytes(FOUR_BAR.read_bytes())
+    line = one_error(capsys, command, mech, "-o", mech)
+    assert line.endswith(
+        f"-o {mech}: is the mechanism file being read; expected "
+        "another file for the output"
+    )
+    assert mech.read_bytes() == FOUR_BAR.read_bytes()
+
+
+def test_diagrams_over_the_mechanism_file_are_refused(tmp_path: Path, capsys):
+    mech = tmp_path / "paths.png"
+    mech.write_bytes(FOUR_BAR.read_bytes())
+    line = one_error(capsys, "diagrams", mech, "-o", tmp_path)
+    assert "is the mechanism file being read" in line
+    assert os.listdir(tmp_path) == ["paths.png"]
+
+
+# --- options --------------------------------------------------------------------
+
+
+def test_a_misspelt_command_gets_a_suggestion(capsys):
+    status, out, err = run(capsys, "forcse", FOUR_BAR)
+    assert status == 2
+    assert out == ""
+    assert err.splitlines()[-1] == (
+        "assur: error: unknown command 'forcse'; did you mean 'forces'?"
+    )
+    status, _, err = run(capsys, "zzz", FOUR_BAR)
+    assert status == 2
+    assert err.splitlines()[-1].startswith(
+        "assur: error: unknown command 'zzz' (known: animate, diagrams, forces, "
+    )
+
+
+def test_plot_names_its_own_option(capsys, tmp_path: Path):
+    line = one_error(
+        capsys, "plot", FOUR_BAR, "--angle", "abc", "-o", tmp_path / "a.png"
+    )
+    assert line == (
+        f"assur: error: {FOUR_BAR}: --angle: cannot read 'abc'; expected "
+        "START:STOP:STEP with a step that leads from START to STOP, or a single value"
+    )
+
+
+@pytest.mark.parametrize(
+    "spec", ["0:1:1e-320", "-1e308:1e308:1e300", "0:1e308:1e-308", "0:1e9:1e-3"]
+)
+def test_absurd_ranges_are_one_usage_error(spec, capsys):
+    line = one_error(capsys, "kinematics", FOUR_BAR, f"--angles={spec}")
+    assert line.startswith(f"assur: error: {FOUR_BAR}: --angles: '{spec}' gives ")
+    assert line.endswith(f"positions; expected at most {MAX_POSITIONS} (a larger step)")
+    with pytest.raises(UsageError):
+        parse_angles(spec)
+
+
+def test_option_errors_are_usage_errors_not_model_errors():
+    with pytest.raises(UsageError) as info:
+        parse_angles("abc")
+    assert not isinstance(info.value, ModelError)
+    assert isinstance(info.value, ValueError)
+
+
+@pytest.mark.parametrize("joint", ["Q", "C"])
+def test_the_driver_option_is_a_usage_error(monkeypatch, joint, capsys):
+    seen = []
+    monkeypatch.setattr(cli, "_error", seen.append)
+    path = EXAMPLES / "class3.toml"
+    status = cli.main(["structure", str(path), "--driver", joint])
+    assert status == 2
+    with pytest.raises(UsageError, match=r"^--driver: "):
+        cli._cmd_structure(argparse.Namespace(file=path, driver=joint, json=False))
+    assert seen[0].startswith(f"{path}: --driver: ")
+
+
+def test_a_long_option_is_echoed_briefly(capsys):
+    line = one_error(capsys, "kinematics", FOUR_BAR, "--angles", "1:" * 5000)
+    assert len(line) < 300
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (
+            ["plot", "--dpi", "inf"],
+            "--dpi inf: expected a positive resolution from 10 to 1200 dots per inch",
+        ),
+        (["plot", "--dpi", "1e6"], "--dpi 1e+06: expected a positive resolution"),
+        (["plot", "--dpi", "nan"], "--dpi nan: expected a positive resolution"),
+        (["diagrams", "--dpi", "5"], "--dpi 5: expected a positive resolution"),
+        (
+            ["animate", "--dpi", "600"],
+            "--dpi 600: expected a positive resolution from 10 to 300 dots per inch",
+        ),
+        (
+            ["animate", "--fps", "1e-9"],
+            "--fps 1e-09: expected a frame rate from 0.1 to 100 frames per second",
+        ),
+        (["animate", "--fps", "1000"], "--fps 1000: expected a frame rate"),
+        (["animate", "--fps", "nan"], "--fps nan: expected a frame rate"),
+        (
+            ["animate", "--frames", "100000"],
+            "--frames 100000: expected at least one frame and at most 1000",
+        ),
+        (["plot", "--scale", "inf"], "--scale inf: expected a positive number"),
+        (["plot", "--scale", "nan"], "--scale nan: expected a positive number"),
+    ],
+)
+def test_bounded_options(argv, message, tmp_path: Path, capsys):
+    suffix = {"plot": ".png", "animate": ".gif", "diagrams": ""}[argv[0]]
+    target = tmp_path / f"out{suffix}"
+    target.write_bytes(b"a good old output") if suffix else None
+    line = one_error(capsys, argv[0], FOUR_BAR, *argv[1:], "-o", target)
+    assert line.startswith(f"assur: error: {FOUR_BAR}: {message}"), line
+    if suffix:
+        assert target.read_bytes() == b"a good old output"
+    else:
+        assert not target.exists()
+
+
+def test_the_summary_says_what_it_leaves_out(capsys):
+    status, out, _ = run(capsys, "kinematics", FOUR_BAR, "--angles", "0:720:1")
+    assert status == 0
+    lines = out.splitlines()
+    assert len(lines) == 2 + 400 + 2
+    assert lines[-2] == "... 321 more rows: --csv PATH or --json for all"
+    status, out, _ = run(capsys, "kinematics", FOUR_BAR, "--angles", "0:399:1")
+    assert "more rows" not in out
+
+
+def test_non_ascii_names_on_an_ascii_terminal(tmp_path: Path):
+    text = FOUR_BAR.read_text(encoding="utf-8").replace('"coupler"', '"coupleur→"')
+    text = text.replace("[links.coupler]", '[links."coupleur→"]')
+    mech = tmp_path / "u.toml"
+    mech.write_text(text, encoding="utf-8")
+    for argv in (
+        ["structure"],
+        ["kinematics", "--angles", "0"],
+        ["kinematics", "--angles", "0", "--csv", "-"],
+        ["forces", "--angles", "0", "--json"],
+    ):
+        result = subprocess.run(
+            [sys.executable, "-m", "assur", argv[0], str(mech), *argv[1:]],
+            env=subprocess_env(PYTHONIOENCODING="ascii"),
+            capture_output=True,
+            text=True,
+            encoding="ascii",
+            timeout=60,
+            check=False,
+        )
+        assert result.returncode == 0, (argv, result.stderr)
+        assert result.stderr == ""
+        assert (
+            "coupleur\\u2192" in result.stdout or "coupleur\\\\u2192" in result.stdout
+        )
