@@ -18,6 +18,7 @@ import numpy as np
 from assur import _kinematics as _kin
 from assur import kinetostatics as _kst
 from assur._loads import compile_loads
+from assur._progress import Callback, progress
 from assur._text import position_text
 from assur._vec import Array, Mask, freeze, gather
 from assur.columns import selection
@@ -67,6 +68,7 @@ def kinematics(
     omega: Any = None,
     epsilon: Any = None,
     columns: Sequence[str] | None = None,
+    progress: bool | Callback = False,
 ) -> Table:
     """Positions, velocities, accelerations and jerks over driver positions.
 
@@ -85,6 +87,9 @@ def kinematics(
         or one value per position (shape (n,); (n, drivers) with several drivers).
     columns : sequence of str, optional
         Compute only these columns (and ``angle``).
+    progress : bool or callable, optional
+        Show a progress bar on standard error (True), or call ``progress(done,
+        total)`` as slices of positions are solved.
 
     Returns
     -------
@@ -105,7 +110,9 @@ def kinematics(
     >>> t["crank.omega"].tolist()
     [10.0, 10.0]
     """
-    return _sweep(mechanism, angles, False, skip_unassembled, omega, epsilon, columns)
+    return _sweep(
+        mechanism, angles, False, skip_unassembled, omega, epsilon, columns, progress
+    )
 
 
 def forces(
@@ -116,6 +123,7 @@ def forces(
     omega: Any = None,
     epsilon: Any = None,
     columns: Sequence[str] | None = None,
+    progress: bool | Callback = False,
 ) -> Table:
     """Kinematics plus inertia loads, joint reactions and balancing loads.
 
@@ -141,7 +149,9 @@ def forces(
             "'center' and 'inertia' on the links or [[loads]] for a force analysis"
         )
         raise ModelError(msg)
-    return _sweep(mechanism, angles, True, skip_unassembled, omega, epsilon, columns)
+    return _sweep(
+        mechanism, angles, True, skip_unassembled, omega, epsilon, columns, progress
+    )
 
 
 def _sweep(
@@ -152,6 +162,7 @@ def _sweep(
     omega: Any,
     epsilon: Any,
     names: Sequence[str] | None,
+    show: bool | Callback = False,
 ) -> Table:
     plan = plan_of(mech)
     given = positions(plan, angles)
@@ -176,9 +187,11 @@ def _sweep(
                 if loads is not None:
                     fields = _kst.solve(plan, loads, bodies, kin)[0].fields()
             troubles.extend((t, start) for t in found)
+            bar.advance(rows.stop - rows.start)
             yield rows, (kin.motion, kin.slide, fields)
 
-    motion, slide, fields = freeze(gather(n, pieces()))
+    with progress("forces" if loads is not None else "kinematics", n, show) as bar:
+        motion, slide, fields = freeze(gather(n, pieces()))
     state = _kin.KinematicState(drive, rates[0], rates[1], motion, slide, top)
     force_state = None if fields is None else _kst.ForceState(*fields)
     ok = _report(plan, given, troubles, skip)

@@ -1,0 +1,68 @@
+"""Progress of long work: a bar on standard error, only when asked for.
+
+The library shows none unless a caller passes ``progress=True`` (or a callable that
+receives the work done so far); the command line asks for one when standard error is
+a terminal. The bar is tqdm's, imported only when a bar is shown.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable
+from types import TracebackType
+from typing import Any
+
+__all__ = ["Progress", "progress"]
+
+Callback = Callable[[int, int], None]
+"""A caller's own report: ``callback(done, total)``."""
+
+
+class Progress:
+    """Report ``done`` out of ``total`` units of work; a no-op when not enabled."""
+
+    def __init__(self, what: str, total: int, show: bool | Callback = False) -> None:
+        self.total = total
+        self.done = 0
+        self._callback: Callback | None = show if callable(show) else None
+        self._bar: Any = None
+        if show is True and total > 0:
+            from tqdm import tqdm
+
+            self._bar = tqdm(
+                total=total, desc=what, file=sys.stderr, leave=False, unit_scale=True
+            )
+
+    def advance(self, count: int) -> None:
+        """Record ``count`` more units done."""
+        self.done += count
+        if self._bar is not None:
+            self._bar.update(count)
+        if self._callback is not None:
+            self._callback(self.done, self.total)
+
+    def close(self) -> None:
+        """Remove the bar."""
+        if self._bar is not None:
+            self._bar.close()
+            self._bar = None
+
+    def __enter__(self) -> Progress:
+        return self
+
+    def __exit__(
+        self,
+        kind: type[BaseException] | None,
+        value: BaseException | None,
+        trace: TracebackType | None,
+    ) -> None:
+        self.close()
+
+
+def progress(what: str, total: int, show: bool | Callback = False) -> Progress:
+    """Return a :class:`Progress` of ``total`` units named ``what``.
+
+    ``show``: True for a bar on standard error, a callable ``(done, total)`` to be
+    told, False for nothing.
+    """
+    return Progress(what, total, show)
