@@ -1,0 +1,336 @@
+"""The core's seams: group protocol and registry, step records, frozen states, driver
+speed per position, the column schema and ``columns=``, instant centres.
+
+Each capability is checked against something independent of it: a group family
+written separately (tests/groups/dense_rrr.py), the oracle's global equilibrium solve
+(tests/oracle.py), separate constant-speed sweeps, and the velocities of a link's own
+points.
+"""
+
+from __future__ import annotations
+
+import pickle
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur import _kinematics, kinetostatics
+from assur._loads import compile_loads
+from assur.groups import FAMILIES
+from assur.plan import compile_plan, plan_of
+
+from . import oracle
+from .groups import dense_rrr
+from .test_kinetostatics import (
+    assert_balancing_check,
+    assert_links_in_equilibrium,
+    assert_matches_global_solve,
+    needs_forces,
+    turn,
+)
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+
+
+def magnitude(values: np.ndarray) -> float:
+    """Largest finite magnitude, at least 1."""
+    return float(np.max(np.abs(values[np.isfinite(values)]), initial=1.0))
+
+
+def positions(mech: assur.Mechanism, count: int = 24) -> np.ndarray:
+    return turn(mech, count)[0]
+
+
+def forced(mech: assur.Mechanism) -> bool:
+    return needs_forces(mech)
+
+
+# ------------------------------------------------------------------------------------
+# A group family is one module plus one line in the registry
+
+
+@pytest.mark.parametrize("name", ["four_bar", "six_bar_lecture", "tenbar", "class3"])
+def test_a_new_family_from_one_registry_line(monkeypatch, name):
+    mech = assur.load(EXAMPLES / f"{name}.toml")
+    run = assur.forces if forced(mech) else assur.kinematics
+    at = positions(mech)
+    expected = run(mech, at)
+    monkeypatch.setitem(FAMILIES, "RRR", dense_rrr.compile_group)
+    plan = compile_plan(mech)
+    assert any(isinstance(s, dense_rrr.DenseRRR) for s in plan.solvers) == (
+        name != "class3"
+    )
+    plan_of.cache_clear()
+    try:
+        got = run(mech, at)
+    finally:
+        plan_of.cache_clear()
+    for column in expected.columns:
+        scale = magnitude(expected[column])
+        np.testing.assert_allclose(
+            got[column], expected[column], rtol=0, atol=1e-9 * scale, err_msg=column
+        )
+
+
+# ------------------------------------------------------------------------------------
+# Records of the reverse pass and their equations
+
+
+def reverse_pass(mech: assur.Mechanism, at: np.ndarray):
+    plan = plan_of(mech)
+    table = assur.forces(mech, at)
+    bodies = _kinematics.motions(plan, table.state)
+    applied = kinetostatics.applied_loads(
+        plan, compile_loads(plan), bodies, table.state
+    )
+    return plan, table, bodies, kinetostatics.reverse(plan, bodies, applied)
+
+
+def test_every_group_returns_a_record_whose_equations_hold(example):
+    if not forced(example):
+        pytest.skip("no masses and no loads: nothing to analyse")
+    plan, table, bodies, result = reverse_pass(example, positions(example))
+    assert [r.label for r in result.groups] == [s.label for s in plan.solvers][::-1]
+    force, size = oracle.load_scale(example, table)
+    for record in result.groups:
+        eq = record.equations(bodies, plan.bodies)
+        assert eq.unknowns == record.unknowns
+        assert len(eq.rows) == len(eq.unknowns) == 3 * len(record.bodies)
+        assert np.all(eq.residual <= 1e-9 * force * size), record.label
+        # the equations alone, solved densely, give the record's reactions
+        dense = np.linalg.solve(eq.matrix, eq.rhs[..., None])[..., 0]
+        np.testing.assert_allclose(
+            dense, eq.solution, rtol=1e-8, atol=1e-9 * force * size
+        )
+        for name, reaction in record.reactions.items():
+            if name in table.plan.pairs and not plan.pairs[name].virtual:
+                np.testing.assert_array_equal(table[f"{name}.Fx"], reaction.fx)
+
+
+def test_dyad_equations_read_as_the_lecture_writes_them():
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    plan, _, bodies, result = reverse_pass(mech, np.array([45.0]))
+    (record,) = result.groups
+    eq = record.equations(bodies, plan.bodies)
+    assert eq.rows == (
+        "moment of rod about C",
+        "moment of slider about C",
+        "forces on the group along x",
+        "forces on the group along y",
+        "forces on rod along x",
+        "forces on rod along y",
+    )
+    assert eq.unknowns == ("C.Fx", "C.Fy", "B.Fx", "B.Fy", "guide.N", "guide.M")
+    (driver,) = result.drivers
+    np.testing.assert_allclose(driver.balancing, 84.625, rtol=1e-6)
+
+
+# ------------------------------------------------------------------------------------
+# The reverse pass reads a frozen state: rebuilt, pickled, in another process
+
+
+def test_forces_from_a_stored_state_are_the_same(example):
+    if not forced(example):
+        pytest.skip("no masses and no loads: nothing to analyse")
+    at = positions(example, 30)
+    table = assur.forces(example, at)
+    stored = pickle.loads(pickle.dumps((table.state, table.plan.mechanism)))
+    state, mech = stored
+    plan = plan_of(mech)
+    bodies = _kinematics.motions(plan, state)
+    forces, _ = kinetostatics.solve(plan, compile_loads(plan), bodies, state)
+    for name, (fx, fy, couple) in table.force_state.reactions.items():
+        got = forces.reactions[name]
+        np.testing.assert_array_equal(got[0], fx, err_msg=name)
+        np.testing.assert_array_equal(got[1], fy, err_msg=name)
+        np.testing.assert_array_equal(got[2], couple, err_msg=name)
+    np.testing.assert_array_equal(forces.balancing, table.force_state.balancing)
+
+
+def test_jerks_solved_later_equal_jerks_solved_at_once(example):
+    at = positions(example, 20)
+    run = assur.forces if forced(example) else assur.kinematics
+    lazy = run(example, at)
+    assert lazy.state.top == 2
+    jerks = [c for c in lazy.columns if c.endswith((".jerk", ".jx", ".jy", ".j"))]
+    eager = run(example, at, columns=jerks)
+    assert eager.state.top == 3
+    for column in jerks:
+        np.testing.assert_allclose(
+            lazy[column], eager[column], rtol=1e-12, atol=1e-12, err_msg=column
+        )
+
+
+# ------------------------------------------------------------------------------------
+# Driver speed and acceleration per position
+
+
+def speeds(n: int, omega: float) -> tuple[np.ndarray, np.ndarray]:
+    t = np.linspace(0.0, 1.0, n)
+    return omega * (0.5 + t), omega * 40.0 * np.cos(5.0 * t)
+
+
+@pytest.mark.parametrize(
+    "name", ["slider_crank_exercise", "four_bar", "whitworth", "class3", "lever_var9"]
+)
+def test_constant_arrays_give_the_file_constants(name):
+    mech = assur.load(EXAMPLES / f"{name}.toml")
+    at = positions(mech, 16)
+    d = mech.drivers[0]
+    run = assur.forces if forced(mech) else assur.kinematics
+    same = run(
+        mech,
+        at,
+        omega=np.full(len(at), d.omega),
+        epsilon=np.full(len(at), d.epsilon),
+    )
+    plain = run(mech, at)
+    for column in plain.columns:
+        np.testing.assert_allclose(
+            same[column], plain[column], rtol=1e-13, atol=1e-13, err_msg=column
+        )
+
+
+@pytest.mark.parametrize(
+    "name",
+    ["slider_crank_exercise", "four_bar", "whitworth", "class3", "six_bar_lecture"],
+)
+def test_speed_per_position_matches_separate_sweeps_and_the_global_solve(name):
+    mech = assur.load(EXAMPLES / f"{name}.toml")
+    at = positions(mech, 12)
+    omega, epsilon = speeds(len(at), mech.drivers[0].omega)
+    table = assur.forces(mech, at, omega=omega, epsilon=epsilon)
+    # each row is the sweep at that row's constant speed and acceleration
+    for i in range(len(at)):
+        row = assur.forces(mech, at[i : i + 1], omega=omega[i], epsilon=epsilon[i])
+        for column in row.columns:
+            scale = magnitude(row[column])
+            gap = table[column][i] - row[column][0]
+            if row.column(column).unit == "deg":  # angles agree modulo a turn
+                gap = (gap + 180.0) % 360.0 - 180.0
+            assert abs(gap) <= 1e-10 * scale or np.isnan(gap), (column, gap)
+    # and the reactions are those of the whole mechanism's equilibrium
+    assert_matches_global_solve(mech, table)
+    assert_links_in_equilibrium(mech, table)
+    assert_balancing_check(mech, table)
+
+
+def test_velocities_scale_with_the_speed_and_accelerations_split():
+    """At unit speed the velocities are the velocity coefficients; the acceleration at
+    speed w and acceleration e is e times them plus w^2 times those at unit speed."""
+    mech = assur.load(EXAMPLES / "tenbar.toml")
+    at = positions(mech, 36)
+    omega, epsilon = speeds(len(at), 3.0)
+    table = assur.kinematics(mech, at, omega=omega, epsilon=epsilon)
+    unit = assur.kinematics(mech, at, omega=1.0, epsilon=0.0)
+    for point in ("C", "E", "S"):
+        for axis in ("x", "y"):
+            v1 = unit[f"{point}.v{axis}"]
+            a1 = unit[f"{point}.a{axis}"]
+            np.testing.assert_allclose(
+                table[f"{point}.v{axis}"], omega * v1, atol=1e-12
+            )
+            np.testing.assert_allclose(
+                table[f"{point}.a{axis}"], epsilon * v1 + omega**2 * a1, atol=1e-9
+            )
+
+
+def test_bad_speed_arrays_are_refused():
+    mech = assur.catalog.slider_crank()
+    with pytest.raises(assur.UsageError, match="omega: expected a number or one value"):
+        assur.forces(mech, [0.0, 10.0, 20.0], omega=[1.0, 2.0])
+    with pytest.raises(assur.UsageError, match="epsilon: expected real numbers"):
+        assur.forces(mech, [0.0], epsilon=[1j])
+    with pytest.raises(assur.UsageError, match="omega: expected finite numbers"):
+        assur.forces(mech, [0.0], omega=[np.nan])
+
+
+# ------------------------------------------------------------------------------------
+# The column schema and columns=
+
+
+def test_the_schema_describes_every_column(example):
+    run = assur.forces if forced(example) else assur.kinematics
+    table = run(example, positions(example, 4))
+    assert [c.name for c in table.schema] == list(table.columns)
+    units = {
+        "angle": {"deg", "m"},
+        "omega": {"rad/s"},
+        "alpha": {"rad/s^2"},
+        "jerk": {"rad/s^3"},
+        "x": {"m"},
+        "vx": {"m/s"},
+        "ax": {"m/s^2"},
+        "jy": {"m/s^3"},
+        "Fx": {"N"},
+        "Mi": {"N m"},
+        "torque": {"N m"},
+    }
+    for column in table.schema:
+        if column.quantity in units:
+            assert column.unit in units[column.quantity], column
+        assert table.column(column.name) == column
+        values = table[column.name]
+        assert values.shape == (len(table),)
+        assert not values.flags.writeable, column.name
+
+
+def test_columns_computes_only_what_is_asked():
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    at = np.arange(45.0, 405.0, 5.0)
+    full = assur.forces(mech, at)
+    few = assur.forces(mech, at, columns=["driver.torque", "C.vx"])
+    assert few.columns == ("angle", "C.vx", "driver.torque")
+    assert few.state.top == 2
+    np.testing.assert_array_equal(few["driver.torque"], full["driver.torque"])
+    np.testing.assert_array_equal(few["C.vx"], full["C.vx"])
+    with pytest.raises(KeyError, match=r"no column 'B\.Fx'"):
+        few["B.Fx"]
+    only = assur.forces(mech, at, columns=["C.x"])
+    assert only.force_state is None
+    assert only.state.top == 0
+    with pytest.raises(assur.UsageError, match=r"a force column: use assur\.forces"):
+        assur.kinematics(mech, at, columns=["driver.torque"])
+    with pytest.raises(assur.UsageError, match=r"did you mean 'driver\.torque'"):
+        assur.forces(mech, at, columns=["driver.torqe"])
+
+
+# ------------------------------------------------------------------------------------
+# Instant centres
+
+
+def test_instant_centres_are_where_the_link_does_not_move(example):
+    table = assur.kinematics(example, positions(example, 30))
+    size = oracle.mechanism_size(example)
+    for link in example.links:
+        name = link.name
+        icx, icy = table[f"{name}.ic.x"], table[f"{name}.ic.y"]
+        omega = table[f"{name}.omega"]
+        points = oracle.reported_points(example, name)
+        translating = np.isnan(icx)
+        assert np.array_equal(translating, np.isnan(icy))
+        for point, _ in points:
+            vx, vy = table[f"{point}.vx"], table[f"{point}.vy"]
+            x, y = table[f"{point}.x"], table[f"{point}.y"]
+            speed = np.max(np.hypot(vx, vy)) + 1e-300
+            # v_P = omega z x (P - IC): the IC's own velocity on the link is zero
+            ok = ~translating
+            np.testing.assert_allclose(
+                vx[ok], -omega[ok] * (y[ok] - icy[ok]), atol=1e-9 * speed + 1e-12
+            )
+            np.testing.assert_allclose(
+                vy[ok], omega[ok] * (x[ok] - icx[ok]), atol=1e-9 * speed + 1e-12
+            )
+            # a translating link: every point has the same velocity
+            if translating.any():
+                assert np.allclose(np.abs(omega[translating]) * size, 0.0, atol=1e-9)
+
+
+def test_instant_centre_of_a_crank_is_its_pivot_and_a_slider_has_none():
+    table = assur.kinematics(assur.catalog.slider_crank(), [10.0, 70.0])
+    np.testing.assert_allclose(table["crank.ic.x"], table["A.x"])
+    np.testing.assert_allclose(table["crank.ic.y"], table["A.y"])
+    assert np.isnan(table["slider.ic.x"]).all()
+    assert np.isnan(table["slider.ic.y"]).all()
