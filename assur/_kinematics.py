@@ -142,15 +142,18 @@ def solve(
             guess, g = guesses[g], g + 1
         failed = solver.assemble(bodies, n, guess).failed
         lin = solver.linearize(bodies)
-        singular = ~failed & lin.singular
-        near = ~failed & ~singular & (lin.conditioning < solver.near)
-        for what, mask in (
-            ("assembly", failed),
-            ("singular", singular),
-            ("near", near),
-        ):
-            if mask.any():
-                troubles.append(Trouble(solver.label, what, mask))
+        # a failed pose has no conditioning (NaN): it is below no threshold
+        low = lin.conditioning < solver.near
+        if failed.any() or low.any():
+            singular = ~failed & lin.singular
+            near = ~failed & ~singular & low
+            for what, mask in (
+                ("assembly", failed),
+                ("singular", singular),
+                ("near", near),
+            ):
+                if mask.any():
+                    troubles.append(Trouble(solver.label, what, mask))
         for k in range(1, top + 1):
             solver.derivative(bodies, k, lin)
         for b in solver.bodies:
@@ -160,12 +163,20 @@ def solve(
 
 def drivers(plan: Plan, drive: Array, speed: Any, acceleration: Any) -> list[Motion]:
     """Return every body at rest but the driving links, which move as prescribed."""
-    bodies: list[Motion] = [Motion.fixed()] * len(plan.bodies)
+    bodies: list[Motion] = [frame(plan)] * len(plan.bodies)
     for i, d in enumerate(plan.drivers):
         m = motion(d, drive[:, i], speed[i], acceleration[i])
         m.finish()
         bodies[d.body] = m
     return bodies
+
+
+def frame(plan: Plan) -> Motion:
+    """Return the frame's motion, made once per plan (it never changes)."""
+    found = plan.memo.get("frame")
+    if found is None:
+        found = plan.memo["frame"] = Motion.fixed()
+    return found  # type: ignore[no-any-return]
 
 
 def _continuation(plan: Plan, drive: Array) -> list[Any]:
@@ -277,9 +288,7 @@ def state_of(
 
 def _slides(plan: Plan, bodies: list[Motion], top: int) -> dict[str, tuple[Leaf, ...]]:
     """Slides of the prismatic pairs: a group's own coordinate where it is one."""
-    own: dict[str, tuple[int, float]] = {}
-    for solver in plan.solvers:
-        own.update(solver.own_slides())
+    own = own_slides(plan)
     out = {}
     for name, pair in plan.pairs.items():
         if pair.kind != "P":
@@ -291,6 +300,17 @@ def _slides(plan: Plan, bodies: list[Motion], top: int) -> dict[str, tuple[Leaf,
         else:
             out[name] = tuple(slide(pair, bodies, k) for k in range(top + 1))
     return out
+
+
+def own_slides(plan: Plan) -> dict[str, tuple[int, float]]:
+    """Return the prismatic pairs whose slide is a group's own coordinate (per plan)."""
+    found = plan.memo.get("own-slides")
+    if found is None:
+        found = {}
+        for solver in plan.solvers:
+            found.update(solver.own_slides())
+        plan.memo["own-slides"] = found
+    return found  # type: ignore[no-any-return]
 
 
 def motions(plan: Plan, state: KinematicState, finished: bool = True) -> list[Motion]:
@@ -312,10 +332,9 @@ def motions(plan: Plan, state: KinematicState, finished: bool = True) -> list[Mo
                 [*entries[2 * levels :], *pad],
             )
         )
-    for solver in plan.solvers:
-        for name, (body, sign) in solver.own_slides().items():
-            values = state.slide[name]
-            out[body].q = [v if sign > 0 else -v for v in values]
+    for name, (body, sign) in own_slides(plan).items():
+        values = state.slide[name]
+        out[body].q = [v if sign > 0 else -v for v in values]
     moving = {b for solver in plan.solvers for b in solver.bodies}
     for b, m in enumerate(out):
         if finished or b not in moving:

@@ -20,7 +20,7 @@ from assur import kinetostatics as _kst
 from assur._loads import compile_loads
 from assur._progress import Callback, progress
 from assur._text import position_text
-from assur._vec import Array, Mask, freeze, gather
+from assur._vec import Array, Mask, gather
 from assur.columns import selection
 from assur.errors import (
     AssemblyError,
@@ -191,18 +191,19 @@ def _sweep(
             yield rows, (kin.motion, kin.slide, fields)
 
     with progress("forces" if loads is not None else "kinematics", n, show) as bar:
-        motion, slide, fields = freeze(gather(n, pieces()))
+        motion, slide, fields = gather(n, pieces())
     state = _kin.KinematicState(drive, rates[0], rates[1], motion, slide, top)
     force_state = None if fields is None else _kst.ForceState(*fields)
     ok = _report(plan, given, troubles, skip)
-    skipped = given[~ok]
-    if not ok.all():
+    skipped = given[:0] if ok is None else given[~ok]
+    if ok is not None:
         state = state.rows(ok)
         force_state = force_state.rows(ok) if force_state is not None else None
+        given = given[ok]
     return Table(
         plan,
         chosen.columns,
-        given[ok],
+        given,
         state,
         force_state,
         skipped[:, 0] if skipped.shape[1] == 1 else skipped,
@@ -277,10 +278,9 @@ def to_si(plan: Plan, given: Array) -> Array:
     for i, d in enumerate(plan.drivers):
         if d.kind == "R":
             # reducing in degrees is exact; radians of a huge angle are not
-            ref = math.degrees(d.reference)
-            reduced = np.remainder(given[:, i], 360.0)
-            reduced += 360.0 * np.round((ref - reduced) / 360.0)
-            out[:, i] = np.radians(reduced)
+            low = math.degrees(d.reference) - 180.0
+            turn = np.remainder(given[:, i], 360.0)
+            out[:, i] = np.radians(np.remainder(turn - low, 360.0) + low)
         else:
             out[:, i] = given[:, i]
     return out
@@ -321,8 +321,13 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
     return out[0], out[1]
 
 
-def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask:
-    """Raise or warn about the troubles of a sweep; return the good positions' mask."""
+def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask | None:
+    """Raise or warn about the troubles of a sweep.
+
+    Returns the mask of the positions kept, or None when every position is.
+    """
+    if not troubles:
+        return None
     n = given.shape[0]
     ok = np.ones(n, dtype=bool)
     near: dict[str, Mask] = {}
@@ -360,7 +365,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask:
                 AssurWarning,
                 stacklevel=4,
             )
-    return ok
+    return None if ok.all() else ok
 
 
 def _all_failures(troubles: list[Any], n: int) -> Mask:

@@ -104,7 +104,9 @@ class Table:
         column = self.column(name)
         for key, values in evaluate(self, column).items():
             if key in self._index and key not in self._cache:
+                # handed out read-only; a view keeps the states' own arrays as they are
                 if values.flags.writeable:
+                    values = values.view()
                     values.flags.writeable = False
                 self._cache[key] = values
         return self._cache[name]

@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._vec import add, cross, dot, mul, sub
 from assur.groups._dyad import DyadSolver, compile_dyad, guide
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._protocol import CompileContext
@@ -35,15 +36,15 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     gx, gy = point(slider, plan.d_known[1], 0)
     ux, uy = rotated(slider, plan.d_mid[1])
     d1 = plan.d_mid[0]
-    wx, wy = gx + ux - px, gy + uy - py
-    b = wx * ex + wy * ey
+    wx, wy = sub(add(gx, ux), px), sub(add(gy, uy), py)
+    b = dot((wx, wy), (ex, ey))
+    # |w|^2 - (w.e)^2 is the squared distance of P from the slider's line
+    normal = cross(ex, ey, wx, wy)
     with np.errstate(invalid="ignore"):
-        sigma = (
-            branch * np.sqrt(b * b - wx * wx - wy * wy + d1[0] * d1[0] + d1[1] * d1[1])
-            - b
-        )
-    vx, vy = wx + sigma * ex, wy + sigma * ey
-    return np.arctan2(d1[0] * vy - d1[1] * vx, d1[0] * vx + d1[1] * vy), sigma
+        root = np.sqrt(d1[0] * d1[0] + d1[1] * d1[1] - normal * normal)
+    sigma = sub(mul(branch, root), b)
+    vx, vy = add(wx, mul(sigma, ex)), add(wy, mul(sigma, ey))
+    return np.arctan2(cross(d1[0], d1[1], vx, vy), dot(d1, (vx, vy))), sigma
 
 
 def compile_group(context: CompileContext, group: Group) -> DyadSolver:
