@@ -22,12 +22,19 @@ import numpy as np
 
 from assur._kinematics import KinematicState, velocity_coefficients
 from assur._loads import LoadPlan, table_values
-from assur._vec import Array, Leaf, add, cross, full, mul, take_rows
+from assur._vec import Array, Leaf, add, cross, dot, full, mul, take_rows
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium, Wrench
 from assur.groups.driver import Balance, balance
 from assur.plan import Plan
+
+NO_FORCE = 1e-12
+"""A prismatic pair's normal force below this fraction of the largest reaction at the
+same position is no force: rounding is all it holds."""
+SLOW = 1e-100
+"""Below this driver speed (rad/s or m/s) velocities are too small to be divided by
+the speed: the velocity coefficients are solved at unit speed instead."""
 
 __all__ = [
     "Applied",
@@ -226,7 +233,7 @@ def virtual_power(
     origin about which :math:`\tau_{b,O}` is taken.
     """
     scale: Any
-    if len(plan.drivers) == 1 and np.all(speed != 0.0):
+    if len(plan.drivers) == 1 and np.all(np.abs(speed) > SLOW):
         coeff, scale = bodies, 1.0 / speed  # velocities are linear in the one speed
     else:
         coeff, scale = velocity_coefficients(plan, bodies, which), 1.0
@@ -246,16 +253,22 @@ def virtual_power(
     return -scale * total
 
 
-def offset(pair: PairPlan, bodies: list[Motion], fx: Any, fy: Any, couple: Any) -> Any:
+def offset(
+    pair: PairPlan, bodies: list[Motion], fx: Any, fy: Any, couple: Any, scale: Any
+) -> Array:
     """Where a prismatic pair's normal force acts: distance along the axis (m).
 
     The couple about the pair's point moves the resultant normal force ``N`` by
-    ``M / N`` along the slide line; NaN where there is no normal force.
+    ``M / N`` along the slide line. NaN where there is no normal force: where ``|N|``
+    is below :data:`NO_FORCE` times ``scale``, the largest reaction of the mechanism
+    at that position (N), as rounding leaves it.
     """
     nx, ny = rotated(bodies[pair.first], pair.normal)
-    normal = fx * nx + fy * ny
+    normal = np.asarray(dot((fx, fy), (nx, ny)), dtype=float)
+    couple = np.asarray(couple, dtype=float)
+    none = ~(np.abs(normal) > NO_FORCE * np.asarray(scale))
     with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(np.abs(normal) > 1e-12, couple / normal, np.nan)
+        return np.where(none, np.nan, couple / np.where(none, 1.0, normal))
 
 
 def residual(

@@ -8,15 +8,17 @@ asked for and kept, read-only.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from assur._evaluate import evaluate, materialize
 from assur._kinematics import KinematicState
 from assur._text import suggest
 from assur._vec import Array
-from assur.columns import Column, evaluate
+from assur.columns import Column
 from assur.kinetostatics import ForceState
 from assur.model import Mechanism
 from assur.plan import Plan
@@ -103,12 +105,7 @@ class Table:
             return found
         column = self.column(name)
         for key, values in evaluate(self, column).items():
-            if key in self._index and key not in self._cache:
-                # handed out read-only; a view keeps the states' own arrays as they are
-                if values.flags.writeable:
-                    values = values.view()
-                    values.flags.writeable = False
-                self._cache[key] = values
+            self._keep(key, values)
         return self._cache[name]
 
     def __len__(self) -> int:
@@ -119,10 +116,24 @@ class Table:
 
     def to_array(self) -> Array:
         """Return the table as one array (rows, columns)."""
+        self._compute(c for c in self.schema if c.name not in self._cache)
         out = np.empty((len(self), len(self._index)))
         for j, name in enumerate(self._index):
-            out[:, j] = self[name]
+            out[:, j] = self._cache[name]
         return out
+
+    def _compute(self, columns: Iterable[Column]) -> None:
+        """Compute ``columns`` (and those computed along with them) into the cache."""
+        for key, values in materialize(self, columns).items():
+            self._keep(key, values)
+
+    def _keep(self, key: str, values: Array) -> None:
+        """Keep a computed column, read-only; a view leaves the states' arrays be."""
+        if key in self._index and key not in self._cache:
+            if values.flags.writeable:
+                values = values.view()
+                values.flags.writeable = False
+            self._cache[key] = values
 
     def to_csv(self, path: Any = None) -> str | None:
         """Write the table as CSV to ``path`` (a path, a file object or ``"-"``).

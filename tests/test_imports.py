@@ -35,6 +35,7 @@ RANKS = {
     "assur._kinematics": 5,
     "assur.kinetostatics": 6,
     "assur.columns": 7,
+    "assur._evaluate": 7,
     "assur.table": 8,
     "assur.analysis": 9,
     "assur.io": 10,
