@@ -679,6 +679,12 @@ def ratios(res: dict) -> tuple[dict, list]:
                 rows["forces"],
                 rows["forces_torque"],
             )
+            # above 1 only by the torque's read, unless columns= spares the sweep work
+            paired(
+                f"{name} forces, torque only / call alone, n={n}",
+                rows["forces_torque"],
+                rows["forces_call"],
+            )
         r = out[f"{name} forces, columns read / torque only, n={large}"]
         target(f"{name} forces, columns read / torque only at n={large}", r, 2.0, True)
     for key in ("kinematics", "kinematics_call"):
