@@ -8,8 +8,10 @@ Run from the repository root::
 The full run prints a table and writes ``benchmarks/results.json``; ``--quick`` writes
 ``benchmarks/results-quick.json`` instead (``--output PATH`` overrides either). Every
 figure is the median of several runs timed with ``time.perf_counter`` in this one
-process, after a warm-up call. The targets are printed as PASS/FAIL; the exit status
-is 0 whatever they say. ``benchmarks/README.md`` explains every column.
+process, after a warm-up call. A table's columns are computed when first read, so each
+sweep is timed as the call alone and as the call plus every column read (the work the
+hand-written batches do). The targets are printed as PASS/FAIL; the exit status is 0
+whatever they say. ``benchmarks/README.md`` explains every row.
 """
 
 from __future__ import annotations
@@ -40,12 +42,21 @@ except ImportError:  # run from a source tree without the package installed
 sys.path.insert(0, str(HERE))
 import reference as ref  # noqa: E402
 
+FORMAT = 2
+"""Version of the layout of ``results.json`` (2: call alone and every column read)."""
 FULL_SIZES = (360, 10**3, 10**4, 10**5, 10**6)
 QUICK_SIZES = (360, 10**3, 10**4)
-FULL_REPEATS = {360: 50, 10**3: 30, 10**4: 15, 10**5: 15, 10**6: 3}
+FULL_REPEATS = {360: 50, 10**3: 30, 10**4: 15, 10**5: 15, 10**6: 5}
 QUICK_REPEATS = {360: 10, 10**3: 5, 10**4: 3}
 LOOP_SIZES = (360, 10**3)
 RATIO_SIZE = 10**5
+LARGE_SIZE = 10**6
+RATES_N = {False: 10**5, True: 10**4}
+"""Sweep length of the per-position driver speed benchmark (full, --quick)."""
+RATES_REPEATS = {False: 9, True: 3}
+MEMORY_N = {False: 10**6, True: 10**5}
+"""Sweep length of the peak-memory measurement (full, --quick)."""
+TORQUE = ("driver.torque",)
 VERIFY_N = 1009
 TOLERANCE = 1e-9
 """Largest difference allowed between the hand-written results and assur's, relative
@@ -67,6 +78,36 @@ FSOLVE = {"slider-crank": ref.slider_crank_fsolve, "four-bar": ref.four_bar_fsol
 def angles(n: int) -> np.ndarray:
     """``n`` crank angles evenly over a full turn, deg."""
     return np.arange(n) * (360.0 / n)
+
+
+def read_all(table):
+    """Read every column of ``table`` (they are computed on first read); return it."""
+    for name in table.columns:
+        table[name]
+    return table
+
+
+def torque_only(mech, deg, **kwargs):
+    """``assur.forces`` of the driver's torque alone, the column read."""
+    table = assur.forces(mech, deg, columns=TORQUE, **kwargs)
+    table[TORQUE[0]]
+    return table
+
+
+ROWS = {
+    "kinematics_call": "assur.kinematics(m, a) alone: the sweep, no column read",
+    "kinematics": "assur.kinematics(m, a) and every column read",
+    "hand_kinematics": "hand-written numpy batch: every kinematics column",
+    "loop_call": "assur.kinematics(m, [a]) per position, no column read",
+    "loop": "assur.kinematics(m, [a]) per position, every column read",
+    "fsolve": "scipy fsolve per position: positions and velocities only",
+    "forces_call": "assur.forces(m, a) alone: the sweep, no column read",
+    "forces": "assur.forces(m, a) and every column read",
+    "forces_array": "assur.forces(m, a).to_array(): every column, one 2-D array",
+    "forces_torque": "assur.forces(m, a, columns=['driver.torque']), the column read",
+    "hand_forces": "hand-written numpy batch: every forces column",
+}
+"""What each timing row of ``results.json`` measures."""
 
 
 def run_times(
@@ -111,6 +152,12 @@ def entry(n: int, times: list) -> dict:
     }
 
 
+def pair_ratios(a: dict, b: dict) -> list:
+    """Time ratios a/b of the runs made in the same round."""
+    pairs = zip(a.get("times_s", []), b.get("times_s", []), strict=False)
+    return [x / y for x, y in pairs]
+
+
 def paired_ratio(a: dict, b: dict) -> float:
     """Median over rounds of the time ratio a/b of runs made in the same round.
 
@@ -118,9 +165,16 @@ def paired_ratio(a: dict, b: dict) -> float:
     the system hands back), so the ratio of a pair is steadier than the ratio of two
     medians taken over different rounds.
     """
-    pairs = zip(a.get("times_s", []), b.get("times_s", []), strict=False)
-    ratios = [x / y for x, y in pairs]
+    ratios = pair_ratios(a, b)
     return statistics.median(ratios) if ratios else a["median_s"] / b["median_s"]
+
+
+def spread(values: list) -> list:
+    """First and third quartiles of ``values`` (the noise of a median)."""
+    if len(values) < 2:
+        return [values[0], values[0]] if values else []
+    q = statistics.quantiles(values, n=4, method="inclusive")
+    return [q[0], q[2]]
 
 
 def rate_text(rate: float) -> str:
@@ -278,10 +332,14 @@ def run(quick: bool) -> dict:
     repeats = QUICK_REPEATS if quick else FULL_REPEATS
     mechs = {name: make() for name, make in MECHANISMS.items()}
     for m in mechs.values():  # compile plans, warm caches
-        assur.kinematics(m, angles(360))
+        read_all(assur.kinematics(m, angles(360)))
+    for name in HAND_FORCES:
+        read_all(assur.forces(mechs[name], angles(360)))
     res: dict = {
+        "format": FORMAT,
         "quick": quick,
         "sizes": list(sizes),
+        "rows": ROWS,
         "machine": {
             "python": platform.python_version(),
             "numpy": np.__version__,
@@ -294,70 +352,232 @@ def run(quick: bool) -> dict:
         "tolerance": TOLERANCE,
     }
     res["load_average_start"] = _load()
+    res["load_average_during"] = {}
     progress("verifying the hand-written references against assur ...")
     res["verification"] = verify(mechs)
 
-    for key in ("kinematics", "hand_kinematics", "forces", "hand_forces"):
+    for key in ROWS:
         res[key] = {}
     for n in sizes:
         deg = angles(n)
         progress(f"sweeps of {n} positions ...")
         fns = {}
         for name, m in mechs.items():
-            fns["kinematics", name] = lambda m=m, d=deg: assur.kinematics(m, d)
+            fns["kinematics_call", name] = lambda m=m, d=deg: assur.kinematics(m, d)
+            fns["kinematics", name] = lambda m=m, d=deg: read_all(
+                assur.kinematics(m, d)
+            )
         for name, fn in HAND_KIN.items():
             fns["hand_kinematics", name] = lambda fn=fn, d=deg: fn(d)
         for name, fn in HAND_FORCES.items():
-            fns["forces", name] = lambda m=mechs[name], d=deg: assur.forces(m, d)
+            m = mechs[name]
+            fns["forces_call", name] = lambda m=m, d=deg: assur.forces(m, d)
+            fns["forces", name] = lambda m=m, d=deg: read_all(assur.forces(m, d))
+            fns["forces_array", name] = lambda m=m, d=deg: assur.forces(m, d).to_array()
+            fns["forces_torque", name] = lambda m=m, d=deg: torque_only(m, d)
             fns["hand_forces", name] = lambda fn=fn, d=deg: fn(d)
         timed = run_times(fns, repeats[n], warmup=n <= 10**4, interleave=n >= 10**4)
         for (where, name), times in timed.items():
             res[where].setdefault(name, {})[n] = entry(n, times)
+        res["load_average_during"][str(n)] = _load()
 
-    loop, fsolve = {}, {}
     loop_repeats = 1 if quick else 3
     for n in LOOP_SIZES:
         deg = angles(n)
         for name in HAND_KIN:
             m = mechs[name]
             progress(f"per-position loop {name} n={n}")
-            loop.setdefault(name, {})[n] = entry(
-                n,
-                run_times(
-                    {0: lambda m=m, d=deg: [assur.kinematics(m, [a]) for a in d]},
-                    loop_repeats,
-                    False,
-                )[0],
+            timed = run_times(
+                {
+                    "loop_call": lambda m=m, d=deg: [
+                        assur.kinematics(m, [a]) for a in d
+                    ],
+                    "loop": lambda m=m, d=deg: [
+                        read_all(assur.kinematics(m, [a])) for a in d
+                    ],
+                },
+                loop_repeats,
+                False,
             )
+            for where, times in timed.items():
+                res[where].setdefault(name, {})[n] = entry(n, times)
             progress(f"fsolve {name} n={n}")
             fn = FSOLVE[name]
-            fsolve.setdefault(name, {})[n] = entry(
+            res["fsolve"].setdefault(name, {})[n] = entry(
                 n, run_times({0: lambda fn=fn, d=deg: fn(d)}, loop_repeats + 2)[0]
             )
-    res["loop"] = loop
-    res["fsolve"] = fsolve
 
     progress("360-position sweeps ...")
-    sc = mechs["slider-crank"]
-    deg = angles(360)
-    many = 50 if quick else 300
-    times = run_times(
-        {
-            "kinematics": lambda: assur.kinematics(sc, deg),
-            "forces": lambda: assur.forces(sc, deg),
-        },
-        many,
-        interleave=False,
-    )
-    res["interactive"] = {"runs": many}
-    for key, values in times.items():
-        res["interactive"][f"{key}_360_ms"] = 1e3 * statistics.median(values)
-        res["interactive"][f"{key}_360_min_ms"] = 1e3 * min(values)
+    res["interactive"] = interactive(mechs["slider-crank"], 50 if quick else 300)
+    progress("per-position driver speed ...")
+    res["driver_rates"] = driver_rates(mechs, RATES_N[quick], RATES_REPEATS[quick])
+    progress("peak memory ...")
+    res["memory"] = memory(MEMORY_N[quick])
     progress("import time ...")
     res["import"] = import_time()
     res["load_average_end"] = _load()
     res["ratios"], res["targets"] = ratios(res)
     return res
+
+
+def interactive(mech, runs: int) -> dict:
+    """Median times (ms) of the slider-crank's 360-position sweeps, run back to back.
+
+    Each form runs ``runs`` times in a row after a warm-up call, as a user calling the
+    same function again (an interactive session, a plot updated with a slider).
+    """
+    deg = angles(360)
+    times = run_times(
+        {
+            "kinematics_call": lambda: assur.kinematics(mech, deg),
+            "kinematics": lambda: read_all(assur.kinematics(mech, deg)),
+            "forces_call": lambda: assur.forces(mech, deg),
+            "forces": lambda: read_all(assur.forces(mech, deg)),
+            "forces_torque": lambda: torque_only(mech, deg),
+            "hand_forces": lambda: ref.slider_crank_forces(deg),
+        },
+        runs,
+        interleave=False,
+    )
+    out: dict = {"runs": runs}
+    for key, values in times.items():
+        out[f"{key}_360_ms"] = 1e3 * statistics.median(values)
+        out[f"{key}_360_min_ms"] = 1e3 * min(values)
+        out[f"{key}_360_quartiles_ms"] = [1e3 * v for v in spread(values)]
+    return out
+
+
+def driver_rates(mechs: dict, n: int, repeats: int) -> dict:
+    """Sweeps with the driver's speed and acceleration given per position.
+
+    ``arrays``: ``omega`` and ``epsilon`` arrays (a speed varying by 10 % over the turn,
+    and its consistent acceleration); ``constants``: the same keywords as floats (the
+    mean speed, a non-zero acceleration, so that no kernel skips a zero); ``file``: no
+    keyword, the file's constants (its acceleration is 0). Each as the call alone
+    and with every column read; runs interleaved.
+    """
+    deg = angles(n)
+    th = np.radians(deg)
+    out: dict = {"n": n, "repeats": repeats}
+    for name in HAND_FORCES:
+        m = mechs[name]
+        w0 = m.drivers[0].omega
+        w = w0 * (1.0 + 0.1 * np.sin(th))
+        e = 0.1 * w0 * np.cos(th) * w  # d(omega)/dt = d(omega)/d(angle) * omega
+        keywords = {
+            "file": {},
+            "constants": {"omega": float(w0), "epsilon": 0.05 * w0 * w0},
+            "arrays": {"omega": w, "epsilon": e},
+        }
+        fns = {}
+        for key, kw in keywords.items():
+            fns[key + "_call"] = lambda m=m, kw=kw: assur.forces(m, deg, **kw)
+            fns[key] = lambda m=m, kw=kw: read_all(assur.forces(m, deg, **kw))
+        timed = run_times(fns, repeats, warmup=True, interleave=True)
+        out[name] = {key: entry(n, times) for key, times in timed.items()}
+    return out
+
+
+MEMORY_SCRIPT = """
+import json, resource, sys
+import numpy as np
+sys.path[:0] = [{root!r}, {here!r}]
+import assur
+import reference as ref
+n, name, mode = {n}, {name!r}, {mode!r}
+make = assur.catalog.slider_crank if name == "slider-crank" else assur.catalog.four_bar
+hand = ref.slider_crank_forces if name == "slider-crank" else ref.four_bar_forces
+mech = make()
+deg = np.arange(n) * (360.0 / n)
+small = deg[:360]
+t = assur.forces(mech, small)  # compile the plan, load the modules
+[t[c] for c in t.columns], hand(small)
+del t
+unit = 1.0 if sys.platform == "darwin" else 1024.0  # ru_maxrss: bytes or KiB
+
+
+def status(field):  # a memory figure of this process from /proc (Linux), bytes
+    try:
+        with open("/proc/self/status") as f:
+            for line in f:
+                if line.startswith(field + ":"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    return None
+
+
+before = status("VmRSS")
+rusage_before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * unit
+if mode == "hand":
+    out = hand(deg)
+    width = len(out)
+elif mode == "torque":
+    t = assur.forces(mech, deg, columns=["driver.torque"])
+    t["driver.torque"]
+    width = 1
+else:
+    t = assur.forces(mech, deg)
+    width = len(t.columns)
+    if mode == "columns":
+        [t[c] for c in t.columns]
+    elif mode == "array":
+        a = t.to_array()
+rusage = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * unit
+peak = status("VmHWM")
+print(json.dumps({{
+    "before_bytes": rusage_before if before is None else before,
+    "peak_bytes": rusage if peak is None else peak,
+    "rusage_before_bytes": rusage_before,
+    "rusage_peak_bytes": rusage,
+    "columns": width,
+}}))
+"""
+MEMORY_MODES = {
+    "call": "assur.forces(m, a) alone",
+    "columns": "assur.forces(m, a), every column read",
+    "array": "assur.forces(m, a).to_array()",
+    "torque": "assur.forces(m, a, columns=['driver.torque']), the column read",
+    "hand": "hand-written numpy batch, every column",
+}
+
+
+def memory(n: int) -> dict:
+    """Peak resident memory of one force sweep of ``n`` positions, each in a fresh
+    interpreter: the resident size before the sweep (interpreter, numpy, assur and a
+    360-position warm-up) and the peak.
+
+    On Linux the peak is ``VmHWM`` of ``/proc/self/status``: ``ru_maxrss`` of
+    ``resource.getrusage`` survives ``exec``, so in a child it starts at least at the
+    benchmark process's own resident size at the fork (about 100 MB here) and hides
+    smaller sweeps. ``ru_maxrss`` is recorded too (``rusage_*``) and used where
+    ``/proc`` is missing.
+    """
+    out: dict = {"n": n, "modes": MEMORY_MODES}
+    for name in HAND_FORCES:
+        out[name] = {}
+        for mode in MEMORY_MODES:
+            progress(f"peak memory {name} {mode} n={n}")
+            code = MEMORY_SCRIPT.format(
+                root=str(ROOT), here=str(HERE), n=n, name=name, mode=mode
+            )
+            try:
+                done = subprocess.run(
+                    [sys.executable, "-c", code],
+                    capture_output=True,
+                    text=True,
+                    check=True,
+                    cwd=ROOT,
+                )
+                v = json.loads(done.stdout.strip().splitlines()[-1])
+            except (OSError, subprocess.CalledProcessError, ValueError) as err:
+                out[name][mode] = {"error": str(err)}
+                continue
+            v["peak_mb"] = v["peak_bytes"] / 2**20
+            v["sweep_mb"] = (v["peak_bytes"] - v["before_bytes"]) / 2**20
+            v["columns_mb"] = v["columns"] * n * 8 / 2**20
+            out[name][mode] = v
+    return out
 
 
 def _load() -> list | None:
@@ -396,11 +616,13 @@ def _cpu() -> str:
 
 
 def ratios(res: dict) -> tuple[dict, list]:
-    big = RATIO_SIZE if RATIO_SIZE in res["sizes"] else max(res["sizes"])
+    sizes = res["sizes"]
+    big = RATIO_SIZE if RATIO_SIZE in sizes else max(sizes)
+    large = LARGE_SIZE if LARGE_SIZE in sizes else max(sizes)
     loop_n = max(LOOP_SIZES)
     kin, hk = res["kinematics"], res["hand_kinematics"]
-    frc, hf = res["forces"], res["hand_forces"]
-    out: dict = {"at_n": big}
+    out: dict = {"at_n": big, "large_n": large}
+    quartiles: dict = {}
     targets = []
 
     def target(label, value, limit, above):
@@ -415,36 +637,101 @@ def ratios(res: dict) -> tuple[dict, list]:
             }
         )
 
+    def paired(label, a, b):
+        """The paired ratio a/b, kept with its quartiles."""
+        out[label] = paired_ratio(a, b)
+        quartiles[label] = spread(pair_ratios(a, b))
+        return out[label]
+
     for name in HAND_KIN:
-        r = paired_ratio(kin[name][big], hk[name][big])
-        out[f"{name} kinematics assur/hand time"] = r
-        target(f"{name} kinematics, assur/hand-written time at n={big}", r, 1.5, False)
+        r = paired(
+            f"{name} kinematics, columns read / hand, n={big}",
+            kin[name][big],
+            hk[name][big],
+        )
+        target(
+            f"{name} kinematics, columns read / hand-written at n={big}",
+            r,
+            1.5,
+            False,
+        )
+        paired(
+            f"{name} kinematics, call alone / hand, n={big}",
+            res["kinematics_call"][name][big],
+            hk[name][big],
+        )
     for name in HAND_FORCES:
-        r = paired_ratio(frc[name][big], hf[name][big])
-        out[f"{name} forces assur/hand time"] = r
-        target(f"{name} forces, assur/hand-written time at n={big}", r, 1.5, False)
-    r = kin["ten-bar"][big]["rate"] / kin["slider-crank"][big]["rate"]
-    out["ten-bar rate / slider-crank rate"] = r
-    target(f"ten-bar rate / slider-crank rate at n={big}", r, 0.2, True)
+        for n in sorted({big, large}):
+            rows = {key: res[key][name][n] for key in ROWS if key.startswith("forces")}
+            hand = res["hand_forces"][name][n]
+            r = paired(
+                f"{name} forces, columns read / hand, n={n}", rows["forces"], hand
+            )
+            target(
+                f"{name} forces, columns read / hand-written at n={n}", r, 1.5, False
+            )
+            paired(
+                f"{name} forces, call alone / hand, n={n}", rows["forces_call"], hand
+            )
+            paired(f"{name} forces, to_array / hand, n={n}", rows["forces_array"], hand)
+            paired(
+                f"{name} forces, columns read / torque only, n={n}",
+                rows["forces"],
+                rows["forces_torque"],
+            )
+            # above 1 only by the torque's read, unless columns= spares the sweep work
+            paired(
+                f"{name} forces, torque only / call alone, n={n}",
+                rows["forces_torque"],
+                rows["forces_call"],
+            )
+        r = out[f"{name} forces, columns read / torque only, n={large}"]
+        target(f"{name} forces, columns read / torque only at n={large}", r, 2.0, True)
+    for key in ("kinematics", "kinematics_call"):
+        what = "columns read" if key == "kinematics" else "call alone"
+        r = res[key]["ten-bar"][big]["rate"] / res[key]["slider-crank"][big]["rate"]
+        out[f"ten-bar rate / slider-crank rate, {what}, n={big}"] = r
+        if key == "kinematics":
+            target(f"ten-bar rate / slider-crank rate at n={big}", r, 0.2, True)
     for name in HAND_KIN:
-        r = kin[name][big]["rate"] / res["loop"][name][loop_n]["rate"]
-        out[f"{name} assur/per-position loop rate"] = r
-        target(f"{name} assur at n={big} / per-position loop rate", r, 50.0, True)
-        out[f"{name} assur/fsolve rate"] = (
+        for key, what in (("kinematics", "columns read"), ("kinematics_call", "call")):
+            loop = "loop" if key == "kinematics" else "loop_call"
+            r = res[key][name][big]["rate"] / res[loop][name][loop_n]["rate"]
+            out[f"{name} assur/per-position loop rate, {what}"] = r
+            if key == "kinematics":
+                target(
+                    f"{name} assur at n={big} / per-position loop rate, columns read",
+                    r,
+                    50.0,
+                    True,
+                )
+        out[f"{name} assur (columns read)/fsolve rate"] = (
             kin[name][big]["rate"] / res["fsolve"][name][loop_n]["rate"]
         )
-    target(
-        "slider-crank 360-position kinematics sweep, ms",
-        res["interactive"]["kinematics_360_ms"],
-        0.5,
-        False,
-    )
-    out["slider-crank 360-position forces sweep, ms"] = res["interactive"][
-        "forces_360_ms"
-    ]
+    dr = res["driver_rates"]
+    for name in HAND_FORCES:
+        for what in ("", "_call"):
+            label = "columns read" if not what else "call alone"
+            paired(
+                f"{name} forces, omega/epsilon arrays / constants, {label}, "
+                f"n={dr['n']}",
+                dr[name]["arrays" + what],
+                dr[name]["constants" + what],
+            )
+    it = res["interactive"]
+    for key, what in (("kinematics", "kinematics"), ("forces", "forces")):
+        limit = 0.5 if key == "kinematics" else 0.4
+        for suffix, form in (("_call", "call alone"), ("", "every column read")):
+            target(
+                f"slider-crank 360-position {what} sweep, {form}, ms",
+                it[f"{key}{suffix}_360_ms"],
+                limit,
+                False,
+            )
     target(
         "import assur (with bytecode cache), s", res["import"]["import_s"], 0.15, False
     )
+    out["quartiles"] = quartiles
     return out, targets
 
 
@@ -465,11 +752,14 @@ def report(res: dict) -> str:
     )
     la, lb = res.get("load_average_start"), res.get("load_average_end")
     if la and lb:
+        during = res.get("load_average_during") or {}
+        loads = [la[0], lb[0], *(v[0] for v in during.values() if v)]
         lines.append(
-            f"load average (1 min) at start {la[0]:.2f}, at end {lb[0]:.2f}"
+            f"load average (1 min) at start {la[0]:.2f}, at end {lb[0]:.2f}, "
+            f"highest seen {max(loads):.2f}"
             + (
                 "  -- the machine was busy: figures are noisy"
-                if la[0] > 0.5 * (m["cpus"] or 1)
+                if max(loads) > 0.5 * (m["cpus"] or 1)
                 else ""
             )
         )
@@ -492,8 +782,11 @@ def report(res: dict) -> str:
             "are not a fair comparison"
         )
     lines.append("")
-    width = 12
-    head = f"{'positions per second':46s}" + "".join(f"{n:>{width}d}" for n in sizes)
+    width = 11
+    label_width = 48
+    head = f"{'positions per second':{label_width}s}" + "".join(
+        f"{n:>{width}d}" for n in sizes
+    )
     lines.append(head)
     lines.append("-" * len(head))
 
@@ -502,27 +795,71 @@ def report(res: dict) -> str:
             f"{rate_text(data[n]['rate']) if n in data else '':>{width}s}"
             for n in sizes
         )
-        lines.append(f"{label:46s}{cells}")
+        lines.append(f"{label:{label_width}s}{cells}")
 
     for name in MECHANISMS:
-        row(f"assur.kinematics  {name}", res["kinematics"][name])
+        row(f"assur.kinematics {name}, call alone", res["kinematics_call"][name])
+        row(f"assur.kinematics {name}, columns read", res["kinematics"][name])
+        if name in HAND_KIN:
+            row(f"hand-written numpy kinematics {name}", res["hand_kinematics"][name])
     for name in HAND_KIN:
-        row(f"hand-written numpy kinematics {name}", res["hand_kinematics"][name])
-    for name in HAND_KIN:
-        row(f"per-position assur.kinematics {name}", res["loop"][name])
-    for name in FSOLVE:
+        row(f"per-position assur {name}, call alone", res["loop_call"][name])
+        row(f"per-position assur {name}, columns read", res["loop"][name])
         row(f"per-position fsolve {name}", res["fsolve"][name])
     for name in HAND_FORCES:
-        row(f"assur.forces  {name}", res["forces"][name])
-    for name in HAND_FORCES:
+        row(f"assur.forces {name}, call alone", res["forces_call"][name])
+        row(f"assur.forces {name}, columns read", res["forces"][name])
+        row(f"assur.forces {name}, to_array()", res["forces_array"][name])
+        row(f"assur.forces {name}, columns=[torque]", res["forces_torque"][name])
         row(f"hand-written numpy forces {name}", res["hand_forces"][name])
     lines.append("")
     it, im = res["interactive"], res["import"]
     lines.append(
-        f"slider-crank, 360 positions (median of {it['runs']}): "
-        f"kinematics {it['kinematics_360_ms']:.3f} ms, "
-        f"forces {it['forces_360_ms']:.3f} ms"
+        f"slider-crank, 360 positions, ms (median of {it['runs']}, back to back; "
+        "quartiles in brackets):"
     )
+    for key, what in (
+        ("kinematics_call", "kinematics, call alone"),
+        ("kinematics", "kinematics, every column read"),
+        ("forces_call", "forces, call alone"),
+        ("forces", "forces, every column read"),
+        ("forces_torque", "forces, columns=['driver.torque']"),
+        ("hand_forces", "hand-written numpy forces"),
+    ):
+        q = it[f"{key}_360_quartiles_ms"]
+        lines.append(
+            f"  {what:40s} {it[f'{key}_360_ms']:8.3f}  [{q[0]:.3f}, {q[1]:.3f}]"
+        )
+    dr = res["driver_rates"]
+    lines.append(
+        f"per-position driver speed, forces at n={dr['n']}, ms (median of "
+        f"{dr['repeats']}, interleaved): file's constants / constants / arrays"
+    )
+    for name in HAND_FORCES:
+        for suffix, what in (("_call", "call alone"), ("", "columns read")):
+            cells = " / ".join(
+                f"{dr[name][key + suffix]['median_s'] * 1e3:.1f}"
+                for key in ("file", "constants", "arrays")
+            )
+            lines.append(f"  {name + ', ' + what:40s} {cells}")
+    mem = res["memory"]
+    lines.append(
+        f"peak memory of one force sweep of {mem['n']} positions, MB "
+        "(fresh interpreter; in brackets: growth during the sweep / the columns' "
+        "size):"
+    )
+    for name in HAND_FORCES:
+        cells = []
+        for mode in MEMORY_MODES:
+            v = mem[name][mode]
+            if "error" in v:
+                cells.append(f"{mode} error")
+            else:
+                cells.append(
+                    f"{mode} {v['peak_mb']:.0f} ({v['sweep_mb']:.0f}/"
+                    f"{v['columns_mb']:.0f})"
+                )
+        lines.append(f"  {name:13s} " + ", ".join(cells))
     for key, what in (
         ("cached_bytecode", "with bytecode cache"),
         ("no_bytecode_cache", "without bytecode cache"),
@@ -539,15 +876,19 @@ def report(res: dict) -> str:
             " ms"
         )
     lines.append("")
-    lines.append("Ratios:")
+    lines.append("Ratios (time ratios: median of paired runs [quartiles]; rates):")
+    quartiles = res["ratios"].get("quartiles", {})
     for key, v in res["ratios"].items():
-        if key != "at_n":
-            lines.append(f"  {key:45s} {v:10.3g}")
+        if key in ("at_n", "large_n", "quartiles"):
+            continue
+        q = quartiles.get(key)
+        noise = f"  [{q[0]:.3g}, {q[1]:.3g}]" if q else ""
+        lines.append(f"  {key:62s} {v:9.3g}{noise}")
     lines.append("")
     lines.append("Targets:")
     for t in res["targets"]:
         lines.append(
-            f"  {'PASS' if t['pass'] else 'FAIL'}  {t['target']:58s} "
+            f"  {'PASS' if t['pass'] else 'FAIL'}  {t['target']:66s} "
             f"{t['value']:9.3g} {t['kind']} {t['limit']:g}"
         )
     return "\n".join(lines)

@@ -4,7 +4,8 @@ The yardstick for ``bench_sweep.py``: the same outputs as ``assur.kinematics`` a
 ``assur.forces`` (same column names, same sign conventions), written the way an
 engineer would write them for one known mechanism in plain numpy: closed-form
 positions, the derivatives of the loop-closure equations solved by Cramer's rule,
-rigid-body formulas for every point, and the classic dyad-by-dyad reactions. Each
+rigid-body formulas for every point and every link's instant centre, and the classic
+dyad-by-dyad reactions. Each
 function takes driver angles in degrees and returns ``{column: array}``; long sweeps
 run in slices of ``CHUNK`` positions written into one preallocated array.
 
@@ -39,16 +40,21 @@ SC = {
     "g_rod": 0.060,
 }
 # assur.catalog.four_bar(): A = (0, 0), D = (0.1, 0); crank 0.04, coupler 0.12, rocker
-# 0.08; 10 rad/s; bars of 2 kg/m with slender-bar inertia, centres at mid-length;
-# coupler point P at mid-coupler.
+# 0.08; reference pose at 60 deg, 10 rad/s; bars of 2 kg/m with slender-bar inertia,
+# centres at mid-length; coupler point P at mid-coupler.
 FB = {
     "crank": 0.04,
     "coupler": 0.12,
     "rocker": 0.08,
     "frame": 0.10,
+    "angle0": 60.0,
     "omega": 10.0,
     "epsilon": 0.0,
 }
+TRANSLATION = 1e-12
+"""A link translates (its instant centre is at infinity: NaN) where its angular speed
+times the mechanism's size is at most this fraction of its origin's speed: assur's
+test, so that both give NaN at the same positions."""
 
 
 def _rigid(p, u_x, u_y, w, al, je):
@@ -73,6 +79,25 @@ def _rigid(p, u_x, u_y, w, al, je):
     )
 
 
+def _ic(o, w, size):
+    """Instant centre ``o + (-v_oy, v_ox) / w`` of a link with origin ``o`` (8-tuple).
+
+    NaN where the link translates: ``|w| size <= TRANSLATION |v_o|``.
+    """
+    ox, oy, vx, vy = o[:4]
+    moving = np.abs(w) * size > TRANSLATION * np.hypot(vx, vy)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return (
+            np.where(moving, ox - vy / w, np.nan),
+            np.where(moving, oy + vx / w, np.nan),
+        )
+
+
+def _size(*points):
+    """Largest distance between two of ``points`` (x, y): the mechanism's size."""
+    return max(math.dist(p, q) for p in points for q in points)
+
+
 def _maxabs(*values):
     """Largest magnitude, position by position, of the arrays or scalars given."""
     out = np.abs(values[0])
@@ -89,12 +114,14 @@ def _point_cols(name, p):
     return [(f"{name}.{s}", v) for s, v in zip(_SUFFIX, p, strict=True)]
 
 
-def _link_cols(name, angle_deg, w, al, je):
+def _link_cols(name, angle_deg, w, al, je, ic):
     return [
         (f"{name}.angle", angle_deg),
         (f"{name}.omega", w),
         (f"{name}.alpha", al),
         (f"{name}.jerk", je),
+        (f"{name}.ic.x", ic[0]),
+        (f"{name}.ic.y", ic[1]),
     ]
 
 
@@ -145,13 +172,15 @@ def _sc_kin_cols(deg, th, B, sphi, cphi, rod, C):
     L = p["rod"]
     G2 = tuple(kc * v for v in B)
     G3 = _rigid(B, kr * L * cphi, kr * L * sphi, w3, al3, j3)
-    x0 = p["crank"] * math.cos(math.radians(p["angle0"])) + math.sqrt(
-        L * L - (p["offset"] - p["crank"] * math.sin(math.radians(p["angle0"]))) ** 2
-    )
+    x0 = SC_POSE["C"][0]
+    size = SC_POSE["size"]
     cols = [("angle", deg)]
-    cols += _link_cols("crank", deg, p["omega"], p["epsilon"], 0.0)
-    cols += _link_cols("rod", np.degrees(np.arctan2(sphi, cphi)), w3, al3, j3)
-    cols += _link_cols("slider", 0.0, 0.0, 0.0, 0.0)
+    ic = _ic(_FIXED, p["omega"], size)
+    cols += _link_cols("crank", deg, p["omega"], p["epsilon"], 0.0, ic)
+    rod_angle = np.degrees(np.arctan2(sphi, cphi))
+    cols += _link_cols("rod", rod_angle, w3, al3, j3, _ic(B, w3, size))
+    # the slider translates: no instant centre
+    cols += _link_cols("slider", 0.0, 0.0, 0.0, 0.0, (np.nan, np.nan))
     cols += _point_cols("A", _FIXED) + _point_cols("B", B) + _point_cols("C", C)
     cols += _point_cols("guide", C)
     cols += [
@@ -260,6 +289,20 @@ def _sc_forces_kernel(deg):
     return cols
 
 
+def _sc_pose():
+    """The catalog slider-crank's reference pose: pivots and size (the largest
+    distance between two joints), as the catalog builds it."""
+    p = SC
+    r, L, e = p["crank"], p["rod"], p["offset"]
+    a = math.radians(p["angle0"])
+    B = (r * math.cos(a), r * math.sin(a))
+    C = (B[0] + math.sqrt(L * L - (e - B[1]) ** 2), e)
+    return {"B": B, "C": C, "size": _size((0.0, 0.0), B, C)}
+
+
+SC_POSE = _sc_pose()
+
+
 def slider_crank_kinematics(deg):
     """Kinematics columns of the catalog slider-crank at crank angles ``deg``."""
     return _sweep(_sc_kin_kernel, deg)
@@ -313,10 +356,14 @@ def _fb_kin_cols(deg, B, cpl, rck, C):
     G2 = tuple(0.5 * v for v in B)
     G3 = _rigid(B, 0.5 * u3x, 0.5 * u3y, w3, al3, j3)
     G4 = _rigid(D, 0.5 * u4x, 0.5 * u4y, w4, al4, j4)
+    size = FB_POSE["size"]
     cols = [("angle", deg)]
-    cols += _link_cols("crank", deg, p["omega"], p["epsilon"], 0.0)
-    cols += _link_cols("coupler", np.degrees(np.arctan2(u3y, u3x)), w3, al3, j3)
-    cols += _link_cols("rocker", np.degrees(np.arctan2(u4y, u4x)), w4, al4, j4)
+    ic = _ic(_FIXED, p["omega"], size)
+    cols += _link_cols("crank", deg, p["omega"], p["epsilon"], 0.0, ic)
+    angle = np.degrees(np.arctan2(u3y, u3x))
+    cols += _link_cols("coupler", angle, w3, al3, j3, _ic(B, w3, size))
+    angle = np.degrees(np.arctan2(u4y, u4x))
+    cols += _link_cols("rocker", angle, w4, al4, j4, _ic(D, w4, size))
     cols += (
         _point_cols("A", _FIXED)
         + _point_cols("B", B)
@@ -421,6 +468,19 @@ def _fb_forces_kernel(deg):
         ("residual.moment", rm),
     ]
     return cols
+
+
+def _fb_pose():
+    """The catalog four-bar's reference pose: pivots and size (the largest distance
+    between two joints)."""
+    p = FB
+    _, B, _, _, C = _fb_motion(np.array([p["angle0"]]))
+    B, C = (float(B[0][0]), float(B[1][0])), (float(C[0][0]), float(C[1][0]))
+    size = _size((0.0, 0.0), B, C, (p["frame"], 0.0))
+    return {"B": B, "C": C, "size": size}
+
+
+FB_POSE = _fb_pose()
 
 
 def four_bar_kinematics(deg):
