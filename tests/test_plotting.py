@@ -443,6 +443,69 @@ def test_animate_needs_forces_for_arrows(tmp_path: Path, tenbar: assur.Table) ->
     assert not (tmp_path / "x.gif").exists()
 
 
+# ------------------------------------------- the pictures and the report agree
+
+
+def _report_data(mech: assur.Mechanism, positions) -> dict:
+    """The JSON data embedded in the report of ``mech`` at ``positions``."""
+    import json
+    import re
+
+    from assur.html import render_report
+
+    page = render_report(mech, positions)
+    block = re.search(r'id="assur-data">(.*?)</script>', page, re.S)
+    assert block is not None
+    return json.loads(block.group(1))
+
+
+def _link_label_colours(ax) -> dict[str, str]:
+    """Each link's name on a drawing, with the colour of its frame."""
+    from matplotlib.colors import to_hex
+
+    out = {}
+    for text in ax.texts:
+        box = text.get_bbox_patch()
+        # the link names sit in boxes framed in the link's colour; joints have none
+        if box is not None and box.get_edgecolor()[3] > 0:
+            out[text.get_text()] = to_hex(box.get_edgecolor())
+    return out
+
+
+def test_links_have_the_report_colours(example: assur.Mechanism) -> None:
+    from matplotlib.colors import to_hex
+
+    positions = default_positions(example)[:2]
+    data = _report_data(example, positions)
+    ax = plotting.draw(assur.kinematics(example, positions))
+    assert _link_label_colours(ax) == {x["name"]: x["colour"] for x in data["links"]}
+    # the legend: the drivers, then the groups, in the report's order and colours
+    handles = ax.get_legend().legend_handles
+    assert [to_hex(h.get_color()) for h in handles] == [
+        g["colour"] for g in data["groups"]
+    ]
+
+
+def test_one_colour_for_every_driver(five_bar: assur.Table) -> None:
+    from matplotlib.colors import to_hex
+
+    from assur._style import DRIVER_COLOUR, GROUP_COLOURS
+
+    ax = plotting.draw(five_bar)
+    colours = _link_label_colours(ax)
+    drivers = [five_bar.plan.bodies[d.body] for d in five_bar.plan.drivers]
+    assert len(drivers) == 2
+    assert {colours[x] for x in drivers} == {DRIVER_COLOUR}
+    handles = ax.get_legend().legend_handles
+    assert [to_hex(h.get_color()) for h in handles[:3]] == [
+        DRIVER_COLOUR,
+        DRIVER_COLOUR,
+        GROUP_COLOURS[0],
+    ]
+    assert DRIVER_COLOUR not in GROUP_COLOURS
+    assert len(set(GROUP_COLOURS)) == len(GROUP_COLOURS)
+
+
 def test_import_assur_loads_no_matplotlib() -> None:
     code = (
         "import sys, assur, assur.plotting, assur.pictures_cli; "

@@ -12,14 +12,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._style import link_colours
 from assur._text import roman
 from assur.errors import ModelError
-from assur.plotting._style import (
-    DRIVER_COLOR,
-    GROUND_COLOR,
-    GROUP_COLORS,
-    PLAIN_COLOR,
-)
+from assur.plotting._style import GROUND_COLOR, PLAIN_COLOR
 
 if TYPE_CHECKING:
     from assur.analysis import Table
@@ -80,21 +76,22 @@ class _Context:
 
 
 def _colors(plan: Plan, groups: bool) -> tuple[dict[int, str], Legend]:
-    """Colour each body by its Assur group (or all alike); return the legend too."""
+    """Colour each body by its Assur group (or all alike); return the legend too.
+
+    The colours are those of the report (:func:`assur._style.link_colours`).
+    """
+    by_name = link_colours(plan)
     color: dict[int, str] = {0: GROUND_COLOR}
-    legend: Legend = []
-    for d in plan.drivers:
-        color[d.body] = DRIVER_COLOR if groups else PLAIN_COLOR
-        legend.append(
-            (f"I, driver (ground, {plan.bodies[d.body]})", color[d.body], (d.body,))
-        )
-    for k, g in enumerate(plan.groups):
-        c = GROUP_COLORS[k % len(GROUP_COLORS)] if groups else PLAIN_COLOR
+    for b, name in enumerate(plan.bodies[1:], 1):
+        color[b] = by_name[name] if groups else PLAIN_COLOR
+    legend: Legend = [
+        (f"I, driver (ground, {plan.bodies[d.body]})", color[d.body], (d.body,))
+        for d in plan.drivers
+    ]
+    for g in plan.groups:
         bodies = tuple(plan.body(x) for x in g.links)
-        for b in bodies:
-            color[b] = c
-        name = roman(g.group_class)
-        legend.append((f"{name}, order {g.order}, {g.label}", c, bodies))
+        text = f"{roman(g.group_class)}, order {g.order}, {g.label}"
+        legend.append((text, color[bodies[0]], bodies))
     return color, legend
 
 

@@ -17,7 +17,7 @@ from assur._vec import full
 from assur.plotting._geometry import _nice
 from assur.plotting._style import (
     ARROW_LENGTH,
-    DRIVER_COLOR,
+    BALANCING_COLOR,
     INERTIA_COLOR,
     REACTION_COLOR,
 )
@@ -126,11 +126,11 @@ def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
         value = float(full(ctx.forces.balancing[i], len(ctx.table))[row])
         label = f"$T_{{b,{_tex(d.pair.name)}}}$" if len(drivers) > 1 else "$T_b$"
         if d.kind == "R":
-            arrow = _Arrow(label, p, None, value, DRIVER_COLOR, "N m", "balancing")
+            arrow = _Arrow(label, p, None, value, BALANCING_COLOR, "N m", "balancing")
         else:
             e = pose.turn(d.pair.first, d.pair.axis)
             label = label.replace("T", "F")
-            arrow = _Arrow(label, p, value * e, None, DRIVER_COLOR, "N", "balancing")
+            arrow = _Arrow(label, p, value * e, None, BALANCING_COLOR, "N", "balancing")
         arrows.append(arrow)
     return arrows
 
@@ -209,7 +209,7 @@ def _draw_couple(
     from matplotlib.patches import FancyArrowPatch
     from matplotlib.path import Path
 
-    rad = (3.4 if a.color == DRIVER_COLOR else 2.3) * ctx.r
+    rad = (3.4 if a.kind == "balancing" else 2.3) * ctx.r
     t = np.linspace(math.radians(-100), math.radians(150), 40)
     if couple < 0:
         t = t[::-1]
@@ -226,7 +226,7 @@ def _draw_couple(
     )
     if text:
         # the balancing torque always shows its value
-        value = text == "values" or a.color == DRIVER_COLOR
+        value = text == "values" or a.kind == "balancing"
         words = f"{a.label} = {couple:.3g} {a.value}" if value else a.label
         ax.text(
             *(a.point + rad * np.array([0.7, 0.8])),

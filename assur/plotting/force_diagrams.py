@@ -16,14 +16,14 @@ from assur.errors import ModelError
 from assur.plotting._axes import _driver_axis, _new_axes
 from assur.plotting._context import _context, _need_forces, _revolute
 from assur.plotting._geometry import _on
-from assur.plotting._style import DRIVER_COLOR
+from assur.plotting._style import BALANCING_COLOR
 
 if TYPE_CHECKING:
     from assur.analysis import Table
 
 __all__ = ["plot_hodographs", "plot_shaking", "plot_torque"]
 
-BALANCING_COLORS = (DRIVER_COLOR, "#e6550d", "#31a354")
+BALANCING_COLORS = (BALANCING_COLOR, "#e6550d", "#31a354")
 """Colours of the balancing loads, one per driver (cycled)."""
 
 

@@ -26,7 +26,7 @@ from assur.plotting._geometry import _extent, _public, _shape, _skeleton
 from assur.plotting._labels import _label_joints, _label_link
 from assur.plotting._parts import _draw_guide, _draw_joint, _draw_link, _draw_pivot
 from assur.plotting._style import (
-    DRIVER_COLOR,
+    BALANCING_COLOR,
     FAINT,
     GROUND_COLOR,
     INERTIA_COLOR,
@@ -135,7 +135,7 @@ def _draw_row(
         entries += [
             ("reaction, by first link on second", REACTION_COLOR),
             ("inertia force and torque", INERTIA_COLOR),
-            ("balancing load", DRIVER_COLOR),
+            ("balancing load", BALANCING_COLOR),
             (f"force scale: 1 cm = {scale:g} N", ""),
         ]
     _frame_axes(ax, list(limits) if limits is not None else seen, ctx.size)
