@@ -159,6 +159,23 @@ def test_nearest_row_with_two_drivers(five_bar: assur.Table) -> None:
         plotting._row(five_bar, [1.0, 2.0, 3.0])
 
 
+def test_titles_word_the_driver_positions(five_bar: assur.Table) -> None:
+    from assur._text import position_title
+
+    a, e = five_bar.given[1]
+    title = f"A: φ = {a:.1f}°, E: φ = {e:.1f}°"
+    assert position_title(["deg", "deg"], [a, e], ["A", "E"]) == title
+    assert plotting.draw(five_bar, angle=[a, e]).get_title().endswith(title)
+    fig = plotting.draw_decomposition(five_bar, angle=[a, e])
+    assert fig.get_suptitle().endswith(title)
+    # a table of a few columns still names each driver's position
+    plan = five_bar.plan
+    points = [f"{p}.{c}" for p in plan.points for c in "xy"]
+    few = assur.kinematics(five_bar.mechanism, [[a, e]], columns=points)
+    assert "A.drive" not in few
+    assert plotting.draw(few).get_title().endswith(title)
+
+
 def test_table_plot_forwards_to_draw(slider_crank: assur.Table) -> None:
     ax = slider_crank.plot(96.0, forces=True, labels=False)
     assert "95.0°" in ax.get_title()

@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._style import link_colours
-from assur._text import roman
+from assur._text import position_title, roman
+from assur.columns import pretty_unit, schema
 from assur.errors import ModelError
 from assur.plotting._style import GROUND_COLOR, PLAIN_COLOR
 
@@ -144,19 +145,33 @@ def _row(table: Table, angle: Any) -> int:
     return int(np.argmin(gap))
 
 
-def _position_text(table: Table, row: int) -> str:
+def _unit(table: Table, name: str) -> str:
+    """Return the unit of column ``name`` as pictures write it ("rad/s²", "N·m").
+
+    The unit is the schema's, also for a column the table was not asked to compute.
+    """
+    if name in table:
+        column = table.column(name)
+    else:
+        every = schema(table.plan, table.force_state is not None)
+        column = next(c for c in every if c.name == name)
+    return pretty_unit(column.unit)
+
+
+def _driver_columns(table: Table) -> list[str]:
+    """Return the column of each driver's position: ``angle``, or ``J.drive`` each."""
+    drivers = table.plan.drivers
+    if len(drivers) == 1:
+        return ["angle"]
+    return [f"{d.pair.name}.drive" for d in drivers]
+
+
+def _position_title(table: Table, row: int) -> str:
     """Driver position(s) at ``row`` for a title: "φ = 30.0°" or "s = 0.1 m"."""
-    plan = table.plan
-    drive = table.given[row]
-    parts = [
-        f"φ = {x:.1f}°" if d.kind == "R" else f"s = {x:.4g} m"
-        for d, x in zip(plan.drivers, drive, strict=True)
-    ]
-    if len(parts) > 1:
-        parts = [
-            f"{d.pair.name}: {p}" for d, p in zip(plan.drivers, parts, strict=True)
-        ]
-    return ", ".join(parts)
+    drivers = table.plan.drivers
+    units = [_unit(table, name) for name in _driver_columns(table)]
+    names = [d.pair.name for d in drivers] if len(drivers) > 1 else []
+    return position_title(units, table.given[row].tolist(), names)
 
 
 def _need_forces(table: Table, what: str) -> ForceState:

@@ -20,7 +20,7 @@ from assur.plotting._context import (
     _context,
     _need_forces,
     _Pose,
-    _position_text,
+    _position_title,
     _row,
 )
 from assur.plotting._forces import (
@@ -78,7 +78,7 @@ def draw_decomposition(table: Table, angle: Any = None) -> Any:
     formula = structure(table.mechanism).formula
     fig.suptitle(
         f"{table.mechanism.name or 'Mechanism'}: {formula}\n"
-        f"{_position_text(table, row)}",
+        f"{_position_title(table, row)}",
         fontsize=10,
     )
     return fig
@@ -169,7 +169,7 @@ def draw_free_body(
     _frame_axes(ax, seen, 0.5 * ctx.size, margin=0.12)
     text, color, _ = ctx.legend[len(ctx.plan.drivers) + group_index]
     ax.set_title(
-        f"Free body of group {text}\n{_position_text(table, row)}", fontsize=10
+        f"Free body of group {text}\n{_position_title(table, row)}", fontsize=10
     )
     _legend(
         ax,

@@ -18,7 +18,7 @@ from assur.plotting._context import (
     _context,
     _need_forces,
     _Pose,
-    _position_text,
+    _position_title,
     _row,
 )
 from assur.plotting._forces import _draw_arrows, _overview_arrows, _scale
@@ -140,7 +140,7 @@ def _draw_row(
         ]
     _frame_axes(ax, list(limits) if limits is not None else seen, ctx.size)
     name = ctx.table.mechanism.name or "Mechanism"
-    ax.set_title(f"{name}, {_position_text(ctx.table, row)}", fontsize=10)
+    ax.set_title(f"{name}, {_position_title(ctx.table, row)}", fontsize=10)
     if entries and legend:
         _legend(ax, entries)
     return entries
