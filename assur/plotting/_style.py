@@ -26,19 +26,3 @@ FAINT = 0.22
 """Opacity of the links drawn only for orientation."""
 ARROW_LENGTH = 0.28
 """Length of the largest force arrow at the default scale, relative to the mechanism."""
-LINK_UNITS = {"angle": "deg", "omega": "rad/s", "alpha": "rad/s²", "jerk": "rad/s³"}
-POINT_PARTS = {"x": ("x", "y"), "v": ("vx", "vy"), "a": ("ax", "ay"), "j": ("jx", "jy")}
-POINT_UNITS = {
-    "x": "m",
-    "y": "m",
-    "s": "m",
-    "v": "m/s",
-    "vx": "m/s",
-    "vy": "m/s",
-    "a": "m/s²",
-    "ax": "m/s²",
-    "ay": "m/s²",
-    "j": "m/s³",
-    "jx": "m/s³",
-    "jy": "m/s³",
-}
