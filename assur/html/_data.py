@@ -1,8 +1,9 @@
 """The numbers the report's script draws from, as JSON embedded in the page.
 
-Positions are in m, angles in deg (or m for a prismatic driver), forces in N,
-torques in N m; every per-position array has one value per table row, rounded to
-DIGITS significant digits, with null where a value is not finite.
+Every value is in the unit of its table column, and every unit shown is the column
+schema's (positions in m, angles in deg, forces in N, torques in N·m); every
+per-position array has one value per table row, rounded to DIGITS significant
+digits, with null where a value is not finite.
 """
 
 from __future__ import annotations
@@ -19,7 +20,14 @@ from assur._text import roman
 from assur._vec import Array, full
 from assur.analysis import Table
 from assur.groups._pairs import PairPlan
-from assur.html._series import balancing, charts, current, driver_label, visible_pairs
+from assur.html._series import (
+    balancing,
+    charts,
+    current,
+    driver_label,
+    units,
+    visible_pairs,
+)
 from assur.model import GROUND
 from assur.plan import Plan
 
@@ -36,7 +44,7 @@ def report_data(plan: Plan, struct: Structure, table: Table) -> dict[str, Any]:
     data: dict[str, Any] = {
         "name": plan.mechanism.name,
         "description": plan.mechanism.description,
-        "driver": driver_label(plan),
+        "driver": driver_label(table),
         "rows": len(table),
         "angle": floats(table["angle"]),
         "analysis": "forces" if table.force_state is not None else "kinematics",
@@ -58,7 +66,8 @@ def report_data(plan: Plan, struct: Structure, table: Table) -> dict[str, Any]:
     if table.force_state is not None:
         data["forces"] = {
             "joints": [p.name for p in joints],
-            "balancing": balancing(plan)[0],
+            "balancing": balancing(table)[0],
+            "unit": units(table, [f"{p.name}.F" for p in joints]),
         }
     return data
 
@@ -95,8 +104,8 @@ def _columns(table: Table, data: dict[str, Any]) -> dict[str, list[float | None]
     keys = [s["key"] for c in data["charts"] for s in c["series"]]
     keys += [
         key
-        for rows in data["current"].values()
-        for row in rows
+        for part in data["current"].values()
+        for row in part["rows"]
         for key in row["keys"]
         if not key.endswith((".x", ".y"))
     ]
