@@ -254,6 +254,25 @@ def test_units_in_the_force_report(pages: dict[str, str]) -> None:
     assert kinematic["current"]["joints"]["head"] == ["joint", "x (m)", "y (m)"]
 
 
+def test_only_render_report_compiles_a_plan() -> None:
+    import ast
+
+    import assur.html
+
+    recompilers = {"compile_plan", "plan_of", "decompose", "structure"}
+    folder = Path(assur.html.__file__).parent
+    for path in sorted(folder.glob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        imported = {
+            alias.name
+            for node in ast.walk(tree)
+            if isinstance(node, ast.ImportFrom)
+            for alias in node.names
+        }
+        expected = {"plan_of", "structure"} if path.name == "__init__.py" else set()
+        assert imported & recompilers == expected, path.name
+
+
 def test_import_loads_no_matplotlib() -> None:
     code = "import sys, assur.html; print('matplotlib' in sys.modules)"
     result = subprocess.run(

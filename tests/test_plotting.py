@@ -536,6 +536,64 @@ def test_one_colour_for_every_driver(five_bar: assur.Table) -> None:
     assert len(set(GROUP_COLOURS)) == len(GROUP_COLOURS)
 
 
+# ------------------------------------------------------ what pictures read
+
+
+def test_decomposition_title_is_the_structure_s(example: assur.Mechanism) -> None:
+    from assur.plan import plan_of
+    from assur.plotting.decomposition import _structure
+
+    assert _structure(plan_of(example)) == assur.structure(example)
+
+
+RECOMPILERS = (
+    ("assur.plan", "compile_plan"),
+    ("assur.plan", "plan_of"),
+    ("assur._structure", "decompose"),
+    ("assur._structure", "structure"),
+)
+"""What builds a plan or a decomposition from a mechanism."""
+
+
+def test_pictures_read_only_the_table(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    import importlib
+
+    table = assur.forces(_load("slot_mechanism"), [30.0, 150.0, 270.0])
+    for module, name in RECOMPILERS:
+
+        def refuse(*args, _name=name, **kwargs):
+            msg = f"a picture called {_name}"
+            raise AssertionError(msg)
+
+        monkeypatch.setattr(importlib.import_module(module), name, refuse)
+    plotting.draw(table, forces=True)
+    plotting.draw_decomposition(table)
+    plotting.draw_free_body(table, 1)
+    plotting.plot_motion(table)
+    plotting.plot_paths(table)
+    plotting.plot_torque(table)
+    plotting.plot_hodographs(table)
+    plotting.plot_shaking(table)
+    assert plotting.animate(table, tmp_path / "slot.gif", forces=True) == 3
+
+
+def test_no_picture_module_imports_a_recompiler() -> None:
+    import ast
+
+    names = {name for _, name in RECOMPILERS}
+    for path in sorted(Path(plotting.__file__).parent.glob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        imported = {
+            alias.name
+            for node in ast.walk(tree)
+            if isinstance(node, ast.ImportFrom)
+            for alias in node.names
+        }
+        assert not imported & names, path.name
+
+
 # ------------------------------------------------------- units of the schema
 
 

@@ -12,8 +12,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._structure import Group, Structure
 from assur._vec import full
 from assur.errors import ModelError
+from assur.model import GROUND
 from assur.plotting._axes import _frame_axes, _legend, _new_axes
 from assur.plotting._context import (
     _Context,
@@ -41,6 +43,7 @@ from assur.plotting.mechanism import _draw_mechanism
 
 if TYPE_CHECKING:
     from assur.analysis import Table
+    from assur.plan import Plan
 
 __all__ = ["draw_decomposition", "draw_free_body"]
 
@@ -61,8 +64,6 @@ def draw_decomposition(table: Table, angle: Any = None) -> Any:
     -------
     matplotlib.figure.Figure
     """
-    from assur._structure import structure
-
     ctx = _context(table)
     row = _row(table, angle)
     pose = ctx.pose(row)
@@ -78,13 +79,37 @@ def draw_decomposition(table: Table, angle: Any = None) -> Any:
         _frame_axes(ax, ctx, every, ctx.size, margin=0.08)
         on = sorted(_public(ctx.plan.bodies[b]) for b in faint)
         ax.set_title(f"{k + 1}. {text}\nhangs on: {', '.join(on)}", fontsize=9)
-    formula = structure(table.mechanism).formula
     fig.suptitle(
-        f"{table.mechanism.name or 'Mechanism'}: {formula}\n"
+        f"{table.mechanism.name or 'Mechanism'}: {_structure(ctx.plan).formula}\n"
         f"{_position_title(table, row)}",
         fontsize=10,
     )
     return fig
+
+
+def _structure(plan: Plan) -> Structure:
+    """Return the structure the plan was compiled from, without decomposing again.
+
+    The plan keeps the Assur groups; each driver is the class I group of the frame
+    and its input link.
+    """
+    drivers = tuple(
+        Group(
+            1, 0, "driver", (GROUND, plan.bodies[d.body]), (d.pair.name,), (), (GROUND,)
+        )
+        for d in plan.drivers
+    )
+    mech, slots = plan.mechanism, plan.topology.slots
+    return Structure(
+        mech.name,
+        len(mech.links),
+        len(mech.joints) - len(slots),
+        len(slots),
+        len(plan.drivers),
+        drivers,
+        plan.groups,
+        slots,
+    )
 
 
 def _steps(ctx: _Context) -> list[tuple[str, set[int], set[int]]]:
