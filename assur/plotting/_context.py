@@ -151,11 +151,9 @@ def _unit(table: Table, name: str) -> str:
     The unit is the schema's, also for a column the table was not asked to compute.
     """
     if name in table:
-        column = table.column(name)
-    else:
-        every = schema(table.plan, table.force_state is not None)
-        column = next(c for c in every if c.name == name)
-    return pretty_unit(column.unit)
+        return pretty_unit(table.column(name).unit)
+    every = schema(table.plan, table.force_state is not None)
+    return pretty_unit({c.name: c for c in every}[name].unit)
 
 
 def _driver_columns(table: Table) -> list[str]:
