@@ -16,6 +16,7 @@ __all__ = [
     "ROMAN",
     "describe",
     "position_text",
+    "position_title",
     "roman",
     "suggest",
 ]
@@ -122,3 +123,28 @@ def position_text(kinds: Sequence[str], values: Sequence[float]) -> str:
         f"{x:.6g} deg" if kind == "R" else f"{x:.6g} m"
         for kind, x in zip(kinds, values, strict=False)
     )
+
+
+def position_title(
+    units: Sequence[str], values: Sequence[float], names: Sequence[str] = ()
+) -> str:
+    """Return driver positions for a title: "φ = 30.0°" or "s = 0.1 m".
+
+    ``units`` holds the unit of each position as the table's columns give it
+    (``"deg"`` for an angle, else a length), ``values`` the positions in those units;
+    with ``names`` (several drivers) each position follows its joint's name.
+
+    Examples
+    --------
+    >>> position_title(["deg"], [30.0])
+    'φ = 30.0°'
+    >>> position_title(["deg", "m"], [30.0, 0.125], ["A", "E"])
+    'A: φ = 30.0°, E: s = 0.125 m'
+    """
+    parts = [
+        f"φ = {x:.1f}°" if unit == "deg" else f"s = {x:.4g} {unit}"
+        for unit, x in zip(units, values, strict=True)
+    ]
+    if names:
+        parts = [f"{n}: {p}" for n, p in zip(names, parts, strict=True)]
+    return ", ".join(parts)

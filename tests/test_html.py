@@ -26,6 +26,8 @@ from assur.analysis import default_positions
 from assur.html import render_report, write_report
 from assur.plan import compile_plan
 
+from .conftest import example_files
+
 EXAMPLES = Path(__file__).parent.parent / "examples"
 KINEMATIC = EXAMPLES / "lever_var9.toml"
 FORCED = EXAMPLES / "slider_crank_exercise.toml"
@@ -195,12 +197,167 @@ def test_names_cannot_break_out_of_the_page() -> None:
     assert data["description"] == "<i>d</i>"
 
 
+@pytest.mark.parametrize("path", example_files(), ids=lambda p: p.stem)
+def test_every_unit_is_the_schema_s(path: Path) -> None:
+    from assur.columns import pretty_unit, schema
+    from assur.plan import plan_of
+
+    mech = assur.load(path)
+    text = render_report(mech, default_positions(mech)[::30])
+    data = page_data(text)
+    units = {c.name: pretty_unit(c.unit) for c in schema(plan_of(mech), True)}
+    assert data["driver"]["unit"] == units["angle"]
+    for chart in (c for c in data["charts"] if c["series"]):
+        shown = chart["unit"].split(" or ")
+        assert shown == list(dict.fromkeys(units[s["key"]] for s in chart["series"]))
+    if data["forces"] is not None:
+        assert data["forces"]["unit"] == units[f"{data['forces']['joints'][0]}.F"]
+        assert {units[f"{j}.F"] for j in data["forces"]["joints"]} == {"N"}
+        for item in data["forces"]["balancing"]:
+            assert item["unit"] == units[item["key"]]
+    for part in data["current"].values():
+        for row in part["rows"]:
+            headings = part["head"][1:]
+            assert [h.rsplit(" (", 1)[1] for h in headings] == [
+                f"{units[key]})" for key in row["keys"]
+            ]
+    headings = re.findall(r'<th data-key="([^"]+)">[^<]*\(([^()]+)\)</th>', text)
+    assert len(headings) == text.count("<th data-key=")
+    assert headings
+    for key, unit in headings:
+        assert unit == units[html.unescape(key)]
+
+
+def test_units_in_the_force_report(pages: dict[str, str]) -> None:
+    data = page_data(pages["slider_crank_exercise"])
+    assert data["current"]["links"]["head"] == [
+        "link",
+        "angle (deg)",
+        "ω (rad/s)",
+        "α (rad/s²)",
+    ]
+    assert data["current"]["joints"]["head"] == [
+        "joint",
+        "Fx (N)",
+        "Fy (N)",
+        "|F| (N)",
+    ]
+    assert [c["unit"] for c in data["charts"]] == ["N·m", "N", "rad/s"]
+    assert data["forces"]["balancing"][0]["unit"] == "N·m"
+    kinematic = page_data(pages["lever_var9"])
+    assert kinematic["current"]["slides"]["head"] == [
+        "slide",
+        "s (m)",
+        "v (m/s)",
+        "a (m/s²)",
+    ]
+    assert kinematic["current"]["joints"]["head"] == ["joint", "x (m)", "y (m)"]
+
+
+def test_only_render_report_compiles_a_plan() -> None:
+    import ast
+
+    import assur.html
+
+    recompilers = {"compile_plan", "plan_of", "decompose", "structure"}
+    folder = Path(assur.html.__file__).parent
+    for path in sorted(folder.glob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        imported = {
+            alias.name
+            for node in ast.walk(tree)
+            if isinstance(node, ast.ImportFrom)
+            for alias in node.names
+        }
+        expected = {"plan_of", "structure"} if path.name == "__init__.py" else set()
+        assert imported & recompilers == expected, path.name
+
+
 def test_import_loads_no_matplotlib() -> None:
     code = "import sys, assur.html; print('matplotlib' in sys.modules)"
     result = subprocess.run(
         [sys.executable, "-c", code], capture_output=True, text=True, check=True
     )
     assert result.stdout.strip() == "False"
+
+
+# ------------------------------------------------------- the script under node
+
+FAKE_DOM = r"""
+// Just enough of a DOM to run the report's script under node and read what it wrote.
+const fs = require("fs");
+const page = fs.readFileSync(process.argv[1], "utf8");
+const data = page.match(/id="assur-data">([\s\S]*?)<\/script>/)[1];
+const script = page.match(/<script>\n([\s\S]*?)<\/script>/)[1];
+function make(tag) {
+  return {tag, attrs: {}, children: [], style: {}, dataset: {}, textContent: "",
+    value: "0", classList: {add() {}, remove() {}},
+    setAttribute(k, v) { this.attrs[k] = v; },
+    getAttribute(k) { return this.attrs[k]; },
+    appendChild(c) { this.children.push(c); return c; }, addEventListener() {},
+    insertRow() { return this.appendChild(make("tr")); },
+    insertCell() { return this.appendChild(make("td")); },
+    createTHead() { return this.appendChild(make("thead")); },
+    createTBody() { return this.appendChild(make("tbody")); }};
+}
+const svg = make("svg");
+svg.namespaceURI = "svg";
+svg.viewBox = {baseVal: {width: 640, height: 400}};
+const byId = {mechanism: svg};
+global.window = {addEventListener() {}};
+global.setInterval = () => 0;
+global.clearInterval = () => {};
+global.document = {documentElement: {dataset: {}},
+  getElementById(id) {
+    if (id === "assur-data") return {textContent: data};
+    return byId[id] || (byId[id] = make(id));
+  },
+  createElementNS(ns, tag) { return make(tag); },
+  createElement(tag) { return make(tag); },
+  createTextNode(text) { const n = make("#text"); n.textContent = text; return n; },
+  querySelectorAll() { return []; }};
+eval(script);
+const heads = [];
+(function walk(n) {
+  if (n.tag === "th") heads.push(n.textContent);
+  n.children.forEach(walk);
+})(byId.current);
+console.log(JSON.stringify({ready: document.documentElement.dataset.ready,
+  errors: window.assurErrors, readout: byId.readout.textContent, heads: heads,
+  note: byId["force-note"].textContent}));
+"""
+"""A stand-in for a browser's DOM: runs the page's script, prints what it wrote."""
+
+
+def test_script_writes_the_schema_units(tmp_path: Path) -> None:
+    # the browser tests below need Chromium; node runs the script on a fake DOM
+    node = _executable("node", "nodejs")
+    if node is None:
+        pytest.skip("node not found")
+    path = tmp_path / "slider_crank.html"
+    write_report(assur.load(FORCED), path)
+    out = subprocess.run(
+        [node, "-e", FAKE_DOM, str(path)], capture_output=True, text=True, check=True
+    )
+    shown = json.loads(out.stdout)
+    assert shown["ready"] == "true"
+    assert shown["errors"] == []
+    assert shown["readout"] == "driver angle 45° · balancing torque 84.63 N·m"
+    assert shown["heads"] == [
+        "link",
+        "angle (deg)",
+        "ω (rad/s)",
+        "α (rad/s²)",
+        "slide",
+        "s (m)",
+        "v (m/s)",
+        "a (m/s²)",
+        "joint",
+        "Fx (N)",
+        "Fy (N)",
+        "|F| (N)",
+    ]
+    assert "the bar in the lower left corner is 10000 N)" in shown["note"]
 
 
 # ------------------------------------------------------------------ the browser

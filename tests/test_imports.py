@@ -26,6 +26,7 @@ RANKS = {
     "assur._vec": 0,
     "assur._text": 0,
     "assur._progress": 0,
+    "assur._style": 0,
     "assur.model": 1,
     "assur._structure": 2,
     "assur.report": 2,

@@ -159,6 +159,23 @@ def test_nearest_row_with_two_drivers(five_bar: assur.Table) -> None:
         plotting._row(five_bar, [1.0, 2.0, 3.0])
 
 
+def test_titles_word_the_driver_positions(five_bar: assur.Table) -> None:
+    from assur._text import position_title
+
+    a, e = five_bar.given[1]
+    title = f"A: φ = {a:.1f}°, E: φ = {e:.1f}°"
+    assert position_title(["deg", "deg"], [a, e], ["A", "E"]) == title
+    assert plotting.draw(five_bar, angle=[a, e]).get_title().endswith(title)
+    fig = plotting.draw_decomposition(five_bar, angle=[a, e])
+    assert fig.get_suptitle().endswith(title)
+    # a table of a few columns still names each driver's position
+    plan = five_bar.plan
+    points = [f"{p}.{c}" for p in plan.points for c in "xy"]
+    few = assur.kinematics(five_bar.mechanism, [[a, e]], columns=points)
+    assert "A.drive" not in few
+    assert plotting.draw(few).get_title().endswith(title)
+
+
 def test_table_plot_forwards_to_draw(slider_crank: assur.Table) -> None:
     ax = slider_crank.plot(96.0, forces=True, labels=False)
     assert "95.0°" in ax.get_title()
@@ -304,6 +321,19 @@ def test_free_body_labels_values(six_bar: assur.Table) -> None:
     )
 
 
+def test_free_body_couple_of_a_guide_in_newton_metres() -> None:
+    # the yoke's guide is short: its reaction is drawn as a couple (and a force,
+    # here none), each value with its own unit
+    table = assur.forces(_load("scotch_yoke"), [210.0])
+    arrows = plotting._free_body_arrows(table, 0, 0)
+    (guide,) = [a for a in arrows if a.label == r"$R_{\mathrm{guide}}$"]
+    assert guide.couple == pytest.approx(table["guide.M"][0], rel=1e-12)
+    assert guide.units == ("N", "N·m")
+    ax = plotting.draw_free_body(table, 0)
+    (text,) = [t.get_text() for t in ax.texts if t.get_text().startswith(guide.label)]
+    assert text == f"{guide.label} = {guide.couple:.3g} N·m"
+
+
 def test_free_body_errors(six_bar: assur.Table, tenbar: assur.Table) -> None:
     with pytest.raises(
         assur.ModelError,
@@ -379,7 +409,7 @@ def test_plot_torque(slider_crank: assur.Table) -> None:
         rtol=1e-12,
     )
     assert "balancing torque (equilibrium)" in _legend_texts(ax)
-    assert ax.get_ylabel() == "balancing load [N m]"
+    assert ax.get_ylabel() == "balancing load [N·m]"
 
 
 def test_plot_torque_two_drivers(five_bar: assur.Table) -> None:
@@ -441,6 +471,254 @@ def test_animate_needs_forces_for_arrows(tmp_path: Path, tenbar: assur.Table) ->
     with pytest.raises(assur.ModelError, match="needs a forces table"):
         plotting.animate(tenbar, tmp_path / "x.gif", forces=True)
     assert not (tmp_path / "x.gif").exists()
+
+
+# ------------------------------------------- the pictures and the report agree
+
+
+def _report_data(mech: assur.Mechanism, positions) -> dict:
+    """The JSON data embedded in the report of ``mech`` at ``positions``."""
+    import json
+    import re
+
+    from assur.html import render_report
+
+    page = render_report(mech, positions)
+    block = re.search(r'id="assur-data">(.*?)</script>', page, re.S)
+    assert block is not None
+    return json.loads(block.group(1))
+
+
+def _link_label_colours(ax) -> dict[str, str]:
+    """Each link's name on a drawing, with the colour of its frame."""
+    from matplotlib.colors import to_hex
+
+    out = {}
+    for text in ax.texts:
+        box = text.get_bbox_patch()
+        # the link names sit in boxes framed in the link's colour; joints have none
+        if box is not None and box.get_edgecolor()[3] > 0:
+            out[text.get_text()] = to_hex(box.get_edgecolor())
+    return out
+
+
+def test_links_have_the_report_colours(example: assur.Mechanism) -> None:
+    from matplotlib.colors import to_hex
+
+    positions = default_positions(example)[:2]
+    data = _report_data(example, positions)
+    ax = plotting.draw(assur.kinematics(example, positions))
+    assert _link_label_colours(ax) == {x["name"]: x["colour"] for x in data["links"]}
+    # the legend: the drivers, then the groups, in the report's order and colours
+    handles = ax.get_legend().legend_handles
+    assert [to_hex(h.get_color()) for h in handles] == [
+        g["colour"] for g in data["groups"]
+    ]
+
+
+def test_one_colour_for_every_driver(five_bar: assur.Table) -> None:
+    from matplotlib.colors import to_hex
+
+    from assur._style import DRIVER_COLOUR, GROUP_COLOURS
+
+    ax = plotting.draw(five_bar)
+    colours = _link_label_colours(ax)
+    drivers = [five_bar.plan.bodies[d.body] for d in five_bar.plan.drivers]
+    assert len(drivers) == 2
+    assert {colours[x] for x in drivers} == {DRIVER_COLOUR}
+    handles = ax.get_legend().legend_handles
+    assert [to_hex(h.get_color()) for h in handles[:3]] == [
+        DRIVER_COLOUR,
+        DRIVER_COLOUR,
+        GROUP_COLOURS[0],
+    ]
+    assert DRIVER_COLOUR not in GROUP_COLOURS
+    assert len(set(GROUP_COLOURS)) == len(GROUP_COLOURS)
+
+
+# ------------------------------------------------------ what pictures read
+
+
+def test_decomposition_title_is_the_structure_s(example: assur.Mechanism) -> None:
+    from assur.plan import plan_of
+    from assur.plotting.decomposition import _structure
+
+    assert _structure(plan_of(example)) == assur.structure(example)
+
+
+RECOMPILERS = (
+    ("assur.plan", "compile_plan"),
+    ("assur.plan", "plan_of"),
+    ("assur._structure", "decompose"),
+    ("assur._structure", "structure"),
+)
+"""What builds a plan or a decomposition from a mechanism."""
+
+
+def test_pictures_read_only_the_table(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    import importlib
+
+    table = assur.forces(_load("slot_mechanism"), [30.0, 150.0, 270.0])
+    for module, name in RECOMPILERS:
+
+        def refuse(*args, _name=name, **kwargs):
+            msg = f"a picture called {_name}"
+            raise AssertionError(msg)
+
+        monkeypatch.setattr(importlib.import_module(module), name, refuse)
+    plotting.draw(table, forces=True)
+    plotting.draw_decomposition(table)
+    plotting.draw_free_body(table, 1)
+    plotting.plot_motion(table)
+    plotting.plot_paths(table)
+    plotting.plot_torque(table)
+    plotting.plot_hodographs(table)
+    plotting.plot_shaking(table)
+    assert plotting.animate(table, tmp_path / "slot.gif", forces=True) == 3
+
+
+def test_no_picture_module_imports_a_recompiler() -> None:
+    import ast
+
+    names = {name for _, name in RECOMPILERS}
+    for path in sorted(Path(plotting.__file__).parent.glob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        imported = {
+            alias.name
+            for node in ast.walk(tree)
+            if isinstance(node, ast.ImportFrom)
+            for alias in node.names
+        }
+        assert not imported & names, path.name
+
+
+# ------------------------------------------------------- units of the schema
+
+
+def _sweep(mech: assur.Mechanism, step: int = 30) -> assur.Table:
+    """A coarse sweep of ``mech``: its forces when it has loads, else kinematics."""
+    from assur._loads import compile_loads
+    from assur.plan import plan_of
+
+    positions = default_positions(mech)[::step]
+    if compile_loads(plan_of(mech)).empty:
+        return assur.kinematics(mech, positions)
+    return assur.forces(mech, positions)
+
+
+def _bracket(label: str) -> str:
+    """The unit in an axis label such as "omega [rad/s]"."""
+    assert label.endswith("]"), label
+    return label[label.rindex("[") + 1 : -1]
+
+
+def _schema_unit(table: assur.Table, name: str) -> str:
+    from assur.columns import pretty_unit
+
+    return pretty_unit(table.column(name).unit)
+
+
+def _check_drawing_axes(ax, table: assur.Table) -> None:
+    point = table.plan.points[0]
+    assert _bracket(ax.get_xlabel()) == _schema_unit(table, f"{point}.x")
+    assert _bracket(ax.get_ylabel()) == _schema_unit(table, f"{point}.y")
+
+
+def _check_arrow_units(table: assur.Table, arrows, ax=None) -> None:
+    """Forces and couples carry the schema's units of forces and moments; so do
+    the values written beside them on ``ax``."""
+    forces = {
+        _schema_unit(table, c.name)
+        for c in table.schema
+        if c.quantity in ("Fx", "Fy", "F", "Fi.x", "Fi.y", "force")
+    }
+    moments = {
+        _schema_unit(table, c.name)
+        for c in table.schema
+        if c.quantity in ("M", "Mi", "torque")
+    }
+    assert forces == {"N"}
+    assert moments == {"N·m"}
+    for a in arrows:
+        if a.force is not None:
+            assert a.units[0] in forces
+        if a.couple is not None:
+            assert a.units[1] in moments
+    if ax is not None:
+        values = [t.get_text() for t in ax.texts if " = " in t.get_text()]
+        assert values
+        for text in values:
+            assert text.rsplit(" ", 1)[1] in forces | moments, text
+
+
+def _check_motion_units(table: assur.Table) -> None:
+    from assur.columns import LINK_PARTS
+
+    angle = _schema_unit(table, "angle")
+    for quantity in (*LINK_PARTS, "x", "v", "a", "j", "vy"):
+        ax = plotting.plot_motion(table, quantity=quantity)
+        assert _bracket(ax.get_xlabel()) == angle
+        columns = [
+            ln.get_label().replace(" ", ".")
+            if " " in ln.get_label()
+            else f"{ln.get_label()}.{quantity}"
+            for ln in ax.lines
+        ]
+        units = {_schema_unit(table, c) for c in columns}
+        if columns:
+            assert ax.get_ylabel() == f"{quantity} [{' or '.join(units)}]"
+        plt.close(ax.figure)
+
+
+def _check_force_units(table: assur.Table) -> None:
+    ax = plotting.plot_torque(table)
+    drivers = table.plan.drivers
+    owners = ["driver"] if len(drivers) == 1 else [d.pair.name for d in drivers]
+    keys = [
+        f"{o}.{'torque' if d.kind == 'R' else 'force'}"
+        for o, d in zip(owners, drivers, strict=True)
+    ]
+    units = {_schema_unit(table, k) for k in keys}
+    assert _bracket(ax.get_ylabel()) in units
+    means = [t for t in _legend_texts(ax) if t.startswith("mean")]
+    for text, key in zip(means, keys, strict=True):
+        assert f" {_schema_unit(table, key)}" in text
+    fig = plotting.plot_hodographs(table)
+    for ax in (a for a in fig.axes if a.axison):
+        joint = ax.get_title().split(":")[0]
+        assert _bracket(ax.get_xlabel()) == _schema_unit(table, f"{joint}.Fx")
+        assert _bracket(ax.get_ylabel()) == _schema_unit(table, f"{joint}.Fy")
+        assert ax.get_title().endswith(f" {_schema_unit(table, f'{joint}.F')}")
+    polar, force, moment = plotting.plot_shaking(table).axes
+    assert _bracket(polar.get_xlabel()) == _schema_unit(table, "shaking.Fx")
+    assert _bracket(force.get_ylabel()) == _schema_unit(table, "shaking.Fx")
+    assert _bracket(moment.get_ylabel()) == _schema_unit(table, "shaking.M")
+    plt.close("all")
+
+
+def test_every_unit_is_the_schema_s(example: assur.Mechanism) -> None:
+    table = _sweep(example)
+    forced = table.force_state is not None
+    drawing = plotting.draw(table, forces=forced)
+    _check_drawing_axes(drawing, table)
+    _check_drawing_axes(plotting.plot_paths(table), table)
+    for ax in plotting.draw_decomposition(table).axes:
+        if ax.axison:
+            _check_drawing_axes(ax, table)
+    _check_motion_units(table)
+    if not forced:
+        return
+    ctx = plotting._context(table)
+    _check_arrow_units(table, plotting._overview_arrows(ctx, ctx.pose(1), 1))
+    assert _legend_texts(drawing)[-1].endswith(" N")  # the force scale
+    for group in range(len(table.plan.groups)):
+        ax = plotting.draw_free_body(table, group, angle=table.given[1])
+        _check_drawing_axes(ax, table)
+        _check_arrow_units(table, plotting._free_body_arrows(table, group, 1), ax)
+        plt.close(ax.figure)
+    _check_force_units(table)
 
 
 def test_import_assur_loads_no_matplotlib() -> None:

@@ -1,8 +1,9 @@
 """The numbers the report's script draws from, as JSON embedded in the page.
 
-Positions are in m, angles in deg (or m for a prismatic driver), forces in N,
-torques in N m; every per-position array has one value per table row, rounded to
-DIGITS significant digits, with null where a value is not finite.
+Every value is in the unit of its table column, and every unit shown is the column
+schema's (positions in m, angles in deg, forces in N, torques in N·m); every
+per-position array has one value per table row, rounded to DIGITS significant
+digits, with null where a value is not finite.
 """
 
 from __future__ import annotations
@@ -14,27 +15,22 @@ from typing import Any
 import numpy as np
 
 from assur._structure import Group, Structure
+from assur._style import DRIVER_COLOUR, group_colour, link_colours
 from assur._text import roman
 from assur._vec import Array, full
 from assur.analysis import Table
 from assur.groups._pairs import PairPlan
-from assur.html._series import balancing, charts, current, driver_label, visible_pairs
+from assur.html._series import (
+    balancing,
+    charts,
+    current,
+    driver_label,
+    units,
+    visible_pairs,
+)
 from assur.model import GROUND
 from assur.plan import Plan
 
-PALETTE = (
-    "#334155",
-    "#0072b2",
-    "#d55e00",
-    "#009e73",
-    "#cc79a7",
-    "#e69f00",
-    "#56b4e9",
-    "#8c564b",
-    "#6b7280",
-    "#b8860b",
-)
-"""Group colours in order of attachment: the first driver slate, then Okabe-Ito hues."""
 DIGITS = 6
 """Significant digits of the numbers embedded in the page."""
 GUIDE_MARGIN = 0.08
@@ -48,12 +44,12 @@ def report_data(plan: Plan, struct: Structure, table: Table) -> dict[str, Any]:
     data: dict[str, Any] = {
         "name": plan.mechanism.name,
         "description": plan.mechanism.description,
-        "driver": driver_label(plan),
+        "driver": driver_label(table),
         "rows": len(table),
         "angle": floats(table["angle"]),
         "analysis": "forces" if table.force_state is not None else "kinematics",
         "groups": _groups(struct),
-        "links": _links(plan, _body_colours(struct)),
+        "links": _links(plan, link_colours(plan)),
         "joints": [_joint(plan, p) for p in joints],
         "points": {
             name: {"x": floats(table[f"{name}.x"]), "y": floats(table[f"{name}.y"])}
@@ -70,7 +66,8 @@ def report_data(plan: Plan, struct: Structure, table: Table) -> dict[str, Any]:
     if table.force_state is not None:
         data["forces"] = {
             "joints": [p.name for p in joints],
-            "balancing": balancing(plan)[0],
+            "balancing": balancing(table)[0],
+            "unit": units(table, [f"{p.name}.F" for p in joints]),
         }
     return data
 
@@ -107,26 +104,21 @@ def _columns(table: Table, data: dict[str, Any]) -> dict[str, list[float | None]
     keys = [s["key"] for c in data["charts"] for s in c["series"]]
     keys += [
         key
-        for rows in data["current"].values()
-        for row in rows
+        for part in data["current"].values()
+        for row in part["rows"]
         for key in row["keys"]
         if not key.endswith((".x", ".y"))
     ]
     return {key: floats(table[key]) for key in dict.fromkeys(keys)}
 
 
-def _body_colours(struct: Structure) -> dict[str, str]:
-    """Return each moving link's colour, that of its group."""
-    colours = {}
-    for i, g in enumerate(all_groups(struct)):
-        for link in g.links:
-            if link != GROUND:
-                colours[link] = PALETTE[i % len(PALETTE)]
-    return colours
-
-
 def _groups(struct: Structure) -> list[dict[str, Any]]:
-    """Return the drivers and groups with their class, kind, links and colour."""
+    """Return the drivers and groups with their class, kind, links and colour.
+
+    The colours are those of the pictures (:mod:`assur._style`).
+    """
+    colours = [DRIVER_COLOUR] * len(struct.drivers)
+    colours += [group_colour(k) for k in range(len(struct.groups))]
     return [
         {
             "label": "driver" if g.group_class == 1 else g.label,
@@ -135,9 +127,9 @@ def _groups(struct: Structure) -> list[dict[str, Any]]:
             "order": g.order,
             "kind": g.kind,
             "links": [public(x) for x in g.links if x != GROUND],
-            "colour": PALETTE[i % len(PALETTE)],
+            "colour": colour,
         }
-        for i, g in enumerate(all_groups(struct))
+        for g, colour in zip(all_groups(struct), colours, strict=True)
     ]
 
 

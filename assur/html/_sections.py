@@ -126,12 +126,14 @@ def table_html(plan: Plan, table: Table) -> str:
     """Return the table of values over the sweep, every 10th row of a long one.
 
     Each row carries ``data-row``, its index in the sweep, for the script to
-    highlight the position shown.
+    highlight the position shown; each heading ``data-key``, its column.
     """
     columns = table_columns(plan, table)
     step = 10 if len(table) > LONG_TABLE else 1
     values = [np.asarray(table[key]) for key, _ in columns]
-    head = "".join(f"<th>{escape(title)}</th>" for _, title in columns)
+    head = "".join(
+        f'<th data-key="{escape(key)}">{escape(title)}</th>' for key, title in columns
+    )
     rows = [
         f'<tr data-row="{i}">'
         + "".join(f"<td>{number(float(v[i]))}</td>" for v in values)

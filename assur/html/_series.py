@@ -1,7 +1,8 @@
 """Which table columns the report plots, lists and tabulates.
 
 The diagrams, the live tables at the shown position and the HTML table each pick
-their series here, by column key of :class:`assur.analysis.Table`.
+their series here, by column key of :class:`assur.analysis.Table`, and write every
+unit as the column schema gives it (through :func:`assur.columns.pretty_unit`).
 """
 
 from __future__ import annotations
@@ -11,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from assur.analysis import Table
+from assur.columns import pretty_unit
 from assur.groups._pairs import PairPlan
 from assur.plan import Plan
 
@@ -23,33 +25,44 @@ def visible_pairs(plan: Plan) -> list[PairPlan]:
     return [p for p in plan.pairs.values() if not p.virtual]
 
 
-def driver_label(plan: Plan) -> dict[str, str]:
+def unit(table: Table, key: str) -> str:
+    """Return the unit of column ``key`` as the report writes it ("N·m", "rad/s²")."""
+    return pretty_unit(table.column(key).unit)
+
+
+def units(table: Table, keys: list[str]) -> str:
+    """Return the units of the columns ``keys``, each once: "N·m" or "N·m or N"."""
+    return " or ".join(dict.fromkeys(unit(table, key) for key in keys))
+
+
+def driver_label(table: Table) -> dict[str, str]:
     """Return the name and unit of the driver position (the diagrams' abscissa)."""
-    prismatic = plan.drivers[0].kind == "P"
+    prismatic = table.plan.drivers[0].kind == "P"
     return {
         "label": "driver position" if prismatic else "driver angle",
-        "unit": "m" if prismatic else "deg",
+        "unit": unit(table, "angle"),
     }
 
 
-def balancing(plan: Plan) -> tuple[list[dict[str, Any]], str]:
-    """Return the balancing-load series (column keys) and their unit."""
+def balancing(table: Table) -> tuple[list[dict[str, Any]], str]:
+    """Return the balancing-load series (column keys, units) and their units."""
+    drivers = table.plan.drivers
     series: list[dict[str, Any]] = []
-    units = set()
-    for d in plan.drivers:
+    for d in drivers:
         what = "torque" if d.kind == "R" else "force"
-        units.add("N·m" if d.kind == "R" else "N")
-        key = "driver" if len(plan.drivers) == 1 else d.pair.name
-        tag = f" at {d.pair.name}" if len(plan.drivers) > 1 else ""
-        series.append({"name": f"balancing {what}{tag}", "key": f"{key}.{what}"})
+        key = f"{'driver' if len(drivers) == 1 else d.pair.name}.{what}"
+        tag = f" at {d.pair.name}" if len(drivers) > 1 else ""
+        series.append({"name": f"balancing {what}{tag}", "key": key})
         series.append(
             {
                 "name": f"check by virtual power{tag}",
-                "key": f"{key}.{what}_check",
+                "key": f"{key}_check",
                 "dashed": True,
             }
         )
-    return series, " or ".join(sorted(units))
+    for item in series:
+        item["unit"] = unit(table, item["key"])
+    return series, units(table, [item["key"] for item in series])
 
 
 def moving_links(plan: Plan, table: Table) -> list[str]:
@@ -64,8 +77,12 @@ def moving_links(plan: Plan, table: Table) -> list[str]:
     return out
 
 
-def current(plan: Plan, table: Table) -> dict[str, list[dict[str, Any]]]:
-    """Return the rows of the live tables of values at the shown position."""
+def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
+    """Return the live tables of values at the shown position: head and rows each.
+
+    A row names a link or joint and the column keys of its values; a head's
+    headings carry the units of the first row's columns.
+    """
     joints = visible_pairs(plan)
     links = [
         {"name": x, "keys": [f"{x}.angle", f"{x}.omega", f"{x}.alpha"]}
@@ -76,44 +93,65 @@ def current(plan: Plan, table: Table) -> dict[str, list[dict[str, Any]]]:
         for p in joints
         if p.kind == "P"
     ]
-    suffixes = ("Fx", "Fy", "F") if table.force_state is not None else ("x", "y")
+    forced = table.force_state is not None
+    suffixes = ("Fx", "Fy", "F") if forced else ("x", "y")
     points = [
         {"name": p.name, "keys": [f"{p.name}.{x}" for x in suffixes]} for p in joints
     ]
-    return {"links": links, "slides": slides, "joints": points}
+    parts = {
+        "links": ("link", ("angle", "ω", "α"), links),
+        "slides": ("slide", ("s", "v", "a"), slides),
+        "joints": ("joint", ("Fx", "Fy", "|F|") if forced else ("x", "y"), points),
+    }
+    return {
+        part: {"head": _head(table, first, symbols, rows), "rows": rows}
+        for part, (first, symbols, rows) in parts.items()
+    }
+
+
+def _head(
+    table: Table, first: str, symbols: tuple[str, ...], rows: list[dict[str, Any]]
+) -> list[str]:
+    """Return the headings of a live table: ``first``, then each symbol and unit."""
+    if not rows:
+        return [first]
+    keys = rows[0]["keys"]
+    return [first] + [
+        f"{s} ({unit(table, k)})" for s, k in zip(symbols, keys, strict=True)
+    ]
 
 
 def charts(plan: Plan, table: Table) -> list[dict[str, Any]]:
     """Return the diagrams: id, title, unit and the column key of each series."""
     out = []
     if table.force_state is not None:
-        series, unit = balancing(plan)
+        series, unit_text = balancing(table)
         out.append(
             {
                 "id": "chart-balancing",
                 "title": "Balancing load and its check",
-                "unit": unit,
+                "unit": unit_text,
                 "series": series,
             }
         )
+        reactions = [
+            {"name": p.name, "key": f"{p.name}.F"} for p in visible_pairs(plan)
+        ]
         out.append(
             {
                 "id": "chart-reactions",
                 "title": "Joint reactions |F|",
-                "unit": "N",
-                "series": [
-                    {"name": p.name, "key": f"{p.name}.F"} for p in visible_pairs(plan)
-                ],
+                "unit": units(table, [s["key"] for s in reactions]),
+                "series": reactions,
             }
         )
+    omegas = [{"name": x, "key": f"{x}.omega"} for x in moving_links(plan, table)]
     out.append(
         {
             "id": "chart-omega",
             "title": "Angular velocities of the links",
-            "unit": "rad/s",
-            "series": [
-                {"name": x, "key": f"{x}.omega"} for x in moving_links(plan, table)
-            ],
+            "unit": units(table, [s["key"] for s in omegas]),
+            "series": omegas,
         }
     )
     return out
@@ -121,19 +159,16 @@ def charts(plan: Plan, table: Table) -> list[dict[str, Any]]:
 
 def table_columns(plan: Plan, table: Table) -> list[tuple[str, str]]:
     """Return the HTML table's columns as (column key, heading with unit)."""
-    driver = driver_label(plan)
-    columns = [("angle", f"{driver['label']} ({driver['unit']})")]
+    columns = [("angle", driver_label(table)["label"])]
     joints = visible_pairs(plan)
     if table.force_state is not None:
-        columns += [(f"{p.name}.F", f"|F| {p.name} (N)") for p in joints]
-        for s in balancing(plan)[0]:
-            unit = "N·m" if s["key"].endswith(("torque", "torque_check")) else "N"
-            columns.append((s["key"], f"{s['name']} ({unit})"))
-        return columns
-    columns += [(f"{x}.omega", f"ω {x} (rad/s)") for x in moving_links(plan, table)]
-    columns += [
-        (f"{p.name}.s", f"slide {p.name} (m)")
-        for p in joints
-        if p.kind == "P" and "~" not in plan.bodies[p.second]
-    ]
-    return columns
+        columns += [(f"{p.name}.F", f"|F| {p.name}") for p in joints]
+        columns += [(s["key"], s["name"]) for s in balancing(table)[0]]
+    else:
+        columns += [(f"{x}.omega", f"ω {x}") for x in moving_links(plan, table)]
+        columns += [
+            (f"{p.name}.s", f"slide {p.name}")
+            for p in joints
+            if p.kind == "P" and "~" not in plan.bodies[p.second]
+        ]
+    return [(key, f"{text} ({unit(table, key)})") for key, text in columns]

@@ -217,11 +217,11 @@
     el("line", {x1: 14, y1: H - 16, x2: 14 + BAR, y2: H - 16, stroke: "#c2185b",
       "stroke-width": 2.2, "marker-end": "url(#arrowhead)"}, bar);
     const label = el("text", {x: 20 + BAR, y: H - 12, class: "label"}, bar);
-    label.textContent = fmt(newtons) + " N";
+    label.textContent = fmt(newtons) + " " + data.forces.unit;
     document.getElementById("force-note").textContent = "Arrows: the reaction at " +
       "each joint, the force of its first link on its second (the bar in the lower " +
-      "left corner is " + fmt(newtons) + " N). Filled circles mark the centres of " +
-      "mass.";
+      "left corner is " + fmt(newtons) + " " + data.forces.unit + "). Filled " +
+      "circles mark the centres of mass.";
   }
 
   function drawMechanism(i) {
@@ -371,10 +371,9 @@
     }
     document.getElementById("current").appendChild(table);
   }
-  liveTable(["link", "angle (deg)", "ω (rad/s)", "α (rad/s²)"], data.current.links);
-  liveTable(["slide", "s (m)", "v (m/s)", "a (m/s²)"], data.current.slides);
-  liveTable(data.forces ? ["joint", "Fx (N)", "Fy (N)", "|F| (N)"]
-    : ["joint", "x (m)", "y (m)"], data.current.joints);
+  for (const part of [data.current.links, data.current.slides, data.current.joints]) {
+    liveTable(part.head, part.rows);
+  }
 
   const rows = {};
   for (const row of document.querySelectorAll("#values tr[data-row]")) {
@@ -386,12 +385,12 @@
     cursors.forEach((mark) => mark(i));
     for (const item of live) item.cell.textContent = fmt(value(item.key, i));
     let text = data.driver.label + " " + fmt(data.angle[i]) +
-      (data.driver.unit === "deg" ? "°" : " m");
+      (data.driver.unit === "deg" ? "°" : " " + data.driver.unit);
     if (data.forces) {
       for (const item of data.forces.balancing) {
         if (item.dashed) continue;
-        text += " · " + item.name + " " + fmt(data.columns[item.key][i]) +
-          (item.key.includes("torque") ? " N·m" : " N");
+        text += " · " + item.name + " " + fmt(data.columns[item.key][i]) + " " +
+          item.unit;
       }
     }
     readout.textContent = text;

@@ -10,10 +10,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur.plotting._context import _revolute
+from assur.plotting._context import _revolute, _unit
 
 if TYPE_CHECKING:
     from assur.analysis import Table
+    from assur.plotting._context import _Context
 
 
 def _new_axes(ax: Any, figsize: tuple[float, float] = (9.0, 6.0)) -> Any:
@@ -27,9 +28,16 @@ def _new_axes(ax: Any, figsize: tuple[float, float] = (9.0, 6.0)) -> Any:
 
 
 def _frame_axes(
-    ax: Any, points: Sequence[np.ndarray], size: float, margin: float = 0.1
+    ax: Any,
+    ctx: _Context,
+    points: Sequence[np.ndarray],
+    size: float,
+    margin: float = 0.1,
 ) -> None:
-    """Fit equal-aspect axes to ``points`` with a ``margin`` of ``size`` (m)."""
+    """Fit equal-aspect axes to ``points`` with a ``margin`` of ``size`` (m).
+
+    The axes are labelled with the unit of the points' coordinates in ``ctx``'s table.
+    """
     pts = np.array(points).reshape(-1, 2)
     pts = pts[np.isfinite(pts).all(axis=1)]
     low, high = pts.min(axis=0), pts.max(axis=0)
@@ -37,8 +45,9 @@ def _frame_axes(
     ax.set_xlim(low[0] - pad, high[0] + pad)
     ax.set_ylim(low[1] - pad, high[1] + pad)
     ax.set_aspect("equal", adjustable="box")
-    ax.set_xlabel("x [m]")
-    ax.set_ylabel("y [m]")
+    point = ctx.plan.points[0]
+    ax.set_xlabel(f"x [{_unit(ctx.table, f'{point}.x')}]")
+    ax.set_ylabel(f"y [{_unit(ctx.table, f'{point}.y')}]")
 
 
 def _driver_axis(ax: Any, table: Table) -> np.ndarray:
@@ -46,14 +55,15 @@ def _driver_axis(ax: Any, table: Table) -> np.ndarray:
     from matplotlib.ticker import MultipleLocator
 
     x = np.asarray(table["angle"])
+    unit = _unit(table, "angle")
     if _revolute(table):
-        ax.set_xlabel("driver angle φ [deg]")
+        ax.set_xlabel(f"driver angle φ [{unit}]")
         if np.ptp(x) >= 180.0:
             ax.xaxis.set_major_locator(
                 MultipleLocator(90.0 if np.ptp(x) > 400 else 45.0)
             )
     else:
-        ax.set_xlabel("driver position s [m]")
+        ax.set_xlabel(f"driver position s [{unit}]")
     ax.grid(True, lw=0.5, alpha=0.5)
     return x
 

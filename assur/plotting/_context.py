@@ -12,14 +12,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._text import roman
+from assur._style import link_colours
+from assur._text import position_title, roman
+from assur.columns import pretty_unit, schema
 from assur.errors import ModelError
-from assur.plotting._style import (
-    DRIVER_COLOR,
-    GROUND_COLOR,
-    GROUP_COLORS,
-    PLAIN_COLOR,
-)
+from assur.plotting._style import GROUND_COLOR, PLAIN_COLOR
 
 if TYPE_CHECKING:
     from assur.analysis import Table
@@ -80,21 +77,22 @@ class _Context:
 
 
 def _colors(plan: Plan, groups: bool) -> tuple[dict[int, str], Legend]:
-    """Colour each body by its Assur group (or all alike); return the legend too."""
+    """Colour each body by its Assur group (or all alike); return the legend too.
+
+    The colours are those of the report (:func:`assur._style.link_colours`).
+    """
+    by_name = link_colours(plan)
     color: dict[int, str] = {0: GROUND_COLOR}
-    legend: Legend = []
-    for d in plan.drivers:
-        color[d.body] = DRIVER_COLOR if groups else PLAIN_COLOR
-        legend.append(
-            (f"I, driver (ground, {plan.bodies[d.body]})", color[d.body], (d.body,))
-        )
-    for k, g in enumerate(plan.groups):
-        c = GROUP_COLORS[k % len(GROUP_COLORS)] if groups else PLAIN_COLOR
+    for b, name in enumerate(plan.bodies[1:], 1):
+        color[b] = by_name[name] if groups else PLAIN_COLOR
+    legend: Legend = [
+        (f"I, driver (ground, {plan.bodies[d.body]})", color[d.body], (d.body,))
+        for d in plan.drivers
+    ]
+    for g in plan.groups:
         bodies = tuple(plan.body(x) for x in g.links)
-        for b in bodies:
-            color[b] = c
-        name = roman(g.group_class)
-        legend.append((f"{name}, order {g.order}, {g.label}", c, bodies))
+        text = f"{roman(g.group_class)}, order {g.order}, {g.label}"
+        legend.append((text, color[bodies[0]], bodies))
     return color, legend
 
 
@@ -147,19 +145,31 @@ def _row(table: Table, angle: Any) -> int:
     return int(np.argmin(gap))
 
 
-def _position_text(table: Table, row: int) -> str:
+def _unit(table: Table, name: str) -> str:
+    """Return the unit of column ``name`` as pictures write it ("rad/s²", "N·m").
+
+    The unit is the schema's, also for a column the table was not asked to compute.
+    """
+    if name in table:
+        return pretty_unit(table.column(name).unit)
+    every = schema(table.plan, table.force_state is not None)
+    return pretty_unit({c.name: c for c in every}[name].unit)
+
+
+def _driver_columns(table: Table) -> list[str]:
+    """Return the column of each driver's position: ``angle``, or ``J.drive`` each."""
+    drivers = table.plan.drivers
+    if len(drivers) == 1:
+        return ["angle"]
+    return [f"{d.pair.name}.drive" for d in drivers]
+
+
+def _position_title(table: Table, row: int) -> str:
     """Driver position(s) at ``row`` for a title: "φ = 30.0°" or "s = 0.1 m"."""
-    plan = table.plan
-    drive = table.given[row]
-    parts = [
-        f"φ = {x:.1f}°" if d.kind == "R" else f"s = {x:.4g} m"
-        for d, x in zip(plan.drivers, drive, strict=True)
-    ]
-    if len(parts) > 1:
-        parts = [
-            f"{d.pair.name}: {p}" for d, p in zip(plan.drivers, parts, strict=True)
-        ]
-    return ", ".join(parts)
+    drivers = table.plan.drivers
+    units = [_unit(table, name) for name in _driver_columns(table)]
+    names = [d.pair.name for d in drivers] if len(drivers) > 1 else []
+    return position_title(units, table.given[row].tolist(), names)
 
 
 def _need_forces(table: Table, what: str) -> ForceState:

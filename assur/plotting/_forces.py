@@ -14,10 +14,11 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._vec import full
-from assur.plotting._geometry import _nice
+from assur.plotting._context import _unit
+from assur.plotting._geometry import _nice, _public
 from assur.plotting._style import (
     ARROW_LENGTH,
-    DRIVER_COLOR,
+    BALANCING_COLOR,
     INERTIA_COLOR,
     REACTION_COLOR,
 )
@@ -39,9 +40,10 @@ LABEL_BOX = {
 class _Arrow:
     """One load of a picture: a force at a point or a couple (N, N m).
 
-    ``value`` is the unit; ``kind`` one of "inertia", "gravity", "load", "reaction"
-    (on the body or group drawn), "internal" (between two links of a group) and
-    "balancing".
+    ``units`` are those of the force and of the couple, as the schema gives them for
+    the columns of such loads ("" for a part the load has not); ``kind`` is one of
+    "inertia", "gravity", "load", "reaction" (on the body or group drawn),
+    "internal" (between two links of a group) and "balancing".
     """
 
     label: str
@@ -49,8 +51,16 @@ class _Arrow:
     force: np.ndarray | None
     couple: float | None
     color: str
-    value: str
+    units: tuple[str, str]
     kind: str
+
+
+def _units(table: Table, force: str = "", couple: str = "") -> tuple[str, str]:
+    """Return the units of the columns ``force`` and ``couple`` ("" for none)."""
+    return (
+        _unit(table, force) if force else "",
+        _unit(table, couple) if couple else "",
+    )
 
 
 def _tex(name: str) -> str:
@@ -96,13 +106,28 @@ def _inertia_arrows(ctx: _Context, row: int, links: Iterable[str]) -> list[_Arro
         b, g, name = ctx.plan.body(link), _centre(ctx.table, link, row), _tex(link)
         forces, torques = fs.inertia_load(b, len(ctx.table))
         force, torque = forces[row], float(torques[row])
+        units = _link_units(ctx.table, link)
         arrows += [
-            _Arrow(f"$F_{{i,{name}}}$", g, force, None, INERTIA_COLOR, "N", "inertia"),
             _Arrow(
-                f"$M_{{i,{name}}}$", g, None, torque, INERTIA_COLOR, "N m", "inertia"
+                f"$F_{{i,{name}}}$", g, force, None, INERTIA_COLOR, units, "inertia"
+            ),
+            _Arrow(
+                f"$M_{{i,{name}}}$", g, None, torque, INERTIA_COLOR, units, "inertia"
             ),
         ]
     return arrows
+
+
+def _link_units(table: Table, link: str) -> tuple[str, str]:
+    """Units of a force and a torque on ``link``: of its inertia loads' columns."""
+    return _units(table, f"{link}.Fi.x", f"{link}.Mi")
+
+
+def _reaction_units(table: Table, name: str) -> tuple[str, str]:
+    """Units of the reaction at pair ``name``, a slot's pin's those of its slot."""
+    joint = _public(name)
+    couple = f"{joint}.M" if table.plan.pairs[joint].kind == "P" else ""
+    return _units(table, f"{joint}.Fx", couple)
 
 
 def _overview_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
@@ -113,7 +138,8 @@ def _overview_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
         if not pair.virtual:
             q, f, m = _reaction(ctx, pose, row, name)
             label = f"$R_{{{_tex(name)}}}$"
-            arrows.append(_Arrow(label, q, f, m, REACTION_COLOR, "N", "reaction"))
+            units = _reaction_units(ctx.table, name)
+            arrows.append(_Arrow(label, q, f, m, REACTION_COLOR, units, "reaction"))
     return arrows + _balancing_arrows(ctx, pose, row)
 
 
@@ -125,14 +151,25 @@ def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
         p = pose.at(d.pair.second, d.pair.d_second)
         value = float(full(ctx.forces.balancing[i], len(ctx.table))[row])
         label = f"$T_{{b,{_tex(d.pair.name)}}}$" if len(drivers) > 1 else "$T_b$"
+        owner = "driver" if len(drivers) == 1 else d.pair.name
         if d.kind == "R":
-            arrow = _Arrow(label, p, None, value, DRIVER_COLOR, "N m", "balancing")
+            units = _units(ctx.table, couple=f"{owner}.torque")
+            arrow = _Arrow(label, p, None, value, BALANCING_COLOR, units, "balancing")
         else:
             e = pose.turn(d.pair.first, d.pair.axis)
             label = label.replace("T", "F")
-            arrow = _Arrow(label, p, value * e, None, DRIVER_COLOR, "N", "balancing")
+            units = _units(ctx.table, force=f"{owner}.force")
+            arrow = _Arrow(
+                label, p, value * e, None, BALANCING_COLOR, units, "balancing"
+            )
         arrows.append(arrow)
     return arrows
+
+
+def _scale_text(arrows: Iterable[_Arrow], scale: float) -> str:
+    """Return the legend's note of the force scale, in the forces' unit."""
+    units = dict.fromkeys(a.units[0] for a in arrows if a.force is not None)
+    return f"force scale: 1 cm = {scale:g} {' or '.join(units)}"
 
 
 def _scale(arrows: Iterable[_Arrow], size: float) -> float:
@@ -188,7 +225,7 @@ def _draw_force(
     )
     if text:
         u = force / mag
-        words = f"{a.label} = {mag:.3g} {a.value}" if text == "values" else a.label
+        words = f"{a.label} = {mag:.3g} {a.units[0]}" if text == "values" else a.label
         ax.text(
             *(tip + 0.5 * ctx.r * u),
             words,
@@ -209,7 +246,7 @@ def _draw_couple(
     from matplotlib.patches import FancyArrowPatch
     from matplotlib.path import Path
 
-    rad = (3.4 if a.color == DRIVER_COLOR else 2.3) * ctx.r
+    rad = (3.4 if a.kind == "balancing" else 2.3) * ctx.r
     t = np.linspace(math.radians(-100), math.radians(150), 40)
     if couple < 0:
         t = t[::-1]
@@ -226,8 +263,8 @@ def _draw_couple(
     )
     if text:
         # the balancing torque always shows its value
-        value = text == "values" or a.color == DRIVER_COLOR
-        words = f"{a.label} = {couple:.3g} {a.value}" if value else a.label
+        value = text == "values" or a.kind == "balancing"
+        words = f"{a.label} = {couple:.3g} {a.units[1]}" if value else a.label
         ax.text(
             *(a.point + rad * np.array([0.7, 0.8])),
             words,

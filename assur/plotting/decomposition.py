@@ -12,15 +12,17 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._structure import Group, Structure
 from assur._vec import full
 from assur.errors import ModelError
+from assur.model import GROUND
 from assur.plotting._axes import _frame_axes, _legend, _new_axes
 from assur.plotting._context import (
     _Context,
     _context,
     _need_forces,
     _Pose,
-    _position_text,
+    _position_title,
     _row,
 )
 from assur.plotting._forces import (
@@ -28,8 +30,11 @@ from assur.plotting._forces import (
     _centre,
     _draw_arrows,
     _inertia_arrows,
+    _link_units,
     _reaction,
+    _reaction_units,
     _scale,
+    _scale_text,
     _tex,
 )
 from assur.plotting._geometry import _anchor, _extent, _public
@@ -38,6 +43,7 @@ from assur.plotting.mechanism import _draw_mechanism
 
 if TYPE_CHECKING:
     from assur.analysis import Table
+    from assur.plan import Plan
 
 __all__ = ["draw_decomposition", "draw_free_body"]
 
@@ -58,8 +64,6 @@ def draw_decomposition(table: Table, angle: Any = None) -> Any:
     -------
     matplotlib.figure.Figure
     """
-    from assur._structure import structure
-
     ctx = _context(table)
     row = _row(table, angle)
     pose = ctx.pose(row)
@@ -72,16 +76,40 @@ def draw_decomposition(table: Table, angle: Any = None) -> Any:
             continue
         text, full, faint = steps[k]
         _draw_mechanism(ax, ctx, pose, full, faint - full)
-        _frame_axes(ax, every, ctx.size, margin=0.08)
+        _frame_axes(ax, ctx, every, ctx.size, margin=0.08)
         on = sorted(_public(ctx.plan.bodies[b]) for b in faint)
         ax.set_title(f"{k + 1}. {text}\nhangs on: {', '.join(on)}", fontsize=9)
-    formula = structure(table.mechanism).formula
     fig.suptitle(
-        f"{table.mechanism.name or 'Mechanism'}: {formula}\n"
-        f"{_position_text(table, row)}",
+        f"{table.mechanism.name or 'Mechanism'}: {_structure(ctx.plan).formula}\n"
+        f"{_position_title(table, row)}",
         fontsize=10,
     )
     return fig
+
+
+def _structure(plan: Plan) -> Structure:
+    """Return the structure the plan was compiled from, without decomposing again.
+
+    The plan keeps the Assur groups; each driver is the class I group of the frame
+    and its input link.
+    """
+    drivers = tuple(
+        Group(
+            1, 0, "driver", (GROUND, plan.bodies[d.body]), (d.pair.name,), (), (GROUND,)
+        )
+        for d in plan.drivers
+    )
+    mech, slots = plan.mechanism, plan.topology.slots
+    return Structure(
+        mech.name,
+        len(mech.links),
+        len(mech.joints) - len(slots),
+        len(slots),
+        len(plan.drivers),
+        drivers,
+        plan.groups,
+        slots,
+    )
 
 
 def _steps(ctx: _Context) -> list[tuple[str, set[int], set[int]]]:
@@ -166,10 +194,10 @@ def draw_free_body(
     scale = scale or _scale(arrows, 0.8 * ctx.size)
     seen += _draw_arrows(ax, ctx, arrows, scale, "values")
     seen += [a.point for a in arrows]
-    _frame_axes(ax, seen, 0.5 * ctx.size, margin=0.12)
+    _frame_axes(ax, ctx, seen, 0.5 * ctx.size, margin=0.12)
     text, color, _ = ctx.legend[len(ctx.plan.drivers) + group_index]
     ax.set_title(
-        f"Free body of group {text}\n{_position_text(table, row)}", fontsize=10
+        f"Free body of group {text}\n{_position_title(table, row)}", fontsize=10
     )
     _legend(
         ax,
@@ -178,7 +206,7 @@ def draw_free_body(
             ("reaction", REACTION_COLOR),
             ("inertia force and torque", INERTIA_COLOR),
             ("gravity, external load", LOAD_COLOR),
-            (f"force scale: 1 cm = {scale:g} N", ""),
+            (_scale_text(arrows, scale), ""),
         ],
     )
     return ax
@@ -227,7 +255,7 @@ def _gravity_arrows(table: Table, links: list[str], row: int) -> list[_Arrow]:
             mech.link(x).mass * g,
             None,
             LOAD_COLOR,
-            "N",
+            _link_units(table, x),
             "gravity",
         )
         for x in links
@@ -247,13 +275,13 @@ def _load_arrows(
         b = plan.body(load.link)
         if b not in bodies:
             continue
-        name = _tex(load.link)
+        name, units = _tex(load.link), _link_units(ctx.table, load.link)
         if load.force is not None:
             assert load.at is not None  # the model requires a force's point
             at = pose.at(b, plan.offset(b, resolve_point(mech, load.at)))
             force = _load_value(ctx, row, load.force, f"loads[{i}].force")
             arrows.append(
-                _Arrow(f"$F_{{{name}}}$", at, force, None, LOAD_COLOR, "N", "load")
+                _Arrow(f"$F_{{{name}}}$", at, force, None, LOAD_COLOR, units, "load")
             )
         if load.torque is not None:
             at = _anchor(ctx, pose, b)
@@ -265,7 +293,7 @@ def _load_arrows(
                     None,
                     float(torque[0]),
                     LOAD_COLOR,
-                    "N m",
+                    units,
                     "load",
                 )
             )
@@ -306,5 +334,6 @@ def _pair_arrows(
             label = f"{label},{first}\\to {second}"
         q, f, m = _reaction(ctx, pose, row, name, 1.0 if inside[1] else -1.0)
         kind = "internal" if all(inside) else "reaction"
-        arrows.append(_Arrow(f"$R_{{{label}}}$", q, f, m, REACTION_COLOR, "N", kind))
+        units = _reaction_units(ctx.table, name)
+        arrows.append(_Arrow(f"$R_{{{label}}}$", q, f, m, REACTION_COLOR, units, kind))
     return arrows

@@ -11,10 +11,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur.columns import LINK_PARTS, POINT_PARTS
 from assur.errors import ModelError
 from assur.plotting._axes import _driver_axis, _frame_axes, _new_axes
-from assur.plotting._context import _Context, _context, _row
-from assur.plotting._style import LINK_UNITS, PATH_COLORS, POINT_PARTS, POINT_UNITS
+from assur.plotting._context import _Context, _context, _row, _unit
+from assur.plotting._style import PATH_COLORS
 from assur.plotting.mechanism import _draw_mechanism
 
 if TYPE_CHECKING:
@@ -25,6 +26,9 @@ __all__ = ["plot_motion", "plot_paths"]
 
 DASHES = ("-", "--", ":", "-.")
 """Line styles of the links of one group, in order (cycled)."""
+VECTORS = dict(zip("xvaj", POINT_PARTS, strict=True))
+"""The columns of a point's position and its derivatives, by quantity: ``"v"``
+is ``vx`` and ``vy``."""
 
 
 def plot_motion(
@@ -76,10 +80,12 @@ def plot_motion(
     ax = _new_axes(ax, (8.0, 4.5))
     x = _driver_axis(ax, table)
     ctx = _context(table)
-    for name in names:
-        _plot_quantity(ax, ctx, x, name, quantity)
-    unit = LINK_UNITS.get(quantity) or POINT_UNITS.get(quantity, "")
-    ax.set_ylabel(f"{quantity} [{unit}]")
+    plotted = [
+        key for name in names for key in _plot_quantity(ax, ctx, x, name, quantity)
+    ]
+    # the unit of the columns drawn, as the schema gives it
+    units = " or ".join(dict.fromkeys(_unit(table, key) for key in plotted))
+    ax.set_ylabel(f"{quantity} [{units}]" if units else quantity)
     ax.set_title(f"{table.mechanism.name or 'Mechanism'}: {quantity}", fontsize=10)
     ax.legend(fontsize=8, ncols=2 if len(ax.lines) > 8 else 1)
     return ax
@@ -87,7 +93,7 @@ def plot_motion(
 
 def _moving(table: Table, quantity: str) -> list[str]:
     """Links that turn, for a link ``quantity``; else the points that move."""
-    if quantity not in LINK_UNITS:
+    if quantity not in LINK_PARTS:
         return _moving_points(table, extra_first=False)
     # links that only slide (their angle is constant) would add flat lines
     links = _public_links(table.plan)
@@ -96,16 +102,20 @@ def _moving(table: Table, quantity: str) -> list[str]:
 
 def _plot_quantity(
     ax: Any, ctx: _Context, x: np.ndarray, name: str, quantity: str
-) -> None:
-    """Plot ``quantity`` of link or point ``name`` (both components of a vector)."""
+) -> list[str]:
+    """Plot ``quantity`` of link or point ``name`` (both components of a vector).
+
+    Returns the columns plotted.
+    """
     table = ctx.table
     color, style = _link_style(ctx, name)
     if f"{name}.{quantity}" in table:
         ax.plot(
             x, table[f"{name}.{quantity}"], lw=1.6, label=name, color=color, ls=style
         )
-    elif quantity in POINT_PARTS and f"{name}.{POINT_PARTS[quantity][0]}" in table:
-        cx, cy = POINT_PARTS[quantity]
+        return [f"{name}.{quantity}"]
+    if quantity in VECTORS and f"{name}.{VECTORS[quantity][0]}" in table:
+        cx, cy = VECTORS[quantity]
         line = ax.plot(x, table[f"{name}.{cx}"], lw=1.6, label=f"{name} {cx}")
         ax.plot(
             x,
@@ -115,9 +125,9 @@ def _plot_quantity(
             color=line[0].get_color(),
             label=f"{name} {cy}",
         )
-    else:
-        msg = _no_quantity(table, name, quantity)
-        raise ModelError(msg)
+        return [f"{name}.{cx}", f"{name}.{cy}"]
+    msg = _no_quantity(table, name, quantity)
+    raise ModelError(msg)
 
 
 def _link_style(ctx: _Context, name: str) -> tuple[str | None, str]:
@@ -136,7 +146,7 @@ def _no_quantity(table: Table, name: str, quantity: str) -> str:
     have = sorted(
         {c.rsplit(".", 1)[1] for c in table.columns if c.rsplit(".", 1)[0] == name}
     )
-    have += [q for q in POINT_PARTS if f"{name}.x" in table]
+    have += [q for q in VECTORS if f"{name}.x" in table]
     if not have:
         return f"plot_motion: no link or point {name!r} in the table"
     return (
@@ -212,7 +222,7 @@ def plot_paths(
         )
         _sense(ax, xy, color)
         seen += list(xy)
-    _frame_axes(ax, seen, ctx.size, margin=0.06)
+    _frame_axes(ax, ctx, seen, ctx.size, margin=0.06)
     ax.set_title(f"{table.mechanism.name or 'Mechanism'}: paths of points", fontsize=10)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
     return ax

@@ -14,16 +14,16 @@ import numpy as np
 
 from assur.errors import ModelError
 from assur.plotting._axes import _driver_axis, _new_axes
-from assur.plotting._context import _context, _need_forces, _revolute
+from assur.plotting._context import _context, _need_forces, _unit
 from assur.plotting._geometry import _on
-from assur.plotting._style import DRIVER_COLOR
+from assur.plotting._style import BALANCING_COLOR
 
 if TYPE_CHECKING:
     from assur.analysis import Table
 
 __all__ = ["plot_hodographs", "plot_shaking", "plot_torque"]
 
-BALANCING_COLORS = (DRIVER_COLOR, "#e6550d", "#31a354")
+BALANCING_COLORS = (BALANCING_COLOR, "#e6550d", "#31a354")
 """Colours of the balancing loads, one per driver (cycled)."""
 
 
@@ -46,29 +46,29 @@ def plot_torque(table: Table, ax: Any = None) -> Any:
     x = _driver_axis(ax, table)
     for i, d in enumerate(plan.drivers):
         name = f" at {d.pair.name}" if len(plan.drivers) > 1 else ""
-        _plot_balancing(ax, table, x, i, d.kind == "R", name)
+        _plot_balancing(ax, table, x, i, name)
     ax.axhline(0.0, color="black", lw=0.6)
-    unit = "N m" if plan.drivers[0].kind == "R" else "N"
-    ax.set_ylabel(f"balancing load [{unit}]")
+    keys = [_driver_key(table, i) for i in range(len(plan.drivers))]
+    units = " or ".join(dict.fromkeys(_unit(table, key) for key in keys))
+    ax.set_ylabel(f"balancing load [{units}]")
     ax.set_title(f"{table.mechanism.name or 'Mechanism'}: balancing load", fontsize=10)
     ax.legend(fontsize=8)
     return ax
 
 
-def _plot_balancing(
-    ax: Any, table: Table, x: np.ndarray, i: int, revolute: bool, name: str
-) -> None:
+def _plot_balancing(ax: Any, table: Table, x: np.ndarray, i: int, name: str) -> None:
     """Plot driver ``i``'s balancing load, its check (dots) and its mean."""
-    what, unit = ("torque", "N m") if revolute else ("force", "N")
+    key = _driver_key(table, i)
+    what, unit = table.column(key).quantity, _unit(table, key)
     color = BALANCING_COLORS[i % len(BALANCING_COLORS)]
-    balancing = _driver_column(table, i, "")
+    balancing = table[key]
     step = max(1, len(x) // 36)
     ax.plot(
         x, balancing, color=color, lw=1.8, label=f"balancing {what}{name} (equilibrium)"
     )
     ax.plot(
         x[::step],
-        _driver_column(table, i, "_check")[::step],
+        table[_driver_key(table, i, "_check")][::step],
         ls="none",
         marker="o",
         mfc="none",
@@ -95,12 +95,12 @@ def _locus(ax: Any, table: Table, fx: np.ndarray, fy: np.ndarray, color: str) ->
         xytext=(0, 0),
         arrowprops={"arrowstyle": "-|>", "color": color, "lw": 1.0},
     )
-    revolute = _revolute(table)
+    unit = _unit(table, "angle")
     for k in marks:
         ax.plot([fx[k]], [fy[k]], marker="o", ms=3.5, color=color)
         angle = table["angle"][k]
         ax.annotate(
-            f"{angle:.0f}°" if revolute else f"{angle:.3g} m",
+            f"{angle:.0f}°" if unit == "deg" else f"{angle:.3g} {unit}",
             (fx[k], fy[k]),
             fontsize=7,
             xytext=(3, 3),
@@ -145,13 +145,14 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
     for ax, name in zip(axes.flat, names, strict=False):
         force = forces.reaction(name, len(table))[0]
         _locus(ax, table, force[:, 0], force[:, 1], ctx.color[pairs[name].second])
+        most = np.nanmax(np.hypot(force[:, 0], force[:, 1]))
         ax.set_title(
             f"{name}: {_on(ctx.plan, name)}\n"
-            f"max {np.nanmax(np.hypot(force[:, 0], force[:, 1])):.4g} N",
+            f"max {most:.4g} {_unit(table, f'{name}.F')}",
             fontsize=8.5,
         )
-        ax.set_xlabel("Fx [N]", fontsize=8)
-        ax.set_ylabel("Fy [N]", fontsize=8)
+        ax.set_xlabel(f"Fx [{_unit(table, f'{name}.Fx')}]", fontsize=8)
+        ax.set_ylabel(f"Fy [{_unit(table, f'{name}.Fy')}]", fontsize=8)
         ax.tick_params(labelsize=7)
     for ax in list(axes.flat)[len(names) :]:
         ax.set_axis_off()
@@ -199,8 +200,8 @@ def plot_shaking(table: Table) -> Any:
     grid = fig.add_gridspec(2, 2, width_ratios=(1.0, 1.4))
     polar = fig.add_subplot(grid[:, 0])
     _locus(polar, table, shaking[:, 0], shaking[:, 1], "#1f77b4")
-    polar.set_xlabel("Fx [N]")
-    polar.set_ylabel("Fy [N]")
+    polar.set_xlabel(f"Fx [{_unit(table, 'shaking.Fx')}]")
+    polar.set_ylabel(f"Fy [{_unit(table, 'shaking.Fy')}]")
     polar.set_title("hodograph of the shaking force", fontsize=9)
     force = fig.add_subplot(grid[0, 1])
     x = _driver_axis(force, table)
@@ -209,13 +210,13 @@ def plot_shaking(table: Table) -> Any:
     force.plot(
         x, np.hypot(shaking[:, 0], shaking[:, 1]), label="|F|", lw=1.5, color="black"
     )
-    force.set_ylabel("force [N]")
+    force.set_ylabel(f"force [{_unit(table, 'shaking.Fx')}]")
     force.legend(fontsize=8, ncols=3)
     force.set_xlabel("")
     moment = fig.add_subplot(grid[1, 1], sharex=force)
     _driver_axis(moment, table)
     moment.plot(x, shaking[:, 2], color="#d62728", lw=1.5, label="M about the origin")
-    moment.set_ylabel("moment [N m]")
+    moment.set_ylabel(f"moment [{_unit(table, 'shaking.M')}]")
     moment.legend(fontsize=8)
     fig.suptitle(
         f"{table.mechanism.name or 'Mechanism'}: shaking force and moment on the frame",
@@ -224,9 +225,9 @@ def plot_shaking(table: Table) -> Any:
     return fig
 
 
-def _driver_column(table: Table, i: int, suffix: str) -> np.ndarray:
-    """Return driver ``i``'s balancing load (``suffix`` "_check": its check)."""
+def _driver_key(table: Table, i: int, suffix: str = "") -> str:
+    """Return the column of driver ``i``'s balancing load (or its "_check")."""
     d = table.plan.drivers[i]
     what = "torque" if d.kind == "R" else "force"
     owner = "driver" if len(table.plan.drivers) == 1 else d.pair.name
-    return table[f"{owner}.{what}{suffix}"]
+    return f"{owner}.{what}{suffix}"

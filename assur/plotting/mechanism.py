@@ -18,15 +18,15 @@ from assur.plotting._context import (
     _context,
     _need_forces,
     _Pose,
-    _position_text,
+    _position_title,
     _row,
 )
-from assur.plotting._forces import _draw_arrows, _overview_arrows, _scale
+from assur.plotting._forces import _draw_arrows, _overview_arrows, _scale, _scale_text
 from assur.plotting._geometry import _extent, _public, _shape, _skeleton
 from assur.plotting._labels import _label_joints, _label_link
 from assur.plotting._parts import _draw_guide, _draw_joint, _draw_link, _draw_pivot
 from assur.plotting._style import (
-    DRIVER_COLOR,
+    BALANCING_COLOR,
     FAINT,
     GROUND_COLOR,
     INERTIA_COLOR,
@@ -135,12 +135,12 @@ def _draw_row(
         entries += [
             ("reaction, by first link on second", REACTION_COLOR),
             ("inertia force and torque", INERTIA_COLOR),
-            ("balancing load", DRIVER_COLOR),
-            (f"force scale: 1 cm = {scale:g} N", ""),
+            ("balancing load", BALANCING_COLOR),
+            (_scale_text(arrows, scale), ""),
         ]
-    _frame_axes(ax, list(limits) if limits is not None else seen, ctx.size)
+    _frame_axes(ax, ctx, list(limits) if limits is not None else seen, ctx.size)
     name = ctx.table.mechanism.name or "Mechanism"
-    ax.set_title(f"{name}, {_position_text(ctx.table, row)}", fontsize=10)
+    ax.set_title(f"{name}, {_position_title(ctx.table, row)}", fontsize=10)
     if entries and legend:
         _legend(ax, entries)
     return entries
