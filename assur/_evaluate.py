@@ -46,8 +46,27 @@ def evaluate(table: Table, column: Column) -> dict[str, Array]:
     and derivatives, the virtual-power checks) gives all its columns at once.
     """
     if column.family in CHUNKED:
-        return materialize(table, [column])
+        return materialize(table, _company(table, column))
     return SIMPLE[column.family](table, column)
+
+
+def _company(table: Table, column: Column) -> list[Column]:
+    """Return the table's columns best computed in the same pass as ``column``.
+
+    Points and offsets share the rebuilt motions; checks and residuals the applied
+    loads too; jerks need the state extended first.
+    """
+    top = table.state.top
+    if column.family in ("check", "residual"):
+        group = {"check", "residual"}
+        return [c for c in table.schema if c.family in group]
+    if column.level > top:
+        return [c for c in table.schema if c.family == "point" and c.level > top]
+    return [
+        c
+        for c in table.schema
+        if c.family == "offset" or (c.family == "point" and c.level <= top)
+    ]
 
 
 def materialize(table: Table, columns: Iterable[Column]) -> dict[str, Array]:
@@ -179,14 +198,20 @@ SIMPLE: dict[str, Evaluator] = {
 def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
     """Compute points, offsets, checks and residuals in one pass over slices."""
     plan, state, n = table.plan, table.state, len(table)
-    points = sorted({c.key[0] for c in columns if c.family == "point"})
-    jerks = sorted(
-        {c.key[0] for c in columns if c.family == "point" and c.level > state.top}
-    )
+    top = state.top
+    out: dict[str, Array] = {}
+    wanted = [c for c in columns if c.family == "point" and c.level <= top]
+    # a link's origin is in the state already; other points are rebuilt by slices
+    for p in sorted({c.key[0] for c in wanted}):
+        if plan.point_offset[p] == (0.0, 0.0):
+            out.update(_origin(table, p, range(top + 1)))
+    points = {c.key[0]: _allocate(plan, c.key[0], range(top + 1), n) for c in wanted}
+    points = {
+        p: arrays for p, arrays in points.items() if f"{plan.points[p]}.x" not in out
+    }
     offsets = sorted({c.owner for c in columns if c.family == "offset"})
+    off = {name: np.empty(n) for name in offsets}
     families = {c.family for c in columns}
-    positions = np.empty((len(points), state.top + 1, 2, n))
-    off = np.empty((len(offsets), n))
     checks = np.empty((len(plan.drivers), n)) if "check" in families else None
     left = np.empty((2, n)) if "residual" in families else None
     loads = compile_loads(plan) if checks is not None or left is not None else None
@@ -194,36 +219,29 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
         rows = slice(start, min(start + CHUNK, n))
         part = state.rows(rows)
         bodies = motions(plan, part)
-        for i, p in enumerate(points):
-            _point(plan, bodies, part, p, range(state.top + 1), positions[i], rows)
+        for p, arrays in points.items():
+            _point(plan, bodies, p, arrays, rows)
         if offsets:
             scale = _largest_reaction(table, rows)
-        for i, name in enumerate(offsets):
+        for name in offsets:
             fx, fy, couple = take_rows(_forces(table).reactions[name], rows)
-            off[i, rows] = offset(plan.pairs[name], bodies, fx, fy, couple, scale)
+            off[name][rows] = offset(plan.pairs[name], bodies, fx, fy, couple, scale)
         if loads is None:
             continue
         applied = applied_loads(plan, loads, bodies, part)
         if checks is not None:
             speeds = take_rows(state.speed, rows)
             for i in range(len(plan.drivers)):
-                value = virtual_power(plan, bodies, applied, i, speeds[i])
-                checks[i, rows] = value
+                checks[i, rows] = virtual_power(plan, bodies, applied, i, speeds[i])
         if left is not None:
             forces = _forces(table).rows(rows)
             left[:, rows] = residual(plan, bodies, applied, forces, rows.stop - start).T
-    out: dict[str, Array] = {}
-    for i, p in enumerate(points):
-        name = plan.points[p]
-        for k in range(state.top + 1):
-            for axis, part_name in enumerate(POINT_PARTS[k]):
-                values = positions[i, k, axis]
-                if k == 0:
-                    values = values + plan.shift[axis]
-                out[f"{name}.{part_name}"] = values
+    for arrays in points.values():
+        out.update(arrays)
+    jerks = sorted({c.key[0] for c in columns if c.family == "point" and c.level > top})
     if jerks:
         out.update(_jerks(table, jerks))
-    out.update({f"{name}.offset": off[i] for i, name in enumerate(offsets)})
+    out.update({f"{name}.offset": values for name, values in off.items()})
     if checks is not None:
         for c in schema(plan, True):
             if c.family == "check":
@@ -231,6 +249,27 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
     if left is not None:
         out["residual.force"], out["residual.moment"] = left[0], left[1]
     return out
+
+
+def _origin(table: Table, p: int, levels: Iterable[int]) -> dict[str, Array]:
+    """Return the columns of a point at its link's origin, from the state."""
+    plan, n = table.plan, len(table)
+    state = table.motion(max(levels))
+    name, body = plan.points[p], plan.point_body[p]
+    out = {}
+    for k in levels:
+        for axis, value in enumerate(state.origin(body, k)):
+            values = full(value, n)
+            if k == 0 and plan.shift[axis]:
+                values = values + plan.shift[axis]
+            out[f"{name}.{POINT_PARTS[k][axis]}"] = values
+    return out
+
+
+def _allocate(plan: Any, p: int, levels: Iterable[int], n: int) -> dict[str, Array]:
+    """Return empty columns for point ``p``'s ``levels``, by name."""
+    name = plan.points[p]
+    return {f"{name}.{part}": np.empty(n) for k in levels for part in POINT_PARTS[k]}
 
 
 def _largest_reaction(table: Table, rows: slice) -> Array:
@@ -243,40 +282,40 @@ def _largest_reaction(table: Table, rows: slice) -> Array:
 
 
 def _point(
-    plan: Any,
-    bodies: list[Any],
-    state: Any,
-    p: int,
-    levels: Iterable[int],
-    out: Array,
-    rows: slice,
+    plan: Any, bodies: list[Any], p: int, arrays: dict[str, Array], rows: slice
 ) -> None:
-    """Write point ``p``'s levels over ``rows`` into ``out`` (levels, 2, n)."""
-    body, offset_ = plan.point_body[p], plan.point_offset[p]
-    m = bodies[body]
-    for k in levels:
-        if offset_ == (0.0, 0.0):
-            x, y = state.origin(body, k)
-        else:
-            x, y = point(m, offset_, k)
-        out[k, 0, rows] = x
-        out[k, 1, rows] = y
+    """Write point ``p``'s columns over ``rows``: ``arrays`` holds them by name."""
+    name = plan.points[p]
+    m = bodies[plan.point_body[p]]
+    offset_ = plan.point_offset[p]
+    shift = plan.shift
+    for k, parts in enumerate(POINT_PARTS):
+        target = arrays.get(f"{name}.{parts[0]}")
+        if target is None:
+            continue
+        x, y = point(m, offset_, k)
+        if k == 0 and (shift[0] or shift[1]):
+            x, y = x + shift[0], y + shift[1]
+        target[rows] = x
+        arrays[f"{name}.{parts[1]}"][rows] = y
 
 
 def _jerks(table: Table, points: list[int]) -> dict[str, Array]:
     """Compute the jerks of reported points from the state extended to jerks."""
     plan, n = table.plan, len(table)
     state = table.motion(3)
-    values = np.empty((len(points), 4, 2, n))
+    out: dict[str, Array] = {}
+    chunked = {}
+    for p in points:
+        if plan.point_offset[p] == (0.0, 0.0):
+            out.update(_origin(table, p, (3,)))
+        else:
+            chunked[p] = _allocate(plan, p, (3,), n)
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
-        part = state.rows(rows)
-        bodies = motions(plan, part)
-        for i, p in enumerate(points):
-            _point(plan, bodies, part, p, (3,), values[i], rows)
-    out = {}
-    for i, p in enumerate(points):
-        name = plan.points[p]
-        for c, part_name in enumerate(POINT_PARTS[3]):
-            out[f"{name}.{part_name}"] = values[i, 3, c]
+        bodies = motions(plan, state.rows(rows))
+        for p, arrays in chunked.items():
+            _point(plan, bodies, p, arrays, rows)
+    for arrays in chunked.values():
+        out.update(arrays)
     return out

@@ -67,7 +67,8 @@ class KinematicState:
     motion : tuple
         Per body (index 0 is the frame), its rotation from the reference pose and the
         path of its origin (m, core coordinates: see ``Plan.shift``) with their
-        derivatives: ``phi[0..top], ox[0..top], oy[0..top]``.
+        derivatives, then the rotation's cosine and sine: ``phi[0..top], ox[0..top],
+        oy[0..top], cos, sin``.
     slide : dict of str to tuple
         Slide (m) of every prismatic pair and its derivatives, levels 0 to ``top``.
     top : int
@@ -279,7 +280,8 @@ def state_of(
     The motions' arrays become the state's own (nothing is copied).
     """
     motion = tuple(
-        (*m.phi[: top + 1], *m.ox[: top + 1], *m.oy[: top + 1]) for m in bodies
+        (*m.phi[: top + 1], *m.ox[: top + 1], *m.oy[: top + 1], m.c, m.s)
+        for m in bodies
     )
     return KinematicState(
         drive, rates[0], rates[1], motion, _slides(plan, bodies, top), top
@@ -326,10 +328,12 @@ def motions(plan: Plan, state: KinematicState, finished: bool = True) -> list[Mo
     out = []
     for entries in state.motion:
         out.append(
-            Motion(
+            Motion.restore(
                 [*entries[:levels], *pad],
                 [*entries[levels : 2 * levels], *pad],
-                [*entries[2 * levels :], *pad],
+                [*entries[2 * levels : 3 * levels], *pad],
+                entries[3 * levels],
+                entries[3 * levels + 1],
             )
         )
     for name, (body, sign) in own_slides(plan).items():

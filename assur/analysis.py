@@ -38,6 +38,10 @@ __all__ = ["Table", "default_positions", "forces", "kinematics"]
 CHUNK = 8192
 """Driver positions solved at once; long sweeps run in slices of this size."""
 
+EXACT_DEGREES = 1e4
+"""Crank angles (deg) below which turning them into radians as they are loses no
+more than reducing them to a turn first would."""
+
 Rates = tuple[tuple[Any, ...], tuple[Any, ...]]
 """Each driver's speed and acceleration: a float, or an array with one value per
 position."""
@@ -271,15 +275,20 @@ def _real(values: Any, entry: str, what: str) -> Array:
 def to_si(plan: Plan, given: Array) -> Array:
     """Return driver positions in SI units (rad or m).
 
-    A crank's angle is brought within half a turn of the reference pose, reduced
-    exactly in degrees first.
+    A crank's angle is reduced exactly in degrees to within half a turn of the
+    reference pose when a group is solved by continuation (so the path from the
+    reference pose is short) or when it is large (so no digits are lost).
     """
     out = np.empty_like(given)
     for i, d in enumerate(plan.drivers):
         if d.kind == "R":
+            values = given[:, i]
+            if not plan.newton and np.all(np.abs(values) < EXACT_DEGREES):
+                out[:, i] = np.radians(values)  # a closed form needs no reduction
+                continue
             # reducing in degrees is exact; radians of a huge angle are not
             low = math.degrees(d.reference) - 180.0
-            turn = np.remainder(given[:, i], 360.0)
+            turn = np.remainder(values, 360.0)
             out[:, i] = np.radians(np.remainder(turn - low, 360.0) + low)
         else:
             out[:, i] = given[:, i]

@@ -57,6 +57,18 @@ class Motion:
         self.memo = None  # a new pose is not final
 
     @classmethod
+    def restore(
+        cls, phi: list[Any], ox: list[Any], oy: list[Any], c: Any, s: Any
+    ) -> Motion:
+        """Return a motion whose rotation's cosine ``c`` and sine ``s`` are known."""
+        m = cls.__new__(cls)
+        m.phi, m.ox, m.oy, m.c, m.s = phi, ox, oy, c, s
+        m.q = []
+        m.rot = {}
+        m.memo = None
+        return m
+
+    @classmethod
     def fixed(cls, x: float = 0.0, y: float = 0.0) -> Motion:
         """Return a body at rest with its origin at ``(x, y)`` (the frame)."""
         m = cls([0.0, 0.0, 0.0, 0.0], [x, 0.0, 0.0, 0.0], [y, 0.0, 0.0, 0.0])
