@@ -10,6 +10,7 @@ from which every point of every link follows.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -33,6 +34,8 @@ __all__ = [
 
 CONTINUATION_STEP = math.radians(5.0)
 """Largest step of the driver along the continuation path of a Newton-solved group."""
+MAX_STEPS = 4000
+"""Most continuation steps from the reference pose to one position."""
 LEVELS = 4
 """Position, velocity, acceleration and jerk."""
 
@@ -122,26 +125,38 @@ def _at(value: Leaf, row: int) -> float:
     return float(value[row]) if is_array(value) else float(value)
 
 
+BranchOf = Callable[[Array], dict[int, Array]]
+"""Each closed-form group's branch at driver positions (n, d), SI units, by solver
+index; a group absent keeps its reference pose's branch."""
+
+
 def solve(
-    plan: Plan, drive: Array, speed: Any, acceleration: Any, top: int = 3
+    plan: Plan,
+    drive: Array,
+    speed: Any,
+    acceleration: Any,
+    top: int = 3,
+    branch_of: BranchOf | None = None,
 ) -> tuple[list[Motion], list[Trouble]]:
     """Solve the motion of every link at driver positions ``drive`` (n, d), SI units.
 
     ``speed`` and ``acceleration`` hold each driver's rate: a float per driver (a
-    sequence) or an array (n,) per driver. Returns the links' motions (levels 0 to
-    ``top``) and the troubles met; positions that fail hold NaN.
+    sequence) or an array (n,) per driver; ``branch_of`` gives the groups' branches
+    past change points. Returns the links' motions (levels 0 to ``top``) and the
+    troubles met; positions that fail hold NaN.
     """
     n = drive.shape[0]
-    guesses = _continuation(plan, drive) if plan.newton else None
+    guesses = _continuation(plan, drive, branch_of) if plan.newton else None
+    branch = {} if branch_of is None else branch_of(drive)
     bodies = drivers(plan, drive, speed, acceleration)
     troubles: list[Trouble] = []
     g = 0
-    for solver in plan.solvers:
+    for index, solver in enumerate(plan.solvers):
         guess = None
         if solver.newton:
             assert guesses is not None
             guess, g = guesses[g], g + 1
-        failed = solver.assemble(bodies, n, guess).failed
+        failed = solver.assemble(bodies, n, guess, branch.get(index)).failed
         lin = solver.linearize(bodies)
         # a failed pose has no conditioning (NaN): it is below no threshold
         low = lin.conditioning < solver.near
@@ -180,14 +195,14 @@ def frame(plan: Plan) -> Motion:
     return found  # type: ignore[no-any-return]
 
 
-def _continuation(plan: Plan, drive: Array) -> list[Any]:
+def _continuation(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
     """Follow the Newton groups from the reference pose to ``drive``.
 
     Each position is reached along the straight path of the driver from the reference
     pose; a crank position that path cannot reach (the group does not assemble
     somewhere on the way) is tried again the other way round the circle.
     """
-    guesses = _walk(plan, drive)
+    guesses = _walk(plan, drive, branch_of)
     if len(plan.drivers) != 1 or plan.drivers[0].kind != "R" or not guesses:
         return guesses
     failed = np.zeros(drive.shape[0], dtype=bool)
@@ -196,7 +211,9 @@ def _continuation(plan: Plan, drive: Array) -> list[Any]:
     if not failed.any():
         return guesses
     gap = drive[failed] - plan.drivers[0].reference
-    retry = _walk(plan, drive[failed] - 2.0 * math.pi * np.where(gap >= 0, 1.0, -1.0))
+    retry = _walk(
+        plan, drive[failed] - 2.0 * math.pi * np.where(gap >= 0, 1.0, -1.0), branch_of
+    )
     for group, again in zip(guesses, retry, strict=True):
         for i, (pose, other) in enumerate(zip(group, again, strict=True)):
             merged = []
@@ -210,8 +227,19 @@ def _continuation(plan: Plan, drive: Array) -> list[Any]:
     return guesses
 
 
-def _walk(plan: Plan, drive: Array) -> list[Any]:
-    """Return the Newton groups' poses along straight paths to ``drive``."""
+def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
+    """Return the Newton groups' poses along straight paths to ``drive``.
+
+    Every position takes steps of at most :data:`CONTINUATION_STEP` (a crank) or a
+    twentieth of the mechanism's size (a slider) from the reference pose; a position
+    stops at its first failed step (its pose is then NaN), so the work grows with the
+    distance the mechanism can actually travel.
+
+    Raises
+    ------
+    ConvergenceError
+        When a position is more than :data:`MAX_STEPS` steps away.
+    """
     n = drive.shape[0]
     reference = np.array([d.reference for d in plan.drivers])
     step = np.array(
@@ -220,22 +248,68 @@ def _walk(plan: Plan, drive: Array) -> list[Any]:
             for d in plan.drivers
         ]
     )
-    span = float(np.max(np.abs(drive - reference) / step)) if drive.size else 0.0
-    count = max(1, math.ceil(span))
+    counts = np.ones(n)
+    if n:
+        counts = np.maximum(1.0, np.ceil(np.max(np.abs(drive - reference) / step, 1)))
+    if n and counts.max() > MAX_STEPS:
+        _too_far(plan, drive, counts)
     still = [0.0] * len(plan.drivers)
-    guesses: list[Any] = [None] * sum(s.newton for s in plan.solvers)
-    for s in range(1, count + 1):
-        bodies = drivers(
-            plan, reference + (drive - reference) * (s / count), still, still
-        )
-        g = 0
-        for solver in plan.solvers:
+    newton = [k for k, solver in enumerate(plan.solvers) if solver.newton]
+    result: list[Any] = [None] * len(newton)
+    current: list[Any] = [None] * len(newton)
+    active = np.arange(n)
+    s = 1
+    while active.size:
+        fraction = np.minimum(s / counts[active], 1.0)
+        at = reference + (drive[active] - reference) * fraction[:, None]
+        bodies = drivers(plan, at, still, still)
+        branch = {} if branch_of is None else branch_of(at)
+        ok = np.ones(active.size, dtype=bool)
+        for index, solver in enumerate(plan.solvers):
             if solver.newton:
-                guesses[g] = solver.assemble(bodies, n, guesses[g]).guess
-                g += 1
+                g = newton.index(index)
+                found = solver.assemble(bodies, active.size, current[g])
+                current[g] = found.guess
+                ok &= ~found.failed
             else:
-                solver.assemble(bodies, n)
-    return guesses
+                solver.assemble(bodies, active.size, branch=branch.get(index))
+        finish = (fraction >= 1.0) | ~ok  # arrived, or stopped by a failed step
+        if finish.any():
+            rows = active[finish]
+            for g, poses in enumerate(current):
+                if result[g] is None:
+                    result[g] = [
+                        tuple(np.full(n, np.nan) for _ in pose) for pose in poses
+                    ]
+                for kept, pose in zip(result[g], poses, strict=True):
+                    for whole, part in zip(kept, pose, strict=True):
+                        whole[rows] = part[finish]
+            keep = ~finish
+            active = active[keep]
+            current = [
+                [tuple(v[keep] for v in pose) for pose in poses] for poses in current
+            ]
+        s += 1
+    return result
+
+
+def _too_far(plan: Plan, drive: Array, counts: Array) -> None:
+    """Raise the error of a position too far from the reference pose to walk to."""
+    from assur._text import position_text
+    from assur.errors import ConvergenceError
+
+    row = int(np.argmax(counts > MAX_STEPS))
+    values = [
+        math.degrees(x) if d.kind == "R" else float(x)
+        for d, x in zip(plan.drivers, drive[row], strict=True)
+    ]
+    where = position_text([d.kind for d in plan.drivers], values)
+    msg = (
+        f"driver position {where} is {int(counts[row])} continuation steps from the "
+        f"reference pose; expected at most {MAX_STEPS} (positions within "
+        f"{MAX_STEPS // 20} mechanism sizes of it)"
+    )
+    raise ConvergenceError(msg)
 
 
 def velocity_coefficients(plan: Plan, bodies: list[Motion], which: int) -> list[Motion]:

@@ -17,6 +17,7 @@ import numpy as np
 
 from assur import _kinematics as _kin
 from assur import kinetostatics as _kst
+from assur._branches import branches
 from assur._loads import compile_loads
 from assur._progress import Callback, progress
 from assur._text import position_text
@@ -178,6 +179,8 @@ def _sweep(
     top = chosen.top if names is not None else min(chosen.top, 2)
     loads = compile_loads(plan) if chosen.forces else None
     troubles: list[Any] = []
+    passed = _change_points(plan, drive)
+    branch_of = (lambda at: branches(plan, at)[0]) if passed else None
 
     def pieces() -> Iterator[tuple[slice, Any]]:
         for start in range(0, max(n, 1), CHUNK):  # an empty sweep has one slice
@@ -185,7 +188,9 @@ def _sweep(
             part = _at(rates, rows)
             # failed or dead-centre positions carry NaN through; _report names them
             with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-                bodies, found = _kin.solve(plan, drive[rows], *part, top=top)
+                bodies, found = _kin.solve(
+                    plan, drive[rows], *part, top=top, branch_of=branch_of
+                )
                 kin = _kin.state_of(plan, bodies, drive[rows], part, top)
                 fields = None
                 if loads is not None:
@@ -213,6 +218,22 @@ def _sweep(
         skipped[:, 0] if skipped.shape[1] == 1 else skipped,
         _index=chosen.index,
     )
+
+
+def _change_points(plan: Plan, drive: Array) -> bool:
+    """Warn of the change points the sweep passes; return whether it passes any."""
+    passed = branches(plan, drive)[1]
+    for g, position in passed:
+        d = plan.drivers[0]
+        value = math.degrees(position) if d.kind == "R" else position
+        warnings.warn(
+            f"group {plan.solvers[g].label}: its two assembly branches meet at driver "
+            f"position {_where(plan, np.array([value]))} (a change point); the motion "
+            "is carried through onto the branch whose velocities are continuous",
+            AssurWarning,
+            stacklevel=5,
+        )
+    return bool(passed)
 
 
 def _at(rates: Rates, rows: Any) -> Rates:

@@ -34,6 +34,7 @@ RANKS = {
     "assur.plan": 4,
     "assur._loads": 5,
     "assur._kinematics": 5,
+    "assur._branches": 6,
     "assur.kinetostatics": 6,
     "assur.columns": 7,
     "assur._evaluate": 7,

@@ -49,6 +49,9 @@ __all__ = [
 Jacobian = tuple[Any, Any, Any, Any]
 Closure = Callable[["DyadSolver", list[Motion], Any], tuple[Any, Any]]
 """A dyad kind's closed-form assembly: ``(dyad, bodies, branch) -> (q1, q2)``."""
+Discriminant = Callable[["DyadSolver", list[Motion]], Any]
+"""A two-branch kind's discriminant: ``(dyad, bodies) -> D``, dimensionless, negative
+where the dyad cannot close and zero where its two branches meet."""
 
 DEAD_CENTRE = 1e-6
 """Smallest sine of a dyad's transmission angle accepted in the reference pose."""
@@ -79,11 +82,14 @@ class DyadSolver:
     closure: Closure
     scale: float
     branch: float = 1.0
+    gap: Discriminant | None = None
 
     newton: ClassVar[bool] = False
-    singular: ClassVar[float] = 1e-9
+    singular: ClassVar[float] = 1e-6
     """Sine of the angle between the Jacobian's columns below which a pose is a dead
-    centre, where velocities are undefined."""
+    centre, where velocities are undefined. A closed form's square root leaves about
+    the root of the rounding error (1e-8) at an exact dead centre: no smaller sine
+    can be told from zero."""
     near: ClassVar[float] = 0.035
     """Below this (about 2 degrees of transmission angle) a pose is near-singular."""
 
@@ -119,6 +125,10 @@ class DyadSolver:
     def equilibrium(self, bodies: list[Motion], loads: list[Wrench]) -> Equilibrium:
         """Solve the dyad's three reactions in closed form."""
         return equilibrium(self, bodies, loads)
+
+    def discriminant(self, bodies: list[Motion]) -> Any:
+        """Return the kind's discriminant (None for a kind with a single branch)."""
+        return None if self.gap is None else self.gap(self, bodies)
 
     def own_slides(self) -> dict[str, tuple[int, float]]:
         """External prismatic pairs whose slide is a link's own coordinate.
@@ -327,7 +337,12 @@ def reaction(pair: PairPlan, bodies: list[Motion], wrench: Wrench) -> Reaction:
     return Reaction(fx, fy, sub(tau, cross(qx, qy, fx, fy)))
 
 
-def compile_dyad(context: CompileContext, group: Group, closure: Closure) -> DyadSolver:
+def compile_dyad(
+    context: CompileContext,
+    group: Group,
+    closure: Closure,
+    discriminant: Discriminant | None = None,
+) -> DyadSolver:
     """Compile a dyad of ``group``'s kind: offsets, and the reference pose's branch.
 
     Raises
@@ -352,7 +367,16 @@ def compile_dyad(context: CompileContext, group: Group, closure: Closure) -> Dya
         mid.d_first if mid.first == bodies[1] else mid.d_second,
     )
     dyad = DyadSolver(
-        group, bodies, ext, mid, known, d_known, d_mid, closure, context.scale
+        group,
+        bodies,
+        ext,
+        mid,
+        known,
+        d_known,
+        d_mid,
+        closure,
+        context.scale,
+        gap=discriminant,
     )
     best: tuple[float, DyadSolver] | None = None
     for branch in (1.0, -1.0):

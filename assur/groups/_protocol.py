@@ -210,6 +210,11 @@ class GroupSolver(Protocol):
         """Short label such as ``"RRR (coupler, rocker)"``."""
         ...
 
+    @property
+    def branch(self) -> float:
+        """The reference pose's branch of a two-branch closed form (+1 or -1)."""
+        ...
+
     def assemble(
         self, bodies: list[Motion], n: int, guess: Any = None, branch: Any = None
     ) -> Assembly:
@@ -226,6 +231,15 @@ class GroupSolver(Protocol):
 
     def equilibrium(self, bodies: list[Motion], loads: list[Wrench]) -> Equilibrium:
         """Solve the group's reactions under the known ``loads`` of every body."""
+        ...
+
+    def discriminant(self, bodies: list[Motion]) -> Any:
+        """Return where the group's two closed-form branches meet, or None.
+
+        Dimensionless, over the batch: negative where the group cannot close, zero
+        where its two assembly branches meet (a change point when it only touches
+        zero). None for a group with one branch or followed by continuation.
+        """
         ...
 
     def own_slides(self) -> dict[str, tuple[int, float]]:

@@ -78,6 +78,11 @@ class GeneralSolver:
         return self.group.label
 
     @property
+    def branch(self) -> float:
+        """Return +1: the branch is the one the continuation follows."""
+        return 1.0
+
+    @property
     def reach(self) -> float:
         """Size of the numbers Newton works with, m (it bounds their rounding).
 
@@ -117,6 +122,10 @@ class GeneralSolver:
     def own_slides(self) -> dict[str, tuple[int, float]]:
         """No slide is a link's own coordinate here (links have x, y, rotation)."""
         return {}
+
+    def discriminant(self, bodies: list[Motion]) -> Any:
+        """Return None: the branch is followed by continuation, not chosen."""
+        return None
 
 
 def _count(plan: GeneralSolver, bodies: list[Motion]) -> int:

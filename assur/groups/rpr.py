@@ -44,6 +44,22 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     return phi, phi
 
 
+def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
+    """Return the squared sine of the angle between the slide line and the pins' line.
+
+    Negative where the dyad cannot close; zero where its two branches meet.
+    """
+    g = 0 if plan.bodies[0] == plan.mid.first else 1
+    h = 1 - g
+    pins = [point(bodies[plan.known[b]], plan.d_known[b], 0) for b in (0, 1)]
+    gx, gy = pins[h][0] - pins[g][0], pins[h][1] - pins[g][1]
+    n0 = plan.mid.normal
+    dg, dh = plan.d_mid[g], plan.d_mid[h]
+    c0 = n0[0] * (dg[0] - dh[0]) + n0[1] * (dg[1] - dh[1])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return 1.0 - c0 * c0 / (gx * gx + gy * gy)
+
+
 def compile_group(context: CompileContext, group: Group) -> DyadSolver:
     """Compile an RPR dyad of a mechanism (its branch from the reference pose)."""
-    return compile_dyad(context, group, assemble)
+    return compile_dyad(context, group, assemble, discriminant)

@@ -47,6 +47,23 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     return np.arctan2(cross(d1[0], d1[1], vx, vy), dot(d1, (vx, vy))), sigma
 
 
+def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
+    """Return the square of the cosine of the angle between the link and the guide.
+
+    Negative where the dyad cannot close; zero where its two branches meet (the link
+    square to the guide).
+    """
+    px, py = point(bodies[plan.known[0]], plan.d_known[0], 0)
+    slider = bodies[plan.known[1]]
+    ex, ey = guide(plan, bodies, 1)
+    gx, gy = point(slider, plan.d_known[1], 0)
+    ux, uy = rotated(slider, plan.d_mid[1])
+    d1 = plan.d_mid[0]
+    wx, wy = sub(add(gx, ux), px), sub(add(gy, uy), py)
+    normal = cross(ex, ey, wx, wy)
+    return 1.0 - normal * normal / (d1[0] * d1[0] + d1[1] * d1[1])
+
+
 def compile_group(context: CompileContext, group: Group) -> DyadSolver:
     """Compile an RRP dyad of a mechanism (its branch from the reference pose)."""
-    return compile_dyad(context, group, assemble)
+    return compile_dyad(context, group, assemble, discriminant)

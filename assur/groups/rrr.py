@@ -48,6 +48,28 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     return q1, q2
 
 
+def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
+    r"""Return the square of the sine of the angle at the middle pin.
+
+    Negative where the dyad cannot close; zero where its two branches meet.
+
+    Notes
+    -----
+    With the middle pin at height :math:`h` over the line of the outer pins a
+    distance :math:`L` apart: :math:`\sin\mu = h L / (r_1 r_2)`.
+    """
+    x1, y1 = point(bodies[plan.known[0]], plan.d_known[0], 0)
+    x2, y2 = point(bodies[plan.known[1]], plan.d_known[1], 0)
+    d1, d2 = plan.d_mid
+    r1 = d1[0] * d1[0] + d1[1] * d1[1]
+    r2 = d2[0] * d2[0] + d2[1] * d2[1]
+    gx, gy = x2 - x1, y2 - y1
+    length = gx * gx + gy * gy
+    with np.errstate(divide="ignore", invalid="ignore"):
+        a = 0.5 + 0.5 * (r1 - r2) / length
+        return (r1 / length - a * a) * length * length / (r1 * r2)
+
+
 def compile_group(context: CompileContext, group: Group) -> DyadSolver:
     """Compile an RRR dyad of a mechanism (its branch from the reference pose)."""
-    return compile_dyad(context, group, assemble)
+    return compile_dyad(context, group, assemble, discriminant)

@@ -71,7 +71,8 @@ class DenseRRR:
         with np.errstate(invalid="ignore"):
             height = np.sqrt(r1 * r1 - along * along)
         unit = gap / dist
-        c = p1 + unit * (along + 1j * self.side * height)
+        side = self.side if branch is None else branch
+        c = p1 + unit * (along + 1j * side * height)
         failed = ~np.isfinite(c)
         for b, pin in ((0, p1), (1, p2)):
             rotation = np.angle(c - pin) - self.angle0[b]
@@ -170,6 +171,18 @@ class DenseRRR:
             tuple(passed),
             self.d_middle,
         )
+
+    @property
+    def branch(self) -> float:
+        return self.side
+
+    def discriminant(self, bodies: list[Motion]) -> Any:
+        """Squared sine of the angle at the middle pin (negative: cannot close)."""
+        p1, p2 = self._pins(bodies, 0)
+        r1, r2 = self.radius
+        dist = np.abs(p2 - p1)
+        along = (r1 * r1 - r2 * r2 + dist * dist) / (2.0 * dist)
+        return (r1 * r1 - along * along) * dist * dist / (r1 * r1 * r2 * r2)
 
     def own_slides(self) -> dict[str, tuple[int, float]]:
         return {}

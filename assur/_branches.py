@@ -1,0 +1,210 @@
+"""Change points: where a dyad's two assembly branches meet, and the branch beyond.
+
+A closed-form dyad (RRR, RRP, RPR) has two assembly branches; its discriminant is
+zero where they meet. Where it only touches zero (a change point: a parallelogram
+four-bar at 0 and 180 degrees) the mechanism moves on smoothly onto the other branch,
+the one whose velocities are continuous: a parallelogram stays a parallelogram. The
+driver's range around the reference pose is scanned once per plan for such points;
+each position's branch is then the reference pose's, flipped once for every change
+point on the driver's straight path from the reference pose.
+
+Scanned: one driver, the dyads attached before any group solved by Newton's method
+(whose branch its continuation follows).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from assur._kinematics import drivers
+from assur._vec import Array
+from assur.plan import Plan
+
+__all__ = ["ChangePoints", "branches", "change_points"]
+
+STEP = math.radians(0.5)
+"""Grid step of the scan of a crank, rad."""
+TURNS = 2
+"""A crank is scanned this many turns either side of the reference pose; positions
+farther away repeat the window (two turns bring every dyad back to its branch)."""
+SIZES = 4.0
+"""A slider is scanned this many mechanism sizes either side of the reference pose."""
+SLIDER_POINTS = 4001
+"""Grid points of the scan of a slider."""
+CANDIDATE = 0.05
+"""A discriminant at a local minimum of the grid below this is looked at closely."""
+TOUCH = 1e-12
+"""A discriminant whose minimum is within this of zero touches it: a change point
+(the square of the smallest sine a closed form resolves, 1e-6)."""
+REFINE = 80
+"""Golden-section steps that locate a minimum of the discriminant."""
+
+
+@dataclass(frozen=True, slots=True)
+class ChangePoints:
+    """The change points of each solver of a plan, as driver positions (rad or m).
+
+    ``points[g]`` is sorted (empty for a group without change points); ``low`` and
+    ``high`` bound the scanned window; ``period`` is the window's width for a crank
+    (positions beyond it repeat it), None for a slider.
+    """
+
+    points: tuple[Array, ...]
+    low: float
+    high: float
+    period: float | None
+
+    @property
+    def any(self) -> bool:
+        """Whether some group has a change point."""
+        return any(p.size for p in self.points)
+
+
+def change_points(plan: Plan) -> ChangePoints | None:
+    """Return the change points of ``plan`` (scanned once and kept), or None.
+
+    None when nothing can change branch: several drivers, or no two-branch dyad
+    before the first group followed by continuation.
+    """
+    if "change-points" not in plan.memo:
+        plan.memo["change-points"] = _scan(plan)
+    return plan.memo["change-points"]  # type: ignore[no-any-return]
+
+
+def _closed(plan: Plan) -> list[int]:
+    """Return the solvers the scan covers: those before any Newton group."""
+    out = []
+    for g, solver in enumerate(plan.solvers):
+        if solver.newton:
+            break
+        out.append(g)
+    return out
+
+
+def _scan(plan: Plan) -> ChangePoints | None:
+    if len(plan.drivers) != 1:
+        return None
+    d = plan.drivers[0]
+    groups = _closed(plan)
+    if d.kind == "R":
+        half = TURNS * 2.0 * math.pi
+        grid = d.reference + np.arange(-half, half + STEP / 2, STEP)
+        period: float | None = 2.0 * half
+    else:
+        half = SIZES * plan.scale
+        grid = d.reference + np.linspace(-half, half, SLIDER_POINTS)
+        period = None
+    flips: dict[int, Array] = {}
+    found = False
+    for g in groups:
+        values = _discriminants(plan, grid, flips, g)
+        if values is None:
+            continue
+        points = _touches(plan, grid, values, flips, g)
+        if points.size:
+            flips[g] = points
+            found = True
+    if not found:
+        return None
+    found_points = tuple(flips.get(g, np.zeros(0)) for g in range(len(plan.solvers)))
+    return ChangePoints(found_points, float(grid[0]), float(grid[-1]), period)
+
+
+def _discriminants(
+    plan: Plan, at: Array, flips: dict[int, Array], upto: int
+) -> Array | None:
+    """Group ``upto``'s discriminant at driver positions ``at`` (rad or m).
+
+    The groups before it are assembled on the branches the change points found so far
+    give them.
+    """
+    n = at.shape[0]
+    drive = at[:, None]
+    bodies = drivers(plan, drive, (0.0,), (0.0,))
+    ref = plan.drivers[0].reference
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        for g, solver in enumerate(plan.solvers[: upto + 1]):
+            if g == upto:
+                values = solver.discriminant(bodies)
+                return None if values is None else np.broadcast_to(values, (n,))
+            points = flips.get(g)
+            branch = None if points is None else _branch(solver, points, drive, ref)
+            solver.assemble(bodies, n, branch=branch)
+    return None
+
+
+def _touches(
+    plan: Plan, grid: Array, values: Array, flips: dict[int, Array], g: int
+) -> Array:
+    """Locate where group ``g``'s discriminant touches zero between grid points."""
+    inner = values[1:-1]
+    low = (inner <= values[:-2]) & (inner <= values[2:]) & (np.abs(inner) < CANDIDATE)
+    index = np.flatnonzero(low) + 1
+    if index.size == 0:
+        return np.zeros(0)
+    a, b = grid[index - 1].copy(), grid[index + 1].copy()
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    for _ in range(REFINE):
+        c, d = b - ratio * (b - a), a + ratio * (b - a)
+        fc = _discriminants(plan, c, flips, g)
+        fd = _discriminants(plan, d, flips, g)
+        assert fc is not None
+        assert fd is not None
+        left = ~(fc > fd)  # the minimum is in [a, d]; NaN (open) counts as low
+        b = np.where(left, d, b)
+        a = np.where(left, a, c)
+    middle = 0.5 * (a + b)
+    minimum = _discriminants(plan, middle, flips, g)
+    assert minimum is not None
+    # a touch, not a dip below zero (where the dyad stops: no branch beyond)
+    touch = np.abs(minimum) <= TOUCH
+    return np.sort(middle[touch])
+
+
+def _branch(solver: Any, points: Array, drive: Array, ref: float) -> Array:
+    """Return the branch (+1 or -1) at each driver position.
+
+    The reference pose's branch, flipped at every change point between the reference
+    pose and the position.
+    """
+    x = drive[:, 0]
+    count = np.zeros(x.shape[0], dtype=np.int64)
+    for c in points:
+        if c > ref:
+            count += x >= c
+        else:
+            count += x <= c
+    return np.where(count % 2 == 1, -solver.branch, solver.branch).astype(float)
+
+
+def branches(
+    plan: Plan, drive: Array
+) -> tuple[dict[int, Array], list[tuple[int, float]]]:
+    """Return each dyad's branch at driver positions ``drive`` (n, 1), SI units.
+
+    Returns the branch arrays of the dyads that change branch somewhere in the sweep,
+    by solver index, and the change points the sweep passes ``(solver index,
+    position)``. Empty when nothing changes branch.
+    """
+    found = change_points(plan)
+    if found is None or not found.any:
+        return {}, []
+    ref = plan.drivers[0].reference
+    x = drive[:, :1]
+    if found.period is not None:
+        # positions beyond the window repeat it
+        x = ref + np.remainder(x - found.low, found.period) + (found.low - ref)
+    out, passed = {}, []
+    lo, hi = float(np.min(x, initial=ref)), float(np.max(x, initial=ref))
+    for g, points in enumerate(found.points):
+        if not points.size:
+            continue
+        branch = _branch(plan.solvers[g], points, x, ref)
+        if np.any(branch != plan.solvers[g].branch):
+            out[g] = branch
+        passed += [(g, float(c)) for c in points if lo <= c <= hi]
+    return out, passed
