@@ -20,8 +20,8 @@ from assur import kinetostatics as _kst
 from assur._branches import branches
 from assur._loads import compile_loads
 from assur._progress import Callback, progress
-from assur._text import position_text
-from assur._vec import Array, Mask, gather
+from assur._text import describe, position_text
+from assur._vec import Array, Mask, gather, is_array
 from assur.columns import selection
 from assur.errors import (
     AssemblyError,
@@ -30,7 +30,7 @@ from assur.errors import (
     SingularConfigurationError,
     UsageError,
 )
-from assur.model import Mechanism
+from assur.model import LARGEST, Mechanism
 from assur.plan import Plan, plan_of
 from assur.table import Table
 
@@ -196,6 +196,7 @@ def _sweep(
                 if loads is not None:
                     fields = _kst.solve(plan, loads, bodies, kin)[0].fields()
             troubles.extend((t, start) for t in found)
+            _unexplained(plan, given[rows], (kin.motion, kin.slide, fields), found, top)
             bar.advance(rows.stop - rows.start)
             yield rows, (kin.motion, kin.slide, fields)
 
@@ -220,6 +221,85 @@ def _sweep(
     )
 
 
+def _unexplained(
+    plan: Plan, given: Array, tree: Any, found: list[Any], top: int
+) -> None:
+    """Warn of values that are not finite where no failed position explains them.
+
+    An overflow or a singular force system, say; the warning names what and where.
+    """
+    arrays = _arrays(tree, top)
+    if not arrays or np.isfinite(np.add.reduce(arrays)).all():
+        return
+    explained = np.zeros(given.shape[0], dtype=bool)
+    for trouble in found:
+        if trouble.what != "near":
+            explained |= trouble.mask
+    owners = _owners(plan, tree)
+    bad = np.zeros(given.shape[0], dtype=bool)
+    named: list[str] = []
+    for owner, value in owners:
+        if is_array(value):
+            wrong = ~np.isfinite(value) & ~explained
+            if wrong.any():
+                bad |= wrong
+                if owner not in named:
+                    named.append(owner)
+    if bad.any():
+        warnings.warn(
+            f"values of {', '.join(named[:6])}{', ...' if len(named) > 6 else ''} are "
+            f"not finite at driver positions {_ranges(plan, given, bad)}, where no "
+            "group fails: the inputs are out of the range the arithmetic can follow",
+            AssurWarning,
+            stacklevel=6,
+        )
+
+
+def _arrays(tree: Any, top: int) -> list[Array]:
+    """Return the arrays a value that is not finite would reach.
+
+    NaN and inf spread from a position to its derivatives, so each link's highest
+    derivative stands for its motion; and from a reaction to the frame's loads.
+    """
+    motion, _, fields = tree
+    levels = top + 1
+    out = [
+        x
+        for entries in motion
+        for x in entries[top : 3 * levels : levels]
+        if x.__class__ is np.ndarray
+    ]
+    if fields is not None:
+        _, reactions, balancing, shaking = fields
+        for group in (*reactions.values(), balancing, shaking):
+            out += [x for x in group if x.__class__ is np.ndarray]
+    return out
+
+
+def _owners(plan: Plan, tree: Any) -> list[tuple[str, Any]]:
+    """Pair every leaf of a sweep's states with the link or joint it belongs to."""
+    motion, slide, fields = tree
+    out = [
+        (f"link {plan.bodies[b]}", x)
+        for b, entries in enumerate(motion)
+        for x in entries
+    ]
+    out += [(f"joint {name}", x) for name, values in slide.items() for x in values]
+    if fields is not None:
+        inertia, reactions, balancing, shaking = fields
+        out += [
+            (f"link {plan.bodies[b]}", x)
+            for b, values in enumerate(inertia)
+            for x in values or ()
+        ]
+        out += [
+            (f"joint {name}", x) for name, values in reactions.items() for x in values
+        ]
+        out += [("driver", x) for x in balancing]
+        out += [("shaking", x) for x in shaking]
+    return out
+
+
 def _change_points(plan: Plan, drive: Array) -> bool:
     """Warn of the change points the sweep passes; return whether it passes any."""
     passed = branches(plan, drive)[1]
@@ -231,7 +311,7 @@ def _change_points(plan: Plan, drive: Array) -> bool:
             f"position {_where(plan, np.array([value]))} (a change point); the motion "
             "is carried through onto the branch whose velocities are continuous",
             AssurWarning,
-            stacklevel=5,
+            stacklevel=4,
         )
     return bool(passed)
 
@@ -334,6 +414,12 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
         arr = _real(value, entry, "rad/s or m/s" if entry == "omega" else "rad/s^2")
         if not np.all(np.isfinite(arr)):
             msg = f"{entry}: expected finite numbers"
+            raise UsageError(msg)
+        if arr.size and np.max(np.abs(arr)) > LARGEST:
+            msg = (
+                f"{entry}: {describe(float(np.max(np.abs(arr))))} is out of range; "
+                f"expected magnitudes up to {LARGEST:g}"
+            )
             raise UsageError(msg)
         if arr.ndim == 0 and d == 1:
             out.append((float(arr),))

@@ -349,3 +349,41 @@ def test_a_position_too_far_to_walk_to_is_named():
     mech = slider_triad()
     with pytest.raises(assur.ConvergenceError, match="continuation steps"):
         assur.kinematics(mech, [1e6])
+
+
+# ------------------------------------------------------------------------------------
+# No silent NaN
+
+
+def test_values_that_are_not_finite_without_a_failure_are_named(monkeypatch):
+    from assur.groups import _dyad
+
+    original = _dyad.equilibrium
+
+    def broken(plan, bodies, loads):
+        record = original(plan, bodies, loads)
+        middle = record.reactions[plan.mid.name]
+        fx, fy, couple = middle.fx, middle.fy, middle.couple
+        fx = np.where(np.arange(np.size(fx)) == 1, np.nan, fx)
+        reactions = dict(record.reactions)
+        reactions[plan.mid.name] = _dyad.Reaction(fx, fy, couple)
+        return dataclasses.replace(record, reactions=reactions)
+
+    monkeypatch.setattr(_dyad, "equilibrium", broken)
+    with pytest.warns(
+        assur.AssurWarning, match=r"joint C .*not finite at driver positions 20 deg"
+    ) as caught:
+        assur.forces(assur.catalog.slider_crank(), [10.0, 20.0, 30.0])
+    assert caught[0].filename == __file__
+
+
+def test_speeds_out_of_range_are_refused():
+    mech = assur.catalog.slider_crank()
+    with pytest.raises(assur.UsageError, match=r"omega: .* out of range"):
+        assur.forces(mech, [10.0, 20.0], omega=[1e200, 1.0])
+
+
+def test_warnings_point_at_the_caller():
+    with pytest.warns(assur.AssurWarning, match="change point") as caught:
+        assur.kinematics(parallelogram(), [270.0])
+    assert caught[0].filename == __file__
