@@ -99,19 +99,27 @@ def _scan(plan: Plan) -> ChangePoints | None:
         grid = d.reference + np.linspace(-half, half, SLIDER_POINTS)
         period = None
     flips: dict[int, Array] = {}
-    found = False
-    for g in groups:
-        values = _discriminants(plan, grid, flips, g)
-        if values is None:
-            continue
-        points = _touches(plan, grid, values, flips, g)
-        if points.size:
-            flips[g] = points
-            found = True
-    if not found:
+    # one pass over the grid: each group is assembled on the branches its change
+    # points give it before the next group's discriminant is taken
+    n = grid.shape[0]
+    bodies = drivers(plan, grid[:, None], (0.0,), (0.0,))
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        for g in groups:
+            solver = plan.solvers[g]
+            values = solver.discriminant(bodies)
+            if values is not None:
+                values = np.broadcast_to(values, (n,))
+                points = _touches(plan, grid, values, flips, g)
+                if points.size:
+                    flips[g] = points
+            branch = None
+            if g in flips:
+                branch = _branch(solver, flips[g], grid[:, None], d.reference)
+            solver.assemble(bodies, n, branch=branch)
+    if not flips:
         return None
-    found_points = tuple(flips.get(g, np.zeros(0)) for g in range(len(plan.solvers)))
-    return ChangePoints(found_points, float(grid[0]), float(grid[-1]), period)
+    found = tuple(flips.get(g, np.zeros(0)) for g in range(len(plan.solvers)))
+    return ChangePoints(found, float(grid[0]), float(grid[-1]), period)
 
 
 def _discriminants(

@@ -384,13 +384,17 @@ def to_si(plan: Plan, given: Array) -> Array:
     for i, d in enumerate(plan.drivers):
         if d.kind == "R":
             values = given[:, i]
-            if not plan.newton and np.all(np.abs(values) < EXACT_DEGREES):
-                out[:, i] = np.radians(values)  # a closed form needs no reduction
-                continue
-            # reducing in degrees is exact; radians of a huge angle are not
-            low = math.degrees(d.reference) - 180.0
-            turn = np.remainder(values, 360.0)
-            out[:, i] = np.radians(np.remainder(turn - low, 360.0) + low)
+            out[:, i] = np.radians(values)
+            # decided position by position, so a slice of a sweep is solved as the
+            # whole sweep is: a closed form needs no reduction of moderate angles
+            far = np.abs(values) >= EXACT_DEGREES
+            if plan.newton:
+                far[:] = True
+            if far.any():
+                # reducing in degrees is exact; radians of a huge angle are not
+                low = math.degrees(d.reference) - 180.0
+                turn = np.remainder(values[far], 360.0)
+                out[far, i] = np.radians(np.remainder(turn - low, 360.0) + low)
         else:
             out[:, i] = given[:, i]
     return out

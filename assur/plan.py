@@ -190,14 +190,34 @@ def _shift(drivers: tuple[Group, ...], pair_at: dict[str, Array]) -> Array:
     return np.array(pair_at[drivers[0].internal[0]], dtype=float)
 
 
-def _diameter(points: Array, block: int = 512) -> float:
-    """Largest distance between two of ``points`` (m), at least 1e-12."""
-    best = 1e-12
-    for start in range(0, len(points), block):
-        part = points[start : start + block]
-        gap = part[:, None, :] - points[None, :, :]
-        best = max(best, float(np.sqrt((gap * gap).sum(axis=-1)).max()))
-    return best
+def _diameter(points: Array) -> float:
+    """Largest distance between two of ``points`` (m), at least 1e-12.
+
+    The farthest pair lies on the convex hull (Andrew's monotone chain), so only the
+    hull's few corners are compared with each other.
+    """
+    unique = np.unique(np.asarray(points, dtype=float).reshape(-1, 2), axis=0)
+    hull = _hull(unique) if len(unique) > 3 else unique
+    gap = hull[:, None, :] - hull[None, :, :]
+    return max(1e-12, float(np.sqrt((gap * gap).sum(axis=-1)).max()))
+
+
+def _hull(points: Array) -> Array:
+    """Return the corners of the convex hull of sorted, distinct ``points``."""
+
+    def half(ordered: Array) -> list[Array]:
+        chain: list[Array] = []
+        for p in ordered:
+            while len(chain) >= 2:
+                a, b = chain[-2], chain[-1]
+                if (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) > 0:
+                    break
+                chain.pop()
+            chain.append(p)
+        return chain
+
+    lower, upper = half(points), half(points[::-1])
+    return np.array(lower[:-1] + upper[:-1])
 
 
 def _pt(v: Any) -> tuple[float, float]:
