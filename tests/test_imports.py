@@ -25,6 +25,7 @@ RANKS = {
     "assur.errors": 0,
     "assur._vec": 0,
     "assur._text": 0,
+    "assur._progress": 0,
     "assur.model": 1,
     "assur._structure": 2,
     "assur.report": 2,
@@ -38,6 +39,8 @@ RANKS = {
     "assur.analysis": 9,
     "assur.io": 10,
     "assur._output": 10,
+    "assur._tableio": 10,
+    "assur._csvtext": 10,
     "assur.plotting": 10,
     "assur.html": 10,
     # ready-made mechanisms for users and examples: model objects, never core input
@@ -58,6 +61,7 @@ AGAINST_THE_DIRECTION = {
     ("assur.table", "assur.plotting", "Table.plot"),
     # the same kind of one-line forward, to io.write_csv; STYLE.md names only .plot()
     ("assur.table", "assur.io", "Table.to_csv"),
+    ("assur.table", "assur.io", "Table.to_parquet"),
 }
 
 # (importer, imported): imports left out of the cycle check, each with its reason.
