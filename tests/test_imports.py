@@ -48,6 +48,7 @@ RANKS = {
     # the public API re-exports the core and io
     "assur": 11,
     "assur._cli_common": 12,
+    "assur._cli_sweep": 12,
     "assur.cli": 12,
     "assur.pictures_cli": 12,
     "assur.__main__": 13,
