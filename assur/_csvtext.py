@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import functools
 import math
+import sys
 from typing import Any
 
 import numpy as np
@@ -31,6 +32,8 @@ NEAR_HALF = 2e-3
 """A scaled number closer than this to a rounding tie is rounded exactly (see below)."""
 LIMIT = 290
 """Largest decimal exponent (either sign) spelt out here; Python formats the rest."""
+LITTLE_ENDIAN = sys.byteorder == "little"
+"""Whether the words of text are laid out as here (else Python formats every number)."""
 
 _U = np.uint64
 _ALL = _U(0xFFFF_FFFF_FFFF_FFFF)
@@ -116,6 +119,9 @@ def csv_lines(values: Array) -> bytes:
     values = np.asarray(values, dtype=np.float64)
     if not values.size:
         return b""
+    if not LITTLE_ENDIAN:  # the words below are laid out little-end first
+        line = ",".join(["%.12g"] * values.shape[1]) + "\n"
+        return "".join(line % tuple(row) for row in values.tolist()).encode()
     blocks = [
         _block(values[start : start + BLOCK_ROWS])
         for start in range(0, values.shape[0], BLOCK_ROWS)

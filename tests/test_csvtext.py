@@ -125,5 +125,11 @@ def test_a_real_table_as_savetxt_writes_it():
     assert csv_lines(values) == savetxt(values)
 
 
+def test_python_formats_on_a_big_endian_machine(monkeypatch):
+    table = as_table(corners(), 7)
+    monkeypatch.setattr(_csvtext, "LITTLE_ENDIAN", False)
+    assert csv_lines(table) == savetxt(table)
+
+
 def test_no_rows_no_text():
     assert csv_lines(np.zeros((0, 4))) == b""
