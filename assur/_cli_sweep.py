@@ -14,7 +14,7 @@ import math
 import warnings
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 
@@ -75,12 +75,15 @@ def slices(
     skip: bool,
     skipped: Skipped,
     advance: Callable[[int], None] | None = None,
+    check: bool = False,
 ) -> Iterator[Slice]:
     """Analyse ``given`` (driver positions, deg or m) slice by slice; yield each slice.
 
     Warnings near a dead centre are gathered and given once the sweep is done;
     positions left out are added to ``skipped``. ``advance(count)`` is told of the
-    positions solved (a progress bar).
+    positions solved (a progress bar). With ``check``, the positions of the whole
+    sweep are solved first (slice by slice, a small part of the work), so that a
+    position that cannot be assembled stops the command before anything is written.
 
     Raises
     ------
@@ -105,6 +108,9 @@ def slices(
                 if n > chunk:
                     _raise_as_whole(mech, given, skip, err)
                 raise
+        if check and not skip and start == 0:
+            # after the first slice, so that its other faults (no masses) come first
+            _check(mech, given[chunk:], given, chunk)
         near.add(caught, part)
         skipped.add(table.skipped)
         angles = angles or _Angles(table)
@@ -126,7 +132,23 @@ def _told(advance: Callable[[int], None] | None) -> Any:
     return callback
 
 
-def _raise_as_whole(mech: Any, given: Array, skip: bool, err: Exception) -> None:
+def _check(mech: Any, rest: Array, given: Array, chunk: int) -> None:
+    """Solve the positions of ``rest`` of ``given`` by slices; raise as the whole sweep.
+
+    Only the positions: a small part of the work of the analysis.
+    """
+    from assur.analysis import kinematics
+
+    for start in range(0, len(rest), chunk):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # given once, by the analysis itself
+            try:
+                kinematics(mech, rest[start : start + chunk], columns=["angle"])
+            except (AssemblyError, SingularConfigurationError) as err:
+                _raise_as_whole(mech, given, False, err)
+
+
+def _raise_as_whole(mech: Any, given: Array, skip: bool, err: Exception) -> NoReturn:
     """Raise the error of the whole sweep: its counts and ranges cover every position.
 
     Only the positions are solved again (no velocities, no forces), for the whole

@@ -290,7 +290,9 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
     writing = bool(args.csv or args.json or args.parquet)
     with _bar(args, "forces" if forces else "kinematics", len(given)) as bar:
         told = None if bar is None or writing else bar.advance
-        parts = slices(mech, given, forces, args.skip_unassembled, skipped, told)
+        parts = slices(
+            mech, given, forces, args.skip_unassembled, skipped, told, check=writing
+        )
         if writing:
             rows, names = _write_tables(args, parts, bar)
         else:

@@ -196,6 +196,13 @@ def test_a_failure_in_a_later_slice_is_reported_for_the_whole_sweep(
     assert target.read_text(encoding="utf-8") == "old"
     assert sorted(os.listdir(tmp_path)) == ["double_rocker.toml", "t.csv"]
     assert out == ""
+    # the positions are solved first: not one row reaches standard output
+    for output in (["--csv", "-"], ["--json"]):
+        status, out, err = run(
+            capsys, "forces", double_rocker, "--angles", spec, *output
+        )
+        assert (status, out) == (2, "")
+        assert "of 20001 positions fail" in err
 
 
 def test_the_readable_table_of_a_long_sweep(small_slices, capsys):
