@@ -134,19 +134,20 @@ def _block(values: Array) -> bytes:
     rows, cols = values.shape
     separator = np.full(cols, _COMMA, _U)
     separator[0] = _NEWLINE  # before every line; the first is dropped below
-    words = np.empty((rows, cols, 3), _U)
-    # a column that holds one number throughout (a constant speed, a zero) is
-    # spelt out once
-    same = np.all(values == values[0], axis=0)
-    same &= np.all(np.signbit(values) == np.signbit(values[0]), axis=0)
+    # column by column: a column that holds one number throughout (a constant
+    # speed, a zero) is spelt out once
+    columns = values.T
+    same = np.all(columns == columns[:, :1], axis=1)
+    same &= np.all(np.signbit(columns) == np.signbit(columns[:, :1]), axis=1)
     vary = ~same
+    words = np.empty((cols, rows, 3), _U)
     if same.any():
-        words[:, same] = _words(values[0, same], separator[same])
+        words[same] = _words(columns[same, 0], separator[same])[:, None, :]
     if vary.any():
-        x = np.ascontiguousarray(values[:, vary]).ravel()
-        found = _words(x, np.tile(separator[vary], rows))
-        words[:, vary] = found.reshape(rows, -1, 3)
-    text = words.tobytes().translate(None, b"\0")
+        x = columns[vary].ravel()
+        found = _words(x, np.repeat(separator[vary], rows))
+        words[vary] = found.reshape(-1, rows, 3)
+    text = words.transpose(1, 0, 2).tobytes().translate(None, b"\0")
     return text[1:] + b"\n"
 
 
