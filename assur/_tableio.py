@@ -171,7 +171,16 @@ class ParquetWriter:
             for n, u in zip(names, units, strict=True)
         ]
         self._schema = pa.schema(fields, metadata={"assur.name": name})
-        self._writer = pq.ParquetWriter(str(path), self._schema)
+        # a stream of our own: pyarrow's files ask where they are (a FIFO cannot say)
+        self._stream = open(path, "wb")  # noqa: SIM115 - closed by close()/abort()
+        try:
+            sink = pa.PythonFile(_Counted(self._stream), mode="w")
+            # floats rarely repeat: a dictionary only slows writing (3x) and grows
+            # the file
+            self._writer = pq.ParquetWriter(sink, self._schema, use_dictionary=False)
+        except BaseException:
+            self._stream.close()
+            raise
 
     def write(self, columns: Sequence[Array]) -> None:
         """Write ``columns`` (arrays of equal length) as one row group."""
@@ -185,8 +194,50 @@ class ParquetWriter:
 
     def close(self) -> None:
         """Write the file's footer."""
-        self._writer.close()
+        try:
+            self._writer.close()
+        finally:
+            self._stream.close()
 
     def abort(self) -> None:
         """Let go of the file after a failure (it is removed)."""
-        self._writer.close()
+        self.close()
+
+
+class _Counted:
+    """A binary stream that counts what is written: its position, for pyarrow."""
+
+    def __init__(self, stream: Any) -> None:
+        self._stream = stream
+        self._position = 0
+        self.closed = False
+
+    def write(self, data: Any) -> int:
+        """Write ``data``; return its length."""
+        self._stream.write(data)
+        self._position += len(data)
+        return len(data)
+
+    def tell(self) -> int:
+        """Return the number of bytes written."""
+        return self._position
+
+    def flush(self) -> None:
+        """Flush the stream."""
+        self._stream.flush()
+
+    def close(self) -> None:
+        """Mark the stream closed (its owner closes the file)."""
+        self.closed = True
+
+    def writable(self) -> bool:
+        """Say that the stream is written to."""
+        return True
+
+    def seekable(self) -> bool:
+        """Say that the stream cannot seek (a FIFO, a pipe)."""
+        return False
+
+    def readable(self) -> bool:
+        """Say that the stream is not read."""
+        return False

@@ -414,3 +414,25 @@ def test_memory_stays_that_of_one_slice(tmp_path):
     assert result.returncode == 0, result.stderr
     grown = int(result.stdout.splitlines()[-1])
     assert grown < 90, f"{grown} MB more than after the imports"
+
+
+def test_parquet_into_a_fifo(tmp_path, capsys):
+    pq = pytest.importorskip("pyarrow.parquet", reason="pyarrow is not installed")
+    import io
+    import threading
+
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    received: list[bytes] = []
+
+    def reader() -> None:
+        with open(fifo, "rb") as stream:
+            received.append(stream.read())
+
+    thread = threading.Thread(target=reader)
+    thread.start()
+    status, _, err = run(capsys, "kinematics", SLIDER_CRANK, "--parquet", fifo)
+    thread.join(timeout=30)
+    assert status == 0, err
+    assert pq.read_table(io.BytesIO(received[0])).num_rows == 360
+    assert os.listdir(tmp_path) == ["pipe"]
