@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 import os
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -25,6 +26,7 @@ __all__ = [
     "load_mechanism",
     "parse_angles",
     "positions",
+    "terminal",
 ]
 
 MAX_POSITIONS = 10_000_000
@@ -143,3 +145,11 @@ def check_not_input(option: str, output: Any, source: Path) -> None:
             "expected another file for the output"
         )
         raise UsageError(msg)
+
+
+def terminal() -> bool:
+    """Whether standard error is a terminal (where progress bars go)."""
+    try:
+        return bool(sys.stderr.isatty())
+    except (AttributeError, OSError, ValueError):
+        return False

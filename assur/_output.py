@@ -18,16 +18,19 @@ import shutil
 import stat
 import sys
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
 from assur.errors import AssurError, OutputError
 
 __all__ = [
+    "StdoutError",
+    "finishing",
     "output_folder",
     "output_path",
     "path_text",
+    "stdout_writer",
     "write_all",
     "write_bytes",
     "write_stdout",
@@ -105,6 +108,59 @@ def write_stdout(text: str) -> None:
         return
     stream.flush()
     write_all(buffer, text.encode(stream.encoding or "utf-8", "backslashreplace"))
+
+
+class StdoutError(Exception):
+    """A write to standard output failed (``error``, an OSError).
+
+    Not an OSError itself, so that :func:`output_path` around it does not take the
+    fault for its own file's; the caller raises ``error`` once the files are cleaned
+    up.
+    """
+
+    def __init__(self, error: OSError) -> None:
+        super().__init__(str(error))
+        self.error = error
+
+
+def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
+    """Return ``write(bytes)`` to standard output and the ``encode(text)`` it needs.
+
+    Text that the output's encoding cannot show is encoded with backslash escapes;
+    a failed write raises :class:`StdoutError`.
+    """
+    stream = sys.stdout
+    encoding = stream.encoding or "utf-8"
+    buffer = getattr(stream, "buffer", None)
+
+    def encode(text: str) -> bytes:
+        return text.encode(encoding, "backslashreplace")
+
+    def write(data: bytes) -> None:
+        try:
+            if buffer is None:  # a notebook's stream: no bytes below
+                stream.write(data.decode(encoding))
+            else:
+                write_all(buffer, data)
+        except OSError as err:
+            raise StdoutError(err) from err
+
+    stream.flush()
+    return write, encode
+
+
+@contextlib.contextmanager
+def finishing(writer: Any) -> Iterator[Any]:
+    """Close ``writer`` when the block succeeds; abort it (if it can) when not."""
+    try:
+        yield writer
+    except BaseException:
+        abort = getattr(writer, "abort", None)
+        if abort is not None:
+            with contextlib.suppress(Exception):
+                abort()
+        raise
+    writer.close()
 
 
 @contextlib.contextmanager

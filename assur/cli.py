@@ -19,14 +19,25 @@ from typing import Any
 
 import numpy as np
 
+from assur import _output
 from assur._cli_common import (
     check_not_input,
     load_mechanism,
     parse_angles,
     positions,
+    terminal,
 )
-from assur._output import path_text, write_stdout
+from assur._cli_sweep import Skipped, Slice, slices
+from assur._output import (
+    StdoutError,
+    finishing,
+    output_path,
+    path_text,
+    stdout_writer,
+    write_stdout,
+)
 from assur._text import describe, suggest
+from assur._vec import Array
 from assur.errors import (
     AssurError,
     AssurWarning,
@@ -41,7 +52,10 @@ COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {}
 INTERRUPTED = 130
 """Exit status after Ctrl-C (128 + SIGINT), as shells report it."""
 SUMMARY_ROWS = 400
-"""Most rows of the readable table; --csv and --json give them all."""
+"""Most rows of the readable table; --csv, --json and --parquet give them all."""
+LONG_SWEEP = 100_000
+"""Driver positions from which a sweep shows a progress bar (on a terminal)."""
+QUIET = "no progress bars, no 'wrote ...' lines or notes (errors and warnings stay)"
 
 
 def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
@@ -50,6 +64,7 @@ def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
         prog="assur",
         description="Kinetostatic analysis of planar linkages, built on Assur groups.",
     )
+    parser.add_argument("-q", "--quiet", action="store_true", help=QUIET)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     p = sub.add_parser("structure", help="degrees of freedom and Assur groups")
     p.add_argument("file", type=Path)
@@ -76,11 +91,21 @@ def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
             "--json", action="store_true", help="print the full table as JSON"
         )
         p.add_argument(
+            "--parquet",
+            metavar="PATH",
+            help="write the full table as Parquet (needs pyarrow)",
+        )
+        p.add_argument(
             "--skip-unassembled",
             action="store_true",
             help="leave out positions that cannot be assembled",
         )
     _add_picture_commands(sub)
+    for p in sub.choices.values():
+        # after the command too; SUPPRESS keeps an earlier --quiet
+        p.add_argument(
+            "-q", "--quiet", action="store_true", default=argparse.SUPPRESS, help=QUIET
+        )
     return parser, list(sub.choices)
 
 
@@ -249,128 +274,236 @@ def _cmd_structure(args: argparse.Namespace) -> int:
 
 
 def _cmd_kinematics(args: argparse.Namespace) -> int:
-    from assur.analysis import kinematics
-
-    if args.csv:
-        check_not_input("--csv", args.csv, args.file)
-    mech = load_mechanism(args.file)
-    table = kinematics(mech, positions(mech, args.angles), args.skip_unassembled)
-    return _emit(args, table, _summary_columns(table, force=False))
+    return _sweep(args, forces=False)
 
 
 def _cmd_forces(args: argparse.Namespace) -> int:
-    from assur.analysis import forces
+    return _sweep(args, forces=True)
 
-    if args.csv:
-        check_not_input("--csv", args.csv, args.file)
+
+def _sweep(args: argparse.Namespace, forces: bool) -> int:
+    """Analyse the sweep slice by slice; write its table or print its summary."""
+    _check_outputs(args)
     mech = load_mechanism(args.file)
-    table = forces(mech, positions(mech, args.angles), args.skip_unassembled)
-    return _emit(args, table, _summary_columns(table, force=True))
-
-
-def _summary_columns(table: Any, force: bool) -> list[str]:
-    """Pick the readable table's columns.
-
-    Reaction magnitudes and balancing loads, or the links' angles, speeds and
-    accelerations.
-    """
-    if not force:
-        return [
-            "angle",
-            *(c for c in table.columns if c.endswith((".angle", ".omega", ".alpha"))),
-        ]
-    drivers = {
-        f"{d.joint}.{what}"
-        for d in table.mechanism.drivers
-        for what in ("torque", "force", "torque_check", "force_check")
-    }
-    picked = [
-        c
-        for c in table.columns
-        if c.endswith(".F") or c.startswith("driver.") or c in drivers
-    ]
-    return ["angle", *picked]
-
-
-def _emit(args: argparse.Namespace, table: Any, summary: list[str]) -> int:
-    if len(table.skipped):
-        skipped = ", ".join(f"{x:g}" for x in np.ravel(table.skipped)[:20])
-        skipped += ", ..." if np.size(table.skipped) > 20 else ""
+    given = positions(mech, args.angles)
+    skipped = Skipped()
+    writing = bool(args.csv or args.json or args.parquet)
+    with _bar(args, "forces" if forces else "kinematics", len(given)) as bar:
+        told = None if bar is None or writing else bar.advance
+        parts = slices(
+            mech, given, forces, args.skip_unassembled, skipped, told, check=writing
+        )
+        if writing:
+            rows, names = _write_tables(args, parts, bar)
+        else:
+            text, names = _summary(parts, forces)
+    quiet = _quiet(args)
+    if skipped.count and not quiet:
+        shown = ", ".join(f"{x:g}" for x in skipped.values)
+        more = ", ..." if skipped.more else ""
         print(
-            f"assur: note: {path_text(args.file)}: left out {len(table.skipped)} "
-            f"position(s) that cannot be assembled: {skipped}",
+            f"assur: note: {path_text(args.file)}: left out {skipped.count} "
+            f"position(s) that cannot be assembled: {shown}{more}",
             file=sys.stderr,
         )
-    if args.csv:
-        table.to_csv(args.csv if args.csv == "-" else Path(args.csv))
-        if args.csv != "-":
-            print(
-                f"wrote {len(table)} rows x {len(table.columns)} columns to "
-                f"{path_text(args.csv)}"
-            )
+    if not writing:
+        _say(text)
+        if not quiet:
+            full = "--csv PATH or --json for the full table"
+            print(f"({len(names)} columns in all: {full})")
         return 0
-    if args.json:
-        _say(json.dumps(table.to_dict()))
-        return 0
-    _say(format_table(table, summary))
-    print(
-        f"({len(table.columns)} columns in all: --csv PATH or --json for the full "
-        "table)"
-    )
+    # standard output may carry a table: the lines then go to standard error
+    lines = sys.stderr if args.json or args.csv == "-" else sys.stdout
+    for target in (args.csv, args.parquet):
+        if target and target != "-" and not quiet:
+            size = f"{rows} rows x {len(names)} columns"
+            print(f"wrote {size} to {path_text(target)}", file=lines)
     return 0
 
 
-UNITS = {
-    ".angle": "deg",
-    ".omega": "rad/s",
-    ".alpha": "rad/s2",
-    ".F": "N",
-    "torque": "N m",
-    "torque_check": "N m",
-    "force": "N",
-    "force_check": "N",
-}
+def _check_outputs(args: argparse.Namespace) -> None:
+    """Refuse outputs that cannot be written, before anything is analysed."""
+    for option in ("--csv", "--parquet"):
+        target = getattr(args, option[2:])
+        if target:
+            check_not_input(option, target, args.file)
+    if args.csv == "-" and args.json:
+        msg = (
+            "--csv - and --json: both write to standard output; expected one of them "
+            "(or --csv PATH)"
+        )
+        raise UsageError(msg)
+    if args.parquet == "-":
+        msg = "--parquet -: a Parquet file is not text; expected a file name"
+        raise UsageError(msg)
+    if args.parquet:
+        from assur._tableio import import_pyarrow
+
+        try:
+            import_pyarrow()
+        except ImportError as err:
+            msg = f"--parquet {path_text(args.parquet)}: {err}"
+            raise UsageError(msg) from err
 
 
-def _unit(column: str, table: Any) -> str:
-    if column == "angle":
-        return "deg" if table.mechanism and _revolute_driver(table) else "m"
-    for suffix, unit in UNITS.items():
-        if column.endswith(suffix):
-            return unit
-    return ""
+def _quiet(args: argparse.Namespace) -> bool:
+    return bool(getattr(args, "quiet", False))
 
 
-def _revolute_driver(table: Any) -> bool:
-    return bool(table.plan.drivers[0].kind == "R")
+@contextlib.contextmanager
+def _bar(args: argparse.Namespace, what: str, total: int) -> Iterator[Any]:
+    """Yield a progress bar for a long sweep on a terminal, else None."""
+    if _quiet(args) or total < LONG_SWEEP or not terminal():
+        yield None
+        return
+    from assur._progress import progress
+
+    with progress(what, total, show=True) as bar:
+        yield bar
 
 
-def format_table(table: Any, columns: list[str], limit: int = SUMMARY_ROWS) -> str:
+def _write_tables(
+    args: argparse.Namespace, parts: Iterator[Slice], bar: Any
+) -> tuple[int, tuple[str, ...]]:
+    """Write every slice to the outputs asked for; return the rows and the columns."""
+    rows = 0
+    names: tuple[str, ...] = ()
+    try:
+        with contextlib.ExitStack() as stack:
+            writers: list[Any] = []
+            for part in parts:
+                table = part.table
+                if not writers:
+                    names = table.columns
+                    writers = _writers(args, stack, table, bar)
+                arrays = part.arrays()
+                for writer in writers:
+                    writer.write(arrays)
+                rows += len(table)
+                if bar is not None:
+                    bar.advance(len(table.skipped))
+                del part, table, arrays  # one slice in memory at a time
+    except StdoutError as err:
+        raise err.error from None  # after the files' cleanup: main reports it
+    if args.json:
+        _say("")
+    return rows, names
+
+
+def _writers(
+    args: argparse.Namespace, stack: contextlib.ExitStack, table: Any, bar: Any
+) -> list[Any]:
+    """Open the outputs asked for; return their writers (closed by ``stack``).
+
+    The first writer tells the progress bar of the rows written.
+    """
+    from assur._tableio import CsvWriter, JsonWriter, ParquetWriter
+
+    names, name = table.columns, table.mechanism.name
+    advance = [None if bar is None else bar.advance]
+    writers: list[Any] = []
+
+    def told() -> Any:
+        found, advance[0] = advance[0], None
+        return found
+
+    if args.csv:
+        write, encode = _open(stack, args.csv)
+        writers.append(CsvWriter(write, names, encode, told()))
+    if args.parquet:
+        path = stack.enter_context(output_path(args.parquet))
+        units = [table.column(c).unit for c in names]
+        writers.append(ParquetWriter(path, name, names, units, told()))
+    if args.json:
+        write, encode = _open(stack, "-")
+        writers.append(JsonWriter(write, name, names, encode, told()))
+    for writer in writers:
+        stack.enter_context(finishing(writer))
+    return writers
+
+
+def _open(stack: contextlib.ExitStack, target: str) -> tuple[Any, Any]:
+    """Return the ``write(bytes)`` and ``encode(text)`` of an output (``-``: stdout)."""
+    if target == "-":
+        return stdout_writer()
+    path = stack.enter_context(output_path(target))
+    stream = stack.enter_context(path.open("wb"))
+    return (lambda data: _output.write_all(stream, data)), None
+
+
+def _summary(parts: Iterator[Slice], forces: bool) -> tuple[str, tuple[str, ...]]:
+    """Return the readable table of the first rows and the table's column names."""
+    names: tuple[str, ...] = ()
+    picked: list[str] = []
+    units: list[str] = []
+    kept: list[list[Array]] = []
+    rows = 0
+    for part in parts:
+        table = part.table
+        if not names:
+            names = table.columns
+            picked = summary_columns(table, forces)
+            units = [table.column(c).unit for c in picked]
+        room = SUMMARY_ROWS - sum(len(k[0]) for k in kept)
+        if room > 0 and len(table):
+            kept.append([part.column(c)[:room] for c in picked])
+        rows += len(table)
+    columns = [np.concatenate(k) for k in zip(*kept, strict=True)] if kept else []
+    return format_table(picked, units, columns, rows), names
+
+
+def summary_columns(table: Any, forces: bool) -> list[str]:
+    """Pick the readable table's columns from the table's schema.
+
+    Kinematics: every link's angle, angular velocity and angular acceleration.
+    Forces: the magnitude of every reaction and every balancing load with its
+    virtual-power check.
+    """
+    if forces:
+        families = {"magnitude", "balancing", "check"}
+        picked = [c.name for c in table.schema if c.family in families]
+    else:
+        picked = [
+            c.name
+            for c in table.schema
+            if (c.family == "angle")
+            or (c.family == "link" and c.quantity in ("omega", "alpha"))
+        ]
+    return ["angle", *picked]
+
+
+def format_table(
+    names: list[str],
+    units: list[str],
+    columns: list[Array],
+    rows: int,
+    limit: int = SUMMARY_ROWS,
+) -> str:
     """Return an aligned text table of ``columns`` with a units row.
 
-    Beyond ``limit`` rows, a last line says how many were left out.
+    ``rows`` is the number of rows in all; beyond the ``limit`` shown, a last line
+    says how many were left out.
     """
-    heads = list(columns)
-    units = [f"[{_unit(c, table)}]" if _unit(c, table) else "" for c in columns]
-    rows = [
-        [f"{v:.6g}" for v in values]
-        for values in zip(*(table[c][:limit] for c in columns), strict=True)
-    ]
+    heads = list(names)
+    marks = [f"[{u}]" if u else "" for u in units]
+    cells = (
+        [[f"{v:.6g}" for v in values] for values in zip(*columns, strict=True)]
+        if columns
+        else []
+    )
     widths = [
-        max(len(h), len(u), *(len(r[i]) for r in rows)) if rows else max(len(h), len(u))
-        for i, (h, u) in enumerate(zip(heads, units, strict=False))
+        max(len(h), len(u), *(len(r[i]) for r in cells))
+        for i, (h, u) in enumerate(zip(heads, marks, strict=True))
     ]
     lines = [
-        "  ".join(h.rjust(w) for h, w in zip(heads, widths, strict=False)),
-        "  ".join(u.rjust(w) for u, w in zip(units, widths, strict=False)),
+        "  ".join(h.rjust(w) for h, w in zip(heads, widths, strict=True)),
+        "  ".join(u.rjust(w) for u, w in zip(marks, widths, strict=True)),
     ]
     lines += [
-        "  ".join(v.rjust(w) for v, w in zip(r, widths, strict=True)) for r in rows
+        "  ".join(v.rjust(w) for v, w in zip(r, widths, strict=True)) for r in cells
     ]
-    if len(table) > limit:
-        lines.append(
-            f"... {len(table) - limit} more rows: --csv PATH or --json for all"
-        )
+    if rows > limit:
+        lines.append(f"... {rows - limit} more rows: --csv PATH or --json for all")
     return "\n".join(lines)
 
 

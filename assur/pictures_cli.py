@@ -24,6 +24,7 @@ from assur._cli_common import (
     load_mechanism,
     parse_angles,
     positions,
+    terminal,
 )
 from assur._output import output_folder, output_path, path_text
 from assur._text import describe
@@ -193,7 +194,17 @@ def _save(fig: Any, path: Path, dpi: float) -> None:
             _draw(fig, temporary, dpi)
     finally:
         _pyplot().close(fig)
-    print(f"wrote {path_text(path)}")
+
+
+def _wrote(args: argparse.Namespace, text: str) -> None:
+    """Say what was written, unless ``--quiet``."""
+    if not getattr(args, "quiet", False):
+        print(f"wrote {text}")
+
+
+def _show(args: argparse.Namespace) -> bool:
+    """Whether to show progress bars: on a terminal, without ``--quiet``."""
+    return terminal() and not getattr(args, "quiet", False)
 
 
 def _cmd_plot(args: argparse.Namespace) -> int:
@@ -228,6 +239,7 @@ def _cmd_plot(args: argparse.Namespace) -> int:
             labels=not args.no_labels,
         )
         _save(fig, output, dpi)
+    _wrote(args, path_text(output))
     return 0
 
 
@@ -255,14 +267,26 @@ def _cmd_diagrams(args: argparse.Namespace) -> int:
         check_not_input("-o", out / f"{name}.png", args.file)
     _, table = _sweep(args, None)
     with _figures() as plt, output_folder(out, any_error=True) as folder:
-        written = _diagrams(plotting, plt, table, folder, dpi)
+        written = _diagrams(plotting, plt, table, folder, dpi, _show(args))
     for name in written:
-        print(f"wrote {path_text(out / name)}")
+        _wrote(args, path_text(out / name))
     return 0
 
 
-def _diagrams(plotting: Any, plt: Any, table: Any, out: Path, dpi: float) -> list[str]:
-    """Write the set of diagrams of ``table`` to the folder ``out``; name them."""
+def _diagrams(
+    plotting: Any,
+    plt: Any,
+    table: Any,
+    out: Path,
+    dpi: float,
+    show: bool = False,
+) -> list[str]:
+    """Write the set of diagrams of ``table`` to the folder ``out``; name them.
+
+    ``show``: a progress bar of the pictures on standard error.
+    """
+    from assur._progress import progress
+
     fig, axes = plt.subplots(
         3, 1, figsize=(8.0, 9.0), sharex=True, layout="constrained"
     )
@@ -286,9 +310,11 @@ def _diagrams(plotting: Any, plt: Any, table: Any, out: Path, dpi: float) -> lis
             "shaking": lambda: plotting.plot_shaking(table),
         }
     written = []
-    for name, make in figures.items():
-        _draw(make(), out / f"{name}.png", dpi)
-        written.append(f"{name}.png")
+    with progress("diagrams", len(figures), show) as bar:
+        for name, make in figures.items():
+            _draw(make(), out / f"{name}.png", dpi)
+            written.append(f"{name}.png")
+            bar.advance(1)
     return written
 
 
@@ -314,7 +340,7 @@ def _cmd_animate(args: argparse.Namespace) -> int:
     table = _table(mech, sweep[pick], args.forces)
     with _figures(), output_path(output, any_error=True) as temporary:
         count = animate(table, temporary, forces=args.forces, fps=fps, dpi=dpi)
-    print(f"wrote {path_text(output)} ({count} frames)")
+    _wrote(args, f"{path_text(output)} ({count} frames)")
     return 0
 
 
@@ -331,5 +357,5 @@ def _cmd_report(args: argparse.Namespace) -> int:
     angles = None if args.angles is None else positions(mech, args.angles)
     with _figures():
         write_report(mech, output, angles=angles)
-    print(f"wrote {path_text(output)}")
+    _wrote(args, path_text(output))
     return 0

@@ -144,6 +144,22 @@ class Table:
 
         return write_csv(self, path)
 
+    def to_parquet(self, path: Any) -> None:
+        """Write the table to a Parquet file at ``path`` (pyarrow must be installed).
+
+        Columns are float64 under the table's column names, each with its unit in
+        the field metadata (key ``unit``); the file is written whole or not at all.
+        See :func:`assur.io.write_parquet`.
+
+        Raises
+        ------
+        ImportError
+            When pyarrow is not installed.
+        """
+        from assur.io import write_parquet
+
+        write_parquet(self, path)
+
     def to_dict(self) -> dict[str, Any]:
         """Return JSON-ready data: the mechanism's name, the columns and the rows."""
         rows = self.to_array()

@@ -222,7 +222,7 @@ def test_kinematics_default_is_a_readable_full_turn(capsys):
         "rocker.omega",
         "rocker.alpha",
     ]
-    assert lines[1].split()[:4] == ["[deg]", "[deg]", "[rad/s]", "[rad/s2]"]
+    assert lines[1].split()[:4] == ["[deg]", "[deg]", "[rad/s]", "[rad/s^2]"]
     assert len(lines) == 2 + 360 + 1
     angles = np.array([float(line.split()[0]) for line in lines[2:-1]])
     np.testing.assert_allclose(angles, 60.0 + np.arange(360.0), rtol=0, atol=1e-9)

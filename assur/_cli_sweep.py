@@ -1,0 +1,294 @@
+"""Long sweeps on the command line, analysed and written a slice of positions at a time.
+
+``assur kinematics|forces`` call the library on slices of :data:`CHUNK` driver
+positions and hand each slice's columns to the writers (:mod:`assur._tableio`), so
+that memory stays bounded whatever the number of positions. What comes out is what
+the whole table gives: the links' angles run on continuously from one slice to the
+next, a warning near a dead centre names its positions over the whole sweep, once,
+and a position that cannot be assembled is reported as the whole sweep reports it.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from typing import Any, NoReturn
+
+import numpy as np
+
+from assur._vec import Array, full
+from assur.errors import AssemblyError, AssurWarning, SingularConfigurationError
+
+__all__ = ["CHUNK", "Skipped", "Slice", "slices"]
+
+CHUNK = 65536
+"""Driver positions analysed and written at once (a multiple of the library's slice,
+so that every number is computed as in one call over the whole sweep)."""
+SKIPPED_SHOWN = 20
+"""Positions left out that the note lists."""
+RUNS_SHOWN = 6
+"""Runs of positions that a warning lists (as :mod:`assur.analysis` does)."""
+NEAR = ": near a dead centre "
+POSITIONS = " at driver positions "
+
+
+@dataclass(frozen=True)
+class Slice:
+    """One slice of a sweep: its table, and its link angles carried on."""
+
+    table: Any
+    angles: dict[str, Array]
+
+    def column(self, name: str) -> Array:
+        """Return one column over the slice (computed when first asked for)."""
+        found = self.angles.get(name)
+        return self.table[name] if found is None else found
+
+    def arrays(self) -> list[Array]:
+        """Return every column over the slice, in order."""
+        return [self.column(name) for name in self.table.columns]
+
+
+@dataclass
+class Skipped:
+    """The positions left out over the sweep (``--skip-unassembled``)."""
+
+    count: int = 0
+    values: list[float] = field(default_factory=list)
+    more: bool = False
+
+    def add(self, positions: Array) -> None:
+        """Count the positions left out of one slice."""
+        self.count += len(positions)
+        flat = np.ravel(positions)
+        room = SKIPPED_SHOWN - len(self.values)
+        self.values += flat[:room].tolist()
+        self.more |= flat.size > room
+
+
+def slices(
+    mech: Any,
+    given: Array,
+    forces: bool,
+    skip: bool,
+    skipped: Skipped,
+    advance: Callable[[int], None] | None = None,
+    check: bool = False,
+) -> Iterator[Slice]:
+    """Analyse ``given`` (driver positions, deg or m) slice by slice; yield each slice.
+
+    Warnings near a dead centre are gathered and given once the sweep is done;
+    positions left out are added to ``skipped``. ``advance(count)`` is told of the
+    positions solved (a progress bar). With ``check``, the positions of the whole
+    sweep are solved first (slice by slice, a small part of the work), so that a
+    position that cannot be assembled stops the command before anything is written.
+
+    Raises
+    ------
+    AssemblyError, SingularConfigurationError
+        As the analysis of the whole sweep at once raises them.
+    """
+    from assur.analysis import forces as force_table
+    from assur.analysis import kinematics
+
+    analyse = force_table if forces else kinematics
+    chunk = CHUNK
+    n = len(given)
+    angles: _Angles | None = None
+    near = _Warnings(mech, skip)
+    for start in range(0, max(n, 1), chunk):
+        part = given[start : start + chunk]
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            try:
+                table = analyse(mech, part, skip, progress=_told(advance))
+            except (AssemblyError, SingularConfigurationError) as err:
+                if n > chunk:
+                    _raise_as_whole(mech, given, skip, err)
+                raise
+        if check and not skip and start == 0:
+            # after the first slice, so that its other faults (no masses) come first
+            _check(mech, given[chunk:], given, chunk)
+        near.add(caught, part)
+        skipped.add(table.skipped)
+        angles = angles or _Angles(table)
+        yield Slice(table, angles.carry(table))
+        del table  # one slice in memory at a time
+    near.give()
+
+
+def _told(advance: Callable[[int], None] | None) -> Any:
+    """Return a library progress callback that tells ``advance`` of each step."""
+    if advance is None:
+        return False
+    seen = [0]
+
+    def callback(done: int, total: int) -> None:
+        advance(done - seen[0])
+        seen[0] = done
+
+    return callback
+
+
+def _check(mech: Any, rest: Array, given: Array, chunk: int) -> None:
+    """Solve the positions of ``rest`` of ``given`` by slices; raise as the whole sweep.
+
+    Only the positions: a small part of the work of the analysis.
+    """
+    from assur.analysis import kinematics
+
+    for start in range(0, len(rest), chunk):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # given once, by the analysis itself
+            try:
+                kinematics(mech, rest[start : start + chunk], columns=["angle"])
+            except (AssemblyError, SingularConfigurationError) as err:
+                _raise_as_whole(mech, given, False, err)
+
+
+def _raise_as_whole(mech: Any, given: Array, skip: bool, err: Exception) -> NoReturn:
+    """Raise the error of the whole sweep: its counts and ranges cover every position.
+
+    Only the positions are solved again (no velocities, no forces), for the whole
+    sweep at once.
+    """
+    from assur.analysis import kinematics
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        kinematics(mech, given, skip, columns=["angle"])
+    raise err  # pragma: no cover - the whole sweep fails where a slice did
+
+
+class _Angles:
+    """Link angles continuous over the whole sweep, as one table makes them.
+
+    :mod:`assur.columns` makes every link's angle continuous along a table, starting
+    within (-180, 180] deg: it removes a turn wherever two consecutive positions differ
+    by more than half a turn. A slice alone would start again within (-180, 180]; here
+    the turns counted so far carry on, with the same arithmetic as for one table, so
+    the numbers are the same to the last bit.
+    """
+
+    def __init__(self, table: Any) -> None:
+        plan = table.plan
+        driven = {d.body for d in plan.drivers}
+        self.bodies = {
+            c.name: c.key[0]
+            for c in table.schema
+            if c.family == "angle" and c.key[0] not in driven
+        }
+        self.last: dict[str, Any] = {}
+        self.turns: dict[str, Any] = {}
+        self.shift: dict[str, Any] = {}
+
+    def carry(self, table: Any) -> dict[str, Array]:
+        """Return the link angles of one slice (deg), continuous with the last."""
+        if not len(table):
+            return {}
+        return {
+            name: self._angle(table, name, body)
+            for name, body in self.bodies.items()
+            if name in table
+        }
+
+    def _angle(self, table: Any, name: str, body: int) -> Array:
+        """Return one link's angle (deg) over a slice, continuous with the last."""
+        raw = table.plan.angle0[body] + full(table.state.rotation(body, 0), len(table))
+        if name not in self.last:  # the first rows of the sweep: assur.columns' rule
+            first = raw[0]
+            self.shift[name] = first - (math.pi - (math.pi - first) % (2.0 * math.pi))
+            steps = np.diff(raw)
+        else:
+            steps = np.diff(raw, prepend=self.last[name])
+        with np.errstate(invalid="ignore"):
+            turns = np.nan_to_num(np.round(steps * (0.5 / math.pi)))
+        # the running count of turns, added up in the order one table adds it up
+        if name in self.last:
+            counted = np.cumsum(np.concatenate(([self.turns[name]], turns)))[1:]
+        else:
+            counted = np.concatenate(([0.0], np.cumsum(turns)))
+        self.last[name] = raw[-1]
+        self.turns[name] = counted[-1]
+        angle = raw - 2.0 * math.pi * counted
+        shift = self.shift[name]
+        angle = angle - shift if shift else angle
+        return angle * (180.0 / math.pi)
+
+
+@dataclass
+class _Runs:
+    """The runs of positions of one warning, gathered slice by slice."""
+
+    runs: list[list[str]]
+    cut: bool
+    last_slice: int
+
+
+class _Warnings:
+    """Warnings of the slices, given once for the whole sweep.
+
+    A warning near a dead centre lists runs of consecutive positions: runs that
+    meet where two slices meet become one, and the list is cut after
+    :data:`RUNS_SHOWN` runs, as the whole sweep's warning is. Other warnings are
+    given once each.
+    """
+
+    def __init__(self, mech: Any, skip: bool) -> None:
+        self.mech = mech
+        self.skip = skip
+        self.near: dict[str, _Runs] = {}
+        self.other: dict[tuple[type[Warning], str], None] = {}
+        self.count = 0
+        self.previous_last: Array | None = None
+
+    def add(self, caught: list[Any], part: Array) -> None:
+        """Take the warnings of one slice of positions ``part``."""
+        for w in caught:
+            text = str(w.message)
+            head, mark, ranges = text.rpartition(POSITIONS)
+            if not (issubclass(w.category, AssurWarning) and mark and NEAR in head):
+                self.other.setdefault((w.category, text))
+                continue
+            runs = [r.split(" to ") for r in ranges.split("; ")]
+            cut = runs[-1] == ["..."]
+            runs = runs[:-1] if cut else runs
+            found = self.near.get(head + mark)
+            if found is None:
+                self.near[head + mark] = _Runs(runs, cut, self.count)
+                continue
+            if (
+                found.last_slice == self.count - 1
+                and not found.cut
+                and self.previous_last is not None
+                and self._near(head + mark, self.previous_last)
+                and self._near(head + mark, part[:1])
+            ):
+                runs[0] = [found.runs[-1][0], runs[0][-1]]
+                found.runs.pop()
+            found.runs += runs
+            found.cut |= cut
+            found.last_slice = self.count
+        self.previous_last = part[-1:]
+        self.count += 1
+
+    def _near(self, key: str, position: Array) -> bool:
+        """Whether the warning ``key`` holds at one position (solved on its own)."""
+        from assur.analysis import kinematics
+
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            kinematics(self.mech, position, self.skip, columns=["angle"])
+        return any(str(w.message).startswith(key) for w in caught)
+
+    def give(self) -> None:
+        """Issue the warnings of the whole sweep."""
+        for key, found in self.near.items():
+            runs = [r[0] if r[0] == r[-1] else f"{r[0]} to {r[-1]}" for r in found.runs]
+            more = found.cut or len(runs) > RUNS_SHOWN
+            text = "; ".join(runs[:RUNS_SHOWN]) + ("; ..." if more else "")
+            warnings.warn(key + text, AssurWarning, stacklevel=3)
+        for category, text in self.other:
+            warnings.warn(text, category, stacklevel=3)

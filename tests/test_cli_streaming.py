@@ -1,0 +1,438 @@
+"""Long sweeps on the command line: slice by slice, the same output as one table.
+
+The slices are made small here (8192 positions, the library's own slice) so that a
+sweep of a few tens of thousands of positions crosses several of them.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur import _cli_sweep, cli
+from assur._cli_common import parse_angles
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+SLIDER_CRANK = EXAMPLES / "slider_crank_exercise.toml"
+WHITWORTH = EXAMPLES / "whitworth.toml"  # its block and lever turn round and round
+
+
+@pytest.fixture
+def small_slices(monkeypatch):
+    monkeypatch.setattr(_cli_sweep, "CHUNK", 8192)
+
+
+@pytest.fixture
+def double_rocker(tmp_path: Path) -> Path:
+    """A four-bar whose input link cannot turn fully, near dead centres at the ends
+    of its ranges (about 17.3, 81.1, 278.9 and 342.7 degrees)."""
+    mech = assur.catalog.four_bar(
+        crank=0.1, coupler=0.05, rocker=0.08, frame=0.1, angle=60.0
+    )
+    path = tmp_path / "double_rocker.toml"
+    assur.save(mech, path)
+    return path
+
+
+def run(capsys, *args) -> tuple[int, str, str]:
+    status = cli.main([str(a) for a in args])
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def whole(command: str, path: Path, spec: str, skip: bool = False):
+    """The table of the whole sweep at once, and its warnings."""
+    mech = assur.load(path)
+    given = parse_angles(spec, max(1, len(mech.drivers)))
+    analyse = assur.forces if command == "forces" else assur.kinematics
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        table = analyse(mech, given, skip)
+    return table, [str(w.message) for w in caught]
+
+
+@pytest.mark.parametrize(
+    ("command", "path", "spec"),
+    [
+        ("kinematics", WHITWORTH, "-170:40000:1.7"),  # 94 turns, 3 slices
+        ("forces", WHITWORTH, "400:-20000:-0.9"),  # backwards
+        ("forces", SLIDER_CRANK, "0:16384:1"),  # exactly two slices and a row
+        ("kinematics", EXAMPLES / "five_bar_two_cranks.toml", "0:9000:0.5,90:9090:0.5"),
+    ],
+)
+def test_csv_slice_by_slice_is_the_whole_table(
+    small_slices, tmp_path, capsys, command, path, spec
+):
+    target = tmp_path / "t.csv"
+    status, out, err = run(capsys, command, path, "--angles", spec, "--csv", target)
+    assert status == 0, err
+    table, _ = whole(command, path, spec)
+    assert len(table) > 8192 * 2
+    assert target.read_text(encoding="utf-8") == table.to_csv()
+    assert (
+        out == f"wrote {len(table)} rows x {len(table.columns)} columns to {target}\n"
+    )
+    assert err == ""
+
+
+def test_angles_run_on_across_slices(small_slices, tmp_path, capsys):
+    spec = "-170:40000:1.7"
+    run(capsys, "kinematics", WHITWORTH, "--angles", spec, "--csv", tmp_path / "t.csv")
+    values = np.loadtxt(tmp_path / "t.csv", delimiter=",", skiprows=1)
+    header = (tmp_path / "t.csv").read_text(encoding="utf-8").split("\n", 1)[0]
+    lever = values[:, header.split(",").index("lever.angle")]
+    assert np.abs(np.diff(lever)).max() < 180.0  # no jump of a turn anywhere
+    assert lever[-1] - lever[0] > 360.0 * 90
+
+
+def test_json_slice_by_slice_is_the_whole_table(small_slices, capsys):
+    spec = "0:20000:1.1"
+    status, out, _ = run(capsys, "forces", SLIDER_CRANK, "--angles", spec, "--json")
+    assert status == 0
+    table, _ = whole("forces", SLIDER_CRANK, spec)
+    assert out == json.dumps(table.to_dict()) + "\n"
+
+
+def test_parquet_slice_by_slice(small_slices, tmp_path, capsys):
+    pq = pytest.importorskip("pyarrow.parquet", reason="pyarrow is not installed")
+    spec = "-170:30000:1.3"
+    target = tmp_path / "t.parquet"
+    status, out, _ = run(
+        capsys, "forces", WHITWORTH, "--angles", spec, "--parquet", target
+    )
+    assert status == 0
+    table, _ = whole("forces", WHITWORTH, spec)
+    read = pq.read_table(target)
+    assert pq.ParquetFile(target).num_row_groups == 3  # one per slice
+    assert read.column_names == list(table.columns)
+    for name in table.columns:
+        np.testing.assert_array_equal(read.column(name).to_numpy(), table[name])
+        assert read.schema.field(name).metadata == {
+            b"unit": table.column(name).unit.encode()
+        }
+    assert (
+        out == f"wrote {len(table)} rows x {len(table.columns)} columns to {target}\n"
+    )
+
+
+def test_csv_and_parquet_from_one_sweep(tmp_path, capsys):
+    pq = pytest.importorskip("pyarrow.parquet", reason="pyarrow is not installed")
+    csv, parquet = tmp_path / "t.csv", tmp_path / "t.parquet"
+    status, out, _ = run(
+        capsys, "kinematics", SLIDER_CRANK, "--csv", csv, "--parquet", parquet
+    )
+    assert status == 0
+    table = assur.kinematics(assur.load(SLIDER_CRANK), parse_angles("45:404:1"))
+    assert csv.read_text(encoding="utf-8") == table.to_csv()
+    assert pq.read_table(parquet).num_rows == len(table) == 360
+    assert out.splitlines() == [
+        f"wrote 360 rows x {len(table.columns)} columns to {csv}",
+        f"wrote 360 rows x {len(table.columns)} columns to {parquet}",
+    ]
+
+
+def test_near_dead_centre_warned_once_across_slices(
+    small_slices, double_rocker, capsys
+):
+    # a run of positions near a dead centre (about 17.26 to 17.30 deg, where the
+    # group starts to assemble) that the boundary between the first two slices cuts
+    spec = f"{17.28 - 8192 * 0.001}:30:0.001"
+    status, _, err = run(
+        capsys, "kinematics", double_rocker, "--angles", spec, "--skip-unassembled"
+    )
+    assert status == 0
+    _, messages = whole("kinematics", double_rocker, spec, skip=True)
+    assert len(messages) == 1
+    assert " to " in messages[0].rpartition("positions ")[2]
+    note, warning = err.splitlines()  # the note as the command goes, then warnings
+    assert note.startswith(f"assur: note: {double_rocker}: left out ")
+    assert warning == f"assur: warning: {double_rocker}: {messages[0]}"
+
+
+def test_many_runs_near_dead_centres_are_cut_as_one_table_cuts_them(
+    small_slices, double_rocker, capsys
+):
+    spec = "0:3600:0.01"  # forty runs over ten turns, in 44 slices
+    status, _, err = run(
+        capsys, "kinematics", double_rocker, "--angles", spec, "--skip-unassembled"
+    )
+    assert status == 0
+    _, messages = whole("kinematics", double_rocker, spec, skip=True)
+    assert messages[0].endswith("; ...")
+    lines = err.splitlines()
+    assert lines[1] == f"assur: warning: {double_rocker}: {messages[0]}"
+    table, _ = whole("kinematics", double_rocker, spec, skip=True)
+    shown = ", ".join(f"{x:g}" for x in np.ravel(table.skipped)[:20])
+    assert lines[0] == (
+        f"assur: note: {double_rocker}: left out {len(table.skipped)} position(s) "
+        f"that cannot be assembled: {shown}, ..."
+    )
+    assert len(lines) == 2
+
+
+def test_a_failure_in_a_later_slice_is_reported_for_the_whole_sweep(
+    small_slices, double_rocker, tmp_path, capsys
+):
+    spec = "20:100:0.004"  # assembles up to about 96 deg: the third slice fails
+    target = tmp_path / "t.csv"
+    target.write_text("old", encoding="utf-8")
+    status, out, err = run(
+        capsys, "kinematics", double_rocker, "--angles", spec, "--csv", target
+    )
+    assert status == 2
+    mech = assur.load(double_rocker)
+    with pytest.raises(assur.AssemblyError) as caught:
+        assur.kinematics(mech, parse_angles(spec))
+    assert err == f"assur: error: {double_rocker}: {caught.value}\n"
+    assert "of 20001 positions fail" in err
+    assert target.read_text(encoding="utf-8") == "old"
+    assert sorted(os.listdir(tmp_path)) == ["double_rocker.toml", "t.csv"]
+    assert out == ""
+    # the positions are solved first: not one row reaches standard output
+    for output in (["--csv", "-"], ["--json"]):
+        status, out, err = run(
+            capsys, "forces", double_rocker, "--angles", spec, *output
+        )
+        assert (status, out) == (2, "")
+        assert "of 20001 positions fail" in err
+
+
+def test_the_readable_table_of_a_long_sweep(small_slices, capsys):
+    status, out, _ = run(capsys, "kinematics", WHITWORTH, "--angles", "0:20000:1")
+    assert status == 0
+    table, _ = whole("kinematics", WHITWORTH, "0:20000:1")
+    lines = out.splitlines()
+    assert lines[-2] == f"... {20001 - 400} more rows: --csv PATH or --json for all"
+    last = lines[-3].split()
+    picked = cli.summary_columns(table, forces=False)
+    assert last == [f"{table[c][399]:.6g}" for c in picked]
+
+
+# --- options ------------------------------------------------------------------------
+
+
+def test_two_tables_on_standard_output_are_refused(capsys):
+    status, _, err = run(capsys, "forces", SLIDER_CRANK, "--csv", "-", "--json")
+    assert status == 2
+    assert err == (
+        f"assur: error: {SLIDER_CRANK}: --csv - and --json: both write to standard "
+        "output; expected one of them (or --csv PATH)\n"
+    )
+
+
+def test_parquet_to_standard_output_is_refused(capsys):
+    status, _, err = run(capsys, "forces", SLIDER_CRANK, "--parquet", "-")
+    assert status == 2
+    assert "--parquet -: a Parquet file is not text; expected a file name" in err
+
+
+def test_parquet_without_pyarrow_is_one_error(tmp_path, capsys, monkeypatch):
+    monkeypatch.setitem(sys.modules, "pyarrow", None)
+    monkeypatch.setitem(sys.modules, "pyarrow.parquet", None)
+    target = tmp_path / "t.parquet"
+    status, _, err = run(capsys, "kinematics", SLIDER_CRANK, "--parquet", target)
+    assert status == 2
+    assert err == (
+        f"assur: error: {SLIDER_CRANK}: --parquet {target}: writing Parquet needs "
+        "pyarrow, which is not installed; expected 'pip install pyarrow' (or 'pip "
+        "install assur[parquet]')\n"
+    )
+    assert not target.exists()
+
+
+def test_csv_path_and_json_write_the_lines_to_standard_error(tmp_path, capsys):
+    target = tmp_path / "t.csv"
+    status, out, err = run(
+        capsys,
+        "kinematics",
+        SLIDER_CRANK,
+        "--angles",
+        "0:10:5",
+        "--csv",
+        target,
+        "--json",
+    )
+    assert status == 0
+    assert json.loads(out)["columns"][0] == "angle"
+    assert err.startswith("wrote 3 rows x ")
+
+
+# --- progress and --quiet ---------------------------------------------------------
+
+
+@pytest.fixture
+def long_is_short(monkeypatch):
+    monkeypatch.setattr(cli, "LONG_SWEEP", 1000)
+
+
+@pytest.mark.parametrize("output", [[], ["--csv", "t.csv"]])
+def test_a_bar_on_a_terminal(long_is_short, capsys, monkeypatch, tmp_path, output):
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    status, _, err = run(
+        capsys, "forces", SLIDER_CRANK, "--angles", "0:5000:1", *output
+    )
+    assert status == 0
+    assert "forces:" in err
+    assert "%|" in err
+
+
+def test_no_bar_when_standard_error_is_not_a_terminal(long_is_short, capsys):
+    status, _, err = run(capsys, "forces", SLIDER_CRANK, "--angles", "0:5000:1")
+    assert status == 0
+    assert err == ""
+
+
+def test_no_bar_for_a_short_sweep(capsys, monkeypatch):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    status, _, err = run(capsys, "forces", SLIDER_CRANK, "--angles", "0:5000:1")
+    assert status == 0
+    assert err == ""
+
+
+@pytest.mark.parametrize("where", ["before", "after"])
+def test_quiet(long_is_short, capsys, monkeypatch, tmp_path, double_rocker, where):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    target = tmp_path / "t.csv"
+    args = [
+        "kinematics",
+        double_rocker,
+        "--angles",
+        "0:360:0.1",
+        "--skip-unassembled",
+        "--csv",
+        target,
+    ]
+    args = ["--quiet", *args] if where == "before" else [*args, "-q"]
+    status, out, err = run(capsys, *args)
+    assert status == 0
+    assert out == ""
+    # no bar, no note, no "wrote" line; the warning stays
+    assert err.count("\n") == 1
+    assert err.startswith(f"assur: warning: {double_rocker}: group RRR")
+    assert target.read_text(encoding="utf-8").startswith("angle,")
+
+
+def test_quiet_readable_table_keeps_the_table(capsys):
+    status, out, _ = run(capsys, "-q", "kinematics", SLIDER_CRANK, "--angles", "0")
+    assert status == 0
+    assert out.splitlines()[0].split()[0] == "angle"
+    assert "columns in all" not in out
+
+
+# --- the readable table's columns come from the schema ------------------------------
+
+
+@pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.toml")), ids=lambda p: p.stem)
+def test_summary_columns_as_the_names_picked_them(path):
+    mech = assur.load(path)
+    given = assur.analysis.default_positions(mech)[:3]
+    kinematics = assur.kinematics(mech, given, skip_unassembled=True)
+    by_name = [
+        "angle",
+        *(c for c in kinematics.columns if c.endswith((".angle", ".omega", ".alpha"))),
+    ]
+    assert cli.summary_columns(kinematics, forces=False) == by_name
+    try:
+        forces = assur.forces(mech, given, skip_unassembled=True)
+    except assur.ModelError:
+        return  # no masses, no loads
+    drivers = {
+        f"{d.joint}.{what}"
+        for d in mech.drivers
+        for what in ("torque", "force", "torque_check", "force_check")
+    }
+    by_name = [
+        "angle",
+        *(
+            c
+            for c in forces.columns
+            if c.endswith(".F") or c.startswith("driver.") or c in drivers
+        ),
+    ]
+    assert cli.summary_columns(forces, forces=True) == by_name
+
+
+def test_units_of_the_readable_table(capsys):
+    status, out, _ = run(capsys, "kinematics", SLIDER_CRANK, "--angles", "45")
+    assert status == 0
+    heads, units = out.splitlines()[:2]
+    table = assur.kinematics(assur.load(SLIDER_CRANK), [45.0])
+    assert units.split() == [f"[{table.column(h).unit}]" for h in heads.split()]
+    assert "[rad/s^2]" in units.split()
+    status, out, _ = run(capsys, "forces", SLIDER_CRANK, "--angles", "45")
+    units = out.splitlines()[1]
+    assert "[N m]" in units
+    assert units.isascii()
+
+
+# --- memory -----------------------------------------------------------------------
+
+
+PEAK = """
+import resource, sys
+import assur.analysis, assur.cli
+from assur import _cli_sweep
+_cli_sweep.CHUNK = int(sys.argv[1])
+before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+status = assur.cli.main(sys.argv[2:])
+after = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+print((after - before) // 1024)  # kB on Linux
+sys.exit(status)
+"""
+
+
+def test_memory_stays_that_of_one_slice(tmp_path):
+    # 200,000 positions of 79 columns: the whole table takes 126 MB of numbers (and
+    # its states as much again); slices of 8192 positions take a few MB each
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            PEAK,
+            "8192",
+            "kinematics",
+            str(SLIDER_CRANK),
+            "--angles",
+            "0:199999:1",
+            "--csv",
+            str(tmp_path / "t.csv"),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=600,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    grown = int(result.stdout.splitlines()[-1])
+    assert grown < 90, f"{grown} MB more than after the imports"
+
+
+def test_parquet_into_a_fifo(tmp_path, capsys):
+    pq = pytest.importorskip("pyarrow.parquet", reason="pyarrow is not installed")
+    import io
+    import threading
+
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    received: list[bytes] = []
+
+    def reader() -> None:
+        with open(fifo, "rb") as stream:
+            received.append(stream.read())
+
+    thread = threading.Thread(target=reader)
+    thread.start()
+    status, _, err = run(capsys, "kinematics", SLIDER_CRANK, "--parquet", fifo)
+    thread.join(timeout=30)
+    assert status == 0, err
+    assert pq.read_table(io.BytesIO(received[0])).num_rows == 360
+    assert os.listdir(tmp_path) == ["pipe"]

@@ -1,0 +1,160 @@
+"""Tables written by blocks of rows: CSV as before, JSON as json.dumps, Parquet."""
+
+from __future__ import annotations
+
+import csv
+import errno
+import io
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur import _output, _tableio
+from assur.errors import OutputError
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+
+
+@pytest.fixture(scope="module")
+def forces_table():
+    # the slider translates: its instant centre is NaN in every row
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    return assur.forces(mech, np.arange(-90.0, 2000.0, 0.7))
+
+
+def old_csv_text(table) -> str:
+    """The CSV text as assur wrote it before the block writer: csv header, savetxt."""
+    buffer = io.StringIO()
+    csv.writer(buffer, lineterminator="\n").writerow(table.columns)
+    np.savetxt(buffer, table.to_array(), fmt="%.12g", delimiter=",")
+    return buffer.getvalue()
+
+
+def test_csv_text_is_what_it_was(forces_table, monkeypatch):
+    assert forces_table.to_csv() == old_csv_text(forces_table)
+    monkeypatch.setattr(_tableio, "ROWS", 700)  # several blocks of rows
+    assert forces_table.to_csv() == old_csv_text(forces_table)
+
+
+def test_csv_to_a_path_a_stream_and_stdout(tmp_path, capsys):
+    table = assur.kinematics(assur.catalog.four_bar(), np.arange(0.0, 360.0, 7.5))
+    expected = old_csv_text(table)
+    table.to_csv(tmp_path / "t.csv")
+    assert (tmp_path / "t.csv").read_text(encoding="utf-8") == expected
+    stream = io.StringIO()
+    table.to_csv(stream)
+    assert stream.getvalue() == expected
+    table.to_csv("-")
+    assert capsys.readouterr().out == expected
+
+
+def test_csv_of_no_rows_is_the_header():
+    mech = assur.catalog.four_bar()
+    table = assur.kinematics(mech, [0.0, 180.0], skip_unassembled=True)
+    empty = type(table)(
+        table.plan, table.schema, table.given[:0], table.state.rows(slice(0, 0))
+    )
+    assert empty.to_csv() == ",".join(table.columns) + "\n"
+
+
+def test_json_by_rows_is_json_dumps(forces_table, monkeypatch):
+    monkeypatch.setattr(_tableio, "ROWS", 300)
+    names = forces_table.columns
+    assert np.isnan(forces_table["slider.ic.x"]).all()
+    parts: list[bytes] = []
+    writer = _tableio.JsonWriter(parts.append, forces_table.mechanism.name, names)
+    columns = _tableio.table_columns(forces_table)
+    for start in range(0, len(forces_table), 1000):  # slices of a sweep
+        writer.write([c[start : start + 1000] for c in columns])
+    writer.close()
+    text = b"".join(parts).decode()
+    assert text == json.dumps(forces_table.to_dict())
+
+
+def test_json_of_odd_names():
+    parts: list[bytes] = []
+    names = ['a "quoted" %s name', "é"]
+    writer = _tableio.JsonWriter(parts.append, "m%d", names)
+    writer.write([np.array([1.0, np.inf]), np.array([-0.0, 2.5])])
+    writer.close()
+    rows = [{names[0]: 1.0, names[1]: -0.0}, {names[0]: None, names[1]: 2.5}]
+    expected = {"name": "m%d", "columns": names, "rows": rows}
+    assert b"".join(parts).decode() == json.dumps(expected)
+
+
+# --- Parquet -------------------------------------------------------------------------
+
+
+@pytest.fixture
+def pq():
+    pytest.importorskip("pyarrow", reason="pyarrow is not installed (assur[parquet])")
+    import pyarrow.parquet
+
+    return pyarrow.parquet
+
+
+def test_parquet_round_trip(pq, forces_table, tmp_path, monkeypatch):
+    monkeypatch.setattr(_tableio, "PARQUET_ROWS", 700)
+    target = tmp_path / "t.parquet"
+    forces_table.to_parquet(target)
+    read = pq.read_table(target)
+    assert read.column_names == list(forces_table.columns)
+    assert pq.ParquetFile(target).num_row_groups == -(-len(forces_table) // 700)
+    for name in forces_table.columns:
+        field = read.schema.field(name)
+        assert str(field.type) == "double"
+        assert field.metadata == {b"unit": forces_table.column(name).unit.encode()}
+        np.testing.assert_array_equal(read.column(name).to_numpy(), forces_table[name])
+    assert read.schema.metadata == {b"assur.name": b"Slider-crank exercise"}
+    assert read.schema.field("rod.alpha").metadata[b"unit"] == b"rad/s^2"
+    assert names(tmp_path) == {"t.parquet"}
+
+
+def test_parquet_is_written_whole_or_not_at_all(pq, tmp_path, monkeypatch):
+    table = assur.kinematics(assur.catalog.four_bar(), np.arange(0.0, 360.0, 1.0))
+    target = tmp_path / "t.parquet"
+    target.write_bytes(b"old")
+    monkeypatch.setattr(_tableio, "PARQUET_ROWS", 100)
+    real = _tableio.ParquetWriter.write
+    calls = []
+
+    def fail_on_the_third(self, columns):
+        calls.append(1)
+        if len(calls) == 3:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        real(self, columns)
+
+    monkeypatch.setattr(_tableio.ParquetWriter, "write", fail_on_the_third)
+    with pytest.raises(OutputError, match="No space left on device"):
+        table.to_parquet(target)
+    assert target.read_bytes() == b"old"
+    assert names(tmp_path) == {"t.parquet"}
+
+
+def test_parquet_without_pyarrow_says_how_to_get_it(tmp_path, monkeypatch):
+    monkeypatch.setitem(sys.modules, "pyarrow", None)
+    monkeypatch.setitem(sys.modules, "pyarrow.parquet", None)
+    table = assur.kinematics(assur.catalog.four_bar(), [0.0])
+    with pytest.raises(ImportError, match=r"needs pyarrow.*pip install"):
+        table.to_parquet(tmp_path / "t.parquet")
+    assert names(tmp_path) == set()
+
+
+def names(folder: Path) -> set[str]:
+    return {p.name for p in folder.iterdir()}
+
+
+def test_outputs_name_their_own_file(tmp_path, monkeypatch):
+    # a failing standard output is not the fault of a file written alongside it
+    def broken(stream, data):
+        raise BrokenPipeError(errno.EPIPE, "Broken pipe")
+
+    monkeypatch.setattr(_output, "write_all", broken)
+    write, _ = _output.stdout_writer()
+    with pytest.raises(_output.StdoutError) as caught:
+        write(b"x")
+    assert isinstance(caught.value.error, BrokenPipeError)
