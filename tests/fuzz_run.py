@@ -343,9 +343,11 @@ def _check_balance(
         if (both & off).any():
             row = int(np.flatnonzero(both & off)[0])
             digits = digits_kept(table.plan)
-            where = f" where the pose keeps fewer than {DIGITS} digits" * (
-                digits < DIGITS
-            )
+            where = ""
+            if digits < DIGITS:
+                where = f" where the pose keeps fewer than {DIGITS} digits"
+            elif _subnormal(table.plan):
+                where = " where the velocities are subnormal"
             return Outcome(
                 "failure",
                 f"{column.name} disagrees with its check{where}",
@@ -354,6 +356,15 @@ def _check_balance(
                 "digits",
             )
     return None
+
+
+def _subnormal(plan: Any) -> bool:
+    """Whether a driver's speed makes the velocities subnormal (fewer bits)."""
+    normal = np.finfo(float).tiny / np.finfo(float).eps
+    return any(
+        abs(d.omega) * (plan.scale if d.kind == "R" else 1.0) < normal
+        for d in plan.drivers
+    )
 
 
 def digits_kept(plan: Any) -> float:
