@@ -133,7 +133,7 @@ def _ic(table: Table, column: Column) -> dict[str, Array]:
     vx, vy = (full(v, n) for v in state.origin(b, 1))
     speed = np.hypot(vx, vy)
     translating = ~(np.abs(omega) * plan.scale > TRANSLATION * speed)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         x = np.where(translating, np.nan, plan.shift[0] + ox - vy / omega)
         y = np.where(translating, np.nan, plan.shift[1] + oy + vx / omega)
     return {f"{name}.ic.x": x, f"{name}.ic.y": y}

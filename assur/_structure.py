@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
-from assur._text import roman
+from assur._text import listing, roman
 from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, resolve_point
 
@@ -530,9 +530,9 @@ def _leftover(
     """Return the message of a decomposition that stops with links left over."""
     left = tuple(name for name in index.links if name in unknown)
     head = (
-        f"links {', '.join(_public(left))} are left over: they form no Assur group "
+        f"links {listing(_public(left))} are left over: they form no Assur group "
         "(3k = 2p, every part movable) on the known links "
-        f"{', '.join(sorted(known))}"
+        f"{listing(sorted(known))}"
     )
     parallel = _parallel(index, unknown)
     if parallel is not None:
@@ -548,11 +548,9 @@ def _leftover(
         r = min(stuck, key=lambda r: (len(r.links), [index.rank[x] for x in r.links]))
         k, p = len(r.links), len(r.pairs)
         return (
-            f"{head}, because joints {', '.join(_public(r.pairs))} join links "
-            f"{', '.join(_public(r.links))} into a rigid or over-constrained chain "
-            f"(k = {k} links, p = {p} pairs among them: 2p = {2 * p} >= 3(k - 1) = "
-            f"{3 * (k - 1)}, no motion left between them); expected one link in "
-            "their place, or fewer joints between them"
+            f"{head}, because joints {listing(_public(r.pairs))} make links "
+            f"{listing(_public(r.links))} rigid (k = {k}, p = {p}: 2p >= 3(k - 1)); "
+            "expected one link in their place, or fewer joints between them"
         )
     return f"{head}; expected a chain made of Assur groups"
 

@@ -15,6 +15,7 @@ from collections.abc import Iterable, Mapping, Sequence
 __all__ = [
     "ROMAN",
     "describe",
+    "listing",
     "position_text",
     "position_title",
     "roman",
@@ -106,6 +107,18 @@ def _describe(value: object, limit: int) -> str:
 def _digits(value: int) -> int:
     """Count the decimal digits of a huge integer without turning it into text."""
     return max(1, math.floor(value.bit_length() * math.log10(2)) + 1)
+
+
+def listing(names: Sequence[str], limit: int = 6) -> str:
+    """Return names separated by commas, the first ``limit`` and a count of the rest.
+
+    Examples
+    --------
+    >>> listing(["a", "b", "c"], limit=2)
+    'a, b, ... (3 in all)'
+    """
+    shown = ", ".join(names[:limit])
+    return shown if len(names) <= limit else f"{shown}, ... ({len(names)} in all)"
 
 
 def position_text(kinds: Sequence[str], values: Sequence[float]) -> str:

@@ -267,7 +267,7 @@ def offset(
     normal = np.asarray(dot((fx, fy), (nx, ny)), dtype=float)
     couple = np.asarray(couple, dtype=float)
     none = ~(np.abs(normal) > NO_FORCE * np.asarray(scale))
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         return np.where(none, np.nan, couple / np.where(none, 1.0, normal))
 
 

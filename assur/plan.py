@@ -18,6 +18,7 @@ import numpy as np
 
 from assur._structure import Group, Topology, decompose
 from assur._vec import Array
+from assur.errors import ModelError
 from assur.groups import compile_group
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan
@@ -150,6 +151,7 @@ def compile_plan(mech: Mechanism) -> Plan:
             p.virtual,
         )
     scale = _diameter(np.array(list(pair_at.values())))
+    _near_enough(topo, scale)
     context = CompileContext(
         tuple(names),
         index,
@@ -181,6 +183,26 @@ def compile_plan(mech: Mechanism) -> Plan:
         scale,
         index,
     )
+
+
+FAR = 1e7
+"""Farthest a mechanism may lie from the file's origin, in mechanism sizes: its
+coordinates then keep nine significant digits of its shape."""
+
+
+def _near_enough(topo: Topology, scale: float) -> None:
+    """Refuse a mechanism so far from the origin that its coordinates lose its shape."""
+    far = max((max(abs(p.at[0]), abs(p.at[1])) for p in topo.pairs), default=0.0)
+    # every joint at one point (a size of 1e-12) has no shape to lose
+    if far > FAR * scale and scale > 1e-12:
+        digits = max(0, int(16 - math.log10(far / scale)))
+        msg = (
+            f"joints: the mechanism ({scale:.3g} m across) lies {far:.3g} m from the "
+            f"origin, where its coordinates keep about {digits} significant digits of "
+            f"its shape; expected it within {FAR:g} times its size of the origin "
+            "(move the origin near it)"
+        )
+        raise ModelError(msg)
 
 
 def _shift(drivers: tuple[Group, ...], pair_at: dict[str, Array]) -> Array:

@@ -55,6 +55,9 @@ where the dyad cannot close and zero where its two branches meet."""
 
 DEAD_CENTRE = 1e-6
 """Smallest sine of a dyad's transmission angle accepted in the reference pose."""
+APART = 1e-9
+"""Outer joints of a dyad closer than this, times the mechanism's size, are one
+point."""
 BRANCH_TOLERANCE = 1e-7
 """Largest coordinate (rad, or m relative to the mechanism's size) that the chosen
 branch may miss the reference pose by."""
@@ -229,8 +232,9 @@ def conditioning(plan: DyadSolver, jac: Jacobian) -> Any:
 def solve2(jac: Jacobian, r0: Any, r1: Any) -> tuple[Any, Any]:
     """Solve ``J x = -r`` by Cramer's rule, element by element."""
     j00, j01, j10, j11 = jac
-    with np.errstate(divide="ignore", invalid="ignore"):
-        inv = 1.0 / sub(mul(j00, j11), mul(j01, j10))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        # numpy's division: a zero determinant gives inf or NaN, not an exception
+        inv = np.divide(1.0, sub(mul(j00, j11), mul(j01, j10)))
         return mul(sub(mul(j01, r1), mul(j11, r0)), inv), mul(
             sub(mul(j10, r0), mul(j00, r1)), inv
         )
@@ -378,6 +382,7 @@ def compile_dyad(
         context.scale,
         gap=discriminant,
     )
+    _apart(context, group, dyad)
     best: tuple[float, DyadSolver] | None = None
     for branch in (1.0, -1.0):
         candidate = dataclasses.replace(dyad, branch=branch)
@@ -404,6 +409,26 @@ def compile_dyad(
         )
         raise ModelError(msg)
     return dyad
+
+
+def _apart(context: CompileContext, group: Group, dyad: DyadSolver) -> None:
+    """Refuse a dyad whose two outer revolute joints are one point."""
+    if dyad.ext[0].kind != "R" or dyad.ext[1].kind != "R":
+        return
+    ends = [
+        context.origins[k] + np.asarray(d)
+        for k, d in zip(dyad.known, dyad.d_known, strict=True)
+    ]
+    gap = float(np.hypot(*(ends[1] - ends[0])))
+    if gap <= APART * context.scale:
+        names = " and ".join(p.name for p in dyad.ext)
+        msg = (
+            f"group {group.label}: its outer joints {names} are {gap:.3g} m apart in "
+            f"a mechanism {context.scale:.3g} m across, one point as far as its "
+            "coordinates tell, so the dyad does not hold its links; expected them "
+            "apart"
+        )
+        raise ModelError(msg)
 
 
 def dead_centre(group: Group) -> None:

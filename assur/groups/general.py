@@ -257,7 +257,8 @@ def equilibrium(
     cols = np.ones(size)
     for j, pair in enumerate(plan.pairs):
         if pair.kind == "P":
-            cols[2 * j + 1] = 1.0 / plan.scale
+            # a couple in units of force times the group's size, as moments are
+            cols[2 * j + 1] = plan.scale
     bad |= 1.0 / np.linalg.cond(mat * rows[:, None] * cols[None, :]) < SINGULAR_FORCES
     mat[bad] = np.eye(size)
     lam = np.linalg.solve(mat, rhs[..., None])[..., 0]

@@ -36,8 +36,8 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     r1 = d1[0] * d1[0] + d1[1] * d1[1]
     r2 = d2[0] * d2[0] + d2[1] * d2[1]
     gx, gy = x2 - x1, y2 - y1
-    with np.errstate(divide="ignore", invalid="ignore"):
-        inv = 1.0 / (gx * gx + gy * gy)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        inv = np.divide(1.0, gx * gx + gy * gy)
         a = 0.5 + 0.5 * (r1 - r2) * inv
         h = branch * np.sqrt(r1 * inv - a * a)
     # u1 = M - P1 and u2 = M - P2 in components
@@ -65,9 +65,9 @@ def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
     r2 = d2[0] * d2[0] + d2[1] * d2[1]
     gx, gy = x2 - x1, y2 - y1
     length = gx * gx + gy * gy
-    with np.errstate(divide="ignore", invalid="ignore"):
-        a = 0.5 + 0.5 * (r1 - r2) / length
-        return (r1 / length - a * a) * length * length / (r1 * r2)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        a = 0.5 + 0.5 * np.divide(r1 - r2, length)
+        return (np.divide(r1, length) - a * a) * length * length / (r1 * r2)
 
 
 def compile_group(context: CompileContext, group: Group) -> DyadSolver:
