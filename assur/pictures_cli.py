@@ -339,7 +339,14 @@ def _cmd_animate(args: argparse.Namespace) -> int:
     )
     table = _table(mech, sweep[pick], args.forces)
     with _figures(), output_path(output, any_error=True) as temporary:
-        count = animate(table, temporary, forces=args.forces, fps=fps, dpi=dpi)
+        count = animate(
+            table,
+            temporary,
+            forces=args.forces,
+            fps=fps,
+            dpi=dpi,
+            progress=_show(args),
+        )
     _wrote(args, f"{path_text(output)} ({count} frames)")
     return 0
 

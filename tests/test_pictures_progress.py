@@ -54,3 +54,27 @@ def test_quiet_pictures_say_nothing(tmp_path, capsys):
         status, out, err = run(capsys, "--quiet", *args)
         assert (status, out, err) == (0, "", "")
         assert Path(args[-1]).exists()
+
+
+@pytest.mark.pictures
+def test_animate_shows_a_bar_per_frame_on_a_terminal(tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    status, out, err = run(
+        capsys, "animate", FOUR_BAR, "--frames", "3", "-o", tmp_path / "a.gif"
+    )
+    assert status == 0
+    assert "animate:" in err
+    assert "3.00/3.00" in err
+
+
+def test_animate_tells_a_callback_each_frame(tmp_path):
+    import assur
+    from assur.plotting import animate
+
+    table = assur.kinematics(assur.load(FOUR_BAR), [0.0, 90.0, 180.0])
+    seen = []
+    count = animate(
+        table, tmp_path / "a.gif", progress=lambda d, t: seen.append((d, t))
+    )
+    assert count == 3
+    assert seen == [(1, 3), (2, 3), (3, 3)]

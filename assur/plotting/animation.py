@@ -10,6 +10,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._progress import Callback
+from assur._progress import progress as shown
 from assur.plotting._axes import _handles
 from assur.plotting._context import _Context, _context, _need_forces
 from assur.plotting._forces import _overview_arrows, _scale
@@ -26,7 +28,12 @@ WIDTH = 6.0
 
 
 def animate(
-    table: Table, path: Any, forces: bool = False, fps: float = 20, dpi: float = 80
+    table: Table,
+    path: Any,
+    forces: bool = False,
+    fps: float = 20,
+    dpi: float = 80,
+    progress: bool | Callback = False,
 ) -> int:
     """Write an animated GIF of the sweep, one frame per row of ``table``.
 
@@ -42,6 +49,9 @@ def animate(
         Frames per second.
     dpi : float
         Resolution of the frames, dots per inch (the drawing is 6 inches wide).
+    progress : bool or callable
+        Show a progress bar on standard error (True), or call ``progress(done,
+        total)`` after each frame.
 
     Returns
     -------
@@ -59,7 +69,10 @@ def animate(
     try:
         # matplotlib's stubs say int, but the writer only uses 1000 / fps
         writer = PillowWriter(fps=fps)  # type: ignore[arg-type]
-        with writer.saving(fig, str(path), dpi):
+        with (
+            writer.saving(fig, str(path), dpi),
+            shown("animate", len(table), progress) as bar,
+        ):
             for r in range(len(table)):
                 ax.clear()
                 entries = _draw_row(
@@ -75,6 +88,7 @@ def animate(
                         frameon=False,
                     )
                 writer.grab_frame()
+                bar.advance(1)
     finally:
         plt.close(fig)
     return len(table)
