@@ -59,7 +59,7 @@ def test_quiet_pictures_say_nothing(tmp_path, capsys):
 @pytest.mark.pictures
 def test_animate_shows_a_bar_per_frame_on_a_terminal(tmp_path, capsys, monkeypatch):
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
-    status, out, err = run(
+    status, _, err = run(
         capsys, "animate", FOUR_BAR, "--frames", "3", "-o", tmp_path / "a.gif"
     )
     assert status == 0
