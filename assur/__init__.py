@@ -21,6 +21,7 @@ from assur.errors import (
     DecompositionError,
     ModelError,
     OutputError,
+    SelfLockingError,
     SingularConfigurationError,
     UsageError,
 )
@@ -45,6 +46,7 @@ __all__ = [
     "ModelError",
     "OutputError",
     "Point",
+    "SelfLockingError",
     "SingularConfigurationError",
     "Structure",
     "Table",

@@ -20,7 +20,13 @@ from assur._loads import compile_loads
 from assur._vec import Array, full, take_rows
 from assur.columns import POINT_PARTS, Column, schema
 from assur.groups._motion import point
-from assur.kinetostatics import applied_loads, offset, residual, virtual_power
+from assur.kinetostatics import (
+    applied_loads,
+    offset,
+    residual,
+    virtual_power,
+    with_friction,
+)
 
 if TYPE_CHECKING:
     from assur.kinetostatics import ForceState
@@ -171,6 +177,36 @@ def _balancing(table: Table, column: Column) -> dict[str, Array]:
     return {column.name: full(_forces(table).balancing[i], len(table))}
 
 
+def _friction(table: Table, column: Column) -> dict[str, Array]:
+    value = _forces(table).friction.get(column.owner, 0.0)
+    return {column.name: full(value, len(table))}
+
+
+def _ideal(table: Table, column: Column) -> dict[str, Array]:
+    (i,) = column.key
+    return {column.name: full(_forces(table).ideal[i], len(table))}
+
+
+def _loss(table: Table, column: Column) -> dict[str, Array]:
+    """Compute the power of all friction loads (W).
+
+    A couple times its pair's relative angular speed; a force times its slide's
+    speed.
+    """
+    plan, state, n = table.plan, table.state, len(table)
+    total = np.zeros(n)
+    for name, value in _forces(table).friction.items():
+        pair = plan.pairs[name]
+        if pair.kind == "R":
+            speed = full(state.rotation(pair.second, 1), n) - full(
+                state.rotation(pair.first, 1), n
+            )
+        else:
+            speed = full(state.slide[name][1], n)
+        total = total + full(value, n) * speed
+    return {column.name: total}
+
+
 def _shaking(table: Table, column: Column) -> dict[str, Array]:
     (c,) = column.key
     return {column.name: full(_forces(table).shaking[c], len(table))}
@@ -187,6 +223,9 @@ SIMPLE: dict[str, Evaluator] = {
     "magnitude": _magnitude,
     "balancing": _balancing,
     "shaking": _shaking,
+    "friction": _friction,
+    "ideal": _ideal,
+    "loss": _loss,
 }
 """How each family of columns read from the states is computed."""
 
@@ -229,13 +268,18 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
         if loads is None:
             continue
         applied = applied_loads(plan, loads, bodies, part)
+        friction = _forces(table).rows(rows).friction if table.force_state else {}
         if checks is not None:
+            # friction does work: its power counts like any load's
+            rubbed = with_friction(plan, bodies, applied, friction)
             speeds = take_rows(state.speed, rows)
             for i in range(len(plan.drivers)):
-                checks[i, rows] = virtual_power(plan, bodies, applied, i, speeds[i])
+                checks[i, rows] = virtual_power(plan, bodies, rubbed, i, speeds[i])
         if left is not None:
+            # a prismatic pair's friction force is in its reaction already
+            rubbed = with_friction(plan, bodies, applied, friction, "R")
             forces = _forces(table).rows(rows)
-            left[:, rows] = residual(plan, bodies, applied, forces, rows.stop - start).T
+            left[:, rows] = residual(plan, bodies, rubbed, forces, rows.stop - start).T
     for arrays in points.values():
         out.update(arrays)
     jerks = sorted({c.key[0] for c in columns if c.family == "point" and c.level > top})

@@ -41,7 +41,8 @@ class Pair:
     """A lower pair of the structural model (slots already replaced).
 
     ``kind`` is ``"R"`` or ``"P"``; for ``"P"`` the slide line is fixed in
-    ``links[0]``. ``at`` and ``axis`` are reference-pose values in m.
+    ``links[0]``. ``at`` and ``axis`` are reference-pose values in m. ``friction`` is
+    the pair's Coulomb coefficient and ``radius`` a revolute pair's journal radius (m).
     """
 
     name: str
@@ -50,6 +51,8 @@ class Pair:
     at: tuple[float, float]
     axis: tuple[float, float] | None = None
     virtual: bool = False
+    friction: float = 0.0
+    radius: float = 0.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -180,15 +183,17 @@ def topology(mech: Mechanism) -> Topology:
         at = (float(x), float(y))
         axis = None if joint.axis is None else _unit(joint.axis)
         first, second = joint.links
+        f, r = float(joint.friction), float(joint.radius or 0.0)
         if joint.kind == "revolute":
-            pairs.append(Pair(joint.name, "R", (first, second), at))
+            pairs.append(Pair(joint.name, "R", (first, second), at, None, False, f, r))
         elif joint.kind == "prismatic":
-            pairs.append(Pair(joint.name, "P", (first, second), at, axis))
+            pairs.append(Pair(joint.name, "P", (first, second), at, axis, False, f))
         else:
             block = f"{joint.name}~block"
             links.append(block)
             slots.append(joint.name)
-            pairs.append(Pair(joint.name, "P", (first, block), at, axis))
+            # the pin slides along the slot: friction acts in its prismatic pair
+            pairs.append(Pair(joint.name, "P", (first, block), at, axis, False, f))
             pairs.append(
                 Pair(f"{joint.name}~pin", "R", (block, second), at, virtual=True)
             )

@@ -27,6 +27,7 @@ from assur.errors import (
     AssemblyError,
     AssurWarning,
     ModelError,
+    SelfLockingError,
     SingularConfigurationError,
     UsageError,
 )
@@ -194,7 +195,12 @@ def _sweep(
                 kin = _kin.state_of(plan, bodies, drive[rows], part, top)
                 fields = None
                 if loads is not None:
-                    fields = _kst.solve(plan, loads, bodies, kin)[0].fields()
+                    forces, result = _kst.solve(plan, loads, bodies, kin)
+                    fields = forces.fields()
+                    found += [
+                        _kin.Trouble(label, "locked", mask)
+                        for label, mask in result.locked
+                    ]
             troubles.extend((t, start) for t in found)
             _unexplained(plan, given[rows], (kin.motion, kin.slide, fields), found, top)
             bar.advance(rows.stop - rows.start)
@@ -270,7 +276,7 @@ def _arrays(tree: Any, top: int) -> list[Array]:
         if x.__class__ is np.ndarray
     ]
     if fields is not None:
-        _, reactions, balancing, shaking = fields
+        _, reactions, balancing, shaking, *_ = fields
         for group in (*reactions.values(), balancing, shaking):
             out += [x for x in group if x.__class__ is np.ndarray]
     return out
@@ -286,7 +292,7 @@ def _owners(plan: Plan, tree: Any) -> list[tuple[str, Any]]:
     ]
     out += [(f"joint {name}", x) for name, values in slide.items() for x in values]
     if fields is not None:
-        inertia, reactions, balancing, shaking = fields
+        inertia, reactions, balancing, shaking, *_ = fields
         out += [
             (f"link {plan.bodies[b]}", x)
             for b, values in enumerate(inertia)
@@ -468,6 +474,14 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                     f"for {good or 'none of them'}"
                 )
                 raise AssemblyError(msg)
+            if trouble.what == "locked":
+                msg = (
+                    f"group {trouble.group}: its friction locks it at driver position "
+                    f"{where} ({int(mask.sum())} of {n} positions): no driving load "
+                    "moves it there (self-locking, or too near it to settle); "
+                    "expected less friction, or positions where it can be driven"
+                )
+                raise SelfLockingError(msg)
             msg = (
                 f"group {trouble.group}: dead centre at driver position {where} "
                 "(its velocity equations are singular there); expected positions "

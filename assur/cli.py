@@ -457,10 +457,10 @@ def summary_columns(table: Any, forces: bool) -> list[str]:
 
     Kinematics: every link's angle, angular velocity and angular acceleration.
     Forces: the magnitude of every reaction and every balancing load with its
-    virtual-power check.
+    virtual-power check (and, with friction, the load without friction).
     """
     if forces:
-        families = {"magnitude", "balancing", "check"}
+        families = {"magnitude", "balancing", "check", "ideal"}
         picked = [c.name for c in table.schema if c.family in families]
     else:
         picked = [

@@ -157,6 +157,7 @@ def _kinematic_columns(plan: Plan) -> list[Column]:
 
 
 def _force_columns(plan: Plan) -> list[Column]:
+    rubbing = any(p.friction > 0.0 for p in plan.pairs.values())
     cols = []
     for b, name in enumerate(plan.bodies):
         if b and "~" not in name:
@@ -184,6 +185,11 @@ def _force_columns(plan: Plan) -> list[Column]:
             cols.append(
                 Column(f"{name}.offset", name, "offset", "m", "offset", (), 2, True)
             )
+        if rubbing:
+            part, unit = ("Mf", "N m") if pair.kind == "R" else ("Ff", "N")
+            cols.append(
+                Column(f"{name}.{part}", name, part, unit, "friction", (), 2, True)
+            )
     for i, d in enumerate(plan.drivers):
         what, unit = ("torque", "N m") if d.kind == "R" else ("force", "N")
         owners = ["driver"] if i == 0 else []
@@ -205,6 +211,23 @@ def _force_columns(plan: Plan) -> list[Column]:
                     True,
                 )
             )
+            if rubbing:
+                cols.append(
+                    Column(
+                        f"{owner}.{what}_ideal",
+                        owner,
+                        f"{what}_ideal",
+                        unit,
+                        "ideal",
+                        (i,),
+                        2,
+                        True,
+                    )
+                )
+    if rubbing:
+        cols.append(
+            Column("friction.power", "friction", "power", "W", "loss", (), 2, True)
+        )
     for c, (part, unit) in enumerate((("Fx", "N"), ("Fy", "N"), ("M", "N m"))):
         cols.append(
             Column(f"shaking.{part}", "shaking", part, unit, "shaking", (c,), 2, True)

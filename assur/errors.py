@@ -16,6 +16,7 @@ __all__ = [
     "DecompositionError",
     "ModelError",
     "OutputError",
+    "SelfLockingError",
     "SingularConfigurationError",
     "UsageError",
 ]
@@ -39,6 +40,10 @@ class AssemblyError(AssurError, ValueError):
 
 class SingularConfigurationError(AssurError, ValueError):
     """A dead centre: the velocity or force system of a group is singular."""
+
+
+class SelfLockingError(AssurError, ValueError):
+    """Friction locks a group: no driving load can move it at some position."""
 
 
 class ConvergenceError(AssurError, RuntimeError):

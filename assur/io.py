@@ -57,7 +57,7 @@ KEYS = {
         "points",
     ),
     "link": ("axis", "mass", "center", "inertia"),
-    "joint": ("kind", "links", "at", "axis"),
+    "joint": ("kind", "links", "at", "axis", "friction", "radius"),
     "driver": ("joint", "omega", "epsilon"),
     "gravity": ("g",),
     "load": ("link", "at", "force", "torque"),
@@ -479,6 +479,8 @@ def _joint(entry: str, name: str, d: Any) -> Joint:
         (pair[0], pair[1]),
         _point(f"{entry}.at", d["at"]),
         None if d.get("axis") is None else _vec(f"{entry}.axis", d["axis"]),
+        _number(f"{entry}.friction", d.get("friction", 0.0)),
+        _opt_number(f"{entry}.radius", d.get("radius")),
     )
 
 
@@ -576,6 +578,10 @@ def dumps(mech: Mechanism) -> str:
         ]
         if joint.axis is not None:
             out.append(f"axis = {_value(joint.axis)}")
+        if joint.friction:
+            out.append(f"friction = {_value(joint.friction)}")
+        if joint.radius is not None:
+            out.append(f"radius = {_value(joint.radius)}")
     for driver in mech.drivers:
         out += [
             "\n[[drivers]]",

@@ -15,18 +15,19 @@ rebuilt from a frozen :class:`~assur._kinematics.KinematicState`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from assur._friction import friction_wrench, rate, solve_group
 from assur._kinematics import KinematicState, velocity_coefficients
 from assur._loads import LoadPlan, table_values
-from assur._vec import Array, Leaf, add, cross, dot, full, mul, take_rows
-from assur.groups._motion import Motion, point, rotated
+from assur._vec import Array, Leaf, Mask, add, cross, dot, full, mul, sub, take_rows
+from assur.groups._motion import Motion, direction, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium, Wrench
-from assur.groups.driver import Balance, balance
+from assur.groups.driver import Balance, DriverPlan, balance
 from assur.plan import Plan
 
 NO_FORCE = 1e-12
@@ -41,11 +42,13 @@ __all__ = [
     "ForceState",
     "Reverse",
     "applied_loads",
+    "has_friction",
     "offset",
     "residual",
     "reverse",
     "solve",
     "virtual_power",
+    "with_friction",
 ]
 
 
@@ -73,6 +76,13 @@ class Reverse:
     groups: tuple[Equilibrium, ...]
     drivers: tuple[Balance, ...]
     frame: Wrench
+    friction: dict[str, Leaf] = field(default_factory=dict)
+    """The friction of each pair with friction: the couple on a revolute pair's
+    second link (N m), the force along a prismatic pair's slide line (N)."""
+    locked: tuple[tuple[str, Mask], ...] = ()
+    """The groups, by label, with the positions where their friction locks them."""
+    ideal: tuple[Leaf, ...] = ()
+    """Each driver's balancing load without friction (with friction only)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -93,12 +103,20 @@ class ForceState:
     shaking : tuple
         ``(F_x, F_y, M)``: resultant force (N) and moment about the file's origin
         (N m) of all loads on the frame.
+    friction : dict of str to leaf
+        Per pair with friction: the friction couple on a revolute pair's second link
+        (N m) or the friction force along a prismatic pair's slide line (N), which
+        the pair's reaction force includes.
+    ideal : tuple
+        Per driver, the balancing load the same mechanism needs without friction.
     """
 
     inertia: tuple[tuple[Leaf, Leaf, Leaf] | None, ...]
     reactions: dict[str, tuple[Leaf, Leaf, Leaf]]
     balancing: tuple[Leaf, ...]
     shaking: tuple[Leaf, Leaf, Leaf]
+    friction: dict[str, Leaf] = field(default_factory=dict)
+    ideal: tuple[Leaf, ...] = ()
 
     def rows(self, rows: Any) -> ForceState:
         """Return the force state at ``rows`` (a slice gives views, a mask copies)."""
@@ -118,7 +136,14 @@ class ForceState:
 
     def fields(self) -> tuple[Any, ...]:
         """Return the fields as a tuple (a tree of leaves)."""
-        return (self.inertia, self.reactions, self.balancing, self.shaking)
+        return (
+            self.inertia,
+            self.reactions,
+            self.balancing,
+            self.shaking,
+            self.friction,
+            self.ideal,
+        )
 
 
 def applied_loads(
@@ -165,25 +190,126 @@ def applied_loads(
     return Applied(tuple(wrenches), tuple(inertia))
 
 
-def reverse(plan: Plan, bodies: list[Motion], applied: Applied) -> Reverse:
+def reverse(
+    plan: Plan, bodies: list[Motion], applied: Applied, friction: bool = True
+) -> Reverse:
     """Solve the groups in the reverse order of attachment, then the drivers.
 
     Each group receives its links' applied loads plus the reactions of the groups
     solved before it; what it passes to the links it hangs on is added to theirs.
+    With friction in the pairs (and ``friction``) each group is solved by the
+    iteration of :mod:`assur._friction`, and the balancing loads overcome the
+    driving pairs' friction too.
     """
+    rubbing = friction and has_friction(plan)
     loads: list[Wrench] = list(applied.wrenches)
-    groups = []
+    n = _size(plan, bodies)
+    groups, values, locked = [], {}, []
     for solver in reversed(plan.solvers):
-        record = solver.equilibrium(bodies, loads)
-        for body, wrench in record.passed:
+        found = solve_group(solver, bodies, loads, n) if rubbing else None
+        if found is None:
+            record = solver.equilibrium(bodies, loads)
+            passed = list(record.passed)
+        else:
+            record = found.record
+            passed = list(record.passed) + _shares(record, found.wrenches)
+            values.update(found.values)
+            if found.locked is not None:
+                locked.append((solver.label, found.locked))
+        for body, wrench in passed:
             loads[body] = [add(a, b) for a, b in zip(loads[body], wrench, strict=True)]
         groups.append(record)
     drivers = []
     for d in plan.drivers:
         record_ = balance(d, bodies, loads)
+        if rubbing and d.pair.friction > 0.0:
+            record_ = _rubbing(d, bodies, record_, values)
         loads[0] = [add(a, b) for a, b in zip(loads[0], record_.load, strict=True)]
         drivers.append(record_)
-    return Reverse(tuple(groups), tuple(drivers), loads[0])
+    ideal: tuple[Leaf, ...] = ()
+    if rubbing:
+        ideal = tuple(
+            b.balancing for b in reverse(plan, bodies, applied, False).drivers
+        )
+    return Reverse(
+        tuple(groups), tuple(drivers), loads[0], values, tuple(locked), ideal
+    )
+
+
+def with_friction(
+    plan: Plan,
+    bodies: list[Motion],
+    applied: Applied,
+    friction: dict[str, Leaf],
+    kinds: str = "RP",
+) -> Applied:
+    """Return the applied loads with the pairs' friction (of ``kinds``) added.
+
+    The friction acts on a pair's second link and, opposite, on its first: for the
+    principle of virtual power, friction is a load like any other.
+    """
+    wrenches = list(applied.wrenches)
+    for name, value in friction.items():
+        pair = plan.pairs[name]
+        if pair.kind not in kinds:
+            continue
+        if pair.kind == "R":
+            wrench: Wrench = [0.0, 0.0, value]
+        else:
+            assert pair.axis is not None
+            ex, ey = direction(bodies[pair.first], pair.axis, 0)
+            fx, fy = mul(value, ex), mul(value, ey)
+            qx, qy = point(bodies[pair.second], pair.d_second, 0)
+            wrench = [fx, fy, cross(qx, qy, fx, fy)]
+        second, first = wrenches[pair.second], wrenches[pair.first]
+        wrenches[pair.second] = [add(a, b) for a, b in zip(second, wrench, strict=True)]
+        wrenches[pair.first] = [sub(a, b) for a, b in zip(first, wrench, strict=True)]
+    return Applied(tuple(wrenches), applied.inertia)
+
+
+def has_friction(plan: Plan) -> bool:
+    """Whether some pair of ``plan`` has friction."""
+    return any(p.friction > 0.0 for p in plan.pairs.values())
+
+
+def _size(plan: Plan, bodies: list[Motion]) -> int:
+    """Return the number of positions the motions hold."""
+    return max(
+        (int(np.size(v)) for m in bodies for v in (m.phi[0], m.ox[0], m.oy[0])),
+        default=1,
+    )
+
+
+def _shares(record: Equilibrium, wrenches: dict[str, Wrench]) -> list[Any]:
+    """Return the known links' share of the friction of a group's external pairs."""
+    inside = set(record.bodies)
+    out = []
+    for pair in record.pairs:
+        wrench = wrenches.get(pair.name)
+        if wrench is None:
+            continue
+        if pair.second not in inside:
+            out.append((pair.second, wrench))
+        elif pair.first not in inside:
+            out.append((pair.first, [mul(-1.0, w) for w in wrench]))
+    return out
+
+
+def _rubbing(
+    d: DriverPlan, bodies: list[Motion], record: Balance, values: dict[str, Leaf]
+) -> Balance:
+    """Return a driver's balance with its own pair's friction overcome too."""
+    value, wrench = friction_wrench(
+        d.pair, bodies, record.reaction, rate(d.pair, bodies)
+    )
+    values[d.pair.name] = value
+    # the friction on the input link, which the balancing load must also hold
+    sign = d.sign
+    if d.kind == "R":
+        balancing = sub(record.balancing, mul(sign, wrench[2]))
+    else:
+        balancing = sub(record.balancing, mul(sign, value))
+    return Balance(record.label, record.body, record.load, record.reaction, balancing)
 
 
 def solve(
@@ -203,6 +329,14 @@ def solve(
     for d, balance_ in zip(plan.drivers, result.drivers, strict=True):
         r = balance_.reaction
         reactions[d.pair.name] = (r.fx, r.fy, r.couple)
+    for name, value in result.friction.items():
+        pair = plan.pairs[name]
+        if pair.kind == "P":
+            # a prismatic pair's friction force is part of its reaction force
+            assert pair.axis is not None
+            ex, ey = direction(bodies[pair.first], pair.axis, 0)
+            fx, fy, couple = reactions[name]
+            reactions[name] = (add(fx, mul(value, ex)), add(fy, mul(value, ey)), couple)
     fx, fy, tau = result.frame
     sx, sy = plan.shift
     if sx or sy:
@@ -212,6 +346,8 @@ def solve(
         {name: reactions[name] for name in plan.pairs},
         tuple(b.balancing for b in result.drivers),
         (fx, fy, tau),
+        {name: result.friction[name] for name in plan.pairs if name in result.friction},
+        result.ideal,
     )
     return forces, result
 

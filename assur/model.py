@@ -124,6 +124,11 @@ class Joint:
         Position in the reference pose, m.
     axis : tuple of float, optional
         Direction of the slide line in the reference pose (prismatic and slot only).
+    friction : float
+        Coulomb coefficient of kinetic friction (0: frictionless).
+    radius : float, optional
+        Journal radius of a revolute joint with friction, m: its friction circle's
+        radius is ``friction * radius``.
     """
 
     name: str
@@ -131,6 +136,8 @@ class Joint:
     links: tuple[str, str]
     at: PointSpec
     axis: Vec2 | None = None
+    friction: float = 0.0
+    radius: float | None = None
 
     def __post_init__(self) -> None:
         _tuples(self, "links", "at", "axis")
@@ -552,7 +559,27 @@ def _validate_joints(mech: Mechanism, all_links: list[str]) -> list[str]:
                 "expected two different links",
             )
         _check_joint_axis(entry, joint)
+        _check_friction(entry, joint)
     return joint_names
+
+
+def _check_friction(entry: str, joint: Joint) -> None:
+    """Check a joint's friction: a coefficient, and a journal radius on a revolute."""
+    _check_number(f"{entry}.friction", joint.friction, 0.0)
+    if joint.radius is not None:
+        if joint.kind != "revolute":
+            _fail(
+                f"{entry}.radius",
+                f"a {joint.kind} joint has no journal, got radius "
+                f"{describe(joint.radius)}; expected 'radius' on revolute joints only",
+            )
+        _check_number(f"{entry}.radius", joint.radius, 0.0)
+    if joint.kind == "revolute" and joint.friction and not joint.radius:
+        _fail(
+            entry,
+            "a revolute joint with friction needs its journal 'radius' (m): the "
+            "friction circle's radius is friction * radius",
+        )
 
 
 def _check_joint_axis(entry: str, joint: Joint) -> None:

@@ -149,6 +149,8 @@ def compile_plan(mech: Mechanism) -> Plan:
             _pt(pair_at[p.name] - origins[j]),
             None if p.axis is None else _pt(p.axis),
             p.virtual,
+            float(p.friction),
+            float(p.radius),
         )
     scale = _diameter(np.array(list(pair_at.values())))
     _near_enough(topo, scale)

@@ -512,6 +512,161 @@ def global_solve(mech: assur.Mechanism, table: assur.Table) -> Reactions:
     return Reactions(force, couple, balancing)
 
 
+def _speed(table: assur.Table, joint: assur.Joint) -> np.ndarray:
+    """What a joint's friction opposes: the relative angular speed of its second link
+    (rad/s), or its slide's speed (m/s), from the table's columns."""
+    if joint.kind == "revolute":
+        first, second = (
+            np.zeros(len(table)) if link == GROUND else table[f"{link}.omega"]
+            for link in joint.links
+        )
+        return second - first
+    return table[f"{joint.name}.v"]
+
+
+def global_solve_friction(
+    mech: assur.Mechanism, table: assur.Table
+) -> tuple[Reactions, dict[str, np.ndarray]]:
+    """The global solve with Coulomb friction: every link's three equations at once,
+    one nonlinear system per position, by Newton's method from the frictionless
+    solution.
+
+    A revolute joint's friction is the couple ``-f r |R| sign(w2 - w1)`` on its second
+    link; a prismatic (or slot) joint's the force ``-f |N| sign(v)`` along its slide
+    line at its point. Returns the reactions (a prismatic joint's force includes its
+    friction) and each joint's friction.
+    """
+    n = len(table)
+    links = [lk.name for lk in mech.links]
+    row = {name: 3 * i for i, name in enumerate(links)}
+    ideal = global_solve(mech, table)
+    # unknowns: the frictionless solve's, in its order
+    joints = list(mech.joints)
+    layout = []  # (joint, k) per unknown, then ("driver", i)
+    for joint in joints:
+        for k in range(len(_unit_wrenches(mech, table, joint))):
+            layout.append((joint, k))
+    for i in range(len(mech.drivers)):
+        layout.append(("driver", i))
+    units = {j.name: _unit_wrenches(mech, table, j) for j in joints}
+    loads = applied_loads(mech, table)
+    speeds = {j.name: _speed(table, j) for j in joints}
+    axes = {
+        j.name: turn(pose(mech, table, j.links[0]).rotation, unit_axis(j))
+        for j in joints
+        if j.kind != "revolute"
+    }
+    out_force = {j.name: np.zeros((n, 2)) for j in joints}
+    out_couple = {j.name: np.zeros(n) for j in joints}
+    out_friction = {j.name: np.zeros(n) for j in joints}
+    balancing = np.zeros((n, len(mech.drivers)))
+
+    def start(r: int) -> np.ndarray:
+        x = []
+        for item, k in layout:
+            if item == "driver":
+                x.append(ideal.balancing[r, k])
+                continue
+            f, _c, _ = units[item.name][k]
+            force = ideal.force[item.name][r]
+            if item.kind == "revolute":
+                x.append(force[k])
+            elif k == 0:
+                x.append(float(np.dot(force, f[r])))
+            else:
+                x.append(ideal.couple[item.name][r])
+        return np.asarray(x)
+
+    def equations(x: np.ndarray, r: int, out: dict | None = None) -> np.ndarray:
+        force = {L: np.zeros(2) for L in [*links, GROUND]}
+        moment = dict.fromkeys([*links, GROUND], 0.0)
+        for L in links:
+            force[L] = force[L] + loads.force[L][r]
+            moment[L] += loads.moment[L][r]
+
+        def push(link: str, vec: np.ndarray, couple: float, at: np.ndarray) -> None:
+            force[link] = force[link] + vec
+            moment[link] += at[0] * vec[1] - at[1] * vec[0] + couple
+
+        total = {j.name: np.zeros(2) for j in joints}
+        normal = {j.name: 0.0 for j in joints}
+        for value, (item, k) in zip(x, layout, strict=True):
+            if item == "driver":
+                driver = mech.drivers[k]
+                joint = mech.joint(driver.joint)
+                link = _driver_link(mech, driver)
+                if joint.kind == "revolute":
+                    push(link, np.zeros(2), value, np.zeros(2))
+                else:
+                    at = column_pair(table, joint.name, 0)[r]
+                    push(link, value * unit_axis(joint), 0.0, at)
+                continue
+            f, c, at = units[item.name][k]
+            vec, couple, where = value * f[r], value * c[r], at[r]
+            push(item.links[1], vec, couple, where)
+            push(item.links[0], -vec, -couple, where)
+            total[item.name] = total[item.name] + vec
+            if item.kind != "revolute" and k == 0:
+                normal[item.name] = value
+        for joint in joints:
+            fr = float(joint.friction)
+            if not fr:
+                continue
+            sense = float(np.sign(speeds[joint.name][r]))
+            at = column_pair(table, joint.name, 0)[r]
+            if joint.kind == "revolute":
+                mf = -fr * float(joint.radius) * float(np.hypot(*total[joint.name]))
+                mf *= sense
+                push(joint.links[1], np.zeros(2), mf, at)
+                push(joint.links[0], np.zeros(2), -mf, at)
+                value = mf
+            else:
+                ff = -fr * abs(normal[joint.name]) * sense
+                vec = ff * axes[joint.name][r]
+                push(joint.links[1], vec, 0.0, at)
+                push(joint.links[0], -vec, 0.0, at)
+                total[joint.name] = total[joint.name] + vec
+                value = ff
+            if out is not None:
+                out[joint.name] = (total[joint.name], value)
+        res = np.zeros(3 * len(links))
+        for L in links:
+            res[row[L] : row[L] + 2] = force[L]
+            res[row[L] + 2] = moment[L]
+        return res
+
+    from scipy.optimize import fsolve
+
+    size = mechanism_size(mech)
+    for r in range(n):
+        x = start(r)
+        scale = max(1.0, float(np.max(np.abs(x))))
+        for _ in range(3):  # polish: fsolve stops early near its own tolerance
+            x = fsolve(equations, x, args=(r,), xtol=1e-15)
+        left = np.max(np.abs(equations(x, r)))
+        if not left <= 1e-11 * scale * max(1.0, size):
+            msg = f"the friction solve did not converge at row {r}: {left:g} left"
+            raise ValueError(msg)
+        found: dict = {}
+        equations(x, r, found)
+        for joint in joints:
+            _vec, value = found.get(joint.name, (None, 0.0))
+            out_friction[joint.name][r] = value
+        for value, (item, k) in zip(x, layout, strict=True):
+            if item == "driver":
+                balancing[r, k] = value
+                continue
+            f, c, _ = units[item.name][k]
+            out_force[item.name][r] += value * f[r]
+            out_couple[item.name][r] += value * c[r]
+        for joint in joints:
+            if joint.friction and joint.kind != "revolute":
+                out_force[joint.name][r] += (
+                    out_friction[joint.name][r] * (axes[joint.name][r])
+                )
+    return Reactions(out_force, out_couple, balancing), out_friction
+
+
 def table_reactions(mech: assur.Mechanism, table: assur.Table) -> Reactions:
     """The reactions and balancing loads as the table gives them."""
     force, couple = {}, {}

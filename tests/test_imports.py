@@ -33,6 +33,7 @@ RANKS = {
     "assur.groups": 3,
     "assur.plan": 4,
     "assur._loads": 5,
+    "assur._friction": 5,
     "assur._kinematics": 5,
     "assur._branches": 6,
     "assur.kinetostatics": 6,

@@ -26,7 +26,8 @@ class PairPlan:
 
     ``d_first`` and ``d_second`` are the offsets (m) of the pair's reference point from
     each body's origin; ``axis`` is the unit slide direction in the reference pose and
-    ``normal`` the axis turned by +90 degrees (prismatic pairs only).
+    ``normal`` the axis turned by +90 degrees (prismatic pairs only). ``friction`` is
+    the Coulomb coefficient and ``radius`` a revolute pair's journal radius (m).
     """
 
     name: str
@@ -37,6 +38,8 @@ class PairPlan:
     d_second: tuple[float, float]
     axis: tuple[float, float] | None = None
     virtual: bool = False
+    friction: float = 0.0
+    radius: float = 0.0
 
     @property
     def normal(self) -> tuple[float, float]:

@@ -1,0 +1,239 @@
+"""Coulomb friction in the pairs, solved group by group.
+
+A revolute pair with friction coefficient f and journal radius r resists the relative
+rotation of its links with a couple of magnitude f r |R| (R its reaction force): the
+reaction is tangent to the friction circle of radius f r. A prismatic pair resists
+the slide with a force f |N| (N its normal force) along the slide line at the pair's
+point. Kinetic friction only: a pair whose links do not move relative to each other
+has none.
+
+Friction makes a group's equilibrium depend on the sizes ``s`` of its own reactions.
+Given the senses of the relative motions, the reactions are affine in those sizes:
+the frictionless solution plus each pair's response to a unit of its friction, found
+by solving the group once per pair with friction. What is left is a small system
+``s = |R(s)|`` of one unknown per pair with friction, solved by Newton's method at
+every position at once. Where it has no solution with every size positive, no load
+can drive the group against its friction: it locks.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur._vec import Leaf, Mask, add, cross, dot, full, mul, sub
+from assur.groups._motion import Motion, direction, point, rotated
+from assur.groups._pairs import PairPlan, slide
+from assur.groups._protocol import Equilibrium, Reaction, Wrench
+
+if TYPE_CHECKING:
+    from assur.groups._protocol import GroupSolver
+
+__all__ = [
+    "GroupFriction",
+    "friction_wrench",
+    "rate",
+    "solve_group",
+]
+
+TOLERANCE = 1e-13
+"""Newton's step on the sizes, relative to the group's largest reaction, at which it
+stops."""
+SINGULAR = 1e-12
+"""Determinant of the Newton step's matrix below which the step is not taken."""
+MAX_ITERATIONS = 30
+"""Most Newton steps; a position still moving is locked, or too near it to tell."""
+
+
+@dataclass(frozen=True, slots=True)
+class GroupFriction:
+    """A group's equilibrium with friction.
+
+    ``record`` holds the normal reactions (friction loads counted as known loads of
+    the group's links); ``values`` the friction of each pair with friction (couple
+    N m on a revolute pair's second link, force N along a prismatic pair's slide
+    line); ``wrenches`` the friction wrench on each such pair's second link;
+    ``locked`` the positions where the group locks; ``iterations`` how many Newton
+    steps it took.
+    """
+
+    record: Equilibrium
+    values: dict[str, Leaf]
+    wrenches: dict[str, Wrench]
+    locked: Mask | None
+    iterations: int
+
+
+def rate(pair: PairPlan, bodies: list[Motion]) -> Leaf:
+    """Return the relative speed a pair's friction opposes.
+
+    The second link's angular speed relative to the first's (rad/s), or the slide's
+    speed (m/s).
+    """
+    if pair.kind == "R":
+        return sub(bodies[pair.second].phi[1], bodies[pair.first].phi[1])
+    return slide(pair, bodies, 1)
+
+
+def friction_wrench(
+    pair: PairPlan, bodies: list[Motion], reaction: Reaction, speed: Leaf
+) -> tuple[Leaf, Wrench]:
+    """Return a pair's friction and its wrench on the pair's second link.
+
+    Revolute: the couple ``-f r |R| sign(w2 - w1)`` (N m). Prismatic: the force
+    ``-f |N| sign(v)`` (N) along the slide line, at the pair's point. The wrench's
+    moment is about the core's origin.
+    """
+    sense = np.sign(speed)
+    if pair.kind == "R":
+        size = np.hypot(reaction.fx, reaction.fy)
+        couple = -pair.friction * pair.radius * size * sense
+        return couple, [0.0, 0.0, couple]
+    nx, ny = rotated(bodies[pair.first], pair.normal)
+    normal = dot((reaction.fx, reaction.fy), (nx, ny))
+    force = -pair.friction * np.abs(normal) * sense
+    assert pair.axis is not None
+    ex, ey = direction(bodies[pair.first], pair.axis, 0)
+    fx, fy = mul(force, ex), mul(force, ey)
+    qx, qy = point(bodies[pair.second], pair.d_second, 0)
+    return force, [fx, fy, cross(qx, qy, fx, fy)]
+
+
+def _with(
+    loads: list[Wrench],
+    pairs: list[PairPlan],
+    wrenches: dict[str, Wrench],
+    inside: set[int],
+) -> list[Wrench]:
+    """Return ``loads`` with each pair's friction on those of its links in the group."""
+    out = list(loads)
+    for pair in pairs:
+        w = wrenches[pair.name]
+        if pair.second in inside:
+            out[pair.second] = [
+                add(a, b) for a, b in zip(out[pair.second], w, strict=True)
+            ]
+        if pair.first in inside:
+            out[pair.first] = [
+                sub(a, b) for a, b in zip(out[pair.first], w, strict=True)
+            ]
+    return out
+
+
+def _unit(pair: PairPlan, bodies: list[Motion], speed: Leaf) -> Wrench:
+    """Return the friction wrench on a pair's second link per unit of reaction."""
+    sense = np.sign(speed)
+    if pair.kind == "R":
+        return [0.0, 0.0, mul(-pair.friction * pair.radius, sense)]
+    assert pair.axis is not None
+    ex, ey = direction(bodies[pair.first], pair.axis, 0)
+    force = mul(-pair.friction, sense)
+    fx, fy = mul(force, ex), mul(force, ey)
+    qx, qy = point(bodies[pair.second], pair.d_second, 0)
+    return [fx, fy, cross(qx, qy, fx, fy)]
+
+
+def _reaction(pair: PairPlan, bodies: list[Motion], record: Equilibrium, n: int) -> Any:
+    """Return a pair's reaction as its friction sees it.
+
+    Its force (n, 2) for a revolute pair, its normal force (n, 1) for a prismatic one.
+    """
+    r = record.reactions[pair.name]
+    if pair.kind == "R":
+        return np.stack((full(r.fx, n), full(r.fy, n)), axis=-1)
+    nx, ny = rotated(bodies[pair.first], pair.normal)
+    return full(dot((r.fx, r.fy), (nx, ny)), n)[:, None]
+
+
+def solve_group(
+    solver: GroupSolver, bodies: list[Motion], loads: list[Wrench], n: int
+) -> GroupFriction | None:
+    """Solve a group's equilibrium with the friction of its pairs (None: it has none).
+
+    The friction of the group's own pairs, internal and external, loads its links;
+    the known links' share of the external pairs' friction is passed to them with
+    their reactions.
+    """
+    base = solver.equilibrium(bodies, loads)
+    pairs = [p for p in base.pairs if p.friction > 0.0]
+    if not pairs:
+        return None
+    inside = set(base.bodies)
+    m = len(pairs)
+    units = {p.name: _unit(p, bodies, rate(p, bodies)) for p in pairs}
+    start = [_reaction(p, bodies, base, n) for p in pairs]
+    # each pair's reactions for a unit of one pair's friction, less the frictionless
+    response = [
+        [
+            _reaction(
+                q,
+                bodies,
+                solver.equilibrium(bodies, _with(loads, [p], units, inside)),
+                n,
+            )
+            - r0
+            for q, r0 in zip(pairs, start, strict=True)
+        ]
+        for p in pairs
+    ]
+    sizes = np.stack([np.linalg.norm(r, axis=-1) for r in start], axis=-1)
+    scale = np.max(sizes, axis=-1) + 1e-300
+    step = np.full(n, np.inf)
+    count = 0
+    while count < MAX_ITERATIONS and not np.all(step <= TOLERANCE * scale):
+        count += 1
+        jac = np.zeros((n, m, m))
+        left = np.empty((n, m))
+        for j in range(m):
+            value = start[j] + sum(sizes[:, k, None] * response[k][j] for k in range(m))
+            size = np.linalg.norm(value, axis=-1)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                along = np.where(size[:, None] > 0.0, value / size[:, None], 0.0)
+            left[:, j] = sizes[:, j] - size
+            jac[:, j, j] = 1.0
+            for k in range(m):
+                jac[:, j, k] -= np.sum(along * response[k][j], axis=-1)
+        good = np.isfinite(jac).all(axis=(1, 2)) & np.isfinite(left).all(axis=1)
+        jac[~good] = np.eye(m)
+        # a singular step (a reaction through zero, a group on the edge of locking)
+        # is not taken: the position then stays unsettled and is reported
+        good &= np.abs(np.linalg.det(jac)) > SINGULAR
+        jac[~good] = np.eye(m)
+        delta = np.linalg.solve(jac, -left[..., None])[..., 0]
+        delta[~good] = 0.0
+        sizes = sizes + delta
+        step = np.max(np.abs(delta), axis=-1)
+        # a finite position whose step could not be taken has not settled
+        step[~good & np.isfinite(left).all(axis=1)] = np.inf
+    finite = np.isfinite(sizes).all(axis=-1)
+    # no solution with every size positive: nothing drives the group (self-locking)
+    locked = finite & (
+        ~(step <= TOLERANCE * scale)
+        | np.any(sizes < -TOLERANCE * scale[:, None], axis=-1)
+    )
+    friction = {
+        p.name: [mul(sizes[:, k], w) for w in units[p.name]]
+        for k, p in enumerate(pairs)
+    }
+    record = solver.equilibrium(bodies, _with(loads, pairs, friction, inside))
+    # the friction the record was solved with: equal to f times the final reactions'
+    # sizes within the tolerance, and consistent with the record exactly
+    values = {
+        p.name: mul(
+            sizes[:, k],
+            units[p.name][2] if p.kind == "R" else _along(p, bodies, units[p.name]),
+        )
+        for k, p in enumerate(pairs)
+    }
+    return GroupFriction(
+        record, values, friction, locked if locked.any() else None, count
+    )
+
+
+def _along(pair: PairPlan, bodies: list[Motion], unit: Wrench) -> Leaf:
+    """Return a prismatic pair's unit friction force along its slide line (N)."""
+    assert pair.axis is not None
+    ex, ey = direction(bodies[pair.first], pair.axis, 0)
+    return dot((unit[0], unit[1]), (ex, ey))
