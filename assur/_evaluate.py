@@ -264,7 +264,9 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
             scale = _largest_reaction(table, rows)
         for name in offsets:
             fx, fy, couple = take_rows(_forces(table).reactions[name], rows)
-            off[name][rows] = offset(plan.pairs[name], bodies, fx, fy, couple, scale)
+            off[name][rows] = offset(
+                plan.pairs[name], bodies, fx, fy, couple, scale, plan.scale
+            )
         if loads is None:
             continue
         applied = applied_loads(plan, loads, bodies, part)

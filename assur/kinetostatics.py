@@ -30,6 +30,9 @@ from assur.groups._protocol import Equilibrium, Wrench
 from assur.groups.driver import Balance, DriverPlan, balance
 from assur.plan import Plan
 
+FAR_FORCE = 1e12
+"""A prismatic pair's normal force acting farther than this many mechanism sizes
+from its point is a pure couple: its offset is NaN."""
 NO_FORCE = 1e-12
 """A prismatic pair's normal force below this fraction of the largest reaction at the
 same position is no force: rounding is all it holds."""
@@ -390,20 +393,28 @@ def virtual_power(
 
 
 def offset(
-    pair: PairPlan, bodies: list[Motion], fx: Any, fy: Any, couple: Any, scale: Any
+    pair: PairPlan,
+    bodies: list[Motion],
+    fx: Any,
+    fy: Any,
+    couple: Any,
+    scale: Any,
+    size: float = 1.0,
 ) -> Array:
     """Where a prismatic pair's normal force acts: distance along the axis (m).
 
     The couple about the pair's point moves the resultant normal force ``N`` by
     ``M / N`` along the slide line. NaN where there is no normal force: where ``|N|``
     is below :data:`NO_FORCE` times ``scale``, the largest reaction of the mechanism
-    at that position (N), as rounding leaves it.
+    at that position (N), as rounding leaves it; and where the force would act more
+    than :data:`FAR_FORCE` times the mechanism's ``size`` (m) away, a pure couple.
     """
     nx, ny = rotated(bodies[pair.first], pair.normal)
     normal = np.asarray(dot((fx, fy), (nx, ny)), dtype=float)
     couple = np.asarray(couple, dtype=float)
-    none = ~(np.abs(normal) > NO_FORCE * np.asarray(scale))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        none = ~(np.abs(normal) > NO_FORCE * np.asarray(scale))
+        none |= ~(np.abs(couple) <= FAR_FORCE * size * np.abs(normal))
         return np.where(none, np.nan, couple / np.where(none, 1.0, normal))
 
 

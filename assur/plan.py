@@ -153,7 +153,8 @@ def compile_plan(mech: Mechanism) -> Plan:
             float(p.radius),
         )
     scale = _diameter(np.array(list(pair_at.values())))
-    _near_enough(topo, scale)
+    _near_enough(topo, _diameter(np.array(_drawn(mech, topo))))
+    _big_enough(topo, pair_at, scale)
     context = CompileContext(
         tuple(names),
         index,
@@ -192,6 +193,20 @@ FAR = 1e7
 coordinates then keep nine significant digits of its shape."""
 
 
+def _drawn(mech: Mechanism, topo: Topology) -> list[Array]:
+    """Every point the file places: joints, centres of mass and named points (m).
+
+    A mechanism whose joints all meet near one point (slide lines through a pivot)
+    still has the size its centres and named points give it.
+    """
+    at = [np.asarray(p.at, dtype=float) for p in topo.pairs]
+    for link in mech.links:
+        if link.center is not None:
+            at.append(resolve_point(mech, link.center, f"links.{link.name}.center"))
+    at += [resolve_point(mech, p.at, f"points.{p.name}") for p in mech.points]
+    return at
+
+
 def _near_enough(topo: Topology, scale: float) -> None:
     """Refuse a mechanism so far from the origin that its coordinates lose its shape."""
     far = max((max(abs(p.at[0]), abs(p.at[1])) for p in topo.pairs), default=0.0)
@@ -205,6 +220,35 @@ def _near_enough(topo: Topology, scale: float) -> None:
             "(move the origin near it)"
         )
         raise ModelError(msg)
+
+
+SMALL = 1e-9
+"""Smallest link, as a fraction of the mechanism's size: its coordinates then keep
+seven significant digits of its length."""
+
+
+def _big_enough(topo: Topology, pair_at: dict[str, Array], scale: float) -> None:
+    """Refuse a link so small beside the mechanism that its coordinates lose it."""
+    points: dict[str, list[Array]] = {}
+    # only pins fix a link's size: a slide line may pass as near a pin as it likes
+    for pair in topo.pairs:
+        if pair.kind != "R":
+            continue
+        for link in pair.links:
+            points.setdefault(link, []).append(pair_at[pair.name])
+    for link, at in points.items():
+        if link == GROUND or len(at) < 2:
+            continue
+        size = _diameter(np.array(at))
+        # a link whose joints all stand at one point (a slider's pin) has no length
+        if 1e-12 < size < SMALL * scale:
+            msg = (
+                f"links.{link}: its joints are {size:.3g} m apart in a mechanism "
+                f"{scale:.3g} m across, where coordinates keep about "
+                f"{max(0, int(16 + math.log10(size / scale)))} significant digits of "
+                f"it; expected links at least {SMALL:g} times the mechanism's size"
+            )
+            raise ModelError(msg)
 
 
 def _shift(drivers: tuple[Group, ...], pair_at: dict[str, Array]) -> Array:

@@ -310,9 +310,13 @@ def _documented(
         still = np.abs(omega) * scale <= 1e-6 * speed
         return np.isnan(v) & np.isfinite(omega) & (still | (omega == 0.0))
     if column.family == "offset":
-        # a prismatic pair's offset is M / N: NaN where the normal force N is zero
+        # a prismatic pair's offset is M / N: NaN where the normal force N is zero,
+        # or so small beside the couple M that the pair carries a pure couple
         f = values[f"{column.owner}.F"]
-        return np.isnan(v) & np.isfinite(f) & (f <= np.fmax(1e-9, 1e-6 * force))
+        m = np.abs(values[f"{column.owner}.M"])
+        none = f <= np.fmax(1e-9, 1e-6 * force)
+        couple = np.isfinite(m) & (m > 1e11 * scale * f)
+        return np.isnan(v) & np.isfinite(f) & (none | couple)
     return np.zeros(v.shape, dtype=bool)
 
 
