@@ -85,18 +85,17 @@ def _points(pos: Position, s: DyadSolver, k: int) -> list[Block]:
         if s.mid.kind == "R" or body == s.mid.first:
             skip.add(s.mid.name)
         lines += point_lines(pos, body, base, label, k, skip)
-    if not lines:
-        return []
     w = [
         f"\\omega_{{{name(pos.link(b))}}} = {num(pos.omega(b))}"
         if k == 1
         else f"\\varepsilon_{{{name(pos.link(b))}}} = {num(pos.epsilon(b))}"
         for b in s.bodies
     ]
-    return [
-        Para("Then every other point of the group's links:"),
-        Display((",\\quad ".join(w), *lines)),
-    ]
+    text = "The group's links turn at" if k == 1 else "Their angular accelerations:"
+    blocks: list[Block] = [Para(text), Display((",\\quad ".join(w),))]
+    if lines:
+        blocks += [Para("Then every other point of the links:"), Display(tuple(lines))]
+    return blocks
 
 
 def _general(pos: Position, solver: object) -> list[Block]:

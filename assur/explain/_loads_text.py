@@ -175,7 +175,7 @@ def force_lines(loads: list[Load]) -> list[str]:
         if math.hypot(*x.force) > 0:
             text += f" = {vec(x.force)}\\ \\mathrm{{N}}"
             if x.where:
-                text += f"\\ \\text{{at}}\\ {x.where} = {vec(x.point)}"
+                text += f",\\quad \\text{{at}}\\ {x.where} = {vec(x.point)}"
         if x.couple:
             text += (
                 f" = {num(x.couple)}\\ \\mathrm{{N\\,m}}"
