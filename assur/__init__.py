@@ -24,6 +24,7 @@ from assur.errors import (
     SingularConfigurationError,
     UsageError,
 )
+from assur.explain import Note, explain
 from assur.io import dumps, load, loads, save
 from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
 
@@ -43,6 +44,7 @@ __all__ = [
     "LoadTable",
     "Mechanism",
     "ModelError",
+    "Note",
     "OutputError",
     "Point",
     "SingularConfigurationError",
@@ -53,6 +55,7 @@ __all__ = [
     "__version__",
     "catalog",
     "dumps",
+    "explain",
     "forces",
     "graph",
     "kinematics",

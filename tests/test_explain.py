@@ -20,6 +20,8 @@ import pytest
 import assur
 from assur.explain import Note, explain
 
+from .test_html import browser  # noqa: F401 (the headless Chromium fixture)
+
 EXAMPLES = Path(__file__).parent.parent / "examples"
 EXERCISE = EXAMPLES / "slider_crank_exercise.toml"
 
@@ -220,4 +222,166 @@ def test_the_lecture_exercise_at_45_degrees() -> None:
     # the RRP group's reactions: the crank's on the rod, the guide's on the slider
     assert r"\vec F_{\mathrm{crank},\mathrm{rod}} = (-1906.66,\ -289.39)" in note
     assert r"\vec F_{\mathrm{ground},\mathrm{slider}} = (0,\ -443.17)" in note
-    assert r"= (853.89,\ -443.17)\ \mathrm{N},\quad F_{\mathrm{slider},\mathrm{rod}}" in note
+    assert (
+        r"= (853.89,\ -443.17)\ \mathrm{N},\quad F_{\mathrm{slider},\mathrm{rod}}"
+        in note
+    )
+
+
+# ------------------------------------------------------------- the given answers
+
+
+ANSWERS = Path(__file__).parent.parent / "docs" / "files"
+LECTURE_ANSWERS = ANSWERS / "slider_crank_exercise_answers.toml"
+
+
+def test_the_lecture_s_slip_is_found() -> None:
+    from assur.explain import read_answers
+
+    answers, source = read_answers(LECTURE_ANSWERS)
+    note = str(explain(assur.load(EXERCISE), 45.0, answers, source))
+    part = note.split("## 7. The given answers")[1]
+    assert "| rod.Fi | $1283.45$ | $1282.57$ | $+0.069$ % | differs |" in part
+    assert "| rod.G.a | $2565.12$ | $2565.13$ |" in part
+    assert "agrees" in part.split("rod.Fi")[0]
+    # the lecture's product is off, not its acceleration
+    assert r"m a_G = 0.5 \cdot 2565.132 = 1282.566" in part
+    assert r"m a_G = 0.5 \cdot 2565.12 = 1282.560" in part
+    assert "slip in the given multiplication" in part
+
+
+def test_an_answer_that_names_nothing_is_an_error(tmp_path: Path) -> None:
+    with pytest.raises(assur.ModelError, match=r"answers\.rod\.zz: no such quantity"):
+        explain(assur.load(EXERCISE), 45.0, {"rod.zz": 1.0})
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[answers]\n"rod.Fi" = "many"\n')
+    from assur.explain import read_answers
+
+    with pytest.raises(assur.ModelError, match=r"answers\.rod\.Fi: expected a number"):
+        read_answers(bad)
+
+
+# ------------------------------------------------------------ the command line
+
+
+def test_command_line_writes_markdown_html_and_latex(tmp_path: Path, capsys) -> None:
+    from assur.cli import main
+
+    assert main(["explain", str(EXERCISE), "--angle", "45"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("# Slider-crank exercise")
+    assert r"M_{b} = -\sum M_{\mathrm{A}} = 84.63" in out
+    for suffix in ("md", "html", "tex"):
+        target = tmp_path / f"note.{suffix}"
+        assert main(["explain", str(EXERCISE), "--angle", "45", "-o", str(target)]) == 0
+        assert target.read_text(encoding="utf-8")
+    assert (tmp_path / "note.md").read_text(encoding="utf-8") == out
+    assert (
+        main(["explain", str(EXERCISE), "--angle", "45", "-o", str(tmp_path / "n.pdf")])
+        == 2
+    )
+    assert "unknown type of note '.pdf'" in capsys.readouterr().err
+    assert main(["explain", str(EXERCISE), "--angle", "0:90:45"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "expected one value per driver" in err
+    assert not (tmp_path / "n.pdf").exists()
+
+
+def test_command_line_compares_answers(capsys) -> None:
+    from assur.cli import main
+
+    args = [
+        "explain",
+        str(EXERCISE),
+        "--angle",
+        "45",
+        "--answers",
+        str(LECTURE_ANSWERS),
+    ]
+    assert main(args) == 0
+    assert "slip in the given multiplication" in capsys.readouterr().out
+
+
+# ---------------------------------------------------------------- HTML and LaTeX
+
+
+def _every_math(page: str) -> list[str]:
+    return re.findall(r"<math\b.*?</math>", page, re.S)
+
+
+@pytest.mark.parametrize("stem", ["slider_crank_exercise", "class3", "whitworth"])
+def test_html_note_is_offline_and_its_mathml_well_formed(stem: str) -> None:
+    import xml.etree.ElementTree as ET
+
+    note = explain(assur.load(EXAMPLES / f"{stem}.toml"), 45.0)
+    page = note.to_html()
+    assert page.startswith("<!DOCTYPE html>") and page.rstrip().endswith("</html>")
+    assert re.search(r"https?://", page) is None
+    assert re.search(r"<(script|link|img|iframe)\b|\bsrc\s*=|@import", page) is None
+    maths = _every_math(page)
+    markdown = str(note)
+    # one <math> per piece of mathematics of the Markdown
+    assert len(maths) == len(MATH.findall(markdown))
+    for m in maths:
+        ET.fromstring(m)  # well formed
+    assert "$" not in re.sub(r"<math\b.*?</math>", "", page, flags=re.S).replace(
+        "\\$", ""
+    )
+
+
+def test_mathml_of_the_constructs() -> None:
+    from assur.explain._mathml import mathml
+
+    assert mathml(r"\frac{a}{b}") == (
+        "<math><mfrac><mrow><mi>a</mi></mrow><mrow><mi>b</mi></mrow></mfrac></math>"
+    )
+    assert "<msqrt>" in mathml(r"\sqrt{2}")
+    assert '<mover accent="true"><mi>v</mi><mo>→</mo></mover>' in mathml(r"\vec v")
+    assert "<mtext>left_crank</mtext>" in mathml(r"\mathrm{left\_crank}")
+    with pytest.raises(ValueError, match="knows no"):
+        mathml(r"\unknowncommand")
+    with pytest.raises(ValueError, match="not closed"):
+        mathml(r"\frac{a}{b")
+
+
+@pytest.mark.parametrize(
+    ("stem", "angle"),
+    [
+        ("slider_crank_exercise", 45.0),
+        ("class3", 20.0),
+        ("five_bar_two_cranks", (40.0, 100.0)),
+    ],
+)
+def test_latex_note_compiles(stem: str, angle, tmp_path: Path) -> None:
+    import shutil
+    import subprocess
+
+    pdflatex = shutil.which("pdflatex")
+    if pdflatex is None:
+        pytest.skip("pdflatex not found (apt-get install texlive-latex-recommended)")
+    source = tmp_path / "note.tex"
+    explain(assur.load(EXAMPLES / f"{stem}.toml"), angle).write(source)
+    result = subprocess.run(
+        [pdflatex, "-interaction=nonstopmode", "-halt-on-error", source.name],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=180,
+    )
+    assert result.returncode == 0, result.stdout[-2000:]
+    assert (tmp_path / "note.pdf").stat().st_size > 10_000
+
+
+@pytest.mark.browser
+def test_html_note_renders_in_a_browser(browser, tmp_path: Path) -> None:
+    # headless Chromium lays the MathML out offline (skips without Chromium)
+    path = tmp_path / "note.html"
+    explain(assur.load(EXERCISE), 45.0).write(path)
+    browser.get(path.as_uri())
+    count = browser.execute_script("return document.querySelectorAll('math').length")
+    assert count == len(_every_math(path.read_text(encoding="utf-8")))
+    heights = browser.execute_script(
+        "return Array.from(document.querySelectorAll('mfrac'))"
+        ".map(e => e.getBoundingClientRect().height)"
+    )
+    assert heights and min(heights) > 0

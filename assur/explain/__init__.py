@@ -9,9 +9,11 @@ returns is Markdown (``str()``), HTML with MathML or LaTeX.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 from assur._structure import structure
+from assur.explain._answers import answer_blocks, read_answers
 from assur.explain._forces_text import forces_blocks
 from assur.explain._inertia_text import inertia_blocks
 from assur.explain._kinematics_text import kinematics_blocks
@@ -22,10 +24,15 @@ from assur.explain._structure_text import structure_blocks
 from assur.explain._tex import plain
 from assur.model import Mechanism
 
-__all__ = ["Note", "explain"]
+__all__ = ["Note", "explain", "read_answers"]
 
 
-def explain(mechanism: Mechanism, angle: Any) -> Note:
+def explain(
+    mechanism: Mechanism,
+    angle: Any,
+    answers: Mapping[str, float] | None = None,
+    source: str = "",
+) -> Note:
     """Return the analysis of ``mechanism`` at driver position ``angle``, explained.
 
     Parameters
@@ -33,6 +40,11 @@ def explain(mechanism: Mechanism, angle: Any) -> Note:
     mechanism : Mechanism
     angle : float or sequence of float
         Driver position, deg (m for a prismatic driver); one value per driver.
+    answers : mapping of str to float, optional
+        Given answers to compare with (a textbook's), by table column or magnitude
+        (``"rod.G.a"``, ``"rod.Fi"``, ``"C.v"``): see :func:`read_answers`.
+    source : str
+        Where the given answers come from, for the note's words.
 
     Returns
     -------
@@ -44,6 +56,15 @@ def explain(mechanism: Mechanism, angle: Any) -> Note:
     ------
     AssemblyError
         When the mechanism cannot be assembled at ``angle``.
+    ModelError
+        When an answer names no quantity of the mechanism.
+
+    Examples
+    --------
+    >>> from assur import catalog
+    >>> note = explain(catalog.slider_crank(), 45.0)
+    >>> str(note).startswith("# ")
+    True
     """
     pos = position(mechanism, angle)
     blocks: list[Block] = []
@@ -61,5 +82,7 @@ def explain(mechanism: Mechanism, angle: Any) -> Note:
         blocks += forces_blocks(pos)
         blocks += driver_blocks(pos)
         blocks += lever_blocks(pos)
+    if answers:
+        blocks += answer_blocks(pos, answers, source)
     title = f"{plain(mechanism.name or 'Mechanism')}: the analysis explained"
     return Note(title, tuple(blocks), {})

@@ -27,7 +27,7 @@ from assur.explain._loads_text import (
 )
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position, cross, perp, unit
-from assur.explain._tex import name, num, par, plain, vec
+from assur.explain._tex import name, num, par, plain, text, vec
 from assur.groups._dyad import DyadSolver
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium
@@ -194,12 +194,12 @@ def _couple(pos: Position, pair: PairPlan, body: int, loads: list[Load]) -> list
     e = pos.turned(pair.first, pair.axis or (1.0, 0.0))
     force = -total(loads)
     normal = float(np.dot(force, perp(e)))
-    text = [
+    shown = [
         line,
         f"M_{{{j}}} = -\\sum M_{{{j}}} = {num(couple)}\\ \\mathrm{{N\\,m}}",
     ]
     if abs(normal) > 1e-9 * max(1.0, math.hypot(*force)):
-        text.append(
+        shown.append(
             f"x_{{{j}}} = \\frac{{M_{{{j}}}}}{{N_{{{j}}}}} = \\frac{{{num(couple)}}}"
             f"{{{num(normal)}}} = {num(couple / normal)}\\ \\mathrm{{m}}"
         )
@@ -216,7 +216,7 @@ def _couple(pos: Position, pair: PairPlan, body: int, loads: list[Load]) -> list
             )
             + ":"
         ),
-        Display(tuple(text)),
+        Display(tuple(shown)),
     ]
 
 
@@ -300,7 +300,9 @@ def _general(pos: Position, rec: Equilibrium) -> list[Block]:
             for k in range(len(symbols))
             if abs(a[i, k]) > 1e-12 * ref
         ]
-        lines.append(f"\\text{{{row}}}:\\ " + " + ".join(terms) + f" = {num(rhs[i])}")
+        lines.append(
+            f"\\text{{{text(row)}}}:\\ " + " + ".join(terms) + f" = {num(rhs[i])}"
+        )
     values = [f"{sym} = {num(v)}" for sym, v in zip(symbols, x, strict=True)]
     return [
         Para(
@@ -327,21 +329,16 @@ def _totals(pos: Position, rec: Equilibrium) -> list[str]:
         r = rec.reactions[pair.name]
         f = np.array([float(np.ravel(r.fx)[0]), float(np.ravel(r.fy)[0])])
         symbol = force_symbol(pos, pair.first, pair.second)
-        text = (
+        line = (
             f"\\vec {symbol} = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
             f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
         )
         if pair.kind == "P":
-            text += (
+            line += (
                 f",\\quad M_{{{name(pair.name)}}} = {num(float(np.ravel(r.couple)[0]))}"
             )
-        lines.append(text + f"\\quad \\text{{(joint {_plain_text(pair.name)})}}")
+        lines.append(line + f"\\quad \\text{{(joint {text(pair.name)})}}")
     return lines
-
-
-def _plain_text(text: str) -> str:
-    """Return a name inside ``\\text{}``."""
-    return "".join(c for c in text.split("~")[0] if c not in "{}\\$")
 
 
 def forces_blocks(pos: Position) -> list[Block]:

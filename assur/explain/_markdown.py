@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from assur.explain._note import Display, Grid, Heading, Items, Para
+from assur.explain._blocks import Display, Grid, Heading, Items, Para
 
 if TYPE_CHECKING:
     from assur.explain._note import Note

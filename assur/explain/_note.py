@@ -1,17 +1,19 @@
-"""The note: a sequence of headings, paragraphs, equations, tables and lists.
+"""The note: its blocks, written as Markdown, HTML with MathML or LaTeX.
 
-Text holds inline mathematics between dollar signs (``$\\omega_1 = 200$``); a
-:class:`Display` holds equations, one per line, in the TeX subset of
-:mod:`assur.explain._mathml`. The same blocks are written as Markdown (``str()``),
+The same blocks (:mod:`assur.explain._blocks`) are written as Markdown (``str()``),
 as a self-contained HTML page with MathML or as a LaTeX report.
 """
 
 from __future__ import annotations
 
 import os
-import re
 from dataclasses import dataclass
 from typing import Any
+
+from assur.explain._blocks import Block, Display, Grid, Heading, Items, Para, segments
+from assur.explain._html import html_page
+from assur.explain._latex import latex_document
+from assur.explain._markdown import markdown
 
 __all__ = [
     "Block",
@@ -23,64 +25,6 @@ __all__ = [
     "Para",
     "segments",
 ]
-
-
-@dataclass(frozen=True, slots=True)
-class Heading:
-    """A heading of ``level`` 1 (the title) to 4."""
-
-    level: int
-    text: str
-
-
-@dataclass(frozen=True, slots=True)
-class Para:
-    """A paragraph; mathematics inline between dollar signs."""
-
-    text: str
-
-
-@dataclass(frozen=True, slots=True)
-class Display:
-    """Equations set apart, one per line (TeX)."""
-
-    lines: tuple[str, ...]
-
-
-@dataclass(frozen=True, slots=True)
-class Grid:
-    """A table: a heading row and rows of cells (text with inline mathematics)."""
-
-    head: tuple[str, ...]
-    rows: tuple[tuple[str, ...], ...]
-
-
-@dataclass(frozen=True, slots=True)
-class Items:
-    """A list of short items (text with inline mathematics)."""
-
-    items: tuple[str, ...]
-
-
-Block = Heading | Para | Display | Grid | Items
-
-DOLLAR = re.compile(r"(?<!\\)\$")
-
-
-def segments(text: str) -> list[tuple[bool, str]]:
-    """Split text into ``(is_math, part)``, mathematics between dollar signs.
-
-    Examples
-    --------
-    >>> segments("so $x = 1$ m")
-    [(False, 'so '), (True, 'x = 1'), (False, ' m')]
-    """
-    parts = DOLLAR.split(text)
-    return [
-        (i % 2 == 1, part.replace(r"\$", "$") if i % 2 == 0 else part)
-        for i, part in enumerate(parts)
-        if part
-    ]
 
 
 @dataclass(frozen=True)
@@ -110,20 +54,14 @@ class Note:
 
     def to_markdown(self) -> str:
         """Return the note as Markdown with TeX mathematics."""
-        from assur.explain._markdown import markdown
-
         return markdown(self)
 
     def to_html(self) -> str:
         """Return the note as one self-contained HTML page (MathML equations)."""
-        from assur.explain._html import html_page
-
         return html_page(self)
 
     def to_latex(self) -> str:
         """Return the note as a LaTeX document that compiles with pdflatex."""
-        from assur.explain._latex import latex_document
-
         return latex_document(self)
 
     def write(self, path: str | os.PathLike[str]) -> None:

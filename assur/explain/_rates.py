@@ -17,7 +17,7 @@ import numpy as np
 from assur._vec import Array
 from assur.explain._note import Block, Display, Para
 from assur.explain._position import Position, perp
-from assur.explain._tex import name, num, par, point_name, vec
+from assur.explain._tex import name, num, par, point_name, text, vec
 from assur.groups._dyad import DyadSolver
 
 __all__ = ["Term", "body_points", "dyad_rates", "point_lines"]
@@ -123,7 +123,7 @@ def _sliding(
         Term(
             f"\\vec {letter}_{{{base}}}",
             pos.coincident(guide, m, k),
-            f"\\text{{the point of {_text(pos.link(guide))} at }} {j}",
+            f"\\text{{the point of {text(pos.link(guide))} at }} {j}",
         )
     ]
     if k == 1:
@@ -162,11 +162,6 @@ def _sliding(
             e,
         ),
     ]
-
-
-def _text(text: str) -> str:
-    """Return a name for ``\\text{}``: braces and backslashes left out."""
-    return "".join(c for c in text if c not in "{}\\$").replace("~block", " block")
 
 
 def _sides(pos: Position, s: DyadSolver, k: int) -> tuple[list[Term], list[Term]]:
@@ -240,7 +235,7 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
     names, a, rhs = _solve(left, right)
     lines, _ = _system(names, a, rhs)
     blocks: list[Block] = [
-        Para(f"The {LEVEL[k][1]} of the joint {_text(s.mid.name)}, along each link:"),
+        Para(f"The {LEVEL[k][1]} of the joint {text(s.mid.name)}, along each link:"),
         Display((f"{_sum(left)} = {_sum(right)}",)),
         Display(
             tuple(

@@ -18,6 +18,7 @@ __all__ = [
     "par",
     "plain",
     "point_name",
+    "text",
     "times",
     "vec",
 ]
@@ -128,3 +129,16 @@ def point_name(point: str) -> str:
 def plain(text: str) -> str:
     """Return text for a paragraph: a dollar sign of a name escaped."""
     return text.replace("~block", " (block)").replace("$", r"\$")
+
+
+def text(words: str) -> str:
+    r"""Return words for ``\text{...}``: TeX's special characters escaped.
+
+    Examples
+    --------
+    >>> text("left_rocker")
+    'left\\_rocker'
+    """
+    words = words.replace("~block", " block").replace("~pin", "")
+    kept = "".join(c for c in words if c not in "\\^~")
+    return "".join("\\" + c if c in "_{}$%&#" else c for c in kept)
