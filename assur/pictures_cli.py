@@ -1,4 +1,4 @@
-"""Command line for pictures: ``assur plot|diagrams|animate|report``.
+"""Command line for pictures: ``assur plot|diagrams|animate|plans|report``.
 
 :mod:`assur.cli` calls :func:`register` to add these commands. Each handler reads the
 mechanism file, runs the analysis and writes pictures with matplotlib's Agg backend,
@@ -97,6 +97,16 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         help=f"frames per second (default 20, {FPS_RANGE[0]:g} to {FPS_RANGE[1]:g})",
     )
     p.add_argument("--forces", action="store_true", help="draw the loads and reactions")
+    p = sub.add_parser(
+        "plans", help="velocity, acceleration and force plans, lever, instant centres"
+    )
+    _common(p, "DIR", "folder for the plans, each as PNG and SVG", DPI)
+    p.add_argument(
+        "--angle",
+        metavar="DEG",
+        help="driver position, deg (m for a prismatic driver; one per driver, "
+        "separated by commas); default: the reference pose",
+    )
     p = sub.add_parser("report", help="write an HTML report of the analysis")
     _common(p, "PATH", "HTML file to write")
     p.add_argument("--angles", **angles)
@@ -105,6 +115,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "diagrams": _cmd_diagrams,
         "animate": _cmd_animate,
         "report": _cmd_report,
+        "plans": _cmd_plans,
     }
 
 
@@ -205,6 +216,71 @@ def _wrote(args: argparse.Namespace, text: str) -> None:
 def _show(args: argparse.Namespace) -> bool:
     """Whether to show progress bars: on a terminal, without ``--quiet``."""
     return terminal() and not getattr(args, "quiet", False)
+
+
+PLANS = (
+    "velocity_plan",
+    "acceleration_plan",
+    "force_polygons",
+    "zhukovsky_lever",
+    "instant_centres",
+)
+"""Names of the plans ``assur plans`` writes (each as .png and .svg)."""
+
+
+def _one_position(mech: Any, spec: str | None) -> Any:
+    """Return the one driver position of ``--angle`` (default: the reference pose)."""
+    from assur.analysis import default_positions
+
+    if spec is None:
+        return default_positions(mech)[0]
+    found = parse_angles(spec, max(1, len(mech.drivers)), option="--angle")
+    if found.shape[0] != 1:
+        msg = (
+            f"--angle {describe(spec)[1:-1]}: {found.shape[0]} positions; expected "
+            "one value per driver"
+        )
+        raise UsageError(msg)
+    return found[0]
+
+
+def _cmd_plans(args: argparse.Namespace) -> int:
+    from assur import plotting
+    from assur._loads import compile_loads
+    from assur.plan import plan_of
+
+    dpi = _check_dpi(args, DPI_RANGE)
+    out: Path = args.output
+    if out.exists() and not out.is_dir():
+        msg = f"-o {path_text(out)}: is a file; expected a folder for the plans"
+        raise UsageError(msg)
+    mech = load_mechanism(args.file)
+    angle = _one_position(mech, args.angle)
+    loaded = not compile_loads(plan_of(mech)).empty
+    makers = {
+        "velocity_plan": lambda: plotting.velocity_plan(mech, angle).figure,
+        "acceleration_plan": lambda: plotting.acceleration_plan(mech, angle).figure,
+        "instant_centres": lambda: plotting.instant_centres(mech, angle).figure,
+    }
+    if loaded:
+        makers["force_polygons"] = lambda: plotting.force_polygons(mech, angle)
+        if len(mech.drivers) == 1:
+            makers["zhukovsky_lever"] = lambda: (
+                plotting.zhukovsky_lever(mech, angle).figure
+            )
+    written = []
+    with _figures(), output_folder(out, any_error=True) as folder:
+        for name in PLANS:
+            if name not in makers:
+                continue
+            fig = makers[name]()
+            for suffix in (".png", ".svg"):
+                fig.savefig(folder / f"{name}{suffix}", dpi=dpi, bbox_inches="tight")
+                written.append(f"{name}{suffix}")
+            _pyplot().close(fig)
+    for name in written:
+        _wrote(args, path_text(out / name))
+    return 0
 
 
 def _cmd_plot(args: argparse.Namespace) -> int:
