@@ -69,6 +69,12 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         help="draw inertia loads, joint reactions and balancing load",
     )
     p.add_argument("--scale", type=float, metavar="N", help="force scale: N per cm")
+    p.add_argument(
+        "--group",
+        type=int,
+        metavar="N",
+        help="draw the free-body diagram of Assur group N (1: the first attached)",
+    )
     p.add_argument("--no-labels", action="store_true", help="leave out the names")
     p = sub.add_parser("diagrams", help="write PNG diagrams over a sweep to a folder")
     _common(
@@ -285,7 +291,8 @@ def _cmd_plans(args: argparse.Namespace) -> int:
 
 def _cmd_plot(args: argparse.Namespace) -> int:
     from assur.analysis import default_positions
-    from assur.plotting import draw
+    from assur.plan import plan_of
+    from assur.plotting import draw, draw_free_body
 
     output = _output(args, PICTURE_SUFFIXES)
     dpi = _check_dpi(args, DPI_RANGE)
@@ -304,6 +311,21 @@ def _cmd_plot(args: argparse.Namespace) -> int:
                 "expected one value per driver"
             )
             raise UsageError(msg)
+    if args.group is not None:
+        count = len(plan_of(mech).groups)
+        if not 1 <= args.group <= count:
+            msg = (
+                f"--group {args.group}: the mechanism has {count} Assur group(s); "
+                f"expected 1 to {count}"
+            )
+            raise UsageError(msg)
+        table = _table(mech, position, True)
+        with _figures() as plt:
+            fig, ax = plt.subplots(figsize=(9.0, 6.5), layout="constrained")
+            draw_free_body(table, args.group - 1, ax=ax, scale=args.scale)
+            _save(fig, output, dpi)
+        _wrote(args, path_text(output))
+        return 0
     table = _table(mech, position, args.forces)
     with _figures() as plt:
         fig, ax = plt.subplots(figsize=(9.0, 6.0), layout="constrained")

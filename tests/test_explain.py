@@ -385,3 +385,28 @@ def test_html_note_renders_in_a_browser(browser, tmp_path: Path) -> None:
         ".map(e => e.getBoundingClientRect().height)"
     )
     assert heights and min(heights) > 0
+
+
+def test_html_report_holds_the_note() -> None:
+    from assur.html import render_report
+
+    page = render_report(assur.load(EXERCISE), angles=[45.0, 90.0])
+    assert '<section class="card wide" id="note">' in page
+    section = page.split('id="note"')[1].split("</section>")[0]
+    assert "Inertia loads" in section and "group by group" in section
+    assert section.count("<math") > 50
+    assert re.search(r"https?://", page) is None
+
+
+@pytest.mark.pictures
+def test_plot_draws_one_group_s_free_body(tmp_path: Path, capsys) -> None:
+    from assur.cli import main
+
+    six = EXAMPLES / "six_bar_lecture.toml"
+    out = tmp_path / "group.png"
+    assert (
+        main(["plot", str(six), "--angle", "45", "--group", "2", "-o", str(out)]) == 0
+    )
+    assert out.stat().st_size > 10_000
+    assert main(["plot", str(six), "--group", "3", "-o", str(out)]) == 2
+    assert "expected 1 to 2" in capsys.readouterr().err
