@@ -283,7 +283,8 @@ def test_command_line_writes_markdown_html_and_latex(tmp_path: Path, capsys) -> 
     assert "unknown type of note '.pdf'" in capsys.readouterr().err
     assert main(["explain", str(EXERCISE), "--angle", "0:90:45"]) == 2
     err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "expected one value per driver" in err
+    assert err.count("\n") == 1
+    assert "expected one value per driver" in err
     assert not (tmp_path / "n.pdf").exists()
 
 
@@ -315,7 +316,8 @@ def test_html_note_is_offline_and_its_mathml_well_formed(stem: str) -> None:
 
     note = explain(assur.load(EXAMPLES / f"{stem}.toml"), 45.0)
     page = note.to_html()
-    assert page.startswith("<!DOCTYPE html>") and page.rstrip().endswith("</html>")
+    assert page.startswith("<!DOCTYPE html>")
+    assert page.rstrip().endswith("</html>")
     assert re.search(r"https?://", page) is None
     assert re.search(r"<(script|link|img|iframe)\b|\bsrc\s*=|@import", page) is None
     maths = _every_math(page)
@@ -373,7 +375,7 @@ def test_latex_note_compiles(stem: str, angle, tmp_path: Path) -> None:
 
 
 @pytest.mark.browser
-def test_html_note_renders_in_a_browser(browser, tmp_path: Path) -> None:
+def test_html_note_renders_in_a_browser(browser, tmp_path: Path) -> None:  # noqa: F811
     # headless Chromium lays the MathML out offline (skips without Chromium)
     path = tmp_path / "note.html"
     explain(assur.load(EXERCISE), 45.0).write(path)
@@ -384,7 +386,8 @@ def test_html_note_renders_in_a_browser(browser, tmp_path: Path) -> None:
         "return Array.from(document.querySelectorAll('mfrac'))"
         ".map(e => e.getBoundingClientRect().height)"
     )
-    assert heights and min(heights) > 0
+    assert heights
+    assert min(heights) > 0
 
 
 def test_html_report_holds_the_note() -> None:
@@ -393,7 +396,8 @@ def test_html_report_holds_the_note() -> None:
     page = render_report(assur.load(EXERCISE), angles=[45.0, 90.0])
     assert '<section class="card wide" id="note">' in page
     section = page.split('id="note"')[1].split("</section>")[0]
-    assert "Inertia loads" in section and "group by group" in section
+    assert "Inertia loads" in section
+    assert "group by group" in section
     assert section.count("<math") > 50
     assert re.search(r"https?://", page) is None
 

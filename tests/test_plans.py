@@ -1,4 +1,5 @@
-"""Plans (assur.plotting.plans, ``assur plans``): exact images, lever, Kennedy, files."""
+"""Plans (assur.plotting.plans, ``assur plans``): exact images, lever, Kennedy, "
+"files."""
 
 from __future__ import annotations
 

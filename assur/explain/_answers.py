@@ -89,7 +89,8 @@ def _slip(pos: Position, link: str, given: Mapping[str, float]) -> str | None:
     theirs = mass * accel
     return (
         f"The given $F_{{i,{name(link)}}} = {force:g}$ N is not $m a_G$ of the given "
-        f"$a_G = {accel:g}\\ \\mathrm{{m/s^2}}$: $m a_G = {mass:g} \\cdot {accel:g} = {theirs:.3f}$ N, "
+        f"$a_G = {accel:g}\\ \\mathrm{{m/s^2}}$: $m a_G = {mass:g} \\cdot {accel:g} "
+        f"= {theirs:.3f}$ N, "
         f"and with the exact acceleration $m a_G = {mass:g} \\cdot {ours_a:.3f} = "
         f"{ours_f:.3f}$ N. The acceleration agrees; the difference of "
         f"{force - ours_f:+.2f} N is a slip in the given multiplication."

@@ -1,6 +1,6 @@
-"""The blocks of a note: headings, paragraphs, equations, tables and lists.
+r"""The blocks of a note: headings, paragraphs, equations, tables and lists.
 
-Text holds inline mathematics between dollar signs (``$\\omega_1 = 200$``); a
+Text holds inline mathematics between dollar signs (``$\omega_1 = 200$``); a
 :class:`Display` holds equations, one per line, in the TeX subset of
 :mod:`assur.explain._mathml`.
 """

@@ -54,7 +54,8 @@ def _cramer(names: list[str], a: Array, rhs: Array) -> tuple[list[str], list[flo
         for i, axis in enumerate("xy")
     ]
     lines.append(
-        f"\\Delta = {par(a[0, 0], ref)} \\cdot {par(a[1, 1], ref)} - {par(a[0, 1], ref)}"
+        f"\\Delta = {par(a[0, 0], ref)} \\cdot {par(a[1, 1], ref)} - "
+        f"{par(a[0, 1], ref)}"
         f" \\cdot {par(a[1, 0], ref)} = {num(det, ref * ref)}"
     )
     values = [t / det for t in tops]
@@ -102,7 +103,8 @@ def _revolute_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Blo
             j = name(pair.name)
             blocks += [
                 Para(
-                    f"Moments of {plain(pos.link(body))} about {plain(s.mid.name)}: the "
+                    f"Moments of {plain(pos.link(body))} about {plain(s.mid.name)}: "
+                    "the "
                     f"normal part $\\vec {symbol}^{{n}}$ (along {plain(pair.name)}"
                     f"{plain(s.mid.name)}) and the reaction in {plain(s.mid.name)} "
                     f"pass through {plain(s.mid.name)}; the tangential part "
@@ -114,7 +116,8 @@ def _revolute_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Blo
                 Display(
                     (
                         line,
-                        f"{symbol}^{{t}} = \\frac{{\\sum M_{{{mid}}}}}{{l_{{{j}{mid}}}}}"
+                        f"{symbol}^{{t}} = \\frac{{\\sum M_{{{mid}}}}}"
+                        f"{{l_{{{j}{mid}}}}}"
                         f" = \\frac{{{num(total_m)}}}{{{num(length)}}} = {num(ft)}\\ "
                         "\\mathrm{N}",
                     )
@@ -144,15 +147,16 @@ def _revolute_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Blo
         ),
         Display(
             (
-                f"\\sum \\vec F_{{known}} + \\sum \\vec F^{{t}} = {vec(-rhs)}\\ \\mathrm{{N}}",
+                f"\\sum \\vec F_{{known}} + \\sum \\vec F^{{t}} = {vec(-rhs)}"
+                "\\ \\mathrm{N}",
                 *lines,
             )
         ),
     ]
     outer = []
-    forces = []
-    for (symbol, d, ft), x in zip(parts, values, strict=True):
-        f = x * d + ft
+    forces: list[Array] = []
+    for (symbol, d, tangential), x in zip(parts, values, strict=True):
+        f: Array = x * d + tangential
         forces.append(f)
         outer.append(
             f"\\vec {symbol} = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
@@ -170,7 +174,9 @@ def _revolute_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Blo
         Display(
             (
                 f"\\vec {sym} = -\\left(\\sum \\vec F_{{known}} + \\vec "
-                f"{force_symbol(pos, s.known[0], first)}\\right) = -\\left({vec(total(loads[0]))}"
+                ""
+                f"{force_symbol(pos, s.known[0], first)}\\right) = -\\left("
+                f"{vec(total(loads[0]))}"
                 f" + {vec(forces[0])}\\right) = {vec(inner)}\\ \\mathrm{{N}},\\quad "
                 f"{sym} = {num(math.hypot(*inner))}\\ \\mathrm{{N}}",
             )
@@ -205,7 +211,8 @@ def _couple(pos: Position, pair: PairPlan, body: int, loads: list[Load]) -> list
         )
     return [
         Para(
-            f"Moments of {plain(pos.link(body))} about the point of {plain(pair.name)}: "
+            f"Moments of {plain(pos.link(body))} about the point of "
+            f"{plain(pair.name)}: "
             f"the couple $M_{{{j}}}$ of the guide's reaction (the normal force "
             f"$N_{{{j}}}$ then acts $x_{{{j}}}$ along the guide from that point)"
             + (

@@ -9,8 +9,8 @@ from __future__ import annotations
 from html import escape
 from typing import TYPE_CHECKING
 
-from assur.explain._mathml import mathml
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
+from assur.explain._mathml import mathml
 
 if TYPE_CHECKING:
     from assur.explain._blocks import Block

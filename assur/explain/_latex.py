@@ -1,6 +1,6 @@
-"""The note as a LaTeX report that compiles with pdflatex (amsmath, longtable).
+r"""The note as a LaTeX report that compiles with pdflatex (amsmath, longtable).
 
-Headings become sections, equations ``\\[ ... \\]`` (broken over lines by breqn-free
+Headings become sections, equations ``\[ ... \]`` (broken over lines by breqn-free
 means: each equation on its own), tables ``tabular``; text is escaped.
 """
 

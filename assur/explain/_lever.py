@@ -44,7 +44,7 @@ def _symbol(d: DriverPlan, many: bool) -> str:
 
 
 def driver_blocks(pos: Position) -> list[Block]:
-    """Return each input link's equilibrium: the frame's reaction, the balancing load."""
+    """Return each input link's equilibrium: the frame's reaction, balancing load."""
     plan = pos.plan
     solved = {b for s in plan.solvers for b in s.bodies}
     blocks: list[Block] = [Heading(2, "5. The input link")]
@@ -74,7 +74,8 @@ def driver_blocks(pos: Position) -> list[Block]:
                     (
                         line,
                         f"{sym} = -\\sum M_{{{j}}} = {num(-m)}\\ \\mathrm{{N\\,m}}",
-                        f"\\vec {symbol} = -\\sum \\vec F = {vec(frame)}\\ \\mathrm{{N}}"
+                        f"\\vec {symbol} = -\\sum \\vec F = {vec(frame)}"
+                        "\\ \\mathrm{N}"
                         f",\\quad {symbol} = {num(math.hypot(*frame))}\\ \\mathrm{{N}}",
                     )
                 ),

@@ -74,7 +74,7 @@ def _argument(tokens: list[str], i: int) -> tuple[str, int]:
 
 
 def _raw(tokens: list[str], i: int) -> tuple[str, int]:
-    """Return the text of a braced argument as written (for ``\\text``)."""
+    r"""Return the text of a braced argument as written (for ``\text``)."""
     if tokens[i] != "{":
         return tokens[i], i + 1
     depth, j, parts = 1, i + 1, []

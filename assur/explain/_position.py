@@ -72,7 +72,7 @@ class Position:
         return self.table.plan.mechanism
 
     def shift(self) -> Array:
-        """The core's origin in file coordinates, m."""
+        """Return the core's origin in file coordinates, m."""
         return np.asarray(self.plan.shift, dtype=float)
 
     def point(self, body: int, offset: tuple[float, float], k: int = 0) -> Array:

@@ -72,8 +72,10 @@ def _rrr(pos: Position, s: DyadSolver) -> list[Block]:
                 f" = {num(a)}",
                 f"h = {sign}\\sqrt{{l_{{{b}{c}}}^2 - a^2}} = {sign}\\sqrt{{{_sq(l1)} - "
                 f"{_sq(a)}}} = {num(h)}",
-                f"\\vec e = \\frac{{\\vec r_{{{d}}} - \\vec r_{{{b}}}}}{{d}} = {vec(e)}",
-                f"\\vec r_{{{c}}} = \\vec r_{{{b}}} + a\\,\\vec e + h\\,\\vec e^{{\\perp}}"
+                f"\\vec e = \\frac{{\\vec r_{{{d}}} - \\vec r_{{{b}}}}}{{d}} = "
+                f"{vec(e)}",
+                f"\\vec r_{{{c}}} = \\vec r_{{{b}}} + a\\,\\vec e + "
+                "h\\,\\vec e^{\\perp}"
                 f" = {vec(pb)} + {par(a)} \\cdot {vec(e)} + {par(h)} \\cdot "
                 f"{vec(perp(e))} = {vec(pc)}",
             )
@@ -144,10 +146,14 @@ def _prp(pos: Position, s: DyadSolver) -> list[Block]:
         Display(
             (
                 f"\\vec w = \\vec r_2 - \\vec r_1 = {vec(w)},\\quad \\vec e_1 \\times "
-                f"\\vec e_2 = {num(det)}",
-                f"s_1 = \\frac{{\\vec w \\times \\vec e_2}}{{\\vec e_1 \\times \\vec e_2}}"
-                f" = \\frac{{{num(cross(w, dirs[1]))}}}{{{num(det)}}} = {num(s1)},\\quad"
-                f" s_2 = \\frac{{\\vec w \\times \\vec e_1}}{{\\vec e_1 \\times \\vec e_2}}"
+                "\\vec e_2 = "
+                f"{num(det)}",
+                "s_1 = \\frac{\\vec w \\times \\vec e_2}"
+                "{\\vec e_1 \\times \\vec e_2}"
+                f" = \\frac{{{num(cross(w, dirs[1]))}}}{{{num(det)}}} = {num(s1)},"
+                "\\quad"
+                " s_2 = \\frac{\\vec w \\times \\vec e_1}"
+                "{\\vec e_1 \\times \\vec e_2}"
                 f" = \\frac{{{num(cross(w, dirs[0]))}}}{{{num(det)}}} = {num(s2)}",
                 f"\\vec r_{{{c}}} = \\vec r_1 + s_1 \\vec e_1 = {vec(pc)}",
             )
@@ -186,9 +192,11 @@ def _rpr(pos: Position, s: DyadSolver) -> list[Block]:
         ),
         Display(
             (
-                f"\\vec D = \\vec r_{{{phn}}} - \\vec r_{{{pgn}}} = {vec(dvec)},\\quad "
+                f"\\vec D = \\vec r_{{{phn}}} - \\vec r_{{{pgn}}} = "
+                f"{vec(dvec)},\\quad "
                 f"|\\vec D| = {num(dist)},\\quad \\theta_D = {deg(theta)}",
-                f"\\psi = \\arccos\\frac{{c_0}}{{|\\vec D|}} = \\arccos\\frac{{{num(c0)}}}"
+                "\\psi = \\arccos\\frac{c_0}{|\\vec D|} = "
+                f"\\arccos\\frac{{{num(c0)}}}"
                 f"{{{num(dist)}}} = {deg(psi)}",
                 f"\\theta_n = \\theta_D {sign} \\psi = {deg(normal)},\\quad "
                 f"\\Delta\\varphi = \\theta_n - \\nu = {deg(normal - nu)}",

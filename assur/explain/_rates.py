@@ -216,7 +216,8 @@ def _system(names: list[str], a: Array, rhs: Array) -> tuple[list[str], list[flo
     ]
     values = [t / det for t in top]
     lines.append(
-        f"\\Delta = {par(a[0, 0], ref)} \\cdot {par(a[1, 1], ref)} - {par(a[0, 1], ref)}"
+        f"\\Delta = {par(a[0, 0], ref)} \\cdot {par(a[1, 1], ref)} - "
+        f"{par(a[0, 1], ref)}"
         f" \\cdot {par(a[1, 0], ref)} = {num(det, ref * ref)}"
     )
     for i in (0, 1):
@@ -318,7 +319,9 @@ def point_lines(
         else:
             lines.append(
                 f"\\vec a_{{{x}}} = \\vec a_{{{label}}} + \\varepsilon_{{{link}}} "
-                f"\\times \\vec r_{{{label}{x}}} - \\omega_{{{link}}}^2 \\vec r_{{{label}"
+                ""
+                f"\\times \\vec r_{{{label}{x}}} - \\omega_{{{link}}}^2 "
+                f"\\vec r_{{{label}"
                 f"{x}}} = {vec(here)} + {par(eps)} \\cdot {vec(perp(r))} - {par(w)}^2 "
                 f"\\cdot {vec(r)} = {vec(value)},\\quad a_{{{x}}} = "
                 f"{num(math.hypot(*value))}"
