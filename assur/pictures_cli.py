@@ -263,17 +263,17 @@ def _cmd_plans(args: argparse.Namespace) -> int:
     mech = load_mechanism(args.file)
     angle = _one_position(mech, args.angle)
     loaded = not compile_loads(plan_of(mech)).empty
+    at = np.asarray(angle, dtype=float).reshape(1, -1)
+    t = _table(mech, at if at.shape[1] > 1 else at[:, 0], loaded)
     makers = {
-        "velocity_plan": lambda: plotting.velocity_plan(mech, angle).figure,
-        "acceleration_plan": lambda: plotting.acceleration_plan(mech, angle).figure,
-        "instant_centres": lambda: plotting.instant_centres(mech, angle).figure,
+        "velocity_plan": lambda: plotting.velocity_plan(t).figure,
+        "acceleration_plan": lambda: plotting.acceleration_plan(t).figure,
+        "instant_centres": lambda: plotting.instant_centres(t).figure,
     }
     if loaded:
-        makers["force_polygons"] = lambda: plotting.force_polygons(mech, angle)
+        makers["force_polygons"] = lambda: plotting.force_polygons(t)
         if len(mech.drivers) == 1:
-            makers["zhukovsky_lever"] = lambda: (
-                plotting.zhukovsky_lever(mech, angle).figure
-            )
+            makers["zhukovsky_lever"] = lambda: plotting.zhukovsky_lever(t).figure
     written = []
     with _figures(), output_folder(out, any_error=True) as folder:
         for name in PLANS:

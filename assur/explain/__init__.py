@@ -19,7 +19,7 @@ from assur.explain._inertia_text import inertia_blocks
 from assur.explain._kinematics_text import kinematics_blocks
 from assur.explain._lever import driver_blocks, lever_blocks
 from assur.explain._note import Block, Note, Para
-from assur.explain._position import position
+from assur.explain._solve import position
 from assur.explain._structure_text import structure_blocks
 from assur.explain._tex import plain
 from assur.model import Mechanism

@@ -9,21 +9,23 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from assur._kinematics import motions
 from assur._loads import LoadPlan, compile_loads
 from assur._vec import Array
-from assur.analysis import Table, forces, kinematics
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.kinetostatics import Applied, Reverse, applied_loads, reverse
 from assur.model import Mechanism
-from assur.plan import Plan, plan_of
+from assur.plan import Plan
 
-__all__ = ["Position", "at", "position", "value"]
+if TYPE_CHECKING:
+    from assur.table import Table
+
+__all__ = ["Position", "at", "from_table", "value"]
 
 
 def value(leaf: Any) -> float:
@@ -143,27 +145,29 @@ def unit(v: Array) -> Array:
     return v / length if length > 0 else v
 
 
-def position(mech: Mechanism, angle: Any) -> Position:
-    """Solve ``mech`` at one driver position (deg, or m; one value per driver).
+def from_table(table: Table, row: int = 0) -> Position:
+    """Return the solved mechanism at ``row`` of a kinematics or forces table."""
+    table_row = table if len(table) == 1 else _one_row(table, row)
+    plan = table_row.plan
+    bodies = motions(plan, table_row.state)
+    loads = compile_loads(plan)
+    if table_row.force_state is None or loads.empty:
+        return Position(table_row, bodies, None, None, loads)
+    applied = applied_loads(plan, loads, bodies, table_row.state)
+    return Position(table_row, bodies, applied, reverse(plan, bodies, applied), loads)
 
-    A mechanism without masses and loads gets its kinematics only.
 
-    Raises
-    ------
-    AssemblyError
-        When the mechanism cannot be assembled there.
-    """
-    given = np.asarray(angle, dtype=float).reshape(1, -1)
-    angles = given if given.shape[1] > 1 else given[:, 0]
-    loads = compile_loads(plan_of(mech))
-    if loads.empty:
-        table = kinematics(mech, angles)
-        return Position(table, motions(table.plan, table.state), None, None, loads)
-    table = forces(mech, angles)
-    plan = table.plan
-    bodies = motions(plan, table.state)
-    applied = applied_loads(plan, loads, bodies, table.state)
-    return Position(table, bodies, applied, reverse(plan, bodies, applied), loads)
+def _one_row(table: Table, row: int) -> Table:
+    """Return a table of the one row ``row`` (its states cut to that row)."""
+    rows = slice(row, row + 1)
+    force = None if table.force_state is None else table.force_state.rows(rows)
+    return type(table)(
+        table.plan,
+        table.schema,
+        table.given[rows],
+        table.state.rows(rows),
+        force,
+    )
 
 
 __all__ += ["cross", "perp", "unit"]

@@ -16,13 +16,13 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur.explain._loads_text import link_loads, own_loads
-from assur.explain._position import Position, position
+from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
 from assur.groups._dyad import DyadSolver
 from assur.plotting._geometry import _nice
 
 if TYPE_CHECKING:
-    from assur.model import Mechanism
+    from assur.table import Table
 
 __all__ = [
     "acceleration_plan",
@@ -166,21 +166,23 @@ def _title(pos: Position, what: str) -> str:
     return f"{pos.mechanism.name or 'Mechanism'}: {what} at {angle}{unit}"
 
 
-def velocity_plan(mechanism: Mechanism, angle: Any, ax: Any = None) -> Any:
+def velocity_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
     """Draw the velocity plan at one driver position.
 
     Parameters
     ----------
-    mechanism : Mechanism
-    angle : float or sequence of float
-        Driver position, deg (m for a prismatic driver).
+    table : Table
+        A kinematics or forces table (a forces table for the polygons and lever).
+    angle : float or sequence of float, optional
+        Driver position, deg (m for a prismatic driver): the nearest row (default
+        the first).
     ax : matplotlib Axes, optional
 
     Returns
     -------
     matplotlib.axes.Axes
     """
-    pos = position(mechanism, angle)
+    pos = _pos(table, angle)
     found = images(pos, 1)
     mu = _scale(list(found.values()))
     ax = _axes(ax, _title(pos, "velocity plan"))
@@ -190,12 +192,12 @@ def velocity_plan(mechanism: Mechanism, angle: Any, ax: Any = None) -> Any:
     return ax
 
 
-def acceleration_plan(mechanism: Mechanism, angle: Any, ax: Any = None) -> Any:
+def acceleration_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
     """Draw the acceleration plan: images, and each dyad's parts as arrows.
 
     Parameters and Returns are those of :func:`velocity_plan`.
     """
-    pos = position(mechanism, angle)
+    pos = _pos(table, angle)
     found = images(pos, 2)
     mu = _scale(list(found.values()))
     ax = _axes(ax, _title(pos, "acceleration plan"))
@@ -205,7 +207,7 @@ def acceleration_plan(mechanism: Mechanism, angle: Any, ax: Any = None) -> Any:
     return ax
 
 
-def force_polygons(mechanism: Mechanism, angle: Any) -> Any:
+def force_polygons(table: Table, angle: Any = None) -> Any:
     """Draw the force polygon of every Assur group (reverse order), closed.
 
     Each polygon runs through the known loads on the group's first link and its
@@ -218,7 +220,10 @@ def force_polygons(mechanism: Mechanism, angle: Any) -> Any:
     """
     import matplotlib.pyplot as plt
 
-    pos = position(mechanism, angle)
+    from assur.plotting._context import _need_forces
+
+    _need_forces(table, "force_polygons")
+    pos = _pos(table, angle)
     assert pos.result is not None
     records = pos.result.groups
     fig, axes = plt.subplots(1, len(records), figsize=(5.5 * len(records), 5.2),
@@ -279,14 +284,14 @@ def _outer(pos: Position, rec: Any, body: int) -> list[Any]:
     ]
 
 
-def lever_balance(mechanism: Mechanism, angle: Any) -> float:
+def lever_balance(table: Table, angle: Any = None) -> float:
     """Return the balancing load read off Zhukovsky's lever (one driver), N m or N.
 
     The sum of the moments about the pole of every load at its image point (the
     velocity plan turned by +90 degrees) and of the inertia torques' terms, divided
     by the driver's speed.
     """
-    pos = position(mechanism, angle)
+    pos = _pos(table, angle)
     total, speed = _lever_moment(pos)
     return -total / speed
 
@@ -310,7 +315,7 @@ def _lever_moment(pos: Position) -> tuple[float, float]:
     return total, speed
 
 
-def zhukovsky_lever(mechanism: Mechanism, angle: Any, ax: Any = None) -> Any:
+def zhukovsky_lever(table: Table, angle: Any = None, ax: Any = None) -> Any:
     """Draw Zhukovsky's lever: the velocity plan turned by 90 degrees, the loads on it.
 
     Every force acts at its point's image; the balancing force at the input link's
@@ -320,7 +325,7 @@ def zhukovsky_lever(mechanism: Mechanism, angle: Any, ax: Any = None) -> Any:
     -------
     matplotlib.axes.Axes
     """
-    pos = position(mechanism, angle)
+    pos = _pos(table, angle)
     found = {n: np.array([-v[1], v[0]]) for n, v in images(pos, 1).items()}
     mu = _scale(list(found.values()))
     ax = _axes(ax, _title(pos, "Zhukovsky's lever"))
@@ -351,7 +356,7 @@ def zhukovsky_lever(mechanism: Mechanism, angle: Any, ax: Any = None) -> Any:
     return ax
 
 
-def instant_centres(mechanism: Mechanism, angle: Any, ax: Any = None) -> Any:
+def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
     """Draw the mechanism with its instant centres: absolute and relative (Kennedy).
 
     The absolute centre of a link is where its velocity is zero; the relative centre
@@ -364,7 +369,7 @@ def instant_centres(mechanism: Mechanism, angle: Any, ax: Any = None) -> Any:
     """
     from assur.plotting.mechanism import draw
 
-    pos = position(mechanism, angle)
+    pos = _pos(table, angle)
     table = pos.table
     ax = draw(table, ax=ax)
     centres = relative_centres(pos)
@@ -415,6 +420,13 @@ def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:
             q = rhs / (wi - wj)  # = perp(P)
             out[(i, j)] = np.array([q[1], -q[0]])
     return out
+
+
+def _pos(table: Table, angle: Any) -> Position:
+    """Return the solved mechanism at the row of ``table`` nearest to ``angle``."""
+    from assur.plotting._context import _row
+
+    return from_table(table, _row(table, angle))
 
 
 def _perp(v: np.ndarray) -> np.ndarray:
