@@ -25,6 +25,7 @@ from assur.errors import (
     SingularConfigurationError,
     UsageError,
 )
+from assur.explain import Note, explain
 from assur.io import dumps, load, loads, save
 from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
 
@@ -44,6 +45,7 @@ __all__ = [
     "LoadTable",
     "Mechanism",
     "ModelError",
+    "Note",
     "OutputError",
     "Point",
     "SelfLockingError",
@@ -55,6 +57,7 @@ __all__ = [
     "__version__",
     "catalog",
     "dumps",
+    "explain",
     "forces",
     "graph",
     "kinematics",

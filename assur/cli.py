@@ -1,4 +1,4 @@
-"""Command line: ``assur structure|kinematics|forces|plot|diagrams|animate|report``.
+"""Command line: ``assur structure|kinematics|forces|explain|plot|diagrams|...``.
 
 A thin edge over the library: it parses arguments, reads the mechanism file, runs the
 analysis and writes text, CSV or JSON. Any error of the input, of an option or of an
@@ -100,6 +100,27 @@ def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
             action="store_true",
             help="leave out positions that cannot be assembled",
         )
+    p = sub.add_parser("explain", help="the analysis at one position, step by step")
+    p.add_argument("file", type=Path)
+    p.add_argument(
+        "--angle",
+        metavar="DEG",
+        help="driver position, deg (m for a prismatic driver; one per driver, "
+        "separated by commas); default: the reference pose",
+    )
+    p.add_argument(
+        "-o",
+        "--output",
+        metavar="PATH",
+        help="write the note to PATH: .md (Markdown), .html (MathML) or .tex "
+        "(LaTeX); default: Markdown on standard output",
+    )
+    p.add_argument(
+        "--answers",
+        metavar="TOML",
+        type=Path,
+        help="given answers to compare with (a table [answers] of quantity = value)",
+    )
     _add_picture_commands(sub)
     for p in sub.choices.values():
         # after the command too; SUPPRESS keeps an earlier --quiet
@@ -270,6 +291,47 @@ def _cmd_structure(args: argparse.Namespace) -> int:
             raise UsageError(str(err)) from err  # the option, not the file
         raise
     _say(json.dumps(s.to_dict(), indent=2) if args.json else str(s))
+    return 0
+
+
+NOTE_SUFFIXES = (".md", ".markdown", ".html", ".htm", ".tex")
+"""File types of ``assur explain -o``."""
+
+
+def _cmd_explain(args: argparse.Namespace) -> int:
+    from assur.analysis import default_positions
+    from assur.explain import explain, read_answers
+
+    if args.output is not None:
+        suffix = Path(args.output).suffix.lower()
+        if suffix not in NOTE_SUFFIXES:
+            msg = (
+                f"-o {path_text(args.output)}: unknown type of note "
+                f"{describe(suffix or '(none)')}; expected .md, .html or .tex"
+            )
+            raise UsageError(msg)
+        check_not_input("-o", args.output, args.file)
+    mech = load_mechanism(args.file)
+    drivers = max(1, len(mech.drivers))
+    if args.angle is None:
+        angle = default_positions(mech)[0]
+    else:
+        found = parse_angles(args.angle, drivers, option="--angle")
+        if found.shape[0] != 1:
+            msg = (
+                f"--angle {describe(args.angle)[1:-1]}: {found.shape[0]} positions; "
+                "expected one value per driver"
+            )
+            raise UsageError(msg)
+        angle = found[0]
+    answers, source = read_answers(args.answers) if args.answers else (None, "")
+    note = explain(mech, angle, answers, source)
+    if args.output is None:
+        _say(str(note).rstrip("\n"))
+        return 0
+    note.write(args.output)
+    if not _quiet(args):
+        print(f"wrote {path_text(args.output)}")
     return 0
 
 

@@ -1,4 +1,4 @@
-"""Command line for pictures: ``assur plot|diagrams|animate|report``.
+"""Command line for pictures: ``assur plot|diagrams|animate|plans|report``.
 
 :mod:`assur.cli` calls :func:`register` to add these commands. Each handler reads the
 mechanism file, runs the analysis and writes pictures with matplotlib's Agg backend,
@@ -69,6 +69,12 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         help="draw inertia loads, joint reactions and balancing load",
     )
     p.add_argument("--scale", type=float, metavar="N", help="force scale: N per cm")
+    p.add_argument(
+        "--group",
+        type=int,
+        metavar="N",
+        help="draw the free-body diagram of Assur group N (1: the first attached)",
+    )
     p.add_argument("--no-labels", action="store_true", help="leave out the names")
     p = sub.add_parser("diagrams", help="write PNG diagrams over a sweep to a folder")
     _common(
@@ -97,6 +103,16 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         help=f"frames per second (default 20, {FPS_RANGE[0]:g} to {FPS_RANGE[1]:g})",
     )
     p.add_argument("--forces", action="store_true", help="draw the loads and reactions")
+    p = sub.add_parser(
+        "plans", help="velocity, acceleration and force plans, lever, instant centres"
+    )
+    _common(p, "DIR", "folder for the plans, each as PNG and SVG", DPI)
+    p.add_argument(
+        "--angle",
+        metavar="DEG",
+        help="driver position, deg (m for a prismatic driver; one per driver, "
+        "separated by commas); default: the reference pose",
+    )
     p = sub.add_parser("report", help="write an HTML report of the analysis")
     _common(p, "PATH", "HTML file to write")
     p.add_argument("--angles", **angles)
@@ -105,6 +121,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "diagrams": _cmd_diagrams,
         "animate": _cmd_animate,
         "report": _cmd_report,
+        "plans": _cmd_plans,
     }
 
 
@@ -207,9 +224,75 @@ def _show(args: argparse.Namespace) -> bool:
     return terminal() and not getattr(args, "quiet", False)
 
 
+PLANS = (
+    "velocity_plan",
+    "acceleration_plan",
+    "force_polygons",
+    "zhukovsky_lever",
+    "instant_centres",
+)
+"""Names of the plans ``assur plans`` writes (each as .png and .svg)."""
+
+
+def _one_position(mech: Any, spec: str | None) -> Any:
+    """Return the one driver position of ``--angle`` (default: the reference pose)."""
+    from assur.analysis import default_positions
+
+    if spec is None:
+        return default_positions(mech)[0]
+    found = parse_angles(spec, max(1, len(mech.drivers)), option="--angle")
+    if found.shape[0] != 1:
+        msg = (
+            f"--angle {describe(spec)[1:-1]}: {found.shape[0]} positions; expected "
+            "one value per driver"
+        )
+        raise UsageError(msg)
+    return found[0]
+
+
+def _cmd_plans(args: argparse.Namespace) -> int:
+    from assur import plotting
+    from assur._loads import compile_loads
+    from assur.plan import plan_of
+
+    dpi = _check_dpi(args, DPI_RANGE)
+    out: Path = args.output
+    if out.exists() and not out.is_dir():
+        msg = f"-o {path_text(out)}: is a file; expected a folder for the plans"
+        raise UsageError(msg)
+    mech = load_mechanism(args.file)
+    angle = _one_position(mech, args.angle)
+    loaded = not compile_loads(plan_of(mech)).empty
+    at = np.asarray(angle, dtype=float).reshape(1, -1)
+    t = _table(mech, at if at.shape[1] > 1 else at[:, 0], loaded)
+    makers = {
+        "velocity_plan": lambda: plotting.velocity_plan(t).figure,
+        "acceleration_plan": lambda: plotting.acceleration_plan(t).figure,
+        "instant_centres": lambda: plotting.instant_centres(t).figure,
+    }
+    if loaded:
+        makers["force_polygons"] = lambda: plotting.force_polygons(t)
+        if len(mech.drivers) == 1:
+            makers["zhukovsky_lever"] = lambda: plotting.zhukovsky_lever(t).figure
+    written = []
+    with _figures(), output_folder(out, any_error=True) as folder:
+        for name in PLANS:
+            if name not in makers:
+                continue
+            fig = makers[name]()
+            for suffix in (".png", ".svg"):
+                fig.savefig(folder / f"{name}{suffix}", dpi=dpi, bbox_inches="tight")
+                written.append(f"{name}{suffix}")
+            _pyplot().close(fig)
+    for name in written:
+        _wrote(args, path_text(out / name))
+    return 0
+
+
 def _cmd_plot(args: argparse.Namespace) -> int:
     from assur.analysis import default_positions
-    from assur.plotting import draw
+    from assur.plan import plan_of
+    from assur.plotting import draw, draw_free_body
 
     output = _output(args, PICTURE_SUFFIXES)
     dpi = _check_dpi(args, DPI_RANGE)
@@ -228,6 +311,21 @@ def _cmd_plot(args: argparse.Namespace) -> int:
                 "expected one value per driver"
             )
             raise UsageError(msg)
+    if args.group is not None:
+        count = len(plan_of(mech).groups)
+        if not 1 <= args.group <= count:
+            msg = (
+                f"--group {args.group}: the mechanism has {count} Assur group(s); "
+                f"expected 1 to {count}"
+            )
+            raise UsageError(msg)
+        table = _table(mech, position, True)
+        with _figures() as plt:
+            fig, ax = plt.subplots(figsize=(9.0, 6.5), layout="constrained")
+            draw_free_body(table, args.group - 1, ax=ax, scale=args.scale)
+            _save(fig, output, dpi)
+        _wrote(args, path_text(output))
+        return 0
     table = _table(mech, position, args.forces)
     with _figures() as plt:
         fig, ax = plt.subplots(figsize=(9.0, 6.0), layout="constrained")

@@ -115,7 +115,7 @@ API_MODULES = [
     "assur.errors",
 ]
 # Modules that may not exist in every checkout get a page once they do.
-OPTIONAL_API_MODULES = ["assur.plotting", "assur.html"]
+OPTIONAL_API_MODULES = ["assur.plotting", "assur.html", "assur.explain"]
 API_DIR = HERE / "api" / "generated"
 
 

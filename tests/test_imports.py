@@ -47,6 +47,8 @@ RANKS = {
     "assur._csvtext": 10,
     "assur.plotting": 10,
     "assur.html": 10,
+    # the explanatory note reads the analysis like the pictures do
+    "assur.explain": 10,
     # ready-made mechanisms for users and examples: model objects, never core input
     "assur.catalog": 10,
     # the public API re-exports the core and io

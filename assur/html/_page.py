@@ -44,11 +44,33 @@ def assemble_page(
         "structure": structure_html(struct, data),
         "table_title": "Reactions and balancing load" if forced else "Kinematics",
         "table": table_html(plan, table),
+        "note": note_html(plan, table),
         "data": to_json(data),
         "css": _asset("report.css"),
         "script": _asset("report.js"),
     }
     return Template(_asset("page.html")).substitute(fields)
+
+
+def note_html(plan: Plan, table: Table) -> str:
+    """Return the note of the first position: the analysis written out (MathML).
+
+    The first row of the sweep is the driver position the note explains.
+    """
+    from html import escape as esc
+
+    from assur.explain import explain
+    from assur.explain._html import html_body
+
+    if len(table) == 0:
+        return ""
+    given = table.given[0]
+    note = explain(plan.mechanism, given if given.shape[0] > 1 else float(given[0]))
+    where = ", ".join(f"{x:g}" for x in given)
+    return (
+        '<section class="card wide" id="note">\n<h2>The analysis at the first '
+        f"position ({esc(where)}), step by step</h2>\n{html_body(note)}\n</section>"
+    )
 
 
 def drawing_height(bounds: list[float]) -> int:

@@ -24,15 +24,27 @@ from assur.plotting.decomposition import draw_decomposition, draw_free_body
 from assur.plotting.diagrams import plot_motion, plot_paths
 from assur.plotting.force_diagrams import plot_hodographs, plot_shaking, plot_torque
 from assur.plotting.mechanism import draw
+from assur.plotting.plans import (
+    acceleration_plan,
+    force_polygons,
+    instant_centres,
+    velocity_plan,
+    zhukovsky_lever,
+)
 
 __all__ = [
+    "acceleration_plan",
     "animate",
     "draw",
     "draw_decomposition",
     "draw_free_body",
+    "force_polygons",
+    "instant_centres",
     "plot_hodographs",
     "plot_motion",
     "plot_paths",
     "plot_shaking",
     "plot_torque",
+    "velocity_plan",
+    "zhukovsky_lever",
 ]

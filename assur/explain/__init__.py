@@ -1,0 +1,88 @@
+"""The analysis at one driver position written out as a student writes it by hand.
+
+:func:`explain` solves the mechanism at one position and words every step: the
+structure, each group's position, velocity and acceleration equations with their
+numbers, the inertia loads, each group's equilibrium in the reverse order, the input
+link's balancing load and its check by Zhukovsky's lever. The :class:`Note` it
+returns is Markdown (``str()``), HTML with MathML or LaTeX.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from assur._structure import structure
+from assur.explain._answers import answer_blocks, read_answers
+from assur.explain._forces_text import forces_blocks
+from assur.explain._inertia_text import inertia_blocks
+from assur.explain._kinematics_text import kinematics_blocks
+from assur.explain._lever import driver_blocks, lever_blocks
+from assur.explain._note import Block, Note, Para
+from assur.explain._solve import position
+from assur.explain._structure_text import structure_blocks
+from assur.explain._tex import plain
+from assur.model import Mechanism
+
+__all__ = ["Note", "explain", "read_answers"]
+
+
+def explain(
+    mechanism: Mechanism,
+    angle: Any,
+    answers: Mapping[str, float] | None = None,
+    source: str = "",
+) -> Note:
+    """Return the analysis of ``mechanism`` at driver position ``angle``, explained.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+    angle : float or sequence of float
+        Driver position, deg (m for a prismatic driver); one value per driver.
+    answers : mapping of str to float, optional
+        Given answers to compare with (a textbook's), by table column or magnitude
+        (``"rod.G.a"``, ``"rod.Fi"``, ``"C.v"``): see :func:`read_answers`.
+    source : str
+        Where the given answers come from, for the note's words.
+
+    Returns
+    -------
+    Note
+        ``str(note)`` is Markdown; ``note.to_html()`` and ``note.to_latex()`` the same
+        note as a self-contained page and as a LaTeX report.
+
+    Raises
+    ------
+    AssemblyError
+        When the mechanism cannot be assembled at ``angle``.
+    ModelError
+        When an answer names no quantity of the mechanism.
+
+    Examples
+    --------
+    >>> from assur import catalog
+    >>> note = explain(catalog.slider_crank(), 45.0)
+    >>> str(note).startswith("# ")
+    True
+    """
+    pos = position(mechanism, angle)
+    blocks: list[Block] = []
+    blocks += structure_blocks(structure(mechanism))
+    blocks += kinematics_blocks(pos)
+    if pos.result is None:
+        blocks.append(
+            Para(
+                "No link has a mass and no load is applied: the force analysis has "
+                "nothing to find."
+            )
+        )
+    else:
+        blocks += inertia_blocks(pos)
+        blocks += forces_blocks(pos)
+        blocks += driver_blocks(pos)
+        blocks += lever_blocks(pos)
+    if answers:
+        blocks += answer_blocks(pos, answers, source)
+    title = f"{plain(mechanism.name or 'Mechanism')}: the analysis explained"
+    return Note(title, tuple(blocks), {})

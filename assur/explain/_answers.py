@@ -1,0 +1,134 @@
+"""Given answers (a textbook's, a student's) compared with the note's, slips found.
+
+Answers are keyed by table column (``rod.alpha``, ``B.F``) or by a magnitude:
+``P.v`` and ``P.a`` for a point's speed and acceleration (``rod.G.a`` for a centre
+of mass) and ``L.Fi`` for a link's inertia force. Where a given inertia force
+differs from the note's but the given acceleration of the same link agrees, the
+given force is not ``m a_G`` of its own acceleration: a slip in the multiplication.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tomllib
+from collections.abc import Mapping
+
+from assur.errors import ModelError
+from assur.explain._note import Block, Display, Grid, Heading, Para
+from assur.explain._position import Position
+from assur.explain._tex import name, num, plain
+
+__all__ = ["AGREE", "answer_blocks", "computed", "read_answers"]
+
+AGREE = 5e-4
+"""Relative difference within which a given answer agrees (its printed digits)."""
+
+
+def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
+    """Read a TOML file of given answers: ``[answers]`` and an optional ``source``.
+
+    Raises
+    ------
+    ModelError
+        When the file cannot be read or an answer is not a number.
+    """
+    where = os.fspath(path)
+    try:
+        with open(path, "rb") as stream:
+            data = tomllib.load(stream)
+    except (OSError, tomllib.TOMLDecodeError) as err:
+        msg = f"{where}: cannot read the answers ({err})"
+        raise ModelError(msg) from err
+    table = data.get("answers")
+    if not isinstance(table, dict) or not table:
+        msg = f"{where}: expected a table [answers] of quantity = value"
+        raise ModelError(msg)
+    answers = {}
+    for key, value in table.items():
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            msg = f"{where}: answers.{key}: expected a number, got {value!r}"
+            raise ModelError(msg)
+        answers[str(key)] = float(value)
+    return answers, str(data.get("source", ""))
+
+
+def computed(pos: Position, key: str) -> float:
+    """Return the note's value of quantity ``key`` (see the module's keys).
+
+    Raises
+    ------
+    ModelError
+        When ``key`` names no quantity of the mechanism.
+    """
+    table = pos.table
+    if key in table.columns:
+        return float(table[key][0])
+    owner, _, what = key.rpartition(".")
+    pairs = {"v": ("vx", "vy"), "a": ("ax", "ay"), "Fi": ("Fi.x", "Fi.y")}
+    if what in pairs and f"{owner}.{pairs[what][0]}" in table.columns:
+        x, y = (float(table[f"{owner}.{c}"][0]) for c in pairs[what])
+        return math.hypot(x, y)
+    msg = (
+        f"answers.{key}: no such quantity; expected a table column, 'P.v' or 'P.a' "
+        "(a point's speed, acceleration) or 'L.Fi' (a link's inertia force)"
+    )
+    raise ModelError(msg)
+
+
+def _slip(pos: Position, link: str, given: Mapping[str, float]) -> str | None:
+    """Say why a given inertia force of ``link`` differs, when its aG agrees."""
+    force, accel = given.get(f"{link}.Fi"), given.get(f"{link}.G.a")
+    if force is None or accel is None:
+        return None
+    mass = float(pos.loads.mass[pos.plan.body(link)])
+    ours_a = computed(pos, f"{link}.G.a")
+    ours_f = mass * ours_a
+    if abs(accel - ours_a) > AGREE * ours_a or abs(force - ours_f) <= AGREE * ours_f:
+        return None
+    theirs = mass * accel
+    return (
+        f"The given $F_{{i,{name(link)}}} = {force:g}$ N is not $m a_G$ of the given "
+        f"$a_G = {accel:g}\\ \\mathrm{{m/s^2}}$: $m a_G = {mass:g} \\cdot {accel:g} "
+        f"= {theirs:.3f}$ N, "
+        f"and with the exact acceleration $m a_G = {mass:g} \\cdot {ours_a:.3f} = "
+        f"{ours_f:.3f}$ N. The acceleration agrees; the difference of "
+        f"{force - ours_f:+.2f} N is a slip in the given multiplication."
+    )
+
+
+def answer_blocks(
+    pos: Position, given: Mapping[str, float], source: str
+) -> list[Block]:
+    """Return the comparison of the given answers with the note's values."""
+    rows = []
+    for key, value in given.items():
+        ours = computed(pos, key)
+        diff = (value - ours) / ours if ours else float(value != 0.0)
+        verdict = "agrees" if abs(diff) <= AGREE else "differs"
+        rows.append(
+            (
+                plain(key),
+                f"${value:g}$",
+                f"${num(ours)}$",
+                f"${100 * diff:+.3f}$ %",
+                verdict,
+            )
+        )
+    blocks: list[Block] = [
+        Heading(2, "7. The given answers"),
+        Para(
+            f"The answers of {plain(source) or 'the given solution'} against the ones "
+            f"above (they agree within {100 * AGREE:g} %, the digits such answers "
+            "are printed with):"
+        ),
+        Grid(("quantity", "given", "here", "difference", ""), tuple(rows)),
+    ]
+    links = {k[: -len(".Fi")] for k in given if k.endswith(".Fi")}
+    for link in sorted(links):
+        text = _slip(pos, link, given)
+        if text:
+            blocks.append(Para(text))
+    if not any(r[4] == "differs" for r in rows):
+        blocks.append(Display(("\\text{every given answer agrees}",)))
+    return blocks

@@ -1,0 +1,377 @@
+"""Each group's equilibrium in the reverse order, in the textbook's sequence.
+
+A dyad with a revolute middle joint (RRR, RRP, PRP): each outer revolute reaction is
+split into a normal part along its link and a tangential part across it; the moment
+of each link about the middle joint gives the tangential part, the force polygon of
+the group the two unknown magnitudes left, one link's force sum the middle reaction,
+and a slider's moment where its guide's reaction acts. A dyad with a sliding middle
+pair (RPR, RPP): the moments of each link about its outer pin (or a slider's force
+sum along its guide) give the middle pair's normal force and couple, then each link's
+force sum its outer reaction. Larger groups: the linear system of
+:meth:`~assur.groups._protocol.Equilibrium.equations` with its numbers.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from assur._vec import Array
+from assur.explain._loads_text import (
+    Load,
+    force_lines,
+    link_loads,
+    moment_line,
+    total,
+)
+from assur.explain._note import Block, Display, Heading, Para
+from assur.explain._position import Position, cross, perp, unit
+from assur.explain._tex import name, num, par, plain, text, vec
+from assur.groups._dyad import DyadSolver
+from assur.groups._pairs import PairPlan
+from assur.groups._protocol import Equilibrium
+
+__all__ = ["force_symbol", "forces_blocks"]
+
+
+def force_symbol(pos: Position, by: int, on: int) -> str:
+    """Return the symbol of the force of link ``by`` on link ``on``: F_{by,on}."""
+    return f"F_{{{name(pos.link(by))},{name(pos.link(on))}}}"
+
+
+def _cramer(names: list[str], a: Array, rhs: Array) -> tuple[list[str], list[float]]:
+    """Return the component equations of ``a x = rhs`` (2x2) solved with numbers."""
+    det = float(a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0])
+    tops = [
+        float(rhs[0] * a[1, 1] - a[0, 1] * rhs[1]),
+        float(a[0, 0] * rhs[1] - rhs[0] * a[1, 0]),
+    ]
+    ref = float(np.abs(a).max())
+    lines = [
+        f"{axis}:\\ {num(a[i, 0], ref)}\\,{names[0]} + {par(a[i, 1], ref)}\\,{names[1]}"
+        f" = {num(rhs[i])}"
+        for i, axis in enumerate("xy")
+    ]
+    lines.append(
+        f"\\Delta = {par(a[0, 0], ref)} \\cdot {par(a[1, 1], ref)} - "
+        f"{par(a[0, 1], ref)}"
+        f" \\cdot {par(a[1, 0], ref)} = {num(det, ref * ref)}"
+    )
+    values = [t / det for t in tops]
+    for i in (0, 1):
+        lines.append(
+            f"{names[i]} = \\frac{{{num(tops[i])}}}{{{num(det, ref * ref)}}} = "
+            f"{num(values[i])}"
+        )
+    return lines, values
+
+
+def _known(pos: Position, bodies: tuple[int, ...], solved: set[int]) -> list[Block]:
+    """List the known loads on each link of a group."""
+    blocks: list[Block] = []
+    for b in bodies:
+        lines = force_lines(link_loads(pos, b, solved))
+        if lines:
+            blocks += [
+                Para(f"Known loads on {plain(pos.link(b))}:"),
+                Display(tuple(lines)),
+            ]
+    return blocks
+
+
+def _revolute_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Block]:
+    """RRR, RRP, PRP: tangential parts, the force polygon, the middle reaction."""
+    m = pos.pair_point(s.mid)
+    mid = name(s.mid.name)
+    blocks: list[Block] = []
+    loads = [link_loads(pos, b, solved) for b in s.bodies]
+    known_t = np.zeros(2)
+    dirs, names = [], []
+    parts: list[tuple[str, Array, Array]] = []
+    for b in (0, 1):
+        body, pair, known = s.bodies[b], s.ext[b], s.known[b]
+        symbol = force_symbol(pos, known, body)
+        if pair.kind == "R":
+            p = pos.point(known, s.d_known[b])
+            u = unit(m - p)
+            t = perp(u)
+            length = math.hypot(*(m - p))
+            line, total_m = moment_line(loads[b], m, mid)
+            ft = total_m / length
+            known_t += ft * t
+            j = name(pair.name)
+            blocks += [
+                Para(
+                    f"Moments of {plain(pos.link(body))} about {plain(s.mid.name)}: "
+                    "the "
+                    f"normal part $\\vec {symbol}^{{n}}$ (along {plain(pair.name)}"
+                    f"{plain(s.mid.name)}) and the reaction in {plain(s.mid.name)} "
+                    f"pass through {plain(s.mid.name)}; the tangential part "
+                    f"$\\vec {symbol}^{{t}} = {symbol}^{{t}}\\,\\vec t$, "
+                    f"$\\vec t = {vec(t)}$ (the link's direction $\\vec u = {vec(u)}$ "
+                    "turned by +90°), has the moment "
+                    f"$-{symbol}^{{t}}\\,l_{{{j}{mid}}}$:"
+                ),
+                Display(
+                    (
+                        line,
+                        f"{symbol}^{{t}} = \\frac{{\\sum M_{{{mid}}}}}"
+                        f"{{l_{{{j}{mid}}}}}"
+                        f" = \\frac{{{num(total_m)}}}{{{num(length)}}} = {num(ft)}\\ "
+                        "\\mathrm{N}",
+                    )
+                ),
+            ]
+            dirs.append(u)
+            names.append(f"{symbol}^{{n}}")
+            parts.append((symbol, u, t * ft))
+        else:
+            e = pos.turned(known, pair.axis or (1.0, 0.0))
+            n = perp(e)
+            dirs.append(n)
+            names.append(f"N_{{{name(pair.name)}}}")
+            parts.append((symbol, n, np.zeros(2)))
+    every = loads[0] + loads[1]
+    rhs = -(total(every) + known_t)
+    a = np.column_stack(dirs)
+    lines, values = _cramer(names, a, rhs)
+    blocks += [
+        Para(
+            "Force polygon of the group: the known forces, the tangential parts, and "
+            "two unknown magnitudes along known directions ("
+            + ", ".join(
+                f"${x}$ along ${vec(d)}$" for x, d in zip(names, dirs, strict=True)
+            )
+            + "):"
+        ),
+        Display(
+            (
+                f"\\sum \\vec F_{{known}} + \\sum \\vec F^{{t}} = {vec(-rhs)}"
+                "\\ \\mathrm{N}",
+                *lines,
+            )
+        ),
+    ]
+    outer = []
+    forces: list[Array] = []
+    for (symbol, d, tangential), x in zip(parts, values, strict=True):
+        f: Array = x * d + tangential
+        forces.append(f)
+        outer.append(
+            f"\\vec {symbol} = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
+            f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
+        )
+    first = s.bodies[0]
+    inner = -(total(loads[0]) + forces[0])
+    sym = force_symbol(pos, s.bodies[1], first)
+    blocks += [
+        Display(tuple(outer)),
+        Para(
+            f"Force sum of {plain(pos.link(first))} gives the reaction in "
+            f"{plain(s.mid.name)}:"
+        ),
+        Display(
+            (
+                f"\\vec {sym} = -\\left(\\sum \\vec F_{{known}} + \\vec "
+                ""
+                f"{force_symbol(pos, s.known[0], first)}\\right) = -\\left("
+                f"{vec(total(loads[0]))}"
+                f" + {vec(forces[0])}\\right) = {vec(inner)}\\ \\mathrm{{N}},\\quad "
+                f"{sym} = {num(math.hypot(*inner))}\\ \\mathrm{{N}}",
+            )
+        ),
+    ]
+    for b in (0, 1):
+        if s.ext[b].kind == "P":
+            on_slider = -inner if b == 1 else inner
+            middle = Load("", mid, m, on_slider)
+            blocks += _couple(pos, s.ext[b], s.bodies[b], loads[b] + [middle])
+    return blocks
+
+
+def _couple(pos: Position, pair: PairPlan, body: int, loads: list[Load]) -> list[Block]:
+    """Return the moment equation of a slider about its guide's point: the couple."""
+    q = pos.pair_point(pair)
+    j = name(pair.name)
+    sign = 1.0 if pair.second == body else -1.0
+    line, m = moment_line(loads, q, j)
+    couple = -m
+    e = pos.turned(pair.first, pair.axis or (1.0, 0.0))
+    force = -total(loads)
+    normal = float(np.dot(force, perp(e)))
+    shown = [
+        line,
+        f"M_{{{j}}} = -\\sum M_{{{j}}} = {num(couple)}\\ \\mathrm{{N\\,m}}",
+    ]
+    if abs(normal) > 1e-9 * max(1.0, math.hypot(*force)):
+        shown.append(
+            f"x_{{{j}}} = \\frac{{M_{{{j}}}}}{{N_{{{j}}}}} = \\frac{{{num(couple)}}}"
+            f"{{{num(normal)}}} = {num(couple / normal)}\\ \\mathrm{{m}}"
+        )
+    return [
+        Para(
+            f"Moments of {plain(pos.link(body))} about the point of "
+            f"{plain(pair.name)}: "
+            f"the couple $M_{{{j}}}$ of the guide's reaction (the normal force "
+            f"$N_{{{j}}}$ then acts $x_{{{j}}}$ along the guide from that point)"
+            + (
+                ""
+                if sign > 0
+                else "; the slider is the pair's first link, so the "
+                "pair's own couple is the opposite"
+            )
+            + ":"
+        ),
+        Display(tuple(shown)),
+    ]
+
+
+def _sliding_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Block]:
+    """RPR, RPP: the middle pair's normal force and couple, then outer reactions."""
+    loads = [link_loads(pos, b, solved) for b in s.bodies]
+    q = pos.pair_point(s.mid)
+    e = pos.turned(s.mid.first, s.mid.axis or (1.0, 0.0))
+    nm = perp(e)
+    j = name(s.mid.name)
+    rows, rhs, lines = [], [], []
+    for b in (0, 1):
+        body, pair, known = s.bodies[b], s.ext[b], s.known[b]
+        sgn = 1.0 if body == s.mid.second else -1.0
+        if pair.kind == "R":
+            p = pos.point(known, s.d_known[b])
+            line, total_m = moment_line(loads[b], p, name(pair.name))
+            arm = cross(q - p, nm)
+            rows.append([sgn * arm, sgn])
+            rhs.append(-total_m)
+            lines += [
+                line,
+                f"{par(sgn * arm)}\\,N_{{{j}}} + {par(sgn)}\\,M_{{{j}}} = "
+                f"{num(-total_m)}",
+            ]
+        else:
+            eb = pos.turned(known, pair.axis or (1.0, 0.0))
+            along = float(np.dot(total(loads[b]), eb))
+            rows.append([sgn * float(np.dot(nm, eb)), 0.0])
+            rhs.append(-along)
+            lines.append(
+                f"\\sum F \\cdot \\vec e = {num(along)},\\quad "
+                f"{par(sgn * float(np.dot(nm, eb)))}\\,N_{{{j}}} = {num(-along)}"
+            )
+    solved_lines, (normal, couple) = _cramer(
+        [f"N_{{{j}}}", f"M_{{{j}}}"], np.array(rows), np.array(rhs)
+    )
+    blocks: list[Block] = [
+        Para(
+            f"The sliding pair {plain(s.mid.name)} presses across its slide line "
+            f"(normal $\\vec n = {vec(nm)}$, force $N_{{{j}}}$ of "
+            f"{plain(pos.link(s.mid.first))} on {plain(pos.link(s.mid.second))} at "
+            f"$\\vec r_{{{j}}} = {vec(q)}$) with a couple $M_{{{j}}}$. One equation "
+            "per link leaves the outer reactions out: moments about its outer pin, or "
+            "forces along its guide:"
+        ),
+        Display(tuple(lines)),
+        Display(tuple(solved_lines[2:])),
+    ]
+    for b in (0, 1):
+        body, pair, known = s.bodies[b], s.ext[b], s.known[b]
+        sgn = 1.0 if body == s.mid.second else -1.0
+        middle = Load("", j, q, sgn * normal * nm, sgn * couple)
+        f = -(total(loads[b]) + middle.force)
+        symbol = force_symbol(pos, known, body)
+        blocks += [
+            Para(f"Force sum of {plain(pos.link(body))}:"),
+            Display(
+                (
+                    f"\\vec {symbol} = -\\left(\\sum \\vec F_{{known}} + N_{{{j}}}"
+                    f"\\vec n\\right) = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
+                    f"{num(math.hypot(*f))}\\ \\mathrm{{N}}",
+                )
+            ),
+        ]
+        if pair.kind == "P":
+            blocks += _couple(pos, pair, body, [*loads[b], middle])
+    return blocks
+
+
+def _general(pos: Position, rec: Equilibrium) -> list[Block]:
+    """Return a larger group's equilibrium equations as a linear system, solved."""
+    eq = rec.equations(pos.bodies, pos.plan.bodies)
+    a, rhs, x = eq.matrix[0], eq.rhs[0], eq.solution[0]
+    symbols = [_unknown(u) for u in eq.unknowns]
+    ref = float(np.abs(a).max())
+    lines = []
+    for i, row in enumerate(eq.rows):
+        terms = [
+            f"{par(a[i, k], ref)}\\,{symbols[k]}"
+            for k in range(len(symbols))
+            if abs(a[i, k]) > 1e-12 * ref
+        ]
+        lines.append(
+            f"\\text{{{text(row)}}}:\\ " + " + ".join(terms) + f" = {num(rhs[i])}"
+        )
+    values = [f"{sym} = {num(v)}" for sym, v in zip(symbols, x, strict=True)]
+    return [
+        Para(
+            "Each link's two force sums and its moment equation, with the known loads "
+            "on the right (N, N m):"
+        ),
+        Display(tuple(lines)),
+        Para("Solved together:"),
+        Display(tuple(values)),
+    ]
+
+
+def _unknown(key: str) -> str:
+    """Return the TeX of an unknown such as ``B.Fx`` or ``guide.N``."""
+    joint, _, part = key.rpartition(".")
+    what = {"Fx": "F_{x}", "Fy": "F_{y}", "N": "N", "M": "M"}[part]
+    return f"{what}^{{{name(joint)}}}"
+
+
+def _totals(pos: Position, rec: Equilibrium) -> list[str]:
+    """Return every reaction the group solved, as the force of one link on another."""
+    lines = []
+    for pair in rec.pairs:
+        r = rec.reactions[pair.name]
+        f = np.array([float(np.ravel(r.fx)[0]), float(np.ravel(r.fy)[0])])
+        symbol = force_symbol(pos, pair.first, pair.second)
+        line = (
+            f"\\vec {symbol} = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
+            f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
+        )
+        if pair.kind == "P":
+            line += (
+                f",\\quad M_{{{name(pair.name)}}} = {num(float(np.ravel(r.couple)[0]))}"
+            )
+        lines.append(line + f"\\quad \\text{{(joint {text(pair.name)})}}")
+    return lines
+
+
+def forces_blocks(pos: Position) -> list[Block]:
+    """Return the reverse pass: each group's equilibrium, last group first."""
+    assert pos.result is not None
+    plan = pos.plan
+    blocks: list[Block] = [
+        Heading(2, "4. Reactions, group by group in the reverse order"),
+        Para(
+            "$\\vec F_{i,j}$ is the force of link $i$ on link $j$ ($\\vec F_{j,i} = "
+            "-\\vec F_{i,j}$); a sliding pair's couple $M$ is taken about its point "
+            "(moving with its second link). Moments are counter-clockwise positive."
+        ),
+    ]
+    solver_of = {s.bodies: s for s in plan.solvers}
+    solved: set[int] = set()
+    for rec in pos.result.groups:
+        solver = solver_of[rec.bodies]
+        blocks.append(Heading(3, f"Group {plain(solver.label)}"))
+        blocks += _known(pos, rec.bodies, solved)
+        if isinstance(solver, DyadSolver) and solver.mid.kind == "R":
+            blocks += _revolute_middle(pos, solver, solved)
+        elif isinstance(solver, DyadSolver):
+            blocks += _sliding_middle(pos, solver, solved)
+        else:
+            blocks += _general(pos, rec)
+        blocks += [Para("The group's reactions:"), Display(tuple(_totals(pos, rec)))]
+        solved |= set(rec.bodies)
+    return blocks

@@ -1,0 +1,73 @@
+"""The note as one self-contained HTML page: MathML equations, inline style.
+
+No script and no address of any kind: the page opens offline and its equations are
+rendered by the browser itself (MathML Core).
+"""
+
+from __future__ import annotations
+
+from html import escape
+from typing import TYPE_CHECKING
+
+from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
+from assur.explain._mathml import mathml
+
+if TYPE_CHECKING:
+    from assur.explain._blocks import Block
+    from assur.explain._note import Note
+
+__all__ = ["html_body", "html_page"]
+
+STYLE = """
+body { font: 16px/1.5 system-ui, sans-serif; max-width: 60rem; margin: 2rem auto;
+  padding: 0 1rem; color: #1f2937; }
+h1 { font-size: 1.6rem; } h2 { margin-top: 2rem; border-bottom: 1px solid #d1d5db; }
+math[display="block"] { margin: 0.4rem 0; overflow-x: auto; text-align: left; }
+.note-eq { margin: 0.6rem 0 0.6rem 1rem; }
+table { border-collapse: collapse; margin: 0.6rem 0; }
+td, th { border: 1px solid #d1d5db; padding: 0.2rem 0.5rem; text-align: left; }
+"""
+
+
+def inline(text: str) -> str:
+    """Return text with its inline mathematics as MathML, the rest escaped."""
+    return "".join(
+        mathml(part) if is_math else escape(part) for is_math, part in segments(text)
+    )
+
+
+def _block(block: Block) -> str:
+    """Return one block as HTML."""
+    if isinstance(block, Heading):
+        level = min(block.level, 6)
+        return f"<h{level}>{inline(block.text)}</h{level}>"
+    if isinstance(block, Para):
+        return f"<p>{inline(block.text)}</p>"
+    if isinstance(block, Display):
+        lines = "\n".join(mathml(line, display=True) for line in block.lines)
+        return f'<div class="note-eq">\n{lines}\n</div>'
+    if isinstance(block, Grid):
+        head = "".join(f"<th>{inline(c)}</th>" for c in block.head)
+        rows = "".join(
+            "<tr>" + "".join(f"<td>{inline(c)}</td>" for c in row) + "</tr>"
+            for row in block.rows
+        )
+        return f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>"
+    assert isinstance(block, Items)
+    return "<ul>" + "".join(f"<li>{inline(x)}</li>" for x in block.items) + "</ul>"
+
+
+def html_body(note: Note) -> str:
+    """Return the note's blocks as HTML (no page around them)."""
+    return "\n".join(_block(b) for b in note.blocks)
+
+
+def html_page(note: Note) -> str:
+    """Return the note as a whole page."""
+    title = inline(note.title)
+    return (
+        '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
+        f"<title>{escape(note.title)}</title>\n<style>{STYLE}</style>\n</head>\n"
+        f'<body>\n<article class="note">\n<h1>{title}</h1>\n{html_body(note)}\n'
+        "</article>\n</body>\n</html>\n"
+    )

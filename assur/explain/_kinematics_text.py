@@ -1,0 +1,152 @@
+"""The note's kinematic part: the input link, then each group in forward order.
+
+For each group: what is known, the position problem, then the velocity and the
+acceleration equations, and the motion of every other point of its links.
+"""
+
+from __future__ import annotations
+
+from assur.explain._note import Block, Display, Heading, Para
+from assur.explain._position import Position
+from assur.explain._positions import dyad_positions
+from assur.explain._rates import body_points, dyad_rates, point_lines
+from assur.explain._tex import deg, name, num, plain, point_name, vec
+from assur.groups._dyad import DyadSolver
+from assur.groups.driver import DriverPlan
+
+__all__ = ["kinematics_blocks"]
+
+
+def _driver(pos: Position, d: DriverPlan) -> list[Block]:
+    """Return the input link's motion and that of its points."""
+    body = d.body
+    link = name(pos.link(body))
+    pivot = pos.pair_point(d.pair)
+    j = name(d.pair.name)
+    if d.kind == "R":
+        w, eps = pos.omega(body), pos.epsilon(body)
+        given = [
+            f"\\varphi_{{{link}}} = {deg(pos.angle(body))},\\quad \\omega_{{{link}}} "
+            f"= {num(w)}\\ \\mathrm{{rad/s}},\\quad \\varepsilon_{{{link}}} = "
+            f"{num(eps)}\\ \\mathrm{{rad/s^2}}"
+        ]
+        text = (
+            f"The input link {plain(pos.link(body))} turns about "
+            f"{plain(d.pair.name)} at $\\vec r_{{{j}}} = {vec(pivot)}$ m; its "
+            "position, speed and acceleration are given:"
+        )
+    else:
+        v = pos.pair_point(d.pair, 1)
+        a = pos.pair_point(d.pair, 2)
+        given = [f"\\vec v_{{{j}}} = {vec(v)},\\quad \\vec a_{{{j}}} = {vec(a)}"]
+        text = (
+            f"The input link {plain(pos.link(body))} slides along the guide "
+            f"{plain(d.pair.name)}; its speed and acceleration are given:"
+        )
+    blocks: list[Block] = [Para(text), Display(tuple(given))]
+    skip = {d.pair.name}
+    for k, what in ((0, "Positions"), (1, "Velocities"), (2, "Accelerations")):
+        if k == 0:
+            lines = [
+                f"\\vec r_{{{point_name(p)}}} = {vec(pos.point(body, off))}"
+                for p, off in body_points(pos, body)
+                if p not in skip
+            ]
+        else:
+            lines = point_lines(pos, body, pivot, j, k, skip)
+        if lines:
+            blocks += [Para(f"{what} of its points:"), Display(tuple(lines))]
+    return blocks
+
+
+def _dyad(pos: Position, s: DyadSolver) -> list[Block]:
+    """Return a dyad's positions, velocities and accelerations."""
+    blocks: list[Block] = [Heading(4, "Positions"), *dyad_positions(pos, s)]
+    for k, what in ((1, "Velocities"), (2, "Accelerations")):
+        blocks += [Heading(4, what), *dyad_rates(pos, s, k)]
+        blocks += _points(pos, s, k)
+    return blocks
+
+
+def _points(pos: Position, s: DyadSolver, k: int) -> list[Block]:
+    """Return the motion of the other points of a dyad's links."""
+    lines = []
+    m = pos.pair_point(s.mid)
+    for b in (0, 1):
+        body, pair = s.bodies[b], s.ext[b]
+        if pair.kind == "R":
+            base, label = pos.point(s.known[b], s.d_known[b]), name(pair.name)
+            skip = {pair.name, s.mid.name}
+        else:
+            base, label = m, name(s.mid.name)
+            skip = {s.mid.name}
+            if s.mid.kind == "P" and body == s.mid.first:
+                label = f"{label}_{{{name(pos.link(body))}}}"
+        if s.mid.kind == "R" or body == s.mid.first:
+            skip.add(s.mid.name)
+        lines += point_lines(pos, body, base, label, k, skip)
+    w = [
+        f"\\omega_{{{name(pos.link(b))}}} = {num(pos.omega(b))}"
+        if k == 1
+        else f"\\varepsilon_{{{name(pos.link(b))}}} = {num(pos.epsilon(b))}"
+        for b in s.bodies
+    ]
+    text = "The group's links turn at" if k == 1 else "Their angular accelerations:"
+    blocks: list[Block] = [Para(text), Display((",\\quad ".join(w),))]
+    if lines:
+        blocks += [Para("Then every other point of the links:"), Display(tuple(lines))]
+    return blocks
+
+
+def _general(pos: Position, solver: object) -> list[Block]:
+    """Return a triad's (or larger group's) solved motion."""
+    bodies: tuple[int, ...] = getattr(solver, "bodies", ())
+    blocks: list[Block] = [
+        Para(
+            "The group's links have three coordinates each and every pair gives two "
+            "equations: positions are found by Newton's method from the reference "
+            "pose, velocities and accelerations from the linear systems with the "
+            "same matrix (the Jacobian of the closure equations). The solution:"
+        )
+    ]
+    lines = [
+        f"\\varphi_{{{name(pos.link(b))}}} = {deg(pos.angle(b))},\\quad "
+        f"\\omega_{{{name(pos.link(b))}}} = {num(pos.omega(b))},\\quad "
+        f"\\varepsilon_{{{name(pos.link(b))}}} = {num(pos.epsilon(b))}"
+        for b in bodies
+    ]
+    blocks.append(Display(tuple(lines)))
+    for k, what in ((1, "Velocities"), (2, "Accelerations")):
+        lines = []
+        for b in bodies:
+            points = body_points(pos, b)
+            if not points:
+                continue
+            base_name, offset = points[0]
+            base = pos.point(b, offset)
+            label = point_name(base_name)
+            lines.append(
+                f"\\vec {'v' if k == 1 else 'a'}_{{{label}}} = "
+                f"{vec(pos.point(b, offset, k))}"
+            )
+            lines += point_lines(pos, b, base, label, k, {base_name})
+        blocks += [Heading(4, what), Display(tuple(lines))]
+    return blocks
+
+
+def kinematics_blocks(pos: Position) -> list[Block]:
+    """Return the kinematic analysis: the input links, then each group in order."""
+    plan = pos.plan
+    blocks: list[Block] = [Heading(2, "2. Kinematics, group by group")]
+    for d in plan.drivers:
+        blocks += [
+            Heading(3, f"Input link {plain(pos.link(d.body))}"),
+            *_driver(pos, d),
+        ]
+    for g, solver in zip(plan.groups, plan.solvers, strict=True):
+        blocks.append(Heading(3, f"Group {plain(g.label)}"))
+        if isinstance(solver, DyadSolver):
+            blocks += _dyad(pos, solver)
+        else:
+            blocks += _general(pos, solver)
+    return blocks

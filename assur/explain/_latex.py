@@ -1,0 +1,86 @@
+r"""The note as a LaTeX report that compiles with pdflatex (amsmath, longtable).
+
+Headings become sections, equations ``\[ ... \]`` (broken over lines by breqn-free
+means: each equation on its own), tables ``tabular``; text is escaped.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
+
+if TYPE_CHECKING:
+    from assur.explain._blocks import Block
+    from assur.explain._note import Note
+
+__all__ = ["latex_document"]
+
+PREAMBLE = r"""\documentclass[a4paper,10pt]{article}
+\usepackage[T1]{fontenc}
+\usepackage[utf8]{inputenc}
+\usepackage[margin=2cm]{geometry}
+\usepackage{amsmath,amssymb}
+\usepackage{textcomp}
+\newcommand{\degreesign}{\textdegree}
+\DeclareUnicodeCharacter{00B0}{\textdegree}
+\DeclareUnicodeCharacter{2192}{$\rightarrow$}
+\setlength{\parindent}{0pt}
+\setlength{\parskip}{0.5em}
+\allowdisplaybreaks
+"""
+SECTIONS = {1: "section*", 2: "section*", 3: "subsection*", 4: "subsubsection*"}
+TEXT_SPECIAL = {
+    "\\": r"\textbackslash{}",
+    "&": r"\&",
+    "%": r"\%",
+    "$": r"\$",
+    "#": r"\#",
+    "_": r"\_",
+    "{": r"\{",
+    "}": r"\}",
+    "~": r"\textasciitilde{}",
+    "^": r"\textasciicircum{}",
+}
+
+
+def _text(text: str) -> str:
+    """Return text with its inline mathematics kept and the rest escaped."""
+    return "".join(
+        f"${part}$" if is_math else "".join(TEXT_SPECIAL.get(c, c) for c in part)
+        for is_math, part in segments(text)
+    )
+
+
+def _block(block: Block) -> str:
+    """Return one block as LaTeX."""
+    if isinstance(block, Heading):
+        return f"\\{SECTIONS.get(block.level, 'paragraph*')}{{{_text(block.text)}}}"
+    if isinstance(block, Para):
+        return _text(block.text)
+    if isinstance(block, Display):
+        # long equations may run past the margin: a small size keeps most in
+        return "\n".join(
+            f"{{\\small\\begin{{multline*}}{line}\\end{{multline*}}}}"
+            for line in block.lines
+        )
+    if isinstance(block, Grid):
+        columns = "l" * len(block.head)
+        head = " & ".join(_text(c) for c in block.head)
+        rows = "\n".join(" & ".join(_text(c) for c in r) + r" \\" for r in block.rows)
+        return (
+            f"\\begin{{tabular}}{{{columns}}}\n\\hline\n{head} \\\\\n\\hline\n"
+            f"{rows}\n\\hline\n\\end{{tabular}}"
+        )
+    assert isinstance(block, Items)
+    items = "\n".join(f"\\item {_text(x)}" for x in block.items)
+    return f"\\begin{{itemize}}\n{items}\n\\end{{itemize}}"
+
+
+def latex_document(note: Note) -> str:
+    """Return the note as a whole LaTeX document."""
+    body = "\n\n".join(_block(b) for b in note.blocks)
+    return (
+        f"{PREAMBLE}\\title{{{_text(note.title)}}}\n\\date{{}}\n"
+        f"\\begin{{document}}\n\\maketitle\n\n{body}\n\n\\end{{document}}\n"
+    )

@@ -1,0 +1,186 @@
+"""The known loads on a link, one by one, and their moments about a point.
+
+A link carries its inertia force and torque, its weight, the external loads of the
+file and, in the force analysis, the reactions of the links whose groups were solved
+before its own. Each load is listed separately so that the note can write every
+moment of an equilibrium equation.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from assur._loads import table_values
+from assur._vec import Array
+from assur.explain._position import Position, at, cross, value
+from assur.explain._tex import name, num, par, point_name, vec
+from assur.model import LoadTable
+
+__all__ = [
+    "Load",
+    "force_lines",
+    "inertia_load",
+    "link_loads",
+    "moment",
+    "moment_line",
+    "own_loads",
+    "total",
+]
+
+
+@dataclass(frozen=True, slots=True)
+class Load:
+    """A force ``force`` (N) at ``point`` (m) and a couple ``couple`` (N m).
+
+    ``tex`` names the load; ``where`` names its point.
+    """
+
+    tex: str
+    where: str
+    point: Array
+    force: Array
+    couple: float = 0.0
+
+
+def inertia_load(pos: Position, body: int) -> tuple[Array, float] | None:
+    """Return a link's inertia force (N) and torque (N m), or None without a mass."""
+    assert pos.applied is not None
+    found = pos.applied.inertia[body]
+    if found is None:
+        return None
+    return at(found[0], found[1]), value(found[2])
+
+
+def _centre(pos: Position, body: int) -> Array:
+    """Return a link's centre of mass, m."""
+    return pos.point(body, pos.loads.center[body])
+
+
+def own_loads(pos: Position, body: int) -> list[Load]:
+    """Return the inertia loads, weight and external loads on ``body``."""
+    link = name(pos.link(body))
+    where = point_name(f"{pos.link(body)}.G")
+    out = []
+    found = inertia_load(pos, body)
+    if found is not None:
+        force, torque = found
+        g = _centre(pos, body)
+        out.append(Load(f"\\vec F_{{i,{link}}}", where, g, force))
+        if torque:
+            out.append(Load(f"M_{{i,{link}}}", where, g, np.zeros(2), torque))
+        mass = float(pos.loads.mass[body])
+        weight = mass * np.asarray(pos.loads.gravity, dtype=float)
+        if weight.any():
+            out.append(Load(f"m_{{{link}}}\\vec g", where, g, weight))
+    state = pos.table.state
+    slides = {k: s[0] for k, s in state.slide.items()}
+    count = 0
+    for b, offset, force, entry in pos.loads.forces:
+        if b != body:
+            continue
+        count += 1
+        if isinstance(force, LoadTable):
+            fx, fy = table_values(force, pos.plan, state.drive, slides, entry)
+            vector = at(fx, fy)
+        else:
+            vector = np.asarray(force, dtype=float)
+        p = pos.point(body, offset)
+        out.append(Load(f"\\vec F_{{{link},{count}}}", f"P_{{{count}}}", p, vector))
+    for b, torque, entry in pos.loads.torques:
+        if b != body:
+            continue
+        count += 1
+        t = torque
+        if isinstance(torque, LoadTable):
+            t = table_values(torque, pos.plan, state.drive, slides, entry)[0]
+        out.append(
+            Load(f"T_{{{link},{count}}}", "", _origin(pos, body), np.zeros(2), value(t))
+        )
+    return out
+
+
+def _origin(pos: Position, body: int) -> Array:
+    """Return a body's origin (m): where a couple is drawn."""
+    return pos.origin(body)
+
+
+def link_loads(pos: Position, body: int, solved: set[int]) -> list[Load]:
+    """Return every known load on ``body``: applied, and reactions of ``solved`` links.
+
+    A reaction is written as the force of the other link on ``body`` (and the couple
+    of a sliding pair, about its point).
+    """
+    out = own_loads(pos, body)
+    assert pos.result is not None
+    reactions = {}
+    for rec in pos.result.groups:
+        reactions.update(rec.reactions)
+    for pair_name, pair in pos.plan.pairs.items():
+        other = pair.first if pair.second == body else pair.second
+        if body not in (pair.first, pair.second) or other not in solved:
+            continue
+        r = reactions[pair_name]
+        sign = 1.0 if pair.second == body else -1.0
+        force = sign * at(r.fx, r.fy)
+        couple = sign * value(r.couple) if pair.kind == "P" else 0.0
+        p = pos.pair_point(pair)
+        label = f"\\vec F_{{{name(pos.link(other))},{name(pos.link(body))}}}"
+        out.append(Load(label, name(pair_name), p, force, couple))
+    return out
+
+
+def total(loads: list[Load]) -> Array:
+    """Return the sum of the loads' forces, N."""
+    return sum((x.force for x in loads), np.zeros(2))
+
+
+def moment(load: Load, about: Array) -> float:
+    """Return the moment of ``load`` about ``about``, N m (counter-clockwise)."""
+    return cross(load.point - about, load.force) + load.couple
+
+
+def moment_line(loads: list[Load], about: Array, label: str) -> tuple[str, float]:
+    """Return the sum of the loads' moments about a point, term by term; its value.
+
+    Each force's moment is written ``(x_p - x)(F_y) - (y_p - y)(F_x)``.
+    """
+    parts = []
+    total_moment = 0.0
+    for x in loads:
+        m = moment(x, about)
+        total_moment += m
+        pieces = []
+        if math.hypot(*x.force) > 0:
+            r = x.point - about
+            pieces.append(
+                f"{par(r[0])} \\cdot {par(x.force[1])} - {par(r[1])} \\cdot "
+                f"{par(x.force[0])}"
+            )
+        if x.couple:
+            pieces.append(par(x.couple))
+        if pieces:
+            parts.append(" + ".join(pieces))
+    body = " + ".join(f"[{p}]" for p in parts) or "0"
+    return f"\\sum M_{{{label}}} = {body} = {num(total_moment)}", total_moment
+
+
+def force_lines(loads: list[Load]) -> list[str]:
+    """Return one line per load: its force (N) and couple (N m) with their points."""
+    lines = []
+    for x in loads:
+        text = x.tex
+        if math.hypot(*x.force) > 0:
+            text += f" = {vec(x.force)}\\ \\mathrm{{N}}"
+            if x.where:
+                text += f",\\quad \\text{{at}}\\ {x.where} = {vec(x.point)}"
+        if x.couple:
+            text += (
+                f" = {num(x.couple)}\\ \\mathrm{{N\\,m}}"
+                if not math.hypot(*x.force)
+                else f",\\ {num(x.couple)}\\ \\mathrm{{N\\,m}}"
+            )
+        lines.append(text)
+    return lines

@@ -1,0 +1,99 @@
+"""The note: its blocks, written as Markdown, HTML with MathML or LaTeX.
+
+The same blocks (:mod:`assur.explain._blocks`) are written as Markdown (``str()``),
+as a self-contained HTML page with MathML or as a LaTeX report.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass
+from typing import Any
+
+from assur.explain._blocks import Block, Display, Grid, Heading, Items, Para, segments
+from assur.explain._html import html_page
+from assur.explain._latex import latex_document
+from assur.explain._markdown import markdown
+
+__all__ = [
+    "Block",
+    "Display",
+    "Grid",
+    "Heading",
+    "Items",
+    "Note",
+    "Para",
+    "segments",
+]
+
+
+@dataclass(frozen=True)
+class Note:
+    """The analysis at one driver position, written out step by step.
+
+    ``str(note)`` is Markdown (mathematics in TeX between dollar signs);
+    :meth:`to_html` a self-contained page whose equations are MathML and
+    :meth:`to_latex` a LaTeX report.
+
+    Attributes
+    ----------
+    title : str
+        The note's title.
+    blocks : tuple of Block
+        Headings, paragraphs, equations, tables and lists in reading order.
+    values : dict of str to float
+        Results the note prints, by table column name (for readers and checks).
+    """
+
+    title: str
+    blocks: tuple[Block, ...]
+    values: dict[str, float]
+
+    def __str__(self) -> str:
+        return self.to_markdown()
+
+    def to_markdown(self) -> str:
+        """Return the note as Markdown with TeX mathematics."""
+        return markdown(self)
+
+    def to_html(self) -> str:
+        """Return the note as one self-contained HTML page (MathML equations)."""
+        return html_page(self)
+
+    def to_latex(self) -> str:
+        """Return the note as a LaTeX document that compiles with pdflatex."""
+        return latex_document(self)
+
+    def write(self, path: str | os.PathLike[str]) -> None:
+        """Write the note to ``path``: Markdown, HTML or LaTeX by its suffix.
+
+        The file is written whole or not at all.
+
+        Raises
+        ------
+        OutputError
+            When the file cannot be written.
+        ValueError
+            When the suffix is not .md, .html, .htm or .tex.
+        """
+        from assur._output import write_text
+
+        write_text(path, self.render(os.fspath(path)))
+
+    def render(self, path: str) -> str:
+        """Return the text of the note in the format that ``path``'s suffix names."""
+        suffix = os.path.splitext(path)[1].lower()
+        makers: dict[str, Any] = {
+            ".md": self.to_markdown,
+            ".markdown": self.to_markdown,
+            ".html": self.to_html,
+            ".htm": self.to_html,
+            ".tex": self.to_latex,
+        }
+        if suffix not in makers:
+            msg = (
+                f"{path}: unknown type of note {suffix or '(none)'!r}; expected .md, "
+                ".html or .tex"
+            )
+            raise ValueError(msg)
+        return str(makers[suffix]())

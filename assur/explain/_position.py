@@ -1,0 +1,173 @@
+"""Everything the note reads at one driver position, from the core's own records.
+
+The forces table of the one position gives the frozen motions; the reverse pass is
+run again on them to get each group's :class:`~assur.groups._protocol.Equilibrium`
+record. Points are returned in the file's coordinates (the core's shifted back).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur._kinematics import motions
+from assur._loads import LoadPlan, compile_loads
+from assur._vec import Array
+from assur.groups._motion import Motion, point, rotated
+from assur.groups._pairs import PairPlan
+from assur.kinetostatics import Applied, Reverse, applied_loads, reverse
+from assur.model import Mechanism
+from assur.plan import Plan
+
+if TYPE_CHECKING:
+    from assur.table import Table
+
+__all__ = ["Position", "at", "from_table", "value"]
+
+
+def value(leaf: Any) -> float:
+    """Return the one value of a leaf (an array of one row, or a float)."""
+    return float(np.asarray(leaf, dtype=float).reshape(-1)[0])
+
+
+def at(x: Any, y: Any) -> Array:
+    """Return a 2-vector of the one row of two leaves."""
+    return np.array([value(x), value(y)])
+
+
+@dataclass(frozen=True, slots=True)
+class Position:
+    """The solved mechanism at one driver position.
+
+    Attributes
+    ----------
+    table : Table
+        The forces table of that one position.
+    bodies : list of Motion
+        Every body's motion, rebuilt from the table's state.
+    applied : Applied or None
+        Every link's applied loads (inertia, gravity, external loads); None for a
+        mechanism without masses and loads (kinematics only).
+    result : Reverse or None
+        The reverse pass's records, groups in the order solved (or None).
+    loads : LoadPlan
+        Masses, centres, inertias and loads, compiled.
+    """
+
+    table: Table
+    bodies: list[Motion]
+    applied: Applied | None
+    result: Reverse | None
+    loads: LoadPlan
+
+    @property
+    def plan(self) -> Plan:
+        """The compiled mechanism."""
+        return self.table.plan
+
+    @property
+    def mechanism(self) -> Mechanism:
+        """The mechanism."""
+        return self.table.plan.mechanism
+
+    def shift(self) -> Array:
+        """Return the core's origin in file coordinates, m."""
+        return np.asarray(self.plan.shift, dtype=float)
+
+    def point(self, body: int, offset: tuple[float, float], k: int = 0) -> Array:
+        """Return level ``k`` of a body point (position in file coordinates)."""
+        p = at(*point(self.bodies[body], offset, k))
+        return p + self.shift() if k == 0 else p
+
+    def pair_point(self, pair: PairPlan, k: int = 0) -> Array:
+        """Return level ``k`` of a pair's point, the one moving with its second link."""
+        return self.point(pair.second, pair.d_second, k)
+
+    def origin(self, body: int) -> Array:
+        """Return a body's origin, file coordinates (m)."""
+        m = self.bodies[body]
+        return at(m.ox[0], m.oy[0]) + self.shift()
+
+    def omega(self, body: int) -> float:
+        """Return a body's angular velocity, rad/s."""
+        return value(self.bodies[body].phi[1])
+
+    def epsilon(self, body: int) -> float:
+        """Return a body's angular acceleration, rad/s^2."""
+        return value(self.bodies[body].phi[2])
+
+    def angle(self, body: int) -> float:
+        """Return a link's angle (its axis direction, or its rotation), rad."""
+        return value(self.bodies[body].phi[0]) + float(self.plan.angle0[body])
+
+    def turned(self, body: int, d: tuple[float, float]) -> Array:
+        """Return the body-fixed vector ``d`` turned with the body."""
+        return at(*rotated(self.bodies[body], d))
+
+    def coincident(self, body: int, p: Array, k: int) -> Array:
+        """Return level ``k`` (1 or 2) of the point of ``body`` that is at ``p`` now.
+
+        ``p`` is in file coordinates.
+        """
+        m = self.bodies[body]
+        r = p - self.origin(body)
+        w = self.omega(body)
+        base = at(m.ox[k], m.oy[k])
+        if k == 1:
+            return base + w * perp(r)
+        return base + self.epsilon(body) * perp(r) - w * w * r
+
+    def link(self, body: int) -> str:
+        """Return a body's name as the file gives it."""
+        return self.plan.bodies[body]
+
+    def size(self) -> float:
+        """Return the mechanism's size, m."""
+        return float(self.plan.scale)
+
+
+def perp(v: Array) -> Array:
+    """Return ``v`` turned by +90 degrees."""
+    return np.array([-v[1], v[0]])
+
+
+def cross(a: Array, b: Array) -> float:
+    """Return the z component of ``a x b``."""
+    return float(a[0] * b[1] - a[1] * b[0])
+
+
+def unit(v: Array) -> Array:
+    """Return ``v`` divided by its length (``v`` itself when it has none)."""
+    length = math.hypot(v[0], v[1])
+    return v / length if length > 0 else v
+
+
+def from_table(table: Table, row: int = 0) -> Position:
+    """Return the solved mechanism at ``row`` of a kinematics or forces table."""
+    table_row = table if len(table) == 1 else _one_row(table, row)
+    plan = table_row.plan
+    bodies = motions(plan, table_row.state)
+    loads = compile_loads(plan)
+    if table_row.force_state is None or loads.empty:
+        return Position(table_row, bodies, None, None, loads)
+    applied = applied_loads(plan, loads, bodies, table_row.state)
+    return Position(table_row, bodies, applied, reverse(plan, bodies, applied), loads)
+
+
+def _one_row(table: Table, row: int) -> Table:
+    """Return a table of the one row ``row`` (its states cut to that row)."""
+    rows = slice(row, row + 1)
+    force = None if table.force_state is None else table.force_state.rows(rows)
+    return type(table)(
+        table.plan,
+        table.schema,
+        table.given[rows],
+        table.state.rows(rows),
+        force,
+    )
+
+
+__all__ += ["cross", "perp", "unit"]

@@ -1,0 +1,329 @@
+"""Velocities and accelerations of a dyad as vector equations, solved with numbers.
+
+The middle joint's motion is written twice, once along each link from the joint by
+which it hangs on a known link (``v_C = v_B + v_CB``), plus the relative motion of a
+sliding middle pair; the two unknown magnitudes (angular velocities, or slide rates)
+follow from the components by Cramer's rule. Every term is computed from the solved
+motions, so the sums printed equal the tables' values.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from assur._vec import Array
+from assur.explain._note import Block, Display, Para
+from assur.explain._position import Position, perp
+from assur.explain._tex import name, num, par, point_name, text, vec
+from assur.groups._dyad import DyadSolver
+
+__all__ = ["Term", "body_points", "dyad_rates", "point_lines"]
+
+LEVEL = {1: ("v", "velocities"), 2: ("a", "accelerations")}
+
+
+@dataclass(frozen=True, slots=True)
+class Term:
+    """One vector of a velocity or acceleration equation.
+
+    ``tex`` names it, ``value`` is its vector now (m/s or m/s^2), ``note`` tells its
+    direction and size; an unknown term is ``unknown`` times ``column``.
+    """
+
+    tex: str
+    value: Array
+    note: str = ""
+    unknown: str | None = None
+    column: Array | None = None
+    size: str = ""
+
+
+def _slide_sign(s: DyadSolver, b: int) -> float:
+    """+1 when the slider of external pair ``b`` is the pair's second link."""
+    return 1.0 if s.ext[b].second == s.bodies[b] else -1.0
+
+
+def _rotation(s: DyadSolver, b: int, k: int, pos: Position) -> str | None:
+    """Return the symbol of link b's unknown rotation rate, or None when known."""
+    symbol = "\\omega" if k == 1 else "\\varepsilon"
+    if s.mid.kind == "R":
+        return f"{symbol}_{{{name(pos.link(s.bodies[b]))}}}"
+    if s.ext[0].kind == "R" and s.ext[1].kind == "R":
+        return f"{symbol}_{{{name(pos.link(s.mid.first))}}}"
+    return None  # it turns with a guide already known
+
+
+def _chain(pos: Position, s: DyadSolver, b: int, k: int) -> list[Term]:
+    """Terms of the middle point's motion along link ``b`` from its outer joint."""
+    body, known, pair = s.bodies[b], s.known[b], s.ext[b]
+    m = pos.pair_point(s.mid)
+    mid, j = name(s.mid.name), name(pair.name)
+    letter = LEVEL[k][0]
+    link = name(pos.link(body))
+    w, eps = pos.omega(body), pos.epsilon(body)
+    if pair.kind == "R":
+        p = pos.point(known, s.d_known[b])
+        r = m - p
+        length = math.hypot(*r)
+        base = Term(f"\\vec {letter}_{{{j}}}", pos.point(known, s.d_known[b], k))
+        if k == 1:
+            return [
+                base,
+                Term(
+                    f"\\vec v_{{{mid}{j}}}",
+                    w * perp(r),
+                    f"\\perp {j}{mid}",
+                    _rotation(s, b, 1, pos),
+                    perp(r),
+                    f"v_{{{mid}{j}}} = |\\omega_{{{link}}}| \\cdot l_{{{j}{mid}}} = "
+                    f"{num(abs(w))} \\cdot {num(length)} = {num(abs(w) * length)}",
+                ),
+            ]
+        return [
+            base,
+            Term(
+                f"\\vec a^{{n}}_{{{mid}{j}}}",
+                -w * w * r,
+                f"\\text{{from }} {mid} \\text{{ to }} {j},\\ a^n = \\omega_{{{link}}}"
+                f"^2 l_{{{j}{mid}}} = {par(w)}^2 \\cdot {num(length)} = "
+                f"{num(w * w * length)}",
+            ),
+            Term(
+                f"\\vec a^{{t}}_{{{mid}{j}}}",
+                eps * perp(r),
+                f"\\perp {j}{mid}",
+                _rotation(s, b, 2, pos),
+                perp(r),
+                f"a^t_{{{mid}{j}}} = |\\varepsilon_{{{link}}}| \\cdot l_{{{j}{mid}}} = "
+                f"{num(abs(eps))} \\cdot {num(length)} = {num(abs(eps) * length)}",
+            ),
+        ]
+    e = _slide_sign(s, b) * pos.turned(known, pair.axis or (1.0, 0.0))
+    base_name = f"{mid}_{{{name(pos.link(known))}}}"
+    return _sliding(pos, known, body, m, e, j, base_name, k)
+
+
+def _sliding(
+    pos: Position,
+    guide: int,
+    slider: int,
+    m: Array,
+    e: Array,
+    j: str,
+    base: str,
+    k: int,
+) -> list[Term]:
+    """Terms of a slider's point at ``m``: the guide's point there, relative motion."""
+    letter = LEVEL[k][0]
+    rel = float(np.dot(pos.coincident(slider, m, 1) - pos.coincident(guide, m, 1), e))
+    terms = [
+        Term(
+            f"\\vec {letter}_{{{base}}}",
+            pos.coincident(guide, m, k),
+            f"\\text{{the point of {text(pos.link(guide))} at }} {j}",
+        )
+    ]
+    if k == 1:
+        return [
+            *terms,
+            Term(
+                f"\\vec v^{{r}}_{{{j}}}",
+                rel * e,
+                f"\\parallel \\vec e_{{{j}}} = {vec(e)}",
+                f"\\dot s_{{{j}}}",
+                e,
+            ),
+        ]
+    wg = pos.omega(guide)
+    acc = float(
+        np.dot(
+            pos.coincident(slider, m, 2)
+            - pos.coincident(guide, m, 2)
+            - 2 * wg * rel * perp(e),
+            e,
+        )
+    )
+    return [
+        *terms,
+        Term(
+            f"\\vec a^{{k}}_{{{j}}}",
+            2 * wg * rel * perp(e),
+            f"2\\,\\vec\\omega \\times \\vec v^r,\\ a^k = 2 \\cdot {par(wg)} \\cdot "
+            f"{par(rel)} = {num(2 * wg * rel)}",
+        ),
+        Term(
+            f"\\vec a^{{r}}_{{{j}}}",
+            acc * e,
+            f"\\parallel \\vec e_{{{j}}}",
+            f"\\ddot s_{{{j}}}",
+            e,
+        ),
+    ]
+
+
+def _sides(pos: Position, s: DyadSolver, k: int) -> tuple[list[Term], list[Term]]:
+    """Return the two sides of the middle joint's equation at level ``k``."""
+    if s.mid.kind == "R":
+        return _chain(pos, s, 0, k), _chain(pos, s, 1, k)
+    g = 0 if s.bodies[0] == s.mid.first else 1
+    m = pos.pair_point(s.mid)
+    e = pos.turned(s.mid.first, s.mid.axis or (1.0, 0.0))
+    j = name(s.mid.name)
+    rel = _sliding(pos, s.mid.first, s.mid.second, m, e, j, j, k)
+    return _chain(pos, s, 1 - g, k), _chain(pos, s, g, k) + rel[1:]
+
+
+def _solve(left: list[Term], right: list[Term]) -> tuple[list[str], Array, Array]:
+    """Return the unknowns, the 2x2 matrix and the right-hand side of the equation."""
+    names: list[str] = []
+    for t in left + right:
+        if t.unknown is not None and t.unknown not in names:
+            names.append(t.unknown)
+    a = np.zeros((2, len(names)))
+    rhs = np.zeros(2)
+    for sign, side in ((1.0, left), (-1.0, right)):
+        for t in side:
+            if t.unknown is None:
+                rhs -= sign * t.value
+            else:
+                assert t.column is not None
+                a[:, names.index(t.unknown)] += sign * t.column
+    return names, a, rhs
+
+
+def _sum(terms: list[Term]) -> str:
+    """Return the symbols of the terms joined by plus signs."""
+    return " + ".join(t.tex for t in terms)
+
+
+def _system(names: list[str], a: Array, rhs: Array) -> tuple[list[str], list[float]]:
+    """Return the component equations and Cramer's rule with numbers; the solution."""
+    if len(names) != 2:
+        return [], []
+    det = float(a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0])
+    top = [
+        float(rhs[0] * a[1, 1] - a[0, 1] * rhs[1]),
+        float(a[0, 0] * rhs[1] - rhs[0] * a[1, 0]),
+    ]
+    ref = float(np.abs(a).max())
+    lines = [
+        f"{axis}:\\ {num(a[i, 0], ref)}\\,{names[0]} + {par(a[i, 1], ref)}\\,{names[1]}"
+        f" = {num(rhs[i])}"
+        for i, axis in enumerate("xy")
+    ]
+    values = [t / det for t in top]
+    lines.append(
+        f"\\Delta = {par(a[0, 0], ref)} \\cdot {par(a[1, 1], ref)} - "
+        f"{par(a[0, 1], ref)}"
+        f" \\cdot {par(a[1, 0], ref)} = {num(det, ref * ref)}"
+    )
+    for i in (0, 1):
+        lines.append(
+            f"{names[i]} = \\frac{{{num(top[i])}}}{{{num(det, ref * ref)}}} = "
+            f"{num(values[i])}"
+        )
+    return lines, values
+
+
+def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
+    """Return the velocity (k = 1) or acceleration (k = 2) analysis of dyad ``s``."""
+    left, right = _sides(pos, s, k)
+    letter = LEVEL[k][0]
+    mid = name(s.mid.name)
+    names, a, rhs = _solve(left, right)
+    lines, _ = _system(names, a, rhs)
+    blocks: list[Block] = [
+        Para(f"The {LEVEL[k][1]} of the joint {text(s.mid.name)}, along each link:"),
+        Display((f"{_sum(left)} = {_sum(right)}",)),
+        Display(
+            tuple(
+                f"{t.tex} = {vec(t.value)}" + (f",\\quad {t.note}" if t.note else "")
+                for t in left + right
+                if t.unknown is None
+            )
+            + tuple(
+                f"{t.tex}:\\ {t.note}" for t in left + right if t.unknown is not None
+            )
+        ),
+    ]
+    if lines:
+        blocks += [
+            Para(
+                "The unknowns are "
+                + " and ".join(f"${n}$" for n in names)
+                + "; in components:"
+            ),
+            Display(tuple(lines)),
+        ]
+    unknown = [t for t in left + right if t.unknown is not None]
+    results = [
+        f"{t.tex} = {vec(t.value)}" + (f",\\quad {t.size}" if t.size else "")
+        for t in unknown
+    ]
+    total = sum((t.value for t in left), np.zeros(2))
+    results.append(
+        f"\\vec {letter}_{{{mid}}} = {_sum(left)} = {vec(total)},\\quad "
+        f"{letter}_{{{mid}}} = {num(math.hypot(*total))}"
+    )
+    blocks.append(Display(tuple(results)))
+    return blocks
+
+
+def body_points(pos: Position, body: int) -> list[tuple[str, tuple[float, float]]]:
+    """Return the named points of ``body``: reported points and pins it carries.
+
+    Each is ``(name, offset)``; a pin whose reported point moves with its other link
+    is named too, since the next group needs its motion.
+    """
+    plan = pos.plan
+    found: dict[str, tuple[float, float]] = {}
+    for pair in plan.pairs.values():
+        if pair.kind == "R" and pair.first == body:
+            found.setdefault(pair.name.split("~")[0], pair.d_first)
+    for point, b, offset in zip(
+        plan.points, plan.point_body, plan.point_offset, strict=True
+    ):
+        if b == body:
+            found.setdefault(point, offset)
+    return list(found.items())
+
+
+def point_lines(
+    pos: Position, body: int, base: Array, label: str, k: int, skip: set[str]
+) -> list[str]:
+    """Return the motion of each named point of ``body`` from its point ``base``.
+
+    ``label`` names the base point in TeX; points named in ``skip`` are left out.
+    """
+    w, eps = pos.omega(body), pos.epsilon(body)
+    link = name(pos.link(body))
+    here = pos.coincident(body, base, k)
+    lines = []
+    for point, offset in body_points(pos, body):
+        p = pos.point(body, offset)
+        r = p - base
+        if point in skip or math.hypot(*r) <= 1e-12 * pos.size():
+            continue
+        x = point_name(point)
+        value = pos.point(body, offset, k)
+        if k == 1:
+            lines.append(
+                f"\\vec v_{{{x}}} = \\vec v_{{{label}}} + \\omega_{{{link}}} \\times "
+                f"\\vec r_{{{label}{x}}} = {vec(here)} + {par(w)} \\cdot "
+                f"{vec(perp(r))} = {vec(value)},\\quad v_{{{x}}} = "
+                f"{num(math.hypot(*value))}"
+            )
+        else:
+            lines.append(
+                f"\\vec a_{{{x}}} = \\vec a_{{{label}}} + \\varepsilon_{{{link}}} "
+                ""
+                f"\\times \\vec r_{{{label}{x}}} - \\omega_{{{link}}}^2 "
+                f"\\vec r_{{{label}"
+                f"{x}}} = {vec(here)} + {par(eps)} \\cdot {vec(perp(r))} - {par(w)}^2 "
+                f"\\cdot {vec(r)} = {vec(value)},\\quad a_{{{x}}} = "
+                f"{num(math.hypot(*value))}"
+            )
+    return lines

@@ -1,0 +1,70 @@
+"""The note's first part: degrees of freedom and the Assur groups, with the numbers.
+
+The words are those of the structure report (:mod:`assur.report`); the note adds the
+formula with its numbers and the order of the two passes.
+"""
+
+from __future__ import annotations
+
+from assur._structure import Structure
+from assur._text import roman
+from assur.explain._note import Block, Display, Heading, Items, Para
+from assur.explain._tex import plain
+from assur.report import _why
+
+__all__ = ["structure_blocks"]
+
+
+def _kind(kind: str) -> str:
+    """Return a group's kind in words."""
+    return {"triad": "triad", "general": "group"}.get(kind, f"dyad {kind}")
+
+
+def structure_blocks(s: Structure) -> list[Block]:
+    """Return the structural analysis: W, the groups in order, why each is one."""
+    n, p5, p4 = s.links, s.lower_pairs, s.higher_pairs
+    blocks: list[Block] = [
+        Heading(2, "1. Structure"),
+        Para(
+            f"The mechanism has $n = {n}$ moving links, $p_5 = {p5}$ lower pairs and "
+            f"$p_4 = {p4}$ higher pairs. Chebyshev-Gruebler's formula gives its "
+            "degrees of freedom:"
+        ),
+        Display(
+            (f"W = 3n - 2p_5 - p_4 = 3 \\cdot {n} - 2 \\cdot {p5} - {p4} = {s.dof}",)
+        ),
+    ]
+    for slot in s.slots:
+        blocks.append(
+            Para(
+                f"The slot {plain(slot)} (a pin in a slot, a higher pair) is replaced "
+                f"by a block sliding in the slot and pinned to the pin: one more link "
+                "and two lower pairs leave $W$ as it is."
+            )
+        )
+    items = [
+        f"Class I: the frame and the input link {plain(g.links[1])}, driven through "
+        f"the pair {plain(g.internal[0])}."
+        for g in s.drivers
+    ]
+    for g in s.groups:
+        links = ", ".join(plain(x) for x in g.links)
+        items.append(
+            f"Class {roman(g.group_class)}, order {g.order}, {_kind(g.kind)} "
+            f"({links}), on {', '.join(plain(x) for x in g.attached_to)} through "
+            f"{', '.join(plain(x) for x in g.external)}: {plain(_why(g))}."
+        )
+    blocks += [
+        Para(
+            f"{len(s.drivers)} driver(s) for $W = {s.dof}$. The Assur groups, in "
+            "order of attachment:"
+        ),
+        Items(tuple(items)),
+        Para(
+            f"Structure formula: {plain(s.formula.replace(' -> ', ' → '))}; a class "
+            f"{roman(s.mechanism_class)} mechanism. The kinematic analysis goes "
+            "through the groups in this order, the force analysis in the reverse "
+            "order, ending with the input link."
+        ),
+    ]
+    return blocks

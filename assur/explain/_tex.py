@@ -1,0 +1,144 @@
+"""Numbers, vectors and names as the note writes them, in a small subset of TeX.
+
+Every number of the note goes through :func:`num`, so a reader (or a test) knows how
+far to trust its last digit: at least two decimals and at least four significant
+digits, trailing zeros left out. Names from the mechanism file are set upright.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+__all__ = [
+    "ZERO",
+    "deg",
+    "name",
+    "num",
+    "par",
+    "plain",
+    "point_name",
+    "text",
+    "times",
+    "vec",
+]
+
+ZERO = 1e-9
+"""Values smaller than this, relative to the scale they are compared with, are
+round-off and print as 0."""
+SIGNIFICANT = 4
+"""Fewest significant digits a number keeps."""
+DECIMALS = 2
+"""Fewest decimals a number keeps."""
+SCIENTIFIC = (1e-4, 1e8)
+"""Magnitudes outside this range are written with a power of ten."""
+
+
+def num(x: float, scale: float = 1.0) -> str:
+    """Return ``x`` rounded as the note rounds (TeX).
+
+    At least :data:`DECIMALS` decimals and :data:`SIGNIFICANT` significant digits;
+    trailing zeros dropped; below ``ZERO * scale`` the value is 0.
+
+    Examples
+    --------
+    >>> num(1282.5660), num(0.0523259), num(8000.0), num(-1e-15)
+    ('1282.57', '0.05233', '8000', '0')
+    """
+    x = float(x)
+    if not math.isfinite(x):
+        return r"\text{undefined}"
+    if abs(x) < ZERO * max(abs(scale), 1e-300) or x == 0.0:
+        return "0"
+    size = abs(x)
+    if not SCIENTIFIC[0] <= size < SCIENTIFIC[1]:
+        mantissa, exponent = f"{x:.{SIGNIFICANT - 1}e}".split("e")
+        return f"{_trim(mantissa)} \\cdot 10^{{{int(exponent)}}}"
+    decimals = max(DECIMALS, SIGNIFICANT - 1 - math.floor(math.log10(size)))
+    text = _trim(f"{x:.{decimals}f}")
+    return "0" if text in ("-0", "0") else text
+
+
+def _trim(text: str) -> str:
+    """Drop trailing zeros (and a trailing point) of a decimal number."""
+    if "." in text:
+        text = text.rstrip("0").rstrip(".")
+    return text
+
+
+def par(x: float, scale: float = 1.0) -> str:
+    """Return :func:`num` of ``x``, in parentheses when negative (for products)."""
+    text = num(x, scale)
+    return f"({text})" if text.startswith("-") else text
+
+
+def times(*factors: str) -> str:
+    r"""Join factors with ``\cdot``."""
+    return r" \cdot ".join(factors)
+
+
+def vec(v: Any, scale: float | None = None) -> str:
+    """Return a vector's components in parentheses."""
+    ref = max(abs(float(v[0])), abs(float(v[1]))) if scale is None else scale
+    return f"({num(v[0], ref)},\\ {num(v[1], ref)})"
+
+
+def deg(radians: float) -> str:
+    r"""Return an angle in degrees, within (-180, 180], with ``^\circ``."""
+    d = math.degrees(float(radians))
+    d = (d + 180.0) % 360.0 - 180.0
+    if d <= -180.0 + 1e-12:
+        d += 360.0
+    return f"{num(d)}^\\circ"
+
+
+TEX_SPECIAL = {
+    "\\": r"\backslash ",
+    "_": r"\_",
+    "{": r"\{",
+    "}": r"\}",
+    "$": r"\$",
+    "%": r"\%",
+    "&": r"\&",
+    "#": r"\#",
+    "^": r"\hat{}",
+    "~": r"\sim ",
+}
+
+
+def name(text: str) -> str:
+    r"""Return a name from the file set upright in TeX (``\mathrm{rod}``).
+
+    A slot's block is called ``J~block`` inside; it reads "J block" here.
+    """
+    public = text.replace("~block", " block").replace("~pin", "")
+    body = "".join(TEX_SPECIAL.get(c, c) for c in public).replace(" ", r"\ ")
+    return f"\\mathrm{{{body}}}"
+
+
+def point_name(point: str) -> str:
+    r"""Return a reported point's name: a joint, an extra point or ``L.G``.
+
+    The centre of mass of link L is :math:`G_L`.
+    """
+    if point.endswith(".G") and point.count(".") == 1:
+        return f"G_{{{name(point[:-2])}}}"
+    return name(point)
+
+
+def plain(text: str) -> str:
+    """Return text for a paragraph: a dollar sign of a name escaped."""
+    return text.replace("~block", " (block)").replace("$", r"\$")
+
+
+def text(words: str) -> str:
+    r"""Return words for ``\text{...}``: TeX's special characters escaped.
+
+    Examples
+    --------
+    >>> text("left_rocker")
+    'left\\_rocker'
+    """
+    words = words.replace("~block", " block").replace("~pin", "")
+    kept = "".join(c for c in words if c not in "\\^~")
+    return "".join("\\" + c if c in "_{}$%&#" else c for c in kept)

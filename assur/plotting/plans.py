@@ -1,0 +1,434 @@
+"""Plans drawn as a student draws them, from the solved values (so they are exact).
+
+The velocity plan (pole ``p``, every point's image), the acceleration plan (normal,
+tangential, Coriolis and relative parts as separate arrows, along the chains of the
+note), the force polygon of every group, Zhukovsky's lever (the velocity plan turned
+by 90 degrees with every load at its image point) and the instant centres on the
+mechanism. Each plan states its scale as a student does: so many units per mm of
+the drawing. matplotlib is imported inside the functions only.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur.explain._loads_text import link_loads, own_loads
+from assur.explain._position import Position, from_table
+from assur.explain._rates import _sides
+from assur.groups._dyad import DyadSolver
+from assur.plotting._geometry import _nice
+
+if TYPE_CHECKING:
+    from assur.table import Table
+
+__all__ = [
+    "acceleration_plan",
+    "force_polygons",
+    "images",
+    "instant_centres",
+    "lever_balance",
+    "relative_centres",
+    "velocity_plan",
+    "zhukovsky_lever",
+]
+
+PLAN_SIZE = 80.0
+"""Length of the longest vector of a plan, mm of the drawing (about)."""
+COLORS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf")
+
+
+def images(pos: Position, k: int) -> dict[str, np.ndarray]:
+    """Return the image of every named point on the plan of level ``k`` (1 or 2).
+
+    The image of point P is its velocity (m/s) or acceleration (m/s^2) drawn from
+    the pole; the names are the table's (joints, extra points, ``L.G``).
+    """
+    plan = pos.plan
+    out: dict[str, np.ndarray] = {}
+    for name, body, offset in zip(
+        plan.points, plan.point_body, plan.point_offset, strict=True
+    ):
+        if "~" not in name:
+            out[name] = pos.point(body, offset, k)
+    return out
+
+
+def _scale(vectors: list[np.ndarray]) -> float:
+    """Return a plan's scale, units per mm: a round number, longest about 80 mm."""
+    big = max((float(np.hypot(*v)) for v in vectors), default=0.0)
+    return _nice(big / PLAN_SIZE) if big > 0 else 1.0
+
+
+def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> None:
+    """Draw an arrow from ``start`` to ``end`` (mm)."""
+    from matplotlib.patches import FancyArrowPatch
+
+    if float(np.hypot(*(end - start))) < 1e-9:
+        return
+    ax.add_patch(
+        FancyArrowPatch(
+            tuple(start), tuple(end), arrowstyle="-|>", mutation_scale=11,
+            color=color, lw=kw.pop("lw", 1.4), shrinkA=0, shrinkB=0, **kw,
+        )
+    )  # fmt: skip
+
+
+def _label(name: str) -> str:
+    """Return a point's image label: lower case, as the plans name them."""
+    if name.endswith(".G"):
+        return f"g({name[:-2]})"
+    return name.lower() if len(name) <= 3 else name
+
+
+def _axes(ax: Any, title: str) -> Any:
+    """Return axes to draw on, titled, equal aspect, in mm of the drawing."""
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        _, ax = plt.subplots(figsize=(7.5, 6.5), layout="constrained")
+    ax.set_title(title, fontsize=10)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("mm of the plan")
+    ax.grid(True, lw=0.4, alpha=0.4)
+    return ax
+
+
+def _images_plot(ax: Any, found: dict[str, np.ndarray], mu: float, color: str) -> None:
+    """Draw every image from the pole and name it."""
+    for name, v in found.items():
+        tip = v / mu
+        _arrow(ax, np.zeros(2), tip, color, lw=0.9, alpha=0.55)
+        ax.plot(*tip, "o", ms=3.5, color=color)
+        ax.annotate(
+            _label(name),
+            tip,
+            xytext=(4, 4),
+            textcoords="offset points",
+            fontsize=8,
+            gid=f"image-{name}",
+        )
+    ax.plot([0], [0], "ko", ms=5)
+    ax.annotate(
+        "pole", (0, 0), xytext=(-14, -12), textcoords="offset points", fontsize=8
+    )
+
+
+def _chains(ax: Any, pos: Position, k: int, mu: float) -> list[tuple[str, str]]:
+    """Draw each dyad's vector equation as arrows tip to tail; return the legend."""
+    legend: list[tuple[str, str]] = []
+    kinds: dict[str, str] = {}
+    palette = {"base": "#555555", "n": "#1f77b4", "t": "#d62728", "k": "#9467bd",
+               "r": "#2ca02c", "v": "#d62728"}  # fmt: skip
+    for s in pos.plan.solvers:
+        if not isinstance(s, DyadSolver):
+            continue
+        for side in _sides(pos, s, k):
+            tip = np.zeros(2)
+            for i, term in enumerate(side):
+                part = "base" if i == 0 and term.unknown is None else _part(term.tex)
+                color = palette.get(part, "#555555")
+                end = tip + term.value / mu
+                if part != "base":
+                    _arrow(ax, tip, end, color, lw=1.8)
+                    kinds[part] = color
+                tip = end
+    names = {"n": "normal", "t": "tangential", "k": "Coriolis", "r": "relative",
+             "v": "relative (rotation)"}  # fmt: skip
+    for part, color in kinds.items():
+        legend.append((names.get(part, part), color))
+    return legend
+
+
+def _part(tex: str) -> str:
+    """Return which part a term is: n, t, k (Coriolis), r (relative) or v."""
+    for part in ("n", "t", "k", "r"):
+        if f"^{{{part}}}" in tex:
+            return part
+    return "v"
+
+
+def _legend(ax: Any, entries: list[tuple[str, str]], note: str) -> None:
+    """Put a legend of coloured entries and a note (the scale)."""
+    from matplotlib.lines import Line2D
+
+    handles = [Line2D([], [], color=c, lw=3, label=t) for t, c in entries]
+    handles.append(Line2D([], [], color="none", label=note))
+    ax.legend(handles=handles, fontsize=8, loc="best")
+
+
+def _title(pos: Position, what: str) -> str:
+    """Return a plan's title: the mechanism, the plan and the driver position."""
+    angle = ", ".join(f"{x:g}" for x in pos.table.given[0])
+    unit = "°" if pos.plan.drivers[0].kind == "R" else " m"
+    return f"{pos.mechanism.name or 'Mechanism'}: {what} at {angle}{unit}"
+
+
+def velocity_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
+    """Draw the velocity plan at one driver position.
+
+    Parameters
+    ----------
+    table : Table
+        A kinematics or forces table (a forces table for the polygons and lever).
+    angle : float or sequence of float, optional
+        Driver position, deg (m for a prismatic driver): the nearest row (default
+        the first).
+    ax : matplotlib Axes, optional
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    pos = _pos(table, angle)
+    found = images(pos, 1)
+    mu = _scale(list(found.values()))
+    ax = _axes(ax, _title(pos, "velocity plan"))
+    _images_plot(ax, found, mu, "#333333")
+    legend = _chains(ax, pos, 1, mu)
+    _legend(ax, legend, f"scale: μv = {mu:g} (m/s)/mm")
+    return ax
+
+
+def acceleration_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
+    """Draw the acceleration plan: images, and each dyad's parts as arrows.
+
+    Parameters and Returns are those of :func:`velocity_plan`.
+    """
+    pos = _pos(table, angle)
+    found = images(pos, 2)
+    mu = _scale(list(found.values()))
+    ax = _axes(ax, _title(pos, "acceleration plan"))
+    _images_plot(ax, found, mu, "#333333")
+    legend = _chains(ax, pos, 2, mu)
+    _legend(ax, legend, f"scale: μa = {mu:g} (m/s²)/mm")
+    return ax
+
+
+def force_polygons(table: Table, angle: Any = None) -> Any:
+    """Draw the force polygon of every Assur group (reverse order), closed.
+
+    Each polygon runs through the known loads on the group's first link and its
+    outer reaction, then those of the next link: the group is in equilibrium, so
+    the polygon closes at its start (the title gives the gap, round-off).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    import matplotlib.pyplot as plt
+
+    from assur.plotting._context import _need_forces
+
+    _need_forces(table, "force_polygons")
+    pos = _pos(table, angle)
+    assert pos.result is not None
+    records = pos.result.groups
+    fig, axes = plt.subplots(1, len(records), figsize=(5.5 * len(records), 5.2),
+                             layout="constrained", squeeze=False)  # fmt: skip
+    solved: set[int] = set()
+    for ax, rec in zip(axes.flat, records, strict=True):
+        _polygon(ax, pos, rec, solved)
+        solved |= set(rec.bodies)
+    fig.suptitle(_title(pos, "force polygons"), fontsize=10)
+    return fig
+
+
+def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
+    """Draw one group's force polygon on ``ax``."""
+    sequence: list[tuple[str, np.ndarray, str]] = []
+    for i, body in enumerate(rec.bodies):
+        pair = _outer(pos, rec, body)
+        for load in link_loads(pos, body, solved):
+            sequence.append((load.tex, load.force, COLORS[i % len(COLORS)]))
+        for p in pair:
+            r = rec.reactions[p.name]
+            sign = 1.0 if p.second == body else -1.0
+            f = sign * np.array([float(np.ravel(r.fx)[0]), float(np.ravel(r.fy)[0])])
+            other = p.first if p.second == body else p.second
+            sequence.append((f"F({pos.link(other)}→{pos.link(body)})", f, "#111111"))
+    mu = _scale([f for _, f, _ in sequence])
+    tip = np.zeros(2)
+    for name, f, color in sequence:
+        end = tip + f / mu
+        _arrow(ax, tip, end, color)
+        mid = 0.5 * (tip + end)
+        ax.annotate(
+            name.replace("\\vec ", "").replace("\\", ""),
+            mid,
+            fontsize=7,
+            xytext=(3, 3),
+            textcoords="offset points",
+        )
+        tip = end
+    ax.plot([0], [0], "ko", ms=4)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, lw=0.4, alpha=0.4)
+    ax.set_xlabel("mm of the polygon")
+    ax.set_title(
+        f"group {rec.label}: closes within {float(np.hypot(*tip)):.1e} mm\n"
+        f"scale: μF = {mu:g} N/mm",
+        fontsize=9,
+    )
+
+
+def _outer(pos: Position, rec: Any, body: int) -> list[Any]:
+    """Return the pairs of ``rec`` that join ``body`` to a link outside the group."""
+    inside = set(rec.bodies)
+    return [
+        p
+        for p in rec.pairs
+        if body in (p.first, p.second) and not {p.first, p.second} <= inside
+    ]
+
+
+def lever_balance(table: Table, angle: Any = None) -> float:
+    """Return the balancing load read off Zhukovsky's lever (one driver), N m or N.
+
+    The sum of the moments about the pole of every load at its image point (the
+    velocity plan turned by +90 degrees) and of the inertia torques' terms, divided
+    by the driver's speed.
+    """
+    pos = _pos(table, angle)
+    total, speed = _lever_moment(pos)
+    return -total / speed
+
+
+def _lever_moment(pos: Position) -> tuple[float, float]:
+    """Return the sum of the loads' moments on the lever (W) and the driver's speed."""
+    d = pos.plan.drivers[0]
+    speed = (
+        pos.omega(d.body)
+        if d.kind == "R"
+        else float(np.dot(pos.pair_point(d.pair, 1), np.asarray(d.pair.axis)))
+    )
+    total = 0.0
+    for b in range(1, len(pos.plan.bodies)):
+        for load in own_loads(pos, b):
+            v = pos.coincident(b, load.point, 1)
+            image = np.array([-v[1], v[0]])
+            # moment about the pole of F at the image: -(F . v)
+            total -= float(image[0] * load.force[1] - image[1] * load.force[0])
+            total += load.couple * pos.omega(b)
+    return total, speed
+
+
+def zhukovsky_lever(table: Table, angle: Any = None, ax: Any = None) -> Any:
+    """Draw Zhukovsky's lever: the velocity plan turned by 90 degrees, the loads on it.
+
+    Every force acts at its point's image; the balancing force at the input link's
+    pin image is read off the lever (its value is written on the drawing).
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    pos = _pos(table, angle)
+    found = {n: np.array([-v[1], v[0]]) for n, v in images(pos, 1).items()}
+    mu = _scale(list(found.values()))
+    ax = _axes(ax, _title(pos, "Zhukovsky's lever"))
+    _images_plot(ax, found, mu, "#777777")
+    loads = [x for b in range(1, len(pos.plan.bodies)) for x in own_loads(pos, b)]
+    forces = [x for x in loads if math.hypot(*x.force) > 0]
+    fmu = _scale([x.force for x in forces]) * 2.0
+    for x, body in ((x, b) for b in range(1, len(pos.plan.bodies))
+                    for x in own_loads(pos, b)):  # fmt: skip
+        if math.hypot(*x.force) == 0:
+            continue
+        v = pos.coincident(body, x.point, 1)
+        at = np.array([-v[1], v[0]]) / mu
+        _arrow(ax, at, at + x.force / fmu, "#d62728")
+        ax.annotate(
+            x.tex.replace("\\vec ", "").replace("\\", ""),
+            at + x.force / fmu,
+            fontsize=7,
+        )
+    total, speed = _lever_moment(pos)
+    balancing = -total / speed
+    ax.text(0.02, 0.02,
+            f"balancing load from the lever: {balancing:.6g} "
+            f"{'N·m' if pos.plan.drivers[0].kind == 'R' else 'N'}"
+            f"\n(loads at their images; forces 1 mm = {fmu:g} N)",
+            transform=ax.transAxes, fontsize=8, va="bottom")  # fmt: skip
+    _legend(ax, [("load", "#d62728")], f"lever: μv = {mu:g} (m/s)/mm, turned 90°")
+    return ax
+
+
+def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
+    """Draw the mechanism with its instant centres: absolute and relative (Kennedy).
+
+    The absolute centre of a link is where its velocity is zero; the relative centre
+    of two links is their common point of equal velocity, on the line of their two
+    absolute centres (Kennedy's theorem: the line is drawn dashed).
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+    """
+    from assur.plotting.mechanism import draw
+
+    pos = _pos(table, angle)
+    table = pos.table
+    ax = draw(table, ax=ax)
+    centres = relative_centres(pos)
+    size = pos.size()
+    middle = np.mean([pos.origin(b) for b in range(len(pos.plan.bodies))], axis=0)
+    for (i, j), p in centres.items():
+        if p is None or float(np.hypot(*(p - middle))) > 3 * size:
+            continue
+        absolute = i == 0
+        ax.plot(*p, "s" if absolute else "o", ms=6 if absolute else 4,
+                color="#d62728" if absolute else "#1f77b4", zorder=9)  # fmt: skip
+        ax.annotate(
+            f"I{pos.link(i)}-{pos.link(j)}" if i else f"I{pos.link(j)}",
+            p,
+            xytext=(3, -9),
+            textcoords="offset points",
+            fontsize=7,
+        )
+        if i and centres.get((0, i)) is not None and centres.get((0, j)) is not None:
+            line = np.array([centres[(0, i)], centres[(0, j)]])
+            if float(np.abs(line - middle).max()) < 3 * size:
+                ax.plot(line[:, 0], line[:, 1], ls=":", lw=0.7, color="#1f77b4")
+    ax.set_title(_title(pos, "instant centres"), fontsize=10)
+    return ax
+
+
+def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:
+    """Return the instant centre of every two bodies (0: the frame), m.
+
+    The point where both bodies' velocities are equal; None where they turn at the
+    same rate (the centre is at infinity).
+    """
+    out: dict[tuple[int, int], np.ndarray | None] = {}
+    count = len(pos.plan.bodies)
+    for i in range(count):
+        for j in range(i + 1, count):
+            if "~" in pos.link(i) + pos.link(j):
+                continue
+            wi, wj = pos.omega(i), pos.omega(j)
+            if abs(wi - wj) <= 1e-9 * max(abs(wi), abs(wj), 1e-300):
+                out[(i, j)] = None
+                continue
+            oi, oj = pos.origin(i), pos.origin(j)
+            # v_oi + wi perp(P - oi) = v_oj + wj perp(P - oj)
+            vi = pos.coincident(i, oi, 1)
+            vj = pos.coincident(j, oj, 1)
+            rhs = vj - vi - wj * _perp(oj) + wi * _perp(oi)
+            q = rhs / (wi - wj)  # = perp(P)
+            out[(i, j)] = np.array([q[1], -q[0]])
+    return out
+
+
+def _pos(table: Table, angle: Any) -> Position:
+    """Return the solved mechanism at the row of ``table`` nearest to ``angle``."""
+    from assur.plotting._context import _row
+
+    return from_table(table, _row(table, angle))
+
+
+def _perp(v: np.ndarray) -> np.ndarray:
+    """Return ``v`` turned by +90 degrees."""
+    return np.array([-v[1], v[0]])

@@ -1,0 +1,416 @@
+"""The explanatory note (assur.explain): every number it prints against the tables.
+
+The tests read the note as a student would: they parse its Markdown, find every
+statement ``symbol = ... = value`` in its mathematics, and compare the value with the
+forces table (to half a unit of the last digit printed). The symbols follow the
+note's documented notation: ``\\vec v_{\\mathrm{C}}`` is the velocity of point C,
+``\\omega_{\\mathrm{rod}}`` the rod's angular velocity, ``\\vec F_{\\mathrm{crank},
+\\mathrm{rod}}`` the force of the crank on the rod, and so on.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur.explain import Note, explain
+
+from .test_html import browser  # noqa: F401 (the headless Chromium fixture)
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+EXERCISE = EXAMPLES / "slider_crank_exercise.toml"
+
+# every example at a few positions (the five-bar takes one position per driver)
+CASES = [
+    ("slider_crank_exercise", 45.0),
+    ("slider_crank_exercise", 200.0),
+    ("six_bar_lecture", 30.0),
+    ("six_bar_lecture", 250.0),
+    ("four_bar", 100.0),
+    ("offset_slider_crank", 300.0),
+    ("whitworth", 60.0),
+    ("whitworth", 210.0),
+    ("scotch_yoke", 30.0),
+    ("slot_mechanism", 120.0),
+    ("lever_var9", 80.0),
+    ("tenbar", 36.0),
+    ("class3", 20.0),
+    ("five_bar_two_cranks", (40.0, 100.0)),
+]
+
+
+def tex(name: str) -> str:
+    """A name from the file as the note sets it (upright)."""
+    special = {"_": r"\_", "{": r"\{", "}": r"\}", "$": r"\$", "%": r"\%", "&": r"\&"}
+    body = "".join(special.get(c, c) for c in name.replace("~block", " block"))
+    return f"\\mathrm{{{body.replace(' ', chr(92) + ' ')}}}"
+
+
+def point_tex(point: str) -> str:
+    if point.endswith(".G"):
+        return f"G_{{{tex(point[:-2])}}}"
+    return tex(point)
+
+
+MATH = re.compile(r"\$\$(.*?)\$\$|\$(.*?)\$")
+NUMBER = r"-?\d+(?:\.\d+)?(?: \\cdot 10\^\{-?\d+\})?"
+VECTOR = re.compile(rf"^\(({NUMBER}),\\ ({NUMBER})\)")
+SCALAR = re.compile(rf"^({NUMBER})")
+
+
+def number(text: str) -> tuple[float, float]:
+    """A printed number and half a unit of its last digit."""
+    m = re.fullmatch(r"(-?\d+)(?:\.(\d+))?(?: \\cdot 10\^\{(-?\d+)\})?", text)
+    assert m, text
+    whole, decimals, exponent = m.groups()
+    places = len(decimals or "")
+    scale = 10.0 ** int(exponent or 0)
+    value = float(f"{whole}.{decimals or 0}") * scale
+    return value, 0.5 * 10.0 ** (-places) * scale
+
+
+def statements(markdown: str) -> list[tuple[str, str]]:
+    """Every ``lhs = ... = last`` of the note's mathematics: (lhs, last)."""
+    found = []
+    for display, inline in MATH.findall(markdown):
+        for part in re.split(r",\\quad |\\quad ", (display or inline).strip()):
+            pieces = part.split(" = ")
+            if len(pieces) >= 2:
+                found.append((pieces[0].strip(), pieces[-1].strip()))
+    return found
+
+
+def expected(table: assur.Table) -> dict[str, tuple[float, ...]]:
+    """The table's value of every symbol the note may print, by its TeX."""
+    plan = table.plan
+    row = {c: float(table[c][0]) for c in table.columns}
+    out: dict[str, tuple[float, ...]] = {}
+    points = list(plan.points)
+    for pair in plan.pairs.values():
+        if pair.kind == "R" and not pair.virtual:
+            points.append(pair.name)
+    for p in dict.fromkeys(points):
+        t = point_tex(p)
+        out[f"\\vec r_{{{t}}}"] = (row[f"{p}.x"], row[f"{p}.y"])
+        for letter, (x, y) in (("v", ("vx", "vy")), ("a", ("ax", "ay"))):
+            v = (row[f"{p}.{x}"], row[f"{p}.{y}"])
+            out[f"\\vec {letter}_{{{t}}}"] = v
+            out[f"{letter}_{{{t}}}"] = (math.hypot(*v),)
+    for link in plan.bodies[1:]:
+        if "~" in link:
+            continue
+        t = tex(link)
+        out[f"\\omega_{{{t}}}"] = (row[f"{link}.omega"],)
+        out[f"\\varepsilon_{{{t}}}"] = (row[f"{link}.alpha"],)
+        out[f"\\varphi_{{{t}}}"] = (row[f"{link}.angle"],)
+        if f"{link}.Fi.x" in row:
+            f = (row[f"{link}.Fi.x"], row[f"{link}.Fi.y"])
+            out[f"\\vec F_{{i,{t}}}"] = f
+            out[f"F_{{i,{t}}}"] = (math.hypot(*f),)
+            out[f"M_{{i,{t}}}"] = (row[f"{link}.Mi"],)
+    for name, pair in plan.pairs.items():
+        if pair.kind == "P" and not pair.virtual:
+            out[f"\\dot s_{{{tex(name)}}}"] = (row[f"{name}.v"],)
+            out[f"\\ddot s_{{{tex(name)}}}"] = (row[f"{name}.a"],)
+        if "A.Fx" not in row and f"{plan.drivers[0].pair.name}.Fx" not in row:
+            continue
+        joint = name.split("~")[0]
+        f = (row[f"{joint}.Fx"], row[f"{joint}.Fy"])
+        a, b = (plan.bodies[x] for x in (pair.first, pair.second))
+        for by, on, sign in ((a, b, 1.0), (b, a, -1.0)):
+            symbol = f"F_{{{tex(by)},{tex(on)}}}"
+            out[f"\\vec {symbol}"] = (sign * f[0], sign * f[1])
+            out[symbol] = (math.hypot(*f),)
+        if pair.kind == "P" and not pair.virtual:
+            out[f"M_{{{tex(name)}}}"] = (row[f"{name}.M"],)
+    if "driver.torque" in row:
+        out["M_{b}"] = out["M_{b}^{lever}"] = (row["driver.torque"],)
+    if "driver.force" in row:
+        out["F_{b}"] = out["F_{b}^{lever}"] = (row["driver.force"],)
+    for d in plan.drivers:
+        what = "torque" if d.kind == "R" else "force"
+        letter = "M" if d.kind == "R" else "F"
+        key = f"{d.pair.name}.{what}"
+        if key in row:
+            sym = f"{letter}_{{b,{tex(d.pair.name)}}}"
+            out[sym] = out[f"{sym}^{{lever}}"] = (row[key],)
+    return out
+
+
+def printed(last: str) -> tuple[tuple[float, float], ...] | None:
+    """The value(s) a statement ends with, each with its rounding; None if none."""
+    last = last.replace("^\\circ", "")
+    m = VECTOR.match(last)
+    if m:
+        return number(m.group(1)), number(m.group(2))
+    m = SCALAR.match(last)
+    if m and not last[m.end() :].lstrip().startswith(("\\cdot", "+", "-", "(")):
+        return (number(m.group(1)),)
+    return None
+
+
+def check(note: Note, table: assur.Table) -> dict[str, int]:
+    """Compare every printed value that names a table quantity; count them by kind."""
+    values = expected(table)
+    counts: dict[str, int] = {}
+    for lhs, last in statements(str(note)):
+        if lhs not in values:
+            continue
+        found = printed(last)
+        if found is None:
+            continue
+        want = values[lhs]
+        assert len(found) == len(want), (lhs, last)
+        for (got, half), ref in zip(found, want, strict=True):
+            if lhs.startswith("\\varphi"):
+                ref = (ref - got + 180.0) % 360.0 - 180.0 + got
+            scale = max(abs(ref), 1.0)
+            assert abs(got - ref) <= half + 1e-9 * scale + 1e-12, (lhs, last, ref)
+        kind = re.sub(r"_\{.*", "", lhs)
+        counts[kind] = counts.get(kind, 0) + 1
+    return counts
+
+
+def _table(stem: str, angle) -> tuple[assur.Mechanism, assur.Table]:
+    mech = assur.load(EXAMPLES / f"{stem}.toml")
+    at = np.atleast_1d(np.asarray(angle, dtype=float))[None, :]
+    at = at if at.shape[1] > 1 else at[:, 0]
+    try:
+        return mech, assur.forces(mech, at)
+    except assur.ModelError:
+        return mech, assur.kinematics(mech, at)
+
+
+@pytest.mark.parametrize(("stem", "angle"), CASES)
+def test_every_number_agrees_with_the_table(stem: str, angle) -> None:
+    mech, table = _table(stem, angle)
+    note = explain(mech, angle)
+    counts = check(note, table)
+    plan = table.plan
+    moving = [b for b in plan.bodies[1:] if "~" not in b]
+    # every link's angular velocity and acceleration is printed and checked
+    assert counts.get("\\omega", 0) >= len(moving)
+    assert counts.get("\\varepsilon", 0) >= len(moving)
+    assert counts.get("\\vec v", 0) >= len(plan.groups)
+    assert counts.get("\\vec a", 0) >= len(plan.groups)
+    if table.force_state is not None:
+        # every joint's reaction, and the balancing load by both methods
+        joints = [p for p in plan.pairs.values() if not p.virtual]
+        assert counts.get("\\vec F", 0) >= len(joints)
+        balancing = sum(v for k, v in counts.items() if k in ("M", "F") or "b" in k)
+        assert balancing >= 2 * len(plan.drivers)
+
+
+def test_the_lecture_exercise_at_45_degrees() -> None:
+    note = str(explain(assur.load(EXERCISE), 45.0))
+    for text in (
+        r"F_{i,\mathrm{crank}} = m_{\mathrm{crank}} a_{G_{\mathrm{crank}}} = 10 \cdot "
+        r"800 = 8000\ \mathrm{N}",
+        r"F_{i,\mathrm{rod}} = m_{\mathrm{rod}} a_{G_{\mathrm{rod}}} = 0.5 \cdot "
+        r"2565.13 = 1282.57\ \mathrm{N}",
+        r"-0.0018 \cdot 10046.13 = -18.08\ \mathrm{N\,m}",
+        r"= 0.4 \cdot 2134.73 = 853.89\ \mathrm{N}",
+        r"M_{b} = -\sum M_{\mathrm{A}} = 84.63\ \mathrm{N\,m}",
+        r"M_{b}^{lever} = -\frac{\sum P}{\omega} = -\frac{-16925}{200} = 84.63",
+    ):
+        assert text in note, text
+    # the RRP group's reactions: the crank's on the rod, the guide's on the slider
+    assert r"\vec F_{\mathrm{crank},\mathrm{rod}} = (-1906.66,\ -289.39)" in note
+    assert r"\vec F_{\mathrm{ground},\mathrm{slider}} = (0,\ -443.17)" in note
+    assert (
+        r"= (853.89,\ -443.17)\ \mathrm{N},\quad F_{\mathrm{slider},\mathrm{rod}}"
+        in note
+    )
+
+
+# ------------------------------------------------------------- the given answers
+
+
+ANSWERS = Path(__file__).parent.parent / "docs" / "files"
+LECTURE_ANSWERS = ANSWERS / "slider_crank_exercise_answers.toml"
+
+
+def test_the_lecture_s_slip_is_found() -> None:
+    from assur.explain import read_answers
+
+    answers, source = read_answers(LECTURE_ANSWERS)
+    note = str(explain(assur.load(EXERCISE), 45.0, answers, source))
+    part = note.split("## 7. The given answers")[1]
+    assert "| rod.Fi | $1283.45$ | $1282.57$ | $+0.069$ % | differs |" in part
+    assert "| rod.G.a | $2565.12$ | $2565.13$ |" in part
+    assert "agrees" in part.split("rod.Fi")[0]
+    # the lecture's product is off, not its acceleration
+    assert r"m a_G = 0.5 \cdot 2565.132 = 1282.566" in part
+    assert r"m a_G = 0.5 \cdot 2565.12 = 1282.560" in part
+    assert "slip in the given multiplication" in part
+
+
+def test_an_answer_that_names_nothing_is_an_error(tmp_path: Path) -> None:
+    with pytest.raises(assur.ModelError, match=r"answers\.rod\.zz: no such quantity"):
+        explain(assur.load(EXERCISE), 45.0, {"rod.zz": 1.0})
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[answers]\n"rod.Fi" = "many"\n')
+    from assur.explain import read_answers
+
+    with pytest.raises(assur.ModelError, match=r"answers\.rod\.Fi: expected a number"):
+        read_answers(bad)
+
+
+# ------------------------------------------------------------ the command line
+
+
+def test_command_line_writes_markdown_html_and_latex(tmp_path: Path, capsys) -> None:
+    from assur.cli import main
+
+    assert main(["explain", str(EXERCISE), "--angle", "45"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("# Slider-crank exercise")
+    assert r"M_{b} = -\sum M_{\mathrm{A}} = 84.63" in out
+    for suffix in ("md", "html", "tex"):
+        target = tmp_path / f"note.{suffix}"
+        assert main(["explain", str(EXERCISE), "--angle", "45", "-o", str(target)]) == 0
+        assert target.read_text(encoding="utf-8")
+    assert (tmp_path / "note.md").read_text(encoding="utf-8") == out
+    assert (
+        main(["explain", str(EXERCISE), "--angle", "45", "-o", str(tmp_path / "n.pdf")])
+        == 2
+    )
+    assert "unknown type of note '.pdf'" in capsys.readouterr().err
+    assert main(["explain", str(EXERCISE), "--angle", "0:90:45"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1
+    assert "expected one value per driver" in err
+    assert not (tmp_path / "n.pdf").exists()
+
+
+def test_command_line_compares_answers(capsys) -> None:
+    from assur.cli import main
+
+    args = [
+        "explain",
+        str(EXERCISE),
+        "--angle",
+        "45",
+        "--answers",
+        str(LECTURE_ANSWERS),
+    ]
+    assert main(args) == 0
+    assert "slip in the given multiplication" in capsys.readouterr().out
+
+
+# ---------------------------------------------------------------- HTML and LaTeX
+
+
+def _every_math(page: str) -> list[str]:
+    return re.findall(r"<math\b.*?</math>", page, re.S)
+
+
+@pytest.mark.parametrize("stem", ["slider_crank_exercise", "class3", "whitworth"])
+def test_html_note_is_offline_and_its_mathml_well_formed(stem: str) -> None:
+    import xml.etree.ElementTree as ET
+
+    note = explain(assur.load(EXAMPLES / f"{stem}.toml"), 45.0)
+    page = note.to_html()
+    assert page.startswith("<!DOCTYPE html>")
+    assert page.rstrip().endswith("</html>")
+    assert re.search(r"https?://", page) is None
+    assert re.search(r"<(script|link|img|iframe)\b|\bsrc\s*=|@import", page) is None
+    maths = _every_math(page)
+    markdown = str(note)
+    # one <math> per piece of mathematics of the Markdown
+    assert len(maths) == len(MATH.findall(markdown))
+    for m in maths:
+        ET.fromstring(m)  # well formed
+    assert "$" not in re.sub(r"<math\b.*?</math>", "", page, flags=re.S).replace(
+        "\\$", ""
+    )
+
+
+def test_mathml_of_the_constructs() -> None:
+    from assur.explain._mathml import mathml
+
+    assert mathml(r"\frac{a}{b}") == (
+        "<math><mfrac><mrow><mi>a</mi></mrow><mrow><mi>b</mi></mrow></mfrac></math>"
+    )
+    assert "<msqrt>" in mathml(r"\sqrt{2}")
+    assert '<mover accent="true"><mi>v</mi><mo>→</mo></mover>' in mathml(r"\vec v")
+    assert "<mtext>left_crank</mtext>" in mathml(r"\mathrm{left\_crank}")
+    with pytest.raises(ValueError, match="knows no"):
+        mathml(r"\unknowncommand")
+    with pytest.raises(ValueError, match="not closed"):
+        mathml(r"\frac{a}{b")
+
+
+@pytest.mark.parametrize(
+    ("stem", "angle"),
+    [
+        ("slider_crank_exercise", 45.0),
+        ("class3", 20.0),
+        ("five_bar_two_cranks", (40.0, 100.0)),
+    ],
+)
+def test_latex_note_compiles(stem: str, angle, tmp_path: Path) -> None:
+    import shutil
+    import subprocess
+
+    pdflatex = shutil.which("pdflatex")
+    if pdflatex is None:
+        pytest.skip("pdflatex not found (apt-get install texlive-latex-recommended)")
+    source = tmp_path / "note.tex"
+    explain(assur.load(EXAMPLES / f"{stem}.toml"), angle).write(source)
+    result = subprocess.run(
+        [pdflatex, "-interaction=nonstopmode", "-halt-on-error", source.name],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=180,
+    )
+    assert result.returncode == 0, result.stdout[-2000:]
+    assert (tmp_path / "note.pdf").stat().st_size > 10_000
+
+
+@pytest.mark.browser
+def test_html_note_renders_in_a_browser(browser, tmp_path: Path) -> None:  # noqa: F811
+    # headless Chromium lays the MathML out offline (skips without Chromium)
+    path = tmp_path / "note.html"
+    explain(assur.load(EXERCISE), 45.0).write(path)
+    browser.get(path.as_uri())
+    count = browser.execute_script("return document.querySelectorAll('math').length")
+    assert count == len(_every_math(path.read_text(encoding="utf-8")))
+    heights = browser.execute_script(
+        "return Array.from(document.querySelectorAll('mfrac'))"
+        ".map(e => e.getBoundingClientRect().height)"
+    )
+    assert heights
+    assert min(heights) > 0
+
+
+def test_html_report_holds_the_note() -> None:
+    from assur.html import render_report
+
+    page = render_report(assur.load(EXERCISE), angles=[45.0, 90.0])
+    assert '<section class="card wide" id="note">' in page
+    section = page.split('id="note"')[1].split("</section>")[0]
+    assert "Inertia loads" in section
+    assert "group by group" in section
+    assert section.count("<math") > 50
+    assert re.search(r"https?://", page) is None
+
+
+@pytest.mark.pictures
+def test_plot_draws_one_group_s_free_body(tmp_path: Path, capsys) -> None:
+    from assur.cli import main
+
+    six = EXAMPLES / "six_bar_lecture.toml"
+    out = tmp_path / "group.png"
+    assert (
+        main(["plot", str(six), "--angle", "45", "--group", "2", "-o", str(out)]) == 0
+    )
+    assert out.stat().st_size > 10_000
+    assert main(["plot", str(six), "--group", "3", "-o", str(out)]) == 2
+    assert "expected 1 to 2" in capsys.readouterr().err
