@@ -13,6 +13,9 @@ I(ground, crank) -> II(rod, slider)
 from assur import catalog
 from assur._structure import Group, Structure, graph, mobility, structure
 from assur.analysis import Table, forces, kinematics
+from assur.dynamics_flywheel import FlywheelSizing, flywheel, flywheel_sizing
+from assur.dynamics_model import Dynamics, dynamics
+from assur.dynamics_startup import Startup, startup
 from assur.errors import (
     AssemblyError,
     AssurError,
@@ -25,7 +28,17 @@ from assur.errors import (
     UsageError,
 )
 from assur.io import dumps, load, loads, save
-from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
+from assur.model import (
+    Driver,
+    Joint,
+    Link,
+    Load,
+    LoadTable,
+    Mechanism,
+    Motor,
+    Point,
+    Toward,
+)
 
 __version__ = "0.1.0"
 
@@ -36,6 +49,8 @@ __all__ = [
     "ConvergenceError",
     "DecompositionError",
     "Driver",
+    "Dynamics",
+    "FlywheelSizing",
     "Group",
     "Joint",
     "Link",
@@ -43,9 +58,11 @@ __all__ = [
     "LoadTable",
     "Mechanism",
     "ModelError",
+    "Motor",
     "OutputError",
     "Point",
     "SingularConfigurationError",
+    "Startup",
     "Structure",
     "Table",
     "Toward",
@@ -53,6 +70,9 @@ __all__ = [
     "__version__",
     "catalog",
     "dumps",
+    "dynamics",
+    "flywheel",
+    "flywheel_sizing",
     "forces",
     "graph",
     "kinematics",
@@ -60,5 +80,6 @@ __all__ = [
     "loads",
     "mobility",
     "save",
+    "startup",
     "structure",
 ]

@@ -45,6 +45,12 @@ RANKS = {
     "assur._tableio": 10,
     "assur._csvtext": 10,
     "assur.plotting": 10,
+    # the dynamic model and the motion in time: sweeps of the analysis, reduced
+    "assur.dynamics_reduced": 10,
+    "assur.dynamics_steady": 10,
+    "assur.dynamics_model": 10,
+    "assur.dynamics_flywheel": 10,
+    "assur.dynamics_startup": 10,
     "assur.html": 10,
     # ready-made mechanisms for users and examples: model objects, never core input
     "assur.catalog": 10,
