@@ -207,6 +207,18 @@ def reduce(mechanism: Mechanism) -> Reduced:
         When the crank cannot make a full turn.
     """
     check_dynamic(mechanism)
+    plan = plan_of(mechanism)
+    # kept with the plan: dynamics, flywheel and startup of one mechanism share it
+    found = plan.memo.get("dynamics-reduced")
+    if found is None:
+        found = plan.memo["dynamics-reduced"] = _reduce(mechanism)
+    model, messages = found
+    _pass_on(messages, model.angle.shape[0])
+    return model  # type: ignore[no-any-return]
+
+
+def _reduce(mechanism: Mechanism) -> tuple[Reduced, list[str]]:
+    """Body of :func:`reduce`: the model and the warnings met on the grid."""
     start = float(plan_of(mechanism).drivers[0].angle0)
     count = GRID_START
     values, caught = _sample(mechanism, start, count, 0, 1)
@@ -221,8 +233,7 @@ def reduce(mechanism: Mechanism) -> Reduced:
         model, count, caught = replace(finer, error=error), 2 * count, caught + more
         if done:
             break
-    _pass_on(caught, count)
-    return model
+    return model, caught
 
 
 def _sample(

@@ -192,12 +192,12 @@ def _refined(
     """Locate the extremes on the interpolants, then solve for ``E0`` again."""
     from scipy.optimize import brentq
 
-    def square(phi: Any, e: float = energy) -> Any:
+    def square(phi: Any, e: float) -> Any:
         return _speeds(model, model.inertia_at(phi) + flywheel, e, phi)
 
     grid = _speeds(model, model.inertia + flywheel, energy)
-    top = _extreme(square, model, int(np.argmax(grid)), -1.0)
-    bottom = _extreme(square, model, int(np.argmin(grid)), 1.0)
+    top = _extreme(lambda phi: square(phi, energy), model, int(np.argmax(grid)), -1.0)
+    bottom = _extreme(lambda phi: square(phi, energy), model, int(np.argmin(grid)), 1.0)
 
     def gap(e: float) -> float:
         mean = 0.5 * (math.sqrt(square(top, e)) + math.sqrt(square(bottom, e)))
@@ -210,8 +210,8 @@ def _refined(
         omega,
         flywheel,
         energy,
-        math.sqrt(float(square(top))),
-        math.sqrt(float(square(bottom))),
+        math.sqrt(float(square(top, energy))),
+        math.sqrt(float(square(bottom, energy))),
         (top - start) % (2.0 * math.pi) + start,
         (bottom - start) % (2.0 * math.pi) + start,
     )
