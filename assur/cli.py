@@ -1,4 +1,4 @@
-"""Command line: ``assur structure|kinematics|forces|plot|diagrams|animate|report``.
+"""Command line: ``assur structure|kinematics|forces|dynamics|plot|diagrams|...``.
 
 A thin edge over the library: it parses arguments, reads the mechanism file, runs the
 analysis and writes text, CSV or JSON. Any error of the input, of an option or of an
@@ -100,6 +100,9 @@ def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
             action="store_true",
             help="leave out positions that cannot be assembled",
         )
+    from assur import dynamics_cli
+
+    COMMANDS.update(dynamics_cli.register(sub))
     _add_picture_commands(sub)
     for p in sub.choices.values():
         # after the command too; SUPPRESS keeps an earlier --quiet

@@ -59,6 +59,7 @@ RANKS = {
     "assur._cli_common": 12,
     "assur._cli_sweep": 12,
     "assur.cli": 12,
+    "assur.dynamics_cli": 12,
     "assur.pictures_cli": 12,
     "assur.__main__": 13,
 }
