@@ -51,6 +51,7 @@ RANKS = {
     "assur.dynamics_model": 10,
     "assur.dynamics_flywheel": 10,
     "assur.dynamics_startup": 10,
+    "assur.dynamics_shown": 10,
     "assur.html": 10,
     # ready-made mechanisms for users and examples: model objects, never core input
     "assur.catalog": 10,
