@@ -24,7 +24,12 @@ from assur._loads import compile_loads
 from assur._text import describe
 from assur._vec import Array
 from assur.analysis import forces, kinematics
-from assur.errors import AssurWarning, ModelError
+from assur.errors import (
+    AssemblyError,
+    AssurWarning,
+    ModelError,
+    SingularConfigurationError,
+)
 from assur.model import Mechanism
 from assur.plan import plan_of
 
@@ -211,7 +216,12 @@ def reduce(mechanism: Mechanism) -> Reduced:
     # kept with the plan: dynamics, flywheel and startup of one mechanism share it
     found = plan.memo.get("dynamics-reduced")
     if found is None:
-        found = plan.memo["dynamics-reduced"] = _reduce(mechanism)
+        try:
+            found = _reduce(mechanism)
+        except (AssemblyError, SingularConfigurationError) as err:
+            msg = f"dynamics: the crank cannot make a full turn: {err}"
+            raise type(err)(msg) from err
+        plan.memo["dynamics-reduced"] = found
     model, messages = found
     _pass_on(messages, model.angle.shape[0])
     return model  # type: ignore[no-any-return]

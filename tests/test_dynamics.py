@@ -394,3 +394,13 @@ def test_too_slow_for_its_loads():
 def test_no_mass_in_motion():
     with pytest.raises(assur.ModelError, match="reduced inertia is zero"):
         assur.dynamics(engine(), [0.0])
+
+
+def test_a_crank_that_cannot_turn_round():
+    rocker = assur.catalog.four_bar(crank=0.09, coupler=0.06, rocker=0.08)
+    with pytest.raises(
+        assur.AssemblyError,
+        match=r"^dynamics: the crank cannot make a full turn: group RRR "
+        r"\(coupler, rocker\): cannot be assembled",
+    ):
+        assur.dynamics(rocker, [60.0])
