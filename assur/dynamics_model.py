@@ -40,7 +40,7 @@ COLUMNS = (
 """The columns of a :class:`Dynamics` table: name, owner, quantity, unit."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Dynamics:
     """The dynamic model and the steady motion of a crank, per crank angle.
 

@@ -135,7 +135,7 @@ def reduced_at(mechanism: Mechanism, angles: Any) -> tuple[Array, Array, Array, 
     return np.asarray(motion["angle"]), inertia, slope, torque
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Reduced:
     """The reduced model sampled on a fine grid over one turn, with interpolants.
 

@@ -41,7 +41,7 @@ FINE = 2048
 """Samples of the last turn that give its extreme speeds."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Startup:
     """The start-up of a crank under its motor, and the periodic motion it settles in.
 
@@ -146,7 +146,7 @@ def startup(
     --------
     >>> import assur
     >>> mech = assur.catalog.slider_crank()
-    >>> run = startup(mech, 0.01, motor=assur.Motor(1.0, 60.0))
+    >>> run = startup(mech, 0.01, motor=assur.Motor(10.0, 60.0))
     >>> bool(50.0 < run.mean_speed < 60.0)
     True
     """

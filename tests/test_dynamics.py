@@ -365,6 +365,14 @@ def test_delta_must_be_positive(delta):
         assur.flywheel(example("four_bar"), delta)
 
 
+def test_a_search_that_finds_no_flywheel(monkeypatch):
+    from assur import dynamics_flywheel
+
+    monkeypatch.setattr(dynamics_flywheel, "WIDENINGS", 0)
+    with pytest.raises(assur.ModelError, match=r"no inertia up to .* brings the"):
+        assur.flywheel(example("whitworth"), 1e-6)
+
+
 def test_delta_that_needs_no_flywheel():
     with pytest.raises(assur.UsageError, match=r"alone runs with delta = 0\.67"):
         assur.flywheel(example("four_bar"), 0.9)

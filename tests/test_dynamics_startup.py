@@ -114,6 +114,11 @@ def test_a_mechanism_without_motor():
         assur.startup(example("whitworth"), 1.0)
 
 
+def test_a_motor_that_is_not_one():
+    with pytest.raises(assur.UsageError, match=r"motor: expected an assur\.Motor"):
+        assur.startup(crank(), motor=12.0)
+
+
 def test_a_start_against_the_motor():
     with pytest.raises(assur.UsageError, match="omega0: -3 rad/s"):
         assur.startup(crank(motor=Motor(1.0)), omega0=-3.0)
