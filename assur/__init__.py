@@ -13,6 +13,9 @@ I(ground, crank) -> II(rod, slider)
 from assur import catalog
 from assur._structure import Group, Structure, graph, mobility, structure
 from assur.analysis import Table, forces, kinematics
+from assur.dynamics_flywheel import FlywheelSizing, flywheel, flywheel_sizing
+from assur.dynamics_model import Dynamics, dynamics
+from assur.dynamics_startup import Startup, startup
 from assur.errors import (
     AssemblyError,
     AssurError,
@@ -27,7 +30,17 @@ from assur.errors import (
 )
 from assur.explain import Note, explain
 from assur.io import dumps, load, loads, save
-from assur.model import Driver, Joint, Link, Load, LoadTable, Mechanism, Point, Toward
+from assur.model import (
+    Driver,
+    Joint,
+    Link,
+    Load,
+    LoadTable,
+    Mechanism,
+    Motor,
+    Point,
+    Toward,
+)
 
 __version__ = "0.1.0"
 
@@ -38,6 +51,8 @@ __all__ = [
     "ConvergenceError",
     "DecompositionError",
     "Driver",
+    "Dynamics",
+    "FlywheelSizing",
     "Group",
     "Joint",
     "Link",
@@ -45,11 +60,13 @@ __all__ = [
     "LoadTable",
     "Mechanism",
     "ModelError",
+    "Motor",
     "Note",
     "OutputError",
     "Point",
     "SelfLockingError",
     "SingularConfigurationError",
+    "Startup",
     "Structure",
     "Table",
     "Toward",
@@ -57,7 +74,10 @@ __all__ = [
     "__version__",
     "catalog",
     "dumps",
+    "dynamics",
     "explain",
+    "flywheel",
+    "flywheel_sizing",
     "forces",
     "graph",
     "kinematics",
@@ -65,5 +85,6 @@ __all__ = [
     "loads",
     "mobility",
     "save",
+    "startup",
     "structure",
 ]

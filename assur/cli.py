@@ -1,4 +1,4 @@
-"""Command line: ``assur structure|kinematics|forces|explain|plot|diagrams|...``.
+"""Command line: ``assur structure|kinematics|forces|explain|dynamics|plot|...``.
 
 A thin edge over the library: it parses arguments, reads the mechanism file, runs the
 analysis and writes text, CSV or JSON. Any error of the input, of an option or of an
@@ -121,6 +121,9 @@ def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
         type=Path,
         help="given answers to compare with (a table [answers] of quantity = value)",
     )
+    from assur import dynamics_cli
+
+    COMMANDS.update(dynamics_cli.register(sub))
     _add_picture_commands(sub)
     for p in sub.choices.values():
         # after the command too; SUPPRESS keeps an earlier --quiet

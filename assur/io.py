@@ -33,6 +33,7 @@ from assur.model import (
     Load,
     LoadTable,
     Mechanism,
+    Motor,
     Point,
     PointSpec,
     Toward,
@@ -55,11 +56,13 @@ KEYS = {
         "gravity",
         "loads",
         "points",
+        "motor",
     ),
     "link": ("axis", "mass", "center", "inertia"),
     "joint": ("kind", "links", "at", "axis", "friction", "radius"),
     "driver": ("joint", "omega", "epsilon"),
     "gravity": ("g",),
+    "motor": ("torque", "no_load_speed"),
     "load": ("link", "at", "force", "torque"),
     "point": ("link", "at"),
     "toward": ("from", "toward", "distance"),
@@ -449,6 +452,17 @@ def parse(data: dict[str, Any]) -> Mechanism:
         gravity=gravity,
         loads=tuple(loads_),
         points=tuple(points),
+        motor=None if "motor" not in data else _motor("motor", data["motor"]),
+    )
+
+
+def _motor(entry: str, d: Any) -> Motor:
+    """Read the ``[motor]`` table: its torque and, optionally, its no-load speed."""
+    _check_keys(entry, d, KEYS["motor"])
+    _require(entry, d, "torque", what=" (the motor's torque at standstill, N m)")
+    return Motor(
+        _number(f"{entry}.torque", d["torque"]),
+        _opt_number(f"{entry}.no_load_speed", d.get("no_load_speed")),
     )
 
 
@@ -603,6 +617,10 @@ def dumps(mech: Mechanism) -> str:
             out.append(f"torque = {_table_text(load.torque, ('values',))}")
         elif load.torque is not None:
             out.append(f"torque = {_value(load.torque)}")
+    if mech.motor is not None:
+        out += ["\n[motor]", f"torque = {_value(mech.motor.torque)}"]
+        if mech.motor.no_load_speed is not None:
+            out.append(f"no_load_speed = {_value(mech.motor.no_load_speed)}")
     if mech.points:
         out.append("\n[points]")
         for p in mech.points:

@@ -27,6 +27,7 @@ __all__ = [
     "Load",
     "LoadTable",
     "Mechanism",
+    "Motor",
     "Point",
     "Toward",
     "point_links",
@@ -228,6 +229,35 @@ class Point:
 
 
 @dataclass(frozen=True, slots=True)
+class Motor:
+    """The motor on the driving crank: its torque against its speed.
+
+    ``M(w) = torque * (1 - w / no_load_speed)``, the linear characteristic of an
+    electric motor; without ``no_load_speed`` the torque is constant. The motor
+    turns the crank the way its torque points (counter-clockwise positive).
+
+    Parameters
+    ----------
+    torque : float
+        Torque at standstill (the stall torque), N m; not zero.
+    no_load_speed : float, optional
+        Speed at which the torque falls to zero, rad/s, of the torque's sign.
+    """
+
+    torque: float
+    no_load_speed: float | None = None
+
+    def __post_init__(self) -> None:
+        _tuples(self, "torque", "no_load_speed")
+
+    def at(self, speed: float) -> float:
+        """Return the motor's torque (N m) at the crank's ``speed`` (rad/s)."""
+        if self.no_load_speed is None:
+            return self.torque
+        return self.torque * (1.0 - speed / self.no_load_speed)
+
+
+@dataclass(frozen=True, slots=True)
 class Mechanism:
     """A planar mechanism in its reference pose.
 
@@ -243,6 +273,9 @@ class Mechanism:
     loads : tuple of Load
     points : tuple of Point
         Extra points to report.
+    motor : Motor, optional
+        The motor on the driving crank, for a start-up in time
+        (:func:`assur.startup`); nothing else reads it.
 
     Raises
     ------
@@ -265,6 +298,7 @@ class Mechanism:
     gravity: Vec2 | None = None
     loads: tuple[Load, ...] = ()
     points: tuple[Point, ...] = field(default=())
+    motor: Motor | None = None
     _hash: int | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -286,6 +320,7 @@ class Mechanism:
                     self.gravity,
                     self.loads,
                     self.points,
+                    self.motor,
                 )
             )
             object.__setattr__(self, "_hash", value)
@@ -509,6 +544,8 @@ def _validate(mech: Mechanism) -> None:
         _check_vec("gravity.g", mech.gravity)
     for index, load in enumerate(mech.loads):
         _validate_load(mech, f"loads[{index}]", load, link_names, point_names)
+    if mech.motor is not None:
+        _validate_motor(mech.motor)
     _check_resolvable(mech)
     _check_cranks(mech)
 
@@ -647,6 +684,29 @@ def _validate_drivers(mech: Mechanism) -> None:
         for key in ("omega", "epsilon"):
             if not _finite(getattr(driver, key)):
                 _fail(f"{entry}.{key}", _number_fault(getattr(driver, key)))
+
+
+def _validate_motor(motor: object) -> None:
+    """Check the motor: a torque that is not zero, a speed of the same sign."""
+    if not isinstance(motor, Motor):
+        _fail("motor", f"expected a Motor, got {describe(motor)}")
+    if not _finite(motor.torque):
+        _fail("motor.torque", _number_fault(motor.torque))
+    if motor.torque == 0:
+        _fail(
+            "motor.torque", "the motor's torque at standstill is 0; expected a torque"
+        )
+    speed = motor.no_load_speed
+    if speed is None:
+        return
+    if not _finite(speed):
+        _fail("motor.no_load_speed", _number_fault(speed))
+    if speed * motor.torque <= 0:  # type: ignore[operator]
+        _fail(
+            "motor.no_load_speed",
+            f"{describe(speed)} rad/s against a torque of {describe(motor.torque)} "
+            "N m; expected a speed of the torque's sign (the way the motor turns)",
+        )
 
 
 def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -> None:

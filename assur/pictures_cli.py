@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import math
+import warnings
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
@@ -28,7 +29,7 @@ from assur._cli_common import (
 )
 from assur._output import output_folder, output_path, path_text
 from assur._text import describe
-from assur.errors import UsageError
+from assur.errors import AssurError, AssurWarning, UsageError
 
 __all__ = ["register"]
 
@@ -43,7 +44,15 @@ FPS_RANGE = (0.1, 100.0)
 """Frame rates accepted, frames per second (a GIF counts in hundredths of a second)."""
 FRAMES_RANGE = (1, 1000)
 """Numbers of frames accepted in an animation."""
-DIAGRAMS = ("motion", "paths", "decomposition", "torque", "hodographs", "shaking")
+DIAGRAMS = (
+    "motion",
+    "paths",
+    "decomposition",
+    "torque",
+    "hodographs",
+    "shaking",
+    "dynamics",
+)
 """Names of the diagrams (PNG files) that ``assur diagrams`` writes."""
 
 
@@ -80,8 +89,9 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     _common(
         p,
         "DIR",
-        "folder for motion.png, paths.png, decomposition.png and, with "
-        "masses or loads, torque.png, hodographs.png, shaking.png",
+        "folder for motion.png, paths.png, decomposition.png; with masses or "
+        "loads, torque.png, hodographs.png, shaking.png; with masses and one "
+        "crank, dynamics.png",
         DPI,
     )
     p.add_argument("--angles", **angles)
@@ -407,6 +417,9 @@ def _diagrams(
             "hodographs": lambda: plotting.plot_hodographs(table),
             "shaking": lambda: plotting.plot_shaking(table),
         }
+    steady = _steady(table)
+    if steady is not None:
+        figures["dynamics"] = lambda: plotting.plot_dynamics(steady)
     written = []
     with progress("diagrams", len(figures), show) as bar:
         for name, make in figures.items():
@@ -414,6 +427,23 @@ def _diagrams(
             written.append(f"{name}.png")
             bar.advance(1)
     return written
+
+
+def _steady(table: Any) -> Any:
+    """Return the steady state to draw in dynamics.png, or None.
+
+    None without masses or a crank; a crank that cannot turn round is warned of.
+    """
+    from assur.dynamics_shown import has_dynamics, shown
+
+    mech = table.mechanism
+    if table.force_state is None or not has_dynamics(mech):
+        return None
+    try:
+        return shown(mech, table["angle"])
+    except AssurError as err:
+        warnings.warn(f"no dynamics.png: {err}", AssurWarning, stacklevel=2)
+        return None
 
 
 def _cmd_animate(args: argparse.Namespace) -> int:

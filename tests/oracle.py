@@ -926,3 +926,123 @@ def assert_columns(
             moment = key in ("M", "Mi") or "torque" in column
             atol = 1e-9 * force * (length if moment else 1.0) + 1e-15
         np.testing.assert_allclose(got, want, rtol=1e-8, atol=atol, err_msg=column)
+
+
+# ------------------------------------------------------------------------------------
+# Dynamics of a crank-driven mechanism
+
+
+def kinetic_energy(mech: assur.Mechanism, table: assur.Table) -> np.ndarray:
+    """Kinetic energy (J) of the moving links at every row: the table's own
+    velocities of the centres of mass and angular velocities."""
+    energy = np.zeros(len(table))
+    for link in mech.links:
+        if link.mass:
+            v = column_pair(table, f"{link.name}.G", 1)
+            w = table[f"{link.name}.omega"]
+            energy += 0.5 * (link.mass * np.sum(v * v, axis=-1) + link.inertia * w * w)
+    return energy
+
+
+def loads_power(mech: assur.Mechanism, table: assur.Table) -> np.ndarray:
+    """Power (W) of gravity and the external loads at every row (no inertia loads)."""
+    powers = applied_loads(mech, table, inertia=False).power
+    return np.sum([powers[link.name] for link in mech.links], axis=0)
+
+
+def crank_reduction(
+    mech: assur.Mechanism, angles: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Reduced inertia (kg m^2) and reduced torque (N m) at crank angles (deg), from a
+    forces table at the file's crank speed: ``2 T / w^2`` and ``P / w``."""
+    table = assur.forces(mech, angles)
+    w = mech.drivers[0].omega
+    return 2.0 * kinetic_energy(mech, table) / w**2, loads_power(mech, table) / w
+
+
+@dataclass
+class CrankModel:
+    """The equation of motion of a crank, rebuilt on a grid of ``count`` angles from
+    0 to 360 deg: periodic cubic splines of the reduced inertia and torque."""
+
+    inertia: object
+    torque: object
+    motor: float
+    flywheel: float
+
+    def acceleration(self, phi: float, w: float, motor: float) -> float:
+        """``phi''`` from ``J phi'' + 0.5 J' phi'^2 = motor + M``."""
+        j = float(self.inertia(phi)) + self.flywheel
+        slope = float(self.inertia(phi, 1))
+        return (motor + float(self.torque(phi)) - 0.5 * slope * w * w) / j
+
+
+def crank_model(
+    mech: assur.Mechanism, flywheel: float = 0.0, count: int = 7200
+) -> CrankModel:
+    """The oracle's own reduction of ``mech`` to its crank over a turn."""
+    from scipy.interpolate import CubicSpline
+
+    deg = np.arange(count) * 360.0 / count
+    inertia, torque = crank_reduction(mech, deg)
+    knots = np.radians(np.append(deg, 360.0))
+    splines = [
+        CubicSpline(knots, np.append(v, v[0]), bc_type="periodic")
+        for v in (inertia, torque)
+    ]
+    for s in splines:
+        s.extrapolate = "periodic"
+    return CrankModel(splines[0], splines[1], -float(np.mean(torque)), flywheel)
+
+
+def integrate_turn(
+    model: CrankModel, phi0: float, w0: float, motor: float, steps: int = 3000
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Integrate the equation of motion in time with the classical fourth-order
+    Runge-Kutta method, fixed step, from crank angle ``phi0`` (rad) at speed ``w0``
+    (rad/s) under a constant ``motor`` torque (N m) for about one turn.
+
+    Returns the times (s), crank angles (rad) and speeds (rad/s) of every step."""
+    dt = 2.0 * math.pi / abs(w0) / steps
+    t, phi, w = [0.0], [phi0], [w0]
+
+    def f(p: float, v: float) -> tuple[float, float]:
+        return v, model.acceleration(p, v, motor)
+
+    p, v = phi0, w0
+    while abs(p - phi0) < 2.0 * math.pi:
+        k1 = f(p, v)
+        k2 = f(p + 0.5 * dt * k1[0], v + 0.5 * dt * k1[1])
+        k3 = f(p + 0.5 * dt * k2[0], v + 0.5 * dt * k2[1])
+        k4 = f(p + dt * k3[0], v + dt * k3[1])
+        p += dt / 6.0 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+        v += dt / 6.0 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])
+        t.append(t[-1] + dt)
+        phi.append(p)
+        w.append(v)
+        if len(t) > 100 * steps:
+            msg = "the crank does not turn"
+            raise RuntimeError(msg)
+    return np.array(t), np.array(phi), np.array(w)
+
+
+def wittenbauer_flywheel(
+    mech: assur.Mechanism, delta: float, count: int = 7200
+) -> float:
+    """The flywheel (kg m^2) for a coefficient of speed fluctuation ``delta`` from the
+    energy-mass diagram with the exact tangent slopes ``w_max^2 / 2`` and
+    ``w_min^2 / 2``, where ``w_max, w_min = w (1 +- delta / 2)``.
+
+    The work is the trapezoidal integral of the oracle's reduced torque less its
+    mean; the tangent points are the grid's."""
+    deg = np.arange(count + 1) * 360.0 / count
+    inertia, torque = crank_reduction(mech, deg)
+    net = torque - np.mean(torque[:-1])
+    step = math.radians(360.0 / count)
+    work = np.concatenate([[0.0], np.cumsum(0.5 * (net[1:] + net[:-1]) * step)])
+    w = abs(mech.drivers[0].omega)
+    upper = 0.5 * (w * (1.0 + 0.5 * delta)) ** 2
+    lower = 0.5 * (w * (1.0 - 0.5 * delta)) ** 2
+    top = np.max(work - upper * inertia)
+    bottom = np.min(work - lower * inertia)
+    return float((top - bottom) / (upper - lower))

@@ -273,8 +273,8 @@ def test_a_misspelt_command_gets_a_suggestion(capsys):
     status, _, err = run(capsys, "zzz", FOUR_BAR)
     assert status == 2
     assert err.splitlines()[-1].startswith(
-        "assur: error: unknown command 'zzz' (known: animate, diagrams, explain, "
-        "forces, "
+        "assur: error: unknown command 'zzz' (known: animate, diagrams, dynamics, "
+        "explain, forces, "
     )
 
 

@@ -72,7 +72,11 @@ def test_diagrams_of_examples(path, tmp_path):
     assert main(["diagrams", str(path), "-o", str(out), "--dpi", "50"]) == 0
     written = sorted(p.name for p in out.glob("*.png"))
     assert {"motion.png", "paths.png", "decomposition.png"} <= set(written)
-    assert len(written) == (6 if has_forces(path) else 3)
+    from assur.dynamics_shown import has_dynamics
+
+    assert len(written) == (6 if has_forces(path) else 3) + has_dynamics(
+        assur.load(path)
+    )
 
 
 def test_table_to_pandas():

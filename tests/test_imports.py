@@ -46,6 +46,13 @@ RANKS = {
     "assur._tableio": 10,
     "assur._csvtext": 10,
     "assur.plotting": 10,
+    # the dynamic model and the motion in time: sweeps of the analysis, reduced
+    "assur.dynamics_reduced": 10,
+    "assur.dynamics_steady": 10,
+    "assur.dynamics_model": 10,
+    "assur.dynamics_flywheel": 10,
+    "assur.dynamics_startup": 10,
+    "assur.dynamics_shown": 10,
     "assur.html": 10,
     # the explanatory note reads the analysis like the pictures do
     "assur.explain": 10,
@@ -56,6 +63,7 @@ RANKS = {
     "assur._cli_common": 12,
     "assur._cli_sweep": 12,
     "assur.cli": 12,
+    "assur.dynamics_cli": 12,
     "assur.pictures_cli": 12,
     "assur.__main__": 13,
 }

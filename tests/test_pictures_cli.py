@@ -213,7 +213,7 @@ def test_diagrams_with_forces(
         capsys, "diagrams", SLOT, "--angles", "40:400:30", "--dpi", "40", "-o", str(out)
     )
     assert status == 0, err
-    assert {p.name for p in out.iterdir()} == KINEMATIC | KINETIC
+    assert {p.name for p in out.iterdir()} == KINEMATIC | KINETIC | {"dynamics.png"}
     for path in out.iterdir():
         _png(path)
 

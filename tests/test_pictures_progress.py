@@ -27,8 +27,8 @@ def test_diagrams_show_a_bar_on_a_terminal(tmp_path, capsys, monkeypatch):
     )
     assert status == 0
     assert "diagrams:" in err
-    assert "6.00/6.00" in err  # four-bar has masses: six pictures
-    assert out.count("wrote ") == 6
+    assert "7.00/7.00" in err  # four-bar has masses and a crank: seven pictures
+    assert out.count("wrote ") == 7
 
 
 @pytest.mark.pictures
@@ -42,7 +42,7 @@ def test_diagrams_without_a_terminal_or_quiet(tmp_path, capsys, monkeypatch):
         capsys, "diagrams", FOUR_BAR, "--angles=0:360:30", "-o", tmp_path / "e", "-q"
     )
     assert (status, out, err) == (0, "", "")
-    assert len(list((tmp_path / "e").iterdir())) == 6
+    assert len(list((tmp_path / "e").iterdir())) == 7
 
 
 @pytest.mark.pictures

@@ -1,4 +1,4 @@
-"""A self-contained HTML report: structure, animated drawing, diagrams and tables.
+"""A self-contained HTML report: structure, drawing, diagrams, dynamics and tables.
 
 The report is one file with inline CSS and JavaScript and its numbers embedded as JSON,
 so it opens offline in any browser. Python gathers the data from the numerical core;
@@ -17,6 +17,7 @@ from assur._structure import structure
 from assur.analysis import default_positions, forces, kinematics
 from assur.errors import AssemblyError
 from assur.html._data import report_data
+from assur.html._dynamics import dynamics_part
 from assur.html._page import assemble_page
 from assur.model import Mechanism
 from assur.plan import plan_of
@@ -39,7 +40,9 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
     -------
     str
         The page: structure report, an animated SVG drawing with a range slider
-        (``id="angle"``), diagrams over the sweep and a table; the data as JSON in
+        (``id="angle"``), diagrams over the sweep and a table; for a mechanism with
+        masses and one crank, its steady state (``id="dynamics"``, see
+        :func:`assur.dynamics`); the data as JSON in
         ``<script type="application/json" id="assur-data">``.
 
     Raises
@@ -73,7 +76,10 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
         )
         raise AssemblyError(msg)
     struct = structure(mechanism)
-    return assemble_page(plan, struct, table, report_data(plan, struct, table))
+    data = report_data(plan, struct, table)
+    section, data["dynamics"], columns = dynamics_part(table)
+    data["columns"].update(columns)
+    return assemble_page(plan, struct, table, data, section)
 
 
 def write_report(

@@ -23,9 +23,16 @@ DRAWING_WIDTH = 556
 
 
 def assemble_page(
-    plan: Plan, struct: Structure, table: Table, data: dict[str, Any]
+    plan: Plan,
+    struct: Structure,
+    table: Table,
+    data: dict[str, Any],
+    dynamics: str = "",
 ) -> str:
-    """Return the whole page: the template filled with sections, data and assets."""
+    """Return the whole page: the template filled with sections, data and assets.
+
+    ``dynamics`` is the HTML of the dynamics section, or empty.
+    """
     mech = plan.mechanism
     description = (
         f'<p class="description">{escape(mech.description)}</p>'
@@ -42,6 +49,7 @@ def assemble_page(
         "legend": legend_html(data),
         "force_note": '<p class="note" id="force-note"></p>' if forced else "",
         "structure": structure_html(struct, data),
+        "dynamics": dynamics,
         "table_title": "Reactions and balancing load" if forced else "Kinematics",
         "table": table_html(plan, table),
         "note": note_html(plan, table),

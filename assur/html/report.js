@@ -264,7 +264,7 @@
     }
     return step;
   }
-  function chart(spec) {
+  function chart(spec, where) {
     const CW = 480, CH = 250, m = {l: 58, r: 14, t: 10, b: 40};
     const figure = document.createElement("figure");
     const caption = document.createElement("figcaption");
@@ -275,7 +275,7 @@
     const legend = document.createElement("div");
     legend.className = "chart-legend";
     figure.appendChild(legend);
-    document.getElementById("charts").appendChild(figure);
+    document.getElementById(where || "charts").appendChild(figure);
     const xs = data.angle;
     const series = spec.series.map((item, j) => Object.assign({
       values: data.columns[item.key],
@@ -348,7 +348,11 @@
       });
     };
   }
-  const cursors = data.charts.filter((spec) => spec.series.length).map(chart);
+  const cursors = data.charts.filter((spec) => spec.series.length)
+    .map((spec) => chart(spec));
+  if (data.dynamics) {
+    for (const spec of data.dynamics.charts) cursors.push(chart(spec, "dynamics-charts"));
+  }
 
   // live tables of the values at the shown position
   const live = [];

@@ -2,8 +2,9 @@
 
 The mechanism at one driver position (each Assur group in its own colour, forces as
 arrows to a stated scale), its decomposition step by step, the free-body diagram of a
-group, diagrams over a sweep and an animated GIF. matplotlib is imported inside the
-functions only, so ``import assur`` stays free of it.
+group, diagrams over a sweep, the dynamic model and the start-up, and an animated
+GIF. matplotlib is imported inside the functions only, so ``import assur`` stays free
+of it.
 """
 
 from __future__ import annotations
@@ -22,6 +23,14 @@ from assur.plotting.decomposition import (
 )
 from assur.plotting.decomposition import draw_decomposition, draw_free_body
 from assur.plotting.diagrams import plot_motion, plot_paths
+from assur.plotting.dynamics import (
+    plot_dynamics,
+    plot_energy_mass,
+    plot_reduced_inertia,
+    plot_reduced_torque,
+    plot_speed,
+    plot_startup,
+)
 from assur.plotting.force_diagrams import plot_hodographs, plot_shaking, plot_torque
 from assur.plotting.mechanism import draw
 from assur.plotting.plans import (
@@ -40,10 +49,16 @@ __all__ = [
     "draw_free_body",
     "force_polygons",
     "instant_centres",
+    "plot_dynamics",
+    "plot_energy_mass",
     "plot_hodographs",
     "plot_motion",
     "plot_paths",
+    "plot_reduced_inertia",
+    "plot_reduced_torque",
     "plot_shaking",
+    "plot_speed",
+    "plot_startup",
     "plot_torque",
     "velocity_plan",
     "zhukovsky_lever",

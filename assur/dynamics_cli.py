@@ -1,0 +1,267 @@
+"""Command line: ``assur dynamics FILE [--flywheel J | --delta D] [--forces] ...``.
+
+:mod:`assur.cli` calls :func:`register` to add the command. It prints the figures of
+the steady state (the coefficient of speed fluctuation, the flywheel, the motor
+torque) and the table of the reduced quantities and the crank's motion; with
+``--forces`` the force table at that motion, with ``--startup`` the start-up under
+the file's motor. Tables go out whole or not at all (:mod:`assur._output`); faults
+raise :class:`~assur.errors.UsageError` or :class:`~assur.errors.ModelError`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from assur._cli_common import check_not_input, load_mechanism, parse_angles
+from assur._output import path_text, write_stdout
+from assur._vec import Array
+from assur.columns import pretty_unit
+from assur.errors import UsageError
+
+__all__ = ["register"]
+
+ROWS_SHOWN = 400
+"""Most rows of the readable tables; --csv and --json give them all."""
+
+
+def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
+    """Add the ``dynamics`` command to the ``sub`` parsers; return its handler."""
+    p = sub.add_parser(
+        "dynamics",
+        help="dynamic model reduced to the crank: steady state, flywheel, start-up",
+    )
+    p.add_argument("file", type=Path)
+    p.add_argument(
+        "--angles",
+        metavar="START:STOP:STEP",
+        help="crank angles of the table, deg; default: one turn from the reference "
+        "pose in steps of 1 deg",
+    )
+    size = p.add_mutually_exclusive_group()
+    size.add_argument(
+        "--flywheel", type=float, metavar="J", help="flywheel on the crank, kg m^2"
+    )
+    size.add_argument(
+        "--delta",
+        type=float,
+        metavar="D",
+        help="find the flywheel for this coefficient of speed fluctuation",
+    )
+    p.add_argument(
+        "--forces",
+        action="store_true",
+        help="add the force table at the steady motion (kinetostatics)",
+    )
+    p.add_argument(
+        "--startup",
+        action="store_true",
+        help="integrate the start-up from rest under the file's [motor]",
+    )
+    p.add_argument("--csv", metavar="PATH", help="write the table as CSV ('-': stdout)")
+    p.add_argument("--json", action="store_true", help="print everything as JSON")
+    return {"dynamics": _cmd_dynamics}
+
+
+def _cmd_dynamics(args: argparse.Namespace) -> int:
+    import assur
+
+    _check_options(args)
+    mech = load_mechanism(args.file)
+    angles = None if args.angles is None else parse_angles(args.angles)
+    sizing = None
+    inertia = 0.0 if args.flywheel is None else args.flywheel
+    if args.delta is not None:
+        sizing = assur.flywheel_sizing(mech, args.delta)
+        inertia = sizing.exact
+    result = assur.dynamics(mech, angles, flywheel=inertia)
+    table: Any = result
+    if args.forces:
+        motion = assur.forces(
+            mech,
+            result["angle"],
+            omega=result["driver.omega"],
+            epsilon=result["driver.epsilon"],
+        )
+        table = _Joined(result, motion)
+    run = assur.startup(mech, inertia) if args.startup else None
+    if args.json:
+        write_stdout(_json(result, table, sizing, run) + "\n")
+    elif args.csv == "-":
+        table.to_csv("-")
+    elif args.csv:
+        _write_csv(args, table)
+    else:
+        figures = _figures(result, sizing, run)
+        write_stdout(figures + "\n\n" + _readable(table, args.forces) + "\n")
+    return 0
+
+
+def _check_options(args: argparse.Namespace) -> None:
+    """Refuse options that cannot be used, before anything is computed."""
+    if args.flywheel is not None and not (
+        math.isfinite(args.flywheel) and args.flywheel >= 0
+    ):
+        msg = f"--flywheel {args.flywheel:g}: expected an inertia >= 0, kg m^2"
+        raise UsageError(msg)
+    if args.delta is not None and not (math.isfinite(args.delta) and args.delta > 0):
+        msg = (
+            f"--delta {args.delta:g}: expected a coefficient of speed fluctuation "
+            "> 0, such as 0.02"
+        )
+        raise UsageError(msg)
+    if args.csv == "-" and args.json:
+        msg = "--csv - and --json: both write to standard output; expected one of them"
+        raise UsageError(msg)
+    if args.csv:
+        check_not_input("--csv", args.csv, args.file)
+
+
+class _Joined:
+    """The dynamics table and the force table at its motion, side by side."""
+
+    def __init__(self, result: Any, motion: Any) -> None:
+        self.mechanism = result.mechanism
+        self.parts = (result, motion)
+        seen = set(result.columns)
+        self.columns = (*result.columns, *(c for c in motion.columns if c not in seen))
+
+    def __getitem__(self, name: str) -> Array:
+        result, motion = self.parts
+        return result[name] if name in result else motion[name]
+
+    def __len__(self) -> int:
+        return len(self.parts[0])
+
+    def column(self, name: str) -> Any:
+        result, motion = self.parts
+        return result.column(name) if name in result else motion.column(name)
+
+    def to_csv(self, path: Any = None) -> str | None:
+        from assur.io import write_csv
+
+        return write_csv(self, path)
+
+
+def _write_csv(args: argparse.Namespace, table: Any) -> None:
+    """Write the table to ``--csv PATH`` (whole or not at all); say so."""
+    table.to_csv(args.csv)
+    if not getattr(args, "quiet", False):
+        size = f"{len(table)} rows x {len(table.columns)} columns"
+        print(f"wrote {size} to {path_text(args.csv)}")
+
+
+def _figures(result: Any, sizing: Any, run: Any) -> str:
+    """Return the figures of the steady state (and start-up) as aligned lines."""
+    kgm2 = pretty_unit("kg m^2")
+    lines = [
+        ("nominal crank speed", f"{result.omega:.6g} rad/s"),
+        ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
+        ("motor torque", f"{result.motor:.6g} N·m (constant)"),
+        ("coefficient of speed fluctuation", f"delta = {result.delta:.6g}"),
+        (
+            "largest speed",
+            f"{result.speed_max:.6g} rad/s at {result.angle_max:.6g} deg",
+        ),
+        (
+            "smallest speed",
+            f"{result.speed_min:.6g} rad/s at {result.angle_min:.6g} deg",
+        ),
+        ("energy swing", f"{result.energy_swing:.6g} J"),
+        ("kinetic energy at the reference pose", f"{result.energy:.6g} J"),
+        (
+            "internal grid",
+            f"{result.grid} positions a turn (work to {result.tolerance:.1g})",
+        ),
+    ]
+    if sizing is not None:
+        gaps = {k: f"{100 * v:+.3g} %" for k, v in sizing.differences().items()}
+        lines[1] = (
+            "flywheel",
+            f"{sizing.exact:.6g} {kgm2} (exact, for delta = {sizing.delta:g})",
+        )
+        lines.insert(
+            2,
+            (
+                "classical estimates",
+                f"Wittenbauer {sizing.wittenbauer:.6g} ({gaps['wittenbauer']}), "
+                f"energy swing {sizing.energy_swing:.6g} ({gaps['energy_swing']})",
+            ),
+        )
+    if run is not None:
+        lines += [
+            ("start-up", f"settles in {run.settle_time:.6g} s ({run.turns} turns)"),
+            (
+                "periodic motion",
+                f"mean speed {run.mean_speed:.6g} rad/s, delta = {run.delta:.6g}",
+            ),
+        ]
+    name = result.mechanism.name or "Mechanism"
+    width = max(len(k) for k, _ in lines)
+    body = "\n".join(f"  {k.ljust(width)}  {v}" for k, v in lines)
+    return f"{name}: dynamic model reduced to the crank\n{body}"
+
+
+def _readable(table: Any, forces: bool) -> str:
+    """Return the first rows of the main columns as an aligned text table."""
+    names = list(table.columns[:8])
+    if forces:
+        names += [
+            c
+            for c in table.columns[8:]
+            if c.endswith((".F", "driver.torque", "driver.torque_check"))
+        ]
+    units = [table.column(c).unit for c in names]
+    columns = [np.asarray(table[c])[:ROWS_SHOWN] for c in names]
+    marks = [f"[{u}]" if u else "" for u in units]
+    cells = [[f"{v:.6g}" for v in row] for row in zip(*columns, strict=True)]
+    widths = [
+        max(len(n), len(m), *(len(r[i]) for r in cells))
+        for i, (n, m) in enumerate(zip(names, marks, strict=True))
+    ]
+    lines = [
+        "  ".join(x.rjust(w) for x, w in zip(row, widths, strict=True))
+        for row in (names, marks, *cells)
+    ]
+    if len(table) > ROWS_SHOWN:
+        lines.append(f"... {len(table) - ROWS_SHOWN} more rows: --csv PATH or --json")
+    return "\n".join(lines)
+
+
+def _json(result: Any, table: Any, sizing: Any, run: Any) -> str:
+    """Return the JSON document: the figures, the columns and the rows."""
+    data: dict[str, Any] = {"name": result.mechanism.name}
+    data["dynamics"] = result.summary()
+    if sizing is not None:
+        data["flywheel"] = {
+            "delta": sizing.delta,
+            "exact": sizing.exact,
+            "wittenbauer": sizing.wittenbauer,
+            "energy_swing": sizing.energy_swing,
+        }
+    if run is not None:
+        data["startup"] = {
+            "settle_time": run.settle_time,
+            "turns": run.turns,
+            "period": run.period,
+            "mean_speed": run.mean_speed,
+            "speed_max": run.speed_max,
+            "speed_min": run.speed_min,
+            "delta": run.delta,
+        }
+    data["columns"] = list(table.columns)
+    values = np.column_stack([np.asarray(table[c], dtype=float) for c in table.columns])
+    data["rows"] = [
+        {
+            c: (v if math.isfinite(v) else None)
+            for c, v in zip(table.columns, row, strict=True)
+        }
+        for row in values.tolist()
+    ]
+    return json.dumps(data, indent=1, allow_nan=False)

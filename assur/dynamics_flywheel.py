@@ -1,0 +1,200 @@
+"""The flywheel for a given coefficient of speed fluctuation, exact and classical.
+
+:func:`flywheel` solves the steady state of :mod:`assur.dynamics_steady` for the
+inertia that gives the asked ``delta`` exactly (Brent's method). :func:`flywheel_sizing`
+sets it beside the two classical estimates: Wittenbauer's energy-mass diagram with its
+usual tangent slopes ``w^2 (1 +- delta) / 2``, and the maximum energy swing
+``dE_max / (w^2 delta)`` that neglects the mechanism's own inertia.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from assur.dynamics_reduced import Reduced, check_dynamic, reduce
+from assur.dynamics_steady import steady_state
+from assur.errors import ModelError, UsageError
+from assur.model import Mechanism
+
+__all__ = ["FlywheelSizing", "flywheel", "flywheel_sizing", "wittenbauer"]
+
+DELTA_RTOL = 1e-12
+"""Relative tolerance of the flywheel inertia found by Brent's method."""
+WIDENINGS = 60
+"""Most times the upper end of the search is multiplied by 4."""
+
+
+@dataclass(frozen=True, slots=True)
+class FlywheelSizing:
+    """A flywheel for a coefficient of speed fluctuation, three ways.
+
+    Attributes
+    ----------
+    delta : float
+        The coefficient of speed fluctuation asked for.
+    omega : float
+        The nominal crank speed, rad/s.
+    exact : float
+        The inertia (kg m^2) whose steady state has exactly ``delta``.
+    wittenbauer : float
+        The classical estimate from the energy-mass diagram: tangents of slopes
+        ``w^2 (1 + delta) / 2`` and ``w^2 (1 - delta) / 2``, kg m^2.
+    energy_swing : float
+        The estimate ``dE_max / (w^2 delta)`` from the largest swing of the work of
+        the loads and the motor, the mechanism's own inertia neglected, kg m^2.
+    """
+
+    delta: float
+    omega: float
+    exact: float
+    wittenbauer: float
+    energy_swing: float
+
+    def differences(self) -> dict[str, float]:
+        """Return how far each estimate is from the exact inertia, relative."""
+        return {
+            "wittenbauer": (self.wittenbauer - self.exact) / self.exact,
+            "energy_swing": (self.energy_swing - self.exact) / self.exact,
+        }
+
+
+def flywheel(mechanism: Mechanism, delta: float) -> float:
+    """Return the flywheel inertia that gives the coefficient of fluctuation ``delta``.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        One revolute driver, masses; its ``omega`` is the nominal speed.
+    delta : float
+        ``(max w - min w) / omega`` of the steady state, > 0.
+
+    Returns
+    -------
+    float
+        The inertia added on the crank, kg m^2, to a relative tolerance of
+        :data:`DELTA_RTOL` on the root of ``delta(J) - delta``.
+
+    Raises
+    ------
+    UsageError
+        For ``delta <= 0``, or when the mechanism alone already runs with a smaller
+        fluctuation (no flywheel can raise it).
+    ModelError
+        See :func:`assur.dynamics`.
+
+    Examples
+    --------
+    >>> import assur
+    >>> mech = assur.catalog.slider_crank()
+    >>> inertia = flywheel(mech, 0.02)
+    >>> round(assur.dynamics(mech, [0.0], flywheel=inertia).delta, 6)
+    0.02
+    """
+    return _exact(*_prepared(mechanism, delta), delta)
+
+
+def flywheel_sizing(mechanism: Mechanism, delta: float) -> FlywheelSizing:
+    r"""Return the exact flywheel and the two classical estimates beside it.
+
+    Parameters are those of :func:`flywheel`.
+
+    Notes
+    -----
+    In Wittenbauer's energy-mass diagram the change of kinetic energy
+    :math:`W(\varphi)` is plotted against the mechanism's reduced inertia
+    :math:`J(\varphi)`; a ray from the pole :math:`(-J_f, -E_0)` to a point of the
+    curve has the slope :math:`w^2/2`. The tangents to the curve of slopes
+    :math:`w_{max}^2/2` and :math:`w_{min}^2/2` meet the energy axis at
+    :math:`b_{max}` and :math:`b_{min}`, and
+    :math:`J_f = (b_{max} - b_{min}) / (w_{max}^2/2 - w_{min}^2/2)`. The classical
+    construction takes the slopes :math:`w^2 (1 \pm \delta) / 2`, which drops terms
+    of order :math:`\delta^2`.
+
+    References
+    ----------
+    F. Wittenbauer, *Graphische Dynamik*, Springer, Berlin, 1923.
+    """
+    model, omega = _prepared(mechanism, delta)
+    exact = _exact(model, omega, delta)
+    w2 = omega * omega
+    swing = float(np.max(model.work) - np.min(model.work))
+    return FlywheelSizing(
+        delta,
+        omega,
+        exact,
+        wittenbauer(model, w2 * (1.0 + delta) / 2.0, w2 * (1.0 - delta) / 2.0),
+        swing / (w2 * delta),
+    )
+
+
+def wittenbauer(model: Reduced, upper: float, lower: float) -> float:
+    """Return the flywheel (kg m^2) of the energy-mass diagram's two tangents.
+
+    ``upper`` and ``lower`` are the tangents' slopes, J per kg m^2; the tangent
+    points are found on the grid of ``model``.
+    """
+    top = float(np.max(model.work - upper * model.inertia))
+    bottom = float(np.min(model.work - lower * model.inertia))
+    return (top - bottom) / (upper - lower)
+
+
+def _prepared(mechanism: Mechanism, delta: Any) -> tuple[Reduced, float]:
+    """Check ``delta`` and the mechanism; return its reduced model and its speed."""
+    try:
+        value = float(delta)
+    except (TypeError, ValueError) as err:
+        msg = f"delta: expected a coefficient of speed fluctuation, got {delta!r}"
+        raise UsageError(msg) from err
+    if not (math.isfinite(value) and value > 0):
+        msg = (
+            f"delta: {value:g}; expected a coefficient of speed fluctuation > 0, "
+            "(max w - min w) / omega, such as 0.02"
+        )
+        raise UsageError(msg)
+    omega = check_dynamic(mechanism, "flywheel")
+    return reduce(mechanism), omega
+
+
+def _exact(model: Reduced, omega: float, delta: float) -> float:
+    """Solve ``delta(J_f) = delta`` for the flywheel ``J_f`` by Brent's method."""
+    from scipy.optimize import brentq
+
+    def excess(inertia: float) -> float:
+        try:
+            return steady_state(model, omega, inertia).delta - delta
+        except ModelError:
+            return math.inf  # the crank would stop: far too little inertia
+
+    guess = _guess(model, omega, delta)
+    # without a mass in motion somewhere, the search starts just above zero
+    low = 0.0 if float(np.min(model.inertia)) > 0 else 1e-9 * guess
+    at_low = excess(low)
+    if at_low <= 0:
+        msg = (
+            f"delta: {delta:g}; the mechanism alone runs with delta = "
+            f"{at_low + delta:.6g}, so it needs no flywheel; expected a smaller delta"
+        )
+        raise UsageError(msg)
+    high = max(guess, low, 1e-300)
+    for _ in range(WIDENINGS):
+        if excess(high) < 0:
+            break
+        low, high = high, 4.0 * high
+    else:
+        msg = (
+            f"flywheel: no inertia up to {high:.3g} kg m^2 brings the fluctuation "
+            f"down to delta = {delta:g}"
+        )
+        raise ModelError(msg)
+    return float(brentq(excess, low, high, xtol=1e-300, rtol=DELTA_RTOL))
+
+
+def _guess(model: Reduced, omega: float, delta: float) -> float:
+    """Return an inertia that gives at most about ``delta`` (the swing estimate)."""
+    swing = float(np.max(model.work) - np.min(model.work))
+    spread = float(np.max(model.inertia) - np.min(model.inertia))
+    return 2.0 * swing / (omega * omega * delta) + spread / delta

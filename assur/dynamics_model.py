@@ -1,0 +1,287 @@
+"""The dynamic model of a crank-driven mechanism and its steady motion.
+
+:func:`dynamics` reduces the mechanism to its crank (:mod:`assur.dynamics_reduced`),
+finds the steady state under the constant motor torque that balances the loads over a
+turn (:mod:`assur.dynamics_steady`) and returns the reduced quantities and the real
+motion of the crank at the asked crank angles as a :class:`Dynamics` table, with the
+coefficient of speed fluctuation and the other figures of the steady state.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from assur._text import suggest
+from assur._vec import Array
+from assur.analysis import default_positions
+from assur.columns import Column
+from assur.dynamics_reduced import Reduced, check_dynamic, reduce, reduced_at
+from assur.dynamics_steady import Steady, steady_state
+from assur.errors import UsageError
+from assur.model import Mechanism
+
+__all__ = ["COLUMNS", "Dynamics", "checked_flywheel", "dynamics"]
+
+COLUMNS = (
+    ("angle", "angle", "angle", "deg"),
+    ("reduced.inertia", "reduced", "inertia", "kg m^2"),
+    ("reduced.inertia_slope", "reduced", "inertia_slope", "kg m^2/rad"),
+    ("reduced.torque", "reduced", "torque", "N m"),
+    ("reduced.work", "reduced", "work", "J"),
+    ("driver.motor", "driver", "motor", "N m"),
+    ("driver.omega", "driver", "omega", "rad/s"),
+    ("driver.epsilon", "driver", "epsilon", "rad/s^2"),
+)
+"""The columns of a :class:`Dynamics` table: name, owner, quantity, unit."""
+
+
+@dataclass(frozen=True, eq=False)
+class Dynamics:
+    """The dynamic model and the steady motion of a crank, per crank angle.
+
+    A table like :class:`assur.Table`: ``result["driver.omega"]`` is a read-only
+    array with one value per crank angle, ``columns`` lists the names, ``schema``
+    their units; ``to_csv`` writes it. The figures of the steady state over the whole
+    turn are attributes (and :meth:`summary`).
+
+    Attributes
+    ----------
+    mechanism : Mechanism
+    schema : tuple of Column
+    omega : float
+        Nominal crank speed, rad/s (the file's): the mean of the largest and the
+        smallest speed; its sign is the sense of rotation.
+    delta : float
+        Coefficient of speed fluctuation, ``(max w - min w) / |omega|``.
+    flywheel : float
+        Inertia added on the crank, kg m^2 (included in ``reduced.inertia``).
+    motor : float
+        The constant motor torque of the steady state, N m.
+    energy : float
+        Kinetic energy at the reference pose, J.
+    speed_max, speed_min : float
+        Largest and smallest crank speed over a turn, rad/s (magnitudes).
+    angle_max, angle_min : float
+        Crank angles where they occur, deg, within the turn from the reference pose.
+    energy_swing : float
+        Largest minus smallest ``reduced.work`` over the turn, J.
+    grid : int
+        Crank positions of the internal grid over a turn.
+    tolerance : float
+        Estimated relative error of the work integral on that grid.
+    """
+
+    mechanism: Mechanism
+    schema: tuple[Column, ...]
+    omega: float
+    delta: float
+    flywheel: float
+    motor: float
+    energy: float
+    speed_max: float
+    speed_min: float
+    angle_max: float
+    angle_min: float
+    energy_swing: float
+    grid: int
+    tolerance: float
+    values: dict[str, Array] = field(repr=False)
+
+    @property
+    def columns(self) -> tuple[str, ...]:
+        """The column names, in order."""
+        return tuple(c.name for c in self.schema)
+
+    def column(self, name: str) -> Column:
+        """Return the description of column ``name`` (owner, quantity, unit)."""
+        for c in self.schema:
+            if c.name == name:
+                return c
+        msg = f"no column {name!r}{suggest(name, self.columns, listing=False)}"
+        raise KeyError(msg)
+
+    def __getitem__(self, name: str) -> Array:
+        if name not in self.values:
+            self.column(name)  # raises with a hint
+        return self.values[name]
+
+    def __len__(self) -> int:
+        return int(self.values["angle"].shape[0])
+
+    def __contains__(self, name: object) -> bool:
+        return name in self.values
+
+    def summary(self) -> dict[str, float]:
+        """Return the figures of the steady state by name (SI units, angles in deg)."""
+        names = (
+            "omega",
+            "delta",
+            "flywheel",
+            "motor",
+            "energy",
+            "speed_max",
+            "speed_min",
+            "angle_max",
+            "angle_min",
+            "energy_swing",
+            "grid",
+            "tolerance",
+        )
+        return {name: float(getattr(self, name)) for name in names}
+
+    def to_csv(self, path: Any = None) -> str | None:
+        """Write the table as CSV (see :meth:`assur.Table.to_csv`)."""
+        from assur.io import write_csv
+
+        return write_csv(self, path)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Return JSON-ready data: name, the steady state's figures, columns, rows."""
+        rows = np.column_stack([self.values[c] for c in self.columns])
+        return {
+            "name": self.mechanism.name,
+            "dynamics": self.summary(),
+            "columns": list(self.columns),
+            "rows": [
+                {
+                    c: (v if math.isfinite(v) else None)
+                    for c, v in zip(self.columns, r, strict=True)
+                }
+                for r in rows.tolist()
+            ],
+        }
+
+    def plot(self, **kwargs: Any) -> Any:
+        """Draw the dynamic model (see :func:`assur.plotting.plot_dynamics`)."""
+        from assur.plotting import plot_dynamics
+
+        return plot_dynamics(self, **kwargs)
+
+
+def dynamics(
+    mechanism: Mechanism,
+    angles: Sequence[float] | Array | None = None,
+    flywheel: float = 0.0,
+) -> Dynamics:
+    r"""Reduce the mechanism to its crank and find its steady motion.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        One revolute driver; at least one link with a mass.
+    angles : array_like, optional
+        Crank angles (deg) of the table's rows. Default: one turn from the reference
+        pose in steps of 1 deg.
+    flywheel : float
+        Inertia added on the crank, kg m^2.
+
+    Returns
+    -------
+    Dynamics
+        Columns ``angle`` (deg), ``reduced.inertia`` ``J`` (kg m^2, flywheel
+        included), ``reduced.inertia_slope`` ``dJ/dphi`` (kg m^2/rad),
+        ``reduced.torque`` ``M`` of gravity and the external loads (N m),
+        ``reduced.work`` the work of ``M`` and the motor from the reference pose
+        (J), ``driver.motor`` (N m), ``driver.omega`` (rad/s) and
+        ``driver.epsilon`` (rad/s^2) of the steady state.
+
+    Raises
+    ------
+    ModelError
+        For a prismatic driver, several drivers, no mass, a zero ``omega``, a reduced
+        inertia that vanishes, or a mean speed too low to carry the crank round.
+    UsageError
+        For a flywheel that is negative or not a number.
+
+    Notes
+    -----
+    The motor torque is :math:`M_d = -\overline{M}`, the mean over a turn. The
+    kinetic energy :math:`\tfrac12 J w^2 = E_0 + W(\varphi)`, with
+    :math:`W = \int (M + M_d)\,d\varphi` from the reference pose, gives the speed;
+    :math:`E_0` makes the mean of its extremes the file's ``omega``. The crank's
+    acceleration is the equation of motion's,
+
+    .. math::
+
+        \varepsilon = \frac{dw}{dt} = \frac{M + M_d - \tfrac12 J' w^2}{J},
+
+    so that the balancing torque of the kinetostatics at that motion is
+    :math:`M_d - J_f \varepsilon`. The work is integrated on an internal grid of
+    :data:`~assur.dynamics_reduced.GRID_START` to
+    :data:`~assur.dynamics_reduced.GRID_MOST` positions a turn, refined until it
+    changes by less than :data:`~assur.dynamics_reduced.GRID_RTOL`; the extremes of
+    the speed are found on that grid and its interpolants, whatever ``angles`` is.
+
+    References
+    ----------
+    I. I. Artobolevsky, *Theory of Mechanisms and Machines*, ch. on the motion of
+    machines under given forces (the reduced inertia and the energy equation).
+
+    Examples
+    --------
+    >>> import assur
+    >>> t = dynamics(assur.catalog.slider_crank(), angles=[0.0, 90.0])
+    >>> t.columns[:3]
+    ('angle', 'reduced.inertia', 'reduced.inertia_slope')
+    >>> bool(0.0 < t.delta < 1.0)
+    True
+    """
+    flywheel = checked_flywheel(flywheel)
+    omega = check_dynamic(mechanism)
+    model = reduce(mechanism)
+    steady = steady_state(model, omega, flywheel)
+    if angles is None:
+        angles = default_positions(mechanism)
+    return result(mechanism, model, steady, angles)
+
+
+def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dynamics:
+    """Return the table of ``steady`` at the crank angles ``angles`` (deg)."""
+    angle, inertia, slope, torque = reduced_at(mech, angles)
+    inertia = inertia + steady.flywheel
+    phi = np.radians(angle)
+    work = model.work_at(phi)
+    square = np.maximum(2.0 * (steady.energy + work) / inertia, 0.0)
+    omega = math.copysign(1.0, steady.omega) * np.sqrt(square)
+    epsilon = (torque + model.motor - 0.5 * slope * omega * omega) / inertia
+    n = angle.shape[0]
+    arrays = (angle, inertia, slope, torque, work, np.full(n, model.motor), omega)
+    values = dict(zip((c[0] for c in COLUMNS), (*arrays, epsilon), strict=True))
+    for v in values.values():
+        v.flags.writeable = False
+    schema = tuple(Column(*c, "dynamics", (), 0) for c in COLUMNS)
+    return Dynamics(
+        mech,
+        schema,
+        steady.omega,
+        steady.delta,
+        steady.flywheel,
+        model.motor,
+        steady.energy,
+        steady.speed_max,
+        steady.speed_min,
+        math.degrees(steady.angle_max),
+        math.degrees(steady.angle_min),
+        float(np.max(model.work) - np.min(model.work)),
+        int(model.angle.shape[0]),
+        model.error,
+        values,
+    )
+
+
+def checked_flywheel(value: Any) -> float:
+    """Return the flywheel inertia, checked: a finite number >= 0 (kg m^2)."""
+    try:
+        number = float(value)
+    except (TypeError, ValueError) as err:
+        msg = f"flywheel: expected an inertia in kg m^2, got {value!r}"
+        raise UsageError(msg) from err
+    if not (math.isfinite(number) and number >= 0):
+        msg = f"flywheel: {number:g} kg m^2; expected a finite inertia >= 0"
+        raise UsageError(msg)
+    return number

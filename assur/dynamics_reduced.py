@@ -1,0 +1,333 @@
+"""The mechanism reduced to its crank: reduced inertia, its slope, reduced torque.
+
+A one-degree-of-freedom mechanism driven by a crank moves as one body on the crank's
+shaft whose inertia ``J(phi)`` varies with the crank angle and on which one torque
+``M(phi)`` does the work of all the loads. Both come from sweeps of the core: the
+kinematics at unit crank speed give the velocity ratios, the static balancing torque
+gives the loads' torque by the principle of virtual work. :func:`reduce` samples them
+on a fine periodic grid over one turn and builds the interpolants that the steady
+state (:mod:`assur.dynamics_model`) and the start-up in time
+(:mod:`assur.dynamics_startup`) use.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Sequence
+from dataclasses import dataclass, replace
+from typing import Any
+
+import numpy as np
+
+from assur._loads import compile_loads
+from assur._text import describe
+from assur._vec import Array
+from assur.analysis import forces, kinematics
+from assur.errors import (
+    AssemblyError,
+    AssurWarning,
+    ModelError,
+    SingularConfigurationError,
+)
+from assur.model import Mechanism
+from assur.plan import plan_of
+
+__all__ = ["GRID_RTOL", "Reduced", "check_dynamic", "reduce", "reduced_at"]
+
+GRID_START = 1024
+"""Positions of the first internal grid over one turn; it is doubled until converged."""
+GRID_MOST = 65536
+"""Most positions of the internal grid over one turn."""
+GRID_RTOL = 1e-10
+"""Tolerance of the internal grid: successive grids must agree on the loads' work
+over the turn to this fraction of the work done in the turn (the integral of
+``|M|``), and the interpolants of ``J`` and ``M`` must match the computed values
+between grid points to 1e-8 of their largest magnitude."""
+BETWEEN_RTOL = 1e-8
+"""Tolerance of the interpolants of ``J`` and ``M`` between grid points (relative to
+their largest magnitude)."""
+
+
+def check_dynamic(mechanism: Mechanism, what: str = "dynamics") -> float:
+    """Check that ``mechanism`` has a dynamic model; return its crank's speed (rad/s).
+
+    One revolute driver and at least one link with a mass are needed.
+
+    Raises
+    ------
+    ModelError
+        For a prismatic driver, several drivers, or no mass at all.
+    """
+    plan = plan_of(mechanism)
+    if len(plan.drivers) != 1:
+        msg = (
+            f"{what}: the mechanism has {len(plan.drivers)} drivers; expected one "
+            "driving crank (a revolute driver) for a model reduced to the crank"
+        )
+        raise ModelError(msg)
+    driver = plan.drivers[0]
+    if driver.kind != "R":
+        msg = (
+            f"{what}: driver joint {describe(driver.pair.name)} is prismatic; "
+            "expected a revolute driver (a crank): the reduced model turns through "
+            "a revolution"
+        )
+        raise ModelError(msg)
+    if not compile_loads(plan).mass.any():
+        msg = (
+            f"{what}: no link has a mass, so the reduced inertia is zero; expected "
+            "'mass', 'center' and 'inertia' on the moving links"
+        )
+        raise ModelError(msg)
+    return float(mechanism.drivers[0].omega)
+
+
+def reduced_at(mechanism: Mechanism, angles: Any) -> tuple[Array, Array, Array, Array]:
+    r"""Return ``J``, ``dJ/dphi`` and ``M`` at the crank angles ``angles`` (deg).
+
+    Returns
+    -------
+    angle : ndarray (n,)
+        The crank angles, deg, as the sweep read them.
+    inertia : ndarray (n,)
+        Reduced inertia of the mechanism, kg m^2 (no flywheel).
+    slope : ndarray (n,)
+        Its derivative with respect to the crank angle, kg m^2/rad.
+    torque : ndarray (n,)
+        Reduced torque of gravity and the external loads, N m.
+
+    Notes
+    -----
+    At unit crank speed and zero crank acceleration, the velocities are the velocity
+    ratios and the accelerations their derivatives with respect to the crank angle:
+
+    .. math::
+
+        J = \sum_L m_L |v_{G_L}|^2 + J_{G_L} \omega_L^2, \qquad
+        \frac{dJ}{d\varphi} = 2 \sum_L m_L\, v_{G_L} \cdot a_{G_L}
+        + J_{G_L} \omega_L \alpha_L .
+
+    The reduced torque is minus the balancing torque at rest (zero speed and
+    acceleration): by virtual work, the power of the loads per unit crank speed.
+    """
+    mech = mechanism
+    links = [link for link in mech.links if link.mass]
+    wanted = []
+    for link in links:
+        g = f"{link.name}.G"
+        wanted += [f"{g}.vx", f"{g}.vy", f"{g}.ax", f"{g}.ay"]
+        wanted += [f"{link.name}.omega", f"{link.name}.alpha"]
+    motion = kinematics(mech, angles, omega=1.0, epsilon=0.0, columns=wanted)
+    inertia = np.zeros(len(motion))
+    slope = np.zeros(len(motion))
+    for link in links:
+        g, m, jg = f"{link.name}.G", float(link.mass or 0.0), float(link.inertia or 0)
+        vx, vy = motion[f"{g}.vx"], motion[f"{g}.vy"]
+        w = motion[f"{link.name}.omega"]
+        inertia += m * (vx * vx + vy * vy) + jg * w * w
+        slope += 2.0 * (
+            m * (vx * motion[f"{g}.ax"] + vy * motion[f"{g}.ay"])
+            + jg * w * motion[f"{link.name}.alpha"]
+        )
+    static = forces(mech, angles, omega=0.0, epsilon=0.0, columns=["driver.torque"])
+    torque = -np.asarray(static["driver.torque"])
+    return np.asarray(motion["angle"]), inertia, slope, torque
+
+
+@dataclass(frozen=True, eq=False)
+class Reduced:
+    """The reduced model sampled on a fine grid over one turn, with interpolants.
+
+    Attributes
+    ----------
+    start : float
+        Crank angle of the first grid point (the reference pose), rad.
+    angle : ndarray (N,)
+        The grid, rad: ``start + 2 pi k / N``.
+    inertia, slope, torque : ndarray (N,)
+        ``J`` (kg m^2), ``dJ/dphi`` (kg m^2/rad), ``M`` (N m) on the grid.
+    motor : float
+        The constant torque that does the loads' work back over a turn, N m: minus
+        the mean of ``M``.
+    work : ndarray (N,)
+        Work of ``M`` and the motor from the start, J.
+    error : float
+        Estimated relative error of the work (see :data:`GRID_RTOL`).
+    """
+
+    start: float
+    angle: Array
+    inertia: Array
+    slope: Array
+    torque: Array
+    motor: float
+    work: Array
+    error: float
+    splines: tuple[Any, Any, Any]
+
+    @property
+    def step(self) -> float:
+        """Spacing of the grid, rad."""
+        return 2.0 * math.pi / self.angle.shape[0]
+
+    def inertia_at(self, phi: Any) -> Any:
+        """Interpolate ``J`` (kg m^2) at crank angles ``phi`` (rad), any turn."""
+        return self.splines[0](phi)
+
+    def slope_at(self, phi: Any) -> Any:
+        """Interpolate ``dJ/dphi`` (kg m^2/rad) at crank angles ``phi`` (rad)."""
+        return self.splines[0](phi, 1)
+
+    def torque_at(self, phi: Any) -> Any:
+        """Interpolate the reduced torque ``M`` (N m) at crank angles ``phi`` (rad)."""
+        return self.splines[1](phi)
+
+    def work_at(self, phi: Any) -> Any:
+        """Return the work of ``M`` and the motor from the start to ``phi`` (rad), J.
+
+        Periodic: the work over a whole turn is zero.
+        """
+        return self.splines[2](phi)
+
+    @property
+    def scale(self) -> float:
+        """The work that the loads do in a turn, both ways counted (J)."""
+        return float(np.sum(np.abs(self.torque)) * self.step)
+
+
+def reduce(mechanism: Mechanism) -> Reduced:
+    """Sample the reduced model on a grid over one turn, fine enough to integrate.
+
+    The grid starts at the reference pose with :data:`GRID_START` positions and is
+    doubled (up to :data:`GRID_MOST`) until the work over the turn and the
+    interpolants of ``J`` and ``M`` between grid points agree to :data:`GRID_RTOL`
+    and :data:`BETWEEN_RTOL`.
+
+    Raises
+    ------
+    ModelError
+        See :func:`check_dynamic`.
+    AssemblyError, SingularConfigurationError
+        When the crank cannot make a full turn.
+    """
+    check_dynamic(mechanism)
+    plan = plan_of(mechanism)
+    # kept with the plan: dynamics, flywheel and startup of one mechanism share it
+    found = plan.memo.get("dynamics-reduced")
+    if found is None:
+        try:
+            found = _reduce(mechanism)
+        except (AssemblyError, SingularConfigurationError) as err:
+            msg = f"dynamics: the crank cannot make a full turn: {err}"
+            raise type(err)(msg) from err
+        plan.memo["dynamics-reduced"] = found
+    model, messages = found
+    _pass_on(messages, model.angle.shape[0])
+    return model  # type: ignore[no-any-return]
+
+
+def _reduce(mechanism: Mechanism) -> tuple[Reduced, list[str]]:
+    """Body of :func:`reduce`: the model and the warnings met on the grid."""
+    start = float(plan_of(mechanism).drivers[0].angle0)
+    count = GRID_START
+    values, caught = _sample(mechanism, start, count, 0, 1)
+    model = _model(start, values)
+    while count < GRID_MOST:
+        middle, more = _sample(mechanism, start, 2 * count, 1, 2)
+        values = tuple(
+            np.ravel(np.column_stack(p)) for p in zip(values, middle, strict=True)
+        )
+        finer = _model(start, values)
+        done, error = _converged(model, finer, middle)
+        model, count, caught = replace(finer, error=error), 2 * count, caught + more
+        if done:
+            break
+    return model, caught
+
+
+def _sample(
+    mech: Mechanism, start: float, count: int, first: int, every: int
+) -> tuple[tuple[Array, ...], list[str]]:
+    """Return ``J``, ``dJ/dphi``, ``M`` at grid points ``first::every`` of ``count``.
+
+    Also the messages of the warnings the sweeps gave.
+    """
+    k = np.arange(first, count, every)
+    angles = math.degrees(start) + 360.0 * k / count
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", AssurWarning)
+        values = reduced_at(mech, angles)[1:]
+    for w in caught:
+        if not issubclass(w.category, AssurWarning):
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+    return values, [str(w.message) for w in caught if w.category is AssurWarning]
+
+
+def _model(start: float, values: Sequence[Array]) -> Reduced:
+    """Build the interpolants of the sampled ``J``, ``dJ/dphi`` and ``M``."""
+    from scipy.interpolate import CubicHermiteSpline, CubicSpline
+
+    inertia, slope, torque = (np.asarray(v) for v in values)
+    n = inertia.shape[0]
+    angle = start + 2.0 * math.pi * np.arange(n) / n
+    knots = np.append(angle, start + 2.0 * math.pi)
+    closed = [np.append(v, v[0]) for v in (inertia, slope, torque)]
+    j = CubicHermiteSpline(knots, closed[0], closed[1], extrapolate="periodic")
+    m = CubicSpline(knots, closed[2], bc_type="periodic", extrapolate="periodic")
+    # a periodic cubic spline integrates over its period as the trapezoid rule does,
+    # so the mean taken here leaves a work that is periodic to rounding
+    motor = -float(np.mean(torque))
+    net = CubicSpline(
+        knots, closed[2] + motor, bc_type="periodic", extrapolate="periodic"
+    )
+    w = net.antiderivative()
+    w.extrapolate = "periodic"
+    work = w(angle) - w(start)
+    shifted = _Shifted(w, float(w(start)))
+    return Reduced(
+        start, angle, inertia, slope, torque, motor, work, 0.0, (j, m, shifted)
+    )
+
+
+@dataclass(frozen=True)
+class _Shifted:
+    """A periodic antiderivative less its value at the start."""
+
+    ppoly: Any
+    offset: float
+
+    def __call__(self, phi: Any) -> Any:
+        return self.ppoly(phi) - self.offset
+
+
+def _converged(
+    coarse: Reduced, fine: Reduced, middle: tuple[Array, ...]
+) -> tuple[bool, float]:
+    """Whether the finer grid adds nothing (same work, interpolants that held).
+
+    Also the relative change of the work, the estimate of its error.
+    """
+    scale = fine.scale
+    gap = float(np.max(np.abs(fine.work[::2] - coarse.work)))
+    ok = gap <= GRID_RTOL * scale
+    mids = fine.angle[1::2]
+    for got, want in (
+        (coarse.inertia_at(mids), middle[0]),
+        (coarse.torque_at(mids), middle[2]),
+    ):
+        size = float(np.max(np.abs(want)))
+        ok = ok and float(np.max(np.abs(got - want))) <= BETWEEN_RTOL * size
+    return bool(ok), (gap / scale if scale > 0 else 0.0)
+
+
+def _pass_on(messages: list[str], count: int) -> None:
+    """Warn once of each distinct trouble the internal grid met."""
+    if not messages:
+        return
+    shown = "; ".join(dict.fromkeys(messages))
+    warnings.warn(
+        f"dynamics, on its internal grid of up to {count} positions a turn: {shown}",
+        AssurWarning,
+        stacklevel=3,
+    )

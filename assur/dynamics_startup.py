@@ -1,0 +1,412 @@
+"""The start-up in time: the crank driven by its motor from rest to its periodic motion.
+
+:func:`startup` integrates the equation of motion of the mechanism reduced to its
+crank, ``J(phi) phi'' + 0.5 J'(phi) phi'^2 = M_motor(phi') + M(phi)``, with
+:func:`scipy.integrate.solve_ivp`, one turn after another, until the speed at the
+reference pose repeats from turn to turn; then it reports the time to settle and the
+periodic motion's figures. A crank whose motor cannot carry it past its peak load
+stalls, and the error says where.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from assur._vec import Array
+from assur.dynamics_model import checked_flywheel
+from assur.dynamics_reduced import Reduced, check_dynamic, reduce
+from assur.dynamics_steady import check_inertia
+from assur.errors import ModelError, UsageError
+from assur.model import Mechanism, Motor
+
+__all__ = ["Startup", "startup"]
+
+RTOL = 1e-10
+"""Relative tolerance of the time integration (scipy's DOP853)."""
+PERIODIC_RTOL = 1e-8
+"""The motion is periodic when the speed at the reference pose, extrapolated from the
+last turns, changes by less than this fraction of itself."""
+SETTLE_BAND = 0.02
+"""The time to settle is the time after which the speed stays within this fraction
+of the mean speed of the periodic motion at the same crank angle."""
+MAX_TURNS = 2000
+"""Most turns integrated before the motion is declared not to settle."""
+SAMPLES = 90
+"""Samples kept of every turn, evenly spaced in time."""
+FINE = 2048
+"""Samples of the last turn that give its extreme speeds."""
+
+
+@dataclass(frozen=True, eq=False)
+class Startup:
+    """The start-up of a crank under its motor, and the periodic motion it settles in.
+
+    Attributes
+    ----------
+    mechanism : Mechanism
+    motor : Motor
+    flywheel : float
+        Inertia added on the crank, kg m^2.
+    time : ndarray (n,)
+        Time from the start, s (samples of every turn, evenly spaced in time).
+    angle : ndarray (n,)
+        Crank angle, deg, continuous (no jump at 360).
+    omega : ndarray (n,)
+        Crank speed, rad/s.
+    settle_time : float
+        Time after which the speed stays within :data:`SETTLE_BAND` of the mean
+        speed of the periodic motion of its crank angle, s.
+    turns : int
+        Turns integrated.
+    period : float
+        Duration of a turn of the periodic motion, s.
+    mean_speed : float
+        ``2 pi / period``, rad/s, signed.
+    speed_max, speed_min : float
+        Largest and smallest speed of the periodic motion, rad/s (magnitudes).
+    """
+
+    mechanism: Mechanism
+    motor: Motor
+    flywheel: float
+    time: Array = field(repr=False)
+    angle: Array = field(repr=False)
+    omega: Array = field(repr=False)
+    settle_time: float
+    turns: int
+    period: float
+    mean_speed: float
+    speed_max: float
+    speed_min: float
+
+    @property
+    def delta(self) -> float:
+        """The periodic motion's ``(max w - min w) / ((max w + min w) / 2)``."""
+        return (
+            2.0 * (self.speed_max - self.speed_min) / (self.speed_max + self.speed_min)
+        )
+
+    def plot(self, **kwargs: Any) -> Any:
+        """Draw the speed against time (see :func:`assur.plotting.plot_startup`)."""
+        from assur.plotting import plot_startup
+
+        return plot_startup(self, **kwargs)
+
+
+def startup(
+    mechanism: Mechanism,
+    flywheel: float = 0.0,
+    *,
+    motor: Motor | None = None,
+    omega0: float = 0.0,
+    turns: int = MAX_TURNS,
+) -> Startup:
+    """Integrate the crank's motion in time from the reference pose until periodic.
+
+    Parameters
+    ----------
+    mechanism : Mechanism
+        One revolute driver, masses; its ``[motor]`` unless ``motor`` is given.
+    flywheel : float
+        Inertia added on the crank, kg m^2.
+    motor : Motor, optional
+        The motor; default: the mechanism's.
+    omega0 : float
+        Crank speed at the start, rad/s: 0 (from rest) or of the motor's sense.
+    turns : int
+        Most turns to integrate.
+
+    Returns
+    -------
+    Startup
+
+    Raises
+    ------
+    ModelError
+        Without a motor; when the motor cannot start or carry the crank past its
+        peak load (the crank stalls, at the crank angle named); when the motion does
+        not settle within ``turns`` turns (a constant torque above the mean load's).
+    UsageError
+        For a negative flywheel or an ``omega0`` against the motor.
+
+    Notes
+    -----
+    The state is the crank angle and speed; the reduced inertia ``J``, its slope and
+    the reduced torque ``M`` are the periodic interpolants of
+    :func:`assur.dynamics_reduced.reduce`. The integration (DOP853, relative
+    tolerance :data:`RTOL`) stops at every turn; the motion is periodic when the
+    speed there, extrapolated geometrically from the last turns, changes by less
+    than :data:`PERIODIC_RTOL`.
+
+    Examples
+    --------
+    >>> import assur
+    >>> mech = assur.catalog.slider_crank()
+    >>> run = startup(mech, 0.01, motor=assur.Motor(10.0, 60.0))
+    >>> bool(50.0 < run.mean_speed < 60.0)
+    True
+    """
+    check_dynamic(mechanism, "startup")
+    engine = _motor(mechanism, motor)
+    inertia = checked_flywheel(flywheel)
+    sense = math.copysign(1.0, engine.torque)
+    if omega0 * sense < 0 or not math.isfinite(omega0):
+        msg = (
+            f"omega0: {omega0:g} rad/s; expected 0 or a speed of the motor's sense "
+            f"({'counter-clockwise' if sense > 0 else 'clockwise'})"
+        )
+        raise UsageError(msg)
+    model = reduce(mechanism)
+    check_inertia(model, model.inertia + inertia, inertia)
+    curves = _Curves(model, inertia)
+    _starts(model, engine, omega0, curves)
+    runs = _integrate(model, engine, curves, omega0, turns)
+    return _result(mechanism, engine, inertia, model, runs)
+
+
+def _motor(mechanism: Mechanism, motor: Motor | None) -> Motor:
+    """Return the motor to use: the one given, or the mechanism's."""
+    if motor is not None:
+        if not isinstance(motor, Motor):
+            msg = f"motor: expected an assur.Motor, got {type(motor).__name__}"
+            raise UsageError(msg)
+        return motor
+    if mechanism.motor is None:
+        msg = (
+            "startup: the mechanism has no motor; expected a [motor] table with "
+            "'torque' (N m at standstill) and, for an electric motor, "
+            "'no_load_speed' (rad/s)"
+        )
+        raise ModelError(msg)
+    return mechanism.motor
+
+
+class _Curves:
+    """Fast scalar interpolants of ``J + J_f``, ``dJ/dphi`` and ``M`` (periodic)."""
+
+    def __init__(self, model: Reduced, flywheel: float) -> None:
+        self.start = model.start
+        self.step = model.step
+        self.count = model.angle.shape[0]
+        j, m, _ = model.splines
+        self.j = [list(map(float, row)) for row in j.c[:, : self.count]]
+        self.m = [list(map(float, row)) for row in m.c[:, : self.count]]
+        self.flywheel = flywheel
+
+    def __call__(self, phi: float) -> tuple[float, float, float]:
+        """Return ``J + J_f``, ``dJ/dphi`` and ``M`` at ``phi`` (rad)."""
+        u = (phi - self.start) % (2.0 * math.pi)
+        i = min(int(u / self.step), self.count - 1)
+        x = u - i * self.step
+        a, b, c, d = (row[i] for row in self.j)
+        e, f, g, h = (row[i] for row in self.m)
+        inertia = ((a * x + b) * x + c) * x + d + self.flywheel
+        slope = (3.0 * a * x + 2.0 * b) * x + c
+        return inertia, slope, ((e * x + f) * x + g) * x + h
+
+
+def _starts(model: Reduced, motor: Motor, omega0: float, curves: _Curves) -> None:
+    """Refuse a start from rest where the motor's torque does not beat the load's."""
+    if omega0 != 0:
+        return
+    _, _, load = curves(model.start)
+    sense = math.copysign(1.0, motor.torque)
+    if sense * (motor.torque + load) > 0:
+        return
+    msg = (
+        f"startup: the motor cannot start the crank: at crank angle "
+        f"{math.degrees(model.start):.6g} deg its torque at standstill "
+        f"({motor.torque:.6g} N m) does not overcome the load torque there "
+        f"({load:.6g} N m)"
+    )
+    raise ModelError(msg)
+
+
+@dataclass
+class _Runs:
+    """The samples of the turns integrated, and the last turn's dense solution."""
+
+    time: list[Array] = field(default_factory=list)
+    angle: list[Array] = field(default_factory=list)
+    omega: list[Array] = field(default_factory=list)
+    crossings: list[float] = field(default_factory=list)
+    last: Any = None
+    span: tuple[float, float] = (0.0, 0.0)
+
+
+def _integrate(
+    model: Reduced, motor: Motor, curves: _Curves, omega0: float, turns: int
+) -> _Runs:
+    """Integrate turn by turn until the speed at the reference pose repeats."""
+    from scipy.integrate import solve_ivp
+
+    sense = math.copysign(1.0, motor.torque)
+    torque, free = motor.torque, motor.no_load_speed
+
+    def rhs(_t: float, y: Array) -> list[float]:
+        phi, w = y
+        inertia, slope, load = curves(phi)
+        drive = torque if free is None else torque * (1.0 - w / free)
+        return [w, (drive + load - 0.5 * slope * w * w) / inertia]
+
+    def stall(_t: float, y: Array) -> float:
+        return float(sense * y[1])
+
+    stall.terminal, stall.direction = True, -1.0  # type: ignore[attr-defined]
+    runs = _Runs()
+    state, t = [model.start, omega0], 0.0
+    scale = _speed_scale(model, motor, curves)
+    for k in range(1, turns + 1):
+        target = model.start + sense * 2.0 * math.pi * k
+
+        def turned(_t: float, y: Array, target: float = target) -> float:
+            return float(sense * (y[0] - target))
+
+        turned.terminal, turned.direction = True, 1.0  # type: ignore[attr-defined]
+        sol = solve_ivp(
+            rhs,
+            (t, t + _time_limit(scale)),
+            state,
+            method="DOP853",
+            rtol=RTOL,
+            atol=[RTOL, RTOL * scale],
+            events=(turned, stall),
+            dense_output=True,
+        )
+        _check_turned(sol, model, curves, motor)
+        t, state = float(sol.t_events[0][0]), [target, float(sol.y_events[0][0][1])]
+        _keep(runs, sol, t)
+        if _periodic(runs.crossings):
+            break
+    else:
+        _not_settled(runs, motor, model, turns)
+    return runs
+
+
+def _speed_scale(model: Reduced, motor: Motor, curves: _Curves) -> float:
+    """Return a speed (rad/s) to scale tolerances and time limits."""
+    if motor.no_load_speed is not None:
+        return abs(motor.no_load_speed)
+    inertia = float(np.mean(model.inertia)) + curves.flywheel
+    # the speed a turn of the stall torque alone would give from rest
+    return math.sqrt(4.0 * math.pi * abs(motor.torque) / inertia)
+
+
+def _time_limit(scale: float) -> float:
+    """Return the time (s) a turn may take before the crank counts as stopped."""
+    return 1e4 * 2.0 * math.pi / scale
+
+
+def _check_turned(sol: Any, model: Reduced, curves: _Curves, motor: Motor) -> None:
+    """Raise when the crank stalled or crept to a halt instead of turning."""
+    if sol.status == 1 and len(sol.t_events[0]):
+        return
+    if sol.status < 0:
+        msg = f"startup: the time integration failed: {sol.message}"
+        raise ModelError(msg)
+    phi = float(sol.y_events[1][0][0]) if len(sol.t_events[1]) else float(sol.y[0, -1])
+    when = float(sol.t_events[1][0]) if len(sol.t_events[1]) else float(sol.t[-1])
+    _, _, load = curves(phi)
+    where = math.degrees(phi)
+    msg = (
+        f"startup: the crank stalls at crank angle {where:.6g} deg (at t = "
+        f"{when:.6g} s): the motor cannot carry it past its peak load (load torque "
+        f"{load:.6g} N m there, motor torque at standstill {motor.torque:.6g} N m)"
+    )
+    raise ModelError(msg)
+
+
+def _keep(runs: _Runs, sol: Any, end: float) -> None:
+    """Keep samples of a turn (evenly spaced in time) and its dense solution."""
+    begin = float(sol.t[0])
+    times = np.linspace(begin, end, SAMPLES + 1)[:-1]
+    values = sol.sol(times)
+    runs.time.append(times)
+    runs.angle.append(values[0])
+    runs.omega.append(values[1])
+    runs.crossings.append(float(sol.sol(end)[1]))
+    runs.last, runs.span = sol.sol, (begin, end)
+
+
+def _periodic(crossings: list[float]) -> bool:
+    """Whether the speeds at the reference pose have stopped changing.
+
+    The changes from turn to turn are taken to shrink geometrically; what is left of
+    them must be below :data:`PERIODIC_RTOL` of the speed.
+    """
+    if len(crossings) < 3:
+        return False
+    last, before, earlier = crossings[-1], crossings[-2], crossings[-3]
+    change, previous = abs(last - before), abs(before - earlier)
+    limit = PERIODIC_RTOL * abs(last)
+    if change > limit:
+        return False
+    if change == 0 or previous == 0:
+        return True
+    ratio = change / previous
+    return ratio < 1 and change * ratio / (1 - ratio) <= limit
+
+
+def _not_settled(runs: _Runs, motor: Motor, model: Reduced, turns: int) -> None:
+    """Raise: the speed still changes after ``turns`` turns."""
+    last, before = runs.crossings[-1], runs.crossings[-2]
+    change = abs(last - before) / abs(last)
+    hint = ""
+    if motor.no_load_speed is None:
+        hint = (
+            f"; a constant torque settles only at the mean load torque "
+            f"{-model.motor:.6g} N m (the motor torque of assur.dynamics), so give "
+            "the motor a no_load_speed"
+        )
+    msg = (
+        f"startup: the motion does not settle in {turns} turns (the speed, "
+        f"{last:.6g} rad/s, still changes by {100 * change:.3g} % a turn){hint}"
+    )
+    raise ModelError(msg)
+
+
+def _result(
+    mech: Mechanism, motor: Motor, flywheel: float, model: Reduced, runs: _Runs
+) -> Startup:
+    """Gather the samples and the periodic motion's figures."""
+    time = np.concatenate(runs.time)
+    angle = np.concatenate(runs.angle)
+    omega = np.concatenate(runs.omega)
+    begin, end = runs.span
+    fine = runs.last(np.linspace(begin, end, FINE + 1))
+    speeds = np.abs(fine[1])
+    period = end - begin
+    sense = math.copysign(1.0, motor.torque)
+    mean = sense * 2.0 * math.pi / period
+    # the periodic speed at each sample's crank angle, from the last turn
+    turn = (fine[0] - model.start) % (2.0 * math.pi)
+    order = np.argsort(turn)
+    periodic = np.interp(
+        (angle - model.start) % (2.0 * math.pi),
+        turn[order],
+        fine[1][order],
+        period=2.0 * math.pi,
+    )
+    off = np.flatnonzero(np.abs(omega - periodic) > SETTLE_BAND * abs(mean))
+    settle = 0.0 if off.size == 0 else float(time[min(off[-1] + 1, len(time) - 1)])
+    degrees = np.degrees(angle)
+    for a in (time, degrees, omega):
+        a.flags.writeable = False
+    return Startup(
+        mech,
+        motor,
+        flywheel,
+        time,
+        degrees,
+        omega,
+        settle,
+        len(runs.crossings),
+        period,
+        mean,
+        float(np.max(speeds)),
+        float(np.min(speeds)),
+    )

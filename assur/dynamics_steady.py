@@ -1,0 +1,233 @@
+"""The steady state of a crank under a constant motor torque: the energy equation.
+
+Over a turn the motor's constant torque does back the work of the loads, so the
+kinetic energy ``0.5 J(phi) w^2 = E0 + W(phi)`` is periodic; :func:`steady_state`
+finds the energy ``E0`` at the reference pose for which the mean of the largest and
+the smallest speed is the crank's nominal speed, and where those extremes occur.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from assur._vec import Array
+from assur.dynamics_reduced import Reduced
+from assur.errors import ModelError
+
+__all__ = ["Steady", "check_inertia", "steady_state"]
+
+NO_INERTIA = 1e-12
+"""A reduced inertia below this fraction of its largest value counts as zero."""
+ANGLE_ATOL = 1e-11
+"""Tolerance (rad) of the crank angles where the speed is largest and smallest."""
+RTOL = 1e-15
+"""Relative tolerance of the energy ``E0`` found by Brent's method."""
+
+
+@dataclass(frozen=True, slots=True)
+class Steady:
+    """The periodic motion of the energy equation.
+
+    Attributes
+    ----------
+    omega : float
+        The nominal speed, rad/s (signed: the sense of rotation).
+    flywheel : float
+        Inertia added on the crank, kg m^2.
+    energy : float
+        Kinetic energy at the reference pose, J (``E0``).
+    speed_max, speed_min : float
+        Largest and smallest speed over a turn, rad/s (magnitudes).
+    angle_max, angle_min : float
+        Crank angles where they occur, rad, within the turn from the reference pose.
+    """
+
+    omega: float
+    flywheel: float
+    energy: float
+    speed_max: float
+    speed_min: float
+    angle_max: float
+    angle_min: float
+
+    @property
+    def delta(self) -> float:
+        """The coefficient of speed fluctuation, ``(max w - min w) / |omega|``."""
+        return (self.speed_max - self.speed_min) / abs(self.omega)
+
+
+def steady_state(model: Reduced, omega: float, flywheel: float = 0.0) -> Steady:
+    r"""Return the steady state whose mean of extreme speeds is ``|omega|``.
+
+    Parameters
+    ----------
+    model : Reduced
+        The reduced model over a turn.
+    omega : float
+        Nominal crank speed, rad/s; its sign is the sense of rotation.
+    flywheel : float
+        Inertia added on the crank, kg m^2.
+
+    Raises
+    ------
+    ModelError
+        When ``omega`` is zero, when the reduced inertia vanishes somewhere, or when
+        no steady state has that mean speed (the crank would come to rest).
+
+    Notes
+    -----
+    The speed at crank angle :math:`\varphi` is
+    :math:`w^2 = 2 (E_0 + W(\varphi)) / (J(\varphi) + J_f)`, increasing with
+    :math:`E_0`, so the mean of its extremes is too: Brent's method finds
+    :math:`E_0` between the energy at which the crank just comes to rest and one at
+    which even the smallest speed exceeds ``|omega|``. The extremes are found on the
+    grid, then on the interpolants to :data:`ANGLE_ATOL`.
+    """
+    from scipy.optimize import brentq
+
+    target = abs(omega)
+    if not target > 0:
+        msg = (
+            "drivers[0].omega: 0 rad/s; expected the crank's nominal speed (the "
+            "steady state's mean of its largest and smallest speed)"
+        )
+        raise ModelError(msg)
+    inertia = model.inertia + flywheel
+    check_inertia(model, inertia, flywheel)
+    rest_angle = _extreme(model.work_at, model, int(np.argmin(model.work)))
+    lowest = -float(model.work_at(rest_angle))
+
+    def gap(energy: float) -> float:
+        fast, slow = _grid_extremes(model, inertia, energy)
+        return 0.5 * (fast + slow) - target
+
+    if gap(lowest) > 0:
+        _comes_to_rest(model, target, rest_angle, lowest, flywheel)
+    highest = 0.5 * float(np.max(inertia)) * target**2 - float(np.min(model.work))
+    highest = max(highest, lowest + 1e-300)
+    energy = brentq(gap, lowest, highest, xtol=1e-300, rtol=RTOL)
+    return _refined(model, omega, flywheel, energy, (lowest, highest))
+
+
+def check_inertia(model: Reduced, inertia: Array, flywheel: float) -> None:
+    """Refuse a reduced inertia that vanishes (a turn without mass in motion).
+
+    ``inertia`` is ``J`` on the grid of ``model``, flywheel included.
+
+    Raises
+    ------
+    ModelError
+        Naming the crank angle where it vanishes.
+    """
+    least = int(np.argmin(inertia))
+    if inertia[least] > NO_INERTIA * float(np.max(np.abs(inertia))):
+        return
+    where = math.degrees(float(model.angle[least]))
+    msg = (
+        f"dynamics: the reduced inertia is zero at crank angle {where:.6g} deg (no "
+        f"mass moves there, flywheel {flywheel:g} kg m^2); expected a flywheel "
+        "(flywheel > 0)"
+    )
+    raise ModelError(msg)
+
+
+def _speeds(model: Reduced, inertia: Any, energy: float, phi: Any = None) -> Any:
+    """Return the squared speeds ``2 (E0 + W) / J`` on the grid or at ``phi``."""
+    work = model.work if phi is None else model.work_at(phi)
+    return np.maximum(2.0 * (energy + work) / inertia, 0.0)
+
+
+def _grid_extremes(
+    model: Reduced, inertia: Array, energy: float
+) -> tuple[float, float]:
+    """Return the largest and smallest speed, a parabola through the grid's extremes."""
+    square = _speeds(model, inertia, energy)
+    top = _vertex(square, int(np.argmax(square)))
+    bottom = _vertex(square, int(np.argmin(square)))
+    return math.sqrt(max(top, 0.0)), math.sqrt(max(bottom, 0.0))
+
+
+def _vertex(values: Array, i: int) -> float:
+    """Return the extreme value of the parabola through a grid point and neighbours."""
+    n = values.shape[0]
+    before, here, after = values[(i - 1) % n], values[i], values[(i + 1) % n]
+    curve = before - 2.0 * here + after
+    if curve == 0:
+        return float(here)
+    return float(here - (after - before) ** 2 / (8.0 * curve))
+
+
+def _extreme(function: Any, model: Reduced, i: int, sign: float = 1.0) -> float:
+    """Return the crank angle (rad) of the extreme of ``function`` near grid point i.
+
+    ``sign`` +1 looks for a minimum, -1 for a maximum.
+    """
+    from scipy.optimize import minimize_scalar
+
+    h = model.step
+    centre = float(model.angle[i])
+    found = minimize_scalar(
+        lambda phi: sign * float(function(phi)),
+        bounds=(centre - h, centre + h),
+        method="bounded",
+        options={"xatol": ANGLE_ATOL},
+    )
+    best = float(found.x)
+    if sign * float(function(best)) > sign * float(function(centre)):
+        best = centre  # the bounded search ended on a worse point than the grid's
+    return best
+
+
+def _refined(
+    model: Reduced,
+    omega: float,
+    flywheel: float,
+    energy: float,
+    bracket: tuple[float, float],
+) -> Steady:
+    """Locate the extremes on the interpolants, then solve for ``E0`` again."""
+    from scipy.optimize import brentq
+
+    def square(phi: Any, e: float) -> Any:
+        return _speeds(model, model.inertia_at(phi) + flywheel, e, phi)
+
+    grid = _speeds(model, model.inertia + flywheel, energy)
+    top = _extreme(lambda phi: square(phi, energy), model, int(np.argmax(grid)), -1.0)
+    bottom = _extreme(lambda phi: square(phi, energy), model, int(np.argmin(grid)), 1.0)
+
+    def gap(e: float) -> float:
+        mean = 0.5 * (math.sqrt(square(top, e)) + math.sqrt(square(bottom, e)))
+        return mean - abs(omega)
+
+    if gap(bracket[0]) < 0 < gap(bracket[1]):
+        energy = brentq(gap, *bracket, xtol=1e-300, rtol=RTOL)
+    start = model.start
+    return Steady(
+        omega,
+        flywheel,
+        energy,
+        math.sqrt(float(square(top, energy))),
+        math.sqrt(float(square(bottom, energy))),
+        (top - start) % (2.0 * math.pi) + start,
+        (bottom - start) % (2.0 * math.pi) + start,
+    )
+
+
+def _comes_to_rest(
+    model: Reduced, target: float, angle: float, lowest: float, flywheel: float
+) -> None:
+    """Raise: no steady state has the mean speed ``target``; the crank would stop."""
+    top, _ = _grid_extremes(model, model.inertia + flywheel, lowest)
+    where = math.degrees((angle - model.start) % (2.0 * math.pi) + model.start)
+    swing = float(np.max(model.work) - np.min(model.work))
+    msg = (
+        f"dynamics: at a mean speed of {target:.6g} rad/s the crank would come to rest "
+        f"at crank angle {where:.6g} deg: the loads' energy swing ({swing:.6g} J) "
+        f"needs a speed of at least {0.5 * top:.6g} rad/s; expected a larger 'omega' "
+        "or a flywheel"
+    )
+    raise ModelError(msg)

@@ -1,0 +1,117 @@
+"""The report's dynamics section: the steady state of the crank and its diagrams.
+
+For a mechanism with masses and one crank, the figures of the steady state (the
+coefficient of speed fluctuation, the flywheel, the motor torque) as an HTML table,
+and three diagrams for the page's script to draw over the same crank angles as the
+others: the reduced inertia, the reduced and motor torques, the crank's speed.
+"""
+
+from __future__ import annotations
+
+from html import escape
+from typing import Any
+
+import numpy as np
+
+from assur.analysis import Table
+from assur.columns import pretty_unit
+from assur.dynamics_shown import SHOWN_DELTA, has_dynamics, shown
+from assur.errors import AssurError
+from assur.html._data import floats
+
+__all__ = ["dynamics_part"]
+
+CHARTS = (
+    ("chart-inertia", "Reduced inertia J(φ)", (("J", "reduced.inertia", False),)),
+    (
+        "chart-reduced-torque",
+        "Reduced torque of the loads and the motor torque",
+        (("loads", "reduced.torque", False), ("motor", "driver.motor", True)),
+    ),
+    ("chart-speed", "Crank speed in the steady state", (("ω", "driver.omega", False),)),
+)
+"""The section's diagrams: id, title, and each series' name, column and dashing."""
+
+
+def dynamics_part(
+    table: Table,
+) -> tuple[str, dict[str, Any] | None, dict[str, list[float | None]]]:
+    """Return the section's HTML, its data for the script and its columns.
+
+    Nothing (``""``, None, ``{}``) for a mechanism without masses or without one
+    crank; the section says why when its crank cannot turn round.
+    """
+    mech = table.mechanism
+    if table.force_state is None or not has_dynamics(mech):
+        return "", None, {}
+    try:
+        result = shown(mech, table["angle"])
+    except AssurError as err:
+        note = f"No steady state to show: {err}"
+        return _section(f'<p class="note">{escape(note)}</p>'), None, {}
+    charts = []
+    for ident, title, series in CHARTS:
+        unit = pretty_unit(result.column(series[0][1]).unit)
+        charts.append(
+            {
+                "id": ident,
+                "title": title,
+                "unit": unit,
+                "series": [
+                    {"name": name, "key": key, "dashed": dashed}
+                    for name, key, dashed in series
+                ],
+            }
+        )
+    columns = {
+        key: floats(np.asarray(result[key]))
+        for _, _, series in CHARTS
+        for _, key, _ in series
+    }
+    body = _figures_html(result) + '\n<div class="charts" id="dynamics-charts"></div>'
+    return _section(body), {"charts": charts, "summary": result.summary()}, columns
+
+
+def _section(body: str) -> str:
+    """Return the section around ``body``."""
+    return (
+        '<section class="card wide" id="dynamics">\n<h2>Dynamics: the mechanism '
+        f"reduced to its crank</h2>\n{body}\n</section>"
+    )
+
+
+def _figures_html(result: Any) -> str:
+    """Return the figures of the steady state as a small table, and a note."""
+    kgm2 = pretty_unit("kg m^2")
+    rows = [
+        ("coefficient of speed fluctuation δ", f"{result.delta:.5g}"),
+        ("flywheel on the crank", f"{result.flywheel:.5g} {kgm2}"),
+        ("motor torque (constant)", f"{result.motor:.5g} N·m"),
+        (
+            "largest speed",
+            f"{result.speed_max:.5g} rad/s at {result.angle_max:.5g}°",
+        ),
+        (
+            "smallest speed",
+            f"{result.speed_min:.5g} rad/s at {result.angle_min:.5g}°",
+        ),
+        ("energy swing", f"{result.energy_swing:.5g} J"),
+    ]
+    cells = "".join(
+        f"<tr><th>{escape(k)}</th><td>{escape(v)}</td></tr>" for k, v in rows
+    )
+    why = (
+        f"with the flywheel that holds δ to {SHOWN_DELTA:g} (the mechanism alone "
+        "would stop at its nominal speed)"
+        if result.flywheel
+        else "without a flywheel"
+    )
+    note = (
+        f"Steady state at the nominal speed {result.omega:.5g} rad/s (the mean of "
+        f"the largest and the smallest), {why}, under the constant motor torque "
+        "that does back the loads' work over a turn."
+    )
+    return (
+        f'<p class="note">{escape(note)}</p>\n'
+        f'<table class="figures"><tbody>{cells}</tbody></table>'
+    )

@@ -1,0 +1,414 @@
+"""The dynamic model reduced to the crank, its steady state and the flywheel.
+
+Checked against the oracle's own computations (tests/oracle.py): the reduced inertia is
+twice the kinetic energy at unit crank speed from a forces table's velocities, the
+reduced torque the power of gravity and the loads per unit crank speed; the steady
+state is checked by a Runge-Kutta time integration of the equation of motion and the
+exact flywheel by Wittenbauer's energy-mass diagram with exact tangent slopes.
+
+The textbook case: R. S. Khurmi and J. K. Gupta, *A Textbook of Theory of Machines*,
+S. Chand, chapter 16 (Turning moment diagrams and flywheel), Example 16.11 -- an
+engine whose turning moment is T = 20000 + 9500 sin 2t - 5700 cos 2t N m (t the crank
+angle from the inner dead centre) drives a constant resisting torque at a mean
+180 rpm; the total fluctuation of speed is to be 1 % of the mean. The book finds the
+maximum fluctuation of energy dE = 11 078 N m (the amplitude sqrt(9500^2 + 5700^2)),
+the flywheel I = dE / (w^2 Cs) = 3121 kg m^2 (it rounds w^2 Cs to 3.55; unrounded,
+3118.1 kg m^2) and, 45 deg past the inner dead centre, an angular acceleration of the
+flywheel of 9500 / I = 3.04 rad/s^2.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import itertools
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur import Driver, Joint, Link, Load, LoadTable, Mechanism, Point
+
+from . import oracle
+from .conftest import EXAMPLES
+
+DYNAMIC = (
+    "four_bar",
+    "class3",
+    "offset_slider_crank",
+    "scotch_yoke",
+    "six_bar_lecture",
+    "slider_crank_exercise",
+    "slot_mechanism",
+    "whitworth",
+)
+"""The bundled examples with masses and one driving crank."""
+QUICK = tuple(name for name in DYNAMIC if name != "class3")
+"""Those whose sweeps are quick (class3's triad is solved by continuation)."""
+DELTA = 0.05
+"""Coefficient of speed fluctuation given to examples too light to run without a
+flywheel at their nominal speed."""
+
+
+@functools.cache
+def example(name: str) -> assur.Mechanism:
+    return assur.load(EXAMPLES / f"{name}.toml")
+
+
+@functools.cache
+def flywheel_of(name: str) -> float:
+    """No flywheel where the example runs without one, else one for DELTA."""
+    try:
+        assur.dynamics(example(name), [0.0])
+    except assur.ModelError:
+        return assur.flywheel(example(name), DELTA)
+    return 0.0
+
+
+@functools.cache
+def steady(name: str) -> assur.Dynamics:
+    return assur.dynamics(example(name), flywheel=flywheel_of(name))
+
+
+def crank(
+    radius: float = 0.2,
+    mass: float = 3.0,
+    inertia: float = 0.01,
+    omega: float = 10.0,
+    gravity=None,
+    angle: float = 0.0,
+    motor=None,
+) -> Mechanism:
+    """A crank alone turning about A, with a point mass at B ``radius`` from A."""
+    at = (
+        radius * math.cos(math.radians(angle)),
+        radius * math.sin(math.radians(angle)),
+    )
+    return Mechanism(
+        (Link("crank", axis=("A", "B"), mass=mass, center="B", inertia=inertia),),
+        (Joint("A", "revolute", ("ground", "crank"), (0.0, 0.0)),),
+        (Driver("A", omega),),
+        points=(Point("B", "crank", at),),
+        gravity=gravity,
+        motor=motor,
+    )
+
+
+# ----------------------------------------------------------------- reduced quantities
+
+
+@pytest.mark.parametrize("name", DYNAMIC)
+def test_reduced_inertia_and_torque_against_the_forces_table(name):
+    mech = example(name)
+    t = assur.dynamics(mech, flywheel=flywheel_of(name))
+    inertia, torque = oracle.crank_reduction(mech, t["angle"])
+    np.testing.assert_allclose(
+        t["reduced.inertia"] - t.flywheel, inertia, rtol=1e-9, atol=0
+    )
+    scale = max(float(np.max(np.abs(torque))), 1e-300)
+    np.testing.assert_allclose(
+        t["reduced.torque"], torque, rtol=1e-9, atol=1e-9 * scale
+    )
+
+
+@pytest.mark.parametrize("name", QUICK)
+def test_inertia_slope_is_the_derivative_of_the_inertia(name):
+    mech = example(name)
+    angles = np.linspace(3.0, 357.0, 37)
+    h = 1e-3  # deg
+    ahead = assur.dynamics(mech, angles + h, flywheel=flywheel_of(name))
+    behind = assur.dynamics(mech, angles - h, flywheel=flywheel_of(name))
+    here = assur.dynamics(mech, angles, flywheel=flywheel_of(name))
+    difference = (ahead["reduced.inertia"] - behind["reduced.inertia"]) / (
+        2 * math.radians(h)
+    )
+    size = float(np.max(np.abs(here["reduced.inertia_slope"])))
+    np.testing.assert_allclose(
+        here["reduced.inertia_slope"], difference, rtol=1e-5, atol=1e-6 * size
+    )
+
+
+# ----------------------------------------------------------------------- steady state
+
+
+@pytest.mark.parametrize("name", DYNAMIC)
+def test_the_steady_state_satisfies_its_energy_equation(name):
+    t = steady(name)
+    energy = 0.5 * t["reduced.inertia"] * t["driver.omega"] ** 2
+    np.testing.assert_allclose(
+        energy - t["reduced.work"], t.energy, rtol=1e-12, atol=1e-12 * t.energy
+    )
+    assert 0.5 * (t.speed_max + t.speed_min) == pytest.approx(abs(t.omega), rel=1e-12)
+    assert t.delta == pytest.approx((t.speed_max - t.speed_min) / abs(t.omega))
+    speeds = np.abs(t["driver.omega"])
+    assert speeds.max() <= t.speed_max * (1 + 1e-12)
+    assert speeds.min() >= t.speed_min * (1 - 1e-12)
+    assert np.all(np.sign(t["driver.omega"]) == np.sign(t.omega))
+    np.testing.assert_allclose(
+        t["driver.motor"],
+        -np.mean(t["reduced.torque"]),
+        atol=1e-3 * max(1.0, float(np.max(np.abs(t["reduced.torque"])))),
+    )
+
+
+@pytest.mark.parametrize("name", DYNAMIC)
+def test_balancing_torque_at_the_real_motion(name):
+    mech, t = example(name), steady(name)
+    table = assur.forces(
+        mech, t["angle"], omega=t["driver.omega"], epsilon=t["driver.epsilon"]
+    )
+    want = t["driver.motor"] - t.flywheel * t["driver.epsilon"]
+    # 1e-9 of the largest torque at play: the motor, the flywheel's, the loads'
+    scale = max(
+        float(np.max(np.abs(want))),
+        float(np.max(np.abs(t["reduced.torque"]))),
+        float(np.max(np.abs(t["reduced.inertia"] * t["driver.epsilon"]))),
+    )
+    np.testing.assert_allclose(
+        table["driver.torque"], want, rtol=1e-9, atol=1e-9 * scale
+    )
+
+
+@pytest.mark.parametrize("name", QUICK)
+def test_time_integration_reproduces_the_steady_state(name):
+    """The oracle's Runge-Kutta integration in time, started on the steady state at
+    0 deg under the constant motor torque, stays on it for a whole turn."""
+    mech = example(name)
+    model = oracle.crank_model(mech, flywheel_of(name))
+    start = assur.dynamics(mech, [0.0], flywheel=flywheel_of(name))
+    _, phi, w = oracle.integrate_turn(
+        model, 0.0, float(start["driver.omega"][0]), model.motor
+    )
+    energy = assur.dynamics(mech, np.degrees(phi), flywheel=flywheel_of(name))
+    np.testing.assert_allclose(w, energy["driver.omega"], rtol=1e-7)
+
+
+@pytest.mark.parametrize("name", ["whitworth", "offset_slider_crank", "four_bar"])
+def test_extremes_do_not_depend_on_the_angle_step(name):
+    mech = example(name)
+    fine = assur.dynamics(mech, np.arange(0.0, 360.0, 0.5), flywheel=flywheel_of(name))
+    coarse = assur.dynamics(mech, [10.0, 200.0], flywheel=flywheel_of(name))
+    assert coarse.summary() == fine.summary()
+
+
+def test_delta_decreases_as_the_flywheel_grows():
+    mech = example("whitworth")
+    deltas = [
+        assur.dynamics(mech, [0.0], flywheel=j).delta for j in (2.0, 5.0, 20.0, 100.0)
+    ]
+    assert all(a > b for a, b in itertools.pairwise(deltas))
+    # about inversely proportional once the flywheel dominates
+    assert deltas[-1] * 100.0 == pytest.approx(deltas[-2] * 20.0, rel=0.3)
+
+
+def test_the_table_reads_like_a_table(tmp_path: Path):
+    t = steady("four_bar")
+    assert t.columns == tuple(c[0] for c in assur.dynamics_model.COLUMNS)
+    assert len(t) == 360
+    assert "driver.omega" in t
+    assert t.column("reduced.inertia").unit == "kg m^2"
+    with pytest.raises(KeyError, match=r"did you mean 'driver\.omega'"):
+        t["driver.omegaa"]
+    with pytest.raises(ValueError, match="read-only"):
+        t["driver.omega"][0] = 1.0
+    text = t.to_csv()
+    assert text.splitlines()[0].startswith("angle,reduced.inertia,")
+    assert len(text.splitlines()) == 361
+    data = t.to_dict()
+    assert data["dynamics"]["delta"] == t.delta
+    assert len(data["rows"]) == 360
+    t.to_csv(tmp_path / "d.csv")
+    assert (tmp_path / "d.csv").read_text() == text
+
+
+# ---------------------------------------------------------------------------- flywheel
+
+
+@pytest.mark.parametrize("name", QUICK)
+def test_flywheel_gives_the_asked_delta(name):
+    mech = example(name)
+    inertia = assur.flywheel(mech, 0.02)
+    got = assur.dynamics(mech, [0.0], flywheel=inertia).delta
+    assert got == pytest.approx(0.02, rel=1e-6)
+
+
+@pytest.mark.parametrize("name", ["whitworth", "scotch_yoke", "offset_slider_crank"])
+def test_flywheel_against_the_energy_mass_diagram(name):
+    """Wittenbauer's tangents with the exact slopes give the exact flywheel."""
+    mech = example(name)
+    want = oracle.wittenbauer_flywheel(mech, 0.02)
+    assert assur.flywheel(mech, 0.02) == pytest.approx(want, rel=1e-6)
+
+
+def test_flywheel_sizing_sets_the_classical_estimates_beside_it():
+    mech = example("whitworth")
+    sizing = assur.flywheel_sizing(mech, 0.02)
+    assert sizing.exact == pytest.approx(assur.flywheel(mech, 0.02), rel=1e-12)
+    gaps = sizing.differences()
+    # the usual slopes w^2 (1 +- delta) / 2 miss only terms of order delta^2
+    assert abs(gaps["wittenbauer"]) < 0.02**2
+    # the energy swing alone leaves out the mechanism's own inertia
+    assert gaps["energy_swing"] > 0
+
+
+# --------------------------------------------------------------- cases checked by hand
+
+
+def test_a_crank_with_a_point_mass_turns_evenly():
+    """No load: J = m r^2 + J_G at every angle, the speed is the file's, delta 0."""
+    t = assur.dynamics(crank(), [0.0, 45.0, 90.0, 300.0])
+    np.testing.assert_allclose(t["reduced.inertia"], 3.0 * 0.2**2 + 0.01, rtol=1e-14)
+    np.testing.assert_allclose(t["reduced.inertia_slope"], 0.0, atol=1e-14)
+    np.testing.assert_allclose(t["driver.omega"], 10.0, rtol=1e-12)
+    np.testing.assert_allclose(t["driver.epsilon"], 0.0, atol=1e-12)
+    assert t.delta == pytest.approx(0.0, abs=1e-12)
+    assert t.motor == 0.0
+    assert t.energy == pytest.approx(0.5 * 0.13 * 100.0, rel=1e-12)
+
+
+def test_a_crank_with_a_point_mass_under_gravity():
+    """J constant, M = -m g r cos(phi): w^2 = c - (2 m g r / J) sin(phi), with c such
+    that the mean of the extremes sqrt(c + a) and sqrt(c - a) is the file's speed."""
+    from scipy.optimize import brentq
+
+    m, r, g, jg, w = 3.0, 0.2, 9.81, 0.01, 10.0
+    inertia = m * r * r + jg
+    a = 2 * m * g * r / inertia
+    c = brentq(lambda c: 0.5 * (math.sqrt(c + a) + math.sqrt(c - a)) - w, a, 1e4)
+    angles = np.arange(0.0, 360.0, 15.0)
+    t = assur.dynamics(crank(gravity=(0.0, -g)), angles)
+    phi = np.radians(angles)
+    np.testing.assert_allclose(
+        t["reduced.torque"], -m * g * r * np.cos(phi), atol=1e-12
+    )
+    np.testing.assert_allclose(
+        t["driver.omega"], np.sqrt(c - a * np.sin(phi)), rtol=1e-10
+    )
+    np.testing.assert_allclose(
+        t["driver.epsilon"], -m * g * r * np.cos(phi) / inertia, rtol=1e-10, atol=1e-12
+    )
+    assert t.speed_max == pytest.approx(math.sqrt(c + a), rel=1e-10)
+    assert t.speed_min == pytest.approx(math.sqrt(c - a), rel=1e-10)
+    assert t.angle_max == pytest.approx(270.0, abs=1e-6)
+    assert t.angle_min == pytest.approx(90.0, abs=1e-6)
+    assert t.delta == pytest.approx((math.sqrt(c + a) - math.sqrt(c - a)) / w)
+
+
+def engine() -> Mechanism:
+    """Khurmi and Gupta, Example 16.11: the engine's turning moment as a torque table
+    on the crank (every 0.1 deg), the crank's own inertia nil, 180 rpm."""
+    deg = np.round(np.arange(0.0, 360.05, 0.1), 10)
+    t = np.radians(deg)
+    turning = 20000.0 + 9500.0 * np.sin(2 * t) - 5700.0 * np.cos(2 * t)
+    return Mechanism(
+        (Link("crank", axis=("A", "B"), mass=1.0, center="A", inertia=0.0),),
+        (Joint("A", "revolute", ("ground", "crank"), (0.0, 0.0)),),
+        (Driver("A", 2 * math.pi * 180 / 60),),
+        points=(Point("B", "crank", (0.3, 0.0)),),
+        loads=(
+            Load(
+                "crank",
+                torque=LoadTable("driver", tuple(deg.tolist()), (tuple(turning),)),
+            ),
+        ),
+        name="Khurmi and Gupta, Example 16.11",
+    )
+
+
+def test_textbook_flywheel_of_an_engine():
+    mech = engine()
+    w = 2 * math.pi * 180 / 60
+    inertia = assur.flywheel(mech, 0.01)
+    # the book: I = 3121 kg m^2 with w^2 Cs rounded to 3.55; unrounded, 3118.1
+    assert inertia == pytest.approx(3121.0, rel=2e-3)
+    assert inertia == pytest.approx(math.hypot(9500, 5700) / (w * w * 0.01), rel=1e-5)
+    t = assur.dynamics(mech, [45.0], flywheel=inertia)
+    # the resisting torque is the mean turning moment: power 20000 w = 377 kW
+    assert -t.motor * w / 1000 == pytest.approx(377.0, abs=0.5)
+    assert t.energy_swing == pytest.approx(11078.0, rel=1e-4)
+    # 45 deg past the inner dead centre the excess torque is 9500 N m
+    assert t["driver.epsilon"][0] == pytest.approx(3.044, abs=0.005)
+    assert t["driver.epsilon"][0] == pytest.approx(9500.0 / inertia, rel=1e-6)
+
+
+# -------------------------------------------------------------------------- bad input
+
+
+def test_a_prismatic_driver_is_refused():
+    mech = assur.catalog.slider_crank()
+    slid = dataclasses.replace(mech, drivers=(Driver("guide", 1.0),))
+    with pytest.raises(assur.ModelError, match="driver joint 'guide' is prismatic"):
+        assur.dynamics(slid)
+    with pytest.raises(assur.ModelError, match="prismatic"):
+        assur.flywheel(slid, 0.1)
+
+
+def test_several_drivers_are_refused():
+    with pytest.raises(assur.ModelError, match="2 drivers; expected one driving crank"):
+        assur.dynamics(example_file("five_bar_two_cranks"))
+
+
+def example_file(name: str) -> Mechanism:
+    return assur.load(EXAMPLES / f"{name}.toml")
+
+
+def test_a_mechanism_without_mass_is_refused():
+    with pytest.raises(assur.ModelError, match="no link has a mass"):
+        assur.dynamics(example_file("tenbar"))
+
+
+@pytest.mark.parametrize("delta", [0.0, -0.1, math.nan, math.inf])
+def test_delta_must_be_positive(delta):
+    with pytest.raises(assur.UsageError, match="expected a coefficient of speed"):
+        assur.flywheel(example("four_bar"), delta)
+
+
+def test_a_search_that_finds_no_flywheel(monkeypatch):
+    from assur import dynamics_flywheel
+
+    monkeypatch.setattr(dynamics_flywheel, "WIDENINGS", 0)
+    with pytest.raises(assur.ModelError, match=r"no inertia up to .* brings the"):
+        assur.flywheel(example("whitworth"), 1e-6)
+
+
+def test_delta_that_needs_no_flywheel():
+    with pytest.raises(assur.UsageError, match=r"alone runs with delta = 0\.67"):
+        assur.flywheel(example("four_bar"), 0.9)
+
+
+@pytest.mark.parametrize("value", [-1.0, math.nan, "heavy"])
+def test_flywheel_must_be_an_inertia(value):
+    with pytest.raises(assur.UsageError, match="flywheel"):
+        assur.dynamics(example("four_bar"), [0.0], flywheel=value)
+
+
+def test_zero_speed_is_refused():
+    mech = dataclasses.replace(crank(), drivers=(Driver("A", 0.0),))
+    with pytest.raises(assur.ModelError, match=r"drivers\[0\]\.omega: 0 rad/s"):
+        assur.dynamics(mech)
+
+
+def test_too_slow_for_its_loads():
+    with pytest.raises(
+        assur.ModelError,
+        match="at a mean speed of 100 rad/s the crank would come to rest at crank "
+        "angle",
+    ):
+        assur.dynamics(example("offset_slider_crank"))
+
+
+def test_no_mass_in_motion():
+    with pytest.raises(assur.ModelError, match="reduced inertia is zero"):
+        assur.dynamics(engine(), [0.0])
+
+
+def test_a_crank_that_cannot_turn_round():
+    rocker = assur.catalog.four_bar(crank=0.09, coupler=0.06, rocker=0.08)
+    with pytest.raises(
+        assur.AssemblyError,
+        match=r"^dynamics: the crank cannot make a full turn: group RRR "
+        r"\(coupler, rocker\): cannot be assembled",
+    ):
+        assur.dynamics(rocker, [60.0])

@@ -1,0 +1,183 @@
+"""``assur dynamics``: figures, tables, the force table at the motion, errors."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur.cli import main
+
+from .conftest import EXAMPLES
+
+WHITWORTH = EXAMPLES / "whitworth.toml"
+FOUR_BAR = EXAMPLES / "four_bar.toml"
+
+
+def run(capsys, *args) -> tuple[int, str, str]:
+    status = main([str(a) for a in args])
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def one_error(capsys, *args) -> str:
+    status, out, err = run(capsys, *args)
+    assert status == 2
+    assert out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    return lines[-1]
+
+
+def test_figures_and_table(capsys):
+    status, out, err = run(capsys, "dynamics", FOUR_BAR, "--angles", "0:90:30")
+    assert (status, err) == (0, "")
+    t = assur.dynamics(assur.load(FOUR_BAR), [0.0, 30.0, 60.0, 90.0])
+    assert "dynamic model reduced to the crank" in out
+    assert f"delta = {t.delta:.6g}" in out
+    assert f"{t.speed_max:.6g} rad/s at {t.angle_max:.6g} deg" in out
+    lines = out.splitlines()
+    head = next(i for i, line in enumerate(lines) if line.lstrip().startswith("angle"))
+    assert lines[head].split() == list(t.columns)
+    assert lines[head + 1].split()[:2] == ["[deg]", "[kg"]
+    assert len(lines) == head + 2 + 4
+
+
+def test_flywheel_for_a_delta(capsys):
+    status, out, _ = run(
+        capsys, "dynamics", WHITWORTH, "--delta", "0.05", "--angles", "0"
+    )
+    assert status == 0
+    sizing = assur.flywheel_sizing(assur.load(WHITWORTH), 0.05)
+    assert f"{sizing.exact:.6g} kg m² (exact, for delta = 0.05)" in out
+    assert f"Wittenbauer {sizing.wittenbauer:.6g}" in out
+    assert "delta = 0.05\n" in out
+
+
+def test_json(capsys):
+    status, out, _ = run(
+        capsys,
+        "dynamics",
+        WHITWORTH,
+        "--flywheel",
+        "20",
+        "--angles",
+        "0:360:90",
+        "--json",
+    )
+    assert status == 0
+    data = json.loads(out)
+    t = assur.dynamics(assur.load(WHITWORTH), [0.0, 90.0, 180.0, 270.0, 360.0], 20.0)
+    assert data["dynamics"] == t.summary()
+    assert data["columns"] == list(t.columns)
+    assert [r["driver.omega"] for r in data["rows"]] == t["driver.omega"].tolist()
+
+
+def test_csv_with_the_forces_at_the_motion(capsys, tmp_path: Path):
+    target = tmp_path / "d.csv"
+    status, out, _ = run(
+        capsys,
+        "dynamics",
+        WHITWORTH,
+        "--delta",
+        "0.05",
+        "--forces",
+        "--csv",
+        target,
+    )
+    assert status == 0
+    assert out.startswith("wrote 360 rows x ")
+    rows = np.genfromtxt(target, delimiter=",", names=True)
+    names = rows.dtype.names
+    assert names[:8] == (
+        "angle",
+        "reducedinertia",
+        "reducedinertia_slope",
+        "reducedtorque",
+        "reducedwork",
+        "drivermotor",
+        "driveromega",
+        "driverepsilon",
+    )
+    assert "drivertorque" in names
+    assert "O2F" in names
+    inertia = assur.flywheel(assur.load(WHITWORTH), 0.05)
+    want = rows["drivermotor"] - inertia * rows["driverepsilon"]
+    np.testing.assert_allclose(rows["drivertorque"], want, rtol=1e-9, atol=1e-9)
+
+
+def test_csv_to_standard_output(capsys):
+    status, out, _ = run(
+        capsys, "dynamics", FOUR_BAR, "--angles", "0:10:5", "--csv", "-"
+    )
+    assert status == 0
+    lines = out.splitlines()
+    assert lines[0].startswith("angle,reduced.inertia,")
+    assert len(lines) == 4
+
+
+def test_startup_from_the_file_motor(capsys, tmp_path: Path):
+    t = assur.dynamics(assur.load(WHITWORTH), [0.0], flywheel=20.0)
+    path = tmp_path / "w.toml"
+    path.write_text(
+        WHITWORTH.read_text()
+        + f"\n[motor]\ntorque = {10 * t.motor}\nno_load_speed = 6.0\n"
+    )
+    status, out, err = run(
+        capsys, "dynamics", path, "--flywheel", "20", "--startup", "--angles", "0"
+    )
+    assert (status, err) == (0, "")
+    run_ = assur.startup(assur.load(path), 20.0)
+    assert f"settles in {run_.settle_time:.6g} s ({run_.turns} turns)" in out
+    assert f"mean speed {run_.mean_speed:.6g} rad/s" in out
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--delta", "0"], "--delta 0: expected a coefficient of speed fluctuation"),
+        (["--delta", "nan"], "--delta nan: expected a coefficient"),
+        (["--flywheel", "-2"], "--flywheel -2: expected an inertia >= 0"),
+        (["--csv", "-", "--json"], "--csv - and --json: both write to standard output"),
+        (["--startup"], "startup: the mechanism has no motor"),
+        (["--delta", "2"], "alone runs with delta"),
+    ],
+)
+def test_bad_options(capsys, args, message):
+    line = one_error(capsys, "dynamics", FOUR_BAR, *args)
+    assert line.startswith("assur: error: ")
+    assert message in line
+
+
+def test_flywheel_and_delta_exclude_each_other(capsys):
+    status, _, err = run(
+        capsys, "dynamics", FOUR_BAR, "--flywheel", "1", "--delta", "0.1"
+    )
+    assert status == 2
+    assert "not allowed with argument" in err
+
+
+@pytest.mark.parametrize(
+    ("name", "message"),
+    [
+        ("tenbar", "no link has a mass"),
+        ("five_bar_two_cranks", "2 drivers; expected one driving crank"),
+        ("offset_slider_crank", "the crank would come to rest at crank angle"),
+    ],
+)
+def test_mechanisms_without_a_dynamic_model(capsys, name, message):
+    path = EXAMPLES / f"{name}.toml"
+    line = one_error(capsys, "dynamics", path)
+    assert line.startswith(f"assur: error: {path}: dynamics: ")
+    assert message in line
+
+
+def test_the_table_is_not_written_over_the_input(capsys, tmp_path: Path):
+    copy = tmp_path / "m.toml"
+    copy.write_text(FOUR_BAR.read_text())
+    line = one_error(capsys, "dynamics", copy, "--csv", copy)
+    assert "is the mechanism file being read" in line
+    assert copy.read_text() == FOUR_BAR.read_text()

@@ -1,0 +1,176 @@
+"""The start-up in time under the motor, and the ``[motor]`` table of the file."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+import assur
+from assur import Motor
+
+from .test_dynamics import crank, example, steady
+
+MGR = 3.0 * 9.81 * 0.2
+"""Peak gravity torque of the test crank's point mass, N m."""
+
+
+def test_constant_torque_keeps_the_steady_state():
+    """Started on the steady state under its constant motor torque, the motion in
+    time is that of the energy equation, turn after turn."""
+    mech, t = example("whitworth"), steady("whitworth")
+    run = assur.startup(
+        mech,
+        t.flywheel,
+        motor=Motor(t.motor),
+        omega0=float(t["driver.omega"][0]),
+    )
+    assert run.turns <= 6  # periodic from the first turn on, to rounding
+    assert run.settle_time == 0.0
+    energy = assur.dynamics(mech, run.angle, flywheel=t.flywheel)
+    np.testing.assert_allclose(run.omega, energy["driver.omega"], rtol=1e-6)
+    assert run.speed_max == pytest.approx(t.speed_max, rel=1e-4)
+    assert run.speed_min == pytest.approx(t.speed_min, rel=1e-4)
+    assert run.delta == pytest.approx(t.delta, rel=1e-3)
+    # the angle is continuous and grows turn after turn
+    assert np.all(np.diff(run.angle) > 0)
+    assert run.angle[-1] - run.angle[0] == pytest.approx(run.turns * 360.0, abs=5.0)
+
+
+def test_an_electric_motor_from_rest_settles():
+    mech, t = example("whitworth"), steady("whitworth")
+    free = 8.0
+    motor = Motor(3.0 * t.motor, free)
+    run = assur.startup(mech, t.flywheel, motor=motor)
+    assert run.omega[0] == 0.0
+    assert 0.0 < run.settle_time < run.time[-1]
+    # in the periodic state the motor does back the loads' work: its mean torque is
+    # the steady state's, up to the speed fluctuation's second order
+    assert run.mean_speed == pytest.approx(
+        free * (1.0 - t.motor / motor.torque), rel=2e-3
+    )
+    assert 0.0 < run.delta < 0.1
+    # after the time to settle the speed stays near the periodic mean
+    late = run.time >= run.settle_time
+    assert np.max(np.abs(run.omega[late] - run.mean_speed)) < 0.1 * run.mean_speed
+
+
+def test_a_balanced_crank_starts_up_exponentially():
+    """No load and a constant inertia: J w' = T (1 - w / w0), so the speed rises as
+    w0 (1 - exp(-t / tau)) with tau = J w0 / T, and enters the 2 % band around w0 at
+    tau ln 50. The motor is the file's."""
+    inertia, stall, free = 3.0 * 0.2**2 + 0.01, 2.0, 10.0
+    run = assur.startup(crank(motor=Motor(stall, free)))
+    assert run.motor == Motor(stall, free)
+    tau = inertia * free / stall
+    np.testing.assert_allclose(
+        run.omega, free * (1.0 - np.exp(-run.time / tau)), rtol=1e-7, atol=1e-9
+    )
+    assert run.mean_speed == pytest.approx(free, rel=1e-7)
+    assert run.delta == pytest.approx(0.0, abs=1e-7)  # periodic to 1e-8 a turn
+    sample = run.time[1] - run.time[0]  # the time is read on the samples kept
+    assert run.settle_time == pytest.approx(tau * math.log(50.0), abs=2 * sample)
+
+
+def test_the_crank_stalls_past_its_peak_load():
+    """A point mass hanging under the pivot, a constant torque of half its peak load:
+    the crank swings up until the motor's work 0.5 m g r (phi + pi/2) equals the rise
+    m g r (1 + sin phi), at phi = -26.45 deg, and stalls there."""
+    from scipy.optimize import brentq
+
+    mech = crank(gravity=(0.0, -9.81), angle=-90.0, motor=Motor(0.5 * MGR))
+    stop = math.degrees(
+        brentq(lambda p: 0.5 * (p + math.pi / 2) - 1 - math.sin(p), -1.0, 0.0)
+    )
+    with pytest.raises(assur.ModelError) as caught:
+        assur.startup(mech)
+    message = str(caught.value)
+    assert message.startswith("startup: the crank stalls at crank angle -26.45")
+    assert "cannot carry it past its peak load" in message
+    assert float(message.split("crank angle ")[1].split(" deg")[0]) == pytest.approx(
+        stop, abs=1e-3
+    )
+
+
+def test_a_motor_too_weak_to_start():
+    mech = crank(gravity=(0.0, -9.81), angle=0.0, motor=Motor(0.5 * MGR, 20.0))
+    with pytest.raises(assur.ModelError, match="the motor cannot start the crank"):
+        assur.startup(mech)
+
+
+def test_a_constant_torque_above_the_load_does_not_settle():
+    mech, t = example("whitworth"), steady("whitworth")
+    with pytest.raises(
+        assur.ModelError,
+        match=r"does not settle in 20 turns .*constant torque settles only at the mean",
+    ):
+        assur.startup(mech, t.flywheel, motor=Motor(2.0 * t.motor), turns=20)
+
+
+def test_a_mechanism_without_motor():
+    with pytest.raises(assur.ModelError, match=r"no motor; expected a \[motor\] table"):
+        assur.startup(example("whitworth"), 1.0)
+
+
+def test_a_motor_that_is_not_one():
+    with pytest.raises(assur.UsageError, match=r"motor: expected an assur\.Motor"):
+        assur.startup(crank(), motor=12.0)
+
+
+def test_a_start_against_the_motor():
+    with pytest.raises(assur.UsageError, match="omega0: -3 rad/s"):
+        assur.startup(crank(motor=Motor(1.0)), omega0=-3.0)
+
+
+def test_startup_needs_a_crank():
+    mech = dataclasses.replace(
+        assur.catalog.slider_crank(),
+        drivers=(assur.Driver("guide", 1.0),),
+        motor=Motor(1.0),
+    )
+    with pytest.raises(assur.ModelError, match="startup: driver joint 'guide'"):
+        assur.startup(mech)
+
+
+# ---------------------------------------------------------------------- [motor] table
+
+
+def test_the_motor_goes_round_the_file(tmp_path):
+    mech = dataclasses.replace(assur.catalog.four_bar(), motor=Motor(12.0, 150.0))
+    path = tmp_path / "m.toml"
+    assur.save(mech, path)
+    assert "[motor]\ntorque = 12.0\nno_load_speed = 150.0\n" in path.read_text()
+    assert assur.load(path) == mech
+    constant = dataclasses.replace(mech, motor=Motor(-4.0))
+    assert assur.loads(assur.dumps(constant)).motor == Motor(-4.0)
+    assert assur.loads(assur.dumps(assur.catalog.four_bar())).motor is None
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("torque = 0", "motor.torque: the motor's torque at standstill is 0"),
+        (
+            "torque = 5\nno_load_speed = -3",
+            "motor.no_load_speed: -3.0 rad/s against a torque of 5.0 N m; expected "
+            "a speed of the torque's sign",
+        ),
+        ("torque = 5\nspeed = 3", "motor.speed: unknown key 'speed'"),
+        ("no_load_speed = 3", "motor: missing key 'torque'"),
+        ('torque = "strong"', "motor.torque: expected a number, got 'strong'"),
+        ("torque = inf", "motor.torque: expected a finite number, got inf"),
+    ],
+)
+def test_bad_motor_tables(text, message):
+    base = assur.dumps(assur.catalog.four_bar())
+    with pytest.raises(assur.ModelError, match=message.replace("[", r"\[")):
+        assur.loads(base + "\n[motor]\n" + text + "\n")
+
+
+def test_a_motor_built_in_code_is_checked():
+    with pytest.raises(assur.ModelError, match="motor: expected a Motor"):
+        dataclasses.replace(assur.catalog.four_bar(), motor=5.0)
+    assert Motor(10.0, 100.0).at(50.0) == 5.0
+    assert Motor(10.0).at(50.0) == 10.0

@@ -1,0 +1,84 @@
+"""The dynamics section of the HTML report: figures, diagrams and their data."""
+
+from __future__ import annotations
+
+import html
+import re
+
+import numpy as np
+import pytest
+
+import assur
+from assur.analysis import default_positions
+from assur.dynamics_shown import SHOWN_DELTA
+from assur.html import render_report
+
+from .conftest import EXAMPLES
+from .test_html import ROUNDING, page_data
+
+SECTION = re.compile(r'<section class="card wide" id="dynamics">(.*?)</section>', re.S)
+
+
+def section(text: str) -> str | None:
+    found = SECTION.findall(text)
+    assert len(found) <= 1
+    return found[0] if found else None
+
+
+def test_a_mechanism_that_runs_without_a_flywheel():
+    mech = assur.load(EXAMPLES / "four_bar.toml")
+    angles = default_positions(mech)[::10]
+    text = render_report(mech, angles)
+    t = assur.dynamics(mech, angles)
+    part = html.unescape(section(text))
+    assert "without a flywheel" in part
+    assert f"<td>{t.delta:.5g}</td>" in part
+    assert f"{t.speed_max:.5g} rad/s at {t.angle_max:.5g}°" in part
+    data = page_data(text)
+    assert data["dynamics"]["summary"] == t.summary()
+    titles = [c["title"] for c in data["dynamics"]["charts"]]
+    assert titles == [
+        "Reduced inertia J(φ)",
+        "Reduced torque of the loads and the motor torque",
+        "Crank speed in the steady state",
+    ]
+    assert [c["unit"] for c in data["dynamics"]["charts"]] == ["kg m²", "N·m", "rad/s"]
+    for key in ("reduced.inertia", "reduced.torque", "driver.motor", "driver.omega"):
+        np.testing.assert_allclose(
+            data["columns"][key], t[key], rtol=ROUNDING, atol=1e-12
+        )
+    # the other diagrams are as they were
+    assert [c["id"] for c in data["charts"]] == [
+        "chart-balancing",
+        "chart-reactions",
+        "chart-omega",
+    ]
+
+
+def test_a_light_mechanism_gets_the_flywheel_it_needs():
+    mech = assur.load(EXAMPLES / "whitworth.toml")
+    text = render_report(mech, default_positions(mech)[::30])
+    part = html.unescape(section(text))
+    assert f"holds δ to {SHOWN_DELTA:g}" in part
+    inertia = assur.flywheel(mech, SHOWN_DELTA)
+    assert f"{inertia:.5g} kg m²" in part
+    assert page_data(text)["dynamics"]["summary"]["delta"] == pytest.approx(SHOWN_DELTA)
+
+
+@pytest.mark.parametrize("name", ["tenbar", "five_bar_two_cranks", "lever_var9"])
+def test_no_section_without_masses_or_one_crank(name):
+    text = render_report(
+        assur.load(EXAMPLES / f"{name}.toml"), [[0.0, 0.0]][:0] or None
+    )
+    assert section(text) is None
+    assert page_data(text)["dynamics"] is None
+
+
+def test_a_crank_that_cannot_turn_round_is_noted():
+    rocker = assur.catalog.four_bar(crank=0.09, coupler=0.06, rocker=0.08)
+    text = render_report(rocker)  # the positions that do not assemble are left out
+    part = html.unescape(section(text))
+    assert (
+        "No steady state to show: dynamics: the crank cannot make a full turn" in part
+    )
+    assert page_data(text)["dynamics"] is None
