@@ -188,14 +188,25 @@ def _ideal(table: Table, column: Column) -> dict[str, Array]:
 
 
 def _loss(table: Table, column: Column) -> dict[str, Array]:
-    """Compute the power of all friction loads (W).
+    """Compute the power of all friction loads (W)."""
+    total = np.zeros(len(table))
+    for power in friction_powers(table).values():
+        total = total + power
+    return {column.name: total}
 
-    A couple times its pair's relative angular speed; a force times its slide's
-    speed.
+
+def friction_powers(table: Table) -> dict[str, Array]:
+    """Return the power of each joint's friction load per position (W, <= 0).
+
+    A revolute joint's friction couple times its links' relative angular speed; a
+    prismatic joint's friction force times its slide's speed.
     """
+    forces = table.force_state
+    if forces is None:
+        return {}
     plan, state, n = table.plan, table.state, len(table)
-    total = np.zeros(n)
-    for name, value in _forces(table).friction.items():
+    out = {}
+    for name, value in forces.friction.items():
         pair = plan.pairs[name]
         if pair.kind == "R":
             speed = full(state.rotation(pair.second, 1), n) - full(
@@ -203,8 +214,8 @@ def _loss(table: Table, column: Column) -> dict[str, Array]:
             )
         else:
             speed = full(state.slide[name][1], n)
-        total = total + full(value, n) * speed
-    return {column.name: total}
+        out[name] = full(value, n) * speed
+    return out
 
 
 def _shaking(table: Table, column: Column) -> dict[str, Array]:

@@ -10,12 +10,13 @@ from __future__ import annotations
 import argparse
 import contextlib
 import json
+import math
 import os
 import sys
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -45,6 +46,9 @@ from assur.errors import (
     OutputError,
     UsageError,
 )
+
+if TYPE_CHECKING:
+    from assur.summary import Summary
 
 __all__ = ["main", "parse_angles"]
 
@@ -100,6 +104,12 @@ def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
             action="store_true",
             help="leave out positions that cannot be assembled",
         )
+    p.add_argument(
+        "--summary",
+        action="store_true",
+        help="print the summary instead of the table: largest and RMS reaction in "
+        "every joint, balancing load, mean power, friction losses (JSON with --json)",
+    )
     p = sub.add_parser("explain", help="the analysis at one position, step by step")
     p.add_argument("file", type=Path)
     p.add_argument(
@@ -352,14 +362,23 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
     mech = load_mechanism(args.file)
     given = positions(mech, args.angles)
     skipped = Skipped()
-    writing = bool(args.csv or args.json or args.parquet)
+    from assur.summary import Summary
+
+    summary = Summary() if getattr(args, "summary", False) else None
+    tables = bool(args.csv or args.parquet or (args.json and summary is None))
+    writing = tables or summary is not None
     with _bar(args, "forces" if forces else "kinematics", len(given)) as bar:
-        told = None if bar is None or writing else bar.advance
+        told = None if bar is None or tables else bar.advance
         parts = slices(
             mech, given, forces, args.skip_unassembled, skipped, told, check=writing
         )
-        if writing:
+        if summary is not None:
+            parts = _summed(parts, summary)
+        if tables:
             rows, names = _write_tables(args, parts, bar)
+        elif summary is not None:
+            for _ in parts:
+                pass
         else:
             text, names = _summary(parts, forces)
     quiet = _quiet(args)
@@ -371,11 +390,15 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
             f"position(s) that cannot be assembled: {shown}{more}",
             file=sys.stderr,
         )
+    if summary is not None:
+        _say(_summary_text(mech.name, summary, args.json))
     if not writing:
         _say(text)
         if not quiet:
             full = "--csv PATH or --json for the full table"
             print(f"({len(names)} columns in all: {full})")
+        return 0
+    if not tables:
         return 0
     # standard output may carry a table: the lines then go to standard error
     lines = sys.stderr if args.json or args.csv == "-" else sys.stdout
@@ -392,6 +415,12 @@ def _check_outputs(args: argparse.Namespace) -> None:
         target = getattr(args, option[2:])
         if target:
             check_not_input(option, target, args.file)
+    if args.csv == "-" and getattr(args, "summary", False):
+        msg = (
+            "--csv - and --summary: both write to standard output; expected --csv "
+            "PATH with --summary"
+        )
+        raise UsageError(msg)
     if args.csv == "-" and args.json:
         msg = (
             "--csv - and --json: both write to standard output; expected one of them "
@@ -494,6 +523,32 @@ def _open(stack: contextlib.ExitStack, target: str) -> tuple[Any, Any]:
     path = stack.enter_context(output_path(target))
     stream = stack.enter_context(path.open("wb"))
     return (lambda data: _output.write_all(stream, data)), None
+
+
+def _summed(parts: Iterator[Slice], summary: Summary) -> Iterator[Slice]:
+    """Yield the slices, each added to ``summary`` on its way."""
+    for part in parts:
+        summary.add(part.table)
+        yield part
+
+
+def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
+    """Return the summary as aligned lines with units, or as JSON."""
+    values = summary.result()
+    if as_json:
+        data = {
+            "name": name,
+            "positions": summary.count,
+            "summary": {k: v if math.isfinite(v) else None for k, v in values.items()},
+            "units": {k: summary.units[k] for k in values},
+        }
+        return json.dumps(data, indent=2)
+    width = max(len(k) for k in values)
+    lines = [f"Summary over {summary.count} positions ({name})"]
+    for key, value in values.items():
+        unit = summary.units[key]
+        lines.append(f"  {key.ljust(width)}  {value:>14.6g}  {unit}".rstrip())
+    return "\n".join(lines)
 
 
 def _summary(parts: Iterator[Slice], forces: bool) -> tuple[str, tuple[str, ...]]:

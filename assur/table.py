@@ -135,6 +135,31 @@ class Table:
                 values.flags.writeable = False
             self._cache[key] = values
 
+    def summary(self) -> dict[str, float]:
+        """Return the few numbers joints and motors are sized on, by name.
+
+        For every joint ``J`` (a forces table only): ``J.F.max``, the largest reaction
+        over the positions (N), ``J.F.at``, the driver position where it occurs (deg,
+        or m for a prismatic driver) and ``J.F.rms``; for the balancing load
+        ``driver.torque.max``, ``.min``, ``.mean`` and ``.rms`` (``driver.force.*``
+        for a prismatic driver; every driver's ``J.torque.*`` too with several);
+        ``driver.power.mean``, the mean of the balancing loads times the drivers'
+        speeds (W). With friction also ``J.friction.loss``, the mean power lost in
+        joint J (W), ``friction.loss`` in all, ``driver.power_ideal.mean`` without
+        friction and ``efficiency`` (see :func:`assur.summary.efficiency`).
+
+        Means are over the table's positions: time averages over a cycle when the
+        positions are equally spaced over a whole cycle at a constant driver speed.
+
+        Raises
+        ------
+        UsageError
+            For a kinematics table, or a table with no positions.
+        """
+        from assur.summary import summarize
+
+        return summarize(self)
+
     def to_csv(self, path: Any = None) -> str | None:
         """Write the table as CSV to ``path`` (a path, a file object or ``"-"``).
 

@@ -25,6 +25,7 @@ from assur import catalog
 from assur.analysis import default_positions
 from assur.html import render_report, write_report
 from assur.plan import compile_plan
+from assur.summary import Summary
 
 from .conftest import example_files
 
@@ -131,6 +132,24 @@ def test_force_report(pages: dict[str, str]) -> None:
     # 360 positions: every 10th row in the HTML table, the first one included
     rows = re.findall(r'<tr data-row="(\d+)">', text)
     assert rows == [str(i) for i in range(0, 360, 10)]
+
+
+def test_force_report_shows_the_summary(pages: dict[str, str]) -> None:
+    mech = assur.load(FORCED)
+    parts = Summary()
+    parts.add(assur.forces(mech, default_positions(mech)))
+    summary = parts.result()
+    text = pages["slider_crank_exercise"]
+    assert '<section class="card wide" id="summary">' in text
+    shown = re.findall(
+        r'<tr data-key="([^"]+)"><th>[^<]+</th><td>([^<]+)</td><td>([^<]*)</td>', text
+    )
+    assert [key for key, _, _ in shown] == list(summary)
+    for key, value, unit in shown:
+        # five significant digits in the page's tables
+        assert float(value) == pytest.approx(summary[key], rel=5.01e-5, abs=1e-9)
+        assert unit == parts.units[key]
+    assert 'id="summary"' not in pages["lever_var9"]
 
 
 def test_kinematics_only_report(pages: dict[str, str]) -> None:

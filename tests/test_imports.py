@@ -40,6 +40,7 @@ RANKS = {
     "assur.columns": 7,
     "assur._evaluate": 7,
     "assur.table": 8,
+    "assur.summary": 8,
     "assur.analysis": 9,
     "assur.io": 10,
     "assur._output": 10,

@@ -15,7 +15,13 @@ from typing import Any
 from assur._structure import Structure
 from assur.analysis import Table
 from assur.html._data import to_json
-from assur.html._sections import legend_html, meta_html, structure_html, table_html
+from assur.html._sections import (
+    legend_html,
+    meta_html,
+    structure_html,
+    summary_html,
+    table_html,
+)
 from assur.plan import Plan
 
 DRAWING_WIDTH = 556
@@ -53,6 +59,7 @@ def assemble_page(
         "table_title": "Reactions and balancing load" if forced else "Kinematics",
         "table": table_html(plan, table),
         "note": note_html(plan, table),
+        "summary": summary_html(table),
         "data": to_json(data),
         "css": _asset("report.css"),
         "script": _asset("report.js"),

@@ -122,6 +122,33 @@ def _report_html(text: str) -> str:
     return '<div class="report">' + "\n".join(lines) + "</div>"
 
 
+def summary_html(table: Table) -> str:
+    """Return the summary section of a forces table (empty for kinematics).
+
+    The few numbers joints and motors are sized on (:meth:`assur.Table.summary`),
+    one row each with its unit.
+    """
+    if table.force_state is None or len(table) == 0:
+        return ""
+    from assur.summary import Summary
+
+    summary = Summary()
+    summary.add(table)
+    rows = "\n".join(
+        f'<tr data-key="{escape(key)}"><th>{escape(key)}</th>'
+        f"<td>{number(value)}</td><td>{escape(summary.units[key])}</td></tr>"
+        for key, value in summary.result().items()
+    )
+    return (
+        '<section class="card wide" id="summary">\n<h2>Summary over the sweep</h2>\n'
+        '<p class="note">Largest and RMS reaction in every joint and where the '
+        "largest occurs, the balancing load's extremes, mean and RMS, the driver's "
+        "mean power; means are over the positions shown.</p>\n"
+        '<div class="table-wrap"><table class="values summary"><tbody>\n'
+        f"{rows}\n</tbody></table></div>\n</section>"
+    )
+
+
 def table_html(plan: Plan, table: Table) -> str:
     """Return the table of values over the sweep, every 10th row of a long one.
 

@@ -1,0 +1,187 @@
+"""Summaries of a force table: the few numbers joints, bearings and motors are sized on.
+
+For every joint the largest reaction, where it occurs and its RMS; for the driver the
+largest, smallest, mean and RMS balancing load and its mean power; with friction the
+power lost in each joint, in all, and the cycle's mechanical efficiency. A
+:class:`Summary` is built slice by slice, so that a sweep too long for memory is
+summarised as it is analysed; :func:`summarize` does it for one table.
+
+Means and RMS values are over the table's positions: they are time averages over a
+cycle when the positions are equally spaced over a whole cycle and the driver turns
+at a constant speed (the default sweep of one turn in 1 degree steps is).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from assur._evaluate import friction_powers
+from assur._vec import Array, full
+from assur.errors import UsageError
+
+__all__ = ["Summary", "efficiency", "summarize"]
+
+
+@dataclass
+class _Running:
+    """Running maximum (with its position), minimum, sum and sum of squares."""
+
+    top: float = -math.inf
+    at: float = math.nan
+    bottom: float = math.inf
+    total: float = 0.0
+    squares: float = 0.0
+
+    def add(self, values: Array, where: Array) -> None:
+        if not values.size:
+            return
+        k = int(np.argmax(values))
+        if values[k] > self.top:
+            self.top, self.at = float(values[k]), float(where[k])
+        self.bottom = min(self.bottom, float(np.min(values)))
+        self.total += float(np.sum(values))
+        self.squares += float(np.dot(values, values))
+
+
+@dataclass
+class Summary:
+    """The summary of a force table, added to one slice of positions at a time.
+
+    ``add(table)`` takes each slice (a forces table); ``result()`` returns the values
+    by name and ``units`` gives each name's unit. The names and their definitions are
+    those of :meth:`assur.Table.summary`.
+    """
+
+    count: int = 0
+    units: dict[str, str] = field(default_factory=dict)
+    _joints: dict[str, _Running] = field(default_factory=dict)
+    _drivers: dict[str, _Running] = field(default_factory=dict)
+    _power: float = 0.0
+    _ideal: float = 0.0
+    _losses: dict[str, float] = field(default_factory=dict)
+    _rubbing: bool = False
+
+    def add(self, table: Any) -> None:
+        """Add the positions of ``table``, a forces table (one slice of a sweep).
+
+        Raises
+        ------
+        UsageError
+            When ``table`` is a kinematics table (no forces to summarise).
+        """
+        if table.force_state is None:
+            msg = "summary: a kinematics table has no forces; expected assur.forces"
+            raise UsageError(msg)
+        if not self.units:
+            self._start(table)
+        n = len(table)
+        self.count += n
+        where = table.given[:, 0] if n else np.zeros(0)
+        for name, running in self._joints.items():
+            running.add(np.asarray(table[f"{name}.F"]), where)
+        for name, running in self._drivers.items():
+            running.add(np.asarray(table[name]), where)
+        forces = table.force_state
+        state = table.state
+        for i in range(len(table.plan.drivers)):
+            speed = full(state.speed[i], n)
+            self._power += float(np.dot(full(forces.balancing[i], n), speed))
+            if self._rubbing:
+                self._ideal += float(np.dot(full(forces.ideal[i], n), speed))
+        for name, power in friction_powers(table).items():
+            self._losses[name] = self._losses.get(name, 0.0) - float(np.sum(power))
+
+    def _start(self, table: Any) -> None:
+        """Name the summary's values after the table's columns."""
+        plan = table.plan
+        unit = table.column("angle").unit if "angle" in table else "deg"
+        units = self.units
+        for column in table.schema:
+            if column.family == "magnitude":
+                self._joints[column.owner] = _Running()
+                name = column.owner
+                units[f"{name}.F.max"] = "N"
+                units[f"{name}.F.at"] = unit
+                units[f"{name}.F.rms"] = "N"
+        for column in table.schema:
+            if column.family == "balancing":
+                self._drivers[column.name] = _Running()
+                for part in ("max", "min", "mean", "rms"):
+                    units[f"{column.name}.{part}"] = column.unit
+        units["driver.power.mean"] = "W"
+        self._rubbing = any(p.friction > 0.0 for p in plan.pairs.values())
+        if self._rubbing:
+            for name, pair in plan.pairs.items():
+                if pair.friction > 0.0 and not pair.virtual:
+                    units[f"{name}.friction.loss"] = "W"
+                    self._losses[name] = 0.0
+            units["friction.loss"] = "W"
+            units["driver.power_ideal.mean"] = "W"
+            units["efficiency"] = ""
+
+    def result(self) -> dict[str, float]:
+        """Return the summary's values by name (see :meth:`assur.Table.summary`).
+
+        Raises
+        ------
+        UsageError
+            When no position was added (every one left out, or an empty sweep).
+        """
+        n = self.count
+        if not n:
+            msg = "summary: the table has no positions to summarise"
+            raise UsageError(msg)
+        out: dict[str, float] = {}
+        for name, r in self._joints.items():
+            out[f"{name}.F.max"] = r.top
+            out[f"{name}.F.at"] = r.at
+            out[f"{name}.F.rms"] = math.sqrt(r.squares / n)
+        for name, r in self._drivers.items():
+            out[f"{name}.max"] = r.top
+            out[f"{name}.min"] = r.bottom
+            out[f"{name}.mean"] = r.total / n
+            out[f"{name}.rms"] = math.sqrt(r.squares / n)
+        out["driver.power.mean"] = self._power / n
+        if self._rubbing:
+            for name, loss in self._losses.items():
+                out[f"{name}.friction.loss"] = loss / n
+            lost = sum(self._losses.values()) / n
+            out["friction.loss"] = lost
+            out["driver.power_ideal.mean"] = self._ideal / n
+            out["efficiency"] = efficiency(self._power / n, self._ideal / n, lost)
+        return out
+
+
+def efficiency(power: float, ideal: float, lost: float) -> float:
+    """Return the cycle's mechanical efficiency, ``ideal / power``.
+
+    The share of the driver's work over a cycle that reaches the loads.
+
+    ``power`` is the driver's mean power with friction, ``ideal`` the same without
+    friction (the work the loads take from the driver, inertia's work cancelling over
+    a cycle) and ``lost`` the mean power lost to friction (W); over a steady cycle
+    ``power = ideal + lost``. A cycle in which the driver only overcomes friction
+    (``ideal`` zero within rounding) has efficiency 0. NaN where efficiency is not
+    defined: the driver does no net work (``power <= 0``, the loads drive the
+    mechanism), or the loads give back work the driver still has to supply.
+    """
+    if not power > 0.0:
+        return math.nan
+    # ``ideal`` cancels over a cycle of inertia loads alone: rounding then leaves
+    # a few ulps of the powers at play, not a negative efficiency
+    if abs(ideal) <= 1e-9 * (abs(power) + abs(lost)):
+        return 0.0
+    if ideal < 0.0:
+        return math.nan
+    return ideal / power
+
+
+def summarize(table: Any) -> dict[str, float]:
+    """Return the summary of one forces table (see :meth:`assur.Table.summary`)."""
+    summary = Summary()
+    summary.add(table)
+    return summary.result()

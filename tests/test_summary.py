@@ -1,0 +1,189 @@
+"""Summaries of a forces table: ``table.summary()`` and ``assur forces --summary``.
+
+Every value is checked against plain numpy reductions of the table's own columns
+(maximum, where it occurs, RMS, mean), the friction losses against the friction
+columns and the links' rates, and the efficiency against the energy balance of a
+steady cycle; a summary gathered slice by slice equals the summary of the whole.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur.analysis import default_positions
+from assur.cli import main
+from assur.summary import Summary, efficiency
+
+from .test_kinetostatics import needs_forces, steady
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+
+
+def forces_over_a_turn(mech: assur.Mechanism) -> assur.Table:
+    return assur.forces(mech, default_positions(mech, 2.0))
+
+
+def balancing_names(mech: assur.Mechanism) -> list[str]:
+    """Every balancing column: the first driver's, and each driver's with several."""
+    out = []
+    for i, d in enumerate(mech.drivers):
+        what = "torque" if mech.joint(d.joint).kind == "revolute" else "force"
+        out += [f"driver.{what}"] if i == 0 else []
+        out += [f"{d.joint}.{what}"] if len(mech.drivers) > 1 else []
+    return out
+
+
+def test_summary_is_numpy_reductions_of_the_table(example):
+    if not needs_forces(example):
+        pytest.skip("no masses and no loads: nothing to analyse")
+    table = forces_over_a_turn(example)
+    got = table.summary()
+    n = len(table)
+    where = table.given[:, 0]
+    expected: dict[str, float] = {}
+    for joint in example.joints:
+        f = table[f"{joint.name}.F"]
+        expected[f"{joint.name}.F.max"] = float(f.max())
+        expected[f"{joint.name}.F.at"] = float(where[np.argmax(f)])
+        expected[f"{joint.name}.F.rms"] = float(np.sqrt(np.mean(f**2)))
+    power = 0.0
+    for name in balancing_names(example):
+        t = table[name]
+        expected[f"{name}.max"] = float(t.max())
+        expected[f"{name}.min"] = float(t.min())
+        expected[f"{name}.mean"] = float(t.mean())
+        expected[f"{name}.rms"] = float(np.sqrt(np.mean(t**2)))
+    for i, d in enumerate(example.drivers):
+        what = "torque" if example.joint(d.joint).kind == "revolute" else "force"
+        name = f"driver.{what}" if i == 0 else f"{d.joint}.{what}"
+        power += float(np.mean(table[name] * d.omega))
+    expected["driver.power.mean"] = power
+    rubbing = any(j.friction for j in example.joints)
+    assert set(got) >= set(expected)
+    assert ("efficiency" in got) == rubbing
+    for key, value in expected.items():
+        assert got[key] == pytest.approx(value, rel=1e-12, abs=1e-12 * n), key
+
+
+def test_a_summary_by_slices_is_the_summary_of_the_whole():
+    mech = assur.load(EXAMPLES / "slider_crank_friction.toml")
+    positions = default_positions(mech, 1.0)
+    whole = assur.forces(mech, positions).summary()
+    parts = Summary()
+    for chunk in np.array_split(positions, [70, 71, 200]):
+        parts.add(assur.forces(mech, chunk))
+    assert parts.count == len(positions)
+    by_slices = parts.result()
+    assert list(by_slices) == list(whole)
+    for key, value in whole.items():
+        assert by_slices[key] == pytest.approx(value, rel=1e-12, abs=1e-9), key
+
+
+def relative_speed(table: assur.Table, joint: assur.Joint) -> np.ndarray:
+    """The second link's angular speed relative to the first, or the slide's speed."""
+    if joint.kind != "revolute":
+        return table[f"{joint.name}.v"]
+
+    def omega(link: str) -> np.ndarray:
+        return np.zeros(len(table)) if link == "ground" else table[f"{link}.omega"]
+
+    return omega(joint.links[1]) - omega(joint.links[0])
+
+
+@pytest.mark.parametrize(
+    "name",
+    ["slider_crank_friction", "four_bar_bearings", "slider_crank_locking"],
+)
+def test_friction_losses_and_efficiency(name):
+    mech = steady(assur.load(EXAMPLES / f"{name}.toml"))
+    table = forces_over_a_turn(mech)
+    got = table.summary()
+    total = 0.0
+    for joint in mech.joints:
+        if not joint.friction:
+            assert f"{joint.name}.friction.loss" not in got
+            continue
+        part = "Mf" if joint.kind == "revolute" else "Ff"
+        power = table[f"{joint.name}.{part}"] * relative_speed(table, joint)
+        assert (power <= 1e-12 * np.abs(power).max()).all()
+        loss = -float(np.mean(power))
+        assert got[f"{joint.name}.friction.loss"] == pytest.approx(loss, rel=1e-12)
+        total += loss
+    assert got["friction.loss"] == pytest.approx(total, rel=1e-12)
+    assert got["friction.loss"] == pytest.approx(
+        -float(np.mean(table["friction.power"])), rel=1e-12
+    )
+    omega = mech.drivers[0].omega
+    ideal = float(np.mean(table["driver.torque_ideal"] * omega))
+    assert got["driver.power_ideal.mean"] == pytest.approx(ideal, rel=1e-12, abs=1e-9)
+    # a steady cycle: inertia does no work, so the motor's work is what the loads
+    # take plus what friction loses
+    power = got["driver.power.mean"]
+    assert power == pytest.approx(ideal + total, rel=1e-9)
+    eta = got["efficiency"]
+    assert 0.0 <= eta < 1.0
+    if abs(ideal) > 1e-6 * power:
+        assert eta == pytest.approx(ideal / power, rel=1e-12)
+    else:
+        assert eta == 0.0
+
+
+def test_efficiency_by_hand():
+    assert efficiency(100.0, 80.0, 20.0) == 0.8
+    assert efficiency(20.0, 1e-14, 20.0) == 0.0  # friction is all the driver feeds
+    assert math.isnan(efficiency(-5.0, -10.0, 5.0))  # the loads drive the mechanism
+    assert math.isnan(efficiency(0.0, 0.0, 0.0))
+    assert math.isnan(efficiency(5.0, -10.0, 15.0))  # loads give work back
+
+
+def test_kinematics_and_empty_tables_have_no_summary():
+    mech = assur.load(EXAMPLES / "four_bar.toml")
+    with pytest.raises(assur.UsageError, match="kinematics table has no forces"):
+        assur.kinematics(mech, [0.0, 10.0]).summary()
+    with pytest.raises(assur.UsageError, match="no positions"):
+        assur.forces(mech, np.zeros(0)).summary()
+
+
+def test_cli_summary_text_and_json(capsys, tmp_path):
+    path = EXAMPLES / "slider_crank_friction.toml"
+    assert main(["forces", str(path), "--summary", "--angles", "45:404:1"]) == 0
+    text = capsys.readouterr().out
+    table = assur.forces(assur.load(path), np.arange(45.0, 405.0, 1.0))
+    summary = table.summary()
+    lines = text.splitlines()
+    assert lines[0].startswith("Summary over 360 positions")
+    shown = {line.split()[0]: line.split()[1:] for line in lines[1:]}
+    assert list(shown) == list(summary)
+    for key, (value, *_) in shown.items():
+        assert float(value) == pytest.approx(summary[key], rel=1e-5, abs=1e-9), key
+    assert shown["A.F.max"][1:] == ["N"]
+    assert shown["driver.torque.max"][1:] == ["N", "m"]
+    assert shown["driver.power.mean"][1:] == ["W"]
+
+    assert (
+        main(["forces", str(path), "--summary", "--json", "--angles", "45:404:1"]) == 0
+    )
+    data = json.loads(capsys.readouterr().out)
+    assert data["positions"] == 360
+    assert data["summary"] == pytest.approx(summary, rel=1e-15)
+    assert data["units"]["A.F.at"] == "deg"
+
+    csv = tmp_path / "t.csv"
+    assert main(["forces", str(path), "--summary", "--csv", str(csv)]) == 0
+    out = capsys.readouterr().out
+    assert "Summary over 360 positions" in out
+    assert len(csv.read_text().splitlines()) == 361
+
+
+def test_cli_summary_refuses_two_outputs_on_stdout(capsys):
+    path = EXAMPLES / "four_bar.toml"
+    assert main(["forces", str(path), "--summary", "--csv", "-"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1
+    assert "--csv - and --summary" in err[0]
