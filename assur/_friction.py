@@ -5,7 +5,9 @@ rotation of its links with a couple of magnitude f r |R| (R its reaction force):
 reaction is tangent to the friction circle of radius f r. A prismatic pair resists
 the slide with a force f |N| (N its normal force) along the slide line at the pair's
 point. Kinetic friction only: a pair whose links do not move relative to each other
-has none.
+has none. "Do not move" has a tolerance: a relative speed below ``STILL`` times the
+mechanism's fastest motion at that position is rounding, not motion, and its sign
+would pick the friction's sense at random.
 
 Friction makes a group's equilibrium depend on the sizes ``s`` of its own reactions.
 Given the senses of the relative motions, the reactions are affine in those sizes:
@@ -18,6 +20,7 @@ can drive the group against its friction: it locks.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -32,10 +35,13 @@ if TYPE_CHECKING:
     from assur.groups._protocol import GroupSolver
 
 __all__ = [
+    "STILL",
     "GroupFriction",
+    "Still",
     "friction_wrench",
     "rate",
     "solve_group",
+    "still",
 ]
 
 TOLERANCE = 1e-13
@@ -43,6 +49,9 @@ TOLERANCE = 1e-13
 stops."""
 SINGULAR = 1e-12
 """Determinant of the Newton step's matrix below which the step is not taken."""
+STILL = 1e-11
+"""A pair's relative speed, as a fraction of the fastest motion of the mechanism at
+that position (rad/s, or m/s per mechanism size), below which the pair is at rest."""
 MAX_ITERATIONS = 30
 """Most Newton steps; a position still moving is locked, or too near it to tell."""
 
@@ -66,15 +75,43 @@ class GroupFriction:
     iterations: int
 
 
-def rate(pair: PairPlan, bodies: list[Motion]) -> Leaf:
-    """Return the relative speed a pair's friction opposes.
+@dataclass(frozen=True, slots=True)
+class Still:
+    """The speeds below which a pair is at rest, per position.
+
+    ``turn`` is the relative angular speed (rad/s) below which a revolute pair is
+    at rest; a prismatic pair's slide speed is compared with ``turn * size`` (m/s).
+    """
+
+    turn: Leaf
+    size: float
+
+
+def still(bodies: list[Motion], size: float) -> Still:
+    """Return the rest thresholds of a batch whose motions are ``bodies``.
+
+    The fastest motion is the largest angular speed of a link or speed of a link's
+    origin per mechanism ``size`` (m); its ``STILL`` fraction is the threshold.
+    """
+    parts = [np.abs(b.phi[1]) for b in bodies]
+    # a mechanism with every joint at one point has no size to divide by
+    parts += [np.hypot(b.ox[1], b.oy[1]) / max(size, 1e-12) for b in bodies]
+    return Still(STILL * functools.reduce(np.maximum, parts, 0.0), size)
+
+
+def rate(pair: PairPlan, bodies: list[Motion], rest: Still) -> Leaf:
+    """Return the relative speed a pair's friction opposes, zero where at rest.
 
     The second link's angular speed relative to the first's (rad/s), or the slide's
-    speed (m/s).
+    speed (m/s); a speed below the ``rest`` threshold is returned as exactly zero.
     """
     if pair.kind == "R":
-        return sub(bodies[pair.second].phi[1], bodies[pair.first].phi[1])
-    return slide(pair, bodies, 1)
+        speed = sub(bodies[pair.second].phi[1], bodies[pair.first].phi[1])
+        limit = rest.turn
+    else:
+        speed = slide(pair, bodies, 1)
+        limit = mul(rest.turn, rest.size)
+    return np.where(np.abs(speed) > limit, speed, 0.0)
 
 
 def friction_wrench(
@@ -148,7 +185,11 @@ def _reaction(pair: PairPlan, bodies: list[Motion], record: Equilibrium, n: int)
 
 
 def solve_group(
-    solver: GroupSolver, bodies: list[Motion], loads: list[Wrench], n: int
+    solver: GroupSolver,
+    bodies: list[Motion],
+    loads: list[Wrench],
+    n: int,
+    rest: Still,
 ) -> GroupFriction | None:
     """Solve a group's equilibrium with the friction of its pairs (None: it has none).
 
@@ -162,7 +203,7 @@ def solve_group(
         return None
     inside = set(base.bodies)
     m = len(pairs)
-    units = {p.name: _unit(p, bodies, rate(p, bodies)) for p in pairs}
+    units = {p.name: _unit(p, bodies, rate(p, bodies, rest)) for p in pairs}
     start = [_reaction(p, bodies, base, n) for p in pairs]
     # each pair's reactions for a unit of one pair's friction, less the frictionless
     response = [

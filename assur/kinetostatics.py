@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._friction import friction_wrench, rate, solve_group
+from assur._friction import Still, friction_wrench, rate, solve_group, still
 from assur._kinematics import KinematicState, velocity_coefficients
 from assur._loads import LoadPlan, table_values
 from assur._vec import Array, Leaf, Mask, add, cross, dot, full, mul, sub, take_rows
@@ -208,8 +208,9 @@ def reverse(
     loads: list[Wrench] = list(applied.wrenches)
     n = _size(plan, bodies)
     groups, values, locked = [], {}, []
+    rest = still(bodies, plan.scale) if rubbing else None
     for solver in reversed(plan.solvers):
-        found = solve_group(solver, bodies, loads, n) if rubbing else None
+        found = solve_group(solver, bodies, loads, n, rest) if rest else None
         if found is None:
             record = solver.equilibrium(bodies, loads)
             passed = list(record.passed)
@@ -225,8 +226,8 @@ def reverse(
     drivers = []
     for d in plan.drivers:
         record_ = balance(d, bodies, loads)
-        if rubbing and d.pair.friction > 0.0:
-            record_ = _rubbing(d, bodies, record_, values)
+        if rest and d.pair.friction > 0.0:
+            record_ = _rubbing(d, bodies, record_, values, rest)
         loads[0] = [add(a, b) for a, b in zip(loads[0], record_.load, strict=True)]
         drivers.append(record_)
     ideal: tuple[Leaf, ...] = ()
@@ -299,11 +300,15 @@ def _shares(record: Equilibrium, wrenches: dict[str, Wrench]) -> list[Any]:
 
 
 def _rubbing(
-    d: DriverPlan, bodies: list[Motion], record: Balance, values: dict[str, Leaf]
+    d: DriverPlan,
+    bodies: list[Motion],
+    record: Balance,
+    values: dict[str, Leaf],
+    rest: Still,
 ) -> Balance:
     """Return a driver's balance with its own pair's friction overcome too."""
     value, wrench = friction_wrench(
-        d.pair, bodies, record.reaction, rate(d.pair, bodies)
+        d.pair, bodies, record.reaction, rate(d.pair, bodies, rest)
     )
     values[d.pair.name] = value
     # the friction on the input link, which the balancing load must also hold

@@ -15,6 +15,7 @@ Nothing here calls assur's solvers: everything is rebuilt from the mechanism's d
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -524,6 +525,23 @@ def _speed(table: assur.Table, joint: assur.Joint) -> np.ndarray:
     return table[f"{joint.name}.v"]
 
 
+def _at_rest(
+    mech: assur.Mechanism, table: assur.Table, speed: np.ndarray, joint: assur.Joint
+) -> np.ndarray:
+    """Rows where a joint's relative speed is rounding rather than motion: below 1e-10
+    of the fastest link rotation or joint speed per mechanism size of that row."""
+    size = mechanism_size(mech)
+    fastest = np.zeros(len(table))
+    for link in mech.links:
+        fastest = np.maximum(fastest, np.abs(table[f"{link.name}.omega"]))
+    for j in mech.joints:
+        fastest = np.maximum(
+            fastest, np.hypot(table[f"{j.name}.vx"], table[f"{j.name}.vy"]) / size
+        )
+    limit = 1e-10 * fastest * (1.0 if joint.kind == "revolute" else size)
+    return np.abs(speed) <= limit
+
+
 def global_solve_friction(
     mech: assur.Mechanism, table: assur.Table
 ) -> tuple[Reactions, dict[str, np.ndarray]]:
@@ -551,6 +569,10 @@ def global_solve_friction(
     units = {j.name: _unit_wrenches(mech, table, j) for j in joints}
     loads = applied_loads(mech, table)
     speeds = {j.name: _speed(table, j) for j in joints}
+    for j in joints:
+        speeds[j.name] = np.where(
+            _at_rest(mech, table, speeds[j.name], j), 0.0, speeds[j.name]
+        )
     axes = {
         j.name: turn(pose(mech, table, j.links[0]).rotation, unit_axis(j))
         for j in joints
@@ -642,7 +664,10 @@ def global_solve_friction(
         x = start(r)
         scale = max(1.0, float(np.max(np.abs(x))))
         for _ in range(3):  # polish: fsolve stops early near its own tolerance
-            x = fsolve(equations, x, args=(r,), xtol=1e-15)
+            with warnings.catch_warnings():
+                # "no further improvement": the residual check below judges
+                warnings.simplefilter("ignore", RuntimeWarning)
+                x = fsolve(equations, x, args=(r,), xtol=1e-15)
         left = np.max(np.abs(equations(x, r)))
         if not left <= 1e-11 * scale * max(1.0, size):
             msg = f"the friction solve did not converge at row {r}: {left:g} left"
