@@ -205,49 +205,58 @@ def solve_group(
     m = len(pairs)
     units = {p.name: _unit(p, bodies, rate(p, bodies, rest)) for p in pairs}
     start = [_reaction(p, bodies, base, n) for p in pairs]
-    # each pair's reactions for a unit of one pair's friction, less the frictionless
+    # each pair's reactions for a unit of one pair's friction alone: the reactions
+    # are linear in the loads, and constant zero loads keep these solves cheap
+    zero: list[Wrench] = [[0.0, 0.0, 0.0] for _ in loads]
     response = [
         [
             _reaction(
                 q,
                 bodies,
-                solver.equilibrium(bodies, _with(loads, [p], units, inside)),
+                solver.equilibrium(bodies, _with(zero, [p], units, inside)),
                 n,
             )
-            - r0
-            for q, r0 in zip(pairs, start, strict=True)
+            for q in pairs
         ]
         for p in pairs
     ]
-    sizes = np.stack([np.linalg.norm(r, axis=-1) for r in start], axis=-1)
+    sizes = np.stack([_norm(r) for r in start], axis=-1)
     scale = np.max(sizes, axis=-1) + 1e-300
     step = np.full(n, np.inf)
     count = 0
-    while count < MAX_ITERATIONS and not np.all(step <= TOLERANCE * scale):
+    # Newton converges quadratically: after a few steps only a handful of positions
+    # are still moving, and only those are stepped again
+    rows = np.arange(n)
+    # the start and responses of the positions still moving (all of them at first)
+    now_start, now_response = start, response
+    while count < MAX_ITERATIONS and rows.size:
         count += 1
-        jac = np.zeros((n, m, m))
-        left = np.empty((n, m))
+        # the Jacobian as rows of columns of 1-D arrays: contiguous, unlike the
+        # strided entries of an (n, m, m) array, and so several times faster
+        jac: list[list[Any]] = []
+        left: list[Any] = []
+        here = sizes[rows]
         for j in range(m):
-            value = start[j] + sum(sizes[:, k, None] * response[k][j] for k in range(m))
-            size = np.linalg.norm(value, axis=-1)
+            value = now_start[j].copy()
+            for k in range(m):
+                value += here[:, k, None] * now_response[k][j]
+            size = _norm(value)
             with np.errstate(invalid="ignore", divide="ignore"):
                 along = np.where(size[:, None] > 0.0, value / size[:, None], 0.0)
-            left[:, j] = sizes[:, j] - size
-            jac[:, j, j] = 1.0
-            for k in range(m):
-                jac[:, j, k] -= np.sum(along * response[k][j], axis=-1)
-        good = np.isfinite(jac).all(axis=(1, 2)) & np.isfinite(left).all(axis=1)
-        jac[~good] = np.eye(m)
-        # a singular step (a reaction through zero, a group on the edge of locking)
-        # is not taken: the position then stays unsettled and is reported
-        good &= np.abs(np.linalg.det(jac)) > SINGULAR
-        jac[~good] = np.eye(m)
-        delta = np.linalg.solve(jac, -left[..., None])[..., 0]
-        delta[~good] = 0.0
-        sizes = sizes + delta
-        step = np.max(np.abs(delta), axis=-1)
+            left.append(here[:, j] - size)
+            jac.append([-_dot(along, now_response[k][j]) for k in range(m)])
+            jac[j][j] += 1.0
+        delta, good = _newton_step(jac, left)
+        sizes[rows] = here + delta
+        moved = functools.reduce(np.maximum, [np.abs(x) for x in delta.T])
         # a finite position whose step could not be taken has not settled
-        step[~good & np.isfinite(left).all(axis=1)] = np.inf
+        moved[~good & np.isfinite(sum(left))] = np.inf
+        step[rows] = moved
+        stay = ~(moved <= TOLERANCE * scale[rows])
+        if not stay.all():
+            rows = rows[stay]
+            now_start = [a[stay] for a in now_start]
+            now_response = [[a[stay] for a in r] for r in now_response]
     finite = np.isfinite(sizes).all(axis=-1)
     # no solution with every size positive: nothing drives the group (self-locking)
     locked = finite & (
@@ -271,6 +280,70 @@ def solve_group(
     return GroupFriction(
         record, values, friction, locked if locked.any() else None, count
     )
+
+
+def _newton_step(jac: list[list[Any]], left: list[Any]) -> tuple[Any, Any]:
+    """Return Newton's step ``-jac^-1 left`` per position, and where it was taken.
+
+    ``jac[j][k]`` and ``left[j]`` are arrays over the positions. Up to three pairs
+    with friction (every dyad) are solved by Cramer's rule, several times faster than
+    a batch of LAPACK calls on small matrices; more, by ``numpy.linalg.solve``. A step
+    is not taken (zero) where the matrix or the residual is not finite, or the matrix
+    is nearly singular: a reaction through zero, a group on the edge of locking.
+    """
+    m = len(left)
+    with np.errstate(invalid="ignore", over="ignore"):
+        if m <= 3:
+            adj, det = _adjugate(jac)
+        else:
+            square = np.stack([np.stack(r, axis=-1) for r in jac], axis=-2)
+            det = np.linalg.det(np.where(np.isfinite(square), square, 0.0))
+        # a matrix that is not finite has a determinant that is not finite
+        good = np.isfinite(det) & np.isfinite(sum(left)) & (np.abs(det) > SINGULAR)
+        safe = np.where(good, det, 1.0)
+        if m <= 3:
+            columns = [
+                -sum(adj[i][j] * left[j] for j in range(m)) / safe for i in range(m)
+            ]
+            delta = np.stack(columns, axis=-1)
+        else:
+            square[~good] = np.eye(m)
+            rhs = -np.stack(left, axis=-1)[..., None]
+            delta = np.linalg.solve(square, np.where(np.isfinite(rhs), rhs, 0.0))[
+                ..., 0
+            ]
+    delta[~good] = 0.0
+    return delta, good
+
+
+def _adjugate(a: list[list[Any]]) -> tuple[list[list[Any]], Any]:
+    """Return the adjugate and the determinant of a batch of 1 x 1 to 3 x 3 matrices."""
+    m = len(a)
+    if m == 1:
+        return [[1.0]], a[0][0]
+    if m == 2:
+        adj = [[a[1][1], -a[0][1]], [-a[1][0], a[0][0]]]
+        return adj, a[0][0] * a[1][1] - a[0][1] * a[1][0]
+    adj = [[0.0] * 3 for _ in range(3)]
+    for i in range(3):
+        for j in range(3):
+            r = [x for x in range(3) if x != j]
+            c = [x for x in range(3) if x != i]
+            minor = a[r[0]][c[0]] * a[r[1]][c[1]] - a[r[0]][c[1]] * a[r[1]][c[0]]
+            adj[i][j] = minor if (i + j) % 2 == 0 else -minor
+    det = a[0][0] * adj[0][0] + a[0][1] * adj[1][0] + a[0][2] * adj[2][0]
+    return adj, det
+
+
+def _norm(a: Any) -> Any:
+    """Return the length of each row of an (n, 2) or (n, 1) array."""
+    return np.hypot(a[:, 0], a[:, 1]) if a.shape[-1] == 2 else np.abs(a[:, 0])
+
+
+def _dot(a: Any, b: Any) -> Any:
+    """Return the dot product of the rows of two (n, 2) or (n, 1) arrays."""
+    out = a[:, 0] * b[:, 0]
+    return out + a[:, 1] * b[:, 1] if a.shape[-1] == 2 else out
 
 
 def _along(pair: PairPlan, bodies: list[Motion], unit: Wrench) -> Leaf:

@@ -730,3 +730,31 @@ def test_import_assur_loads_no_matplotlib() -> None:
         [sys.executable, "-c", code], capture_output=True, text=True, check=True
     )
     assert out.stdout.strip() == "False"
+
+
+def test_friction_circles_and_reactions_tangent_to_them():
+    mech = _load("four_bar_bearings")
+    table = assur.forces(mech, [40.0, 130.0])
+    ax = plotting.draw(table, forces=True, angle=130.0)
+    circles = [p for p in ax.patches if p.get_gid() == "friction circle"]
+    rubbing = [j for j in mech.joints if j.kind == "revolute" and j.friction]
+    assert len(circles) == len(rubbing) > 0
+    by_radius = sorted(c.get_radius() for c in circles)
+    assert by_radius == pytest.approx(sorted(j.friction * j.radius for j in rubbing))
+    # each reaction's line of action is tangent to its circle, on the side where its
+    # moment about the pin is the friction couple
+    from assur.plotting._context import _context
+    from assur.plotting._forces import _overview_arrows, _tex
+
+    ctx = _context(table, False)
+    row = 1
+    arrows = {a.label: a for a in _overview_arrows(ctx, ctx.pose(row), row)}
+    for joint in rubbing:
+        a = arrows[f"$R_{{{_tex(joint.name)}}}$"]
+        pin = np.array([table[f"{joint.name}.x"][row], table[f"{joint.name}.y"][row]])
+        d = a.point - pin
+        moment = d[0] * a.force[1] - d[1] * a.force[0]
+        assert moment == pytest.approx(table[f"{joint.name}.Mf"][row], rel=1e-9)
+        distance = abs(moment) / np.hypot(*a.force)
+        assert distance == pytest.approx(joint.friction * joint.radius, rel=1e-9)
+    assert any("friction circle" in t.get_text() for t in ax.get_legend().get_texts())

@@ -75,13 +75,20 @@ def _reaction(
     """Reaction of pair ``name`` on its second link (``sign`` -1: on its first).
 
     A prismatic pair's normal force is placed where it balances the pair's couple;
-    the couple is returned separately when that point lies too far away.
+    the couple is returned separately when that point lies too far away. A revolute
+    pair with friction has its force on the line tangent to its friction circle where
+    the force's moment about the pin is the friction couple, as the books draw it.
     """
     pair = ctx.plan.pairs[name]
     force, couple = ctx.forces.reaction(name, len(ctx.table))
     f = sign * np.asarray(force[row], dtype=float)
     q = pose.at(pair.second, pair.d_second)
     if pair.kind == "R":
+        size = float(np.dot(f, f))
+        if name in ctx.forces.friction and size > 0.0:
+            # the same line for the force on either link: sign enters twice
+            mf = sign * float(full(ctx.forces.friction[name], len(ctx.table))[row])
+            q = q + (mf / size) * np.array([f[1], -f[0]])
         return q, f, None
     e = pose.turn(pair.first, pair.axis)
     normal = float(np.dot(f, np.array([-e[1], e[0]])))
@@ -89,6 +96,36 @@ def _reaction(
     if abs(normal) > 1e-9 and abs(m / normal) < 0.5 * ctx.size:
         return q + (m / normal) * e, f, None
     return q, f, m
+
+
+def _friction_circles(ctx: _Context, pose: _Pose) -> list[tuple[np.ndarray, float]]:
+    """Return the centre and radius f r (m) of each revolute pair's friction circle."""
+    return [
+        (pose.at(p.second, p.d_second), p.friction * p.radius)
+        for p in ctx.plan.pairs.values()
+        if p.kind == "R" and p.friction > 0.0 and not p.virtual
+    ]
+
+
+def _draw_friction_circles(ax: Any, ctx: _Context, pose: _Pose) -> int:
+    """Draw the friction circles, dashed, to the drawing's scale; return how many."""
+    from matplotlib.patches import Circle
+
+    circles = _friction_circles(ctx, pose)
+    for centre, radius in circles:
+        ax.add_patch(
+            Circle(
+                tuple(centre),
+                radius,
+                fill=False,
+                ls="--",
+                lw=0.8,
+                color=REACTION_COLOR,
+                zorder=6,
+                gid="friction circle",
+            )
+        )
+    return len(circles)
 
 
 def _centre(table: Table, link: str, row: int) -> np.ndarray:

@@ -21,7 +21,13 @@ from assur.plotting._context import (
     _position_title,
     _row,
 )
-from assur.plotting._forces import _draw_arrows, _overview_arrows, _scale, _scale_text
+from assur.plotting._forces import (
+    _draw_arrows,
+    _draw_friction_circles,
+    _overview_arrows,
+    _scale,
+    _scale_text,
+)
 from assur.plotting._geometry import _extent, _public, _shape, _skeleton
 from assur.plotting._labels import _label_joints, _label_link
 from assur.plotting._parts import _draw_guide, _draw_joint, _draw_link, _draw_pivot
@@ -138,6 +144,8 @@ def _draw_row(
             ("balancing load", BALANCING_COLOR),
             (_scale_text(arrows, scale), ""),
         ]
+        if _draw_friction_circles(ax, ctx, pose):
+            entries.insert(-1, ("friction circle (dashed), reaction tangent", ""))
     _frame_axes(ax, ctx, list(limits) if limits is not None else seen, ctx.size)
     name = ctx.table.mechanism.name or "Mechanism"
     ax.set_title(f"{name}, {_position_title(ctx.table, row)}", fontsize=10)
