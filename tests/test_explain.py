@@ -140,6 +140,8 @@ def expected(table: assur.Table) -> dict[str, tuple[float, ...]]:
         if key in row:
             sym = f"{letter}_{{b,{tex(d.pair.name)}}}"
             out[sym] = out[f"{sym}^{{lever}}"] = (row[key],)
+            if f"{key}_ideal" in row:
+                out[f"{sym}^{{ideal}}"] = (row[f"{key}_ideal"],)
     return out
 
 

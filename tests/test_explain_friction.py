@@ -36,7 +36,7 @@ def _note_and_table(path, angle: float) -> tuple[str, assur.Table]:
 @pytest.mark.parametrize("angle", ANGLES)
 def test_every_friction_number_agrees_with_the_table(path, angle: float) -> None:
     note, table = _note_and_table(path, angle)
-    check(note, table)  # type: ignore[arg-type]
+    check(note, table)
     shown = [lhs for lhs, last in statements(note) if printed(last) is not None]
     for pair in table.plan.pairs.values():
         if pair.friction > 0.0:
@@ -174,7 +174,7 @@ def test_every_example_with_friction_agrees_with_the_table(stem: str, angle) -> 
     except assur.AssurError as err:
         pytest.skip(f"{stem} at {angle}: {err}")
     note = str(explain(mech, angle))
-    check(note, table)  # type: ignore[arg-type]
+    check(note, table)
     shown = [lhs for lhs, last in statements(note) if printed(last) is not None]
     for d in table.plan.drivers:
         letter = "M" if d.kind == "R" else "F"
@@ -191,3 +191,27 @@ def _rubbing_groups_of(mech: assur.Mechanism, angle) -> int:
     result = position(mech, angle).result
     assert result is not None
     return sum(any(p.friction > 0.0 for p in rec.pairs) for rec in result.groups)
+
+
+@pytest.mark.parametrize("rubbing", [False, True], ids=["ideal", "friction"])
+def test_every_driver_has_its_lever(rubbing: bool) -> None:
+    # the two-crank five-bar: one lever per driver, each equal to the table's load
+    stem, angle = "five_bar_two_cranks", (40.0, 100.0)
+    mech = rubbed(stem) if rubbing else assur.load(EXAMPLES / f"{stem}.toml")
+    table = assur.forces(mech, np.array([angle]))
+    note = str(explain(mech, angle))
+    lever = note.split("## 6. Check by Zhukovsky's lever")[1]
+    assert "each balancing load has its own lever" in lever
+    assert lever.count("per unit speed of this driver, the others held") == 2
+    check(note, table)
+    shown = {lhs: printed(last) for lhs, last in statements(lever) if printed(last)}
+    for joint in ("A", "E"):
+        sym = f"M_{{b,{tex(joint)}}}"
+        ((got, half),) = shown[f"{sym}^{{lever}}"]
+        assert abs(got - float(table[f"{joint}.torque"][0])) <= half
+        if rubbing:
+            ((ideal, half),) = shown[f"{sym}^{{ideal}}"]
+            assert abs(ideal - float(table[f"{joint}.torque_ideal"][0])) <= half
+    # the primed powers: per unit speed, not watts
+    assert "\\sum P' = " in lever
+    assert ("\\sum P_{f}' = " in lever) == rubbing

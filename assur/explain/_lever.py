@@ -209,46 +209,68 @@ def lever_blocks(pos: Position) -> list[Block]:
             "balancing load's power. No reaction enters it (they do no work)."
         ),
     ]
-    for i, d in enumerate(plan.drivers):
-        bodies, speed, note = _rates(pos, i)
-        rows, power = _terms(pos, bodies)
-        sym = _symbol(d, many)
-        rate = "\\omega" if d.kind == "R" else "v"
-        blocks += [
-            Para(f"With {note} (driver {plain(d.pair.name)}):"),
-            Grid(("load", "force or couple", "velocity", "power (W)"), tuple(rows)),
-        ]
-        lines = [f"\\sum P = {num(power)}\\ \\mathrm{{W}}"]
-        rubbed, lost = power_rows(pos, bodies, bodies is pos.bodies)
-        top, shown = "\\sum P", num(power)
-        if rubbed:
-            blocks += [
-                Para(
-                    "Friction does work too: each pair's friction load times the "
-                    "relative motion it opposes (a loss, so negative):"
-                ),
-                Grid(
-                    ("pair", "friction load", "relative motion", "power (W)"),
-                    tuple(rubbed),
-                ),
-            ]
-            lines += [
-                f"{sym}^{{ideal}} = -\\frac{{\\sum P}}{{{rate}}} = -\\frac{{"
-                f"{num(power)}}}{{{num(speed)}}} = {num(-power / speed)}",
-                f"\\sum P_{{f}} = {num(lost)}\\ \\mathrm{{W}}",
-            ]
-            top, shown = "\\sum P + \\sum P_{f}", f"{num(power)} + {par(lost)}"
-            power += lost
-        lever = -power / speed
-        value = _balancing(pos, i)
-        diff = 100.0 * abs(lever - value) / max(abs(value), 1e-300)
-        lines += [
-            f"{sym}^{{lever}} = -\\frac{{{top}}}{{{rate}}} = -\\frac{{{shown}}}"
-            f"{{{num(speed)}}} = {num(lever)}",
-            f"\\frac{{|{sym}^{{lever}} - {sym}|}}{{|{sym}|}} = {_percent(diff)}\\,\\%",
-        ]
-        blocks.append(Display(tuple(lines)))
+    if many:
+        blocks.append(
+            Para(
+                f"With {len(plan.drivers)} drivers each balancing load has its own "
+                "lever: the velocity plan for a unit speed of that driver with the "
+                "others held still. The other drivers' loads then do no work, and "
+                "the powers (written with a prime) are per unit speed."
+            )
+        )
+    for i in range(len(plan.drivers)):
+        blocks += _driver_lever(pos, i)
     return blocks
+
+
+def _driver_lever(pos: Position, i: int) -> list[Block]:
+    """Return driver ``i``'s balancing load by the lever, with friction's power.
+
+    With several drivers the velocities are those per unit speed of driver ``i``
+    (the others held): the powers are then per unit speed, written with a prime,
+    and the balancing load is minus their sum.
+    """
+    d = pos.plan.drivers[i]
+    bodies, speed, note = _rates(pos, i)
+    actual = bodies is pos.bodies
+    rows, power = _terms(pos, bodies)
+    sym = _symbol(d, len(pos.plan.drivers) > 1)
+    tick = "" if actual else "'"
+    rate = ("\\omega" if d.kind == "R" else "v") + tick
+    unit = "\\ \\mathrm{W}" if actual else ""
+    head = "power (W)" if actual else "power per unit speed"
+    blocks: list[Block] = [
+        Para(f"With {note} (driver {plain(d.pair.name)}):"),
+        Grid(("load", "force or couple", "velocity", head), tuple(rows)),
+    ]
+    lines = [f"\\sum P{tick} = {num(power)}{unit}"]
+    rubbed, lost = power_rows(pos, bodies, actual)
+    top, shown = f"\\sum P{tick}", num(power)
+    if rubbed:
+        blocks += [
+            Para(
+                "Friction does work too: each pair's friction load times the "
+                "relative motion it opposes (a loss, so negative):"
+            ),
+            Grid(("pair", "friction load", "relative motion", head), tuple(rubbed)),
+        ]
+        lines += [
+            f"{sym}^{{ideal}} = -\\frac{{\\sum P{tick}}}{{{rate}}} = -\\frac{{"
+            f"{num(power)}}}{{{num(speed)}}} = {num(-power / speed)}",
+            f"\\sum P_{{f}}{tick} = {num(lost)}{unit}",
+        ]
+        top = f"\\sum P{tick} + \\sum P_{{f}}{tick}"
+        shown = f"{num(power)} + {par(lost)}"
+        power += lost
+    lever = -power / speed
+    value = _balancing(pos, i)
+    diff = 100.0 * abs(lever - value) / max(abs(value), 1e-300)
+    lines += [
+        f"{sym}^{{lever}} = -\\frac{{{top}}}{{{rate}}} = -\\frac{{{shown}}}"
+        f"{{{num(speed)}}} = {num(lever)}",
+        f"\\frac{{|{sym}^{{lever}} - {sym}|}}{{|{sym}|}} = {_percent(diff)}\\,\\%",
+    ]
+    return [*blocks, Display(tuple(lines))]
 
 
 def _percent(x: float) -> str:
