@@ -215,3 +215,23 @@ def test_every_driver_has_its_lever(rubbing: bool) -> None:
     # the primed powers: per unit speed, not watts
     assert "\\sum P' = " in lever
     assert ("\\sum P_{f}' = " in lever) == rubbing
+
+
+def test_the_documented_friction_numbers_are_the_note_s() -> None:
+    # docs/explain.rst quotes the friction example's note at 45 degrees
+    note, _ = _note_and_table(FRICTION, 45.0)
+    for text in (
+        r"-0.0008 \cdot 1994.59 \cdot (-1) = 1.596\ \mathrm{N\,m}",
+        r"-0.15 \cdot 473.94 \cdot (-1) = 71.09\ \mathrm{N}",
+        r"| C | $962.04$ |",
+        r"| B | $1928.5$ |",
+        "3 steps brought each size",
+        r"(0,\ -473.94) + (71.09,\ 0) = (71.09,\ -473.94)",
+        r"-0.00096 \cdot 9658.16 \cdot 1 = -9.272",
+        r"91.55 - (-9.272) = 100.82\ \mathrm{N\,m}",
+        r"-\frac{-16925 + (-3239.46)}{200} = 100.82",
+        r"P_{f,\mathrm{guide}} = 71.09 \cdot (-13.3) = -945.64",
+    ):
+        assert text in note, text
+    zero, _ = _note_and_table(FRICTION, 0.0)
+    assert r"-0.15 \cdot 17.93 \cdot 0 = 0" in zero
