@@ -128,6 +128,7 @@ def expected(table: assur.Table) -> dict[str, tuple[float, ...]]:
             out[symbol] = (math.hypot(*f),)
         if pair.kind == "P" and not pair.virtual:
             out[f"M_{{{tex(name)}}}"] = (row[f"{name}.M"],)
+    out.update(_friction_expected(table, row))
     if "driver.torque" in row:
         out["M_{b}"] = out["M_{b}^{lever}"] = (row["driver.torque"],)
     if "driver.force" in row:
@@ -139,6 +140,34 @@ def expected(table: assur.Table) -> dict[str, tuple[float, ...]]:
         if key in row:
             sym = f"{letter}_{{b,{tex(d.pair.name)}}}"
             out[sym] = out[f"{sym}^{{lever}}"] = (row[key],)
+            if f"{key}_ideal" in row:
+                out[f"{sym}^{{ideal}}"] = (row[f"{key}_ideal"],)
+    return out
+
+
+def _friction_expected(
+    table: assur.Table, row: dict[str, float]
+) -> dict[str, tuple[float, ...]]:
+    """The friction symbols' values: each pair's load, the ideal load, the losses."""
+    out: dict[str, tuple[float, ...]] = {}
+    for name in table.plan.pairs:
+        t = tex(name)
+        if f"{name}.Mf" in row:
+            out[f"M_{{f,{t}}}"] = (row[f"{name}.Mf"],)
+        if f"{name}.Ff" in row:
+            out[f"F_{{f,{t}}}"] = (row[f"{name}.Ff"],)
+            # the normal force's size: the reaction without its friction
+            size = math.sqrt(
+                max(row[f"{name}.Fx"] ** 2 + row[f"{name}.Fy"] ** 2
+                    - row[f"{name}.Ff"] ** 2, 0.0)
+            )  # fmt: skip
+            out[f"|N_{{{t}}}|"] = out[f"\\vert N_{{{t}}}\\vert"] = (size,)
+    if "driver.torque_ideal" in row:
+        out["M_{b}^{ideal}"] = (row["driver.torque_ideal"],)
+    if "driver.force_ideal" in row:
+        out["F_{b}^{ideal}"] = (row["driver.force_ideal"],)
+    if "friction.power" in row and len(table.plan.drivers) == 1:
+        out["\\sum P_{f}"] = (row["friction.power"],)
     return out
 
 

@@ -3,8 +3,10 @@
 :func:`explain` solves the mechanism at one position and words every step: the
 structure, each group's position, velocity and acceleration equations with their
 numbers, the inertia loads, each group's equilibrium in the reverse order, the input
-link's balancing load and its check by Zhukovsky's lever. The :class:`Note` it
-returns is Markdown (``str()``), HTML with MathML or LaTeX.
+link's balancing load and its check by Zhukovsky's lever. With friction in the
+pairs, each group also shows its pairs' friction loads and how their sizes were
+found, and the balancing load and the lever count the friction. The :class:`Note`
+it returns is Markdown (``str()``), HTML with MathML or LaTeX.
 """
 
 from __future__ import annotations

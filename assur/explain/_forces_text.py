@@ -18,6 +18,11 @@ import math
 import numpy as np
 
 from assur._vec import Array
+from assur.explain._friction_text import (
+    group_friction_blocks,
+    normal_symbol,
+    sliding_total,
+)
 from assur.explain._loads_text import (
     Load,
     force_lines,
@@ -28,6 +33,7 @@ from assur.explain._loads_text import (
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position, cross, perp, unit
 from assur.explain._tex import name, num, par, plain, text, vec
+from assur.explain._triad_text import system_blocks
 from assur.groups._dyad import DyadSolver
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium
@@ -67,11 +73,13 @@ def _cramer(names: list[str], a: Array, rhs: Array) -> tuple[list[str], list[flo
     return lines, values
 
 
-def _known(pos: Position, bodies: tuple[int, ...], solved: set[int]) -> list[Block]:
+def _known(
+    pos: Position, bodies: tuple[int, ...], loads: list[list[Load]]
+) -> list[Block]:
     """List the known loads on each link of a group."""
     blocks: list[Block] = []
-    for b in bodies:
-        lines = force_lines(link_loads(pos, b, solved))
+    for b, known in zip(bodies, loads, strict=True):
+        lines = force_lines(known)
         if lines:
             blocks += [
                 Para(f"Known loads on {plain(pos.link(b))}:"),
@@ -80,12 +88,13 @@ def _known(pos: Position, bodies: tuple[int, ...], solved: set[int]) -> list[Blo
     return blocks
 
 
-def _revolute_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Block]:
+def _revolute_middle(
+    pos: Position, s: DyadSolver, loads: list[list[Load]]
+) -> list[Block]:
     """RRR, RRP, PRP: tangential parts, the force polygon, the middle reaction."""
     m = pos.pair_point(s.mid)
     mid = name(s.mid.name)
     blocks: list[Block] = []
-    loads = [link_loads(pos, b, solved) for b in s.bodies]
     known_t = np.zeros(2)
     dirs, names = [], []
     parts: list[tuple[str, Array, Array]] = []
@@ -155,9 +164,17 @@ def _revolute_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Blo
     ]
     outer = []
     forces: list[Array] = []
-    for (symbol, d, tangential), x in zip(parts, values, strict=True):
+    labels = []
+    for b, ((symbol, d, tangential), x) in enumerate(zip(parts, values, strict=True)):
         f: Array = x * d + tangential
         forces.append(f)
+        pair, body = s.ext[b], s.bodies[b]
+        if pair.kind == "P" and pair.friction > 0.0:
+            # the unknown was the normal force; the friction force adds along the slide
+            outer.append(sliding_total(pos, pair, body, f, symbol))
+            labels.append(normal_symbol(pair, body))
+            continue
+        labels.append(f"\\vec {symbol}")
         outer.append(
             f"\\vec {symbol} = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
             f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
@@ -173,9 +190,8 @@ def _revolute_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Blo
         ),
         Display(
             (
-                f"\\vec {sym} = -\\left(\\sum \\vec F_{{known}} + \\vec "
-                ""
-                f"{force_symbol(pos, s.known[0], first)}\\right) = -\\left("
+                f"\\vec {sym} = -\\left(\\sum \\vec F_{{known}} + {labels[0]}"
+                "\\right) = -\\left("
                 f"{vec(total(loads[0]))}"
                 f" + {vec(forces[0])}\\right) = {vec(inner)}\\ \\mathrm{{N}},\\quad "
                 f"{sym} = {num(math.hypot(*inner))}\\ \\mathrm{{N}}",
@@ -227,9 +243,10 @@ def _couple(pos: Position, pair: PairPlan, body: int, loads: list[Load]) -> list
     ]
 
 
-def _sliding_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Block]:
+def _sliding_middle(
+    pos: Position, s: DyadSolver, loads: list[list[Load]]
+) -> list[Block]:
     """RPR, RPP: the middle pair's normal force and couple, then outer reactions."""
-    loads = [link_loads(pos, b, solved) for b in s.bodies]
     q = pos.pair_point(s.mid)
     e = pos.turned(s.mid.first, s.mid.axis or (1.0, 0.0))
     nm = perp(e)
@@ -279,54 +296,22 @@ def _sliding_middle(pos: Position, s: DyadSolver, solved: set[int]) -> list[Bloc
         middle = Load("", j, q, sgn * normal * nm, sgn * couple)
         f = -(total(loads[b]) + middle.force)
         symbol = force_symbol(pos, known, body)
-        blocks += [
-            Para(f"Force sum of {plain(pos.link(body))}:"),
-            Display(
-                (
-                    f"\\vec {symbol} = -\\left(\\sum \\vec F_{{known}} + N_{{{j}}}"
-                    f"\\vec n\\right) = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
-                    f"{num(math.hypot(*f))}\\ \\mathrm{{N}}",
-                )
-            ),
-        ]
+        sums: tuple[str, ...] = (
+            f"\\vec {symbol} = -\\left(\\sum \\vec F_{{known}} + N_{{{j}}}"
+            f"\\vec n\\right) = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
+            f"{num(math.hypot(*f))}\\ \\mathrm{{N}}",
+        )
+        if pair.kind == "P" and pair.friction > 0.0:
+            # the known loads hold the guide's friction: what is left is its normal
+            sums = (
+                f"{normal_symbol(pair, body)} = -\\left(\\sum \\vec F_{{known}} + "
+                f"N_{{{j}}}\\vec n\\right) = {vec(f)}\\ \\mathrm{{N}}",
+                sliding_total(pos, pair, body, f, symbol),
+            )
+        blocks += [Para(f"Force sum of {plain(pos.link(body))}:"), Display(sums)]
         if pair.kind == "P":
             blocks += _couple(pos, pair, body, [*loads[b], middle])
     return blocks
-
-
-def _general(pos: Position, rec: Equilibrium) -> list[Block]:
-    """Return a larger group's equilibrium equations as a linear system, solved."""
-    eq = rec.equations(pos.bodies, pos.plan.bodies)
-    a, rhs, x = eq.matrix[0], eq.rhs[0], eq.solution[0]
-    symbols = [_unknown(u) for u in eq.unknowns]
-    ref = float(np.abs(a).max())
-    lines = []
-    for i, row in enumerate(eq.rows):
-        terms = [
-            f"{par(a[i, k], ref)}\\,{symbols[k]}"
-            for k in range(len(symbols))
-            if abs(a[i, k]) > 1e-12 * ref
-        ]
-        lines.append(
-            f"\\text{{{text(row)}}}:\\ " + " + ".join(terms) + f" = {num(rhs[i])}"
-        )
-    values = [f"{sym} = {num(v)}" for sym, v in zip(symbols, x, strict=True)]
-    return [
-        Para(
-            "Each link's two force sums and its moment equation, with the known loads "
-            "on the right (N, N m):"
-        ),
-        Display(tuple(lines)),
-        Para("Solved together:"),
-        Display(tuple(values)),
-    ]
-
-
-def _unknown(key: str) -> str:
-    """Return the TeX of an unknown such as ``B.Fx`` or ``guide.N``."""
-    joint, _, part = key.rpartition(".")
-    what = {"Fx": "F_{x}", "Fy": "F_{y}", "N": "N", "M": "M"}[part]
-    return f"{what}^{{{name(joint)}}}"
 
 
 def _totals(pos: Position, rec: Equilibrium) -> list[str]:
@@ -336,10 +321,13 @@ def _totals(pos: Position, rec: Equilibrium) -> list[str]:
         r = rec.reactions[pair.name]
         f = np.array([float(np.ravel(r.fx)[0]), float(np.ravel(r.fy)[0])])
         symbol = force_symbol(pos, pair.first, pair.second)
-        line = (
-            f"\\vec {symbol} = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
-            f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
-        )
+        if pair.kind == "P" and pair.friction > 0.0:
+            line = sliding_total(pos, pair, pair.second, f, symbol)
+        else:
+            line = (
+                f"\\vec {symbol} = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
+                f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
+            )
         if pair.kind == "P":
             line += (
                 f",\\quad M_{{{name(pair.name)}}} = {num(float(np.ravel(r.couple)[0]))}"
@@ -365,13 +353,16 @@ def forces_blocks(pos: Position) -> list[Block]:
     for rec in pos.result.groups:
         solver = solver_of[rec.bodies]
         blocks.append(Heading(3, f"Group {plain(solver.label)}"))
-        blocks += _known(pos, rec.bodies, solved)
+        blocks += group_friction_blocks(pos, rec, solver)
+        names = {p.name for p in rec.pairs}
+        loads = [link_loads(pos, b, solved, names) for b in rec.bodies]
+        blocks += _known(pos, rec.bodies, loads)
         if isinstance(solver, DyadSolver) and solver.mid.kind == "R":
-            blocks += _revolute_middle(pos, solver, solved)
+            blocks += _revolute_middle(pos, solver, loads)
         elif isinstance(solver, DyadSolver):
-            blocks += _sliding_middle(pos, solver, solved)
+            blocks += _sliding_middle(pos, solver, loads)
         else:
-            blocks += _general(pos, rec)
+            blocks += system_blocks(pos, rec)
         blocks += [Para("The group's reactions:"), Display(tuple(_totals(pos, rec)))]
         solved |= set(rec.bodies)
     return blocks

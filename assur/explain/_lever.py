@@ -15,7 +15,9 @@ import numpy as np
 
 from assur._kinematics import velocity_coefficients
 from assur.explain._forces_text import force_symbol
+from assur.explain._friction_text import driver_friction, power_rows, sliding_total
 from assur.explain._loads_text import (
+    Load,
     force_lines,
     link_loads,
     moment_line,
@@ -52,55 +54,126 @@ def driver_blocks(pos: Position) -> list[Block]:
     for i, d in enumerate(plan.drivers):
         body = d.body
         loads = link_loads(pos, body, solved | {x.body for x in plan.drivers} - {body})
-        pivot = pos.pair_point(d.pair)
-        j = name(d.pair.name)
-        frame = -total(loads)
-        symbol = force_symbol(pos, 0, body)
-        value = _balancing(pos, i)
-        sym = _symbol(d, many)
         blocks += [
             Para(f"Known loads on {plain(pos.link(body))}:"),
             Display(tuple(force_lines(loads))),
         ]
         if d.kind == "R":
-            line, m = moment_line(loads, pivot, j)
-            blocks += [
-                Para(
-                    f"Moments about {plain(d.pair.name)} (the frame's reaction passes "
-                    f"through it) give the balancing torque ${sym}$ the frame applies "
-                    "to the link; its force sum gives the frame's reaction:"
-                ),
-                Display(
-                    (
-                        line,
-                        f"{sym} = -\\sum M_{{{j}}} = {num(-m)}\\ \\mathrm{{N\\,m}}",
-                        f"\\vec {symbol} = -\\sum \\vec F = {vec(frame)}"
-                        "\\ \\mathrm{N}"
-                        f",\\quad {symbol} = {num(math.hypot(*frame))}\\ \\mathrm{{N}}",
-                    )
-                ),
-            ]
+            blocks += _crank(pos, i, loads)
         else:
-            e = np.asarray(d.pair.axis, dtype=float)
-            along = float(np.dot(total(loads), e))
-            rest = frame + along * e
-            blocks += [
-                Para(
-                    f"Forces along the guide give the balancing force ${sym}$; across "
-                    "it, the frame's normal reaction:"
-                ),
-                Display(
-                    (
-                        f"{sym} = -\\sum \\vec F \\cdot \\vec e = -{par(along)} = "
-                        f"{num(-along)}\\ \\mathrm{{N}}",
-                        f"\\vec {symbol} = {vec(rest)}\\ \\mathrm{{N}}",
-                    )
-                ),
-            ]
-        blocks.append(
-            Para(f"So ${sym} = {num(value)}$ {'N m' if d.kind == 'R' else 'N'}.")
-        )
+            blocks += _slider(pos, i, loads)
+        value = _balancing(pos, i)
+        sym = _symbol(d, many)
+        unit = "N m" if d.kind == "R" else "N"
+        blocks.append(Para(f"So ${sym} = {num(value)}$ {unit}." + _ideal(pos, i, sym)))
     return blocks
+
+
+def _ideal(pos: Position, i: int, sym: str) -> str:
+    """Return the words comparing the balancing load with the frictionless one."""
+    assert pos.result is not None
+    if not pos.result.ideal:
+        return ""
+    ideal = float(np.ravel(pos.result.ideal[i])[0])
+    value = _balancing(pos, i)
+    extra = value - ideal
+    share = (
+        f", $100 \\cdot \\frac{{{num(extra)}}}{{{num(abs(ideal))}}} = "
+        f"{num(100.0 * extra / abs(ideal))}\\,\\%$ of it"
+        if ideal
+        else ""
+    )
+    return (
+        f" Without friction the same motion needs ${sym}^{{ideal}} = {num(ideal)}$ "
+        f"(read off the lever below): friction takes ${sym} - {sym}^{{ideal}} = "
+        f"{num(value)} - {par(ideal)} = {num(extra)}$ more{share}."
+    )
+
+
+def _crank(pos: Position, i: int, loads: list[Load]) -> list[Block]:
+    """Return a crank's moments about its pivot and force sum, with its friction."""
+    d = pos.plan.drivers[i]
+    sym = _symbol(d, len(pos.plan.drivers) > 1)
+    j = name(d.pair.name)
+    symbol = force_symbol(pos, 0, d.body)
+    frame = -total(loads)
+    line, m = moment_line(loads, pos.pair_point(d.pair), j)
+    reaction = (
+        f"\\vec {symbol} = -\\sum \\vec F = {vec(frame)}\\ \\mathrm{{N}},\\quad "
+        f"{symbol} = {num(math.hypot(*frame))}\\ \\mathrm{{N}}"
+    )
+    rubbing = driver_friction(pos, i)
+    words = (
+        f"Moments about {plain(d.pair.name)} (the frame's reaction passes through "
+        f"it) give the balancing torque ${sym}$ the frame applies to the link; its "
+        "force sum gives the frame's reaction"
+    )
+    if rubbing is None:
+        return [
+            Para(words + ":"),
+            Display(
+                (
+                    line,
+                    f"{sym} = -\\sum M_{{{j}}} = {num(-m)}\\ \\mathrm{{N\\,m}}",
+                    reaction,
+                )
+            ),
+        ]
+    lines, couple, term = rubbing
+    return [
+        Para(
+            words + ", whose size sets the friction couple in "
+            f"{plain(d.pair.name)}; the balancing torque overcomes that couple too:"
+        ),
+        Display((line, reaction, *lines)),
+        Display(
+            (
+                f"{sym} = -\\sum M_{{{j}}} {term} = {num(-m)} - {par(couple)} = "
+                f"{num(-m - couple)}\\ \\mathrm{{N\\,m}}",
+            )
+        ),
+    ]
+
+
+def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
+    """Return an input slider's forces along and across its guide, with friction."""
+    d = pos.plan.drivers[i]
+    sym = _symbol(d, len(pos.plan.drivers) > 1)
+    symbol = force_symbol(pos, 0, d.body)
+    e = np.asarray(d.pair.axis, dtype=float)
+    along = float(np.dot(total(loads), e))
+    rest = -total(loads) + along * e
+    rubbing = driver_friction(pos, i)
+    if rubbing is None:
+        return [
+            Para(
+                f"Forces along the guide give the balancing force ${sym}$; across "
+                "it, the frame's normal reaction:"
+            ),
+            Display(
+                (
+                    f"{sym} = -\\sum \\vec F \\cdot \\vec e = -{par(along)} = "
+                    f"{num(-along)}\\ \\mathrm{{N}}",
+                    f"\\vec {symbol} = {vec(rest)}\\ \\mathrm{{N}}",
+                )
+            ),
+        ]
+    lines, force, term = rubbing
+    return [
+        Para(
+            "Forces across the guide give the frame's normal reaction, whose size "
+            f"sets the friction in {plain(d.pair.name)}; forces along it the "
+            f"balancing force ${sym}$, which overcomes the friction too:"
+        ),
+        Display(
+            (
+                sliding_total(pos, d.pair, d.body, rest, symbol),
+                *lines,
+                f"{sym} = -\\sum \\vec F \\cdot \\vec e {term} = -{par(along)} - "
+                f"{par(force)} = {num(-along - force)}\\ \\mathrm{{N}}",
+            )
+        ),
+    ]
 
 
 def _rates(pos: Position, i: int) -> tuple[list[Motion], float, str]:
@@ -136,28 +209,68 @@ def lever_blocks(pos: Position) -> list[Block]:
             "balancing load's power. No reaction enters it (they do no work)."
         ),
     ]
-    for i, d in enumerate(plan.drivers):
-        bodies, speed, note = _rates(pos, i)
-        rows, power = _terms(pos, bodies)
-        sym = _symbol(d, many)
-        rate = "\\omega" if d.kind == "R" else "v"
-        lever = -power / speed
-        value = _balancing(pos, i)
-        diff = 100.0 * abs(lever - value) / max(abs(value), 1e-300)
-        blocks += [
-            Para(f"With {note} (driver {plain(d.pair.name)}):"),
-            Grid(("load", "force or couple", "velocity", "power (W)"), tuple(rows)),
-            Display(
-                (
-                    f"\\sum P = {num(power)}\\ \\mathrm{{W}}",
-                    f"{sym}^{{lever}} = -\\frac{{\\sum P}}{{{rate}}} = -\\frac{{"
-                    f"{num(power)}}}{{{num(speed)}}} = {num(lever)}",
-                    f"\\frac{{|{sym}^{{lever}} - {sym}|}}{{|{sym}|}} = "
-                    f"{_percent(diff)}\\,\\%",
-                )
-            ),
-        ]
+    if many:
+        blocks.append(
+            Para(
+                f"With {len(plan.drivers)} drivers each balancing load has its own "
+                "lever: the velocity plan for a unit speed of that driver with the "
+                "others held still. The other drivers' loads then do no work, and "
+                "the powers (written with a prime) are per unit speed."
+            )
+        )
+    for i in range(len(plan.drivers)):
+        blocks += _driver_lever(pos, i)
     return blocks
+
+
+def _driver_lever(pos: Position, i: int) -> list[Block]:
+    """Return driver ``i``'s balancing load by the lever, with friction's power.
+
+    With several drivers the velocities are those per unit speed of driver ``i``
+    (the others held): the powers are then per unit speed, written with a prime,
+    and the balancing load is minus their sum.
+    """
+    d = pos.plan.drivers[i]
+    bodies, speed, note = _rates(pos, i)
+    actual = bodies is pos.bodies
+    rows, power = _terms(pos, bodies)
+    sym = _symbol(d, len(pos.plan.drivers) > 1)
+    tick = "" if actual else "'"
+    rate = ("\\omega" if d.kind == "R" else "v") + tick
+    unit = "\\ \\mathrm{W}" if actual else ""
+    head = "power (W)" if actual else "power per unit speed"
+    blocks: list[Block] = [
+        Para(f"With {note} (driver {plain(d.pair.name)}):"),
+        Grid(("load", "force or couple", "velocity", head), tuple(rows)),
+    ]
+    lines = [f"\\sum P{tick} = {num(power)}{unit}"]
+    rubbed, lost = power_rows(pos, bodies, actual)
+    top, shown = f"\\sum P{tick}", num(power)
+    if rubbed:
+        blocks += [
+            Para(
+                "Friction does work too: each pair's friction load times the "
+                "relative motion it opposes (a loss, so negative):"
+            ),
+            Grid(("pair", "friction load", "relative motion", head), tuple(rubbed)),
+        ]
+        lines += [
+            f"{sym}^{{ideal}} = -\\frac{{\\sum P{tick}}}{{{rate}}} = -\\frac{{"
+            f"{num(power)}}}{{{num(speed)}}} = {num(-power / speed)}",
+            f"\\sum P_{{f}}{tick} = {num(lost)}{unit}",
+        ]
+        top = f"\\sum P{tick} + \\sum P_{{f}}{tick}"
+        shown = f"{num(power)} + {par(lost)}"
+        power += lost
+    lever = -power / speed
+    value = _balancing(pos, i)
+    diff = 100.0 * abs(lever - value) / max(abs(value), 1e-300)
+    lines += [
+        f"{sym}^{{lever}} = -\\frac{{{top}}}{{{rate}}} = -\\frac{{{shown}}}"
+        f"{{{num(speed)}}} = {num(lever)}",
+        f"\\frac{{|{sym}^{{lever}} - {sym}|}}{{|{sym}|}} = {_percent(diff)}\\,\\%",
+    ]
+    return [*blocks, Display(tuple(lines))]
 
 
 def _percent(x: float) -> str:

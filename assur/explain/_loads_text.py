@@ -2,13 +2,15 @@
 
 A link carries its inertia force and torque, its weight, the external loads of the
 file and, in the force analysis, the reactions of the links whose groups were solved
-before its own. Each load is listed separately so that the note can write every
-moment of an equilibrium equation.
+before its own and, with friction, the friction loads of its pairs. Each load is
+listed separately so that the note can write every moment of an equilibrium
+equation.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Collection
 from dataclasses import dataclass
 
 import numpy as np
@@ -17,11 +19,13 @@ from assur._loads import table_values
 from assur._vec import Array
 from assur.explain._position import Position, at, cross, value
 from assur.explain._tex import name, num, par, point_name, vec
+from assur.groups._pairs import PairPlan
 from assur.model import LoadTable
 
 __all__ = [
     "Load",
     "force_lines",
+    "friction_load",
     "inertia_load",
     "link_loads",
     "moment",
@@ -107,20 +111,29 @@ def _origin(pos: Position, body: int) -> Array:
     return pos.origin(body)
 
 
-def link_loads(pos: Position, body: int, solved: set[int]) -> list[Load]:
+def link_loads(
+    pos: Position, body: int, solved: set[int], pairs: Collection[str] = ()
+) -> list[Load]:
     """Return every known load on ``body``: applied, and reactions of ``solved`` links.
 
     A reaction is written as the force of the other link on ``body`` (and the couple
-    of a sliding pair, about its point).
+    of a sliding pair, about its point). With friction, the friction load of each
+    pair whose reaction is known, and of each pair named in ``pairs`` (those of the
+    group being solved), is listed after the reactions.
     """
     out = own_loads(pos, body)
     assert pos.result is not None
     reactions = {}
     for rec in pos.result.groups:
         reactions.update(rec.reactions)
+    rubbing = []
     for pair_name, pair in pos.plan.pairs.items():
+        if body not in (pair.first, pair.second):
+            continue
         other = pair.first if pair.second == body else pair.second
-        if body not in (pair.first, pair.second) or other not in solved:
+        if other in solved or pair_name in pairs:
+            rubbing.append(friction_load(pos, pair, body))
+        if other not in solved:
             continue
         r = reactions[pair_name]
         sign = 1.0 if pair.second == body else -1.0
@@ -128,8 +141,35 @@ def link_loads(pos: Position, body: int, solved: set[int]) -> list[Load]:
         couple = sign * value(r.couple) if pair.kind == "P" else 0.0
         p = pos.pair_point(pair)
         label = f"\\vec F_{{{name(pos.link(other))},{name(pos.link(body))}}}"
+        if pair.kind == "P" and pair.friction > 0.0:
+            # the friction force along the slide is listed apart: the normal part
+            label = f"\\vec N_{{{name(pair_name)}}}"
+            if sign < 0:
+                label = "-" + label
         out.append(Load(label, name(pair_name), p, force, couple))
-    return out
+    return out + [x for x in rubbing if x is not None]
+
+
+def friction_load(pos: Position, pair: PairPlan, body: int) -> Load | None:
+    """Return the friction load of ``pair`` on ``body``; None where it has none.
+
+    Revolute: the couple ``M_f`` (N m) of the pair's first link on its second.
+    Prismatic: the force ``F_f`` (N) along the slide line, at the pair's point. On
+    the pair's first link both act the other way, written with a minus sign.
+    """
+    assert pos.result is not None
+    found = pos.result.friction.get(pair.name)
+    size = 0.0 if found is None else value(found)
+    if size == 0.0:
+        return None  # no friction, or none where the pair does not move
+    sign = 1.0 if pair.second == body else -1.0
+    j = name(pair.name)
+    minus = "" if sign > 0 else "-"
+    if pair.kind == "R":
+        zero = np.zeros(2)
+        return Load(f"{minus}M_{{f,{j}}}", "", pos.pair_point(pair), zero, sign * size)
+    e = pos.turned(pair.first, pair.axis or (1.0, 0.0))
+    return Load(f"{minus}\\vec F_{{f,{j}}}", j, pos.pair_point(pair), sign * size * e)
 
 
 def total(loads: list[Load]) -> Array:

@@ -15,6 +15,8 @@ from typing import Any
 from assur._structure import Structure
 from assur.analysis import Table
 from assur.html._data import to_json
+from assur.html._free_bodies import free_bodies_html
+from assur.html._inertia import inertia_html
 from assur.html._sections import (
     legend_html,
     meta_html,
@@ -59,6 +61,8 @@ def assemble_page(
         "table_title": "Reactions and balancing load" if forced else "Kinematics",
         "table": table_html(plan, table),
         "note": note_html(plan, table),
+        "inertia": inertia_html(table),
+        "free_bodies": free_bodies_html(table),
         "summary": summary_html(table),
         "data": to_json(data),
         "css": _asset("report.css"),

@@ -1,0 +1,293 @@
+r"""Friction in the note: each pair's friction load, and how a group was solved.
+
+A revolute pair resists the relative rotation of its links with the couple
+:math:`M_f = -\rho\,|R|\,\mathrm{sgn}(\omega_2 - \omega_1)`, :math:`\rho = f r` the
+radius of its friction circle; a sliding pair resists the slide with the force
+:math:`F_f = -f\,|N|\,\mathrm{sgn}\,\dot s` along its slide line. Both depend on the
+reactions being found, so :mod:`assur._friction` solves a group with friction by
+Newton's method on its reactions' sizes. The note says so, gives the sizes it started
+from and the number of steps, and writes the friction loads of the converged sizes:
+the group's equations then hold with those loads as known ones.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from assur._friction import Still, rate, solve_group, still
+from assur._vec import Array
+from assur.explain._note import Block, Display, Grid, Para
+from assur.explain._position import Position, at, perp, value
+from assur.explain._tex import name, num, par, plain, vec
+from assur.groups._motion import Motion
+from assur.groups._pairs import PairPlan
+from assur.groups._protocol import Equilibrium, GroupSolver, Reaction, Wrench
+from assur.kinetostatics import Applied, with_friction
+
+__all__ = [
+    "at_rest",
+    "driver_friction",
+    "friction_lines",
+    "group_friction_blocks",
+    "newton_start",
+    "normal_force",
+    "normal_symbol",
+    "power_rows",
+    "rate_line",
+    "rubbing",
+    "size_symbol",
+    "sliding_total",
+]
+
+
+def rubbing(pairs: tuple[PairPlan, ...] | list[PairPlan]) -> list[PairPlan]:
+    """Return the pairs with friction."""
+    return [p for p in pairs if p.friction > 0.0]
+
+
+def normal_force(pos: Position, pair: PairPlan, reaction: Reaction) -> Array:
+    """Return a reaction's force without its friction, N (a revolute one whole)."""
+    f = at(reaction.fx, reaction.fy)
+    if pair.kind == "R":
+        return f
+    n = perp(pos.turned(pair.first, pair.axis or (1.0, 0.0)))
+    return float(np.dot(f, n)) * n
+
+
+def at_rest(pos: Position) -> Still:
+    """Return the speeds below which a pair is at rest, as the reverse pass has them."""
+    return still(pos.bodies, pos.plan.scale)
+
+
+def _rate(pos: Position, pair: PairPlan) -> float:
+    """Return the relative rotation (rad/s) or slide speed (m/s) friction opposes.
+
+    Zero where the pair is at rest (below the reverse pass's threshold): it then has
+    no friction.
+    """
+    return value(rate(pair, pos.bodies, at_rest(pos)))
+
+
+def rate_line(pos: Position, pair: PairPlan) -> str:
+    """Return the relative motion a pair's friction opposes, with its numbers."""
+    if pair.kind == "P":
+        return (
+            f"\\dot s_{{{name(pair.name)}}} = {num(_rate(pos, pair))}\\ \\mathrm{{m/s}}"
+        )
+    second, first = (name(pos.link(b)) for b in (pair.second, pair.first))
+    w2, w1 = pos.omega(pair.second), pos.omega(pair.first)
+    return (
+        f"\\omega_{{{second}}} - \\omega_{{{first}}} = {num(w2)} - {par(w1)} = "
+        f"{num(w2 - w1)}\\ \\mathrm{{rad/s}}"
+    )
+
+
+def friction_lines(pos: Position, pair: PairPlan, size: str, known: float) -> list[str]:
+    """Return a pair's friction load with its numbers.
+
+    ``size`` is the TeX of the size of the pair's reaction (``F_{crank,rod}``, or
+    ``|N_{guide}|``) the friction is taken from and ``known`` its value (N): the final
+    reaction's.
+    """
+    assert pos.result is not None
+    j = name(pair.name)
+    sense = float(np.sign(_rate(pos, pair)))
+    found = value(pos.result.friction.get(pair.name, 0.0))
+    f = num(pair.friction)
+    if pair.kind == "R":
+        rho = pair.friction * pair.radius
+        second, first = (name(pos.link(b)) for b in (pair.second, pair.first))
+        return [
+            f"\\rho_{{{j}}} = f_{{{j}}} r_{{{j}}} = {f} \\cdot {num(pair.radius)} = "
+            f"{num(rho)}\\ \\mathrm{{m}}",
+            rate_line(pos, pair),
+            f"M_{{f,{j}}} = -\\rho_{{{j}}}\\,{size}\\,\\mathrm{{sgn}}"
+            f"(\\omega_{{{second}}} - \\omega_{{{first}}}) = -{num(rho)} \\cdot "
+            f"{num(known)} \\cdot {par(sense)} = {num(found)}\\ \\mathrm{{N\\,m}}",
+        ]
+    return [
+        rate_line(pos, pair),
+        f"F_{{f,{j}}} = -f_{{{j}}}\\,{size}\\,\\mathrm{{sgn}}\\,\\dot s_{{{j}}} = "
+        f"-{f} \\cdot {num(known)} \\cdot {par(sense)} = {num(found)}"
+        "\\ \\mathrm{N}",
+    ]
+
+
+def size_symbol(pos: Position, pair: PairPlan) -> str:
+    """Return the TeX of the size friction is taken from: ``F_{a,b}`` or ``|N_J|``."""
+    if pair.kind == "P":
+        return f"|N_{{{name(pair.name)}}}|"
+    return f"F_{{{name(pos.link(pair.first))},{name(pos.link(pair.second))}}}"
+
+
+def newton_start(
+    pos: Position, rec: Equilibrium, solver: GroupSolver
+) -> tuple[dict[str, float], int]:
+    """Return the sizes Newton's method started from (N) and its number of steps.
+
+    The start is the group solved without its own pairs' friction (the friction
+    the groups solved before passed on is kept): ``rec.loads`` less those pairs'
+    friction. The iteration is run again from there, as the reverse pass ran it.
+    """
+    assert pos.result is not None
+    count = len(pos.plan.bodies)
+    loads: list[Wrench] = [[0.0, 0.0, 0.0] for _ in range(count)]
+    for body, load in zip(rec.bodies, rec.loads, strict=True):
+        loads[body] = list(load)
+    own = {
+        p.name: -np.asarray(pos.result.friction[p.name], dtype=float)
+        for p in rubbing(rec.pairs)
+        if p.name in pos.result.friction
+    }
+    # the friction of the group's own pairs taken off its links' loads
+    start = with_friction(pos.plan, pos.bodies, Applied(tuple(loads), ()), own)
+    loads = list(start.wrenches)
+    base = solver.equilibrium(pos.bodies, loads)
+    found = solve_group(solver, pos.bodies, loads, 1, at_rest(pos))
+    sizes = {
+        p.name: float(np.hypot(*normal_force(pos, p, base.reactions[p.name])))
+        for p in rubbing(rec.pairs)
+    }
+    return sizes, 0 if found is None else found.iterations
+
+
+def group_friction_blocks(
+    pos: Position, rec: Equilibrium, solver: GroupSolver
+) -> list[Block]:
+    """Return how a group with friction was solved, and its pairs' friction loads."""
+    pairs = rubbing(rec.pairs)
+    if not pairs:
+        return []
+    start, steps = newton_start(pos, rec, solver)
+    listed = ", ".join(plain(p.name) for p in pairs)
+    rows = []
+    lines: list[str] = []
+    for p in pairs:
+        symbol = size_symbol(pos, p)
+        final = float(np.hypot(*normal_force(pos, p, rec.reactions[p.name])))
+        rows.append(
+            (plain(p.name), f"${num(start[p.name])}$", f"${symbol} = {num(final)}$")
+        )
+        lines += friction_lines(pos, p, symbol, final)
+    return [
+        Para(
+            f"Friction in {listed}: a revolute pair's couple $M_f = -\\rho\\,|R|\\,"
+            "\\mathrm{sgn}(\\omega_2 - \\omega_1)$ ($\\rho = f r$, the radius of its "
+            "friction circle; $\\omega_2 - \\omega_1$ the rotation of its second link "
+            "relative to its first), a sliding pair's force $F_f = -f\\,|N|\\,"
+            "\\mathrm{sgn}\\,\\dot s$ along its slide line (kinetic friction only: a "
+            "pair at rest, its relative speed below $10^{-11}$ of the mechanism's "
+            "fastest motion, has none). Each depends on the size of a reaction not "
+            "yet known. With the senses of the relative motions known, "
+            "the reactions are linear in those sizes, and the group was solved by "
+            "Newton's method on the sizes: starting from the reactions without this "
+            f"group's friction, {steps} step{'s' if steps != 1 else ''} brought each "
+            "size to the size of the reaction it gives (N):"
+        ),
+        Grid(("joint", "without its friction", "converged"), tuple(rows)),
+        Para("The friction loads of the converged sizes:"),
+        Display(tuple(lines)),
+        Para(
+            "They are known loads of the group's links below (a couple on each link "
+            "of a revolute pair, a force along the slide on each link of a sliding "
+            "pair, opposite on the pair's first link), and the equations hold with "
+            "them: the reactions found have the sizes the friction was taken from."
+        ),
+    ]
+
+
+def normal_symbol(pair: PairPlan, body: int) -> str:
+    r"""Return the TeX of a sliding pair's normal force on ``body``: ``\vec N_J``.
+
+    ``\vec N_J`` acts on the pair's second link; on its first, ``-\vec N_J``.
+    """
+    sign = "" if pair.second == body else "-"
+    return f"{sign}\\vec N_{{{name(pair.name)}}}"
+
+
+def sliding_total(
+    pos: Position, pair: PairPlan, body: int, normal: Array, symbol: str
+) -> str:
+    """Return a sliding pair's reaction on ``body``: its normal force plus friction.
+
+    ``normal`` is the normal force on ``body`` (N); ``symbol`` the TeX of the force of
+    the pair's other link on ``body``.
+    """
+    assert pos.result is not None
+    sign = 1.0 if pair.second == body else -1.0
+    found = value(pos.result.friction.get(pair.name, 0.0))
+    e = pos.turned(pair.first, pair.axis or (1.0, 0.0))
+    friction = sign * found * e
+    f = normal + friction
+    j = name(pair.name)
+    minus = "" if sign > 0 else "-"
+    return (
+        f"\\vec {symbol} = {normal_symbol(pair, body)} {minus or '+'} \\vec F_{{f,{j}}}"
+        f" = {vec(normal)} + {vec(friction)} = {vec(f)}\\ \\mathrm{{N}},\\quad "
+        f"{symbol} = {num(math.hypot(*f))}\\ \\mathrm{{N}}"
+    )
+
+
+def power_rows(
+    pos: Position, bodies: list[Motion], actual: bool
+) -> tuple[list[tuple[str, ...]], float]:
+    """Return the lever's rows of every pair's friction power, and their sum (W).
+
+    ``bodies`` are the velocities the lever uses: the actual ones (``actual``), or
+    those per unit speed of one driver, written with a prime.
+    """
+    assert pos.result is not None
+    rows: list[tuple[str, ...]] = []
+    total = 0.0
+    tick = "" if actual else "'"
+    for pair in pos.plan.pairs.values():
+        if pair.name not in pos.result.friction or pair.friction <= 0.0:
+            continue
+        j = name(pair.name)
+        load = value(pos.result.friction[pair.name])
+        # the lever's velocities as they are: a virtual speed is not motion to be
+        # told from rest (a pair at rest has no friction load to multiply anyway)
+        speed = value(rate(pair, bodies, Still(0.0, pos.plan.scale)))
+        if pair.kind == "R":
+            second, first = (name(pos.link(b)) for b in (pair.second, pair.first))
+            symbol = f"M_{{f,{j}}}"
+            relative = f"\\omega_{{{second}}} - \\omega_{{{first}}}"
+            relative = f"({relative}){tick}" if tick else relative
+        else:
+            symbol = f"F_{{f,{j}}}"
+            relative = f"\\dot s_{{{j}}}{tick}"
+        power = load * speed
+        total += power
+        rows.append(
+            (
+                plain(pair.name),
+                f"${symbol} = {num(load)}$",
+                f"${relative} = {num(speed)}$",
+                f"$P_{{f,{j}}}{tick} = {num(load)} \\cdot {par(speed)} = {num(power)}$",
+            )
+        )
+    return rows, total
+
+
+def driver_friction(pos: Position, i: int) -> tuple[list[str], float, str] | None:
+    """Return the friction in driver ``i``'s own pair: lines, load on the link, TeX.
+
+    The frame's reaction on the input link (its normal part, for a slider) sets the
+    friction. The load is the friction couple (N m) or force along the guide (N) on
+    the input link; the TeX writes it as a term of the balancing load's equation.
+    None without friction.
+    """
+    assert pos.result is not None
+    d = pos.plan.drivers[i]
+    pair = d.pair
+    if pair.friction <= 0.0 or pair.name not in pos.result.friction:
+        return None
+    found = value(pos.result.friction[pair.name])
+    sign = 1.0 if pair.second == d.body else -1.0
+    symbol = size_symbol(pos, pair)
+    size = float(np.hypot(*normal_force(pos, pair, pos.result.drivers[i].reaction)))
+    letter = "M" if pair.kind == "R" else "F"
+    term = f"{'-' if sign > 0 else '+'} {letter}_{{f,{name(pair.name)}}}"
+    return friction_lines(pos, pair, symbol, size), sign * found, term

@@ -1,0 +1,86 @@
+"""The report's inertia loads at its first position, one row per link with a mass.
+
+d'Alembert's inertia force ``F_i = -m a_G`` at the centre of mass, its size and
+direction, the inertia torque ``M_i = -J_G epsilon``, and the offset ``h = |M_i| /
+F_i`` of the single force equivalent to both: the numbers a student draws on the
+links before the force analysis. Every value is read from the forces table.
+"""
+
+from __future__ import annotations
+
+import math
+from html import escape
+
+from assur.analysis import Table
+from assur.html._data import public
+from assur.html._sections import number
+
+__all__ = ["inertia_html"]
+
+HEADINGS = (
+    ("link", ""),
+    ("m", "kg"),
+    ("a_G", "m/s²"),
+    ("F_i = m a_G", "N"),
+    ("direction of F_i", "deg"),
+    ("J_G", "kg·m²"),
+    ("ε", "rad/s²"),
+    ("M_i = −J_G ε", "N·m"),
+    ("h = |M_i| / F_i", "m"),
+)
+"""Column headings of the inertia table and their units."""
+
+
+def inertia_rows(table: Table, row: int = 0) -> list[tuple[str, list[float]]]:
+    """Return each massive link's name and its inertia figures at ``row``.
+
+    The figures are, in SI units: m, a_G, F_i, the direction of F_i (deg from +x,
+    counter-clockwise), J_G, epsilon, M_i and h (NaN where F_i is zero).
+    """
+    out = []
+    for link in table.mechanism.links:
+        if not link.mass or f"{link.name}.Fi.x" not in table.columns:
+            continue
+        fx, fy, mi, ax, ay, eps = (
+            float(table[f"{link.name}.{c}"][row])
+            for c in ("Fi.x", "Fi.y", "Mi", "G.ax", "G.ay", "alpha")
+        )
+        size = math.hypot(fx, fy)
+        # an inertia force of zero has no direction and no equivalent offset
+        direction = math.degrees(math.atan2(fy, fx)) if size > 0 else math.nan
+        h = abs(mi) / size if size > 0 else math.nan
+        figures = [link.mass, math.hypot(ax, ay), size, direction]
+        out.append((link.name, [*figures, link.inertia or 0.0, eps, mi, h]))
+    return out
+
+
+def inertia_html(table: Table) -> str:
+    """Return the inertia section of a forces table at its first row (or nothing)."""
+    if table.force_state is None or len(table) == 0:
+        return ""
+    rows = inertia_rows(table)
+    if not rows:
+        return ""
+    head = "".join(
+        f"<th>{escape(title)}{f' ({unit})' if unit else ''}</th>"
+        for title, unit in HEADINGS
+    )
+    body = "\n".join(
+        f'<tr data-link="{escape(name)}"><th>{escape(public(name))}</th>'
+        + "".join(f"<td>{number(v)}</td>" for v in values)
+        + "</tr>"
+        for name, values in rows
+    )
+    where = ", ".join(f"{x:g}" for x in table.given[0])
+    return (
+        '<section class="card wide" id="inertia">\n'
+        f"<h2>Inertia loads at the first position ({escape(where)})</h2>\n"
+        '<p class="note">Each link with a mass carries the inertia force F_i = '
+        "−m a_G at its centre of mass and the inertia torque M_i = −J_G ε; together "
+        "they are one force of size F_i moved off the centre of mass by h, to the "
+        "side where its moment about G turns like M_i. Directions are measured "
+        "from +x, counter-clockwise.</p>\n"
+        '<div class="table-wrap"><table class="values inertia">'
+        f"<thead><tr>{head}</tr></thead>\n<tbody>\n{body}\n</tbody></table></div>\n"
+        "</section>"
+    )

@@ -1,0 +1,237 @@
+"""Friction in the explanatory note: every number it prints against the table.
+
+The note of a mechanism with friction adds, for each group, the friction load of
+each pair with its numbers, how Newton's method found the reactions' sizes, and the
+friction terms of the balancing load and of Zhukovsky's lever. The parser of
+:mod:`tests.test_explain` reads them; here they are checked at many positions.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+import assur
+from assur.explain import explain
+
+from .test_explain import EXAMPLES, check, printed, statements, tex
+
+FRICTION = EXAMPLES / "slider_crank_friction.toml"
+BEARINGS = EXAMPLES / "four_bar_bearings.toml"
+ANGLES = [0.0, 45.0, 100.0, 170.0, 200.0, 260.0, 315.0]
+
+
+def _note_and_table(path, angle: float) -> tuple[str, assur.Table]:
+    mech = assur.load(path)
+    try:
+        table = assur.forces(mech, [angle])
+    except assur.AssurError as err:  # a position that locks, or a dead centre
+        pytest.skip(f"{path.stem} at {angle} deg: {err}")
+    return str(explain(mech, angle)), table
+
+
+@pytest.mark.parametrize("path", [FRICTION, BEARINGS], ids=lambda p: p.stem)
+@pytest.mark.parametrize("angle", ANGLES)
+def test_every_friction_number_agrees_with_the_table(path, angle: float) -> None:
+    note, table = _note_and_table(path, angle)
+    check(note, table)
+    shown = [lhs for lhs, last in statements(note) if printed(last) is not None]
+    for pair in table.plan.pairs.values():
+        if pair.friction > 0.0:
+            # its load in its group (or the input link), and its power on the lever
+            letter = "M" if pair.kind == "R" else "F"
+            assert shown.count(f"{letter}_{{f,{tex(pair.name)}}}") >= 2, pair.name
+    # the balancing load by both methods, the frictionless one and the losses
+    for symbol in ("M_{b}", "M_{b}^{lever}", "M_{b}^{ideal}", "\\sum P_{f}"):
+        assert symbol in shown, symbol
+    # every group with friction says how it was solved
+    assert note.count("Newton's method on the sizes") == _rubbing_groups(path, angle)
+
+
+def _rubbing_groups(path, angle: float) -> int:
+    """How many groups of the mechanism have a pair with friction."""
+    from assur.explain._solve import position
+
+    result = position(assur.load(path), angle).result
+    assert result is not None
+    return sum(any(p.friction > 0.0 for p in rec.pairs) for rec in result.groups)
+
+
+def test_the_friction_loads_are_written_out() -> None:
+    note, table = _note_and_table(FRICTION, 45.0)
+    row = {c: float(table[c][0]) for c in table.columns}
+    # the journal at B: rho = f r, the rod turning backwards relative to the crank
+    assert (
+        r"\rho_{\mathrm{B}} = f_{\mathrm{B}} r_{\mathrm{B}} = 0.1 \cdot 0.008" in note
+    )
+    assert r"\omega_{\mathrm{rod}} - \omega_{\mathrm{crank}} = -54.21 - 200" in note
+    assert (
+        r"\,\mathrm{sgn}(\omega_{\mathrm{rod}} - \omega_{\mathrm{crank}}) = -0.0008 "
+        rf"\cdot {row['B.F']:.2f} \cdot (-1) = {row['B.Mf']:.3f}\ \mathrm{{N\,m}}"
+    ) in note
+    # the guide: the slider moving left, friction pushes it right
+    assert rf"-0.15 \cdot {np.hypot(row['guide.Fy'], 0):.2f} \cdot (-1)" in note
+    # the driver's own bearing is overcome by the balancing torque
+    assert r"M_{b} = -\sum M_{\mathrm{A}} - M_{f,\mathrm{A}}" in note
+    assert "19.14" in note.split("Without friction")[1].split("\n")[0]
+
+
+def test_newton_starts_from_the_frictionless_reactions() -> None:
+    # the slider-crank has one group: its start is the frictionless solution
+    note, _ = _note_and_table(FRICTION, 45.0)
+    ideal = assur.forces(assur.load(EXAMPLES / "slider_crank_exercise.toml"), [45.0])
+    grid = note.split("| joint | without its friction | converged |")[1]
+    for joint in ("B", "C"):
+        start = re.search(rf"\| {joint} \| \$(-?[\d.]+)\$", grid)
+        assert start, joint
+        assert float(start.group(1)) == pytest.approx(
+            float(ideal[f"{joint}.F"][0]), abs=0.01
+        )
+    assert re.search(r"(\d+) steps? brought each size", note)
+
+
+def test_a_pair_at_rest_has_no_friction_in_the_note() -> None:
+    # at 0 deg the slider is at its dead centre: the guide does not slide
+    note, table = _note_and_table(FRICTION, 0.0)
+    assert float(table["guide.Ff"][0]) == 0.0
+    assert r"\dot s_{\mathrm{guide}} = 0\ \mathrm{m/s}" in note
+    # its normal force is there, the sense of its slide is not
+    assert r"-0.15 \cdot 17.93 \cdot 0 = 0\ \mathrm{N}" in note
+    assert "| guide | $F_{f,\\mathrm{guide}} = 0$ |" in note
+
+
+def test_friction_note_as_html_and_latex(tmp_path) -> None:
+    import shutil
+    import subprocess
+    import xml.etree.ElementTree as ET
+
+    note = explain(assur.load(FRICTION), 45.0)
+    for m in re.findall(r"<math\b.*?</math>", note.to_html(), re.S):
+        ET.fromstring(m)  # every equation, friction's too, is well-formed MathML
+    pdflatex = shutil.which("pdflatex")
+    if pdflatex is None:
+        pytest.skip("pdflatex not found (apt-get install texlive-latex-recommended)")
+    note.write(tmp_path / "note.tex")
+    result = subprocess.run(
+        [pdflatex, "-interaction=nonstopmode", "-halt-on-error", "note.tex"],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=180,
+    )
+    assert result.returncode == 0, result.stdout[-2000:]
+
+
+@pytest.mark.parametrize(
+    "stem", ["slider_crank_exercise", "six_bar_lecture", "whitworth", "class3"]
+)
+def test_frictionless_notes_say_nothing_of_friction(stem: str) -> None:
+    note = str(explain(assur.load(EXAMPLES / f"{stem}.toml"), 45.0))
+    assert "friction" not in note.lower()
+    assert "ideal" not in note
+    assert not [lhs for lhs, _ in statements(note) if lhs.startswith("M_{f")]
+
+
+def test_the_lecture_s_torque_is_unchanged() -> None:
+    note = str(explain(assur.load(EXAMPLES / "slider_crank_exercise.toml"), 45.0))
+    assert r"M_{b} = -\sum M_{\mathrm{A}} = 84.63\ \mathrm{N\,m}" in note
+    assert r"M_{b}^{lever} = -\frac{\sum P}{\omega} = -\frac{-16925}{200} = 84.63" in (
+        note
+    )
+
+
+# every example with friction in every joint: groups of every kind, passed friction
+RUBBED = [
+    ("six_bar_lecture", 30.0),
+    ("six_bar_lecture", 250.0),
+    ("whitworth", 60.0),
+    ("whitworth", 210.0),
+    ("scotch_yoke", 30.0),
+    ("slot_mechanism", 120.0),
+    ("class3", 20.0),
+    ("offset_slider_crank", 300.0),
+    ("five_bar_two_cranks", (40.0, 100.0)),
+]
+
+
+def rubbed(stem: str) -> assur.Mechanism:
+    """An example with friction 0.1 in every joint (journal radius 5 mm)."""
+    from .test_friction import with_friction
+
+    mech = assur.load(EXAMPLES / f"{stem}.toml")
+    return with_friction(mech, {j.name: 0.1 for j in mech.joints}, 0.005)
+
+
+@pytest.mark.parametrize(("stem", "angle"), RUBBED)
+def test_every_example_with_friction_agrees_with_the_table(stem: str, angle) -> None:
+    mech = rubbed(stem)
+    at = np.atleast_1d(np.asarray(angle, dtype=float))[None, :]
+    at = at if at.shape[1] > 1 else at[:, 0]
+    try:
+        table = assur.forces(mech, at)
+    except assur.AssurError as err:
+        pytest.skip(f"{stem} at {angle}: {err}")
+    note = str(explain(mech, angle))
+    check(note, table)
+    shown = [lhs for lhs, last in statements(note) if printed(last) is not None]
+    for d in table.plan.drivers:
+        letter = "M" if d.kind == "R" else "F"
+        many = len(table.plan.drivers) > 1
+        sym = f"{letter}_{{b,{tex(d.pair.name)}}}" if many else f"{letter}_{{b}}"
+        assert f"{sym}^{{lever}}" in shown, sym
+    assert note.count("Newton's method on the sizes") == _rubbing_groups_of(mech, angle)
+
+
+def _rubbing_groups_of(mech: assur.Mechanism, angle) -> int:
+    """How many groups of ``mech`` have a pair with friction."""
+    from assur.explain._solve import position
+
+    result = position(mech, angle).result
+    assert result is not None
+    return sum(any(p.friction > 0.0 for p in rec.pairs) for rec in result.groups)
+
+
+@pytest.mark.parametrize("rubbing", [False, True], ids=["ideal", "friction"])
+def test_every_driver_has_its_lever(rubbing: bool) -> None:
+    # the two-crank five-bar: one lever per driver, each equal to the table's load
+    stem, angle = "five_bar_two_cranks", (40.0, 100.0)
+    mech = rubbed(stem) if rubbing else assur.load(EXAMPLES / f"{stem}.toml")
+    table = assur.forces(mech, np.array([angle]))
+    note = str(explain(mech, angle))
+    lever = note.split("## 6. Check by Zhukovsky's lever")[1]
+    assert "each balancing load has its own lever" in lever
+    assert lever.count("per unit speed of this driver, the others held") == 2
+    check(note, table)
+    shown = {lhs: printed(last) for lhs, last in statements(lever) if printed(last)}
+    for joint in ("A", "E"):
+        sym = f"M_{{b,{tex(joint)}}}"
+        ((got, half),) = shown[f"{sym}^{{lever}}"]
+        assert abs(got - float(table[f"{joint}.torque"][0])) <= half
+        if rubbing:
+            ((ideal, half),) = shown[f"{sym}^{{ideal}}"]
+            assert abs(ideal - float(table[f"{joint}.torque_ideal"][0])) <= half
+    # the primed powers: per unit speed, not watts
+    assert "\\sum P' = " in lever
+    assert ("\\sum P_{f}' = " in lever) == rubbing
+
+
+def test_the_documented_friction_numbers_are_the_note_s() -> None:
+    # docs/explain.rst quotes the friction example's note at 45 degrees
+    note, _ = _note_and_table(FRICTION, 45.0)
+    for text in (
+        r"-0.0008 \cdot 1994.59 \cdot (-1) = 1.596\ \mathrm{N\,m}",
+        r"-0.15 \cdot 473.94 \cdot (-1) = 71.09\ \mathrm{N}",
+        r"| C | $962.04$ |",
+        r"| B | $1928.5$ |",
+        "3 steps brought each size",
+        r"(0,\ -473.94) + (71.09,\ 0) = (71.09,\ -473.94)",
+        r"-0.00096 \cdot 9658.16 \cdot 1 = -9.272",
+        r"91.55 - (-9.272) = 100.82\ \mathrm{N\,m}",
+        r"-\frac{-16925 + (-3239.46)}{200} = 100.82",
+        r"P_{f,\mathrm{guide}} = 71.09 \cdot (-13.3) = -945.64",
+    ):
+        assert text in note, text
+    zero, _ = _note_and_table(FRICTION, 0.0)
+    assert r"-0.15 \cdot 17.93 \cdot 0 = 0" in zero

@@ -1,0 +1,149 @@
+"""The report's inertia loads and free-body diagrams against the forces table.
+
+Both sections show the report's first position. The inertia table is read back
+from the page; the free-body diagrams are inline SVG whose labels matplotlib keeps
+as comments (``<!-- $R_{\\mathrm{B}}$ = 20.6 N -->``), read back the same way.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur.html import render_report
+
+from .test_html import browser  # noqa: F401 (the headless Chromium fixture)
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+ANGLES = [30.0, 75.0, 140.0]
+
+
+def section(page: str, name: str) -> str:
+    """The HTML of the section ``id=name``."""
+    start = page.index(f'id="{name}"')
+    return page[start : page.index("</section>", start)]
+
+
+def close(printed: str, want: float, digits: int) -> bool:
+    """Whether a number printed to ``digits`` significant digits is ``want``."""
+    if printed in ("–", "0"):
+        return not math.isfinite(want) or abs(want) < 1e-9 * (1 + abs(want))
+    got = float(printed)
+    return abs(got - want) <= 0.51 * 10 ** (
+        math.floor(math.log10(abs(want))) - digits + 1
+    )
+
+
+@pytest.fixture(scope="module", params=["six_bar_lecture", "slider_crank_friction"])
+def report(request) -> tuple[str, assur.Table]:
+    mech = assur.load(EXAMPLES / f"{request.param}.toml")
+    return render_report(mech, ANGLES), assur.forces(mech, ANGLES)
+
+
+def test_inertia_loads_agree_with_the_table(report) -> None:
+    page, table = report
+    part = section(page, "inertia")
+    assert "(30)" in part  # the report's first position
+    rows = re.findall(r'<tr data-link="([^"]+)"><th>[^<]*</th>(.*?)</tr>', part)
+    massive = [link.name for link in table.mechanism.links if link.mass]
+    assert [name for name, _ in rows] == massive
+    for name, cells in rows:
+        values = re.findall(r"<td>([^<]*)</td>", cells)
+        link = table.mechanism.link(name)
+        fx, fy = float(table[f"{name}.Fi.x"][0]), float(table[f"{name}.Fi.y"][0])
+        mi = float(table[f"{name}.Mi"][0])
+        a = math.hypot(table[f"{name}.G.ax"][0], table[f"{name}.G.ay"][0])
+        size = math.hypot(fx, fy)
+        want = [
+            link.mass,
+            a,
+            size,
+            math.degrees(math.atan2(fy, fx)),
+            link.inertia,
+            float(table[f"{name}.alpha"][0]),
+            mi,
+            abs(mi) / size,
+        ]
+        assert len(values) == len(want)
+        for printed, expected in zip(values, want, strict=True):
+            assert close(printed, expected, 5), (name, printed, expected)
+        # Fi = m aG, Mi = -JG eps: the table's d'Alembert loads
+        np.testing.assert_allclose(size, link.mass * a, rtol=1e-12)
+        np.testing.assert_allclose(
+            mi, -(link.inertia or 0.0) * table[f"{name}.alpha"][0], atol=1e-12
+        )
+
+
+def test_one_free_body_per_group_with_the_table_s_reactions(report) -> None:
+    page, table = report
+    part = section(page, "free-bodies")
+    plan = table.plan
+    figures = re.findall(r'<figure id="free-body-(\d+)">(.*?)</figure>', part, re.S)
+    assert [int(i) for i, _ in figures] == list(range(1, len(plan.groups) + 1))
+    for index, figure in figures:
+        svg = figure[figure.index("<svg") : figure.rindex("</svg>") + 6]
+        ET.fromstring(svg)  # well formed
+        group = plan.groups[int(index) - 1]
+        labels = re.findall(r"<!-- \$R_\{\\mathrm\{(\w+)\}[^$]*\$ = (\S+) N -->", svg)
+        # every pair on its links: the groups solved before it act on it too
+        bodies = {plan.body(x) for x in group.links}
+        joints = {
+            name.split("~")[0]
+            for name, pair in plan.pairs.items()
+            if {pair.first, pair.second} & bodies and not pair.virtual
+        }
+        assert {j for j, _ in labels} == joints
+        for joint, printed in labels:
+            assert close(printed, float(table[f"{joint}.F"][0]), 3), (joint, printed)
+        for link in group.links:
+            if table.mechanism.link(link).mass:
+                fi = math.hypot(table[f"{link}.Fi.x"][0], table[f"{link}.Fi.y"][0])
+                tex = re.escape(f"$F_{{i,\\mathrm{{{link}}}}}$")
+                label = re.search(rf"<!-- {tex} = (\S+) N -->", svg)
+                assert label, link
+                assert close(label.group(1), fi, 3)
+
+
+def test_the_diagrams_keep_the_page_self_contained(report) -> None:
+    page, _ = report
+    assert re.search(r"https?://", page) is None
+    ids = re.findall(r'\bid="([^"]+)"', page)
+    assert len(ids) == len(set(ids))  # several diagrams, no id twice
+    known = set(ids)
+    for target in re.findall(r'url\(#([^)]+)\)|href="#([^"]+)"', page):
+        assert (target[0] or target[1]) in known
+
+
+def test_a_kinematics_report_has_neither_section() -> None:
+    page = render_report(assur.load(EXAMPLES / "lever_var9.toml"), [30.0, 60.0])
+    assert 'id="inertia"' not in page
+    assert 'id="free-bodies"' not in page
+    assert "<figure id=" not in page
+
+
+@pytest.mark.browser
+def test_the_diagrams_show_in_a_browser(browser, tmp_path: Path) -> None:  # noqa: F811
+    # headless Chromium lays the inline diagrams out, offline (skips without it)
+    path = tmp_path / "report.html"
+    path.write_text(
+        render_report(assur.load(EXAMPLES / "six_bar_lecture.toml"), ANGLES),
+        encoding="utf-8",
+    )
+    browser.get(path.as_uri())
+    sizes = browser.execute_script(
+        "return Array.from(document.querySelectorAll('#free-bodies svg'))"
+        ".map(e => [e.getBoundingClientRect().width, e.getBoundingClientRect().height])"
+    )
+    assert len(sizes) == 2
+    assert all(w > 200 and h > 150 for w, h in sizes)
+    # the glyphs are drawn through <use href="#..."> of their own diagram
+    used = browser.execute_script(
+        "return document.querySelectorAll('#free-body-2 use').length"
+    )
+    assert used > 20
