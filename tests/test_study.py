@@ -137,7 +137,7 @@ def test_many_variants_run_in_several_batches():
 
 def test_tables_give_every_column_of_chosen_variants(slider_study):
     pytest.importorskip("xarray")
-    parameters, study = slider_study
+    _, study = slider_study
     data = study.tables(variants=[0, 1, 6])
     values = data["values"]
     assert values.dims == ("variant", "position", "column")
