@@ -25,6 +25,10 @@ KEPT = frozenset({"mechanism", "topology", "origins", "angle0"})
 """Plan fields the kernels do not read: the first variant's stand for all."""
 
 
+EQUAL_AS_A_WHOLE = (tuple, dict, str, int, bool, type(None))
+"""Kinds of field compared whole first: when equal in every variant they are kept."""
+
+
 class Unstackable(Exception):  # noqa: N818 (a signal, caught where plans are stacked)
     """Plans that differ in more than their numbers."""
 
@@ -121,6 +125,8 @@ def _stack(values: list[Any], repeats: int) -> Any:
     """Stack one field of every variant (see the module's docstring)."""
     first = values[0]
     kind = first.__class__
+    if kind in EQUAL_AS_A_WHOLE and all(v == first for v in values):
+        return first  # names, indices, and parts with every number the same
     if kind is float:
         if all(v == first for v in values):
             return first
