@@ -18,7 +18,7 @@ from assur import _kinematics as _kin
 from assur import kinetostatics as _kst
 from assur._branches import CANDIDATE, STEP, TURNS
 from assur._loads import compile_loads
-from assur._stack import stack_loads, stack_plans
+from assur._stack import restack, stack_loads, stack_plans
 from assur._vec import Array, Mask, is_array, leaves
 from assur.analysis import CHUNK, driver_rates, to_si
 from assur.columns import selection
@@ -58,7 +58,7 @@ def summaries(plans: list[Plan], given: Array) -> list[dict[str, float] | None]:
     for leaf in leaves((forces.reactions, forces.balancing, forces.shaking)):
         if is_array(leaf):
             bad |= ~np.isfinite(leaf)
-    alone = bad.reshape(k, m).any(axis=1) | _near_change_points(plans, drive, m)
+    alone = bad.reshape(k, m).any(axis=1) | _near_change_points(plans, plan, drive)
     chosen = selection(plans[0], True, None)
     table = Table(
         plan, chosen.columns, np.tile(given, (k, 1)), state, forces, _index=chosen.index
@@ -73,16 +73,18 @@ def summaries(plans: list[Plan], given: Array) -> list[dict[str, float] | None]:
     ]
 
 
-def _near_change_points(plans: list[Plan], drive: Array, m: int) -> Mask:
+def _near_change_points(plans: list[Plan], stacked: Plan, drive: Array) -> Mask:
     """Mark the variants whose path from the reference pose may meet a change point.
 
     :func:`assur._branches.change_points` scans a grid for minima of each dyad's
     discriminant below :data:`~assur._branches.CANDIDATE`; a variant whose
     discriminants stay above it on that grid all along its path (and a step beyond)
     has none there, and its sweep keeps the reference pose's branches. Variants
-    driven beyond the scanned window are marked too.
+    driven beyond the scanned window are marked too. ``stacked`` is the plans'
+    stacked plan, each variant over its ``drive`` positions.
     """
     k = len(plans)
+    m = drive.shape[0] // k
     reference = np.array([p.drivers[0].reference for p in plans])
     x = drive[:, 0].reshape(k, m) - reference[:, None]
     low = np.minimum(x.min(axis=1, initial=0.0), 0.0)
@@ -94,7 +96,7 @@ def _near_change_points(plans: list[Plan], drive: Array, m: int) -> Mask:
     )
     grid = (reference[:, None] + steps[None, :] * STEP).reshape(-1, 1)
     n = grid.shape[0]
-    plan = stack_plans(plans, steps.size)
+    plan = restack(stacked, m, steps.size)
     bodies = _kin.drivers(plan, grid, (0.0,), (0.0,))
     near = np.zeros(n, dtype=bool)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):

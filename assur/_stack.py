@@ -19,7 +19,14 @@ from assur._loads import LoadPlan
 from assur.model import LoadTable
 from assur.plan import Plan
 
-__all__ = ["Rows", "Unstackable", "signature", "stack_loads", "stack_plans"]
+__all__ = [
+    "Rows",
+    "Unstackable",
+    "restack",
+    "signature",
+    "stack_loads",
+    "stack_plans",
+]
 
 KEPT = frozenset({"mechanism", "topology", "origins", "angle0"})
 """Plan fields the kernels do not read: the first variant's stand for all."""
@@ -96,6 +103,39 @@ def stack_plans(plans: list[Plan], repeats: int) -> Plan:
     out = _stack(plans, repeats)
     assert isinstance(out, Plan)
     return out
+
+
+def restack(plan: Plan, repeats: int, again: int) -> Plan:
+    """Return a stacked plan with each variant over ``again`` rows, not ``repeats``."""
+    out = _map(plan, lambda x: np.repeat(x[::repeats], again))
+    assert isinstance(out, Plan)
+    return out
+
+
+def _map(value: Any, change: Any) -> Any:
+    """Return ``value`` with every per-row array replaced by ``change(array)``."""
+    kind = value.__class__
+    if kind is np.ndarray:
+        return change(value)
+    if kind is Rows:
+        return Rows(_map(x, change) for x in value)
+    if kind is tuple:
+        return tuple(_map(x, change) for x in value)
+    if kind is dict:
+        return {k: _map(v, change) for k, v in value.items()}
+    if dataclasses.is_dataclass(value) and not isinstance(value, type):
+        fields: dict[str, Any] = {}
+        for f in dataclasses.fields(value):
+            if not f.init:
+                continue
+            if f.name == "memo":
+                fields[f.name] = {}
+            elif kind is Plan and f.name in KEPT:
+                fields[f.name] = getattr(value, f.name)
+            else:
+                fields[f.name] = _map(getattr(value, f.name), change)
+        return kind(**fields)
+    return value
 
 
 def stack_loads(loads: list[LoadPlan], repeats: int) -> LoadPlan:

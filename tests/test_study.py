@@ -195,3 +195,21 @@ def test_sweep_on_a_local_cluster(slider_study):
     assert_agrees(remote.summary, separate(catalog.slider_crank, parameters, ANGLES))
     assert list(remote.summary.index) == list(range(len(RODS)))
     assert remote.summary.equals(study.summary)
+
+
+def test_a_variant_passing_a_change_point_is_solved_as_a_separate_call_does():
+    # a parallelogram four-bar changes branch at 0 and 180 degrees (with a
+    # warning); its neighbours in the batch do not
+    parameters = {
+        "crank": [0.04, 0.04, 0.04],
+        "coupler": [0.12, 0.10, 0.121],
+        "rocker": [0.08, 0.04, 0.08],
+        "frame": [0.10, 0.10, 0.10],
+    }
+    angles = np.arange(0.0, 360.0, 3.0) + 46.0
+    study = assur.sweep(catalog.four_bar, parameters, angles)
+    assert_agrees(study.summary, separate(catalog.four_bar, parameters, angles))
+    warned = study.summary["warning"].tolist()
+    assert "(a change point)" in warned[1]
+    assert not warned[0]
+    assert not warned[2]
