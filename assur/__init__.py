@@ -41,6 +41,7 @@ from assur.model import (
     Point,
     Toward,
 )
+from assur.study import Study, sweep
 
 __version__ = "0.1.0"
 
@@ -68,6 +69,7 @@ __all__ = [
     "SingularConfigurationError",
     "Startup",
     "Structure",
+    "Study",
     "Table",
     "Toward",
     "UsageError",
@@ -87,4 +89,5 @@ __all__ = [
     "save",
     "startup",
     "structure",
+    "sweep",
 ]

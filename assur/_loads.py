@@ -36,11 +36,23 @@ class LoadPlan:
     gravity: tuple[float, float]
     forces: tuple[tuple[int, tuple[float, float], Any, str], ...]
     torques: tuple[tuple[int, Any, str], ...]
+    stacked: tuple[tuple[int, Any, Any], ...] | None = None
+    """For variants stacked over their rows (:mod:`assur._stack`): each body with a
+    mass, its mass and inertia as leaves; None for one mechanism."""
 
     @property
     def empty(self) -> bool:
         """Whether no link has a mass and no load is applied."""
         return not (self.mass.any() or self.forces or self.torques)
+
+    def bodies(self) -> tuple[tuple[int, Any, Any], ...]:
+        """Return each body with a mass: its index, mass (kg) and inertia (kg m^2)."""
+        if self.stacked is not None:
+            return self.stacked
+        return tuple(
+            (b, float(self.mass[b]), float(self.inertia[b]))
+            for b in np.flatnonzero(self.mass).tolist()
+        )
 
 
 def compile_loads(plan: Plan) -> LoadPlan:

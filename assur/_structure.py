@@ -347,8 +347,21 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
         link = pair.links[1] if pair.links[0] == GROUND else pair.links[0]
         drivers.append(Group(1, 0, "driver", (GROUND, link), (d.joint,), (), (GROUND,)))
         known.add(link)
-    groups = tuple(_attach(_index(topo), known))
+    shape = (topo.links, tuple((p.name, p.kind, p.links) for p in topo.pairs))
+    key = (shape, frozenset(known))
+    groups = _DECOMPOSED.get(key)
+    if groups is None:
+        groups = tuple(_attach(_index(topo), known))
+        if len(_DECOMPOSED) >= 256:
+            _DECOMPOSED.clear()
+        _DECOMPOSED[key] = groups
     return tuple(drivers), groups, topo
+
+
+_DECOMPOSED: dict[Any, tuple[Group, ...]] = {}
+"""The groups found for each shape of mechanism (links, pairs' names, kinds and links,
+known links): the search reads nothing else once it succeeds, so the variants of a
+study (and a mechanism analysed again) skip it."""
 
 
 @dataclass(frozen=True, slots=True)

@@ -161,13 +161,12 @@ def applied_loads(
     wrenches: list[Wrench] = [[0.0, 0.0, 0.0] for _ in range(count)]
     inertia: list[tuple[Any, Any, Any] | None] = [None] * count
     gx, gy = loads.gravity
-    for b in np.flatnonzero(loads.mass).tolist():
+    for b, mass, moment in loads.bodies():
         m = bodies[b]
-        mass = float(loads.mass[b])
         px, py = point(m, loads.center[b], 0)
         ax, ay = point(m, loads.center[b], 2)
         fx, fy = mul(-mass, ax), mul(-mass, ay)
-        torque = mul(-float(loads.inertia[b]), m.phi[2])
+        torque = mul(-moment, m.phi[2])
         inertia[b] = (fx, fy, torque)
         fx, fy = add(fx, mass * gx), add(fy, mass * gy)
         wrenches[b] = [fx, fy, add(cross(px, py, fx, fy), torque)]

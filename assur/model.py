@@ -829,8 +829,10 @@ def _check_cranks(mech: Mechanism) -> None:
 
 def _coincide(a: np.ndarray, b: np.ndarray) -> bool:
     """Whether two reference-pose points are one (see :data:`COINCIDENT`)."""
-    size = max(1.0, float(np.max(np.abs(a))), float(np.max(np.abs(b))))
-    return float(np.hypot(*(b - a))) <= COINCIDENT * size
+    # plain floats: two points cost less so than as numpy reductions
+    ax, ay, bx, by = float(a[0]), float(a[1]), float(b[0]), float(b[1])
+    size = max(1.0, abs(ax), abs(ay), abs(bx), abs(by))
+    return math.hypot(bx - ax, by - ay) <= COINCIDENT * size
 
 
 def resolve_point(

@@ -258,15 +258,22 @@ def _shift(drivers: tuple[Group, ...], pair_at: dict[str, Array]) -> Array:
     return np.array(pair_at[drivers[0].internal[0]], dtype=float)
 
 
+FEW = 64
+"""Points compared pair by pair without looking for their convex hull first."""
+
+
 def _diameter(points: Array) -> float:
     """Largest distance between two of ``points`` (m), at least 1e-12.
 
-    The farthest pair lies on the convex hull (Andrew's monotone chain), so only the
-    hull's few corners are compared with each other.
+    The farthest pair lies on the convex hull (Andrew's monotone chain), so of many
+    points only the hull's few corners are compared with each other; a few points
+    are compared directly (finding their hull costs more).
     """
-    unique = np.unique(np.asarray(points, dtype=float).reshape(-1, 2), axis=0)
-    hull = _hull(unique) if len(unique) > 3 else unique
-    gap = hull[:, None, :] - hull[None, :, :]
+    corners = np.asarray(points, dtype=float).reshape(-1, 2)
+    if len(corners) > FEW:
+        corners = np.unique(corners, axis=0)
+        corners = _hull(corners) if len(corners) > 3 else corners
+    gap = corners[:, None, :] - corners[None, :, :]
     return max(1e-12, float(np.sqrt((gap * gap).sum(axis=-1)).max()))
 
 

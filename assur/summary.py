@@ -28,23 +28,39 @@ __all__ = ["Summary", "efficiency", "summarize"]
 
 @dataclass
 class _Running:
-    """Running maximum (with its position), minimum, sum and sum of squares."""
+    """Per variant: running maximum (and where), minimum, sum and sum of squares."""
 
-    top: float = -math.inf
-    at: float = math.nan
-    bottom: float = math.inf
-    total: float = 0.0
-    squares: float = 0.0
+    top: Array
+    at: Array
+    bottom: Array
+    total: Array
+    squares: Array
+
+    @classmethod
+    def start(cls, variants: int) -> _Running:
+        """Return the running values of ``variants`` variants before any position."""
+        return cls(
+            np.full(variants, -math.inf),
+            np.full(variants, math.nan),
+            np.full(variants, math.inf),
+            np.zeros(variants),
+            np.zeros(variants),
+        )
 
     def add(self, values: Array, where: Array) -> None:
-        if not values.size:
+        """Add ``values`` (variants, m) found at driver positions ``where`` (same)."""
+        if not values.shape[1]:
             return
-        k = int(np.argmax(values))
-        if values[k] > self.top:
-            self.top, self.at = float(values[k]), float(where[k])
-        self.bottom = min(self.bottom, float(np.min(values)))
-        self.total += float(np.sum(values))
-        self.squares += float(np.dot(values, values))
+        rows = np.arange(values.shape[0])
+        k = np.argmax(values, axis=1)
+        best = values[rows, k]
+        # a NaN is never larger: the largest stays the largest number, as max() does
+        better = best > self.top
+        self.top = np.where(better, best, self.top)
+        self.at = np.where(better, where[rows, k], self.at)
+        self.bottom = np.fmin(self.bottom, np.min(values, axis=1))
+        self.total = self.total + np.sum(values, axis=1)
+        self.squares = self.squares + np.einsum("ij,ij->i", values, values)
 
 
 @dataclass
@@ -53,16 +69,19 @@ class Summary:
 
     ``add(table)`` takes each slice (a forces table); ``result()`` returns the values
     by name and ``units`` gives each name's unit. The names and their definitions are
-    those of :meth:`assur.Table.summary`.
+    those of :meth:`assur.Table.summary`. With ``variants`` > 1 a table holds that
+    many variants of one mechanism one after the other, each over the same number of
+    positions: ``results()`` then gives every value per variant.
     """
 
+    variants: int = 1
     count: int = 0
     units: dict[str, str] = field(default_factory=dict)
     _joints: dict[str, _Running] = field(default_factory=dict)
     _drivers: dict[str, _Running] = field(default_factory=dict)
-    _power: float = 0.0
-    _ideal: float = 0.0
-    _losses: dict[str, float] = field(default_factory=dict)
+    _power: Any = 0.0
+    _ideal: Any = 0.0
+    _losses: dict[str, Any] = field(default_factory=dict)
     _rubbing: bool = False
 
     def add(self, table: Any) -> None:
@@ -79,21 +98,24 @@ class Summary:
         if not self.units:
             self._start(table)
         n = len(table)
-        self.count += n
-        where = table.given[:, 0] if n else np.zeros(0)
+        shape = (self.variants, n // self.variants)
+        self.count += shape[1]
+        where = (table.given[:, 0] if n else np.zeros(0)).reshape(shape)
         for name, running in self._joints.items():
-            running.add(np.asarray(table[f"{name}.F"]), where)
+            running.add(np.asarray(table[f"{name}.F"]).reshape(shape), where)
         for name, running in self._drivers.items():
-            running.add(np.asarray(table[name]), where)
+            running.add(np.asarray(table[name]).reshape(shape), where)
         forces = table.force_state
         state = table.state
         for i in range(len(table.plan.drivers)):
             speed = full(state.speed[i], n)
-            self._power += float(np.dot(full(forces.balancing[i], n), speed))
+            power = full(forces.balancing[i], n) * speed
+            self._power = self._power + _sums(power, shape)
             if self._rubbing:
-                self._ideal += float(np.dot(full(forces.ideal[i], n), speed))
+                ideal = full(forces.ideal[i], n) * speed
+                self._ideal = self._ideal + _sums(ideal, shape)
         for name, power in friction_powers(table).items():
-            self._losses[name] = self._losses.get(name, 0.0) - float(np.sum(power))
+            self._losses[name] = self._losses.get(name, 0.0) - _sums(power, shape)
 
     def _start(self, table: Any) -> None:
         """Name the summary's values after the table's columns."""
@@ -102,14 +124,14 @@ class Summary:
         units = self.units
         for column in table.schema:
             if column.family == "magnitude":
-                self._joints[column.owner] = _Running()
+                self._joints[column.owner] = _Running.start(self.variants)
                 name = column.owner
                 units[f"{name}.F.max"] = "N"
                 units[f"{name}.F.at"] = unit
                 units[f"{name}.F.rms"] = "N"
         for column in table.schema:
             if column.family == "balancing":
-                self._drivers[column.name] = _Running()
+                self._drivers[column.name] = _Running.start(self.variants)
                 for part in ("max", "min", "mean", "rms"):
                     units[f"{column.name}.{part}"] = column.unit
         units["driver.power.mean"] = "W"
@@ -131,29 +153,53 @@ class Summary:
         UsageError
             When no position was added (every one left out, or an empty sweep).
         """
+        return {name: float(values[0]) for name, values in self.results().items()}
+
+    def results(self) -> dict[str, Array]:
+        """Return the summary's values by name, one per variant (shape (variants,)).
+
+        Raises
+        ------
+        UsageError
+            When no position was added (every one left out, or an empty sweep).
+        """
         n = self.count
         if not n:
             msg = "summary: the table has no positions to summarise"
             raise UsageError(msg)
-        out: dict[str, float] = {}
+        out: dict[str, Array] = {}
         for name, r in self._joints.items():
             out[f"{name}.F.max"] = r.top
             out[f"{name}.F.at"] = r.at
-            out[f"{name}.F.rms"] = math.sqrt(r.squares / n)
+            out[f"{name}.F.rms"] = np.sqrt(r.squares / n)
         for name, r in self._drivers.items():
             out[f"{name}.max"] = r.top
             out[f"{name}.min"] = r.bottom
             out[f"{name}.mean"] = r.total / n
-            out[f"{name}.rms"] = math.sqrt(r.squares / n)
-        out["driver.power.mean"] = self._power / n
+            out[f"{name}.rms"] = np.sqrt(r.squares / n)
+        out["driver.power.mean"] = _per_variant(self._power / n, self.variants)
         if self._rubbing:
             for name, loss in self._losses.items():
-                out[f"{name}.friction.loss"] = loss / n
-            lost = sum(self._losses.values()) / n
+                out[f"{name}.friction.loss"] = _per_variant(loss / n, self.variants)
+            lost = _per_variant(sum(self._losses.values()) / n, self.variants)
             out["friction.loss"] = lost
-            out["driver.power_ideal.mean"] = self._ideal / n
-            out["efficiency"] = efficiency(self._power / n, self._ideal / n, lost)
+            ideal = _per_variant(self._ideal / n, self.variants)
+            out["driver.power_ideal.mean"] = ideal
+            power = out["driver.power.mean"]
+            out["efficiency"] = np.array(
+                [efficiency(*v) for v in zip(power, ideal, lost, strict=True)]
+            )
         return out
+
+
+def _sums(values: Array, shape: tuple[int, int]) -> Array:
+    """Return the sum of each variant's values (a table of ``shape[0]`` variants)."""
+    return np.sum(values.reshape(shape), axis=1)
+
+
+def _per_variant(value: Any, variants: int) -> Array:
+    """Return a value as one number per variant (a sum of none is the float 0)."""
+    return np.broadcast_to(np.asarray(value, dtype=float), (variants,)).copy()
 
 
 def efficiency(power: float, ideal: float, lost: float) -> float:

@@ -911,6 +911,11 @@ def main(argv: list[str] | None = None) -> int:
     text = report(res)
     print(text)
     res["report"] = text.splitlines()
+    if output.exists():
+        # bench_study.py keeps its figures in the same file, under "study"
+        kept = json.loads(output.read_text()).get("study")
+        if kept is not None:
+            res["study"] = kept
     output.write_text(json.dumps(res, indent=1, default=_json) + "\n")
     print(f"\nwrote {output}")
     return 0

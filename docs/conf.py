@@ -110,6 +110,7 @@ API_MODULES = [
     "assur._kinematics",
     "assur.kinetostatics",
     "assur.analysis",
+    "assur.study",
     "assur.dynamics_reduced",
     "assur.dynamics_steady",
     "assur.dynamics_model",

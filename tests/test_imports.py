@@ -41,7 +41,12 @@ RANKS = {
     "assur._evaluate": 7,
     "assur.table": 8,
     "assur.summary": 8,
+    "assur._stack": 6,
     "assur.analysis": 9,
+    # variants of one topology solved in one batch, from the analysis's own steps
+    "assur._batch": 9,
+    # studies: many variants, summarised; pandas, xarray and dask imported lazily
+    "assur.study": 10,
     "assur.io": 10,
     "assur._output": 10,
     "assur._tableio": 10,

@@ -1,0 +1,362 @@
+"""Studies: many variants of a mechanism, each summarised over a sweep.
+
+:func:`sweep` builds every variant from its parameters, solves the variants of one
+topology together in batches (:mod:`assur._batch`) and gathers one row of summary
+values per variant (:meth:`assur.Table.summary`). With a dask.distributed client the
+variants are split into partitions that the cluster's workers run. pandas, xarray
+and dask are imported only when a study needs them.
+"""
+
+from __future__ import annotations
+
+import itertools
+import warnings
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from assur._batch import CHUNK, summaries
+from assur._loads import compile_loads
+from assur._stack import Unstackable, signature
+from assur._vec import Array
+from assur.analysis import forces, positions
+from assur.errors import AssurError, AssurWarning, UsageError
+from assur.model import Mechanism
+from assur.plan import Plan, compile_plan
+
+__all__ = ["Study", "sweep"]
+
+Factory = Callable[..., Mechanism]
+"""Builds one variant: ``factory(**parameters) -> Mechanism``."""
+
+
+@dataclass(frozen=True)
+class Study:
+    """The summaries of a study's variants, and the means to recompute their tables.
+
+    Attributes
+    ----------
+    factory : callable
+        ``factory(**p)`` builds the mechanism of the variant with parameters ``p``.
+    parameters : dict of str to ndarray
+        The parameters, one value per variant (read-only arrays of equal length).
+    angles : ndarray
+        The driver positions of every variant's sweep, deg (m for a slider).
+    summary : pandas.DataFrame
+        One row per variant, indexed by the variant's number: its parameters, its
+        summary values (NaN for a variant without them) and ``error``, the one-line
+        reason a variant could not be built or analysed (empty when it could), and
+        ``warning``, the warnings its analysis gave (empty when none).
+    """
+
+    factory: Factory
+    parameters: dict[str, Array]
+    angles: Array
+    summary: Any = field(repr=False)
+
+    def __len__(self) -> int:
+        return len(self.summary)
+
+    def tables(
+        self,
+        variants: Sequence[int] | None = None,
+        columns: Sequence[str] | None = None,
+    ) -> Any:
+        """Return the full force tables of some variants as an xarray Dataset.
+
+        Each variant is analysed again on its own (compute on demand: the tables of
+        a large study do not fit in memory; choose ``variants``).
+
+        Parameters
+        ----------
+        variants : sequence of int, optional
+            The variants' numbers; all of them by default.
+        columns : sequence of str, optional
+            The columns; every column of the first variant analysed by default.
+
+        Returns
+        -------
+        xarray.Dataset
+            ``values`` with dimensions (variant, position, column), NaN for a variant
+            that fails and a column it lacks; the parameters are coordinates along
+            ``variant`` and the driver positions along ``position``.
+        """
+        import xarray as xr
+
+        chosen = list(range(len(self))) if variants is None else list(variants)
+        found: list[dict[str, Array] | None] = []
+        for i in chosen:
+            found.append(
+                _table(self.factory, _variant(self.parameters, i), self.angles)
+            )
+        names = list(columns) if columns is not None else _names(found)
+        data = np.full((len(chosen), self.angles.shape[0], len(names)), np.nan)
+        for row, table in enumerate(found):
+            for j, name in enumerate(names):
+                if table is not None and name in table:
+                    data[row, :, j] = table[name]
+        coords: dict[str, Any] = {
+            "variant": chosen,
+            "position": np.arange(self.angles.shape[0]),
+            "column": names,
+        }
+        for name, values in self.parameters.items():
+            coords[name] = ("variant", values[chosen])
+        return xr.Dataset(
+            {"values": (("variant", "position", "column"), data)}, coords=coords
+        )
+
+
+def sweep(
+    factory: Factory,
+    parameters: Mapping[str, Any],
+    angles: Any,
+    client: Any = None,
+    *,
+    partitions: int | None = None,
+) -> Study:
+    """Analyse many variants of a mechanism and summarise each over a sweep.
+
+    Parameters
+    ----------
+    factory : callable
+        ``factory(**p)`` returns the Mechanism of one variant; with ``client`` it
+        must be picklable (a function of an importable module).
+    parameters : mapping of str to array_like
+        Each parameter's values, 1-D arrays of equal length: one variant per index.
+    angles : array_like
+        Driver positions of every variant's sweep, deg (m for a slider); shape (n,)
+        or (n, drivers).
+    client : dask.distributed.Client, optional
+        Run the variants on this cluster's workers (each needs assur installed).
+    partitions : int, optional
+        Number of partitions with ``client`` (default: two per worker thread).
+
+    Returns
+    -------
+    Study
+        ``Study.summary`` has one row per variant (see :class:`Study`).
+
+    Raises
+    ------
+    UsageError
+        For parameters that are not equal-length 1-D arrays of real numbers, or
+        driver positions that are not finite real numbers.
+
+    Notes
+    -----
+    A variant whose factory raises (an AssurError, ValueError or ArithmeticError)
+    or whose analysis raises an AssurError is not fatal: its ``error`` says why, as
+    ``assur.forces(factory(**p), angles)`` would have said. Variants that share a
+    topology are solved together, the plan's structure once and their numbers
+    stacked over variants x positions.
+
+    Examples
+    --------
+    >>> from assur import catalog
+    >>> study = sweep(catalog.slider_crank, {"rod": [0.2, 0.25]}, range(0, 360, 10))
+    >>> study.summary["driver.torque.max"].round(1).tolist()
+    [90.9, 81.0]
+    """
+    values = _parameters(parameters)
+    given = _angles(angles)
+    if client is None:
+        table = summarise(factory, values, given)
+    else:
+        table = _distributed(client, factory, values, given, partitions)
+    return Study(factory, values, given, table)
+
+
+def summarise(
+    factory: Factory, parameters: dict[str, Array], angles: Array, start: int = 0
+) -> Any:
+    """Return the summary DataFrame of variants numbered from ``start`` (one process).
+
+    What :func:`sweep` runs, or each partition of it on a worker.
+    """
+    import pandas as pd
+
+    count = len(next(iter(parameters.values())))
+    rows: list[dict[str, Any]] = []
+    size = max(1, CHUNK // max(1, angles.shape[0]))
+    for first in range(0, count, size):
+        block = range(first, min(first + size, count))
+        rows += _block(factory, parameters, angles, block)
+    names: dict[str, None] = dict.fromkeys(parameters)
+    for row in rows:
+        names.update(dict.fromkeys(row))
+    order = [n for n in names if n not in ("error", "warning")] + ["error", "warning"]
+    frame = pd.DataFrame(rows, index=pd.RangeIndex(start, start + count))
+    frame = frame.reindex(columns=order)
+    frame.index.name = "variant"
+    return frame
+
+
+def _block(
+    factory: Factory, parameters: dict[str, Array], angles: Array, block: range
+) -> list[dict[str, Any]]:
+    """Return the rows of the variants ``block``, those of one topology batched."""
+    rows: list[dict[str, Any]] = []
+    groups: dict[Any, list[tuple[int, Mechanism, Plan]]] = {}
+    alone: list[tuple[int, Mechanism]] = []
+    for i in block:
+        p = _variant(parameters, i)
+        rows.append({**p, "error": "", "warning": ""})
+        try:
+            mech = factory(**p)
+        except (AssurError, ValueError, ArithmeticError) as err:
+            rows[-1]["error"] = _line(err)
+            continue
+        try:
+            plan = compile_plan(mech)
+            key = signature(plan, compile_loads(plan))
+        except AssurError:
+            key = None
+        if key is None:
+            alone.append((i, mech))
+        else:
+            groups.setdefault(key, []).append((i, mech, plan))
+    for members in groups.values():
+        plans = [plan for _, _, plan in members]
+        try:
+            found = summaries(plans, positions(plans[0], angles))
+        except Unstackable:
+            found = [None] * len(plans)
+        for (i, mech, _), values in zip(members, found, strict=True):
+            if values is None:
+                alone.append((i, mech))
+            else:
+                rows[i - block.start].update(values)
+    for i, mech in alone:
+        rows[i - block.start].update(_alone(mech, angles))
+    return rows
+
+
+def _alone(mech: Mechanism, angles: Array) -> dict[str, Any]:
+    """Return one variant's summary from a call of its own, or why it failed."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            out: dict[str, Any] = dict(forces(mech, angles).summary())
+        except AssurError as err:
+            out = {"error": _line(err)}
+    said = [str(w.message) for w in caught if issubclass(w.category, AssurWarning)]
+    if said:
+        out["warning"] = " | ".join(" ".join(s.split()) for s in said)
+    return out
+
+
+def _table(factory: Factory, p: dict[str, float], angles: Array) -> dict[str, Array]:
+    """Return every column of one variant's force table; empty if it fails."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", AssurWarning)
+        try:
+            table = forces(factory(**p), angles)
+        except (AssurError, ValueError, ArithmeticError):
+            return {}
+    return {name: table[name] for name in table.columns}
+
+
+def _names(tables: list[dict[str, Array] | None]) -> list[str]:
+    """Return the columns of the tables, in the order they are first met."""
+    out: dict[str, None] = {}
+    for table in tables:
+        out.update(dict.fromkeys(table or {}))
+    return list(out)
+
+
+def _line(err: BaseException) -> str:
+    """Return an error as one line: its class and its message."""
+    return f"{type(err).__name__}: {' '.join(str(err).split())}"
+
+
+def _variant(parameters: dict[str, Array], i: int) -> dict[str, float]:
+    """Return the parameters of variant ``i``."""
+    return {name: float(values[i]) for name, values in parameters.items()}
+
+
+def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
+    """Check the parameters; return them as read-only float arrays."""
+    if not isinstance(parameters, Mapping) or not parameters:
+        msg = (
+            "parameters: expected a mapping of names to 1-D arrays (one value per "
+            f"variant), got {type(parameters).__name__}"
+            f"{' (empty)' if isinstance(parameters, Mapping) else ''}"
+        )
+        raise UsageError(msg)
+    out: dict[str, Array] = {}
+    for name, values in parameters.items():
+        if not isinstance(name, str) or not name.isidentifier():
+            msg = f"parameters: expected names that are identifiers, got {name!r}"
+            raise UsageError(msg)
+        try:
+            arr = np.array(values)
+        except (TypeError, ValueError) as err:
+            msg = f"parameters.{name}: expected a 1-D array of real numbers"
+            raise UsageError(msg) from err
+        if arr.dtype.kind not in "biuf" or arr.ndim != 1 or not arr.size:
+            what = f"shape {arr.shape}" if arr.dtype.kind in "biuf" else str(arr.dtype)
+            msg = f"parameters.{name}: expected a 1-D array of real numbers, got {what}"
+            raise UsageError(msg)
+        out[name] = arr.astype(float)
+        out[name].flags.writeable = False
+    lengths = {name: len(v) for name, v in out.items()}
+    if len(set(lengths.values())) > 1:
+        told = ", ".join(f"{name} {n}" for name, n in lengths.items())
+        msg = (
+            "parameters: expected arrays of one length (one value per variant), "
+            f"got {told}"
+        )
+        raise UsageError(msg)
+    return out
+
+
+def _angles(angles: Any) -> Array:
+    """Check the driver positions; return them as a read-only float array."""
+    try:
+        arr = np.array(angles, dtype=float)
+    except (TypeError, ValueError) as err:
+        msg = (
+            "angles: expected real numbers (driver positions), got "
+            f"{type(angles).__name__}"
+        )
+        raise UsageError(msg) from err
+    if arr.ndim not in (1, 2) or not arr.shape[0] or not np.all(np.isfinite(arr)):
+        msg = (
+            "angles: expected finite driver positions of shape (n,) or "
+            f"(n, drivers), got shape {arr.shape}"
+        )
+        raise UsageError(msg)
+    arr.flags.writeable = False
+    return arr
+
+
+def _distributed(
+    client: Any,
+    factory: Factory,
+    parameters: dict[str, Array],
+    angles: Array,
+    partitions: int | None,
+) -> Any:
+    """Run the variants in partitions on a dask.distributed cluster; one DataFrame."""
+    import pandas as pd
+
+    count = len(next(iter(parameters.values())))
+    if partitions is None:
+        threads = sum(client.nthreads().values()) or 1
+        partitions = 2 * threads
+    bounds = np.linspace(0, count, min(count, max(1, partitions)) + 1).astype(int)
+    futures = [
+        client.submit(
+            summarise,
+            factory,
+            {name: v[a:b] for name, v in parameters.items()},
+            angles,
+            int(a),
+            pure=False,
+        )
+        for a, b in itertools.pairwise(bounds)
+    ]
+    return pd.concat(client.gather(futures))

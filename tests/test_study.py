@@ -1,0 +1,215 @@
+"""Studies: ``assur.sweep`` against separate ``assur.forces(...).summary()`` calls.
+
+A study solves the variants of one topology in one batch; each variant's summary
+must be the one a separate call gives (to 1e-12, relative to the size of the
+quantity), and a variant that cannot be built or analysed must be marked with the
+error a separate call raises. The same through a dask LocalCluster of two processes.
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+import assur
+from assur import catalog
+
+pytest.importorskip("pandas")
+
+ANGLES = np.arange(0.0, 360.0, 3.0) + 45.0
+
+# rods: assembles; assembles at 45 deg but not at 90 (shorter than the crank);
+# cannot be built (shorter than the crank pin's height at 45 deg); near a dead
+# centre (a warning); and long ones
+CRANKS = [0.074, 0.074, 0.074, 0.074, 0.050, 0.090, 0.060]
+RODS = [0.200, 0.060, 0.040, 0.07402, 0.150, 0.300, 0.190]
+
+
+def mixed(kind: float, crank: float, rod: float) -> assur.Mechanism:
+    """A slider-crank (kind 0) or a four-bar (kind 1): two topologies in one study."""
+    if kind:
+        return catalog.four_bar(crank=crank / 2, coupler=rod / 2 + 0.05)
+    return catalog.slider_crank(crank=crank, rod=rod)
+
+
+def separate(factory, parameters, angles):
+    """Each variant's summary from a call of its own, or its error as one line."""
+    out = []
+    names = list(parameters)
+    for values in zip(*parameters.values(), strict=True):
+        p = dict(zip(names, map(float, values), strict=True))
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", assur.AssurWarning)
+                out.append(assur.forces(factory(**p), angles).summary())
+        except (assur.AssurError, ValueError) as err:
+            out.append(f"{type(err).__name__}: {' '.join(str(err).split())}")
+    return out
+
+
+def scale(summary: dict[str, float], name: str) -> float:
+    """The size of a summary value: a mean that cancels over a cycle is measured
+    against the RMS of the same quantity (the driver's power against its torque's
+    RMS times the speed)."""
+    if name == "driver.power.mean":
+        return summary["driver.torque.rms"] * 200.0
+    if name.endswith(".mean"):
+        return summary[name[: -len("mean")] + "rms"]
+    return abs(summary[name])
+
+
+def assert_agrees(frame, expected):
+    assert len(frame) == len(expected)
+    for i, want in enumerate(expected):
+        row = frame.iloc[i]
+        if isinstance(want, str):
+            assert row["error"] == want
+            continue
+        assert row["error"] == ""
+        for name, value in want.items():
+            got = row[name]
+            assert abs(got - value) <= 1e-12 * scale(want, name), (i, name, got, value)
+
+
+@pytest.fixture(scope="module")
+def slider_study():
+    parameters = {"crank": CRANKS, "rod": RODS}
+    return parameters, assur.sweep(catalog.slider_crank, parameters, ANGLES)
+
+
+def test_sweep_equals_separate_calls(slider_study):
+    parameters, study = slider_study
+    assert_agrees(study.summary, separate(catalog.slider_crank, parameters, ANGLES))
+
+
+def test_unassemblable_variants_are_marked(slider_study):
+    _, study = slider_study
+    errors = study.summary["error"].tolist()
+    assert errors[1].startswith("AssemblyError: group RRP (rod, slider): cannot be")
+    assert errors[2] == "ValueError: math domain error"
+    assert [i for i, e in enumerate(errors) if e] == [1, 2]
+    assert np.isnan(study.summary["A.F.max"].iloc[1])
+
+
+def test_a_warning_is_kept_with_the_variant(slider_study):
+    _, study = slider_study
+    warned = study.summary["warning"].tolist()
+    assert "near a dead centre" in warned[3]
+    assert not warned[0]
+
+
+def test_summary_has_the_parameters_and_the_summary_names(slider_study):
+    _, study = slider_study
+    frame = study.summary
+    one = assur.forces(catalog.slider_crank(), ANGLES).summary()
+    assert list(frame.columns) == ["crank", "rod", *one, "error", "warning"]
+    np.testing.assert_array_equal(frame["rod"], RODS)
+    assert frame.index.name == "variant"
+
+
+def test_variants_of_two_topologies_are_grouped():
+    parameters = {
+        "kind": [0, 1, 0, 1, 1, 0],
+        "crank": [0.074, 0.08, 0.06, 0.07, 0.09, 0.074],
+        "rod": [0.2, 0.14, 0.16, 0.15, 0.16, 0.06],
+    }
+    study = assur.sweep(mixed, parameters, ANGLES)
+    assert_agrees(study.summary, separate(mixed, parameters, ANGLES))
+    # a four-bar has joint D, a slider-crank has none: NaN there
+    assert np.isnan(study.summary["D.F.max"].iloc[0])
+    assert np.isfinite(study.summary["D.F.max"].iloc[1])
+
+
+def test_many_variants_run_in_several_batches():
+    rng = np.random.default_rng(7)
+    count = 130  # more than one batch of 8192 positions at 120 positions each
+    parameters = {
+        "crank": rng.uniform(0.05, 0.09, count),
+        "rod": rng.uniform(0.05, 0.3, count),
+    }
+    study = assur.sweep(catalog.slider_crank, parameters, ANGLES)
+    expected = separate(catalog.slider_crank, parameters, ANGLES)
+    assert_agrees(study.summary, expected)
+    assert any(isinstance(e, str) for e in expected)
+
+
+def test_tables_give_every_column_of_chosen_variants(slider_study):
+    pytest.importorskip("xarray")
+    _, study = slider_study
+    data = study.tables(variants=[0, 1, 6])
+    values = data["values"]
+    assert values.dims == ("variant", "position", "column")
+    table = assur.forces(catalog.slider_crank(crank=0.06, rod=0.19), ANGLES)
+    column = list(data["column"].values).index("B.F")
+    np.testing.assert_array_equal(values[2, :, column], table["B.F"])
+    assert np.isnan(values[1]).all()  # the variant that does not assemble
+    np.testing.assert_array_equal(data["rod"], [0.2, 0.06, 0.19])
+
+
+@pytest.mark.parametrize(
+    ("parameters", "message"),
+    [
+        ({}, "parameters: expected a mapping of names to 1-D arrays"),
+        ([0.2], "parameters: expected a mapping of names to 1-D arrays"),
+        ({"rod": [[0.2]]}, r"parameters.rod: expected a 1-D array .* shape \(1, 1\)"),
+        ({"rod": ["a"]}, "parameters.rod: expected a 1-D array of real numbers, got"),
+        ({"rod": []}, r"parameters.rod: expected a 1-D array .* shape \(0,\)"),
+        (
+            {"rod": [0.2, 0.3], "crank": [0.07]},
+            "parameters: expected arrays of one length .* got rod 2, crank 1",
+        ),
+        ({"not a name": [0.2]}, "parameters: expected names that are identifiers"),
+    ],
+)
+def test_parameters_are_checked(parameters, message):
+    with pytest.raises(assur.UsageError, match=message):
+        assur.sweep(catalog.slider_crank, parameters, ANGLES)
+
+
+def test_angles_are_checked():
+    with pytest.raises(assur.UsageError, match="angles: expected finite driver"):
+        assur.sweep(catalog.slider_crank, {"rod": [0.2]}, [0.0, np.nan])
+
+
+def test_a_wrong_parameter_name_is_not_a_variant_failure():
+    # a TypeError is a mistake in the study, not a variant that fails
+    with pytest.raises(TypeError):
+        assur.sweep(catalog.slider_crank, {"length": [0.2]}, ANGLES)
+
+
+def test_sweep_on_a_local_cluster(slider_study):
+    distributed = pytest.importorskip("distributed")
+    parameters, study = slider_study
+    with (
+        distributed.LocalCluster(
+            n_workers=2,
+            processes=True,
+            threads_per_worker=1,
+            dashboard_address=None,
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        remote = assur.sweep(catalog.slider_crank, parameters, ANGLES, client=client)
+    assert_agrees(remote.summary, separate(catalog.slider_crank, parameters, ANGLES))
+    assert list(remote.summary.index) == list(range(len(RODS)))
+    assert remote.summary.equals(study.summary)
+
+
+def test_a_variant_passing_a_change_point_is_solved_as_a_separate_call_does():
+    # a parallelogram four-bar changes branch at 0 and 180 degrees (with a
+    # warning); its neighbours in the batch do not
+    parameters = {
+        "crank": [0.04, 0.04, 0.04],
+        "coupler": [0.12, 0.10, 0.121],
+        "rocker": [0.08, 0.04, 0.08],
+        "frame": [0.10, 0.10, 0.10],
+    }
+    angles = np.arange(0.0, 360.0, 3.0) + 46.0
+    study = assur.sweep(catalog.four_bar, parameters, angles)
+    assert_agrees(study.summary, separate(catalog.four_bar, parameters, angles))
+    warned = study.summary["warning"].tolist()
+    assert "(a change point)" in warned[1]
+    assert not warned[0]
+    assert not warned[2]
