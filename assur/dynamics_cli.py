@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import sys
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -20,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import check_not_input, load_mechanism, parse_angles
-from assur._output import path_text, write_stdout
+from assur._output import path_text, write_stdout, write_text
 from assur._vec import Array
 from assur.columns import pretty_unit
 from assur.errors import UsageError
@@ -64,6 +65,12 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         action="store_true",
         help="integrate the start-up from rest under the file's [motor]",
     )
+    p.add_argument(
+        "--startup-csv",
+        metavar="PATH",
+        help="write the start-up's time, crank angle and speed as CSV (implies "
+        "--startup)",
+    )
     p.add_argument("--csv", metavar="PATH", help="write the table as CSV ('-': stdout)")
     p.add_argument("--json", action="store_true", help="print everything as JSON")
     return {"dynamics": _cmd_dynamics}
@@ -90,7 +97,10 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
             epsilon=result["driver.epsilon"],
         )
         table = _Joined(result, motion)
-    run = assur.startup(mech, inertia) if args.startup else None
+    start = args.startup or args.startup_csv is not None
+    run = assur.startup(mech, inertia) if start else None
+    if run is not None and args.startup_csv is not None:
+        _write_startup(args, run)
     if args.json:
         write_stdout(_json(result, table, sizing, run) + "\n")
     elif args.csv == "-":
@@ -121,6 +131,14 @@ def _check_options(args: argparse.Namespace) -> None:
         raise UsageError(msg)
     if args.csv:
         check_not_input("--csv", args.csv, args.file)
+    if args.startup_csv is not None:
+        if args.startup_csv == "-" or args.startup_csv == args.csv:
+            msg = (
+                f"--startup-csv {args.startup_csv}: expected a file of its own "
+                "(not standard output, nor the --csv file)"
+            )
+            raise UsageError(msg)
+        check_not_input("--startup-csv", args.startup_csv, args.file)
 
 
 class _Joined:
@@ -155,6 +173,32 @@ def _write_csv(args: argparse.Namespace, table: Any) -> None:
     if not getattr(args, "quiet", False):
         size = f"{len(table)} rows x {len(table.columns)} columns"
         print(f"wrote {size} to {path_text(args.csv)}")
+
+
+def startup_csv(run: Any) -> str:
+    """Return the start-up's samples as CSV text: time (s), angle (deg), omega (rad/s).
+
+    Numbers are written with 17 significant digits (``repr``), so reading the file
+    gives back the same floats.
+    """
+    rows = ["time,angle,omega"]
+    rows += [
+        f"{t!r},{a!r},{w!r}"
+        for t, a, w in zip(
+            run.time.tolist(), run.angle.tolist(), run.omega.tolist(), strict=True
+        )
+    ]
+    return "\n".join(rows) + "\n"
+
+
+def _write_startup(args: argparse.Namespace, run: Any) -> None:
+    """Write ``--startup-csv PATH`` (whole or not at all); say so."""
+    write_text(args.startup_csv, startup_csv(run))
+    if not getattr(args, "quiet", False):
+        # standard output may carry the table or the JSON: the line goes to stderr
+        lines = sys.stderr if (args.json or args.csv == "-") else sys.stdout
+        size = f"{len(run.time)} rows x 3 columns"
+        print(f"wrote {size} to {path_text(args.startup_csv)}", file=lines)
 
 
 def _figures(result: Any, sizing: Any, run: Any) -> str:
@@ -254,6 +298,9 @@ def _json(result: Any, table: Any, sizing: Any, run: Any) -> str:
             "speed_max": run.speed_max,
             "speed_min": run.speed_min,
             "delta": run.delta,
+            "time": run.time.tolist(),
+            "angle": run.angle.tolist(),
+            "omega": run.omega.tolist(),
         }
     data["columns"] = list(table.columns)
     values = np.column_stack([np.asarray(table[c], dtype=float) for c in table.columns])

@@ -135,9 +135,41 @@ def test_startup_from_the_file_motor(capsys, tmp_path: Path):
     assert f"mean speed {run_.mean_speed:.6g} rad/s" in out
 
 
+def test_startup_samples_to_csv_and_json(capsys, tmp_path: Path):
+    t = assur.dynamics(assur.load(WHITWORTH), [0.0], flywheel=20.0)
+    path = tmp_path / "w.toml"
+    path.write_text(
+        WHITWORTH.read_text()
+        + f"\n[motor]\ntorque = {10 * t.motor}\nno_load_speed = 6.0\n"
+    )
+    target = tmp_path / "start.csv"
+    argv = ("dynamics", path, "--flywheel", "20", "--angles", "0")
+    status, out, err = run(capsys, *argv, "--startup-csv", target)
+    assert (status, err) == (0, "")
+    run_ = assur.startup(assur.load(path), 20.0)
+    assert f"wrote {len(run_.time)} rows x 3 columns to {target}" in out
+    assert "settles in" in out  # --startup-csv implies --startup
+    lines = target.read_text().splitlines()
+    assert lines[0] == "time,angle,omega"
+    got = np.array([[float(x) for x in line.split(",")] for line in lines[1:]])
+    # the file gives back the very samples of the library's start-up
+    np.testing.assert_array_equal(got[:, 0], run_.time)
+    np.testing.assert_array_equal(got[:, 1], run_.angle)
+    np.testing.assert_array_equal(got[:, 2], run_.omega)
+    # the speed starts from rest, and time runs forward
+    assert got[0, 2] == 0.0
+    assert (np.diff(got[:, 0]) > 0).all()
+    status, out, err = run(capsys, *argv, "--startup", "--json")
+    assert (status, err) == (0, "")
+    data = json.loads(out)["startup"]
+    np.testing.assert_array_equal(data["omega"], run_.omega)
+    assert len(data["time"]) == len(data["angle"]) == len(run_.time)
+
+
 @pytest.mark.parametrize(
     ("args", "message"),
     [
+        (["--startup-csv", "-"], "--startup-csv -: expected a file of its own"),
         (["--delta", "0"], "--delta 0: expected a coefficient of speed fluctuation"),
         (["--delta", "nan"], "--delta nan: expected a coefficient"),
         (["--flywheel", "-2"], "--flywheel -2: expected an inertia >= 0"),
