@@ -513,7 +513,7 @@ def global_solve(mech: assur.Mechanism, table: assur.Table) -> Reactions:
     return Reactions(force, couple, balancing)
 
 
-def _speed(table: assur.Table, joint: assur.Joint) -> np.ndarray:
+def relative_speed(table: assur.Table, joint: assur.Joint) -> np.ndarray:
     """What a joint's friction opposes: the relative angular speed of its second link
     (rad/s), or its slide's speed (m/s), from the table's columns."""
     if joint.kind == "revolute":
@@ -568,7 +568,7 @@ def global_solve_friction(
         layout.append(("driver", i))
     units = {j.name: _unit_wrenches(mech, table, j) for j in joints}
     loads = applied_loads(mech, table)
-    speeds = {j.name: _speed(table, j) for j in joints}
+    speeds = {j.name: relative_speed(table, j) for j in joints}
     for j in joints:
         speeds[j.name] = np.where(
             _at_rest(mech, table, speeds[j.name], j), 0.0, speeds[j.name]
@@ -690,6 +690,41 @@ def global_solve_friction(
                     out_friction[joint.name][r] * (axes[joint.name][r])
                 )
     return Reactions(out_force, out_couple, balancing), out_friction
+
+
+def assert_same_reactions(
+    mech: assur.Mechanism,
+    got: Reactions,
+    expected: Reactions,
+    rtol: float,
+    force: float,
+    size: float,
+) -> None:
+    """Assert two sets of reactions and balancing loads agree to ``rtol`` of the
+    load scale ``force`` (N; forces) and ``force * size`` (N m; couples)."""
+    for joint in mech.joints:
+        name = joint.name
+        np.testing.assert_allclose(
+            got.force[name],
+            expected.force[name],
+            rtol=0,
+            atol=rtol * force,
+            err_msg=f"{name}: force",
+        )
+        np.testing.assert_allclose(
+            got.couple[name],
+            expected.couple[name],
+            rtol=0,
+            atol=rtol * force * size,
+            err_msg=f"{name}: couple",
+        )
+    np.testing.assert_allclose(
+        got.balancing,
+        expected.balancing,
+        rtol=0,
+        atol=rtol * force * size,
+        err_msg="balancing loads",
+    )
 
 
 def table_reactions(mech: assur.Mechanism, table: assur.Table) -> Reactions:

@@ -119,13 +119,19 @@ def test_csv_to_standard_output(capsys):
     assert len(lines) == 4
 
 
-def test_startup_from_the_file_motor(capsys, tmp_path: Path):
+def with_motor(folder: Path) -> Path:
+    """The Whitworth mechanism with an electric motor ten times its mean load."""
     t = assur.dynamics(assur.load(WHITWORTH), [0.0], flywheel=20.0)
-    path = tmp_path / "w.toml"
+    path = folder / "w.toml"
     path.write_text(
         WHITWORTH.read_text()
         + f"\n[motor]\ntorque = {10 * t.motor}\nno_load_speed = 6.0\n"
     )
+    return path
+
+
+def test_startup_from_the_file_motor(capsys, tmp_path: Path):
+    path = with_motor(tmp_path)
     status, out, err = run(
         capsys, "dynamics", path, "--flywheel", "20", "--startup", "--angles", "0"
     )
@@ -136,12 +142,7 @@ def test_startup_from_the_file_motor(capsys, tmp_path: Path):
 
 
 def test_startup_samples_to_csv_and_json(capsys, tmp_path: Path):
-    t = assur.dynamics(assur.load(WHITWORTH), [0.0], flywheel=20.0)
-    path = tmp_path / "w.toml"
-    path.write_text(
-        WHITWORTH.read_text()
-        + f"\n[motor]\ntorque = {10 * t.motor}\nno_load_speed = 6.0\n"
-    )
+    path = with_motor(tmp_path)
     target = tmp_path / "start.csv"
     argv = ("dynamics", path, "--flywheel", "20", "--angles", "0")
     status, out, err = run(capsys, *argv, "--startup-csv", target)

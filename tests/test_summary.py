@@ -20,6 +20,7 @@ from assur.analysis import default_positions
 from assur.cli import main
 from assur.summary import Summary, efficiency
 
+from . import oracle
 from .test_kinetostatics import needs_forces, steady
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
@@ -85,17 +86,6 @@ def test_a_summary_by_slices_is_the_summary_of_the_whole():
         assert by_slices[key] == pytest.approx(value, rel=1e-12, abs=1e-9), key
 
 
-def relative_speed(table: assur.Table, joint: assur.Joint) -> np.ndarray:
-    """The second link's angular speed relative to the first, or the slide's speed."""
-    if joint.kind != "revolute":
-        return table[f"{joint.name}.v"]
-
-    def omega(link: str) -> np.ndarray:
-        return np.zeros(len(table)) if link == "ground" else table[f"{link}.omega"]
-
-    return omega(joint.links[1]) - omega(joint.links[0])
-
-
 @pytest.mark.parametrize(
     "name",
     ["slider_crank_friction", "four_bar_bearings", "slider_crank_locking"],
@@ -110,7 +100,7 @@ def test_friction_losses_and_efficiency(name):
             assert f"{joint.name}.friction.loss" not in got
             continue
         part = "Mf" if joint.kind == "revolute" else "Ff"
-        power = table[f"{joint.name}.{part}"] * relative_speed(table, joint)
+        power = table[f"{joint.name}.{part}"] * oracle.relative_speed(table, joint)
         assert (power <= 1e-12 * np.abs(power).max()).all()
         loss = -float(np.mean(power))
         assert got[f"{joint.name}.friction.loss"] == pytest.approx(loss, rel=1e-12)
