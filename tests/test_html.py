@@ -261,6 +261,20 @@ def test_units_in_the_force_report(pages: dict[str, str]) -> None:
         "Fy (N)",
         "|F| (N)",
     ]
+    # the inertia loads follow the slider: each massive link's Fi and Mi columns
+    assert data["current"]["inertia"]["head"] == [
+        "inertia of",
+        "Fi,x (N)",
+        "Fi,y (N)",
+        "Mi (N·m)",
+    ]
+    rows = data["current"]["inertia"]["rows"]
+    assert [r["name"] for r in rows] == ["crank", "rod", "slider"]
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    table = assur.forces(mech, default_positions(mech))
+    for row in rows:
+        for key in row["keys"]:
+            np.testing.assert_allclose(data["columns"][key], table[key], rtol=1e-5)
     assert [c["unit"] for c in data["charts"]] == ["N·m", "N", "rad/s"]
     assert data["forces"]["balancing"][0]["unit"] == "N·m"
     kinematic = page_data(pages["lever_var9"])
@@ -375,6 +389,10 @@ def test_script_writes_the_schema_units(tmp_path: Path) -> None:
         "Fx (N)",
         "Fy (N)",
         "|F| (N)",
+        "inertia of",
+        "Fi,x (N)",
+        "Fi,y (N)",
+        "Mi (N·m)",
     ]
     assert "the bar in the lower left corner is 10000 N)" in shown["note"]
 

@@ -107,7 +107,7 @@ def _columns(table: Table, data: dict[str, Any]) -> dict[str, list[float | None]
         for part in data["current"].values()
         for row in part["rows"]
         for key in row["keys"]
-        if not key.endswith((".x", ".y"))
+        if not (key.endswith((".x", ".y")) and key[:-2] in data["points"])
     ]
     return {key: floats(table[key]) for key in dict.fromkeys(keys)}
 

@@ -98,10 +98,17 @@ def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
     points = [
         {"name": p.name, "keys": [f"{p.name}.{x}" for x in suffixes]} for p in joints
     ]
+    # the inertia loads follow the slider too: d'Alembert's loads at that position
+    inertia = [
+        {"name": x.name, "keys": [f"{x.name}.Fi.x", f"{x.name}.Fi.y", f"{x.name}.Mi"]}
+        for x in table.mechanism.links
+        if forced and x.mass and f"{x.name}.Fi.x" in table.columns
+    ]
     parts = {
         "links": ("link", ("angle", "ω", "α"), links),
         "slides": ("slide", ("s", "v", "a"), slides),
         "joints": ("joint", ("Fx", "Fy", "|F|") if forced else ("x", "y"), points),
+        "inertia": ("inertia of", ("Fi,x", "Fi,y", "Mi"), inertia),
     }
     return {
         part: {"head": _head(table, first, symbols, rows), "rows": rows}

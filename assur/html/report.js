@@ -375,7 +375,8 @@
     }
     document.getElementById("current").appendChild(table);
   }
-  for (const part of [data.current.links, data.current.slides, data.current.joints]) {
+  for (const part of [data.current.links, data.current.slides, data.current.joints,
+    data.current.inertia]) {
     liveTable(part.head, part.rows);
   }
 
