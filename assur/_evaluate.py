@@ -17,7 +17,7 @@ import numpy as np
 
 from assur._kinematics import motions
 from assur._loads import compile_loads
-from assur._vec import Array, full, take_rows
+from assur._vec import Array, full
 from assur.columns import POINT_PARTS, Column, schema
 from assur.groups._motion import point
 from assur.kinetostatics import (
@@ -265,33 +265,40 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
     checks = np.empty((len(plan.drivers), n)) if "check" in families else None
     left = np.empty((2, n)) if "residual" in families else None
     loads = compile_loads(plan) if checks is not None or left is not None else None
+    # one slice holding every row reads the states as they are
+    whole = n <= CHUNK
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
-        part = state.rows(rows)
+        part = state if whole else state.rows(rows)
         bodies = motions(plan, part)
+        forces = table.force_state
+        if forces is not None and not whole and (offsets or loads is not None):
+            forces = forces.rows(rows)
         for p, arrays in points.items():
             _point(plan, bodies, p, arrays, rows)
         if offsets:
-            scale = _largest_reaction(table, rows)
+            assert forces is not None
+            scale = _largest_reaction(forces, rows.stop - start)
         for name in offsets:
-            fx, fy, couple = take_rows(_forces(table).reactions[name], rows)
+            assert forces is not None
+            fx, fy, couple = forces.reactions[name]
             off[name][rows] = offset(
                 plan.pairs[name], bodies, fx, fy, couple, scale, plan.scale
             )
         if loads is None:
             continue
         applied = applied_loads(plan, loads, bodies, part)
-        friction = _forces(table).rows(rows).friction if table.force_state else {}
+        friction = forces.friction if forces is not None else {}
         if checks is not None:
             # friction does work: its power counts like any load's
             rubbed = with_friction(plan, bodies, applied, friction)
-            speeds = take_rows(state.speed, rows)
+            speeds = part.speed
             for i in range(len(plan.drivers)):
                 checks[i, rows] = virtual_power(plan, bodies, rubbed, i, speeds[i])
         if left is not None:
             # a prismatic pair's friction force is in its reaction already
+            assert forces is not None
             rubbed = with_friction(plan, bodies, applied, friction, "R")
-            forces = _forces(table).rows(rows)
             left[:, rows] = residual(plan, bodies, rubbed, forces, rows.stop - start).T
     for arrays in points.values():
         out.update(arrays)
@@ -329,12 +336,11 @@ def _allocate(plan: Any, p: int, levels: Iterable[int], n: int) -> dict[str, Arr
     return {f"{name}.{part}": np.empty(n) for k in levels for part in POINT_PARTS[k]}
 
 
-def _largest_reaction(table: Table, rows: slice) -> Array:
-    """Return the largest reaction force at each of ``rows`` (N)."""
-    size = rows.stop - rows.start
+def _largest_reaction(forces: ForceState, size: int) -> Array:
+    """Return the largest reaction force at each of ``size`` positions (N)."""
     largest = np.zeros(size)
-    for fx, fy, _ in take_rows(_forces(table).reactions, rows).values():
-        largest = np.maximum(largest, np.hypot(full(fx, size), full(fy, size)))
+    for fx, fy, _ in forces.reactions.values():
+        np.maximum(largest, np.hypot(full(fx, size), full(fy, size)), out=largest)
     return largest
 
 
@@ -370,7 +376,7 @@ def _jerks(table: Table, points: list[int]) -> dict[str, Array]:
             chunked[p] = _allocate(plan, p, (3,), n)
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
-        bodies = motions(plan, state.rows(rows))
+        bodies = motions(plan, state if n <= CHUNK else state.rows(rows))
         for p, arrays in chunked.items():
             _point(plan, bodies, p, arrays, rows)
     for arrays in chunked.values():

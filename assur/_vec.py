@@ -33,10 +33,15 @@ def is_array(value: Leaf) -> bool:
 
 
 def full(value: Leaf, n: int) -> Array:
-    """Return a leaf as an array of ``n`` values (a constant is repeated)."""
+    """Return a leaf as a read-only array of ``n`` values (a constant is repeated).
+
+    A constant is one value seen through a stride of zero: nothing is written per
+    position, whatever ``n``.
+    """
     if is_array(value):
         return value  # type: ignore[no-any-return]
-    out = np.full(n, np.nan if value is None else float(value))
+    one = np.array((np.nan if value is None else float(value),))
+    out: Array = np.ndarray((n,), np.float64, one, 0, (0,))
     out.flags.writeable = False
     return out
 
