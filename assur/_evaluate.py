@@ -17,7 +17,7 @@ import numpy as np
 
 from assur._kinematics import motions
 from assur._loads import compile_loads
-from assur._vec import Array, full
+from assur._vec import Array, full, rows_of
 from assur.columns import POINT_PARTS, Column, schema
 from assur.groups._motion import point
 from assur.kinetostatics import (
@@ -252,13 +252,13 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
     out: dict[str, Array] = {}
     wanted = [c for c in columns if c.family == "point" and c.level <= top]
     # a link's origin is in the state already; other points are rebuilt by slices
+    rebuilt = []
     for p in sorted({c.key[0] for c in wanted}):
         if plan.point_offset[p] == (0.0, 0.0):
             out.update(_origin(table, p, range(top + 1)))
-    points = {c.key[0]: _allocate(plan, c.key[0], range(top + 1), n) for c in wanted}
-    points = {
-        p: arrays for p, arrays in points.items() if f"{plan.points[p]}.x" not in out
-    }
+        else:
+            rebuilt.append(p)
+    points = _allocate(plan, rebuilt, range(top + 1), n)
     offsets = sorted({c.owner for c in columns if c.family == "offset"})
     off = {name: np.empty(n) for name in offsets}
     families = {c.family for c in columns}
@@ -330,10 +330,15 @@ def _origin(table: Table, p: int, levels: Iterable[int]) -> dict[str, Array]:
     return out
 
 
-def _allocate(plan: Any, p: int, levels: Iterable[int], n: int) -> dict[str, Array]:
-    """Return empty columns for point ``p``'s ``levels``, by name."""
-    name = plan.points[p]
-    return {f"{name}.{part}": np.empty(n) for k in levels for part in POINT_PARTS[k]}
+def _allocate(
+    plan: Any, points: list[int], levels: Iterable[int], n: int
+) -> dict[int, dict[str, Array]]:
+    """Return empty columns for the ``levels`` of each of ``points``, by name."""
+    parts = [part for k in levels for part in POINT_PARTS[k]]
+    block = iter(rows_of(len(points) * len(parts), n))
+    return {
+        p: {f"{plan.points[p]}.{part}": next(block) for part in parts} for p in points
+    }
 
 
 def _largest_reaction(forces: ForceState, size: int) -> Array:
@@ -368,12 +373,13 @@ def _jerks(table: Table, points: list[int]) -> dict[str, Array]:
     plan, n = table.plan, len(table)
     state = table.motion(3)
     out: dict[str, Array] = {}
-    chunked = {}
+    rebuilt = []
     for p in points:
         if plan.point_offset[p] == (0.0, 0.0):
             out.update(_origin(table, p, (3,)))
         else:
-            chunked[p] = _allocate(plan, p, (3,), n)
+            rebuilt.append(p)
+    chunked = _allocate(plan, rebuilt, (3,), n)
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
         bodies = motions(plan, state if n <= CHUNK else state.rows(rows))
