@@ -17,7 +17,7 @@ import numpy as np
 
 from assur._kinematics import motions
 from assur._loads import compile_loads
-from assur._vec import Array, full, rows_of
+from assur._vec import Array, full, is_array, rows_of
 from assur.columns import POINT_PARTS, Column, schema
 from assur.groups._motion import point
 from assur.kinetostatics import (
@@ -130,19 +130,43 @@ def _link(table: Table, column: Column) -> dict[str, Array]:
 
 
 def _ic(table: Table, column: Column) -> dict[str, Array]:
-    r"""Instant centre of a link: :math:`p = o + \hat z \times v_o / \omega`."""
+    r"""Instant centre of a link: :math:`p = o + \hat z \times v_o / \omega`.
+
+    Computed slice by slice into the two columns (a constant where the link's
+    motion is).
+    """
     (b, _) = column.key
     state, plan, n = table.state, table.plan, len(table)
     name = plan.bodies[b]
-    omega = full(state.rotation(b, 1), n)
-    ox, oy = (full(v, n) for v in state.origin(b, 0))
-    vx, vy = (full(v, n) for v in state.origin(b, 1))
-    speed = np.hypot(vx, vy)
-    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * speed)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        x = np.where(translating, np.nan, plan.shift[0] + ox - vy / omega)
-        y = np.where(translating, np.nan, plan.shift[1] + oy + vx / omega)
+    leaves = (state.rotation(b, 1), *state.origin(b, 0), *state.origin(b, 1))
+    if not any(is_array(v) for v in leaves):
+        x, y = np.empty(1), np.empty(1)
+        _centre(plan, [full(v, 1) for v in leaves], x, y)
+        return {f"{name}.ic.x": full(x[0], n), f"{name}.ic.y": full(y[0], n)}
+    x, y = rows_of(2, n)
+    for start in range(0, n, CHUNK):
+        rows = slice(start, min(start + CHUNK, n))
+        size = rows.stop - start
+        part = [v[rows] if is_array(v) else full(v, size) for v in leaves]
+        _centre(plan, part, x[rows], y[rows])
     return {f"{name}.ic.x": x, f"{name}.ic.y": y}
+
+
+def _centre(plan: Any, leaves: list[Array], x: Array, y: Array) -> None:
+    """Write the instant centre of a link moving as ``leaves`` into ``x`` and ``y``.
+
+    ``leaves`` are the link's angular speed and its origin's position and velocity;
+    NaN where the link translates.
+    """
+    omega, ox, oy, vx, vy = leaves
+    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * np.hypot(vx, vy))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        np.divide(vy, omega, out=x)
+        np.subtract(plan.shift[0] + ox, x, out=x)
+        np.divide(vx, omega, out=y)
+        np.add(plan.shift[1] + oy, y, out=y)
+    x[translating] = np.nan
+    y[translating] = np.nan
 
 
 def _slide(table: Table, column: Column) -> dict[str, Array]:
@@ -169,7 +193,9 @@ def _reaction(table: Table, column: Column) -> dict[str, Array]:
 def _magnitude(table: Table, column: Column) -> dict[str, Array]:
     fx, fy, _ = _forces(table).reactions[column.owner]
     n = len(table)
-    return {column.name: np.hypot(full(fx, n), full(fy, n))}
+    if not (is_array(fx) or is_array(fy)):
+        return {column.name: full(np.hypot(full(fx, 1), full(fy, 1))[0], n)}
+    return {column.name: np.hypot(full(fx, n), full(fy, n), out=rows_of(1, n)[0])}
 
 
 def _balancing(table: Table, column: Column) -> dict[str, Array]:

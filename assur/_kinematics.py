@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._vec import Array, Leaf, Mask, is_array, take_rows
+from assur._vec import Array, Leaf, Mask, gather, is_array, take_rows
 from assur.groups._motion import Motion
 from assur.groups._pairs import slide
 from assur.groups.driver import motion
@@ -38,6 +38,8 @@ MAX_STEPS = 4000
 """Most continuation steps from the reference pose to one position."""
 LEVELS = 4
 """Position, velocity, acceleration and jerk."""
+CHUNK = 8192
+"""Positions whose jerks are solved at once (the sweep's own slices)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -109,7 +111,11 @@ class KinematicState:
 
     def rows(self, rows: Any) -> KinematicState:
         """Return the state at ``rows`` (a slice gives views, a mask copies)."""
-        motion, slide = take_rows((self.motion, self.slide), rows)
+        motion = tuple(
+            tuple(x[rows] if is_array(x) else x for x in entries)
+            for entries in self.motion
+        )
+        slide = take_rows(self.slide, rows)
         return KinematicState(
             self.drive[rows],
             take_rows(self.speed, rows),
@@ -421,9 +427,27 @@ def motions(plan: Plan, state: KinematicState, finished: bool = True) -> list[Mo
 
 
 def extend(plan: Plan, state: KinematicState) -> KinematicState:
-    """Return ``state`` with the jerks solved too (level 3), group by group."""
+    """Return ``state`` with the jerks solved too (level 3), group by group.
+
+    A long sweep is solved in slices of :data:`CHUNK` positions, as the sweep was.
+    """
     if state.top >= 3:
         return state
+    n = len(state)
+    if n <= CHUNK:
+        return _extend(plan, state)
+    pieces = (
+        (rows, _extend(plan, state.rows(rows)))
+        for rows in (slice(at, min(at + CHUNK, n)) for at in range(0, n, CHUNK))
+    )
+    motion, slide = gather(n, ((rows, (s.motion, s.slide)) for rows, s in pieces))
+    return KinematicState(
+        state.drive, state.speed, state.acceleration, motion, slide, 3
+    )
+
+
+def _extend(plan: Plan, state: KinematicState) -> KinematicState:
+    """Return ``state`` with the jerks solved, at once."""
     bodies = motions(plan, state, finished=False)
     for solver in plan.solvers:
         solver.derivative(bodies, 3, solver.linearize(bodies))
