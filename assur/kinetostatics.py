@@ -277,10 +277,13 @@ def has_friction(plan: Plan) -> bool:
 
 def _size(plan: Plan, bodies: list[Motion]) -> int:
     """Return the number of positions the motions hold."""
-    return max(
-        (int(np.size(v)) for m in bodies for v in (m.phi[0], m.ox[0], m.oy[0])),
-        default=1,
-    )
+    sizes = [
+        v.size
+        for m in bodies
+        for v in (m.phi[0], m.ox[0], m.oy[0])
+        if v.__class__ is np.ndarray
+    ]
+    return max(sizes, default=1)
 
 
 def _shares(record: Equilibrium, wrenches: dict[str, Wrench]) -> list[Any]:
