@@ -17,7 +17,7 @@ import numpy as np
 
 from assur._kinematics import motions
 from assur._loads import compile_loads
-from assur._vec import Array, full, take_rows
+from assur._vec import Array, full, is_array, rows_of
 from assur.columns import POINT_PARTS, Column, schema
 from assur.groups._motion import point
 from assur.kinetostatics import (
@@ -130,19 +130,43 @@ def _link(table: Table, column: Column) -> dict[str, Array]:
 
 
 def _ic(table: Table, column: Column) -> dict[str, Array]:
-    r"""Instant centre of a link: :math:`p = o + \hat z \times v_o / \omega`."""
+    r"""Instant centre of a link: :math:`p = o + \hat z \times v_o / \omega`.
+
+    Computed slice by slice into the two columns (a constant where the link's
+    motion is).
+    """
     (b, _) = column.key
     state, plan, n = table.state, table.plan, len(table)
     name = plan.bodies[b]
-    omega = full(state.rotation(b, 1), n)
-    ox, oy = (full(v, n) for v in state.origin(b, 0))
-    vx, vy = (full(v, n) for v in state.origin(b, 1))
-    speed = np.hypot(vx, vy)
-    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * speed)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        x = np.where(translating, np.nan, plan.shift[0] + ox - vy / omega)
-        y = np.where(translating, np.nan, plan.shift[1] + oy + vx / omega)
+    leaves = (state.rotation(b, 1), *state.origin(b, 0), *state.origin(b, 1))
+    if not any(is_array(v) for v in leaves):
+        x, y = np.empty(1), np.empty(1)
+        _centre(plan, [full(v, 1) for v in leaves], x, y)
+        return {f"{name}.ic.x": full(x[0], n), f"{name}.ic.y": full(y[0], n)}
+    x, y = rows_of(2, n)
+    for start in range(0, n, CHUNK):
+        rows = slice(start, min(start + CHUNK, n))
+        size = rows.stop - start
+        part = [v[rows] if is_array(v) else full(v, size) for v in leaves]
+        _centre(plan, part, x[rows], y[rows])
     return {f"{name}.ic.x": x, f"{name}.ic.y": y}
+
+
+def _centre(plan: Any, leaves: list[Array], x: Array, y: Array) -> None:
+    """Write the instant centre of a link moving as ``leaves`` into ``x`` and ``y``.
+
+    ``leaves`` are the link's angular speed and its origin's position and velocity;
+    NaN where the link translates.
+    """
+    omega, ox, oy, vx, vy = leaves
+    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * np.hypot(vx, vy))
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        np.divide(vy, omega, out=x)
+        np.subtract(plan.shift[0] + ox, x, out=x)
+        np.divide(vx, omega, out=y)
+        np.add(plan.shift[1] + oy, y, out=y)
+    x[translating] = np.nan
+    y[translating] = np.nan
 
 
 def _slide(table: Table, column: Column) -> dict[str, Array]:
@@ -169,7 +193,9 @@ def _reaction(table: Table, column: Column) -> dict[str, Array]:
 def _magnitude(table: Table, column: Column) -> dict[str, Array]:
     fx, fy, _ = _forces(table).reactions[column.owner]
     n = len(table)
-    return {column.name: np.hypot(full(fx, n), full(fy, n))}
+    if not (is_array(fx) or is_array(fy)):
+        return {column.name: full(np.hypot(full(fx, 1), full(fy, 1))[0], n)}
+    return {column.name: np.hypot(full(fx, n), full(fy, n), out=rows_of(1, n)[0])}
 
 
 def _balancing(table: Table, column: Column) -> dict[str, Array]:
@@ -252,46 +278,53 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
     out: dict[str, Array] = {}
     wanted = [c for c in columns if c.family == "point" and c.level <= top]
     # a link's origin is in the state already; other points are rebuilt by slices
+    rebuilt = []
     for p in sorted({c.key[0] for c in wanted}):
         if plan.point_offset[p] == (0.0, 0.0):
             out.update(_origin(table, p, range(top + 1)))
-    points = {c.key[0]: _allocate(plan, c.key[0], range(top + 1), n) for c in wanted}
-    points = {
-        p: arrays for p, arrays in points.items() if f"{plan.points[p]}.x" not in out
-    }
+        else:
+            rebuilt.append(p)
+    points = _allocate(plan, rebuilt, range(top + 1), n)
     offsets = sorted({c.owner for c in columns if c.family == "offset"})
     off = {name: np.empty(n) for name in offsets}
     families = {c.family for c in columns}
     checks = np.empty((len(plan.drivers), n)) if "check" in families else None
     left = np.empty((2, n)) if "residual" in families else None
     loads = compile_loads(plan) if checks is not None or left is not None else None
+    # one slice holding every row reads the states as they are
+    whole = n <= CHUNK
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
-        part = state.rows(rows)
+        part = state if whole else state.rows(rows)
         bodies = motions(plan, part)
+        forces = table.force_state
+        if forces is not None and not whole and (offsets or loads is not None):
+            forces = forces.rows(rows)
         for p, arrays in points.items():
             _point(plan, bodies, p, arrays, rows)
         if offsets:
-            scale = _largest_reaction(table, rows)
+            assert forces is not None
+            scale = _largest_reaction(forces, rows.stop - start)
         for name in offsets:
-            fx, fy, couple = take_rows(_forces(table).reactions[name], rows)
+            assert forces is not None
+            fx, fy, couple = forces.reactions[name]
             off[name][rows] = offset(
                 plan.pairs[name], bodies, fx, fy, couple, scale, plan.scale
             )
         if loads is None:
             continue
         applied = applied_loads(plan, loads, bodies, part)
-        friction = _forces(table).rows(rows).friction if table.force_state else {}
+        friction = forces.friction if forces is not None else {}
         if checks is not None:
             # friction does work: its power counts like any load's
             rubbed = with_friction(plan, bodies, applied, friction)
-            speeds = take_rows(state.speed, rows)
+            speeds = part.speed
             for i in range(len(plan.drivers)):
                 checks[i, rows] = virtual_power(plan, bodies, rubbed, i, speeds[i])
         if left is not None:
             # a prismatic pair's friction force is in its reaction already
+            assert forces is not None
             rubbed = with_friction(plan, bodies, applied, friction, "R")
-            forces = _forces(table).rows(rows)
             left[:, rows] = residual(plan, bodies, rubbed, forces, rows.stop - start).T
     for arrays in points.values():
         out.update(arrays)
@@ -323,18 +356,22 @@ def _origin(table: Table, p: int, levels: Iterable[int]) -> dict[str, Array]:
     return out
 
 
-def _allocate(plan: Any, p: int, levels: Iterable[int], n: int) -> dict[str, Array]:
-    """Return empty columns for point ``p``'s ``levels``, by name."""
-    name = plan.points[p]
-    return {f"{name}.{part}": np.empty(n) for k in levels for part in POINT_PARTS[k]}
+def _allocate(
+    plan: Any, points: list[int], levels: Iterable[int], n: int
+) -> dict[int, dict[str, Array]]:
+    """Return empty columns for the ``levels`` of each of ``points``, by name."""
+    parts = [part for k in levels for part in POINT_PARTS[k]]
+    block = iter(rows_of(len(points) * len(parts), n))
+    return {
+        p: {f"{plan.points[p]}.{part}": next(block) for part in parts} for p in points
+    }
 
 
-def _largest_reaction(table: Table, rows: slice) -> Array:
-    """Return the largest reaction force at each of ``rows`` (N)."""
-    size = rows.stop - rows.start
+def _largest_reaction(forces: ForceState, size: int) -> Array:
+    """Return the largest reaction force at each of ``size`` positions (N)."""
     largest = np.zeros(size)
-    for fx, fy, _ in take_rows(_forces(table).reactions, rows).values():
-        largest = np.maximum(largest, np.hypot(full(fx, size), full(fy, size)))
+    for fx, fy, _ in forces.reactions.values():
+        np.maximum(largest, np.hypot(full(fx, size), full(fy, size)), out=largest)
     return largest
 
 
@@ -362,15 +399,16 @@ def _jerks(table: Table, points: list[int]) -> dict[str, Array]:
     plan, n = table.plan, len(table)
     state = table.motion(3)
     out: dict[str, Array] = {}
-    chunked = {}
+    rebuilt = []
     for p in points:
         if plan.point_offset[p] == (0.0, 0.0):
             out.update(_origin(table, p, (3,)))
         else:
-            chunked[p] = _allocate(plan, p, (3,), n)
+            rebuilt.append(p)
+    chunked = _allocate(plan, rebuilt, (3,), n)
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
-        bodies = motions(plan, state.rows(rows))
+        bodies = motions(plan, state if n <= CHUNK else state.rows(rows))
         for p, arrays in chunked.items():
             _point(plan, bodies, p, arrays, rows)
     for arrays in chunked.values():

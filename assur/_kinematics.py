@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._vec import Array, Leaf, Mask, is_array, take_rows
+from assur._vec import Array, Leaf, Mask, gather, is_array, take_rows
 from assur.groups._motion import Motion
 from assur.groups._pairs import slide
 from assur.groups.driver import motion
@@ -38,6 +38,8 @@ MAX_STEPS = 4000
 """Most continuation steps from the reference pose to one position."""
 LEVELS = 4
 """Position, velocity, acceleration and jerk."""
+CHUNK = 8192
+"""Positions whose jerks are solved at once (the sweep's own slices)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -109,7 +111,11 @@ class KinematicState:
 
     def rows(self, rows: Any) -> KinematicState:
         """Return the state at ``rows`` (a slice gives views, a mask copies)."""
-        motion, slide = take_rows((self.motion, self.slide), rows)
+        motion = tuple(
+            tuple(x[rows] if is_array(x) else x for x in entries)
+            for entries in self.motion
+        )
+        slide = take_rows(self.slide, rows)
         return KinematicState(
             self.drive[rows],
             take_rows(self.speed, rows),
@@ -421,13 +427,72 @@ def motions(plan: Plan, state: KinematicState, finished: bool = True) -> list[Mo
 
 
 def extend(plan: Plan, state: KinematicState) -> KinematicState:
-    """Return ``state`` with the jerks solved too (level 3), group by group."""
+    """Return ``state`` with the jerks solved too (level 3), group by group.
+
+    A long sweep is solved in slices of :data:`CHUNK` positions, as the sweep was;
+    only the jerks are new, the lower levels are the state's own arrays.
+    """
     if state.top >= 3:
         return state
+    if state.top != 2:
+        return state_of(plan, _jerks(plan, state), state.drive, _rates(state), 3)
+    n = len(state)
+    if n <= CHUNK:
+        bodies = _jerks(plan, state)
+        new = [(m.phi[3], m.ox[3], m.oy[3]) for m in bodies], _slide_jerks(plan, bodies)
+    else:
+        new = gather(n, _jerk_slices(plan, state))
+    motion = tuple(
+        (*e[0:3], j[0], *e[3:6], j[1], *e[6:9], j[2], e[9], e[10])
+        for e, j in zip(state.motion, new[0], strict=True)
+    )
+    slide = {name: (*values, new[1][name]) for name, values in state.slide.items()}
+    return KinematicState(
+        state.drive, state.speed, state.acceleration, motion, slide, 3
+    )
+
+
+def _jerk_slices(plan: Plan, state: KinematicState) -> Any:
+    """Yield each slice's rows and its links' and slides' jerks."""
+    n = len(state)
+    for start in range(0, n, CHUNK):
+        rows = slice(start, min(start + CHUNK, n))
+        bodies = _jerks(plan, state.rows(rows))
+        yield (
+            rows,
+            (
+                [(m.phi[3], m.ox[3], m.oy[3]) for m in bodies],
+                _slide_jerks(plan, bodies),
+            ),
+        )
+
+
+def _jerks(plan: Plan, state: KinematicState) -> list[Motion]:
+    """Return the motions of ``state`` with their jerks solved."""
     bodies = motions(plan, state, finished=False)
     for solver in plan.solvers:
         solver.derivative(bodies, 3, solver.linearize(bodies))
         for b in solver.bodies:
             bodies[b].finish()
-    rates = (state.speed, state.acceleration)
-    return state_of(plan, bodies, state.drive, rates, 3)
+    return bodies
+
+
+def _rates(state: KinematicState) -> tuple[tuple[Leaf, ...], tuple[Leaf, ...]]:
+    """Return the drivers' speeds and accelerations of ``state``."""
+    return state.speed, state.acceleration
+
+
+def _slide_jerks(plan: Plan, bodies: list[Motion]) -> dict[str, Leaf]:
+    """Return the jerk of every prismatic pair's slide (m/s^3), as :func:`_slides`."""
+    own = own_slides(plan)
+    out = {}
+    for name, pair in plan.pairs.items():
+        if pair.kind != "P":
+            continue
+        if name in own:
+            body, sign = own[name]
+            q = bodies[body].q[3]
+            out[name] = q if sign > 0 else -q
+        else:
+            out[name] = slide(pair, bodies, 3)
+    return out

@@ -13,16 +13,15 @@ from __future__ import annotations
 import contextlib
 import errno
 import os
-import secrets
-import shutil
 import stat
 import sys
-import tempfile
 from collections.abc import Callable, Iterator
-from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from assur.errors import AssurError, OutputError
+
+if TYPE_CHECKING:
+    from pathlib import Path
 
 __all__ = [
     "StdoutError",
@@ -190,6 +189,8 @@ def output_path(
     OutputError
         When the file cannot be written.
     """
+    from pathlib import Path
+
     target, in_place = _target(Path(path))
     where = path_text(path)
     if in_place:
@@ -224,6 +225,10 @@ def output_folder(
     OutputError
         When ``path`` is a file or the files cannot be written.
     """
+    import shutil
+    import tempfile
+    from pathlib import Path
+
     target = Path(path)
     where = path_text(path)
     if target.exists() and not target.is_dir():
@@ -265,12 +270,14 @@ def _target(path: Path) -> tuple[Path, bool]:
         raise OutputError(msg)
     if mode is not None and not stat.S_ISREG(mode):
         return path, True
-    real = Path(os.path.realpath(path))
+    real = path.__class__(os.path.realpath(path))
     return real, str(real).startswith(IN_PLACE)
 
 
 def _reserve(target: Path) -> Path:
     """Create an empty temporary file beside ``target``, with its permissions."""
+    import secrets
+
     try:
         mode = stat.S_IMODE(os.stat(target).st_mode)
     except OSError:

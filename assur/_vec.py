@@ -33,10 +33,15 @@ def is_array(value: Leaf) -> bool:
 
 
 def full(value: Leaf, n: int) -> Array:
-    """Return a leaf as an array of ``n`` values (a constant is repeated)."""
+    """Return a leaf as a read-only array of ``n`` values (a constant is repeated).
+
+    A constant is one value seen through a stride of zero: nothing is written per
+    position, whatever ``n``.
+    """
     if is_array(value):
         return value  # type: ignore[no-any-return]
-    out = np.full(n, np.nan if value is None else float(value))
+    one = np.array((np.nan if value is None else float(value),))
+    out: Array = np.ndarray((n,), np.float64, one, 0, (0,))
     out.flags.writeable = False
     return out
 
@@ -70,10 +75,26 @@ def allocate_like(tree: Any, n: int) -> Any:
     """Return a tree shaped as ``tree`` with an empty array (n,) for every array leaf.
 
     Constant leaves (quantities that do not change over a batch) stay as they are.
+    The float arrays are the rows of one block (see :func:`rows_of`).
     """
-    return rebuild(
-        tree, iter([np.empty(n) if is_array(x) else x for x in leaves(tree)])
-    )
+    values = leaves(tree)
+    floats = [is_array(x) and x.dtype == np.float64 for x in values]
+    block = iter(rows_of(sum(floats), n))
+    out = [
+        next(block) if real else np.empty(n, x.dtype) if is_array(x) else x
+        for x, real in zip(values, floats, strict=True)
+    ]
+    return rebuild(tree, iter(out))
+
+
+def rows_of(count: int, n: int) -> list[Array]:
+    """Return ``count`` empty arrays (n,), the rows of one block.
+
+    The system hands one large block out in huge pages (numpy asks for them), so
+    writing it first costs a fraction of what as many separate arrays of a long sweep
+    cost; the block lives as long as any of its rows.
+    """
+    return list(np.empty((count, n)))
 
 
 def write_rows(target: Any, piece: Any, rows: slice) -> None:

@@ -235,7 +235,13 @@ def _unexplained(
     An overflow or a singular force system, say; the warning names what and where.
     """
     arrays = _arrays(tree, top)
-    if not arrays or np.isfinite(np.add.reduce(arrays)).all():
+    if not arrays:
+        return
+    # one sum of them all is finite exactly when each of them is
+    total = arrays[0] + arrays[1] if len(arrays) > 1 else arrays[0].copy()
+    for x in arrays[2:]:
+        total += x
+    if np.isfinite(total).all():
         return
     explained = np.zeros(given.shape[0], dtype=bool)
     for trouble in found:

@@ -10,9 +10,7 @@ import json
 import math
 import re
 import sys
-import tomllib
-from pathlib import Path
-from typing import Any, NoReturn
+from typing import TYPE_CHECKING, Any, NoReturn
 
 from assur import _output
 from assur._output import (
@@ -39,6 +37,9 @@ from assur.model import (
     Toward,
     key_text,
 )
+
+if TYPE_CHECKING:
+    from pathlib import Path
 
 __all__ = ["dumps", "load", "loads", "parse", "save", "write_csv", "write_parquet"]
 
@@ -94,6 +95,8 @@ def load(path: str | Path) -> Mechanism:
     >>> load(path) == catalog.four_bar()
     True
     """
+    from pathlib import Path
+
     path = Path(path)
     where = path_text(path)
     data = _read(path, where)
@@ -147,6 +150,8 @@ def loads(text: str, json_format: bool = False) -> Mechanism:
     ModelError
         With a one-line message naming the entry and what is wrong.
     """
+    import tomllib
+
     kind = "JSON" if json_format else "TOML"
     try:
         data = (

@@ -277,10 +277,13 @@ def has_friction(plan: Plan) -> bool:
 
 def _size(plan: Plan, bodies: list[Motion]) -> int:
     """Return the number of positions the motions hold."""
-    return max(
-        (int(np.size(v)) for m in bodies for v in (m.phi[0], m.ox[0], m.oy[0])),
-        default=1,
-    )
+    sizes = [
+        v.size
+        for m in bodies
+        for v in (m.phi[0], m.ox[0], m.oy[0])
+        if v.__class__ is np.ndarray
+    ]
+    return max(sizes, default=1)
 
 
 def _shares(record: Equilibrium, wrenches: dict[str, Wrench]) -> list[Any]:
@@ -455,9 +458,12 @@ def residual(
             total[0, d.body] += fx
             total[1, d.body] += fy
             total[2, d.body] += m.ox[0] * fy - m.oy[0] * fx
-    moving = total[:, 1:]
-    ox = np.stack([full(bodies[b].ox[0], n) for b in range(1, len(bodies))])
-    oy = np.stack([full(bodies[b].oy[0], n) for b in range(1, len(bodies))])
-    moment = np.abs(moving[2] - (ox * moving[1] - oy * moving[0])).max(axis=0)
-    force = np.maximum(np.abs(moving[0]).max(axis=0), np.abs(moving[1]).max(axis=0))
-    return np.stack((force, moment), axis=-1)
+    out = np.zeros((n, 2))
+    force, moment = out[:, 0], out[:, 1]
+    for b in range(1, len(bodies)):
+        fx, fy, tau = total[:, b]
+        m = bodies[b]
+        np.maximum(force, np.abs(fx), out=force)
+        np.maximum(force, np.abs(fy), out=force)
+        np.maximum(moment, np.abs(tau - (m.ox[0] * fy - m.oy[0] * fx)), out=moment)
+    return out

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import os
-import tomllib
 from collections.abc import Mapping
 
 from assur.errors import ModelError
@@ -33,6 +32,8 @@ def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
     ModelError
         When the file cannot be read or an answer is not a number.
     """
+    import tomllib
+
     where = os.fspath(path)
     try:
         with open(path, "rb") as stream:

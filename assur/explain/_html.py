@@ -6,7 +6,6 @@ rendered by the browser itself (MathML Core).
 
 from __future__ import annotations
 
-from html import escape
 from typing import TYPE_CHECKING
 
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
@@ -31,6 +30,8 @@ td, th { border: 1px solid #d1d5db; padding: 0.2rem 0.5rem; text-align: left; }
 
 def inline(text: str) -> str:
     """Return text with its inline mathematics as MathML, the rest escaped."""
+    from html import escape
+
     return "".join(
         mathml(part) if is_math else escape(part) for is_math, part in segments(text)
     )
@@ -64,6 +65,8 @@ def html_body(note: Note) -> str:
 
 def html_page(note: Note) -> str:
     """Return the note as a whole page."""
+    from html import escape
+
     title = inline(note.title)
     return (
         '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'

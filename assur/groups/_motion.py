@@ -20,6 +20,8 @@ __all__ = ["Motion", "direction", "point", "rotated"]
 
 Vec = tuple[Any, Any]
 """A vector as ``(x, y)``, each an array (n,) or a float."""
+ORIGIN = (0.0, 0.0)
+"""The offset of a body's origin from itself."""
 
 
 class Motion:
@@ -121,6 +123,8 @@ def point(m: Motion, d: tuple[float, float], k: int) -> Vec:
     :math:`\ddot u = \alpha u^\perp - \omega^2 u` and
     :math:`\dddot u = (\dot\alpha - \omega^3) u^\perp - 3\omega\alpha u`.
     """
+    if d == ORIGIN:
+        return m.ox[k], m.oy[k]  # the body's origin itself: nothing to compute
     memo = m.memo
     if memo is not None:
         found = memo.get((d, k))
