@@ -1,6 +1,7 @@
 """Summaries of many variants of one topology, solved together in one batch.
 
-The variants' plans are stacked (:mod:`assur._stack`) and their positions solved at
+The variants' plan comes stacked (compiled at once by :mod:`assur._variants`, or one
+plan per variant stacked by :mod:`assur._stack`) and their positions are solved at
 once by the same kernels as :func:`assur.forces`; the force table of the batch is then
 reduced to one summary per variant (:class:`assur.summary.Summary`). A variant that
 meets any trouble (a group that does not close or comes near a dead centre, values
@@ -10,6 +11,7 @@ so that it fails or warns exactly as a separate call does.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -19,33 +21,44 @@ from assur import kinetostatics as _kst
 from assur._branches import CANDIDATE, STEP, TURNS
 from assur._loads import compile_loads
 from assur._stack import restack, stack_loads, stack_plans
+from assur._variants import Many
 from assur._vec import Array, Mask, is_array, leaves
-from assur.analysis import CHUNK, driver_rates, to_si
+from assur.analysis import CHUNK, EXACT_DEGREES, driver_rates, to_si
 from assur.columns import selection
 from assur.plan import Plan
 from assur.summary import Summary
 from assur.table import Table
 
-__all__ = ["CHUNK", "summaries"]
+__all__ = ["CHUNK", "stacked", "summaries"]
 
 
-def summaries(plans: list[Plan], given: Array) -> list[dict[str, float] | None]:
-    """Return each variant's summary over driver positions ``given`` (n, 1), deg.
-
-    ``plans`` are variants of one topology (the same :func:`assur._stack.signature`),
-    driven by one crank. None for a variant to be analysed on its own (see the
-    module's docstring).
+def stacked(plans: list[Plan], repeats: int) -> Many:
+    """Return the plans of variants of one topology stacked, each over ``repeats`` rows.
 
     Raises
     ------
     Unstackable
         When the plans differ in more than their numbers.
     """
-    k, m = len(plans), given.shape[0]
-    plan = stack_plans(plans, m)
-    loads = stack_loads([compile_loads(p) for p in plans], m)
-    drive = np.concatenate([to_si(p, given) for p in plans])
-    rates = driver_rates(plans[0], None, None, k * m)
+    return Many(
+        stack_plans(plans, repeats),
+        stack_loads([compile_loads(p) for p in plans], repeats),
+        np.array([p.drivers[0].reference for p in plans]),
+    )
+
+
+def summaries(batch: Many, first: Plan, given: Array) -> list[dict[str, float] | None]:
+    """Return each variant's summary over driver positions ``given`` (n, 1), deg.
+
+    ``batch`` holds variants of one topology, driven by one crank, each over the
+    ``n`` rows of ``given`` in turn; ``first`` is one of their plans (the one whose
+    structure they share). None for a variant to be analysed on its own (see the
+    module's docstring).
+    """
+    k, m = batch.references.shape[0], given.shape[0]
+    plan, loads = batch.plan, batch.loads
+    drive = _drive(first, batch.references, given)
+    rates = driver_rates(first, None, None, k * m)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         bodies, found = _kin.solve(plan, drive, *rates, top=2)
         state = _kin.state_of(plan, bodies, drive, rates, 2)
@@ -58,8 +71,9 @@ def summaries(plans: list[Plan], given: Array) -> list[dict[str, float] | None]:
     for leaf in leaves((forces.reactions, forces.balancing, forces.shaking)):
         if is_array(leaf):
             bad |= ~np.isfinite(leaf)
-    alone = bad.reshape(k, m).any(axis=1) | _near_change_points(plans, plan, drive)
-    chosen = selection(plans[0], True, None)
+    near = _near_change_points(batch.references, plan, drive)
+    alone = bad.reshape(k, m).any(axis=1) | near
+    chosen = selection(first, True, None)
     table = Table(
         plan, chosen.columns, np.tile(given, (k, 1)), state, forces, _index=chosen.index
     )
@@ -73,7 +87,22 @@ def summaries(plans: list[Plan], given: Array) -> list[dict[str, float] | None]:
     ]
 
 
-def _near_change_points(plans: list[Plan], stacked: Plan, drive: Array) -> Mask:
+def _drive(first: Plan, references: Array, given: Array) -> Array:
+    """Return the driver positions of every variant in turn, rad (see ``to_si``).
+
+    Angles below :data:`~assur.analysis.EXACT_DEGREES` are converted as they are, the
+    same for every variant; larger ones are reduced about each variant's reference.
+    """
+    if not first.newton and np.all(np.abs(given) < EXACT_DEGREES):
+        return np.tile(to_si(first, given), (references.shape[0], 1))
+    out = []
+    for reference in references.tolist():
+        driver = dataclasses.replace(first.drivers[0], reference=reference)
+        out.append(to_si(dataclasses.replace(first, drivers=(driver,)), given))
+    return np.concatenate(out)
+
+
+def _near_change_points(references: Array, stacked: Plan, drive: Array) -> Mask:
     """Mark the variants whose path from the reference pose may meet a change point.
 
     :func:`assur._branches.change_points` scans a grid for minima of each dyad's
@@ -81,11 +110,12 @@ def _near_change_points(plans: list[Plan], stacked: Plan, drive: Array) -> Mask:
     discriminants stay above it on that grid all along its path (and a step beyond)
     has none there, and its sweep keeps the reference pose's branches. Variants
     driven beyond the scanned window are marked too. ``stacked`` is the plans'
-    stacked plan, each variant over its ``drive`` positions.
+    stacked plan, each variant over its ``drive`` positions; ``references`` (k,) are
+    the variants' driver positions in their reference poses, rad.
     """
-    k = len(plans)
+    k = references.shape[0]
     m = drive.shape[0] // k
-    reference = np.array([p.drivers[0].reference for p in plans])
+    reference = references
     x = drive[:, 0].reshape(k, m) - reference[:, None]
     low = np.minimum(x.min(axis=1, initial=0.0), 0.0)
     high = np.maximum(x.max(axis=1, initial=0.0), 0.0)

@@ -63,7 +63,8 @@ class Rows(tuple):  # type: ignore[type-arg]
 def signature(plan: Plan, loads: LoadPlan) -> Hashable | None:
     """Return what variants stacked together must share; None if ``plan`` cannot be.
 
-    The names and kinds of links, pairs, groups and drivers; the numbers the kernels
+    The names and kinds of links, pairs, groups and drivers; the slide lines'
+    directions (the kernels take them for constants); the numbers the kernels
     branch on (friction, the drivers' rates, where the core's origin lies, gravity);
     which links carry a mass. Groups solved by Newton's method, friction, tabulated
     loads and drivers other than one crank are analysed one variant at a time.
@@ -78,7 +79,8 @@ def signature(plan: Plan, loads: LoadPlan) -> Hashable | None:
     return (
         plan.bodies,
         tuple(
-            (p.name, p.kind, p.first, p.second, p.virtual) for p in plan.pairs.values()
+            (p.name, p.kind, p.first, p.second, p.virtual, p.axis)
+            for p in plan.pairs.values()
         ),
         tuple((s.label, s.bodies, type(s).__name__) for s in plan.solvers),
         tuple((d.pair.name, d.body, d.omega, d.epsilon) for d in plan.drivers),

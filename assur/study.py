@@ -17,9 +17,10 @@ from typing import Any
 
 import numpy as np
 
-from assur._batch import CHUNK, summaries
+from assur._batch import CHUNK, stacked, summaries
 from assur._loads import compile_loads
 from assur._stack import Unstackable, signature
+from assur._variants import Template, compile_many, form, numbers, template
 from assur._vec import Array
 from assur.analysis import forces, positions
 from assur.errors import AssurError, AssurWarning, UsageError
@@ -181,9 +182,10 @@ def summarise(
     count = len(next(iter(parameters.values())))
     rows: list[dict[str, Any]] = []
     size = max(1, CHUNK // max(1, angles.shape[0]))
+    templates: dict[Any, Template | None] = {}
     for first in range(0, count, size):
         block = range(first, min(first + size, count))
-        rows += _block(factory, parameters, angles, block)
+        rows += _block(factory, parameters, angles, block, templates)
     names: dict[str, None] = dict.fromkeys(parameters)
     for row in rows:
         names.update(dict.fromkeys(row))
@@ -195,12 +197,20 @@ def summarise(
 
 
 def _block(
-    factory: Factory, parameters: dict[str, Array], angles: Array, block: range
+    factory: Factory,
+    parameters: dict[str, Array],
+    angles: Array,
+    block: range,
+    templates: dict[Any, Template | None],
 ) -> list[dict[str, Any]]:
-    """Return the rows of the variants ``block``, those of one topology batched."""
+    """Return the rows of the variants ``block``, those of one form batched.
+
+    The variants of one :func:`assur._variants.form` are compiled at once against
+    its template (kept in ``templates`` from block to block); those the template does
+    not serve are compiled one by one and stacked (:func:`_compiled`).
+    """
     rows: list[dict[str, Any]] = []
-    groups: dict[Any, list[tuple[int, Mechanism, Plan]]] = {}
-    alone: list[tuple[int, Mechanism]] = []
+    forms: dict[Any, list[tuple[int, Mechanism]]] = {}
     for i in block:
         p = _variant(parameters, i)
         rows.append({**p, "error": "", "warning": ""})
@@ -209,6 +219,68 @@ def _block(
         except (AssurError, ValueError, ArithmeticError) as err:
             rows[-1]["error"] = _line(err)
             continue
+        forms.setdefault(form(mech), []).append((i, mech))
+    alone: list[tuple[int, Mechanism]] = []
+    rest: list[tuple[int, Mechanism]] = []
+    for key, members in forms.items():
+        model = _template(templates, key, members, rest)
+        if model is None:
+            alone += members
+            continue
+        table = np.array([numbers(mech) for _, mech in members])
+        many, doubtful = compile_many(model, table, angles.shape[0])
+        rest += [x for x, d in zip(members, doubtful.tolist(), strict=True) if d]
+        if many is None:
+            continue
+        chosen = [x for x, d in zip(members, doubtful.tolist(), strict=True) if not d]
+        found = summaries(many, model.plan, positions(model.plan, angles))
+        alone += _fill(rows, block.start, chosen, found)
+    alone += _compiled(rows, block.start, rest, angles)
+    for i, mech in alone:
+        rows[i - block.start].update(_alone(mech, angles))
+    return rows
+
+
+def _template(
+    templates: dict[Any, Template | None],
+    key: Any,
+    members: list[tuple[int, Mechanism]],
+    rest: list[tuple[int, Mechanism]],
+) -> Template | None:
+    """Return the template of the form ``key``, compiling one of ``members`` if new.
+
+    A member that does not compile moves to ``rest`` (compiled again there, it fails
+    as a separate call does); None when the form's plans cannot be stacked (every
+    member is then analysed on its own) or when no member compiles.
+    """
+    if key in templates:
+        return templates[key]
+    while members:
+        try:
+            model = template(members[0][1])
+        except AssurError:
+            rest.append(members.pop(0))
+            continue
+        if len(templates) >= 64:
+            templates.clear()
+        templates[key] = model
+        return model
+    return None
+
+
+def _compiled(
+    rows: list[dict[str, Any]],
+    start: int,
+    members: list[tuple[int, Mechanism]],
+    angles: Array,
+) -> list[tuple[int, Mechanism]]:
+    """Solve ``members`` each compiled on its own, those of one signature stacked.
+
+    Returns the members to be analysed alone.
+    """
+    groups: dict[Any, list[tuple[int, Mechanism, Plan]]] = {}
+    alone: list[tuple[int, Mechanism]] = []
+    for i, mech in members:
         try:
             plan = compile_plan(mech)
             key = signature(plan, compile_loads(plan))
@@ -218,20 +290,32 @@ def _block(
             alone.append((i, mech))
         else:
             groups.setdefault(key, []).append((i, mech, plan))
-    for members in groups.values():
-        plans = [plan for _, _, plan in members]
+    for group in groups.values():
+        plans = [plan for _, _, plan in group]
         try:
-            found = summaries(plans, positions(plans[0], angles))
+            found = summaries(
+                stacked(plans, angles.shape[0]), plans[0], positions(plans[0], angles)
+            )
         except Unstackable:
             found = [None] * len(plans)
-        for (i, mech, _), values in zip(members, found, strict=True):
-            if values is None:
-                alone.append((i, mech))
-            else:
-                rows[i - block.start].update(values)
-    for i, mech in alone:
-        rows[i - block.start].update(_alone(mech, angles))
-    return rows
+        alone += _fill(rows, start, [(i, m) for i, m, _ in group], found)
+    return alone
+
+
+def _fill(
+    rows: list[dict[str, Any]],
+    start: int,
+    members: list[tuple[int, Mechanism]],
+    found: list[dict[str, float] | None],
+) -> list[tuple[int, Mechanism]]:
+    """Put each member's summary in its row; return those without one."""
+    alone = []
+    for (i, mech), values in zip(members, found, strict=True):
+        if values is None:
+            alone.append((i, mech))
+        else:
+            rows[i - start].update(values)
+    return alone
 
 
 def _alone(mech: Mechanism, angles: Array) -> dict[str, Any]:
