@@ -130,11 +130,13 @@ def _near_change_points(references: Array, stacked: Plan, drive: Array) -> Mask:
     bodies = _kin.drivers(plan, grid, (0.0,), (0.0,))
     near = np.zeros(n, dtype=bool)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        for solver in plan.solvers:
+        for i, solver in enumerate(plan.solvers):
             values = solver.discriminant(bodies)
             if values is not None:
                 near |= ~(np.broadcast_to(values, (n,)) >= CANDIDATE)
-            solver.assemble(bodies, n)
+            # a group is assembled only for the discriminants of those after it
+            if i < len(plan.solvers) - 1:
+                solver.assemble(bodies, n)
     # only the grid's points along each variant's own path count
     along = (steps[None, :] >= np.floor(low / STEP)[:, None] - 1) & (
         steps[None, :] <= np.ceil(high / STEP)[:, None] + 1

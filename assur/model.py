@@ -366,8 +366,14 @@ def _parts(entry: str, value: Any, kind: type) -> tuple[Any, ...]:
     return items
 
 
+_SIMPLE = frozenset({float, int, str})
+
+
 def _plain(value: Any) -> Any:
     """Return lists and arrays as tuples, numpy numbers as Python's (hashable)."""
+    # the common case, a tuple of plain numbers or names, is kept as it is
+    if value.__class__ is tuple and all(v.__class__ in _SIMPLE for v in value):
+        return value
     if isinstance(value, np.ndarray | list | tuple):
         return tuple(_plain(v) for v in value)
     if isinstance(value, np.generic):
@@ -776,20 +782,43 @@ def _validate_load(
         _fail(f"{entry}.torque", _number_fault(load.torque))
 
 
+def _resolver(mech: Mechanism) -> Any:
+    """Return :func:`resolve_point` for ``mech``, quicker on names of coordinates.
+
+    Validation resolves every point, most of them names of joints given as
+    coordinates: those are looked up once. Anything else (a name of a name, a Toward
+    of such names, a fault) goes through resolve_point, so results and messages are
+    the same.
+    """
+    plain: dict[str, np.ndarray] = {}
+    for item in (*mech.joints, *mech.points):
+        if item.at.__class__ is tuple and item.name not in plain:
+            plain[item.name] = np.asarray(item.at, dtype=float)
+
+    def resolve(spec: PointSpec, entry: str = "point") -> np.ndarray:
+        # names are unique by now: ``plain`` holds the one point of each name
+        if spec.__class__ is str and spec in plain:
+            return plain[spec]  # type: ignore[index]
+        if isinstance(spec, Toward) and spec.start in plain and spec.toward in plain:
+            return _toward(spec, plain[spec.start], plain[spec.toward], entry)
+        return resolve_point(mech, spec, entry)
+
+    return resolve
+
+
 def _check_resolvable(mech: Mechanism) -> None:
     """Every point must have coordinates (a from/toward pair must not coincide)."""
+    resolve = _resolver(mech)
     for joint in mech.joints:
-        resolve_point(mech, joint.at, f"joints.{key_text(joint.name)}.at")
+        resolve(joint.at, f"joints.{key_text(joint.name)}.at")
     for point in mech.points:
-        resolve_point(mech, point.at, f"points.{key_text(point.name)}.at")
+        resolve(point.at, f"points.{key_text(point.name)}.at")
     for link in mech.links:
         if link.center is not None:
-            resolve_point(mech, link.center, f"links.{key_text(link.name)}.center")
+            resolve(link.center, f"links.{key_text(link.name)}.center")
         if link.axis is not None:
             entry = f"links.{key_text(link.name)}.axis"
-            a, b = (
-                resolve_point(mech, p, f"{entry}[{i}]") for i, p in enumerate(link.axis)
-            )
+            a, b = (resolve(p, f"{entry}[{i}]") for i, p in enumerate(link.axis))
             if _coincide(a, b):
                 _fail(
                     entry,
@@ -799,22 +828,23 @@ def _check_resolvable(mech: Mechanism) -> None:
                 )
     for index, load in enumerate(mech.loads):
         if load.at is not None:
-            resolve_point(mech, load.at, f"loads[{index}].at")
+            resolve(load.at, f"loads[{index}].at")
 
 
 def _check_cranks(mech: Mechanism) -> None:
     """Refuse a crank whose joints all sit at its pivot: it would drive nothing."""
+    resolve = _resolver(mech)
     for index, driver in enumerate(mech.drivers):
         joint = mech.joint(driver.joint)
         if joint.kind != "revolute":
             continue
         link = joint.links[1] if joint.links[0] == GROUND else joint.links[0]
-        pivot = resolve_point(mech, joint.at)
+        pivot = resolve(joint.at)
         others = [j for j in mech.joints if j is not joint and link in j.links]
         moving = [
             j
             for j in others
-            if j.kind != "revolute" or not _coincide(pivot, resolve_point(mech, j.at))
+            if j.kind != "revolute" or not _coincide(pivot, resolve(j.at))
         ]
         if others and not moving:
             names = ", ".join(describe(j.name) for j in others[:4])
@@ -867,15 +897,20 @@ def resolve_point(
     if isinstance(spec, Toward):
         a = resolve_point(mech, spec.start, entry, _depth + 1)
         b = resolve_point(mech, spec.toward, entry, _depth + 1)
-        if _coincide(a, b):
-            _fail(
-                entry,
-                f"points {describe(spec.start)} and {describe(spec.toward)} coincide; "
-                "expected two distinct points",
-            )
-        length = float(np.hypot(*(b - a)))
-        return a + (b - a) * (spec.distance / length)
+        return _toward(spec, a, b, entry)
     return np.asarray(spec, dtype=float)
+
+
+def _toward(spec: Toward, a: np.ndarray, b: np.ndarray, entry: str) -> np.ndarray:
+    """Return the point of ``spec`` from its two points ``a`` and ``b`` resolved."""
+    if _coincide(a, b):
+        _fail(
+            entry,
+            f"points {describe(spec.start)} and {describe(spec.toward)} coincide; "
+            "expected two distinct points",
+        )
+    length = float(np.hypot(*(b - a)))
+    return a + (b - a) * (spec.distance / length)
 
 
 def point_links(mech: Mechanism) -> dict[str, tuple[str, ...]]:
