@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 from assur._loads import LoadPlan, compile_loads
-from assur._stack import Rows, signature
+from assur._stack import Rows, repeat, signature
 from assur._vec import Array, Mask, wrap
 from assur.groups._dyad import (
     APART,
@@ -254,7 +254,8 @@ def compile_many(
     branches: list[Array] = []
     if t.solvers:
         motions = tuple(
-            Motion.fixed(origins[:, b, 0], origins[:, b, 1])
+            # each variant's origin: the kernels take arrays wherever numbers go
+            Motion.fixed(origins[:, b, 0], origins[:, b, 1])  # type: ignore[arg-type]
             for b in range(len(t.bodies))
         )
         plain = _pair_plans(t, offsets, _as_is)
@@ -272,7 +273,7 @@ def compile_many(
         chosen = values[ok]
         if np.all(chosen == chosen[0]):
             return float(chosen[0])
-        return np.repeat(chosen, repeats)
+        return repeat(chosen, repeats)
 
     plan, references = _plan(model, rows, leaf, offsets, origins, scale, branches)
     references = references[ok]
@@ -362,8 +363,8 @@ def _branch(
     centre.
     """
     misses = []
-    for branch in (1.0, -1.0):
-        q = dyad.closure(dyad, list(motions), branch)
+    for sign in (1.0, -1.0):
+        q = dyad.closure(dyad, list(motions), sign)
         parts = [
             np.abs(wrap(x)) if e.kind == "R" else np.abs(x) / scale
             for x, e in zip(q, dyad.ext, strict=True)
@@ -376,7 +377,7 @@ def _branch(
     if dyad.gap is not None:  # a kind with two branches
         doubtful |= ~(other > UNDECIDED)
     branch = np.where(lower, -1.0, 1.0)
-    chosen = dataclasses.replace(dyad, branch=branch)
+    chosen = dataclasses.replace(dyad, branch=branch)  # type: ignore[arg-type]
     reference = list(motions)
     chosen.assemble(reference, len(branch))
     with np.errstate(invalid="ignore", divide="ignore"):

@@ -462,7 +462,22 @@ def _control(name: str) -> str | None:
     return None
 
 
+_GOOD_NAMES: set[str] = set()
+"""Names found valid already: the variants of a study repeat their names, and the
+check reads every character's Unicode category."""
+
+
 def _check_name(entry: str, name: object) -> None:
+    if name.__class__ is str and name in _GOOD_NAMES:
+        return
+    _check_new_name(entry, name)
+    if len(_GOOD_NAMES) >= 4096:
+        _GOOD_NAMES.clear()
+    _GOOD_NAMES.add(name)  # type: ignore[arg-type]
+
+
+def _check_new_name(entry: str, name: object) -> None:
+    """Check a name not met before: text, no reserved or control character."""
     if not isinstance(name, str) or not name or any(c in name for c in RESERVED):
         _fail(
             entry,
@@ -791,9 +806,11 @@ def _resolver(mech: Mechanism) -> Any:
     the same.
     """
     plain: dict[str, np.ndarray] = {}
-    for item in (*mech.joints, *mech.points):
-        if item.at.__class__ is tuple and item.name not in plain:
-            plain[item.name] = np.asarray(item.at, dtype=float)
+    for name, at in [(j.name, j.at) for j in mech.joints] + [
+        (p.name, p.at) for p in mech.points
+    ]:
+        if at.__class__ is tuple and name not in plain:
+            plain[name] = np.asarray(at, dtype=float)
 
     def resolve(spec: PointSpec, entry: str = "point") -> np.ndarray:
         # names are unique by now: ``plain`` holds the one point of each name
