@@ -71,7 +71,7 @@ def summaries(batch: Many, first: Plan, given: Array) -> list[dict[str, float] |
     for leaf in leaves((forces.reactions, forces.balancing, forces.shaking)):
         if is_array(leaf):
             bad |= ~np.isfinite(leaf)
-    near = _near_change_points(batch.references, plan, drive)
+    near = _near_change_points(batch, drive)
     alone = bad.reshape(k, m).any(axis=1) | near
     chosen = selection(first, True, None)
     table = Table(
@@ -102,20 +102,19 @@ def _drive(first: Plan, references: Array, given: Array) -> Array:
     return np.concatenate(out)
 
 
-def _near_change_points(references: Array, stacked: Plan, drive: Array) -> Mask:
+def _near_change_points(batch: Many, drive: Array) -> Mask:
     """Mark the variants whose path from the reference pose may meet a change point.
 
     :func:`assur._branches.change_points` scans a grid for minima of each dyad's
     discriminant below :data:`~assur._branches.CANDIDATE`; a variant whose
     discriminants stay above it on that grid all along its path (and a step beyond)
     has none there, and its sweep keeps the reference pose's branches. Variants
-    driven beyond the scanned window are marked too. ``stacked`` is the plans'
-    stacked plan, each variant over its ``drive`` positions; ``references`` (k,) are
-    the variants' driver positions in their reference poses, rad.
+    driven beyond the scanned window are marked too. ``batch`` holds the variants,
+    each over its ``drive`` positions.
     """
-    k = references.shape[0]
+    reference = batch.references
+    k = reference.shape[0]
     m = drive.shape[0] // k
-    reference = references
     x = drive[:, 0].reshape(k, m) - reference[:, None]
     low = np.minimum(x.min(axis=1, initial=0.0), 0.0)
     high = np.maximum(x.max(axis=1, initial=0.0), 0.0)
@@ -126,7 +125,10 @@ def _near_change_points(references: Array, stacked: Plan, drive: Array) -> Mask:
     )
     grid = (reference[:, None] + steps[None, :] * STEP).reshape(-1, 1)
     n = grid.shape[0]
-    plan = restack(stacked, m, steps.size)
+    if batch.again is not None:
+        plan = batch.again(steps.size)
+    else:
+        plan = restack(batch.plan, m, steps.size)
     bodies = _kin.drivers(plan, grid, (0.0,), (0.0,))
     near = np.zeros(n, dtype=bool)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):

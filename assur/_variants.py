@@ -207,11 +207,14 @@ class Many:
 
     ``plan`` and ``loads`` hold each variant's numbers over ``repeats`` rows in turn;
     ``references`` (k,) is each variant's driver position in the reference pose (rad).
+    ``again(count)``, when given, builds the plan with each variant over ``count``
+    rows (cheaper than :func:`assur._stack.restack`, which walks the whole plan).
     """
 
     plan: Plan
     loads: LoadPlan
     references: Array
+    again: Callable[[int], Plan] | None = None
 
 
 def compile_many(
@@ -269,16 +272,24 @@ def compile_many(
     if not ok.any():
         return None, doubtful
 
-    def leaf(values: Array) -> Any:
-        chosen = values[ok]
-        if np.all(chosen == chosen[0]):
-            return float(chosen[0])
-        return repeat(chosen, repeats)
+    def leaves(count: int) -> Leaf:
+        def leaf(values: Array) -> Any:
+            chosen = values[ok]
+            if np.all(chosen == chosen[0]):
+                return float(chosen[0])
+            return repeat(chosen, count)
 
+        return leaf
+
+    def again(count: int) -> Plan:
+        found = _plan(model, rows, leaves(count), offsets, origins, scale, branches)
+        return found[0]
+
+    leaf = leaves(repeats)
     plan, references = _plan(model, rows, leaf, offsets, origins, scale, branches)
     references = references[ok]
     loads = _loads(model, rows, leaf, origins)
-    return Many(plan, loads, references), doubtful
+    return Many(plan, loads, references, again), doubtful
 
 
 def _as_is(values: Array) -> Array:

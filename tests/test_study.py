@@ -269,6 +269,7 @@ def _scaled(mech, factor):
 )
 def test_variants_compiled_at_once_hold_their_own_plans_numbers(name):
     from assur._batch import stacked
+    from assur._stack import restack
     from assur._variants import compile_many, form, numbers, template
     from assur.plan import compile_plan
 
@@ -282,6 +283,8 @@ def test_variants_compiled_at_once_hold_their_own_plans_numbers(name):
     each = stacked([compile_plan(m) for m in variants], 5)
     _same(many.plan, each.plan)
     _same(many.loads, each.loads)
+    # the plan over another number of rows (the change-point screen's grid)
+    _same(many.again(7), restack(each.plan, 5, 7))
     np.testing.assert_array_equal(many.references, each.references)
 
 
