@@ -123,12 +123,33 @@ def _near_change_points(batch: Many, drive: Array) -> Mask:
     steps = np.arange(
         math.floor(low.min() / STEP) - 1, math.ceil(high.max() / STEP) + 2
     )
+    # the grid in parts of equal length, each at most CHUNK rows (its temporaries
+    # stay below the allocator's mmap threshold); one plan serves every part
+    parts = max(1, math.ceil(k * steps.size / CHUNK))
+    length = math.ceil(steps.size / parts)
+    steps = np.arange(steps[0], steps[0] + parts * length)
+    if batch.again is not None:
+        plan = batch.again(length)
+    else:
+        plan = restack(batch.plan, m, length)
+    near = np.concatenate(
+        [
+            _below(plan, reference, steps[p * length : (p + 1) * length])
+            for p in range(parts)
+        ],
+        axis=1,
+    )
+    # only the grid's points along each variant's own path count
+    along = (steps[None, :] >= np.floor(low / STEP)[:, None] - 1) & (
+        steps[None, :] <= np.ceil(high / STEP)[:, None] + 1
+    )
+    return outside | (near & along).any(axis=1)
+
+
+def _below(plan: Plan, reference: Array, steps: Array) -> Mask:
+    """Mark the grid's points (k, steps) where a discriminant is below CANDIDATE."""
     grid = (reference[:, None] + steps[None, :] * STEP).reshape(-1, 1)
     n = grid.shape[0]
-    if batch.again is not None:
-        plan = batch.again(steps.size)
-    else:
-        plan = restack(batch.plan, m, steps.size)
     bodies = _kin.drivers(plan, grid, (0.0,), (0.0,))
     near = np.zeros(n, dtype=bool)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
@@ -139,8 +160,4 @@ def _near_change_points(batch: Many, drive: Array) -> Mask:
             # a group is assembled only for the discriminants of those after it
             if i < len(plan.solvers) - 1:
                 solver.assemble(bodies, n)
-    # only the grid's points along each variant's own path count
-    along = (steps[None, :] >= np.floor(low / STEP)[:, None] - 1) & (
-        steps[None, :] <= np.ceil(high / STEP)[:, None] + 1
-    )
-    return outside | (near.reshape(k, -1) & along).any(axis=1)
+    return near.reshape(reference.shape[0], -1)
