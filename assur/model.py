@@ -423,6 +423,8 @@ def _number(value: object) -> bool:
 
 def _finite(value: object) -> bool:
     """Whether ``value`` is a number of magnitude at most :data:`LARGEST`."""
+    if value.__class__ is float:  # the common case, checked first
+        return abs(value) <= LARGEST  # type: ignore[arg-type]
     return _number(value) and abs(value) <= LARGEST  # type: ignore[arg-type]
 
 
