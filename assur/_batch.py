@@ -81,9 +81,10 @@ def summaries(batch: Many, first: Plan, given: Array) -> list[dict[str, float] |
     with np.errstate(invalid="ignore"):
         summary.add(table)
         values = summary.results()
+    names = list(values)
+    each = np.column_stack([values[name] for name in names]).tolist()
     return [
-        None if alone[i] else {name: float(v[i]) for name, v in values.items()}
-        for i in range(k)
+        None if alone[i] else dict(zip(names, each[i], strict=True)) for i in range(k)
     ]
 
 

@@ -282,7 +282,10 @@ def compile_many(
         return leaf
 
     def again(count: int) -> Plan:
-        found = _plan(model, rows, leaves(count), offsets, origins, scale, branches)
+        # for the change-point screen, which reads no reported point
+        found = _plan(
+            model, rows, leaves(count), offsets, origins, scale, branches, False
+        )
         return found[0]
 
     leaf = leaves(repeats)
@@ -412,8 +415,12 @@ def _plan(
     origins: Array,
     scale: Array,
     branches: list[Array],
+    points: bool = True,
 ) -> tuple[Plan, Array]:
-    """Return the stacked plan, and every variant's reference driver position."""
+    """Return the stacked plan, and every variant's reference driver position.
+
+    Without ``points``, the reported points' offsets are the template's.
+    """
     t = model.plan
     col = model.columns
     shift = np.asarray(t.shift)
@@ -449,6 +456,8 @@ def _plan(
         for link in mech.links
         if link.center is not None
     ]
+    if not points:
+        offset, located = list(t.point_offset), []
     for key, b in located:
         c = col[key]
         xy = rows[:, c : c + 2] - shift - origins[:, b]
