@@ -30,6 +30,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 from assur._loads import LoadPlan, compile_loads
 from assur._stack import Rows, repeat, signature
@@ -48,7 +49,15 @@ from assur.groups.driver import DriverPlan
 from assur.model import LoadTable, Mechanism, PointSpec, Toward
 from assur.plan import FAR, SMALL, Plan, compile_plan
 
-__all__ = ["Template", "compile_many", "form", "numbers", "template"]
+__all__ = [
+    "Compiled",
+    "Many",
+    "Template",
+    "compile_many",
+    "form",
+    "numbers",
+    "template",
+]
 
 MARGIN = 4.0
 """Factor by which a variant must clear each check of ``compile_plan`` to be compiled
@@ -57,6 +66,8 @@ UNDECIDED = 1e3 * BRANCH_TOLERANCE
 """A variant whose other branch also closes within this is compiled on its own."""
 
 Leaf = Callable[[Array], Any]
+Index = NDArray[np.intp]
+"""Indices of variants (rows)."""
 
 
 def form(mech: Mechanism) -> Hashable:
@@ -217,13 +228,64 @@ class Many:
     again: Callable[[int], Plan] | None = None
 
 
-def compile_many(
-    model: Template, rows: Array, repeats: int
-) -> tuple[Many | None, Mask]:
+@dataclass(frozen=True, slots=True)
+class Compiled:
+    """Variants compiled against a template: their numbers, ready to be batched.
+
+    ``offsets`` are each pair's offsets on its two bodies, ``origins`` (k, B, 2) the
+    bodies' origins, ``scale`` (k,) the mechanisms' sizes and ``branches`` each
+    dyad's assembly branch (k,), all in core coordinates, one value per variant.
+    """
+
+    model: Template
+    rows: Array
+    offsets: dict[str, tuple[Array, Array]]
+    origins: Array
+    scale: Array
+    branches: list[Array]
+
+    def batch(self, chosen: Index, repeats: int) -> Many:
+        """Return the stacked plan of the variants ``chosen`` (indices into rows)."""
+        leaf = self._leaves(chosen, repeats)
+        plan, references = self._plan(leaf, True)
+        loads = _loads(self.model, self.rows, leaf, self.origins)
+
+        def again(count: int) -> Plan:
+            # for the change-point screen, which reads no reported point
+            return self._plan(self._leaves(chosen, count), False)[0]
+
+        return Many(plan, loads, references[chosen], again)
+
+    def _leaves(self, chosen: Index, count: int) -> Leaf:
+        """Return the leaf of the variants ``chosen``, each over ``count`` rows."""
+
+        def leaf(values: Array) -> Any:
+            picked = values[chosen]
+            if np.all(picked == picked[0]):
+                return float(picked[0])
+            return repeat(picked, count)
+
+        return leaf
+
+    def _plan(self, leaf: Leaf, points: bool) -> tuple[Plan, Array]:
+        """Return the stacked plan of ``leaf``'s variants and every reference."""
+        return _plan(
+            self.model,
+            self.rows,
+            leaf,
+            self.offsets,
+            self.origins,
+            self.scale,
+            self.branches,
+            points,
+        )
+
+
+def compile_many(model: Template, rows: Array) -> tuple[Compiled, Mask]:
     """Compile the variants whose numbers are ``rows`` (k, N) against ``model``.
 
-    Returns the stacked plan of the variants that pass every check (None if none
-    does) and a mask (k,) of those that do not, to be compiled on their own.
+    Returns the compiled variants (those that pass every check may be batched) and
+    a mask (k,) of those that do not, to be compiled on their own.
     """
     t = model.plan
     col = model.columns
@@ -268,31 +330,7 @@ def compile_many(
             branch, bad = _branch(dyad, motions, scale)
             branches.append(branch)
             doubtful |= bad
-    ok = ~doubtful
-    if not ok.any():
-        return None, doubtful
-
-    def leaves(count: int) -> Leaf:
-        def leaf(values: Array) -> Any:
-            chosen = values[ok]
-            if np.all(chosen == chosen[0]):
-                return float(chosen[0])
-            return repeat(chosen, count)
-
-        return leaf
-
-    def again(count: int) -> Plan:
-        # for the change-point screen, which reads no reported point
-        found = _plan(
-            model, rows, leaves(count), offsets, origins, scale, branches, False
-        )
-        return found[0]
-
-    leaf = leaves(repeats)
-    plan, references = _plan(model, rows, leaf, offsets, origins, scale, branches)
-    references = references[ok]
-    loads = _loads(model, rows, leaf, origins)
-    return Many(plan, loads, references, again), doubtful
+    return Compiled(model, rows, offsets, origins, scale, branches), doubtful
 
 
 def _as_is(values: Array) -> Array:

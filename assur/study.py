@@ -187,9 +187,9 @@ def summarise(
     rows: list[dict[str, Any]] = []
     size = max(1, CHUNK // max(1, angles.shape[0]))
     templates: dict[Any, Template | None] = {}
-    for first in range(0, count, size):
-        block = range(first, min(first + size, count))
-        rows += _block(factory, parameters, angles, block, templates)
+    for first in range(0, count, GROUPED * size):
+        block = range(first, min(first + GROUPED * size, count))
+        rows += _block(factory, parameters, angles, block, templates, size)
     names: dict[str, None] = dict.fromkeys(parameters)
     for row in rows:
         names.update(dict.fromkeys(row))
@@ -200,18 +200,25 @@ def summarise(
     return frame
 
 
+GROUPED = 8
+"""Batches of variants built and compiled together: the checks of a compilation cost
+about as much for a few hundred variants as for the few dozen of one batch."""
+
+
 def _block(
     factory: Factory,
     parameters: dict[str, Array],
     angles: Array,
     block: range,
     templates: dict[Any, Template | None],
+    size: int,
 ) -> list[dict[str, Any]]:
     """Return the rows of the variants ``block``, those of one form batched.
 
     The variants of one :func:`assur._variants.form` are compiled at once against
-    its template (kept in ``templates`` from block to block); those the template does
-    not serve are compiled one by one and stacked (:func:`_compiled`).
+    its template (kept in ``templates`` from block to block) and solved in batches
+    of ``size`` variants; those the template does not serve are compiled one by one
+    and stacked (:func:`_compiled`).
     """
     rows: list[dict[str, Any]] = []
     forms: dict[Any, list[tuple[int, Mechanism]]] = {}
@@ -232,14 +239,16 @@ def _block(
             alone += members
             continue
         table = np.array([numbers(mech) for _, mech in members])
-        many, doubtful = compile_many(model, table, angles.shape[0])
+        compiled, doubtful = compile_many(model, table)
         rest += [x for x, d in zip(members, doubtful.tolist(), strict=True) if d]
-        if many is None:
-            continue
-        chosen = [x for x, d in zip(members, doubtful.tolist(), strict=True) if not d]
-        found = summaries(many, model.plan, positions(model.plan, angles))
-        alone += _fill(rows, block.start, chosen, found)
-    alone += _compiled(rows, block.start, rest, angles)
+        good = np.flatnonzero(~doubtful)
+        given = positions(model.plan, angles)
+        for start in range(0, good.size, size):
+            chosen = good[start : start + size]
+            many = compiled.batch(chosen, angles.shape[0])
+            found = summaries(many, model.plan, given)
+            alone += _fill(rows, block.start, [members[i] for i in chosen], found)
+    alone += _compiled(rows, block.start, rest, angles, size)
     for i, mech in alone:
         rows[i - block.start].update(_alone(mech, angles))
     return rows
@@ -277,10 +286,11 @@ def _compiled(
     start: int,
     members: list[tuple[int, Mechanism]],
     angles: Array,
+    size: int,
 ) -> list[tuple[int, Mechanism]]:
     """Solve ``members`` each compiled on its own, those of one signature stacked.
 
-    Returns the members to be analysed alone.
+    Batches hold at most ``size`` variants. Returns the members to be analysed alone.
     """
     groups: dict[Any, list[tuple[int, Mechanism, Plan]]] = {}
     alone: list[tuple[int, Mechanism]] = []
@@ -294,16 +304,27 @@ def _compiled(
             alone.append((i, mech))
         else:
             groups.setdefault(key, []).append((i, mech, plan))
-    for group in groups.values():
-        plans = [plan for _, _, plan in group]
-        try:
-            found = summaries(
-                stacked(plans, angles.shape[0]), plans[0], positions(plans[0], angles)
-            )
-        except Unstackable:
-            found = [None] * len(plans)
-        alone += _fill(rows, start, [(i, m) for i, m, _ in group], found)
+    for every in groups.values():
+        for first in range(0, len(every), size):
+            alone += _stacked(rows, start, every[first : first + size], angles)
     return alone
+
+
+def _stacked(
+    rows: list[dict[str, Any]],
+    start: int,
+    group: list[tuple[int, Mechanism, Plan]],
+    angles: Array,
+) -> list[tuple[int, Mechanism]]:
+    """Solve the variants ``group``, of one signature, stacked; return those left."""
+    plans = [plan for _, _, plan in group]
+    try:
+        found = summaries(
+            stacked(plans, angles.shape[0]), plans[0], positions(plans[0], angles)
+        )
+    except Unstackable:
+        found = [None] * len(plans)
+    return _fill(rows, start, [(i, m) for i, m, _ in group], found)
 
 
 def _fill(

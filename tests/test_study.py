@@ -279,8 +279,9 @@ def test_variants_compiled_at_once_hold_their_own_plans_numbers(name):
     assert len({form(m) for m in variants}) == 1
     model = template(variants[0])
     rows = np.array([numbers(m) for m in variants])
-    many, doubtful = compile_many(model, rows, 5)
+    compiled, doubtful = compile_many(model, rows)
     assert not doubtful.any()
+    many = compiled.batch(np.arange(3), 5)
     each = stacked([compile_plan(m) for m in variants], 5)
     _same(many.plan, each.plan)
     _same(many.loads, each.loads)
@@ -299,5 +300,5 @@ def test_a_variant_at_a_dead_centre_is_compiled_on_its_own():
     rods = [0.2, height * (1 + 1e-13), height * (1 + 1e-11), 0.3]
     variants = [catalog.slider_crank(rod=rod) for rod in rods]
     rows = np.array([numbers(m) for m in variants])
-    _, doubtful = compile_many(template(variants[0]), rows, 5)
+    _, doubtful = compile_many(template(variants[0]), rows)
     assert doubtful.tolist() == [False, True, True, False]
