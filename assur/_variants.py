@@ -135,11 +135,12 @@ def numbers(mech: Mechanism, keys: dict[Any, int] | None = None) -> list[float]:
                 found = memo[spec] = at(named[spec])
             return found
         if isinstance(spec, Toward):
-            # resolve_point's arithmetic, on numpy arrays as there
-            a, b = np.array(at(spec.start)), np.array(at(spec.toward))
-            length = float(np.hypot(*(b - a)))
-            x, y = a + (b - a) * (spec.distance / length)
-            return float(x), float(y)
+            # resolve_point's arithmetic (numpy's hypot; the rest is elementwise
+            # there, the same operations on floats here)
+            (ax, ay), (bx, by) = at(spec.start), at(spec.toward)
+            dx, dy = bx - ax, by - ay
+            ratio = spec.distance / float(np.hypot(dx, dy))
+            return ax + dx * ratio, ay + dy * ratio
         return float(spec[0]), float(spec[1])
 
     def put(key: Any, *values: float) -> None:
