@@ -526,7 +526,161 @@ def _check_point(entry: str, spec: object, points: set[str]) -> None:
         _check_vec(entry, spec)
 
 
+_VALID: set[Any] = set()
+"""Skeletons (:func:`_skeleton`) of mechanisms found valid. The variants of a study
+share one: only their numbers need checking (:func:`_validate_numbers`)."""
+
+
 def _validate(mech: Mechanism) -> None:
+    """Check every reference and value of ``mech``; raise on the first fault.
+
+    A mechanism whose skeleton passed before has only its numbers checked, in the
+    order of the full check: its first fault, and so the message, is the same.
+    """
+    key = _skeleton(mech)
+    if key is not None and key in _VALID:
+        _validate_numbers(mech)
+        return
+    _validate_all(mech)
+    if key is not None:
+        if len(_VALID) >= 256:
+            _VALID.clear()
+        _VALID.add(key)
+
+
+def _skeleton(mech: Mechanism) -> Any:
+    """Return what the checks of references, names and kinds read; None if unusual.
+
+    Names, kinds, which links each joint joins, how each point is given and which
+    optional values are present. None (check everything) for anything but the
+    common forms: points as coordinates, names or Toward, no tabulated load, no
+    motor.
+    """
+    if mech.motor is not None or not mech.links:
+        return None
+    if mech.name.__class__ is not str or mech.description.__class__ is not str:
+        return None
+    try:
+        parts: list[Any] = [mech.gravity is None]
+        for link in mech.links:
+            axis = link.axis
+            if axis is not None:
+                if axis.__class__ is not tuple or len(axis) != 2:
+                    return None
+                axis = tuple(map(_spec_key, axis))
+            center = _spec_key(link.center)
+            parts.append(
+                (link.name, axis, link.mass is None, center, link.inertia is None)
+            )
+        for j in mech.joints:
+            at = _spec_key(j.at)
+            parts.append(
+                (j.name, j.kind, j.links, at, j.axis is None, j.radius is None)
+            )
+        parts += [(p.name, p.link, _spec_key(p.at)) for p in mech.points]
+        parts += [d.joint for d in mech.drivers]
+        for load in mech.loads:
+            if isinstance(load.force, LoadTable) or isinstance(load.torque, LoadTable):
+                return None
+            at = _spec_key(load.at)
+            parts.append((load.link, at, load.force is None, load.torque is None))
+        key = tuple(parts)
+        hash(key)
+    except (_Odd, TypeError):
+        return None
+    return key
+
+
+class _Odd(Exception):  # noqa: N818 (a signal, caught in _skeleton)
+    """A point given in none of the common forms."""
+
+
+def _spec_key(spec: object) -> Any:
+    """Return how a point is given: a name, a Toward's two names, or coordinates."""
+    if spec is None or spec.__class__ is str:
+        return spec
+    if spec.__class__ is Toward:
+        return ("toward", spec.start, spec.toward)  # type: ignore[attr-defined]
+    if spec.__class__ is tuple:
+        return ()
+    raise _Odd
+
+
+def _validate_numbers(mech: Mechanism) -> None:
+    """Check the numbers of ``mech``, whose skeleton is valid, in the full order.
+
+    Each value is tested quickly; one that fails is checked again by the function
+    the full check uses, which raises its message.
+    """
+    for link in mech.links:
+        for key in ("mass", "inertia"):
+            value = getattr(link, key)
+            if value is not None and not (_finite(value) and value >= 0.0):
+                _check_number(f"links.{key_text(link.name)}.{key}", value, 0.0)
+    for joint in mech.joints:
+        entry = f"joints.{key_text(joint.name)}"
+        if joint.kind != "revolute" and not (
+            _vec_ok(joint.axis) and math.hypot(*joint.axis) >= COINCIDENT  # type: ignore[misc]
+        ):
+            _check_joint_axis(entry, joint)
+        friction, radius = joint.friction, joint.radius
+        if not (
+            _finite(friction)
+            and friction >= 0.0
+            and (radius is None or (_finite(radius) and radius >= 0.0))
+            and not (joint.kind == "revolute" and friction and not radius)
+        ):
+            _check_friction(entry, joint)
+    names = {j.name for j in mech.joints} | {p.name for p in mech.points}
+    for joint in mech.joints:
+        if not _point_ok(joint.at):
+            entry = f"joints.{key_text(joint.name)}.at"
+            _check_point(entry, joint.at, names - {joint.name})
+    for point in mech.points:
+        if not _point_ok(point.at):
+            entry = f"points.{key_text(point.name)}.at"
+            _check_point(entry, point.at, names - {point.name})
+    for link in mech.links:
+        entry = f"links.{key_text(link.name)}"
+        if link.center is not None and not _point_ok(link.center):
+            _check_point(f"{entry}.center", link.center, names)
+        if link.axis is not None and not all(map(_point_ok, link.axis)):
+            _check_axis(f"{entry}.axis", link.axis, names)
+    for index, driver in enumerate(mech.drivers):
+        for key in ("omega", "epsilon"):
+            if not _finite(getattr(driver, key)):
+                _fail(f"drivers[{index}].{key}", _number_fault(getattr(driver, key)))
+    if mech.gravity is not None and not _vec_ok(mech.gravity):
+        _check_vec("gravity.g", mech.gravity)
+    for index, load in enumerate(mech.loads):
+        entry = f"loads[{index}]"
+        if load.force is not None and not _vec_ok(load.force):
+            _check_vec(f"{entry}.force", load.force)
+        if load.at is not None and not _point_ok(load.at):
+            _check_point(f"{entry}.at", load.at, names)
+        if load.torque is not None and not _finite(load.torque):
+            _fail(f"{entry}.torque", _number_fault(load.torque))
+    _check_resolvable(mech)
+    _check_cranks(mech)
+
+
+def _vec_ok(value: object) -> bool:
+    """Whether :func:`_check_vec` accepts ``value``."""
+    return (
+        isinstance(value, tuple | list) and len(value) == 2 and all(map(_finite, value))
+    )
+
+
+def _point_ok(spec: object) -> bool:
+    """Whether the numbers of a point in a valid skeleton are acceptable."""
+    if spec.__class__ is str:
+        return True
+    if spec.__class__ is Toward:
+        return _finite(spec.distance)  # type: ignore[attr-defined]
+    return _vec_ok(spec)
+
+
+def _validate_all(mech: Mechanism) -> None:
     """Check every reference and value of ``mech``; raise on the first fault."""
     if not mech.links:
         _fail("links", "no moving links; expected at least one [links.NAME] entry")
