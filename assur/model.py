@@ -618,11 +618,10 @@ def _validate_numbers(mech: Mechanism) -> None:
             if value is not None and not (_finite(value) and value >= 0.0):
                 _check_number(f"links.{key_text(link.name)}.{key}", value, 0.0)
     for joint in mech.joints:
-        entry = f"joints.{key_text(joint.name)}"
         if joint.kind != "revolute" and not (
             _vec_ok(joint.axis) and math.hypot(*joint.axis) >= COINCIDENT  # type: ignore[misc]
         ):
-            _check_joint_axis(entry, joint)
+            _check_joint_axis(f"joints.{key_text(joint.name)}", joint)
         friction, radius = joint.friction, joint.radius
         if not (
             _finite(friction)
@@ -630,7 +629,7 @@ def _validate_numbers(mech: Mechanism) -> None:
             and (radius is None or (_finite(radius) and radius >= 0.0))
             and not (joint.kind == "revolute" and friction and not radius)
         ):
-            _check_friction(entry, joint)
+            _check_friction(f"joints.{key_text(joint.name)}", joint)
     names = {j.name for j in mech.joints} | {p.name for p in mech.points}
     for joint in mech.joints:
         if not _point_ok(joint.at):
@@ -641,11 +640,10 @@ def _validate_numbers(mech: Mechanism) -> None:
             entry = f"points.{key_text(point.name)}.at"
             _check_point(entry, point.at, names - {point.name})
     for link in mech.links:
-        entry = f"links.{key_text(link.name)}"
         if link.center is not None and not _point_ok(link.center):
-            _check_point(f"{entry}.center", link.center, names)
+            _check_point(_entry("links", link.name, ".center"), link.center, names)
         if link.axis is not None and not all(map(_point_ok, link.axis)):
-            _check_axis(f"{entry}.axis", link.axis, names)
+            _check_axis(_entry("links", link.name, ".axis"), link.axis, names)
     for index, driver in enumerate(mech.drivers):
         for key in ("omega", "epsilon"):
             if not _finite(getattr(driver, key)):
@@ -660,7 +658,10 @@ def _validate_numbers(mech: Mechanism) -> None:
             _check_point(f"{entry}.at", load.at, names)
         if load.torque is not None and not _finite(load.torque):
             _fail(f"{entry}.torque", _number_fault(load.torque))
-    _check_resolvable(mech)
+    try:
+        _check_resolvable(mech, entries=False)
+    except ModelError:
+        _check_resolvable(mech)  # again, for the message naming the entry
     _check_cranks(mech)
 
 
@@ -979,18 +980,23 @@ def _resolver(mech: Mechanism) -> Any:
     return resolve
 
 
-def _check_resolvable(mech: Mechanism) -> None:
-    """Every point must have coordinates (a from/toward pair must not coincide)."""
+def _check_resolvable(mech: Mechanism, entries: bool = True) -> None:
+    """Every point must have coordinates (a from/toward pair must not coincide).
+
+    Without ``entries`` the messages name no entry (cheaper when none is expected:
+    see :func:`_validate_numbers`).
+    """
     resolve = _resolver(mech)
+    where = _entry if entries else _no_entry
     for joint in mech.joints:
-        resolve(joint.at, f"joints.{key_text(joint.name)}.at")
+        resolve(joint.at, where("joints", joint.name, ".at"))
     for point in mech.points:
-        resolve(point.at, f"points.{key_text(point.name)}.at")
+        resolve(point.at, where("points", point.name, ".at"))
     for link in mech.links:
         if link.center is not None:
-            resolve(link.center, f"links.{key_text(link.name)}.center")
+            resolve(link.center, where("links", link.name, ".center"))
         if link.axis is not None:
-            entry = f"links.{key_text(link.name)}.axis"
+            entry = where("links", link.name, ".axis")
             a, b = (resolve(p, f"{entry}[{i}]") for i, p in enumerate(link.axis))
             if _coincide(a, b):
                 _fail(
@@ -1001,7 +1007,17 @@ def _check_resolvable(mech: Mechanism) -> None:
                 )
     for index, load in enumerate(mech.loads):
         if load.at is not None:
-            resolve(load.at, f"loads[{index}].at")
+            resolve(load.at, f"loads[{index}].at" if entries else "")
+
+
+def _entry(kind: str, name: object, suffix: str) -> str:
+    """Return an entry such as ``joints.B.at``."""
+    return f"{kind}.{key_text(name)}{suffix}"
+
+
+def _no_entry(kind: str, name: object, suffix: str) -> str:
+    """Return no entry (see :func:`_check_resolvable`)."""
+    return ""
 
 
 def _check_cranks(mech: Mechanism) -> None:

@@ -161,7 +161,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true")
     args = parser.parse_args(argv)
-    count, subset, rounds = (1000, 100, 1) if args.quick else (10_000, 300, 3)
+    count, subset, rounds = (1000, 100, 1) if args.quick else (10_000, 300, 5)
     time_study(20)  # warm-up: imports, caches
     CPU.clear()
     studies, longs = [], []
@@ -185,6 +185,7 @@ def main(argv: list[str] | None = None) -> int:
         "loop_s_scaled": loop,
         "loop_subset": subset,
         "study_over_long": study / long,
+        "study_over_long_rounds": [a / b for a, b in zip(studies, longs, strict=True)],
         "study_cpu_s": cpu["study"],
         "one_long_sweep_cpu_s": cpu["long"],
         "study_over_long_cpu": cpu["study"] / cpu["long"],
