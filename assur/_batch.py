@@ -29,7 +29,7 @@ from assur.plan import Plan
 from assur.summary import Summary
 from assur.table import Table
 
-__all__ = ["CHUNK", "stacked", "summaries"]
+__all__ = ["CHUNK", "near_change_points", "stacked", "summaries"]
 
 
 def stacked(plans: list[Plan], repeats: int) -> Many:
@@ -47,13 +47,16 @@ def stacked(plans: list[Plan], repeats: int) -> Many:
     )
 
 
-def summaries(batch: Many, first: Plan, given: Array) -> list[dict[str, float] | None]:
+def summaries(
+    batch: Many, first: Plan, given: Array, near: Mask | None = None
+) -> list[dict[str, float] | None]:
     """Return each variant's summary over driver positions ``given`` (n, 1), deg.
 
     ``batch`` holds variants of one topology, driven by one crank, each over the
     ``n`` rows of ``given`` in turn; ``first`` is one of their plans (the one whose
-    structure they share). None for a variant to be analysed on its own (see the
-    module's docstring).
+    structure they share). ``near`` marks the variants that may meet a change point
+    (:func:`near_change_points`; found here when not given). None for a variant to
+    be analysed on its own (see the module's docstring).
     """
     k, m = batch.references.shape[0], given.shape[0]
     plan, loads = batch.plan, batch.loads
@@ -71,7 +74,8 @@ def summaries(batch: Many, first: Plan, given: Array) -> list[dict[str, float] |
     for leaf in leaves((forces.reactions, forces.balancing, forces.shaking)):
         if is_array(leaf):
             bad |= ~np.isfinite(leaf)
-    near = _near_change_points(batch, drive)
+    if near is None:
+        near = _near(batch, drive)
     alone = bad.reshape(k, m).any(axis=1) | near
     chosen = selection(first, True, None)
     table = Table(
@@ -103,7 +107,17 @@ def _drive(first: Plan, references: Array, given: Array) -> Array:
     return np.concatenate(out)
 
 
-def _near_change_points(batch: Many, drive: Array) -> Mask:
+def near_change_points(batch: Many, first: Plan, given: Array) -> Mask:
+    """Mark the variants of ``batch`` whose path may meet a change point.
+
+    The variants are those of any number of batches: only their references and
+    ``batch.again`` are read (see :func:`_near`). ``given`` are the driver positions
+    (n, 1), deg, and ``first`` one of the variants' plans.
+    """
+    return _near(batch, _drive(first, batch.references, given))
+
+
+def _near(batch: Many, drive: Array) -> Mask:
     """Mark the variants whose path from the reference pose may meet a change point.
 
     :func:`assur._branches.change_points` scans a grid for minima of each dyad's

@@ -257,6 +257,19 @@ class Compiled:
 
         return Many(plan, loads, references[chosen], again)
 
+    def screen(self, chosen: Index) -> Many:
+        """Return the variants ``chosen`` for the change-point screen alone.
+
+        Only their references and ``again`` are theirs: the screen reads nothing
+        else, and it screens the variants of many batches at once.
+        """
+        _, references = self._plan(self._leaves(chosen[:1], 1), False)
+
+        def again(count: int) -> Plan:
+            return self._plan(self._leaves(chosen, count), False)[0]
+
+        return Many(self.model.plan, self.model.loads, references[chosen], again)
+
     def _leaves(self, chosen: Index, count: int) -> Leaf:
         """Return the leaf of the variants ``chosen``, each over ``count`` rows."""
 

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._batch import CHUNK, stacked, summaries
+from assur._batch import CHUNK, near_change_points, stacked, summaries
 from assur._loads import compile_loads
 from assur._stack import Unstackable, signature
 from assur._variants import Template, compile_many, form, numbers, template
@@ -243,11 +243,16 @@ def _block(
         compiled, doubtful = compile_many(model, table)
         rest += [x for x, d in zip(members, doubtful.tolist(), strict=True) if d]
         good = np.flatnonzero(~doubtful)
+        if not good.size:
+            continue
         given = positions(model.plan, angles)
+        # the change-point screen of every batch at once (its cost is mostly per call)
+        near = near_change_points(compiled.screen(good), model.plan, given)
         for start in range(0, good.size, size):
             chosen = good[start : start + size]
             many = compiled.batch(chosen, angles.shape[0])
-            found = summaries(many, model.plan, given)
+            part = near[start : start + size]
+            found = summaries(many, model.plan, given, part)
             alone += _fill(rows, block.start, [members[i] for i in chosen], found)
     alone += _compiled(rows, block.start, rest, angles, size)
     for i, mech in alone:
