@@ -658,11 +658,12 @@ def _validate_numbers(mech: Mechanism) -> None:
             _check_point(f"{entry}.at", load.at, names)
         if load.torque is not None and not _finite(load.torque):
             _fail(f"{entry}.torque", _number_fault(load.torque))
+    resolve = _resolver(mech)
     try:
-        _check_resolvable(mech, entries=False)
+        _check_resolvable(mech, entries=False, resolve=resolve)
     except ModelError:
         _check_resolvable(mech)  # again, for the message naming the entry
-    _check_cranks(mech)
+    _check_cranks(mech, resolve)
 
 
 def _vec_ok(value: object) -> bool:
@@ -970,6 +971,8 @@ def _resolver(mech: Mechanism) -> Any:
             plain[name] = np.asarray(at, dtype=float)
 
     def resolve(spec: PointSpec, entry: str = "point") -> np.ndarray:
+        if spec.__class__ is tuple:
+            return np.asarray(spec, dtype=float)  # as resolve_point does
         # names are unique by now: ``plain`` holds the one point of each name
         if spec.__class__ is str and spec in plain:
             return plain[spec]  # type: ignore[index]
@@ -980,13 +983,16 @@ def _resolver(mech: Mechanism) -> Any:
     return resolve
 
 
-def _check_resolvable(mech: Mechanism, entries: bool = True) -> None:
+def _check_resolvable(
+    mech: Mechanism, entries: bool = True, resolve: Any = None
+) -> None:
     """Every point must have coordinates (a from/toward pair must not coincide).
 
     Without ``entries`` the messages name no entry (cheaper when none is expected:
-    see :func:`_validate_numbers`).
+    see :func:`_validate_numbers`). ``resolve`` is the mechanism's
+    :func:`_resolver`, made here if not given.
     """
-    resolve = _resolver(mech)
+    resolve = resolve or _resolver(mech)
     where = _entry if entries else _no_entry
     for joint in mech.joints:
         resolve(joint.at, where("joints", joint.name, ".at"))
@@ -1020,9 +1026,9 @@ def _no_entry(kind: str, name: object, suffix: str) -> str:
     return ""
 
 
-def _check_cranks(mech: Mechanism) -> None:
+def _check_cranks(mech: Mechanism, resolve: Any = None) -> None:
     """Refuse a crank whose joints all sit at its pivot: it would drive nothing."""
-    resolve = _resolver(mech)
+    resolve = resolve or _resolver(mech)
     for index, driver in enumerate(mech.drivers):
         joint = mech.joint(driver.joint)
         if joint.kind != "revolute":
