@@ -1,6 +1,7 @@
 """Summaries of many variants of one topology, solved together in one batch.
 
-The variants' plans are stacked (:mod:`assur._stack`) and their positions solved at
+The variants' plan comes stacked (compiled at once by :mod:`assur._variants`, or one
+plan per variant stacked by :mod:`assur._stack`) and their positions are solved at
 once by the same kernels as :func:`assur.forces`; the force table of the batch is then
 reduced to one summary per variant (:class:`assur.summary.Summary`). A variant that
 meets any trouble (a group that does not close or comes near a dead centre, values
@@ -10,6 +11,7 @@ so that it fails or warns exactly as a separate call does.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -19,33 +21,47 @@ from assur import kinetostatics as _kst
 from assur._branches import CANDIDATE, STEP, TURNS
 from assur._loads import compile_loads
 from assur._stack import restack, stack_loads, stack_plans
+from assur._variants import Many
 from assur._vec import Array, Mask, is_array, leaves
-from assur.analysis import CHUNK, driver_rates, to_si
+from assur.analysis import CHUNK, EXACT_DEGREES, driver_rates, to_si
 from assur.columns import selection
 from assur.plan import Plan
 from assur.summary import Summary
 from assur.table import Table
 
-__all__ = ["CHUNK", "summaries"]
+__all__ = ["CHUNK", "near_change_points", "stacked", "summaries"]
 
 
-def summaries(plans: list[Plan], given: Array) -> list[dict[str, float] | None]:
-    """Return each variant's summary over driver positions ``given`` (n, 1), deg.
-
-    ``plans`` are variants of one topology (the same :func:`assur._stack.signature`),
-    driven by one crank. None for a variant to be analysed on its own (see the
-    module's docstring).
+def stacked(plans: list[Plan], repeats: int) -> Many:
+    """Return the plans of variants of one topology stacked, each over ``repeats`` rows.
 
     Raises
     ------
     Unstackable
         When the plans differ in more than their numbers.
     """
-    k, m = len(plans), given.shape[0]
-    plan = stack_plans(plans, m)
-    loads = stack_loads([compile_loads(p) for p in plans], m)
-    drive = np.concatenate([to_si(p, given) for p in plans])
-    rates = driver_rates(plans[0], None, None, k * m)
+    return Many(
+        stack_plans(plans, repeats),
+        stack_loads([compile_loads(p) for p in plans], repeats),
+        np.array([p.drivers[0].reference for p in plans]),
+    )
+
+
+def summaries(
+    batch: Many, first: Plan, given: Array, near: Mask | None = None
+) -> list[dict[str, float] | None]:
+    """Return each variant's summary over driver positions ``given`` (n, 1), deg.
+
+    ``batch`` holds variants of one topology, driven by one crank, each over the
+    ``n`` rows of ``given`` in turn; ``first`` is one of their plans (the one whose
+    structure they share). ``near`` marks the variants that may meet a change point
+    (:func:`near_change_points`; found here when not given). None for a variant to
+    be analysed on its own (see the module's docstring).
+    """
+    k, m = batch.references.shape[0], given.shape[0]
+    plan, loads = batch.plan, batch.loads
+    drive = _drive(first, batch.references, given)
+    rates = driver_rates(first, None, None, k * m)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         bodies, found = _kin.solve(plan, drive, *rates, top=2)
         state = _kin.state_of(plan, bodies, drive, rates, 2)
@@ -58,8 +74,10 @@ def summaries(plans: list[Plan], given: Array) -> list[dict[str, float] | None]:
     for leaf in leaves((forces.reactions, forces.balancing, forces.shaking)):
         if is_array(leaf):
             bad |= ~np.isfinite(leaf)
-    alone = bad.reshape(k, m).any(axis=1) | _near_change_points(plans, plan, drive)
-    chosen = selection(plans[0], True, None)
+    if near is None:
+        near = _near(batch, drive)
+    alone = bad.reshape(k, m).any(axis=1) | near
+    chosen = selection(first, True, None)
     table = Table(
         plan, chosen.columns, np.tile(given, (k, 1)), state, forces, _index=chosen.index
     )
@@ -67,25 +85,51 @@ def summaries(plans: list[Plan], given: Array) -> list[dict[str, float] | None]:
     with np.errstate(invalid="ignore"):
         summary.add(table)
         values = summary.results()
+    names = list(values)
+    each = np.column_stack([values[name] for name in names]).tolist()
     return [
-        None if alone[i] else {name: float(v[i]) for name, v in values.items()}
-        for i in range(k)
+        None if alone[i] else dict(zip(names, each[i], strict=True)) for i in range(k)
     ]
 
 
-def _near_change_points(plans: list[Plan], stacked: Plan, drive: Array) -> Mask:
+def _drive(first: Plan, references: Array, given: Array) -> Array:
+    """Return the driver positions of every variant in turn, rad (see ``to_si``).
+
+    Angles below :data:`~assur.analysis.EXACT_DEGREES` are converted as they are, the
+    same for every variant; larger ones are reduced about each variant's reference.
+    """
+    if not first.newton and np.all(np.abs(given) < EXACT_DEGREES):
+        return np.tile(to_si(first, given), (references.shape[0], 1))
+    out = []
+    for reference in references.tolist():
+        driver = dataclasses.replace(first.drivers[0], reference=reference)
+        out.append(to_si(dataclasses.replace(first, drivers=(driver,)), given))
+    return np.concatenate(out)
+
+
+def near_change_points(batch: Many, first: Plan, given: Array) -> Mask:
+    """Mark the variants of ``batch`` whose path may meet a change point.
+
+    The variants are those of any number of batches: only their references and
+    ``batch.again`` are read (see :func:`_near`). ``given`` are the driver positions
+    (n, 1), deg, and ``first`` one of the variants' plans.
+    """
+    return _near(batch, _drive(first, batch.references, given))
+
+
+def _near(batch: Many, drive: Array) -> Mask:
     """Mark the variants whose path from the reference pose may meet a change point.
 
     :func:`assur._branches.change_points` scans a grid for minima of each dyad's
     discriminant below :data:`~assur._branches.CANDIDATE`; a variant whose
     discriminants stay above it on that grid all along its path (and a step beyond)
     has none there, and its sweep keeps the reference pose's branches. Variants
-    driven beyond the scanned window are marked too. ``stacked`` is the plans'
-    stacked plan, each variant over its ``drive`` positions.
+    driven beyond the scanned window are marked too. ``batch`` holds the variants,
+    each over its ``drive`` positions.
     """
-    k = len(plans)
+    reference = batch.references
+    k = reference.shape[0]
     m = drive.shape[0] // k
-    reference = np.array([p.drivers[0].reference for p in plans])
     x = drive[:, 0].reshape(k, m) - reference[:, None]
     low = np.minimum(x.min(axis=1, initial=0.0), 0.0)
     high = np.maximum(x.max(axis=1, initial=0.0), 0.0)
@@ -94,19 +138,41 @@ def _near_change_points(plans: list[Plan], stacked: Plan, drive: Array) -> Mask:
     steps = np.arange(
         math.floor(low.min() / STEP) - 1, math.ceil(high.max() / STEP) + 2
     )
-    grid = (reference[:, None] + steps[None, :] * STEP).reshape(-1, 1)
-    n = grid.shape[0]
-    plan = restack(stacked, m, steps.size)
-    bodies = _kin.drivers(plan, grid, (0.0,), (0.0,))
-    near = np.zeros(n, dtype=bool)
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        for solver in plan.solvers:
-            values = solver.discriminant(bodies)
-            if values is not None:
-                near |= ~(np.broadcast_to(values, (n,)) >= CANDIDATE)
-            solver.assemble(bodies, n)
+    # the grid in parts of equal length, each at most CHUNK rows (its temporaries
+    # stay below the allocator's mmap threshold); one plan serves every part
+    parts = max(1, math.ceil(k * steps.size / CHUNK))
+    length = math.ceil(steps.size / parts)
+    steps = np.arange(steps[0], steps[0] + parts * length)
+    if batch.again is not None:
+        plan = batch.again(length)
+    else:
+        plan = restack(batch.plan, m, length)
+    near = np.concatenate(
+        [
+            _below(plan, reference, steps[p * length : (p + 1) * length])
+            for p in range(parts)
+        ],
+        axis=1,
+    )
     # only the grid's points along each variant's own path count
     along = (steps[None, :] >= np.floor(low / STEP)[:, None] - 1) & (
         steps[None, :] <= np.ceil(high / STEP)[:, None] + 1
     )
-    return outside | (near.reshape(k, -1) & along).any(axis=1)
+    return outside | (near & along).any(axis=1)
+
+
+def _below(plan: Plan, reference: Array, steps: Array) -> Mask:
+    """Mark the grid's points (k, steps) where a discriminant is below CANDIDATE."""
+    grid = (reference[:, None] + steps[None, :] * STEP).reshape(-1, 1)
+    n = grid.shape[0]
+    bodies = _kin.drivers(plan, grid, (0.0,), (0.0,))
+    near = np.zeros(n, dtype=bool)
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        for i, solver in enumerate(plan.solvers):
+            values = solver.discriminant(bodies)
+            if values is not None:
+                near |= ~(np.broadcast_to(values, (n,)) >= CANDIDATE)
+            # a group is assembled only for the discriminants of those after it
+            if i < len(plan.solvers) - 1:
+                solver.assemble(bodies, n)
+    return near.reshape(reference.shape[0], -1)

@@ -22,6 +22,7 @@ from assur.plan import Plan
 __all__ = [
     "Rows",
     "Unstackable",
+    "repeat",
     "restack",
     "signature",
     "stack_loads",
@@ -30,6 +31,10 @@ __all__ = [
 
 KEPT = frozenset({"mechanism", "topology", "origins", "angle0"})
 """Plan fields the kernels do not read: the first variant's stand for all."""
+
+NAMES = frozenset({"groups", "bodies", "points", "point_body", "index", "group"})
+"""Fields of a plan and its solvers that hold names and indices, never numbers:
+:func:`restack` keeps them as they are."""
 
 
 EQUAL_AS_A_WHOLE = (tuple, dict, str, int, bool, type(None))
@@ -63,7 +68,8 @@ class Rows(tuple):  # type: ignore[type-arg]
 def signature(plan: Plan, loads: LoadPlan) -> Hashable | None:
     """Return what variants stacked together must share; None if ``plan`` cannot be.
 
-    The names and kinds of links, pairs, groups and drivers; the numbers the kernels
+    The names and kinds of links, pairs, groups and drivers; the slide lines'
+    directions (the kernels take them for constants); the numbers the kernels
     branch on (friction, the drivers' rates, where the core's origin lies, gravity);
     which links carry a mass. Groups solved by Newton's method, friction, tabulated
     loads and drivers other than one crank are analysed one variant at a time.
@@ -78,7 +84,8 @@ def signature(plan: Plan, loads: LoadPlan) -> Hashable | None:
     return (
         plan.bodies,
         tuple(
-            (p.name, p.kind, p.first, p.second, p.virtual) for p in plan.pairs.values()
+            (p.name, p.kind, p.first, p.second, p.virtual, p.axis)
+            for p in plan.pairs.values()
         ),
         tuple((s.label, s.bodies, type(s).__name__) for s in plan.solvers),
         tuple((d.pair.name, d.body, d.omega, d.epsilon) for d in plan.drivers),
@@ -105,9 +112,32 @@ def stack_plans(plans: list[Plan], repeats: int) -> Plan:
     return out
 
 
+def repeat(values: Any, count: int) -> Any:
+    """Return ``values`` (k,) with each repeated ``count`` times in turn (k * count,).
+
+    As ``numpy.repeat``, which is several times slower at this (it reads a count per
+    element): a broadcast copy.
+    """
+    out = np.empty((len(values), count))
+    out[:] = np.asarray(values, dtype=float)[:, None]
+    return out.reshape(-1)
+
+
 def restack(plan: Plan, repeats: int, again: int) -> Plan:
-    """Return a stacked plan with each variant over ``again`` rows, not ``repeats``."""
-    out = _map(plan, lambda x: np.repeat(x[::repeats], again))
+    """Return a stacked plan with each variant over ``again`` rows, not ``repeats``.
+
+    An array that stands in several places of the plan (a pair's offset that is also
+    a group's) is repeated once.
+    """
+    done: dict[int, Any] = {}
+
+    def change(x: Any) -> Any:
+        found = done.get(id(x))
+        if found is None:
+            found = done[id(x)] = repeat(x[::repeats], again)
+        return found
+
+    out = _map(plan, change)
     assert isinstance(out, Plan)
     return out
 
@@ -130,7 +160,7 @@ def _map(value: Any, change: Any) -> Any:
                 continue
             if f.name == "memo":
                 fields[f.name] = {}
-            elif kind is Plan and f.name in KEPT:
+            elif (kind is Plan and f.name in KEPT) or f.name in NAMES:
                 fields[f.name] = getattr(value, f.name)
             else:
                 fields[f.name] = _map(getattr(value, f.name), change)
@@ -172,7 +202,7 @@ def _stack(values: list[Any], repeats: int) -> Any:
             return first
         if any(v.__class__ is not float for v in values):
             raise Unstackable
-        return np.repeat(np.array(values), repeats)
+        return repeat(values, repeats)
     if kind is tuple or kind is Rows:
         try:
             parts = [_stack(list(p), repeats) for p in zip(*values, strict=True)]

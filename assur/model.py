@@ -366,8 +366,14 @@ def _parts(entry: str, value: Any, kind: type) -> tuple[Any, ...]:
     return items
 
 
+_SIMPLE = frozenset({float, int, str})
+
+
 def _plain(value: Any) -> Any:
     """Return lists and arrays as tuples, numpy numbers as Python's (hashable)."""
+    # the common case, a tuple of plain numbers or names, is kept as it is
+    if value.__class__ is tuple and all(v.__class__ in _SIMPLE for v in value):
+        return value
     if isinstance(value, np.ndarray | list | tuple):
         return tuple(_plain(v) for v in value)
     if isinstance(value, np.generic):
@@ -417,6 +423,8 @@ def _number(value: object) -> bool:
 
 def _finite(value: object) -> bool:
     """Whether ``value`` is a number of magnitude at most :data:`LARGEST`."""
+    if value.__class__ is float:  # the common case, checked first
+        return abs(value) <= LARGEST  # type: ignore[arg-type]
     return _number(value) and abs(value) <= LARGEST  # type: ignore[arg-type]
 
 
@@ -456,7 +464,22 @@ def _control(name: str) -> str | None:
     return None
 
 
+_GOOD_NAMES: set[str] = set()
+"""Names found valid already: the variants of a study repeat their names, and the
+check reads every character's Unicode category."""
+
+
 def _check_name(entry: str, name: object) -> None:
+    if name.__class__ is str and name in _GOOD_NAMES:
+        return
+    _check_new_name(entry, name)
+    if len(_GOOD_NAMES) >= 4096:
+        _GOOD_NAMES.clear()
+    _GOOD_NAMES.add(name)  # type: ignore[arg-type]
+
+
+def _check_new_name(entry: str, name: object) -> None:
+    """Check a name not met before: text, no reserved or control character."""
     if not isinstance(name, str) or not name or any(c in name for c in RESERVED):
         _fail(
             entry,
@@ -503,7 +526,163 @@ def _check_point(entry: str, spec: object, points: set[str]) -> None:
         _check_vec(entry, spec)
 
 
+_VALID: set[Any] = set()
+"""Skeletons (:func:`_skeleton`) of mechanisms found valid. The variants of a study
+share one: only their numbers need checking (:func:`_validate_numbers`)."""
+
+
 def _validate(mech: Mechanism) -> None:
+    """Check every reference and value of ``mech``; raise on the first fault.
+
+    A mechanism whose skeleton passed before has only its numbers checked, in the
+    order of the full check: its first fault, and so the message, is the same.
+    """
+    key = _skeleton(mech)
+    if key is not None and key in _VALID:
+        _validate_numbers(mech)
+        return
+    _validate_all(mech)
+    if key is not None:
+        if len(_VALID) >= 256:
+            _VALID.clear()
+        _VALID.add(key)
+
+
+def _skeleton(mech: Mechanism) -> Any:
+    """Return what the checks of references, names and kinds read; None if unusual.
+
+    Names, kinds, which links each joint joins, how each point is given and which
+    optional values are present. None (check everything) for anything but the
+    common forms: points as coordinates, names or Toward, no tabulated load, no
+    motor.
+    """
+    if mech.motor is not None or not mech.links:
+        return None
+    if mech.name.__class__ is not str or mech.description.__class__ is not str:
+        return None
+    try:
+        parts: list[Any] = [mech.gravity is None]
+        for link in mech.links:
+            axis = link.axis
+            if axis is not None:
+                if axis.__class__ is not tuple or len(axis) != 2:
+                    return None
+                axis = tuple(map(_spec_key, axis))
+            center = _spec_key(link.center)
+            parts.append(
+                (link.name, axis, link.mass is None, center, link.inertia is None)
+            )
+        for j in mech.joints:
+            at = _spec_key(j.at)
+            parts.append(
+                (j.name, j.kind, j.links, at, j.axis is None, j.radius is None)
+            )
+        parts += [(p.name, p.link, _spec_key(p.at)) for p in mech.points]
+        parts += [d.joint for d in mech.drivers]
+        for load in mech.loads:
+            if isinstance(load.force, LoadTable) or isinstance(load.torque, LoadTable):
+                return None
+            at = _spec_key(load.at)
+            parts.append((load.link, at, load.force is None, load.torque is None))
+        key = tuple(parts)
+        hash(key)
+    except (_Odd, TypeError):
+        return None
+    return key
+
+
+class _Odd(Exception):  # noqa: N818 (a signal, caught in _skeleton)
+    """A point given in none of the common forms."""
+
+
+def _spec_key(spec: object) -> Any:
+    """Return how a point is given: a name, a Toward's two names, or coordinates."""
+    if spec is None or spec.__class__ is str:
+        return spec
+    if spec.__class__ is Toward:
+        return ("toward", spec.start, spec.toward)  # type: ignore[attr-defined]
+    if spec.__class__ is tuple:
+        return ()
+    raise _Odd
+
+
+def _validate_numbers(mech: Mechanism) -> None:
+    """Check the numbers of ``mech``, whose skeleton is valid, in the full order.
+
+    Each value is tested quickly; one that fails is checked again by the function
+    the full check uses, which raises its message.
+    """
+    for link in mech.links:
+        for key in ("mass", "inertia"):
+            value = getattr(link, key)
+            if value is not None and not (_finite(value) and value >= 0.0):
+                _check_number(f"links.{key_text(link.name)}.{key}", value, 0.0)
+    for joint in mech.joints:
+        if joint.kind != "revolute" and not (
+            _vec_ok(joint.axis) and math.hypot(*joint.axis) >= COINCIDENT  # type: ignore[misc]
+        ):
+            _check_joint_axis(f"joints.{key_text(joint.name)}", joint)
+        friction, radius = joint.friction, joint.radius
+        if not (
+            _finite(friction)
+            and friction >= 0.0
+            and (radius is None or (_finite(radius) and radius >= 0.0))
+            and not (joint.kind == "revolute" and friction and not radius)
+        ):
+            _check_friction(f"joints.{key_text(joint.name)}", joint)
+    names = {j.name for j in mech.joints} | {p.name for p in mech.points}
+    for joint in mech.joints:
+        if not _point_ok(joint.at):
+            entry = f"joints.{key_text(joint.name)}.at"
+            _check_point(entry, joint.at, names - {joint.name})
+    for point in mech.points:
+        if not _point_ok(point.at):
+            entry = f"points.{key_text(point.name)}.at"
+            _check_point(entry, point.at, names - {point.name})
+    for link in mech.links:
+        if link.center is not None and not _point_ok(link.center):
+            _check_point(_entry("links", link.name, ".center"), link.center, names)
+        if link.axis is not None and not all(map(_point_ok, link.axis)):
+            _check_axis(_entry("links", link.name, ".axis"), link.axis, names)
+    for index, driver in enumerate(mech.drivers):
+        for key in ("omega", "epsilon"):
+            if not _finite(getattr(driver, key)):
+                _fail(f"drivers[{index}].{key}", _number_fault(getattr(driver, key)))
+    if mech.gravity is not None and not _vec_ok(mech.gravity):
+        _check_vec("gravity.g", mech.gravity)
+    for index, load in enumerate(mech.loads):
+        entry = f"loads[{index}]"
+        if load.force is not None and not _vec_ok(load.force):
+            _check_vec(f"{entry}.force", load.force)
+        if load.at is not None and not _point_ok(load.at):
+            _check_point(f"{entry}.at", load.at, names)
+        if load.torque is not None and not _finite(load.torque):
+            _fail(f"{entry}.torque", _number_fault(load.torque))
+    resolve = _resolver(mech)
+    try:
+        _check_resolvable(mech, entries=False, resolve=resolve)
+    except ModelError:
+        _check_resolvable(mech)  # again, for the message naming the entry
+    _check_cranks(mech, resolve)
+
+
+def _vec_ok(value: object) -> bool:
+    """Whether :func:`_check_vec` accepts ``value``."""
+    return (
+        isinstance(value, tuple | list) and len(value) == 2 and all(map(_finite, value))
+    )
+
+
+def _point_ok(spec: object) -> bool:
+    """Whether the numbers of a point in a valid skeleton are acceptable."""
+    if spec.__class__ is str:
+        return True
+    if spec.__class__ is Toward:
+        return _finite(spec.distance)  # type: ignore[attr-defined]
+    return _vec_ok(spec)
+
+
+def _validate_all(mech: Mechanism) -> None:
     """Check every reference and value of ``mech``; raise on the first fault."""
     if not mech.links:
         _fail("links", "no moving links; expected at least one [links.NAME] entry")
@@ -776,20 +955,55 @@ def _validate_load(
         _fail(f"{entry}.torque", _number_fault(load.torque))
 
 
-def _check_resolvable(mech: Mechanism) -> None:
-    """Every point must have coordinates (a from/toward pair must not coincide)."""
+def _resolver(mech: Mechanism) -> Any:
+    """Return :func:`resolve_point` for ``mech``, quicker on names of coordinates.
+
+    Validation resolves every point, most of them names of joints given as
+    coordinates: those are looked up once. Anything else (a name of a name, a Toward
+    of such names, a fault) goes through resolve_point, so results and messages are
+    the same.
+    """
+    plain: dict[str, np.ndarray] = {}
+    for name, at in [(j.name, j.at) for j in mech.joints] + [
+        (p.name, p.at) for p in mech.points
+    ]:
+        if at.__class__ is tuple and name not in plain:
+            plain[name] = np.asarray(at, dtype=float)
+
+    def resolve(spec: PointSpec, entry: str = "point") -> np.ndarray:
+        if spec.__class__ is tuple:
+            return np.asarray(spec, dtype=float)  # as resolve_point does
+        # names are unique by now: ``plain`` holds the one point of each name
+        if spec.__class__ is str and spec in plain:
+            return plain[spec]  # type: ignore[index]
+        if isinstance(spec, Toward) and spec.start in plain and spec.toward in plain:
+            return _toward(spec, plain[spec.start], plain[spec.toward], entry)
+        return resolve_point(mech, spec, entry)
+
+    return resolve
+
+
+def _check_resolvable(
+    mech: Mechanism, entries: bool = True, resolve: Any = None
+) -> None:
+    """Every point must have coordinates (a from/toward pair must not coincide).
+
+    Without ``entries`` the messages name no entry (cheaper when none is expected:
+    see :func:`_validate_numbers`). ``resolve`` is the mechanism's
+    :func:`_resolver`, made here if not given.
+    """
+    resolve = resolve or _resolver(mech)
+    where = _entry if entries else _no_entry
     for joint in mech.joints:
-        resolve_point(mech, joint.at, f"joints.{key_text(joint.name)}.at")
+        resolve(joint.at, where("joints", joint.name, ".at"))
     for point in mech.points:
-        resolve_point(mech, point.at, f"points.{key_text(point.name)}.at")
+        resolve(point.at, where("points", point.name, ".at"))
     for link in mech.links:
         if link.center is not None:
-            resolve_point(mech, link.center, f"links.{key_text(link.name)}.center")
+            resolve(link.center, where("links", link.name, ".center"))
         if link.axis is not None:
-            entry = f"links.{key_text(link.name)}.axis"
-            a, b = (
-                resolve_point(mech, p, f"{entry}[{i}]") for i, p in enumerate(link.axis)
-            )
+            entry = where("links", link.name, ".axis")
+            a, b = (resolve(p, f"{entry}[{i}]") for i, p in enumerate(link.axis))
             if _coincide(a, b):
                 _fail(
                     entry,
@@ -799,22 +1013,33 @@ def _check_resolvable(mech: Mechanism) -> None:
                 )
     for index, load in enumerate(mech.loads):
         if load.at is not None:
-            resolve_point(mech, load.at, f"loads[{index}].at")
+            resolve(load.at, f"loads[{index}].at" if entries else "")
 
 
-def _check_cranks(mech: Mechanism) -> None:
+def _entry(kind: str, name: object, suffix: str) -> str:
+    """Return an entry such as ``joints.B.at``."""
+    return f"{kind}.{key_text(name)}{suffix}"
+
+
+def _no_entry(kind: str, name: object, suffix: str) -> str:
+    """Return no entry (see :func:`_check_resolvable`)."""
+    return ""
+
+
+def _check_cranks(mech: Mechanism, resolve: Any = None) -> None:
     """Refuse a crank whose joints all sit at its pivot: it would drive nothing."""
+    resolve = resolve or _resolver(mech)
     for index, driver in enumerate(mech.drivers):
         joint = mech.joint(driver.joint)
         if joint.kind != "revolute":
             continue
         link = joint.links[1] if joint.links[0] == GROUND else joint.links[0]
-        pivot = resolve_point(mech, joint.at)
+        pivot = resolve(joint.at)
         others = [j for j in mech.joints if j is not joint and link in j.links]
         moving = [
             j
             for j in others
-            if j.kind != "revolute" or not _coincide(pivot, resolve_point(mech, j.at))
+            if j.kind != "revolute" or not _coincide(pivot, resolve(j.at))
         ]
         if others and not moving:
             names = ", ".join(describe(j.name) for j in others[:4])
@@ -867,15 +1092,20 @@ def resolve_point(
     if isinstance(spec, Toward):
         a = resolve_point(mech, spec.start, entry, _depth + 1)
         b = resolve_point(mech, spec.toward, entry, _depth + 1)
-        if _coincide(a, b):
-            _fail(
-                entry,
-                f"points {describe(spec.start)} and {describe(spec.toward)} coincide; "
-                "expected two distinct points",
-            )
-        length = float(np.hypot(*(b - a)))
-        return a + (b - a) * (spec.distance / length)
+        return _toward(spec, a, b, entry)
     return np.asarray(spec, dtype=float)
+
+
+def _toward(spec: Toward, a: np.ndarray, b: np.ndarray, entry: str) -> np.ndarray:
+    """Return the point of ``spec`` from its two points ``a`` and ``b`` resolved."""
+    if _coincide(a, b):
+        _fail(
+            entry,
+            f"points {describe(spec.start)} and {describe(spec.toward)} coincide; "
+            "expected two distinct points",
+        )
+    length = float(np.hypot(*(b - a)))
+    return a + (b - a) * (spec.distance / length)
 
 
 def point_links(mech: Mechanism) -> dict[str, tuple[str, ...]]:

@@ -1,10 +1,14 @@
 """Studies: many variants of a mechanism, each summarised over a sweep.
 
 :func:`sweep` builds every variant from its parameters, solves the variants of one
-topology together in batches (:mod:`assur._batch`) and gathers one row of summary
-values per variant (:meth:`assur.Table.summary`). With a dask.distributed client the
-variants are split into partitions that the cluster's workers run. pandas, xarray
-and dask are imported only when a study needs them.
+form together in batches (:mod:`assur._batch`) and gathers one row of summary values
+per variant (:meth:`assur.Table.summary`). A batch's plan is compiled at once from the
+variants' numbers against a template, one compiled variant of the form
+(:mod:`assur._variants`): compiling each variant's plan on its own cost more than
+solving its positions. Variants the template does not serve are compiled one by one
+and stacked (:mod:`assur._stack`), or analysed alone. With a dask.distributed client
+the variants are split into partitions that the cluster's workers run. pandas,
+xarray and dask are imported only when a study needs them.
 """
 
 from __future__ import annotations
@@ -17,9 +21,10 @@ from typing import Any
 
 import numpy as np
 
-from assur._batch import CHUNK, summaries
+from assur._batch import CHUNK, near_change_points, stacked, summaries
 from assur._loads import compile_loads
 from assur._stack import Unstackable, signature
+from assur._variants import Template, compile_many, form, numbers, template
 from assur._vec import Array
 from assur.analysis import forces, positions
 from assur.errors import AssurError, AssurWarning, UsageError
@@ -181,9 +186,11 @@ def summarise(
     count = len(next(iter(parameters.values())))
     rows: list[dict[str, Any]] = []
     size = max(1, CHUNK // max(1, angles.shape[0]))
-    for first in range(0, count, size):
-        block = range(first, min(first + size, count))
-        rows += _block(factory, parameters, angles, block)
+    _keep_the_heap()
+    templates: dict[Any, Template | None] = {}
+    for first in range(0, count, GROUPED * size):
+        block = range(first, min(first + GROUPED * size, count))
+        rows += _block(factory, parameters, angles, block, templates, size)
     names: dict[str, None] = dict.fromkeys(parameters)
     for row in rows:
         names.update(dict.fromkeys(row))
@@ -194,13 +201,28 @@ def summarise(
     return frame
 
 
+GROUPED = 8
+"""Batches of variants built and compiled together: the checks of a compilation cost
+about as much for a few hundred variants as for the few dozen of one batch."""
+
+
 def _block(
-    factory: Factory, parameters: dict[str, Array], angles: Array, block: range
+    factory: Factory,
+    parameters: dict[str, Array],
+    angles: Array,
+    block: range,
+    templates: dict[Any, Template | None],
+    size: int,
 ) -> list[dict[str, Any]]:
-    """Return the rows of the variants ``block``, those of one topology batched."""
+    """Return the rows of the variants ``block``, those of one form batched.
+
+    The variants of one :func:`assur._variants.form` are compiled at once against
+    its template (kept in ``templates`` from block to block) and solved in batches
+    of ``size`` variants; those the template does not serve are compiled one by one
+    and stacked (:func:`_compiled`).
+    """
     rows: list[dict[str, Any]] = []
-    groups: dict[Any, list[tuple[int, Mechanism, Plan]]] = {}
-    alone: list[tuple[int, Mechanism]] = []
+    forms: dict[Any, list[tuple[int, Mechanism]]] = {}
     for i in block:
         p = _variant(parameters, i)
         rows.append({**p, "error": "", "warning": ""})
@@ -209,6 +231,76 @@ def _block(
         except (AssurError, ValueError, ArithmeticError) as err:
             rows[-1]["error"] = _line(err)
             continue
+        forms.setdefault(form(mech), []).append((i, mech))
+    alone: list[tuple[int, Mechanism]] = []
+    rest: list[tuple[int, Mechanism]] = []
+    for key, members in forms.items():
+        model = _template(templates, key, members, rest)
+        if model is None:
+            alone += members
+            continue
+        table = np.array([numbers(mech) for _, mech in members])
+        compiled, doubtful = compile_many(model, table)
+        rest += [x for x, d in zip(members, doubtful.tolist(), strict=True) if d]
+        good = np.flatnonzero(~doubtful)
+        if not good.size:
+            continue
+        given = positions(model.plan, angles)
+        # the change-point screen of every batch at once (its cost is mostly per call)
+        near = near_change_points(compiled.screen(good), model.plan, given)
+        for start in range(0, good.size, size):
+            chosen = good[start : start + size]
+            many = compiled.batch(chosen, angles.shape[0])
+            part = near[start : start + size]
+            found = summaries(many, model.plan, given, part)
+            alone += _fill(rows, block.start, [members[i] for i in chosen], found)
+    alone += _compiled(rows, block.start, rest, angles, size)
+    for i, mech in alone:
+        rows[i - block.start].update(_alone(mech, angles))
+    return rows
+
+
+def _template(
+    templates: dict[Any, Template | None],
+    key: Any,
+    members: list[tuple[int, Mechanism]],
+    rest: list[tuple[int, Mechanism]],
+) -> Template | None:
+    """Return the template of the form ``key``, compiling one of ``members`` if new.
+
+    A member that does not compile moves to ``rest`` (compiled again there, it fails
+    as a separate call does); None when the form's plans cannot be stacked (every
+    member is then analysed on its own) or when no member compiles.
+    """
+    if key in templates:
+        return templates[key]
+    while members:
+        try:
+            model = template(members[0][1])
+        except AssurError:
+            rest.append(members.pop(0))
+            continue
+        if len(templates) >= 64:
+            templates.clear()
+        templates[key] = model
+        return model
+    return None
+
+
+def _compiled(
+    rows: list[dict[str, Any]],
+    start: int,
+    members: list[tuple[int, Mechanism]],
+    angles: Array,
+    size: int,
+) -> list[tuple[int, Mechanism]]:
+    """Solve ``members`` each compiled on its own, those of one signature stacked.
+
+    Batches hold at most ``size`` variants. Returns the members to be analysed alone.
+    """
+    groups: dict[Any, list[tuple[int, Mechanism, Plan]]] = {}
+    alone: list[tuple[int, Mechanism]] = []
+    for i, mech in members:
         try:
             plan = compile_plan(mech)
             key = signature(plan, compile_loads(plan))
@@ -218,20 +310,63 @@ def _block(
             alone.append((i, mech))
         else:
             groups.setdefault(key, []).append((i, mech, plan))
-    for members in groups.values():
-        plans = [plan for _, _, plan in members]
-        try:
-            found = summaries(plans, positions(plans[0], angles))
-        except Unstackable:
-            found = [None] * len(plans)
-        for (i, mech, _), values in zip(members, found, strict=True):
-            if values is None:
-                alone.append((i, mech))
-            else:
-                rows[i - block.start].update(values)
-    for i, mech in alone:
-        rows[i - block.start].update(_alone(mech, angles))
-    return rows
+    for every in groups.values():
+        for first in range(0, len(every), size):
+            alone += _stacked(rows, start, every[first : first + size], angles)
+    return alone
+
+
+def _stacked(
+    rows: list[dict[str, Any]],
+    start: int,
+    group: list[tuple[int, Mechanism, Plan]],
+    angles: Array,
+) -> list[tuple[int, Mechanism]]:
+    """Solve the variants ``group``, of one signature, stacked; return those left."""
+    plans = [plan for _, _, plan in group]
+    try:
+        found = summaries(
+            stacked(plans, angles.shape[0]), plans[0], positions(plans[0], angles)
+        )
+    except Unstackable:
+        found = [None] * len(plans)
+    return _fill(rows, start, [(i, m) for i, m, _ in group], found)
+
+
+def _fill(
+    rows: list[dict[str, Any]],
+    start: int,
+    members: list[tuple[int, Mechanism]],
+    found: list[dict[str, float] | None],
+) -> list[tuple[int, Mechanism]]:
+    """Put each member's summary in its row; return those without one."""
+    alone = []
+    for (i, mech), values in zip(members, found, strict=True):
+        if values is None:
+            alone.append((i, mech))
+        else:
+            rows[i - start].update(values)
+    return alone
+
+
+HEAP = 2 * 1024 * 1024
+"""Values in the block freed once before a study (16 MB; see ``_keep_the_heap``)."""
+
+
+def _keep_the_heap() -> None:
+    """Free one large block, so that the C allocator keeps the batches' memory.
+
+    glibc's malloc gives the free top of its heap back to the system whenever it
+    exceeds a trim threshold (128 kB until a block served by mmap is freed; then
+    twice that block's size). A study's batches allocate and free a few MB of
+    temporaries each, and never a large array: every batch faulted its pages in
+    again (measured on 10^4 variants: 730 000 page faults, 2 s of system time, a
+    third of the study). A long sweep escapes this by freeing its large arrays;
+    freeing one such block (never written) does the same. Elsewhere it costs an
+    allocation.
+    """
+    block = np.empty(HEAP)
+    del block
 
 
 def _alone(mech: Mechanism, angles: Array) -> dict[str, Any]:

@@ -75,29 +75,37 @@ def parameters(count: int, seed: int = 1) -> dict[str, np.ndarray]:
 ANGLES = ANGLE + np.arange(360.0)
 
 
+CPU: dict[str, list[float]] = {}
+"""CPU time of every timed run (``time.process_time``), by what ran: the machine is
+shared, and its other work lengthens wall times more than CPU times."""
+
+
 def time_study(count: int, first: int | None = None) -> tuple[float, object]:
     """Time a study of ``count`` variants (or the first ``first`` of them)."""
     p = {name: v[:first] for name, v in parameters(count).items()}
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     study = assur.sweep(exercise, p, ANGLES)
+    CPU.setdefault("study", []).append(time.process_time() - cpu)
     return time.perf_counter() - start, study
 
 
 def time_long(count: int) -> float:
     mech = _exercise()
     angles = np.tile(ANGLES, count)
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     assur.forces(mech, angles).summary()
+    CPU.setdefault("long", []).append(time.process_time() - cpu)
     return time.perf_counter() - start
 
 
 def time_loop(count: int, subset: int) -> tuple[float, list[dict[str, float]]]:
     p = parameters(count)
     out = []
-    start = time.perf_counter()
+    start, cpu = time.perf_counter(), time.process_time()
     for i in range(subset):
         mech = exercise(float(p["crank"][i]), float(p["rod"][i]))
         out.append(assur.forces(mech, ANGLES).summary())
+    CPU["loop"] = [(time.process_time() - cpu) * count / subset]
     return (time.perf_counter() - start) * count / subset, out
 
 
@@ -153,13 +161,15 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true")
     args = parser.parse_args(argv)
-    count, subset, rounds = (1000, 100, 1) if args.quick else (10_000, 300, 3)
+    count, subset, rounds = (1000, 100, 1) if args.quick else (10_000, 300, 5)
     time_study(20)  # warm-up: imports, caches
+    CPU.clear()
     studies, longs = [], []
     for _ in range(rounds):
         studies.append(time_study(count)[0])
         longs.append(time_long(count))
     loop, separate = time_loop(count, subset)
+    cpu = {key: float(np.median(runs)) for key, runs in CPU.items()}
     _, small = time_study(count, subset)
     error = agreement(small, separate)
     study, long = float(np.median(studies)), float(np.median(longs))
@@ -175,6 +185,12 @@ def main(argv: list[str] | None = None) -> int:
         "loop_s_scaled": loop,
         "loop_subset": subset,
         "study_over_long": study / long,
+        "study_over_long_rounds": [a / b for a, b in zip(studies, longs, strict=True)],
+        "study_cpu_s": cpu["study"],
+        "one_long_sweep_cpu_s": cpu["long"],
+        "study_over_long_cpu": cpu["study"] / cpu["long"],
+        "loop_cpu_s_scaled": cpu["loop"],
+        "loop_over_study_cpu": cpu["loop"] / cpu["study"],
         "loop_over_study": loop / study,
         "max_rel_difference": error,
         "memory": memory,
@@ -189,6 +205,11 @@ def main(argv: list[str] | None = None) -> int:
     print(f"  one mechanism, {count * len(ANGLES):.2g} positions   {long:8.2f} s")
     print(f"  loop of separate calls (scaled)   {loop:8.2f} s")
     print(f"  study / one long sweep  {study / long:6.2f}  (target <= 1.5)")
+    print(
+        f"  CPU: study {cpu['study']:.2f} s, long sweep {cpu['long']:.2f} s, "
+        f"ratio {cpu['study'] / cpu['long']:.2f}; loop {cpu['loop']:.2f} s, "
+        f"loop / study {cpu['loop'] / cpu['study']:.2f}"
+    )
     print(f"  loop / study            {loop / study:6.2f}  (target >= 5)")
     print(f"  largest difference from separate calls {error:.2g}")
     before, peak = memory["before_mb"], memory["peak_mb"]

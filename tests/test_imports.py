@@ -42,6 +42,8 @@ RANKS = {
     "assur.table": 8,
     "assur.summary": 8,
     "assur._stack": 6,
+    # many variants compiled at once against a template plan
+    "assur._variants": 6,
     "assur.analysis": 9,
     # variants of one topology solved in one batch, from the analysis's own steps
     "assur._batch": 9,

@@ -542,3 +542,67 @@ def test_mechanism_is_frozen_and_hashable():
     with pytest.raises(AttributeError):
         mech.name = "other"  # type: ignore[misc]
     assert hash(mech) == hash(assur.loads(BASE))
+
+
+def _parts(mech, **changes):
+    """The mechanism's fields with some of its parts changed (a list per part)."""
+    fields = {
+        "links": list(mech.links),
+        "joints": list(mech.joints),
+        "drivers": list(mech.drivers),
+        "loads": list(mech.loads),
+        "points": list(mech.points),
+        "gravity": mech.gravity,
+    }
+    for name, change in changes.items():
+        fields[name] = change(fields[name])
+    return fields
+
+
+def _replace(items, index, **values):
+    import dataclasses
+
+    items[index] = dataclasses.replace(items[index], **values)
+    return items
+
+
+NAN = float("nan")
+NUMERIC_FAULTS = {
+    "mass": {"links": lambda x: _replace(x, 0, mass=NAN)},
+    "inertia": {"links": lambda x: _replace(x, 1, inertia=-1.0)},
+    "distance": {"links": lambda x: _replace(x, 0, center=Toward("A", "B", 1e300))},
+    "coordinates": {"joints": lambda x: _replace(x, 1, at=(NAN, 0.1))},
+    "axis": {"joints": lambda x: _replace(x, 3, axis=(0.0, 0.0))},
+    "friction": {"joints": lambda x: _replace(x, 0, friction=0.1)},
+    "radius": {"joints": lambda x: _replace(x, 0, friction=0.1, radius=-1.0)},
+    "omega": {"drivers": lambda x: _replace(x, 0, omega=float("inf"))},
+    "gravity": {"gravity": lambda g: (0.0, NAN)},
+    "two": {
+        "links": lambda x: _replace(x, 0, mass=-2.0),
+        "drivers": lambda x: _replace(x, 0, epsilon=NAN),
+    },
+    "coincide": {
+        "joints": lambda x: _replace(_replace(x, 1, at=(0.0, 0.0)), 2, at=(0.0, 0.0))
+    },
+}
+
+
+@pytest.mark.parametrize("fault", sorted(NUMERIC_FAULTS))
+def test_a_known_skeleton_gives_the_full_checks_message(fault, monkeypatch):
+    # a mechanism whose skeleton passed before has only its numbers checked; its
+    # message must be the one every check gives
+    from assur import catalog, model
+
+    base = catalog.slider_crank()
+    assert model._skeleton(base) in model._VALID
+    fields = _parts(base, **NUMERIC_FAULTS[fault])
+    with pytest.raises(ModelError) as quick:
+        Mechanism(**fields)
+    every = model._validate_all
+    ran = []
+    monkeypatch.setattr(model, "_VALID", set())
+    monkeypatch.setattr(model, "_validate_all", lambda m: ran.append(1) or every(m))
+    with pytest.raises(ModelError) as full:
+        Mechanism(**fields)
+    assert ran
+    assert str(quick.value) == str(full.value)

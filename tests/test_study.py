@@ -8,7 +8,9 @@ error a separate call raises. The same through a dask LocalCluster of two proces
 
 from __future__ import annotations
 
+import dataclasses
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -213,3 +215,90 @@ def test_a_variant_passing_a_change_point_is_solved_as_a_separate_call_does():
     assert "(a change point)" in warned[1]
     assert not warned[0]
     assert not warned[2]
+
+
+def _same(a, b, path="", skipped=frozenset()):
+    """Assert two stacked plans hold the same numbers, leaf by leaf, bit for bit."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        np.testing.assert_array_equal(a, b, err_msg=path)
+    elif isinstance(a, tuple | list):
+        assert len(a) == len(b), path
+        for i, (x, y) in enumerate(zip(a, b, strict=True)):
+            _same(x, y, f"{path}[{i}]", skipped)
+    elif isinstance(a, dict):
+        assert list(a) == list(b), path
+        for key in a:
+            _same(a[key], b[key], f"{path}.{key}", skipped)
+    elif dataclasses.is_dataclass(a):
+        assert type(a) is type(b), path
+        kept = {"mechanism", "topology", "origins", "angle0", "memo", "group"}
+        for f in dataclasses.fields(a):
+            if f.name not in kept | skipped:
+                field = f"{path}.{f.name}"
+                _same(getattr(a, f.name), getattr(b, f.name), field, skipped)
+    else:
+        assert a == b or (a != a and b != b), (path, a, b)
+
+
+def _scaled(mech, factor):
+    """The mechanism with its coordinates and masses scaled by ``factor``."""
+
+    def at(spec):
+        return (spec[0] * factor, spec[1] * factor) if isinstance(spec, tuple) else spec
+
+    return dataclasses.replace(
+        mech,
+        joints=tuple(dataclasses.replace(j, at=at(j.at)) for j in mech.joints),
+        links=tuple(
+            dataclasses.replace(
+                link,
+                center=None if link.center is None else at(link.center),
+                mass=link.mass * factor if link.mass else link.mass,
+            )
+            for link in mech.links
+        ),
+        points=tuple(dataclasses.replace(p, at=at(p.at)) for p in mech.points),
+        loads=tuple(
+            dataclasses.replace(ld, at=None if ld.at is None else at(ld.at))
+            for ld in mech.loads
+        ),
+    )
+
+
+@pytest.mark.parametrize(
+    "name", ["slider_crank_exercise", "six_bar_lecture", "tenbar", "slot_mechanism"]
+)
+def test_variants_compiled_at_once_hold_their_own_plans_numbers(name):
+    from assur._batch import stacked
+    from assur._stack import restack
+    from assur._variants import compile_many, form, numbers, template
+    from assur.plan import compile_plan
+
+    mech = assur.load(Path(__file__).parent.parent / "examples" / f"{name}.toml")
+    variants = [mech, _scaled(mech, 1.01), _scaled(mech, 0.98)]
+    assert len({form(m) for m in variants}) == 1
+    model = template(variants[0])
+    rows = np.array([numbers(m) for m in variants])
+    compiled, doubtful = compile_many(model, rows)
+    assert not doubtful.any()
+    many = compiled.batch(np.arange(3), 5)
+    each = stacked([compile_plan(m) for m in variants], 5)
+    _same(many.plan, each.plan)
+    _same(many.loads, each.loads)
+    # the plan over another number of rows, for the change-point screen's grid
+    # (which reads no reported point)
+    _same(many.again(7), restack(each.plan, 5, 7), skipped={"point_offset"})
+    np.testing.assert_array_equal(many.references, each.references)
+
+
+def test_a_variant_at_a_dead_centre_is_compiled_on_its_own():
+    from assur._variants import compile_many, numbers, template
+
+    # a rod as long as the crank pin is high: the rod stands square to the guide
+    # in the reference pose, a dead centre (refused), or next to one (accepted)
+    height = catalog.slider_crank().joint("B").at[1]
+    rods = [0.2, height * (1 + 1e-13), height * (1 + 1e-11), 0.3]
+    variants = [catalog.slider_crank(rod=rod) for rod in rods]
+    rows = np.array([numbers(m) for m in variants])
+    _, doubtful = compile_many(template(variants[0]), rows)
+    assert doubtful.tolist() == [False, True, True, False]

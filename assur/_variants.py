@@ -1,0 +1,575 @@
+"""Plans of many variants of one mechanism, compiled at once over the variants.
+
+Compiling one variant's plan (:func:`assur.plan.compile_plan`) costs more than solving
+its 360 positions, and of that cost little depends on the variant's numbers: the
+decomposition, the groups' kinds, the names. So the variants of a study are grouped by
+their :func:`form` (the mechanism with its coordinates, masses, inertias and load
+values left out); the first of a form that compiles is compiled as any mechanism is
+and becomes the :class:`Template`, and every variant is read into one row of numbers
+(:func:`numbers`). :func:`compile_many` then computes each numeric field of the
+template's plan for all the rows at once with numpy, with the arithmetic of
+``compile_plan`` (subtractions of the same coordinates, the same closures of the
+dyads), so that a variant gets the numbers its own plan would hold, bit for bit. The
+result is the stacked plan of :mod:`assur._stack`, built without a plan per variant.
+
+``compile_plan`` refuses some mechanisms (a reference pose that a dyad does not close
+or closes at a dead centre, a link too small beside the mechanism, ...). Those checks
+are made here on every row, with margins: a variant that fails or nearly fails one, or
+whose plan could not share the batch (the core's origin moved, a branch nearly
+undecided), is marked and compiled on its own by the caller, so that it fails or
+warns exactly as a separate call does. Only dyads are compiled so: a template with a
+group solved by Newton's method is not stackable (:func:`assur._stack.signature`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Callable, Hashable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from assur._loads import LoadPlan, compile_loads
+from assur._stack import Rows, repeat, signature
+from assur._vec import Array, Mask, wrap
+from assur.groups._dyad import (
+    APART,
+    BRANCH_TOLERANCE,
+    DEAD_CENTRE,
+    DyadSolver,
+    conditioning,
+    jacobian,
+)
+from assur.groups._motion import Motion
+from assur.groups._pairs import PairPlan
+from assur.groups.driver import DriverPlan
+from assur.model import LoadTable, Mechanism, PointSpec, Toward
+from assur.plan import FAR, SMALL, Plan, compile_plan
+
+__all__ = [
+    "Compiled",
+    "Many",
+    "Template",
+    "compile_many",
+    "form",
+    "numbers",
+    "template",
+]
+
+MARGIN = 4.0
+"""Factor by which a variant must clear each check of ``compile_plan`` to be compiled
+here; one nearer the limit is compiled on its own (and fails there if it must)."""
+UNDECIDED = 1e3 * BRANCH_TOLERANCE
+"""A variant whose other branch also closes within this is compiled on its own."""
+
+Leaf = Callable[[Array], Any]
+Index = NDArray[np.intp]
+"""Indices of variants (rows)."""
+
+
+def form(mech: Mechanism) -> Hashable:
+    """Return what variants compiled from one template must share.
+
+    Everything but the numbers that :func:`numbers` reads: names, kinds, which link
+    each joint joins, how each point is given (coordinates, a name, a Toward), which
+    links have a mass, the drivers, gravity, friction and tabulated loads.
+    """
+    return (
+        tuple(
+            (
+                link.name,
+                None
+                if link.axis is None
+                else (_spec(link.axis[0]), _spec(link.axis[1])),
+                bool(link.mass),
+                link.inertia is None,
+                _spec(link.center),
+            )
+            for link in mech.links
+        ),
+        tuple(
+            (j.name, j.kind, j.links, _spec(j.at), j.axis, j.friction, j.radius)
+            for j in mech.joints
+        ),
+        mech.drivers,
+        mech.gravity,
+        tuple((p.name, p.link, _spec(p.at)) for p in mech.points),
+        tuple(
+            (ld.link, _spec(ld.at), _value(ld.force), _value(ld.torque))
+            for ld in mech.loads
+        ),
+    )
+
+
+def _spec(spec: PointSpec | None) -> Hashable:
+    """Return how a point is given, without its coordinates or distance."""
+    if spec is None or isinstance(spec, str):
+        return spec
+    if isinstance(spec, Toward):
+        return ("toward", spec.start, spec.toward)
+    return ""
+
+
+def _value(value: Any) -> Hashable:
+    """Return a load's value as the form sees it: a table, or a number (or None)."""
+    return value if value is None or isinstance(value, LoadTable) else ""
+
+
+def numbers(mech: Mechanism, keys: dict[Any, int] | None = None) -> list[float]:
+    """Return the numbers of ``mech`` that :func:`compile_many` reads, in one row.
+
+    With ``keys``, record where each quantity starts in the row (for the template).
+    Coordinates are resolved as :func:`assur.model.resolve_point` resolves them.
+    """
+    out: list[float] = []
+    named = {j.name: j.at for j in mech.joints} | {p.name: p.at for p in mech.points}
+    memo: dict[str, tuple[float, float]] = {}
+
+    def at(spec: PointSpec) -> tuple[float, float]:
+        if isinstance(spec, str):
+            found = memo.get(spec)
+            if found is None:
+                found = memo[spec] = at(named[spec])
+            return found
+        if isinstance(spec, Toward):
+            # resolve_point's arithmetic (numpy's hypot; the rest is elementwise
+            # there, the same operations on floats here)
+            (ax, ay), (bx, by) = at(spec.start), at(spec.toward)
+            dx, dy = bx - ax, by - ay
+            ratio = spec.distance / float(np.hypot(dx, dy))
+            return ax + dx * ratio, ay + dy * ratio
+        return float(spec[0]), float(spec[1])
+
+    def put(key: Any, *values: float) -> None:
+        if keys is not None:
+            keys[key] = len(out)
+        out.extend(values)
+
+    for joint in mech.joints:
+        put(("joint", joint.name), *at(joint.at))
+    for point in mech.points:
+        put(("point", point.name), *at(point.at))
+    for link in mech.links:
+        if link.axis is not None:
+            a, b = at(link.axis[0]), at(link.axis[1])
+            put(("angle", link.name), math.atan2(b[1] - a[1], b[0] - a[0]))
+        if link.mass:
+            put(("mass", link.name), float(link.mass), float(link.inertia or 0.0))
+        if link.center is not None:
+            put(("center", link.name), *at(link.center))
+    for i, load in enumerate(mech.loads):
+        if load.at is not None:
+            put(("at", i), *at(load.at))
+        if load.force is not None and not isinstance(load.force, LoadTable):
+            put(("force", i), float(load.force[0]), float(load.force[1]))
+        if load.torque is not None and not isinstance(load.torque, LoadTable):
+            put(("torque", i), float(load.torque))
+    return out
+
+
+@dataclass(frozen=True, slots=True)
+class Template:
+    """A compiled variant whose plan's structure serves every variant of its form.
+
+    ``columns`` says where each quantity starts in a row of :func:`numbers`;
+    ``origin_pair`` names, for each body, the pair whose reference point is its
+    origin (None for the frame).
+    """
+
+    plan: Plan
+    loads: LoadPlan
+    columns: dict[Any, int]
+    origin_pair: tuple[str | None, ...]
+
+
+def template(mech: Mechanism) -> Template | None:
+    """Compile ``mech`` as a template; None when its plans cannot be stacked.
+
+    Raises
+    ------
+    AssurError
+        As :func:`assur.plan.compile_plan` and :func:`assur._loads.compile_loads`.
+    """
+    plan = compile_plan(mech)
+    loads = compile_loads(plan)
+    if signature(plan, loads) is None:
+        return None
+    if any(not isinstance(s, DyadSolver) for s in plan.solvers):
+        return None
+    columns: dict[Any, int] = {}
+    numbers(mech, columns)
+    by_name = {p.name: p for p in plan.topology.pairs}
+    origin: list[str | None] = [None] * len(plan.bodies)
+    for d in plan.drivers:
+        origin[d.body] = d.pair.name
+    for g in plan.groups:
+        for link in g.links:
+            origin[plan.index[link]] = next(
+                p for p in g.external + g.internal if link in by_name[p].links
+            )
+    return Template(plan, loads, columns, tuple(origin))
+
+
+@dataclass(frozen=True, slots=True)
+class Many:
+    """Variants compiled together: their stacked plan and loads.
+
+    ``plan`` and ``loads`` hold each variant's numbers over ``repeats`` rows in turn;
+    ``references`` (k,) is each variant's driver position in the reference pose (rad).
+    ``again(count)``, when given, builds the plan with each variant over ``count``
+    rows (cheaper than :func:`assur._stack.restack`, which walks the whole plan).
+    """
+
+    plan: Plan
+    loads: LoadPlan
+    references: Array
+    again: Callable[[int], Plan] | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Compiled:
+    """Variants compiled against a template: their numbers, ready to be batched.
+
+    ``offsets`` are each pair's offsets on its two bodies, ``origins`` (k, B, 2) the
+    bodies' origins, ``scale`` (k,) the mechanisms' sizes and ``branches`` each
+    dyad's assembly branch (k,), all in core coordinates, one value per variant.
+    """
+
+    model: Template
+    rows: Array
+    offsets: dict[str, tuple[Array, Array]]
+    origins: Array
+    scale: Array
+    branches: list[Array]
+
+    def batch(self, chosen: Index, repeats: int) -> Many:
+        """Return the stacked plan of the variants ``chosen`` (indices into rows)."""
+        leaf = self._leaves(chosen, repeats)
+        plan, references = self._plan(leaf, True)
+        loads = _loads(self.model, self.rows, leaf, self.origins)
+
+        def again(count: int) -> Plan:
+            # for the change-point screen, which reads no reported point
+            return self._plan(self._leaves(chosen, count), False)[0]
+
+        return Many(plan, loads, references[chosen], again)
+
+    def screen(self, chosen: Index) -> Many:
+        """Return the variants ``chosen`` for the change-point screen alone.
+
+        Only their references and ``again`` are theirs: the screen reads nothing
+        else, and it screens the variants of many batches at once.
+        """
+        _, references = self._plan(self._leaves(chosen[:1], 1), False)
+
+        def again(count: int) -> Plan:
+            return self._plan(self._leaves(chosen, count), False)[0]
+
+        return Many(self.model.plan, self.model.loads, references[chosen], again)
+
+    def _leaves(self, chosen: Index, count: int) -> Leaf:
+        """Return the leaf of the variants ``chosen``, each over ``count`` rows."""
+
+        def leaf(values: Array) -> Any:
+            picked = values[chosen]
+            if np.all(picked == picked[0]):
+                return float(picked[0])
+            return repeat(picked, count)
+
+        return leaf
+
+    def _plan(self, leaf: Leaf, points: bool) -> tuple[Plan, Array]:
+        """Return the stacked plan of ``leaf``'s variants and every reference."""
+        return _plan(
+            self.model,
+            self.rows,
+            leaf,
+            self.offsets,
+            self.origins,
+            self.scale,
+            self.branches,
+            points,
+        )
+
+
+def compile_many(model: Template, rows: Array) -> tuple[Compiled, Mask]:
+    """Compile the variants whose numbers are ``rows`` (k, N) against ``model``.
+
+    Returns the compiled variants (those that pass every check may be batched) and
+    a mask (k,) of those that do not, to be compiled on their own.
+    """
+    t = model.plan
+    col = model.columns
+    k = rows.shape[0]
+
+    def two(key: Any) -> Array:
+        c = col[key]
+        return rows[:, c : c + 2]
+
+    shift = np.asarray(t.shift)
+    pairs = t.topology.pairs
+    file_at = {p.name: two(("joint", p.name.removesuffix("~pin"))) for p in pairs}
+    pivot = file_at[t.drivers[0].pair.name]
+    doubtful = ~((pivot[:, 0] == shift[0]) & (pivot[:, 1] == shift[1]))
+    core = {name: xy - shift for name, xy in file_at.items()}
+    origins = np.zeros((k, len(t.bodies), 2))
+    for b, name in enumerate(model.origin_pair):
+        if name is not None:
+            origins[:, b] = core[name]
+    scale = np.maximum(1e-12, _diameters(np.stack(list(core.values()), axis=1)))
+    far = np.max(np.abs(np.stack(list(file_at.values()), axis=1)), axis=(1, 2))
+    doubtful |= ~(far * MARGIN <= FAR * scale)
+    doubtful |= _small_links(t, core, scale)
+    offsets = {
+        p.name: (
+            core[p.name] - origins[:, t.index[p.links[0]]],
+            core[p.name] - origins[:, t.index[p.links[1]]],
+        )
+        for p in pairs
+    }
+    branches: list[Array] = []
+    if t.solvers:
+        motions = tuple(
+            # each variant's origin: the kernels take arrays wherever numbers go
+            Motion.fixed(origins[:, b, 0], origins[:, b, 1])  # type: ignore[arg-type]
+            for b in range(len(t.bodies))
+        )
+        plain = _pair_plans(t, offsets, _as_is)
+        for solver in t.solvers:
+            assert isinstance(solver, DyadSolver)
+            dyad = _dyad(solver, plain, scale)
+            branch, bad = _branch(dyad, motions, scale)
+            branches.append(branch)
+            doubtful |= bad
+    return Compiled(model, rows, offsets, origins, scale, branches), doubtful
+
+
+def _as_is(values: Array) -> Array:
+    """Return each variant's value once (the leaves of the checks)."""
+    return values
+
+
+def _vector(x: Array, y: Array, leaf: Leaf) -> Any:
+    """Return a vector whose components are leaves: Rows when one of them varies."""
+    a, b = leaf(x), leaf(y)
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return Rows((a, b))
+    return (a, b)
+
+
+def _diameters(points: Array) -> Array:
+    """Largest distance between two of the points (k, P, 2) of each variant, m."""
+    gap = points[:, :, None, :] - points[:, None, :, :]
+    return np.sqrt((gap * gap).sum(axis=-1)).max(axis=(1, 2))
+
+
+def _small_links(t: Plan, core: dict[str, Array], scale: Array) -> Mask:
+    """Mark variants with a link near the smallest size ``compile_plan`` accepts."""
+    pins: dict[str, list[Array]] = {}
+    for pair in t.topology.pairs:
+        if pair.kind == "R":
+            for link in pair.links:
+                pins.setdefault(link, []).append(core[pair.name])
+    near = np.zeros(scale.shape, dtype=bool)
+    for link, at in pins.items():
+        if link == t.bodies[0] or len(at) < 2:
+            continue
+        size = _diameters(np.stack(at, axis=1))
+        near |= (size * MARGIN > 1e-12) & ~(size > MARGIN * SMALL * scale)
+    return near
+
+
+def _pair_plans(
+    t: Plan, offsets: dict[str, tuple[Array, Array]], leaf: Leaf
+) -> dict[str, PairPlan]:
+    """Return the template's pair plans with each variant's offsets.
+
+    A slide line's direction is part of the :func:`form`: the kernels take it for a
+    constant (a dictionary key, an angle computed once).
+    """
+    out = {}
+    for name, p in t.pairs.items():
+        first, second = offsets[name]
+        out[name] = dataclasses.replace(
+            p,
+            d_first=_vector(first[:, 0], first[:, 1], leaf),
+            d_second=_vector(second[:, 0], second[:, 1], leaf),
+        )
+    return out
+
+
+def _dyad(solver: DyadSolver, pairs: dict[str, PairPlan], scale: Any) -> DyadSolver:
+    """Return ``solver`` with the pairs ``pairs``, chosen as ``compile_dyad`` does."""
+    ext = (pairs[solver.ext[0].name], pairs[solver.ext[1].name])
+    mid = pairs[solver.mid.name]
+    bodies, known = solver.bodies, solver.known
+    d_known = (
+        ext[0].d_first if ext[0].first == known[0] else ext[0].d_second,
+        ext[1].d_first if ext[1].first == known[1] else ext[1].d_second,
+    )
+    d_mid = (
+        mid.d_first if mid.first == bodies[0] else mid.d_second,
+        mid.d_first if mid.first == bodies[1] else mid.d_second,
+    )
+    return dataclasses.replace(
+        solver, ext=ext, mid=mid, d_known=d_known, d_mid=d_mid, scale=scale, branch=1.0
+    )
+
+
+def _branch(
+    dyad: DyadSolver, motions: tuple[Motion, ...], scale: Array
+) -> tuple[Array, Mask]:
+    """Return each variant's branch, as ``compile_dyad`` chooses it, and the doubtful.
+
+    Doubtful: the reference pose does not close (or only loosely) on the branch, the
+    other branch closes too, the outer pins nearly meet, or the pose is near a dead
+    centre.
+    """
+    misses = []
+    for sign in (1.0, -1.0):
+        q = dyad.closure(dyad, list(motions), sign)
+        parts = [
+            np.abs(wrap(x)) if e.kind == "R" else np.abs(x) / scale
+            for x, e in zip(q, dyad.ext, strict=True)
+        ]
+        misses.append(np.maximum(parts[0], parts[1]))
+    plus, minus = misses
+    lower = minus < plus
+    best, other = np.where(lower, minus, plus), np.where(lower, plus, minus)
+    doubtful = ~(best * MARGIN <= BRANCH_TOLERANCE)
+    if dyad.gap is not None:  # a kind with two branches
+        doubtful |= ~(other > UNDECIDED)
+    branch = np.where(lower, -1.0, 1.0)
+    chosen = dataclasses.replace(dyad, branch=branch)  # type: ignore[arg-type]
+    reference = list(motions)
+    chosen.assemble(reference, len(branch))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        cond = conditioning(chosen, jacobian(chosen, reference))
+    doubtful |= ~(cond >= MARGIN * DEAD_CENTRE)
+    if dyad.ext[0].kind == "R" and dyad.ext[1].kind == "R":
+        (a, b), (da, db) = dyad.known, dyad.d_known
+        gap = np.hypot(
+            (motions[b].ox[0] + db[0]) - (motions[a].ox[0] + da[0]),
+            (motions[b].oy[0] + db[1]) - (motions[a].oy[0] + da[1]),
+        )
+        doubtful |= ~(gap > MARGIN * APART * scale)
+    return branch, doubtful
+
+
+def _plan(
+    model: Template,
+    rows: Array,
+    leaf: Leaf,
+    offsets: dict[str, tuple[Array, Array]],
+    origins: Array,
+    scale: Array,
+    branches: list[Array],
+    points: bool = True,
+) -> tuple[Plan, Array]:
+    """Return the stacked plan, and every variant's reference driver position.
+
+    Without ``points``, the reported points' offsets are the template's.
+    """
+    t = model.plan
+    col = model.columns
+    shift = np.asarray(t.shift)
+    pairs = _pair_plans(t, offsets, leaf)
+    size = leaf(scale)
+    solvers = []
+    for solver, branch in zip(t.solvers, branches, strict=True):
+        assert isinstance(solver, DyadSolver)
+        dyad = _dyad(solver, pairs, size)
+        solvers.append(dataclasses.replace(dyad, branch=leaf(branch)))
+    drivers = []
+    references = np.zeros(rows.shape[0])
+    for d in t.drivers:
+        c = col.get(("angle", t.bodies[d.body]))
+        angle = np.zeros(rows.shape[0]) if c is None else rows[:, c]
+        if d.kind == "R":
+            references = angle
+        drivers.append(
+            DriverPlan(
+                pairs[d.pair.name],
+                d.body,
+                d.omega,
+                d.epsilon,
+                leaf(angle),
+                _vector(origins[:, d.body, 0], origins[:, d.body, 1], leaf),
+                leaf(angle) if d.kind == "R" else 0.0,
+            )
+        )
+    offset = [p.d_second for p in pairs.values() if not p.virtual]
+    mech = t.mechanism
+    located = [(("point", p.name), t.index[p.link]) for p in mech.points] + [
+        (("center", link.name), t.index[link.name])
+        for link in mech.links
+        if link.center is not None
+    ]
+    if not points:
+        offset, located = list(t.point_offset), []
+    for key, b in located:
+        c = col[key]
+        xy = rows[:, c : c + 2] - shift - origins[:, b]
+        offset.append(_vector(xy[:, 0], xy[:, 1], leaf))
+    plan = Plan(
+        mech,
+        t.topology,
+        t.groups,
+        t.bodies,
+        t.origins,
+        t.shift,
+        t.angle0,
+        tuple(drivers),
+        tuple(solvers),
+        pairs,
+        t.points,
+        t.point_body,
+        tuple(offset),
+        size,
+        t.index,
+    )
+    return plan, references
+
+
+def _loads(model: Template, rows: Array, leaf: Leaf, origins: Array) -> LoadPlan:
+    """Return the stacked loads: the template's, with each variant's numbers."""
+    t, first = model.plan, model.loads
+    col = model.columns
+    shift = np.asarray(t.shift)
+
+    def offset(key: Any, b: int) -> Any:
+        c = col[key]
+        xy = rows[:, c : c + 2] - shift - origins[:, b]
+        return _vector(xy[:, 0], xy[:, 1], leaf)
+
+    mech = t.mechanism
+    center: list[Any] = [(0.0, 0.0)] * len(t.bodies)
+    stacked = []
+    for link in mech.links:
+        if link.mass:
+            b = t.index[link.name]
+            center[b] = offset(("center", link.name), b)
+            c = col[("mass", link.name)]
+            stacked.append((b, leaf(rows[:, c]), leaf(rows[:, c + 1])))
+    forces, torques = [], []
+    for i, load in enumerate(mech.loads):
+        b = t.index[load.link]
+        if load.force is not None:
+            c = col[("force", i)]
+            value = _vector(rows[:, c], rows[:, c + 1], leaf)
+            forces.append((b, offset(("at", i), b), value, f"loads[{i}].force"))
+        if load.torque is not None:
+            torque = leaf(rows[:, col[("torque", i)]])
+            torques.append((b, torque, f"loads[{i}].torque"))
+    return LoadPlan(
+        first.mass,
+        tuple(center),
+        first.inertia,
+        first.gravity,
+        tuple(forces),
+        tuple(torques),
+        tuple(sorted(stacked, key=lambda x: x[0])),
+    )
