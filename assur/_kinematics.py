@@ -370,6 +370,13 @@ def state_of(
 
 def _slides(plan: Plan, bodies: list[Motion], top: int) -> dict[str, tuple[Leaf, ...]]:
     """Slides of the prismatic pairs: a group's own coordinate where it is one."""
+    return _slide_levels(plan, bodies, range(top + 1))
+
+
+def _slide_levels(
+    plan: Plan, bodies: list[Motion], levels: range
+) -> dict[str, tuple[Leaf, ...]]:
+    """Return the derivatives ``levels`` of every prismatic pair's slide (m, m/s...)."""
     own = own_slides(plan)
     out = {}
     for name, pair in plan.pairs.items():
@@ -378,9 +385,9 @@ def _slides(plan: Plan, bodies: list[Motion], top: int) -> dict[str, tuple[Leaf,
         if name in own:
             body, sign = own[name]
             q = bodies[body].q
-            out[name] = tuple(q[k] if sign > 0 else -q[k] for k in range(top + 1))
+            out[name] = tuple(q[k] if sign > 0 else -q[k] for k in levels)
         else:
-            out[name] = tuple(slide(pair, bodies, k) for k in range(top + 1))
+            out[name] = tuple(slide(pair, bodies, k) for k in levels)
     return out
 
 
@@ -484,15 +491,4 @@ def _rates(state: KinematicState) -> tuple[tuple[Leaf, ...], tuple[Leaf, ...]]:
 
 def _slide_jerks(plan: Plan, bodies: list[Motion]) -> dict[str, Leaf]:
     """Return the jerk of every prismatic pair's slide (m/s^3), as :func:`_slides`."""
-    own = own_slides(plan)
-    out = {}
-    for name, pair in plan.pairs.items():
-        if pair.kind != "P":
-            continue
-        if name in own:
-            body, sign = own[name]
-            q = bodies[body].q[3]
-            out[name] = q if sign > 0 else -q
-        else:
-            out[name] = slide(pair, bodies, 3)
-    return out
+    return {k: v[0] for k, v in _slide_levels(plan, bodies, range(3, 4)).items()}

@@ -42,6 +42,7 @@ from assur.groups._dyad import (
     DyadSolver,
     conditioning,
     jacobian,
+    offsets,
 )
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan
@@ -406,14 +407,7 @@ def _dyad(solver: DyadSolver, pairs: dict[str, PairPlan], scale: Any) -> DyadSol
     ext = (pairs[solver.ext[0].name], pairs[solver.ext[1].name])
     mid = pairs[solver.mid.name]
     bodies, known = solver.bodies, solver.known
-    d_known = (
-        ext[0].d_first if ext[0].first == known[0] else ext[0].d_second,
-        ext[1].d_first if ext[1].first == known[1] else ext[1].d_second,
-    )
-    d_mid = (
-        mid.d_first if mid.first == bodies[0] else mid.d_second,
-        mid.d_first if mid.first == bodies[1] else mid.d_second,
-    )
+    d_known, d_mid = offsets(ext, mid, bodies, known)
     return dataclasses.replace(
         solver, ext=ext, mid=mid, d_known=d_known, d_mid=d_mid, scale=scale, branch=1.0
     )

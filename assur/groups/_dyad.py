@@ -341,6 +341,28 @@ def reaction(pair: PairPlan, bodies: list[Motion], wrench: Wrench) -> Reaction:
     return Reaction(fx, fy, sub(tau, cross(qx, qy, fx, fy)))
 
 
+def offsets(
+    ext: tuple[PairPlan, PairPlan],
+    mid: PairPlan,
+    bodies: tuple[int, int],
+    known: tuple[int, int],
+) -> tuple[tuple[Any, Any], tuple[Any, Any]]:
+    """Return a dyad's body-fixed offsets (m).
+
+    Those of its outer pairs on the known links, and of its middle pair on each of
+    its two links.
+    """
+    d_known = (
+        ext[0].d_first if ext[0].first == known[0] else ext[0].d_second,
+        ext[1].d_first if ext[1].first == known[1] else ext[1].d_second,
+    )
+    d_mid = (
+        mid.d_first if mid.first == bodies[0] else mid.d_second,
+        mid.d_first if mid.first == bodies[1] else mid.d_second,
+    )
+    return d_known, d_mid
+
+
 def compile_dyad(
     context: CompileContext,
     group: Group,
@@ -362,14 +384,7 @@ def compile_dyad(
         ext[0].first if ext[0].second == bodies[0] else ext[0].second,
         ext[1].first if ext[1].second == bodies[1] else ext[1].second,
     )
-    d_known = (
-        ext[0].d_first if ext[0].first == known[0] else ext[0].d_second,
-        ext[1].d_first if ext[1].first == known[1] else ext[1].d_second,
-    )
-    d_mid = (
-        mid.d_first if mid.first == bodies[0] else mid.d_second,
-        mid.d_first if mid.first == bodies[1] else mid.d_second,
-    )
+    d_known, d_mid = offsets(ext, mid, bodies, known)
     dyad = DyadSolver(
         group,
         bodies,
