@@ -9,8 +9,8 @@ one mechanism to the next? :func:`assur.sweep` analyses a sample of mechanisms, 
 over a turn, and gives the summary of each (one row per sample), here the largest
 reaction in joint B over the turn, ``B.F.max``.
 
-The sample has 2000 mechanisms to keep the documentation's build short; a real study
-would take 10^4 or more (the call is the same, and the time grows in proportion).
+The sample has 10^4 mechanisms, each analysed over a turn in 5 degree steps:
+720 000 positions in all, solved in stacked batches of variants in a few seconds.
 """
 
 import matplotlib.pyplot as plt
@@ -20,7 +20,7 @@ import assur
 from assur import catalog
 
 rng = np.random.default_rng(2024)
-count = 2000
+count = 10_000
 # link lengths, m: normal, with three standard deviations at +-0.3 mm and +-0.5 mm
 parameters = {
     "crank": rng.normal(0.074, 0.0001, count),
