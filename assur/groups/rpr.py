@@ -31,13 +31,7 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     reference normal :math:`n_0` at angle :math:`\nu`:
     :math:`|D|\cos(\angle D - \nu - \varphi) = n_0\cdot(d_g - d_h)`.
     """
-    g = 0 if plan.bodies[0] == plan.mid.first else 1
-    h = 1 - g
-    pins = [point(bodies[plan.known[b]], plan.d_known[b], 0) for b in (0, 1)]
-    gx, gy = pins[h][0] - pins[g][0], pins[h][1] - pins[g][1]
-    n0 = plan.mid.normal
-    dg, dh = plan.d_mid[g], plan.d_mid[h]
-    c0 = n0[0] * (dg[0] - dh[0]) + n0[1] * (dg[1] - dh[1])
+    gx, gy, n0, c0 = _across(plan, bodies)
     with np.errstate(invalid="ignore", divide="ignore"):
         psi = np.arccos(c0 / np.hypot(gx, gy))
     phi = wrap(np.arctan2(gy, gx) - math.atan2(n0[1], n0[0]) - branch * psi)
@@ -49,6 +43,17 @@ def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
 
     Negative where the dyad cannot close; zero where its two branches meet.
     """
+    gx, gy, _, c0 = _across(plan, bodies)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return 1.0 - c0 * c0 / (gx * gx + gy * gy)
+
+
+def _across(plan: DyadSolver, bodies: list[Motion]) -> tuple[Any, Any, Any, Any]:
+    """Return what the closure and its discriminant share.
+
+    ``D = P_h - P_g`` (m, two leaves), the reference normal ``n_0`` and
+    ``n_0 . (d_g - d_h)`` (m).
+    """
     g = 0 if plan.bodies[0] == plan.mid.first else 1
     h = 1 - g
     pins = [point(bodies[plan.known[b]], plan.d_known[b], 0) for b in (0, 1)]
@@ -56,8 +61,7 @@ def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
     n0 = plan.mid.normal
     dg, dh = plan.d_mid[g], plan.d_mid[h]
     c0 = n0[0] * (dg[0] - dh[0]) + n0[1] * (dg[1] - dh[1])
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return 1.0 - c0 * c0 / (gx * gx + gy * gy)
+    return gx, gy, n0, c0
 
 
 def compile_group(context: CompileContext, group: Group) -> DyadSolver:

@@ -30,13 +30,7 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     :math:`|M - P| = r`: :math:`\sigma = -w\cdot e + \beta\sqrt{(w\cdot e)^2 -
     |w|^2 + r^2}` with :math:`w = G - P`.
     """
-    px, py = point(bodies[plan.known[0]], plan.d_known[0], 0)
-    slider = bodies[plan.known[1]]
-    ex, ey = guide(plan, bodies, 1)
-    gx, gy = point(slider, plan.d_known[1], 0)
-    ux, uy = rotated(slider, plan.d_mid[1])
-    d1 = plan.d_mid[0]
-    wx, wy = sub(add(gx, ux), px), sub(add(gy, uy), py)
+    ex, ey, wx, wy, d1 = _reach(plan, bodies)
     b = dot((wx, wy), (ex, ey))
     # |w|^2 - (w.e)^2 is the squared distance of P from the slider's line
     normal = cross(ex, ey, wx, wy)
@@ -53,15 +47,24 @@ def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
     Negative where the dyad cannot close; zero where its two branches meet (the link
     square to the guide).
     """
+    ex, ey, wx, wy, d1 = _reach(plan, bodies)
+    normal = cross(ex, ey, wx, wy)
+    return 1.0 - normal * normal / (d1[0] * d1[0] + d1[1] * d1[1])
+
+
+def _reach(plan: DyadSolver, bodies: list[Motion]) -> tuple[Any, ...]:
+    """Return what the closure and its discriminant share.
+
+    The guide's direction ``e``, ``w = G - P`` (m) from the first link's pin to the
+    slider line's point at the middle pin's offset, and that link's offset ``d_1``.
+    """
     px, py = point(bodies[plan.known[0]], plan.d_known[0], 0)
     slider = bodies[plan.known[1]]
     ex, ey = guide(plan, bodies, 1)
     gx, gy = point(slider, plan.d_known[1], 0)
     ux, uy = rotated(slider, plan.d_mid[1])
-    d1 = plan.d_mid[0]
     wx, wy = sub(add(gx, ux), px), sub(add(gy, uy), py)
-    normal = cross(ex, ey, wx, wy)
-    return 1.0 - normal * normal / (d1[0] * d1[0] + d1[1] * d1[1])
+    return ex, ey, wx, wy, plan.d_mid[0]
 
 
 def compile_group(context: CompileContext, group: Group) -> DyadSolver:

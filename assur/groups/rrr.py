@@ -30,12 +30,8 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     :math:`h = \sqrt{r_1^2-a^2}`,
     :math:`M = P_1 + a\,\hat D + \beta h\,\hat D^\perp`.
     """
-    x1, y1 = point(bodies[plan.known[0]], plan.d_known[0], 0)
-    x2, y2 = point(bodies[plan.known[1]], plan.d_known[1], 0)
+    r1, r2, gx, gy = _pins(plan, bodies)
     d1, d2 = plan.d_mid
-    r1 = d1[0] * d1[0] + d1[1] * d1[1]
-    r2 = d2[0] * d2[0] + d2[1] * d2[1]
-    gx, gy = x2 - x1, y2 - y1
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv = np.divide(1.0, gx * gx + gy * gy)
         a = 0.5 + 0.5 * (r1 - r2) * inv
@@ -58,16 +54,24 @@ def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
     With the middle pin at height :math:`h` over the line of the outer pins a
     distance :math:`L` apart: :math:`\sin\mu = h L / (r_1 r_2)`.
     """
+    r1, r2, gx, gy = _pins(plan, bodies)
+    length = gx * gx + gy * gy
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        a = 0.5 + 0.5 * np.divide(r1 - r2, length)
+        return (np.divide(r1, length) - a * a) * length * length / (r1 * r2)
+
+
+def _pins(plan: DyadSolver, bodies: list[Motion]) -> tuple[Any, Any, Any, Any]:
+    """Return what the closure and its discriminant share.
+
+    The links' squared radii (m^2) and ``P_2 - P_1`` (m), from pin to pin.
+    """
     x1, y1 = point(bodies[plan.known[0]], plan.d_known[0], 0)
     x2, y2 = point(bodies[plan.known[1]], plan.d_known[1], 0)
     d1, d2 = plan.d_mid
     r1 = d1[0] * d1[0] + d1[1] * d1[1]
     r2 = d2[0] * d2[0] + d2[1] * d2[1]
-    gx, gy = x2 - x1, y2 - y1
-    length = gx * gx + gy * gy
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        a = 0.5 + 0.5 * np.divide(r1 - r2, length)
-        return (np.divide(r1, length) - a * a) * length * length / (r1 * r2)
+    return r1, r2, x2 - x1, y2 - y1
 
 
 def compile_group(context: CompileContext, group: Group) -> DyadSolver:
