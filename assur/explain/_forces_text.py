@@ -32,7 +32,7 @@ from assur.explain._loads_text import (
 )
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position, cross, perp, unit
-from assur.explain._tex import name, num, par, plain, text, vec
+from assur.explain._tex import cramer, name, num, par, plain, text, vec
 from assur.explain._triad_text import system_blocks
 from assur.groups._dyad import DyadSolver
 from assur.groups._pairs import PairPlan
@@ -44,33 +44,6 @@ __all__ = ["force_symbol", "forces_blocks"]
 def force_symbol(pos: Position, by: int, on: int) -> str:
     """Return the symbol of the force of link ``by`` on link ``on``: F_{by,on}."""
     return f"F_{{{name(pos.link(by))},{name(pos.link(on))}}}"
-
-
-def _cramer(names: list[str], a: Array, rhs: Array) -> tuple[list[str], list[float]]:
-    """Return the component equations of ``a x = rhs`` (2x2) solved with numbers."""
-    det = float(a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0])
-    tops = [
-        float(rhs[0] * a[1, 1] - a[0, 1] * rhs[1]),
-        float(a[0, 0] * rhs[1] - rhs[0] * a[1, 0]),
-    ]
-    ref = float(np.abs(a).max())
-    lines = [
-        f"{axis}:\\ {num(a[i, 0], ref)}\\,{names[0]} + {par(a[i, 1], ref)}\\,{names[1]}"
-        f" = {num(rhs[i])}"
-        for i, axis in enumerate("xy")
-    ]
-    lines.append(
-        f"\\Delta = {par(a[0, 0], ref)} \\cdot {par(a[1, 1], ref)} - "
-        f"{par(a[0, 1], ref)}"
-        f" \\cdot {par(a[1, 0], ref)} = {num(det, ref * ref)}"
-    )
-    values = [t / det for t in tops]
-    for i in (0, 1):
-        lines.append(
-            f"{names[i]} = \\frac{{{num(tops[i])}}}{{{num(det, ref * ref)}}} = "
-            f"{num(values[i])}"
-        )
-    return lines, values
 
 
 def _known(
@@ -144,7 +117,7 @@ def _revolute_middle(
     every = loads[0] + loads[1]
     rhs = -(total(every) + known_t)
     a = np.column_stack(dirs)
-    lines, values = _cramer(names, a, rhs)
+    lines, values = cramer(names, a, rhs)
     blocks += [
         Para(
             "Force polygon of the group: the known forces, the tangential parts, and "
@@ -275,7 +248,7 @@ def _sliding_middle(
                 f"\\sum F \\cdot \\vec e = {num(along)},\\quad "
                 f"{par(sgn * float(np.dot(nm, eb)))}\\,N_{{{j}}} = {num(-along)}"
             )
-    solved_lines, (normal, couple) = _cramer(
+    solved_lines, (normal, couple) = cramer(
         [f"N_{{{j}}}", f"M_{{{j}}}"], np.array(rows), np.array(rhs)
     )
     blocks: list[Block] = [

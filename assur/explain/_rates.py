@@ -17,7 +17,7 @@ import numpy as np
 from assur._vec import Array
 from assur.explain._note import Block, Display, Para
 from assur.explain._position import Position, perp
-from assur.explain._tex import name, num, par, point_name, text, vec
+from assur.explain._tex import cramer, name, num, par, point_name, text, vec
 from assur.groups._dyad import DyadSolver
 
 __all__ = ["Term", "body_points", "dyad_rates", "point_lines"]
@@ -199,42 +199,13 @@ def _sum(terms: list[Term]) -> str:
     return " + ".join(t.tex for t in terms)
 
 
-def _system(names: list[str], a: Array, rhs: Array) -> tuple[list[str], list[float]]:
-    """Return the component equations and Cramer's rule with numbers; the solution."""
-    if len(names) != 2:
-        return [], []
-    det = float(a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0])
-    top = [
-        float(rhs[0] * a[1, 1] - a[0, 1] * rhs[1]),
-        float(a[0, 0] * rhs[1] - rhs[0] * a[1, 0]),
-    ]
-    ref = float(np.abs(a).max())
-    lines = [
-        f"{axis}:\\ {num(a[i, 0], ref)}\\,{names[0]} + {par(a[i, 1], ref)}\\,{names[1]}"
-        f" = {num(rhs[i])}"
-        for i, axis in enumerate("xy")
-    ]
-    values = [t / det for t in top]
-    lines.append(
-        f"\\Delta = {par(a[0, 0], ref)} \\cdot {par(a[1, 1], ref)} - "
-        f"{par(a[0, 1], ref)}"
-        f" \\cdot {par(a[1, 0], ref)} = {num(det, ref * ref)}"
-    )
-    for i in (0, 1):
-        lines.append(
-            f"{names[i]} = \\frac{{{num(top[i])}}}{{{num(det, ref * ref)}}} = "
-            f"{num(values[i])}"
-        )
-    return lines, values
-
-
 def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
     """Return the velocity (k = 1) or acceleration (k = 2) analysis of dyad ``s``."""
     left, right = _sides(pos, s, k)
     letter = LEVEL[k][0]
     mid = name(s.mid.name)
     names, a, rhs = _solve(left, right)
-    lines, _ = _system(names, a, rhs)
+    lines = cramer(names, a, rhs)[0] if len(names) == 2 else []
     blocks: list[Block] = [
         Para(f"The {LEVEL[k][1]} of the joint {text(s.mid.name)}, along each link:"),
         Display((f"{_sum(left)} = {_sum(right)}",)),

@@ -10,8 +10,11 @@ from __future__ import annotations
 import math
 from typing import Any
 
+import numpy as np
+
 __all__ = [
     "ZERO",
+    "cramer",
     "deg",
     "name",
     "num",
@@ -142,3 +145,34 @@ def text(words: str) -> str:
     words = words.replace("~block", " block").replace("~pin", "")
     kept = "".join(c for c in words if c not in "\\^~")
     return "".join("\\" + c if c in "_{}$%&#" else c for c in kept)
+
+
+def cramer(names: list[str], a: Any, rhs: Any) -> tuple[list[str], list[float]]:
+    """Return a 2 x 2 system ``a x = rhs`` solved by Cramer's rule, with numbers.
+
+    The lines are the two component equations, the determinant and each unknown's
+    quotient; the values are the unknowns ``names``.
+    """
+    det = float(a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0])
+    tops = [
+        float(rhs[0] * a[1, 1] - a[0, 1] * rhs[1]),
+        float(a[0, 0] * rhs[1] - rhs[0] * a[1, 0]),
+    ]
+    ref = float(np.abs(a).max())
+    lines = [
+        f"{axis}:\\ {num(a[i, 0], ref)}\\,{names[0]} + {par(a[i, 1], ref)}\\,{names[1]}"
+        f" = {num(rhs[i])}"
+        for i, axis in enumerate("xy")
+    ]
+    lines.append(
+        f"\\Delta = {par(a[0, 0], ref)} \\cdot {par(a[1, 1], ref)} - "
+        f"{par(a[0, 1], ref)}"
+        f" \\cdot {par(a[1, 0], ref)} = {num(det, ref * ref)}"
+    )
+    values = [t / det for t in tops]
+    for i in (0, 1):
+        lines.append(
+            f"{names[i]} = \\frac{{{num(tops[i])}}}{{{num(det, ref * ref)}}} = "
+            f"{num(values[i])}"
+        )
+    return lines, values
