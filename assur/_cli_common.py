@@ -131,6 +131,26 @@ def check_range(
     return float(value)
 
 
+def one_position(mech: Any, spec: str | None) -> Any:
+    """Return the one driver position of ``--angle`` (default: the reference pose).
+
+    A value per driver (deg, or m for a prismatic driver); more than one position
+    is a UsageError.
+    """
+    from assur.analysis import default_positions
+
+    if spec is None:
+        return default_positions(mech)[0]
+    found = parse_angles(spec, max(1, len(mech.drivers)), option="--angle")
+    if found.shape[0] != 1:
+        msg = (
+            f"--angle {describe(spec)[1:-1]}: {found.shape[0]} positions; expected "
+            "one value per driver"
+        )
+        raise UsageError(msg)
+    return found[0]
+
+
 def check_not_input(option: str, output: Any, source: Path) -> None:
     """Refuse an output that is the mechanism file read (the same file, any name)."""
     if str(output) == "-":

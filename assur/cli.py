@@ -24,6 +24,7 @@ from assur import _output
 from assur._cli_common import (
     check_not_input,
     load_mechanism,
+    one_position,
     parse_angles,
     positions,
     terminal,
@@ -312,7 +313,6 @@ NOTE_SUFFIXES = (".md", ".markdown", ".html", ".htm", ".tex")
 
 
 def _cmd_explain(args: argparse.Namespace) -> int:
-    from assur.analysis import default_positions
     from assur.explain import explain, read_answers
 
     if args.output is not None:
@@ -325,18 +325,7 @@ def _cmd_explain(args: argparse.Namespace) -> int:
             raise UsageError(msg)
         check_not_input("-o", args.output, args.file)
     mech = load_mechanism(args.file)
-    drivers = max(1, len(mech.drivers))
-    if args.angle is None:
-        angle = default_positions(mech)[0]
-    else:
-        found = parse_angles(args.angle, drivers, option="--angle")
-        if found.shape[0] != 1:
-            msg = (
-                f"--angle {describe(args.angle)[1:-1]}: {found.shape[0]} positions; "
-                "expected one value per driver"
-            )
-            raise UsageError(msg)
-        angle = found[0]
+    angle = one_position(mech, args.angle)
     answers, source = read_answers(args.answers) if args.answers else (None, "")
     note = explain(mech, angle, answers, source)
     if args.output is None:

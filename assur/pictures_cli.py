@@ -23,7 +23,7 @@ from assur._cli_common import (
     check_not_input,
     check_range,
     load_mechanism,
-    parse_angles,
+    one_position,
     positions,
     terminal,
 )
@@ -244,20 +244,12 @@ PLANS = (
 """Names of the plans ``assur plans`` writes (each as .png and .svg)."""
 
 
-def _one_position(mech: Any, spec: str | None) -> Any:
-    """Return the one driver position of ``--angle`` (default: the reference pose)."""
-    from assur.analysis import default_positions
-
-    if spec is None:
-        return default_positions(mech)[0]
-    found = parse_angles(spec, max(1, len(mech.drivers)), option="--angle")
-    if found.shape[0] != 1:
-        msg = (
-            f"--angle {describe(spec)[1:-1]}: {found.shape[0]} positions; expected "
-            "one value per driver"
-        )
+def _folder(out: Path, what: str) -> Path:
+    """Return ``-o``'s folder for ``what``; a file of that name is a UsageError."""
+    if out.exists() and not out.is_dir():
+        msg = f"-o {path_text(out)}: is a file; expected a folder for the {what}"
         raise UsageError(msg)
-    return found[0]
+    return out
 
 
 def _cmd_plans(args: argparse.Namespace) -> int:
@@ -266,12 +258,9 @@ def _cmd_plans(args: argparse.Namespace) -> int:
     from assur.plan import plan_of
 
     dpi = _check_dpi(args, DPI_RANGE)
-    out: Path = args.output
-    if out.exists() and not out.is_dir():
-        msg = f"-o {path_text(out)}: is a file; expected a folder for the plans"
-        raise UsageError(msg)
+    out = _folder(args.output, "plans")
     mech = load_mechanism(args.file)
-    angle = _one_position(mech, args.angle)
+    angle = one_position(mech, args.angle)
     loaded = not compile_loads(plan_of(mech)).empty
     at = np.asarray(angle, dtype=float).reshape(1, -1)
     t = _table(mech, at if at.shape[1] > 1 else at[:, 0], loaded)
@@ -300,7 +289,6 @@ def _cmd_plans(args: argparse.Namespace) -> int:
 
 
 def _cmd_plot(args: argparse.Namespace) -> int:
-    from assur.analysis import default_positions
     from assur.plan import plan_of
     from assur.plotting import draw, draw_free_body
 
@@ -310,17 +298,8 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         msg = f"--scale {args.scale:g}: expected a positive number of newtons per cm"
         raise UsageError(msg)
     mech = load_mechanism(args.file)
-    drivers = max(1, len(mech.drivers))
-    if args.angle is None:
-        position = default_positions(mech)[:1]
-    else:
-        position = parse_angles(args.angle, drivers, option="--angle")
-        if position.shape[0] != 1:
-            msg = (
-                f"--angle {describe(args.angle)[1:-1]}: {position.shape[0]} positions; "
-                "expected one value per driver"
-            )
-            raise UsageError(msg)
+    # one position, as the rows of a sweep of one
+    position = one_position(mech, args.angle)[np.newaxis]
     if args.group is not None:
         count = len(plan_of(mech).groups)
         if not 1 <= args.group <= count:
@@ -367,10 +346,7 @@ def _cmd_diagrams(args: argparse.Namespace) -> int:
     from assur import plotting
 
     dpi = _check_dpi(args, DPI_RANGE)
-    out: Path = args.output
-    if out.exists() and not out.is_dir():
-        msg = f"-o {path_text(out)}: is a file; expected a folder for the diagrams"
-        raise UsageError(msg)
+    out = _folder(args.output, "diagrams")
     for name in DIAGRAMS:
         check_not_input("-o", out / f"{name}.png", args.file)
     _, table = _sweep(args, None)
