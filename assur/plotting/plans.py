@@ -182,14 +182,7 @@ def velocity_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
     -------
     matplotlib.axes.Axes
     """
-    pos = _pos(table, angle)
-    found = images(pos, 1)
-    mu = _scale(list(found.values()))
-    ax = _axes(ax, _title(pos, "velocity plan"))
-    _images_plot(ax, found, mu, "#333333")
-    legend = _chains(ax, pos, 1, mu)
-    _legend(ax, legend, f"scale: μv = {mu:g} (m/s)/mm")
-    return ax
+    return _plan(table, angle, ax, 1)
 
 
 def acceleration_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
@@ -197,13 +190,26 @@ def acceleration_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
 
     Parameters and Returns are those of :func:`velocity_plan`.
     """
+    return _plan(table, angle, ax, 2)
+
+
+PLANS = {
+    1: ("velocity plan", "μv", "(m/s)/mm"),
+    2: ("acceleration plan", "μa", "(m/s²)/mm"),
+}
+"""Per level: the plan's name, its scale's symbol and the scale's unit."""
+
+
+def _plan(table: Table, angle: Any, ax: Any, level: int) -> Any:
+    """Draw the velocity (``level`` 1) or acceleration (2) plan; return the axes."""
+    what, symbol, unit = PLANS[level]
     pos = _pos(table, angle)
-    found = images(pos, 2)
+    found = images(pos, level)
     mu = _scale(list(found.values()))
-    ax = _axes(ax, _title(pos, "acceleration plan"))
+    ax = _axes(ax, _title(pos, what))
     _images_plot(ax, found, mu, "#333333")
-    legend = _chains(ax, pos, 2, mu)
-    _legend(ax, legend, f"scale: μa = {mu:g} (m/s²)/mm")
+    legend = _chains(ax, pos, level, mu)
+    _legend(ax, legend, f"scale: {symbol} = {mu:g} {unit}")
     return ax
 
 
