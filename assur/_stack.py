@@ -10,7 +10,7 @@ solve one mechanism's. :func:`signature` says which plans may be stacked togethe
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Hashable
+from collections.abc import Callable, Hashable
 from typing import Any
 
 import numpy as np
@@ -142,6 +142,27 @@ def restack(plan: Plan, repeats: int, again: int) -> Plan:
     return out
 
 
+def _rebuild(
+    value: Any, kept: Callable[[str], bool], each: Callable[[str], Any]
+) -> Any:
+    """Return a dataclass of ``value``'s class, field by field.
+
+    A ``memo`` field is emptied, the fields ``kept`` says are taken as they are, and
+    every other field is ``each(name)``.
+    """
+    fields: dict[str, Any] = {}
+    for f in dataclasses.fields(value):
+        if not f.init:
+            continue
+        if f.name == "memo":
+            fields[f.name] = {}
+        elif kept(f.name):
+            fields[f.name] = getattr(value, f.name)
+        else:
+            fields[f.name] = each(f.name)
+    return value.__class__(**fields)
+
+
 def _map(value: Any, change: Any) -> Any:
     """Return ``value`` with every per-row array replaced by ``change(array)``."""
     kind = value.__class__
@@ -154,17 +175,11 @@ def _map(value: Any, change: Any) -> Any:
     if kind is dict:
         return {k: _map(v, change) for k, v in value.items()}
     if dataclasses.is_dataclass(value) and not isinstance(value, type):
-        fields: dict[str, Any] = {}
-        for f in dataclasses.fields(value):
-            if not f.init:
-                continue
-            if f.name == "memo":
-                fields[f.name] = {}
-            elif (kind is Plan and f.name in KEPT) or f.name in NAMES:
-                fields[f.name] = getattr(value, f.name)
-            else:
-                fields[f.name] = _map(getattr(value, f.name), change)
-        return kind(**fields)
+        return _rebuild(
+            value,
+            lambda n: (kind is Plan and n in KEPT) or n in NAMES,
+            lambda n: _map(getattr(value, n), change),
+        )
     return value
 
 
@@ -219,17 +234,11 @@ def _stack(values: list[Any], repeats: int) -> Any:
     if dataclasses.is_dataclass(first) and not isinstance(first, type):
         if any(v.__class__ is not kind for v in values):
             raise Unstackable
-        fields: dict[str, Any] = {}
-        for f in dataclasses.fields(first):
-            if not f.init:
-                continue
-            if f.name == "memo":
-                fields[f.name] = {}
-            elif kind is Plan and f.name in KEPT:
-                fields[f.name] = getattr(first, f.name)
-            else:
-                fields[f.name] = _stack([getattr(v, f.name) for v in values], repeats)
-        return kind(**fields)
+        return _rebuild(
+            first,
+            lambda n: kind is Plan and n in KEPT,
+            lambda n: _stack([getattr(v, n) for v in values], repeats),
+        )
     if kind is np.ndarray:
         if all(np.array_equal(v, first) for v in values):
             return first
