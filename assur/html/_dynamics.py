@@ -18,6 +18,7 @@ from assur.columns import pretty_unit
 from assur.dynamics_shown import SHOWN_DELTA, has_dynamics, shown
 from assur.errors import AssurError
 from assur.html._data import floats
+from assur.html._sections import wide_card
 
 __all__ = ["dynamics_part"]
 
@@ -74,10 +75,7 @@ def dynamics_part(
 
 def _section(body: str) -> str:
     """Return the section around ``body``."""
-    return (
-        '<section class="card wide" id="dynamics">\n<h2>Dynamics: the mechanism '
-        f"reduced to its crank</h2>\n{body}\n</section>"
-    )
+    return wide_card("dynamics", "Dynamics: the mechanism reduced to its crank", body)
 
 
 def _figures_html(result: Any) -> str:

@@ -13,6 +13,7 @@ import re
 from html import escape
 
 from assur.analysis import Table
+from assur.html._sections import first_position, wide_card
 
 __all__ = ["free_bodies_html", "inline_svg"]
 
@@ -66,13 +67,12 @@ def free_bodies_html(table: Table) -> str:
             f"{escape(group.kind)} ({escape(links)})</figcaption>\n"
             f"{_diagram(table, index)}\n</figure>"
         )
-    where = ", ".join(f"{x:g}" for x in table.given[0])
-    return (
-        '<section class="card wide" id="free-bodies">\n'
-        f"<h2>Free-body diagrams at the first position ({escape(where)})</h2>\n"
+    return wide_card(
+        "free-bodies",
+        f"Free-body diagrams at the first position ({first_position(table)})",
         '<p class="note">Each Assur group cut free from the links it hangs on, in '
         "the order of attachment: its inertia loads, gravity and external loads, "
         "the reactions of those links on it and the reactions inside it, each with "
         "its value (as <code>assur plot --group N</code> draws it).</p>\n"
-        '<div class="charts">\n' + "\n".join(figures) + "\n</div>\n</section>"
+        '<div class="charts">\n' + "\n".join(figures) + "\n</div>",
     )

@@ -13,7 +13,7 @@ from html import escape
 
 from assur.analysis import Table
 from assur.html._data import public
-from assur.html._sections import number
+from assur.html._sections import first_position, number, wide_card
 
 __all__ = ["inertia_html"]
 
@@ -71,16 +71,14 @@ def inertia_html(table: Table) -> str:
         + "</tr>"
         for name, values in rows
     )
-    where = ", ".join(f"{x:g}" for x in table.given[0])
-    return (
-        '<section class="card wide" id="inertia">\n'
-        f"<h2>Inertia loads at the first position ({escape(where)})</h2>\n"
+    return wide_card(
+        "inertia",
+        f"Inertia loads at the first position ({first_position(table)})",
         '<p class="note">Each link with a mass carries the inertia force F_i = '
         "−m a_G at its centre of mass and the inertia torque M_i = −J_G ε; together "
         "they are one force of size F_i moved off the centre of mass by h, to the "
         "side where its moment about G turns like M_i. Directions are measured "
         "from +x, counter-clockwise.</p>\n"
         '<div class="table-wrap"><table class="values inertia">'
-        f"<thead><tr>{head}</tr></thead>\n<tbody>\n{body}\n</tbody></table></div>\n"
-        "</section>"
+        f"<thead><tr>{head}</tr></thead>\n<tbody>\n{body}\n</tbody></table></div>",
     )

@@ -18,11 +18,13 @@ from assur.html._data import to_json
 from assur.html._free_bodies import free_bodies_html
 from assur.html._inertia import inertia_html
 from assur.html._sections import (
+    first_position,
     legend_html,
     meta_html,
     structure_html,
     summary_html,
     table_html,
+    wide_card,
 )
 from assur.plan import Plan
 
@@ -76,8 +78,6 @@ def note_html(plan: Plan, table: Table) -> str:
 
     The first row of the sweep is the driver position the note explains.
     """
-    from html import escape as esc
-
     from assur.explain import explain
     from assur.explain._html import html_body
 
@@ -85,10 +85,10 @@ def note_html(plan: Plan, table: Table) -> str:
         return ""
     given = table.given[0]
     note = explain(plan.mechanism, given if given.shape[0] > 1 else float(given[0]))
-    where = ", ".join(f"{x:g}" for x in given)
-    return (
-        '<section class="card wide" id="note">\n<h2>The analysis at the first '
-        f"position ({esc(where)}), step by step</h2>\n{html_body(note)}\n</section>"
+    return wide_card(
+        "note",
+        f"The analysis at the first position ({first_position(table)}), step by step",
+        html_body(note),
     )
 
 

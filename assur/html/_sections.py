@@ -36,6 +36,17 @@ GROUP_HEADINGS = (
 """Column headings of the table of groups; the first column holds the colour."""
 
 
+def wide_card(ident: str, title: str, body: str) -> str:
+    """Return a full-width card of the page: its id, heading and body (both HTML)."""
+    head = f'<section class="card wide" id="{ident}">'
+    return f"{head}\n<h2>{title}</h2>\n{body}\n</section>"
+
+
+def first_position(table: Table) -> str:
+    """Return the table's first driver position as HTML text (one value per driver)."""
+    return escape(", ".join(f"{x:g}" for x in table.given[0]))
+
+
 def number(v: float) -> str:
     """Format a table value; round-off below ROUND_OFF shows as 0."""
     if not math.isfinite(v):
@@ -139,13 +150,14 @@ def summary_html(table: Table) -> str:
         f"<td>{number(value)}</td><td>{escape(summary.units[key])}</td></tr>"
         for key, value in summary.result().items()
     )
-    return (
-        '<section class="card wide" id="summary">\n<h2>Summary over the sweep</h2>\n'
+    return wide_card(
+        "summary",
+        "Summary over the sweep",
         '<p class="note">Largest and RMS reaction in every joint and where the '
         "largest occurs, the balancing load's extremes, mean and RMS, the driver's "
         "mean power; means are over the positions shown.</p>\n"
         '<div class="table-wrap"><table class="values summary"><tbody>\n'
-        f"{rows}\n</tbody></table></div>\n</section>"
+        f"{rows}\n</tbody></table></div>",
     )
 
 
