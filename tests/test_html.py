@@ -28,6 +28,7 @@ from assur.plan import compile_plan
 from assur.summary import Summary
 
 from .conftest import example_files
+from .test_imports import names_imported
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 KINEMATIC = EXAMPLES / "lever_var9.toml"
@@ -288,20 +289,13 @@ def test_units_in_the_force_report(pages: dict[str, str]) -> None:
 
 
 def test_only_render_report_compiles_a_plan() -> None:
-    import ast
 
     import assur.html
 
     recompilers = {"compile_plan", "plan_of", "decompose", "structure"}
     folder = Path(assur.html.__file__).parent
     for path in sorted(folder.glob("*.py")):
-        tree = ast.parse(path.read_text(encoding="utf-8"))
-        imported = {
-            alias.name
-            for node in ast.walk(tree)
-            if isinstance(node, ast.ImportFrom)
-            for alias in node.names
-        }
+        imported = names_imported(path)
         expected = {"plan_of", "structure"} if path.name == "__init__.py" else set()
         assert imported & recompilers == expected, path.name
 

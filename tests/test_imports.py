@@ -91,6 +91,17 @@ AGAINST_THE_DIRECTION = {
 KNOWN_CYCLES: set[tuple[str, str]] = set()
 
 
+def names_imported(path: Path) -> set[str]:
+    """Every name a module imports with ``from ... import name``, anywhere in it."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    return {
+        alias.name
+        for node in ast.walk(tree)
+        if isinstance(node, ast.ImportFrom)
+        for alias in node.names
+    }
+
+
 def _module_name(path: Path) -> str:
     parts = path.relative_to(PACKAGE.parent).with_suffix("").parts
     if parts[-1] == "__init__":

@@ -20,6 +20,8 @@ from assur import plotting
 from assur.analysis import default_positions
 from assur.plan import compile_plan
 
+from .test_imports import names_imported
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.patches import Circle, FancyArrowPatch
@@ -580,18 +582,10 @@ def test_pictures_read_only_the_table(
 
 
 def test_no_picture_module_imports_a_recompiler() -> None:
-    import ast
 
     names = {name for _, name in RECOMPILERS}
     for path in sorted(Path(plotting.__file__).parent.glob("*.py")):
-        tree = ast.parse(path.read_text(encoding="utf-8"))
-        imported = {
-            alias.name
-            for node in ast.walk(tree)
-            if isinstance(node, ast.ImportFrom)
-            for alias in node.names
-        }
-        assert not imported & names, path.name
+        assert not names_imported(path) & names, path.name
 
 
 # ------------------------------------------------------- units of the schema
