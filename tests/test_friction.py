@@ -9,8 +9,9 @@
   friction load opposes its joint's relative motion; zero friction is the frictionless
   table exactly.
 - By hand: a block pushed up and down an incline (the worked example of Khurmi and
-  Gupta's chapter on friction), a crank whose bearing alone rubs, and the
-  friction-circle construction of a crank, rod and crosshead.
+  Gupta's chapter on friction), a collar on a loose shaft (a friction-circle problem
+  of Hibbeler's Statics with its printed answer), a crank whose bearing alone rubs,
+  and the friction-circle construction of a crank, rod and crosshead.
 - Self-locking is refused with one line naming the group and the position.
 """
 
@@ -24,6 +25,7 @@ import numpy as np
 import pytest
 from hypothesis import assume, given
 from hypothesis import strategies as st
+from scipy.optimize import brentq
 
 import assur
 from assur.cli import main
@@ -297,6 +299,63 @@ def test_a_crank_bearing_alone():
     np.testing.assert_allclose(table["driver.torque"], 0.2 * 0.015 * pull, rtol=1e-12)
     power = table["driver.torque"] * 20.0
     np.testing.assert_allclose(table["friction.power"], -power, rtol=1e-12)
+
+
+def collar(push: float, mu: float) -> assur.Mechanism:
+    """A collar loose on a fixed shaft of radius 2, turned by a belt wrapped on it at
+    radius 2.25: 20 down on the left, ``push`` to the right on top (lb and in; the
+    equations are homogeneous in the units). A loose journal of coefficient ``mu``
+    has its friction circle at r sin(atan mu), so its ``friction`` is that sine."""
+    return assur.loads(
+        f"""
+        [links.collar]
+        [joints.O]
+        kind = "revolute"
+        links = ["ground", "collar"]
+        at = [0.0, 0.0]
+        friction = {mu / math.sqrt(1.0 + mu * mu)!r}
+        radius = 2.0
+        [[drivers]]
+        joint = "O"
+        omega = 1.0
+        [[loads]]
+        link = "collar"
+        at = [-2.25, 0.0]
+        force = [0.0, -20.0]
+        [[loads]]
+        link = "collar"
+        at = [0.0, 2.25]
+        force = [{push!r}, 0.0]
+        """
+    )
+
+
+def test_a_collar_on_a_loose_shaft_as_in_the_textbook():
+    """Hibbeler, Engineering Mechanics: Statics and Dynamics, 14th ed., problem 8-116:
+    the belt force P that turns the collar counterclockwise at constant speed, mu_k =
+    0.3 (friction circle r_f = 2 sin 16.699 deg = 0.5747 in); printed answer P = 13.8 lb.
+
+    No motor drives the collar: P is where the balancing torque vanishes.
+    """
+    mu = 0.3
+
+    def torque(push: float) -> float:
+        return float(assur.forces(collar(push, mu), [0.0])["driver.torque"][0])
+
+    push = brentq(torque, 0.0, 40.0, xtol=1e-13)
+    assert push == pytest.approx(13.8, abs=0.05)
+    # the book's moment equation about the shaft: the reaction on the friction circle
+    circle = 2.0 * math.sin(math.atan(mu))
+    assert circle == pytest.approx(0.5747, abs=5e-5)
+    assert 20.0 * 2.25 - push * 2.25 == pytest.approx(
+        circle * math.hypot(push, 20.0), rel=1e-10
+    )
+    table = assur.forces(collar(push, mu), [0.0])
+    assert table["O.F"][0] == pytest.approx(math.hypot(push, 20.0), rel=1e-12)
+    assert table["O.Mf"][0] == pytest.approx(-circle * table["O.F"][0], rel=1e-12)
+    # without friction the belt's two ends pull alike
+    ideal = assur.forces(collar(20.0, mu), [0.0])["driver.torque_ideal"][0]
+    assert ideal == pytest.approx(0.0, abs=1e-12)
 
 
 def eccentric(f: float, omega: float) -> assur.Mechanism:
