@@ -17,7 +17,7 @@ import numpy as np
 
 from assur._kinematics import motions
 from assur._loads import compile_loads
-from assur._vec import Array, full, is_array, rows_of
+from assur._vec import Array, full, is_array, norm, rows_of
 from assur.columns import POINT_PARTS, Column, schema
 from assur.groups._motion import point
 from assur.kinetostatics import (
@@ -159,7 +159,7 @@ def _centre(plan: Any, leaves: list[Array], x: Array, y: Array) -> None:
     NaN where the link translates.
     """
     omega, ox, oy, vx, vy = leaves
-    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * np.hypot(vx, vy))
+    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * norm(vx, vy))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         np.divide(vy, omega, out=x)
         np.subtract(plan.shift[0] + ox, x, out=x)
@@ -195,7 +195,7 @@ def _magnitude(table: Table, column: Column) -> dict[str, Array]:
     n = len(table)
     if not (is_array(fx) or is_array(fy)):
         return {column.name: full(np.hypot(full(fx, 1), full(fy, 1))[0], n)}
-    return {column.name: np.hypot(full(fx, n), full(fy, n), out=rows_of(1, n)[0])}
+    return {column.name: norm(full(fx, n), full(fy, n), out=rows_of(1, n)[0])}
 
 
 def _balancing(table: Table, column: Column) -> dict[str, Array]:
@@ -371,7 +371,7 @@ def _largest_reaction(forces: ForceState, size: int) -> Array:
     """Return the largest reaction force at each of ``size`` positions (N)."""
     largest = np.zeros(size)
     for fx, fy, _ in forces.reactions.values():
-        np.maximum(largest, np.hypot(full(fx, size), full(fy, size)), out=largest)
+        np.maximum(largest, norm(full(fx, size), full(fy, size)), out=largest)
     return largest
 
 

@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._vec import Leaf, Mask, add, cross, dot, full, mul, sub
+from assur._vec import Leaf, Mask, add, cross, dot, full, mul, norm, sub
 from assur.groups._motion import Motion, direction, point, rotated
 from assur.groups._pairs import PairPlan, slide
 from assur.groups._protocol import Equilibrium, Reaction, Wrench
@@ -95,7 +95,7 @@ def still(bodies: list[Motion], size: float) -> Still:
     """
     parts = [np.abs(b.phi[1]) for b in bodies]
     # a mechanism with every joint at one point has no size to divide by
-    parts += [np.hypot(b.ox[1], b.oy[1]) / max(size, 1e-12) for b in bodies]
+    parts += [norm(b.ox[1], b.oy[1]) / max(size, 1e-12) for b in bodies]
     return Still(STILL * functools.reduce(np.maximum, parts, 0.0), size)
 
 
@@ -125,7 +125,7 @@ def friction_wrench(
     """
     sense = np.sign(speed)
     if pair.kind == "R":
-        size = np.hypot(reaction.fx, reaction.fy)
+        size = norm(reaction.fx, reaction.fy)
         couple = -pair.friction * pair.radius * size * sense
         return couple, [0.0, 0.0, couple]
     nx, ny = rotated(bodies[pair.first], pair.normal)
@@ -337,7 +337,7 @@ def _adjugate(a: list[list[Any]]) -> tuple[list[list[Any]], Any]:
 
 def _norm(a: Any) -> Any:
     """Return the length of each row of an (n, 2) or (n, 1) array."""
-    return np.hypot(a[:, 0], a[:, 1]) if a.shape[-1] == 2 else np.abs(a[:, 0])
+    return norm(a[:, 0], a[:, 1]) if a.shape[-1] == 2 else np.abs(a[:, 0])
 
 
 def _dot(a: Any, b: Any) -> Any:

@@ -46,6 +46,50 @@ def full(value: Leaf, n: int) -> Array:
     return out
 
 
+SQUARE_RANGE = (1e-280, 1e280)
+"""Squares within this range keep full precision; outside it :func:`norm` falls
+back to ``np.hypot`` (a square underflows below about 1e-308, overflows above 1e308)."""
+
+
+def norm(x: Array, y: Array, out: Array | None = None) -> Array:
+    """Return ``sqrt(x**2 + y**2)`` per element, as ``np.hypot`` does.
+
+    ``np.hypot`` calls the C library per element; the sum of squares runs about ten
+    times faster, and is as exact (within an ulp) while the squares stay in
+    :data:`SQUARE_RANGE`. Elements outside it, tiny or huge, are computed by
+    ``np.hypot``; a NaN in either component gives NaN.
+
+    Parameters
+    ----------
+    x, y : ndarray or float
+        The components, of shapes that broadcast (any unit).
+    out : ndarray, optional
+        Where to write the result; it may not be ``x`` or ``y``.
+
+    Returns
+    -------
+    ndarray
+        The lengths, in the unit of the components.
+    """
+    if np.ndim(x) == 0 and np.ndim(y) == 0:
+        return np.hypot(x, y)  # type: ignore[no-any-return]
+    with np.errstate(over="ignore"):  # a huge square is redone by np.hypot below
+        s = np.multiply(x, x, out=out)
+        s += y * y
+    # two reductions find the rare odd square without a mask over every element
+    fine = not s.size or (SQUARE_RANGE[0] <= s.min() and s.max() <= SQUARE_RANGE[1])
+    if fine:
+        return np.sqrt(s, out=s)
+    with np.errstate(invalid="ignore"):
+        odd = (s < SQUARE_RANGE[0]) | (s > SQUARE_RANGE[1])
+    odd &= (x != 0.0) | (y != 0.0)
+    np.sqrt(s, out=s)
+    if odd.any():
+        wide_x, wide_y = np.broadcast_to(x, s.shape), np.broadcast_to(y, s.shape)
+        s[odd] = np.hypot(wide_x[odd], wide_y[odd])
+    return s
+
+
 def leaves(tree: Any) -> list[Any]:
     """Return the leaves of nested tuples, lists and dicts, in a fixed order."""
     out: list[Any] = []

@@ -332,8 +332,9 @@ def collar(push: float, mu: float) -> assur.Mechanism:
 
 def test_a_collar_on_a_loose_shaft_as_in_the_textbook():
     """Hibbeler, Engineering Mechanics: Statics and Dynamics, 14th ed., problem 8-116:
-    the belt force P that turns the collar counterclockwise at constant speed, mu_k =
-    0.3 (friction circle r_f = 2 sin 16.699 deg = 0.5747 in); printed answer P = 13.8 lb.
+    the belt force P that turns the collar counterclockwise at constant speed,
+    mu_k = 0.3 (friction circle r_f = 2 sin 16.699 deg = 0.5747 in); printed answer
+    P = 13.8 lb.
 
     No motor drives the collar: P is where the balancing torque vanishes.
     """

@@ -387,3 +387,28 @@ def test_warnings_point_at_the_caller():
     with pytest.warns(assur.AssurWarning, match="change point") as caught:
         assur.kinematics(parallelogram(), [270.0])
     assert caught[0].filename == __file__
+
+
+@pytest.mark.parametrize("scale", [1.0, 1e-200, 1e-160, 1e-300, 1e160, 1e200, 1e300])
+def test_the_fast_norm_is_hypot_at_every_scale(scale):
+    """assur._vec.norm sums squares where they keep their precision and falls back to
+    np.hypot where they would underflow or overflow: within an ulp of np.hypot."""
+    from assur._vec import norm
+
+    rng = np.random.default_rng(7)
+    x, y = rng.normal(size=(2, 2000)) * scale
+    x[::5] = 0.0
+    y[::7] = 0.0
+    x[1] = np.inf
+    y[2] = np.nan
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        got = norm(x, y)
+    want = np.hypot(x, y)
+    np.testing.assert_array_equal(np.isnan(got), np.isnan(want))
+    finite = np.isfinite(want)
+    infinite = ~finite & ~np.isnan(want)
+    assert np.array_equal(got[infinite], want[infinite])
+    np.testing.assert_allclose(got[finite], want[finite], rtol=4.5e-16, atol=0.0)
+    assert norm(3.0, 4.0) == 5.0
+    np.testing.assert_allclose(norm(np.array([3.0, 6.0]), 4.0), [5.0, np.hypot(6, 4)])

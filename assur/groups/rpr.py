@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._vec import wrap
+from assur._vec import norm, wrap
 from assur.groups._dyad import DyadSolver, compile_dyad
 from assur.groups._motion import Motion, point
 from assur.groups._protocol import CompileContext
@@ -33,7 +33,7 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     """
     gx, gy, n0, c0 = _across(plan, bodies)
     with np.errstate(invalid="ignore", divide="ignore"):
-        psi = np.arccos(c0 / np.hypot(gx, gy))
+        psi = np.arccos(c0 / norm(gx, gy))
     phi = wrap(np.arctan2(gy, gx) - math.atan2(n0[1], n0[0]) - branch * psi)
     return phi, phi
 
