@@ -19,7 +19,7 @@ from assur._kinematics import motions
 from assur._loads import compile_loads
 from assur._vec import Array, full, is_array, norm, rows_of
 from assur.columns import POINT_PARTS, Column, schema
-from assur.groups._motion import point
+from assur.groups._motion import point_into
 from assur.kinetostatics import (
     applied_loads,
     offset,
@@ -144,22 +144,30 @@ def _ic(table: Table, column: Column) -> dict[str, Array]:
         _centre(plan, [full(v, 1) for v in leaves], x, y)
         return {f"{name}.ic.x": full(x[0], n), f"{name}.ic.y": full(y[0], n)}
     x, y = rows_of(2, n)
+    # a link turning about a fixed origin: its speed is one number
+    speed = None
+    if not (is_array(leaves[3]) or is_array(leaves[4])):
+        speed = math.hypot(float(leaves[3]), float(leaves[4]))
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
         size = rows.stop - start
         part = [v[rows] if is_array(v) else full(v, size) for v in leaves]
-        _centre(plan, part, x[rows], y[rows])
+        _centre(plan, part, x[rows], y[rows], speed)
     return {f"{name}.ic.x": x, f"{name}.ic.y": y}
 
 
-def _centre(plan: Any, leaves: list[Array], x: Array, y: Array) -> None:
+def _centre(
+    plan: Any, leaves: list[Array], x: Array, y: Array, speed: float | None = None
+) -> None:
     """Write the instant centre of a link moving as ``leaves`` into ``x`` and ``y``.
 
     ``leaves`` are the link's angular speed and its origin's position and velocity;
-    NaN where the link translates.
+    NaN where the link translates. ``speed`` is the origin's speed where it is one
+    number (m/s).
     """
     omega, ox, oy, vx, vy = leaves
-    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * norm(vx, vy))
+    moving = norm(vx, vy) if speed is None else speed
+    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * moving)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         np.divide(vy, omega, out=x)
         np.subtract(plan.shift[0] + ox, x, out=x)
@@ -313,7 +321,8 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
             )
         if loads is None:
             continue
-        applied = applied_loads(plan, loads, bodies, part)
+        known = forces.inertia if forces is not None else None
+        applied = applied_loads(plan, loads, bodies, part, known)
         friction = forces.friction if forces is not None else {}
         if checks is not None:
             # friction does work: its power counts like any load's
@@ -325,7 +334,7 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
             # a prismatic pair's friction force is in its reaction already
             assert forces is not None
             rubbed = with_friction(plan, bodies, applied, friction, "R")
-            left[:, rows] = residual(plan, bodies, rubbed, forces, rows.stop - start).T
+            residual(plan, bodies, rubbed, forces, left[:, rows])
     for arrays in points.values():
         out.update(arrays)
     jerks = sorted({c.key[0] for c in columns if c.family == "point" and c.level > top})
@@ -383,15 +392,16 @@ def _point(
     m = bodies[plan.point_body[p]]
     offset_ = plan.point_offset[p]
     shift = plan.shift
+    spare = np.empty(rows.stop - rows.start)
     for k, parts in enumerate(POINT_PARTS):
         target = arrays.get(f"{name}.{parts[0]}")
         if target is None:
             continue
-        x, y = point(m, offset_, k)
+        x, y = target[rows], arrays[f"{name}.{parts[1]}"][rows]
+        point_into(m, offset_, k, x, y, spare)
         if k == 0 and (shift[0] or shift[1]):
-            x, y = x + shift[0], y + shift[1]
-        target[rows] = x
-        arrays[f"{name}.{parts[1]}"][rows] = y
+            x += shift[0]
+            y += shift[1]
 
 
 def _jerks(table: Table, points: list[int]) -> dict[str, Array]:

@@ -150,12 +150,18 @@ class ForceState:
 
 
 def applied_loads(
-    plan: Plan, loads: LoadPlan, bodies: list[Motion], state: KinematicState
+    plan: Plan,
+    loads: LoadPlan,
+    bodies: list[Motion],
+    state: KinematicState,
+    known: tuple[tuple[Any, Any, Any] | None, ...] | None = None,
 ) -> Applied:
     """Return every link's applied loads: inertia, gravity and external loads.
 
     ``state`` gives the driver positions and slides of the batch (for tabulated
-    loads); the motions give everything else.
+    loads); the motions give everything else. ``known`` holds the inertia loads
+    already computed for these motions (a force state's ``inertia``), which are then
+    taken as they are.
     """
     count = len(plan.bodies)
     wrenches: list[Wrench] = [[0.0, 0.0, 0.0] for _ in range(count)]
@@ -164,9 +170,13 @@ def applied_loads(
     for b, mass, moment in loads.bodies():
         m = bodies[b]
         px, py = point(m, loads.center[b], 0)
-        ax, ay = point(m, loads.center[b], 2)
-        fx, fy = mul(-mass, ax), mul(-mass, ay)
-        torque = mul(-moment, m.phi[2])
+        given = None if known is None else known[b]
+        if given is None:
+            ax, ay = point(m, loads.center[b], 2)
+            fx, fy = mul(-mass, ax), mul(-mass, ay)
+            torque = mul(-moment, m.phi[2])
+        else:
+            fx, fy, torque = given
         inertia[b] = (fx, fy, torque)
         fx, fy = add(fx, mass * gx), add(fy, mass * gy)
         wrenches[b] = [fx, fy, add(cross(px, py, fx, fy), torque)]
@@ -426,27 +436,31 @@ def offset(
 
 
 def residual(
-    plan: Plan, bodies: list[Motion], applied: Applied, forces: ForceState, n: int
-) -> Array:
-    """Largest unbalanced force (N) and moment about the link's origin (N m).
+    plan: Plan, bodies: list[Motion], applied: Applied, forces: ForceState, out: Array
+) -> None:
+    """Write the largest unbalanced force (N) and moment about the link's origin (N m).
 
     Every link's loads are summed again from the applied loads, the reactions of all
     its pairs and the balancing loads: an independent check of the reverse pass.
-    Returns an array (n, 2).
+    ``out`` is an array (2, n): the forces are written into its first row, the
+    moments into its second.
     """
-    total = np.zeros((3, len(plan.bodies), n))
-    for b, wrench in enumerate(applied.wrenches):
-        for i in range(3):
-            total[i, b] += wrench[i]
+    n = out.shape[1]
+    # the sums of the moving links only (the frame takes what they pass to it)
+    total = np.empty((3, len(plan.bodies), n))
+    for b in range(1, len(plan.bodies)):
+        for i, value in enumerate(applied.wrenches[b]):
+            total[i, b] = value
     for name, (fx, fy, couple) in forces.reactions.items():
         pair = plan.pairs[name]
         qx, qy = point(bodies[pair.second], pair.d_second, 0)
-        tau = qx * fy - qy * fx
+        tau = cross(qx, qy, fx, fy)
         if pair.kind == "P":
-            tau = tau + couple
+            tau = add(tau, couple)
         for i, value in enumerate((fx, fy, tau)):
             total[i, pair.second] += value
-            total[i, pair.first] -= value
+            if pair.first:
+                total[i, pair.first] -= value
     for d, value in zip(plan.drivers, forces.balancing, strict=True):
         if d.kind == "R":
             total[2, d.body] += value
@@ -458,12 +472,15 @@ def residual(
             total[0, d.body] += fx
             total[1, d.body] += fy
             total[2, d.body] += m.ox[0] * fy - m.oy[0] * fx
-    out = np.zeros((n, 2))
-    force, moment = out[:, 0], out[:, 1]
+    out[...] = 0.0
+    force, moment = out
+    spare = np.empty(n)
     for b in range(1, len(bodies)):
         fx, fy, tau = total[:, b]
         m = bodies[b]
-        np.maximum(force, np.abs(fx), out=force)
-        np.maximum(force, np.abs(fy), out=force)
-        np.maximum(moment, np.abs(tau - (m.ox[0] * fy - m.oy[0] * fx)), out=moment)
-    return out
+        np.maximum(force, np.abs(fx, out=spare), out=force)
+        np.maximum(force, np.abs(fy, out=spare), out=force)
+        # the moment about the link's origin: tau - o x F, in place
+        tau -= np.multiply(m.ox[0], fy, out=spare)
+        tau += np.multiply(m.oy[0], fx, out=spare)
+        np.maximum(moment, np.abs(tau, out=spare), out=moment)

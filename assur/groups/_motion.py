@@ -16,7 +16,7 @@ import numpy as np
 
 from assur._vec import add
 
-__all__ = ["Motion", "direction", "point", "rotated"]
+__all__ = ["Motion", "direction", "point", "point_into", "rotated"]
 
 Vec = tuple[Any, Any]
 """A vector as ``(x, y)``, each an array (n,) or a float."""
@@ -139,6 +139,59 @@ def point(m: Motion, d: tuple[float, float], k: int) -> Vec:
     if memo is not None:
         memo[(d, k)] = value
     return value
+
+
+def point_into(
+    m: Motion, d: tuple[float, float], k: int, x: Any, y: Any, spare: Any
+) -> None:
+    """Write what :func:`point` returns into the arrays ``x`` and ``y``.
+
+    The same arithmetic to the last bit, with every product written into the
+    targets or ``spare`` (an array of their size): a long sweep's columns are filled
+    slice by slice without a temporary array per operation.
+    """
+    if d == ORIGIN or m.memo is not None or np.ndim(m.phi[0]) == 0:
+        x[...], y[...] = point(m, d, k)
+        return
+    ux, uy = rotated(m, d)
+    if k == 0:
+        _shifted(m.ox[0], ux, x, 1.0)
+        _shifted(m.oy[0], uy, y, 1.0)
+        return
+    # _relative's derivative is (-(p uy + q ux), p ux - q uy), the origin's added
+    w = m.phi[1]
+    if k == 1:
+        p, q = w, 0.0
+    elif k == 2:
+        p, q = m.phi[2], w * w
+    else:
+        p, q = m.phi[3] - w * w * w, 3.0 * w * m.phi[2]
+    if k == 2 and p.__class__ is float and not p:  # a crank at constant speed
+        np.multiply(q, ux, out=x)
+        np.multiply(q, uy, out=y)
+        _shifted(m.ox[k], x, x, -1.0)
+        _shifted(m.oy[k], y, y, -1.0)
+        return
+    np.multiply(p, uy, out=x)
+    np.multiply(p, ux, out=y)
+    if not (q.__class__ is float and not q):
+        x += np.multiply(q, ux, out=spare)
+        y -= np.multiply(q, uy, out=spare)
+    _shifted(m.ox[k], x, x, -1.0)
+    _shifted(m.oy[k], y, y, 1.0)
+
+
+def _shifted(origin: Any, u: Any, out: Any, sign: float) -> None:
+    """Write ``origin + sign * u`` into ``out`` as :func:`assur._vec.add` rounds it."""
+    if origin.__class__ is float and not origin:
+        if sign < 0.0:
+            np.negative(u, out=out)
+        elif u is not out:
+            out[...] = u
+    elif sign < 0.0:
+        np.subtract(origin, u, out=out)
+    else:
+        np.add(origin, u, out=out)
 
 
 def direction(m: Motion, e: tuple[float, float], k: int) -> Vec:
