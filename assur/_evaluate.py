@@ -292,6 +292,7 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
             out.update(_origin(table, p, range(top + 1)))
         else:
             rebuilt.append(p)
+    rebuilt, same = _distinct(plan, rebuilt)
     points = _allocate(plan, rebuilt, range(top + 1), n)
     offsets = sorted({c.owner for c in columns if c.family == "offset"})
     off = {name: np.empty(n) for name in offsets}
@@ -337,6 +338,7 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
             residual(plan, bodies, rubbed, forces, left[:, rows])
     for arrays in points.values():
         out.update(arrays)
+    out.update(_aliases(plan, points, same))
     jerks = sorted({c.key[0] for c in columns if c.family == "point" and c.level > top})
     if jerks:
         out.update(_jerks(table, jerks))
@@ -415,6 +417,7 @@ def _jerks(table: Table, points: list[int]) -> dict[str, Array]:
             out.update(_origin(table, p, (3,)))
         else:
             rebuilt.append(p)
+    rebuilt, same = _distinct(plan, rebuilt)
     chunked = _allocate(plan, rebuilt, (3,), n)
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
@@ -423,4 +426,35 @@ def _jerks(table: Table, points: list[int]) -> dict[str, Array]:
             _point(plan, bodies, p, arrays, rows)
     for arrays in chunked.values():
         out.update(arrays)
+    out.update(_aliases(plan, chunked, same))
+    return out
+
+
+def _distinct(plan: Any, points: list[int]) -> tuple[list[int], dict[int, int]]:
+    """Split ``points`` into those at distinct places and the others.
+
+    Returns the first point at each place (a link and an offset on it) and, for
+    each other point, the first at its place: a centre of mass at a joint, say, is
+    computed once.
+    """
+    first: dict[tuple[int, tuple[float, float]], int] = {}
+    same = {}
+    for p in points:
+        place = (plan.point_body[p], plan.point_offset[p])
+        if place in first:
+            same[p] = first[place]
+        else:
+            first[place] = p
+    return list(first.values()), same
+
+
+def _aliases(
+    plan: Any, arrays: dict[int, dict[str, Array]], same: dict[int, int]
+) -> dict[str, Array]:
+    """Return the columns of each point of ``same``: those of the first at its place."""
+    out = {}
+    for p, q in same.items():
+        cut = len(plan.points[q])
+        for name, values in arrays[q].items():
+            out[plan.points[p] + name[cut:]] = values
     return out
