@@ -131,6 +131,16 @@ def check_range(
     return float(value)
 
 
+def add_angle_option(parser: Any) -> None:
+    """Add ``--angle DEG``, the one position of ``explain``, ``plans`` and ``plot``."""
+    parser.add_argument(
+        "--angle",
+        metavar="DEG",
+        help="driver position, deg (m for a prismatic driver; one per driver, "
+        "separated by commas); default: the reference pose",
+    )
+
+
 def one_position(mech: Any, spec: str | None) -> Any:
     """Return the one driver position of ``--angle`` (default: the reference pose).
 

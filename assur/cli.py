@@ -22,6 +22,7 @@ import numpy as np
 
 from assur import _output
 from assur._cli_common import (
+    add_angle_option,
     check_not_input,
     load_mechanism,
     one_position,
@@ -113,12 +114,7 @@ def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
     )
     p = sub.add_parser("explain", help="the analysis at one position, step by step")
     p.add_argument("file", type=Path)
-    p.add_argument(
-        "--angle",
-        metavar="DEG",
-        help="driver position, deg (m for a prismatic driver; one per driver, "
-        "separated by commas); default: the reference pose",
-    )
+    add_angle_option(p)
     p.add_argument(
         "-o",
         "--output",

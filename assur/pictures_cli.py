@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import (
+    add_angle_option,
     check_not_input,
     check_range,
     load_mechanism,
@@ -65,13 +66,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     }
     p = sub.add_parser("plot", help="draw the mechanism at one driver position")
     _common(p, "PATH", "picture to write: .png, .svg or .pdf", DPI)
-    p.add_argument(
-        "--angle",
-        metavar="DEG",
-        help="driver position, deg (m for a "
-        "prismatic driver; one per driver, separated by commas); default: "
-        "the reference pose",
-    )
+    add_angle_option(p)
     p.add_argument(
         "--forces",
         action="store_true",
@@ -117,12 +112,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "plans", help="velocity, acceleration and force plans, lever, instant centres"
     )
     _common(p, "DIR", "folder for the plans, each as PNG and SVG", DPI)
-    p.add_argument(
-        "--angle",
-        metavar="DEG",
-        help="driver position, deg (m for a prismatic driver; one per driver, "
-        "separated by commas); default: the reference pose",
-    )
+    add_angle_option(p)
     p = sub.add_parser("report", help="write an HTML report of the analysis")
     _common(p, "PATH", "HTML file to write")
     p.add_argument("--angles", **angles)
