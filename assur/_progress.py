@@ -38,6 +38,9 @@ class Progress:
         self.done += count
         if self._bar is not None:
             self._bar.update(count)
+            if self.done >= self.total:
+                # tqdm skips updates that come fast; the last one is always shown
+                self._bar.refresh()
         if self._callback is not None:
             self._callback(self.done, self.total)
 
