@@ -42,7 +42,7 @@ its origin's speed translates: its instant centre is at infinity (NaN)."""
 CHUNKED = ("point", "offset", "check", "residual")
 """Families computed slice by slice from rebuilt motions."""
 
-Evaluator = Callable[["Table", Column], dict[str, Array]]
+Evaluator = Callable[["Table", list[Column]], dict[str, Array]]
 
 
 def evaluate(table: Table, column: Column) -> dict[str, Array]:
@@ -53,7 +53,7 @@ def evaluate(table: Table, column: Column) -> dict[str, Array]:
     """
     if column.family in CHUNKED:
         return materialize(table, _company(table, column))
-    return SIMPLE[column.family](table, column)
+    return SIMPLE[column.family](table, [column])
 
 
 def _company(table: Table, column: Column) -> list[Column]:
@@ -82,13 +82,17 @@ def materialize(table: Table, columns: Iterable[Column]) -> dict[str, Array]:
     """
     out: dict[str, Array] = {}
     chunked: list[Column] = []
+    families: dict[str, list[Column]] = {}
     for column in columns:
         if column.family in CHUNKED:
             chunked.append(column)
-        elif column.name not in out:
-            out.update(SIMPLE[column.family](table, column))
+        else:
+            families.setdefault(column.family, []).append(column)
+    # a family's columns at once: those of several links or joints share each step
+    for family, members in families.items():
+        out.update(SIMPLE[family](table, members))
     if chunked:
-        out.update(_chunked(table, chunked))
+        out.update(_chunked(table, chunked, out))
     return out
 
 
@@ -96,137 +100,208 @@ def materialize(table: Table, columns: Iterable[Column]) -> dict[str, Array]:
 # Columns read from the states
 
 
-def _given(table: Table, column: Column) -> dict[str, Array]:
-    return {column.name: table.given[:, column.key[0]]}
+def _given(table: Table, columns: list[Column]) -> dict[str, Array]:
+    return {c.name: table.given[:, c.key[0]] for c in columns}
 
 
-def _angle(table: Table, column: Column) -> dict[str, Array]:
-    (b,) = column.key
-    plan = table.plan
-    for i, d in enumerate(plan.drivers):
-        if d.body == b and d.kind == "R":
-            return {column.name: table.given[:, i]}
-    angle = plan.angle0[b] + full(table.state.rotation(b, 0), len(table))
-    if not any(d.body == b for d in plan.drivers) and angle.size:
-        angle = _continuous(angle)
-    return {column.name: angle * (180.0 / math.pi)}
+def _angle(table: Table, columns: list[Column]) -> dict[str, Array]:
+    """Links' angles (deg): a driver's as given, the others' unwrapped.
+
+    The links that are not drivers are computed together, one row each.
+    """
+    plan, n = table.plan, len(table)
+    out: dict[str, Array] = {}
+    free: list[Column] = []
+    for column in columns:
+        (b,) = column.key
+        given = [i for i, d in enumerate(plan.drivers) if d.body == b and d.kind == "R"]
+        if given:
+            out[column.name] = table.given[:, given[0]]
+        else:
+            free.append(column)
+    if not free:
+        return out
+    bodies = [c.key[0] for c in free]
+    angle = np.array([full(table.state.rotation(b, 0), n) for b in bodies])
+    angle += np.array([plan.angle0[b] for b in bodies])[:, None]
+    driven = [any(d.body == b for d in plan.drivers) for b in bodies]
+    if n and not all(driven):
+        rows = np.flatnonzero(np.logical_not(driven))
+        angle[rows] = _continuous(angle[rows])
+    angle *= 180.0 / math.pi
+    out.update((c.name, row) for c, row in zip(free, angle, strict=True))
+    return out
 
 
 def _continuous(angle: Array) -> Array:
-    """Remove the jumps of a turn from angles (rad); the first is put in (-pi, pi]."""
-    first = angle[0]
-    shift = first - (math.pi - (math.pi - first) % (2.0 * math.pi))
+    """Remove the jumps of a turn from angles (rad), along the last axis.
+
+    The first of each row is put in (-pi, pi].
+    """
+    first = angle[..., :1]
+    shift = first - (math.pi - np.remainder(math.pi - first, 2.0 * math.pi))
     with np.errstate(invalid="ignore"):
         turns = np.round(np.diff(angle) * (0.5 / math.pi))
     if np.any(turns):
         turns = np.nan_to_num(turns)
-        angle = angle - 2.0 * math.pi * np.concatenate(([0.0], np.cumsum(turns)))
-    return angle - shift if shift else angle
+        steps = np.concatenate((np.zeros_like(first), np.cumsum(turns, axis=-1)), -1)
+        angle = angle - 2.0 * math.pi * steps
+    return angle - shift  # type: ignore[no-any-return]
 
 
-def _link(table: Table, column: Column) -> dict[str, Array]:
-    b, k = column.key
-    return {column.name: full(table.motion(k).rotation(b, k), len(table))}
+def _link(table: Table, columns: list[Column]) -> dict[str, Array]:
+    n = len(table)
+    out = {}
+    for c in columns:
+        b, k = c.key
+        out[c.name] = full(table.motion(k).rotation(b, k), n)
+    return out
 
 
-def _ic(table: Table, column: Column) -> dict[str, Array]:
-    r"""Instant centre of a link: :math:`p = o + \hat z \times v_o / \omega`.
+def _ic(table: Table, columns: list[Column]) -> dict[str, Array]:
+    r"""Instant centres of links: :math:`p = o + \hat z \times v_o / \omega`.
 
-    Computed slice by slice into the two columns (a constant where the link's
-    motion is).
+    A link whose motion is constant gives constants; the others are computed
+    together, one row each, slice by slice.
     """
-    (b, _) = column.key
     state, plan, n = table.state, table.plan, len(table)
-    name = plan.bodies[b]
-    leaves = (state.rotation(b, 1), *state.origin(b, 0), *state.origin(b, 1))
-    if not any(is_array(v) for v in leaves):
-        x, y = np.empty(1), np.empty(1)
-        _centre(plan, [full(v, 1) for v in leaves], x, y)
-        return {f"{name}.ic.x": full(x[0], n), f"{name}.ic.y": full(y[0], n)}
-    x, y = rows_of(2, n)
-    # a link turning about a fixed origin: its speed is one number
-    speed = None
-    if not (is_array(leaves[3]) or is_array(leaves[4])):
-        speed = math.hypot(float(leaves[3]), float(leaves[4]))
+    out: dict[str, Array] = {}
+    moving: list[tuple[str, list[Any]]] = []
+    # the variants of a study stack their plans: a size and a shift per row
+    per_row = np.ndim(plan.scale) or any(np.ndim(v) for v in plan.shift)
+    for b in dict.fromkeys(c.key[0] for c in columns):
+        name = plan.bodies[b]
+        leaves = [state.rotation(b, 1), *state.origin(b, 0), *state.origin(b, 1)]
+        if leaves[0].__class__ is float and not leaves[0]:
+            # a link that never turns translates (or rests) at every position
+            out[f"{name}.ic.x"] = out[f"{name}.ic.y"] = full(None, n)
+        elif per_row or any(is_array(v) for v in leaves):
+            moving.append((name, leaves))
+        else:
+            cx, cy = _fixed_centre(plan, leaves)
+            out[f"{name}.ic.x"], out[f"{name}.ic.y"] = full(cx, n), full(cy, n)
+    if not moving:
+        return out
+    block = np.empty((2, len(moving), n))
+    x, y = block
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
         size = rows.stop - start
-        part = [v[rows] if is_array(v) else full(v, size) for v in leaves]
-        _centre(plan, part, x[rows], y[rows], speed)
-    return {f"{name}.ic.x": x, f"{name}.ic.y": y}
+        # one row per link (a single link's leaves are seen as one row, not copied)
+        stack = np.array if len(moving) > 1 else _one_row
+        part = [
+            stack([v[rows] if is_array(v) else full(v, size) for v in quantity])
+            for quantity in zip(*(leaves for _, leaves in moving), strict=True)
+        ]
+        _centre(plan, part, x[:, rows], y[:, rows])
+    for i, (name, _) in enumerate(moving):
+        out[f"{name}.ic.x"], out[f"{name}.ic.y"] = x[i], y[i]
+    return out
 
 
-def _centre(
-    plan: Any, leaves: list[Array], x: Array, y: Array, speed: float | None = None
-) -> None:
-    """Write the instant centre of a link moving as ``leaves`` into ``x`` and ``y``.
+def _one_row(arrays: list[Array]) -> Array:
+    """Return the only array of ``arrays`` seen as a row of a 2-D array (no copy)."""
+    return arrays[0][None]
 
-    ``leaves`` are the link's angular speed and its origin's position and velocity;
-    NaN where the link translates. ``speed`` is the origin's speed where it is one
-    number (m/s).
+
+def _fixed_centre(plan: Any, leaves: list[Any]) -> tuple[float, float]:
+    """Return the instant centre of a link whose motion is constant (m).
+
+    The arithmetic of :func:`_centre`, on numbers; NaN for a translating link.
+    """
+    omega, ox, oy, vx, vy = (math.nan if v is None else float(v) for v in leaves)
+    if not abs(omega) * plan.scale > TRANSLATION * math.hypot(vx, vy):
+        return math.nan, math.nan
+    return (plan.shift[0] + ox) - vy / omega, (plan.shift[1] + oy) + vx / omega
+
+
+def _centre(plan: Any, leaves: list[Array], x: Array, y: Array) -> None:
+    """Write the instant centres of links moving as ``leaves`` into ``x`` and ``y``.
+
+    ``leaves`` are the links' angular speeds and their origins' positions and
+    velocities, one row per link; NaN where a link translates.
     """
     omega, ox, oy, vx, vy = leaves
-    moving = norm(vx, vy) if speed is None else speed
-    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * moving)
+    translating = ~(np.abs(omega) * plan.scale > TRANSLATION * norm(vx, vy))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         np.divide(vy, omega, out=x)
         np.subtract(plan.shift[0] + ox, x, out=x)
         np.divide(vx, omega, out=y)
         np.add(plan.shift[1] + oy, y, out=y)
-    x[translating] = np.nan
-    y[translating] = np.nan
+    if translating.any():
+        x[translating] = np.nan
+        y[translating] = np.nan
 
 
-def _slide(table: Table, column: Column) -> dict[str, Array]:
-    (k,) = column.key
-    return {column.name: full(table.motion(k).slide[column.owner][k], len(table))}
+def _slide(table: Table, columns: list[Column]) -> dict[str, Array]:
+    n = len(table)
+    return {
+        c.name: full(table.motion(c.key[0]).slide[c.owner][c.key[0]], n)
+        for c in columns
+    }
 
 
 def _forces(table: Table) -> ForceState:
-    assert table.force_state is not None
-    return table.force_state
+    # the force state as kept: a table of the drivers' columns keeps those it needs
+    forces = table._kept_forces
+    assert forces is not None
+    return forces
 
 
-def _inertia(table: Table, column: Column) -> dict[str, Array]:
-    b, c = column.key
-    values = _forces(table).inertia[b]
-    return {column.name: full(0.0 if values is None else values[c], len(table))}
+def _inertia(table: Table, columns: list[Column]) -> dict[str, Array]:
+    inertia, n = _forces(table).inertia, len(table)
+    out = {}
+    for c in columns:
+        b, k = c.key
+        values = inertia[b]
+        out[c.name] = full(0.0 if values is None else values[k], n)
+    return out
 
 
-def _reaction(table: Table, column: Column) -> dict[str, Array]:
-    (c,) = column.key
-    return {column.name: full(_forces(table).reactions[column.owner][c], len(table))}
+def _reaction(table: Table, columns: list[Column]) -> dict[str, Array]:
+    reactions, n = _forces(table).reactions, len(table)
+    return {c.name: full(reactions[c.owner][c.key[0]], n) for c in columns}
 
 
-def _magnitude(table: Table, column: Column) -> dict[str, Array]:
-    fx, fy, _ = _forces(table).reactions[column.owner]
-    n = len(table)
-    if not (is_array(fx) or is_array(fy)):
-        return {column.name: full(np.hypot(full(fx, 1), full(fy, 1))[0], n)}
-    return {column.name: norm(full(fx, n), full(fy, n), out=rows_of(1, n)[0])}
+def _magnitude(table: Table, columns: list[Column]) -> dict[str, Array]:
+    """Joints' reaction magnitudes (N); those that vary computed together."""
+    reactions, n = _forces(table).reactions, len(table)
+    out: dict[str, Array] = {}
+    varying = []
+    for c in columns:
+        fx, fy, _ = reactions[c.owner]
+        if is_array(fx) or is_array(fy):
+            varying.append(c)
+        else:
+            out[c.name] = full(np.hypot(full(fx, 1), full(fy, 1))[0], n)
+    if varying:
+        fx = np.array([full(reactions[c.owner][0], n) for c in varying])
+        fy = np.array([full(reactions[c.owner][1], n) for c in varying])
+        out.update(zip((c.name for c in varying), norm(fx, fy), strict=True))
+    return out
 
 
-def _balancing(table: Table, column: Column) -> dict[str, Array]:
-    (i,) = column.key
-    return {column.name: full(_forces(table).balancing[i], len(table))}
+def _balancing(table: Table, columns: list[Column]) -> dict[str, Array]:
+    balancing, n = _forces(table).balancing, len(table)
+    return {c.name: full(balancing[c.key[0]], n) for c in columns}
 
 
-def _friction(table: Table, column: Column) -> dict[str, Array]:
-    value = _forces(table).friction.get(column.owner, 0.0)
-    return {column.name: full(value, len(table))}
+def _friction(table: Table, columns: list[Column]) -> dict[str, Array]:
+    friction, n = _forces(table).friction, len(table)
+    return {c.name: full(friction.get(c.owner, 0.0), n) for c in columns}
 
 
-def _ideal(table: Table, column: Column) -> dict[str, Array]:
-    (i,) = column.key
-    return {column.name: full(_forces(table).ideal[i], len(table))}
+def _ideal(table: Table, columns: list[Column]) -> dict[str, Array]:
+    ideal, n = _forces(table).ideal, len(table)
+    return {c.name: full(ideal[c.key[0]], n) for c in columns}
 
 
-def _loss(table: Table, column: Column) -> dict[str, Array]:
+def _loss(table: Table, columns: list[Column]) -> dict[str, Array]:
     """Compute the power of all friction loads (W)."""
     total = np.zeros(len(table))
     for power in friction_powers(table).values():
         total = total + power
-    return {column.name: total}
+    return {c.name: total for c in columns}
 
 
 def friction_powers(table: Table) -> dict[str, Array]:
@@ -252,9 +327,9 @@ def friction_powers(table: Table) -> dict[str, Array]:
     return out
 
 
-def _shaking(table: Table, column: Column) -> dict[str, Array]:
-    (c,) = column.key
-    return {column.name: full(_forces(table).shaking[c], len(table))}
+def _shaking(table: Table, columns: list[Column]) -> dict[str, Array]:
+    shaking, n = _forces(table).shaking, len(table)
+    return {c.name: full(shaking[c.key[0]], n) for c in columns}
 
 
 SIMPLE: dict[str, Evaluator] = {
@@ -279,9 +354,17 @@ SIMPLE: dict[str, Evaluator] = {
 # Columns computed from rebuilt motions, slice by slice
 
 
-def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
-    """Compute points, offsets, checks and residuals in one pass over slices."""
+def _chunked(
+    table: Table, columns: list[Column], done: dict[str, Array] | None = None
+) -> dict[str, Array]:
+    """Compute points, offsets, checks and residuals in one pass over slices.
+
+    ``done`` holds columns computed already (a joint's reaction magnitude, say).
+    """
     plan, state, n = table.plan, table.state, len(table)
+    if n <= CHUNK and any(c.level > state.top for c in columns):
+        # one slice: the state extended to jerks serves every level in one pass
+        state = table.motion(3)
     top = state.top
     out: dict[str, Array] = {}
     wanted = [c for c in columns if c.family == "point" and c.level <= top]
@@ -313,7 +396,7 @@ def _chunked(table: Table, columns: list[Column]) -> dict[str, Array]:
             _point(plan, bodies, p, arrays, rows)
         if offsets:
             assert forces is not None
-            scale = _largest_reaction(forces, rows.stop - start)
+            scale = _largest_reaction(forces, rows, done or {})
         for name in offsets:
             assert forces is not None
             fx, fy, couple = forces.reactions[name]
@@ -378,11 +461,18 @@ def _allocate(
     }
 
 
-def _largest_reaction(forces: ForceState, size: int) -> Array:
-    """Return the largest reaction force at each of ``size`` positions (N)."""
+def _largest_reaction(forces: ForceState, rows: slice, done: dict[str, Array]) -> Array:
+    """Return the largest reaction force at each position of ``rows`` (N).
+
+    ``forces`` holds those rows only; a magnitude column in ``done`` (all rows) is
+    used as it is.
+    """
+    size = rows.stop - rows.start
     largest = np.zeros(size)
-    for fx, fy, _ in forces.reactions.values():
-        np.maximum(largest, norm(full(fx, size), full(fy, size)), out=largest)
+    for name, (fx, fy, _) in forces.reactions.items():
+        known = done.get(f"{name}.F")
+        value = norm(full(fx, size), full(fy, size)) if known is None else known[rows]
+        np.maximum(largest, value, out=largest)
     return largest
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -178,9 +179,61 @@ def _sweep(
     chosen = selection(plan, with_forces, names)
     # jerks are solved when a jerk column is first read, unless asked for by name
     top = chosen.top if names is not None else min(chosen.top, 2)
-    loads = compile_loads(plan) if chosen.forces else None
+    # the drivers' columns alone need none of the links' motions or reactions kept
+    keep = names is None or any(c.family not in DRIVERS_ONLY for c in chosen.columns)
     troubles: list[Any] = []
     passed = _change_points(plan, drive)
+    what = "forces" if chosen.forces else "kinematics"
+    with progress(what, n, show) as bar:
+        tree = _passes(
+            plan, given, drive, rates, top, chosen.forces, keep, passed, troubles, bar
+        )
+    state, force_state = _states(drive, rates, top, tree)
+    ok = _report(plan, given, troubles, skip)
+    again = None
+    if not keep:
+        again = Again(plan, given, drive, rates, chosen.forces, passed, ok)
+    skipped = given[:0] if ok is None else given[~ok]
+    if ok is not None:
+        state = state.rows(ok)
+        force_state = force_state.rows(ok) if force_state is not None else None
+        given = given[ok]
+    return Table(
+        plan,
+        chosen.columns,
+        given,
+        state,
+        force_state,
+        skipped[:, 0] if skipped.shape[1] == 1 else skipped,
+        _index=chosen.index,
+        _again=again,
+    )
+
+
+DRIVERS_ONLY = frozenset({"given", "balancing", "ideal"})
+"""Families of columns read from the driver positions and balancing loads alone."""
+
+
+def _passes(
+    plan: Plan,
+    given: Array,
+    drive: Array,
+    rates: Rates,
+    top: int,
+    with_forces: bool,
+    keep: bool,
+    passed: bool,
+    troubles: list[Any],
+    bar: Any,
+) -> Any:
+    """Solve the sweep slice by slice; return its states as one tree of leaves.
+
+    The tree is ``(motion, slide, fields)`` (fields None for kinematics alone);
+    without ``keep`` only the drivers' balancing loads are kept, the other fields
+    empty. Troubles met are added to ``troubles`` with the start of their slice.
+    """
+    n = drive.shape[0]
+    loads = compile_loads(plan) if with_forces else None
     branch_of = (lambda at: branches(plan, at)[0]) if passed else None
 
     def pieces() -> Iterator[tuple[slice, Any]]:
@@ -204,27 +257,64 @@ def _sweep(
             troubles.extend((t, start) for t in found)
             _unexplained(plan, given[rows], (kin.motion, kin.slide, fields), found, top)
             bar.advance(rows.stop - rows.start)
-            yield rows, (kin.motion, kin.slide, fields)
+            if keep:
+                yield rows, (kin.motion, kin.slide, fields)
+            else:
+                kept: Any = None
+                if fields is not None:
+                    kept = ((), {}, fields[2], (), {}, fields[5])
+                yield rows, ((), {}, kept)
 
-    with progress("forces" if loads is not None else "kinematics", n, show) as bar:
-        motion, slide, fields = gather(n, pieces())
+    return gather(n, pieces())
+
+
+def _states(
+    drive: Array, rates: Rates, top: int, tree: Any
+) -> tuple[_kin.KinematicState, _kst.ForceState | None]:
+    """Return the kinematic and force states of a sweep's tree (see :func:`_passes`)."""
+    motion, slide, fields = tree
     state = _kin.KinematicState(drive, rates[0], rates[1], motion, slide, top)
-    force_state = None if fields is None else _kst.ForceState(*fields)
-    ok = _report(plan, given, troubles, skip)
-    skipped = given[:0] if ok is None else given[~ok]
-    if ok is not None:
-        state = state.rows(ok)
-        force_state = force_state.rows(ok) if force_state is not None else None
-        given = given[ok]
-    return Table(
-        plan,
-        chosen.columns,
-        given,
-        state,
-        force_state,
-        skipped[:, 0] if skipped.shape[1] == 1 else skipped,
-        _index=chosen.index,
-    )
+    return state, None if fields is None else _kst.ForceState(*fields)
+
+
+@dataclass(frozen=True)
+class Again:
+    """What solves a sweep again, keeping every state: for a table that kept few.
+
+    The same positions in the same slices give the same numbers; the troubles were
+    reported by the first solve (warnings are not repeated).
+    """
+
+    plan: Plan
+    given: Array
+    drive: Array
+    rates: Rates
+    with_forces: bool
+    passed: bool
+    ok: Mask | None
+
+    def solve(self) -> tuple[_kin.KinematicState, _kst.ForceState | None]:
+        """Return the kinematic and force states of every kept position."""
+        n = self.drive.shape[0]
+        with warnings.catch_warnings(), progress("", n, False) as bar:
+            warnings.simplefilter("ignore", AssurWarning)
+            tree = _passes(
+                self.plan,
+                self.given,
+                self.drive,
+                self.rates,
+                2,
+                self.with_forces,
+                True,
+                self.passed,
+                [],
+                bar,
+            )
+        state, forces = _states(self.drive, self.rates, 2, tree)
+        if self.ok is not None:
+            state = state.rows(self.ok)
+            forces = forces.rows(self.ok) if forces is not None else None
+        return state, forces
 
 
 def _unexplained(
@@ -263,7 +353,7 @@ def _unexplained(
             f"not finite at driver positions {_ranges(plan, given, bad)}, where no "
             "group fails: the inputs are out of the range the arithmetic can follow",
             AssurWarning,
-            stacklevel=6,
+            stacklevel=7,
         )
 
 
@@ -439,10 +529,11 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
             raise UsageError(msg)
         if arr.ndim == 0 and d == 1:
             out.append((float(arr),))
+        # copies: the caller's arrays may change after the call, a table's may not
         elif arr.ndim == 1 and d == 1 and arr.shape[0] == n:
-            out.append((np.ascontiguousarray(arr),))
+            out.append((np.array(arr),))
         elif arr.ndim == 2 and arr.shape == (n, d):
-            out.append(tuple(np.ascontiguousarray(arr[:, i]) for i in range(d)))
+            out.append(tuple(np.array(arr[:, i]) for i in range(d)))
         else:
             shape = "(n,)" if d == 1 else f"(n, {d})"
             msg = (

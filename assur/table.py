@@ -25,6 +25,9 @@ from assur.plan import Plan
 
 __all__ = ["Table"]
 
+TOGETHER = 2048
+"""Rows up to which a table's first column read computes every column at once."""
+
 
 @dataclass(frozen=True)
 class Table:
@@ -43,28 +46,58 @@ class Table:
     given : ndarray (n, d)
         The driver positions as given (deg, or m for a prismatic driver).
     state : KinematicState
-        The links' motions.
+        The links' motions (a property).
     force_state : ForceState or None
-        Inertia loads, reactions and balancing loads (a force analysis only).
+        Inertia loads, reactions and balancing loads (a force analysis only; a
+        property).
     skipped : ndarray
         Driver positions left out (deg, or m), with ``skip_unassembled``.
+
+    Notes
+    -----
+    A table of the drivers' columns alone (``columns=["driver.torque"]``, say) keeps
+    no links' motions or reactions: ``state`` and ``force_state`` are solved again,
+    once, when first asked for (by a picture of the table, say), with the same
+    numbers.
     """
 
     plan: Plan
     schema: tuple[Column, ...]
     given: Array
-    state: KinematicState
-    force_state: ForceState | None = None
+    _kept: KinematicState
+    _kept_forces: ForceState | None = None
     skipped: Array = field(default_factory=lambda: np.zeros(0))
     _cache: dict[str, Array] = field(default_factory=dict, repr=False, compare=False)
     _index: dict[str, Column] = field(default_factory=dict, repr=False, compare=False)
     _states: dict[int, KinematicState] = field(
         default_factory=dict, repr=False, compare=False
     )
+    _again: Any = field(default=None, repr=False, compare=False)
+    """Solves the states the table did not keep: ``_again.solve()`` returns the
+    kinematic and the force state (see :func:`assur.analysis.forces`)."""
+    _whole: list[tuple[KinematicState, ForceState | None]] = field(
+        default_factory=list, repr=False, compare=False
+    )
 
     def __post_init__(self) -> None:
         if not self._index:
             self._index.update((c.name, c) for c in self.schema)
+
+    @property
+    def state(self) -> KinematicState:
+        """The links' motions (see :class:`~assur._kinematics.KinematicState`)."""
+        return self._kept if self._again is None else self._complete()[0]
+
+    @property
+    def force_state(self) -> ForceState | None:
+        """Inertia loads, reactions and balancing loads (a force analysis only)."""
+        return self._kept_forces if self._again is None else self._complete()[1]
+
+    def _complete(self) -> tuple[KinematicState, ForceState | None]:
+        """Return the states the table did not keep, solved again on first use."""
+        if not self._whole:
+            self._whole.append(self._again.solve())
+        return self._whole[0]
 
     @property
     def mechanism(self) -> Mechanism:
@@ -104,8 +137,13 @@ class Table:
         if found is not None:
             return found
         column = self.column(name)
-        for key, values in evaluate(self, column).items():
-            self._keep(key, values)
+        if not self._cache and len(self) <= TOGETHER:
+            # a short table costs little more whole than one column: its columns are
+            # computed in one pass, not each with its own overhead
+            self._compute(self.schema)
+        else:
+            for key, values in evaluate(self, column).items():
+                self._keep(key, values)
         return self._cache[name]
 
     def __len__(self) -> int:

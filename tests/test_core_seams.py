@@ -10,6 +10,7 @@ points.
 from __future__ import annotations
 
 import pickle
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -18,11 +19,13 @@ import pytest
 import assur
 from assur import _kinematics, kinetostatics
 from assur._loads import compile_loads
+from assur._vec import leaves
 from assur.groups import FAMILIES
 from assur.plan import compile_plan, plan_of
 
 from . import oracle
 from .groups import dense_rrr
+from .test_kinematics import long_crank_four_bar
 from .test_kinetostatics import (
     assert_balancing_check,
     assert_links_in_equilibrium,
@@ -297,6 +300,59 @@ def test_columns_computes_only_what_is_asked():
         assur.kinematics(mech, at, columns=["driver.torque"])
     with pytest.raises(assur.UsageError, match=r"did you mean 'driver\.torque'"):
         assur.forces(mech, at, columns=["driver.torqe"])
+
+
+def assert_same_states(table, reference):
+    """The states of ``table`` are those of ``reference``, to the last bit."""
+    for got, want in (
+        (
+            (table.state.motion, table.state.slide),
+            (reference.state.motion, reference.state.slide),
+        ),
+        (table.force_state.fields(), reference.force_state.fields()),
+    ):
+        got, want = leaves(got), leaves(want)
+        assert len(got) == len(want)
+        for a, b in zip(got, want, strict=True):
+            np.testing.assert_array_equal(a, b)
+
+
+def test_a_table_of_the_drivers_columns_keeps_no_motions_and_solves_them_again():
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    at = np.arange(0.0, 360.0, 7.5)
+    omega = np.linspace(10.0, 20.0, at.shape[0])
+    full = assur.forces(mech, at, omega=omega)
+    torque = assur.forces(mech, at, omega=omega, columns=["driver.torque"])
+    # nothing of the links is kept: the torque is all the table holds
+    assert torque._kept.motion == ()
+    assert torque._kept.slide == {}
+    assert torque._kept_forces.reactions == {}
+    assert torque._kept_forces.inertia == ()
+    np.testing.assert_array_equal(torque["driver.torque"], full["driver.torque"])
+    omega[:] = 0.0  # the caller's array changes after the call: the table's may not
+    assert_same_states(torque, full)
+    whole = full.summary()
+    assert {k: whole[k] for k in torque.summary()} == torque.summary()
+    assert "driver.torque.max" in torque.summary()
+    assert torque.state is torque.state  # solved again once
+
+
+def test_a_table_of_the_drivers_columns_with_skipped_positions():
+    mech, angles, ok = long_crank_four_bar()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)
+        full = assur.forces(mech, angles, skip_unassembled=True)
+        torque = assur.forces(
+            mech, angles, skip_unassembled=True, columns=["driver.torque"]
+        )
+    np.testing.assert_array_equal(torque.skipped, full.skipped)
+    np.testing.assert_array_equal(torque["driver.torque"], full["driver.torque"])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # solving again repeats no warning
+        assert_same_states(torque, full)
+    angle = assur.kinematics(mech, angles[ok], columns=["angle"])
+    assert angle._kept.motion == ()
+    np.testing.assert_array_equal(angle.state.motion[2][0], full.state.motion[2][0])
 
 
 # ------------------------------------------------------------------------------------
