@@ -40,6 +40,9 @@ TRANSLATION = 1e-12
 """A link whose angular speed times the mechanism's size is below this fraction of
 its origin's speed translates: its instant centre is at infinity (NaN)."""
 CHUNKED = ("point", "offset", "check", "residual")
+SHORT = 2048
+"""Rows up to which reading a column computes its family, and reading a column that
+needs rebuilt motions every such column up to accelerations, in one pass."""
 """Families computed slice by slice from rebuilt motions."""
 
 Evaluator = Callable[["Table", list[Column]], dict[str, Array]]
@@ -63,6 +66,9 @@ def _company(table: Table, column: Column) -> list[Column]:
     loads too; jerks need the state extended first.
     """
     top = table.state.top
+    if column.level <= top and len(table) <= SHORT:
+        # one pass of a short table costs about what each of its steps does alone
+        return [c for c in table.schema if c.family in CHUNKED and c.level <= top]
     if column.family in ("check", "residual"):
         group = {"check", "residual"}
         return [c for c in table.schema if c.family in group]

@@ -42,6 +42,9 @@ Advance = Callable[[int], None]
 
 def table_columns(table: Any) -> list[Array]:
     """Return the arrays of every column of ``table``, in order."""
+    arrays = getattr(table, "arrays", None)
+    if arrays is not None:  # a Table computes the columns not read yet together
+        return arrays()  # type: ignore[no-any-return]
     return [table[name] for name in table.columns]
 
 

@@ -391,7 +391,7 @@ def _table(factory: Factory, p: dict[str, float], angles: Array) -> dict[str, Ar
             table = forces(factory(**p), angles)
         except (AssurError, ValueError, ArithmeticError):
             return {}
-    return {name: table[name] for name in table.columns}
+    return dict(zip(table.columns, table.arrays(), strict=True))
 
 
 def _names(tables: list[dict[str, Array] | None]) -> list[str]:

@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._evaluate import evaluate, materialize
+from assur._evaluate import CHUNKED, SHORT, evaluate, materialize
 from assur._kinematics import KinematicState
 from assur._text import suggest
 from assur._vec import Array
@@ -24,9 +24,6 @@ from assur.model import Mechanism
 from assur.plan import Plan
 
 __all__ = ["Table"]
-
-TOGETHER = 2048
-"""Rows up to which a table's first column read computes every column at once."""
 
 
 @dataclass(frozen=True)
@@ -137,10 +134,14 @@ class Table:
         if found is not None:
             return found
         column = self.column(name)
-        if not self._cache and len(self) <= TOGETHER:
-            # a short table costs little more whole than one column: its columns are
-            # computed in one pass, not each with its own overhead
-            self._compute(self.schema)
+        if len(self) <= SHORT and column.family not in CHUNKED:
+            # in a short table a family's columns (every link's instant centre, say)
+            # cost little more together than one alone: they are computed at once
+            self._compute(
+                c
+                for c in self.schema
+                if c.family == column.family and c.name not in self._cache
+            )
         else:
             for key, values in evaluate(self, column).items():
                 self._keep(key, values)
@@ -152,12 +153,19 @@ class Table:
     def __contains__(self, name: object) -> bool:
         return name in self._index
 
+    def arrays(self) -> list[Array]:
+        """Return every column, in order; those not read yet are computed together.
+
+        One pass serves them all: cheaper than reading each by name.
+        """
+        self._compute(c for c in self.schema if c.name not in self._cache)
+        return [self._cache[name] for name in self._index]
+
     def to_array(self) -> Array:
         """Return the table as one array (rows, columns)."""
-        self._compute(c for c in self.schema if c.name not in self._cache)
         out = np.empty((len(self), len(self._index)))
-        for j, name in enumerate(self._index):
-            out[:, j] = self._cache[name]
+        for j, values in enumerate(self.arrays()):
+            out[:, j] = values
         return out
 
     def _compute(self, columns: Iterable[Column]) -> None:
@@ -239,7 +247,7 @@ class Table:
         """Return a pandas DataFrame (pandas must be installed)."""
         import pandas as pd
 
-        return pd.DataFrame({c: self[c] for c in self.columns})
+        return pd.DataFrame(dict(zip(self.columns, self.arrays(), strict=True)))
 
     def plot(self, angle: float | None = None, **kwargs: Any) -> Any:
         """Draw the mechanism at a driver position (see :func:`assur.plotting.draw`)."""

@@ -18,6 +18,7 @@ import pytest
 
 import assur
 from assur import _kinematics, kinetostatics
+from assur._evaluate import SHORT
 from assur._loads import compile_loads
 from assur._vec import leaves
 from assur.groups import FAMILIES
@@ -300,6 +301,23 @@ def test_columns_computes_only_what_is_asked():
         assur.kinematics(mech, at, columns=["driver.torque"])
     with pytest.raises(assur.UsageError, match=r"did you mean 'driver\.torque'"):
         assur.forces(mech, at, columns=["driver.torqe"])
+
+
+def test_a_short_table_gives_the_numbers_of_a_long_one(example):
+    # a short table computes a column's family (or every column needing the links'
+    # motions) at once; a long one each column alone, slice by slice
+    at = positions(example, 20)
+    run = assur.forces if forced(example) else assur.kinematics
+    short = run(example, at)
+    long = run(example, np.tile(at, (SHORT // len(at) + 1,) + (1,) * (at.ndim - 1)))
+    assert len(short) <= SHORT < len(long)
+    for name in short.columns:
+        np.testing.assert_array_equal(
+            long[name][: len(short)], short[name], err_msg=name
+        )
+    arrays = run(example, at).arrays()
+    for name, values in zip(short.columns, arrays, strict=True):
+        np.testing.assert_array_equal(values, short[name], err_msg=name)
 
 
 def assert_same_states(table, reference):
