@@ -111,7 +111,11 @@ ROWS = {
 
 
 def run_times(
-    fns: dict, repeats: int, warmup: bool = True, interleave: bool = True
+    fns: dict,
+    repeats: int,
+    warmup: bool = True,
+    interleave: bool = True,
+    settle: bool = False,
 ) -> dict:
     """Wall times (s) of every ``fns[key]()`` over ``repeats`` runs.
 
@@ -121,6 +125,12 @@ def run_times(
     user calling the same function again). The garbage collector is emptied once
     before, not between runs: a collection evicts the caches (about 0.2 ms more on
     a 360-position sweep).
+
+    With ``settle`` every timed run follows an untimed run of the same function. At
+    10^5 positions and more a run's time otherwise depends on which function ran
+    before it: memory the allocator handed back to the system is mapped again, page
+    by page, by the next one that asks for it (seen here: the hand-written batch of
+    10^6 positions took 0.38 s after one function and 0.7 to 1.6 s after another).
     """
     gc.collect()
     times: dict = {key: [] for key in fns}
@@ -133,6 +143,8 @@ def run_times(
             fn()
     for _ in range(repeats):
         for key, fn in fns.items():
+            if settle:
+                fn()
             t0 = time.perf_counter()
             result = fn()
             times[key].append(time.perf_counter() - t0)
@@ -376,7 +388,13 @@ def run(quick: bool) -> dict:
             fns["forces_array", name] = lambda m=m, d=deg: assur.forces(m, d).to_array()
             fns["forces_torque", name] = lambda m=m, d=deg: torque_only(m, d)
             fns["hand_forces", name] = lambda fn=fn, d=deg: fn(d)
-        timed = run_times(fns, repeats[n], warmup=n <= 10**4, interleave=n >= 10**4)
+        timed = run_times(
+            fns,
+            repeats[n],
+            warmup=n <= 10**4,
+            interleave=n >= 10**4,
+            settle=n >= 10**5,
+        )
         for (where, name), times in timed.items():
             res[where].setdefault(name, {})[n] = entry(n, times)
         res["load_average_during"][str(n)] = _load()
