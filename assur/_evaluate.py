@@ -131,7 +131,9 @@ def _angle(table: Table, columns: list[Column]) -> dict[str, Array]:
     angle = np.array([full(table.state.rotation(b, 0), n) for b in bodies])
     angle += np.array([plan.angle0[b] for b in bodies])[:, None]
     driven = [any(d.body == b for d in plan.drivers) for b in bodies]
-    if n and not all(driven):
+    if n and not any(driven):
+        angle = _continuous(angle)
+    elif n and not all(driven):
         rows = np.flatnonzero(np.logical_not(driven))
         angle[rows] = _continuous(angle[rows])
     angle *= 180.0 / math.pi
@@ -280,7 +282,10 @@ def _magnitude(table: Table, columns: list[Column]) -> dict[str, Array]:
             varying.append(c)
         else:
             out[c.name] = full(np.hypot(full(fx, 1), full(fy, 1))[0], n)
-    if varying:
+    if len(varying) == 1:  # one joint: its own components, not copies
+        fx, fy, _ = reactions[varying[0].owner]
+        out[varying[0].name] = norm(full(fx, n), full(fy, n))
+    elif varying:
         fx = np.array([full(reactions[c.owner][0], n) for c in varying])
         fy = np.array([full(reactions[c.owner][1], n) for c in varying])
         out.update(zip((c.name for c in varying), norm(fx, fy), strict=True))
