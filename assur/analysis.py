@@ -93,7 +93,9 @@ def kinematics(
         (rad/s^2; m/s^2) at every position, replacing the file's constants: a number,
         or one value per position (shape (n,); (n, drivers) with several drivers).
     columns : sequence of str, optional
-        Compute only these columns (and ``angle``).
+        Compute only these columns (and ``angle``). A table of the drivers' columns
+        alone (``["driver.torque"]``, say) keeps none of the links' motions or
+        reactions; they are solved again if asked for (see :class:`Table`).
     progress : bool or callable, optional
         Show a progress bar on standard error (True), or call ``progress(done,
         total)`` as slices of positions are solved.
