@@ -40,10 +40,10 @@ TRANSLATION = 1e-12
 """A link whose angular speed times the mechanism's size is below this fraction of
 its origin's speed translates: its instant centre is at infinity (NaN)."""
 CHUNKED = ("point", "offset", "check", "residual")
+"""Families computed slice by slice from rebuilt motions."""
 SHORT = 2048
 """Rows up to which reading a column computes its family, and reading a column that
 needs rebuilt motions every such column up to accelerations, in one pass."""
-"""Families computed slice by slice from rebuilt motions."""
 
 Evaluator = Callable[["Table", list[Column]], dict[str, Array]]
 
@@ -282,12 +282,11 @@ def _magnitude(table: Table, columns: list[Column]) -> dict[str, Array]:
             varying.append(c)
         else:
             out[c.name] = full(np.hypot(full(fx, 1), full(fy, 1))[0], n)
-    if len(varying) == 1:  # one joint: its own components, not copies
-        fx, fy, _ = reactions[varying[0].owner]
-        out[varying[0].name] = norm(full(fx, n), full(fy, n))
-    elif varying:
-        fx = np.array([full(reactions[c.owner][0], n) for c in varying])
-        fy = np.array([full(reactions[c.owner][1], n) for c in varying])
+    if varying:
+        # one row per joint (a single joint's components are seen as one, not copied)
+        stack = np.array if len(varying) > 1 else _one_row
+        fx = stack([full(reactions[c.owner][0], n) for c in varying])
+        fy = stack([full(reactions[c.owner][1], n) for c in varying])
         out.update(zip((c.name for c in varying), norm(fx, fy), strict=True))
     return out
 

@@ -196,9 +196,8 @@ def _sweep(
     if not keep:
         again = Again(plan, given, drive, rates, chosen.forces, passed, ok)
     skipped = given[:0] if ok is None else given[~ok]
+    state, force_state = _kept_rows(state, force_state, ok)
     if ok is not None:
-        state = state.rows(ok)
-        force_state = force_state.rows(ok) if force_state is not None else None
         given = given[ok]
     return Table(
         plan,
@@ -279,6 +278,15 @@ def _states(
     return state, None if fields is None else _kst.ForceState(*fields)
 
 
+def _kept_rows(
+    state: _kin.KinematicState, forces: _kst.ForceState | None, ok: Mask | None
+) -> tuple[_kin.KinematicState, _kst.ForceState | None]:
+    """Return the states at the positions kept (``ok``; None keeps every one)."""
+    if ok is None:
+        return state, forces
+    return state.rows(ok), None if forces is None else forces.rows(ok)
+
+
 @dataclass(frozen=True)
 class Again:
     """What solves a sweep again, keeping every state: for a table that kept few.
@@ -313,10 +321,7 @@ class Again:
                 bar,
             )
         state, forces = _states(self.drive, self.rates, 2, tree)
-        if self.ok is not None:
-            state = state.rows(self.ok)
-            forces = forces.rows(self.ok) if forces is not None else None
-        return state, forces
+        return _kept_rows(state, forces, self.ok)
 
 
 def _unexplained(
