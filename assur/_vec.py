@@ -7,6 +7,7 @@ a sweep are nested tuples and dicts of such leaves, filled chunk by chunk.
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Iterable, Iterator
 from typing import Any
 
@@ -40,7 +41,19 @@ def full(value: Leaf, n: int) -> Array:
     """
     if is_array(value):
         return value  # type: ignore[no-any-return]
-    one = np.array((np.nan if value is None else float(value),))
+    return _constant(np.nan if value is None else float(value), n)
+
+
+@functools.lru_cache(maxsize=1024)
+def _constant(value: float, n: int) -> Array:
+    """Return ``value`` repeated ``n`` times, read-only; kept for reuse.
+
+    A table has tens of constant columns (the frame's, a crank's speed), mostly the
+    same few numbers: made once, each costs a lookup. Being read-only, one array can
+    serve every table. (NaN is not equal to itself: each NaN makes a new entry, up to
+    the cache's bound.)
+    """
+    one = np.array((value,))
     out: Array = np.ndarray((n,), np.float64, one, 0, (0,))
     out.flags.writeable = False
     return out

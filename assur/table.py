@@ -183,7 +183,7 @@ class Table:
         if key in self._index and key not in self._cache:
             if values.flags.writeable:
                 values = values.view()
-                values.flags.writeable = False
+                values.setflags(write=False)
             self._cache[key] = values
 
     def summary(self) -> dict[str, float]:
