@@ -87,6 +87,16 @@ def read_all(table):
     return table
 
 
+def sizing(table):
+    """Read what a motor and bearings are sized on: the driver's torque and every
+    joint's reaction magnitude (``J.F``); return ``table``."""
+    table[TORQUE[0]]
+    for column in table.schema:
+        if column.family == "magnitude":
+            table[column.name]
+    return table
+
+
 def torque_only(mech, deg, **kwargs):
     """``assur.forces`` of the driver's torque alone, the column read."""
     table = assur.forces(mech, deg, columns=TORQUE, **kwargs)
@@ -451,6 +461,8 @@ def interactive(mech, runs: int) -> dict:
             "kinematics": lambda: read_all(assur.kinematics(mech, deg)),
             "forces_call": lambda: assur.forces(mech, deg),
             "forces": lambda: read_all(assur.forces(mech, deg)),
+            "forces_array": lambda: assur.forces(mech, deg).to_array(),
+            "forces_sizing": lambda: sizing(assur.forces(mech, deg)),
             "forces_torque": lambda: torque_only(mech, deg),
             "hand_forces": lambda: ref.slider_crank_forces(deg),
         },
@@ -841,6 +853,8 @@ def report(res: dict) -> str:
         ("kinematics", "kinematics, every column read"),
         ("forces_call", "forces, call alone"),
         ("forces", "forces, every column read"),
+        ("forces_array", "forces, to_array()"),
+        ("forces_sizing", "forces, torque and joints' |F| read"),
         ("forces_torque", "forces, columns=['driver.torque']"),
         ("hand_forces", "hand-written numpy forces"),
     ):
