@@ -27,6 +27,12 @@ ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V", 6: "VI", 7: "VII", 8: "VIII
 ECHO_LIMIT = 60
 """Most characters of a value echoed back in a message."""
 ITEMS_SHOWN = 4
+NAMES_SHOWN = 12
+"""Most names listed by :func:`suggest`."""
+NAME_LIMIT = 30
+"""Most characters of one name listed by :func:`suggest`."""
+LISTING_LIMIT = 160
+"""Most characters of the names listed by :func:`suggest`, separators included."""
 """Most items of a list or keys of a table echoed back in a message."""
 
 
@@ -48,11 +54,20 @@ def suggest(name: str, known: Iterable[str], listing: bool = True) -> str:
     names = sorted(str(k) for k in known)
     close = difflib.get_close_matches(str(name), names, n=1)
     if close:
-        return f"; did you mean {close[0]!r}?"
+        return f"; did you mean {describe(close[0])}?"
     if not listing:
         return ""
-    shown = ", ".join(names[:12]) + (", ..." if len(names) > 12 else "")
-    return f" (known: {shown or 'none'})"
+    # a few names, each cut short: the message stays one readable line
+    shown: list[str] = []
+    width = 0
+    for k in names:
+        text = k if len(k) <= NAME_LIMIT else k[: NAME_LIMIT - 3] + "..."
+        width += len(text) + 2
+        if len(shown) == NAMES_SHOWN or width > LISTING_LIMIT:
+            shown.append("...")
+            break
+        shown.append(text)
+    return f" (known: {', '.join(shown) or 'none'})"
 
 
 def describe(value: object, limit: int = ECHO_LIMIT) -> str:

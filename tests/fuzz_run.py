@@ -277,7 +277,7 @@ def check_table(table: assur.Table, explained: list[str]) -> Outcome | None:
         if not bad.any():
             continue
         column = table.column(name)
-        bad &= ~_documented(column, values, scale, speed, force)
+        bad &= ~_documented(column, values, scale, speed, force, table.mechanism)
         if bad.any() and not _named(column.owner, explained):
             row = int(np.flatnonzero(bad)[0])
             return Outcome(
@@ -300,7 +300,12 @@ def _row_max(values: dict[str, Any], table: assur.Table, parts: tuple[str, ...])
 
 
 def _documented(
-    column: Any, values: dict[str, Any], scale: float, speed: Any, force: Any
+    column: Any,
+    values: dict[str, Any],
+    scale: float,
+    speed: Any,
+    force: Any,
+    mech: assur.Mechanism,
 ) -> Any:
     """Where a non-finite value of ``column`` is a documented NaN."""
     v = values[column.name]
@@ -312,10 +317,14 @@ def _documented(
     if column.family == "offset":
         # a prismatic pair's offset is M / N: NaN where the normal force N is zero,
         # or so small beside the couple M that the pair carries a pure couple
+        # N is the reaction's component normal to the slide line: with a friction
+        # coefficient mu the reaction is at most sqrt(1 + mu^2) times N
         f = values[f"{column.owner}.F"]
+        mu = {j.name: j.friction for j in mech.joints}[column.owner]
+        normal = f / math.sqrt(1.0 + mu * mu)
         m = np.abs(values[f"{column.owner}.M"])
-        none = f <= np.fmax(1e-9, 1e-6 * force)
-        couple = np.isfinite(m) & (m > 1e11 * scale * f)
+        none = normal <= np.fmax(1e-9, 1e-6 * force)
+        couple = np.isfinite(m) & (m > 1e11 * scale * normal)
         return np.isnan(v) & np.isfinite(f) & (none | couple)
     return np.zeros(v.shape, dtype=bool)
 

@@ -313,6 +313,21 @@ def test_a_very_long_name_is_cut_in_entries(tmp_path):
     assert len(got) < 120
 
 
+def test_long_names_are_cut_where_the_known_ones_are_listed(tmp_path):
+    # joints.guide names a link that does not exist; the links that do are listed
+    text = BASE.replace('links = ["ground", "slider"]', 'links = ["ground", "piston"]')
+    for i, link in enumerate(("crank", "rod", "slider")):
+        long = f"{link}{i}" * 40
+        text = text.replace(f"[links.{link}]", f"[links.{long}]")
+        text = text.replace(f'"{link}"', f'"{long}"')
+    got = message(write(tmp_path, "m.toml", text))
+    assert "unknown link 'piston' (known: crank0crank0" in got
+    assert "crank0crank0crank0crank0cra..., ground, rod1" in got
+    assert len(got) < 300
+    # a close match is cut as well
+    assert len(assur._text.suggest("crank0" * 39, ["crank0" * 40])) < 80
+
+
 # --- the model's refusals -------------------------------------------------------
 
 

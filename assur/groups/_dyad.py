@@ -222,10 +222,12 @@ def conditioning(plan: DyadSolver, jac: Jacobian) -> Any:
     RRR dyad the measure is the sine of the transmission angle.
     """
     j00, j01, j10, j11 = jac
-    if plan.mid.kind == "P":
-        j10, j11 = j10 / plan.scale, j11 / plan.scale
-    det = j00 * j11 - j01 * j10
-    with np.errstate(divide="ignore", invalid="ignore"):
+    # a pose that does not close (parallel slide lines, say) has infinite entries:
+    # its conditioning is NaN, below every threshold, and no warning is due
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        if plan.mid.kind == "P":
+            j10, j11 = j10 / plan.scale, j11 / plan.scale
+        det = j00 * j11 - j01 * j10
         return np.abs(det) / np.sqrt((j00 * j00 + j10 * j10) * (j01 * j01 + j11 * j11))
 
 
