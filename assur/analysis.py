@@ -334,10 +334,12 @@ def _unexplained(
     arrays = _arrays(tree, top)
     if not arrays:
         return
-    # one sum of them all is finite exactly when each of them is
-    total = arrays[0] + arrays[1] if len(arrays) > 1 else arrays[0].copy()
-    for x in arrays[2:]:
-        total += x
+    # one sum of them all is finite when each of them is (an overflow of the sum,
+    # or inf - inf, sends the search below, which looks at each)
+    with np.errstate(invalid="ignore", over="ignore"):
+        total = arrays[0] + arrays[1] if len(arrays) > 1 else arrays[0].copy()
+        for x in arrays[2:]:
+            total += x
     if np.isfinite(total).all():
         return
     explained = np.zeros(given.shape[0], dtype=bool)
