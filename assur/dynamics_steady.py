@@ -116,23 +116,48 @@ def steady_state(model: Reduced, omega: float, flywheel: float = 0.0) -> Steady:
 def check_inertia(model: Reduced, inertia: Array, flywheel: float) -> None:
     """Refuse a reduced inertia that vanishes (a turn without mass in motion).
 
-    ``inertia`` is ``J`` on the grid of ``model``, flywheel included.
+    ``inertia`` is ``J`` on the grid of ``model``, flywheel included. Zero is below
+    :data:`NO_INERTIA` of the largest value, or below the fourth power of the grid's
+    step (rad) times it, which is what the minimum between grid points is known to.
 
     Raises
     ------
     ModelError
         Naming the crank angle where it vanishes.
     """
-    least = int(np.argmin(inertia))
-    if inertia[least] > NO_INERTIA * float(np.max(np.abs(inertia))):
+    least, where = _least(model, inertia)
+    # the parabola misses the curve by about the fourth power of the grid's step
+    # (relative): a smaller minimum cannot be told from zero
+    step = 2.0 * math.pi / inertia.shape[0]
+    if least > max(NO_INERTIA, step**4) * float(np.max(np.abs(inertia))):
         return
-    where = math.degrees(float(model.angle[least]))
+    where = math.degrees(where)
     msg = (
         f"dynamics: the reduced inertia is zero at crank angle {where:.6g} deg (no "
         f"mass moves there, flywheel {flywheel:g} kg m^2); expected a flywheel "
         "(flywheel > 0)"
     )
     raise ModelError(msg)
+
+
+def _least(model: Reduced, inertia: Array) -> tuple[float, float]:
+    """Return the smallest reduced inertia over the turn and where it is (rad).
+
+    ``J`` is a sum of squares of velocity ratios: where every moving mass comes to
+    rest at once (the yoke of a Scotch yoke with a massless crank), it touches zero
+    between grid points as a parabola does, and the grid's smallest value can be a
+    millionth of the largest. The parabola through the grid's smallest value and its
+    two neighbours (the grid closes on itself over the turn) gives the minimum.
+    """
+    n = inertia.shape[0]
+    i = int(np.argmin(inertia))
+    before, here, after = inertia[i - 1], inertia[i], inertia[(i + 1) % n]
+    curve = before - 2.0 * here + after
+    if not curve > 0.0:
+        return float(here), float(model.angle[i])
+    shift = 0.5 * (before - after) / curve  # in grid steps, within half a step
+    low = here - 0.25 * (before - after) * shift
+    return float(low), float(model.angle[i]) + shift * 2.0 * math.pi / n
 
 
 def _speeds(model: Reduced, inertia: Any, energy: float, phi: Any = None) -> Any:

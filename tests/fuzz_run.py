@@ -6,6 +6,10 @@ back to the same mechanism, finds its structure and runs ``assur.forces`` (or
 reference pose, +-30 deg and a full turn in 45 deg steps (small slides, in fractions of
 the mechanism's size, for a prismatic driver). When a group fails at one of them, the
 same positions run again with ``skip_unassembled`` and that table is checked too.
+A complete table goes on as a user's would: its summary (a force table), the
+explanatory note at its first position and, for one force table in
+:data:`DYNAMICS_EVERY`, the dynamic model (:func:`assur.dynamics`), each ending in its
+answer or an AssurError with a one-line message.
 
 The :class:`Outcome` is a table (every column finite except the documented NaN,
 ``driver.torque`` agreeing with ``driver.torque_check``), an AssurError with a
@@ -26,6 +30,7 @@ import threading
 import time
 import traceback
 import warnings
+import zlib
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -43,6 +48,11 @@ TIME_LIMIT = 10.0
 """Seconds a case may run before it counts as a hang."""
 MAX_MESSAGE = 400
 """Longest acceptable error message, characters."""
+DYNAMICS_ANGLES = tuple(range(0, 360, 30))
+"""Crank angles (deg) of the rows of the dynamic model run on a mutant."""
+DYNAMICS_EVERY = 8
+"""One mutant in this many (chosen by a checksum of its text) runs the dynamic model,
+which samples a whole turn on a grid of a thousand positions or more."""
 REVOLUTE_STEPS = (0.0, 30.0, -30.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0)
 """Positions of a revolute driver, deg from the reference pose."""
 PRISMATIC_STEPS = (0.0, 0.01, -0.01, 0.02, -0.02, 0.05, -0.05, 0.1, -0.1, 0.002)
@@ -154,7 +164,39 @@ def _pipeline(text: str, stage: list[str], caught: list[Any]) -> Outcome:
     problem = check_table(table, _assur_warnings(caught))
     if problem is not None:
         return problem
-    return Outcome("table") if first is None else _assur_error(first)
+    if first is not None:
+        return _assur_error(first)
+    return _further(mech, table, stage) or Outcome("table")
+
+
+def _further(mech: assur.Mechanism, table: assur.Table, stage: list[str]) -> Any:
+    """Run what users run next on a table; return the failure, or None.
+
+    Its summary, the explanatory note at its first position and the dynamic model.
+    A refusal (an AssurError) is an answer when its message is one short line.
+    """
+    steps: list[tuple[str, Any]] = []
+    if table.force_state is not None:
+        steps.append(("summary", table.summary))
+    first = table.given[0].tolist()
+    steps.append(("explain", lambda: str(assur.explain(mech, first))))
+    text = assur.dumps(mech)
+    if (
+        table.force_state is not None
+        and zlib.crc32(text.encode()) % DYNAMICS_EVERY == 0
+    ):
+        steps.append(("dynamics", lambda: assur.dynamics(mech, DYNAMICS_ANGLES)))
+    for name, step in steps:
+        stage[0] = name
+        try:
+            step()
+        except assur.AssurError as err:
+            outcome = _assur_error(err)
+            if outcome.failed:
+                return Outcome(
+                    outcome.label, f"{outcome.signature} in {name}", outcome.detail
+                )
+    return None
 
 
 def positions(mech: assur.Mechanism) -> Any:

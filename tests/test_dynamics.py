@@ -23,6 +23,7 @@ import dataclasses
 import functools
 import itertools
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -404,6 +405,28 @@ def test_no_mass_in_motion():
         assur.dynamics(engine(), [0.0])
 
 
+def test_no_mass_in_motion_between_grid_points():
+    # a Scotch yoke whose yoke alone has a mass: J = m (r sin(phi))^2 touches zero
+    # at the crank's dead centres, 0 and 180 deg, which no grid point hits
+    yoke = example("scotch_yoke")
+    links = tuple(
+        link
+        if link.name == "yoke"
+        else dataclasses.replace(link, mass=0.0, inertia=0.0)
+        for link in yoke.links
+    )
+    still = dataclasses.replace(yoke, links=links, loads=())
+    with pytest.raises(
+        assur.ModelError,
+        match=r"reduced inertia is zero at crank angle (180|360|0) deg",
+    ):
+        assur.dynamics(still, [0.0, 90.0])
+    # a flywheel keeps it turning: finite speeds everywhere, at 0 and 180 deg too
+    table = assur.dynamics(still, [0.0, 90.0, 180.0], flywheel=1e-3)
+    assert np.isfinite(table["driver.omega"]).all()
+    assert np.isfinite(table["driver.epsilon"]).all()
+
+
 def test_a_crank_that_cannot_turn_round():
     rocker = assur.catalog.four_bar(crank=0.09, coupler=0.06, rocker=0.08)
     with pytest.raises(
@@ -412,3 +435,45 @@ def test_a_crank_that_cannot_turn_round():
         r"\(coupler, rocker\): cannot be assembled",
     ):
         assur.dynamics(rocker, [60.0])
+
+
+def test_the_grid_names_each_trouble_once_from_its_finest_grid():
+    from assur.dynamics_reduced import TROUBLE_TEXT, _pass_on
+
+    near = "group RRP (rod, ram): near a dead centre at driver positions "
+    grids = [near + f"89.{k} deg to 90.{9 - k} deg" for k in range(5)]
+    with pytest.warns(assur.AssurWarning) as caught:
+        _pass_on(grids, 65536)
+    (message,) = (str(w.message) for w in caught)
+    assert message == (
+        "dynamics, on its internal grid of up to 65536 positions a turn: " + grids[-1]
+    )
+    many = [
+        f"group RRR (l{k}, r{k}): {'x' * 80} at driver positions 1 deg"
+        for k in range(9)
+    ]
+    with pytest.warns(assur.AssurWarning) as caught:
+        _pass_on(many, 2048)
+    (message,) = (str(w.message) for w in caught)
+    assert "group RRR (l0, r0)" in message
+    assert message.endswith(" more")
+    assert len(message) < TROUBLE_TEXT + 120
+
+
+def test_a_torque_that_is_rounding_noise_stops_the_grid():
+    # 1e15 N at the rocker's fixed pivot F does no work, but the rounding of F's
+    # speed (1e-17 m/s) leaves a reduced torque of noise about 1e-2 N m: refining the
+    # grid cannot settle it, and stops with a warning instead of at 65536 positions
+    from assur.dynamics_reduced import GRID_MOST, reduce
+
+    mech = example("class3")
+    loud = dataclasses.replace(
+        mech, loads=(*mech.loads, Load("left_rocker", at="F", force=(0.0, 1e15)))
+    )
+    with pytest.warns(assur.AssurWarning, match="reduced torque is not smooth"):
+        model = reduce(loud)
+    assert model.angle.shape[0] < GRID_MOST
+    assert 1e-5 < model.error < 1e-2  # the noise, as the model estimates it
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # the quiet mechanism settles as before
+        assert reduce(mech).angle.shape[0] == 2048
