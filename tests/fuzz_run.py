@@ -117,7 +117,9 @@ def run_case(text: str, time_limit: float | None = TIME_LIMIT) -> Outcome:
                 )
     except Hang as err:
         where, line = _location(err.__traceback__)
-        return Outcome("failure", f"hang in {stage[0]} at {where}", line)
+        # where the timer struck is chance: the stage names the hang, the frame is
+        # the detail
+        return Outcome("failure", f"hang in {stage[0]}", f"at {where}: {line}")
     return _judge_warnings(outcome, caught)
 
 

@@ -48,7 +48,14 @@ class Known:
     reproducer: str
 
 
-KNOWN: dict[str, Known] = {}
+KNOWN: dict[str, Known] = {
+    "hang in dynamics": Known(
+        "the dynamic model of a class III mechanism with a load table samples 65536 "
+        "positions a turn (the table's corners keep the grid from converging), "
+        "about 23 s",
+        "dynamics_class3_load_table.toml",
+    ),
+}
 """Failure signatures the fuzzing tolerates for now; meant to shrink to empty."""
 
 
