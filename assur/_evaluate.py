@@ -195,10 +195,8 @@ def _ic(table: Table, columns: list[Column]) -> dict[str, Array]:
     for start in range(0, n, CHUNK):
         rows = slice(start, min(start + CHUNK, n))
         size = rows.stop - start
-        # one row per link (a single link's leaves are seen as one row, not copied)
-        stack = np.array if len(moving) > 1 else _one_row
         part = [
-            stack([v[rows] if is_array(v) else full(v, size) for v in quantity])
+            _stacked([v[rows] if is_array(v) else full(v, size) for v in quantity])
             for quantity in zip(*(leaves for _, leaves in moving), strict=True)
         ]
         _centre(plan, part, x[:, rows], y[:, rows])
@@ -207,9 +205,12 @@ def _ic(table: Table, columns: list[Column]) -> dict[str, Array]:
     return out
 
 
-def _one_row(arrays: list[Array]) -> Array:
-    """Return the only array of ``arrays`` seen as a row of a 2-D array (no copy)."""
-    return arrays[0][None]
+def _stacked(arrays: list[Array]) -> Array:
+    """Return ``arrays`` as the rows of one 2-D array.
+
+    A single array is seen as one row, not copied.
+    """
+    return arrays[0][None] if len(arrays) == 1 else np.array(arrays)
 
 
 def _fixed_centre(plan: Any, leaves: list[Any]) -> tuple[float, float]:
@@ -283,10 +284,8 @@ def _magnitude(table: Table, columns: list[Column]) -> dict[str, Array]:
         else:
             out[c.name] = full(np.hypot(full(fx, 1), full(fy, 1))[0], n)
     if varying:
-        # one row per joint (a single joint's components are seen as one, not copied)
-        stack = np.array if len(varying) > 1 else _one_row
-        fx = stack([full(reactions[c.owner][0], n) for c in varying])
-        fy = stack([full(reactions[c.owner][1], n) for c in varying])
+        fx = _stacked([full(reactions[c.owner][0], n) for c in varying])
+        fy = _stacked([full(reactions[c.owner][1], n) for c in varying])
         out.update(zip((c.name for c in varying), norm(fx, fy), strict=True))
     return out
 

@@ -15,10 +15,12 @@ from collections.abc import Iterable, Mapping, Sequence
 __all__ = [
     "ROMAN",
     "describe",
+    "fitting",
     "listing",
     "position_text",
     "position_title",
     "roman",
+    "shortened",
     "suggest",
 ]
 
@@ -27,13 +29,13 @@ ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V", 6: "VI", 7: "VII", 8: "VIII
 ECHO_LIMIT = 60
 """Most characters of a value echoed back in a message."""
 ITEMS_SHOWN = 4
+"""Most items of a list or keys of a table echoed back in a message."""
 NAMES_SHOWN = 12
 """Most names listed by :func:`suggest`."""
 NAME_LIMIT = 30
 """Most characters of one name listed by :func:`suggest`."""
 LISTING_LIMIT = 160
 """Most characters of the names listed by :func:`suggest`, separators included."""
-"""Most items of a list or keys of a table echoed back in a message."""
 
 
 def roman(number: int) -> str:
@@ -58,16 +60,34 @@ def suggest(name: str, known: Iterable[str], listing: bool = True) -> str:
     if not listing:
         return ""
     # a few names, each cut short: the message stays one readable line
-    shown: list[str] = []
-    width = 0
-    for k in names:
-        text = k if len(k) <= NAME_LIMIT else k[: NAME_LIMIT - 3] + "..."
-        width += len(text) + 2
-        if len(shown) == NAMES_SHOWN or width > LISTING_LIMIT:
-            shown.append("...")
-            break
-        shown.append(text)
+    shown = [shortened(k, NAME_LIMIT) for k in names[:NAMES_SHOWN]]
+    shown = shown[: fitting(shown, LISTING_LIMIT)]
+    if len(shown) < len(names):
+        shown.append("...")
     return f" (known: {', '.join(shown) or 'none'})"
+
+
+def shortened(text: str, limit: int) -> str:
+    """Return ``text`` cut to ``limit`` characters, ``...`` marking a cut."""
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def fitting(items: Sequence[str], width: int) -> int:
+    """Return how many of the first ``items`` fit in ``width`` characters.
+
+    Counted as joined by a two-character separator (``", "``, ``"; "``).
+
+    Examples
+    --------
+    >>> fitting(["abc", "de", "fgh"], 9)
+    2
+    """
+    used = -2
+    for count, item in enumerate(items):
+        used += len(item) + 2
+        if used > width:
+            return count
+    return len(items)
 
 
 def describe(value: object, limit: int = ECHO_LIMIT) -> str:
@@ -83,8 +103,7 @@ def describe(value: object, limit: int = ECHO_LIMIT) -> str:
     >>> describe(datetime.date(2020, 1, 1))
     'the date 2020-01-01'
     """
-    text = _describe(value, limit)
-    return text if len(text) <= limit else text[: limit - 3] + "..."
+    return shortened(_describe(value, limit), limit)
 
 
 def _describe(value: object, limit: int) -> str:

@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from assur._loads import compile_loads
-from assur._text import describe
+from assur._text import describe, fitting
 from assur._vec import Array
 from assur.analysis import forces, kinematics
 from assur.errors import (
@@ -245,8 +245,8 @@ def _reduce(mechanism: Mechanism) -> tuple[Reduced, list[str]]:
             np.ravel(np.column_stack(p)) for p in zip(values, middle, strict=True)
         )
         finer = _model(start, values)
-        done, error = _converged(model, finer, middle)
-        misses.append(_typical_miss(model, finer, middle))
+        done, error, miss = _converged(model, finer, middle)
+        misses.append(miss)
         model, count, caught = replace(finer, error=error), 2 * count, caught + more
         if done:
             break
@@ -254,20 +254,6 @@ def _reduce(mechanism: Mechanism) -> tuple[Reduced, list[str]]:
             caught.append(_noise_message(misses[-1], error))
             break
     return model, caught
-
-
-def _typical_miss(coarse: Reduced, fine: Reduced, middle: tuple[Array, ...]) -> float:
-    """Return the median miss of ``M``'s interpolant at the new grid points.
-
-    Relative to ``M``'s largest magnitude. A step or a kink of a load misses at a
-    few points only; noise at every one.
-    """
-    want = middle[2]
-    size = float(np.max(np.abs(want)))
-    if not size > 0.0:
-        return 0.0
-    got = coarse.torque_at(fine.angle[1::2])
-    return float(np.median(np.abs(got - want))) / size
 
 
 def _noisy(misses: list[float]) -> bool:
@@ -349,22 +335,28 @@ class _Shifted:
 
 def _converged(
     coarse: Reduced, fine: Reduced, middle: tuple[Array, ...]
-) -> tuple[bool, float]:
+) -> tuple[bool, float, float]:
     """Whether the finer grid adds nothing (same work, interpolants that held).
 
-    Also the relative change of the work, the estimate of its error.
+    Also the relative change of the work, the estimate of its error, and the typical
+    miss of ``M``'s interpolant at the new points: the median, relative to ``M``'s
+    largest magnitude (a step or a kink of a load misses at a few points only,
+    noise at every one).
     """
     scale = fine.scale
     gap = float(np.max(np.abs(fine.work[::2] - coarse.work)))
     ok = gap <= GRID_RTOL * scale
     mids = fine.angle[1::2]
+    misses = []
     for got, want in (
         (coarse.inertia_at(mids), middle[0]),
         (coarse.torque_at(mids), middle[2]),
     ):
         size = float(np.max(np.abs(want)))
-        ok = ok and float(np.max(np.abs(got - want))) <= BETWEEN_RTOL * size
-    return bool(ok), (gap / scale if scale > 0 else 0.0)
+        miss = np.abs(got - want)
+        ok = ok and float(np.max(miss)) <= BETWEEN_RTOL * size
+        misses.append(float(np.median(miss)) / size if size > 0.0 else 0.0)
+    return bool(ok), (gap / scale if scale > 0 else 0.0), misses[1]
 
 
 def _pass_on(messages: list[str], count: int) -> None:
@@ -376,13 +368,11 @@ def _pass_on(messages: list[str], count: int) -> None:
     latest: dict[str, str] = {}
     for message in messages:
         latest[message.split(" at driver position")[0]] = message
-    shown, left = "", len(latest)
-    for message in latest.values():
-        if shown and len(shown) + len(message) > TROUBLE_TEXT:
-            break
-        shown, left = f"{shown}; {message}" if shown else message, left - 1
-    if left:
-        shown += f"; and {left} more"
+    troubles = list(latest.values())
+    fit = max(1, fitting(troubles, TROUBLE_TEXT))
+    shown = "; ".join(troubles[:fit])
+    if fit < len(troubles):
+        shown += f"; and {len(troubles) - fit} more"
     warnings.warn(
         f"dynamics, on its internal grid of up to {count} positions a turn: {shown}",
         AssurWarning,

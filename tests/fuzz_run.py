@@ -145,7 +145,8 @@ def _time_limit(seconds: float | None) -> Iterator[None]:
 def _pipeline(text: str, stage: list[str], caught: list[Any]) -> Outcome:
     mech = assur.loads(text)
     stage[0] = "dumps"
-    if assur.loads(assur.dumps(mech)) != mech:
+    written = assur.dumps(mech)
+    if assur.loads(written) != mech:
         return Outcome("failure", "dumps: the written file reads to another mechanism")
     stage[0] = "structure"
     found = assur.structure(mech)
@@ -168,24 +169,27 @@ def _pipeline(text: str, stage: list[str], caught: list[Any]) -> Outcome:
         return problem
     if first is not None:
         return _assur_error(first)
-    return _further(mech, table, stage) or Outcome("table")
+    return _further(written, mech, table, stage) or Outcome("table")
 
 
-def _further(mech: assur.Mechanism, table: assur.Table, stage: list[str]) -> Any:
+def _further(
+    written: str, mech: assur.Mechanism, table: assur.Table, stage: list[str]
+) -> Any:
     """Run what users run next on a table; return the failure, or None.
 
-    Its summary, the explanatory note at its first position and the dynamic model.
-    A refusal (an AssurError) is an answer when its message is one short line.
+    Its summary, the explanatory note at its first position and the dynamic model
+    (when a checksum of ``written``, the mechanism as ``assur.dumps`` writes it,
+    picks it: comments and layout do not change the choice). A refusal (an
+    AssurError) is an answer when its message is one short line.
     """
     steps: list[tuple[str, Any]] = []
     if table.force_state is not None:
         steps.append(("summary", table.summary))
     first = table.given[0].tolist()
     steps.append(("explain", lambda: str(assur.explain(mech, first))))
-    text = assur.dumps(mech)
     if (
         table.force_state is not None
-        and zlib.crc32(text.encode()) % DYNAMICS_EVERY == 0
+        and zlib.crc32(written.encode()) % DYNAMICS_EVERY == 0
     ):
         steps.append(("dynamics", lambda: assur.dynamics(mech, DYNAMICS_ANGLES)))
     for name, step in steps:
