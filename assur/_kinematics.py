@@ -239,7 +239,8 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
     Every position takes steps of at most :data:`CONTINUATION_STEP` (a crank) or a
     twentieth of the mechanism's size (a slider) from the reference pose; a position
     stops at its first failed step (its pose is then NaN), so the work grows with the
-    distance the mechanism can actually travel.
+    distance the mechanism can actually travel. With one driver the positions share
+    their paths (:func:`_anchored`).
 
     Raises
     ------
@@ -259,26 +260,87 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
         counts = np.maximum(1.0, np.ceil(np.max(np.abs(drive - reference) / step, 1)))
     if n and counts.max() > MAX_STEPS:
         _too_far(plan, drive, counts)
+    if len(plan.drivers) == 1 and n:
+        # every position so, however many share its anchor: a position's pose does
+        # not depend on the others in the batch
+        marks, which = np.unique(
+            np.trunc((drive[:, 0] - reference[0]) / step[0]), return_inverse=True
+        )
+        anchors = reference + marks[:, None] * step
+        walked = _straight(
+            plan, anchors, branch_of, reference, np.maximum(1.0, np.abs(marks))
+        )
+        return _anchored(plan, drive, branch_of, walked, which.ravel())
+    return _straight(plan, drive, branch_of, reference, counts)
+
+
+def _anchored(
+    plan: Plan,
+    drive: Array,
+    branch_of: BranchOf | None,
+    walked: list[Any],
+    which: Any,
+) -> list[Any]:
+    """Reach ``drive`` (one driver) in one step from the poses ``walked`` to anchors.
+
+    The anchors lie whole continuation steps from the reference pose on the driver's
+    path, ``which[i]`` the last before position ``i``: walking to the anchors, then
+    one step on, follows the same path in steps no longer than :func:`_straight`
+    takes, and costs one step a position instead of one for every step of its
+    distance (a dense sweep of a crank has many positions per anchor). A position
+    whose anchor failed fails.
+    """
+    guess = [[tuple(v[which] for v in pose) for pose in poses] for poses in walked]
+    found, ok = _step(plan, drive, guess, branch_of)
+    return [
+        [tuple(np.where(ok, v, np.nan) for v in pose) for pose in poses]
+        for poses in found
+    ]
+
+
+def _step(
+    plan: Plan, at: Array, current: list[Any], branch_of: BranchOf | None
+) -> tuple[list[Any], Mask]:
+    """Take one continuation step: every group at driver positions ``at``.
+
+    ``current`` holds the Newton groups' poses to start from (None: the reference
+    pose). Returns their solved poses and where every group assembled.
+    """
     still = [0.0] * len(plan.drivers)
-    newton = [k for k, solver in enumerate(plan.solvers) if solver.newton]
-    result: list[Any] = [None] * len(newton)
-    current: list[Any] = [None] * len(newton)
+    bodies = drivers(plan, at, still, still)
+    branch = {} if branch_of is None else branch_of(at)
+    ok = np.ones(at.shape[0], dtype=bool)
+    found = list(current)
+    g = 0
+    for index, solver in enumerate(plan.solvers):
+        if solver.newton:
+            assembly = solver.assemble(bodies, at.shape[0], current[g])
+            found[g] = assembly.guess
+            ok &= ~assembly.failed
+            g += 1
+        else:
+            solver.assemble(bodies, at.shape[0], branch=branch.get(index))
+    return found, ok
+
+
+def _straight(
+    plan: Plan,
+    drive: Array,
+    branch_of: BranchOf | None,
+    reference: Array,
+    counts: Array,
+) -> list[Any]:
+    """Walk every position to ``drive`` on its own path, ``counts`` steps long."""
+    n = drive.shape[0]
+    newton = sum(1 for solver in plan.solvers if solver.newton)
+    result: list[Any] = [None] * newton
+    current: list[Any] = [None] * newton
     active = np.arange(n)
     s = 1
     while active.size:
         fraction = np.minimum(s / counts[active], 1.0)
         at = reference + (drive[active] - reference) * fraction[:, None]
-        bodies = drivers(plan, at, still, still)
-        branch = {} if branch_of is None else branch_of(at)
-        ok = np.ones(active.size, dtype=bool)
-        for index, solver in enumerate(plan.solvers):
-            if solver.newton:
-                g = newton.index(index)
-                found = solver.assemble(bodies, active.size, current[g])
-                current[g] = found.guess
-                ok &= ~found.failed
-            else:
-                solver.assemble(bodies, active.size, branch=branch.get(index))
+        current, ok = _step(plan, at, current, branch_of)
         finish = (fraction >= 1.0) | ~ok  # arrived, or stopped by a failed step
         if finish.any():
             rows = active[finish]

@@ -46,8 +46,6 @@ DYNAMIC = (
     "whitworth",
 )
 """The bundled examples with masses and one driving crank."""
-QUICK = tuple(name for name in DYNAMIC if name != "class3")
-"""Those whose sweeps are quick (class3's triad is solved by continuation)."""
 DELTA = 0.05
 """Coefficient of speed fluctuation given to examples too light to run without a
 flywheel at their nominal speed."""
@@ -114,7 +112,7 @@ def test_reduced_inertia_and_torque_against_the_forces_table(name):
     )
 
 
-@pytest.mark.parametrize("name", QUICK)
+@pytest.mark.parametrize("name", DYNAMIC)
 def test_inertia_slope_is_the_derivative_of_the_inertia(name):
     mech = example(name)
     angles = np.linspace(3.0, 357.0, 37)
@@ -172,7 +170,7 @@ def test_balancing_torque_at_the_real_motion(name):
     )
 
 
-@pytest.mark.parametrize("name", QUICK)
+@pytest.mark.parametrize("name", DYNAMIC)
 def test_time_integration_reproduces_the_steady_state(name):
     """The oracle's Runge-Kutta integration in time, started on the steady state at
     0 deg under the constant motor torque, stays on it for a whole turn."""
@@ -227,7 +225,7 @@ def test_the_table_reads_like_a_table(tmp_path: Path):
 # ---------------------------------------------------------------------------- flywheel
 
 
-@pytest.mark.parametrize("name", QUICK)
+@pytest.mark.parametrize("name", DYNAMIC)
 def test_flywheel_gives_the_asked_delta(name):
     mech = example(name)
     inertia = assur.flywheel(mech, 0.02)

@@ -318,6 +318,43 @@ def test_a_far_crank_position_costs_what_a_near_one_does(monkeypatch):
         np.testing.assert_allclose(far[column], near[column], rtol=1e-9, atol=1e-12)
 
 
+def test_a_dense_sweep_takes_about_one_step_a_position(monkeypatch):
+    # the positions share their paths from the reference pose: walking each alone
+    # would take about 36 steps a position on average over two turns
+    mech = assur.load(EXAMPLES / "class3.toml")
+    rows = [0]
+    original = general.GeneralSolver.assemble
+
+    def counted(self, bodies, n, guess=None, branch=None):
+        rows[0] += n
+        return original(self, bodies, n, guess, branch)
+
+    monkeypatch.setattr(general.GeneralSolver, "assemble", counted)
+    n = 7200
+    assur.kinematics(mech, np.linspace(-360.0, 360.0, n))
+    # one walk to each of 145 anchors, one step on, then the sweep's own assembly
+    assert rows[0] <= 2 * n + 145 * 73, rows[0]
+
+
+def test_shared_paths_reach_the_poses_of_separate_walks(monkeypatch):
+    from assur import _kinematics
+
+    mech = assur.load(EXAMPLES / "class3.toml")
+    at = np.concatenate((np.linspace(-725.0, 725.0, 1001), [37.0, 37.0 + 1e-9]))
+    shared = assur.kinematics(mech, at, columns=["E.x", "E.y", "plate.angle"])
+
+    def separate(plan, drive, branch_of):
+        reference = np.array([d.reference for d in plan.drivers])
+        step = np.abs(drive - reference) / _kinematics.CONTINUATION_STEP
+        counts = np.maximum(1.0, np.ceil(step.max(axis=1)))
+        return _kinematics._straight(plan, drive, branch_of, reference, counts)
+
+    monkeypatch.setattr(_kinematics, "_walk", separate)
+    alone = assur.kinematics(mech, at, columns=["E.x", "E.y", "plate.angle"])
+    for name in ("E.x", "E.y", "plate.angle"):
+        np.testing.assert_allclose(shared[name], alone[name], rtol=0, atol=1e-9)
+
+
 def slider_triad() -> assur.Mechanism:
     """The class III example with its crank replaced by a slider on a level guide."""
     import tomllib
