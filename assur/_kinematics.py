@@ -266,12 +266,40 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
         marks, which = np.unique(
             np.trunc((drive[:, 0] - reference[0]) / step[0]), return_inverse=True
         )
-        anchors = reference + marks[:, None] * step
-        walked = _straight(
-            plan, anchors, branch_of, reference, np.maximum(1.0, np.abs(marks))
-        )
+        walked = _anchor_poses(plan, marks, branch_of)
         return _anchored(plan, drive, branch_of, walked, which.ravel())
     return _straight(plan, drive, branch_of, reference, counts)
+
+
+def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> list[Any]:
+    """Return the Newton groups' poses at ``marks`` whole steps from the reference.
+
+    Each anchor is walked to once per plan and kept (a few numbers): the slices of a
+    long sweep, and every later sweep of the mechanism, start from them.
+    """
+    driver = plan.drivers[0]
+    step = CONTINUATION_STEP if driver.kind == "R" else 0.05 * plan.scale
+    key = "anchors" if branch_of is None else "anchors-past-change-points"
+    kept = plan.memo.setdefault(key, {})
+    new = np.array([m for m in marks.tolist() if m not in kept])
+    if new.size:
+        reference = np.array([driver.reference])
+        walked = _straight(
+            plan,
+            reference + new[:, None] * step,
+            branch_of,
+            reference,
+            np.maximum(1.0, np.abs(new)),
+        )
+        # how the groups' poses nest: the same at every anchor
+        plan.memo[key + "-layout"] = [[len(pose) for pose in poses] for poses in walked]
+        flat = np.array([v for poses in walked for pose in poses for v in pose]).T
+        kept.update(zip(new.tolist(), flat, strict=True))
+    values = iter(np.array([kept[m] for m in marks.tolist()]).T)
+    return [
+        [tuple(next(values) for _ in range(size)) for size in sizes]
+        for sizes in plan.memo[key + "-layout"]
+    ]
 
 
 def _anchored(

@@ -336,6 +336,28 @@ def test_a_dense_sweep_takes_about_one_step_a_position(monkeypatch):
     assert rows[0] <= 2 * n + 145 * 73, rows[0]
 
 
+def test_anchors_are_walked_to_once_per_mechanism(monkeypatch):
+    from assur.plan import plan_of
+
+    mech = assur.load(EXAMPLES / "class3.toml")
+    plan_of(mech).memo.pop("anchors", None)
+    at = np.linspace(0.0, 359.0, 500)
+    first = assur.kinematics(mech, at, columns=["E.x", "plate.omega"])
+    rows = [0]
+    original = general.GeneralSolver.assemble
+
+    def counted(self, bodies, n, guess=None, branch=None):
+        rows[0] += n
+        return original(self, bodies, n, guess, branch)
+
+    monkeypatch.setattr(general.GeneralSolver, "assemble", counted)
+    again = assur.kinematics(mech, at[::-1], columns=["E.x", "plate.omega"])
+    # one step from the kept anchors, then the sweep's own assembly
+    assert rows[0] == 2 * len(at)
+    for name in ("E.x", "plate.omega"):
+        np.testing.assert_array_equal(again[name][::-1], first[name])
+
+
 def test_shared_paths_reach_the_poses_of_separate_walks(monkeypatch):
     from assur import _kinematics
 

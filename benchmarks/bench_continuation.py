@@ -1,0 +1,113 @@
+"""Cost of the continuation of class III groups: shared paths against separate walks.
+
+Run from the repository root::
+
+    python benchmarks/bench_continuation.py           # 360 to 10^5 positions
+    python benchmarks/bench_continuation.py --quick   # 360 and 10^4, fewer runs
+
+``assur.kinematics`` on ``examples/class3.toml`` (a crank and one class III triad,
+solved by Newton's method from the reference pose), the call alone, at crank angles
+evenly over one turn. "shared" is the library as it is: the positions share their
+paths from the reference pose (the poses at whole continuation steps are walked to
+once per mechanism and kept, every position is one step on from the last before it),
+timed as a later call (the anchors kept) and as a first call (walked to anew).
+"separate" walks each
+position to its angle on its own path, as the library did before. Both give the same
+poses (``tests/test_numbers.py`` holds them to 1e-9). Writes
+``benchmarks/results-continuation.json`` (``--output`` overrides); prints a table. The
+exit status is 0 whatever the figures are.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+try:
+    import assur
+except ImportError:  # run from a source tree without the package installed
+    sys.path.insert(0, str(ROOT))
+    import assur
+from assur import _kinematics  # noqa: E402
+from assur.plan import plan_of  # noqa: E402
+
+SIZES = {False: (360, 10**3, 10**4, 10**5), True: (360, 10**4)}
+RUNS = {360: 20, 10**3: 10, 10**4: 5, 10**5: 3}
+
+
+def separate(plan, drive, branch_of):
+    """Walk every position on its own straight path from the reference pose."""
+    reference = np.array([d.reference for d in plan.drivers])
+    steps = np.abs(drive - reference) / _kinematics.CONTINUATION_STEP
+    counts = np.maximum(1.0, np.ceil(steps.max(axis=1)))
+    return _kinematics._straight(plan, drive, branch_of, reference, counts)
+
+
+def timed(mech, deg: np.ndarray, runs: int, first: bool = False) -> float:
+    """Median seconds of ``assur.kinematics(mech, deg)`` after a warm-up call.
+
+    ``first``: each run as a first call, the anchors kept by the plan dropped.
+    """
+    assur.kinematics(mech, deg)
+    times = []
+    for _ in range(runs):
+        if first:
+            plan_of(mech).memo.pop("anchors", None)
+        start = time.perf_counter()
+        assur.kinematics(mech, deg)
+        times.append(time.perf_counter() - start)
+    return statistics.median(times)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true")
+    parser.add_argument("--output", type=Path)
+    args = parser.parse_args(argv)
+    quick = args.quick
+    out = args.output or HERE / (
+        "results-continuation-quick.json" if quick else "results-continuation.json"
+    )
+    mech = assur.load(ROOT / "examples" / "class3.toml")
+    shared_walk = _kinematics._walk
+    rows = []
+    print(
+        f"{'positions':>10} {'shared ms':>10} {'first call':>11} {'separate ms':>12} "
+        f"{'ratio':>6}"
+    )
+    for n in SIZES[quick]:
+        deg = np.arange(n) * (360.0 / n)
+        runs = max(1, RUNS[n] // (2 if quick else 1))
+        shared = timed(mech, deg, runs)
+        fresh = timed(mech, deg, runs, first=True)
+        _kinematics._walk = separate
+        try:
+            alone = timed(mech, deg, runs)
+        finally:
+            _kinematics._walk = shared_walk
+        rows.append(
+            {"n": n, "shared_s": shared, "first_call_s": fresh, "separate_s": alone}
+        )
+        ms = [t * 1e3 for t in (shared, fresh, alone)]
+        print(
+            f"{n:>10} {ms[0]:>10.2f} {ms[1]:>11.2f} {ms[2]:>12.2f} "
+            f"{alone / shared:>6.1f}"
+        )
+    text = json.dumps({"mechanism": "examples/class3.toml", "rows": rows}, indent=1)
+    tmp = out.with_suffix(".tmp")
+    tmp.write_text(text + "\n", encoding="utf-8")
+    tmp.replace(out)
+    print(f"written {out}")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
