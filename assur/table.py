@@ -109,8 +109,8 @@ class Table:
     def motion(self, level: int = 2) -> KinematicState:
         """Return the kinematic state solved up to time derivative ``level`` at least.
 
-        A sweep solves up to accelerations; the jerks are solved, group by group, when
-        first asked for.
+        A long sweep solves up to accelerations, its jerks solved group by group when
+        first asked for; a short one (up to 2048 positions) solves them in the call.
         """
         if self.state.top >= level:
             return self.state
