@@ -103,7 +103,9 @@ def _drive(first: Plan, references: Array, given: Array) -> Array:
     out = []
     for reference in references.tolist():
         driver = dataclasses.replace(first.drivers[0], reference=reference)
-        out.append(to_si(dataclasses.replace(first, drivers=(driver,)), given))
+        # a plan of its own: what the first plan keeps belongs to its own reference
+        plan = dataclasses.replace(first, drivers=(driver,), memo={})
+        out.append(to_si(plan, given))
     return np.concatenate(out)
 
 

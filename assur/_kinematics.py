@@ -260,7 +260,7 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
         counts = np.maximum(1.0, np.ceil(np.max(np.abs(drive - reference) / step, 1)))
     if n and counts.max() > MAX_STEPS:
         _too_far(plan, drive, counts)
-    if len(plan.drivers) == 1 and n:
+    if len(plan.drivers) == 1 and n and np.isfinite(drive).all():
         # every position so, however many share its anchor: a position's pose does
         # not depend on the others in the batch
         marks, which = np.unique(
@@ -274,31 +274,53 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
 def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> list[Any]:
     """Return the Newton groups' poses at ``marks`` whole steps from the reference.
 
-    Each anchor is walked to once per plan and kept (a few numbers): the slices of a
-    long sweep, and every later sweep of the mechanism, start from them.
+    The anchors are walked to one after the other, each one step on from the last,
+    on either side of the reference pose, and kept with the plan (a few numbers):
+    the slices of a long sweep, and every later sweep of the mechanism, start from
+    them. A group that fails at an anchor is NaN from there on; the walk stops where
+    every group has failed.
     """
     driver = plan.drivers[0]
     step = CONTINUATION_STEP if driver.kind == "R" else 0.05 * plan.scale
     key = "anchors" if branch_of is None else "anchors-past-change-points"
-    kept = plan.memo.setdefault(key, {})
-    new = np.array([m for m in marks.tolist() if m not in kept])
-    if new.size:
-        reference = np.array([driver.reference])
-        walked = _straight(
-            plan,
-            reference + new[:, None] * step,
-            branch_of,
-            reference,
-            np.maximum(1.0, np.abs(new)),
-        )
-        # how the groups' poses nest: the same at every anchor
-        plan.memo[key + "-layout"] = [[len(pose) for pose in poses] for poses in walked]
-        flat = np.array([v for poses in walked for pose in poses for v in pose]).T
-        kept.update(zip(new.tolist(), flat, strict=True))
-    values = iter(np.array([kept[m] for m in marks.tolist()]).T)
+    kept: dict[float, Array] = plan.memo.setdefault(key, {})
+    wanted = marks.tolist()
+    if 0.0 in wanted and 0.0 not in kept:
+        found, _ = _step(plan, np.array([[driver.reference]]), None, branch_of)
+        kept[0.0] = _flat(plan, key, found)
+    for sign in (1.0, -1.0):
+        far = max((m * sign for m in wanted), default=0.0)
+        s = max((m * sign for m in kept if m * sign > 0), default=0.0)
+        current = _nested(plan, key, kept[s * sign]) if s > 0 else None
+        while s < far:
+            s += 1.0
+            at = np.array([[driver.reference + sign * s * step]])
+            current, failed = _step(plan, at, current, branch_of)
+            kept[sign * s] = _flat(plan, key, current)
+            if failed.all():
+                # no group can come back: every farther anchor fails alike
+                while s < far:
+                    s += 1.0
+                    kept[sign * s] = kept[sign * (s - 1.0)]
+    rows = np.array([kept[m] for m in wanted]).T
+    return _nested(plan, key, rows)
+
+
+def _flat(plan: Plan, key: str, poses: list[Any]) -> Array:
+    """Return the Newton groups' poses at one position as one array.
+
+    Notes how they nest (the same at every position) in the plan's memo.
+    """
+    plan.memo[key + "-layout"] = [[len(pose) for pose in group] for group in poses]
+    return np.array([float(v[0]) for group in poses for pose in group for v in pose])
+
+
+def _nested(plan: Plan, key: str, rows: Array) -> list[Any]:
+    """Return poses laid out as :func:`_flat` noted, from its arrays' rows."""
+    values = iter(rows)
     return [
-        [tuple(next(values) for _ in range(size)) for size in sizes]
-        for sizes in plan.memo[key + "-layout"]
+        [tuple(next(values) for _ in range(size)) for size in group]
+        for group in plan.memo[key + "-layout"]
     ]
 
 
@@ -312,43 +334,39 @@ def _anchored(
     """Reach ``drive`` (one driver) in one step from the poses ``walked`` to anchors.
 
     The anchors lie whole continuation steps from the reference pose on the driver's
-    path, ``which[i]`` the last before position ``i``: walking to the anchors, then
-    one step on, follows the same path in steps no longer than :func:`_straight`
-    takes, and costs one step a position instead of one for every step of its
-    distance (a dense sweep of a crank has many positions per anchor). A position
-    whose anchor failed fails.
+    path, ``which[i]`` the last before position ``i``: each position is reached in
+    steps of at most :data:`CONTINUATION_STEP`, at the cost of one step a position
+    instead of one for every step of its distance (a dense sweep of a crank has many
+    positions per anchor). A group's pose is NaN where it failed, at the anchor or
+    on the step.
     """
     guess = [[tuple(v[which] for v in pose) for pose in poses] for poses in walked]
-    found, ok = _step(plan, drive, guess, branch_of)
-    return [
-        [tuple(np.where(ok, v, np.nan) for v in pose) for pose in poses]
-        for poses in found
-    ]
+    return _step(plan, drive, guess, branch_of)[0]
 
 
 def _step(
-    plan: Plan, at: Array, current: list[Any], branch_of: BranchOf | None
+    plan: Plan, at: Array, current: list[Any] | None, branch_of: BranchOf | None
 ) -> tuple[list[Any], Mask]:
     """Take one continuation step: every group at driver positions ``at``.
 
-    ``current`` holds the Newton groups' poses to start from (None: the reference
-    pose). Returns their solved poses and where every group assembled.
+    ``current`` holds the Newton groups' poses to start from (None, or a group's
+    None: the reference pose). Returns their solved poses, and whether each group
+    failed at each position (groups, positions).
     """
     still = [0.0] * len(plan.drivers)
     bodies = drivers(plan, at, still, still)
     branch = {} if branch_of is None else branch_of(at)
-    ok = np.ones(at.shape[0], dtype=bool)
-    found = list(current)
-    g = 0
+    found: list[Any] = []
+    failed = []
     for index, solver in enumerate(plan.solvers):
         if solver.newton:
-            assembly = solver.assemble(bodies, at.shape[0], current[g])
-            found[g] = assembly.guess
-            ok &= ~assembly.failed
-            g += 1
+            start = None if current is None else current[len(found)]
+            assembly = solver.assemble(bodies, at.shape[0], start)
+            found.append(assembly.guess)
+            failed.append(assembly.failed)
         else:
             solver.assemble(bodies, at.shape[0], branch=branch.get(index))
-    return found, ok
+    return found, np.array(failed, dtype=bool).reshape(len(found), at.shape[0])
 
 
 def _straight(
@@ -368,8 +386,9 @@ def _straight(
     while active.size:
         fraction = np.minimum(s / counts[active], 1.0)
         at = reference + (drive[active] - reference) * fraction[:, None]
-        current, ok = _step(plan, at, current, branch_of)
-        finish = (fraction >= 1.0) | ~ok  # arrived, or stopped by a failed step
+        current, failed = _step(plan, at, current, branch_of)
+        # arrived, or stopped by a failed step
+        finish = (fraction >= 1.0) | failed.any(axis=0)
         if finish.any():
             rows = active[finish]
             for g, poses in enumerate(current):

@@ -110,7 +110,8 @@ class Table:
         """Return the kinematic state solved up to time derivative ``level`` at least.
 
         A long sweep solves up to accelerations, its jerks solved group by group when
-        first asked for; a short one (up to 2048 positions) solves them in the call.
+        first asked for; a short one (up to 2048 positions asked for, with no
+        ``columns=``) solves them in the call.
         """
         if self.state.top >= level:
             return self.state

@@ -319,8 +319,9 @@ def test_a_far_crank_position_costs_what_a_near_one_does(monkeypatch):
 
 
 def test_a_dense_sweep_takes_about_one_step_a_position(monkeypatch):
-    # the positions share their paths from the reference pose: walking each alone
-    # would take about 36 steps a position on average over two turns
+    # the positions share their paths from the reference pose (a crank's angles are
+    # first brought within half a turn of it): walking each alone would take about
+    # 18 steps a position
     mech = assur.load(EXAMPLES / "class3.toml")
     rows = [0]
     original = general.GeneralSolver.assemble
@@ -332,8 +333,8 @@ def test_a_dense_sweep_takes_about_one_step_a_position(monkeypatch):
     monkeypatch.setattr(general.GeneralSolver, "assemble", counted)
     n = 7200
     assur.kinematics(mech, np.linspace(-360.0, 360.0, n))
-    # one walk to each of 145 anchors, one step on, then the sweep's own assembly
-    assert rows[0] <= 2 * n + 145 * 73, rows[0]
+    # a walk through 71 anchors, one step on, then the sweep's own assembly
+    assert rows[0] <= 2 * n + 71, rows[0]
 
 
 def test_anchors_are_walked_to_once_per_mechanism(monkeypatch):
@@ -358,22 +359,82 @@ def test_anchors_are_walked_to_once_per_mechanism(monkeypatch):
         np.testing.assert_array_equal(again[name][::-1], first[name])
 
 
-def test_shared_paths_reach_the_poses_of_separate_walks(monkeypatch):
+def two_triads(radius: float) -> assur.Mechanism:
+    """The class III example with a copy of its triad (names ending in 2), 0.5 m
+    lower and moved to hang on a second crank pin at ``radius`` (m) on the crank."""
+    import tomllib
+
+    data = tomllib.loads((EXAMPLES / "class3.toml").read_text(encoding="utf-8"))
+    turn = math.radians(30.0)
+    pin = np.array([radius * math.cos(turn), radius * math.sin(turn)])
+    move = pin - np.array(data["joints"]["B"]["at"])
+    for name in ("rod", "plate", "left_rocker", "right_rocker"):
+        link = dict(
+            data["links"][name], axis=[a + "2" for a in data["links"][name]["axis"]]
+        )
+        center = link["center"]
+        if isinstance(center, dict):
+            link["center"] = dict(
+                center,
+                **{"from": center["from"] + "2", "toward": center["toward"] + "2"},
+            )
+        else:
+            link["center"] = list(np.array(center) + move)
+        data["links"][name + "2"] = link
+    for name in ("B", "C", "D", "E", "F", "G"):
+        joint = data["joints"][name]
+        data["joints"][name + "2"] = dict(
+            joint,
+            links=[x if x in ("ground", "crank") else x + "2" for x in joint["links"]],
+            at=list(np.array(joint["at"]) + move),
+        )
+    return assur.io.parse(data)
+
+
+def test_a_group_that_fails_leaves_the_others_be():
+    # the copy on the farther pin locks over part of the turn; the first triad
+    # turns all round, and the error names the one that fails
+    mech = two_triads(0.1)
+    at = np.linspace(-180.0, 179.0, 360)
+    with pytest.raises(assur.AssemblyError, match=r"rod2, plate2") as caught:
+        assur.kinematics(mech, at)
+    assert "(rod, plate" not in str(caught.value)
+    both = assur.kinematics(mech, at, skip_unassembled=True)
+    assert len(both.skipped) == 163
+    alone = assur.kinematics(assur.load(EXAMPLES / "class3.toml"), both["angle"])
+    for name in ("E.x", "E.y", "plate.omega"):
+        np.testing.assert_allclose(both[name], alone[name], rtol=1e-9, atol=1e-12)
+
+
+@pytest.mark.parametrize("driver", ["crank", "slider"])
+def test_shared_paths_reach_the_poses_of_separate_walks(monkeypatch, driver):
     from assur import _kinematics
 
-    mech = assur.load(EXAMPLES / "class3.toml")
-    at = np.concatenate((np.linspace(-725.0, 725.0, 1001), [37.0, 37.0 + 1e-9]))
-    shared = assur.kinematics(mech, at, columns=["E.x", "E.y", "plate.angle"])
+    if driver == "crank":
+        mech = assur.load(EXAMPLES / "class3.toml")
+        at = np.concatenate((np.linspace(-725.0, 725.0, 1001), [37.0, 37.0 + 1e-9]))
+    else:  # it assembles from -0.136 m to 0.162 m
+        mech = slider_triad()
+        at = np.linspace(-0.3, 0.3, 601)
+    names = ["E.x", "E.y", "plate.angle"]
+    shared = assur.kinematics(mech, at, columns=names, skip_unassembled=True)
 
     def separate(plan, drive, branch_of):
         reference = np.array([d.reference for d in plan.drivers])
-        step = np.abs(drive - reference) / _kinematics.CONTINUATION_STEP
-        counts = np.maximum(1.0, np.ceil(step.max(axis=1)))
-        return _kinematics._straight(plan, drive, branch_of, reference, counts)
+        size = [
+            _kinematics.CONTINUATION_STEP if d.kind == "R" else 0.05 * plan.scale
+            for d in plan.drivers
+        ]
+        counts = np.ceil((np.abs(drive - reference) / size).max(axis=1))
+        return _kinematics._straight(
+            plan, drive, branch_of, reference, np.maximum(1.0, counts)
+        )
 
     monkeypatch.setattr(_kinematics, "_walk", separate)
-    alone = assur.kinematics(mech, at, columns=["E.x", "E.y", "plate.angle"])
-    for name in ("E.x", "E.y", "plate.angle"):
+    alone = assur.kinematics(mech, at, columns=names, skip_unassembled=True)
+    np.testing.assert_array_equal(shared.skipped, alone.skipped)
+    assert len(shared) > 250
+    for name in names:
         np.testing.assert_allclose(shared[name], alone[name], rtol=0, atol=1e-9)
 
 

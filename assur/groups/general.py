@@ -185,7 +185,8 @@ def positions(
     for _ in range(MAX_ITERATIONS):
         res = _residuals(plan, bodies, 0, n)
         done = np.max(np.abs(res), axis=-1) <= TOLERANCE * plan.reach
-        if done.all():
+        # a residual that is not finite stays so (a failed guess): no step helps
+        if (done | ~np.isfinite(res).all(axis=-1)).all():
             break
         jac = jacobian(plan, bodies, n)
         bad = ~np.isfinite(jac).all(axis=(1, 2))
