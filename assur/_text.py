@@ -127,7 +127,7 @@ def _describe(value: object, limit: int) -> str:
     if isinstance(value, datetime.time):
         return f"the time {value.isoformat()}"
     if isinstance(value, Mapping):
-        keys = [str(k) for k in list(value)[: ITEMS_SHOWN + 1]]
+        keys = [_key(k, limit // 2) for k in list(value)[: ITEMS_SHOWN + 1]]
         more = ", ..." if len(value) > ITEMS_SHOWN else ""
         return "a table {" + ", ".join(keys[:ITEMS_SHOWN]) + more + "}"
     if isinstance(value, Sequence):
@@ -136,6 +136,19 @@ def _describe(value: object, limit: int) -> str:
             return "[" + ", ".join(items[:ITEMS_SHOWN]) + f", ... ({len(value)} items)]"
         return "[" + ", ".join(items) + "]"
     return f"a value of type {type(value).__name__}"
+
+
+def _key(key: object, limit: int) -> str:
+    """Show a table's key: bare as TOML writes it, quoted if it needs quotes.
+
+    A key holding a line break or a quote is shown escaped, so that a message stays
+    one line.
+    """
+    text = str(key)
+    bare = text.isascii() and all(c.isalnum() or c in "_-" for c in text)
+    if bare and 0 < len(text) <= limit:
+        return text
+    return _describe(text, limit)
 
 
 def _digits(value: int) -> int:

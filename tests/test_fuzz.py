@@ -141,6 +141,7 @@ FIXED = {
     "rpp_parallel_slides.toml": "ModelError",
     "rpp_parallel_slides_scaled.toml": "ModelError",
     "rrr_coincident_pins.toml": "ModelError",
+    "table_key_line_break.toml": "ModelError",
     "tiny_link_far_apart.toml": "ModelError",
     "triad_small_prismatic.toml": "table",
     "unexplained_inf_sum.toml": "AssemblyError",

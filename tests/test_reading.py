@@ -239,6 +239,12 @@ def test_a_name_with_a_control_character_as_the_file(tmp_path):
             "links.rod.mass: expected a number, got a table {value, unit}",
         ),
         (
+            "mass = 0.5",
+            """mass = { "line\\nbreak" = 1, "two words" = 2, kg = 3 }""",
+            "links.rod.mass: expected a number, got a table "
+            "{'line\\nbreak', 'two words', kg}",
+        ),
+        (
             'joint = "A"',
             f'joint = "{"A" * 1000}"',
             f"drivers[0].joint: unknown joint '{'A' * 55}...' (known: A, B, C, guide)",
