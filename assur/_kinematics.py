@@ -274,45 +274,53 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
 def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> list[Any]:
     """Return the Newton groups' poses at ``marks`` whole steps from the reference.
 
-    The anchors are walked to one after the other, each one step on from the last,
-    on either side of the reference pose, and kept with the plan (a few numbers):
-    the slices of a long sweep, and every later sweep of the mechanism, start from
-    them. A group that fails at an anchor is NaN from there on; the walk stops where
-    every group has failed.
+    The reference pose is solved first; the anchors on either side are then walked
+    to one after the other, each one step on from the last, both sides together, and
+    kept with the plan (a few numbers): the slices of a long sweep, and every later
+    sweep of the mechanism, start from them. A group that fails at an anchor is NaN
+    from there on; a side's walk stops where every group has failed.
     """
     driver = plan.drivers[0]
     step = CONTINUATION_STEP if driver.kind == "R" else 0.05 * plan.scale
     key = "anchors" if branch_of is None else "anchors-past-change-points"
     kept: dict[float, Array] = plan.memo.setdefault(key, {})
-    wanted = marks.tolist()
-    if 0.0 in wanted and 0.0 not in kept:
+    if 0.0 not in kept:
         found, _ = _step(plan, np.array([[driver.reference]]), None, branch_of)
-        kept[0.0] = _flat(plan, key, found)
+        kept[0.0] = _flat(plan, key, found)[:, 0]
+    wanted = marks.tolist()
+    # each side: its direction, the last anchor walked to and the farthest wanted
+    sides = []
     for sign in (1.0, -1.0):
         far = max((m * sign for m in wanted), default=0.0)
-        s = max((m * sign for m in kept if m * sign > 0), default=0.0)
-        current = _nested(plan, key, kept[s * sign]) if s > 0 else None
-        while s < far:
-            s += 1.0
-            at = np.array([[driver.reference + sign * s * step]])
-            current, failed = _step(plan, at, current, branch_of)
-            kept[sign * s] = _flat(plan, key, current)
-            if failed.all():
+        last = max((m * sign for m in kept), default=0.0)
+        if far > last:
+            sides.append([sign, last, far])
+    while sides:
+        rows = np.array([kept[sign * last] for sign, last, _ in sides]).T
+        at = np.array(
+            [[driver.reference + sign * (last + 1.0) * step] for sign, last, _ in sides]
+        )
+        found, failed = _step(plan, at, _nested(plan, key, rows), branch_of)
+        flat = _flat(plan, key, found)
+        for i, side in enumerate(sides):
+            side[1] += 1.0
+            kept[side[0] * side[1]] = flat[:, i]
+            if failed[:, i].all():
                 # no group can come back: every farther anchor fails alike
-                while s < far:
-                    s += 1.0
-                    kept[sign * s] = kept[sign * (s - 1.0)]
-    rows = np.array([kept[m] for m in wanted]).T
-    return _nested(plan, key, rows)
+                while side[1] < side[2]:
+                    side[1] += 1.0
+                    kept[side[0] * side[1]] = flat[:, i]
+        sides = [side for side in sides if side[1] < side[2]]
+    return _nested(plan, key, np.array([kept[m] for m in wanted]).T)
 
 
 def _flat(plan: Plan, key: str, poses: list[Any]) -> Array:
-    """Return the Newton groups' poses at one position as one array.
+    """Return the Newton groups' poses as one array (values, positions).
 
     Notes how they nest (the same at every position) in the plan's memo.
     """
     plan.memo[key + "-layout"] = [[len(pose) for pose in group] for group in poses]
-    return np.array([float(v[0]) for group in poses for pose in group for v in pose])
+    return np.array([v for group in poses for pose in group for v in pose])
 
 
 def _nested(plan: Plan, key: str, rows: Array) -> list[Any]:
