@@ -8,6 +8,7 @@ a sweep are nested tuples and dicts of such leaves, filled chunk by chunk.
 from __future__ import annotations
 
 import functools
+import math
 from collections.abc import Iterable, Iterator
 from typing import Any
 
@@ -41,16 +42,20 @@ def full(value: Leaf, n: int) -> Array:
     """
     if is_array(value):
         return value  # type: ignore[no-any-return]
-    return _constant(np.nan if value is None else float(value), n)
+    number = np.nan if value is None else float(value)
+    # -0.0 == 0.0 (one key): the sign goes into the key, or the first made would
+    # serve both, and which one came first would change the results (atan2, 1/x)
+    return _constant(number, n, math.copysign(1.0, number))
 
 
 @functools.lru_cache(maxsize=1024)
-def _constant(value: float, n: int) -> Array:
+def _constant(value: float, n: int, sign: float) -> Array:
     """Return ``value`` repeated ``n`` times, read-only; kept for reuse.
 
     A table has tens of constant columns (the frame's, a crank's speed), mostly the
     same few numbers: made once, each costs a lookup. Being read-only, one array can
-    serve every table. (NaN is not equal to itself: each NaN makes a new entry, up to
+    serve every table. ``sign`` is that of ``value`` (+1.0 or -1.0), which tells a
+    zero's sign apart. (NaN is not equal to itself: each NaN makes a new entry, up to
     the cache's bound.)
     """
     one = np.array((value,))

@@ -9,6 +9,7 @@ points.
 
 from __future__ import annotations
 
+import math
 import pickle
 import warnings
 from pathlib import Path
@@ -417,3 +418,17 @@ def test_instant_centre_of_a_crank_is_its_pivot_and_a_slider_has_none():
     np.testing.assert_allclose(table["crank.ic.y"], table["A.y"])
     assert np.isnan(table["slider.ic.x"]).all()
     assert np.isnan(table["slider.ic.y"]).all()
+
+
+@pytest.mark.parametrize("first", [0.0, -0.0])
+def test_shared_constant_columns_keep_the_sign_of_zero(first):
+    # constant columns are made once per value and shared: -0.0 == 0.0, yet a
+    # zero's sign changes results (atan2, 1/x), whichever was asked for first
+    from assur._vec import full
+
+    n = 7 + int(first == 0.0)  # a length no other test asks for first
+    for value in (first, -first, first):
+        got = full(value, n)
+        negative = math.copysign(1.0, value) < 0
+        assert np.all(np.signbit(got) == negative), value
+        assert not got.flags.writeable
