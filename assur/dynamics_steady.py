@@ -179,11 +179,13 @@ def _grid_extremes(
 def _vertex(values: Array, i: int) -> float:
     """Return the extreme value of the parabola through a grid point and neighbours."""
     n = values.shape[0]
-    before, here, after = values[(i - 1) % n], values[i], values[(i + 1) % n]
+    before, here, after = (float(values[j % n]) for j in (i - 1, i, i + 1))
     curve = before - 2.0 * here + after
     if curve == 0:
-        return float(here)
-    return float(here - (after - before) ** 2 / (8.0 * curve))
+        return here
+    # the square of the difference would overflow first for huge speeds
+    change = after - before
+    return here - change * (change / (8.0 * curve))
 
 
 def _extreme(function: Any, model: Reduced, i: int, sign: float = 1.0) -> float:
