@@ -261,8 +261,8 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
     if n and counts.max() > MAX_STEPS:
         _too_far(plan, drive, counts)
     if len(plan.drivers) == 1 and n and np.isfinite(drive).all():
-        # every position so, however many share its anchor: a position's pose does
-        # not depend on the others in the batch
+        # anchored even when few positions share an anchor: a position's pose then
+        # never depends on the others in the batch
         marks, which = np.unique(
             np.trunc((drive[:, 0] - reference[0]) / step[0]), return_inverse=True
         )
