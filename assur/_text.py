@@ -16,6 +16,7 @@ __all__ = [
     "ROMAN",
     "describe",
     "fitting",
+    "key_text",
     "listing",
     "position_text",
     "position_title",
@@ -127,7 +128,7 @@ def _describe(value: object, limit: int) -> str:
     if isinstance(value, datetime.time):
         return f"the time {value.isoformat()}"
     if isinstance(value, Mapping):
-        keys = [_key(k, limit // 2) for k in list(value)[: ITEMS_SHOWN + 1]]
+        keys = [key_text(k, limit // 2) for k in list(value)[: ITEMS_SHOWN + 1]]
         more = ", ..." if len(value) > ITEMS_SHOWN else ""
         return "a table {" + ", ".join(keys[:ITEMS_SHOWN]) + more + "}"
     if isinstance(value, Sequence):
@@ -138,17 +139,16 @@ def _describe(value: object, limit: int) -> str:
     return f"a value of type {type(value).__name__}"
 
 
-def _key(key: object, limit: int) -> str:
-    """Show a table's key: bare as TOML writes it, quoted if it needs quotes.
+def key_text(name: object, limit: int = 40) -> str:
+    """Return a user's name as it reads in an entry: as it is, or quoted and cut.
 
-    A key holding a line break or a quote is shown escaped, so that a message stays
-    one line.
+    A name that is not a short printable string (a newline in it, a number, a
+    thousand characters) is echoed by :func:`describe`, so that a message stays one
+    short line. The keys of a table in a message are shown so too.
     """
-    text = str(key)
-    bare = text.isascii() and all(c.isalnum() or c in "_-" for c in text)
-    if bare and 0 < len(text) <= limit:
-        return text
-    return _describe(text, limit)
+    if isinstance(name, str) and name.isprintable() and 0 < len(name) <= limit:
+        return name
+    return describe(name, limit)
 
 
 def _digits(value: int) -> int:

@@ -21,7 +21,7 @@ from assur._output import (
     stdout_writer,
     write_text,
 )
-from assur._text import describe, suggest
+from assur._text import describe, key_text, suggest
 from assur.errors import AssurError, ModelError
 from assur.model import (
     LARGEST,
@@ -35,7 +35,6 @@ from assur.model import (
     Point,
     PointSpec,
     Toward,
-    key_text,
 )
 
 if TYPE_CHECKING:

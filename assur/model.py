@@ -16,7 +16,7 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-from assur._text import describe, suggest
+from assur._text import describe, key_text, suggest
 from assur.errors import ModelError
 
 __all__ = [
@@ -392,18 +392,6 @@ def _tuples(obj: Any, *names: str) -> None:
 def _fail(entry: str, message: str) -> NoReturn:
     msg = f"{entry}: {message}"
     raise ModelError(msg)
-
-
-def key_text(name: object) -> str:
-    """Return a user's name as it reads in an entry: as it is, or quoted and cut.
-
-    A name that is not a short printable string (a newline in it, a number, a
-    thousand characters) is echoed by :func:`assur._text.describe`, so that a
-    message stays one short line.
-    """
-    if isinstance(name, str) and name.isprintable() and 0 < len(name) <= 40:
-        return name
-    return describe(name, 40)
 
 
 def _spec_text(spec: object) -> str:

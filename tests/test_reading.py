@@ -242,7 +242,7 @@ def test_a_name_with_a_control_character_as_the_file(tmp_path):
             "mass = 0.5",
             """mass = { "line\\nbreak" = 1, "two words" = 2, kg = 3 }""",
             "links.rod.mass: expected a number, got a table "
-            "{'line\\nbreak', 'two words', kg}",
+            "{'line\\nbreak', two words, kg}",
         ),
         (
             'joint = "A"',
