@@ -149,15 +149,12 @@ def _least(model: Reduced, inertia: Array) -> tuple[float, float]:
     millionth of the largest. The parabola through the grid's smallest value and its
     two neighbours (the grid closes on itself over the turn) gives the minimum.
     """
-    n = inertia.shape[0]
     i = int(np.argmin(inertia))
-    before, here, after = inertia[i - 1], inertia[i], inertia[(i + 1) % n]
-    curve = before - 2.0 * here + after
-    if not curve > 0.0:
-        return float(here), float(model.angle[i])
-    shift = 0.5 * (before - after) / curve  # in grid steps, within half a step
-    low = here - 0.25 * (before - after) * shift
-    return float(low), float(model.angle[i]) + shift * 2.0 * math.pi / n
+    here, angle = float(inertia[i]), float(model.angle[i])
+    low, shift = _vertex(inertia, i)
+    if not low <= here:  # the parabola has its top there, or no number
+        return here, angle
+    return low, angle + shift * 2.0 * math.pi / inertia.shape[0]
 
 
 def _speeds(model: Reduced, inertia: Any, energy: float, phi: Any = None) -> Any:
@@ -171,21 +168,25 @@ def _grid_extremes(
 ) -> tuple[float, float]:
     """Return the largest and smallest speed, a parabola through the grid's extremes."""
     square = _speeds(model, inertia, energy)
-    top = _vertex(square, int(np.argmax(square)))
-    bottom = _vertex(square, int(np.argmin(square)))
+    top = _vertex(square, int(np.argmax(square)))[0]
+    bottom = _vertex(square, int(np.argmin(square)))[0]
     return math.sqrt(max(top, 0.0)), math.sqrt(max(bottom, 0.0))
 
 
-def _vertex(values: Array, i: int) -> float:
-    """Return the extreme value of the parabola through a grid point and neighbours."""
+def _vertex(values: Array, i: int) -> tuple[float, float]:
+    """Return the extreme of the parabola through a grid point and its neighbours.
+
+    Also where it is, in grid steps from point ``i`` (0 for a straight line). The
+    grid closes on itself over the turn.
+    """
     n = values.shape[0]
     before, here, after = (float(values[j % n]) for j in (i - 1, i, i + 1))
     curve = before - 2.0 * here + after
     if curve == 0:
-        return here
+        return here, 0.0
     # the square of the difference would overflow first for huge speeds
     change = after - before
-    return here - change * (change / (8.0 * curve))
+    return here - change * (change / (8.0 * curve)), -0.5 * change / curve
 
 
 def _extreme(function: Any, model: Reduced, i: int, sign: float = 1.0) -> float:
