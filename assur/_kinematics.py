@@ -248,18 +248,7 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
         When a position is more than :data:`MAX_STEPS` steps away.
     """
     n = drive.shape[0]
-    reference = np.array([d.reference for d in plan.drivers])
-    step = np.array(
-        [
-            CONTINUATION_STEP if d.kind == "R" else 0.05 * plan.scale
-            for d in plan.drivers
-        ]
-    )
-    counts = np.ones(n)
-    if n:
-        counts = np.maximum(1.0, np.ceil(np.max(np.abs(drive - reference) / step, 1)))
-    if n and counts.max() > MAX_STEPS:
-        _too_far(plan, drive, counts)
+    reference, step, counts = _distances(plan, drive)
     if len(plan.drivers) == 1 and n and np.isfinite(drive).all():
         # anchored even when few positions share an anchor: a position's pose then
         # never depends on the others in the batch
@@ -269,6 +258,40 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
         walked = _anchor_poses(plan, marks, branch_of)
         return _anchored(plan, drive, branch_of, walked, which.ravel())
     return _straight(plan, drive, branch_of, reference, counts)
+
+
+def _separate(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
+    """Walk every position on its own straight path from the reference pose.
+
+    What :func:`_walk` does with several drivers; with one, the paths it shares
+    reach the same poses (the tests and benchmarks/bench_continuation.py compare).
+    """
+    reference, _, counts = _distances(plan, drive)
+    return _straight(plan, drive, branch_of, reference, counts)
+
+
+def _distances(plan: Plan, drive: Array) -> tuple[Array, Array, Array]:
+    """Return the drivers' reference positions, their steps and each position's count.
+
+    Raises
+    ------
+    ConvergenceError
+        When a position is more than :data:`MAX_STEPS` steps away.
+    """
+    n = drive.shape[0]
+    reference = np.array([d.reference for d in plan.drivers])
+    step = np.array([_stride(plan, d) for d in plan.drivers])
+    counts = np.ones(n)
+    if n:
+        counts = np.maximum(1.0, np.ceil(np.max(np.abs(drive - reference) / step, 1)))
+    if n and counts.max() > MAX_STEPS:
+        _too_far(plan, drive, counts)
+    return reference, step, counts
+
+
+def _stride(plan: Plan, driver: Any) -> float:
+    """Return a driver's longest continuation step: rad for a crank, m for a slider."""
+    return CONTINUATION_STEP if driver.kind == "R" else 0.05 * plan.scale
 
 
 def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> list[Any]:
@@ -281,7 +304,7 @@ def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> list[
     from there on; a side's walk stops where every group has failed.
     """
     driver = plan.drivers[0]
-    step = CONTINUATION_STEP if driver.kind == "R" else 0.05 * plan.scale
+    step = _stride(plan, driver)
     key = "anchors" if branch_of is None else "anchors-past-change-points"
     kept: dict[float, Array] = plan.memo.setdefault(key, {})
     if 0.0 not in kept:

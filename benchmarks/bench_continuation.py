@@ -43,14 +43,6 @@ SIZES = {False: (360, 10**3, 10**4, 10**5), True: (360, 10**4)}
 RUNS = {360: 20, 10**3: 10, 10**4: 5, 10**5: 3}
 
 
-def separate(plan, drive, branch_of):
-    """Walk every position on its own straight path from the reference pose."""
-    reference = np.array([d.reference for d in plan.drivers])
-    steps = np.abs(drive - reference) / _kinematics.CONTINUATION_STEP
-    counts = np.maximum(1.0, np.ceil(steps.max(axis=1)))
-    return _kinematics._straight(plan, drive, branch_of, reference, counts)
-
-
 def timed(mech, deg: np.ndarray, runs: int, first: bool = False) -> float:
     """Median seconds of ``assur.kinematics(mech, deg)`` after a warm-up call.
 
@@ -88,7 +80,7 @@ def main(argv: list[str] | None = None) -> int:
         runs = max(1, RUNS[n] // (2 if quick else 1))
         shared = timed(mech, deg, runs)
         fresh = timed(mech, deg, runs, first=True)
-        _kinematics._walk = separate
+        _kinematics._walk = _kinematics._separate
         try:
             alone = timed(mech, deg, runs)
         finally:

@@ -407,18 +407,7 @@ def test_shared_paths_reach_the_poses_of_separate_walks(monkeypatch, driver):
     names = ["E.x", "E.y", "plate.angle"]
     shared = assur.kinematics(mech, at, columns=names, skip_unassembled=True)
 
-    def separate(plan, drive, branch_of):
-        reference = np.array([d.reference for d in plan.drivers])
-        size = [
-            _kinematics.CONTINUATION_STEP if d.kind == "R" else 0.05 * plan.scale
-            for d in plan.drivers
-        ]
-        counts = np.ceil((np.abs(drive - reference) / size).max(axis=1))
-        return _kinematics._straight(
-            plan, drive, branch_of, reference, np.maximum(1.0, counts)
-        )
-
-    monkeypatch.setattr(_kinematics, "_walk", separate)
+    monkeypatch.setattr(_kinematics, "_walk", _kinematics._separate)
     alone = assur.kinematics(mech, at, columns=names, skip_unassembled=True)
     np.testing.assert_array_equal(shared.skipped, alone.skipped)
     assert len(shared) > 250
