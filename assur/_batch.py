@@ -79,7 +79,13 @@ def summaries(
     alone = bad.reshape(k, m).any(axis=1) | near
     chosen = selection(first, True, None)
     table = Table(
-        plan, chosen.columns, np.tile(given, (k, 1)), state, forces, _index=chosen.index
+        plan,
+        chosen.columns,
+        np.tile(given, (k, 1)),
+        state,
+        forces,
+        _index=chosen.index,
+        _families=chosen.families,
     )
     summary = Summary(variants=k)
     with np.errstate(invalid="ignore"):

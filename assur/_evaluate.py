@@ -66,19 +66,19 @@ def _company(table: Table, column: Column) -> list[Column]:
     loads too; jerks need the state extended first.
     """
     top = table.state.top
+    families = table._families
+
+    def of(*names: str) -> list[Column]:
+        return [c for name in names for c in families.get(name, ())]
+
     if column.level <= top and len(table) <= SHORT:
         # one pass of a short table costs about what each of its steps does alone
-        return [c for c in table.schema if c.family in CHUNKED and c.level <= top]
+        return [c for c in of(*CHUNKED) if c.level <= top]
     if column.family in ("check", "residual"):
-        group = {"check", "residual"}
-        return [c for c in table.schema if c.family in group]
+        return of("check", "residual")
     if column.level > top:
-        return [c for c in table.schema if c.family == "point" and c.level > top]
-    return [
-        c
-        for c in table.schema
-        if c.family == "offset" or (c.family == "point" and c.level <= top)
-    ]
+        return [c for c in of("point") if c.level > top]
+    return [c for c in of("point", "offset") if c.level <= top]
 
 
 def materialize(table: Table, columns: Iterable[Column]) -> dict[str, Array]:
@@ -90,10 +90,9 @@ def materialize(table: Table, columns: Iterable[Column]) -> dict[str, Array]:
     chunked: list[Column] = []
     families: dict[str, list[Column]] = {}
     for column in columns:
-        if column.family in CHUNKED:
-            chunked.append(column)
-        else:
-            families.setdefault(column.family, []).append(column)
+        families.setdefault(column.family, []).append(column)
+    for family in CHUNKED:
+        chunked += families.pop(family, ())
     # a family's columns at once: those of several links or joints share each step
     for family, members in families.items():
         out.update(SIMPLE[family](table, members))
@@ -378,12 +377,8 @@ def _chunked(
     out: dict[str, Array] = {}
     wanted = [c for c in columns if c.family == "point" and c.level <= top]
     # a link's origin is in the state already; other points are rebuilt by slices
-    rebuilt = []
-    for p in sorted({c.key[0] for c in wanted}):
-        if plan.point_offset[p] == (0.0, 0.0):
-            out.update(_origin(table, p, range(top + 1)))
-        else:
-            rebuilt.append(p)
+    at_origin, rebuilt = _split(plan, {c.key[0] for c in wanted})
+    out.update(_origins(plan, state, at_origin, range(top + 1)))
     rebuilt, same = _distinct(plan, rebuilt)
     points = _allocate(plan, rebuilt, range(top + 1), n)
     offsets = sorted({c.owner for c in columns if c.family == "offset"})
@@ -444,19 +439,48 @@ def _chunked(
     return out
 
 
-def _origin(table: Table, p: int, levels: Iterable[int]) -> dict[str, Array]:
-    """Return the columns of a point at its link's origin, from the state."""
-    plan, n = table.plan, len(table)
-    state = table.motion(max(levels))
-    name, body = plan.points[p], plan.point_body[p]
+def _split(plan: Any, points: Iterable[int]) -> tuple[list[int], list[int]]:
+    """Split ``points`` into those at their link's origin and the others, in order."""
+    at_origin: list[int] = []
+    rebuilt: list[int] = []
+    for p in sorted(points):
+        (at_origin if plan.point_offset[p] == (0.0, 0.0) else rebuilt).append(p)
+    return at_origin, rebuilt
+
+
+def _origins(
+    plan: Any, state: Any, points: list[int], levels: Iterable[int]
+) -> dict[str, Array]:
+    """Return the columns of points at their link's origin, from ``state``.
+
+    ``state`` holds every level of ``levels``.
+    """
+    n, shift = len(state), plan.shift
+    names = _point_names(plan)
     out = {}
     for k in levels:
-        for axis, value in enumerate(state.origin(body, k)):
-            values = full(value, n)
-            if k == 0 and plan.shift[axis]:
-                values = values + plan.shift[axis]
-            out[f"{name}.{POINT_PARTS[k][axis]}"] = values
+        sx, sy = shift if k == 0 else (0.0, 0.0)
+        for p in points:
+            x, y = state.origin(plan.point_body[p], k)
+            x, y = full(x, n), full(y, n)
+            if sx:
+                x = x + sx
+            if sy:
+                y = y + sy
+            name_x, name_y = names[p][k]
+            out[name_x], out[name_y] = x, y
     return out
+
+
+def _point_names(plan: Any) -> tuple[tuple[tuple[str, str], ...], ...]:
+    """Return the column names of every point's components, by point and level."""
+    found = plan.memo.get("point-names")
+    if found is None:
+        found = plan.memo["point-names"] = tuple(
+            tuple((f"{name}.{x}", f"{name}.{y}") for x, y in POINT_PARTS)
+            for name in plan.points
+        )
+    return found  # type: ignore[no-any-return]
 
 
 def _allocate(
@@ -499,8 +523,10 @@ def _point(
         if target is None:
             continue
         x, y = target[rows], arrays[f"{name}.{parts[1]}"][rows]
-        point_into(m, offset_, k, x, y, spare)
-        if k == 0 and (shift[0] or shift[1]):
+        moved = k == 0 and (shift[0] or shift[1])
+        # the applied loads' centres of mass come from the motions' memo: kept
+        point_into(m, offset_, k, x, y, spare, keep=not moved)
+        if moved:
             x += shift[0]
             y += shift[1]
 
@@ -510,12 +536,8 @@ def _jerks(table: Table, points: list[int]) -> dict[str, Array]:
     plan, n = table.plan, len(table)
     state = table.motion(3)
     out: dict[str, Array] = {}
-    rebuilt = []
-    for p in points:
-        if plan.point_offset[p] == (0.0, 0.0):
-            out.update(_origin(table, p, (3,)))
-        else:
-            rebuilt.append(p)
+    at_origin, rebuilt = _split(plan, points)
+    out.update(_origins(plan, state, at_origin, (3,)))
     rebuilt, same = _distinct(plan, rebuilt)
     chunked = _allocate(plan, rebuilt, (3,), n)
     for start in range(0, n, CHUNK):

@@ -207,6 +207,7 @@ def _sweep(
         force_state,
         skipped[:, 0] if skipped.shape[1] == 1 else skipped,
         _index=chosen.index,
+        _families=chosen.families,
         _again=again,
     )
 

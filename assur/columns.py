@@ -24,7 +24,7 @@ from assur.plan import Plan
 if TYPE_CHECKING:
     pass
 
-__all__ = ["Column", "Selection", "pretty_unit", "schema", "selection"]
+__all__ = ["Column", "Selection", "families", "pretty_unit", "schema", "selection"]
 
 POINT_PARTS = (("x", "y"), ("vx", "vy"), ("ax", "ay"), ("jx", "jy"))
 """Column suffixes of a point's position, velocity, acceleration and jerk."""
@@ -253,6 +253,8 @@ class Selection:
     index: dict[str, Column]
     forces: bool
     top: int
+    families: dict[str, tuple[Column, ...]]
+    """The columns of each family, in table order."""
 
 
 def selection(plan: Plan, forces: bool, names: Any = None) -> Selection:
@@ -291,4 +293,14 @@ def selection(plan: Plan, forces: bool, names: Any = None) -> Selection:
 def _selection(columns: tuple[Column, ...]) -> Selection:
     forces = any(c.forces for c in columns)
     top = max(2 if forces else 0, *(c.level for c in columns))
-    return Selection(columns, {c.name: c for c in columns}, forces, top)
+    return Selection(
+        columns, {c.name: c for c in columns}, forces, top, families(columns)
+    )
+
+
+def families(columns: tuple[Column, ...]) -> dict[str, tuple[Column, ...]]:
+    """Return ``columns`` by family (see :attr:`Column.family`), in table order."""
+    out: dict[str, list[Column]] = {}
+    for c in columns:
+        out.setdefault(c.family, []).append(c)
+    return {family: tuple(members) for family, members in out.items()}

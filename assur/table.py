@@ -18,7 +18,7 @@ from assur._evaluate import CHUNKED, SHORT, evaluate, materialize
 from assur._kinematics import KinematicState
 from assur._text import suggest
 from assur._vec import Array
-from assur.columns import Column
+from assur.columns import Column, families
 from assur.kinetostatics import ForceState
 from assur.model import Mechanism
 from assur.plan import Plan
@@ -66,6 +66,9 @@ class Table:
     skipped: Array = field(default_factory=lambda: np.zeros(0))
     _cache: dict[str, Array] = field(default_factory=dict, repr=False, compare=False)
     _index: dict[str, Column] = field(default_factory=dict, repr=False, compare=False)
+    _families: dict[str, tuple[Column, ...]] = field(
+        default_factory=dict, repr=False, compare=False
+    )
     _states: dict[int, KinematicState] = field(
         default_factory=dict, repr=False, compare=False
     )
@@ -79,6 +82,8 @@ class Table:
     def __post_init__(self) -> None:
         if not self._index:
             self._index.update((c.name, c) for c in self.schema)
+        if not self._families:
+            self._families.update(families(self.schema))
 
     @property
     def state(self) -> KinematicState:
@@ -138,10 +143,9 @@ class Table:
         if len(self) <= SHORT and column.family not in CHUNKED:
             # in a short table a family's columns (every link's instant centre, say)
             # cost little more together than one alone: they are computed at once
+            cache = self._cache
             self._compute(
-                c
-                for c in self.schema
-                if c.family == column.family and c.name not in self._cache
+                c for c in self._families[column.family] if c.name not in cache
             )
         else:
             for key, values in evaluate(self, column).items():
@@ -159,8 +163,10 @@ class Table:
 
         One pass serves them all: cheaper than reading each by name.
         """
-        self._compute(c for c in self.schema if c.name not in self._cache)
-        return [self._cache[name] for name in self._index]
+        cache = self._cache
+        if len(cache) < len(self._index):
+            self._compute(c for c in self.schema if c.name not in cache)
+        return [cache[name] for name in self._index]
 
     def to_array(self) -> Array:
         """Return the table as one array (rows, columns).
@@ -169,23 +175,22 @@ class Table:
         column at a time, and a long table's rows would otherwise be written with a
         stride of a whole row (at 10^6 positions, several times slower).
         """
-        out = np.empty((len(self._index), len(self)))
-        for j, values in enumerate(self.arrays()):
-            out[j] = values
-        return out.T
+        if not self._index:
+            return np.empty((len(self), 0))
+        # one copy of every column into a block (columns, rows), seen transposed
+        return np.array(self.arrays()).T
 
     def _compute(self, columns: Iterable[Column]) -> None:
         """Compute ``columns`` (and those computed along with them) into the cache."""
+        index, cache = self._index, self._cache
         for key, values in materialize(self, columns).items():
-            self._keep(key, values)
+            if key in index and key not in cache:
+                cache[key] = _read_only(values)
 
     def _keep(self, key: str, values: Array) -> None:
-        """Keep a computed column, read-only; a view leaves the states' arrays be."""
+        """Keep a computed column, read-only."""
         if key in self._index and key not in self._cache:
-            if values.flags.writeable:
-                values = values.view()
-                values.setflags(write=False)
-            self._cache[key] = values
+            self._cache[key] = _read_only(values)
 
     def summary(self) -> dict[str, float]:
         """Return the few numbers joints and motors are sized on, by name.
@@ -260,6 +265,14 @@ class Table:
         from assur.plotting import draw
 
         return draw(self, angle=angle, **kwargs)
+
+
+def _read_only(values: Array) -> Array:
+    """Return ``values`` read-only: a view, which leaves the states' arrays be."""
+    if values.flags.writeable:
+        values = values.view()
+        values.flags.writeable = False
+    return values
 
 
 def _json_number(v: float) -> float | None:

@@ -142,17 +142,32 @@ def point(m: Motion, d: tuple[float, float], k: int) -> Vec:
 
 
 def point_into(
-    m: Motion, d: tuple[float, float], k: int, x: Any, y: Any, spare: Any
+    m: Motion,
+    d: tuple[float, float],
+    k: int,
+    x: Any,
+    y: Any,
+    spare: Any,
+    keep: bool = False,
 ) -> None:
     """Write what :func:`point` returns into the arrays ``x`` and ``y``.
 
     The same arithmetic to the last bit, with every product written into the
     targets or ``spare`` (an array of their size): a long sweep's columns are filled
-    slice by slice without a temporary array per operation.
+    slice by slice without a temporary array per operation. With ``keep``, a final
+    motion keeps ``x`` and ``y`` as the point's value (they must not change after).
     """
-    if d == ORIGIN or m.memo is not None or np.ndim(m.phi[0]) == 0:
+    memo = m.memo
+    if d == ORIGIN or np.ndim(m.phi[0]) == 0:
         x[...], y[...] = point(m, d, k)
         return
+    if memo is not None:
+        found = memo.get((d, k))
+        if found is not None:
+            x[...], y[...] = found
+            return
+        if keep:
+            memo[(d, k)] = (x, y)
     ux, uy = rotated(m, d)
     if k == 0:
         _shifted(m.ox[0], ux, x, 1.0)
