@@ -452,28 +452,31 @@ def interactive(mech, runs: int) -> dict:
     """Median times (ms) of the slider-crank's 360-position sweeps, run back to back.
 
     Each form runs ``runs`` times in a row after a warm-up call, as a user calling the
-    same function again (an interactive session, a plot updated with a slider).
+    same function again (an interactive session, a plot updated with a slider). The
+    same forms at one position give what a call costs whatever its length (keys
+    ``..._1_ms``): at 360 positions most of the time is that.
     """
-    deg = angles(360)
-    times = run_times(
-        {
-            "kinematics_call": lambda: assur.kinematics(mech, deg),
-            "kinematics": lambda: read_all(assur.kinematics(mech, deg)),
-            "forces_call": lambda: assur.forces(mech, deg),
-            "forces": lambda: read_all(assur.forces(mech, deg)),
-            "forces_array": lambda: assur.forces(mech, deg).to_array(),
-            "forces_sizing": lambda: sizing(assur.forces(mech, deg)),
-            "forces_torque": lambda: torque_only(mech, deg),
-            "hand_forces": lambda: ref.slider_crank_forces(deg),
-        },
-        runs,
-        interleave=False,
-    )
     out: dict = {"runs": runs}
-    for key, values in times.items():
-        out[f"{key}_360_ms"] = 1e3 * statistics.median(values)
-        out[f"{key}_360_min_ms"] = 1e3 * min(values)
-        out[f"{key}_360_quartiles_ms"] = [1e3 * v for v in spread(values)]
+    for n in (360, 1):
+        deg = angles(n)
+        times = run_times(
+            {
+                "kinematics_call": lambda d=deg: assur.kinematics(mech, d),
+                "kinematics": lambda d=deg: read_all(assur.kinematics(mech, d)),
+                "forces_call": lambda d=deg: assur.forces(mech, d),
+                "forces": lambda d=deg: read_all(assur.forces(mech, d)),
+                "forces_array": lambda d=deg: assur.forces(mech, d).to_array(),
+                "forces_sizing": lambda d=deg: sizing(assur.forces(mech, d)),
+                "forces_torque": lambda d=deg: torque_only(mech, d),
+                "hand_forces": lambda d=deg: ref.slider_crank_forces(d),
+            },
+            runs,
+            interleave=False,
+        )
+        for key, values in times.items():
+            out[f"{key}_{n}_ms"] = 1e3 * statistics.median(values)
+            out[f"{key}_{n}_min_ms"] = 1e3 * min(values)
+            out[f"{key}_{n}_quartiles_ms"] = [1e3 * v for v in spread(values)]
     return out
 
 
@@ -846,7 +849,7 @@ def report(res: dict) -> str:
     it, im = res["interactive"], res["import"]
     lines.append(
         f"slider-crank, 360 positions, ms (median of {it['runs']}, back to back; "
-        "quartiles in brackets):"
+        "quartiles in brackets), and at 1 position (what any call costs):"
     )
     for key, what in (
         ("kinematics_call", "kinematics, call alone"),
@@ -859,8 +862,10 @@ def report(res: dict) -> str:
         ("hand_forces", "hand-written numpy forces"),
     ):
         q = it[f"{key}_360_quartiles_ms"]
+        one = it.get(f"{key}_1_ms")
         lines.append(
             f"  {what:40s} {it[f'{key}_360_ms']:8.3f}  [{q[0]:.3f}, {q[1]:.3f}]"
+            + ("" if one is None else f"   1 position {one:6.3f}")
         )
     dr = res["driver_rates"]
     lines.append(
