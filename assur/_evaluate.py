@@ -88,9 +88,12 @@ def materialize(table: Table, columns: Iterable[Column]) -> dict[str, Array]:
     """
     out: dict[str, Array] = {}
     chunked: list[Column] = []
-    families: dict[str, list[Column]] = {}
-    for column in columns:
-        families.setdefault(column.family, []).append(column)
+    families: dict[str, Any] = {}
+    if columns is table.schema:
+        families.update(table._families)
+    else:
+        for column in columns:
+            families.setdefault(column.family, []).append(column)
     for family in CHUNKED:
         chunked += families.pop(family, ())
     # a family's columns at once: those of several links or joints share each step
@@ -158,11 +161,8 @@ def _continuous(angle: Array) -> Array:
 
 def _link(table: Table, columns: list[Column]) -> dict[str, Array]:
     n = len(table)
-    out = {}
-    for c in columns:
-        b, k = c.key
-        out[c.name] = full(table.motion(k).rotation(b, k), n)
-    return out
+    state = table.motion(max(c.level for c in columns))
+    return {c.name: full(state.rotation(*c.key), n) for c in columns}
 
 
 def _ic(table: Table, columns: list[Column]) -> dict[str, Array]:
@@ -243,10 +243,8 @@ def _centre(plan: Any, leaves: list[Array], x: Array, y: Array) -> None:
 
 def _slide(table: Table, columns: list[Column]) -> dict[str, Array]:
     n = len(table)
-    return {
-        c.name: full(table.motion(c.key[0]).slide[c.owner][c.key[0]], n)
-        for c in columns
-    }
+    slide = table.motion(max(c.level for c in columns)).slide
+    return {c.name: full(slide[c.owner][c.key[0]], n) for c in columns}
 
 
 def _forces(table: Table) -> ForceState:

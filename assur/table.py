@@ -164,7 +164,9 @@ class Table:
         One pass serves them all: cheaper than reading each by name.
         """
         cache = self._cache
-        if len(cache) < len(self._index):
+        if not cache:
+            self._compute(self.schema)
+        elif len(cache) < len(self._index):
             self._compute(c for c in self.schema if c.name not in cache)
         return [cache[name] for name in self._index]
 
@@ -185,7 +187,9 @@ class Table:
         index, cache = self._index, self._cache
         for key, values in materialize(self, columns).items():
             if key in index and key not in cache:
-                cache[key] = _read_only(values)
+                if values.flags.writeable:
+                    values = _read_only(values)
+                cache[key] = values
 
     def _keep(self, key: str, values: Array) -> None:
         """Keep a computed column, read-only."""
