@@ -32,6 +32,10 @@ __all__ = [
     "velocity_coefficients",
 ]
 
+BRANCH_TOLERANCE = 1e-6
+"""A continuation step stays on its branch when the step back from the pose it found
+returns to the pose it started from, within this many radians and this fraction of
+the group's reach."""
 CONTINUATION_STEP = math.radians(5.0)
 """Largest step of the driver along the continuation path of a Newton-solved group."""
 MAX_STEPS = 4000
@@ -256,7 +260,8 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
             np.trunc((drive[:, 0] - reference[0]) / step[0]), return_inverse=True
         )
         walked = _anchor_poses(plan, marks, branch_of)
-        return _anchored(plan, drive, branch_of, walked, which.ravel())
+        start = reference[0] + marks[which.ravel()] * step[0]
+        return _anchored(plan, drive, branch_of, walked, which.ravel(), start)
     return _straight(plan, drive, branch_of, reference, counts)
 
 
@@ -320,10 +325,16 @@ def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> list[
             sides.append([sign, last, far])
     while sides:
         rows = np.array([kept[sign * last] for sign, last, _ in sides]).T
-        at = np.array(
-            [[driver.reference + sign * (last + 1.0) * step] for sign, last, _ in sides]
+        at, start = (
+            np.array(
+                [
+                    [driver.reference + sign * (last + k) * step]
+                    for sign, last, _ in sides
+                ]
+            )
+            for k in (1.0, 0.0)
         )
-        found, failed = _step(plan, at, _nested(plan, key, rows), branch_of)
+        found, failed = _step(plan, at, _nested(plan, key, rows), branch_of, start)
         flat = _flat(plan, key, found)
         for i, side in enumerate(sides):
             side[1] += 1.0
@@ -361,6 +372,7 @@ def _anchored(
     branch_of: BranchOf | None,
     walked: list[Any],
     which: Any,
+    start: Array,
 ) -> list[Any]:
     """Reach ``drive`` (one driver) in one step from the poses ``walked`` to anchors.
 
@@ -369,20 +381,26 @@ def _anchored(
     steps of at most :data:`CONTINUATION_STEP`, at the cost of one step a position
     instead of one for every step of its distance (a dense sweep of a crank has many
     positions per anchor). A group's pose is NaN where it failed, at the anchor or
-    on the step.
+    on the step. ``start`` holds each position's anchor (rad or m).
     """
     guess = [[tuple(v[which] for v in pose) for pose in poses] for poses in walked]
-    return _step(plan, drive, guess, branch_of)[0]
+    return _step(plan, drive, guess, branch_of, start[:, None])[0]
 
 
 def _step(
-    plan: Plan, at: Array, current: list[Any] | None, branch_of: BranchOf | None
+    plan: Plan,
+    at: Array,
+    current: list[Any] | None,
+    branch_of: BranchOf | None,
+    start: Array | None = None,
 ) -> tuple[list[Any], Mask]:
     """Take one continuation step: every group at driver positions ``at``.
 
     ``current`` holds the Newton groups' poses to start from (None, or a group's
-    None: the reference pose). Returns their solved poses, and whether each group
-    failed at each position (groups, positions).
+    None: the reference pose), at driver positions ``start`` (n, d). Returns their
+    solved poses, and whether each group failed at each position (groups,
+    positions). With ``start``, a pose that is not on the branch of the one it
+    started from fails too (:func:`_off_branch`).
     """
     still = [0.0] * len(plan.drivers)
     bodies = drivers(plan, at, still, still)
@@ -391,13 +409,57 @@ def _step(
     failed = []
     for index, solver in enumerate(plan.solvers):
         if solver.newton:
-            start = None if current is None else current[len(found)]
-            assembly = solver.assemble(bodies, at.shape[0], start)
+            guess = None if current is None else current[len(found)]
+            assembly = solver.assemble(bodies, at.shape[0], guess)
             found.append(assembly.guess)
             failed.append(assembly.failed)
         else:
             solver.assemble(bodies, at.shape[0], branch=branch.get(index))
-    return found, np.array(failed, dtype=bool).reshape(len(found), at.shape[0])
+    mask = np.array(failed, dtype=bool).reshape(len(found), at.shape[0])
+    if start is not None and found:
+        off = _off_branch(plan, start, current, found, branch_of) & ~mask
+        if off.any():
+            mask |= off
+            found = [
+                [tuple(np.where(bad, np.nan, v) for v in pose) for pose in poses]
+                for poses, bad in zip(found, off, strict=True)
+            ]
+    return found, mask
+
+
+def _off_branch(
+    plan: Plan,
+    start: Array,
+    current: list[Any] | None,
+    found: list[Any],
+    branch_of: BranchOf | None,
+) -> Mask:
+    """Return where a step left the branch it started on (groups, positions).
+
+    Past the driver's limit (a crank that can only rock, say) Newton's method may
+    still converge, to another assembly of the group far from the one followed: the
+    step back to ``start`` from such a pose returns to that other assembly, not to
+    the pose it started from. A step on the branch returns whence it came.
+    """
+    back, failed = _step(plan, start, found, branch_of)
+    # the groups solved by Newton's method know their reference pose and reach
+    newton: list[Any] = [solver for solver in plan.solvers if solver.newton]
+    off = failed.copy()
+    for g, solver in enumerate(newton):
+        began = _poses(solver, None if current is None else current[g])
+        for returned, pose in zip(back[g], began, strict=True):
+            phi, x, y = (np.abs(a - b) for a, b in zip(returned, pose, strict=True))
+            with np.errstate(invalid="ignore"):
+                near = np.maximum(phi, np.maximum(x, y) / solver.reach)
+                off[g] |= ~(near <= BRANCH_TOLERANCE)
+    return off
+
+
+def _poses(solver: Any, poses: Any) -> Any:
+    """Return a Newton group's poses, the reference pose where ``poses`` is None."""
+    if poses is not None:
+        return poses
+    return [(0.0, x, y) for x, y in solver.origins]
 
 
 def _straight(
@@ -409,24 +471,29 @@ def _straight(
 ) -> list[Any]:
     """Walk every position to ``drive`` on its own path, ``counts`` steps long."""
     n = drive.shape[0]
-    newton = sum(1 for solver in plan.solvers if solver.newton)
-    result: list[Any] = [None] * newton
-    current: list[Any] = [None] * newton
+    newton = [solver for solver in plan.solvers if solver.newton]
+    # every pose NaN until its position is reached (an empty sweep has none)
+    result: list[Any] = [
+        [tuple(np.full(n, np.nan) for _ in range(3)) for _ in solver.bodies]
+        for solver in newton
+    ]
+    current: list[Any] = [None] * len(newton)
     active = np.arange(n)
     s = 1
     while active.size:
-        fraction = np.minimum(s / counts[active], 1.0)
-        at = reference + (drive[active] - reference) * fraction[:, None]
-        current, failed = _step(plan, at, current, branch_of)
+        fraction, before = (
+            np.minimum(k / counts[active], 1.0)[:, None] for k in (s, s - 1)
+        )
+        at, start = (
+            reference + (drive[active] - reference) * f for f in (fraction, before)
+        )
+        current, failed = _step(plan, at, current, branch_of, start)
+        fraction = fraction[:, 0]
         # arrived, or stopped by a failed step
         finish = (fraction >= 1.0) | failed.any(axis=0)
         if finish.any():
             rows = active[finish]
             for g, poses in enumerate(current):
-                if result[g] is None:
-                    result[g] = [
-                        tuple(np.full(n, np.nan) for _ in pose) for pose in poses
-                    ]
                 for kept, pose in zip(result[g], poses, strict=True):
                     for whole, part in zip(kept, pose, strict=True):
                         whole[rows] = part[finish]
@@ -576,13 +643,17 @@ def motions(plan: Plan, state: KinematicState, finished: bool = True) -> list[Mo
 def extend(plan: Plan, state: KinematicState) -> KinematicState:
     """Return ``state`` with the jerks solved too (level 3), group by group.
 
+    A state of positions alone (that of a table of few columns) has its velocities
+    and accelerations solved as well.
+
     A long sweep is solved in slices of :data:`CHUNK` positions, as the sweep was;
     only the jerks are new, the lower levels are the state's own arrays.
     """
     if state.top >= 3:
         return state
     if state.top != 2:
-        return state_of(plan, _jerks(plan, state), state.drive, _rates(state), 3)
+        bodies = _solved(plan, state, range(state.top + 1, LEVELS))
+        return state_of(plan, bodies, state.drive, _rates(state), 3)
     n = len(state)
     if n <= CHUNK:
         bodies = _jerks(plan, state)
@@ -616,9 +687,25 @@ def _jerk_slices(plan: Plan, state: KinematicState) -> Any:
 
 def _jerks(plan: Plan, state: KinematicState) -> list[Motion]:
     """Return the motions of ``state`` with their jerks solved."""
+    return _solved(plan, state, range(3, LEVELS))
+
+
+def _solved(plan: Plan, state: KinematicState, levels: range) -> list[Motion]:
+    """Return the motions of ``state`` with the derivatives ``levels`` solved too.
+
+    ``levels`` are those above ``state.top``; the driving links move as the state's
+    rates say at every level.
+    """
     bodies = motions(plan, state, finished=False)
+    if state.top < 2:
+        # the state holds the drivers' motions up to its top level only
+        moving = drivers(plan, state.drive, *_rates(state))
+        for d in plan.drivers:
+            bodies[d.body] = moving[d.body]
     for solver in plan.solvers:
-        solver.derivative(bodies, 3, solver.linearize(bodies))
+        lin = solver.linearize(bodies)
+        for k in levels:
+            solver.derivative(bodies, k, lin)
         for b in solver.bodies:
             bodies[b].finish()
     return bodies

@@ -177,6 +177,32 @@ def test_jerks_solved_later_equal_jerks_solved_at_once(example):
             )
 
 
+def test_the_motion_of_a_table_of_few_columns_is_solved_to_the_level_asked(example):
+    # a table of one position column keeps positions only; its motion at a higher
+    # level solves the derivatives it lacks, the drivers moving at the sweep's rates
+    at = positions(example, 12)
+    drivers = len(example.drivers)
+    omega = np.linspace(2.0, 5.0, len(at) * drivers).reshape(drivers, -1).T.squeeze()
+    epsilon = np.linspace(-30.0, 40.0, len(at) * drivers).reshape(drivers, -1).T
+    epsilon = epsilon.squeeze()
+    whole = assur.kinematics(example, at, omega=omega, epsilon=epsilon)
+    point = next(c.name for c in whole.schema if c.family == "point")
+    few = assur.kinematics(example, at, columns=[point], omega=omega, epsilon=epsilon)
+    assert few.state.top == 0
+    for level in (1, 2, 3):
+        state = few.motion(level)
+        assert state.top >= level
+        got = leaves((state.motion, state.slide))
+        want = leaves((whole.state.motion, whole.state.slide))
+        for a, b in zip(got, want, strict=True):
+            np.testing.assert_allclose(
+                np.broadcast_to(a, len(at)),
+                np.broadcast_to(b, len(at)),
+                rtol=1e-11,
+                atol=1e-11 * magnitude(np.asarray(b, dtype=float)),
+            )
+
+
 # ------------------------------------------------------------------------------------
 # Driver speed and acceleration per position
 

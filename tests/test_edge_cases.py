@@ -1,19 +1,24 @@
 """Edge cases found in review: each was a traceback, a wrong answer or a lost pose.
 
 Mechanism files in tests/data/edge: a class III triad with a prismatic pair whose
-crank positions past 114 deg are reached only the other way round the circle, and a
-triad with three parallel links that stands at a dead centre at 90 deg.
+crank positions past 114 deg are reached only the other way round the circle, a
+triad with three parallel links that stands at a dead centre at 90 deg, and two
+triads whose crank can only rock, past whose limits Newton's method finds another
+assembly.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import math
+import warnings
 
 import numpy as np
 import pytest
 
 import assur
 from assur.cli import main
+from assur.plan import plan_of
 
 from .conftest import DATA, EXAMPLES
 
@@ -33,6 +38,38 @@ def test_triad_reached_the_other_way_round():
     t = assur.kinematics(mech, [300.0, -60.0])
     np.testing.assert_allclose(t["plate.angle"][0], t["plate.angle"][1], atol=1e-9)
     np.testing.assert_allclose(t["D.x"][0], t["D.x"][1], atol=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("name", "start", "stop", "limit", "side"),
+    [
+        ("triad_past_its_lock.toml", -100.0, 0.0, -63.0, -1.0),
+        ("triad_locks_ahead.toml", 100.0, 118.0, 116.6, 1.0),
+    ],
+)
+def test_a_triad_past_its_limit_is_not_assembled_on_another_branch(
+    name, start, stop, limit, side
+):
+    """The crank can rock up to ``limit`` (deg from its reference) on one ``side``."""
+    # a step past the crank's limit may converge to another assembly of the triad;
+    # the step back to where it started finds that assembly, not the pose it came
+    # from, and the position fails instead of jumping there
+    mech = assur.load(EDGE / name)
+    ref = math.degrees(plan_of(mech).drivers[0].reference)
+    at = ref + np.arange(start, stop + 0.25, 0.5)
+    with pytest.raises(assur.AssemblyError, match=r"triad \(rod, plate, left, right\)"):
+        assur.kinematics(mech, at)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)  # near the limit
+        table = assur.kinematics(mech, at, skip_unassembled=True)
+    beyond = (at - ref - limit) * side > 0.0
+    np.testing.assert_array_equal(table["angle"], at[~beyond])
+    # what is left is one branch: C moves little from a position to the next
+    moves = np.hypot(np.diff(table["C.x"]), np.diff(table["C.y"]))
+    assert moves.max() < 20.0 * np.median(moves)
+    # a position alone is refused too
+    with pytest.raises(assur.AssemblyError):
+        assur.kinematics(mech, [ref + limit + 2.0 * side])
 
 
 def test_triad_at_a_dead_centre_gives_one_error(capsys):
@@ -189,3 +226,17 @@ def test_graph_of_every_example():
             j.name for j in mech.joints
         )
         assert nx.is_connected(g)
+
+
+def test_an_empty_sweep_gives_an_empty_table(example):
+    # a class III group is followed by continuation: with no position, nothing to
+    # walk to (this was a TypeError)
+    from .test_kinetostatics import needs_forces
+
+    runs = [assur.kinematics] + ([assur.forces] if needs_forces(example) else [])
+    drivers = len(example.drivers)
+    none = np.zeros(0) if drivers == 1 else np.zeros((0, drivers))
+    for run in runs:
+        table = run(example, none)
+        assert len(table) == 0
+        assert table.to_array().shape == (0, len(table.columns))
