@@ -21,6 +21,7 @@ from assur.errors import UsageError
 
 __all__ = [
     "MAX_POSITIONS",
+    "check_distinct",
     "check_not_input",
     "check_range",
     "load_mechanism",
@@ -165,16 +166,40 @@ def check_not_input(option: str, output: Any, source: Path) -> None:
     """Refuse an output that is the mechanism file read (the same file, any name)."""
     if str(output) == "-":
         return
-    try:
-        same = os.path.samefile(output, source)
-    except (OSError, ValueError):
-        same = os.path.realpath(output) == os.path.realpath(source)
-    if same:
+    if _same_file(output, source):
         msg = (
             f"{option} {path_text(output)}: is the mechanism file being read; "
             "expected another file for the output"
         )
         raise UsageError(msg)
+
+
+def check_distinct(outputs: list[tuple[str, Any]]) -> None:
+    """Refuse two outputs (option, path) that name the same file.
+
+    Each would be written whole in turn, the last replacing the first: a file
+    silently lost. Standard output (``-``) and options not given are left out.
+    """
+    seen: list[tuple[str, Any]] = []
+    for option, path in outputs:
+        if not path or str(path) == "-":
+            continue
+        for other, earlier in seen:
+            if _same_file(path, earlier):
+                msg = (
+                    f"{option} {path_text(path)}: is the file of {other} too; "
+                    "expected a file of its own for each output"
+                )
+                raise UsageError(msg)
+        seen.append((option, path))
+
+
+def _same_file(a: Any, b: Any) -> bool:
+    """Whether paths ``a`` and ``b`` name one file (existing or not)."""
+    try:
+        return os.path.samefile(a, b)
+    except (OSError, ValueError):
+        return os.path.realpath(a) == os.path.realpath(b)
 
 
 def terminal() -> bool:

@@ -12,7 +12,9 @@ import contextlib
 import json
 import math
 import os
+import signal
 import sys
+import threading
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
@@ -23,6 +25,7 @@ import numpy as np
 from assur import _output
 from assur._cli_common import (
     add_angle_option,
+    check_distinct,
     check_not_input,
     load_mechanism,
     one_position,
@@ -153,19 +156,58 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return the exit status.
 
     0 when done, 2 for bad input or an output that cannot be written (one line on
-    standard error), 130 after Ctrl-C. A reader of standard output that has gone
-    (``| head``) ends the command quietly with status 0.
+    standard error), 130 after Ctrl-C, 128 plus the signal's number after SIGTERM or
+    SIGHUP (143, 129). A reader of standard output that has gone (``| head``) ends
+    the command quietly with status 0.
     """
     try:
-        with _lenient_streams():
+        with _stoppable(), _lenient_streams():
             return _main(list(sys.argv[1:] if argv is None else argv))
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, _Stopped) as stop:
         try:
             sys.stdout.flush()
         except OSError:
             _quiet_stdout()
+        if isinstance(stop, _Stopped):
+            print("assur: terminated", file=sys.stderr)
+            return 128 + stop.signum
         print("assur: interrupted", file=sys.stderr)
         return INTERRUPTED
+
+
+class _Stopped(BaseException):
+    """SIGTERM or SIGHUP, raised where the command is: it unwinds like Ctrl-C."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+@contextlib.contextmanager
+def _stoppable() -> Iterator[None]:
+    """Let SIGTERM and SIGHUP end the command as Ctrl-C does, while it runs.
+
+    By default they end the process at once, leaving an output's temporary file
+    behind; raised as an exception, they remove it and keep the old file. (Only
+    the main thread can take signals; SIGKILL cannot be taken at all.)
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def stop(signum: int, frame: Any) -> None:
+        raise _Stopped(signum)
+
+    saved = {}
+    for name in ("SIGTERM", "SIGHUP"):
+        number = getattr(signal, name, None)
+        if number is not None:
+            saved[number] = signal.signal(number, stop)
+    try:
+        yield
+    finally:
+        for number, handler in saved.items():
+            signal.signal(number, handler)
 
 
 def _main(argv: list[str]) -> int:
@@ -400,6 +442,7 @@ def _check_outputs(args: argparse.Namespace) -> None:
         target = getattr(args, option[2:])
         if target:
             check_not_input(option, target, args.file)
+    check_distinct([("--csv", args.csv), ("--parquet", args.parquet)])
     if args.csv == "-" and getattr(args, "summary", False):
         msg = (
             "--csv - and --summary: both write to standard output; expected --csv "

@@ -20,7 +20,12 @@ from typing import Any
 
 import numpy as np
 
-from assur._cli_common import check_not_input, load_mechanism, parse_angles
+from assur._cli_common import (
+    check_distinct,
+    check_not_input,
+    load_mechanism,
+    parse_angles,
+)
 from assur._output import path_text, write_stdout, write_text
 from assur._vec import Array
 from assur.columns import pretty_unit
@@ -132,13 +137,14 @@ def _check_options(args: argparse.Namespace) -> None:
     if args.csv:
         check_not_input("--csv", args.csv, args.file)
     if args.startup_csv is not None:
-        if args.startup_csv == "-" or args.startup_csv == args.csv:
+        if args.startup_csv == "-":
             msg = (
                 f"--startup-csv {args.startup_csv}: expected a file of its own "
                 "(not standard output, nor the --csv file)"
             )
             raise UsageError(msg)
         check_not_input("--startup-csv", args.startup_csv, args.file)
+        check_distinct([("--csv", args.csv), ("--startup-csv", args.startup_csv)])
 
 
 class _Joined:

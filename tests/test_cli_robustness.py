@@ -68,7 +68,19 @@ def test_ctrl_c_anywhere_is_status_130(monkeypatch, capsys):
     assert err == "assur: interrupted\n"
 
 
-def test_ctrl_c_during_an_animation_keeps_the_old_file(tmp_path: Path):
+@pytest.mark.parametrize(
+    ("stop", "status", "said"),
+    [
+        (signal.SIGINT, 130, "interrupted"),
+        (signal.SIGTERM, 143, "terminated"),
+        (getattr(signal, "SIGHUP", signal.SIGTERM), None, "terminated"),
+    ],
+)
+def test_a_stop_during_an_animation_keeps_the_old_file(
+    tmp_path: Path, stop, status, said
+):
+    # Ctrl-C, and the signals that end a job (timeout, a CI cancel, a closed
+    # terminal), remove the hidden temporary file and keep the old one
     target = tmp_path / "film.gif"
     target.write_bytes(b"the old film")
     process = subprocess.Popen(
@@ -95,13 +107,13 @@ def test_ctrl_c_during_an_animation_keeps_the_old_file(tmp_path: Path):
     # wait until the film is being written, in its temporary file
     while len(os.listdir(tmp_path)) < 2 and time.monotonic() < deadline:
         time.sleep(0.05)
-    process.send_signal(signal.SIGINT)
+    process.send_signal(stop)
     try:
         _out, err = process.communicate(timeout=60)
     finally:
         process.kill()
-    assert process.returncode == 130, err
-    assert err == "assur: interrupted\n"
+    assert process.returncode == (128 + stop if status is None else status), err
+    assert err == f"assur: {said}\n"
     assert target.read_bytes() == b"the old film"
     assert os.listdir(tmp_path) == ["film.gif"]
 

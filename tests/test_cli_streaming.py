@@ -436,3 +436,20 @@ def test_parquet_into_a_fifo(tmp_path, capsys):
     assert status == 0, err
     assert pq.read_table(io.BytesIO(received[0])).num_rows == 360
     assert os.listdir(tmp_path) == ["pipe"]
+
+
+@pytest.mark.parametrize("command", ["kinematics", "forces"])
+def test_two_outputs_to_one_file_are_refused(tmp_path, capsys, command):
+    # written in turn, the second would replace the first: refused before any work,
+    # whatever the spelling of the path
+    target = tmp_path / "same.out"
+    other = f"{tmp_path}/./same.out"
+    status, out, err = run(
+        capsys, command, SLIDER_CRANK, "--csv", target, "--parquet", other
+    )
+    assert (status, out) == (2, "")
+    assert err == (
+        f"assur: error: {SLIDER_CRANK}: --parquet {other}: is the file of --csv too; "
+        "expected a file of its own for each output\n"
+    )
+    assert not target.exists()

@@ -171,6 +171,10 @@ def test_startup_samples_to_csv_and_json(capsys, tmp_path: Path):
     ("args", "message"),
     [
         (["--startup-csv", "-"], "--startup-csv -: expected a file of its own"),
+        (
+            ["--csv", "one.csv", "--startup-csv", "./one.csv"],
+            "--startup-csv ./one.csv: is the file of --csv too",
+        ),
         (["--delta", "0"], "--delta 0: expected a coefficient of speed fluctuation"),
         (["--delta", "nan"], "--delta nan: expected a coefficient"),
         (["--flywheel", "-2"], "--flywheel -2: expected an inertia >= 0"),
