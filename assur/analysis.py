@@ -87,8 +87,9 @@ def kinematics(
         Driver positions, deg (m for a prismatic driver); shape (n,) or, with several
         drivers, (n, drivers).
     skip_unassembled : bool
-        Leave out the positions where a group cannot be assembled instead of raising;
-        ``Table.skipped`` lists them.
+        Leave out the positions where a group cannot be assembled, stands at a dead
+        centre or is locked by friction, instead of raising; ``Table.skipped`` lists
+        them.
     omega, epsilon : float or array_like, optional
         The driver's speed (rad/s; m/s for a prismatic driver) and acceleration
         (rad/s^2; m/s^2) at every position, replacing the file's constants: a number,
@@ -562,6 +563,13 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
             )
             raise UsageError(msg)
     return out[0], out[1]
+
+
+SKIPPED_WHY = (
+    "where a group cannot be assembled, stands at a dead centre or is locked by "
+    "friction"
+)
+"""What the positions ``skip_unassembled`` leaves out have in common."""
 
 
 def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask | None:

@@ -44,6 +44,7 @@ from assur._output import (
 )
 from assur._text import describe, suggest
 from assur._vec import Array
+from assur.analysis import SKIPPED_WHY
 from assur.errors import (
     AssurError,
     AssurWarning,
@@ -107,7 +108,7 @@ def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
         p.add_argument(
             "--skip-unassembled",
             action="store_true",
-            help="leave out positions that cannot be assembled",
+            help=f"leave out the positions {SKIPPED_WHY}",
         )
     p.add_argument(
         "--summary",
@@ -414,7 +415,7 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
         more = ", ..." if skipped.more else ""
         print(
             f"assur: note: {path_text(args.file)}: left out {skipped.count} "
-            f"position(s) that cannot be assembled: {shown}{more}",
+            f"position(s) {SKIPPED_WHY}: {shown}{more}",
             file=sys.stderr,
         )
     if summary is not None:

@@ -14,6 +14,7 @@ import argparse
 import json
 import math
 import sys
+import warnings
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -29,7 +30,7 @@ from assur._cli_common import (
 from assur._output import path_text, write_stdout, write_text
 from assur._vec import Array
 from assur.columns import pretty_unit
-from assur.errors import UsageError
+from assur.errors import AssurWarning, ModelError, UsageError
 
 __all__ = ["register"]
 
@@ -92,7 +93,24 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     if args.delta is not None:
         sizing = assur.flywheel_sizing(mech, args.delta)
         inertia = sizing.exact
-    result = assur.dynamics(mech, angles, flywheel=inertia)
+    start = args.startup or args.startup_csv is not None
+    run = assur.startup(mech, inertia) if start else None
+    try:
+        result = assur.dynamics(mech, angles, flywheel=inertia)
+    except ModelError as err:
+        if run is None or args.csv or args.forces:
+            raise
+        # a motor may carry the crank round where no steady state at the file's
+        # omega (under a constant torque) exists: the start-up is still shown
+        warnings.warn(f"{err}; shown: the start-up alone", AssurWarning, stacklevel=2)
+        if args.startup_csv is not None:
+            _write_startup(args, run)
+        if args.json:
+            document = {"name": mech.name, "startup": _startup_data(run)}
+            write_stdout(json.dumps(document) + "\n")
+        else:
+            write_stdout(_header(mech, _startup_lines(run)) + "\n")
+        return 0
     table: Any = result
     if args.forces:
         motion = assur.forces(
@@ -102,8 +120,6 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
             epsilon=result["driver.epsilon"],
         )
         table = _Joined(result, motion)
-    start = args.startup or args.startup_csv is not None
-    run = assur.startup(mech, inertia) if start else None
     if run is not None and args.startup_csv is not None:
         _write_startup(args, run)
     if args.json:
@@ -245,14 +261,24 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
             ),
         )
     if run is not None:
-        lines += [
-            ("start-up", f"settles in {run.settle_time:.6g} s ({run.turns} turns)"),
-            (
-                "periodic motion",
-                f"mean speed {run.mean_speed:.6g} rad/s, delta = {run.delta:.6g}",
-            ),
-        ]
-    name = result.mechanism.name or "Mechanism"
+        lines += _startup_lines(run)
+    return _header(result.mechanism, lines)
+
+
+def _startup_lines(run: Any) -> list[tuple[str, str]]:
+    """Return the figures of a start-up, as (label, value) lines."""
+    return [
+        ("start-up", f"settles in {run.settle_time:.6g} s ({run.turns} turns)"),
+        (
+            "periodic motion",
+            f"mean speed {run.mean_speed:.6g} rad/s, delta = {run.delta:.6g}",
+        ),
+    ]
+
+
+def _header(mechanism: Any, lines: list[tuple[str, str]]) -> str:
+    """Return the mechanism's name over the figures' ``lines``, aligned."""
+    name = mechanism.name or "Mechanism"
     width = max(len(k) for k, _ in lines)
     body = "\n".join(f"  {k.ljust(width)}  {v}" for k, v in lines)
     return f"{name}: dynamic model reduced to the crank\n{body}"
@@ -296,18 +322,7 @@ def _json(result: Any, table: Any, sizing: Any, run: Any) -> str:
             "energy_swing": sizing.energy_swing,
         }
     if run is not None:
-        data["startup"] = {
-            "settle_time": run.settle_time,
-            "turns": run.turns,
-            "period": run.period,
-            "mean_speed": run.mean_speed,
-            "speed_max": run.speed_max,
-            "speed_min": run.speed_min,
-            "delta": run.delta,
-            "time": run.time.tolist(),
-            "angle": run.angle.tolist(),
-            "omega": run.omega.tolist(),
-        }
+        data["startup"] = _startup_data(run)
     data["columns"] = list(table.columns)
     values = np.column_stack([np.asarray(table[c], dtype=float) for c in table.columns])
     data["rows"] = [
@@ -318,3 +333,19 @@ def _json(result: Any, table: Any, sizing: Any, run: Any) -> str:
         for row in values.tolist()
     ]
     return json.dumps(data, indent=1, allow_nan=False)
+
+
+def _startup_data(run: Any) -> dict[str, Any]:
+    """Return a start-up's figures and its motion, JSON-ready."""
+    return {
+        "settle_time": run.settle_time,
+        "turns": run.turns,
+        "period": run.period,
+        "mean_speed": run.mean_speed,
+        "speed_max": run.speed_max,
+        "speed_min": run.speed_min,
+        "delta": run.delta,
+        "time": run.time.tolist(),
+        "angle": run.angle.tolist(),
+        "omega": run.omega.tolist(),
+    }

@@ -399,7 +399,8 @@ def test_skip_unassembled(double_rocker, capsys):
     assert len(lines) == 1
     assert lines[0].startswith(
         f"assur: note: {double_rocker}: left out 9 position(s) "
-        "that cannot be assembled: "
+        "where a group cannot be assembled, stands at a dead centre or is locked by "
+        "friction: "
     )
     out, err = succeeds(
         capsys,
@@ -427,5 +428,5 @@ def test_skip_unassembled_lists_positions_in_degrees(double_rocker, capsys):
         ["kinematics", double_rocker, "--angles", "0:360:30", "--skip-unassembled"],
     )
     assert err.splitlines()[0].endswith(
-        "cannot be assembled: 0, 90, 120, 150, 180, 210, 240, 270, 360"
+        "friction: 0, 90, 120, 150, 180, 210, 240, 270, 360"
     )

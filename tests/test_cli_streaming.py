@@ -173,7 +173,8 @@ def test_many_runs_near_dead_centres_are_cut_as_one_table_cuts_them(
     shown = ", ".join(f"{x:g}" for x in np.ravel(table.skipped)[:20])
     assert lines[0] == (
         f"assur: note: {double_rocker}: left out {len(table.skipped)} position(s) "
-        f"that cannot be assembled: {shown}, ..."
+        "where a group cannot be assembled, stands at a dead centre or is locked by "
+        f"friction: {shown}, ..."
     )
     assert len(lines) == 2
 

@@ -218,3 +218,31 @@ def test_the_table_is_not_written_over_the_input(capsys, tmp_path: Path):
     line = one_error(capsys, "dynamics", copy, "--csv", copy)
     assert "is the mechanism file being read" in line
     assert copy.read_text() == FOUR_BAR.read_text()
+
+
+def test_startup_where_the_file_speed_has_no_steady_state(capsys, tmp_path: Path):
+    # the motor carries the crank round; a constant torque at the file's omega
+    # would not: the start-up is shown, with a warning, and no table is made up
+    path = Path(__file__).parent / "data" / "edge" / "four_bar_motor_slow.toml"
+    with pytest.raises(assur.ModelError, match="would come to rest"):
+        assur.dynamics(assur.load(path))
+    run_ = assur.startup(assur.load(path))
+    status, out, err = run(capsys, "dynamics", path, "--startup")
+    assert status == 0
+    assert err.count("\n") == 1
+    assert err.startswith("assur: warning: ")
+    assert "would come to rest" in err
+    assert err.endswith("shown: the start-up alone\n")
+    assert f"mean speed {run_.mean_speed:.6g} rad/s" in out
+    assert "nominal crank speed" not in out
+    status, out, _ = run(capsys, "dynamics", path, "--startup", "--json")
+    assert status == 0
+    data = json.loads(out)
+    assert set(data) == {"name", "startup"}
+    assert data["startup"]["mean_speed"] == run_.mean_speed
+    # a table of the steady state cannot be written: the error stands
+    target = tmp_path / "steady.csv"
+    status, _, err = run(capsys, "dynamics", path, "--startup", "--csv", target)
+    assert status == 2
+    assert "would come to rest" in err.splitlines()[-1]
+    assert not target.exists()

@@ -14,7 +14,7 @@ import numpy as np
 
 from assur._structure import Structure
 from assur._text import roman
-from assur.analysis import Table
+from assur.analysis import SKIPPED_WHY, Table
 from assur.html._data import all_groups, public
 from assur.html._series import table_columns
 from assur.plan import Plan
@@ -68,8 +68,7 @@ def meta_html(struct: Structure, table: Table, data: dict[str, Any]) -> str:
     if table.skipped.size:
         total = len(table) + table.skipped.shape[0]
         parts.append(
-            f"{table.skipped.shape[0]} of {total} positions left out (the mechanism "
-            "cannot be assembled there)"
+            f"{table.skipped.shape[0]} of {total} positions left out ({SKIPPED_WHY})"
         )
     return " · ".join(escape(p) for p in parts)
 
