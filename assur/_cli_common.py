@@ -24,6 +24,7 @@ __all__ = [
     "check_distinct",
     "check_not_input",
     "check_range",
+    "check_structure",
     "load_mechanism",
     "parse_angles",
     "positions",
@@ -104,6 +105,7 @@ def positions(mech: Any, spec: str | None, option: str = "--angles") -> np.ndarr
     """Driver positions from ``--angles`` or the default full turn."""
     from assur.analysis import default_positions
 
+    check_structure(mech)
     if spec is None:
         return default_positions(mech)
     return parse_angles(spec, max(1, len(mech.drivers)), option)
@@ -145,21 +147,60 @@ def add_angle_option(parser: Any) -> None:
 def one_position(mech: Any, spec: str | None) -> Any:
     """Return the one driver position of ``--angle`` (default: the reference pose).
 
-    A value per driver (deg, or m for a prismatic driver); more than one position
-    is a UsageError.
+    A value per driver (deg, or m for a prismatic driver), separated by commas; a
+    range, or a count that is not the drivers', is a UsageError. A mechanism whose
+    structure is wrong (more drivers than degrees of freedom, say) is refused first.
+
+    Examples
+    --------
+    >>> import assur
+    >>> one_position(assur.catalog.four_bar(), "30").tolist()
+    [30.0]
     """
     from assur.analysis import default_positions
 
+    check_structure(mech)
     if spec is None:
         return default_positions(mech)[0]
-    found = parse_angles(spec, max(1, len(mech.drivers)), option="--angle")
-    if found.shape[0] != 1:
+    drivers = max(1, len(mech.drivers))
+    parts = spec.split(",")
+    if ":" in spec:
         msg = (
-            f"--angle {describe(spec)[1:-1]}: {found.shape[0]} positions; expected "
-            "one value per driver"
+            f"--angle {describe(spec)[1:-1]}: a range; expected one value per driver "
+            "(--angles takes ranges)"
         )
         raise UsageError(msg)
-    return found[0]
+    values = []
+    for part in parts:
+        try:
+            value = float(part)
+        except ValueError:
+            value = math.nan
+        if not math.isfinite(value):
+            msg = (
+                f"--angle: cannot read {describe(part)}; expected a number, one per "
+                "driver separated by commas"
+            )
+            raise UsageError(msg)
+        values.append(value)
+    if len(values) != drivers:
+        msg = (
+            f"--angle {describe(spec)[1:-1]}: {len(values)} value(s) for {drivers} "
+            "driver(s); expected one value per driver, separated by commas"
+        )
+        raise UsageError(msg)
+    return np.array(values)
+
+
+def check_structure(mech: Any) -> None:
+    """Raise the error of a mechanism whose structure is wrong, if it has one.
+
+    Positions are counted per driver: with more drivers than degrees of freedom a
+    message about the count of ``--angles`` would hide the real fault.
+    """
+    from assur.plan import plan_of
+
+    plan_of(mech)
 
 
 def check_not_input(option: str, output: Any, source: Path) -> None:

@@ -49,6 +49,7 @@ from assur.errors import (
     AssurError,
     AssurWarning,
     DecompositionError,
+    ModelError,
     OutputError,
     UsageError,
 )
@@ -280,6 +281,10 @@ def _quiet_stdout() -> None:
         os.close(devnull)
 
 
+class _OtherFileError(ModelError):
+    """A fault of a file other than the mechanism's, which its message names."""
+
+
 def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace) -> int:
     """Run one command, turning assur's errors and warnings into one-line messages."""
     source = path_text(args.file)
@@ -287,7 +292,7 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
         warnings.simplefilter("always", AssurWarning)
         try:
             status = handler(args)
-        except OutputError as err:  # names the output, not the mechanism file
+        except (OutputError, _OtherFileError) as err:  # not about the mechanism file
             _error(str(err))
             status = 2
         except AssurError as err:
@@ -365,8 +370,20 @@ def _cmd_explain(args: argparse.Namespace) -> int:
         check_not_input("-o", args.output, args.file)
     mech = load_mechanism(args.file)
     angle = one_position(mech, args.angle)
-    answers, source = read_answers(args.answers) if args.answers else (None, "")
-    note = explain(mech, angle, answers, source)
+    answers, source = None, ""
+    if args.answers:
+        try:
+            answers, source = read_answers(args.answers)  # its errors name the file
+        except ModelError as err:
+            raise _OtherFileError(str(err)) from None
+    try:
+        note = explain(mech, angle, answers, source)
+    except ModelError as err:
+        if answers and str(err).startswith("answers."):
+            # a quantity the mechanism does not have: a fault of the answers' file
+            msg = f"{path_text(args.answers)}: {err}"
+            raise _OtherFileError(msg) from None
+        raise
     if args.output is None:
         _say(str(note).rstrip("\n"))
         return 0

@@ -24,6 +24,7 @@ import numpy as np
 from assur._cli_common import (
     check_distinct,
     check_not_input,
+    check_structure,
     load_mechanism,
     parse_angles,
 )
@@ -87,7 +88,9 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
 
     _check_options(args)
     mech = load_mechanism(args.file)
-    angles = None if args.angles is None else parse_angles(args.angles)
+    check_structure(mech)
+    drivers = max(1, len(mech.drivers))
+    angles = None if args.angles is None else parse_angles(args.angles, drivers)
     sizing = None
     inertia = 0.0 if args.flywheel is None else args.flywheel
     if args.delta is not None:

@@ -116,6 +116,26 @@ def test_angles_for_two_drivers(capsys):
     assert text == "--angles: the ranges have 3, 4 positions; expected equal counts"
 
 
+def test_a_wrong_structure_is_named_before_the_count_of_angles(tmp_path, capsys):
+    # two drivers on one degree of freedom: the ranges given (one) match neither
+    # the drivers nor the freedom; the error is the structure's
+    path = tmp_path / "two_drivers.toml"
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    path.write_text(text + '\n[[drivers]]\njoint = "O4"\nomega = 1.0\n')
+    picture = ["--angle", "0", "-o", tmp_path / "p.png"]
+    for command in ("kinematics", "forces", "plot", "dynamics"):
+        options = picture if command == "plot" else ["--angles", "0"]
+        text = fails(capsys, [command, path, *options], path)
+        assert text.startswith("drivers: the mechanism has W = "), (command, text)
+        assert "but 2 driver(s)" in text
+
+
+def test_dynamics_counts_the_drivers_of_the_file(capsys):
+    path = EXAMPLES / "five_bar_two_cranks.toml"
+    text = fails(capsys, ["dynamics", path, "--angles", "0:90:90,10:100:90"], path)
+    assert text.startswith("dynamics: the mechanism has 2 drivers; expected one")
+
+
 def test_driver_option_unknown_joint(capsys):
     path = EXAMPLES / "class3.toml"
     assert (

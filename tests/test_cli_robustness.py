@@ -295,8 +295,8 @@ def test_plot_names_its_own_option(capsys, tmp_path: Path):
         capsys, "plot", FOUR_BAR, "--angle", "abc", "-o", tmp_path / "a.png"
     )
     assert line == (
-        f"assur: error: {FOUR_BAR}: --angle: cannot read 'abc'; expected "
-        "START:STOP:STEP with a step that leads from START to STOP, or a single value"
+        f"assur: error: {FOUR_BAR}: --angle: cannot read 'abc'; expected a number, "
+        "one per driver separated by commas"
     )
 
 

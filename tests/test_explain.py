@@ -332,6 +332,24 @@ def test_command_line_compares_answers(capsys) -> None:
     assert "slip in the given multiplication" in capsys.readouterr().out
 
 
+def test_a_wrong_answer_key_names_the_answers_file(capsys, tmp_path) -> None:
+    from assur.cli import main
+
+    answers = tmp_path / "mine.toml"
+    answers.write_text('[answers]\n"rod.omegaa" = 5.0\n', encoding="utf-8")
+    argv = ["explain", str(EXERCISE), "--angle", "45", "--answers", str(answers)]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err == (
+        f"assur: error: {answers}: answers.rod.omegaa: no such quantity; expected a "
+        "table column, 'P.v' or 'P.a' (a point's speed, acceleration) or 'L.Fi' (a "
+        "link's inertia force)\n"
+    )
+    assert main([*argv[:-1], str(tmp_path / "none.toml")]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"assur: error: {tmp_path / 'none.toml'}: cannot read")
+
+
 # ---------------------------------------------------------------- HTML and LaTeX
 
 
