@@ -283,7 +283,17 @@ def structure(mech: Mechanism, driver: str | None = None) -> Structure:
         except ModelError as err:
             msg = f"--driver: {str(err).split(': ', 1)[-1]}"
             raise DecompositionError(msg) from None
-    drivers, groups, topo = decompose(mech)
+    try:
+        drivers, groups, topo = decompose(mech)
+    except DecompositionError as err:
+        if driver is None or not str(err).startswith("drivers:"):
+            raise
+        # the count of inputs is the option's doing, not the file's
+        msg = (
+            f"--driver: {str(err).split(': ', 1)[-1]} (--driver sets one input; "
+            "without it the file's drivers are used)"
+        )
+        raise DecompositionError(msg) from None
     n = len(mech.links)
     p4 = len(topo.slots)
     return Structure(

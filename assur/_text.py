@@ -18,6 +18,7 @@ __all__ = [
     "fitting",
     "key_text",
     "listing",
+    "number_text",
     "position_text",
     "position_title",
     "roman",
@@ -37,6 +38,17 @@ NAME_LIMIT = 30
 """Most characters of one name listed by :func:`suggest`."""
 LISTING_LIMIT = 160
 """Most characters of the names listed by :func:`suggest`, separators included."""
+
+
+def number_text(value: float, spec: str = ".6g") -> str:
+    """Return ``value`` formatted by ``spec``; minus zero shows as 0.
+
+    Examples
+    --------
+    >>> number_text(-0.0), number_text(-1.5), number_text(2.0, ">6.3g")
+    ('0', '-1.5', '     2')
+    """
+    return format(value + 0.0, spec)  # -0.0 + 0.0 is +0.0
 
 
 def roman(number: int) -> str:

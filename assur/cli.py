@@ -42,7 +42,7 @@ from assur._output import (
     stdout_writer,
     write_stdout,
 )
-from assur._text import describe, suggest
+from assur._text import describe, number_text, suggest
 from assur._vec import Array
 from assur.analysis import SKIPPED_WHY
 from assur.errors import (
@@ -593,7 +593,8 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
     lines = [f"Summary over {summary.count} positions ({name})"]
     for key, value in values.items():
         unit = summary.units[key]
-        lines.append(f"  {key.ljust(width)}  {value:>14.6g}  {unit}".rstrip())
+        shown = number_text(value, ">14.6g")
+        lines.append(f"  {key.ljust(width)}  {shown}  {unit}".rstrip())
     return "\n".join(lines)
 
 
@@ -653,7 +654,7 @@ def format_table(
     heads = list(names)
     marks = [f"[{u}]" if u else "" for u in units]
     cells = (
-        [[f"{v:.6g}" for v in values] for values in zip(*columns, strict=True)]
+        [[number_text(v) for v in values] for values in zip(*columns, strict=True)]
         if columns
         else []
     )

@@ -29,6 +29,7 @@ from assur._cli_common import (
     parse_angles,
 )
 from assur._output import path_text, write_stdout, write_text
+from assur._text import number_text
 from assur._vec import Array
 from assur.columns import pretty_unit
 from assur.errors import AssurWarning, ModelError, UsageError
@@ -232,7 +233,7 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
     lines = [
         ("nominal crank speed", f"{result.omega:.6g} rad/s"),
         ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
-        ("motor torque", f"{result.motor:.6g} N·m (constant)"),
+        ("motor torque", f"{number_text(result.motor)} N·m (constant)"),
         ("coefficient of speed fluctuation", f"delta = {result.delta:.6g}"),
         (
             "largest speed",
@@ -299,7 +300,7 @@ def _readable(table: Any, forces: bool) -> str:
     units = [table.column(c).unit for c in names]
     columns = [np.asarray(table[c])[:ROWS_SHOWN] for c in names]
     marks = [f"[{u}]" if u else "" for u in units]
-    cells = [[f"{v:.6g}" for v in row] for row in zip(*columns, strict=True)]
+    cells = [[number_text(v) for v in row] for row in zip(*columns, strict=True)]
     widths = [
         max(len(n), len(m), *(len(r[i]) for r in cells))
         for i, (n, m) in enumerate(zip(names, marks, strict=True))

@@ -309,7 +309,7 @@ def _model(start: float, values: Sequence[Array]) -> Reduced:
     m = CubicSpline(knots, closed[2], bc_type="periodic", extrapolate="periodic")
     # a periodic cubic spline integrates over its period as the trapezoid rule does,
     # so the mean taken here leaves a work that is periodic to rounding
-    motor = -float(np.mean(torque))
+    motor = 0.0 - float(np.mean(torque))  # no load: +0, not -0
     net = CubicSpline(
         knots, closed[2] + motor, bc_type="periodic", extrapolate="periodic"
     )

@@ -136,6 +136,15 @@ def test_dynamics_counts_the_drivers_of_the_file(capsys):
     assert text.startswith("dynamics: the mechanism has 2 drivers; expected one")
 
 
+def test_driver_option_on_two_degrees_of_freedom(capsys):
+    path = EXAMPLES / "five_bar_two_cranks.toml"
+    text = fails(capsys, ["structure", path, "--driver", "A"], path)
+    assert text.startswith("--driver: the mechanism has W = ")
+    assert text.endswith(
+        "(--driver sets one input; without it the file's drivers are used)"
+    )
+
+
 def test_driver_option_unknown_joint(capsys):
     path = EXAMPLES / "class3.toml"
     assert (
@@ -450,3 +459,15 @@ def test_skip_unassembled_lists_positions_in_degrees(double_rocker, capsys):
     assert err.splitlines()[0].endswith(
         "friction: 0, 90, 120, 150, 180, 210, 240, 270, 360"
     )
+
+
+def test_minus_zero_is_shown_as_zero(capsys):
+    # a value that is zero shows as 0 whatever its sign bit (atan2 and products of
+    # zeros give -0.0): in readable tables and the dynamic model's figures
+    from assur.cli import format_table
+
+    text = format_table(["a", "b"], ["N", "m"], [np.array([-0.0]), np.array([-1.5])], 1)
+    assert text.splitlines()[2].split() == ["0", "-1.5"]
+    out, _ = succeeds(capsys, ["dynamics", EXAMPLES / "four_bar.toml", "--angles", "0"])
+    assert "  motor torque " in out
+    assert "-0 " not in out

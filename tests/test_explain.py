@@ -461,3 +461,9 @@ def test_plot_draws_one_group_s_free_body(tmp_path: Path, capsys) -> None:
     assert out.stat().st_size > 10_000
     assert main(["plot", str(six), "--group", "3", "-o", str(out)]) == 2
     assert "expected 1 to 2" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("angle", ["x", [10.0, 20.0], float("nan")])
+def test_an_angle_that_is_not_one_position_is_a_usage_error(angle) -> None:
+    with pytest.raises(assur.UsageError, match=r"^angles?: "):
+        assur.explain(assur.catalog.four_bar(), angle)

@@ -38,8 +38,12 @@ def _known(pos: Position, s: DyadSolver) -> list[Block]:
             )
         else:
             e = pos.turned(s.known[b], pair.axis or (1.0, 0.0))
+            # a joint named "guide" is not called "the guide guide"
+            guide = "the guide"
+            if "guide" not in pair.name.lower():
+                guide += f" {plain(pair.name)}"
             parts.append(
-                f"the guide {plain(pair.name)} of {on} through ${vec(p)}$ m along "
+                f"{guide} of {on} through ${vec(p)}$ m along "
                 f"$\\vec e_{{{name(pair.name)}}} = {vec(e)}$"
             )
     return [Para("Known from the links before: " + "; ".join(parts) + ".")]

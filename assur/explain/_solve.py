@@ -4,10 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
-
 from assur._loads import compile_loads
-from assur.analysis import Table, forces, kinematics
+from assur.analysis import Table, forces, kinematics, positions
+from assur.errors import UsageError
 from assur.explain._position import Position, from_table
 from assur.model import Mechanism
 from assur.plan import plan_of
@@ -16,10 +15,23 @@ __all__ = ["position", "table_at"]
 
 
 def table_at(mech: Mechanism, angle: Any) -> Table:
-    """Return the forces table at one position (kinematics without masses, loads)."""
-    given = np.asarray(angle, dtype=float).reshape(1, -1)
+    """Return the forces table at one position (kinematics without masses, loads).
+
+    Raises
+    ------
+    UsageError
+        When ``angle`` is not one driver position (a number per driver).
+    """
+    plan = plan_of(mech)
+    given = positions(plan, angle)
+    if given.shape[0] != 1:
+        msg = (
+            f"angle: {given.shape[0]} driver positions; expected one (a number per "
+            "driver)"
+        )
+        raise UsageError(msg)
     angles = given if given.shape[1] > 1 else given[:, 0]
-    if compile_loads(plan_of(mech)).empty:
+    if compile_loads(plan).empty:
         return kinematics(mech, angles)
     return forces(mech, angles)
 
