@@ -511,3 +511,39 @@ def test_the_fast_norm_is_hypot_at_every_scale(scale):
     np.testing.assert_allclose(got[finite], want[finite], rtol=4.5e-16, atol=0.0)
     assert norm(3.0, 4.0) == 5.0
     np.testing.assert_allclose(norm(np.array([3.0, 6.0]), 4.0), [5.0, np.hypot(6, 4)])
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_random_triads_follow_one_branch_whatever_the_step(monkeypatch, seed):
+    # the continuation in steps of 5 degrees assembles the positions that steps of
+    # half a degree do, in the same poses: past a rocking crank's limit it neither
+    # jumps to another assembly nor gives up early (before the step back checked
+    # each step, about one random triad in thirty jumped)
+    from assur import _kinematics
+    from assur.plan import plan_of
+
+    from .mechanisms import LinkDecor, triad
+
+    rng = np.random.default_rng(seed)
+    names = ["C.x", "C.y", "D.x", "D.y", "E.x", "E.y"]
+    for _ in range(20):
+        moves = {k: tuple(rng.uniform(-0.02, 0.02, 2)) for k in "CDEFG"}
+        crank, theta0 = rng.uniform(0.03, 0.09), rng.uniform(0.0, 2.0 * math.pi)
+        case = triad(crank, theta0, 10.0, moves, [LinkDecor()] * 5, None, check=False)
+        at = float(case.reference[0]) + np.arange(-360.0, 360.01, 0.5)
+        tables = []
+        for step in (5.0, 0.5):
+            monkeypatch.setattr(_kinematics, "CONTINUATION_STEP", math.radians(step))
+            plan_of.cache_clear()  # the anchors belong to the step
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", assur.AssurWarning)
+                tables.append(
+                    assur.kinematics(
+                        case.mechanism, at, columns=names, skip_unassembled=True
+                    )
+                )
+        coarse, fine = tables
+        np.testing.assert_array_equal(coarse.skipped, fine.skipped)
+        for name in names:
+            np.testing.assert_allclose(coarse[name], fine[name], rtol=0, atol=1e-9)
