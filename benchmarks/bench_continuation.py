@@ -13,7 +13,9 @@ once per mechanism and kept, every position is one step on from the last before 
 timed as a later call (the anchors kept) and as a first call (walked to anew).
 "separate" walks each
 position to its angle on its own path, as the library did before. Both give the same
-poses (``tests/test_numbers.py`` holds them to 1e-9). Writes
+poses (``tests/test_numbers.py`` holds them to 1e-9). Both check every step by a step
+back to where it started (a step that does not return to its pose has left the
+branch), which doubles their solves. Writes
 ``benchmarks/results-continuation.json`` (``--output`` overrides); prints a table. The
 exit status is 0 whatever the figures are.
 """
