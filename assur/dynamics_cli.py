@@ -32,7 +32,9 @@ from assur._output import path_text, write_stdout, write_text
 from assur._text import number_text
 from assur._vec import Array
 from assur.columns import pretty_unit
+from assur.dynamics_flywheel import SMALLEST_DELTA
 from assur.errors import AssurWarning, ModelError, UsageError
+from assur.model import LARGEST
 
 __all__ = ["register"]
 
@@ -141,14 +143,19 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
 def _check_options(args: argparse.Namespace) -> None:
     """Refuse options that cannot be used, before anything is computed."""
     if args.flywheel is not None and not (
-        math.isfinite(args.flywheel) and args.flywheel >= 0
+        math.isfinite(args.flywheel) and 0 <= args.flywheel <= LARGEST
     ):
-        msg = f"--flywheel {args.flywheel:g}: expected an inertia >= 0, kg m^2"
+        msg = (
+            f"--flywheel {args.flywheel:g}: expected an inertia >= 0, kg m^2 (at "
+            f"most {LARGEST:g})"
+        )
         raise UsageError(msg)
-    if args.delta is not None and not (math.isfinite(args.delta) and args.delta > 0):
+    if args.delta is not None and not (
+        math.isfinite(args.delta) and SMALLEST_DELTA <= args.delta < 2.0
+    ):
         msg = (
             f"--delta {args.delta:g}: expected a coefficient of speed fluctuation "
-            "> 0, such as 0.02"
+            f"from {SMALLEST_DELTA:g} to below 2, such as 0.02"
         )
         raise UsageError(msg)
     if args.csv == "-" and args.json:

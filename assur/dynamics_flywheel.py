@@ -17,7 +17,7 @@ import numpy as np
 
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce
 from assur.dynamics_steady import steady_state
-from assur.errors import ModelError, UsageError
+from assur.errors import ConvergenceError, ModelError, UsageError
 from assur.model import Mechanism
 
 __all__ = ["FlywheelSizing", "flywheel", "flywheel_sizing", "wittenbauer"]
@@ -26,6 +26,11 @@ DELTA_RTOL = 1e-12
 """Relative tolerance of the flywheel inertia found by Brent's method."""
 WIDENINGS = 60
 """Most times the upper end of the search is multiplied by 4."""
+SMALLEST_DELTA = 1e-9
+"""Smallest coefficient of speed fluctuation asked for: below it the fluctuation of
+the speed is near what rounding leaves of it (about 1e-15)."""
+DELTA_CHECK = 1e-6
+"""Largest relative gap between the delta of the flywheel found and that asked for."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -70,7 +75,8 @@ def flywheel(mechanism: Mechanism, delta: float) -> float:
     mechanism : Mechanism
         One revolute driver, masses; its ``omega`` is the nominal speed.
     delta : float
-        ``(max w - min w) / omega`` of the steady state, > 0.
+        ``(max w - min w) / omega`` of the steady state, from :data:`SMALLEST_DELTA`
+        to below 2 (at 2 the crank stops).
 
     Returns
     -------
@@ -81,10 +87,13 @@ def flywheel(mechanism: Mechanism, delta: float) -> float:
     Raises
     ------
     UsageError
-        For ``delta <= 0``, or when the mechanism alone already runs with a smaller
-        fluctuation (no flywheel can raise it).
+        For ``delta`` out of its range, or when the mechanism alone already runs
+        with a smaller fluctuation (no flywheel can raise it).
     ModelError
-        See :func:`assur.dynamics`.
+        See :func:`assur.dynamics`; also when the inertia found does not give
+        ``delta`` (to 1e-6 of it).
+    ConvergenceError
+        When the search for the inertia does not converge.
 
     Examples
     --------
@@ -149,10 +158,11 @@ def _prepared(mechanism: Mechanism, delta: Any) -> tuple[Reduced, float]:
     except (TypeError, ValueError) as err:
         msg = f"delta: expected a coefficient of speed fluctuation, got {delta!r}"
         raise UsageError(msg) from err
-    if not (math.isfinite(value) and value > 0):
+    if not (math.isfinite(value) and SMALLEST_DELTA <= value < 2.0):
         msg = (
-            f"delta: {value:g}; expected a coefficient of speed fluctuation > 0, "
-            "(max w - min w) / omega, such as 0.02"
+            f"delta: {value:g}; expected a coefficient of speed fluctuation, "
+            f"(max w - min w) / omega, from {SMALLEST_DELTA:g} to below 2 (where the "
+            "crank would stop), such as 0.02"
         )
         raise UsageError(msg)
     omega = check_dynamic(mechanism, "flywheel")
@@ -190,7 +200,20 @@ def _exact(model: Reduced, omega: float, delta: float) -> float:
             f"down to delta = {delta:g}"
         )
         raise ModelError(msg)
-    return float(brentq(excess, low, high, xtol=1e-300, rtol=DELTA_RTOL))
+    try:
+        found = float(brentq(excess, low, high, xtol=1e-300, rtol=DELTA_RTOL))
+    except RuntimeError as err:  # no convergence within brentq's iterations
+        msg = f"flywheel: the inertia for delta = {delta:g} was not found ({err})"
+        raise ConvergenceError(msg) from None
+    # the promise is the delta asked for: a root rounding has blurred is refused
+    got = excess(found) + delta
+    if not abs(got - delta) <= DELTA_CHECK * delta:
+        msg = (
+            f"flywheel: {found:.6g} kg m^2 gives delta = {got:.6g}, not the {delta:g} "
+            "asked for (the fluctuation is lost in rounding); expected a larger delta"
+        )
+        raise ModelError(msg)
+    return found
 
 
 def _guess(model: Reduced, omega: float, delta: float) -> float:

@@ -23,7 +23,7 @@ from assur.columns import Column
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce, reduced_at
 from assur.dynamics_steady import Steady, steady_state
 from assur.errors import UsageError
-from assur.model import Mechanism
+from assur.model import LARGEST, Mechanism
 
 __all__ = ["COLUMNS", "Dynamics", "checked_flywheel", "dynamics"]
 
@@ -281,7 +281,10 @@ def checked_flywheel(value: Any) -> float:
     except (TypeError, ValueError) as err:
         msg = f"flywheel: expected an inertia in kg m^2, got {value!r}"
         raise UsageError(msg) from err
-    if not (math.isfinite(number) and number >= 0):
-        msg = f"flywheel: {number:g} kg m^2; expected a finite inertia >= 0"
+    if not (math.isfinite(number) and 0 <= number <= LARGEST):
+        msg = (
+            f"flywheel: {number:g} kg m^2; expected an inertia from 0 to {LARGEST:g} "
+            "(as the file's numbers)"
+        )
         raise UsageError(msg)
     return number

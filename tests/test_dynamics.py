@@ -358,8 +358,22 @@ def test_a_mechanism_without_mass_is_refused():
         assur.dynamics(example_file("tenbar"))
 
 
-@pytest.mark.parametrize("delta", [0.0, -0.1, math.nan, math.inf])
+@pytest.mark.parametrize("delta", [1e-9, 1.99])
+def test_flywheel_gives_the_asked_delta_at_its_ends(delta):
+    # a small delta needs a huge flywheel; near 2 the crank nearly stops
+    mech = example("whitworth")
+    inertia = assur.flywheel(mech, delta)
+    got = assur.dynamics(mech, [0.0], flywheel=inertia).delta
+    assert got == pytest.approx(delta, rel=1e-6)
+
+
+@pytest.mark.parametrize(
+    "delta", [0.0, -0.1, math.nan, math.inf, 2.0, 2.5, 100.0, 1e-12, 1e-300]
+)
 def test_delta_must_be_positive(delta):
+    # at delta = 2 the smallest speed is zero (above, a steady state would need a
+    # negative one); below 1e-9 the fluctuation is near what rounding leaves of it
+    # (the search had returned an inertia with another delta, or scipy's error)
     with pytest.raises(assur.UsageError, match="expected a coefficient of speed"):
         assur.flywheel(example("four_bar"), delta)
 
@@ -377,7 +391,7 @@ def test_delta_that_needs_no_flywheel():
         assur.flywheel(example("four_bar"), 0.9)
 
 
-@pytest.mark.parametrize("value", [-1.0, math.nan, "heavy"])
+@pytest.mark.parametrize("value", [-1.0, math.nan, "heavy", 1e16, 1e308])
 def test_flywheel_must_be_an_inertia(value):
     with pytest.raises(assur.UsageError, match="flywheel"):
         assur.dynamics(example("four_bar"), [0.0], flywheel=value)

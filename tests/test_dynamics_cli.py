@@ -180,7 +180,9 @@ def test_startup_samples_to_csv_and_json(capsys, tmp_path: Path):
         (["--flywheel", "-2"], "--flywheel -2: expected an inertia >= 0"),
         (["--csv", "-", "--json"], "--csv - and --json: both write to standard output"),
         (["--startup"], "startup: the mechanism has no motor"),
-        (["--delta", "2"], "alone runs with delta"),
+        (["--delta", "0.9"], "alone runs with delta"),
+        (["--delta", "2"], "--delta 2: expected a coefficient of speed fluctuation"),
+        (["--flywheel", "1e300"], "--flywheel 1e+300: expected an inertia >= 0"),
     ],
 )
 def test_bad_options(capsys, args, message):
