@@ -778,7 +778,7 @@ def _check_friction(entry: str, joint: Joint) -> None:
                 f"{describe(joint.radius)}; expected 'radius' on revolute joints only",
             )
         _check_number(f"{entry}.radius", joint.radius, 0.0)
-    if joint.kind == "revolute" and joint.friction and not joint.radius:
+    if joint.kind == "revolute" and joint.friction and joint.radius is None:
         _fail(
             entry,
             "a revolute joint with friction needs its journal 'radius' (m): the "

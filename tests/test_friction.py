@@ -487,3 +487,29 @@ def test_self_locking_on_the_command_line(tmp_path, capsys):
     status = main(["forces", str(path), "--angles", "0:355:5", "--skip-unassembled"])
     assert status == 0
     assert "left out 9 position(s)" in capsys.readouterr().err
+
+
+def test_a_journal_of_radius_zero_has_no_friction_couple():
+    # the file format allows radius >= 0: a pin of radius 0 has a friction circle of
+    # radius 0, so the joint carries no couple, as if it had no friction (a radius
+    # of 0 was refused as missing)
+    mech = assur.load(EXAMPLES / "slider_crank_friction.toml")
+
+    def joint_a(**change):
+        return dataclasses.replace(
+            mech,
+            joints=tuple(
+                dataclasses.replace(j, **change) if j.name == "A" else j
+                for j in mech.joints
+            ),
+        )
+
+    at = np.arange(0.0, 360.0, 30.0)
+    pin = assur.forces(joint_a(radius=0.0), at)
+    smooth = assur.forces(joint_a(friction=0.0, radius=None), at)
+    np.testing.assert_array_equal(pin["A.Mf"], 0.0)
+    np.testing.assert_allclose(
+        pin["driver.torque"], smooth["driver.torque"], atol=1e-12
+    )
+    with pytest.raises(assur.ModelError, match="needs its journal 'radius'"):
+        joint_a(radius=None)
