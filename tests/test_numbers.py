@@ -515,11 +515,13 @@ def test_the_fast_norm_is_hypot_at_every_scale(scale):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("seed", [0, 1, 2])
-def test_random_triads_follow_one_branch_whatever_the_step(monkeypatch, seed):
+def test_random_triads_follow_one_branch_whatever_the_step(monkeypatch, seed, request):
     # the continuation in steps of 5 degrees assembles the positions that steps of
     # half a degree do, in the same poses: past a rocking crank's limit it neither
     # jumps to another assembly nor gives up early (before the step back checked
     # each step, about one random triad in thirty jumped)
+    if "slow" not in (request.config.getoption("markexpr") or ""):
+        pytest.skip("sixty random triads: run with -m slow")
     from assur import _kinematics
     from assur.plan import plan_of
 
