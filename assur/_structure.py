@@ -91,7 +91,8 @@ class Group:
         Pairs between links of the group; pairs to known links (external pairs of a
         dyad in signature order).
     attached_to : tuple of str
-        Known links the group hangs on.
+        Known links the group hangs on, each once, in the order of the external
+        pairs that join them.
     """
 
     group_class: int
@@ -630,9 +631,9 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
     inside = set(links)
     internal = [p for p in counted if p.links[0] in inside and p.links[1] in inside]
     external = [p for p in counted if p not in internal]
-    attached = sorted({x for p in external for x in p.links if x in known})
     if len(links) == 2:
-        return _describe_dyad(links, internal[0], external, attached)
+        return _describe_dyad(links, internal[0], external, known)
+    attached = _known_links(external, known)
     import networkx as nx
 
     g = nx.Graph()
@@ -662,12 +663,12 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
         tuple(links),
         tuple(p.name for p in internal),
         tuple(p.name for p in external),
-        tuple(attached),
+        attached,
     )
 
 
 def _describe_dyad(
-    links: list[str], middle: Pair, external: list[Pair], attached: list[str]
+    links: list[str], middle: Pair, external: list[Pair], known: set[str]
 ) -> Group:
     """Order a dyad's links and external pairs so that its signature is canonical."""
     first, second = links
@@ -677,6 +678,16 @@ def _describe_dyad(
     if forward[::-1] > forward:
         first, second, e1, e2 = second, first, e2, e1
     kind = max(forward, forward[::-1])
+    attached = _known_links([e1, e2], known)
     return Group(
-        2, 2, kind, (first, second), (middle.name,), (e1.name, e2.name), tuple(attached)
+        2, 2, kind, (first, second), (middle.name,), (e1.name, e2.name), attached
     )
+
+
+def _known_links(external: list[Pair], known: set[str]) -> tuple[str, ...]:
+    """Return the known links the ``external`` pairs join, in the pairs' order.
+
+    Each link once: a dyad on two links reads "on X, Y through P, Q" with P on X.
+    """
+    found = (x for p in external for x in p.links if x in known)
+    return tuple(dict.fromkeys(found))
