@@ -88,12 +88,9 @@ def materialize(table: Table, columns: Iterable[Column]) -> dict[str, Array]:
     """
     out: dict[str, Array] = {}
     chunked: list[Column] = []
-    families: dict[str, Any] = {}
-    if columns is table.schema:
-        families.update(table._families)
-    else:
-        for column in columns:
-            families.setdefault(column.family, []).append(column)
+    families: dict[str, list[Column]] = {}
+    for column in columns:
+        families.setdefault(column.family, []).append(column)
     for family in CHUNKED:
         chunked += families.pop(family, ())
     # a family's columns at once: those of several links or joints share each step

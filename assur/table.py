@@ -164,9 +164,7 @@ class Table:
         One pass serves them all: cheaper than reading each by name.
         """
         cache = self._cache
-        if not cache:
-            self._compute(self.schema)
-        elif len(cache) < len(self._index):
+        if len(cache) < len(self._index):
             self._compute(c for c in self.schema if c.name not in cache)
         return [cache[name] for name in self._index]
 
@@ -184,17 +182,16 @@ class Table:
 
     def _compute(self, columns: Iterable[Column]) -> None:
         """Compute ``columns`` (and those computed along with them) into the cache."""
-        index, cache = self._index, self._cache
         for key, values in materialize(self, columns).items():
-            if key in index and key not in cache:
-                if values.flags.writeable:
-                    values = _read_only(values)
-                cache[key] = values
+            self._keep(key, values)
 
     def _keep(self, key: str, values: Array) -> None:
-        """Keep a computed column, read-only."""
+        """Keep a computed column, read-only; a view leaves the states' arrays be."""
         if key in self._index and key not in self._cache:
-            self._cache[key] = _read_only(values)
+            if values.flags.writeable:
+                values = values.view()
+                values.flags.writeable = False
+            self._cache[key] = values
 
     def summary(self) -> dict[str, float]:
         """Return the few numbers joints and motors are sized on, by name.
@@ -269,14 +266,6 @@ class Table:
         from assur.plotting import draw
 
         return draw(self, angle=angle, **kwargs)
-
-
-def _read_only(values: Array) -> Array:
-    """Return ``values`` read-only: a view, which leaves the states' arrays be."""
-    if values.flags.writeable:
-        values = values.view()
-        values.flags.writeable = False
-    return values
 
 
 def _json_number(v: float) -> float | None:
