@@ -325,15 +325,9 @@ def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> list[
             sides.append([sign, last, far])
     while sides:
         rows = np.array([kept[sign * last] for sign, last, _ in sides]).T
-        at, start = (
-            np.array(
-                [
-                    [driver.reference + sign * (last + k) * step]
-                    for sign, last, _ in sides
-                ]
-            )
-            for k in (1.0, 0.0)
-        )
+        sign, last = np.array([side[:2] for side in sides]).T
+        start = (driver.reference + sign * last * step)[:, None]
+        at = (driver.reference + sign * (last + 1.0) * step)[:, None]
         found, failed = _step(plan, at, _nested(plan, key, rows), branch_of, start)
         flat = _flat(plan, key, found)
         for i, side in enumerate(sides):
@@ -481,14 +475,12 @@ def _straight(
     active = np.arange(n)
     s = 1
     while active.size:
-        fraction, before = (
-            np.minimum(k / counts[active], 1.0)[:, None] for k in (s, s - 1)
-        )
-        at, start = (
-            reference + (drive[active] - reference) * f for f in (fraction, before)
-        )
+        fraction = np.minimum(s / counts[active], 1.0)
+        before = np.minimum((s - 1) / counts[active], 1.0)
+        path = drive[active] - reference
+        at = reference + path * fraction[:, None]
+        start = reference + path * before[:, None]
         current, failed = _step(plan, at, current, branch_of, start)
-        fraction = fraction[:, 0]
         # arrived, or stopped by a failed step
         finish = (fraction >= 1.0) | failed.any(axis=0)
         if finish.any():
