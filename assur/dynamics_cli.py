@@ -32,7 +32,8 @@ from assur._output import path_text, write_stdout, write_text
 from assur._text import number_text
 from assur._vec import Array
 from assur.columns import pretty_unit
-from assur.dynamics_flywheel import SMALLEST_DELTA
+from assur.dynamics_flywheel import SMALLEST_DELTA, delta_in_range
+from assur.dynamics_model import flywheel_in_range
 from assur.errors import AssurWarning, ModelError, UsageError
 from assur.model import LARGEST
 
@@ -109,8 +110,10 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         # a motor may carry the crank round where no steady state at the file's
         # omega (under a constant torque) exists: the start-up is still shown
         warnings.warn(f"{err}; shown: the start-up alone", AssurWarning, stacklevel=2)
-        if args.startup_csv is not None:
-            _write_startup(args, run)
+        result = None
+    if run is not None and args.startup_csv is not None:
+        _write_startup(args, run)
+    if result is None:
         if args.json:
             document = {"name": mech.name, "startup": _startup_data(run)}
             write_stdout(json.dumps(document) + "\n")
@@ -126,8 +129,6 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
             epsilon=result["driver.epsilon"],
         )
         table = _Joined(result, motion)
-    if run is not None and args.startup_csv is not None:
-        _write_startup(args, run)
     if args.json:
         write_stdout(_json(result, table, sizing, run) + "\n")
     elif args.csv == "-":
@@ -142,17 +143,13 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
 
 def _check_options(args: argparse.Namespace) -> None:
     """Refuse options that cannot be used, before anything is computed."""
-    if args.flywheel is not None and not (
-        math.isfinite(args.flywheel) and 0 <= args.flywheel <= LARGEST
-    ):
+    if args.flywheel is not None and not flywheel_in_range(args.flywheel):
         msg = (
             f"--flywheel {args.flywheel:g}: expected an inertia >= 0, kg m^2 (at "
             f"most {LARGEST:g})"
         )
         raise UsageError(msg)
-    if args.delta is not None and not (
-        math.isfinite(args.delta) and SMALLEST_DELTA <= args.delta < 2.0
-    ):
+    if args.delta is not None and not delta_in_range(args.delta):
         msg = (
             f"--delta {args.delta:g}: expected a coefficient of speed fluctuation "
             f"from {SMALLEST_DELTA:g} to below 2, such as 0.02"

@@ -20,7 +20,13 @@ from assur.dynamics_steady import steady_state
 from assur.errors import ConvergenceError, ModelError, UsageError
 from assur.model import Mechanism
 
-__all__ = ["FlywheelSizing", "flywheel", "flywheel_sizing", "wittenbauer"]
+__all__ = [
+    "FlywheelSizing",
+    "delta_in_range",
+    "flywheel",
+    "flywheel_sizing",
+    "wittenbauer",
+]
 
 DELTA_RTOL = 1e-12
 """Relative tolerance of the flywheel inertia found by Brent's method."""
@@ -158,7 +164,7 @@ def _prepared(mechanism: Mechanism, delta: Any) -> tuple[Reduced, float]:
     except (TypeError, ValueError) as err:
         msg = f"delta: expected a coefficient of speed fluctuation, got {delta!r}"
         raise UsageError(msg) from err
-    if not (math.isfinite(value) and SMALLEST_DELTA <= value < 2.0):
+    if not delta_in_range(value):
         msg = (
             f"delta: {value:g}; expected a coefficient of speed fluctuation, "
             f"(max w - min w) / omega, from {SMALLEST_DELTA:g} to below 2 (where the "
@@ -167,6 +173,14 @@ def _prepared(mechanism: Mechanism, delta: Any) -> tuple[Reduced, float]:
         raise UsageError(msg)
     omega = check_dynamic(mechanism, "flywheel")
     return reduce(mechanism), omega
+
+
+def delta_in_range(delta: float) -> bool:
+    """Whether a coefficient of speed fluctuation can be asked for.
+
+    From :data:`SMALLEST_DELTA` to below 2, where the smallest speed would be zero.
+    """
+    return math.isfinite(delta) and SMALLEST_DELTA <= delta < 2.0
 
 
 def _exact(model: Reduced, omega: float, delta: float) -> float:

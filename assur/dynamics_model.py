@@ -25,7 +25,7 @@ from assur.dynamics_steady import Steady, steady_state
 from assur.errors import UsageError
 from assur.model import LARGEST, Mechanism
 
-__all__ = ["COLUMNS", "Dynamics", "checked_flywheel", "dynamics"]
+__all__ = ["COLUMNS", "Dynamics", "checked_flywheel", "dynamics", "flywheel_in_range"]
 
 COLUMNS = (
     ("angle", "angle", "angle", "deg"),
@@ -281,10 +281,15 @@ def checked_flywheel(value: Any) -> float:
     except (TypeError, ValueError) as err:
         msg = f"flywheel: expected an inertia in kg m^2, got {value!r}"
         raise UsageError(msg) from err
-    if not (math.isfinite(number) and 0 <= number <= LARGEST):
+    if not flywheel_in_range(number):
         msg = (
             f"flywheel: {number:g} kg m^2; expected an inertia from 0 to {LARGEST:g} "
             "(as the file's numbers)"
         )
         raise UsageError(msg)
     return number
+
+
+def flywheel_in_range(inertia: float) -> bool:
+    """Whether a flywheel inertia (kg m^2) is from 0 to the file's largest number."""
+    return math.isfinite(inertia) and 0.0 <= inertia <= LARGEST
