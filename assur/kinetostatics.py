@@ -28,6 +28,7 @@ from assur.groups._motion import Motion, direction, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium, Wrench
 from assur.groups.driver import Balance, DriverPlan, balance
+from assur.model import LoadTable
 from assur.plan import Plan
 
 FAR_FORCE = 1e12
@@ -183,8 +184,8 @@ def applied_loads(
     slides: dict[str, Array] | None = None
     for b, offset_, value, entry in loads.forces:
         px, py = point(bodies[b], offset_, 0)
-        if isinstance(value, tuple):
-            fx, fy = value
+        if not isinstance(value, LoadTable):
+            fx, fy = value  # a constant, or one per row of stacked variants
         else:
             slides = slides or {name: s[0] for name, s in state.slide.items()}
             fx, fy = table_values(value, plan, state.drive, slides, entry)
@@ -192,8 +193,8 @@ def applied_loads(
         wrenches[b] = [add(w[0], fx), add(w[1], fy), add(w[2], cross(px, py, fx, fy))]
     for b, value, entry in loads.torques:
         t: Any
-        if isinstance(value, float):
-            t = value
+        if not isinstance(value, LoadTable):
+            t = value  # a constant, or one per row of stacked variants
         else:
             slides = slides or {name: s[0] for name, s in state.slide.items()}
             t = table_values(value, plan, state.drive, slides, entry)[0]

@@ -13,6 +13,7 @@ xarray and dask are imported only when a study needs them.
 
 from __future__ import annotations
 
+import inspect
 import itertools
 import warnings
 from collections.abc import Callable, Mapping, Sequence
@@ -24,6 +25,7 @@ import numpy as np
 from assur._batch import CHUNK, near_change_points, stacked, summaries
 from assur._loads import compile_loads
 from assur._stack import Unstackable, signature
+from assur._text import suggest
 from assur._variants import Template, compile_many, form, numbers, template
 from assur._vec import Array
 from assur.analysis import forces, positions
@@ -53,7 +55,9 @@ class Study:
         One row per variant, indexed by the variant's number: its parameters, its
         summary values (NaN for a variant without them) and ``error``, the one-line
         reason a variant could not be built or analysed (empty when it could), and
-        ``warning``, the warnings its analysis gave (empty when none).
+        ``warning``, the warnings its analysis gave (empty when none). When no
+        variant could be analysed there are no summary values: the parameters,
+        ``error`` and ``warning`` alone.
     """
 
     factory: Factory
@@ -79,33 +83,45 @@ class Study:
         variants : sequence of int, optional
             The variants' numbers; all of them by default.
         columns : sequence of str, optional
-            The columns; every column of the first variant analysed by default.
+            The columns; every column of the variants analysed by default.
 
         Returns
         -------
         xarray.Dataset
             ``values`` with dimensions (variant, position, column), NaN for a variant
             that fails and a column it lacks; the parameters are coordinates along
-            ``variant`` and the driver positions along ``position``.
-        """
-        import xarray as xr
+            ``variant``, and ``angle`` holds the driver positions along ``position``
+            (deg, or m for a slider; dimensions (position, driver) with several
+            drivers).
 
-        chosen = list(range(len(self))) if variants is None else list(variants)
+        Raises
+        ------
+        UsageError
+            For a variant number that is not one of the study's, or a column that
+            none of the variants analysed has.
+        ImportError
+            When xarray is not installed.
+        """
+        xr = _optional("xarray")
+        chosen = _chosen(variants, len(self))
         found: list[dict[str, Array] | None] = []
         for i in chosen:
             found.append(
                 _table(self.factory, _variant(self.parameters, i), self.angles)
             )
-        names = list(columns) if columns is not None else _names(found)
+        names = _names(found) if columns is None else _known(list(columns), found)
         data = np.full((len(chosen), self.angles.shape[0], len(names)), np.nan)
         for row, table in enumerate(found):
             for j, name in enumerate(names):
                 if table is not None and name in table:
                     data[row, :, j] = table[name]
+        angles = self.angles
+        along = ("position",) if angles.ndim == 1 else ("position", "driver")
         coords: dict[str, Any] = {
             "variant": chosen,
-            "position": np.arange(self.angles.shape[0]),
+            "position": np.arange(angles.shape[0]),
             "column": names,
+            "angle": (along, angles),
         }
         for name, values in self.parameters.items():
             coords[name] = ("variant", values[chosen])
@@ -147,16 +163,23 @@ def sweep(
     Raises
     ------
     UsageError
-        For parameters that are not equal-length 1-D arrays of real numbers, or
-        driver positions that are not finite real numbers.
+        For parameters that are not equal-length 1-D arrays of real numbers, that
+        the factory does not take or that are named as a column of the summary
+        (``error``, ``warning``, ``variant``) or of :meth:`Study.tables`
+        (``position``, ``column``, ``values``, ``angle``); driver positions that
+        are not finite real numbers; a ``client`` that is not a dask.distributed
+        client or ``partitions`` that is not a positive integer.
+    ImportError
+        When pandas (or with ``client``, dask.distributed) is not installed.
 
     Notes
     -----
-    A variant whose factory raises (an AssurError, ValueError or ArithmeticError)
-    or whose analysis raises an AssurError is not fatal: its ``error`` says why, as
+    A variant whose factory raises or returns something other than a Mechanism, or
+    whose analysis raises an AssurError, is not fatal: its ``error`` says why, as
     ``assur.forces(factory(**p), angles)`` would have said. Variants that share a
     topology are solved together, the plan's structure once and their numbers
-    stacked over variants x positions.
+    stacked over variants x positions. Integer and boolean parameters reach the
+    factory as Python ints and bools, the others as floats.
 
     Examples
     --------
@@ -166,7 +189,9 @@ def sweep(
     [90.9, 81.0]
     """
     values = _parameters(parameters)
+    _takes(factory, values)
     given = _angles(angles)
+    _optional("pandas")
     if client is None:
         table = summarise(factory, values, given)
     else:
@@ -184,26 +209,36 @@ def summarise(
     import pandas as pd
 
     count = len(next(iter(parameters.values())))
-    rows: list[dict[str, Any]] = []
-    size = max(1, CHUNK // max(1, angles.shape[0]))
+    frames = []
+    size = max(1, min(CHUNK // max(1, angles.shape[0]), BLOCK // GROUPED))
     _keep_the_heap()
     templates: dict[Any, Template | None] = {}
     for first in range(0, count, GROUPED * size):
         block = range(first, min(first + GROUPED * size, count))
-        rows += _block(factory, parameters, angles, block, templates, size)
-    names: dict[str, None] = dict.fromkeys(parameters)
-    for row in rows:
-        names.update(dict.fromkeys(row))
-    order = [n for n in names if n not in ("error", "warning")] + ["error", "warning"]
-    frame = pd.DataFrame(rows, index=pd.RangeIndex(start, start + count))
-    frame = frame.reindex(columns=order)
-    frame.index.name = "variant"
+        rows = _block(factory, parameters, angles, block, templates, size)
+        # a block's rows as columns: a dict per variant costs ten times as much
+        frames.append(pd.DataFrame(rows, index=pd.RangeIndex(block.start, block.stop)))
+    frame = ordered(pd.concat(frames), list(parameters))
+    frame.index = pd.RangeIndex(start, start + count, name="variant")
     return frame
+
+
+def ordered(frame: Any, parameters: list[str]) -> Any:
+    """Return the summary ``frame`` with its columns in order.
+
+    The parameters, the summary values in the order met, then ``error`` and
+    ``warning``.
+    """
+    last = ["error", "warning"]
+    rest = [c for c in frame.columns if c not in parameters and c not in last]
+    return frame.reindex(columns=[*parameters, *rest, *last])
 
 
 GROUPED = 8
 """Batches of variants built and compiled together: the checks of a compilation cost
 about as much for a few hundred variants as for the few dozen of one batch."""
+BLOCK = 4096
+"""Most variants built at once (their mechanisms and rows are held together)."""
 
 
 def _block(
@@ -227,16 +262,28 @@ def _block(
         p = _variant(parameters, i)
         rows.append({**p, "error": "", "warning": ""})
         try:
-            mech = factory(**p)
-        except (AssurError, ValueError, ArithmeticError) as err:
+            mech = _built(factory, p)
+        except Exception as err:  # the factory's own error, recorded
             rows[-1]["error"] = _line(err)
             continue
         forms.setdefault(form(mech), []).append((i, mech))
     alone: list[tuple[int, Mechanism]] = []
     rest: list[tuple[int, Mechanism]] = []
     for key, members in forms.items():
+        if key not in templates and len(members) == 1:
+            # a form of one variant (one crank speed of a study over speeds, say)
+            # costs a template's compilation and a batch: a separate call is less
+            alone += members
+            continue
         model = _template(templates, key, members, rest)
-        if model is None:
+        if model is None or model.loads.empty:
+            # a form without loads fails as a separate call does: analysed alone
+            alone += members
+            continue
+        try:
+            given = positions(model.plan, angles)
+        except AssurError:
+            # angles of another shape than the drivers': each says so alone
             alone += members
             continue
         table = np.array([numbers(mech) for _, mech in members])
@@ -245,7 +292,6 @@ def _block(
         good = np.flatnonzero(~doubtful)
         if not good.size:
             continue
-        given = positions(model.plan, angles)
         # the change-point screen of every batch at once (its cost is mostly per call)
         near = near_change_points(compiled.screen(good), model.plan, given)
         for start in range(0, good.size, size):
@@ -303,7 +349,8 @@ def _compiled(
     for i, mech in members:
         try:
             plan = compile_plan(mech)
-            key = signature(plan, compile_loads(plan))
+            loads = compile_loads(plan)
+            key = None if loads.empty else signature(plan, loads)
         except AssurError:
             key = None
         if key is None:
@@ -383,13 +430,36 @@ def _alone(mech: Mechanism, angles: Array) -> dict[str, Any]:
     return out
 
 
-def _table(factory: Factory, p: dict[str, float], angles: Array) -> dict[str, Array]:
+def _built(factory: Factory, p: dict[str, Any]) -> Mechanism:
+    """Return the mechanism ``factory(**p)``, checked to be one.
+
+    Raises
+    ------
+    UsageError
+        When the factory returns something else.
+    """
+    mech = factory(**p)
+    if not isinstance(mech, Mechanism):
+        msg = (
+            f"the factory returned {type(mech).__name__} for {_shown(p)}; expected "
+            "an assur.Mechanism"
+        )
+        raise UsageError(msg)
+    return mech
+
+
+def _shown(p: dict[str, Any]) -> str:
+    """Return a variant's parameters as text: ``rod=0.2, crank=0.07``."""
+    return ", ".join(f"{name}={value!r}" for name, value in p.items())
+
+
+def _table(factory: Factory, p: dict[str, Any], angles: Array) -> dict[str, Array]:
     """Return every column of one variant's force table; empty if it fails."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", AssurWarning)
         try:
-            table = forces(factory(**p), angles)
-        except (AssurError, ValueError, ArithmeticError):
+            table = forces(_built(factory, p), angles)
+        except Exception:  # a variant that fails has no table
             return {}
     return dict(zip(table.columns, table.arrays(), strict=True))
 
@@ -402,14 +472,111 @@ def _names(tables: list[dict[str, Array] | None]) -> list[str]:
     return list(out)
 
 
+def _known(names: list[str], tables: list[dict[str, Array] | None]) -> list[str]:
+    """Return ``names``, checked against the columns of ``tables`` that have any.
+
+    Raises
+    ------
+    UsageError
+        For a name that no table has (when some variant was analysed).
+    """
+    found = _names(tables)
+    if found:
+        for name in names:
+            if name not in found:
+                msg = (
+                    f"columns: no column {name!r} in the variants analysed"
+                    f"{suggest(name, found, listing=False)}"
+                )
+                raise UsageError(msg)
+    return names
+
+
+def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:
+    """Return the variants' numbers, checked to be the study's (0 to count - 1).
+
+    Raises
+    ------
+    UsageError
+        For a number that is not an integer from 0 to ``count - 1``.
+    """
+    if variants is None:
+        return list(range(count))
+    out = []
+    for i in variants:
+        if isinstance(i, bool) or not isinstance(i, int | np.integer):
+            msg = f"variants: expected variant numbers, got {i!r}"
+            raise UsageError(msg)
+        if not 0 <= i < count:
+            msg = f"variants: no variant {i}; expected numbers from 0 to {count - 1}"
+            raise UsageError(msg)
+        out.append(int(i))
+    return out
+
+
+def _takes(factory: Factory, parameters: dict[str, Array]) -> None:
+    """Check that ``factory`` takes the parameters by name, before any variant.
+
+    A callable whose signature cannot be read is left to its calls.
+
+    Raises
+    ------
+    UsageError
+        When the factory is not callable or does not take these parameters.
+    """
+    if not callable(factory):
+        msg = f"factory: expected a function returning a Mechanism, got {factory!r}"
+        raise UsageError(msg)
+    try:
+        signature = inspect.signature(factory)
+    except (TypeError, ValueError):
+        return
+    try:
+        signature.bind(**dict.fromkeys(parameters, 0.0))
+    except TypeError as err:
+        name = getattr(factory, "__qualname__", type(factory).__name__)
+        kind = inspect.Parameter
+        by_name = (kind.POSITIONAL_OR_KEYWORD, kind.KEYWORD_ONLY)
+        takes = [p.name for p in signature.parameters.values() if p.kind in by_name]
+        msg = (
+            f"parameters: the factory {name} {err}; expected its parameters "
+            f"({', '.join(takes) or 'none by name'})"
+        )
+        raise UsageError(msg) from None
+
+
+def _optional(module: str) -> Any:
+    """Import an optional dependency of studies, saying how to install it.
+
+    Raises
+    ------
+    ImportError
+        When it is not installed.
+    """
+    import importlib
+
+    try:
+        return importlib.import_module(module)
+    except ImportError as err:
+        msg = (
+            f"studies need {module}, which is not installed; expected "
+            "'pip install \"assur[study]\"'"
+        )
+        raise ImportError(msg) from err
+
+
 def _line(err: BaseException) -> str:
     """Return an error as one line: its class and its message."""
     return f"{type(err).__name__}: {' '.join(str(err).split())}"
 
 
-def _variant(parameters: dict[str, Array], i: int) -> dict[str, float]:
-    """Return the parameters of variant ``i``."""
-    return {name: float(values[i]) for name, values in parameters.items()}
+def _variant(parameters: dict[str, Array], i: int) -> dict[str, Any]:
+    """Return the parameters of variant ``i`` (Python floats, ints or bools)."""
+    return {name: values[i].item() for name, values in parameters.items()}
+
+
+RESERVED = ("error", "warning", "variant", "position", "column", "values", "angle")
+"""Names of the summary's and the tables' own columns and dimensions."""
 
 
 def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
@@ -426,6 +593,12 @@ def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
         if not isinstance(name, str) or not name.isidentifier():
             msg = f"parameters: expected names that are identifiers, got {name!r}"
             raise UsageError(msg)
+        if name in RESERVED:
+            msg = (
+                f"parameters: {name!r} names a column of the study's results; "
+                f"expected another name (not {', '.join(RESERVED)})"
+            )
+            raise UsageError(msg)
         try:
             arr = np.array(values)
         except (TypeError, ValueError) as err:
@@ -435,7 +608,8 @@ def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
             what = f"shape {arr.shape}" if arr.dtype.kind in "biuf" else str(arr.dtype)
             msg = f"parameters.{name}: expected a 1-D array of real numbers, got {what}"
             raise UsageError(msg)
-        out[name] = arr.astype(float)
+        # counts and choices stay integers; the rest are floats
+        out[name] = arr.astype(float) if arr.dtype.kind == "f" else arr.copy()
         out[name].flags.writeable = False
     lengths = {name: len(v) for name, v in out.items()}
     if len(set(lengths.values())) > 1:
@@ -478,6 +652,17 @@ def _distributed(
     """Run the variants in partitions on a dask.distributed cluster; one DataFrame."""
     import pandas as pd
 
+    _optional("distributed")
+    if not all(callable(getattr(client, f, None)) for f in ("submit", "gather")):
+        msg = f"client: expected a dask.distributed Client, got {client!r}"
+        raise UsageError(msg)
+    if partitions is not None and (
+        isinstance(partitions, bool)
+        or not isinstance(partitions, int | np.integer)
+        or partitions < 1
+    ):
+        msg = f"partitions: expected a positive number, got {partitions!r}"
+        raise UsageError(msg)
     count = len(next(iter(parameters.values())))
     if partitions is None:
         threads = sum(client.nthreads().values()) or 1
@@ -494,4 +679,5 @@ def _distributed(
         )
         for a, b in itertools.pairwise(bounds)
     ]
-    return pd.concat(client.gather(futures))
+    # partitions of other topologies bring their own columns: ordered as one run's
+    return ordered(pd.concat(client.gather(futures)), list(parameters))

@@ -163,6 +163,9 @@ def test_tables_give_every_column_of_chosen_variants(slider_study):
             "parameters: expected arrays of one length .* got rod 2, crank 1",
         ),
         ({"not a name": [0.2]}, "parameters: expected names that are identifiers"),
+        ({"error": [0.2]}, "parameters: 'error' names a column of the study's results"),
+        ({"variant": [0.2]}, "parameters: 'variant' names a column"),
+        ({"position": [0.2]}, "parameters: 'position' names a column"),
     ],
 )
 def test_parameters_are_checked(parameters, message):
@@ -176,8 +179,9 @@ def test_angles_are_checked():
 
 
 def test_a_wrong_parameter_name_is_not_a_variant_failure():
-    # a TypeError is a mistake in the study, not a variant that fails
-    with pytest.raises(TypeError):
+    # a name the factory does not take is a mistake in the study, not a variant that
+    # fails: said before any variant is built
+    with pytest.raises(assur.UsageError, match=r"unexpected keyword .*'length'.*rod"):
         assur.sweep(catalog.slider_crank, {"length": [0.2]}, ANGLES)
 
 
@@ -302,3 +306,184 @@ def test_a_variant_at_a_dead_centre_is_compiled_on_its_own():
     rows = np.array([numbers(m) for m in variants])
     _, doubtful = compile_many(template(variants[0]), rows)
     assert doubtful.tolist() == [False, True, True, False]
+
+
+# ------------------------------------------------------------------------------------
+# Loads, factories and arguments that a study must take as separate calls do
+
+
+def braked(torque: float, force: float) -> assur.Mechanism:
+    """The slider-crank with a torque on its crank and a force on its slider."""
+    mech = catalog.slider_crank()
+    loads = (
+        assur.Load("crank", torque=torque),
+        assur.Load("slider", at="B", force=(force, 0.0)),
+    )
+    return dataclasses.replace(mech, loads=mech.loads + loads)
+
+
+def test_variants_differing_in_a_torque_load_are_solved_together():
+    # a torque that differs between variants is a value per row of the batch, not a
+    # table of the crank's angle
+    parameters = {"torque": [1.0, 2.0, -3.0, 2.0], "force": [0.0, 10.0, 10.0, -5.0]}
+    study = assur.sweep(braked, parameters, ANGLES)
+    assert_agrees(study.summary, separate(braked, parameters, ANGLES))
+    torques = study.summary["driver.torque.max"].to_numpy()
+    assert torques[0] != torques[1]  # the loads count
+
+
+def bare(rod: float) -> assur.Mechanism:
+    """The slider-crank without masses or loads: nothing for a force analysis."""
+    mech = catalog.slider_crank(rod=rod)
+    links = tuple(
+        dataclasses.replace(link, mass=None, center=None, inertia=None)
+        for link in mech.links
+    )
+    return dataclasses.replace(mech, links=links, loads=())
+
+
+def test_variants_without_masses_or_loads_fail_as_a_separate_call_does():
+    # solved together they gave rows of zeros and no error
+    parameters = {"rod": [0.2, 0.25, 0.3]}
+    study = assur.sweep(bare, parameters, ANGLES)
+    expected = separate(bare, parameters, ANGLES)
+    assert all(e.startswith("ModelError: forces: no link has a mass") for e in expected)
+    assert_agrees(study.summary, expected)
+    # the parameters, error and warning alone: no variant has summary values
+    assert list(study.summary.columns) == ["rod", "error", "warning"]
+
+
+def test_a_shipped_example_without_masses_fails_in_a_study():
+    lever = assur.load(Path(__file__).parents[1] / "examples" / "lever_var9.toml")
+    study = assur.sweep(lambda k: lever, {"k": [0, 1]}, ANGLES)
+    assert study.summary["error"].str.startswith("ModelError: forces: no link").all()
+
+
+def picky(rod: float) -> assur.Mechanism:
+    """A factory that fails in its own ways for some variants."""
+    if rod > 0.35:
+        msg = "no such rod in the catalogue"
+        raise KeyError(msg)
+    if rod > 0.25:
+        return None  # type: ignore[return-value]
+    return catalog.slider_crank(rod=rod)
+
+
+def test_a_factory_error_of_any_kind_is_the_variants_alone():
+    study = assur.sweep(picky, {"rod": [0.2, 0.3, 0.4, 0.22]}, ANGLES)
+    errors = study.summary["error"].tolist()
+    assert errors[0] == errors[3] == ""
+    assert errors[1] == (
+        "UsageError: the factory returned NoneType for rod=0.3; expected an "
+        "assur.Mechanism"
+    )
+    assert errors[2] == "KeyError: 'no such rod in the catalogue'"
+    assert np.isnan(study.summary["B.F.max"].iloc[1])
+    expected = separate(catalog.slider_crank, {"rod": [0.22]}, ANGLES)[0]
+    assert study.summary["B.F.max"].iloc[3] == pytest.approx(expected["B.F.max"])
+
+
+def test_a_factory_that_takes_any_names_is_called_with_them():
+    # no signature to check against: each variant's call says what is wrong
+    def anything(**p):
+        return catalog.slider_crank(**p)
+
+    study = assur.sweep(anything, {"rod": [0.2], "length": [0.3]}, ANGLES)
+    assert "unexpected keyword argument 'length'" in study.summary["error"].iloc[0]
+
+
+def test_integer_and_boolean_parameters_reach_the_factory_as_they_are():
+    rods = [0.2, 0.25]
+    seen = []
+
+    def choose(i: int, long: bool) -> assur.Mechanism:
+        seen.append((type(i), type(long)))
+        return catalog.slider_crank(rod=rods[i] + (0.01 if long else 0.0))
+
+    study = assur.sweep(choose, {"i": [0, 1, 1], "long": [False, False, True]}, ANGLES)
+    assert set(seen) == {(int, bool)}
+    assert study.summary["error"].tolist() == ["", "", ""]
+    assert study.summary["i"].dtype.kind == "i"
+    assert study.summary["long"].dtype.kind == "b"
+    expected = separate(catalog.slider_crank, {"rod": [0.26]}, ANGLES)[0]
+    assert study.summary["B.F.max"].iloc[2] == pytest.approx(expected["B.F.max"])
+
+
+def test_a_study_over_crank_speeds_equals_separate_calls():
+    # every speed is a form of its own: each variant is analysed as a separate call
+    parameters = {"omega": [100.0, 150.0, 200.0, 150.0]}
+    study = assur.sweep(catalog.slider_crank, parameters, ANGLES)
+    assert_agrees(study.summary, separate(catalog.slider_crank, parameters, ANGLES))
+
+
+def test_angles_of_the_wrong_shape_fail_each_variant_alone():
+    # a one-driver variant given two drivers' positions fails as a separate call
+    # does; the two-driver variants are analysed
+    five = assur.load(
+        Path(__file__).parents[1] / "examples" / "five_bar_two_cranks.toml"
+    )
+    four = assur.load(Path(__file__).parents[1] / "examples" / "four_bar.toml")
+    grid = np.column_stack([ANGLES, ANGLES / 2.0])
+    study = assur.sweep(lambda k: five if k else four, {"k": [1, 0, 0, 1]}, grid)
+    errors = study.summary["error"].tolist()
+    assert errors[0] == errors[3] == ""
+    assert errors[1] == errors[2] != ""
+    with pytest.raises(assur.UsageError) as raised:
+        assur.forces(four, grid)
+    assert errors[1] == f"UsageError: {' '.join(str(raised.value).split())}"
+
+
+class Synchronous:
+    """A stand-in for a dask.distributed client that runs each task at once."""
+
+    def submit(self, fn, *args, pure=True):
+        return fn(*args)
+
+    def gather(self, futures):
+        return list(futures)
+
+    def nthreads(self):
+        return {"here": 1}
+
+
+def test_partitions_of_two_topologies_give_one_runs_columns():
+    pytest.importorskip("distributed")
+    parameters = {
+        "kind": [0, 0, 0, 1, 1, 1],
+        "crank": [0.074, 0.06, 0.07, 0.08, 0.07, 0.09],
+        "rod": [0.2, 0.16, 0.18, 0.14, 0.15, 0.16],
+    }
+    local = assur.sweep(mixed, parameters, ANGLES)
+    parted = assur.sweep(mixed, parameters, ANGLES, Synchronous(), partitions=2)
+    assert list(parted.summary.columns)[-2:] == ["error", "warning"]
+    assert parted.summary.equals(local.summary)
+
+
+@pytest.mark.parametrize(
+    ("client", "partitions", "message"),
+    [
+        (3, None, "client: expected a dask.distributed Client, got 3"),
+        (Synchronous(), 0, "partitions: expected a positive number, got 0"),
+        (Synchronous(), -3, "partitions: expected a positive number, got -3"),
+        (Synchronous(), 1.5, "partitions: expected a positive number, got 1.5"),
+    ],
+)
+def test_the_cluster_arguments_are_checked(client, partitions, message):
+    pytest.importorskip("distributed")
+    with pytest.raises(assur.UsageError, match=message):
+        assur.sweep(
+            catalog.slider_crank, {"rod": [0.2]}, ANGLES, client, partitions=partitions
+        )
+
+
+def test_tables_say_which_variants_and_columns_there_are(slider_study):
+    pytest.importorskip("xarray")
+    _, study = slider_study
+    data = study.tables(variants=[0], columns=["B.F"])
+    np.testing.assert_array_equal(data["angle"], ANGLES)
+    assert data["angle"].dims == ("position",)
+    for wrong in ([7], [-1], [0.5], [True]):
+        with pytest.raises(assur.UsageError, match="variants: "):
+            study.tables(variants=wrong)
+    with pytest.raises(assur.UsageError, match=r"no column 'driver\.torq'.*torque'"):
+        study.tables(variants=[0], columns=["driver.torq"])
