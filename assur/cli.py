@@ -525,9 +525,41 @@ def _write_tables(
                 del part, table, arrays  # one slice in memory at a time
     except StdoutError as err:
         raise err.error from None  # after the files' cleanup: main reports it
+    for writer in writers:
+        if isinstance(writer, _Spared) and writer.gone is not None:
+            # the files are whole: main stops quietly, as for standard output alone
+            raise writer.gone
     if args.json:
         _say("")
     return rows, names
+
+
+class _Spared:
+    """The writer of standard output beside file outputs.
+
+    A reader that goes away (``| head``) stops the table on standard output, not
+    the files asked for: they are written to the end; ``gone`` keeps the error.
+    """
+
+    def __init__(self, writer: Any) -> None:
+        self.writer = writer
+        self.gone: BrokenPipeError | None = None
+
+    def write(self, columns: Any) -> None:
+        self._guarded(self.writer.write, columns)
+
+    def close(self) -> None:
+        self._guarded(self.writer.close)
+
+    def _guarded(self, action: Callable[..., None], *args: Any) -> None:
+        if self.gone is not None:
+            return
+        try:
+            action(*args)
+        except StdoutError as err:
+            if not isinstance(err.error, BrokenPipeError):
+                raise
+            self.gone = err.error
 
 
 def _writers(
@@ -557,6 +589,10 @@ def _writers(
     if args.json:
         write, encode = _open(stack, "-")
         writers.append(JsonWriter(write, name, names, encode, told()))
+    if len(writers) > 1 and (args.json or args.csv == "-"):
+        # standard output is one of the outputs, the files the others
+        at = -1 if args.json else 0
+        writers[at] = _Spared(writers[at])
     for writer in writers:
         stack.enter_context(finishing(writer))
     return writers

@@ -31,6 +31,7 @@ from assur._cli_common import (
 from assur._output import output_folder, output_path, path_text
 from assur._text import describe
 from assur.errors import AssurError, AssurWarning, UsageError
+from assur.plotting._style import titled
 
 __all__ = ["register"]
 
@@ -367,9 +368,7 @@ def _diagrams(
     for ax, quantity in zip(axes, ("angle", "omega", "alpha"), strict=True):
         plotting.plot_motion(table, quantity=quantity, ax=ax)
         ax.set_title("")
-    axes[0].set_title(
-        f"{table.mechanism.name or 'Mechanism'}: motion of the links", fontsize=10
-    )
+    axes[0].set_title(f"{titled(table.mechanism)}: motion of the links", fontsize=10)
     for ax in axes[:-1]:
         ax.set_xlabel("")
     figures = {

@@ -454,3 +454,42 @@ def test_two_outputs_to_one_file_are_refused(tmp_path, capsys, command):
         "expected a file of its own for each output\n"
     )
     assert not target.exists()
+
+
+@pytest.mark.parametrize(
+    ("stdout", "files"),
+    [("--json", ["--csv", "out.csv"]), ("--csv", ["-", "--parquet", "out.parquet"])],
+)
+def test_a_reader_that_goes_away_leaves_the_files_whole(tmp_path: Path, stdout, files):
+    # ``assur ... --json --csv t.csv | head``: standard output stops, the file asked
+    # for is still written to the end (it kept an old file and said status 0)
+    if "--parquet" in files:
+        pytest.importorskip("pyarrow")
+    target = tmp_path / files[-1]
+    target.write_text("old\n")
+    command = [
+        sys.executable, "-m", "assur", "kinematics", str(SLIDER_CRANK),
+        "--angles", "0:36000:1", stdout, *files[:-1], str(target),
+    ]  # fmt: skip
+    with subprocess.Popen(
+        command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=tmp_path
+    ) as run:
+        assert run.stdout is not None
+        assert run.stderr is not None
+        assert len(run.stdout.read(100)) == 100
+        run.stdout.close()  # the reader goes
+        errors = run.stderr.read().decode()
+        status = run.wait()
+    assert status == 0, errors
+    assert "error" not in errors
+    assert "Traceback" not in errors
+    rows = len(parse_angles("0:36000:1"))
+    if target.suffix == ".csv":
+        lines = target.read_text().splitlines()
+        assert lines[0].startswith("angle,")
+        assert len(lines) == rows + 1
+    else:
+        import pyarrow.parquet as pq
+
+        assert pq.read_table(target).num_rows == rows
+    assert sorted(p.name for p in tmp_path.iterdir()) == [target.name]

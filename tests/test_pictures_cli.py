@@ -385,3 +385,59 @@ def test_report_real(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None
     )
     assert status == 0, err
     assert "<html" in out.read_text(encoding="utf-8").lower()
+
+
+# ------------------------------------------------------------- names as written
+
+
+@pytest.fixture
+def dollar_names(tmp_path: Path) -> Path:
+    """The four-bar with names that matplotlib would read as mathtext."""
+    text = (EXAMPLES / "four_bar.toml").read_text()
+    text = text.replace('name = "Crank-rocker four-bar"', 'name = "Four-bar $\\\\foo$"')
+    text = text.replace("[links.coupler]", '[links."$^$"]').replace("coupler", "$^$")
+    text = text.replace('"B"', '"$B_$"').replace("[joints.B]", '[joints."$B_$"]')
+    text = text.replace("P = {", '"$P$" = {')
+    path = tmp_path / "dollars.toml"
+    path.write_text(text)
+    return path
+
+
+@pytest.mark.pictures
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["plot", "--forces", "-o", "p.png"],
+        ["plot", "--group", "1", "-o", "g.png"],
+        ["plans", "--angle", "30", "-o", "plans"],
+        ["diagrams", "-o", "diagrams"],
+        ["animate", "--frames", "2", "-o", "a.gif"],
+        ["report", "-o", "r.html"],
+    ],
+)
+def test_names_with_dollars_are_drawn_as_written(
+    capsys: pytest.CaptureFixture[str], dollar_names: Path, argv: list[str]
+):
+    # a name between two $ was parsed as mathtext: "$^$" failed to draw
+    command, *options = argv
+    out = dollar_names.parent / options[-1]
+    options[-1] = str(out)
+    status, _, err = _run(capsys, command, str(dollar_names), *options, "-q")
+    assert status == 0, err
+    assert err == ""
+    assert out.exists()
+
+
+def test_a_name_with_dollars_is_shown_literally():
+    from matplotlib import cbook
+
+    from assur.plotting._style import literal
+
+    assert cbook.is_math_text("$^$ and $x$")
+    assert not cbook.is_math_text(literal("$^$ and $x$"))
+    fig, ax = plt.subplots()
+    try:
+        ax.text(0, 0, literal("$^$ and $\\foo$"))
+        fig.canvas.draw()  # mathtext would fail on both
+    finally:
+        plt.close(fig)

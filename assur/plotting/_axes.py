@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur.plotting._context import _revolute, _unit
+from assur.plotting._style import literal
 
 if TYPE_CHECKING:
     from assur.analysis import Table
@@ -73,7 +74,7 @@ def _handles(entries: list[tuple[str, str]]) -> list[Any]:
     from matplotlib.lines import Line2D
 
     return [
-        Line2D([], [], color=c or "none", lw=4 if c else 0, label=text)
+        Line2D([], [], color=c or "none", lw=4 if c else 0, label=literal(text))
         for text, c in entries
     ]
 

@@ -16,6 +16,7 @@ from assur.plotting._geometry import (
     _link_spots,
     _merge_joints,
 )
+from assur.plotting._style import literal
 
 if TYPE_CHECKING:
     from assur.plotting._context import _Context, _Pose
@@ -35,7 +36,7 @@ def _label_joints(
         ax.text(
             at[0],
             at[1],
-            ", ".join(names),
+            literal(", ".join(names)),
             fontsize=9,
             fontweight="bold",
             ha="left" if d[0] > 0.3 else "right" if d[0] < -0.3 else "center",
@@ -58,7 +59,7 @@ def _label_link(
     ax.text(
         at[0],
         at[1],
-        ctx.plan.bodies[body],
+        literal(ctx.plan.bodies[body]),
         fontsize=8.5,
         ha="center",
         va="center",

@@ -1,6 +1,8 @@
-"""Colours and opacities shared by every picture of :mod:`assur.plotting`."""
+"""What every picture of :mod:`assur.plotting` shares: colours, opacities, names."""
 
 from __future__ import annotations
+
+from typing import Any
 
 BALANCING_COLOR = "#6a3d9a"
 """Colour of the balancing loads (the links' colours are in :mod:`assur._style`)."""
@@ -26,3 +28,17 @@ FAINT = 0.22
 """Opacity of the links drawn only for orientation."""
 ARROW_LENGTH = 0.28
 """Length of the largest force arrow at the default scale, relative to the mechanism."""
+
+
+def literal(text: str) -> str:
+    """Return ``text`` (a name from the file) to be drawn as it is written.
+
+    matplotlib reads the text between two ``$`` as mathtext: a name such as
+    ``$^$`` would be parsed (and fail to draw), ``$x$`` set in italics.
+    """
+    return text.replace("$", r"\$")
+
+
+def titled(mechanism: Any) -> str:
+    """Return a mechanism's name for a title, drawn as written ("Mechanism" if none)."""
+    return literal(mechanism.name or "Mechanism")

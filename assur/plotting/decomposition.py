@@ -38,7 +38,13 @@ from assur.plotting._forces import (
     _tex,
 )
 from assur.plotting._geometry import _anchor, _extent, _public
-from assur.plotting._style import INERTIA_COLOR, LOAD_COLOR, REACTION_COLOR
+from assur.plotting._style import (
+    INERTIA_COLOR,
+    LOAD_COLOR,
+    REACTION_COLOR,
+    literal,
+    titled,
+)
 from assur.plotting.mechanism import _draw_mechanism
 
 if TYPE_CHECKING:
@@ -78,10 +84,10 @@ def draw_decomposition(table: Table, angle: Any = None) -> Any:
         _draw_mechanism(ax, ctx, pose, full, faint - full)
         _frame_axes(ax, ctx, every, ctx.size, margin=0.08)
         on = sorted(_public(ctx.plan.bodies[b]) for b in faint)
-        ax.set_title(f"{k + 1}. {text}\nhangs on: {', '.join(on)}", fontsize=9)
+        ax.set_title(literal(f"{k + 1}. {text}\nhangs on: {', '.join(on)}"), fontsize=9)
     fig.suptitle(
-        f"{table.mechanism.name or 'Mechanism'}: {_structure(ctx.plan).formula}\n"
-        f"{_position_title(table, row)}",
+        f"{titled(table.mechanism)}: {literal(_structure(ctx.plan).formula)}\n"
+        f"{literal(_position_title(table, row))}",
         fontsize=10,
     )
     return fig
@@ -197,7 +203,8 @@ def draw_free_body(
     _frame_axes(ax, ctx, seen, 0.5 * ctx.size, margin=0.12)
     text, color, _ = ctx.legend[len(ctx.plan.drivers) + group_index]
     ax.set_title(
-        f"Free body of group {text}\n{_position_title(table, row)}", fontsize=10
+        literal(f"Free body of group {text}\n{_position_title(table, row)}"),
+        fontsize=10,
     )
     _legend(
         ax,

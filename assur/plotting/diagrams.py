@@ -15,7 +15,7 @@ from assur.columns import LINK_PARTS, POINT_PARTS
 from assur.errors import ModelError
 from assur.plotting._axes import _driver_axis, _frame_axes, _new_axes
 from assur.plotting._context import _Context, _context, _row, _unit
-from assur.plotting._style import PATH_COLORS
+from assur.plotting._style import PATH_COLORS, literal, titled
 from assur.plotting.mechanism import _draw_mechanism
 
 if TYPE_CHECKING:
@@ -86,7 +86,7 @@ def plot_motion(
     # the unit of the columns drawn, as the schema gives it
     units = " or ".join(dict.fromkeys(_unit(table, key) for key in plotted))
     ax.set_ylabel(f"{quantity} [{units}]" if units else quantity)
-    ax.set_title(f"{table.mechanism.name or 'Mechanism'}: {quantity}", fontsize=10)
+    ax.set_title(f"{titled(table.mechanism)}: {quantity}", fontsize=10)
     ax.legend(fontsize=8, ncols=2 if len(ax.lines) > 8 else 1)
     return ax
 
@@ -111,19 +111,24 @@ def _plot_quantity(
     color, style = _link_style(ctx, name)
     if f"{name}.{quantity}" in table:
         ax.plot(
-            x, table[f"{name}.{quantity}"], lw=1.6, label=name, color=color, ls=style
+            x,
+            table[f"{name}.{quantity}"],
+            lw=1.6,
+            label=literal(name),
+            color=color,
+            ls=style,
         )
         return [f"{name}.{quantity}"]
     if quantity in VECTORS and f"{name}.{VECTORS[quantity][0]}" in table:
         cx, cy = VECTORS[quantity]
-        line = ax.plot(x, table[f"{name}.{cx}"], lw=1.6, label=f"{name} {cx}")
+        line = ax.plot(x, table[f"{name}.{cx}"], lw=1.6, label=literal(f"{name} {cx}"))
         ax.plot(
             x,
             table[f"{name}.{cy}"],
             lw=1.6,
             ls="--",
             color=line[0].get_color(),
-            label=f"{name} {cy}",
+            label=literal(f"{name} {cy}"),
         )
         return [f"{name}.{cx}", f"{name}.{cy}"]
     msg = _no_quantity(table, name, quantity)
@@ -218,12 +223,12 @@ def plot_paths(
             color=color,
             lw=2.4 if coupler else 1.4,
             zorder=5,
-            label=f"{name} (coupler curve)" if coupler else name,
+            label=literal(f"{name} (coupler curve)" if coupler else name),
         )
         _sense(ax, xy, color)
         seen += list(xy)
     _frame_axes(ax, ctx, seen, ctx.size, margin=0.06)
-    ax.set_title(f"{table.mechanism.name or 'Mechanism'}: paths of points", fontsize=10)
+    ax.set_title(f"{titled(table.mechanism)}: paths of points", fontsize=10)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
     return ax
 

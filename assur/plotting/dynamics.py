@@ -13,7 +13,7 @@ import numpy as np
 
 from assur.columns import pretty_unit
 from assur.plotting._axes import _new_axes
-from assur.plotting._style import BALANCING_COLOR, PATH_COLORS
+from assur.plotting._style import BALANCING_COLOR, PATH_COLORS, titled
 
 if TYPE_CHECKING:
     from assur.dynamics_model import Dynamics
@@ -196,7 +196,7 @@ def plot_dynamics(result: Dynamics) -> Any:
     plot_speed(result, axes[1, 0])
     plot_energy_mass(result, axes[1, 1])
     fig.suptitle(
-        f"{result.mechanism.name or 'Mechanism'}: dynamic model reduced to the crank",
+        f"{titled(result.mechanism)}: dynamic model reduced to the crank",
         fontsize=11,
     )
     return fig

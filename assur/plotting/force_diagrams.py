@@ -16,7 +16,7 @@ from assur.errors import ModelError
 from assur.plotting._axes import _driver_axis, _new_axes
 from assur.plotting._context import _context, _need_forces, _unit
 from assur.plotting._geometry import _on
-from assur.plotting._style import BALANCING_COLOR
+from assur.plotting._style import BALANCING_COLOR, literal, titled
 
 if TYPE_CHECKING:
     from assur.analysis import Table
@@ -45,13 +45,13 @@ def plot_torque(table: Table, ax: Any = None) -> Any:
     ax = _new_axes(ax, (8.0, 4.5))
     x = _driver_axis(ax, table)
     for i, d in enumerate(plan.drivers):
-        name = f" at {d.pair.name}" if len(plan.drivers) > 1 else ""
+        name = literal(f" at {d.pair.name}") if len(plan.drivers) > 1 else ""
         _plot_balancing(ax, table, x, i, name)
     ax.axhline(0.0, color="black", lw=0.6)
     keys = [_driver_key(table, i) for i in range(len(plan.drivers))]
     units = " or ".join(dict.fromkeys(_unit(table, key) for key in keys))
     ax.set_ylabel(f"balancing load [{units}]")
-    ax.set_title(f"{table.mechanism.name or 'Mechanism'}: balancing load", fontsize=10)
+    ax.set_title(f"{titled(table.mechanism)}: balancing load", fontsize=10)
     ax.legend(fontsize=8)
     return ax
 
@@ -147,7 +147,7 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
         _locus(ax, table, force[:, 0], force[:, 1], ctx.color[pairs[name].second])
         most = np.nanmax(np.hypot(force[:, 0], force[:, 1]))
         ax.set_title(
-            f"{name}: {_on(ctx.plan, name)}\n"
+            f"{literal(name)}: {literal(_on(ctx.plan, name))}\n"
             f"max {most:.4g} {_unit(table, f'{name}.F')}",
             fontsize=8.5,
         )
@@ -157,7 +157,7 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
     for ax in list(axes.flat)[len(names) :]:
         ax.set_axis_off()
     fig.suptitle(
-        f"{table.mechanism.name or 'Mechanism'}: hodographs of the joint reactions",
+        f"{titled(table.mechanism)}: hodographs of the joint reactions",
         fontsize=10,
     )
     return fig
@@ -219,7 +219,7 @@ def plot_shaking(table: Table) -> Any:
     moment.set_ylabel(f"moment [{_unit(table, 'shaking.M')}]")
     moment.legend(fontsize=8)
     fig.suptitle(
-        f"{table.mechanism.name or 'Mechanism'}: shaking force and moment on the frame",
+        f"{titled(table.mechanism)}: shaking force and moment on the frame",
         fontsize=10,
     )
     return fig

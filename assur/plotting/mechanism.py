@@ -37,6 +37,8 @@ from assur.plotting._style import (
     GROUND_COLOR,
     INERTIA_COLOR,
     REACTION_COLOR,
+    literal,
+    titled,
 )
 
 if TYPE_CHECKING:
@@ -147,8 +149,8 @@ def _draw_row(
         if _draw_friction_circles(ax, ctx, pose):
             entries.insert(-1, ("friction circle (dashed), reaction tangent", ""))
     _frame_axes(ax, ctx, list(limits) if limits is not None else seen, ctx.size)
-    name = ctx.table.mechanism.name or "Mechanism"
-    ax.set_title(f"{name}, {_position_title(ctx.table, row)}", fontsize=10)
+    title = f"{titled(ctx.table.mechanism)}, {literal(_position_title(ctx.table, row))}"
+    ax.set_title(title, fontsize=10)
     if entries and legend:
         _legend(ax, entries)
     return entries

@@ -20,6 +20,7 @@ from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
 from assur.groups._dyad import DyadSolver
 from assur.plotting._geometry import _nice
+from assur.plotting._style import literal, titled
 
 if TYPE_CHECKING:
     from assur.table import Table
@@ -103,7 +104,7 @@ def _images_plot(ax: Any, found: dict[str, np.ndarray], mu: float, color: str) -
         _arrow(ax, np.zeros(2), tip, color, lw=0.9, alpha=0.55)
         ax.plot(*tip, "o", ms=3.5, color=color)
         ax.annotate(
-            _label(name),
+            literal(_label(name)),
             tip,
             xytext=(4, 4),
             textcoords="offset points",
@@ -154,7 +155,7 @@ def _legend(ax: Any, entries: list[tuple[str, str]], note: str) -> None:
     """Put a legend of coloured entries and a note (the scale)."""
     from matplotlib.lines import Line2D
 
-    handles = [Line2D([], [], color=c, lw=3, label=t) for t, c in entries]
+    handles = [Line2D([], [], color=c, lw=3, label=literal(t)) for t, c in entries]
     handles.append(Line2D([], [], color="none", label=note))
     ax.legend(handles=handles, fontsize=8, loc="best")
 
@@ -163,7 +164,7 @@ def _title(pos: Position, what: str) -> str:
     """Return a plan's title: the mechanism, the plan and the driver position."""
     angle = ", ".join(f"{x:g}" for x in pos.table.given[0])
     unit = "°" if pos.plan.drivers[0].kind == "R" else " m"
-    return f"{pos.mechanism.name or 'Mechanism'}: {what} at {angle}{unit}"
+    return f"{titled(pos.mechanism)}: {what} at {angle}{unit}"
 
 
 def velocity_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
@@ -262,7 +263,7 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
         _arrow(ax, tip, end, color)
         mid = 0.5 * (tip + end)
         ax.annotate(
-            name.replace("\\vec ", "").replace("\\", ""),
+            literal(name.replace("\\vec ", "").replace("\\", "")),
             mid,
             fontsize=7,
             xytext=(3, 3),
@@ -274,7 +275,7 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
     ax.grid(True, lw=0.4, alpha=0.4)
     ax.set_xlabel("mm of the polygon")
     ax.set_title(
-        f"group {rec.label}: closes within {float(np.hypot(*tip)):.1e} mm\n"
+        f"group {literal(rec.label)}: closes within {float(np.hypot(*tip)):.1e} mm\n"
         f"scale: μF = {mu:g} N/mm",
         fontsize=9,
     )
@@ -347,7 +348,7 @@ def zhukovsky_lever(table: Table, angle: Any = None, ax: Any = None) -> Any:
         at = np.array([-v[1], v[0]]) / mu
         _arrow(ax, at, at + x.force / fmu, "#d62728")
         ax.annotate(
-            x.tex.replace("\\vec ", "").replace("\\", ""),
+            literal(x.tex.replace("\\vec ", "").replace("\\", "")),
             at + x.force / fmu,
             fontsize=7,
         )
@@ -388,7 +389,7 @@ def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
         ax.plot(*p, "s" if absolute else "o", ms=6 if absolute else 4,
                 color="#d62728" if absolute else "#1f77b4", zorder=9)  # fmt: skip
         ax.annotate(
-            f"I{pos.link(i)}-{pos.link(j)}" if i else f"I{pos.link(j)}",
+            literal(f"I{pos.link(i)}-{pos.link(j)}" if i else f"I{pos.link(j)}"),
             p,
             xytext=(3, -9),
             textcoords="offset points",
