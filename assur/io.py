@@ -379,7 +379,7 @@ def _table(entry: str, value: dict, comps: tuple[str, ...], kind: str) -> LoadTa
             _fail(f"{entry}.{key}", f"expected a list of numbers, got {_echo(seq)}")
         seqs.append(tuple(_number(f"{entry}.{key}", v) for v in seq))
     return LoadTable(
-        _text(f"{entry}.over", d.get("over", "driver")), seqs[-1], tuple(seqs[:-1])
+        _text(f"{entry}.over", _get(d, "over", "driver")), seqs[-1], tuple(seqs[:-1])
     )
 
 
@@ -411,7 +411,7 @@ def parse(data: dict[str, Any]) -> Mechanism:
         With a one-line message naming the entry and what is wrong.
     """
     _check_keys("", data, KEYS[""])
-    version = data.get("format", FORMAT_VERSION)
+    version = _get(data, "format", FORMAT_VERSION)
     if type(version) is not int or version != FORMAT_VERSION:
         _fail(
             "format",
@@ -419,26 +419,26 @@ def parse(data: dict[str, Any]) -> Mechanism:
         )
     links = [
         _link(f"links.{key_text(name)}", name, d)
-        for name, d in _section("links", data.get("links", {})).items()
+        for name, d in _section("links", _get(data, "links", {})).items()
     ]
     joints = [
         _joint(f"joints.{key_text(name)}", name, d)
-        for name, d in _section("joints", data.get("joints", {})).items()
+        for name, d in _section("joints", _get(data, "joints", {})).items()
     ]
     drivers = [
         _driver(f"drivers[{i}]", d)
-        for i, d in enumerate(_list("drivers", data.get("drivers", [])))
+        for i, d in enumerate(_list("drivers", _get(data, "drivers", [])))
     ]
     gravity = None
-    if "gravity" in data:
+    if data.get("gravity") is not None:
         g = _check_keys("gravity", data["gravity"], KEYS["gravity"])
-        gravity = _vec("gravity.g", g.get("g", [0.0, -9.81]))
+        gravity = _vec("gravity.g", _get(g, "g", [0.0, -9.81]))
     loads_ = [
         _load(f"loads[{i}]", d)
-        for i, d in enumerate(_list("loads", data.get("loads", [])))
+        for i, d in enumerate(_list("loads", _get(data, "loads", [])))
     ]
     points = []
-    for name, d in _section("points", data.get("points", {})).items():
+    for name, d in _section("points", _get(data, "points", {})).items():
         entry = f"points.{key_text(name)}"
         _check_keys(entry, d, KEYS["point"])
         _require(entry, d, "link", "at")
@@ -451,12 +451,12 @@ def parse(data: dict[str, Any]) -> Mechanism:
         tuple(links),
         tuple(joints),
         tuple(drivers),
-        name=_text("name", data.get("name", "")),
-        description=_text("description", data.get("description", "")),
+        name=_text("name", _get(data, "name", "")),
+        description=_text("description", _get(data, "description", "")),
         gravity=gravity,
         loads=tuple(loads_),
         points=tuple(points),
-        motor=None if "motor" not in data else _motor("motor", data["motor"]),
+        motor=None if data.get("motor") is None else _motor("motor", data["motor"]),
     )
 
 
@@ -497,7 +497,7 @@ def _joint(entry: str, name: str, d: Any) -> Joint:
         (pair[0], pair[1]),
         _point(f"{entry}.at", d["at"]),
         None if d.get("axis") is None else _vec(f"{entry}.axis", d["axis"]),
-        _number(f"{entry}.friction", d.get("friction", 0.0)),
+        _number(f"{entry}.friction", _get(d, "friction", 0.0)),
         _opt_number(f"{entry}.radius", d.get("radius")),
     )
 
@@ -508,7 +508,7 @@ def _driver(entry: str, d: Any) -> Driver:
     return Driver(
         _text(f"{entry}.joint", d["joint"]),
         _number(f"{entry}.omega", d["omega"]),
-        _number(f"{entry}.epsilon", d.get("epsilon", 0.0)),
+        _number(f"{entry}.epsilon", _get(d, "epsilon", 0.0)),
     )
 
 
@@ -527,6 +527,12 @@ def _list(entry: str, value: Any) -> list[Any]:
 
 def _opt_number(entry: str, value: Any) -> float | None:
     return None if value is None else _number(entry, value)
+
+
+def _get(data: dict[str, Any], key: str, default: Any) -> Any:
+    """Return ``data[key]``, or ``default`` when the key is missing or JSON's null."""
+    value = data.get(key)
+    return default if value is None else value
 
 
 def _load(entry: str, d: Any) -> Load:
@@ -550,12 +556,21 @@ _BARE = re.compile(r"^[A-Za-z0-9_-]+$")
 
 
 def _key(name: str) -> str:
-    return name if _BARE.match(name) else json.dumps(name, ensure_ascii=False)
+    return name if _BARE.match(name) else _quoted(name)
+
+
+def _quoted(text: str) -> str:
+    """Return ``text`` as a TOML basic string.
+
+    JSON's escapes are TOML's, but JSON leaves DEL (U+007F) as it is, which TOML
+    forbids in a string.
+    """
+    return json.dumps(text, ensure_ascii=False).replace("\x7f", "\\u007f")
 
 
 def _value(value: Any) -> str:
     if isinstance(value, str):
-        return json.dumps(value, ensure_ascii=False)
+        return _quoted(value)
     if isinstance(value, Toward):
         return (
             f"{{ from = {_value(value.start)}, toward = {_value(value.toward)}, "
@@ -577,8 +592,17 @@ def _table_text(t: LoadTable, comps: tuple[str, ...]) -> str:
     )
 
 
-def dumps(mech: Mechanism) -> str:
-    """Return the TOML text of a mechanism file for ``mech``."""
+def dumps(mech: Mechanism, json_format: bool = False) -> str:
+    """Return the text of a mechanism file for ``mech``, TOML or JSON.
+
+    With ``json_format`` the JSON of the same keys and values (read back by
+    :func:`loads` with ``json_format``).
+    """
+    if json_format:
+        import tomllib
+
+        # the TOML text's data, which holds exactly the mechanism's numbers
+        return json.dumps(tomllib.loads(dumps(mech)), indent=2, ensure_ascii=False)
     out = [f"format = {FORMAT_VERSION}", f"name = {_value(mech.name)}"]
     if mech.description:
         out.append(f"description = {_value(mech.description)}")
@@ -635,16 +659,19 @@ def dumps(mech: Mechanism) -> str:
 
 
 def save(mech: Mechanism, path: str | Path) -> None:
-    """Write ``mech`` as a TOML mechanism file.
+    """Write ``mech`` as a mechanism file, whole or not at all.
 
-    The file is written whole or not at all (:func:`assur._output.write_text`).
+    JSON for a ``.json`` suffix (any case), TOML for any other, as :func:`load` reads
+    them. The file is written whole or not at all (:func:`assur._output.write_text`).
 
     Raises
     ------
     OutputError
         When the file cannot be written; an old file of that name is kept.
     """
-    write_text(path, dumps(mech))
+    from pathlib import Path
+
+    write_text(path, dumps(mech, json_format=Path(path).suffix.lower() == ".json"))
 
 
 def write_csv(table: Any, path: Any = None) -> str | None:
