@@ -30,7 +30,8 @@ from assur._cli_common import (
 )
 from assur._output import output_folder, output_path, path_text
 from assur._text import describe
-from assur.errors import AssurError, AssurWarning, UsageError
+from assur.analysis import SKIPPED_WHY
+from assur.errors import AssemblyError, AssurError, AssurWarning, UsageError
 from assur.plotting._style import titled
 
 __all__ = ["register"]
@@ -91,9 +92,11 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         DPI,
     )
     p.add_argument("--angles", **angles)
+    _skip_option(p)
     p = sub.add_parser("animate", help="write an animated GIF of the sweep")
     _common(p, "PATH", "GIF file to write", 80.0, GIF_DPI_RANGE)
     p.add_argument("--angles", **angles)
+    _skip_option(p)
     p.add_argument(
         "--frames",
         type=int,
@@ -190,11 +193,28 @@ def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
     return path
 
 
-def _table(mech: Any, positions: Any, forces: bool) -> Any:
+def _skip_option(p: argparse.ArgumentParser) -> None:
+    """Add ``--skip-unassembled`` to a command drawing a sweep."""
+    p.add_argument(
+        "--skip-unassembled",
+        action="store_true",
+        help=f"leave out the positions {SKIPPED_WHY}",
+    )
+
+
+def _table(mech: Any, positions: Any, forces: bool, skip: bool = False) -> Any:
     from assur.analysis import forces as force_table
     from assur.analysis import kinematics
 
-    return force_table(mech, positions) if forces else kinematics(mech, positions)
+    analyse = force_table if forces else kinematics
+    table = analyse(mech, positions, skip_unassembled=skip)
+    if skip and not len(table):
+        msg = (
+            f"every position of the sweep is left out ({SKIPPED_WHY}); expected "
+            "positions where the mechanism moves"
+        )
+        raise AssemblyError(msg)
+    return table
 
 
 def _draw(fig: Any, path: Path, dpi: float) -> None:
@@ -329,7 +349,10 @@ def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:
     mech = load_mechanism(args.file)
     loaded = not compile_loads(plan_of(mech)).empty
     return mech, _table(
-        mech, positions(mech, args.angles), loaded if forces is None else forces
+        mech,
+        positions(mech, args.angles),
+        loaded if forces is None else forces,
+        getattr(args, "skip_unassembled", False),
     )
 
 
@@ -427,6 +450,10 @@ def _cmd_animate(args: argparse.Namespace) -> int:
     )
     mech = load_mechanism(args.file)
     sweep = positions(mech, args.angles)
+    # the whole sweep first: what cannot be assembled is counted over it, not the
+    # frames, and the frames are spread over the positions kept
+    kept = _table(mech, sweep, args.forces, args.skip_unassembled).given
+    sweep = kept[:, 0] if kept.shape[1] == 1 else kept
     pick = np.unique(
         np.linspace(0, len(sweep) - 1, min(args.frames, len(sweep))).round().astype(int)
     )

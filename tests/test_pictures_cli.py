@@ -441,3 +441,44 @@ def test_a_name_with_dollars_is_shown_literally():
         fig.canvas.draw()  # mathtext would fail on both
     finally:
         plt.close(fig)
+
+
+# ------------------------------------------------- sweeps a crank cannot go round
+
+TRIAD_P = str(Path(__file__).parent / "data" / "edge" / "triadP.toml")
+
+
+@pytest.mark.pictures
+def test_diagrams_skip_positions_a_crank_cannot_reach(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+):
+    # the report draws such a sweep; diagrams refused it with no way round
+    out = tmp_path / "d"
+    status, _, err = _run(capsys, "diagrams", TRIAD_P, "-o", str(out), "-q")
+    assert status == 2
+    _error_line(err, "cannot be assembled at driver position 115 deg", "of 360")
+    status, _, err = _run(
+        capsys, "diagrams", TRIAD_P, "-o", str(out), "-q", "--skip-unassembled"
+    )
+    assert status == 0, err
+    assert {p.name for p in out.iterdir()} >= KINEMATIC
+
+
+@pytest.mark.pictures
+def test_animate_counts_the_sweep_and_skips_over_it(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+):
+    out = tmp_path / "a.gif"
+    argv = ["animate", TRIAD_P, "--frames", "3", "-o", str(out)]
+    status, _, err = _run(capsys, *argv)
+    assert status == 2
+    # the sweep's 360 positions, not the 3 frames picked from it
+    _error_line(err, "(123 of 360 positions fail)")
+    status, out_text, err = _run(capsys, *argv, "--skip-unassembled")
+    assert status == 0, err
+    assert "(3 frames)" in out_text
+    with Image.open(out) as im:
+        assert im.n_frames == 3
+    status, _, err = _run(capsys, *argv, "--skip-unassembled", "--angles", "200:220:1")
+    assert status == 2
+    _error_line(err, "every position of the sweep is left out")
