@@ -235,6 +235,17 @@ def check_distinct(outputs: list[tuple[str, Any]]) -> None:
         seen.append((option, path))
 
 
+def is_stdout(path: Any) -> bool:
+    """Whether ``path`` names the file standard output writes to (``/dev/stdout``)."""
+    if str(path) == "-":
+        return True
+    try:
+        here, there = os.fstat(sys.stdout.fileno()), os.stat(path)
+    except (AttributeError, OSError, ValueError):
+        return False
+    return (here.st_dev, here.st_ino) == (there.st_dev, there.st_ino)
+
+
 def _same_file(a: Any, b: Any) -> bool:
     """Whether paths ``a`` and ``b`` name one file (existing or not)."""
     try:

@@ -19,7 +19,12 @@ from typing import Any, NoReturn
 import numpy as np
 
 from assur._vec import Array, full
-from assur.errors import AssemblyError, AssurWarning, SingularConfigurationError
+from assur.errors import (
+    AssemblyError,
+    AssurWarning,
+    SelfLockingError,
+    SingularConfigurationError,
+)
 
 __all__ = ["CHUNK", "Skipped", "Slice", "slices"]
 
@@ -87,7 +92,7 @@ def slices(
 
     Raises
     ------
-    AssemblyError, SingularConfigurationError
+    AssemblyError, SingularConfigurationError, SelfLockingError
         As the analysis of the whole sweep at once raises them.
     """
     from assur.analysis import forces as force_table
@@ -107,6 +112,10 @@ def slices(
             except (AssemblyError, SingularConfigurationError) as err:
                 if n > chunk:
                     _raise_as_whole(mech, given, skip, err)
+                raise
+            except SelfLockingError as err:
+                if n > chunk:
+                    _raise_as_whole(mech, given, skip, err, forces=True)
                 raise
         if check and not skip and start == 0:
             # after the first slice, so that its other faults (no masses) come first
@@ -148,17 +157,23 @@ def _check(mech: Any, rest: Array, given: Array, chunk: int) -> None:
                 _raise_as_whole(mech, given, False, err)
 
 
-def _raise_as_whole(mech: Any, given: Array, skip: bool, err: Exception) -> NoReturn:
+def _raise_as_whole(
+    mech: Any, given: Array, skip: bool, err: Exception, forces: bool = False
+) -> NoReturn:
     """Raise the error of the whole sweep: its counts and ranges cover every position.
 
     Only the positions are solved again (no velocities, no forces), for the whole
-    sweep at once.
+    sweep at once; with ``forces`` (friction that locks), the balancing loads alone.
     """
+    from assur.analysis import forces as force_table
     from assur.analysis import kinematics
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
-        kinematics(mech, given, skip, columns=["angle"])
+        if forces:
+            force_table(mech, given, skip, columns=["driver.torque"])
+        else:
+            kinematics(mech, given, skip, columns=["angle"])
     raise err  # pragma: no cover - the whole sweep fails where a slice did
 
 

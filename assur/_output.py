@@ -191,6 +191,7 @@ def output_path(
     """
     from pathlib import Path
 
+    _not_a_folder(path)
     target, in_place = _target(Path(path))
     where = path_text(path)
     if in_place:
@@ -250,6 +251,19 @@ def output_folder(
                 os.replace(item, target / item.name)
     finally:
         shutil.rmtree(temporary, ignore_errors=True)
+
+
+def _not_a_folder(path: str | os.PathLike[str]) -> None:
+    """Refuse a file name written as a folder's, ending with a slash.
+
+    A Path drops the slash: ``--csv out/`` would write a file named ``out``.
+    """
+    if isinstance(path, str) and path.endswith(("/", os.sep)):
+        msg = (
+            f"{path_text(path)}: cannot write the file (the name ends with "
+            f"{path[-1]!r}, as a folder's); expected a file name"
+        )
+        raise OutputError(msg)
 
 
 def _target(path: Path) -> tuple[Path, bool]:

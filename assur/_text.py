@@ -11,6 +11,7 @@ import datetime
 import difflib
 import math
 from collections.abc import Iterable, Mapping, Sequence
+from typing import Any
 
 __all__ = [
     "ROMAN",
@@ -220,3 +221,15 @@ def position_title(
     if names:
         parts = [f"{n}: {p}" for n, p in zip(names, parts, strict=True)]
     return ", ".join(parts)
+
+
+def row_position(table: Any, row: int) -> str:
+    """Return the driver positions of ``table`` at ``row`` for a title.
+
+    :func:`position_title` of the drivers' positions (deg for a crank, m for a
+    slider), each named by its joint when there are several drivers.
+    """
+    drivers = table.plan.drivers
+    units = ["deg" if d.kind == "R" else "m" for d in drivers]
+    names = [d.pair.name for d in drivers] if len(drivers) > 1 else []
+    return position_title(units, table.given[row].tolist(), names)

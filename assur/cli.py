@@ -27,6 +27,7 @@ from assur._cli_common import (
     add_angle_option,
     check_distinct,
     check_not_input,
+    is_stdout,
     load_mechanism,
     one_position,
     parse_angles,
@@ -473,6 +474,16 @@ def _check_outputs(args: argparse.Namespace) -> None:
             "(or --csv PATH)"
         )
         raise UsageError(msg)
+    on_stdout = "--json" if args.json else "--csv -" if args.csv == "-" else None
+    for option in ("--csv", "--parquet"):
+        target = getattr(args, option[2:])
+        if on_stdout and target and target != "-" and is_stdout(target):
+            # /dev/stdout and its kin: two tables mixed in one stream
+            msg = (
+                f"{option} {path_text(target)}: is standard output, where "
+                f"{on_stdout} writes; expected a file of its own"
+            )
+            raise UsageError(msg)
     if args.parquet == "-":
         msg = "--parquet -: a Parquet file is not text; expected a file name"
         raise UsageError(msg)

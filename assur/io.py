@@ -6,6 +6,7 @@ of any fault; writing gives back a file that reads to the same mechanism.
 
 from __future__ import annotations
 
+import io
 import json
 import math
 import re
@@ -682,7 +683,8 @@ def write_csv(table: Any, path: Any = None) -> str | None:
     table : Table
     path : str, path-like, file object or "-", optional
         Where to write: a file (written whole or not at all, see
-        :mod:`assur._output`), an open text stream, or ``"-"`` for standard output.
+        :mod:`assur._output`), an open text or binary stream (UTF-8), or ``"-"``
+        for standard output.
 
     Raises
     ------
@@ -710,9 +712,12 @@ def write_csv(table: Any, path: Any = None) -> str | None:
         except StdoutError as err:
             raise err.error from None
     elif hasattr(path, "write"):
-        CsvWriter(lambda data: path.write(data.decode("utf-8")), table.columns).write(
-            columns
+        # a binary stream (open(..., "wb"), io.BytesIO) takes the UTF-8 bytes
+        binary = isinstance(path, io.RawIOBase | io.BufferedIOBase) or "b" in str(
+            getattr(path, "mode", "")
         )
+        write = path.write if binary else (lambda data: path.write(data.decode()))
+        CsvWriter(write, table.columns).write(columns)
     else:
         with output_path(path) as temporary, temporary.open("wb") as stream:
             # looked up when called: tests put a failing writer in its place

@@ -230,6 +230,40 @@ def test_csv_to_dev_stdout_in_a_pipe(tmp_path: Path):
     assert result.stdout.endswith(f"wrote 1 rows x {count} columns to /dev/stdout\n")
 
 
+def test_dev_stdout_beside_json_is_refused(tmp_path: Path):
+    # /dev/stdout is where --json writes too: the two tables came out mixed
+    result = subprocess.run(
+        f"{sys.executable} -m assur kinematics {FOUR_BAR} --angles 0 --json "
+        "--csv /dev/stdout | cat",
+        shell=True,
+        cwd=tmp_path,
+        env=subprocess_env(),
+        capture_output=True,
+        text=True,
+        timeout=60,
+        check=False,
+    )
+    assert result.returncode == 0  # cat's
+    assert result.stdout == ""
+    assert result.stderr == (
+        f"assur: error: {FOUR_BAR}: --csv /dev/stdout: is standard output, where "
+        "--json writes; expected a file of its own\n"
+    )
+
+
+def test_a_file_name_ending_with_a_slash_is_refused(tmp_path: Path, capsys):
+    # a Path drops the slash: "--csv out/" wrote a file named out
+    target = f"{tmp_path / 'out'}/"
+    line = one_error(capsys, "kinematics", FOUR_BAR, "--angles", "0", "--csv", target)
+    assert line == (
+        f"assur: error: {target}: cannot write the file (the name ends with '/', as "
+        "a folder's); expected a file name"
+    )
+    with pytest.raises(assur.OutputError, match="the name ends with '/'"):
+        assur.save(assur.catalog.four_bar(), target)
+    assert os.listdir(tmp_path) == []
+
+
 # --- outputs over the input -----------------------------------------------------
 
 

@@ -493,3 +493,23 @@ def test_a_reader_that_goes_away_leaves_the_files_whole(tmp_path: Path, stdout, 
 
         assert pq.read_table(target).num_rows == rows
     assert sorted(p.name for p in tmp_path.iterdir()) == [target.name]
+
+
+def test_friction_that_locks_is_counted_over_the_whole_sweep(
+    small_slices, tmp_path: Path, capsys
+):
+    # the slice where the group locked gave its own counts ("of 8192 positions")
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    path = tmp_path / "locks.toml"
+    path.write_text(text.replace("friction = 0.8", "friction = 1.5"))
+    mech = assur.load(path)
+    given = parse_angles("150:240:0.005")
+    with pytest.raises(assur.SelfLockingError) as whole:
+        assur.forces(mech, given)
+    assert f"of {len(given)} positions" in str(whole.value)
+    status = cli.main(
+        ["forces", str(path), "--angles", "150:240:0.005", "--csv", str(tmp_path / "t")]
+    )
+    assert status == 2
+    err = capsys.readouterr().err
+    assert err == f"assur: error: {path}: {whole.value}\n"

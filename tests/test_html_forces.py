@@ -49,7 +49,7 @@ def report(request) -> tuple[str, assur.Table]:
 def test_inertia_loads_agree_with_the_table(report) -> None:
     page, table = report
     part = section(page, "inertia")
-    assert "(30)" in part  # the report's first position
+    assert "(φ = 30.0°)" in part  # the report's first position, with its unit
     rows = re.findall(r'<tr data-link="([^"]+)"><th>[^<]*</th>(.*?)</tr>', part)
     massive = [link.name for link in table.mechanism.links if link.mass]
     assert [name for name, _ in rows] == massive
@@ -147,3 +147,26 @@ def test_the_diagrams_show_in_a_browser(browser, tmp_path: Path) -> None:  # noq
         "return document.querySelectorAll('#free-body-2 use').length"
     )
     assert used > 20
+
+
+def test_the_first_position_is_written_with_its_unit() -> None:
+    # a slider's position was shown without its unit, "(-0.04)"
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from assur._text import row_position
+    from assur.html._sections import first_position
+
+    def table(*kinds: str) -> SimpleNamespace:
+        drivers = [
+            SimpleNamespace(kind=k, pair=SimpleNamespace(name=n)) for k, n in kinds
+        ]
+        given = np.array([[30.0, -0.04][: len(kinds)]])
+        return SimpleNamespace(plan=SimpleNamespace(drivers=drivers), given=given)
+
+    assert first_position(table(("R", "A"))) == "φ = 30.0°"
+    assert row_position(table(("P", "guide")), 0) == "s = 30 m"
+    assert (
+        row_position(table(("R", "A"), ("P", "E")), 0) == "A: φ = 30.0°, E: s = -0.04 m"
+    )

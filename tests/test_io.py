@@ -458,3 +458,13 @@ def test_kinematics_columns_follow_the_contract():
     for q in ("s", "v", "a", "j"):
         assert f"guide.{q}" in t.columns
     assert "B.s" not in t.columns
+
+
+def test_csv_to_a_binary_stream():
+    # a file opened "wb" or a BytesIO took text and raised a bare TypeError
+    table = assur.kinematics(assur.catalog.four_bar(), [0.0, 90.0])
+    binary = io.BytesIO()
+    table.to_csv(binary)
+    text = io.StringIO()
+    table.to_csv(text)
+    assert binary.getvalue().decode("utf-8") == text.getvalue() == table.to_csv()

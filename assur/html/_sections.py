@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from assur._structure import Structure
-from assur._text import roman
+from assur._text import roman, row_position
 from assur.analysis import SKIPPED_WHY, Table
 from assur.html._data import all_groups, public
 from assur.html._series import table_columns
@@ -43,8 +43,8 @@ def wide_card(ident: str, title: str, body: str) -> str:
 
 
 def first_position(table: Table) -> str:
-    """Return the table's first driver position as HTML text (one value per driver)."""
-    return escape(", ".join(f"{x:g}" for x in table.given[0]))
+    """Return the table's first driver position as HTML text, with its unit."""
+    return escape(row_position(table, 0))
 
 
 def number(v: float) -> str:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._style import link_colours
-from assur._text import position_title, roman
+from assur._text import roman, row_position
 from assur.columns import pretty_unit, schema
 from assur.errors import ModelError
 from assur.plotting._style import GROUND_COLOR, PLAIN_COLOR
@@ -156,20 +156,9 @@ def _unit(table: Table, name: str) -> str:
     return pretty_unit({c.name: c for c in every}[name].unit)
 
 
-def _driver_columns(table: Table) -> list[str]:
-    """Return the column of each driver's position: ``angle``, or ``J.drive`` each."""
-    drivers = table.plan.drivers
-    if len(drivers) == 1:
-        return ["angle"]
-    return [f"{d.pair.name}.drive" for d in drivers]
-
-
 def _position_title(table: Table, row: int) -> str:
     """Driver position(s) at ``row`` for a title: "φ = 30.0°" or "s = 0.1 m"."""
-    drivers = table.plan.drivers
-    units = [_unit(table, name) for name in _driver_columns(table)]
-    names = [d.pair.name for d in drivers] if len(drivers) > 1 else []
-    return position_title(units, table.given[row].tolist(), names)
+    return row_position(table, row)
 
 
 def _need_forces(table: Table, what: str) -> ForceState:
