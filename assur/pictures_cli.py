@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import math
+import sys
 import warnings
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -252,7 +253,8 @@ PLANS = (
     "zhukovsky_lever",
     "instant_centres",
 )
-"""Names of the plans ``assur plans`` writes (each as .png and .svg)."""
+"""Names of the plans ``assur plans`` writes (each as .png and .svg), in order, for
+one driver; with several, one lever each: ``zhukovsky_lever_1``, ``_2``, ..."""
 
 
 def _folder(out: Path, what: str) -> Path:
@@ -275,20 +277,27 @@ def _cmd_plans(args: argparse.Namespace) -> int:
     loaded = not compile_loads(plan_of(mech)).empty
     at = np.asarray(angle, dtype=float).reshape(1, -1)
     t = _table(mech, at if at.shape[1] > 1 else at[:, 0], loaded)
-    makers = {
+    makers: dict[str, Callable[[], Any]] = {
         "velocity_plan": lambda: plotting.velocity_plan(t).figure,
         "acceleration_plan": lambda: plotting.acceleration_plan(t).figure,
-        "instant_centres": lambda: plotting.instant_centres(t).figure,
     }
     if loaded:
         makers["force_polygons"] = lambda: plotting.force_polygons(t)
-        if len(mech.drivers) == 1:
-            makers["zhukovsky_lever"] = lambda: plotting.zhukovsky_lever(t).figure
+        # one lever per driver, numbered in the file's order when there are several
+        count = len(mech.drivers)
+        for i in range(count):
+            lever = "zhukovsky_lever" if count == 1 else f"zhukovsky_lever_{i + 1}"
+            makers[lever] = _lever(plotting, t, i)
+    elif not getattr(args, "quiet", False):
+        print(
+            f"assur: note: {path_text(args.file)}: no force polygons and no lever: "
+            "no link has a mass and no load is applied",
+            file=sys.stderr,
+        )
+    makers["instant_centres"] = lambda: plotting.instant_centres(t).figure
     written = []
     with _figures(), output_folder(out, any_error=True) as folder:
-        for name in PLANS:
-            if name not in makers:
-                continue
+        for name in makers:
             fig = makers[name]()
             for suffix in (".png", ".svg"):
                 fig.savefig(folder / f"{name}{suffix}", dpi=dpi, bbox_inches="tight")
@@ -297,6 +306,11 @@ def _cmd_plans(args: argparse.Namespace) -> int:
     for name in written:
         _wrote(args, path_text(out / name))
     return 0
+
+
+def _lever(plotting: Any, table: Any, driver: int) -> Callable[[], Any]:
+    """Return what draws the lever of driver ``driver`` (its index) of ``table``."""
+    return lambda: plotting.zhukovsky_lever(table, driver=driver).figure
 
 
 def _cmd_plot(args: argparse.Namespace) -> int:

@@ -30,7 +30,7 @@ from assur.explain._tex import name, num, par, plain, vec
 from assur.groups._motion import Motion
 from assur.groups.driver import DriverPlan
 
-__all__ = ["driver_blocks", "lever_blocks"]
+__all__ = ["driver_blocks", "lever_blocks", "lever_load", "lever_rates", "lever_terms"]
 
 
 def _balancing(pos: Position, i: int) -> float:
@@ -176,7 +176,7 @@ def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
     ]
 
 
-def _rates(pos: Position, i: int) -> tuple[list[Motion], float, str]:
+def lever_rates(pos: Position, i: int) -> tuple[list[Motion], float, str]:
     """Return the velocities used on the lever, the driver's speed and a note.
 
     One driver moving: the velocities themselves and its speed. Otherwise the
@@ -231,9 +231,9 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     and the balancing load is minus their sum.
     """
     d = pos.plan.drivers[i]
-    bodies, speed, note = _rates(pos, i)
+    bodies, speed, note = lever_rates(pos, i)
     actual = bodies is pos.bodies
-    rows, power = _terms(pos, bodies)
+    rows, power = lever_terms(pos, bodies)
     sym = _symbol(d, len(pos.plan.drivers) > 1)
     tick = "" if actual else "'"
     rate = ("\\omega" if d.kind == "R" else "v") + tick
@@ -273,12 +273,25 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     return [*blocks, Display(tuple(lines))]
 
 
+def lever_load(pos: Position, i: int) -> float:
+    """Return driver ``i``'s balancing load read off the lever, friction's power in.
+
+    N m or N: what :func:`lever_blocks` finds, without the working.
+    """
+    bodies, speed, _ = lever_rates(pos, i)
+    _, power = lever_terms(pos, bodies)
+    _, lost = power_rows(pos, bodies, bodies is pos.bodies)
+    return -(power + lost) / speed
+
+
 def _percent(x: float) -> str:
     """Return a small percentage in a readable form."""
     return "0" if x == 0 else f"{x:.1e}".replace("e", "\\cdot 10^{") + "}"
 
 
-def _terms(pos: Position, bodies: list[Motion]) -> tuple[list[tuple[str, ...]], float]:
+def lever_terms(
+    pos: Position, bodies: list[Motion]
+) -> tuple[list[tuple[str, ...]], float]:
     """Return the table rows of every load's power and their sum (W)."""
     rows: list[tuple[str, ...]] = []
     total_power = 0.0

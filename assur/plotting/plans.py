@@ -10,14 +10,19 @@ the drawing. matplotlib is imported inside the functions only.
 
 from __future__ import annotations
 
+import dataclasses
+import functools
 import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur.errors import ModelError
+from assur.explain._lever import lever_load, lever_rates
 from assur.explain._loads_text import link_loads, own_loads
 from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
+from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._geometry import _nice
 from assur.plotting._style import literal, titled
@@ -38,6 +43,11 @@ __all__ = [
 
 PLAN_SIZE = 80.0
 """Length of the longest vector of a plan, mm of the drawing (about)."""
+SAME_PLACE = 0.5
+"""Images closer than this (mm of the drawing) are named in one label."""
+SAME_RATE = 1e-9
+"""Two links whose angular speeds differ by less than this times the fastest link's
+turn together: their relative instant centre is at infinity."""
 COLORS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf")
 
 
@@ -98,23 +108,36 @@ def _axes(ax: Any, title: str) -> Any:
 
 
 def _images_plot(ax: Any, found: dict[str, np.ndarray], mu: float, color: str) -> None:
-    """Draw every image from the pole and name it."""
+    """Draw every image from the pole; name them, those at one place in one label."""
+    places: list[tuple[np.ndarray, list[str]]] = []
     for name, v in found.items():
         tip = v / mu
         _arrow(ax, np.zeros(2), tip, color, lw=0.9, alpha=0.55)
-        ax.plot(*tip, "o", ms=3.5, color=color)
+        ax.plot(*tip, "o", ms=3.5, color=color, gid=f"image-{name}")
+        _place(places, tip, _label(name), SAME_PLACE)
+    for tip, names in places:
         ax.annotate(
-            literal(_label(name)),
+            literal(" = ".join(names)),
             tip,
             xytext=(4, 4),
             textcoords="offset points",
             fontsize=8,
-            gid=f"image-{name}",
         )
     ax.plot([0], [0], "ko", ms=5)
     ax.annotate(
         "pole", (0, 0), xytext=(-14, -12), textcoords="offset points", fontsize=8
     )
+
+
+def _place(
+    places: list[tuple[np.ndarray, list[str]]], at: np.ndarray, name: str, near: float
+) -> None:
+    """Add ``name`` at ``at`` to ``places``: to the names within ``near`` of it."""
+    for where, names in places:
+        if float(np.hypot(*(where - at))) <= near:
+            names.append(name)
+            return
+    places.append((at, [name]))
 
 
 def _chains(ax: Any, pos: Position, k: int, mu: float) -> list[tuple[str, str]]:
@@ -218,8 +241,9 @@ def force_polygons(table: Table, angle: Any = None) -> Any:
     """Draw the force polygon of every Assur group (reverse order), closed.
 
     Each polygon runs through the known loads on the group's first link and its
-    outer reaction, then those of the next link: the group is in equilibrium, so
-    the polygon closes at its start (the title gives the gap, round-off).
+    outer reaction (with its friction force), then those of the next link: the
+    group is in equilibrium, so the polygon closes at its start (the title gives
+    the gap, round-off).
 
     Returns
     -------
@@ -248,22 +272,28 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
     sequence: list[tuple[str, np.ndarray, str]] = []
     for i, body in enumerate(rec.bodies):
         pair = _outer(pos, rec, body)
-        for load in link_loads(pos, body, solved):
-            sequence.append((load.tex, load.force, COLORS[i % len(COLORS)]))
+        # a sliding pair's reaction is its normal part: its friction force is listed
+        for load in link_loads(pos, body, solved, [p.name for p in pair]):
+            if math.hypot(*load.force) > 0:  # a couple is no side of the polygon
+                sequence.append((load.tex, load.force, COLORS[i % len(COLORS)]))
         for p in pair:
             r = rec.reactions[p.name]
             sign = 1.0 if p.second == body else -1.0
             f = sign * np.array([float(np.ravel(r.fx)[0]), float(np.ravel(r.fy)[0])])
             other = p.first if p.second == body else p.second
-            sequence.append((f"F({pos.link(other)}→{pos.link(body)})", f, "#111111"))
+            # F_ij: the force of link i on link j, as the note writes it
+            symbol = (
+                f"\\vec F_{{{tex_name(pos.link(other))},{tex_name(pos.link(body))}}}"
+            )
+            sequence.append((symbol, f, "#111111"))
     mu = _scale([f for _, f, _ in sequence])
     tip = np.zeros(2)
-    for name, f, color in sequence:
+    for label, f, color in sequence:
         end = tip + f / mu
         _arrow(ax, tip, end, color)
         mid = 0.5 * (tip + end)
         ax.annotate(
-            literal(name.replace("\\vec ", "").replace("\\", "")),
+            _symbol(label),
             mid,
             fontsize=7,
             xytext=(3, 3),
@@ -291,51 +321,69 @@ def _outer(pos: Position, rec: Any, body: int) -> list[Any]:
     ]
 
 
-def lever_balance(table: Table, angle: Any = None) -> float:
-    """Return the balancing load read off Zhukovsky's lever (one driver), N m or N.
+def lever_balance(table: Table, angle: Any = None, driver: int = 0) -> float:
+    """Return the balancing load read off Zhukovsky's lever, N m or N.
 
     The sum of the moments about the pole of every load at its image point (the
-    velocity plan turned by +90 degrees) and of the inertia torques' terms, divided
-    by the driver's speed.
+    velocity plan turned by +90 degrees), of the couples' terms and of friction's
+    power, divided by the driver's speed: the balancing load of driver ``driver``
+    (its index in the file's order). With several drivers, or a driver standing
+    still, the velocities are those per unit speed of that driver, the others held
+    (as the explanatory note's lever).
+
+    Raises
+    ------
+    ModelError
+        For a kinematics table, or a driver index out of range.
     """
-    pos = _pos(table, angle)
-    total, speed = _lever_moment(pos)
-    return -total / speed
+    pos = _lever_position(table, angle, driver, "lever_balance")
+    return lever_load(pos, driver)
 
 
-def _lever_moment(pos: Position) -> tuple[float, float]:
-    """Return the sum of the loads' moments on the lever (W) and the driver's speed."""
-    d = pos.plan.drivers[0]
-    speed = (
-        pos.omega(d.body)
-        if d.kind == "R"
-        else float(np.dot(pos.pair_point(d.pair, 1), np.asarray(d.pair.axis)))
-    )
-    total = 0.0
-    for b in range(1, len(pos.plan.bodies)):
-        for load in own_loads(pos, b):
-            v = pos.coincident(b, load.point, 1)
-            image = np.array([-v[1], v[0]])
-            # moment about the pole of F at the image: -(F . v)
-            total -= float(image[0] * load.force[1] - image[1] * load.force[0])
-            total += load.couple * pos.omega(b)
-    return total, speed
+def _lever_position(table: Table, angle: Any, driver: int, what: str) -> Position:
+    """Return the solved position of a lever, its table and driver checked."""
+    from assur.plotting._context import _need_forces
+
+    _need_forces(table, what)
+    count = len(table.plan.drivers)
+    if (
+        isinstance(driver, bool)
+        or not isinstance(driver, int)
+        or not (0 <= driver < count)
+    ):
+        msg = f"{what}: no driver {driver!r}; expected 0 to {count - 1}"
+        raise ModelError(msg)
+    return _pos(table, angle)
 
 
-def zhukovsky_lever(table: Table, angle: Any = None, ax: Any = None) -> Any:
+def zhukovsky_lever(
+    table: Table, angle: Any = None, ax: Any = None, driver: int = 0
+) -> Any:
     """Draw Zhukovsky's lever: the velocity plan turned by 90 degrees, the loads on it.
 
-    Every force acts at its point's image; the balancing force at the input link's
-    pin image is read off the lever (its value is written on the drawing).
+    Every force acts at its point's image; the balancing load of driver ``driver``
+    is read off the lever (its value, friction's power in, is written on the
+    drawing; see :func:`lever_balance`). With several drivers, or a driver standing
+    still, the plan is that of the velocities per unit speed of the driver.
 
     Returns
     -------
     matplotlib.axes.Axes
+
+    Raises
+    ------
+    ModelError
+        For a kinematics table, or a driver index out of range.
     """
-    pos = _pos(table, angle)
-    found = {n: np.array([-v[1], v[0]]) for n, v in images(pos, 1).items()}
+    pos = _lever_position(table, angle, driver, "zhukovsky_lever")
+    bodies, _, _ = lever_rates(pos, driver)
+    unit_speed = bodies is not pos.bodies
+    lever = dataclasses.replace(pos, bodies=bodies)
+    found = {n: np.array([-v[1], v[0]]) for n, v in images(lever, 1).items()}
     mu = _scale(list(found.values()))
-    ax = _axes(ax, _title(pos, "Zhukovsky's lever"))
+    d = pos.plan.drivers[driver]
+    whose = f" of driver {d.pair.name}" if len(pos.plan.drivers) > 1 else ""
+    ax = _axes(ax, _title(pos, f"Zhukovsky's lever{literal(whose)}"))
     _images_plot(ax, found, mu, "#777777")
     loads = [x for b in range(1, len(pos.plan.bodies)) for x in own_loads(pos, b)]
     forces = [x for x in loads if math.hypot(*x.force) > 0]
@@ -344,22 +392,20 @@ def zhukovsky_lever(table: Table, angle: Any = None, ax: Any = None) -> Any:
                     for x in own_loads(pos, b)):  # fmt: skip
         if math.hypot(*x.force) == 0:
             continue
-        v = pos.coincident(body, x.point, 1)
+        v = lever.coincident(body, x.point, 1)
         at = np.array([-v[1], v[0]]) / mu
         _arrow(ax, at, at + x.force / fmu, "#d62728")
-        ax.annotate(
-            literal(x.tex.replace("\\vec ", "").replace("\\", "")),
-            at + x.force / fmu,
-            fontsize=7,
-        )
-    total, speed = _lever_moment(pos)
-    balancing = -total / speed
+        ax.annotate(_symbol(x.tex), at + x.force / fmu, fontsize=7)
+    balancing = lever_load(pos, driver)
+    rubbing = " and friction's power" if pos.result and pos.result.friction else ""
     ax.text(0.02, 0.02,
             f"balancing load from the lever: {balancing:.6g} "
-            f"{'N·m' if pos.plan.drivers[0].kind == 'R' else 'N'}"
-            f"\n(loads at their images; forces 1 mm = {fmu:g} N)",
+            f"{'N·m' if d.kind == 'R' else 'N'}"
+            f"\n(loads at their images{rubbing}; forces 1 mm = {fmu:g} N)",
             transform=ax.transAxes, fontsize=8, va="bottom")  # fmt: skip
-    _legend(ax, [("load", "#d62728")], f"lever: μv = {mu:g} (m/s)/mm, turned 90°")
+    per = " per unit speed of the driver" if unit_speed else ""
+    speed = "(m/s)/mm" if not unit_speed else "m/mm" if d.kind == "R" else "1/mm"
+    _legend(ax, [("load", "#d62728")], f"lever: μv = {mu:g} {speed}{per}, turned 90°")
     return ax
 
 
@@ -382,23 +428,27 @@ def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
     centres = relative_centres(pos)
     size = pos.size()
     middle = np.mean([pos.origin(b) for b in range(len(pos.plan.bodies))], axis=0)
+    places: list[tuple[np.ndarray, list[str]]] = []
     for (i, j), p in centres.items():
         if p is None or float(np.hypot(*(p - middle))) > 3 * size:
             continue
         absolute = i == 0
         ax.plot(*p, "s" if absolute else "o", ms=6 if absolute else 4,
                 color="#d62728" if absolute else "#1f77b4", zorder=9)  # fmt: skip
+        label = f"I{pos.link(i)}-{pos.link(j)}" if i else f"I{pos.link(j)}"
+        _place(places, p, label, 0.02 * size)
+        if i and centres.get((0, i)) is not None and centres.get((0, j)) is not None:
+            line = np.array([centres[(0, i)], centres[(0, j)]])
+            if float(np.abs(line - middle).max()) < 3 * size:
+                ax.plot(line[:, 0], line[:, 1], ls=":", lw=0.7, color="#1f77b4")
+    for p, labels in places:  # the centres at one place (a pin, say) in one label
         ax.annotate(
-            literal(f"I{pos.link(i)}-{pos.link(j)}" if i else f"I{pos.link(j)}"),
+            literal(", ".join(labels)),
             p,
             xytext=(3, -9),
             textcoords="offset points",
             fontsize=7,
         )
-        if i and centres.get((0, i)) is not None and centres.get((0, j)) is not None:
-            line = np.array([centres[(0, i)], centres[(0, j)]])
-            if float(np.abs(line - middle).max()) < 3 * size:
-                ax.plot(line[:, 0], line[:, 1], ls=":", lw=0.7, color="#1f77b4")
     ax.set_title(_title(pos, "instant centres"), fontsize=10)
     return ax
 
@@ -406,17 +456,24 @@ def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
 def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:
     """Return the instant centre of every two bodies (0: the frame), m.
 
-    The point where both bodies' velocities are equal; None where they turn at the
-    same rate (the centre is at infinity).
+    The primary centres first: the pin of a revolute pair, and at infinity (None)
+    for a sliding pair. Every other is the point where both bodies' velocities are
+    equal; None where they turn at the same rate (to :data:`SAME_RATE` of the
+    fastest link's speed: two links that both translate, say).
     """
     out: dict[tuple[int, int], np.ndarray | None] = {}
     count = len(pos.plan.bodies)
+    for pair in pos.plan.pairs.values():
+        i, j = sorted((pair.first, pair.second))
+        if "~" not in pos.link(i) + pos.link(j):
+            out[(i, j)] = pos.pair_point(pair) if pair.kind == "R" else None
+    fastest = max(abs(pos.omega(b)) for b in range(count))
     for i in range(count):
         for j in range(i + 1, count):
-            if "~" in pos.link(i) + pos.link(j):
+            if "~" in pos.link(i) + pos.link(j) or (i, j) in out:
                 continue
             wi, wj = pos.omega(i), pos.omega(j)
-            if abs(wi - wj) <= 1e-9 * max(abs(wi), abs(wj), 1e-300):
+            if not abs(wi - wj) > SAME_RATE * fastest:
                 out[(i, j)] = None
                 continue
             oi, oj = pos.origin(i), pos.origin(j)
@@ -427,6 +484,27 @@ def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:
             q = rhs / (wi - wj)  # = perp(P)
             out[(i, j)] = np.array([q[1], -q[0]])
     return out
+
+
+def _symbol(tex: str) -> str:
+    """Return a load's TeX symbol for a picture: as mathtext where it can be set so.
+
+    A name with characters mathtext does not know (``%``, say) is written plain.
+    """
+    math_text = f"${tex}$"
+    try:
+        _parser().parse(math_text, 72)
+    except ValueError:
+        return literal(tex.replace("\\vec ", "").replace("\\", ""))
+    return math_text
+
+
+@functools.cache
+def _parser() -> Any:
+    """Return a mathtext parser (made once)."""
+    from matplotlib.mathtext import MathTextParser
+
+    return MathTextParser("path")
 
 
 def _pos(table: Table, angle: Any) -> Position:
