@@ -752,3 +752,32 @@ def test_friction_circles_and_reactions_tangent_to_them():
         distance = abs(moment) / np.hypot(*a.force)
         assert distance == pytest.approx(joint.friction * joint.radius, rel=1e-9)
     assert any("friction circle" in t.get_text() for t in ax.get_legend().get_texts())
+
+
+@pytest.mark.parametrize(
+    "stem", ["slider_crank_friction", "four_bar_bearings", "slider_crank_exercise"]
+)
+def test_a_free_body_is_in_equilibrium_as_drawn(stem):
+    # a journal's friction couple is drawn in its reaction's line (tangent to the
+    # friction circle): the loads drawn balance, the circle explained in the legend
+    from assur.plotting import draw_free_body
+    from assur.plotting.decomposition import _free_body_arrows
+
+    table = assur.forces(assur.load(EXAMPLES / f"{stem}.toml"), [45.0])
+    force, moment, largest = np.zeros(2), 0.0, 0.0
+    for arrow in _free_body_arrows(table, 0, 0):
+        if arrow.kind == "internal":
+            continue
+        if arrow.force is not None:
+            force += arrow.force
+            (x, y), (fx, fy) = arrow.point, arrow.force
+            moment += float(x * fy - y * fx)
+            largest = max(largest, float(np.hypot(*arrow.force)))
+        moment += arrow.couple or 0.0
+    assert np.hypot(*force) <= 1e-9 * largest
+    assert abs(moment) <= 1e-9 * largest
+    ax = draw_free_body(table, 0)
+    entries = [t.get_text() for t in ax.get_legend().get_texts()]
+    rubbing = stem != "slider_crank_exercise"
+    assert ("friction circle (dashed), reaction tangent" in entries) == rubbing
+    plt.close(ax.figure)

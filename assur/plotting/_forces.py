@@ -7,7 +7,7 @@ N per cm of drawing (the drawing is in metres), couples as arcs.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -98,20 +98,31 @@ def _reaction(
     return q, f, m
 
 
-def _friction_circles(ctx: _Context, pose: _Pose) -> list[tuple[np.ndarray, float]]:
-    """Return the centre and radius f r (m) of each revolute pair's friction circle."""
+def _friction_circles(
+    ctx: _Context, pose: _Pose, bodies: Collection[int] | None = None
+) -> list[tuple[np.ndarray, float]]:
+    """Return the centre and radius f r (m) of each revolute pair's friction circle.
+
+    With ``bodies``, those of the pairs of these bodies only.
+    """
     return [
         (pose.at(p.second, p.d_second), p.friction * p.radius)
         for p in ctx.plan.pairs.values()
         if p.kind == "R" and p.friction > 0.0 and not p.virtual
+        if bodies is None or p.first in bodies or p.second in bodies
     ]
 
 
-def _draw_friction_circles(ax: Any, ctx: _Context, pose: _Pose) -> int:
-    """Draw the friction circles, dashed, to the drawing's scale; return how many."""
+def _draw_friction_circles(
+    ax: Any, ctx: _Context, pose: _Pose, bodies: Collection[int] | None = None
+) -> int:
+    """Draw the friction circles, dashed, to the drawing's scale; return how many.
+
+    With ``bodies``, those of the pairs of these bodies only (a group's free body).
+    """
     from matplotlib.patches import Circle
 
-    circles = _friction_circles(ctx, pose)
+    circles = _friction_circles(ctx, pose, bodies)
     for centre, radius in circles:
         ax.add_patch(
             Circle(

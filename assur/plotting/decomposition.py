@@ -29,6 +29,7 @@ from assur.plotting._forces import (
     _Arrow,
     _centre,
     _draw_arrows,
+    _draw_friction_circles,
     _inertia_arrows,
     _link_units,
     _reaction,
@@ -200,6 +201,8 @@ def draw_free_body(
     scale = scale or _scale(arrows, 0.8 * ctx.size)
     seen += _draw_arrows(ax, ctx, arrows, scale, "values")
     seen += [a.point for a in arrows]
+    # a journal's friction couple is in its reaction's line, tangent to this circle
+    rubbing = _draw_friction_circles(ax, ctx, pose, bodies)
     _frame_axes(ax, ctx, seen, 0.5 * ctx.size, margin=0.12)
     text, color, _ = ctx.legend[len(ctx.plan.drivers) + group_index]
     ax.set_title(
@@ -213,6 +216,7 @@ def draw_free_body(
             ("reaction", REACTION_COLOR),
             ("inertia force and torque", INERTIA_COLOR),
             ("gravity, external load", LOAD_COLOR),
+            *[("friction circle (dashed), reaction tangent", "")] * bool(rubbing),
             (_scale_text(arrows, scale), ""),
         ],
     )
