@@ -123,7 +123,7 @@ def _draw_friction_circles(
     from matplotlib.patches import Circle
 
     circles = _friction_circles(ctx, pose, bodies)
-    for centre, radius in circles:
+    for k, (centre, radius) in enumerate(circles):
         ax.add_patch(
             Circle(
                 tuple(centre),
@@ -133,7 +133,7 @@ def _draw_friction_circles(
                 lw=0.8,
                 color=REACTION_COLOR,
                 zorder=6,
-                gid="friction circle",
+                gid=f"friction-circle-{k}",  # an SVG id: one of its own each
             )
         )
     return len(circles)
