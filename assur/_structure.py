@@ -19,7 +19,7 @@ from typing import Any
 
 from assur._text import listing, roman
 from assur.errors import DecompositionError, ModelError
-from assur.model import GROUND, Driver, Mechanism, resolve_point
+from assur.model import GROUND, Driver, Mechanism, mechanism_of, resolve_point
 
 __all__ = [
     "Group",
@@ -274,6 +274,7 @@ def structure(mech: Mechanism, driver: str | None = None) -> Structure:
     >>> s.formula
     'I(ground, crank) -> II(coupler, rocker)'
     """
+    mech = mechanism_of(mech)
     if driver is not None:
         if driver not in {j.name for j in mech.joints}:
             msg = f"--driver: unknown joint {driver!r}"

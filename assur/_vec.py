@@ -59,6 +59,9 @@ def _constant(value: float, n: int, sign: float) -> Array:
     the cache's bound.)
     """
     one = np.array((value,))
+    # the base read-only too: a view's flag could else be set back, and one table's
+    # write would reach every other through this cache
+    one.flags.writeable = False
     out: Array = np.ndarray((n,), np.float64, one, 0, (0,))
     out.flags.writeable = False
     return out

@@ -92,8 +92,9 @@ def kinematics(
         them.
     omega, epsilon : float or array_like, optional
         The driver's speed (rad/s; m/s for a prismatic driver) and acceleration
-        (rad/s^2; m/s^2) at every position, replacing the file's constants: a number,
-        or one value per position (shape (n,); (n, drivers) with several drivers).
+        (rad/s^2; m/s^2) at every position, replacing the file's constants: a number
+        (every driver's), or one value per position (shape (n,); (n, drivers) with
+        several drivers).
     columns : sequence of str, optional
         Compute only these columns (and ``angle``). A table of the drivers' columns
         alone (``["driver.torque"]``, say) keeps none of the links' motions or
@@ -176,6 +177,10 @@ def _sweep(
     show: bool | Callback = False,
 ) -> Table:
     plan = plan_of(mech)
+    if not isinstance(skip, bool | np.bool_):
+        # a speed given third, say, would else switch skipping on without a word
+        msg = f"skip_unassembled: expected True or False, got {skip!r}"
+        raise UsageError(msg)
     given = positions(plan, angles)
     drive = to_si(plan, given)
     n = drive.shape[0]
@@ -479,17 +484,33 @@ def positions(plan: Plan, angles: Any) -> Array:
     if not np.all(np.isfinite(arr)):
         msg = "angles: expected finite driver positions"
         raise UsageError(msg)
+    # the table's own copy: the caller's array may change after the call
+    arr = np.array(arr, dtype=float)
+    arr.flags.writeable = False
     return arr
 
 
 def _real(values: Any, entry: str, what: str) -> Array:
-    """Return ``values`` as a float array; refuse complex numbers and other types."""
+    """Return ``values`` as a float array; refuse complex numbers and other types.
+
+    Booleans and masked arrays are refused too: True is no angle, and a mask would
+    be dropped (the masked values analysed).
+    """
+    if isinstance(values, np.ma.MaskedArray):
+        msg = (
+            f"{entry}: expected real numbers ({what}), got a masked array; expected "
+            "the values to analyse alone (values[~mask])"
+        )
+        raise UsageError(msg)
     try:
         arr = np.asarray(values)
     except (TypeError, ValueError) as err:
         msg = f"{entry}: expected real numbers ({what}), got {type(values).__name__}"
         raise UsageError(msg) from err
-    if arr.dtype.kind not in "biuf":
+    if arr.dtype.kind == "b":
+        msg = f"{entry}: expected real numbers ({what}), got True or False"
+        raise UsageError(msg)
+    if arr.dtype.kind not in "iuf":
         kind = "complex numbers" if arr.dtype.kind == "c" else f"{arr.dtype} values"
         msg = f"{entry}: expected real numbers ({what}), got {kind}"
         raise UsageError(msg)
@@ -526,8 +547,8 @@ def to_si(plan: Plan, given: Array) -> Array:
 def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
     """Return each driver's speed and acceleration for a sweep of ``n`` positions.
 
-    Without ``omega`` (``epsilon``) the file's constants; a number, or one value per
-    position, otherwise.
+    Without ``omega`` (``epsilon``) the file's constants; a number (every driver's),
+    or one value per position (per position and driver with several), otherwise.
     """
     d = len(plan.drivers)
     out: list[tuple[Any, ...]] = []
@@ -548,8 +569,8 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
                 f"expected magnitudes up to {LARGEST:g}"
             )
             raise UsageError(msg)
-        if arr.ndim == 0 and d == 1:
-            out.append((float(arr),))
+        if arr.ndim == 0:
+            out.append((float(arr),) * d)  # every driver at that rate
         # copies: the caller's arrays may change after the call, a table's may not
         elif arr.ndim == 1 and d == 1 and arr.shape[0] == n:
             out.append((np.array(arr),))

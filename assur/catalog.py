@@ -6,7 +6,9 @@ Each function computes an assembled reference pose from the dimensions it is giv
 from __future__ import annotations
 
 import math
+from typing import Any
 
+from assur.errors import ModelError
 from assur.model import Driver, Joint, Link, Mechanism, Point, Toward
 
 __all__ = ["four_bar", "slider_crank"]
@@ -36,15 +38,37 @@ def four_bar(
     Mechanism
         Steel-like bars (mass 2 kg/m, inertia of a slender bar) and a coupler point P.
 
+    Raises
+    ------
+    ModelError
+        For a length that is not a number above 0, or links that cannot close at
+        ``angle``.
+
     Examples
     --------
     >>> four_bar().name
     'Four-bar (crank-rocker)'
     """
+    crank, coupler, rocker, frame = (
+        _length(name, value)
+        for name, value in zip(
+            ("crank", "coupler", "rocker", "frame"),
+            (crank, coupler, rocker, frame),
+            strict=True,
+        )
+    )
+    angle, omega = _number("angle", angle), _number("omega", omega)
     a = math.radians(angle)
     b = (crank * math.cos(a), crank * math.sin(a))
     dx, dy = frame - b[0], -b[1]
     dist = math.hypot(dx, dy)
+    if not abs(coupler - rocker) < dist < coupler + rocker:
+        msg = (
+            f"four_bar: the coupler ({coupler:g} m) and the rocker ({rocker:g} m) "
+            f"cannot join the crank's pin to the pivot D {dist:g} m away at "
+            f"{angle:g} deg; expected the two to reach it, and not in one line"
+        )
+        raise ModelError(msg)
     along = (coupler**2 - rocker**2 + dist**2) / (2 * dist)
     h = math.sqrt(coupler**2 - along**2)
     c = (b[0] + (along * dx - h * dy) / dist, b[1] + (along * dy + h * dx) / dist)
@@ -89,13 +113,29 @@ def slider_crank(
     Masses 10, 0.5 and 0.4 kg; crank centre of mass 0.020 m from A, rod's 0.060 m
     from B, rod inertia 0.0018 kg m^2; the slide line is ``y = offset``.
 
+    Raises
+    ------
+    ModelError
+        For a length that is not a number above 0, or a rod that cannot reach the
+        slide line at ``angle``.
+
     Examples
     --------
     >>> slider_crank().drivers[0].omega
     200.0
     """
+    crank, rod = _length("crank", crank), _length("rod", rod)
+    offset, angle = _number("offset", offset), _number("angle", angle)
+    omega = _number("omega", omega)
     a = math.radians(angle)
     b = (crank * math.cos(a), crank * math.sin(a))
+    if not rod > abs(offset - b[1]):
+        msg = (
+            f"slider_crank: the rod ({rod:g} m) cannot reach the slide line "
+            f"{abs(offset - b[1]):g} m from the crank's pin at {angle:g} deg; "
+            "expected a longer rod"
+        )
+        raise ModelError(msg)
     c = (b[0] + math.sqrt(rod**2 - (offset - b[1]) ** 2), offset)
     return Mechanism(
         links=(
@@ -112,3 +152,25 @@ def slider_crank(
         drivers=(Driver("A", omega),),
         name="Slider-crank exercise",
     )
+
+
+def _number(name: str, value: Any) -> float:
+    """Return ``value`` as a finite float; a ModelError naming ``name`` if not."""
+    try:
+        # True is no dimension, and "0.04" a typing slip
+        number = math.nan if isinstance(value, bool | str) else float(value)
+    except (TypeError, ValueError):
+        number = math.nan
+    if not math.isfinite(number):
+        msg = f"{name}: expected a finite number, got {value!r}"
+        raise ModelError(msg)
+    return number
+
+
+def _length(name: str, value: Any) -> float:
+    """Return ``value`` as a length above 0 (m); a ModelError naming ``name`` if not."""
+    number = _number(name, value)
+    if not number > 0.0:
+        msg = f"{name}: expected a length above 0 (m), got {value!r}"
+        raise ModelError(msg)
+    return number

@@ -21,7 +21,7 @@ from assur.dynamics_model import checked_flywheel
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce
 from assur.dynamics_steady import check_inertia
 from assur.errors import ModelError, UsageError
-from assur.model import Mechanism, Motor
+from assur.model import Mechanism, Motor, validate_motor
 
 __all__ = ["Startup", "startup"]
 
@@ -154,6 +154,8 @@ def startup(
     engine = _motor(mechanism, motor)
     inertia = checked_flywheel(flywheel)
     sense = math.copysign(1.0, engine.torque)
+    omega0 = _speed(omega0)
+    turns = _turns(turns)
     if omega0 * sense < 0 or not math.isfinite(omega0):
         msg = (
             f"omega0: {omega0:g} rad/s; expected 0 or a speed of the motor's sense "
@@ -168,12 +170,36 @@ def startup(
     return _result(mechanism, engine, inertia, model, runs)
 
 
+def _speed(omega0: Any) -> float:
+    """Return the starting speed as a float (rad/s); a UsageError if not a number."""
+    try:
+        if isinstance(omega0, bool | str):
+            raise TypeError
+        return float(omega0)
+    except (TypeError, ValueError):
+        msg = f"omega0: expected a crank speed in rad/s, got {omega0!r}"
+        raise UsageError(msg) from None
+
+
+def _turns(turns: Any) -> int:
+    """Return the most turns to integrate, checked: a whole number from 1."""
+    if isinstance(turns, bool) or not isinstance(turns, int | np.integer) or turns < 1:
+        msg = f"turns: expected a whole number of turns from 1, got {turns!r}"
+        raise UsageError(msg)
+    return int(turns)
+
+
 def _motor(mechanism: Mechanism, motor: Motor | None) -> Motor:
     """Return the motor to use: the one given, or the mechanism's."""
     if motor is not None:
         if not isinstance(motor, Motor):
             msg = f"motor: expected an assur.Motor, got {type(motor).__name__}"
             raise UsageError(msg)
+        try:
+            # the checks of a file's [motor]: a torque, a speed of its sense
+            validate_motor(motor)
+        except ModelError as err:
+            raise UsageError(str(err)) from None
         return motor
     if mechanism.motor is None:
         msg = (

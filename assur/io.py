@@ -11,6 +11,7 @@ import json
 import math
 import re
 import sys
+from os import PathLike
 from typing import TYPE_CHECKING, Any, NoReturn
 
 from assur import _output
@@ -23,7 +24,7 @@ from assur._output import (
     write_text,
 )
 from assur._text import describe, key_text, suggest
-from assur.errors import AssurError, ModelError
+from assur.errors import AssurError, ModelError, UsageError
 from assur.model import (
     LARGEST,
     Driver,
@@ -36,6 +37,7 @@ from assur.model import (
     Point,
     PointSpec,
     Toward,
+    mechanism_of,
 )
 
 if TYPE_CHECKING:
@@ -97,19 +99,11 @@ def load(path: str | Path) -> Mechanism:
     """
     from pathlib import Path
 
-    path = Path(path)
+    path = Path(_path(path, "the mechanism file's"))
     where = path_text(path)
     data = _read(path, where)
     try:
-        text = data.decode("utf-8-sig")  # a byte-order mark is welcome
-    except UnicodeDecodeError as err:
-        msg = (
-            f"{where}: not UTF-8 text (byte {err.start} cannot be decoded); expected a "
-            "TOML or JSON file saved as UTF-8"
-        )
-        raise ModelError(msg) from err
-    try:
-        return loads(text, json_format=path.suffix.lower() == ".json")
+        return loads(_decoded(data), json_format=path.suffix.lower() == ".json")
     except AssurError as err:
         msg = f"{where}: {err}"
         raise type(err)(msg) from err
@@ -152,6 +146,12 @@ def loads(text: str, json_format: bool = False) -> Mechanism:
     """
     import tomllib
 
+    if isinstance(text, bytes | bytearray):
+        text = _decoded(bytes(text))
+    if not isinstance(text, str):
+        hint = " (read a file with assur.load)" if isinstance(text, PathLike) else ""
+        msg = f"text: expected a mechanism file's text, got {type(text).__name__}{hint}"
+        raise UsageError(msg)
     kind = "JSON" if json_format else "TOML"
     try:
         data = (
@@ -604,6 +604,7 @@ def dumps(mech: Mechanism, json_format: bool = False) -> str:
 
         # the TOML text's data, which holds exactly the mechanism's numbers
         return json.dumps(tomllib.loads(dumps(mech)), indent=2, ensure_ascii=False)
+    mech = mechanism_of(mech)
     out = [f"format = {FORMAT_VERSION}", f"name = {_value(mech.name)}"]
     if mech.description:
         out.append(f"description = {_value(mech.description)}")
@@ -672,7 +673,28 @@ def save(mech: Mechanism, path: str | Path) -> None:
     """
     from pathlib import Path
 
+    path = _path(path, "the file's")
     write_text(path, dumps(mech, json_format=Path(path).suffix.lower() == ".json"))
+
+
+def _path(path: Any, whose: str) -> Any:
+    """Return ``path``, checked to be a file's path (str or path-like)."""
+    if not isinstance(path, str | PathLike):
+        msg = f"path: expected {whose} path, got {type(path).__name__}"
+        raise UsageError(msg)
+    return path
+
+
+def _decoded(data: bytes) -> str:
+    """Return a mechanism file's bytes as text (UTF-8, a byte-order mark welcome)."""
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        msg = (
+            f"not UTF-8 text (byte {err.start} cannot be decoded); expected a TOML or "
+            "JSON file saved as UTF-8"
+        )
+        raise ModelError(msg) from err
 
 
 def write_csv(table: Any, path: Any = None) -> str | None:
@@ -719,6 +741,7 @@ def write_csv(table: Any, path: Any = None) -> str | None:
         write = path.write if binary else (lambda data: path.write(data.decode()))
         CsvWriter(write, table.columns).write(columns)
     else:
+        path = _path(path, "a CSV file's")
         with output_path(path) as temporary, temporary.open("wb") as stream:
             # looked up when called: tests put a failing writer in its place
             CsvWriter(
@@ -752,7 +775,7 @@ def write_parquet(table: Any, path: Any) -> None:
     import_pyarrow()
     columns = table_columns(table)
     units = [table.column(name).unit for name in table.columns]
-    with output_path(path) as temporary:
+    with output_path(_path(path, "a Parquet file's")) as temporary:
         writer = ParquetWriter(temporary, table.mechanism.name, table.columns, units)
         with finishing(writer):
             for start in range(0, len(table), PARQUET_ROWS):

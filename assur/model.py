@@ -12,12 +12,13 @@ import math
 import unicodedata
 from collections.abc import Iterable
 from dataclasses import dataclass, field
+from os import PathLike
 from typing import Any, NoReturn
 
 import numpy as np
 
 from assur._text import describe, key_text, suggest
-from assur.errors import ModelError
+from assur.errors import ModelError, UsageError
 
 __all__ = [
     "GROUND",
@@ -369,11 +370,30 @@ def _parts(entry: str, value: Any, kind: type) -> tuple[Any, ...]:
 _SIMPLE = frozenset({float, int, str})
 
 
+def mechanism_of(value: Any) -> Mechanism:
+    """Return ``value``, checked to be a Mechanism (what every analysis takes).
+
+    Raises
+    ------
+    UsageError
+        For anything else: a file's path, say (read with ``assur.load``).
+    """
+    if isinstance(value, Mechanism):
+        return value
+    hint = (
+        " (read the file with assur.load)" if isinstance(value, str | PathLike) else ""
+    )
+    msg = f"mechanism: expected an assur.Mechanism, got {type(value).__name__}{hint}"
+    raise UsageError(msg)
+
+
 def _plain(value: Any) -> Any:
     """Return lists and arrays as tuples, numpy numbers as Python's (hashable)."""
     # the common case, a tuple of plain numbers or names, is kept as it is
     if value.__class__ is tuple and all(v.__class__ in _SIMPLE for v in value):
         return value
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        return value.item()  # a number made with np.array(x)
     if isinstance(value, np.ndarray | list | tuple):
         return tuple(_plain(v) for v in value)
     if isinstance(value, np.generic):
@@ -712,7 +732,7 @@ def _validate_all(mech: Mechanism) -> None:
     for index, load in enumerate(mech.loads):
         _validate_load(mech, f"loads[{index}]", load, link_names, point_names)
     if mech.motor is not None:
-        _validate_motor(mech.motor)
+        validate_motor(mech.motor)
     _check_resolvable(mech)
     _check_cranks(mech)
 
@@ -853,7 +873,7 @@ def _validate_drivers(mech: Mechanism) -> None:
                 _fail(f"{entry}.{key}", _number_fault(getattr(driver, key)))
 
 
-def _validate_motor(motor: object) -> None:
+def validate_motor(motor: object) -> None:
     """Check the motor: a torque that is not zero, a speed of the same sign."""
     if not isinstance(motor, Motor):
         _fail("motor", f"expected a Motor, got {describe(motor)}")

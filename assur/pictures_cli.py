@@ -472,10 +472,11 @@ def _cmd_animate(args: argparse.Namespace) -> int:
         np.linspace(0, len(sweep) - 1, min(args.frames, len(sweep))).round().astype(int)
     )
     table = _table(mech, sweep[pick], args.forces)
-    with _figures(), output_path(output, any_error=True) as temporary:
+    with _figures():
+        # written whole or not at all by animate itself
         count = animate(
             table,
-            temporary,
+            output,
             forces=args.forces,
             fps=fps,
             dpi=dpi,

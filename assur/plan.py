@@ -24,7 +24,7 @@ from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import CompileContext, GroupSolver
 from assur.groups.driver import DriverPlan
-from assur.model import GROUND, Mechanism, resolve_point
+from assur.model import GROUND, Mechanism, mechanism_of, resolve_point
 
 __all__ = ["Plan", "compile_plan", "plan_of"]
 
@@ -107,8 +107,13 @@ def plan_of(mech: Mechanism) -> Plan:
 
     The entry points (:func:`assur.kinematics`, :func:`assur.forces`, ...) call this;
     everything downstream receives the plan itself.
+
+    Raises
+    ------
+    UsageError
+        When ``mech`` is not a Mechanism (a file's path, say).
     """
-    return compile_plan(mech)
+    return compile_plan(mechanism_of(mech))
 
 
 def compile_plan(mech: Mechanism) -> Plan:

@@ -93,7 +93,12 @@ class Summary:
             When ``table`` is a kinematics table (no forces to summarise).
         """
         if table.force_state is None:
-            msg = "summary: a kinematics table has no forces; expected assur.forces"
+            msg = (
+                "summary: a table made with columns= of kinematics only has no forces; "
+                "expected a force column among them, or no columns="
+                if getattr(table, "partial", False)
+                else "summary: a kinematics table has no forces; expected assur.forces"
+            )
             raise UsageError(msg)
         if not self.units:
             self._start(table)

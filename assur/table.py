@@ -8,7 +8,7 @@ asked for and kept, read-only.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -17,8 +17,8 @@ import numpy as np
 from assur._evaluate import CHUNKED, SHORT, evaluate, materialize
 from assur._kinematics import KinematicState
 from assur._text import suggest
-from assur._vec import Array
-from assur.columns import Column, families
+from assur._vec import Array, freeze
+from assur.columns import Column, families, schema
 from assur.kinetostatics import ForceState
 from assur.model import Mechanism
 from assur.plan import Plan
@@ -26,7 +26,7 @@ from assur.plan import Plan
 __all__ = ["Table"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Table:
     """Results per driver position, by column name.
 
@@ -52,10 +52,14 @@ class Table:
 
     Notes
     -----
+    A table is equal only to itself (its hash is its identity); iterating over it
+    gives the column names, as a mapping does.
+
     A table of the drivers' columns alone (``columns=["driver.torque"]``, say) keeps
     no links' motions or reactions: ``state`` and ``force_state`` are solved again,
-    once, when first asked for (by a picture of the table, say), with the same
-    numbers.
+    once, when first asked for, with the same numbers. A picture reads the columns
+    it draws: a table made with ``columns=`` serves the pictures whose columns it
+    holds (the mechanism's drawing needs its points' ``.x`` and ``.y``).
     """
 
     plan: Plan
@@ -78,8 +82,13 @@ class Table:
     _whole: list[tuple[KinematicState, ForceState | None]] = field(
         default_factory=list, repr=False, compare=False
     )
+    _frozen: list[bool] = field(default_factory=list, repr=False, compare=False)
+    """Not empty once the states' arrays are read-only."""
 
     def __post_init__(self) -> None:
+        for values in (self.given, self.skipped):
+            if values.flags.owndata:  # the table's own: read-only as its columns
+                values.flags.writeable = False
         if not self._index:
             self._index.update((c.name, c) for c in self.schema)
         if not self._families:
@@ -87,19 +96,53 @@ class Table:
 
     @property
     def state(self) -> KinematicState:
-        """The links' motions (see :class:`~assur._kinematics.KinematicState`)."""
-        return self._kept if self._again is None else self._complete()[0]
+        """The links' motions (see :class:`~assur._kinematics.KinematicState`).
+
+        Read-only arrays: the table's columns are computed from them.
+        """
+        found = self._kept if self._again is None else self._complete()[0]
+        if not self._frozen:
+            self._freeze()
+        return found
 
     @property
     def force_state(self) -> ForceState | None:
         """Inertia loads, reactions and balancing loads (a force analysis only)."""
-        return self._kept_forces if self._again is None else self._complete()[1]
+        found = self._kept_forces if self._again is None else self._complete()[1]
+        if not self._frozen:
+            self._freeze()
+        return found
+
+    def _freeze(self) -> None:
+        """Make the states' arrays read-only, once (when first handed out)."""
+        kept = [
+            self._kept,
+            self._kept_forces,
+            *(s for pair in self._whole for s in pair),
+        ]
+        for state in kept:
+            if isinstance(state, KinematicState):
+                motion = (state.drive, state.speed, state.acceleration, state.motion)
+                freeze((*motion, state.slide))
+            elif state is not None:
+                freeze(state.fields())
+        self._frozen.append(True)
 
     def _complete(self) -> tuple[KinematicState, ForceState | None]:
         """Return the states the table did not keep, solved again on first use."""
         if not self._whole:
             self._whole.append(self._again.solve())
         return self._whole[0]
+
+    @property
+    def partial(self) -> bool:
+        """Whether the table holds some of its analysis's columns only (``columns=``).
+
+        Pictures need every column: they refuse such a table.
+        """
+        if self._again is not None:
+            return True
+        return len(self.schema) < len(schema(self.plan, self._kept_forces is not None))
 
     @property
     def mechanism(self) -> Mechanism:
@@ -125,6 +168,7 @@ class Table:
             from assur._kinematics import extend
 
             found = self._states[level] = extend(self.plan, self.state)
+            freeze((found.motion, found.slide))
         return found
 
     def column(self, name: str) -> Column:
@@ -132,8 +176,17 @@ class Table:
         try:
             return self._index[name]
         except KeyError:
+            pass
+        every = schema(self.plan, self._kept_forces is not None)
+        if self.partial and any(c.name == name for c in every):
+            msg = (
+                f"no column {name!r}: the table was made with columns= "
+                f"({len(self.schema)} columns); expected {name!r} among them, or "
+                "no columns="
+            )
+        else:
             msg = f"no column {name!r}{suggest(name, self._index, listing=False)}"
-            raise KeyError(msg) from None
+        raise KeyError(msg) from None
 
     def __getitem__(self, name: str) -> Array:
         found = self._cache.get(name)
@@ -157,6 +210,9 @@ class Table:
 
     def __contains__(self, name: object) -> bool:
         return name in self._index
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._index)
 
     def arrays(self) -> list[Array]:
         """Return every column, in order; those not read yet are computed together.
@@ -186,11 +242,20 @@ class Table:
             self._keep(key, values)
 
     def _keep(self, key: str, values: Array) -> None:
-        """Keep a computed column, read-only; a view leaves the states' arrays be."""
+        """Keep a computed column as a read-only view of a read-only array.
+
+        The array that owns the memory is made read-only too: a view's flag could
+        else be set back, and the column written (a state's array, a block of
+        columns computed together).
+        """
         if key in self._index and key not in self._cache:
-            if values.flags.writeable:
-                values = values.view()
-                values.flags.writeable = False
+            owner = values
+            while isinstance(owner.base, np.ndarray):
+                owner = owner.base
+            if owner.flags.writeable:
+                owner.flags.writeable = False
+            values = values.view()
+            values.flags.writeable = False
             self._cache[key] = values
 
     def summary(self) -> dict[str, float]:

@@ -157,7 +157,7 @@ def test_nearest_row_with_two_drivers(five_bar: assur.Table) -> None:
     row = 3
     want = np.degrees(five_bar.state.drive[row])
     assert plotting._row(five_bar, want.tolist()) == row
-    with pytest.raises(assur.ModelError, match="3 values for 2 driver"):
+    with pytest.raises(assur.UsageError, match="3 values for 2 driver"):
         plotting._row(five_bar, [1.0, 2.0, 3.0])
 
 

@@ -90,7 +90,10 @@ def test_unassemblable_variants_are_marked(slider_study):
     _, study = slider_study
     errors = study.summary["error"].tolist()
     assert errors[1].startswith("AssemblyError: group RRP (rod, slider): cannot be")
-    assert errors[2] == "ValueError: math domain error"
+    assert errors[2] == (
+        "ModelError: slider_crank: the rod (0.04 m) cannot reach the slide line "
+        "0.0523259 m from the crank's pin at 45 deg; expected a longer rod"
+    )
     assert [i for i, e in enumerate(errors) if e] == [1, 2]
     assert np.isnan(study.summary["A.F.max"].iloc[1])
 

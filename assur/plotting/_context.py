@@ -15,7 +15,7 @@ import numpy as np
 from assur._style import link_colours
 from assur._text import roman, row_position
 from assur.columns import pretty_unit, schema
-from assur.errors import ModelError
+from assur.errors import ModelError, UsageError
 from assur.plotting._style import GROUND_COLOR, PLAIN_COLOR
 
 if TYPE_CHECKING:
@@ -98,6 +98,7 @@ def _colors(plan: Plan, groups: bool) -> tuple[dict[int, str], Legend]:
 
 def _context(table: Table, groups: bool = True) -> _Context:
     """Return the context of the pictures of ``table`` (``groups``: colour by group)."""
+    whole(table, "the pictures")
     plan = table.plan
     color, legend = _colors(plan, groups)
     travel = {
@@ -127,14 +128,22 @@ def _row(table: Table, angle: Any) -> int:
     if angle is None:
         return 0
     plan = table.plan
-    want = np.atleast_1d(np.asarray(angle, dtype=float))
+    try:
+        want = np.atleast_1d(np.asarray(angle, dtype=float))
+    except (TypeError, ValueError) as err:
+        msg = f"angle: expected a driver position (deg, or m), got {angle!r}"
+        raise UsageError(msg) from err
     drive = table.given
-    if want.shape[0] not in (1, drive.shape[1]):
+    if want.ndim != 1 or want.shape[0] not in (1, drive.shape[1]):
         msg = (
-            f"angle: {want.shape[0]} values for {drive.shape[1]} driver(s); expected "
+            f"angle: {want.size} values for {drive.shape[1]} driver(s); expected "
             "one position per driver"
         )
-        raise ModelError(msg)
+        raise UsageError(msg)
+    if not np.all(np.isfinite(want)):
+        # the nearest row to NaN was row 0, drawn without a word
+        msg = f"angle: expected a finite driver position, got {angle!r}"
+        raise UsageError(msg)
     gap = np.zeros(drive.shape[0])
     for i in range(want.shape[0]):
         if plan.drivers[i].kind == "R":
@@ -143,6 +152,28 @@ def _row(table: Table, angle: Any) -> int:
         else:
             gap += (drive[:, i] - want[i]) ** 2
     return int(np.argmin(gap))
+
+
+def checked_scale(scale: Any) -> float | None:
+    """Return a force scale (N per cm), checked: None (automatic) or a number > 0.
+
+    Raises
+    ------
+    UsageError
+        For zero, a negative number (the arrows would point backwards), NaN or a
+        value that is not a number.
+    """
+    if scale is None:
+        return None
+    try:
+        value = float(scale)
+    except (TypeError, ValueError) as err:
+        msg = f"scale: expected a force scale in N per cm, got {scale!r}"
+        raise UsageError(msg) from err
+    if not (math.isfinite(value) and value > 0.0) or isinstance(scale, bool):
+        msg = f"scale: {scale!r}; expected a force scale in N per cm, above 0"
+        raise UsageError(msg)
+    return value
 
 
 def _unit(table: Table, name: str) -> str:
@@ -166,6 +197,7 @@ def _need_forces(table: Table, what: str) -> ForceState:
 
     ``what`` names the caller in the message.
     """
+    whole(table, what)
     if table.force_state is None:
         msg = (
             f"{what}: needs a forces table (assur.forces); this table holds "
@@ -173,6 +205,24 @@ def _need_forces(table: Table, what: str) -> ForceState:
         )
         raise ModelError(msg)
     return table.force_state
+
+
+def whole(table: Any, what: str) -> None:
+    """Check that ``table`` is a table of an analysis, as pictures need.
+
+    A table made with ``columns=`` is one: a column it lacks says so when read.
+
+    Raises
+    ------
+    UsageError
+        For anything else (a Mechanism, say).
+    """
+    if not (hasattr(table, "schema") and hasattr(table, "plan")):
+        msg = (
+            f"{what}: expected a table of assur.kinematics or assur.forces, got "
+            f"{type(table).__name__}"
+        )
+        raise UsageError(msg)
 
 
 def _revolute(table: Table) -> bool:

@@ -6,12 +6,16 @@ its arrows can be compared from frame to frame.
 
 from __future__ import annotations
 
+import math
+from os import PathLike
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._output import output_path
 from assur._progress import Callback
 from assur._progress import progress as shown
+from assur.errors import UsageError
 from assur.plotting._axes import _handles
 from assur.plotting._context import _Context, _context, _need_forces
 from assur.plotting._forces import _overview_arrows, _scale
@@ -57,10 +61,21 @@ def animate(
     -------
     int
         The number of frames written.
+
+    Raises
+    ------
+    UsageError
+        For a ``path`` that is not a file's path, or ``fps`` or ``dpi`` not above 0.
+    OutputError
+        When the file cannot be written (it is written whole or not at all).
     """
     import matplotlib.pyplot as plt
     from matplotlib.animation import PillowWriter
 
+    if not isinstance(path, str | PathLike):
+        msg = f"path: expected the GIF file's path, got {type(path).__name__}"
+        raise UsageError(msg)
+    fps, dpi = _above_zero("fps", fps), _above_zero("dpi", dpi)
     if forces:
         _need_forces(table, "animate(forces=True)")
     ctx = _context(table)
@@ -70,9 +85,12 @@ def animate(
         # matplotlib's stubs say int, but the writer only uses 1000 / fps
         writer = PillowWriter(fps=fps)  # type: ignore[arg-type]
         with (
-            writer.saving(fig, str(path), dpi),
+            output_path(path, any_error=True) as temporary,
             shown("animate", len(table), progress) as bar,
         ):
+            # not writer.saving: its finish, run when a stop (Ctrl-C) cuts the film
+            # short, would fail on no frames and hide the stop
+            writer.setup(fig, str(temporary), dpi)
             for r in range(len(table)):
                 ax.clear()
                 entries = _draw_row(
@@ -89,9 +107,22 @@ def animate(
                     )
                 writer.grab_frame()
                 bar.advance(1)
+            writer.finish()
     finally:
         plt.close(fig)
     return len(table)
+
+
+def _above_zero(name: str, value: Any) -> float:
+    """Return ``value`` as a finite number above 0; a UsageError naming it if not."""
+    try:
+        number = math.nan if isinstance(value, bool | str) else float(value)
+    except (TypeError, ValueError):
+        number = math.nan
+    if not (math.isfinite(number) and number > 0.0):
+        msg = f"{name}: expected a number above 0, got {value!r}"
+        raise UsageError(msg)
+    return number
 
 
 def _film_limits(ctx: _Context, forces: bool) -> tuple[list[Any], float | None]:

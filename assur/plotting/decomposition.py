@@ -24,6 +24,7 @@ from assur.plotting._context import (
     _Pose,
     _position_title,
     _row,
+    checked_scale,
 )
 from assur.plotting._forces import (
     _Arrow,
@@ -198,7 +199,7 @@ def draw_free_body(
     ax = _new_axes(ax, (9.0, 6.5))
     seen = _draw_mechanism(ax, ctx, pose, bodies, frame=False)
     arrows = _free_body_arrows(table, group_index, row)
-    scale = scale or _scale(arrows, 0.8 * ctx.size)
+    scale = checked_scale(scale) or _scale(arrows, 0.8 * ctx.size)
     seen += _draw_arrows(ax, ctx, arrows, scale, "values")
     seen += [a.point for a in arrows]
     # a journal's friction couple is in its reaction's line, tangent to this circle

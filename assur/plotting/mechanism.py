@@ -20,6 +20,7 @@ from assur.plotting._context import (
     _Pose,
     _position_title,
     _row,
+    checked_scale,
 )
 from assur.plotting._forces import (
     _draw_arrows,
@@ -138,7 +139,7 @@ def _draw_row(
     entries = [(text, c) for text, c, _ in ctx.legend] if groups else []
     if forces:
         arrows = _overview_arrows(ctx, pose, row)
-        scale = scale or _scale(arrows, ctx.size)
+        scale = checked_scale(scale) or _scale(arrows, ctx.size)
         seen += _draw_arrows(ax, ctx, arrows, scale, "names" if labels else None)
         entries += [
             ("reaction, by first link on second", REACTION_COLOR),

@@ -509,8 +509,9 @@ def _parser() -> Any:
 
 def _pos(table: Table, angle: Any) -> Position:
     """Return the solved mechanism at the row of ``table`` nearest to ``angle``."""
-    from assur.plotting._context import _row
+    from assur.plotting._context import _row, whole
 
+    whole(table, "the plans")
     return from_table(table, _row(table, angle))
 
 

@@ -1,0 +1,214 @@
+"""The library as a Python user meets it: arguments out of place, arrays shared.
+
+Each case was found by trying the API as a user would (a review): a clear
+UsageError for what is misplaced, and results that no later change of the caller's
+arrays, or of another table's, can alter.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+
+
+def test_a_table_keeps_its_own_copy_of_the_positions():
+    # the caller's array was the table's: changing it relabelled every row
+    mech = assur.catalog.slider_crank()
+    angles = np.arange(0.0, 360.0, 30.0)
+    table = assur.forces(mech, angles)
+    angles += 90.0
+    assert table["angle"][1] == table["crank.angle"][1] == 30.0
+    assert (
+        table.summary()["A.F.at"]
+        == assur.forces(mech, angles - 90.0).summary()["A.F.at"]
+    )
+    with pytest.raises(ValueError, match="read-only"):
+        table.given[0, 0] = 999.0
+
+
+def test_no_column_can_be_made_writeable_again():
+    # a constant column was a view of a cache shared by every table: one table's
+    # write reached the next
+    mech = assur.catalog.slider_crank()
+    table = assur.forces(mech, np.arange(0.0, 360.0, 30.0))
+    for name in ("crank.omega", "rod.omega", "B.Fx"):
+        with pytest.raises(ValueError, match="WRITEABLE"):
+            table[name].flags.writeable = True
+    with pytest.raises(ValueError, match="read-only"):
+        table.state.motion[2][1][...] = 5.0
+    fresh = assur.forces(mech, np.arange(0.0, 360.0, 30.0))
+    assert np.all(fresh["crank.omega"] == 200.0)
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda m: assur.forces(m, [0.0], 150.0), "skip_unassembled: expected True"),
+        (lambda m: assur.kinematics(m, True), "angles: expected real numbers .* True"),
+        (lambda m: assur.kinematics(m, [0.0], omega=True), "omega: expected real"),
+        (
+            lambda m: assur.kinematics(m, np.ma.array([0.0, 45.0], mask=[0, 1])),
+            "angles: .* a masked array",
+        ),
+        (
+            lambda m: assur.forces("examples/four_bar.toml", [0.0]),
+            r"mechanism: expected an assur.Mechanism, got str \(read the file with",
+        ),
+        (lambda m: assur.structure(None), "mechanism: expected an assur.Mechanism"),
+    ],
+)
+def test_misplaced_arguments_are_one_clear_error(call, message):
+    with pytest.raises(assur.UsageError, match=message):
+        call(assur.catalog.slider_crank())
+
+
+def test_model_classes_take_zero_dimensional_arrays():
+    assert assur.Driver("A", np.array(200.0)) == assur.Driver("A", 200.0)
+    assert assur.Link("crank", mass=np.array(10.0)).mass == 10.0
+
+
+def test_a_table_is_equal_to_itself_only_and_iterates_over_its_columns():
+    mech = assur.catalog.slider_crank()
+    a, b = assur.forces(mech, [0.0, 30.0]), assur.forces(mech, [0.0, 30.0])
+    assert a == a
+    assert a != b
+    assert len({a, b}) == 2
+    assert list(a) == list(a.columns)
+    assert dict(zip(a, a.arrays(), strict=True)).keys() == set(a.columns)
+
+
+@pytest.mark.parametrize(
+    ("build", "message"),
+    [
+        (lambda: assur.catalog.four_bar(crank=0.5), "four_bar: the coupler .* cannot"),
+        (lambda: assur.catalog.four_bar(frame=0.0), "frame: expected a length above"),
+        (lambda: assur.catalog.slider_crank(rod=0.01), "the rod .* cannot reach"),
+        (lambda: assur.catalog.slider_crank(rod=-0.2), "rod: expected a length"),
+        (lambda: assur.catalog.four_bar(crank="0.04"), "crank: expected a finite"),
+        (lambda: assur.catalog.four_bar(omega=float("nan")), "omega: expected"),
+    ],
+)
+def test_catalog_dimensions_are_checked(build, message):
+    # a rod too short gave "ValueError: math domain error"; a negative one was
+    # taken for a positive one
+    with pytest.raises(assur.ModelError, match=message):
+        build()
+
+
+def test_a_table_made_with_columns_says_what_a_picture_lacks():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    from assur import plotting
+
+    mech = assur.catalog.slider_crank()
+    table = assur.forces(mech, np.arange(0.0, 360.0, 10.0), columns=["driver.torque"])
+    assert table.partial
+    assert not assur.forces(mech, [0.0]).partial
+    for draw in (table.plot, plotting.plot_torque):
+        with pytest.raises(KeyError, match=r"was made with columns= .* or no columns="):
+            draw(table)
+    with pytest.raises(assur.UsageError, match="got Mechanism"):
+        plotting.draw(mech)
+    kinematic = assur.forces(mech, [0.0, 30.0], columns=["rod.omega"])
+    with pytest.raises(assur.UsageError, match="columns= of kinematics only"):
+        kinematic.summary()
+
+
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        ({"angle": float("nan")}, "angle: expected a finite driver position"),
+        ({"angle": "abc"}, "angle: expected a driver position"),
+        ({"angle": 30.0, "forces": True, "scale": -1.0}, "scale: -1.0; expected"),
+        ({"angle": 30.0, "forces": True, "scale": 0.0}, "scale: 0.0; expected"),
+    ],
+)
+def test_a_picture_s_options_are_checked(options, message):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    table = assur.forces(assur.catalog.slider_crank(), np.arange(0.0, 360.0, 10.0))
+    with pytest.raises(assur.UsageError, match=message):
+        table.plot(**options)
+
+
+def test_one_rate_for_every_driver():
+    five = assur.load(
+        Path(__file__).parents[1] / "examples" / "five_bar_two_cranks.toml"
+    )
+    angles = np.array([[60.0, 60.0], [90.0, 80.0]])
+    one = assur.forces(five, angles, omega=10.0, epsilon=-2.0)
+    each = assur.forces(
+        five, angles, omega=np.full((2, 2), 10.0), epsilon=np.full((2, 2), -2.0)
+    )
+    for name in one.columns:
+        np.testing.assert_array_equal(one[name], each[name])
+
+
+@pytest.mark.parametrize(
+    ("call", "error", "message"),
+    [
+        (lambda m, t: assur.load(None), assur.UsageError, "path: expected the"),
+        (lambda m, t: assur.loads(None), assur.UsageError, "text: expected a"),
+        (
+            lambda m, t: assur.loads(Path("x.toml")),
+            assur.UsageError,
+            r"got PosixPath \(read a file with assur.load\)|got WindowsPath",
+        ),
+        (lambda m, t: assur.save(m, None), assur.UsageError, "path: expected"),
+        (lambda m, t: assur.dumps(None), assur.UsageError, "expected an assur.Mech"),
+        (lambda m, t: t.to_csv(3), assur.UsageError, "expected a CSV file's path"),
+        (lambda m, t: t.to_parquet(None), assur.UsageError, "a Parquet file's path"),
+    ],
+)
+def test_files_and_outputs_say_what_they_take(call, error, message):
+    mech = assur.catalog.four_bar()
+    with pytest.raises(error, match=message):
+        call(mech, assur.kinematics(mech, [0.0, 90.0]))
+
+
+def test_a_file_s_bytes_read_as_its_text():
+    mech = assur.catalog.four_bar()
+    assert assur.loads(assur.dumps(mech).encode("utf-8")) == mech
+
+
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        ({"fps": 0}, "fps: expected a number above 0, got 0"),
+        ({"fps": -1.0}, "fps: expected a number above 0"),
+        ({"dpi": "x"}, "dpi: expected a number above 0"),
+    ],
+)
+def test_an_animation_s_options_are_checked(tmp_path, options, message):
+    pytest.importorskip("matplotlib").use("Agg")
+    from assur.plotting import animate
+
+    table = assur.kinematics(assur.catalog.four_bar(), [0.0, 90.0])
+    with pytest.raises(assur.UsageError, match=message):
+        animate(table, tmp_path / "a.gif", **options)
+    with pytest.raises(assur.OutputError, match="cannot write the file"):
+        animate(table, tmp_path / "missing" / "a.gif")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        ({"motor": assur.Motor(10.0, -60.0)}, "motor.no_load_speed: .* sign"),
+        ({"motor": assur.Motor(10.0, float("nan"))}, "no_load_speed: expected a fin"),
+        ({"omega0": None}, "omega0: expected a crank speed"),
+        ({"omega0": np.array([1.0, 2.0])}, "omega0: expected a crank speed"),
+        ({"turns": 0}, "turns: expected a whole number of turns from 1, got 0"),
+        ({"turns": 2.5}, "turns: expected a whole number"),
+    ],
+)
+def test_a_start_up_s_arguments_are_checked(options, message):
+    # a motor turning against its torque ran 2000 turns to "does not settle"
+    mech = assur.catalog.slider_crank()
+    options = {"motor": assur.Motor(10.0, 60.0), **options}
+    with pytest.raises(assur.UsageError, match=message):
+        assur.startup(mech, 0.01, **options)
