@@ -248,6 +248,8 @@ def _forces(table: Table) -> ForceState:
     # the force state as kept: a table of the drivers' columns keeps those it needs
     forces = table._kept_forces
     assert forces is not None
+    if not table._frozen:
+        table._freeze()  # its arrays are handed out as columns: read-only
     return forces
 
 

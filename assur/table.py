@@ -242,20 +242,17 @@ class Table:
             self._keep(key, values)
 
     def _keep(self, key: str, values: Array) -> None:
-        """Keep a computed column as a read-only view of a read-only array.
+        """Keep a computed column as a read-only view.
 
-        The array that owns the memory is made read-only too: a view's flag could
-        else be set back, and the column written (a state's array, a block of
-        columns computed together).
+        A column that is a state's array is a view of it (the states are frozen
+        when first handed out), so its flag cannot be set back.
         """
         if key in self._index and key not in self._cache:
-            owner = values
-            while isinstance(owner.base, np.ndarray):
-                owner = owner.base
-            if owner.flags.writeable:
-                owner.flags.writeable = False
-            values = values.view()
-            values.flags.writeable = False
+            if values.base is None or values.flags.writeable:
+                # a view of an array of its own, read-only: its flag cannot be set
+                # back while that array's is not (the states' arrays, frozen)
+                values = values.view()
+                values.flags.writeable = False
             self._cache[key] = values
 
     def summary(self) -> dict[str, float]:

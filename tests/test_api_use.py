@@ -212,3 +212,10 @@ def test_a_start_up_s_arguments_are_checked(options, message):
     options = {"motor": assur.Motor(10.0, 60.0), **options}
     with pytest.raises(assur.UsageError, match=message):
         assur.startup(mech, 0.01, **options)
+
+
+def test_a_reaction_read_first_cannot_be_made_writeable():
+    table = assur.forces(assur.catalog.slider_crank(), [0.0, 30.0])
+    column = table["B.Fx"]  # the first read: no other column computed before
+    with pytest.raises(ValueError, match="WRITEABLE"):
+        column.flags.writeable = True
