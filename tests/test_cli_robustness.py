@@ -212,10 +212,10 @@ def test_a_fifo_whose_reader_stops_early_is_one_error(tmp_path: Path, capsys):
     assert line == f"assur: error: {fifo}: cannot write the file (Broken pipe)"
 
 
-def test_csv_to_dev_stdout_in_a_pipe(tmp_path: Path):
-    result = subprocess.run(
-        f"{sys.executable} -m assur kinematics {FOUR_BAR} --angles 0 "
-        "--csv /dev/stdout | cat",
+def piped(tmp_path: Path, options: str) -> subprocess.CompletedProcess[str]:
+    """Run ``assur kinematics FOUR_BAR --angles 0 OPTIONS | cat`` in a shell."""
+    return subprocess.run(
+        f"{sys.executable} -m assur kinematics {FOUR_BAR} --angles 0 {options} | cat",
         shell=True,
         cwd=tmp_path,
         env=subprocess_env(),
@@ -224,6 +224,10 @@ def test_csv_to_dev_stdout_in_a_pipe(tmp_path: Path):
         timeout=60,
         check=False,
     )
+
+
+def test_csv_to_dev_stdout_in_a_pipe(tmp_path: Path):
+    result = piped(tmp_path, "--csv /dev/stdout")
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith("angle,crank.angle,")
     count = len(assur.kinematics(assur.load(FOUR_BAR), [0.0]).columns)
@@ -232,17 +236,7 @@ def test_csv_to_dev_stdout_in_a_pipe(tmp_path: Path):
 
 def test_dev_stdout_beside_json_is_refused(tmp_path: Path):
     # /dev/stdout is where --json writes too: the two tables came out mixed
-    result = subprocess.run(
-        f"{sys.executable} -m assur kinematics {FOUR_BAR} --angles 0 --json "
-        "--csv /dev/stdout | cat",
-        shell=True,
-        cwd=tmp_path,
-        env=subprocess_env(),
-        capture_output=True,
-        text=True,
-        timeout=60,
-        check=False,
-    )
+    result = piped(tmp_path, "--json --csv /dev/stdout")
     assert result.returncode == 0  # cat's
     assert result.stdout == ""
     assert result.stderr == (
