@@ -74,10 +74,14 @@ def _compile(plan: Plan) -> LoadPlan:
     mech = plan.mechanism
     count = len(plan.bodies)
     mass, inertia, center = np.zeros(count), np.zeros(count), np.zeros((count, 2))
+    still = _never_turning(plan)
     for link in mech.links:
         if not link.mass:
             continue
         for key in ("center", "inertia"):
+            # a slider on the frame's guide never turns: its inertia never enters
+            if key == "inertia" and plan.body(link.name) in still:
+                continue
             if getattr(link, key) is None:
                 msg = (
                     f"links.{link.name}: a link with a mass needs its '{key}' "
@@ -86,7 +90,7 @@ def _compile(plan: Plan) -> LoadPlan:
                 raise ModelError(msg)
         b = plan.body(link.name)
         mass[b] = link.mass
-        inertia[b] = link.inertia
+        inertia[b] = link.inertia or 0.0
         assert link.center is not None
         center[b] = plan.offset(b, resolve_point(mech, link.center))
     centers = tuple((float(x), float(y)) for x, y in center)
@@ -155,3 +159,19 @@ def table_values(
         )
         raise ModelError(msg)
     return [np.interp(at, xs, np.asarray(v)) for v in table.values]
+
+
+def _never_turning(plan: Plan) -> set[int]:
+    """Return the bodies that cannot turn: the frame and what slides on it, in turn.
+
+    A prismatic pair keeps its two links' rotations equal.
+    """
+    still = {0}
+    grown = True
+    while grown:
+        grown = False
+        for pair in plan.pairs.values():
+            if pair.kind == "P" and (pair.first in still) != (pair.second in still):
+                still |= {pair.first, pair.second}
+                grown = True
+    return still

@@ -441,3 +441,27 @@ def test_rigid_motion_and_similarity(case, angle, shift, scale):
     else:
         at = np.stack([expected[f"{d.joint}.drive"] for d in mech.drivers], -1)
     oracle.assert_columns(other, assur.forces(other, at), expected)
+
+
+def test_a_slider_on_the_frame_needs_no_inertia():
+    # FORMAT.md's own sample gives its slider a mass and a centre, no inertia: a
+    # link that slides on the frame never turns, so its inertia never enters
+    mech = assur.catalog.slider_crank()
+    links = tuple(
+        dataclasses.replace(x, inertia=None) if x.name == "slider" else x
+        for x in mech.links
+    )
+    without = dataclasses.replace(mech, links=links)
+    angles = np.arange(0.0, 360.0, 15.0)
+    want, got = assur.forces(mech, angles), assur.forces(without, angles)
+    for name in want.columns:
+        np.testing.assert_array_equal(got[name], want[name])
+    # a link that turns still needs one
+    rod = tuple(
+        dataclasses.replace(x, inertia=None) if x.name == "rod" else x
+        for x in mech.links
+    )
+    with pytest.raises(assur.ModelError, match=r"links\.rod: a link with a mass needs"):
+        assur.forces(dataclasses.replace(mech, links=rod), angles)
+    note = assur.explain(without, 45.0)
+    assert "that the slider runs along" in str(note)

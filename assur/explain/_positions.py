@@ -25,6 +25,11 @@ def _sq(x: float) -> str:
     return f"{par(x)}^2"
 
 
+def _called(kind: str, name: str) -> str:
+    """Return "the guide A", or "the guide" alone for a guide named "guide"."""
+    return f"the {kind}" if kind in name.lower() else f"the {kind} {plain(name)}"
+
+
 def _known(pos: Position, s: DyadSolver) -> list[Block]:
     """Say what is known: the outer joints' positions."""
     parts = []
@@ -38,12 +43,8 @@ def _known(pos: Position, s: DyadSolver) -> list[Block]:
             )
         else:
             e = pos.turned(s.known[b], pair.axis or (1.0, 0.0))
-            # a joint named "guide" is not called "the guide guide"
-            guide = "the guide"
-            if "guide" not in pair.name.lower():
-                guide += f" {plain(pair.name)}"
             parts.append(
-                f"{guide} of {on} through ${vec(p)}$ m along "
+                f"{_called('guide', pair.name)} of {on} through ${vec(p)}$ m along "
                 f"$\\vec e_{{{name(pair.name)}}} = {vec(e)}$"
             )
     return [Para("Known from the links before: " + "; ".join(parts) + ".")]
@@ -103,8 +104,8 @@ def _rrp(pos: Position, s: DyadSolver) -> list[Block]:
         Para(
             f"The pin {plain(s.mid.name)} lies on the circle of radius "
             f"$l_{{{b}{c}}} = {num(length)}$ m about {plain(s.ext[0].name)} and on "
-            f"the line $\\vec r_{{{c}}} = \\vec r_{{{c}_0}} + s\\,\\vec e$ that the "
-            f"slider {plain(pos.link(s.bodies[1]))} runs along, with "
+            f"the line $\\vec r_{{{c}}} = \\vec r_{{{c}_0}} + s\\,\\vec e$ that "
+            f"{_called('slider', pos.link(s.bodies[1]))} runs along, with "
             f"$\\vec r_{{{c}_0}} = {vec(c0)}$ m (where the pin is at $s = 0$) and "
             f"$\\vec e = {vec(e)}$."
         ),
