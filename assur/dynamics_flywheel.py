@@ -160,6 +160,8 @@ def wittenbauer(model: Reduced, upper: float, lower: float) -> float:
 def _prepared(mechanism: Mechanism, delta: Any) -> tuple[Reduced, float]:
     """Check ``delta`` and the mechanism; return its reduced model and its speed."""
     try:
+        if isinstance(delta, bool | str):  # True is no coefficient, "0.02" a slip
+            raise TypeError
         value = float(delta)
     except (TypeError, ValueError) as err:
         msg = f"delta: expected a coefficient of speed fluctuation, got {delta!r}"

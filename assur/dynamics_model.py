@@ -277,6 +277,8 @@ def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dyna
 def checked_flywheel(value: Any) -> float:
     """Return the flywheel inertia, checked: a finite number >= 0 (kg m^2)."""
     try:
+        if isinstance(value, bool | str):  # True is no inertia, "0.5" a slip
+            raise TypeError
         number = float(value)
     except (TypeError, ValueError) as err:
         msg = f"flywheel: expected an inertia in kg m^2, got {value!r}"

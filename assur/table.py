@@ -19,6 +19,7 @@ from assur._kinematics import KinematicState
 from assur._text import suggest
 from assur._vec import Array, freeze
 from assur.columns import Column, families, schema
+from assur.errors import UsageError
 from assur.kinetostatics import ForceState
 from assur.model import Mechanism
 from assur.plan import Plan
@@ -160,7 +161,15 @@ class Table:
         A long sweep solves up to accelerations, its jerks solved group by group when
         first asked for; a short one (up to 2048 positions asked for, with no
         ``columns=``) solves them in the call.
+
+        Raises
+        ------
+        UsageError
+            For a level that is not 0, 1, 2 or 3.
         """
+        if isinstance(level, bool) or level not in (0, 1, 2, 3):
+            msg = f"level: expected 0, 1, 2 or 3 (positions to jerks), got {level!r}"
+            raise UsageError(msg)
         if self.state.top >= level:
             return self.state
         found = self._states.get(level)

@@ -219,3 +219,29 @@ def test_a_reaction_read_first_cannot_be_made_writeable():
     column = table["B.Fx"]  # the first read: no other column computed before
     with pytest.raises(ValueError, match="WRITEABLE"):
         column.flags.writeable = True
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda m, t: t.motion("3"), "level: expected 0, 1, 2 or 3"),
+        (lambda m, t: t.motion(5), "level: expected 0, 1, 2 or 3"),
+        (lambda m, t: assur.flywheel(m, "0.02"), "delta: expected a coefficient"),
+        (lambda m, t: assur.dynamics(m, [0.0], flywheel=True), "flywheel: expected"),
+        (lambda m, t: assur.dynamics(m, [0.0], flywheel="0.5"), "flywheel: expected"),
+    ],
+)
+def test_levels_and_dynamics_arguments_are_checked(call, message):
+    mech = assur.catalog.slider_crank()
+    with pytest.raises(assur.UsageError, match=message):
+        call(mech, assur.forces(mech, np.arange(0.0, 360.0, 30.0)))
+
+
+def test_a_group_is_named_by_its_number():
+    pytest.importorskip("matplotlib").use("Agg")
+    from assur.plotting import draw_free_body
+
+    table = assur.forces(assur.catalog.slider_crank(), [30.0])
+    for wrong in ("1", True, 1.0):
+        with pytest.raises(assur.UsageError, match="group_index: expected a group"):
+            draw_free_body(table, wrong)
