@@ -286,7 +286,7 @@ def test_an_answer_that_names_nothing_is_an_error(tmp_path: Path) -> None:
     bad.write_text('[answers]\n"rod.Fi" = "many"\n')
     from assur.explain import read_answers
 
-    with pytest.raises(assur.ModelError, match=r"answers\.rod\.Fi: expected a number"):
+    with pytest.raises(assur.ModelError, match=r"answers\.rod\.Fi: expected a finite"):
         read_answers(bad)
 
 
@@ -467,3 +467,25 @@ def test_plot_draws_one_group_s_free_body(tmp_path: Path, capsys) -> None:
 def test_an_angle_that_is_not_one_position_is_a_usage_error(angle) -> None:
     with pytest.raises(assur.UsageError, match=r"^angles?: "):
         assur.explain(assur.catalog.four_bar(), angle)
+
+
+def test_given_answers_round_off_nan_and_dotted_keys(tmp_path):
+    # a given 0 against the note's round-off (1.4e-17) was "-100 % differs"; NaN was
+    # taken; an unquoted dotted key was refused as a table
+    from assur.explain import read_answers
+    from assur.explain._answers import _verdict
+
+    path = tmp_path / "a.toml"
+    path.write_text('[answers]\nB.F = 1928.5\n"rod.G.a" = 2565.13\n')
+    assert read_answers(path)[0] == {"B.F": 1928.5, "rod.G.a": 2565.13}
+    assert _verdict(0.0, 1.4e-17) == ("", "agrees")
+    assert _verdict(1.0, 1.4e-17) == ("", "differs")
+    assert _verdict(1.0, float("nan")) == ("", "undefined here")
+    assert _verdict(-1.1, -1.0)[0] == "$-10.000$ %"  # below the note's value
+    for bad in ("nan", "inf", "1" + "0" * 400):
+        path.write_text(f'[answers]\n"B.x" = {bad}\n')
+        with pytest.raises(assur.ModelError, match="expected a finite number"):
+            read_answers(path)
+    path.write_bytes(b'[answers]\n"B.x" = 1 # \xff\n')
+    with pytest.raises(assur.ModelError, match="cannot read the answers"):
+        read_answers(path)

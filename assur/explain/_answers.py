@@ -13,10 +13,11 @@ import math
 import os
 from collections.abc import Mapping
 
+from assur._text import describe
 from assur.errors import ModelError
 from assur.explain._note import Block, Display, Grid, Heading, Para
 from assur.explain._position import Position
-from assur.explain._tex import name, num, plain
+from assur.explain._tex import ZERO, name, num, plain
 
 __all__ = ["AGREE", "answer_blocks", "computed", "read_answers"]
 
@@ -27,10 +28,13 @@ AGREE = 5e-4
 def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
     """Read a TOML file of given answers: ``[answers]`` and an optional ``source``.
 
+    A key may be quoted (``"B.F" = 1928.5``) or not (``B.F = 1928.5``, which TOML
+    reads as nested tables: they are joined again by dots).
+
     Raises
     ------
     ModelError
-        When the file cannot be read or an answer is not a number.
+        When the file cannot be read or an answer is not a finite number.
     """
     import tomllib
 
@@ -38,7 +42,7 @@ def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
     try:
         with open(path, "rb") as stream:
             data = tomllib.load(stream)
-    except (OSError, tomllib.TOMLDecodeError) as err:
+    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError) as err:
         msg = f"{where}: cannot read the answers ({err})"
         raise ModelError(msg) from err
     table = data.get("answers")
@@ -46,12 +50,33 @@ def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
         msg = f"{where}: expected a table [answers] of quantity = value"
         raise ModelError(msg)
     answers = {}
-    for key, value in table.items():
-        if isinstance(value, bool) or not isinstance(value, int | float):
-            msg = f"{where}: answers.{key}: expected a number, got {value!r}"
+    for key, value in _flat(table).items():
+        try:
+            if isinstance(value, bool) or not isinstance(value, int | float):
+                raise TypeError
+            number = float(value)
+        except (TypeError, OverflowError):
+            number = math.nan
+        if not math.isfinite(number):
+            msg = (
+                f"{where}: answers.{key}: expected a finite number, got "
+                f"{describe(value)}"
+            )
             raise ModelError(msg)
-        answers[str(key)] = float(value)
+        answers[key] = number
     return answers, str(data.get("source", ""))
+
+
+def _flat(table: Mapping[str, object], prefix: str = "") -> dict[str, object]:
+    """Return a nested table's values by their dotted keys (``B.F``)."""
+    out: dict[str, object] = {}
+    for key, value in table.items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out.update(_flat(value, name + "."))
+        else:
+            out[name] = value
+    return out
 
 
 def computed(pos: Position, key: str) -> float:
@@ -98,6 +123,22 @@ def _slip(pos: Position, link: str, given: Mapping[str, float]) -> str | None:
     )
 
 
+def _verdict(value: float, ours: float) -> tuple[str, str]:
+    """Return the difference of a given answer from the note's, and the verdict.
+
+    The difference is relative to the note's value (positive: the given one is
+    larger). A value the note prints as 0 (round-off, below ``ZERO``) agrees with a
+    given one that small too; an undefined one (a translating link's instant
+    centre, say) is no verdict.
+    """
+    if not math.isfinite(ours):
+        return "", "undefined here"
+    if abs(ours) < ZERO:
+        return "", "agrees" if abs(value) < ZERO else "differs"
+    diff = (value - ours) / abs(ours)
+    return f"${100 * diff:+.3f}$ %", "agrees" if abs(diff) <= AGREE else "differs"
+
+
 def answer_blocks(
     pos: Position, given: Mapping[str, float], source: str
 ) -> list[Block]:
@@ -105,16 +146,8 @@ def answer_blocks(
     rows = []
     for key, value in given.items():
         ours = computed(pos, key)
-        diff = (value - ours) / ours if ours else float(value != 0.0)
-        verdict = "agrees" if abs(diff) <= AGREE else "differs"
         rows.append(
-            (
-                plain(key),
-                f"${value:g}$",
-                f"${num(ours)}$",
-                f"${100 * diff:+.3f}$ %",
-                verdict,
-            )
+            (plain(key), f"${value:g}$", f"${num(ours)}$", *_verdict(value, ours))
         )
     blocks: list[Block] = [
         Heading(2, "7. The given answers"),

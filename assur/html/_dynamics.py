@@ -18,7 +18,7 @@ from assur.columns import pretty_unit
 from assur.dynamics_shown import SHOWN_DELTA, has_dynamics, shown
 from assur.errors import AssurError
 from assur.html._data import floats
-from assur.html._sections import wide_card
+from assur.html._sections import number, wide_card
 
 __all__ = ["dynamics_part"]
 
@@ -82,18 +82,18 @@ def _figures_html(result: Any) -> str:
     """Return the figures of the steady state as a small table, and a note."""
     kgm2 = pretty_unit("kg m^2")
     rows = [
-        ("coefficient of speed fluctuation δ", f"{result.delta:.5g}"),
-        ("flywheel on the crank", f"{result.flywheel:.5g} {kgm2}"),
-        ("motor torque (constant)", f"{result.motor:.5g} N·m"),
+        ("coefficient of speed fluctuation δ", number(result.delta)),
+        ("flywheel on the crank", f"{number(result.flywheel)} {kgm2}"),
+        ("motor torque (constant)", f"{number(result.motor)} N·m"),
         (
             "largest speed",
-            f"{result.speed_max:.5g} rad/s at {result.angle_max:.5g}°",
+            f"{number(result.speed_max)} rad/s at {number(result.angle_max)}°",
         ),
         (
             "smallest speed",
-            f"{result.speed_min:.5g} rad/s at {result.angle_min:.5g}°",
+            f"{number(result.speed_min)} rad/s at {number(result.angle_min)}°",
         ),
-        ("energy swing", f"{result.energy_swing:.5g} J"),
+        ("energy swing", f"{number(result.energy_swing)} J"),
     ]
     cells = "".join(
         f"<tr><th>{escape(k)}</th><td>{escape(v)}</td></tr>" for k, v in rows
@@ -109,6 +109,12 @@ def _figures_html(result: Any) -> str:
         f"the largest and the smallest), {why}, under the constant motor torque "
         "that does back the loads' work over a turn."
     )
+    if any(j.friction for j in result.mechanism.joints):
+        # the summary above counts friction's loss: say why the motor does not
+        note += (
+            " The dynamic model leaves the joints' friction out (the force tables "
+            "and the summary count it)."
+        )
     return (
         f'<p class="note">{escape(note)}</p>\n'
         f'<table class="figures"><tbody>{cells}</tbody></table>'

@@ -61,7 +61,8 @@ def meta_html(struct: Structure, table: Table, data: dict[str, Any]) -> str:
     parts = [
         f"W = {struct.dof}",
         f"class {roman(struct.mechanism_class)} mechanism",
-        f"{len(table)} positions, {driver['label']} {number(angle[0])} to "
+        f"{len(table)} position{'s' if len(table) != 1 else ''}, "
+        f"{driver['label']} {number(angle[0])} to "
         f"{number(angle[-1])} {driver['unit']}",
         "force analysis" if data["forces"] else "kinematics only (no masses or loads)",
     ]
