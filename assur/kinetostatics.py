@@ -397,7 +397,7 @@ def virtual_power(
     total: Any = 0.0
     for b in range(1, len(plan.bodies)):
         fx, fy, tau = applied.wrenches[b]
-        if not (np.ndim(fx) or np.ndim(tau) or fx or fy or tau):
+        if not (np.ndim(fx) or np.ndim(fy) or np.ndim(tau) or fx or fy or tau):
             continue  # a massless, unloaded link does no work
         m, v = bodies[b], coeff[b]
         w = v.phi[1]

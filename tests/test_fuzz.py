@@ -146,6 +146,7 @@ FIXED = {
     "tiny_link_far_apart.toml": "ModelError",
     "triad_small_prismatic.toml": "table",
     "unexplained_inf_sum.toml": "AssemblyError",
+    "vertical_slider_on_the_axis.toml": "SingularConfigurationError",
 }
 """Reproducers of failures the fuzzing found and that are fixed, with how each ends
 now: a table, or one line naming what is wrong."""

@@ -465,3 +465,17 @@ def test_a_slider_on_the_frame_needs_no_inertia():
         assur.forces(dataclasses.replace(mech, links=rod), angles)
     note = assur.explain(without, 45.0)
     assert "that the slider runs along" in str(note)
+
+
+def test_a_load_varying_only_along_y_does_work():
+    # a slider on a vertical guide through the origin: its inertia force's x part
+    # and its moment about the origin are the number 0.0, its y part varies; the
+    # virtual-power check took the varying part for a number (ValueError)
+    path = Path(__file__).parent / "data" / "fuzz" / "vertical_slider_on_the_axis.toml"
+    table = assur.forces(assur.load(path), np.arange(0.0, 100.0, 10.0))
+    # torques against the reactions' size times the mechanism's (about 0.25 m)
+    largest = max(float(np.max(table[c])) for c in table.columns if c.endswith(".F"))
+    assert largest > 0.0
+    np.testing.assert_allclose(
+        table["driver.torque_check"], table["driver.torque"], atol=1e-9 * largest
+    )
