@@ -235,6 +235,22 @@ def check_distinct(outputs: list[tuple[str, Any]]) -> None:
         seen.append((option, path))
 
 
+def file_name(text: str) -> Path:
+    """Return an output file's name as a Path (an argparse type).
+
+    Raises
+    ------
+    argparse.ArgumentTypeError
+        For a name ending with a slash, a folder's (a Path would drop the slash).
+    """
+    import argparse
+
+    if text.endswith(("/", os.sep)):
+        msg = f"{text}: the name ends with {text[-1]!r}, as a folder's; expected a file"
+        raise argparse.ArgumentTypeError(msg)
+    return Path(text)
+
+
 def is_stdout(path: Any) -> bool:
     """Whether ``path`` names the file standard output writes to (``/dev/stdout``)."""
     if str(path) == "-":

@@ -177,7 +177,9 @@ def _sweep(
     show: bool | Callback = False,
 ) -> Table:
     plan = plan_of(mech)
-    if not isinstance(skip, bool | np.bool_):
+    if not (
+        isinstance(skip, bool | np.bool_) or (type(skip) is int and skip in (0, 1))
+    ):
         # a speed given third, say, would else switch skipping on without a word
         msg = f"skip_unassembled: expected True or False, got {skip!r}"
         raise UsageError(msg)
@@ -610,6 +612,8 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
             near[trouble.group] = near.get(trouble.group, mask) | mask
             continue
         if not skip:
+            # every slice's positions of this trouble: the counts are the sweep's
+            mask = _all_failures(troubles, n, trouble.group, trouble.what)
             first = int(np.flatnonzero(mask)[0])
             where = _where(plan, given[first])
             good = _ranges(plan, given, ~_all_failures(troubles, n))
@@ -648,10 +652,18 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
     return None if ok.all() else ok
 
 
-def _all_failures(troubles: list[Any], n: int) -> Mask:
+def _all_failures(
+    troubles: list[Any], n: int, group: str | None = None, what: str | None = None
+) -> Mask:
+    """Return the positions where the sweep fails (not those near a dead centre).
+
+    With ``group`` and ``what``, those of that group's trouble of that kind only.
+    """
     bad = np.zeros(n, dtype=bool)
     for trouble, start in troubles:
-        if trouble.what != "near":
+        if trouble.what == "near" or (group is not None and trouble.group != group):
+            continue
+        if what is None or trouble.what == what:
             bad[start : start + trouble.mask.shape[0]] |= trouble.mask
     return bad
 

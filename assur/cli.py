@@ -27,6 +27,7 @@ from assur._cli_common import (
     add_angle_option,
     check_distinct,
     check_not_input,
+    file_name,
     is_stdout,
     load_mechanism,
     one_position,
@@ -124,6 +125,7 @@ def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
     p.add_argument(
         "-o",
         "--output",
+        type=file_name,
         metavar="PATH",
         help="write the note to PATH: .md (Markdown), .html (MathML) or .tex "
         "(LaTeX); default: Markdown on standard output",

@@ -24,6 +24,7 @@ from assur._cli_common import (
     add_angle_option,
     check_not_input,
     check_range,
+    file_name,
     load_mechanism,
     one_position,
     positions,
@@ -138,8 +139,10 @@ def _common(
     dpi_range: tuple[float, float] = DPI_RANGE,
 ) -> None:
     p.add_argument("file", type=Path)
+    # a file's name written as a folder's ("x.svg/") would lose its slash in a Path
+    kind = Path if metavar == "DIR" else file_name
     p.add_argument(
-        "-o", "--output", type=Path, required=True, metavar=metavar, help=text
+        "-o", "--output", type=kind, required=True, metavar=metavar, help=text
     )
     if dpi is not None:
         p.add_argument(
@@ -203,19 +206,39 @@ def _skip_option(p: argparse.ArgumentParser) -> None:
     )
 
 
+def _kept(mech: Any, positions: Any, forces: bool, skip: bool) -> Any:
+    """Return the positions of a sweep that can be drawn, shape (n, drivers).
+
+    One column is kept (memory stays that of the positions); what cannot be
+    assembled raises, or with ``skip`` is left out, as a whole table would.
+    """
+    from assur.analysis import forces as force_table
+    from assur.analysis import kinematics
+
+    if forces:  # friction may lock positions that assemble
+        table = force_table(mech, positions, skip, columns=["angle", "driver.torque"])
+    else:
+        table = kinematics(mech, positions, skip, columns=["angle"])
+    return _some_kept(table).given
+
+
 def _table(mech: Any, positions: Any, forces: bool, skip: bool = False) -> Any:
     from assur.analysis import forces as force_table
     from assur.analysis import kinematics
 
     analyse = force_table if forces else kinematics
-    table = analyse(mech, positions, skip_unassembled=skip)
-    if skip and not len(table):
-        msg = (
-            f"every position of the sweep is left out ({SKIPPED_WHY}); expected "
-            "positions where the mechanism moves"
-        )
-        raise AssemblyError(msg)
-    return table
+    return _some_kept(analyse(mech, positions, skip_unassembled=skip))
+
+
+def _some_kept(table: Any) -> Any:
+    """Return ``table``; an AssemblyError when every position was left out."""
+    if len(table) or not len(table.skipped):
+        return table
+    msg = (
+        f"every position of the sweep is left out ({SKIPPED_WHY}); expected "
+        "positions where the mechanism moves"
+    )
+    raise AssemblyError(msg)
 
 
 def _draw(fig: Any, path: Path, dpi: float) -> None:
@@ -466,7 +489,7 @@ def _cmd_animate(args: argparse.Namespace) -> int:
     sweep = positions(mech, args.angles)
     # the whole sweep first: what cannot be assembled is counted over it, not the
     # frames, and the frames are spread over the positions kept
-    kept = _table(mech, sweep, args.forces, args.skip_unassembled).given
+    kept = _kept(mech, sweep, args.forces, args.skip_unassembled)
     sweep = kept[:, 0] if kept.shape[1] == 1 else kept
     pick = np.unique(
         np.linspace(0, len(sweep) - 1, min(args.frames, len(sweep))).round().astype(int)

@@ -92,7 +92,7 @@ class Study:
             that fails and a column it lacks; the parameters are coordinates along
             ``variant``, and ``angle`` holds the driver positions along ``position``
             (deg, or m for a slider; dimensions (position, driver) with several
-            drivers).
+            drivers) unless a parameter is called so.
 
         Raises
         ------
@@ -121,10 +121,11 @@ class Study:
             "variant": chosen,
             "position": np.arange(angles.shape[0]),
             "column": names,
-            "angle": (along, angles),
         }
         for name, values in self.parameters.items():
             coords[name] = ("variant", values[chosen])
+        # the driver positions, unless a parameter took the name
+        coords.setdefault("angle", (along, angles))
         return xr.Dataset(
             {"values": (("variant", "position", "column"), data)}, coords=coords
         )
@@ -166,7 +167,7 @@ def sweep(
         For parameters that are not equal-length 1-D arrays of real numbers, that
         the factory does not take or that are named as a column of the summary
         (``error``, ``warning``, ``variant``) or of :meth:`Study.tables`
-        (``position``, ``column``, ``values``, ``angle``); driver positions that
+        (``position``, ``column``, ``values``, ``driver``); driver positions that
         are not finite real numbers; a ``client`` that is not a dask.distributed
         client or ``partitions`` that is not a positive integer.
     ImportError
@@ -458,8 +459,12 @@ def _table(factory: Factory, p: dict[str, Any], angles: Array) -> dict[str, Arra
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", AssurWarning)
         try:
-            table = forces(_built(factory, p), angles)
-        except Exception:  # a variant that fails has no table
+            mech = _built(factory, p)
+        except Exception:  # the factory's own error: the variant has no table
+            return {}
+        try:
+            table = forces(mech, angles)
+        except AssurError:
             return {}
     return dict(zip(table.columns, table.arrays(), strict=True))
 
@@ -575,7 +580,7 @@ def _variant(parameters: dict[str, Array], i: int) -> dict[str, Any]:
     return {name: values[i].item() for name, values in parameters.items()}
 
 
-RESERVED = ("error", "warning", "variant", "position", "column", "values", "angle")
+RESERVED = ("error", "warning", "variant", "position", "column", "values", "driver")
 """Names of the summary's and the tables' own columns and dimensions."""
 
 

@@ -53,8 +53,8 @@ class Table:
 
     Notes
     -----
-    A table is equal only to itself (its hash is its identity); iterating over it
-    gives the column names, as a mapping does.
+    A table is equal only to itself (its hash is its identity); it is not iterable
+    (``columns`` names its columns, ``arrays()`` gives them).
 
     A table of the drivers' columns alone (``columns=["driver.torque"]``, say) keeps
     no links' motions or reactions: ``state`` and ``force_state`` are solved again,
@@ -139,7 +139,7 @@ class Table:
     def partial(self) -> bool:
         """Whether the table holds some of its analysis's columns only (``columns=``).
 
-        Pictures need every column: they refuse such a table.
+        A picture that reads a column such a table lacks says so (a KeyError).
         """
         if self._again is not None:
             return True
@@ -210,8 +210,7 @@ class Table:
                 c for c in self._families[column.family] if c.name not in cache
             )
         else:
-            for key, values in evaluate(self, column).items():
-                self._keep(key, values)
+            self._store(evaluate(self, column))
         return self._cache[name]
 
     def __len__(self) -> int:
@@ -221,7 +220,12 @@ class Table:
         return name in self._index
 
     def __iter__(self) -> Iterator[str]:
-        return iter(self._index)
+        # iteration would read as rows to one library and as columns to another
+        msg = (
+            "a Table is not iterable; expected table.columns for the names, "
+            "table.arrays() for the values, or table.to_pandas()"
+        )
+        raise TypeError(msg)
 
     def arrays(self) -> list[Array]:
         """Return every column, in order; those not read yet are computed together.
@@ -247,7 +251,24 @@ class Table:
 
     def _compute(self, columns: Iterable[Column]) -> None:
         """Compute ``columns`` (and those computed along with them) into the cache."""
-        for key, values in materialize(self, columns).items():
+        self._store(materialize(self, columns))
+
+    def _store(self, found: dict[str, Array]) -> None:
+        """Keep the columns ``found`` together, read-only.
+
+        The arrays that own their memory (a block of columns computed together) are
+        made read-only too, once each: a view's flag could else be set back.
+        """
+        owners = {}
+        for values in found.values():
+            base = values if values.base is None else values.base
+            if isinstance(base, np.ndarray) and base.flags.writeable:
+                while isinstance(base.base, np.ndarray):
+                    base = base.base
+                owners[id(base)] = base
+        for owner in owners.values():
+            owner.flags.writeable = False
+        for key, values in found.items():
             self._keep(key, values)
 
     def _keep(self, key: str, values: Array) -> None:

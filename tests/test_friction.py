@@ -513,3 +513,20 @@ def test_a_journal_of_radius_zero_has_no_friction_couple():
     )
     with pytest.raises(assur.ModelError, match="needs its journal 'radius'"):
         joint_a(radius=None)
+
+
+def test_a_lock_is_counted_over_every_slice():
+    # the message counted the positions of the first slice the group locked in
+    import re
+
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    mech = assur.loads(text.replace("friction = 0.8", "friction = 1.3"))
+    angles = np.arange(0.0, 360.0, 0.01)  # 36000 positions: several slices
+    kept = assur.forces(mech, angles, skip_unassembled=True)
+    with pytest.raises(assur.SelfLockingError) as raised:
+        assur.forces(mech, angles)
+    count = re.search(r"\((\d+) of 36000 positions\)", str(raised.value))
+    assert count is not None
+    assert int(count.group(1)) == len(kept.skipped)
+    # locked positions in more than one slice of 8192 (81.92 degrees here)
+    assert np.ptp(kept.skipped) > 81.92

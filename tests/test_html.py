@@ -517,3 +517,16 @@ def test_kinematics_only_page_in_the_browser(browser: Any, tmp_path: Path) -> No
     assert after[1] == pytest.approx(before[1], abs=1e-6)  # C slides on y = 0
     assert abs(after[0] - before[0]) > 5.0
     assert browser.execute_script("return window.assurErrors") == []
+
+
+def test_the_diagrams_break_where_positions_were_left_out() -> None:
+    from assur.html._data import gaps
+
+    triad = assur.load(Path(__file__).parent / "data" / "edge" / "triadP.toml")
+    table = assur.kinematics(triad, np.arange(30.0, 390.0, 1.0), skip_unassembled=True)
+    (row,) = gaps(table)
+    assert table.given[row - 1, 0] == 114.0
+    assert table.given[row, 0] == 238.0
+    # an uneven sweep with nothing left out has no gap
+    uneven = np.r_[np.arange(0.0, 90.0), np.arange(90.0, 361.0, 10.0)]
+    assert gaps(assur.kinematics(assur.catalog.slider_crank(), uneven)) == []

@@ -482,3 +482,14 @@ def test_animate_counts_the_sweep_and_skips_over_it(
     status, _, err = _run(capsys, *argv, "--skip-unassembled", "--angles", "200:220:1")
     assert status == 2
     _error_line(err, "every position of the sweep is left out")
+
+
+def test_a_picture_s_name_ending_with_a_slash_is_refused(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+):
+    # a Path dropped the slash: "-o x.svg/" wrote x.svg
+    target = f"{tmp_path / 'x.svg'}/"
+    status, _, err = _run(capsys, "plot", SLIDER, "-o", target)
+    assert status == 2
+    assert "the name ends with '/', as a folder's; expected a file" in err
+    assert list(tmp_path.iterdir()) == []

@@ -201,7 +201,7 @@ def test_each_driver_has_its_lever() -> None:
         assert f"driver {name}" in ax.get_title()
         plt.close(ax.figure)
     with pytest.raises(
-        assur.ModelError, match="lever_balance: no driver 2; expected 0 to 1"
+        assur.UsageError, match="lever_balance: no driver 2; expected 0 to 1"
     ):
         plans.lever_balance(table, driver=2)
 

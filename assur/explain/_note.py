@@ -10,6 +10,7 @@ import os
 from dataclasses import dataclass
 from typing import Any
 
+from assur.errors import UsageError
 from assur.explain._blocks import Block, Display, Grid, Heading, Items, Para, segments
 from assur.explain._html import html_page
 from assur.explain._latex import latex_document
@@ -73,7 +74,7 @@ class Note:
         ------
         OutputError
             When the file cannot be written.
-        ValueError
+        UsageError
             When the suffix is not .md, .html, .htm or .tex.
         """
         from assur._output import write_text
@@ -95,5 +96,5 @@ class Note:
                 f"{path}: unknown type of note {suffix or '(none)'!r}; expected .md, "
                 ".html or .tex"
             )
-            raise ValueError(msg)
+            raise UsageError(msg)
         return str(makers[suffix]())

@@ -27,7 +27,7 @@ def _sq(x: float) -> str:
 
 def _called(kind: str, name: str) -> str:
     """Return "the guide A", or "the guide" alone for a guide named "guide"."""
-    return f"the {kind}" if kind in name.lower() else f"the {kind} {plain(name)}"
+    return f"the {kind}" if name.lower() == kind else f"the {kind} {plain(name)}"
 
 
 def _known(pos: Position, s: DyadSolver) -> list[Block]:

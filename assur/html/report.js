@@ -319,15 +319,13 @@
     const cursor = el("line", {y1: m.t, y2: CH - m.b, stroke: "#6b7280",
       "stroke-dasharray": "3 3", class: "cursor"}, s);
     const dots = [];
-    // positions left out (a crank that cannot go round) leave a gap in the line,
-    // not a straight stroke across it: a step well above the sweep's usual one
-    const steps = xs.slice(1).map((x, i) => Math.abs(x - xs[i])).sort((a, b) => a - b);
-    const gap = steps.length ? 1.5 * steps[Math.floor(steps.length / 2)] : Infinity;
+    // positions left out (a crank that cannot go round) leave a gap in the line
+    const gaps = new Set(data.gaps || []);
     for (const item of series) {
       let d = "", pen = "M";
       item.values.forEach((v, i) => {
         if (v === null) { pen = "M"; return; }
-        if (i > 0 && Math.abs(xs[i] - xs[i - 1]) > gap) pen = "M";
+        if (gaps.has(i)) pen = "M";
         d += pen + px(xs[i]).toFixed(1) + "," + py(v).toFixed(1);
         pen = "L";
       });

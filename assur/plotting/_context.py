@@ -134,6 +134,8 @@ def _row(table: Table, angle: Any) -> int:
         msg = f"angle: expected a driver position (deg, or m), got {angle!r}"
         raise UsageError(msg) from err
     drive = table.given
+    if want.size == drive.shape[1]:
+        want = want.ravel()  # one row of positions, (1, drivers), say
     if want.ndim != 1 or want.shape[0] not in (1, drive.shape[1]):
         msg = (
             f"angle: {want.size} values for {drive.shape[1]} driver(s); expected "

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur.errors import ModelError
+from assur.errors import UsageError
 from assur.explain._lever import lever_load, lever_rates
 from assur.explain._loads_text import link_loads, own_loads
 from assur.explain._position import Position, from_table
@@ -334,7 +334,9 @@ def lever_balance(table: Table, angle: Any = None, driver: int = 0) -> float:
     Raises
     ------
     ModelError
-        For a kinematics table, or a driver index out of range.
+        For a kinematics table.
+    UsageError
+        For a driver index out of range.
     """
     pos = _lever_position(table, angle, driver, "lever_balance")
     return lever_load(pos, driver)
@@ -348,11 +350,11 @@ def _lever_position(table: Table, angle: Any, driver: int, what: str) -> Positio
     count = len(table.plan.drivers)
     if (
         isinstance(driver, bool)
-        or not isinstance(driver, int)
+        or not isinstance(driver, int | np.integer)
         or not (0 <= driver < count)
     ):
         msg = f"{what}: no driver {driver!r}; expected 0 to {count - 1}"
-        raise ModelError(msg)
+        raise UsageError(msg)
     return _pos(table, angle)
 
 
@@ -373,7 +375,9 @@ def zhukovsky_lever(
     Raises
     ------
     ModelError
-        For a kinematics table, or a driver index out of range.
+        For a kinematics table.
+    UsageError
+        For a driver index out of range.
     """
     pos = _lever_position(table, angle, driver, "zhukovsky_lever")
     bodies, _, _ = lever_rates(pos, driver)
