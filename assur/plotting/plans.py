@@ -374,10 +374,8 @@ def zhukovsky_lever(
 
     Raises
     ------
-    ModelError
-        For a kinematics table.
-    UsageError
-        For a driver index out of range.
+    ModelError, UsageError
+        As :func:`lever_balance`.
     """
     pos = _lever_position(table, angle, driver, "zhukovsky_lever")
     bodies, _, _ = lever_rates(pos, driver)
