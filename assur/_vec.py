@@ -29,6 +29,20 @@ Leaf = Any
 change over the batch."""
 
 
+def real(value: Any) -> float | None:
+    """Return an argument given as a number as a float; None if it is not one.
+
+    True is no number and "0.04" a typing slip: both None, as anything ``float``
+    refuses or cannot hold (an integer of 400 digits). NaN and inf stay floats.
+    """
+    if isinstance(value, bool | str):
+        return None
+    try:
+        return float(value)
+    except (TypeError, ValueError, OverflowError):
+        return None
+
+
 def is_array(value: Leaf) -> bool:
     """Whether a leaf varies over the batch (an array) rather than being constant."""
     return isinstance(value, np.ndarray) and value.ndim > 0

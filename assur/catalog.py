@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from assur._vec import real
 from assur.errors import ModelError
 from assur.model import Driver, Joint, Link, Mechanism, Point, Toward
 
@@ -156,12 +157,8 @@ def slider_crank(
 
 def _number(name: str, value: Any) -> float:
     """Return ``value`` as a finite float; a ModelError naming ``name`` if not."""
-    try:
-        # True is no dimension, and "0.04" a typing slip
-        number = math.nan if isinstance(value, bool | str) else float(value)
-    except (TypeError, ValueError):
-        number = math.nan
-    if not math.isfinite(number):
+    number = real(value)
+    if number is None or not math.isfinite(number):
         msg = f"{name}: expected a finite number, got {value!r}"
         raise ModelError(msg)
     return number

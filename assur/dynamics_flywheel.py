@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._vec import real
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce
 from assur.dynamics_steady import steady_state
 from assur.errors import ConvergenceError, ModelError, UsageError
@@ -159,13 +160,10 @@ def wittenbauer(model: Reduced, upper: float, lower: float) -> float:
 
 def _prepared(mechanism: Mechanism, delta: Any) -> tuple[Reduced, float]:
     """Check ``delta`` and the mechanism; return its reduced model and its speed."""
-    try:
-        if isinstance(delta, bool | str):  # True is no coefficient, "0.02" a slip
-            raise TypeError
-        value = float(delta)
-    except (TypeError, ValueError) as err:
+    value = real(delta)
+    if value is None:
         msg = f"delta: expected a coefficient of speed fluctuation, got {delta!r}"
-        raise UsageError(msg) from err
+        raise UsageError(msg)
     if not delta_in_range(value):
         msg = (
             f"delta: {value:g}; expected a coefficient of speed fluctuation, "

@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 from assur._text import suggest
-from assur._vec import Array
+from assur._vec import Array, real
 from assur.analysis import default_positions
 from assur.columns import Column
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce, reduced_at
@@ -276,13 +276,10 @@ def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dyna
 
 def checked_flywheel(value: Any) -> float:
     """Return the flywheel inertia, checked: a finite number >= 0 (kg m^2)."""
-    try:
-        if isinstance(value, bool | str):  # True is no inertia, "0.5" a slip
-            raise TypeError
-        number = float(value)
-    except (TypeError, ValueError) as err:
+    number = real(value)
+    if number is None:
         msg = f"flywheel: expected an inertia in kg m^2, got {value!r}"
-        raise UsageError(msg) from err
+        raise UsageError(msg)
     if not flywheel_in_range(number):
         msg = (
             f"flywheel: {number:g} kg m^2; expected an inertia from 0 to {LARGEST:g} "

@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._vec import Array
+from assur._vec import Array, real
 from assur.dynamics_model import checked_flywheel
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce
 from assur.dynamics_steady import check_inertia
@@ -172,13 +172,11 @@ def startup(
 
 def _speed(omega0: Any) -> float:
     """Return the starting speed as a float (rad/s); a UsageError if not a number."""
-    try:
-        if isinstance(omega0, bool | str):
-            raise TypeError
-        return float(omega0)
-    except (TypeError, ValueError):
+    number = real(omega0)
+    if number is None:
         msg = f"omega0: expected a crank speed in rad/s, got {omega0!r}"
-        raise UsageError(msg) from None
+        raise UsageError(msg)
+    return number
 
 
 def _turns(turns: Any) -> int:

@@ -281,3 +281,20 @@ def test_a_picture_takes_one_row_of_positions():
     )
     table = assur.kinematics(five, [[60.0, 60.0], [90.0, 80.0]])
     assert plotting._row(table, table.given[1:2]) == 1
+
+
+@pytest.mark.parametrize(
+    ("value", "number"),
+    [(0.5, 0.5), (2, 2.0), (np.float32(0.25), 0.25), (np.array(3.0), 3.0)],
+)
+def test_an_argument_given_as_a_number_is_read_as_one(value, number):
+    from assur._vec import real
+
+    assert real(value) == number
+
+
+@pytest.mark.parametrize("value", [True, "0.5", None, [1.0], 10**400, object()])
+def test_anything_else_is_no_number(value):
+    from assur._vec import real
+
+    assert real(value) is None

@@ -14,6 +14,7 @@ import os
 from collections.abc import Mapping
 
 from assur._text import describe
+from assur._vec import real
 from assur.errors import ModelError
 from assur.explain._note import Block, Display, Grid, Heading, Para
 from assur.explain._position import Position
@@ -51,13 +52,8 @@ def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
         raise ModelError(msg)
     answers = {}
     for key, value in _flat(table).items():
-        try:
-            if isinstance(value, bool) or not isinstance(value, int | float):
-                raise TypeError
-            number = float(value)
-        except (TypeError, OverflowError):
-            number = math.nan
-        if not math.isfinite(number):
+        number = real(value)
+        if number is None or not math.isfinite(number):
             msg = (
                 f"{where}: answers.{key}: expected a finite number, got "
                 f"{describe(value)}"

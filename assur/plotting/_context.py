@@ -14,6 +14,7 @@ import numpy as np
 
 from assur._style import link_colours
 from assur._text import roman, row_position
+from assur._vec import real
 from assur.columns import pretty_unit, schema
 from assur.errors import ModelError, UsageError
 from assur.plotting._style import GROUND_COLOR, PLAIN_COLOR
@@ -167,12 +168,11 @@ def checked_scale(scale: Any) -> float | None:
     """
     if scale is None:
         return None
-    try:
-        value = float(scale)
-    except (TypeError, ValueError) as err:
+    value = real(scale)
+    if value is None:
         msg = f"scale: expected a force scale in N per cm, got {scale!r}"
-        raise UsageError(msg) from err
-    if not (math.isfinite(value) and value > 0.0) or isinstance(scale, bool):
+        raise UsageError(msg)
+    if not (math.isfinite(value) and value > 0.0):
         msg = f"scale: {scale!r}; expected a force scale in N per cm, above 0"
         raise UsageError(msg)
     return value

@@ -15,6 +15,7 @@ import numpy as np
 from assur._output import output_path
 from assur._progress import Callback
 from assur._progress import progress as shown
+from assur._vec import real
 from assur.errors import UsageError
 from assur.plotting._axes import _handles
 from assur.plotting._context import _Context, _context, _need_forces
@@ -115,11 +116,8 @@ def animate(
 
 def _above_zero(name: str, value: Any) -> float:
     """Return ``value`` as a finite number above 0; a UsageError naming it if not."""
-    try:
-        number = math.nan if isinstance(value, bool | str) else float(value)
-    except (TypeError, ValueError):
-        number = math.nan
-    if not (math.isfinite(number) and number > 0.0):
+    number = real(value)
+    if number is None or not (math.isfinite(number) and number > 0.0):
         msg = f"{name}: expected a number above 0, got {value!r}"
         raise UsageError(msg)
     return number
