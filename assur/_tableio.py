@@ -139,16 +139,10 @@ def import_pyarrow() -> tuple[Any, Any]:
     ImportError
         When pyarrow is not installed, saying how to install it.
     """
-    try:
-        import pyarrow
-        import pyarrow.parquet
-    except ImportError as err:
-        msg = (
-            "writing Parquet needs pyarrow, which is not installed; expected "
-            "'pip install pyarrow' (or 'pip install assur[parquet]')"
-        )
-        raise ImportError(msg) from err
-    return pyarrow, pyarrow.parquet
+    from assur._optional import optional
+
+    parquet = optional("pyarrow.parquet", "writing Parquet", "parquet")
+    return optional("pyarrow", "writing Parquet", "parquet"), parquet
 
 
 class ParquetWriter:

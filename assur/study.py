@@ -551,23 +551,10 @@ def _takes(factory: Factory, parameters: dict[str, Array]) -> None:
 
 
 def _optional(module: str) -> Any:
-    """Import an optional dependency of studies, saying how to install it.
+    """Import an optional dependency of studies, saying how to install it."""
+    from assur._optional import optional
 
-    Raises
-    ------
-    ImportError
-        When it is not installed.
-    """
-    import importlib
-
-    try:
-        return importlib.import_module(module)
-    except ImportError as err:
-        msg = (
-            f"studies need {module}, which is not installed; expected "
-            "'pip install \"assur[study]\"'"
-        )
-        raise ImportError(msg) from err
+    return optional(module, "a study", "study")
 
 
 def _line(err: BaseException) -> str:

@@ -25,6 +25,7 @@ RANKS = {
     "assur.errors": 0,
     "assur._vec": 0,
     "assur._text": 0,
+    "assur._optional": 0,
     "assur._progress": 0,
     "assur._style": 0,
     "assur.model": 1,

@@ -1,0 +1,41 @@
+"""The optional dependencies: imported when a feature needs them, named if missing.
+
+``import assur`` stays light: pandas, xarray, dask and pyarrow come with extras
+(``pip install "assur[study]"``, ``"assur[parquet]"``) and are imported here, on
+first use, with an error that says how to install them.
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import Any
+
+__all__ = ["optional"]
+
+
+def optional(module: str, needed_for: str, extra: str) -> Any:
+    """Return the module ``module``, imported.
+
+    Parameters
+    ----------
+    module : str
+        The module's name (``"pyarrow.parquet"``, say).
+    needed_for : str
+        What needs it, to start the message (``"writing Parquet"``).
+    extra : str
+        The extra of assur that installs it (``"parquet"``).
+
+    Raises
+    ------
+    ImportError
+        When it is not installed, saying how to install it.
+    """
+    try:
+        return importlib.import_module(module)
+    except ImportError as err:
+        package = module.split(".")[0]
+        msg = (
+            f"{needed_for} needs {package}, which is not installed; expected "
+            f"'pip install {package}' (or 'pip install assur[{extra}]')"
+        )
+        raise ImportError(msg) from err
