@@ -245,8 +245,11 @@ def file_name(text: str) -> Path:
     """
     import argparse
 
-    if text.endswith(("/", os.sep)):
-        msg = f"{text}: the name ends with {text[-1]!r}, as a folder's; expected a file"
+    from assur._output import folder_name
+
+    fault = folder_name(text)
+    if fault is not None:
+        msg = f"{text}: {fault}; expected a file"
         raise argparse.ArgumentTypeError(msg)
     return Path(text)
 

@@ -253,15 +253,22 @@ def output_folder(
         shutil.rmtree(temporary, ignore_errors=True)
 
 
-def _not_a_folder(path: str | os.PathLike[str]) -> None:
-    """Refuse a file name written as a folder's, ending with a slash.
+def folder_name(path: str | os.PathLike[str]) -> str | None:
+    """Say what is wrong with a file's name written as a folder's; None if nothing.
 
-    A Path drops the slash: ``--csv out/`` would write a file named ``out``.
+    A Path drops a name's last slash: ``--csv out/`` would write a file ``out``.
     """
     if isinstance(path, str) and path.endswith(("/", os.sep)):
+        return f"the name ends with {path[-1]!r}, as a folder's"
+    return None
+
+
+def _not_a_folder(path: str | os.PathLike[str]) -> None:
+    """Refuse a file name written as a folder's (see :func:`folder_name`)."""
+    fault = folder_name(path)
+    if fault is not None:
         msg = (
-            f"{path_text(path)}: cannot write the file (the name ends with "
-            f"{path[-1]!r}, as a folder's); expected a file name"
+            f"{path_text(path)}: cannot write the file ({fault}); expected a file name"
         )
         raise OutputError(msg)
 
