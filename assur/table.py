@@ -186,8 +186,9 @@ class Table:
             return self._index[name]
         except KeyError:
             pass
-        every = schema(self.plan, self._kept_forces is not None)
-        if self.partial and any(c.name == name for c in every):
+        if self.partial and any(
+            c.name == name for c in schema(self.plan, self._kept_forces is not None)
+        ):
             msg = (
                 f"no column {name!r}: the table was made with columns= "
                 f"({len(self.schema)} columns); expected {name!r} among them, or "
