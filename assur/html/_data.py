@@ -248,4 +248,4 @@ def gaps(table: Table) -> list[int]:
     order = kept if step[0] > 0 else kept[::-1]
     at = np.searchsorted(order, left)
     rows = at if step[0] > 0 else len(kept) - at
-    return np.unique(rows[(rows > 0) & (rows < len(kept))]).tolist()  # type: ignore[no-any-return]
+    return np.unique(rows[(rows > 0) & (rows < len(kept))]).tolist()
