@@ -43,6 +43,16 @@ def real(value: Any) -> float | None:
         return None
 
 
+def integer(value: Any) -> int | None:
+    """Return an argument given as a whole number (a count, an index) as an int.
+
+    None for anything else: True, 1.0, "1".
+    """
+    if isinstance(value, bool) or not isinstance(value, int | np.integer):
+        return None
+    return int(value)
+
+
 def is_array(value: Leaf) -> bool:
     """Whether a leaf varies over the batch (an array) rather than being constant."""
     return isinstance(value, np.ndarray) and value.ndim > 0

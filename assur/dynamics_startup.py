@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._vec import Array, real
+from assur._vec import Array, integer, real
 from assur.dynamics_model import checked_flywheel
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce
 from assur.dynamics_steady import check_inertia
@@ -181,10 +181,11 @@ def _speed(omega0: Any) -> float:
 
 def _turns(turns: Any) -> int:
     """Return the most turns to integrate, checked: a whole number from 1."""
-    if isinstance(turns, bool) or not isinstance(turns, int | np.integer) or turns < 1:
+    number = integer(turns)
+    if number is None or number < 1:
         msg = f"turns: expected a whole number of turns from 1, got {turns!r}"
         raise UsageError(msg)
-    return int(turns)
+    return number
 
 
 def _motor(mechanism: Mechanism, motor: Motor | None) -> Motor:

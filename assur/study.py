@@ -27,7 +27,7 @@ from assur._loads import compile_loads
 from assur._stack import Unstackable, signature
 from assur._text import suggest
 from assur._variants import Template, compile_many, form, numbers, template
-from assur._vec import Array
+from assur._vec import Array, integer
 from assur.analysis import forces, positions
 from assur.errors import AssurError, AssurWarning, UsageError
 from assur.model import Mechanism
@@ -508,14 +508,15 @@ def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:
     if variants is None:
         return list(range(count))
     out = []
-    for i in variants:
-        if isinstance(i, bool) or not isinstance(i, int | np.integer):
-            msg = f"variants: expected variant numbers, got {i!r}"
+    for given in variants:
+        i = integer(given)
+        if i is None:
+            msg = f"variants: expected variant numbers, got {given!r}"
             raise UsageError(msg)
         if not 0 <= i < count:
             msg = f"variants: no variant {i}; expected numbers from 0 to {count - 1}"
             raise UsageError(msg)
-        out.append(int(i))
+        out.append(i)
     return out
 
 
@@ -648,11 +649,7 @@ def _distributed(
     if not all(callable(getattr(client, f, None)) for f in ("submit", "gather")):
         msg = f"client: expected a dask.distributed Client, got {client!r}"
         raise UsageError(msg)
-    if partitions is not None and (
-        isinstance(partitions, bool)
-        or not isinstance(partitions, int | np.integer)
-        or partitions < 1
-    ):
+    if partitions is not None and (integer(partitions) or 0) < 1:
         msg = f"partitions: expected a positive number, got {partitions!r}"
         raise UsageError(msg)
     count = len(next(iter(parameters.values())))

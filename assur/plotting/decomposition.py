@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._structure import Group, Structure
-from assur._vec import full
+from assur._vec import full, integer
 from assur.errors import ModelError, UsageError
 from assur.model import GROUND
 from assur.plotting._axes import _frame_axes, _legend, _new_axes
@@ -227,7 +227,7 @@ def draw_free_body(
 def _group(ctx: _Context, group_index: int) -> int:
     """Check ``group_index`` (negative counts from the end); return it from 0."""
     count = len(ctx.plan.groups)
-    if isinstance(group_index, bool) or not isinstance(group_index, int | np.integer):
+    if integer(group_index) is None:
         msg = f"group_index: expected a group's number, got {group_index!r}"
         raise UsageError(msg)
     if not -count <= group_index < count:

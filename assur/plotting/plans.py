@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._vec import integer
 from assur.errors import UsageError
 from assur.explain._lever import lever_load, lever_rates
 from assur.explain._loads_text import link_loads, own_loads
@@ -348,11 +349,8 @@ def _lever_position(table: Table, angle: Any, driver: int, what: str) -> Positio
 
     _need_forces(table, what)
     count = len(table.plan.drivers)
-    if (
-        isinstance(driver, bool)
-        or not isinstance(driver, int | np.integer)
-        or not (0 <= driver < count)
-    ):
+    index = integer(driver)
+    if index is None or not 0 <= index < count:
         msg = f"{what}: no driver {driver!r}; expected 0 to {count - 1}"
         raise UsageError(msg)
     return _pos(table, angle)
