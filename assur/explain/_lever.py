@@ -273,12 +273,15 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     return [*blocks, Display(tuple(lines))]
 
 
-def lever_load(pos: Position, i: int) -> float:
+def lever_load(
+    pos: Position, i: int, rates: tuple[list[Motion], float] | None = None
+) -> float:
     """Return driver ``i``'s balancing load read off the lever, friction's power in.
 
-    N m or N: what :func:`lever_blocks` finds, without the working.
+    N m or N: what :func:`lever_blocks` finds, without the working. ``rates`` are
+    the velocities and the speed of :func:`lever_rates`, if found already.
     """
-    bodies, speed, _ = lever_rates(pos, i)
+    bodies, speed = lever_rates(pos, i)[:2] if rates is None else rates
     _, power = lever_terms(pos, bodies)
     _, lost = power_rows(pos, bodies, bodies is pos.bodies)
     return -(power + lost) / speed

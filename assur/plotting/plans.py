@@ -376,7 +376,7 @@ def zhukovsky_lever(
         As :func:`lever_balance`.
     """
     pos = _lever_position(table, angle, driver, "zhukovsky_lever")
-    bodies, _, _ = lever_rates(pos, driver)
+    bodies, speed, _ = lever_rates(pos, driver)
     unit_speed = bodies is not pos.bodies
     lever = dataclasses.replace(pos, bodies=bodies)
     found = {n: np.array([-v[1], v[0]]) for n, v in images(lever, 1).items()}
@@ -396,7 +396,7 @@ def zhukovsky_lever(
         at = np.array([-v[1], v[0]]) / mu
         _arrow(ax, at, at + x.force / fmu, "#d62728")
         ax.annotate(_symbol(x.tex), at + x.force / fmu, fontsize=7)
-    balancing = lever_load(pos, driver)
+    balancing = lever_load(pos, driver, (bodies, speed))
     rubbing = " and friction's power" if pos.result and pos.result.friction else ""
     ax.text(0.02, 0.02,
             f"balancing load from the lever: {balancing:.6g} "
@@ -404,8 +404,8 @@ def zhukovsky_lever(
             f"\n(loads at their images{rubbing}; forces 1 mm = {fmu:g} N)",
             transform=ax.transAxes, fontsize=8, va="bottom")  # fmt: skip
     per = " per unit speed of the driver" if unit_speed else ""
-    speed = "(m/s)/mm" if not unit_speed else "m/mm" if d.kind == "R" else "1/mm"
-    _legend(ax, [("load", "#d62728")], f"lever: μv = {mu:g} {speed}{per}, turned 90°")
+    mu_unit = "(m/s)/mm" if not unit_speed else "m/mm" if d.kind == "R" else "1/mm"
+    _legend(ax, [("load", "#d62728")], f"lever: μv = {mu:g} {mu_unit}{per}, turned 90°")
     return ax
 
 
