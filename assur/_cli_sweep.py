@@ -18,7 +18,9 @@ from typing import Any, NoReturn
 
 import numpy as np
 
+from assur._output import path_text
 from assur._vec import Array, full
+from assur.analysis import SKIPPED_WHY
 from assur.errors import (
     AssemblyError,
     AssurWarning,
@@ -71,6 +73,15 @@ class Skipped:
         room = SKIPPED_SHOWN - len(self.values)
         self.values += flat[:room].tolist()
         self.more |= flat.size > room
+
+    def note(self, source: Any) -> str:
+        """Return the note naming the positions left out of ``source``'s sweep."""
+        shown = ", ".join(f"{x:g}" for x in self.values)
+        more = ", ..." if self.more else ""
+        return (
+            f"assur: note: {path_text(source)}: left out {self.count} "
+            f"position(s) {SKIPPED_WHY}: {shown}{more}"
+        )
 
 
 def slices(

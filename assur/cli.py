@@ -431,13 +431,7 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
             text, names = _summary(parts, forces)
     quiet = _quiet(args)
     if skipped.count and not quiet:
-        shown = ", ".join(f"{x:g}" for x in skipped.values)
-        more = ", ..." if skipped.more else ""
-        print(
-            f"assur: note: {path_text(args.file)}: left out {skipped.count} "
-            f"position(s) {SKIPPED_WHY}: {shown}{more}",
-            file=sys.stderr,
-        )
+        print(skipped.note(args.file), file=sys.stderr)
     if summary is not None:
         _say(_summary_text(mech.name, summary, args.json))
     if not writing:

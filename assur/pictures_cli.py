@@ -206,8 +206,10 @@ def _skip_option(p: argparse.ArgumentParser) -> None:
     )
 
 
-def _kept(mech: Any, positions: Any, forces: bool, skip: bool) -> Any:
+def _kept(mech: Any, positions: Any, forces: bool, skip: bool) -> tuple[Any, Any]:
     """Return the positions of a sweep that can be drawn, shape (n, drivers).
+
+    Also the positions left out (deg, or m).
 
     One column is kept (memory stays that of the positions); what cannot be
     assembled raises, or with ``skip`` is left out, as a whole table would.
@@ -219,7 +221,7 @@ def _kept(mech: Any, positions: Any, forces: bool, skip: bool) -> Any:
         table = force_table(mech, positions, skip, columns=["angle", "driver.torque"])
     else:
         table = kinematics(mech, positions, skip, columns=["angle"])
-    return _some_kept(table).given
+    return _some_kept(table).given, table.skipped
 
 
 def _table(mech: Any, positions: Any, forces: bool, skip: bool = False) -> Any:
@@ -228,6 +230,16 @@ def _table(mech: Any, positions: Any, forces: bool, skip: bool = False) -> Any:
 
     analyse = force_table if forces else kinematics
     return _some_kept(analyse(mech, positions, skip_unassembled=skip))
+
+
+def _say_skipped(args: argparse.Namespace, skipped: Any) -> None:
+    """Note the positions left out of the sweep (``--skip-unassembled``), if any."""
+    from assur._cli_sweep import Skipped
+
+    if len(skipped) and not getattr(args, "quiet", False):
+        found = Skipped()
+        found.add(skipped)
+        print(found.note(args.file), file=sys.stderr)
 
 
 def _some_kept(table: Any) -> Any:
@@ -403,6 +415,7 @@ def _cmd_diagrams(args: argparse.Namespace) -> int:
     _, table = _sweep(args, None)
     with _figures() as plt, output_folder(out, any_error=True) as folder:
         written = _diagrams(plotting, plt, table, folder, dpi, _show(args))
+    _say_skipped(args, table.skipped)
     for name in written:
         _wrote(args, path_text(out / name))
     return 0
@@ -489,7 +502,7 @@ def _cmd_animate(args: argparse.Namespace) -> int:
     sweep = positions(mech, args.angles)
     # the whole sweep first: what cannot be assembled is counted over it, not the
     # frames, and the frames are spread over the positions kept
-    kept = _kept(mech, sweep, args.forces, args.skip_unassembled)
+    kept, skipped = _kept(mech, sweep, args.forces, args.skip_unassembled)
     sweep = kept[:, 0] if kept.shape[1] == 1 else kept
     pick = np.unique(
         np.linspace(0, len(sweep) - 1, min(args.frames, len(sweep))).round().astype(int)
@@ -505,6 +518,7 @@ def _cmd_animate(args: argparse.Namespace) -> int:
             dpi=dpi,
             progress=_show(args),
         )
+    _say_skipped(args, skipped)
     _wrote(args, f"{path_text(output)} ({count} frames)")
     return 0
 

@@ -2,7 +2,7 @@
 
 Both sections show the report's first position. The inertia table is read back
 from the page; the free-body diagrams are inline SVG whose labels matplotlib keeps
-as comments (``<!-- $R_{\\mathrm{B}}$ = 20.6 N -->``), read back the same way.
+as comments (``<!-- $R_{\\text{B}}$ = 20.6 N -->``), read back the same way.
 """
 
 from __future__ import annotations
@@ -90,7 +90,7 @@ def test_one_free_body_per_group_with_the_table_s_reactions(report) -> None:
         svg = figure[figure.index("<svg") : figure.rindex("</svg>") + 6]
         ET.fromstring(svg)  # well formed
         group = plan.groups[int(index) - 1]
-        labels = re.findall(r"<!-- \$R_\{\\mathrm\{(\w+)\}[^$]*\$ = (\S+) N -->", svg)
+        labels = re.findall(r"<!-- \$R_\{\\text\{(\w+)\}[^$]*\$ = (\S+) N -->", svg)
         # every pair on its links: the groups solved before it act on it too
         bodies = {plan.body(x) for x in group.links}
         joints = {
@@ -104,7 +104,7 @@ def test_one_free_body_per_group_with_the_table_s_reactions(report) -> None:
         for link in group.links:
             if table.mechanism.link(link).mass:
                 fi = math.hypot(table[f"{link}.Fi.x"][0], table[f"{link}.Fi.y"][0])
-                tex = re.escape(f"$F_{{i,\\mathrm{{{link}}}}}$")
+                tex = re.escape(f"$F_{{i,\\text{{{link}}}}}$")
                 label = re.search(rf"<!-- {tex} = (\S+) N -->", svg)
                 assert label, link
                 assert close(label.group(1), fi, 3)

@@ -231,3 +231,31 @@ def test_command_writes_a_lever_per_driver(tmp_path: Path, capsys) -> None:
         f"assur: note: {EXAMPLES / 'lever_var9.toml'}: no force polygons and no lever: "
         "no link has a mass and no load is applied\n"
     )
+
+
+def test_a_name_is_drawn_whole_in_the_force_polygons(tmp_path: Path) -> None:
+    import matplotlib.pyplot as plt
+
+    # the note's TeX of "a^b" (\hat{}) drew a hat over nothing: the "^" was lost
+    text = (EXAMPLES / "four_bar.toml").read_text()
+    odd = "c^o{u}p_l%e&r \\ $x"
+    text = text.replace("[links.coupler]", f"[links.{_toml_key(odd)}]")
+    text = text.replace('"coupler"', _toml_key(odd))
+    path = tmp_path / "odd.toml"
+    path.write_text(text)
+    table = assur.forces(assur.load(path), [30.0])
+    fig = plans.force_polygons(table)
+    try:
+        labels = [t.get_text() for ax in fig.axes for t in ax.texts]
+        fig.canvas.draw()  # every label can be set
+    finally:
+        plt.close(fig)
+    # what mathtext draws of the name: every character, a backslash as set-minus
+    drawn = "\\text{c^o\\{u\\}p_l%e&r \N{SET MINUS} \\$x}"
+    named = [label for label in labels if drawn in label]
+    assert len(named) >= 2  # the coupler's loads and reactions
+    assert all(label[0] == label[-1] == "$" for label in named)
+
+
+def _toml_key(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\") + '"'

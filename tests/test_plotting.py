@@ -201,7 +201,7 @@ def test_force_arrows_carry_the_table_values(slider_crank: assur.Table) -> None:
     ctx = plotting._context(slider_crank)
     arrows = plotting._overview_arrows(ctx, ctx.pose(row), row)
     reactions = {a.label: a for a in arrows if a.kind == "reaction"}
-    a = reactions[r"$R_{\mathrm{A}}$"]
+    a = reactions[r"$R_{\text{A}}$"]
     np.testing.assert_allclose(
         a.force, [slider_crank["A.Fx"][row], slider_crank["A.Fy"][row]], rtol=1e-12
     )
@@ -243,8 +243,8 @@ def test_draw_forces_needs_a_forces_table(tenbar: assur.Table) -> None:
 def test_animation_scale_covers_two_drivers(five_bar: assur.Table) -> None:
     ax = plotting.draw(five_bar, forces=True)
     labels = [t.get_text() for t in ax.texts]
-    assert any("T_{b,\\mathrm{A}}" in t for t in labels)
-    assert any("T_{b,\\mathrm{E}}" in t for t in labels)
+    assert any("T_{b,\\text{A}}" in t for t in labels)
+    assert any("T_{b,\\text{E}}" in t for t in labels)
 
 
 # ---------------------------------------------------- decomposition, free body
@@ -310,7 +310,7 @@ def test_free_body_labels_values(six_bar: assur.Table) -> None:
     texts = [t.get_text() for t in ax.texts]
     row = plotting._row(six_bar, 60.0)
     value = f"{six_bar['B.F'][row]:.3g} N"
-    assert any(t.startswith(r"$R_{\mathrm{B}}$") and t.endswith(value) for t in texts)
+    assert any(t.startswith(r"$R_{\text{B}}$") and t.endswith(value) for t in texts)
     assert any(r"\to" in t for t in texts)  # the internal pair C
     assert any(t.startswith("$G_") for t in texts)  # gravity is on
     assert "RRR (3, 4)" in ax.get_title()
@@ -328,7 +328,7 @@ def test_free_body_couple_of_a_guide_in_newton_metres() -> None:
     # here none), each value with its own unit
     table = assur.forces(_load("scotch_yoke"), [210.0])
     arrows = plotting._free_body_arrows(table, 0, 0)
-    (guide,) = [a for a in arrows if a.label == r"$R_{\mathrm{guide}}$"]
+    (guide,) = [a for a in arrows if a.label == r"$R_{\text{guide}}$"]
     assert guide.couple == pytest.approx(table["guide.M"][0], rel=1e-12)
     assert guide.units == ("N", "N·m")
     ax = plotting.draw_free_body(table, 0)

@@ -115,7 +115,8 @@ def name(text: str) -> str:
     A slot's block is called ``J~block`` inside; it reads "J block" here.
     """
     public = text.replace("~block", " block").replace("~pin", "")
-    body = "".join(TEX_SPECIAL.get(c, c) for c in public).replace(" ", r"\ ")
+    # a space after an escape (``\sim``) ends its command: it is not a space drawn
+    body = "".join(r"\ " if c == " " else TEX_SPECIAL.get(c, c) for c in public)
     return f"\\mathrm{{{body}}}"
 
 

@@ -21,6 +21,7 @@ from assur.plotting._style import (
     BALANCING_COLOR,
     INERTIA_COLOR,
     REACTION_COLOR,
+    math_name,
 )
 
 if TYPE_CHECKING:
@@ -64,9 +65,8 @@ def _units(table: Table, force: str = "", couple: str = "") -> tuple[str, str]:
 
 
 def _tex(name: str) -> str:
-    """Return ``name`` as upright TeX, safe inside a subscript."""
-    safe = "".join(c if c.isalnum() else "\\_" if c == "_" else "." for c in name)
-    return f"\\mathrm{{{safe}}}"
+    """Return ``name`` for a mathtext label (inside a subscript), drawn as written."""
+    return math_name(name)
 
 
 def _reaction(

@@ -39,6 +39,23 @@ def literal(text: str) -> str:
     return text.replace("$", r"\$")
 
 
+MATH_TEXT = {"$": r"\$", "{": r"\{", "}": r"\}", "\\": "\N{SET MINUS}"}
+r"""How a name's characters are written inside mathtext's ``\text{...}``: the
+others are drawn as they are (``^``, ``_``, ``%``, ...); a backslash would start a
+command, so it is drawn as the set-minus sign, which looks like it."""
+
+
+def math_name(text: str) -> str:
+    r"""Return a name from the file for a mathtext label, drawn as written.
+
+    Examples
+    --------
+    >>> math_name("a^b")
+    '\\text{a^b}'
+    """
+    return "\\text{" + "".join(MATH_TEXT.get(c, c) for c in text) + "}"
+
+
 def titled(mechanism: Any) -> str:
     """Return a mechanism's name for a title, drawn as written ("Mechanism" if none)."""
     return literal(mechanism.name or "Mechanism")

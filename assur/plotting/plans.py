@@ -23,10 +23,11 @@ from assur.explain._lever import lever_load, lever_rates
 from assur.explain._loads_text import link_loads, own_loads
 from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
+from assur.explain._tex import TEX_SPECIAL
 from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._geometry import _nice
-from assur.plotting._style import literal, titled
+from assur.plotting._style import literal, math_name, titled
 
 if TYPE_CHECKING:
     from assur.table import Table
@@ -487,16 +488,49 @@ def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:
 
 
 def _symbol(tex: str) -> str:
-    """Return a load's TeX symbol for a picture: as mathtext where it can be set so.
+    """Return a load's TeX symbol (as the note writes it) for a picture, as mathtext.
 
-    A name with characters mathtext does not know (``%``, say) is written plain.
+    The names in it are drawn as written (:func:`~assur.plotting._style.math_name`);
+    a symbol mathtext still cannot set is written plain.
     """
-    math_text = f"${tex}$"
+    math_text = f"${_names(tex)}$"
     try:
         _parser().parse(math_text, 72)
     except ValueError:
         return literal(tex.replace("\\vec ", "").replace("\\", ""))
     return math_text
+
+
+NAME = "\\mathrm{"
+"""How the note's TeX begins a name (see :func:`assur.explain._tex.name`)."""
+UNESCAPED = sorted(
+    ((code, char) for char, code in {**TEX_SPECIAL, " ": "\\ "}.items()),
+    key=lambda pair: -len(pair[0]),
+)
+"""The note's TeX escapes of a name's characters, longest first."""
+
+
+def _names(tex: str) -> str:
+    r"""Return ``tex`` with every name (``\mathrm{...}``) as mathtext draws it."""
+    out = []
+    start = tex.find(NAME)
+    while start >= 0:
+        out.append(tex[:start])
+        i, chars = start + len(NAME), []
+        while tex[i] != "}":
+            for code, char in UNESCAPED:
+                if tex.startswith(code, i):
+                    chars.append(char)
+                    i += len(code)
+                    break
+            else:
+                chars.append(tex[i])
+                i += 1
+        out.append(math_name("".join(chars)))
+        tex = tex[i + 1 :]
+        start = tex.find(NAME)
+    out.append(tex)
+    return "".join(out)
 
 
 @functools.cache
