@@ -87,4 +87,8 @@ def explain(
     if answers:
         blocks += answer_blocks(pos, answers, source)
     title = f"{plain(mechanism.name or 'Mechanism')}: the analysis explained"
-    return Note(title, tuple(blocks), {})
+    table = pos.table
+    values = {
+        c: float(v[0]) for c, v in zip(table.columns, table.arrays(), strict=True)
+    }
+    return Note(title, tuple(blocks), values)

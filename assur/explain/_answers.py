@@ -159,6 +159,13 @@ def answer_blocks(
         text = _slip(pos, link, given)
         if text:
             blocks.append(Para(text))
-    if not any(r[4] == "differs" for r in rows):
-        blocks.append(Display(("\\text{every given answer agrees}",)))
+    verdicts = [r[4] for r in rows]
+    undefined = verdicts.count("undefined here")
+    if "differs" in verdicts or undefined == len(verdicts):
+        return blocks
+    if undefined:
+        text = f"every other given answer agrees ({undefined} undefined here)"
+    else:
+        text = "every given answer agrees"
+    blocks.append(Display((f"\\text{{{text}}}",)))
     return blocks

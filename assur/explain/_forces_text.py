@@ -38,7 +38,7 @@ from assur.groups._dyad import DyadSolver
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium
 
-__all__ = ["force_symbol", "forces_blocks"]
+__all__ = ["couple_blocks", "force_symbol", "forces_blocks"]
 
 
 def force_symbol(pos: Position, by: int, on: int) -> str:
@@ -175,23 +175,27 @@ def _revolute_middle(
         if s.ext[b].kind == "P":
             on_slider = -inner if b == 1 else inner
             middle = Load("", mid, m, on_slider)
-            blocks += _couple(pos, s.ext[b], s.bodies[b], loads[b] + [middle])
+            blocks += couple_blocks(pos, s.ext[b], s.bodies[b], loads[b] + [middle])
     return blocks
 
 
-def _couple(pos: Position, pair: PairPlan, body: int, loads: list[Load]) -> list[Block]:
+def couple_blocks(
+    pos: Position, pair: PairPlan, body: int, loads: list[Load]
+) -> list[Block]:
     """Return the moment equation of a slider about its guide's point: the couple."""
     q = pos.pair_point(pair)
     j = name(pair.name)
     sign = 1.0 if pair.second == body else -1.0
     line, m = moment_line(loads, q, j)
-    couple = -m
+    # the pair's couple and normal force are those of its first link on its second
+    couple = -sign * m
     e = pos.turned(pair.first, pair.axis or (1.0, 0.0))
     force = -total(loads)
-    normal = float(np.dot(force, perp(e)))
+    normal = sign * float(np.dot(force, perp(e)))
+    minus = "-" if sign > 0 else ""
     shown = [
         line,
-        f"M_{{{j}}} = -\\sum M_{{{j}}} = {num(couple)}\\ \\mathrm{{N\\,m}}",
+        f"M_{{{j}}} = {minus}\\sum M_{{{j}}} = {num(couple)}\\ \\mathrm{{N\\,m}}",
     ]
     if abs(normal) > 1e-9 * max(1.0, math.hypot(*force)):
         shown.append(
@@ -207,8 +211,8 @@ def _couple(pos: Position, pair: PairPlan, body: int, loads: list[Load]) -> list
             + (
                 ""
                 if sign > 0
-                else "; the slider is the pair's first link, so the "
-                "pair's own couple is the opposite"
+                else "; the slider is the pair's first link: the couple on it "
+                f"is $-M_{{{j}}}$"
             )
             + ":"
         ),
@@ -269,21 +273,23 @@ def _sliding_middle(
         middle = Load("", j, q, sgn * normal * nm, sgn * couple)
         f = -(total(loads[b]) + middle.force)
         symbol = force_symbol(pos, known, body)
+        # the middle pair pushes its first link with -N n
+        pushed = f"{'+' if sgn > 0.0 else '-'} N_{{{j}}}\\vec n"
         sums: tuple[str, ...] = (
-            f"\\vec {symbol} = -\\left(\\sum \\vec F_{{known}} + N_{{{j}}}"
-            f"\\vec n\\right) = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
+            f"\\vec {symbol} = -\\left(\\sum \\vec F_{{known}} {pushed}\\right) = "
+            f"{vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
             f"{num(math.hypot(*f))}\\ \\mathrm{{N}}",
         )
         if pair.kind == "P" and pair.friction > 0.0:
             # the known loads hold the guide's friction: what is left is its normal
             sums = (
-                f"{normal_symbol(pair, body)} = -\\left(\\sum \\vec F_{{known}} + "
-                f"N_{{{j}}}\\vec n\\right) = {vec(f)}\\ \\mathrm{{N}}",
+                f"{normal_symbol(pair, body)} = -\\left(\\sum \\vec F_{{known}} "
+                f"{pushed}\\right) = {vec(f)}\\ \\mathrm{{N}}",
                 sliding_total(pos, pair, body, f, symbol),
             )
         blocks += [Para(f"Force sum of {plain(pos.link(body))}:"), Display(sums)]
         if pair.kind == "P":
-            blocks += _couple(pos, pair, body, [*loads[b], middle])
+            blocks += couple_blocks(pos, pair, body, [*loads[b], middle])
     return blocks
 
 

@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from assur._kinematics import velocity_coefficients
-from assur.explain._forces_text import force_symbol
+from assur.explain._forces_text import couple_blocks, force_symbol
 from assur.explain._friction_text import driver_friction, power_rows, sliding_total
 from assur.explain._loads_text import (
     Load,
@@ -77,17 +77,36 @@ def _ideal(pos: Position, i: int, sym: str) -> str:
     ideal = float(np.ravel(pos.result.ideal[i])[0])
     value = _balancing(pos, i)
     extra = value - ideal
-    share = (
-        f", $100 \\cdot \\frac{{{num(extra)}}}{{{num(abs(ideal))}}} = "
-        f"{num(100.0 * extra / abs(ideal))}\\,\\%$ of it"
-        if ideal
-        else ""
-    )
-    return (
+    d = pos.plan.drivers[i]
+    speed = _speed(pos, d)
+    words = (
         f" Without friction the same motion needs ${sym}^{{ideal}} = {num(ideal)}$ "
-        f"(read off the lever below): friction takes ${sym} - {sym}^{{ideal}} = "
-        f"{num(value)} - {par(ideal)} = {num(extra)}$ more{share}."
+        f"(read off the lever below); friction changes it by ${sym} - "
+        f"{sym}^{{ideal}} = {num(value)} - {par(ideal)} = {num(extra)}$"
     )
+    if ideal:
+        words += (
+            f" ($100 \\cdot \\frac{{{num(abs(extra))}}}{{{num(abs(ideal))}}} = "
+            f"{num(100.0 * abs(extra) / abs(ideal))}\\,\\%$ of its size)"
+        )
+    if not speed:
+        return words + "."
+    # the difference times the driver's speed is the power friction takes from it,
+    # whatever the signs of the load and the speed
+    rate = "\\omega" if d.kind == "R" else "v"
+    whose = "" if len(pos.plan.drivers) == 1 else " this driver's share of"
+    return (
+        words + f", and the driver supplies $({sym} - {sym}^{{ideal}})\\,{rate} = "
+        f"{num(extra)} \\cdot {par(speed)} = {num(extra * speed)}$ W more:{whose} "
+        "the power friction takes."
+    )
+
+
+def _speed(pos: Position, d: DriverPlan) -> float:
+    """Return a driver's speed (rad/s, or m/s along its guide)."""
+    if d.kind == "R":
+        return float(pos.omega(d.body))
+    return float(np.dot(pos.pair_point(d.pair, 1), np.asarray(d.pair.axis)))
 
 
 def _crank(pos: Position, i: int, loads: list[Load]) -> list[Block]:
@@ -144,6 +163,9 @@ def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
     along = float(np.dot(total(loads), e))
     rest = -total(loads) + along * e
     rubbing = driver_friction(pos, i)
+    # the balancing force and the friction force act along the guide through the
+    # pair's point: its moments there give the guide's couple
+    couple = couple_blocks(pos, d.pair, d.body, loads)
     if rubbing is None:
         return [
             Para(
@@ -157,6 +179,7 @@ def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
                     f"\\vec {symbol} = {vec(rest)}\\ \\mathrm{{N}}",
                 )
             ),
+            *couple,
         ]
     lines, force, term = rubbing
     return [
@@ -173,6 +196,7 @@ def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
                 f"{par(force)} = {num(-along - force)}\\ \\mathrm{{N}}",
             )
         ),
+        *couple,
     ]
 
 
@@ -184,11 +208,7 @@ def lever_rates(pos: Position, i: int) -> tuple[list[Motion], float, str]:
     """
     plan = pos.plan
     d = plan.drivers[i]
-    speed = (
-        pos.omega(d.body)
-        if d.kind == "R"
-        else float(np.dot(pos.pair_point(d.pair, 1), np.asarray(d.pair.axis)))
-    )
+    speed = _speed(pos, d)
     if len(plan.drivers) == 1 and abs(speed) > 1e-12:
         return pos.bodies, speed, "the velocities found above"
     bodies = velocity_coefficients(plan, pos.bodies, i)
@@ -250,7 +270,13 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
         blocks += [
             Para(
                 "Friction does work too: each pair's friction load times the "
-                "relative motion it opposes (a loss, so negative):"
+                "relative motion it opposes"
+                + (
+                    " (a loss, so negative):"
+                    if actual
+                    else " (the loads of the actual motion, the motion per unit "
+                    "speed of this driver: of either sign):"
+                )
             ),
             Grid(("pair", "friction load", "relative motion", head), tuple(rubbed)),
         ]

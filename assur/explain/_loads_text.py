@@ -92,7 +92,10 @@ def own_loads(pos: Position, body: int) -> list[Load]:
         else:
             vector = np.asarray(force, dtype=float)
         p = pos.point(body, offset)
-        out.append(Load(f"\\vec F_{{{link},{count}}}", f"P_{{{count}}}", p, vector))
+        # Q, not F: F_{i,j} is the force of link i on link j
+        out.append(
+            Load(f"\\vec Q_{{{link},{count}}}", _spot(pos, entry, count), p, vector)
+        )
     for b, torque, entry in pos.loads.torques:
         if b != body:
             continue
@@ -104,6 +107,12 @@ def own_loads(pos: Position, body: int) -> list[Load]:
             Load(f"T_{{{link},{count}}}", "", _origin(pos, body), np.zeros(2), value(t))
         )
     return out
+
+
+def _spot(pos: Position, entry: str, count: int) -> str:
+    """Return the name of an external force's point: the file's, else P_count."""
+    at_ = pos.plan.mechanism.loads[int(entry.partition("[")[2].partition("]")[0])].at
+    return point_name(at_) if isinstance(at_, str) else f"P_{{{count}}}"
 
 
 def _origin(pos: Position, body: int) -> Array:
@@ -222,5 +231,10 @@ def force_lines(loads: list[Load]) -> list[str]:
                 if not math.hypot(*x.force)
                 else f",\\ {num(x.couple)}\\ \\mathrm{{N\\,m}}"
             )
+        elif not math.hypot(*x.force):  # a load that is zero here is written so
+            zero = (
+                "(0,\\ 0)\\ \\mathrm{N}" if "\\vec" in x.tex else "0\\ \\mathrm{N\\,m}"
+            )
+            text += f" = {zero}"
         lines.append(text)
     return lines

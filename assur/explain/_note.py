@@ -43,7 +43,8 @@ class Note:
     blocks : tuple of Block
         Headings, paragraphs, equations, tables and lists in reading order.
     values : dict of str to float
-        Results the note prints, by table column name (for readers and checks).
+        The analysis at the note's position, by table column name (the forces
+        table's columns, or the kinematics table's for a mechanism with no loads).
     """
 
     title: str

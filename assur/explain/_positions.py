@@ -121,8 +121,8 @@ def _rrp(pos: Position, s: DyadSolver) -> list[Block]:
             )
         ),
         Para(
-            f"The sign before the root (${sign}$, the root being {num(root)} m) is the "
-            "reference pose's branch."
+            f"The sign before the root (${sign}$, the root being ${num(root)}$ m) is "
+            "the reference pose's branch."
         ),
     ]
 

@@ -131,8 +131,13 @@ def point_name(point: str) -> str:
 
 
 def plain(text: str) -> str:
-    """Return text for a paragraph: a dollar sign of a name escaped."""
-    return text.replace("~block", " (block)").replace("$", r"\$")
+    """Return text for a paragraph: a dollar sign of a name escaped.
+
+    A slot's block and pin (``J~block``, ``J~pin`` inside) read "J (block)" and
+    "J (pin)".
+    """
+    public = text.replace("~block", " (block)").replace("~pin", " (pin)")
+    return public.replace("$", r"\$")
 
 
 def text(words: str) -> str:

@@ -142,12 +142,20 @@ def _place(
     places.append((at, [name]))
 
 
-def _chains(ax: Any, pos: Position, k: int, mu: float) -> list[tuple[str, str]]:
-    """Draw each dyad's vector equation as arrows tip to tail; return the legend."""
+def _chains(
+    ax: Any, pos: Position, k: int, mu: float, shown: list[np.ndarray]
+) -> list[tuple[str, str]]:
+    """Draw each dyad's vector equation as arrows tip to tail; return the legend.
+
+    A chain starts at a point's image (``shown``); one that starts from the motion
+    of a guide's point under a slider, which is no named point, starts with that
+    motion drawn from the pole.
+    """
     legend: list[tuple[str, str]] = []
     kinds: dict[str, str] = {}
     palette = {"base": "#555555", "n": "#1f77b4", "t": "#d62728", "k": "#9467bd",
                "r": "#2ca02c", "v": "#d62728"}  # fmt: skip
+    size = max((float(np.hypot(*v)) for v in shown), default=0.0)
     for s in pos.plan.solvers:
         if not isinstance(s, DyadSolver):
             continue
@@ -160,9 +168,14 @@ def _chains(ax: Any, pos: Position, k: int, mu: float) -> list[tuple[str, str]]:
                 if part != "base":
                     _arrow(ax, tip, end, color, lw=1.8)
                     kinds[part] = color
+                elif not any(np.hypot(*(term.value - v)) <= 1e-9 * size for v in shown):
+                    _arrow(ax, tip, end, color, lw=1.8)
+                    ax.annotate(_symbol(term.tex), end, fontsize=8, color=color)
+                    kinds["base"] = color
                 tip = end
     names = {"n": "normal", "t": "tangential", "k": "Coriolis", "r": "relative",
-             "v": "relative (rotation)"}  # fmt: skip
+             "v": "relative (rotation)",
+             "base": "the guide's point under the slider"}  # fmt: skip
     for part, color in kinds.items():
         legend.append((names.get(part, part), color))
     return legend
@@ -234,7 +247,7 @@ def _plan(table: Table, angle: Any, ax: Any, level: int) -> Any:
     mu = _scale(list(found.values()))
     ax = _axes(ax, _title(pos, what))
     _images_plot(ax, found, mu, "#333333")
-    legend = _chains(ax, pos, level, mu)
+    legend = _chains(ax, pos, level, mu, list(found.values()))
     _legend(ax, legend, f"scale: {symbol} = {mu:g} {unit}")
     return ax
 

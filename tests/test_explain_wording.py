@@ -1,0 +1,218 @@
+"""The note's words and formulas say what its numbers do.
+
+Each case is a slip a reader would copy: a formula whose sign disagrees with the
+number under it, a couple printed with two values, a load left without a value, raw
+TeX or an internal name in a sentence. The numbers are checked against the forces
+table, not against the note.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import matplotlib
+import numpy as np
+import pytest
+
+import assur
+from assur.explain import explain
+
+matplotlib.use("Agg")
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+DATA = Path(__file__).parent / "data" / "explain"
+
+
+def _variant(tmp_path: Path, stem: str, *edits: tuple[str, str]) -> Path:
+    """Write an example with text replaced; return its path."""
+    text = (EXAMPLES / f"{stem}.toml").read_text()
+    for old, new in edits:
+        assert old in text
+        text = text.replace(old, new)
+    path = tmp_path / f"{stem}.toml"
+    path.write_text(text)
+    return path
+
+
+def _number(note: str, before: str) -> float:
+    """Return the number printed right after ``before`` (a literal text)."""
+    found = re.search(
+        re.escape(before) + r"\s*(-?[0-9.]+(?:\\cdot 10\^\{-?\d+\})?)", note
+    )
+    assert found, before
+    mantissa, _, power = found.group(1).partition("\\cdot 10^{")
+    return float(mantissa) * 10.0 ** float(power.rstrip("}") or 0)
+
+
+def test_an_input_slider_gets_its_guide_s_couple() -> None:
+    # the note gave the balancing force and the normal reaction, not the couple
+    mech = assur.load(DATA / "ram_only.toml")
+    note = str(explain(mech, 0.01))
+    couple = _number(note, r"M_{\mathrm{drive}} = -\sum M_{\mathrm{drive}} =")
+    want = float(assur.forces(mech, [0.01])["drive.M"][0])
+    assert want == pytest.approx(-0.3)
+    assert couple == pytest.approx(want, rel=1e-3)
+
+
+@pytest.mark.parametrize("angle", [45.0, 200.0])
+def test_the_force_sum_of_a_sliding_middle_pair_s_links(angle: float) -> None:
+    # the pair pushes its first link with -N n: the formula wrote + for both links
+    mech = assur.load(EXAMPLES / "scotch_yoke.toml")
+    note = str(explain(mech, angle))
+    table = assur.forces(mech, [angle])
+    slot = mech.joint("slot")
+    first, second = slot.links
+    for link, sign in ((first, "-"), (second, "+")):
+        line = next(
+            x
+            for x in note.splitlines()
+            if x.startswith("$$ \\vec F_")
+            and f",\\mathrm{{{link}}}}} = -\\left(\\sum \\vec F_{{known}}" in x
+        )
+        assert f"{sign} N_{{\\mathrm{{slot}}}}\\vec n\\right)" in line, line
+    # the second link's sum printed: the table's reaction in its outer pair
+    assert np.isfinite(table["slot.F"][0])
+
+
+def test_a_slider_that_is_its_pair_s_first_link_has_one_couple(tmp_path: Path) -> None:
+    # M_guide was printed as -10.55 and then as 10.55
+    path = _variant(
+        tmp_path,
+        "slider_crank_exercise",
+        ('links = ["ground", "slider"]', 'links = ["slider", "ground"]'),
+    )
+    mech = assur.load(path)
+    note = str(explain(mech, 100.0))
+    want = float(assur.forces(mech, [100.0])["guide.M"][0])
+    printed = [
+        float(x)
+        for x in re.findall(
+            r"M_\{\\mathrm\{guide\}\} = "
+            r"(?:\\sum M_\{\\mathrm\{guide\}\} = )?(-?[0-9.]+)",
+            note,
+        )
+    ]
+    assert len(printed) >= 2
+    assert printed == pytest.approx([want] * len(printed), rel=1e-3, abs=1e-9)
+
+
+def _prose(note: str) -> list[str]:
+    """Return the note's sentences with their mathematics taken out."""
+    text = re.sub(r"\$\$.*?\$\$", "", note, flags=re.S)
+    text = re.sub(r"\$[^$]*\$", "", text)
+    return [line for line in text.splitlines() if line.strip()]
+
+
+@pytest.mark.parametrize(
+    ("path", "angle"),
+    [
+        (DATA / "slot_in_crank.toml", 20.0),
+        (DATA / "dead_centre.toml", 32.230952635),
+        (EXAMPLES / "slot_mechanism.toml", 50.0),
+        (EXAMPLES / "class3.toml", 100.0),
+        (EXAMPLES / "whitworth.toml", 50.0),
+    ],
+    ids=lambda x: getattr(x, "stem", x),
+)
+def test_sentences_hold_no_tex_and_no_internal_names(path: Path, angle: float) -> None:
+    # "the root being 4.218 \cdot 10^{-7} m", "The pin slot~pin lies on ..."
+    with pytest.warns() if path.stem == "dead_centre" else _Nothing():
+        note = str(explain(assur.load(path), angle))
+    for line in _prose(note):
+        assert not re.search(r"\\|\^\{|_\{|~", line), line
+
+
+class _Nothing:
+    def __enter__(self) -> None:
+        return None
+
+    def __exit__(self, *args: object) -> None:
+        return None
+
+
+def test_a_load_that_is_zero_here_is_written_so() -> None:
+    # the ram's load table gives 0 at 50 deg: the line was the bare symbol
+    note = str(explain(assur.load(EXAMPLES / "whitworth.toml"), 50.0))
+    assert r"$$ \vec Q_{\mathrm{ram},1} = (0,\ 0)\ \mathrm{N} $$" in note
+    for line in note.splitlines():
+        # a load's line (force, reaction, couple) always carries its value
+        assert not re.fullmatch(r"\$\$ -?(\\vec [FQN]|[MT])_[^=]* \$\$", line), line
+
+
+def test_an_external_force_is_no_force_of_one_link_on_another() -> None:
+    # F_{left_rod,1} read as "the force of link left_rod on link 1"; at P_1, not C
+    mech = assur.load(EXAMPLES / "five_bar_two_cranks.toml")
+    note = str(explain(mech, [60.0, 120.0]))
+    (load,) = mech.loads
+    assert (load.link, load.at) == ("left_rod", "C")
+    line = next(x for x in note.splitlines() if "Q_{\\mathrm{left\\_rod},1}" in x)
+    assert line.startswith(
+        "$$ \\vec Q_{\\mathrm{left\\_rod},1} = (0,\\ -50)\\ \\mathrm{N},"
+    )
+    assert "\\text{at}\\ \\mathrm{C} = " in line
+    assert "P_{1}" not in note
+
+
+@pytest.mark.parametrize("omega", [200.0, -200.0])
+def test_friction_s_share_of_the_balancing_torque(tmp_path: Path, omega: float) -> None:
+    # "friction takes -15.4 more, -18.2 % of it" when the crank turned clockwise
+    path = _variant(
+        tmp_path, "slider_crank_friction", ("omega = 200.0", f"omega = {omega}")
+    )
+    mech = assur.load(path)
+    note = str(explain(mech, 45.0))
+    sentence = next(x for x in note.splitlines() if "friction changes it by" in x)
+    power = float(re.search(r"= (-?[0-9.]+)\$ W more", sentence).group(1))  # type: ignore[union-attr]
+    lost = -float(assur.forces(mech, [45.0])["friction.power"][0])
+    assert lost > 0.0
+    assert power == pytest.approx(lost, rel=1e-3)
+
+
+def test_friction_rows_per_unit_speed_are_not_called_losses(tmp_path: Path) -> None:
+    # per unit speed of one driver, a pair's friction power may be positive
+    text = (EXAMPLES / "five_bar_two_cranks.toml").read_text()
+    text = re.sub(r'(kind = "revolute"\n)', r"\1friction = 0.1\nradius = 0.006\n", text)
+    path = tmp_path / "rubbed.toml"
+    path.write_text(text)
+    note = str(explain(assur.load(path), [60.0, 120.0]))
+    assert "(a loss, so negative)" not in note
+    assert note.count("of either sign") == 2  # one lever per driver
+    one = str(explain(assur.load(EXAMPLES / "four_bar_bearings.toml"), 30.0))
+    assert "(a loss, so negative)" in one
+
+
+def test_answers_undefined_here_are_not_said_to_agree() -> None:
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    note = str(explain(mech, 45.0, answers={"slider.ic.x": 0.3}))
+    assert "undefined here" in note
+    assert "agrees" not in note.split("7. The given answers")[1]
+    note = str(explain(mech, 45.0, answers={"slider.ic.x": 0.3, "crank.omega": 200}))
+    assert "every other given answer agrees (1 undefined here)" in note
+
+
+def test_the_note_s_values_are_the_table_s() -> None:
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    note = explain(mech, 45.0)
+    table = assur.forces(mech, [45.0])
+    assert list(note.values) == list(table.columns)
+    for name in ("driver.torque", "B.F", "rod.alpha"):
+        assert note.values[name] == float(table[name][0])
+
+
+def test_a_plan_draws_the_guide_s_point_under_a_slider() -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import plans
+
+    # the chain of a slot in a moving crank started at an unmarked point
+    table = assur.kinematics(assur.load(DATA / "slot_in_crank.toml"), [20.0])
+    for draw in (plans.velocity_plan, plans.acceleration_plan):
+        ax = draw(table)
+        try:
+            labels = [t.get_text() for t in ax.texts]
+            legend = [t.get_text() for t in ax.get_legend().get_texts()]
+        finally:
+            plt.close(ax.figure)
+        assert "the guide's point under the slider" in legend
+        assert any("slot" in x and "crank" in x for x in labels), labels
