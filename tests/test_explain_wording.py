@@ -216,3 +216,12 @@ def test_a_plan_draws_the_guide_s_point_under_a_slider() -> None:
             plt.close(ax.figure)
         assert "the guide's point under the slider" in legend
         assert any("slot" in x and "crank" in x for x in labels), labels
+
+
+def test_a_prp_polygon_has_no_tangential_parts() -> None:
+    # its outer pairs slide: only the normal forces are unknown
+    note = str(explain(assur.load(DATA / "prp_tangent.toml"), 50.0))
+    polygon = next(x for x in note.splitlines() if x.startswith("Force polygon"))
+    assert "tangential" not in polygon
+    assert polygon.startswith("Force polygon of the group: the known forces and two ")
+    assert r"\sum \vec F^{t}" not in note

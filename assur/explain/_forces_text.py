@@ -118,10 +118,13 @@ def _revolute_middle(
     rhs = -(total(every) + known_t)
     a = np.column_stack(dirs)
     lines, values = cramer(names, a, rhs)
+    # a PRP dyad's outer pairs slide: no tangential part was found
+    tangential = any(pair.kind == "R" for pair in s.ext)
     blocks += [
         Para(
-            "Force polygon of the group: the known forces, the tangential parts, and "
-            "two unknown magnitudes along known directions ("
+            "Force polygon of the group: the known forces"
+            + (", the tangential parts, and " if tangential else " and ")
+            + "two unknown magnitudes along known directions ("
             + ", ".join(
                 f"${x}$ along ${vec(d)}$" for x, d in zip(names, dirs, strict=True)
             )
@@ -129,8 +132,9 @@ def _revolute_middle(
         ),
         Display(
             (
-                f"\\sum \\vec F_{{known}} + \\sum \\vec F^{{t}} = {vec(-rhs)}"
-                "\\ \\mathrm{N}",
+                "\\sum \\vec F_{known}"
+                + (" + \\sum \\vec F^{t}" if tangential else "")
+                + f" = {vec(-rhs)}\\ \\mathrm{{N}}",
                 *lines,
             )
         ),
