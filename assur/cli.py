@@ -443,9 +443,9 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
     if not tables:
         return 0
     # standard output may carry a table: the lines then go to standard error
-    lines = sys.stderr if args.json or args.csv == "-" else sys.stdout
+    lines = sys.stderr if args.json or is_stdout(args.csv or "") else sys.stdout
     for target in (args.csv, args.parquet):
-        if target and target != "-" and not quiet:
+        if target and not is_stdout(target) and not quiet:
             size = f"{rows} rows x {len(names)} columns"
             print(f"wrote {size} to {path_text(target)}", file=lines)
     return 0
@@ -458,16 +458,19 @@ def _check_outputs(args: argparse.Namespace) -> None:
         if target:
             check_not_input(option, target, args.file)
     check_distinct([("--csv", args.csv), ("--parquet", args.parquet)])
-    if args.csv == "-" and getattr(args, "summary", False):
+    # /dev/stdout and its kin are standard output as much as "-" is
+    csv = "-" if args.csv and is_stdout(args.csv) else args.csv
+    shown = "-" if args.csv == "-" else path_text(args.csv)
+    if csv == "-" and getattr(args, "summary", False):
         msg = (
-            "--csv - and --summary: both write to standard output; expected --csv "
-            "PATH with --summary"
+            f"--csv {shown} and --summary: both write to standard output; expected "
+            "--csv PATH with --summary"
         )
         raise UsageError(msg)
-    if args.csv == "-" and args.json:
+    if csv == "-" and args.json:
         msg = (
-            "--csv - and --json: both write to standard output; expected one of them "
-            "(or --csv PATH)"
+            f"--csv {shown} and --json: both write to standard output; expected one "
+            "of them (or --csv PATH)"
         )
         raise UsageError(msg)
     on_stdout = "--json" if args.json else "--csv -" if args.csv == "-" else None
@@ -536,9 +539,14 @@ def _write_tables(
         if isinstance(writer, _Spared) and writer.gone is not None:
             # the files are whole: main stops quietly, as for standard output alone
             raise writer.gone
-    if args.json:
+    if _json_table(args):
         _say("")
     return rows, names
+
+
+def _json_table(args: argparse.Namespace) -> bool:
+    """Whether the table goes to standard output as JSON (``--json``, no summary)."""
+    return bool(args.json) and not getattr(args, "summary", False)
 
 
 class _Spared:
@@ -593,12 +601,13 @@ def _writers(
         path = stack.enter_context(output_path(args.parquet))
         units = [table.column(c).unit for c in names]
         writers.append(ParquetWriter(path, name, names, units, told()))
-    if args.json:
+    json_table = _json_table(args)
+    if json_table:
         write, encode = _open(stack, "-")
         writers.append(JsonWriter(write, name, names, encode, told()))
-    if len(writers) > 1 and (args.json or args.csv == "-"):
+    if len(writers) > 1 and (json_table or args.csv == "-"):
         # standard output is one of the outputs, the files the others
-        at = -1 if args.json else 0
+        at = -1 if json_table else 0
         writers[at] = _Spared(writers[at])
     for writer in writers:
         stack.enter_context(finishing(writer))

@@ -25,15 +25,17 @@ from assur._cli_common import (
     check_distinct,
     check_not_input,
     check_structure,
+    is_stdout,
     load_mechanism,
     parse_angles,
 )
-from assur._output import path_text, write_stdout, write_text
+from assur._output import path_text, write_stdout, write_texts
 from assur._text import number_text
 from assur._vec import Array
 from assur.columns import pretty_unit
 from assur.dynamics_flywheel import SMALLEST_DELTA, delta_in_range
 from assur.dynamics_model import flywheel_in_range
+from assur.dynamics_reduced import check_dynamic
 from assur.errors import AssurWarning, ModelError, UsageError
 from assur.model import LARGEST
 
@@ -93,8 +95,8 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     _check_options(args)
     mech = load_mechanism(args.file)
     check_structure(mech)
-    drivers = max(1, len(mech.drivers))
-    angles = None if args.angles is None else parse_angles(args.angles, drivers)
+    check_dynamic(mech)  # one crank and masses, before its --angles are read
+    angles = None if args.angles is None else parse_angles(args.angles)
     sizing = None
     inertia = 0.0 if args.flywheel is None else args.flywheel
     if args.delta is not None:
@@ -111,9 +113,11 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         # omega (under a constant torque) exists: the start-up is still shown
         warnings.warn(f"{err}; shown: the start-up alone", AssurWarning, stacklevel=2)
         result = None
+    files = []
     if run is not None and args.startup_csv is not None:
-        _write_startup(args, run)
+        files.append((args.startup_csv, startup_csv(run), len(run.time), 3))
     if result is None:
+        _write_files(args, files)
         if args.json:
             document = {"name": mech.name, "startup": _startup_data(run)}
             write_stdout(json.dumps(document) + "\n")
@@ -129,13 +133,15 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
             epsilon=result["driver.epsilon"],
         )
         table = _Joined(result, motion)
+    if args.csv and args.csv != "-":
+        files.append((args.csv, table.to_csv(), len(table), len(table.columns)))
+    # the files first, as a set: standard output read by a pipe may go away
+    _write_files(args, files)
     if args.json:
         write_stdout(_json(result, table, sizing, run) + "\n")
     elif args.csv == "-":
         table.to_csv("-")
-    elif args.csv:
-        _write_csv(args, table)
-    else:
+    elif not args.csv:
         figures = _figures(result, sizing, run)
         write_stdout(figures + "\n\n" + _readable(table, args.forces) + "\n")
     return 0
@@ -155,13 +161,20 @@ def _check_options(args: argparse.Namespace) -> None:
             f"from {SMALLEST_DELTA:g} to below 2, such as 0.02"
         )
         raise UsageError(msg)
-    if args.csv == "-" and args.json:
-        msg = "--csv - and --json: both write to standard output; expected one of them"
-        raise UsageError(msg)
+    if args.csv and is_stdout(args.csv):
+        # /dev/stdout and its kin are written as "-" is: no file replaced there
+        shown = args.csv if args.csv == "-" else path_text(args.csv)
+        if args.json:
+            msg = (
+                f"--csv {shown} and --json: both write to standard output; expected "
+                "one of them"
+            )
+            raise UsageError(msg)
+        args.csv = "-"
     if args.csv:
         check_not_input("--csv", args.csv, args.file)
     if args.startup_csv is not None:
-        if args.startup_csv == "-":
+        if is_stdout(args.startup_csv):
             msg = (
                 f"--startup-csv {args.startup_csv}: expected a file of its own "
                 "(not standard output, nor the --csv file)"
@@ -197,12 +210,17 @@ class _Joined:
         return write_csv(self, path)
 
 
-def _write_csv(args: argparse.Namespace, table: Any) -> None:
-    """Write the table to ``--csv PATH`` (whole or not at all); say so."""
-    table.to_csv(args.csv)
-    if not getattr(args, "quiet", False):
-        size = f"{len(table)} rows x {len(table.columns)} columns"
-        print(f"wrote {size} to {path_text(args.csv)}")
+def _write_files(
+    args: argparse.Namespace, files: list[tuple[Any, str, int, int]]
+) -> None:
+    """Write ``(path, text, rows, columns)`` files, whole or none of them; say so."""
+    write_texts([(path, text) for path, text, _, _ in files])
+    if getattr(args, "quiet", False):
+        return
+    # standard output may carry the table or the JSON: the lines go to stderr then
+    lines = sys.stderr if (args.json or args.csv == "-") else sys.stdout
+    for path, _, rows, columns in files:
+        print(f"wrote {rows} rows x {columns} columns to {path_text(path)}", file=lines)
 
 
 def startup_csv(run: Any) -> str:
@@ -219,16 +237,6 @@ def startup_csv(run: Any) -> str:
         )
     ]
     return "\n".join(rows) + "\n"
-
-
-def _write_startup(args: argparse.Namespace, run: Any) -> None:
-    """Write ``--startup-csv PATH`` (whole or not at all); say so."""
-    write_text(args.startup_csv, startup_csv(run))
-    if not getattr(args, "quiet", False):
-        # standard output may carry the table or the JSON: the line goes to stderr
-        lines = sys.stderr if (args.json or args.csv == "-") else sys.stdout
-        size = f"{len(run.time)} rows x 3 columns"
-        print(f"wrote {size} to {path_text(args.startup_csv)}", file=lines)
 
 
 def _figures(result: Any, sizing: Any, run: Any) -> str:

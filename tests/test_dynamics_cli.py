@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import json
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -12,6 +14,7 @@ import assur
 from assur.cli import main
 
 from .conftest import EXAMPLES
+from .test_cli_robustness import subprocess_env
 
 WHITWORTH = EXAMPLES / "whitworth.toml"
 FOUR_BAR = EXAMPLES / "four_bar.toml"
@@ -248,3 +251,78 @@ def test_startup_where_the_file_speed_has_no_steady_state(capsys, tmp_path: Path
     assert status == 2
     assert "would come to rest" in err.splitlines()[-1]
     assert not target.exists()
+
+
+def test_json_and_a_csv_file_are_both_written(capsys, tmp_path: Path):
+    # --json took the place of --csv PATH: no file, exit 0
+    target = tmp_path / "d.csv"
+    status, out, err = run(
+        capsys, "dynamics", FOUR_BAR, "--angles", "0:90:30", "--json", "--csv", target
+    )
+    assert status == 0, err
+    data = json.loads(out)
+    t = assur.dynamics(assur.load(FOUR_BAR), [0.0, 30.0, 60.0, 90.0])
+    lines = target.read_text().splitlines()
+    assert lines[0].split(",") == list(t.columns) == data["columns"]
+    assert len(lines) == 1 + 4
+    # the line saying so goes to standard error, beside the JSON
+    assert err == f"wrote 4 rows x {len(t.columns)} columns to {target}\n"
+
+
+def test_the_files_are_written_as_a_set(capsys, tmp_path: Path):
+    # the start-up's file landed, then --csv failed: now neither lands
+    path = with_motor(tmp_path)
+    start = tmp_path / "start.csv"
+    start.write_text("old\n")
+    line = one_error(
+        capsys, "dynamics", path, "--flywheel", "20", "--angles", "0",
+        "--startup-csv", start, "--csv", "/dev/full",
+    )  # fmt: skip
+    assert "/dev/full" in line
+    assert start.read_text() == "old\n"
+
+
+def _shell(tmp_path: Path, options: str) -> subprocess.CompletedProcess[str]:
+    """Run ``assur dynamics FOUR_BAR OPTIONS | cat``: /dev/stdout is the pipe."""
+    return subprocess.run(
+        f"{sys.executable} -m assur dynamics {FOUR_BAR} {options} | cat",
+        shell=True,
+        cwd=tmp_path,
+        env=subprocess_env(),
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+
+
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        ("--startup-csv /dev/stdout", "--startup-csv /dev/stdout: expected a file"),
+        (
+            "--csv /dev/stdout --json",
+            "--csv /dev/stdout and --json: both write to standard output",
+        ),
+    ],
+)
+def test_standard_output_by_another_name(tmp_path: Path, options, message):
+    result = _shell(tmp_path, options)
+    assert result.stdout == ""
+    (line,) = result.stderr.splitlines()
+    assert message in line
+
+
+def test_dev_stdout_is_written_as_standard_output(tmp_path: Path):
+    result = _shell(tmp_path, "--angles 0:90:30 --csv /dev/stdout")
+    assert result.stderr == ""
+    # no "wrote ..." line in the stream after the table
+    assert len(result.stdout.splitlines()) == 1 + 4
+    assert "wrote" not in result.stdout
+
+
+def test_two_drivers_are_refused_before_their_angles_are_read(capsys):
+    # one range was asked for per driver, then a second driver was refused
+    path = EXAMPLES / "five_bar_two_cranks.toml"
+    line = one_error(capsys, "dynamics", path, "--angles", "0:10:5")
+    assert "2 drivers; expected one driving crank" in line

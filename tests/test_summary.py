@@ -170,6 +170,16 @@ def test_cli_summary_text_and_json(capsys, tmp_path):
     assert "Summary over 360 positions" in out
     assert len(csv.read_text().splitlines()) == 361
 
+    # --json with a file: the summary alone on standard output (the table was
+    # printed before it as a second JSON document)
+    csv.unlink()
+    argv = ["forces", str(path), "--summary", "--json", "--csv", str(csv)]
+    assert main(argv) == 0
+    captured = capsys.readouterr()
+    assert json.loads(captured.out)["summary"] == pytest.approx(summary, rel=1e-15)
+    assert len(csv.read_text().splitlines()) == 361
+    assert captured.err == f"wrote 360 rows x {len(table.columns)} columns to {csv}\n"
+
 
 def test_cli_summary_refuses_two_outputs_on_stdout(capsys):
     path = EXAMPLES / "four_bar.toml"

@@ -119,11 +119,11 @@ def _revolute_middle(
     a = np.column_stack(dirs)
     lines, values = cramer(names, a, rhs)
     # a PRP dyad's outer pairs slide: no tangential part was found
-    tangential = any(pair.kind == "R" for pair in s.ext)
+    turning = any(pair.kind == "R" for pair in s.ext)
     blocks += [
         Para(
             "Force polygon of the group: the known forces"
-            + (", the tangential parts, and " if tangential else " and ")
+            + (", the tangential parts, and " if turning else " and ")
             + "two unknown magnitudes along known directions ("
             + ", ".join(
                 f"${x}$ along ${vec(d)}$" for x, d in zip(names, dirs, strict=True)
@@ -133,7 +133,7 @@ def _revolute_middle(
         Display(
             (
                 "\\sum \\vec F_{known}"
-                + (" + \\sum \\vec F^{t}" if tangential else "")
+                + (" + \\sum \\vec F^{t}" if turning else "")
                 + f" = {vec(-rhs)}\\ \\mathrm{{N}}",
                 *lines,
             )
