@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import errno
 import json
 import math
 import os
@@ -166,7 +167,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     the command quietly with status 0.
     """
     try:
-        with _stoppable(), _lenient_streams():
+        with _stoppable(), _closed_streams(), _lenient_streams():
             return _main(list(sys.argv[1:] if argv is None else argv))
     except (KeyboardInterrupt, _Stopped) as stop:
         try:
@@ -250,6 +251,48 @@ def _main(argv: list[str]) -> int:
         )
         return 2
     return status
+
+
+class _Closed:
+    """Standard output started closed (``>&-``): every write is an OSError.
+
+    Python leaves ``sys.stdout`` None then; a command writing only files, with
+    ``--quiet``, still runs, one that writes to standard output says it cannot.
+    """
+
+    encoding = "utf-8"
+    errors = "strict"
+
+    @property
+    def buffer(self) -> _Closed:
+        return self
+
+    def write(self, data: Any) -> int:
+        raise OSError(errno.EBADF, "standard output is closed")
+
+    def flush(self) -> None:
+        pass
+
+    def isatty(self) -> bool:
+        return False
+
+    def fileno(self) -> int:
+        raise OSError(errno.EBADF, "standard output is closed")
+
+
+@contextlib.contextmanager
+def _closed_streams() -> Iterator[None]:
+    """Stand in for standard output or error when they started closed."""
+    saved = sys.stdout, sys.stderr
+    with contextlib.ExitStack() as stack:
+        if sys.stdout is None:
+            sys.stdout = _Closed()  # type: ignore[assignment]
+        if sys.stderr is None:  # nowhere to say anything: the exit status speaks
+            sys.stderr = stack.enter_context(open(os.devnull, "w"))
+        try:
+            yield
+        finally:
+            sys.stdout, sys.stderr = saved
 
 
 @contextlib.contextmanager

@@ -442,3 +442,30 @@ def test_non_ascii_names_on_an_ascii_terminal(tmp_path: Path):
         assert (
             "coupleur\\u2192" in result.stdout or "coupleur\\\\u2192" in result.stdout
         )
+
+
+def _closed(tmp_path: Path, command: str) -> subprocess.CompletedProcess[str]:
+    """Run ``assur COMMAND`` with standard output closed (``>&-``)."""
+    return subprocess.run(
+        f"{sys.executable} -m assur {command} >&-",
+        shell=True,
+        cwd=tmp_path,
+        env=subprocess_env(),
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+
+
+def test_a_closed_standard_output(tmp_path: Path):
+    # Python leaves sys.stdout None: every command ended in an AttributeError
+    result = _closed(tmp_path, f"-q forces {FOUR_BAR} --angles 0:10:5 --csv t.csv")
+    assert (result.returncode, result.stderr) == (0, "")
+    assert len((tmp_path / "t.csv").read_text().splitlines()) == 1 + 3
+    for command in (f"explain {FOUR_BAR}", f"forces {FOUR_BAR} --angles 0"):
+        result = _closed(tmp_path, command)
+        assert result.returncode == 2
+        assert result.stderr == (
+            "assur: error: standard output: cannot write (standard output is closed)\n"
+        )
