@@ -317,7 +317,8 @@ def _cmd_plans(args: argparse.Namespace) -> int:
         "acceleration_plan": lambda: plotting.acceleration_plan(t).figure,
     }
     if loaded:
-        makers["force_polygons"] = lambda: plotting.force_polygons(t)
+        if plan_of(mech).groups:  # a crank alone has no group: no polygon to draw
+            makers["force_polygons"] = lambda: plotting.force_polygons(t)
         # one lever per driver, numbered in the file's order when there are several
         count = len(mech.drivers)
         for i in range(count):
@@ -363,9 +364,14 @@ def _cmd_plot(args: argparse.Namespace) -> int:
     if args.group is not None:
         count = len(plan_of(mech).groups)
         if not 1 <= args.group <= count:
+            expected = (
+                f"expected 1 to {count}"
+                if count
+                else "expected no --group: only its input link moves"
+            )
             msg = (
                 f"--group {args.group}: the mechanism has {count} Assur group(s); "
-                f"expected 1 to {count}"
+                + expected
             )
             raise UsageError(msg)
         table = _table(mech, position, True)

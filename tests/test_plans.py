@@ -259,3 +259,46 @@ def test_a_name_is_drawn_whole_in_the_force_polygons(tmp_path: Path) -> None:
 
 def _toml_key(text: str) -> str:
     return '"' + text.replace("\\", "\\\\") + '"'
+
+
+ROTOR = """format = 1
+name = "Rotor"
+[links.crank]
+mass = 1.0
+center = [0.05, 0.0]
+inertia = 0.001
+[joints.A]
+kind = "revolute"
+links = ["ground", "crank"]
+at = [0.0, 0.0]
+[[drivers]]
+joint = "A"
+omega = 10.0
+epsilon = 2.0
+"""
+
+
+def test_a_crank_alone_has_plans_and_a_lever_but_no_polygon(
+    tmp_path: Path, capsys
+) -> None:
+    from assur.cli import main
+
+    # no Assur group: the command blamed its output folder (a matplotlib error)
+    path = tmp_path / "rotor.toml"
+    path.write_text(ROTOR)
+    out = tmp_path / "plans"
+    assert main(["plans", str(path), "--angle", "30", "-o", str(out), "-q"]) == 0
+    assert capsys.readouterr().err == ""
+    stems = {p.stem for p in out.iterdir()}
+    assert stems == {
+        "velocity_plan", "acceleration_plan", "zhukovsky_lever", "instant_centres"
+    }  # fmt: skip
+    table = assur.forces(assur.load(path), [30.0])
+    # the crank's own inertia torque: J epsilon about its pivot, m e^2 included
+    assert float(table["driver.torque"][0]) == pytest.approx((0.001 + 0.05**2) * 2.0)
+    assert plans.lever_balance(table) == pytest.approx(table["driver.torque"][0])
+    with pytest.raises(assur.ModelError, match="no Assur group, so no polygon"):
+        plans.force_polygons(table)
+    status = main(["plot", str(path), "--group", "1", "-o", str(tmp_path / "g.png")])
+    assert status == 2
+    assert "expected no --group: only its input link moves" in capsys.readouterr().err

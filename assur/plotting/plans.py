@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._vec import integer
-from assur.errors import UsageError
+from assur.errors import ModelError, UsageError
 from assur.explain._lever import lever_load, lever_rates
 from assur.explain._loads_text import link_loads, own_loads
 from assur.explain._position import Position, from_table
@@ -272,6 +272,12 @@ def force_polygons(table: Table, angle: Any = None) -> Any:
     pos = _pos(table, angle)
     assert pos.result is not None
     records = pos.result.groups
+    if not records:
+        msg = (
+            "force_polygons: the mechanism has no Assur group, so no polygon; "
+            "expected a mechanism whose input links move a group"
+        )
+        raise ModelError(msg)
     fig, axes = plt.subplots(1, len(records), figsize=(5.5 * len(records), 5.2),
                              layout="constrained", squeeze=False)  # fmt: skip
     solved: set[int] = set()
