@@ -201,8 +201,20 @@ def test_positions_that_do_not_assemble() -> None:
     text = render_report(mech, angles=[60.0, 180.0])
     assert page_data(text)["rows"] == 1
     assert "1 of 2 positions left out" in text
-    with pytest.raises(assur.AssemblyError, match="no driver position of the sweep"):
+    # no position left: the first one's error, naming its group and the position
+    with pytest.raises(
+        assur.AssemblyError, match=r"group RRR \(coupler, rocker\): .* 170 deg"
+    ):
         render_report(mech, angles=[170.0, 180.0])
+
+
+def test_a_sweep_locked_by_friction_is_said_to_be(tmp_path: Path) -> None:
+    # "cannot be assembled" was said of positions that assemble but lock
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    path = tmp_path / "locked.toml"
+    path.write_text(text.replace("friction = 0.8", "friction = 1.5"))
+    with pytest.raises(assur.SelfLockingError, match="240 deg"):
+        render_report(assur.load(path), angles=[240.0, 245.0, 250.0])
 
 
 def test_names_cannot_break_out_of_the_page() -> None:

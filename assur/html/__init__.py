@@ -52,7 +52,9 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
     Raises
     ------
     AssemblyError
-        When no driver position of the sweep can be assembled.
+        When no driver position of the sweep can be assembled (the error of the
+        first position: its group, or friction's lock, a
+        :class:`~assur.errors.SelfLockingError`).
 
     Notes
     -----
@@ -74,6 +76,9 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
     sweep = forces if with_forces else kinematics
     table = sweep(mechanism, angles, skip_unassembled=True)
     if len(table) == 0:
+        # the sweep again, not skipping: its error names the group, the first
+        # position and why (a pose that cannot be assembled, or friction's lock)
+        sweep(mechanism, angles)
         msg = (
             f"report of {mechanism.name or 'the mechanism'}: no driver position of "
             "the sweep can be assembled; expected at least one"
