@@ -675,7 +675,10 @@ def _summed(parts: Iterator[Slice], summary: Summary) -> Iterator[Slice]:
 
 def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
     """Return the summary as aligned lines with units, or as JSON."""
+    from assur.summary import undefined
+
     values = summary.result()
+    why = undefined(values)
     if as_json:
         data = {
             "name": name,
@@ -683,11 +686,16 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
             "summary": {k: v if math.isfinite(v) else None for k, v in values.items()},
             "units": {k: summary.units[k] for k in values},
         }
+        if why:
+            data["undefined"] = why  # why a value is null
         return json.dumps(data, indent=2)
     width = max(len(k) for k in values)
     lines = [f"Summary over {summary.count} positions ({name})"]
     for key, value in values.items():
         unit = summary.units[key]
+        if key in why:
+            lines.append(f"  {key.ljust(width)}  {'undefined':>14}  ({why[key]})")
+            continue
         shown = number_text(value, ">14.6g")
         lines.append(f"  {key.ljust(width)}  {shown}  {unit}".rstrip())
     return "\n".join(lines)

@@ -23,7 +23,7 @@ from assur._evaluate import friction_powers
 from assur._vec import Array, full
 from assur.errors import UsageError
 
-__all__ = ["Summary", "efficiency", "summarize"]
+__all__ = ["Summary", "efficiency", "summarize", "undefined"]
 
 
 @dataclass
@@ -229,6 +229,27 @@ def efficiency(power: float, ideal: float, lost: float) -> float:
     if ideal < 0.0:
         return math.nan
     return ideal / power
+
+
+def undefined(values: dict[str, float]) -> dict[str, str]:
+    """Return why each value of a summary that is not a number is not one, by name.
+
+    Only the efficiency can be undefined (see :func:`efficiency`).
+    """
+    out = {}
+    for name, value in values.items():
+        if math.isfinite(value):
+            continue
+        if name == "efficiency" and not values["driver.power.mean"] > 0.0:
+            out[name] = "the driver does no net work (mean power <= 0): the loads drive"
+        elif name == "efficiency":
+            out[name] = (
+                "the loads give back work (mean power without friction < 0) that the "
+                "driver still supplies"
+            )
+        else:
+            out[name] = "not defined over these positions"
+    return out
 
 
 def summarize(table: Any) -> dict[str, float]:

@@ -187,3 +187,25 @@ def test_cli_summary_refuses_two_outputs_on_stdout(capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1
     assert "--csv - and --summary" in err[0]
+
+
+def test_an_undefined_efficiency_says_why(capsys):
+    # "efficiency  nan" with no reason: at 90 deg the load drives the crank
+    path = str(EXAMPLES / "slider_crank_friction.toml")
+    table = assur.forces(assur.load(path), [90.0])
+    summary = table.summary()
+    assert summary["driver.power.mean"] < 0.0
+    assert math.isnan(summary["efficiency"])
+    assert main(["forces", path, "--summary", "--angles", "90"]) == 0
+    line = capsys.readouterr().out.splitlines()[-1]
+    assert line.split()[:2] == ["efficiency", "undefined"]
+    assert line.endswith(
+        "(the driver does no net work (mean power <= 0): the loads drive)"
+    )
+    assert main(["forces", path, "--summary", "--angles", "90", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["summary"]["efficiency"] is None
+    assert data["undefined"] == {"efficiency": line.split("(", 1)[1][:-1]}
+    # a defined one has no reason
+    assert main(["forces", path, "--summary", "--json"]) == 0
+    assert "undefined" not in json.loads(capsys.readouterr().out)
