@@ -98,7 +98,9 @@ def _one_range(text: str, option: str) -> np.ndarray:
             f"{MAX_POSITIONS} (a larger step)"
         )
         raise UsageError(msg)
-    return start + step * np.arange(math.floor(count + 1e-9) + 1)
+    # in halves too (exact scalings by 2): STEP times a count may overflow where
+    # the positions do not
+    return 2.0 * (start / 2 + step / 2 * np.arange(math.floor(count + 1e-9) + 1))
 
 
 def positions(mech: Any, spec: str | None, option: str = "--angles") -> np.ndarray:

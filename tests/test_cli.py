@@ -471,3 +471,16 @@ def test_minus_zero_is_shown_as_zero(capsys):
     out, _ = succeeds(capsys, ["dynamics", EXAMPLES / "four_bar.toml", "--angles", "0"])
     assert "  motor torque " in out
     assert "-0 " not in out
+
+
+def test_a_range_near_the_largest_float(recwarn):
+    # STEP times the count overflowed (an inf, a RuntimeWarning), the range was sound
+    found = parse_angles("-1.7e308:1.7e308:1e308")
+    np.testing.assert_allclose(
+        found, [-1.7e308, -0.7e308, 0.3e308, 1.3e308], rtol=1e-15
+    )
+    assert not recwarn.list
+    # and ordinary ranges keep every bit: START + STEP * k
+    for start, step, count in ((0.0, 0.1, 3601), (-33.3, 0.37, 2793)):
+        found = parse_angles(f"{start}:{start + step * (count - 1)}:{step}")
+        np.testing.assert_array_equal(found, start + step * np.arange(count))
