@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import sys
 import types
+import warnings
 from pathlib import Path
 
 import matplotlib
@@ -508,3 +509,17 @@ def test_a_picture_s_name_ending_with_a_slash_is_refused(
     assert status == 2
     assert "the name ends with '/', as a folder's; expected a file" in err
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.pictures
+def test_diagrams_of_one_position_print_no_warning(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+):
+    # matplotlib's "No artists with labels found" came out with its source lines
+    out = tmp_path / "d"
+    argv = ["diagrams", str(EXAMPLES / "four_bar.toml"), "-o", str(out), "-q"]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        status, _, err = _run(capsys, *argv, "--angles", "10")
+    assert (status, err) == (0, "")
+    assert {p.name for p in out.iterdir()} >= KINEMATIC

@@ -88,3 +88,12 @@ def _legend(ax: Any, entries: list[tuple[str, str]]) -> None:
         loc="upper left",
         bbox_to_anchor=(1.02, 1.0),
     )
+
+
+def labelled_legend(ax: Any, **kwargs: Any) -> None:
+    """Put the legend of ``ax``'s labelled artists, if it has any.
+
+    A sweep of one position draws no line (matplotlib would warn of an empty legend).
+    """
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(**kwargs)

@@ -13,7 +13,12 @@ import numpy as np
 
 from assur.columns import LINK_PARTS, POINT_PARTS
 from assur.errors import ModelError
-from assur.plotting._axes import _driver_axis, _frame_axes, _new_axes
+from assur.plotting._axes import (
+    _driver_axis,
+    _frame_axes,
+    _new_axes,
+    labelled_legend,
+)
 from assur.plotting._context import _Context, _context, _row, _unit
 from assur.plotting._style import PATH_COLORS, literal, titled
 from assur.plotting.mechanism import _draw_mechanism
@@ -87,7 +92,7 @@ def plot_motion(
     units = " or ".join(dict.fromkeys(_unit(table, key) for key in plotted))
     ax.set_ylabel(f"{quantity} [{units}]" if units else quantity)
     ax.set_title(f"{titled(table.mechanism)}: {quantity}", fontsize=10)
-    ax.legend(fontsize=8, ncols=2 if len(ax.lines) > 8 else 1)
+    labelled_legend(ax, fontsize=8, ncols=2 if len(ax.lines) > 8 else 1)
     return ax
 
 
@@ -229,7 +234,9 @@ def plot_paths(
         seen += list(xy)
     _frame_axes(ax, ctx, seen, ctx.size, margin=0.06)
     ax.set_title(f"{titled(table.mechanism)}: paths of points", fontsize=10)
-    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False)
+    labelled_legend(
+        ax, fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), frameon=False
+    )
     return ax
 
 

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur.columns import pretty_unit
-from assur.plotting._axes import _new_axes
+from assur.plotting._axes import _new_axes, labelled_legend
 from assur.plotting._style import BALANCING_COLOR, PATH_COLORS, titled
 
 if TYPE_CHECKING:
@@ -92,7 +92,7 @@ def plot_reduced_torque(result: Dynamics, ax: Any = None) -> Any:
     ax.axhline(0.0, color="black", lw=0.6)
     ax.set_ylabel(f"reduced torque [{unit}]")
     ax.set_title("Reduced torque of the loads and the motor", fontsize=10)
-    ax.legend(fontsize=8)
+    labelled_legend(ax, fontsize=8)
     return ax
 
 
@@ -121,7 +121,7 @@ def plot_speed(result: Dynamics, ax: Any = None) -> Any:
         f"{result.flywheel:.4g} {pretty_unit('kg m^2')}",
         fontsize=10,
     )
-    ax.legend(fontsize=8)
+    labelled_legend(ax, fontsize=8)
     return ax
 
 
@@ -164,7 +164,7 @@ def plot_energy_mass(result: Dynamics, ax: Any = None) -> Any:
     ax.set_ylabel(_label(result, "reduced.work", "work W"))
     ax.set_title("Energy-mass (Wittenbauer) diagram", fontsize=10)
     ax.grid(True, lw=0.5, alpha=0.5)
-    ax.legend(fontsize=8)
+    labelled_legend(ax, fontsize=8)
     return ax
 
 
@@ -231,5 +231,5 @@ def plot_startup(run: Startup, ax: Any = None) -> Any:
         f"Start-up: periodic after {run.turns} turns, δ = {run.delta:.4g}", fontsize=10
     )
     ax.grid(True, lw=0.5, alpha=0.5)
-    ax.legend(fontsize=8)
+    labelled_legend(ax, fontsize=8)
     return ax

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur.errors import ModelError
-from assur.plotting._axes import _driver_axis, _new_axes
+from assur.plotting._axes import _driver_axis, _new_axes, labelled_legend
 from assur.plotting._context import _context, _need_forces, _unit
 from assur.plotting._geometry import _on
 from assur.plotting._style import BALANCING_COLOR, literal, titled
@@ -52,7 +52,7 @@ def plot_torque(table: Table, ax: Any = None) -> Any:
     units = " or ".join(dict.fromkeys(_unit(table, key) for key in keys))
     ax.set_ylabel(f"balancing load [{units}]")
     ax.set_title(f"{titled(table.mechanism)}: balancing load", fontsize=10)
-    ax.legend(fontsize=8)
+    labelled_legend(ax, fontsize=8)
     return ax
 
 
@@ -211,13 +211,13 @@ def plot_shaking(table: Table) -> Any:
         x, np.hypot(shaking[:, 0], shaking[:, 1]), label="|F|", lw=1.5, color="black"
     )
     force.set_ylabel(f"force [{_unit(table, 'shaking.Fx')}]")
-    force.legend(fontsize=8, ncols=3)
+    labelled_legend(force, fontsize=8, ncols=3)
     force.set_xlabel("")
     moment = fig.add_subplot(grid[1, 1], sharex=force)
     _driver_axis(moment, table)
     moment.plot(x, shaking[:, 2], color="#d62728", lw=1.5, label="M about the origin")
     moment.set_ylabel(f"moment [{_unit(table, 'shaking.M')}]")
-    moment.legend(fontsize=8)
+    labelled_legend(moment, fontsize=8)
     fig.suptitle(
         f"{titled(table.mechanism)}: shaking force and moment on the frame",
         fontsize=10,
