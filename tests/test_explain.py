@@ -348,6 +348,13 @@ def test_a_wrong_answer_key_names_the_answers_file(capsys, tmp_path) -> None:
     assert main([*argv[:-1], str(tmp_path / "none.toml")]) == 2
     err = capsys.readouterr().err
     assert err.startswith(f"assur: error: {tmp_path / 'none.toml'}: cannot read")
+    # an endless file is not read to the end (/dev/zero ran out of memory)
+    assert main([*argv[:-1], "/dev/zero"]) == 2
+    err = capsys.readouterr().err
+    assert err == (
+        "assur: error: /dev/zero: larger than 1 MiB; expected a file of given "
+        "answers (a few lines of TOML)\n"
+    )
 
 
 # ---------------------------------------------------------------- HTML and LaTeX

@@ -26,6 +26,10 @@ AGREE = 5e-4
 """Relative difference within which a given answer agrees (its printed digits)."""
 
 
+MAX_ANSWERS_BYTES = 2**20
+"""Largest file of given answers read, bytes (1 MiB; such a file takes a few lines)."""
+
+
 def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
     """Read a TOML file of given answers: ``[answers]`` and an optional ``source``.
 
@@ -42,8 +46,20 @@ def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
     where = os.fspath(path)
     try:
         with open(path, "rb") as stream:
-            data = tomllib.load(stream)
-    except (OSError, tomllib.TOMLDecodeError, UnicodeDecodeError) as err:
+            # one byte beyond the cap tells a file too large (/dev/zero, say)
+            raw = stream.read(MAX_ANSWERS_BYTES + 1)
+    except (OSError, ValueError) as err:
+        msg = f"{where}: cannot read the answers ({err})"
+        raise ModelError(msg) from err
+    if len(raw) > MAX_ANSWERS_BYTES:
+        msg = (
+            f"{where}: larger than {MAX_ANSWERS_BYTES // 2**20} MiB; expected a "
+            "file of given answers (a few lines of TOML)"
+        )
+        raise ModelError(msg)
+    try:
+        data = tomllib.loads(raw.decode("utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as err:
         msg = f"{where}: cannot read the answers ({err})"
         raise ModelError(msg) from err
     table = data.get("answers")
