@@ -172,6 +172,12 @@ def _prepared(mechanism: Mechanism, delta: Any) -> tuple[Reduced, float]:
         )
         raise UsageError(msg)
     omega = check_dynamic(mechanism, "flywheel")
+    if not omega * omega > 0.0:  # a speed whose square underflows is zero too
+        msg = (
+            f"flywheel: drivers[0].omega: {omega:g} rad/s; expected the crank's "
+            "nominal speed: the flywheel holds the fluctuation about it"
+        )
+        raise ModelError(msg)
     return reduce(mechanism), omega
 
 

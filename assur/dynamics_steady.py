@@ -90,10 +90,10 @@ def steady_state(model: Reduced, omega: float, flywheel: float = 0.0) -> Steady:
     from scipy.optimize import brentq
 
     target = abs(omega)
-    if not target > 0:
+    if not target * target > 0:  # a speed whose square underflows is zero too
         msg = (
-            "drivers[0].omega: 0 rad/s; expected the crank's nominal speed (the "
-            "steady state's mean of its largest and smallest speed)"
+            f"drivers[0].omega: {omega:g} rad/s; expected the crank's nominal speed "
+            "(the steady state's mean of its largest and smallest speed)"
         )
         raise ModelError(msg)
     inertia = model.inertia + flywheel

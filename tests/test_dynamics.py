@@ -489,3 +489,32 @@ def test_a_torque_that_is_rounding_noise_stops_the_grid():
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # the quiet mechanism settles as before
         assert reduce(mech).angle.shape[0] == 2048
+
+
+@pytest.mark.parametrize("omega", [0.0, 1e-170])
+def test_a_crank_at_rest_has_no_steady_state_nor_flywheel(omega, tmp_path, capsys):
+    from assur.cli import main
+
+    # a ZeroDivisionError came out of the flywheel's first guess (omega squared),
+    # in the report and the diagrams too, which fall back to a flywheel
+    mech = dataclasses.replace(
+        assur.catalog.slider_crank(),
+        drivers=(
+            dataclasses.replace(assur.catalog.slider_crank().drivers[0], omega=omega),
+        ),
+    )
+    with pytest.raises(
+        assur.ModelError, match=r"drivers\[0\].omega: .* rad/s; expected"
+    ):
+        assur.dynamics(mech)
+    with pytest.raises(assur.ModelError, match=r"flywheel: drivers\[0\].omega"):
+        assur.flywheel(mech, 0.05)
+    # the forces at rest are a static analysis: the pictures and the report stand
+    path = tmp_path / "rest.toml"
+    assur.save(mech, path)
+    report = tmp_path / "r.html"
+    assert main(["report", str(path), "-o", str(report), "-q"]) == 0
+    assert report.exists()
+    assert main(["dynamics", str(path), "--delta", "0.05"]) == 2
+    (line,) = capsys.readouterr().err.splitlines()
+    assert "flywheel: drivers[0].omega" in line
