@@ -36,6 +36,7 @@ from assur.columns import pretty_unit
 from assur.dynamics_flywheel import SMALLEST_DELTA, delta_in_range
 from assur.dynamics_model import flywheel_in_range
 from assur.dynamics_reduced import check_dynamic
+from assur.dynamics_startup import MAX_TURNS
 from assur.errors import AssurWarning, ModelError, UsageError
 from assur.model import LARGEST
 
@@ -79,6 +80,13 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         help="integrate the start-up from rest under the file's [motor]",
     )
     p.add_argument(
+        "--turns",
+        type=int,
+        metavar="N",
+        default=MAX_TURNS,
+        help=f"most turns the start-up may take to settle (default {MAX_TURNS})",
+    )
+    p.add_argument(
         "--startup-csv",
         metavar="PATH",
         help="write the start-up's time, crank angle and speed as CSV (implies "
@@ -96,6 +104,18 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     mech = load_mechanism(args.file)
     check_structure(mech)
     check_dynamic(mech)  # one crank and masses, before its --angles are read
+    if not getattr(args, "quiet", False) and any(j.friction > 0.0 for j in mech.joints):
+        print(
+            f"assur: note: {path_text(args.file)}: the dynamic model leaves the "
+            "joints' friction out"
+            + (
+                "; the force table's driver.torque overcomes it too (its "
+                "driver.torque_ideal is the model's)"
+                if args.forces
+                else ""
+            ),
+            file=sys.stderr,
+        )
     angles = None if args.angles is None else parse_angles(args.angles)
     sizing = None
     inertia = 0.0 if args.flywheel is None else args.flywheel
@@ -103,7 +123,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         sizing = assur.flywheel_sizing(mech, args.delta)
         inertia = sizing.exact
     start = args.startup or args.startup_csv is not None
-    run = assur.startup(mech, inertia) if start else None
+    run = assur.startup(mech, inertia, turns=args.turns) if start else None
     try:
         result = assur.dynamics(mech, angles, flywheel=inertia)
     except ModelError as err:
@@ -154,6 +174,9 @@ def _check_options(args: argparse.Namespace) -> None:
             f"--flywheel {args.flywheel:g}: expected an inertia >= 0, kg m^2 (at "
             f"most {LARGEST:g})"
         )
+        raise UsageError(msg)
+    if args.turns < 1:
+        msg = f"--turns {args.turns}: expected a whole number of turns from 1"
         raise UsageError(msg)
     if args.delta is not None and not delta_in_range(args.delta):
         msg = (

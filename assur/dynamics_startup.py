@@ -285,6 +285,7 @@ def _integrate(
     runs = _Runs()
     state, t = [model.start, omega0], 0.0
     scale = _speed_scale(model, motor, curves)
+    limit = _time_limit(scale, model, motor, curves)
     for k in range(1, turns + 1):
         target = model.start + sense * 2.0 * math.pi * k
 
@@ -294,7 +295,7 @@ def _integrate(
         turned.terminal, turned.direction = True, 1.0  # type: ignore[attr-defined]
         sol = solve_ivp(
             rhs,
-            (t, t + _time_limit(scale)),
+            (t, t + limit),
             state,
             method="DOP853",
             rtol=RTOL,
@@ -321,9 +322,16 @@ def _speed_scale(model: Reduced, motor: Motor, curves: _Curves) -> float:
     return math.sqrt(4.0 * math.pi * abs(motor.torque) / inertia)
 
 
-def _time_limit(scale: float) -> float:
-    """Return the time (s) a turn may take before the crank counts as stopped."""
-    return 1e4 * 2.0 * math.pi / scale
+def _time_limit(scale: float, model: Reduced, motor: Motor, curves: _Curves) -> float:
+    """Return the time (s) a turn may take before the crank counts as stopped.
+
+    Ten thousand turns at the speed scale, and at least a hundred times the time
+    the stall torque alone takes to turn the crank once from rest: a heavy
+    flywheel turns slowly, not never.
+    """
+    inertia = float(np.mean(model.inertia)) + curves.flywheel
+    first = math.sqrt(4.0 * math.pi * inertia / abs(motor.torque))
+    return max(1e4 * 2.0 * math.pi / scale, 100.0 * first)
 
 
 def _check_turned(sol: Any, model: Reduced, curves: _Curves, motor: Motor) -> None:
@@ -333,8 +341,16 @@ def _check_turned(sol: Any, model: Reduced, curves: _Curves, motor: Motor) -> No
     if sol.status < 0:
         msg = f"startup: the time integration failed: {sol.message}"
         raise ModelError(msg)
-    phi = float(sol.y_events[1][0][0]) if len(sol.t_events[1]) else float(sol.y[0, -1])
-    when = float(sol.t_events[1][0]) if len(sol.t_events[1]) else float(sol.t[-1])
+    if not len(sol.t_events[1]):  # the time limit: still moving, ever so slowly
+        phi, w, when = float(sol.y[0, -1]), float(sol.y[1, -1]), float(sol.t[-1])
+        msg = (
+            f"startup: the crank creeps: {when - float(sol.t[0]):.6g} s after its "
+            f"last turn it has not made another (at crank angle "
+            f"{math.degrees(phi):.6g} deg, {w:.6g} rad/s); expected a motor or "
+            "flywheel that turns it at a pace"
+        )
+        raise ModelError(msg)
+    phi, when = float(sol.y_events[1][0][0]), float(sol.t_events[1][0])
     _, _, load = curves(phi)
     where = math.degrees(phi)
     msg = (
@@ -387,11 +403,39 @@ def _not_settled(runs: _Runs, motor: Motor, model: Reduced, turns: int) -> None:
             f"{-model.motor:.6g} N m (the motor torque of assur.dynamics), so give "
             "the motor a no_load_speed"
         )
+    else:
+        more = _turns_left(runs.crossings)
+        if more is not None:
+            hint = (
+                f"; at its pace it settles in about {turns + more} turns (expected "
+                "a larger 'turns', --turns on the command line)"
+            )
     msg = (
         f"startup: the motion does not settle in {turns} turns (the speed, "
         f"{last:.6g} rad/s, still changes by {100 * change:.3g} % a turn){hint}"
     )
     raise ModelError(msg)
+
+
+def _turns_left(crossings: list[float]) -> int | None:
+    """Return about how many more turns :func:`_periodic` needs, or None.
+
+    The change of the speed at the reference pose from turn to turn, shrinking
+    geometrically by the last turns' ratio ``r``, leaves ``change * r / (1 - r)``
+    to come; None when it does not shrink at a steady ratio yet (the crank still
+    gathering speed, say).
+    """
+    if len(crossings) < 4:
+        return None
+    changes = np.abs(np.diff(crossings[-4:]))
+    if not (changes > 0).all():
+        return None
+    ratios = changes[1:] / changes[:-1]
+    ratio, change = float(ratios[-1]), float(changes[-1])
+    if not ratio < 1 or abs(ratios[0] - ratio) > 0.01 * ratio:
+        return None
+    goal = PERIODIC_RTOL * abs(crossings[-1]) * (1 - ratio) / ratio
+    return max(1, math.ceil(math.log(goal / change) / math.log(ratio)))
 
 
 def _result(

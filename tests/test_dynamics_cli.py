@@ -326,3 +326,43 @@ def test_two_drivers_are_refused_before_their_angles_are_read(capsys):
     path = EXAMPLES / "five_bar_two_cranks.toml"
     line = one_error(capsys, "dynamics", path, "--angles", "0:10:5")
     assert "2 drivers; expected one driving crank" in line
+
+
+def test_friction_left_out_is_said(capsys):
+    # the model drops friction: --forces then showed driver.torque off the model's
+    path = EXAMPLES / "slider_crank_friction.toml"
+    argv = [
+        "dynamics",
+        path,
+        "--flywheel",
+        "0.03",
+        "--angles",
+        "0:360:90",
+        "--csv",
+        "-",
+    ]
+    status, out, err = run(capsys, *argv, "--forces")
+    assert status == 0
+    assert err == (
+        f"assur: note: {path}: the dynamic model leaves the joints' friction out; "
+        "the force table's driver.torque overcomes it too (its driver.torque_ideal "
+        "is the model's)\n"
+    )
+    header, *rows = out.splitlines()
+    names = header.split(",")
+    values = np.array([[float(x) for x in row.split(",")] for row in rows])
+    column = dict(zip(names, values.T, strict=True))
+    balance = column["driver.motor"] - 0.03 * column["driver.epsilon"]
+    np.testing.assert_allclose(column["driver.torque_ideal"], balance, atol=1e-8)
+    assert np.all(np.abs(column["driver.torque"] - balance) > 1.0)  # friction's
+    status, _, err = run(capsys, *argv, "-q")
+    assert (status, err) == (0, "")
+
+
+def test_turns_of_the_startup(capsys, tmp_path: Path):
+    path = with_motor(tmp_path)
+    argv = ("dynamics", path, "--flywheel", "20", "--startup", "--turns", "3")
+    line = one_error(capsys, *argv)
+    assert "the motion does not settle in 3 turns" in line
+    line = one_error(capsys, "dynamics", path, "--startup", "--turns", "0")
+    assert "--turns 0: expected a whole number of turns from 1" in line

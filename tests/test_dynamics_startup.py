@@ -174,3 +174,39 @@ def test_a_motor_built_in_code_is_checked():
         dataclasses.replace(assur.catalog.four_bar(), motor=5.0)
     assert Motor(10.0, 100.0).at(50.0) == 5.0
     assert Motor(10.0).at(50.0) == 10.0
+
+
+def test_a_slow_start_is_told_how_many_turns_it_needs():
+    """J w' = T (1 - w / w0) with a time constant of many turns: periodic to 1e-8
+    a turn takes more than the turns allowed. The message says about how many more
+    (the geometric shrink of the last turns), and that many settle."""
+    mech = crank(inertia=2.0, motor=Motor(2.0, 10.0))
+    with pytest.raises(assur.ModelError) as caught:
+        assur.startup(mech, turns=60)
+    message = str(caught.value)
+    assert message.startswith("startup: the motion does not settle in 60 turns")
+    needed = int(message.split("settles in about ")[1].split(" turns")[0])
+    run = assur.startup(mech, turns=needed + 100)
+    assert run.turns == pytest.approx(needed, rel=0.2)
+    tau = (2.0 + 3.0 * 0.2**2) * 10.0 / 2.0
+    assert run.settle_time == pytest.approx(tau * math.log(50.0), rel=1e-2)
+
+
+def test_a_heavy_flywheel_turns_slowly_and_does_not_stall():
+    """The first turn of a flywheel of 1e6 kg m^2 under 2 N m takes about
+    sqrt(4 pi J / T) = 2507 s, more than 10^4 turns at the motor's no-load speed:
+    that time limit was reported as a stall "past its peak load" (there is none)."""
+    mech = crank(motor=Motor(2.0, 10.0))
+    with pytest.raises(assur.ModelError) as caught:
+        assur.startup(mech, 1e6, turns=2)
+    assert "stall" not in str(caught.value)
+    assert str(caught.value).startswith("startup: the motion does not settle in 2")
+
+
+def test_a_crank_that_creeps_is_not_said_to_stall(monkeypatch):
+    from assur import dynamics_startup
+
+    # a time limit far too short for the first turn: the crank still moves there
+    monkeypatch.setattr(dynamics_startup, "_time_limit", lambda *args: 0.01)
+    with pytest.raises(assur.ModelError, match=r"startup: the crank creeps: 0\.01 s"):
+        assur.startup(crank(motor=Motor(2.0, 10.0)))
