@@ -366,3 +366,29 @@ def test_turns_of_the_startup(capsys, tmp_path: Path):
     assert "the motion does not settle in 3 turns" in line
     line = one_error(capsys, "dynamics", path, "--startup", "--turns", "0")
     assert "--turns 0: expected a whole number of turns from 1" in line
+
+
+def test_an_estimate_below_zero_is_not_printed_as_one(capsys):
+    # Wittenbauer's estimate was printed as -0.000133258 (-1.2e+10 %)
+    delta = 0.6712204614  # just above the four-bar's own fluctuation
+    sizing = assur.flywheel_sizing(assur.load(FOUR_BAR), delta)
+    assert sizing.wittenbauer < 0.0 <= sizing.exact
+    status, out, _ = run(
+        capsys, "dynamics", FOUR_BAR, "--delta", str(delta), "--angles", "0"
+    )
+    assert status == 0
+    (line,) = (x for x in out.splitlines() if "classical estimates" in x)
+    assert line.endswith(
+        "Wittenbauer none (below zero this close to the mechanism's own delta)"
+    )
+    assert f"{sizing.wittenbauer:.6g}" not in out
+
+
+def test_a_mean_torque_of_round_off_is_printed_as_zero(capsys):
+    # gravity alone does no work over a turn: the mean was -6.93889e-18 N m
+    path = EXAMPLES / "six_bar_lecture.toml"
+    result = assur.dynamics(assur.load(path), [0.0], flywheel=1.0)
+    assert abs(result.motor) * 2 * np.pi < 1e-12 * result.energy_swing
+    status, out, _ = run(capsys, "dynamics", path, "--flywheel", "1", "--angles", "0")
+    assert status == 0
+    assert "motor torque                          0 N·m (constant)" in out
