@@ -98,12 +98,14 @@ class JsonWriter:
         names: Sequence[str],
         encode: Callable[[str], bytes] | None = None,
         advance: Advance | None = None,
+        head: dict[str, Any] | None = None,
     ) -> None:
         self._write = write
         self._encode = encode or (lambda text: text.encode("utf-8"))
         self._advance = advance
-        head = json.dumps({"name": name, "columns": list(names)})
-        self._write(self._encode(head[:-1] + ', "rows": ['))
+        # more entries (figures of the dynamics, say) go between the name and columns
+        start = json.dumps({"name": name, **(head or {}), "columns": list(names)})
+        self._write(self._encode(start[:-1] + ', "rows": ['))
         # one template per row: '{"angle": %s, "crank.angle": %s, ...}'
         keys = ", ".join(f"{json.dumps(n).replace('%', '%%')}: %s" for n in names)
         self._row = "{" + keys + "}"

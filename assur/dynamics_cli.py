@@ -11,6 +11,7 @@ raise :class:`~assur.errors.UsageError` or :class:`~assur.errors.ModelError`.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 import sys
@@ -28,13 +29,25 @@ from assur._cli_common import (
     is_stdout,
     load_mechanism,
     parse_angles,
+    terminal,
 )
-from assur._output import path_text, write_stdout, write_texts
+from assur._output import (
+    StdoutError,
+    output_path,
+    path_text,
+    stdout_writer,
+    write_all,
+    write_stdout,
+    write_texts,
+)
+from assur._progress import progress
+from assur._tableio import CsvWriter, JsonWriter
 from assur._text import number_text
 from assur._vec import Array
 from assur.columns import pretty_unit
 from assur.dynamics_flywheel import SMALLEST_DELTA, delta_in_range
-from assur.dynamics_model import flywheel_in_range
+from assur.dynamics_model import flywheel_in_range, solved
+from assur.dynamics_model import result as dynamics_rows
 from assur.dynamics_reduced import check_dynamic
 from assur.dynamics_startup import MAX_TURNS
 from assur.errors import AssurWarning, ModelError, UsageError
@@ -42,6 +55,10 @@ from assur.model import LARGEST
 
 __all__ = ["register"]
 
+SLICE = 65536
+"""Rows computed and written at once (the table is never held whole)."""
+LONG_SWEEP = 100_000
+"""Positions from which a sweep shows a progress bar (on a terminal)."""
 ROWS_SHOWN = 400
 """Most rows of the readable tables; --csv and --json give them all."""
 
@@ -99,6 +116,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
 
 def _cmd_dynamics(args: argparse.Namespace) -> int:
     import assur
+    from assur.analysis import default_positions
 
     _check_options(args)
     mech = load_mechanism(args.file)
@@ -116,7 +134,9 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
             ),
             file=sys.stderr,
         )
-    angles = None if args.angles is None else parse_angles(args.angles)
+    angles = (
+        default_positions(mech) if args.angles is None else parse_angles(args.angles)
+    )
     sizing = None
     inertia = 0.0 if args.flywheel is None else args.flywheel
     if args.delta is not None:
@@ -125,46 +145,126 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     start = args.startup or args.startup_csv is not None
     run = assur.startup(mech, inertia, turns=args.turns) if start else None
     try:
-        result = assur.dynamics(mech, angles, flywheel=inertia)
+        state = solved(mech, inertia)
     except ModelError as err:
         if run is None or args.csv or args.forces:
             raise
         # a motor may carry the crank round where no steady state at the file's
         # omega (under a constant torque) exists: the start-up is still shown
         warnings.warn(f"{err}; shown: the start-up alone", AssurWarning, stacklevel=2)
-        result = None
-    files = []
+        state = None
+    startup_file = []
     if run is not None and args.startup_csv is not None:
-        files.append((args.startup_csv, startup_csv(run), len(run.time), 3))
-    if result is None:
-        _write_files(args, files)
+        startup_file.append((args.startup_csv, startup_csv(run), len(run.time), 3))
+    if state is None:
+        _write_files(args, startup_file)
         if args.json:
             document = {"name": mech.name, "startup": _startup_data(run)}
             write_stdout(json.dumps(document) + "\n")
         else:
             write_stdout(_header(mech, _startup_lines(run)) + "\n")
         return 0
-    table: Any = result
-    if args.forces:
+    rows = _Rows(mech, state, angles, args.forces)
+    # the files first, as a set: standard output read by a pipe may go away
+    written = []
+    with contextlib.ExitStack() as stack:
+        for path, text, count, columns in startup_file:
+            temporary = stack.enter_context(output_path(path))
+            with open(temporary, "wb") as stream:
+                write_all(stream, text.encode("utf-8"))
+            written.append((path, count, columns))
+        if args.csv and args.csv != "-":
+            temporary = stack.enter_context(output_path(args.csv))
+            with open(temporary, "wb") as stream:
+                _stream(
+                    rows,
+                    CsvWriter(lambda data: write_all(stream, data), rows.names),
+                    args,
+                )
+            written.append((args.csv, len(angles), len(rows.names)))
+    _wrote(args, written)
+    if args.json or args.csv == "-":
+        write, encode = stdout_writer()
+        try:
+            head = _head(rows.first, sizing, run)
+            out: CsvWriter | JsonWriter = (
+                JsonWriter(write, mech.name, rows.names, encode, head=head)
+                if args.json
+                else CsvWriter(write, rows.names, encode)
+            )
+            _stream(rows, out, args)
+            out.close()
+            if args.json:
+                write(encode("\n"))
+        except StdoutError as err:
+            raise err.error from None
+    elif not args.csv:
+        shown = rows.part(0, ROWS_SHOWN)
+        figures = _figures(rows.first, sizing, run)
+        text = _readable(shown, args.forces, len(angles))
+        write_stdout(figures + "\n\n" + text + "\n")
+    return 0
+
+
+class _Rows:
+    """The dynamics table (and the forces at its motion) over a sweep, by slices.
+
+    A long sweep is never held whole: each slice's rows are computed from the one
+    steady state, as :func:`assur.dynamics` computes them all at once.
+    """
+
+    def __init__(self, mech: Any, state: Any, angles: Array, forces: bool) -> None:
+        self.mech, self.state, self.angles, self.forces = mech, state, angles, forces
+        model, steady = state
+        # the figures of the steady state: the same whatever the rows
+        self.first = dynamics_rows(mech, model, steady, angles[:1])
+        self.names = self.part(0, 1).columns
+
+    def part(self, start: int, stop: int) -> Any:
+        """Return the rows ``start`` to ``stop`` (a Dynamics, or joined with forces)."""
+        import assur
+
+        model, steady = self.state
+        result = dynamics_rows(self.mech, model, steady, self.angles[start:stop])
+        if not self.forces:
+            return result
         motion = assur.forces(
-            mech,
+            self.mech,
             result["angle"],
             omega=result["driver.omega"],
             epsilon=result["driver.epsilon"],
         )
-        table = _Joined(result, motion)
-    if args.csv and args.csv != "-":
-        files.append((args.csv, table.to_csv(), len(table), len(table.columns)))
-    # the files first, as a set: standard output read by a pipe may go away
-    _write_files(args, files)
-    if args.json:
-        write_stdout(_json(result, table, sizing, run) + "\n")
-    elif args.csv == "-":
-        table.to_csv("-")
-    elif not args.csv:
-        figures = _figures(result, sizing, run)
-        write_stdout(figures + "\n\n" + _readable(table, args.forces) + "\n")
-    return 0
+        return _Joined(result, motion)
+
+    def __len__(self) -> int:
+        return int(self.angles.shape[0])
+
+
+def _stream(rows: _Rows, writer: Any, args: argparse.Namespace) -> None:
+    """Write every slice of ``rows`` with ``writer``; a bar on a long sweep."""
+    n = len(rows)
+    show = n >= LONG_SWEEP and terminal() and not getattr(args, "quiet", False)
+    with progress("dynamics", n, show=show) as bar:
+        for start in range(0, n, SLICE):
+            part = rows.part(start, min(start + SLICE, n))
+            writer.write([np.asarray(part[c], dtype=float) for c in rows.names])
+            bar.advance(len(part))
+            del part  # one slice in memory at a time
+
+
+def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
+    """Return the JSON document's figures: what comes before its columns."""
+    data: dict[str, Any] = {"dynamics": result.summary()}
+    if sizing is not None:
+        data["flywheel"] = {
+            "delta": sizing.delta,
+            "exact": sizing.exact,
+            "wittenbauer": sizing.wittenbauer,
+            "energy_swing": sizing.energy_swing,
+        }
+    if run is not None:
+        data["startup"] = _startup_data(run)
+    return data
 
 
 def _check_options(args: argparse.Namespace) -> None:
@@ -238,11 +338,16 @@ def _write_files(
 ) -> None:
     """Write ``(path, text, rows, columns)`` files, whole or none of them; say so."""
     write_texts([(path, text) for path, text, _, _ in files])
+    _wrote(args, [(path, rows, columns) for path, _, rows, columns in files])
+
+
+def _wrote(args: argparse.Namespace, written: list[tuple[Any, int, int]]) -> None:
+    """Say which files were written (``(path, rows, columns)``), unless --quiet."""
     if getattr(args, "quiet", False):
         return
     # standard output may carry the table or the JSON: the lines go to stderr then
     lines = sys.stderr if (args.json or args.csv == "-") else sys.stdout
-    for path, _, rows, columns in files:
+    for path, rows, columns in written:
         print(f"wrote {rows} rows x {columns} columns to {path_text(path)}", file=lines)
 
 
@@ -341,8 +446,11 @@ def _header(mechanism: Any, lines: list[tuple[str, str]]) -> str:
     return f"{name}: dynamic model reduced to the crank\n{body}"
 
 
-def _readable(table: Any, forces: bool) -> str:
-    """Return the first rows of the main columns as an aligned text table."""
+def _readable(table: Any, forces: bool, total: int) -> str:
+    """Return the first rows of the main columns as an aligned text table.
+
+    ``table`` holds those rows, of ``total`` in the sweep.
+    """
     names = list(table.columns[:8])
     if forces:
         names += [
@@ -362,34 +470,9 @@ def _readable(table: Any, forces: bool) -> str:
         "  ".join(x.rjust(w) for x, w in zip(row, widths, strict=True))
         for row in (names, marks, *cells)
     ]
-    if len(table) > ROWS_SHOWN:
-        lines.append(f"... {len(table) - ROWS_SHOWN} more rows: --csv PATH or --json")
+    if total > ROWS_SHOWN:
+        lines.append(f"... {total - ROWS_SHOWN} more rows: --csv PATH or --json")
     return "\n".join(lines)
-
-
-def _json(result: Any, table: Any, sizing: Any, run: Any) -> str:
-    """Return the JSON document: the figures, the columns and the rows."""
-    data: dict[str, Any] = {"name": result.mechanism.name}
-    data["dynamics"] = result.summary()
-    if sizing is not None:
-        data["flywheel"] = {
-            "delta": sizing.delta,
-            "exact": sizing.exact,
-            "wittenbauer": sizing.wittenbauer,
-            "energy_swing": sizing.energy_swing,
-        }
-    if run is not None:
-        data["startup"] = _startup_data(run)
-    data["columns"] = list(table.columns)
-    values = np.column_stack([np.asarray(table[c], dtype=float) for c in table.columns])
-    data["rows"] = [
-        {
-            c: (v if math.isfinite(v) else None)
-            for c, v in zip(table.columns, row, strict=True)
-        }
-        for row in values.tolist()
-    ]
-    return json.dumps(data, indent=1, allow_nan=False)
 
 
 def _startup_data(run: Any) -> dict[str, Any]:

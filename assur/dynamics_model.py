@@ -25,7 +25,15 @@ from assur.dynamics_steady import Steady, steady_state
 from assur.errors import UsageError
 from assur.model import LARGEST, Mechanism
 
-__all__ = ["COLUMNS", "Dynamics", "checked_flywheel", "dynamics", "flywheel_in_range"]
+__all__ = [
+    "COLUMNS",
+    "Dynamics",
+    "checked_flywheel",
+    "dynamics",
+    "flywheel_in_range",
+    "result",
+    "solved",
+]
 
 COLUMNS = (
     ("angle", "angle", "angle", "deg"),
@@ -231,13 +239,22 @@ def dynamics(
     >>> bool(0.0 < t.delta < 1.0)
     True
     """
-    flywheel = checked_flywheel(flywheel)
-    omega = check_dynamic(mechanism)
-    model = reduce(mechanism)
-    steady = steady_state(model, omega, flywheel)
+    model, steady = solved(mechanism, flywheel)
     if angles is None:
         angles = default_positions(mechanism)
     return result(mechanism, model, steady, angles)
+
+
+def solved(mechanism: Mechanism, flywheel: float = 0.0) -> tuple[Reduced, Steady]:
+    """Return the reduced model and its steady state, whatever the table's angles.
+
+    What :func:`dynamics` finds before its rows: :func:`result` gives the rows at
+    any angles from them (a long sweep slice by slice). Raises as :func:`dynamics`.
+    """
+    flywheel = checked_flywheel(flywheel)
+    omega = check_dynamic(mechanism)
+    model = reduce(mechanism)
+    return model, steady_state(model, omega, flywheel)
 
 
 def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dynamics:
