@@ -405,10 +405,25 @@ def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:
     loaded = not compile_loads(plan_of(mech)).empty
     return mech, _table(
         mech,
-        positions(mech, args.angles),
+        _drawn(positions(mech, args.angles), "diagrams draw every position"),
         loaded if forces is None else forces,
         getattr(args, "skip_unassembled", False),
     )
+
+
+DRAWN_MOST = 100_000
+"""Most positions of a sweep that diagrams or a report hold whole (every one)."""
+
+
+def _drawn(sweep: Any, why: str) -> Any:
+    """Return ``sweep``; a UsageError when it holds more than :data:`DRAWN_MOST`."""
+    if len(sweep) > DRAWN_MOST:
+        msg = (
+            f"--angles: {len(sweep)} positions; expected at most {DRAWN_MOST} "
+            f"({why}; a larger step)"
+        )
+        raise UsageError(msg)
+    return sweep
 
 
 def _cmd_diagrams(args: argparse.Namespace) -> int:
@@ -539,7 +554,11 @@ def _cmd_report(args: argparse.Namespace) -> int:
         )
         raise UsageError(msg) from err
     mech = load_mechanism(args.file)
-    angles = None if args.angles is None else positions(mech, args.angles)
+    angles = (
+        None
+        if args.angles is None
+        else _drawn(positions(mech, args.angles), "the page holds every position")
+    )
     with _figures():
         write_report(mech, output, angles=angles)
     _wrote(args, path_text(output))

@@ -523,3 +523,22 @@ def test_diagrams_of_one_position_print_no_warning(
         status, _, err = _run(capsys, *argv, "--angles", "10")
     assert (status, err) == (0, "")
     assert {p.name for p in out.iterdir()} >= KINEMATIC
+
+
+@pytest.mark.parametrize(
+    ("command", "why"),
+    [
+        ("diagrams", "diagrams draw every position"),
+        ("report", "the page holds every position"),
+    ],
+)
+def test_a_sweep_too_long_to_draw_is_refused_first(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path, command: str, why: str
+):
+    # 360 000 positions took 1.9 GB for the report, 9 million ran out of memory
+    out = tmp_path / ("r.html" if command == "report" else "d")
+    argv = [command, str(EXAMPLES / "four_bar.toml"), "-o", str(out)]
+    status, _, err = _run(capsys, *argv, "--angles", "0:360:0.001")
+    assert status == 2
+    _error_line(err, f"--angles: 360001 positions; expected at most 100000 ({why}")
+    assert not out.exists()
