@@ -261,7 +261,9 @@ def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dyna
     """Return the table of ``steady`` at the crank angles ``angles`` (deg)."""
     angle, inertia, slope, torque = reduced_at(mech, angles)
     inertia = inertia + steady.flywheel
-    phi = np.radians(angle)
+    # the work is periodic: a turn taken off in degrees is exact, in radians of a
+    # huge angle (1e15 deg, say) it is not
+    phi = np.radians(np.remainder(angle, 360.0))
     work = model.work_at(phi)
     square = np.maximum(2.0 * (steady.energy + work) / inertia, 0.0)
     omega = math.copysign(1.0, steady.omega) * np.sqrt(square)

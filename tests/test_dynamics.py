@@ -518,3 +518,14 @@ def test_a_crank_at_rest_has_no_steady_state_nor_flywheel(omega, tmp_path, capsy
     assert main(["dynamics", str(path), "--delta", "0.05"]) == 2
     (line,) = capsys.readouterr().err.splitlines()
     assert "flywheel: drivers[0].omega" in line
+
+
+def test_a_huge_crank_angle_is_its_angle_within_a_turn():
+    # the work was read at radians(1e300): 8.32 J for -3.84 (the kinematics exact)
+    mech = example("whitworth")
+    huge = [1e300, 1e15, 3.6e14 + 30.0]
+    within = np.remainder(huge, 360.0)  # exact
+    a = assur.dynamics(mech, huge, flywheel=1.0)
+    b = assur.dynamics(mech, within, flywheel=1.0)
+    for name in ("reduced.work", "driver.omega", "driver.epsilon", "reduced.inertia"):
+        np.testing.assert_allclose(a[name], b[name], rtol=1e-12, atol=1e-12)
