@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import contextlib
 import math
+import re
 import sys
 import warnings
 from collections.abc import Callable, Iterator
@@ -292,6 +293,21 @@ PLANS = (
 one driver; with several, one lever each: ``zhukovsky_lever_1``, ``_2``, ..."""
 
 
+LEVER = re.compile(r"zhukovsky_lever_[0-9]+\.(png|svg)")
+"""The file names of the levers of a mechanism with several drivers."""
+
+
+def _clear_stale(out: Path, written: list[str], ours: list[str]) -> None:
+    """Remove the files of ``ours`` in ``out`` that this run did not write.
+
+    A folder written before keeps its other files; the command's own, left from
+    another mechanism (its force polygons, its levers), would mix with the new set.
+    """
+    for name in set(ours) - set(written):
+        with contextlib.suppress(FileNotFoundError):
+            (out / name).unlink()
+
+
 def _folder(out: Path, what: str) -> Path:
     """Return ``-o``'s folder for ``what``; a file of that name is a UsageError."""
     if out.exists() and not out.is_dir():
@@ -339,6 +355,11 @@ def _cmd_plans(args: argparse.Namespace) -> int:
                 fig.savefig(folder / f"{name}{suffix}", dpi=dpi, bbox_inches="tight")
                 written.append(f"{name}{suffix}")
             _pyplot().close(fig)
+    ours = [f"{name}{suffix}" for name in PLANS for suffix in (".png", ".svg")]
+    levers = [
+        p.name for p in out.glob("zhukovsky_lever_*.*") if LEVER.fullmatch(p.name)
+    ]
+    _clear_stale(out, written, ours + levers)
     for name in written:
         _wrote(args, path_text(out / name))
     return 0
@@ -436,6 +457,7 @@ def _cmd_diagrams(args: argparse.Namespace) -> int:
     _, table = _sweep(args, None)
     with _figures() as plt, output_folder(out, any_error=True) as folder:
         written = _diagrams(plotting, plt, table, folder, dpi, _show(args))
+    _clear_stale(out, written, [f"{name}.png" for name in DIAGRAMS])
     _say_skipped(args, table.skipped)
     for name in written:
         _wrote(args, path_text(out / name))

@@ -542,3 +542,18 @@ def test_a_sweep_too_long_to_draw_is_refused_first(
     assert status == 2
     _error_line(err, f"--angles: 360001 positions; expected at most 100000 ({why}")
     assert not out.exists()
+
+
+@pytest.mark.pictures
+def test_diagrams_written_again_hold_one_mechanism_s_set(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path
+):
+    # torque.png of a loaded mechanism stayed beside the diagrams of an unloaded one
+    out = tmp_path / "d"
+    argv = ["diagrams", "-o", str(out), "-q", "--angles", "0:360:30"]
+    status, _, _ = _run(capsys, argv[0], str(EXAMPLES / "four_bar.toml"), *argv[1:])
+    assert status == 0
+    assert (out / "torque.png").exists()
+    status, _, _ = _run(capsys, argv[0], str(EXAMPLES / "tenbar.toml"), *argv[1:])
+    assert status == 0
+    assert {p.name for p in out.iterdir()} == KINEMATIC

@@ -302,3 +302,22 @@ def test_a_crank_alone_has_plans_and_a_lever_but_no_polygon(
     status = main(["plot", str(path), "--group", "1", "-o", str(tmp_path / "g.png")])
     assert status == 2
     assert "expected no --group: only its input link moves" in capsys.readouterr().err
+
+
+def test_a_folder_written_again_holds_one_mechanism_s_plans(tmp_path: Path) -> None:
+    from assur.cli import main
+
+    # the five-bar's levers stayed beside the lever of the next mechanism
+    out = tmp_path / "plans"
+    out.mkdir()
+    (out / "notes.txt").write_text("mine")
+    five = str(EXAMPLES / "five_bar_two_cranks.toml")
+    assert main(["plans", five, "--angle", "30,60", "-o", str(out), "-q"]) == 0
+    assert (out / "zhukovsky_lever_2.svg").exists()
+    lever = str(EXAMPLES / "lever_var9.toml")  # no masses: no polygons, no lever
+    assert main(["plans", lever, "-o", str(out), "-q"]) == 0
+    assert {p.name for p in out.iterdir()} == {
+        "notes.txt",
+        *(f"{stem}.{suffix}" for stem in ("velocity_plan", "acceleration_plan",
+          "instant_centres") for suffix in ("png", "svg")),
+    }  # fmt: skip
