@@ -489,6 +489,8 @@ def test_given_answers_round_off_nan_and_dotted_keys(tmp_path):
     assert _verdict(1.0, 1.4e-17) == ("", "differs")
     assert _verdict(1.0, float("nan")) == ("", "undefined here")
     assert _verdict(-1.1, -1.0)[0] == "$-10.000$ %"  # below the note's value
+    assert _verdict(1e308, 2.0)[0] == "$+5.00e+309$ %"  # not 300 digits, not inf
+    assert _verdict(2e4, 1.0)[0] == "$+2.00e+06$ %"
     for bad in ("nan", "inf", "1" + "0" * 400):
         path.write_text(f'[answers]\n"B.x" = {bad}\n')
         with pytest.raises(assur.ModelError, match="expected a finite number"):

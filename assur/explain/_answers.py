@@ -148,7 +148,12 @@ def _verdict(value: float, ours: float) -> tuple[str, str]:
     if abs(ours) < ZERO:
         return "", "agrees" if abs(value) < ZERO else "differs"
     diff = (value - ours) / abs(ours)
-    return f"${100 * diff:+.3f}$ %", "agrees" if abs(diff) <= AGREE else "differs"
+    if abs(diff) < 1e4:
+        shown = f"{100 * diff:+.3f}"
+    else:  # three digits of a difference too large to read so (nor to scale by 100)
+        mantissa, power = f"{diff:+.2e}".split("e")
+        shown = f"{mantissa}e{int(power) + 2:+03d}"
+    return f"${shown}$ %", "agrees" if abs(diff) <= AGREE else "differs"
 
 
 def answer_blocks(
