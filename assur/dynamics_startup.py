@@ -286,6 +286,7 @@ def _integrate(
     state, t = [model.start, omega0], 0.0
     scale = _speed_scale(model, motor, curves)
     limit = _time_limit(scale, model, motor, curves)
+    method = "Radau" if _stiff(model, motor, curves) else "DOP853"
     for k in range(1, turns + 1):
         target = model.start + sense * 2.0 * math.pi * k
 
@@ -297,7 +298,7 @@ def _integrate(
             rhs,
             (t, t + limit),
             state,
-            method="DOP853",
+            method=method,
             rtol=RTOL,
             atol=[RTOL, RTOL * scale],
             events=(turned, stall),
@@ -311,6 +312,20 @@ def _integrate(
     else:
         _not_settled(runs, motor, model, turns)
     return runs
+
+
+def _stiff(model: Reduced, motor: Motor, curves: _Curves) -> bool:
+    """Whether an electric motor holds the speed far faster than a turn takes.
+
+    Its torque falls by ``T / w0`` per rad/s: the speed relaxes at the rate
+    ``T / (w0 J)``. An explicit method steps at that pace all along; beyond a
+    thousand relaxations a turn an implicit one (Radau) takes far fewer steps.
+    """
+    if motor.no_load_speed is None:
+        return False
+    inertia = float(np.min(model.inertia)) + curves.flywheel
+    rate = abs(motor.torque / motor.no_load_speed) / inertia
+    return rate * 2.0 * math.pi / abs(motor.no_load_speed) > 1e3
 
 
 def _speed_scale(model: Reduced, motor: Motor, curves: _Curves) -> float:
