@@ -1063,18 +1063,25 @@ def crank_model(
 
 
 def integrate_turn(
-    model: CrankModel, phi0: float, w0: float, motor: float, steps: int = 3000
+    model: CrankModel,
+    phi0: float,
+    w0: float,
+    motor: float,
+    steps: int = 3000,
+    no_load: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Integrate the equation of motion in time with the classical fourth-order
     Runge-Kutta method, fixed step, from crank angle ``phi0`` (rad) at speed ``w0``
-    (rad/s) under a constant ``motor`` torque (N m) for about one turn.
+    (rad/s) under a ``motor`` torque (N m) for about one turn: constant, or with a
+    ``no_load`` speed (rad/s) the electric motor's ``motor (1 - w / no_load)``.
 
     Returns the times (s), crank angles (rad) and speeds (rad/s) of every step."""
     dt = 2.0 * math.pi / abs(w0) / steps
     t, phi, w = [0.0], [phi0], [w0]
 
     def f(p: float, v: float) -> tuple[float, float]:
-        return v, model.acceleration(p, v, motor)
+        drive = motor if no_load is None else motor * (1.0 - v / no_load)
+        return v, model.acceleration(p, v, drive)
 
     p, v = phi0, w0
     while abs(p - phi0) < 2.0 * math.pi:
