@@ -111,15 +111,32 @@ def load(path: str | Path) -> Mechanism:
 
 def _read(path: Path, where: str) -> bytes:
     """Return the bytes of the file ``path``, at most :data:`MAX_FILE_BYTES`."""
+    return read_capped(
+        path,
+        where,
+        MAX_FILE_BYTES,
+        "a TOML or JSON file",
+        "a mechanism file (a few kilobytes of TOML or JSON)",
+    )
+
+
+def read_capped(path: Any, where: str, most: int, kind: str, expected: str) -> bytes:
+    """Return the bytes of the file ``path``: at most ``most`` of them, whole MiB.
+
+    ``where`` names the file in messages; ``kind`` is what a folder was expected
+    to be, ``expected`` what a file too large was expected to be.
+
+    Raises
+    ------
+    ModelError
+        When the file cannot be read or holds more than ``most`` bytes.
+    """
     try:
         with open(path, "rb") as stream:
             # one byte beyond the cap tells a file too large from one just large
-            data = stream.read(MAX_FILE_BYTES + 1)
+            data = stream.read(most + 1)
     except IsADirectoryError as err:
-        msg = (
-            f"{where}: cannot read the file (it is a folder); expected a TOML or "
-            "JSON file"
-        )
+        msg = f"{where}: cannot read the file (it is a folder); expected {kind}"
         raise ModelError(msg) from err
     except OSError as err:
         msg = f"{where}: cannot read the file ({err.strerror or err})"
@@ -127,11 +144,8 @@ def _read(path: Path, where: str) -> bytes:
     except ValueError as err:  # a name with a NUL character
         msg = f"{where}: cannot read the file ({err})"
         raise ModelError(msg) from err
-    if len(data) > MAX_FILE_BYTES:
-        msg = (
-            f"{where}: larger than {MAX_FILE_BYTES // 2**20} MiB; expected a "
-            "mechanism file (a few kilobytes of TOML or JSON)"
-        )
+    if len(data) > most:
+        msg = f"{where}: larger than {most // 2**20} MiB; expected {expected}"
         raise ModelError(msg)
     return data
 

@@ -212,18 +212,23 @@ def test_a_fifo_whose_reader_stops_early_is_one_error(tmp_path: Path, capsys):
     assert line == f"assur: error: {fifo}: cannot write the file (Broken pipe)"
 
 
-def piped(tmp_path: Path, options: str) -> subprocess.CompletedProcess[str]:
-    """Run ``assur kinematics FOUR_BAR --angles 0 OPTIONS | cat`` in a shell."""
+def shell(tmp_path: Path, command: str) -> subprocess.CompletedProcess[str]:
+    """Run ``assur COMMAND`` in a shell (which reads ``| cat``, ``>&-`` and such)."""
     return subprocess.run(
-        f"{sys.executable} -m assur kinematics {FOUR_BAR} --angles 0 {options} | cat",
+        f"{sys.executable} -m assur {command}",
         shell=True,
         cwd=tmp_path,
         env=subprocess_env(),
         capture_output=True,
         text=True,
-        timeout=60,
+        timeout=120,
         check=False,
     )
+
+
+def piped(tmp_path: Path, options: str) -> subprocess.CompletedProcess[str]:
+    """Run ``assur kinematics FOUR_BAR --angles 0 OPTIONS | cat`` in a shell."""
+    return shell(tmp_path, f"kinematics {FOUR_BAR} --angles 0 {options} | cat")
 
 
 def test_csv_to_dev_stdout_in_a_pipe(tmp_path: Path):
@@ -446,16 +451,7 @@ def test_non_ascii_names_on_an_ascii_terminal(tmp_path: Path):
 
 def _closed(tmp_path: Path, command: str) -> subprocess.CompletedProcess[str]:
     """Run ``assur COMMAND`` with standard output closed (``>&-``)."""
-    return subprocess.run(
-        f"{sys.executable} -m assur {command} >&-",
-        shell=True,
-        cwd=tmp_path,
-        env=subprocess_env(),
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    return shell(tmp_path, f"{command} >&-")
 
 
 def test_a_closed_standard_output(tmp_path: Path):

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -14,7 +13,7 @@ import assur
 from assur.cli import main
 
 from .conftest import EXAMPLES
-from .test_cli_robustness import subprocess_env
+from .test_cli_robustness import shell
 
 WHITWORTH = EXAMPLES / "whitworth.toml"
 FOUR_BAR = EXAMPLES / "four_bar.toml"
@@ -284,16 +283,7 @@ def test_the_files_are_written_as_a_set(capsys, tmp_path: Path):
 
 def _shell(tmp_path: Path, options: str) -> subprocess.CompletedProcess[str]:
     """Run ``assur dynamics FOUR_BAR OPTIONS | cat``: /dev/stdout is the pipe."""
-    return subprocess.run(
-        f"{sys.executable} -m assur dynamics {FOUR_BAR} {options} | cat",
-        shell=True,
-        cwd=tmp_path,
-        env=subprocess_env(),
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    return shell(tmp_path, f"dynamics {FOUR_BAR} {options} | cat")
 
 
 @pytest.mark.parametrize(

@@ -43,20 +43,16 @@ def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
     """
     import tomllib
 
+    from assur.io import read_capped
+
     where = os.fspath(path)
-    try:
-        with open(path, "rb") as stream:
-            # one byte beyond the cap tells a file too large (/dev/zero, say)
-            raw = stream.read(MAX_ANSWERS_BYTES + 1)
-    except (OSError, ValueError) as err:
-        msg = f"{where}: cannot read the answers ({err})"
-        raise ModelError(msg) from err
-    if len(raw) > MAX_ANSWERS_BYTES:
-        msg = (
-            f"{where}: larger than {MAX_ANSWERS_BYTES // 2**20} MiB; expected a "
-            "file of given answers (a few lines of TOML)"
-        )
-        raise ModelError(msg)
+    raw = read_capped(
+        path,
+        where,
+        MAX_ANSWERS_BYTES,
+        "a TOML file of given answers",
+        "a file of given answers (a few lines of TOML)",
+    )
     try:
         data = tomllib.loads(raw.decode("utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as err:
