@@ -14,8 +14,10 @@ Given the senses of the relative motions, the reactions are affine in those size
 the frictionless solution plus each pair's response to a unit of its friction, found
 by solving the group once per pair with friction. What is left is a small system
 ``s = |R(s)|`` of one unknown per pair with friction, solved by Newton's method at
-every position at once. Where it has no solution with every size positive, no load
-can drive the group against its friction: it locks.
+every position at once. Of its solutions (a slider may also wedge in its guide) the
+one that grows from the frictionless one as the friction rises is the motion; where
+it has none with every size positive, no load can drive the group against its
+friction: it locks.
 """
 
 from __future__ import annotations
@@ -202,7 +204,6 @@ def solve_group(
     if not pairs:
         return None
     inside = set(base.bodies)
-    m = len(pairs)
     units = {p.name: _unit(p, bodies, rate(p, bodies, rest)) for p in pairs}
     start = [_reaction(p, bodies, base, n) for p in pairs]
     # each pair's reactions for a unit of one pair's friction alone: the reactions
@@ -220,49 +221,30 @@ def solve_group(
         ]
         for p in pairs
     ]
-    sizes = np.stack([_norm(r) for r in start], axis=-1)
-    scale = np.max(sizes, axis=-1) + 1e-300
-    step = np.full(n, np.inf)
-    count = 0
-    # Newton converges quadratically: after a few steps only a handful of positions
-    # are still moving, and only those are stepped again
-    rows = np.arange(n)
-    # the start and responses of the positions still moving (all of them at first)
-    now_start, now_response = start, response
-    while count < MAX_ITERATIONS and rows.size:
-        count += 1
-        # the Jacobian as rows of columns of 1-D arrays: contiguous, unlike the
-        # strided entries of an (n, m, m) array, and so several times faster
-        jac: list[list[Any]] = []
-        left: list[Any] = []
-        here = sizes[rows]
-        for j in range(m):
-            value = now_start[j].copy()
-            for k in range(m):
-                value += here[:, k, None] * now_response[k][j]
-            size = _norm(value)
-            with np.errstate(invalid="ignore", divide="ignore"):
-                along = np.where(size[:, None] > 0.0, value / size[:, None], 0.0)
-            left.append(here[:, j] - size)
-            jac.append([-_dot(along, now_response[k][j]) for k in range(m)])
-            jac[j][j] += 1.0
-        delta, good = _newton_step(jac, left)
-        sizes[rows] = here + delta
-        moved = functools.reduce(np.maximum, [np.abs(x) for x in delta.T])
-        # a finite position whose step could not be taken has not settled
-        moved[~good & np.isfinite(sum(left))] = np.inf
-        step[rows] = moved
-        stay = ~(moved <= TOLERANCE * scale[rows])
-        if not stay.all():
-            rows = rows[stay]
-            now_start = [a[stay] for a in now_start]
-            now_response = [[a[stay] for a in r] for r in now_response]
+    first = np.stack([_norm(r) for r in start], axis=-1)
+    scale = np.max(first, axis=-1) + 1e-300
+    sizes, settled, count = _sizes(start, response, first.copy(), scale)
+    # Coulomb's law may hold twice: beside the solution that grows from the
+    # frictionless one, a jammed one of huge reactions (a slider wedged in its
+    # guide). Newton's method may find the latter; the former has the Jacobian's
+    # determinant of the frictionless system's sign (it is 1 there), and is found
+    # by raising the friction from zero where the first solve did not give it
     finite = np.isfinite(sizes).all(axis=-1)
+    ordinary = settled & (_determinant(start, response, sizes, 1.0) > 0.0)
+    doubtful = np.flatnonzero(finite & ~ordinary)
+    if doubtful.size:
+        found, kept, more = _raised(
+            [a[doubtful] for a in start],
+            [[a[doubtful] for a in r] for r in response],
+            first[doubtful],
+            scale[doubtful],
+        )
+        sizes[doubtful], settled[doubtful] = found, kept
+        count += more
+    finite = np.isfinite(sizes).all(axis=-1)
+    limit = TOLERANCE * np.maximum(scale, np.max(np.abs(sizes), axis=-1))
     # no solution with every size positive: nothing drives the group (self-locking)
-    locked = finite & (
-        ~(step <= TOLERANCE * scale)
-        | np.any(sizes < -TOLERANCE * scale[:, None], axis=-1)
-    )
+    locked = finite & (~settled | np.any(sizes < -limit[:, None], axis=-1))
     friction = {
         p.name: [mul(sizes[:, k], w) for w in units[p.name]]
         for k, p in enumerate(pairs)
@@ -280,6 +262,104 @@ def solve_group(
     return GroupFriction(
         record, values, friction, locked if locked.any() else None, count
     )
+
+
+RAISES = 16
+"""Steps in which the friction is raised from zero where the first solve found a
+jammed solution or none."""
+
+
+def _system(
+    start: list[Any], response: list[list[Any]], here: Any, weight: float
+) -> tuple[list[list[Any]], list[Any]]:
+    """Return the Jacobian (rows of columns of arrays) and residual of ``s = |R(s)|``.
+
+    ``weight`` scales every pair's friction (1: as given).
+    """
+    m = len(start)
+    # the Jacobian as rows of columns of 1-D arrays: contiguous, unlike the
+    # strided entries of an (n, m, m) array, and so several times faster
+    jac: list[list[Any]] = []
+    left: list[Any] = []
+    for j in range(m):
+        value = start[j].copy()
+        for k in range(m):
+            value += (weight * here[:, k, None]) * response[k][j]
+        size = _norm(value)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            along = np.where(size[:, None] > 0.0, value / size[:, None], 0.0)
+        left.append(here[:, j] - size)
+        jac.append([-weight * _dot(along, response[k][j]) for k in range(m)])
+        jac[j][j] += 1.0
+    return jac, left
+
+
+def _determinant(
+    start: list[Any], response: list[list[Any]], here: Any, weight: float
+) -> Any:
+    """Return the determinant of the Jacobian of ``s = |R(s)|`` at ``here``."""
+    jac, _ = _system(start, response, here, weight)
+    with np.errstate(invalid="ignore", over="ignore"):
+        if len(jac) <= 3:
+            return _adjugate(jac)[1]
+        square = np.stack([np.stack(r, axis=-1) for r in jac], axis=-2)
+        return np.linalg.det(np.where(np.isfinite(square), square, 0.0))
+
+
+def _sizes(
+    start: list[Any],
+    response: list[list[Any]],
+    sizes: Any,
+    scale: Any,
+    weight: float = 1.0,
+) -> tuple[Any, Any, int]:
+    """Solve ``s = |R(s)|`` by Newton's method from ``sizes`` (changed in place).
+
+    Returns the sizes, where they settled and the number of steps. A step below
+    :data:`TOLERANCE` of the larger of ``scale`` and the sizes found settles.
+    """
+    n = sizes.shape[0]
+    settled = np.zeros(n, dtype=bool)
+    count = 0
+    # Newton converges quadratically: after a few steps only a handful of positions
+    # are still moving, and only those are stepped again
+    rows = np.arange(n)
+    # the start and responses of the positions still moving (all of them at first)
+    now_start, now_response = start, response
+    while count < MAX_ITERATIONS and rows.size:
+        count += 1
+        here = sizes[rows]
+        jac, left = _system(now_start, now_response, here, weight)
+        delta, good = _newton_step(jac, left)
+        sizes[rows] = here + delta
+        moved = functools.reduce(np.maximum, [np.abs(x) for x in delta.T])
+        # a finite position whose step could not be taken has not settled
+        moved[~good & np.isfinite(sum(left))] = np.inf
+        big = np.maximum(scale[rows], np.max(np.abs(sizes[rows]), axis=-1))
+        done = moved <= TOLERANCE * big
+        settled[rows[done]] = True
+        if done.any():
+            stay = ~done
+            rows = rows[stay]
+            now_start = [a[stay] for a in now_start]
+            now_response = [[a[stay] for a in r] for r in now_response]
+    return sizes, settled, count
+
+
+def _raised(
+    start: list[Any], response: list[list[Any]], first: Any, scale: Any
+) -> tuple[Any, Any, int]:
+    """Follow the solution from no friction to the friction given, in steps.
+
+    Returns the sizes, where the solution held all the way (a fold on the way, the
+    determinant through zero, is where the group locks) and the Newton steps.
+    """
+    sizes, held, count = first.copy(), np.ones(first.shape[0], dtype=bool), 0
+    for weight in np.arange(1, RAISES + 1) / RAISES:
+        sizes, settled, steps = _sizes(start, response, sizes, scale, float(weight))
+        count += steps
+        held &= settled & (_determinant(start, response, sizes, float(weight)) > 0.0)
+    return sizes, held, count
 
 
 def _newton_step(jac: list[list[Any]], left: list[Any]) -> tuple[Any, Any]:

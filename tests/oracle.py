@@ -542,6 +542,10 @@ def _at_rest(
     return np.abs(speed) <= limit
 
 
+RAISES = 12
+"""Steps in which :func:`global_solve_friction` raises the friction from zero."""
+
+
 def global_solve_friction(
     mech: assur.Mechanism, table: assur.Table
 ) -> tuple[Reactions, dict[str, np.ndarray]]:
@@ -552,7 +556,8 @@ def global_solve_friction(
     A revolute joint's friction is the couple ``-f r |R| sign(w2 - w1)`` on its second
     link; a prismatic (or slot) joint's the force ``-f |N| sign(v)`` along its slide
     line at its point. Returns the reactions (a prismatic joint's force includes its
-    friction) and each joint's friction.
+    friction) and each joint's friction. The solution is the one that grows from the
+    frictionless one as the friction is raised from zero.
     """
     n = len(table)
     links = [lk.name for lk in mech.links]
@@ -599,7 +604,9 @@ def global_solve_friction(
                 x.append(guess.couple[item.name][r])
         return np.asarray(x)
 
-    def equations(x: np.ndarray, r: int, out: dict | None = None) -> np.ndarray:
+    def equations(
+        x: np.ndarray, r: int, out: dict | None = None, weight: float = 1.0
+    ) -> np.ndarray:
         force = {L: np.zeros(2) for L in [*links, GROUND]}
         moment = dict.fromkeys([*links, GROUND], 0.0)
         for L in links:
@@ -631,7 +638,7 @@ def global_solve_friction(
             if item.kind != "revolute" and k == 0:
                 normal[item.name] = value
         for joint in joints:
-            fr = float(joint.friction)
+            fr = float(joint.friction) * weight
             if not fr:
                 continue
             sense = float(np.sign(speeds[joint.name][r]))
@@ -660,24 +667,36 @@ def global_solve_friction(
     from scipy.optimize import fsolve
 
     size = mechanism_size(mech)
-    # from the frictionless solution; where Newton's method does not get there (a
-    # friction load turns with the slide's direction), from the answer under test: a
-    # wrong one is not a root of these equations and is moved or left unconverged
-    guesses = (ideal, table_reactions(mech, table))
-    for r in range(n):
-        for guess in guesses:
-            x = start(r, guess)
-            scale = max(1.0, float(np.max(np.abs(x))))
-            for _ in range(3):  # polish: fsolve stops early near its own tolerance
-                with warnings.catch_warnings():
-                    # "no further improvement": the residual check below judges
-                    warnings.simplefilter("ignore", RuntimeWarning)
-                    x = fsolve(equations, x, args=(r,), xtol=1e-15)
-            left = np.max(np.abs(equations(x, r)))
-            if left <= 1e-11 * scale * max(1.0, size):
+
+    def settled(x: np.ndarray, r: int, weight: float = 1.0) -> tuple[np.ndarray, bool]:
+        for _ in range(3):  # polish: fsolve stops early near its own tolerance
+            with warnings.catch_warnings():
+                # "no further improvement": the residual check below judges
+                warnings.simplefilter("ignore", RuntimeWarning)
+                x = fsolve(equations, x, args=(r, None, weight), xtol=1e-15)
+        scale = max(1.0, float(np.max(np.abs(x))))
+        left = np.max(np.abs(equations(x, r, None, weight)))
+        return x, bool(left <= 1e-11 * scale * max(1.0, size))
+
+    def raised(r: int) -> tuple[np.ndarray, bool]:
+        # Coulomb's law may hold twice (a slider jammed in its guide beside the
+        # motion that grows from no friction): the friction is raised from zero in
+        # small steps, each solve starting from the last, to follow the latter
+        x, good = start(r, ideal), True
+        for weight in np.arange(1, RAISES + 1) / RAISES:
+            x, good = settled(x, r, float(weight))
+            if not good:
                 break
-        else:
-            msg = f"the friction solve did not converge at row {r}: {left:g} left"
+        return x, good
+
+    for r in range(n):
+        x, good = raised(r)
+        if not good:
+            # no such motion all the way: from the answer under test (a wrong one
+            # is not a root of these equations and is moved or left unconverged)
+            x, good = settled(start(r, table_reactions(mech, table)), r)
+        if not good:
+            msg = f"the friction solve did not converge at row {r}"
             raise ValueError(msg)
         found: dict = {}
         equations(x, r, found)
