@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from assur._output import path_text
-from assur._text import describe
+from assur._text import counted, describe
 from assur.errors import UsageError
 
 __all__ = [
@@ -56,8 +56,9 @@ def parse_angles(spec: str, drivers: int = 1, option: str = "--angles") -> np.nd
     parts = spec.split(",")
     if len(parts) != drivers:
         msg = (
-            f"{option}: {len(parts)} range(s) given for {drivers} driver(s); expected "
-            "one START:STOP:STEP per driver, separated by commas"
+            f"{option}: {counted(len(parts), 'range')} given for "
+            f"{counted(drivers, 'driver')}; expected one START:STOP:STEP per driver, "
+            "separated by commas"
         )
         raise UsageError(msg)
     ranges = [_one_range(part, option) for part in parts]
@@ -187,8 +188,9 @@ def one_position(mech: Any, spec: str | None) -> Any:
         values.append(value)
     if len(values) != drivers:
         msg = (
-            f"--angle {describe(spec)[1:-1]}: {len(values)} value(s) for {drivers} "
-            "driver(s); expected one value per driver, separated by commas"
+            f"--angle {describe(spec)[1:-1]}: {counted(len(values), 'value')} for "
+            f"{counted(drivers, 'driver')}; expected one value per driver, separated "
+            "by commas"
         )
         raise UsageError(msg)
     return np.array(values)

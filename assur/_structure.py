@@ -17,7 +17,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
-from assur._text import listing, roman
+from assur._text import counted, listing, public_name, roman
 from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, mechanism_of, resolve_point
 
@@ -105,8 +105,11 @@ class Group:
 
     @property
     def label(self) -> str:
-        """Short label such as ``"RRR (2, 3)"``."""
-        return f"{self.kind} ({', '.join(_public(self.links))})"
+        """Short label such as ``"RRR (2, 3)"``; ``"class IV group (...)"`` beyond."""
+        kind = self.kind
+        if kind == "general":
+            kind = f"class {roman(self.group_class)} group"
+        return f"{kind} ({', '.join(_public(self.links))})"
 
 
 @dataclass(frozen=True, slots=True)
@@ -171,7 +174,8 @@ class Structure:
 
 
 def _public(names: tuple[str, ...]) -> tuple[str, ...]:
-    return tuple(n.replace("~block", " (block)") for n in names)
+    """Return names as a reader sees them: a slot's block and pin are "J (block)"."""
+    return tuple(public_name(n) for n in names)
 
 
 def topology(mech: Mechanism) -> Topology:
@@ -341,16 +345,17 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     groups decomposes in time about linear in its length.
     """
     w = mobility(mech)
+    topo = topology(mech)
     if w != len(mech.drivers):
         n = len(mech.links)
         p4 = sum(j.kind == "slot" for j in mech.joints)
         msg = (
             f"drivers: the mechanism has W = 3*{n} - 2*{len(mech.joints) - p4} - {p4}"
-            f" = {w} degree(s) of freedom but {len(mech.drivers)} driver(s); "
+            f" = {counted(w, 'degree', 'degrees')} of freedom but "
+            f"{counted(len(mech.drivers), 'driver')}{_miscount(topo, w, mech)}; "
             "expected one driver per degree of freedom"
         )
         raise DecompositionError(msg)
-    topo = topology(mech)
     by_name = {p.name: p for p in topo.pairs}
     drivers = []
     known = {GROUND}
@@ -368,6 +373,28 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
             _DECOMPOSED.clear()
         _DECOMPOSED[key] = groups
     return tuple(drivers), groups, topo
+
+
+def _miscount(topo: Topology, w: int, mech: Mechanism) -> str:
+    """Return why the degrees of freedom may differ from the drivers (or nothing).
+
+    A joint counted twice is named; a count of none or fewer is said to be one.
+    """
+    index = _index(topo)
+    parallel = _parallel(index, set(index.links))
+    if parallel is not None:
+        first, second = parallel
+        a, b = _public(first.links)
+        return (
+            f", as joints {first.name} and {second.name} both join {a} and {b}: "
+            f"{_parallel_reason(index, first, second)}"
+        )
+    if w <= 0:
+        return (
+            " (none: a rigid chain, or a link repeating a constraint, such as a "
+            "third parallel crank of a parallelogram, which the count cannot see)"
+        )
+    return ""
 
 
 _DECOMPOSED: dict[Any, tuple[Group, ...]] = {}
@@ -581,6 +608,16 @@ def _leftover(
             f"{head}, because joints {listing(_public(r.pairs))} make links "
             f"{listing(_public(r.links))} rigid (k = {k}, p = {p}: 2p >= 3(k - 1)); "
             "expected one link in their place, or fewer joints between them"
+        )
+    pairs = [p for p in index.pairs if unknown.intersection(p.links)]
+    if len(left) > MAX_GROUP_LINKS and 3 * len(left) == 2 * len(pairs):
+        # the links left over may be one group too large for the search
+        return (
+            f"links {listing(_public(left))} are left over: no Assur group of at "
+            f"most {MAX_GROUP_LINKS} links attaches to the known links "
+            f"{listing(sorted(known))}, and together (k = {len(left)}, p = "
+            f"{len(pairs)}: 3k = 2p) they may form one larger group, which assur does "
+            f"not solve; expected groups of at most {MAX_GROUP_LINKS} links"
         )
     return f"{head}; expected a chain made of Assur groups"
 

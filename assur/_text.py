@@ -52,6 +52,31 @@ def number_text(value: float, spec: str = ".6g") -> str:
     return format(value + 0.0, spec)  # -0.0 + 0.0 is +0.0
 
 
+def counted(count: int, noun: str, plural: str | None = None) -> str:
+    """Return ``count`` and ``noun``, in the plural unless the count is one.
+
+    Examples
+    --------
+    >>> counted(1, "driver"), counted(2, "driver"), counted(0, "degree", "degrees")
+    ('1 driver', '2 drivers', '0 degrees')
+    """
+    return f"{count} {noun if count == 1 else plural or noun + 's'}"
+
+
+def public_name(name: str) -> str:
+    """Return a link's or pair's name as a reader sees it.
+
+    A slot ``J`` is replaced by the block ``J~block`` and the pin ``J~pin`` inside
+    (the names of the JSON output); they read "J (block)" and "J (pin)".
+
+    Examples
+    --------
+    >>> public_name("B~block"), public_name("B~pin"), public_name("rod")
+    ('B (block)', 'B (pin)', 'rod')
+    """
+    return name.replace("~block", " (block)").replace("~pin", " (pin)")
+
+
 def roman(number: int) -> str:
     """Return the roman numeral of a group's class (digits beyond VIII)."""
     return ROMAN.get(number, str(number))

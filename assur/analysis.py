@@ -22,7 +22,7 @@ from assur._branches import branches
 from assur._evaluate import SHORT
 from assur._loads import compile_loads
 from assur._progress import Callback, progress
-from assur._text import describe, position_text
+from assur._text import counted, describe, position_text
 from assur._vec import Array, Mask, gather, is_array
 from assur.columns import selection
 from assur.errors import (
@@ -481,7 +481,10 @@ def positions(plan: Plan, angles: Any) -> Array:
     if arr.ndim == 1:
         arr = arr[:, None]
     if arr.ndim != 2 or arr.shape[1] != d:
-        msg = f"angles: expected shape (n, {d}) for {d} driver(s), got {arr.shape}"
+        msg = (
+            f"angles: expected shape (n, {d}) for {counted(d, 'driver')}, got "
+            f"{arr.shape}"
+        )
         raise UsageError(msg)
     if not np.all(np.isfinite(arr)):
         msg = "angles: expected finite driver positions"

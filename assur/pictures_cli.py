@@ -32,7 +32,7 @@ from assur._cli_common import (
     terminal,
 )
 from assur._output import output_folder, output_path, path_text
-from assur._text import describe
+from assur._text import counted, describe
 from assur.analysis import SKIPPED_WHY
 from assur.errors import AssemblyError, AssurError, AssurWarning, UsageError
 from assur.plotting._style import titled
@@ -391,8 +391,8 @@ def _cmd_plot(args: argparse.Namespace) -> int:
                 else "expected no --group: only its input link moves"
             )
             msg = (
-                f"--group {args.group}: the mechanism has {count} Assur group(s); "
-                + expected
+                f"--group {args.group}: the mechanism has "
+                f"{counted(count, 'Assur group')}; " + expected
             )
             raise UsageError(msg)
         table = _table(mech, position, True)

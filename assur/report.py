@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from assur._text import roman
+from assur._text import counted, public_name, roman
 
 if TYPE_CHECKING:
     from assur._structure import Group, Structure
@@ -17,7 +17,7 @@ __all__ = ["structure_report"]
 
 
 def _names(items: tuple[str, ...]) -> str:
-    return ", ".join(x.replace("~block", " (block)") for x in items)
+    return ", ".join(public_name(x) for x in items)
 
 
 def _counted(noun: str, items: tuple[str, ...]) -> str:
@@ -43,16 +43,22 @@ def structure_report(s: Structure) -> str:
         f"2*{p5} - {p4} = {s.dof}"
     )
     lines.append(
-        f"  n = {n} moving links, p5 = {p5} lower pairs, p4 = {p4} higher pairs;"
-        f" {len(s.drivers)} driver(s)."
+        f"  n = {n} moving links, p5 = {p5} lower pairs, p4 = "
+        f"{counted(p4, 'higher pair')}; {counted(len(s.drivers), 'driver')}."
     )
     for slot in s.slots:
         lines.append(
             f"  Slot {slot} (a pin in a slot, a higher pair) is replaced by an "
-            f"equivalent block '{slot}~block' with a prismatic pair {slot} and a "
-            f"revolute pair {slot}~pin: one more link and two lower pairs keep W."
+            f"equivalent block, {slot} (block), with a prismatic pair {slot} and a "
+            f"revolute pair {slot} (pin): one more link and two lower pairs keep W "
+            f"(in the JSON output: {slot}~block and {slot}~pin)."
         )
-    lines += ["", "Decomposition into Assur groups, in order of attachment:"]
+    lines += [
+        "",
+        "Decomposition into the input "
+        + ("link" if len(s.drivers) == 1 else "links")
+        + " (class I) and Assur groups, in order of attachment:",
+    ]
     step = 0
     for g in s.drivers:
         step += 1

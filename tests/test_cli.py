@@ -109,7 +109,7 @@ def test_angles_for_two_drivers(capsys):
     path = EXAMPLES / "five_bar_two_cranks.toml"
     text = fails(capsys, ["kinematics", path, "--angles", "0:20:10"], path)
     assert text == (
-        "--angles: 1 range(s) given for 2 driver(s); expected one "
+        "--angles: 1 range given for 2 drivers; expected one "
         "START:STOP:STEP per driver, separated by commas"
     )
     text = fails(capsys, ["forces", path, "--angles", "0:20:10,100:130:10"], path)
@@ -127,7 +127,7 @@ def test_a_wrong_structure_is_named_before_the_count_of_angles(tmp_path, capsys)
         options = picture if command == "plot" else ["--angles", "0"]
         text = fails(capsys, [command, path, *options], path)
         assert text.startswith("drivers: the mechanism has W = "), (command, text)
-        assert "but 2 driver(s)" in text
+        assert "but 2 drivers" in text
 
 
 def test_dynamics_counts_the_drivers_of_the_file(capsys):

@@ -308,14 +308,14 @@ BAD = {
         "structure",
         DecompositionError,
         r"^drivers: the mechanism has W = 3\*3 - 2\*4 - 0 "
-        r"= 1 degree\(s\) of freedom but 0 driver\(s\); expected one driver per "
+        r"= 1 degree of freedom but 0 drivers; expected one driver per "
         r"degree of freedom$",
     ),
     "two-drivers-one-dof": Bad(
         BASE + '\n[[drivers]]\njoint = "guide"\nomega = 1.0\n',
         "structure",
         DecompositionError,
-        r"^drivers: .* = 1 degree\(s\) of freedom but 2 driver\(s\)",
+        r"^drivers: .* = 1 degree of freedom but 2 drivers",
     ),
     "links-left-over": Bad(
         LEFTOVER,

@@ -123,7 +123,7 @@ def test_plot_two_drivers_one_angle_each(
     _png(out)
     status, _, err = _run(capsys, "plot", FIVE_BAR, "--angle", "70", "-o", str(out))
     assert status == 2
-    _error_line(err, FIVE_BAR, "--angle 70: 1 value(s) for 2 driver(s)")
+    _error_line(err, FIVE_BAR, "--angle 70: 1 value for 2 drivers")
 
 
 @pytest.mark.parametrize(
@@ -132,7 +132,7 @@ def test_plot_two_drivers_one_angle_each(
         (["--forces"], ["tenbar.toml", "no link has a mass"]),
         (["--angle", "0:90:45"], ["--angle 0:90:45: a range; expected one value"]),
         (["--angle", "abc"], ["--angle: cannot read 'abc'; expected a number"]),
-        (["--angle", "30,40"], ["--angle 30,40: 2 value(s) for 1 driver(s)"]),
+        (["--angle", "30,40"], ["--angle 30,40: 2 values for 1 driver"]),
         (["--scale", "-5"], ["--scale -5: expected a positive number"]),
         (["--dpi", "0"], ["--dpi 0: expected a positive resolution"]),
     ],

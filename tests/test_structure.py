@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
 
 import pytest
 
@@ -471,13 +472,13 @@ def test_mobility_differs_from_drivers():
         four_bar.links, four_bar.joints, (Driver("A", 1.0), Driver("D", 1.0))
     )
     match = (
-        r"drivers: the mechanism has W = 3\*3 - 2\*4 - 0 = 1 degree\(s\) of "
-        r"freedom but 2 driver\(s\); expected one driver per degree of freedom"
+        r"drivers: the mechanism has W = 3\*3 - 2\*4 - 0 = 1 degree of "
+        r"freedom but 2 drivers; expected one driver per degree of freedom"
     )
     with pytest.raises(DecompositionError, match=match):
         assur.structure(two)
     none = Mechanism(four_bar.links, four_bar.joints, ())
-    with pytest.raises(DecompositionError, match=r"= 1 degree\(s\) of freedom but 0 "):
+    with pytest.raises(DecompositionError, match=r"= 1 degree of freedom but 0 "):
         assur.structure(none)
 
 
@@ -754,3 +755,70 @@ def test_known_links_come_in_the_order_of_the_external_pairs(name):
             joined += [x for x in sorted(links) if x not in joined]
         assert g.attached_to == tuple(joined), g
         known.update(g.links)
+
+
+def _ring(groups_on_frame: tuple[int, ...], count: int) -> assur.Mechanism:
+    """A crank driving a closed ring of ``count`` links, some pinned to the frame."""
+    lines = ["format = 1", 'name = "ring"', "[links.crank]"]
+    lines += [f"[links.d{i}]" for i in range(count)]
+
+    def joint(name: str, a: str, b: str, x: float, y: float) -> None:
+        lines.extend(
+            [f"[joints.{name}]", 'kind = "revolute"', f'links = ["{a}", "{b}"]',
+             f"at = [{x:.4f}, {y:.4f}]"]
+        )  # fmt: skip
+
+    joint("A", "ground", "crank", 0.0, 0.0)
+    joint("B", "crank", "d0", 0.2, 1.0)
+    for i in range(count):
+        t = 2 * math.pi * i / count
+        joint(f"Q{i}", f"d{i}", f"d{(i + 1) % count}", 5 + 3 * math.cos(t),
+              5 + 3 * math.sin(t))  # fmt: skip
+    for i in groups_on_frame:
+        t = 2 * math.pi * (i + 0.5) / count
+        joint(f"G{i}", "ground", f"d{i}", 5 + 4.5 * math.cos(t), 5 + 4.5 * math.sin(t))
+    lines += ["[[drivers]]", 'joint = "A"', "omega = 1.0"]
+    return assur.loads("\n".join(lines) + "\n")
+
+
+def test_a_group_larger_than_the_search_is_named_so():
+    # a ring of ten links held at every other one is one class X group (k = 10,
+    # p = 15); it was said to form "no Assur group"
+    with pytest.raises(DecompositionError) as caught:
+        assur.structure(_ring((2, 4, 6, 8), 10))
+    message = str(caught.value)
+    assert "no Assur group of at most 8 links attaches" in message
+    assert "(k = 10, p = 15: 3k = 2p) they may form one larger group" in message
+    # the same ring of eight links (class VIII, k = 8, p = 12) is found
+    found = assur.structure(_ring((2, 4, 6), 8))
+    (group,) = found.groups
+    assert (group.group_class, len(group.links)) == (8, 8)
+    assert group.label == "class VIII group (d0, d1, d2, d3, d4, d5, d6, d7)"
+
+
+def test_a_pin_entered_twice_is_named_when_the_count_goes_wrong():
+    # W = -1 with one driver: the count was given with no reason, as if a driver
+    # were missing
+    text = (EXAMPLES / "four_bar.toml").read_text()
+    start = text.index("[joints.B]")
+    block = text[start : text.index("[joints.", start + 1)]
+    mech = assur.loads(text + "\n" + block.replace("[joints.B]", "[joints.B2]"))
+    with pytest.raises(DecompositionError) as caught:
+        assur.structure(mech)
+    assert str(caught.value) == (
+        "drivers: the mechanism has W = 3*3 - 2*5 - 0 = -1 degrees of freedom but "
+        "1 driver, as joints B and B2 both join coupler and rocker: two revolute "
+        "pairs at one point are one pair counted twice; expected one driver per "
+        "degree of freedom"
+    )
+
+
+def test_a_slot_s_block_and_pin_read_as_such():
+    # "external pairs O4, B~pin": the internal names, in the report students read
+    s = assur.structure(assur.load(EXAMPLES / "slot_mechanism.toml"))
+    text = str(s)
+    assert "~" not in text.replace("B~block and B~pin", "")
+    assert "links rocker, B (block)" in text
+    assert "external pairs O4, B (pin)" in text
+    data = s.to_dict()  # the names the JSON gives: those of the columns
+    assert data["groups"][0]["links"] == ["rocker", "B~block"]

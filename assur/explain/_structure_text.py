@@ -7,7 +7,7 @@ formula with its numbers and the order of the two passes.
 from __future__ import annotations
 
 from assur._structure import Structure
-from assur._text import roman
+from assur._text import counted, roman
 from assur.explain._note import Block, Display, Heading, Items, Para
 from assur.explain._tex import plain
 from assur.report import _why
@@ -56,7 +56,8 @@ def structure_blocks(s: Structure) -> list[Block]:
         )
     blocks += [
         Para(
-            f"{len(s.drivers)} driver(s) for $W = {s.dof}$. The Assur groups, in "
+            f"{counted(len(s.drivers), 'driver')} for $W = {s.dof}$. The input "
+            f"{'link' if len(s.drivers) == 1 else 'links'} and the Assur groups, in "
             "order of attachment:"
         ),
         Items(tuple(items)),
@@ -64,7 +65,8 @@ def structure_blocks(s: Structure) -> list[Block]:
             f"Structure formula: {plain(s.formula.replace(' -> ', ' → '))}; a class "
             f"{roman(s.mechanism_class)} mechanism. The kinematic analysis goes "
             "through the groups in this order, the force analysis in the reverse "
-            "order, ending with the input link."
+            "order, ending with the input "
+            + ("link." if len(s.drivers) == 1 else "links.")
         ),
     ]
     return blocks
