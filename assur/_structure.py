@@ -105,10 +105,10 @@ class Group:
 
     @property
     def label(self) -> str:
-        """Short label such as ``"RRR (2, 3)"``; ``"class IV group (...)"`` beyond."""
+        """Short label such as ``"RRR (2, 3)"``; ``"class IV (...)"`` beyond triads."""
         kind = self.kind
         if kind == "general":
-            kind = f"class {roman(self.group_class)} group"
+            kind = f"class {roman(self.group_class)}"
         return f"{kind} ({', '.join(_public(self.links))})"
 
 

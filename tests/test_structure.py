@@ -793,7 +793,7 @@ def test_a_group_larger_than_the_search_is_named_so():
     found = assur.structure(_ring((2, 4, 6), 8))
     (group,) = found.groups
     assert (group.group_class, len(group.links)) == (8, 8)
-    assert group.label == "class VIII group (d0, d1, d2, d3, d4, d5, d6, d7)"
+    assert group.label == "class VIII (d0, d1, d2, d3, d4, d5, d6, d7)"
 
 
 def test_a_pin_entered_twice_is_named_when_the_count_goes_wrong():

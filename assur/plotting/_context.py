@@ -92,7 +92,9 @@ def _colors(plan: Plan, groups: bool) -> tuple[dict[int, str], Legend]:
     ]
     for g in plan.groups:
         bodies = tuple(plan.body(x) for x in g.links)
-        text = f"{roman(g.group_class)}, order {g.order}, {g.label}"
+        # a group beyond the triads is labelled by its class, named once here
+        label = g.label if g.kind != "general" else "group " + g.label.split(" ", 2)[2]
+        text = f"{roman(g.group_class)}, order {g.order}, {label}"
         legend.append((text, color[bodies[0]], bodies))
     return color, legend
 
