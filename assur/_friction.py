@@ -223,14 +223,23 @@ def solve_group(
     ]
     first = np.stack([_norm(r) for r in start], axis=-1)
     scale = np.max(first, axis=-1) + 1e-300
-    sizes, settled, count = _sizes(start, response, first.copy(), scale)
     # Coulomb's law may hold twice: beside the solution that grows from the
-    # frictionless one, a jammed one of huge reactions (a slider wedged in its
-    # guide). Newton's method may find the latter; the former has the Jacobian's
-    # determinant of the frictionless system's sign (it is 1 there), and is found
-    # by raising the friction from zero where the first solve did not give it
+    # frictionless one, a jammed one (a slider wedged in its guide, its normal
+    # force reversed). The first is sought with each sliding pair's normal force
+    # kept on its frictionless side, where the size is linear in it; it has the
+    # Jacobian's determinant of the frictionless system's sign (1 there)
+    signed, held_start, held_response = _signs(start, response)
+    sizes, settled, count = _sizes(
+        held_start, held_response, first.copy(), scale, 1.0, signed
+    )
+    limit = TOLERANCE * np.maximum(scale, np.max(np.abs(sizes), axis=-1))
     finite = np.isfinite(sizes).all(axis=-1)
-    ordinary = settled & (_determinant(start, response, sizes, 1.0) > 0.0)
+    ordinary = (
+        settled
+        & np.all(sizes >= -limit[:, None], axis=-1)
+        & _growing(_determinant(held_start, held_response, sizes, 1.0, signed))
+    )
+    # elsewhere the friction is raised from zero, following the solution
     doubtful = np.flatnonzero(finite & ~ordinary)
     if doubtful.size:
         found, kept, more = _raised(
@@ -264,17 +273,24 @@ def solve_group(
     )
 
 
+APART = 1e-12
+"""Relative difference of two solutions of the sizes below which they are one."""
 RAISES = 16
 """Steps in which the friction is raised from zero where the first solve found a
 jammed solution or none."""
 
 
 def _system(
-    start: list[Any], response: list[list[Any]], here: Any, weight: float
+    start: list[Any],
+    response: list[list[Any]],
+    here: Any,
+    weight: float,
+    signed: tuple[bool, ...] = (),
 ) -> tuple[list[list[Any]], list[Any]]:
     """Return the Jacobian (rows of columns of arrays) and residual of ``s = |R(s)|``.
 
-    ``weight`` scales every pair's friction (1: as given).
+    ``weight`` scales every pair's friction (1: as given). A pair ``j`` marked in
+    ``signed`` takes its one component as it is, not its size (see :func:`_signs`).
     """
     m = len(start)
     # the Jacobian as rows of columns of 1-D arrays: contiguous, unlike the
@@ -285,9 +301,12 @@ def _system(
         value = start[j].copy()
         for k in range(m):
             value += (weight * here[:, k, None]) * response[k][j]
-        size = _norm(value)
-        with np.errstate(invalid="ignore", divide="ignore"):
-            along = np.where(size[:, None] > 0.0, value / size[:, None], 0.0)
+        if signed and signed[j]:
+            size, along = value[:, 0], np.ones_like(value)
+        else:
+            size = _norm(value)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                along = np.where(size[:, None] > 0.0, value / size[:, None], 0.0)
         left.append(here[:, j] - size)
         jac.append([-weight * _dot(along, response[k][j]) for k in range(m)])
         jac[j][j] += 1.0
@@ -295,10 +314,14 @@ def _system(
 
 
 def _determinant(
-    start: list[Any], response: list[list[Any]], here: Any, weight: float
+    start: list[Any],
+    response: list[list[Any]],
+    here: Any,
+    weight: float,
+    signed: tuple[bool, ...] = (),
 ) -> Any:
     """Return the determinant of the Jacobian of ``s = |R(s)|`` at ``here``."""
-    jac, _ = _system(start, response, here, weight)
+    jac, _ = _system(start, response, here, weight, signed)
     with np.errstate(invalid="ignore", over="ignore"):
         if len(jac) <= 3:
             return _adjugate(jac)[1]
@@ -312,6 +335,7 @@ def _sizes(
     sizes: Any,
     scale: Any,
     weight: float = 1.0,
+    signed: tuple[bool, ...] = (),
 ) -> tuple[Any, Any, int]:
     """Solve ``s = |R(s)|`` by Newton's method from ``sizes`` (changed in place).
 
@@ -329,7 +353,7 @@ def _sizes(
     while count < MAX_ITERATIONS and rows.size:
         count += 1
         here = sizes[rows]
-        jac, left = _system(now_start, now_response, here, weight)
+        jac, left = _system(now_start, now_response, here, weight, signed)
         delta, good = _newton_step(jac, left)
         sizes[rows] = here + delta
         moved = functools.reduce(np.maximum, [np.abs(x) for x in delta.T])
@@ -358,8 +382,42 @@ def _raised(
     for weight in np.arange(1, RAISES + 1) / RAISES:
         sizes, settled, steps = _sizes(start, response, sizes, scale, float(weight))
         count += steps
-        held &= settled & (_determinant(start, response, sizes, float(weight)) > 0.0)
+        held &= settled & _growing(_determinant(start, response, sizes, float(weight)))
     return sizes, held, count
+
+
+def _signs(
+    start: list[Any], response: list[list[Any]]
+) -> tuple[tuple[bool, ...], list[Any], list[list[Any]]]:
+    """Return which pairs' normal forces are held on their frictionless side.
+
+    A sliding pair's reaction is its normal force ``N``, one component: with ``N``
+    turned to the sign it has without friction, its size ``|N|`` is ``N`` itself
+    while the motion keeps it there. Returns the pairs so marked and the start
+    and responses so turned.
+    """
+    signed = tuple(a.shape[-1] == 1 for a in start)
+    sides = [np.where(a[:, :1] < 0.0, -1.0, 1.0) if one else None
+             for a, one in zip(start, signed, strict=True)]  # fmt: skip
+    turned_start = [
+        a if side is None else side * a for a, side in zip(start, sides, strict=True)
+    ]
+    turned = [
+        [a if side is None else side * a for a, side in zip(row, sides, strict=True)]
+        for row in response
+    ]
+    return signed, turned_start, turned
+
+
+def _growing(det: Any) -> Any:
+    """Whether solutions with these Jacobian determinants grow from no friction.
+
+    Such a solution keeps the frictionless determinant's sign (+1). Under a huge
+    friction coefficient (a slider whose normal force friction has all but
+    cancelled, say) the jammed solution beside it differs from it by about
+    ``2 / |det|`` of the sizes: below :data:`APART` the two are one to rounding.
+    """
+    return (det > 0.0) | (det < -2.0 / APART)
 
 
 def _newton_step(jac: list[list[Any]], left: list[Any]) -> tuple[Any, Any]:

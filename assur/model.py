@@ -45,6 +45,10 @@ RESERVED_NAMES = ("angle", "driver", "shaking", "residual")
 LARGEST = 1e15
 """Largest magnitude of a number in a mechanism (m, kg, N, rad/s, ...): products of
 a few such numbers (an acceleration, a jerk, a moment) stay far from overflow."""
+MOST_FRICTION = 1e6
+"""Largest friction coefficient: beyond it the friction of a pair whose normal force
+it all but cancels is lost in the rounding of the reactions (no real pair comes
+near: a coefficient above 1 is rare)."""
 COINCIDENT = 1e-12
 """Distance under which two points coincide, m (relative to the coordinates' size
 beyond 1 m, where round-off grows with them)."""
@@ -633,7 +637,7 @@ def _validate_numbers(mech: Mechanism) -> None:
         friction, radius = joint.friction, joint.radius
         if not (
             _finite(friction)
-            and friction >= 0.0
+            and 0.0 <= friction <= MOST_FRICTION
             and (radius is None or (_finite(radius) and radius >= 0.0))
             and not (joint.kind == "revolute" and friction and not radius)
         ):
@@ -790,6 +794,12 @@ def _validate_joints(mech: Mechanism, all_links: list[str]) -> list[str]:
 def _check_friction(entry: str, joint: Joint) -> None:
     """Check a joint's friction: a coefficient, and a journal radius on a revolute."""
     _check_number(f"{entry}.friction", joint.friction, 0.0)
+    if joint.friction > MOST_FRICTION:  # type: ignore[operator]
+        _fail(
+            f"{entry}.friction",
+            f"expected a Coulomb coefficient from 0 to {MOST_FRICTION:g}, got "
+            f"{describe(joint.friction)}",
+        )
     if joint.radius is not None:
         if joint.kind != "revolute":
             _fail(

@@ -622,3 +622,33 @@ force = [5.0, -50.0]
     table = assur.forces(mech, [-0.05, 0.0, 0.04])
     assert_matches_friction_solve(mech, table)
     assert table["driver.force"][0] == pytest.approx(7.464, abs=1e-3)
+
+
+def test_a_huge_coefficient_locks_only_where_the_global_solve_finds_no_motion():
+    """A guide's friction of 1e6: where the motion goes on, friction all but
+    cancels the guide's normal force, and the jammed solution beside it differs
+    by about 1e-6. Newton's method from the frictionless sizes landed on the
+    latter, and every position was said to lock; the global solve, raising the
+    friction from zero, finds the motion at the positions kept and none where the
+    group is said to lock."""
+    text = (EXAMPLES / "slider_crank_exercise.toml").read_text()
+    start = text.index("[joints.guide]")
+    end = text.index("\n\n", start)
+    mech = assur.loads(text[:end] + "\nfriction = 1e6" + text[end:])
+    angles = np.arange(0.0, 360.0, 20.0)
+    table = assur.forces(mech, angles, skip_unassembled=True)
+    assert 0 < len(table.skipped) < len(angles)
+    assert_matches_friction_solve(mech, table)
+    frictionless = assur.forces(example("slider_crank_exercise"), table.skipped)
+    for row in range(len(frictionless)):
+        with pytest.raises(ValueError, match="did not converge"):
+            oracle.global_solve_friction(mech, _rows(frictionless, row))
+    with pytest.raises(
+        assur.ModelError, match=r"friction: expected a Coulomb .* 1e\+06"
+    ):
+        assur.loads(text[:end] + "\nfriction = 1.5e6" + text[end:])
+
+
+def _rows(table: assur.Table, row: int) -> assur.Table:
+    """Return the one-position table of ``table``'s mechanism at its row ``row``."""
+    return assur.forces(table.mechanism, table.given[row : row + 1, 0])

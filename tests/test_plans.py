@@ -143,7 +143,7 @@ FRICTION = [
     (EXAMPLES / "slider_crank_friction.toml", 45.0),
     (EXAMPLES / "four_bar_bearings.toml", 30.0),
     (EXAMPLES / "slider_crank_locking.toml", 250.0),
-    (Path(__file__).parent / "data" / "fuzz" / "offset_huge_friction.toml", 10.0),
+    (Path(__file__).parent / "data" / "friction" / "jammed_guide.toml", 76.0),
 ]
 
 
