@@ -229,18 +229,25 @@ def solve_group(
     # kept on its frictionless side, where the size is linear in it; it has the
     # Jacobian's determinant of the frictionless system's sign (1 there)
     signed, held_start, held_response = _signs(start, response)
-    sizes, settled, count = _sizes(
+    sizes, settled, growing, count = _sizes(
         held_start, held_response, first.copy(), scale, 1.0, signed
     )
     limit = TOLERANCE * np.maximum(scale, np.max(np.abs(sizes), axis=-1))
     finite = np.isfinite(sizes).all(axis=-1)
-    ordinary = (
-        settled
-        & np.all(sizes >= -limit[:, None], axis=-1)
-        & _growing(_determinant(held_start, held_response, sizes, 1.0, signed))
-    )
-    # elsewhere the friction is raised from zero, following the solution
+    ordinary = settled & growing & np.all(sizes >= -limit[:, None], axis=-1)
+    # elsewhere (a normal force that friction turns over, near where it is zero
+    # without friction) the sizes themselves, then the friction raised from zero
     doubtful = np.flatnonzero(finite & ~ordinary)
+    if doubtful.size:
+        some_start = [a[doubtful] for a in start]
+        some_response = [[a[doubtful] for a in r] for r in response]
+        found, kept, growing, more = _sizes(
+            some_start, some_response, first[doubtful].copy(), scale[doubtful]
+        )
+        kept &= growing
+        sizes[doubtful], settled[doubtful] = found, kept
+        count += more
+        doubtful = doubtful[~kept]
     if doubtful.size:
         found, kept, more = _raised(
             [a[doubtful] for a in start],
@@ -313,22 +320,6 @@ def _system(
     return jac, left
 
 
-def _determinant(
-    start: list[Any],
-    response: list[list[Any]],
-    here: Any,
-    weight: float,
-    signed: tuple[bool, ...] = (),
-) -> Any:
-    """Return the determinant of the Jacobian of ``s = |R(s)|`` at ``here``."""
-    jac, _ = _system(start, response, here, weight, signed)
-    with np.errstate(invalid="ignore", over="ignore"):
-        if len(jac) <= 3:
-            return _adjugate(jac)[1]
-        square = np.stack([np.stack(r, axis=-1) for r in jac], axis=-2)
-        return np.linalg.det(np.where(np.isfinite(square), square, 0.0))
-
-
 def _sizes(
     start: list[Any],
     response: list[list[Any]],
@@ -336,14 +327,17 @@ def _sizes(
     scale: Any,
     weight: float = 1.0,
     signed: tuple[bool, ...] = (),
-) -> tuple[Any, Any, int]:
+) -> tuple[Any, Any, Any, int]:
     """Solve ``s = |R(s)|`` by Newton's method from ``sizes`` (changed in place).
 
-    Returns the sizes, where they settled and the number of steps. A step below
-    :data:`TOLERANCE` of the larger of ``scale`` and the sizes found settles.
+    Returns the sizes, where they settled, whether they grow from no friction (the
+    determinant of the last step's Jacobian, at the solution to rounding, see
+    :func:`_growing`) and the number of steps. A step below :data:`TOLERANCE` of the
+    larger of ``scale`` and the sizes found settles.
     """
     n = sizes.shape[0]
     settled = np.zeros(n, dtype=bool)
+    determinant = np.zeros(n)
     count = 0
     # Newton converges quadratically: after a few steps only a handful of positions
     # are still moving, and only those are stepped again
@@ -354,20 +348,26 @@ def _sizes(
         count += 1
         here = sizes[rows]
         jac, left = _system(now_start, now_response, here, weight, signed)
-        delta, good = _newton_step(jac, left)
-        sizes[rows] = here + delta
+        delta, good, det = _newton_step(jac, left)
+        here += delta
+        sizes[rows] = here
         moved = functools.reduce(np.maximum, [np.abs(x) for x in delta.T])
         # a finite position whose step could not be taken has not settled
         moved[~good & np.isfinite(sum(left))] = np.inf
-        big = np.maximum(scale[rows], np.max(np.abs(sizes[rows]), axis=-1))
-        done = moved <= TOLERANCE * big
-        settled[rows[done]] = True
+        # the tolerance is relative to the frictionless reactions, or to the sizes
+        # found where friction makes them far larger
+        done = moved <= TOLERANCE * scale[rows]
+        if not done.all():
+            big = functools.reduce(np.maximum, [np.abs(x) for x in here.T])
+            done |= moved <= TOLERANCE * big
         if done.any():
+            settled[rows[done]] = True
+            determinant[rows[done]] = det[done]
             stay = ~done
             rows = rows[stay]
             now_start = [a[stay] for a in now_start]
             now_response = [[a[stay] for a in r] for r in now_response]
-    return sizes, settled, count
+    return sizes, settled, _growing(determinant), count
 
 
 def _raised(
@@ -380,9 +380,11 @@ def _raised(
     """
     sizes, held, count = first.copy(), np.ones(first.shape[0], dtype=bool), 0
     for weight in np.arange(1, RAISES + 1) / RAISES:
-        sizes, settled, steps = _sizes(start, response, sizes, scale, float(weight))
+        sizes, settled, growing, steps = _sizes(
+            start, response, sizes, scale, float(weight)
+        )
         count += steps
-        held &= settled & _growing(_determinant(start, response, sizes, float(weight)))
+        held &= settled & growing
     return sizes, held, count
 
 
@@ -420,8 +422,8 @@ def _growing(det: Any) -> Any:
     return (det > 0.0) | (det < -2.0 / APART)
 
 
-def _newton_step(jac: list[list[Any]], left: list[Any]) -> tuple[Any, Any]:
-    """Return Newton's step ``-jac^-1 left`` per position, and where it was taken.
+def _newton_step(jac: list[list[Any]], left: list[Any]) -> tuple[Any, Any, Any]:
+    """Return Newton's step ``-jac^-1 left``, where it was taken, its determinant.
 
     ``jac[j][k]`` and ``left[j]`` are arrays over the positions. Up to three pairs
     with friction (every dyad) are solved by Cramer's rule, several times faster than
@@ -451,7 +453,7 @@ def _newton_step(jac: list[list[Any]], left: list[Any]) -> tuple[Any, Any]:
                 ..., 0
             ]
     delta[~good] = 0.0
-    return delta, good
+    return delta, good, det
 
 
 def _adjugate(a: list[list[Any]]) -> tuple[list[list[Any]], Any]:
