@@ -225,3 +225,16 @@ def test_a_prp_polygon_has_no_tangential_parts() -> None:
     assert "tangential" not in polygon
     assert polygon.startswith("Force polygon of the group: the known forces and two ")
     assert r"\sum \vec F^{t}" not in note
+
+
+@pytest.mark.parametrize(
+    ("path", "angle"),
+    [(EXAMPLES / "slot_mechanism.toml", 50.0),  # the slot's block: no load
+     (EXAMPLES / "five_bar_two_cranks.toml", [60.0, 120.0]),
+     (EXAMPLES / "class3.toml", 100.0)],
+    ids=lambda x: getattr(x, "stem", str(x)),
+)  # fmt: skip
+def test_a_sum_of_no_terms_is_written_once(path: Path, angle) -> None:
+    # a link with no known load wrote "\sum M_C = 0 = 0"
+    note = str(explain(assur.load(path), angle))
+    assert "= 0 = 0" not in note

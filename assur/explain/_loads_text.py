@@ -212,7 +212,9 @@ def moment_line(loads: list[Load], about: Array, label: str) -> tuple[str, float
             pieces.append(par(x.couple))
         if pieces:
             parts.append(" + ".join(pieces))
-    body = " + ".join(f"[{p}]" for p in parts) or "0"
+    if not parts:  # no load on the link: nothing to sum ("= 0 = 0")
+        return f"\\sum M_{{{label}}} = 0", total_moment
+    body = " + ".join(f"[{p}]" for p in parts)
     return f"\\sum M_{{{label}}} = {body} = {num(total_moment)}", total_moment
 
 
