@@ -72,9 +72,21 @@ LONG_SWEEP = 100_000
 QUIET = "no progress bars, no 'wrote ...' lines or notes (errors and warnings stay)"
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse's parser, except that a failed write of its help is not ignored.
+
+    argparse drops the OSError of ``--help`` written to a full disk (exit 0, no
+    help); here it reaches :func:`main`, which says so (exit 2).
+    """
+
+    def _print_message(self, message: str, file: Any = None) -> None:
+        if message:
+            (file or sys.stderr).write(message)
+
+
 def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
     """Return the parser and the names of its commands."""
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="assur",
         description="Kinetostatic analysis of planar linkages, built on Assur groups.",
     )
@@ -231,13 +243,17 @@ def _main(argv: list[str]) -> int:
             f"assur: error: unknown command {describe(argv[0])}{hint}", file=sys.stderr
         )
         return 2
+    handler = None
     try:
-        args = parser.parse_args(argv)
-    except SystemExit as exc:
-        return int(exc.code or 0)
-    handler = COMMANDS.get(args.command) or globals()[f"_cmd_{args.command}"]
-    try:
-        status = _run(handler, args)
+        try:
+            args = parser.parse_args(argv)
+        except SystemExit as exc:
+            # --help was printed (or a usage error): it must reach its reader
+            status = int(exc.code or 0)
+        else:
+            handler = COMMANDS.get(args.command) or globals()[f"_cmd_{args.command}"]
+        if handler is not None:
+            status = _run(handler, args)
         sys.stdout.flush()
     except BrokenPipeError:
         # the reader (``| head``) has gone: stop quietly, as command-line tools do

@@ -465,3 +465,13 @@ def test_a_closed_standard_output(tmp_path: Path):
         assert result.stderr == (
             "assur: error: standard output: cannot write (standard output is closed)\n"
         )
+
+
+@pytest.mark.parametrize("command", ["--help", "forces --help"])
+def test_help_to_a_full_disk_is_an_error(tmp_path: Path, command: str):
+    # argparse dropped the write's error: no help, exit 0
+    result = shell(tmp_path, f"{command} > /dev/full")
+    assert result.returncode == 2
+    assert result.stderr == (
+        "assur: error: standard output: cannot write (No space left on device)\n"
+    )
