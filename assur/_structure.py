@@ -381,14 +381,9 @@ def _miscount(topo: Topology, w: int, mech: Mechanism) -> str:
     A joint counted twice is named; a count of none or fewer is said to be one.
     """
     index = _index(topo)
-    parallel = _parallel(index, set(index.links))
+    parallel = _parallel_text(index, set(index.links))
     if parallel is not None:
-        first, second = parallel
-        a, b = _public(first.links)
-        return (
-            f", as joints {first.name} and {second.name} both join {a} and {b}: "
-            f"{_parallel_reason(index, first, second)}"
-        )
+        return f", as {parallel}"
     if w <= 0:
         return (
             " (none: a rigid chain, or a link repeating a constraint, such as a "
@@ -591,14 +586,11 @@ def _leftover(
         "(3k = 2p, every part movable) on the known links "
         f"{listing(sorted(known))}"
     )
-    parallel = _parallel(index, unknown)
+    parallel = _parallel_text(index, unknown)
     if parallel is not None:
-        first, second = parallel
-        a, b = _public(first.links)
         return (
-            f"{head}, because joints {first.name} and {second.name} both join {a} "
-            f"and {b}: {_parallel_reason(index, first, second)}; expected one joint "
-            "between two links (or one link in place of two welded ones)"
+            f"{head}, because {parallel}; expected one joint between two links (or "
+            "one link in place of two welded ones)"
         )
     stuck = [r for r in rigid if unknown.issuperset(r.links)]
     if stuck:
@@ -620,6 +612,19 @@ def _leftover(
             f"not solve; expected groups of at most {MAX_GROUP_LINKS} links"
         )
     return f"{head}; expected a chain made of Assur groups"
+
+
+def _parallel_text(index: _Index, unknown: set[str]) -> str | None:
+    """Return what the first two pairs between the same two links do, or None."""
+    parallel = _parallel(index, unknown)
+    if parallel is None:
+        return None
+    first, second = parallel
+    a, b = _public(first.links)
+    return (
+        f"joints {first.name} and {second.name} both join {a} and {b}: "
+        f"{_parallel_reason(index, first, second)}"
+    )
 
 
 def _parallel(index: _Index, unknown: set[str]) -> tuple[Pair, Pair] | None:
