@@ -165,6 +165,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
             write_stdout(_header(mech, _startup_lines(run)) + "\n")
         return 0
     rows = _Rows(mech, state, angles, args.forces)
+    rows.check()
     # the files first, as a set: standard output read by a pipe may go away
     written = []
     with contextlib.ExitStack() as stack:
@@ -215,6 +216,7 @@ class _Rows:
 
     def __init__(self, mech: Any, state: Any, angles: Array, forces: bool) -> None:
         self.mech, self.state, self.angles, self.forces = mech, state, angles, forces
+        self.checked = False
         model, steady = state
         # the figures of the steady state: the same whatever the rows
         self.first = dynamics_rows(mech, model, steady, angles[:1])
@@ -228,16 +230,43 @@ class _Rows:
         result = dynamics_rows(self.mech, model, steady, self.angles[start:stop])
         if not self.forces:
             return result
-        motion = assur.forces(
-            self.mech,
-            result["angle"],
-            omega=result["driver.omega"],
-            epsilon=result["driver.epsilon"],
-        )
+        with warnings.catch_warnings():
+            if self.checked:  # said once by the check of the whole sweep
+                warnings.simplefilter("ignore", AssurWarning)
+            motion = assur.forces(
+                self.mech,
+                result["angle"],
+                omega=result["driver.omega"],
+                epsilon=result["driver.epsilon"],
+            )
         return _Joined(result, motion)
 
     def __len__(self) -> int:
         return int(self.angles.shape[0])
+
+    def check(self) -> None:
+        """Solve the forces over the whole sweep first, the balancing torque alone.
+
+        A position that friction locks is then an error before any row is written,
+        counted over the whole sweep, and a warning is given once, not per slice.
+        """
+        if not self.forces:
+            return
+        import assur
+
+        model, steady = self.state
+        parts = [
+            dynamics_rows(self.mech, model, steady, self.angles[i : i + SLICE])
+            for i in range(0, len(self), SLICE)
+        ]
+        assur.forces(
+            self.mech,
+            np.concatenate([p["angle"] for p in parts]),
+            omega=np.concatenate([p["driver.omega"] for p in parts]),
+            epsilon=np.concatenate([p["driver.epsilon"] for p in parts]),
+            columns=["driver.torque"],
+        )
+        self.checked = True
 
 
 def _stream(rows: _Rows, writer: Any, args: argparse.Namespace) -> None:

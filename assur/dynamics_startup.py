@@ -26,7 +26,8 @@ from assur.model import Mechanism, Motor, validate_motor
 __all__ = ["Startup", "startup"]
 
 RTOL = 1e-10
-"""Relative tolerance of the time integration (scipy's DOP853)."""
+"""Relative tolerance of the time integration (scipy's DOP853, or Radau under a stiff
+motor)."""
 PERIODIC_RTOL = 1e-8
 """The motion is periodic when the speed at the reference pose, extrapolated from the
 last turns, changes by less than this fraction of itself."""
@@ -137,7 +138,8 @@ def startup(
     -----
     The state is the crank angle and speed; the reduced inertia ``J``, its slope and
     the reduced torque ``M`` are the periodic interpolants of
-    :func:`assur.dynamics_reduced.reduce`. The integration (DOP853, relative
+    :func:`assur.dynamics_reduced.reduce`. The integration (DOP853, or Radau
+    under a motor whose speed relaxes a thousand times a turn; relative
     tolerance :data:`RTOL`) stops at every turn; the motion is periodic when the
     speed there, extrapolated geometrically from the last turns, changes by less
     than :data:`PERIODIC_RTOL`.

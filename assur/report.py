@@ -43,7 +43,7 @@ def structure_report(s: Structure) -> str:
         f"2*{p5} - {p4} = {s.dof}"
     )
     lines.append(
-        f"  n = {n} moving links, p5 = {p5} lower pairs, p4 = "
+        f"  n = {counted(n, 'moving link')}, p5 = {counted(p5, 'lower pair')}, p4 = "
         f"{counted(p4, 'higher pair')}; {counted(len(s.drivers), 'driver')}."
     )
     for slot in s.slots:

@@ -413,3 +413,22 @@ def test_a_long_sweep_is_written_by_slices(capsys, monkeypatch, tmp_path: Path):
         from_csv = np.array([float(line.split(",")[column]) for line in lines])
         np.testing.assert_allclose(from_csv, table[name], rtol=1e-11, atol=0)
     assert data["dynamics"] == whole.summary()
+
+
+@pytest.mark.parametrize("output", [["--csv", "-"], ["--json"], []])
+def test_a_lock_in_a_later_slice_writes_nothing(capsys, monkeypatch, tmp_path, output):
+    from assur import dynamics_cli
+
+    # the slices before it were on standard output already (a JSON never closed);
+    # the readable table showed 400 rows and said nothing of the lock beyond them
+    monkeypatch.setattr(dynamics_cli, "SLICE", 7)
+    monkeypatch.setattr(dynamics_cli, "ROWS_SHOWN", 5)
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    path = tmp_path / "lock.toml"
+    path.write_text(text.replace("friction = 0.8", "friction = 1.3"))
+    argv = ["dynamics", path, "--forces", "--flywheel", "1", "--angles", "200:260:2"]
+    line = one_error(capsys, *argv, *output, "-q")
+    # counted over the whole sweep of 31 positions, not a slice of 7
+    assert (
+        "its friction locks it at driver position 248 deg (7 of 31 positions)" in line
+    )
