@@ -547,7 +547,7 @@ RAISES = 12
 
 
 def global_solve_friction(
-    mech: assur.Mechanism, table: assur.Table
+    mech: assur.Mechanism, table: assur.Table, raises: int = RAISES
 ) -> tuple[Reactions, dict[str, np.ndarray]]:
     """The global solve with Coulomb friction: every link's three equations at once,
     one nonlinear system per position, by Newton's method from the frictionless
@@ -557,7 +557,7 @@ def global_solve_friction(
     link; a prismatic (or slot) joint's the force ``-f |N| sign(v)`` along its slide
     line at its point. Returns the reactions (a prismatic joint's force includes its
     friction) and each joint's friction. The solution is the one that grows from the
-    frictionless one as the friction is raised from zero.
+    frictionless one as the friction is raised from zero, in ``raises`` steps.
     """
     n = len(table)
     links = [lk.name for lk in mech.links]
@@ -683,7 +683,7 @@ def global_solve_friction(
         # motion that grows from no friction): the friction is raised from zero in
         # small steps, each solve starting from the last, to follow the latter
         x, good = start(r, ideal), True
-        for weight in np.arange(1, RAISES + 1) / RAISES:
+        for weight in np.arange(1, raises + 1) / raises:
             x, good = settled(x, r, float(weight))
             if not good:
                 break
