@@ -130,7 +130,7 @@ def slices(
                 raise
         if check and not skip and start == 0:
             # after the first slice, so that its other faults (no masses) come first
-            _check(mech, given[chunk:], given, chunk)
+            _check(mech, given[chunk:], given, chunk, forces)
         near.add(caught, part)
         skipped.add(table.skipped)
         angles = angles or _Angles(table)
@@ -152,20 +152,31 @@ def _told(advance: Callable[[int], None] | None) -> Any:
     return callback
 
 
-def _check(mech: Any, rest: Array, given: Array, chunk: int) -> None:
+def _check(
+    mech: Any, rest: Array, given: Array, chunk: int, forces: bool = False
+) -> None:
     """Solve the positions of ``rest`` of ``given`` by slices; raise as the whole sweep.
 
-    Only the positions: a small part of the work of the analysis.
+    Only the positions, a small part of the work of the analysis; with ``forces``
+    and friction in a joint, the balancing loads too (friction may lock).
     """
+    from assur.analysis import forces as force_table
     from assur.analysis import kinematics
 
+    rubbing = forces and any(j.friction > 0.0 for j in mech.joints)
     for start in range(0, len(rest), chunk):
+        part = rest[start : start + chunk]
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # given once, by the analysis itself
             try:
-                kinematics(mech, rest[start : start + chunk], columns=["angle"])
+                if rubbing:
+                    force_table(mech, part, columns=["driver.torque"])
+                else:
+                    kinematics(mech, part, columns=["angle"])
             except (AssemblyError, SingularConfigurationError) as err:
                 _raise_as_whole(mech, given, False, err)
+            except SelfLockingError as err:
+                _raise_as_whole(mech, given, False, err, forces=True)
 
 
 def _raise_as_whole(

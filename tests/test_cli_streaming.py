@@ -513,3 +513,21 @@ def test_friction_that_locks_is_counted_over_the_whole_sweep(
     assert status == 2
     err = capsys.readouterr().err
     assert err == f"assur: error: {path}: {whole.value}\n"
+
+
+@pytest.mark.parametrize("output", [["--json"], ["--csv", "-"]])
+def test_friction_locking_in_a_later_slice_writes_nothing(
+    capsys, monkeypatch, tmp_path, output
+):
+    from assur import _cli_sweep
+
+    # the check of the whole sweep solved positions only: the slices before the
+    # lock went to standard output (206 MB of a JSON never closed), then the error
+    monkeypatch.setattr(_cli_sweep, "CHUNK", 8)  # 31 positions: four slices
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    path = tmp_path / "lock.toml"
+    path.write_text(text.replace("friction = 0.8", "friction = 1.3"))
+    status = cli.main(["forces", str(path), "--angles", "200:260:2", *output])
+    out, err = capsys.readouterr()
+    assert (status, out) == (2, "")
+    assert "its friction locks it at driver position 248 deg (7 of 31 positions)" in err
