@@ -34,7 +34,6 @@ __all__ = [
     "write_bytes",
     "write_stdout",
     "write_text",
-    "write_texts",
 ]
 
 NAME_KEPT = 80
@@ -78,24 +77,6 @@ def write_bytes(path: str | os.PathLike[str], data: bytes) -> None:
     """
     with output_path(path) as temporary, open(temporary, "wb") as stream:
         write_all(stream, data)
-
-
-def write_texts(files: list[tuple[str | os.PathLike[str], str]]) -> None:
-    """Write each ``(path, text)`` as UTF-8, the set whole or not at all.
-
-    Every file is written to its temporary first; none replaces its path unless all
-    were written (a full disk, say, leaves every old file as it was).
-
-    Raises
-    ------
-    OutputError
-        When a file cannot be written.
-    """
-    with contextlib.ExitStack() as stack:
-        for path, text in files:
-            temporary = stack.enter_context(output_path(path))
-            with open(temporary, "wb") as stream:
-                write_all(stream, text.encode("utf-8"))
 
 
 def write_all(stream: Any, data: bytes) -> None:

@@ -38,7 +38,6 @@ from assur._output import (
     stdout_writer,
     write_all,
     write_stdout,
-    write_texts,
 )
 from assur._progress import progress
 from assur._tableio import CsvWriter, JsonWriter
@@ -157,7 +156,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     if run is not None and args.startup_csv is not None:
         startup_file.append((args.startup_csv, startup_csv(run), len(run.time), 3))
     if state is None:
-        _write_files(args, startup_file)
+        _write_files(args, startup_file, None)
         if args.json:
             document = {"name": mech.name, "startup": _startup_data(run)}
             write_stdout(json.dumps(document) + "\n")
@@ -167,23 +166,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     rows = _Rows(mech, state, angles, args.forces)
     rows.check()
     # the files first, as a set: standard output read by a pipe may go away
-    written = []
-    with contextlib.ExitStack() as stack:
-        for path, text, count, columns in startup_file:
-            temporary = stack.enter_context(output_path(path))
-            with open(temporary, "wb") as stream:
-                write_all(stream, text.encode("utf-8"))
-            written.append((path, count, columns))
-        if args.csv and args.csv != "-":
-            temporary = stack.enter_context(output_path(args.csv))
-            with open(temporary, "wb") as stream:
-                _stream(
-                    rows,
-                    CsvWriter(lambda data: write_all(stream, data), rows.names),
-                    args,
-                )
-            written.append((args.csv, len(angles), len(rows.names)))
-    _wrote(args, written)
+    _write_files(args, startup_file, rows)
     if args.json or args.csv == "-":
         write, encode = stdout_writer()
         try:
@@ -363,11 +346,27 @@ class _Joined:
 
 
 def _write_files(
-    args: argparse.Namespace, files: list[tuple[Any, str, int, int]]
+    args: argparse.Namespace, files: list[tuple[Any, str, int, int]], rows: Any
 ) -> None:
-    """Write ``(path, text, rows, columns)`` files, whole or none of them; say so."""
-    write_texts([(path, text) for path, text, _, _ in files])
-    _wrote(args, [(path, rows, columns) for path, _, rows, columns in files])
+    """Write the files asked for, whole or none of them; say so.
+
+    ``files`` holds ``(path, text, rows, columns)`` (the start-up's samples); with
+    ``rows`` (a :class:`_Rows`) the table goes to ``--csv PATH`` slice by slice.
+    """
+    written = []
+    with contextlib.ExitStack() as stack:
+        for path, text, count, columns in files:
+            temporary = stack.enter_context(output_path(path))
+            with open(temporary, "wb") as stream:
+                write_all(stream, text.encode("utf-8"))
+            written.append((path, count, columns))
+        if rows is not None and args.csv and args.csv != "-":
+            temporary = stack.enter_context(output_path(args.csv))
+            with open(temporary, "wb") as stream:
+                writer = CsvWriter(lambda data: write_all(stream, data), rows.names)
+                _stream(rows, writer, args)
+            written.append((args.csv, len(rows), len(rows.names)))
+    _wrote(args, written)
 
 
 def _wrote(args: argparse.Namespace, written: list[tuple[Any, int, int]]) -> None:

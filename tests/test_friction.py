@@ -535,6 +535,9 @@ def test_a_lock_is_counted_over_every_slice():
     assert kept.skipped.min() < 270.0 < kept.skipped.max()
 
 
+FRICTION_DATA = Path(__file__).parent / "data" / "friction"
+
+
 def _locking(coefficient: float) -> assur.Mechanism:
     """The example near self-locking, its guide's friction set to ``coefficient``."""
     text = (EXAMPLES / "slider_crank_locking.toml").read_text()
@@ -569,58 +572,7 @@ def test_the_motion_that_grows_from_no_friction(coefficient, angles):
 
 def test_a_prismatic_driver_near_its_jam():
     # the ram's guide (friction 3) wedged: driver.force -45.04 N for 7.464
-    mech = assur.loads(
-        """
-format = 1
-name = "Slider pushing a ram up a steep guide"
-gravity = { g = [0.0, -9.81] }
-[links.slider]
-mass = 1.0
-center = [0.0, 0.0]
-inertia = 0.001
-[links.rod]
-axis = ["P", "Q"]
-mass = 0.5
-center = { from = "P", toward = "Q", distance = 0.1 }
-inertia = 0.002
-[links.ram]
-mass = 0.8
-center = "Q"
-inertia = 0.001
-[joints.guide]
-kind = "prismatic"
-links = ["ground", "slider"]
-at = [0.0, 0.0]
-axis = [1.0, 0.0]
-friction = 0.2
-[joints.P]
-kind = "revolute"
-links = ["slider", "rod"]
-at = [0.0, 0.0]
-friction = 0.1
-radius = 0.01
-[joints.Q]
-kind = "revolute"
-links = ["rod", "ram"]
-at = [0.12, 0.16]
-friction = 0.12
-radius = 0.008
-[joints.vg]
-kind = "prismatic"
-links = ["ground", "ram"]
-at = [0.12, 0.16]
-axis = [0.1, 1.0]
-friction = 3.0
-[[drivers]]
-joint = "guide"
-omega = -0.5
-epsilon = 3.0
-[[loads]]
-link = "ram"
-at = "Q"
-force = [5.0, -50.0]
-"""
-    )
+    mech = assur.load(FRICTION_DATA / "ram_up_a_steep_guide.toml")
     table = assur.forces(mech, [-0.05, 0.0, 0.04])
     assert_matches_friction_solve(mech, table)
     assert table["driver.force"][0] == pytest.approx(7.464, abs=1e-3)
@@ -659,7 +611,7 @@ def _rows(table: assur.Table, row: int) -> assur.Table:
 def test_a_motion_followed_in_finer_steps_is_no_lock():
     # 16 steps of friction left the motion (Newton landed on the jammed solution):
     # "locks at 132 deg", where the motion goes on, as the global solve finds
-    mech = assur.load(Path(__file__).parent / "data" / "friction" / "rpp_steep.toml")
+    mech = assur.load(FRICTION_DATA / "rpp_steep.toml")
     table = assur.forces(mech, [131.0, 132.0, 134.5])
     assert table["driver.torque"][1] == pytest.approx(-16.988, abs=1e-3)
     # the oracle too needs finer steps to stay on the motion here
