@@ -472,7 +472,7 @@ def _attach(index: _Index, known: set[str]) -> Iterator[Group]:
                 break
             seeds = pending[k] & unknown
             pending[k] = set()
-            for subset in _connected(index, unknown, seeds, k):
+            for subset in _connected(index, unknown, seeds, k, known):
                 group, part = _is_group(index, subset, known)
                 if group:
                     key = tuple(sorted(index.rank[x] for x in subset))
@@ -506,11 +506,26 @@ def _pop(
 
 
 def _connected(
-    index: _Index, unknown: set[str], seeds: set[str], k: int
+    index: _Index,
+    unknown: set[str],
+    seeds: set[str],
+    k: int,
+    known: set[str] | None = None,
 ) -> set[frozenset[str]]:
-    """All connected sets of ``k`` unknown links holding at least one of ``seeds``."""
+    """All connected sets of ``k`` unknown links holding at least one of ``seeds``.
+
+    Given the ``known`` links, only those that may be Assur groups on them: a set
+    is not grown past a part with no mobility on the known links (2p >= 3k), which
+    would be a proper part of every larger set. Without that, a link held twice
+    (a pin doubled) next to a link with many neighbours made the search of a
+    failing decomposition grow every set around it, for seconds to minutes.
+    """
     frontier = {frozenset([seed]) for seed in seeds}
     for _ in range(k - 1):
+        if known is not None:
+            frontier = {
+                s for s in frontier if 2 * len(_counted(index, s, known)) < 3 * len(s)
+            }
         grown = set()
         for subset in frontier:
             for node in subset:
