@@ -377,50 +377,69 @@ def _raised(
 
     Returns the sizes, where the solution held all the way (a fold on the way, the
     determinant through zero, is where the group locks) and the Newton steps. The
-    positions it leaves in :data:`RAISES` steps are followed again in eight times
-    as many: a step too long may land on the jammed solution, or cycle where a
-    normal force turns over.
+    positions it leaves in :data:`RAISES` steps are followed again in steps eight
+    times shorter, from the last friction at which they held: a step too long may
+    land on the jammed solution, or cycle where a normal force turns over.
     """
-    sizes, held, count = first.copy(), np.zeros(first.shape[0], dtype=bool), 0
-    left = np.arange(first.shape[0])
+    n = first.shape[0]
+    sizes, held, count = first.copy(), np.zeros(n, dtype=bool), 0
+    reached = np.zeros(n, dtype=int)
+    left = np.arange(n)
     for raises in (RAISES, 8 * RAISES):
         part = [[a[left] for a in r] for r in response]
-        found, kept, more = _followed(
-            [a[left] for a in start], part, first[left], scale[left], raises
-        )
+        found, kept, last, more = _followed(
+            [a[left] for a in start], part, sizes[left], scale[left], raises,
+            reached[left],
+        )  # fmt: skip
         sizes[left], held[left] = found, kept
         count += more
         left = left[~kept]
+        reached[left] = 8 * last[~kept]
         if not left.size:
             break
     return sizes, held, count
 
 
 def _followed(
-    start: list[Any], response: list[list[Any]], first: Any, scale: Any, raises: int
-) -> tuple[Any, Any, int]:
-    """Raise the friction from zero in ``raises`` steps (see :func:`_raised`).
+    start: list[Any],
+    response: list[list[Any]],
+    sizes: Any,
+    scale: Any,
+    raises: int,
+    begin: Any,
+) -> tuple[Any, Any, Any, int]:
+    """Raise the friction in ``raises`` steps (see :func:`_raised`).
 
-    A position the solution leaves is dropped from the later steps: it locks.
+    Each position starts at step ``begin`` (0: no friction), from its ``sizes``
+    there. A position the solution leaves is dropped from the later steps: it
+    locks, or is followed again in shorter steps. Returns the sizes at the last
+    step each position held, whether it held to the end, that step, and the
+    Newton steps taken.
     """
-    sizes, held, count = first.copy(), np.ones(first.shape[0], dtype=bool), 0
-    rows = np.arange(first.shape[0])
-    for weight in np.arange(1, raises + 1) / raises:
+    sizes = sizes.copy()
+    held = np.ones(sizes.shape[0], dtype=bool)
+    last = begin.copy()
+    rows = np.zeros(0, dtype=int)
+    count = 0
+    for step in range(1, raises + 1):
+        # the positions that held up to the step before join here
+        rows = np.concatenate((rows, np.flatnonzero(begin == step - 1)))
+        if not rows.size:
+            continue
         found, settled, growing, steps = _sizes(
             [a[rows] for a in start],
             [[a[rows] for a in r] for r in response],
             sizes[rows],
             scale[rows],
-            float(weight),
+            step / raises,
         )
         count += steps
-        sizes[rows] = found
         on = settled & growing
+        sizes[rows[on]] = found[on]
+        last[rows[on]] = step
         held[rows[~on]] = False
         rows = rows[on]
-        if not rows.size:
-            break
-    return sizes, held, count
+    return sizes, held, last, count
 
 
 def _signs(
