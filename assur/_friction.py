@@ -241,9 +241,11 @@ def solve_group(
     if doubtful.size:
         some_start = [a[doubtful] for a in start]
         some_response = [[a[doubtful] for a in r] for r in response]
+        # a position that has not settled in a few steps is left to the raising
         found, kept, growing, more = _sizes(
-            some_start, some_response, first[doubtful].copy(), scale[doubtful]
-        )
+            some_start, some_response, first[doubtful].copy(), scale[doubtful],
+            most=QUICK,
+        )  # fmt: skip
         kept &= growing
         sizes[doubtful], settled[doubtful] = found, kept
         count += more
@@ -285,6 +287,10 @@ APART = 1e-12
 RAISES = 16
 """Steps in which the friction is raised from zero where the first solve found a
 jammed solution or none."""
+QUICK = 12
+"""Newton steps after which a solve that has a safer one behind it gives up: Newton
+settles in a handful where it converges, and where the solution does not exist (a
+group that locks) it wanders until the limit."""
 
 
 def _system(
@@ -327,8 +333,11 @@ def _sizes(
     scale: Any,
     weight: float = 1.0,
     signed: tuple[bool, ...] = (),
+    most: int = MAX_ITERATIONS,
 ) -> tuple[Any, Any, Any, int]:
     """Solve ``s = |R(s)|`` by Newton's method from ``sizes`` (changed in place).
+
+    At most ``most`` steps: a position still moving then has not settled.
 
     Returns the sizes, where they settled, whether they grow from no friction (the
     determinant of the last step's Jacobian, at the solution to rounding, see
@@ -344,7 +353,7 @@ def _sizes(
     rows = np.arange(n)
     # the start and responses of the positions still moving (all of them at first)
     now_start, now_response = start, response
-    while count < MAX_ITERATIONS and rows.size:
+    while count < most and rows.size:
         count += 1
         here = sizes[rows]
         jac, left = _system(now_start, now_response, here, weight, signed)
@@ -385,11 +394,12 @@ def _raised(
     sizes, held, count = first.copy(), np.zeros(n, dtype=bool), 0
     reached = np.zeros(n, dtype=int)
     left = np.arange(n)
-    for raises in (RAISES, 8 * RAISES):
+    # the first pass gives up on a step quickly: the second takes it again
+    for raises, most in ((RAISES, QUICK), (8 * RAISES, MAX_ITERATIONS)):
         part = [[a[left] for a in r] for r in response]
         found, kept, last, more = _followed(
             [a[left] for a in start], part, sizes[left], scale[left], raises,
-            reached[left],
+            reached[left], most,
         )  # fmt: skip
         sizes[left], held[left] = found, kept
         count += more
@@ -407,11 +417,13 @@ def _followed(
     scale: Any,
     raises: int,
     begin: Any,
+    most: int,
 ) -> tuple[Any, Any, Any, int]:
     """Raise the friction in ``raises`` steps (see :func:`_raised`).
 
     Each position starts at step ``begin`` (0: no friction), from its ``sizes``
-    there. A position the solution leaves is dropped from the later steps: it
+    there, with at most ``most`` Newton steps each. A position the solution leaves
+    is dropped from the later steps: it
     locks, or is followed again in shorter steps. Returns the sizes at the last
     step each position held, whether it held to the end, that step, and the
     Newton steps taken.
@@ -432,6 +444,7 @@ def _followed(
             sizes[rows],
             scale[rows],
             step / raises,
+            most=most,
         )
         count += steps
         on = settled & growing
