@@ -142,10 +142,7 @@ def table_values(
     if table.over == "driver":
         first = plan.drivers[0]
         if first.kind == "R":
-            at = np.degrees(drive[:, 0])
-            return [
-                np.interp(at, xs, np.asarray(v), period=360.0) for v in table.values
-            ]
+            return _periodic(xs, table.values, np.degrees(drive[:, 0]))
         at, what = drive[:, 0], "the driver's position"
     else:
         at, what = slides[table.over], f"the slide of joint {table.over!r}"
@@ -159,6 +156,26 @@ def table_values(
         )
         raise ModelError(msg)
     return [np.interp(at, xs, np.asarray(v)) for v in table.values]
+
+
+def _periodic(xs: Array, values: Any, at: Array) -> list[Array]:
+    """Interpolate a table over one turn of a crank at angles ``at`` (deg).
+
+    An angle is read within the turn that starts at the table's first position;
+    after its last position the table runs back to its first value, a turn on,
+    unless it reaches there itself: a table from 0 to 360 whose ends differ (a
+    load that grows over the turn, say) jumps back at 0.
+    """
+    turn = xs[0] + np.remainder(at - xs[0], 360.0)
+    # a remainder rounded up to a whole turn is the turn's start
+    turn[turn >= xs[0] + 360.0] = xs[0]
+    closed = xs[-1] >= xs[0] + 360.0
+    grid = xs if closed else np.append(xs, xs[0] + 360.0)
+    out = []
+    for v in values:
+        ys = np.asarray(v, dtype=float)
+        out.append(np.interp(turn, grid, ys if closed else np.append(ys, ys[0])))
+    return out
 
 
 def _never_turning(plan: Plan) -> set[int]:

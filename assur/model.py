@@ -930,6 +930,16 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
     xs = np.asarray(table.table, dtype=float)
     if np.any(np.diff(xs) <= 0):
         _fail(f"{entry}.table", "expected strictly increasing positions")
+    kinds = {j.name: j.kind for j in mech.joints}
+    turning = bool(mech.drivers) and kinds.get(mech.drivers[0].joint) == "revolute"
+    if table.over == "driver" and turning and xs[-1] - xs[0] > 360.0 * (1 + 1e-12):
+        # the crank's position is read within one turn: two entries a turn apart
+        # would give one position two values
+        _fail(
+            f"{entry}.table",
+            f"spans {xs[-1] - xs[0]:g} deg; expected positions within one turn (the "
+            "last at most 360 deg after the first), read modulo 360",
+        )
     values = table.values
     if not isinstance(values, tuple) or len(values) != ncomp:
         count = len(values) if isinstance(values, tuple) else describe(values)

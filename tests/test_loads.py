@@ -112,3 +112,34 @@ def test_balancing_torque_of_a_pure_torque_load():
     np.testing.assert_allclose(t["driver.torque"], 3.5, rtol=1e-12)
     np.testing.assert_allclose(t["A.F"], 0.0, atol=1e-12)
     assert math.isclose(float(t["driver.torque_check"][0]), 3.5, rel_tol=1e-12)
+
+
+def test_a_table_over_a_turn_whose_ends_differ_jumps_back_at_zero():
+    # a torque growing over the turn (0 at 0 deg, 3.6 N m at 360): the ends a turn
+    # apart were taken for one position, the table read backwards from 0 to 360
+    ramp = LoadTable("driver", (0.0, 360.0), ((0.0, 3.6),))
+    at = np.array([0.0, 60.0, 90.0, 180.0, 270.0, 359.0, 360.0, 450.0, -90.0])
+    t = assur.forces(crank_slider(Load("crank", torque=ramp)), at)
+    load = np.remainder(at, 360.0) / 100.0  # the table read modulo 360, N m
+    np.testing.assert_allclose(t["driver.torque"], -load, atol=1e-12)
+
+
+def test_a_table_short_of_a_turn_runs_back_to_its_first_value():
+    # positions from 30 to 210 deg: from 210 on, back to the value at 30, a turn on
+    table = LoadTable("driver", (30.0, 120.0, 210.0), ((1.0, 4.0, -2.0),))
+    at = np.array([30.0, 75.0, 120.0, 210.0, 300.0, 390.0, 0.0, 15.0, -345.0])
+    t = assur.forces(crank_slider(Load("crank", torque=table)), at)
+    # by hand: 1 + 3 (a - 30) / 90 up to 120, 4 - 6 (a - 120) / 90 up to 210, then
+    # -2 + 3 (a - 210) / 180 up to 390
+    expected = [1.0, 2.5, 4.0, -2.0, -0.5, 1.0, 0.5, 0.75, 0.75]
+    np.testing.assert_allclose(t["driver.torque"], np.negative(expected), atol=1e-12)
+
+
+def test_a_table_over_more_than_a_turn_of_the_crank_is_refused():
+    table = LoadTable("driver", (0.0, 360.0, 720.0), ((0.0, 1.0, 2.0),))
+    with pytest.raises(assur.ModelError) as caught:
+        crank_slider(Load("crank", torque=table)).validate()
+    assert str(caught.value) == (
+        "loads[0].torque.table: spans 720 deg; expected positions within one turn "
+        "(the last at most 360 deg after the first), read modulo 360"
+    )
