@@ -36,7 +36,6 @@ from assur._cli_common import (
     positions,
     terminal,
 )
-from assur._cli_sweep import Skipped, Slice, slices
 from assur._output import (
     StdoutError,
     finishing,
@@ -45,6 +44,7 @@ from assur._output import (
     stdout_writer,
     write_stdout,
 )
+from assur._sliced import Skipped, Slice, slices
 from assur._text import describe, number_text, suggest
 from assur._vec import Array
 from assur.analysis import SKIPPED_WHY

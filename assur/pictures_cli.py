@@ -235,7 +235,7 @@ def _table(mech: Any, positions: Any, forces: bool, skip: bool = False) -> Any:
 
 def _say_skipped(args: argparse.Namespace, skipped: Any) -> None:
     """Note the positions left out of the sweep (``--skip-unassembled``), if any."""
-    from assur._cli_sweep import Skipped
+    from assur._sliced import Skipped
 
     if len(skipped) and not getattr(args, "quiet", False):
         found = Skipped()

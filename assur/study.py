@@ -270,8 +270,11 @@ def _block(
         forms.setdefault(form(mech), []).append((i, mech))
     alone: list[tuple[int, Mechanism]] = []
     rest: list[tuple[int, Mechanism]] = []
+    if angles.shape[0] > CHUNK:
+        # a sweep longer than a batch: each variant summarised slice by slice
+        forms = {None: [x for members in forms.values() for x in members]}
     for key, members in forms.items():
-        if key not in templates and len(members) == 1:
+        if key is None or (key not in templates and len(members) == 1):
             # a form of one variant (one crank speed of a study over speeds, say)
             # costs a template's compilation and a batch: a separate call is less
             alone += members
@@ -418,17 +421,35 @@ def _keep_the_heap() -> None:
 
 
 def _alone(mech: Mechanism, angles: Array) -> dict[str, Any]:
-    """Return one variant's summary from a call of its own, or why it failed."""
+    """Return one variant's summary from a call of its own, or why it failed.
+
+    A sweep longer than a batch is summarised slice by slice, as the command line
+    does: in bounded memory, with the numbers, errors and warnings of one call.
+    """
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
-            out: dict[str, Any] = dict(forces(mech, angles).summary())
+            if angles.shape[0] > CHUNK:
+                out: dict[str, Any] = _summed(mech, angles)
+            else:
+                out = dict(forces(mech, angles).summary())
         except AssurError as err:
             out = {"error": _line(err)}
     said = [str(w.message) for w in caught if issubclass(w.category, AssurWarning)]
     if said:
         out["warning"] = " | ".join(" ".join(s.split()) for s in said)
     return out
+
+
+def _summed(mech: Mechanism, angles: Array) -> dict[str, Any]:
+    """Return the summary of a long sweep, computed a slice of positions at a time."""
+    from assur._sliced import Skipped, slices
+    from assur.summary import Summary
+
+    summary = Summary()
+    for part in slices(mech, angles, True, False, Skipped()):
+        summary.add(part.table)
+    return dict(summary.result())
 
 
 def _built(factory: Factory, p: dict[str, Any]) -> Mechanism:
@@ -568,7 +589,16 @@ def _variant(parameters: dict[str, Array], i: int) -> dict[str, Any]:
     return {name: values[i].item() for name, values in parameters.items()}
 
 
-RESERVED = ("error", "warning", "variant", "position", "column", "values", "driver")
+RESERVED = (
+    "error",
+    "warning",
+    "variant",
+    "position",
+    "column",
+    "values",
+    "driver",
+    "efficiency",
+)
 """Names of the summary's and the tables' own columns and dimensions."""
 
 
@@ -625,11 +655,15 @@ def _angles(angles: Any) -> Array:
             f"{type(angles).__name__}"
         )
         raise UsageError(msg) from err
-    if arr.ndim not in (1, 2) or not arr.shape[0] or not np.all(np.isfinite(arr)):
+    if arr.ndim not in (1, 2) or not arr.shape[0]:
         msg = (
-            "angles: expected finite driver positions of shape (n,) or "
-            f"(n, drivers), got shape {arr.shape}"
+            "angles: expected driver positions of shape (n,) or (n, drivers), got "
+            f"shape {arr.shape}"
         )
+        raise UsageError(msg)
+    if not np.all(np.isfinite(arr)):
+        bad = float(arr[~np.isfinite(arr)].flat[0])
+        msg = f"angles: expected finite driver positions, got {bad!r} among them"
         raise UsageError(msg)
     arr.flags.writeable = False
     return arr

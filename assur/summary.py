@@ -234,11 +234,12 @@ def efficiency(power: float, ideal: float, lost: float) -> float:
 def undefined(values: dict[str, float]) -> dict[str, str]:
     """Return why each value of a summary that is not a number is not one, by name.
 
-    Only the efficiency can be undefined (see :func:`efficiency`).
+    Only the efficiency can be undefined (see :func:`efficiency`). Values that are
+    not numbers (the text of a study's row) are passed over.
     """
     out = {}
     for name, value in values.items():
-        if math.isfinite(value):
+        if not isinstance(value, int | float) or math.isfinite(value):
             continue
         if name == "efficiency" and not values["driver.power.mean"] > 0.0:
             out[name] = "the driver does no net work (mean power <= 0): the loads drive"

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import assur
-from assur import _cli_sweep, cli
+from assur import _sliced, cli
 from assur._cli_common import parse_angles
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
@@ -27,7 +27,7 @@ WHITWORTH = EXAMPLES / "whitworth.toml"  # its block and lever turn round and ro
 
 @pytest.fixture
 def small_slices(monkeypatch):
-    monkeypatch.setattr(_cli_sweep, "CHUNK", 8192)
+    monkeypatch.setattr(_sliced, "CHUNK", 8192)
 
 
 @pytest.fixture
@@ -381,8 +381,8 @@ def test_units_of_the_readable_table(capsys):
 PEAK = """
 import resource, sys
 import assur.analysis, assur.cli
-from assur import _cli_sweep
-_cli_sweep.CHUNK = int(sys.argv[1])
+from assur import _sliced
+_sliced.CHUNK = int(sys.argv[1])
 before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
 status = assur.cli.main(sys.argv[2:])
 after = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
@@ -519,11 +519,11 @@ def test_friction_that_locks_is_counted_over_the_whole_sweep(
 def test_friction_locking_in_a_later_slice_writes_nothing(
     capsys, monkeypatch, tmp_path, output
 ):
-    from assur import _cli_sweep
+    from assur import _sliced
 
     # the check of the whole sweep solved positions only: the slices before the
     # lock went to standard output (206 MB of a JSON never closed), then the error
-    monkeypatch.setattr(_cli_sweep, "CHUNK", 8)  # 31 positions: four slices
+    monkeypatch.setattr(_sliced, "CHUNK", 8)  # 31 positions: four slices
     text = (EXAMPLES / "slider_crank_locking.toml").read_text()
     path = tmp_path / "lock.toml"
     path.write_text(text.replace("friction = 0.8", "friction = 1.3"))

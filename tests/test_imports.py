@@ -52,6 +52,8 @@ RANKS = {
     "assur.study": 10,
     "assur.io": 10,
     "assur._output": 10,
+    # long sweeps a slice at a time: the command line's tables, long studies
+    "assur._sliced": 10,
     "assur._tableio": 10,
     "assur._csvtext": 10,
     "assur.plotting": 10,
@@ -70,7 +72,6 @@ RANKS = {
     # the public API re-exports the core and io
     "assur": 11,
     "assur._cli_common": 12,
-    "assur._cli_sweep": 12,
     "assur.cli": 12,
     "assur.dynamics_cli": 12,
     "assur.pictures_cli": 12,

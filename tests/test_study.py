@@ -169,6 +169,9 @@ def test_tables_give_every_column_of_chosen_variants(slider_study):
         ({"error": [0.2]}, "parameters: 'error' names a column of the study's results"),
         ({"variant": [0.2]}, "parameters: 'variant' names a column"),
         ({"position": [0.2]}, "parameters: 'position' names a column"),
+        # a summary value's own name: its column held the efficiency, not the
+        # parameter
+        ({"efficiency": [0.2]}, "parameters: 'efficiency' names a column"),
     ],
 )
 def test_parameters_are_checked(parameters, message):
@@ -177,8 +180,41 @@ def test_parameters_are_checked(parameters, message):
 
 
 def test_angles_are_checked():
-    with pytest.raises(assur.UsageError, match="angles: expected finite driver"):
-        assur.sweep(catalog.slider_crank, {"rod": [0.2]}, [0.0, np.nan])
+    # the value at fault is named: the shape shown was a valid one
+    with pytest.raises(assur.UsageError) as caught:
+        assur.sweep(catalog.slider_crank, {"rod": [0.2]}, [0.0, np.nan, 5.0])
+    assert str(caught.value) == (
+        "angles: expected finite driver positions, got nan among them"
+    )
+    with pytest.raises(assur.UsageError, match=r"of shape \(n,\) .* got shape \(0,\)"):
+        assur.sweep(catalog.slider_crank, {"rod": [0.2]}, [])
+
+
+def test_a_sweep_longer_than_a_batch_is_summarised_slice_by_slice(monkeypatch):
+    # each variant's sweep was solved whole, every variant of a batch at once:
+    # memory grew with the positions (530 MB per million per variant)
+    from assur import _sliced, analysis, study
+
+    monkeypatch.setattr(study, "CHUNK", 500)
+    monkeypatch.setattr(_sliced, "CHUNK", 400)
+    solved = []
+    forces = analysis.forces
+
+    def counted(mech, angles, *args, **kwargs):  # type: ignore[no-untyped-def]
+        solved.append(len(angles))
+        return forces(mech, angles, *args, **kwargs)
+
+    monkeypatch.setattr(analysis, "forces", counted)
+    monkeypatch.setattr(study, "forces", counted)
+    angles = np.linspace(0.0, 360.0, 1000, endpoint=False)
+    parameters = {"crank": CRANKS, "rod": RODS}
+    found = assur.sweep(catalog.slider_crank, parameters, angles).summary
+    assert solved
+    assert max(solved) <= 400
+    monkeypatch.undo()
+    assert_agrees(found, separate(catalog.slider_crank, parameters, angles))
+    # a variant near a dead centre warns once, as its separate call does
+    assert found["warning"].iloc[3].count("dead centre") == 1
 
 
 def test_a_wrong_parameter_name_is_not_a_variant_failure():
@@ -490,3 +526,27 @@ def test_tables_say_which_variants_and_columns_there_are(slider_study):
             study.tables(variants=wrong)
     with pytest.raises(assur.UsageError, match=r"no column 'driver\.torq'.*torque'"):
         study.tables(variants=[0], columns=["driver.torq"])
+
+
+def test_an_undefined_efficiency_says_why_from_the_row():
+    # a torque on the crank that drives it: the driver does no net work, and the
+    # row's NaN efficiency had no reason beside it
+    from assur.summary import undefined
+
+    base = assur.load(
+        Path(__file__).parent.parent / "examples" / "four_bar_bearings.toml"
+    )
+
+    def driven(torque: float) -> assur.Mechanism:
+        (load,) = [x for x in base.loads if x.torque is not None]
+        rest = tuple(x for x in base.loads if x is not load)
+        return dataclasses.replace(
+            base, loads=(*rest, dataclasses.replace(load, link="crank", torque=torque))
+        )
+
+    row = assur.sweep(driven, {"torque": [4.0]}, ANGLES).summary.iloc[0]
+    assert row["error"] == ""
+    assert np.isnan(row["efficiency"])
+    assert undefined(row) == {
+        "efficiency": "the driver does no net work (mean power <= 0): the loads drive"
+    }

@@ -1,8 +1,9 @@
-"""Long sweeps on the command line, analysed and written a slice of positions at a time.
+"""Long sweeps analysed a slice of positions at a time.
 
 ``assur kinematics|forces`` call the library on slices of :data:`CHUNK` driver
-positions and hand each slice's columns to the writers (:mod:`assur._tableio`), so
-that memory stays bounded whatever the number of positions. What comes out is what
+positions and hand each slice's columns to the writers (:mod:`assur._tableio`), and a
+study summarises each variant of a long sweep so, so that memory stays bounded
+whatever the number of positions. What comes out is what
 the whole table gives: the links' angles run on continuously from one slice to the
 next, a warning near a dead centre names its positions over the whole sweep, once,
 and a position that cannot be assembled is reported as the whole sweep reports it.
