@@ -353,7 +353,12 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
             f"drivers: the mechanism has W = 3*{n} - 2*{len(mech.joints) - p4} - {p4}"
             f" = {counted(w, 'degree', 'degrees')} of freedom but "
             f"{counted(len(mech.drivers), 'driver')}{_miscount(topo, w, mech)}; "
-            "expected one driver per degree of freedom"
+            + (
+                "expected one driver per degree of freedom"
+                if w > 0
+                else "expected links that can move (W >= 1), one driver per degree "
+                "of freedom"
+            )
         )
         raise DecompositionError(msg)
     by_name = {p.name: p for p in topo.pairs}

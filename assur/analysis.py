@@ -57,6 +57,8 @@ def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
     For a prismatic driver: 101 positions over +-20 % of the mechanism's size.
     """
     plan = plan_of(mech)
+    if not plan.drivers:
+        raise _no_driver(plan)
     starts = []
     for d in plan.drivers:
         if d.kind == "R":
@@ -455,6 +457,25 @@ def _at(rates: Rates, rows: Any) -> Rates:
     )
 
 
+def _no_driver(plan: Plan) -> ModelError:
+    """Return the error of a mechanism without drivers: a structure, or one missing.
+
+    Such a file passes the count of degrees of freedom only when it has none (a
+    rigid chain, whose groups stand on the frame): a driver would not help it.
+    """
+    from assur._structure import mobility
+
+    if mobility(plan.mechanism) <= 0:
+        msg = (
+            "drivers: the mechanism has no driver, and W = 0: its links cannot move "
+            "(a rigid structure); expected links that can move, with a [[drivers]] "
+            "entry for each degree of freedom"
+        )
+    else:
+        msg = "drivers: the mechanism has no driver; expected a [[drivers]] entry"
+    return ModelError(msg)
+
+
 def positions(plan: Plan, angles: Any) -> Array:
     """Return the driver positions as given (deg, or m), shape (n, drivers).
 
@@ -465,8 +486,7 @@ def positions(plan: Plan, angles: Any) -> Array:
     """
     d = len(plan.drivers)
     if d == 0:
-        msg = "drivers: the mechanism has no driver; expected a [[drivers]] entry"
-        raise ModelError(msg)
+        raise _no_driver(plan)
     arr = _real(angles, "angles", "driver positions")
     if arr.ndim == 0:
         arr = arr.reshape(1)

@@ -518,6 +518,14 @@ def _unknown(kind: str, name: object, known: Iterable[str]) -> str:
     return f"unknown {kind} {describe(name)}{hint}"
 
 
+def _on_the_frame(why: str, links: list[str]) -> str:
+    """Return the message of a point or load on the frame (``why``: what it does)."""
+    return (
+        f"{GROUND!r} is the frame: {why}; expected a moving link "
+        f"({', '.join(links[:6])}{', ...' if len(links) > 6 else ''})"
+    )
+
+
 def _check_point(entry: str, spec: object, points: set[str]) -> None:
     if isinstance(spec, str):
         if spec not in points:
@@ -710,6 +718,10 @@ def _validate_all(mech: Mechanism) -> None:
         _check_name(entry, point.name)
         if point.name in point_names:
             _fail(entry, "a point or joint with this name exists already")
+        if point.link == GROUND:
+            _fail(
+                f"{entry}.link", _on_the_frame("a point on it never moves", link_names)
+            )
         if not isinstance(point.link, str) or point.link not in link_names:
             _fail(f"{entry}.link", _unknown("link", point.link, link_names))
         point_names.add(point.name)
@@ -964,6 +976,9 @@ def _validate_load(
     link_names: list[str],
     point_names: set[str],
 ) -> None:
+    if load.link == GROUND:
+        why = "a load on it acts on no moving link and changes no reaction"
+        _fail(f"{entry}.link", _on_the_frame(why, link_names))
     if not isinstance(load.link, str) or load.link not in link_names:
         _fail(f"{entry}.link", _unknown("link", load.link, link_names))
     if load.force is None and load.torque is None:

@@ -475,3 +475,56 @@ def test_help_to_a_full_disk_is_an_error(tmp_path: Path, command: str):
     assert result.stderr == (
         "assur: error: standard output: cannot write (No space left on device)\n"
     )
+
+
+TRUSS = """format = 1
+[links.a]
+[links.b]
+[joints.O]
+kind = "revolute"
+links = ["ground", "a"]
+at = [0.0, 0.0]
+[joints.P]
+kind = "revolute"
+links = ["a", "b"]
+at = [0.05, 0.05]
+[joints.Q]
+kind = "revolute"
+links = ["b", "ground"]
+at = [0.1, 0.0]
+"""
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        ["kinematics"],
+        ["forces"],
+        ["explain"],
+        ["plot", "-o", "{tmp}/p.png"],
+        ["plans", "-o", "{tmp}/plans"],
+        ["report", "-o", "{tmp}/r.html"],
+    ],
+)
+def test_a_structure_without_drivers_is_one_line(tmp_path, capsys, command):
+    # a triangle on the frame (W = 0, no driver) passes the count and decomposes:
+    # the default sweep of its drivers was min() of nothing, a traceback
+    path = tmp_path / "truss.toml"
+    path.write_text(TRUSS, encoding="utf-8")
+    argv = [c.format(tmp=tmp_path) for c in command]
+    line = one_error(capsys, argv[0], path, *argv[1:])
+    assert line == (
+        f"assur: error: {path}: drivers: the mechanism has no driver, and W = 0: "
+        "its links cannot move (a rigid structure); expected links that can move, "
+        "with a [[drivers]] entry for each degree of freedom"
+    )
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["truss.toml"]
+
+
+def test_a_driver_added_to_a_structure_is_said_not_to_help(tmp_path, capsys):
+    path = tmp_path / "truss.toml"
+    path.write_text(TRUSS + '[[drivers]]\njoint = "O"\nomega = 1.0\n', "utf-8")
+    line = one_error(capsys, "kinematics", path)
+    assert line.endswith(
+        "; expected links that can move (W >= 1), one driver per degree of freedom"
+    )

@@ -27,6 +27,8 @@ from assur import (
     Toward,
 )
 
+from .conftest import EXAMPLES
+
 BASE = """\
 format = 1
 name = "Slider-crank"
@@ -606,3 +608,29 @@ def test_a_known_skeleton_gives_the_full_checks_message(fault, monkeypatch):
         Mechanism(**fields)
     assert ran
     assert str(quick.value) == str(full.value)
+
+
+@pytest.mark.parametrize(
+    ("block", "entry", "why"),
+    [
+        (
+            '[[loads]]\nlink = "ground"\ntorque = 1.0\n',
+            "loads[0].link",
+            "a load on it acts on no moving link and changes no reaction",
+        ),
+        (
+            '[points.Q]\nlink = "ground"\nat = [0.0, 0.0]\n',
+            "points.Q.link",
+            "a point on it never moves",
+        ),
+    ],
+)
+def test_a_load_or_point_on_the_frame_says_it_is_the_frame(block, entry, why):
+    # it was "unknown link 'ground'", of the name FORMAT.md gives the frame
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    with pytest.raises(assur.ModelError) as caught:
+        assur.loads(text + "\n" + block)
+    assert str(caught.value) == (
+        f"{entry}: 'ground' is the frame: {why}; expected a moving link (crank, "
+        "coupler, rocker)"
+    )
