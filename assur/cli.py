@@ -19,7 +19,7 @@ import threading
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NoReturn
 
 import numpy as np
 
@@ -82,6 +82,23 @@ class _Parser(argparse.ArgumentParser):
     def _print_message(self, message: str, file: Any = None) -> None:
         if message:
             (file or sys.stderr).write(message)
+
+    def error(self, message: str) -> NoReturn:  # type: ignore[override]
+        """Exit 2 with one line naming the command and the option at fault.
+
+        argparse prints its usage block first (six lines for ``dynamics``): the
+        line that says what is wrong is then the last of many.
+        """
+        # arguments no command takes are found by the top parser: name the command
+        command = self.prog.partition(" ")[2] or self.command
+        where = f"{command}: " if command else ""
+        line = f"assur: error: {where}{message} (see '{self.prog} --help')"
+        if command and not self.prog.partition(" ")[2]:
+            line = line.replace(f"'{self.prog} --help'", f"'assur {command} --help'")
+        self.exit(2, " ".join(line.split()) + "\n")
+
+    command = ""
+    """The command being parsed, once known (see :func:`_main`)."""
 
 
 def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
@@ -237,12 +254,13 @@ def _main(argv: list[str]) -> int:
             argv[i : i + 2] = [f"{argv[i]}={argv[i + 1]}", ""]
     argv = [a for a in argv if a != ""]
     if argv and not argv[0].startswith("-") and argv[0] not in commands:
-        parser.print_usage(sys.stderr)
         hint = suggest(argv[0], commands)
         print(
             f"assur: error: unknown command {describe(argv[0])}{hint}", file=sys.stderr
         )
         return 2
+    if isinstance(parser, _Parser):
+        parser.command = next((a for a in argv if a in commands), "")
     handler = None
     try:
         try:
