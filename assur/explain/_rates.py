@@ -206,12 +206,16 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
     mid = name(s.mid.name)
     names, a, rhs = _solve(left, right)
     lines = cramer(names, a, rhs)[0] if len(names) == 2 else []
+    # every vector of the equation is judged against its largest term: one that
+    # sums or solves to round-off of them is 0
+    scale = max(math.hypot(*t.value) for t in left + right)
     blocks: list[Block] = [
         Para(f"The {LEVEL[k][1]} of the joint {text(s.mid.name)}, along each link:"),
         Display((f"{_sum(left)} = {_sum(right)}",)),
         Display(
             tuple(
-                f"{t.tex} = {vec(t.value)}" + (f",\\quad {t.note}" if t.note else "")
+                f"{t.tex} = {vec(t.value, scale)}"
+                + (f",\\quad {t.note}" if t.note else "")
                 for t in left + right
                 if t.unknown is None
             )
@@ -231,13 +235,13 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
         ]
     unknown = [t for t in left + right if t.unknown is not None]
     results = [
-        f"{t.tex} = {vec(t.value)}" + (f",\\quad {t.size}" if t.size else "")
+        f"{t.tex} = {vec(t.value, scale)}" + (f",\\quad {t.size}" if t.size else "")
         for t in unknown
     ]
     total = sum((t.value for t in left), np.zeros(2))
     results.append(
-        f"\\vec {letter}_{{{mid}}} = {_sum(left)} = {vec(total)},\\quad "
-        f"{letter}_{{{mid}}} = {num(math.hypot(*total))}"
+        f"\\vec {letter}_{{{mid}}} = {_sum(left)} = {vec(total, scale)},\\quad "
+        f"{letter}_{{{mid}}} = {num(math.hypot(*total), scale)}"
     )
     blocks.append(Display(tuple(results)))
     return blocks
@@ -280,12 +284,17 @@ def point_lines(
             continue
         x = point_name(point)
         value = pos.point(body, offset, k)
+        # the sum is judged against its terms: a fixed pivot reached through its
+        # link sums to round-off, which is 0, not a vector of its own size
+        arm = math.hypot(*r)
+        terms = (abs(w),) if k == 1 else (abs(eps), w * w)
+        scale = max(math.hypot(*here), *(t * arm for t in terms))
         if k == 1:
             lines.append(
                 f"\\vec v_{{{x}}} = \\vec v_{{{label}}} + \\omega_{{{link}}} \\times "
                 f"\\vec r_{{{label}{x}}} = {vec(here)} + {par(w)} \\cdot "
-                f"{vec(perp(r))} = {vec(value)},\\quad v_{{{x}}} = "
-                f"{num(math.hypot(*value))}"
+                f"{vec(perp(r))} = {vec(value, scale)},\\quad v_{{{x}}} = "
+                f"{num(math.hypot(*value), scale)}"
             )
         else:
             lines.append(
@@ -294,7 +303,7 @@ def point_lines(
                 f"\\times \\vec r_{{{label}{x}}} - \\omega_{{{link}}}^2 "
                 f"\\vec r_{{{label}"
                 f"{x}}} = {vec(here)} + {par(eps)} \\cdot {vec(perp(r))} - {par(w)}^2 "
-                f"\\cdot {vec(r)} = {vec(value)},\\quad a_{{{x}}} = "
-                f"{num(math.hypot(*value))}"
+                f"\\cdot {vec(r)} = {vec(value, scale)},\\quad a_{{{x}}} = "
+                f"{num(math.hypot(*value), scale)}"
             )
     return lines
