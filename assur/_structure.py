@@ -349,15 +349,16 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     if w != len(mech.drivers):
         n = len(mech.links)
         p4 = sum(j.kind == "slot" for j in mech.joints)
+        why = _miscount(topo, w, mech)
         msg = (
             f"drivers: the mechanism has W = 3*{n} - 2*{len(mech.joints) - p4} - {p4}"
             f" = {counted(w, 'degree', 'degrees')} of freedom but "
-            f"{counted(len(mech.drivers), 'driver')}{_miscount(topo, w, mech)}; "
+            f"{counted(len(mech.drivers), 'driver')}{why}; "
             + (
-                "expected one driver per degree of freedom"
-                if w > 0
-                else "expected links that can move (W >= 1), one driver per degree "
-                "of freedom"
+                "expected links that can move (W >= 1), one driver per degree of "
+                "freedom"
+                if why.startswith(" (none")
+                else "expected one driver per degree of freedom"
             )
         )
         raise DecompositionError(msg)
