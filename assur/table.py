@@ -255,10 +255,12 @@ class Table:
         self._store(materialize(self, columns))
 
     def _store(self, found: dict[str, Array]) -> None:
-        """Keep the columns ``found`` together, read-only.
+        """Keep the columns ``found`` together, read-only for good.
 
         The arrays that own their memory (a block of columns computed together) are
-        made read-only too, once each: a view's flag could else be set back.
+        made read-only first, once each: a view's flag could else be set back. A
+        column that owns its memory (a state's array) is kept as a read-only view,
+        whose flag cannot be set back while the array's is not.
         """
         owners = {}
         for values in found.values():
@@ -269,22 +271,18 @@ class Table:
                 owners[id(base)] = base
         for owner in owners.values():
             owner.flags.writeable = False
+        index, cache = self._index, self._cache
         for key, values in found.items():
-            self._keep(key, values)
-
-    def _keep(self, key: str, values: Array) -> None:
-        """Keep a computed column as a read-only view.
-
-        A column that is a state's array is a view of it (the states are frozen
-        when first handed out), so its flag cannot be set back.
-        """
-        if key in self._index and key not in self._cache:
-            if values.base is None or values.flags.writeable:
-                # a view of an array of its own, read-only: its flag cannot be set
-                # back while that array's is not (the states' arrays, frozen)
+            if key not in index or key in cache:
+                continue
+            if values.base is None:
                 values = values.view()
                 values.flags.writeable = False
-            self._cache[key] = values
+            elif values.flags.writeable:
+                # a view made for this column (a row of a block): its owner is
+                # read-only now, so its own flag is set once, with no new view
+                values.flags.writeable = False
+            cache[key] = values
 
     def summary(self) -> dict[str, float]:
         """Return the few numbers joints and motors are sized on, by name.
