@@ -240,3 +240,28 @@ def test_an_empty_sweep_gives_an_empty_table(example):
         table = run(example, none)
         assert len(table) == 0
         assert table.to_array().shape == (0, len(table.columns))
+
+
+@pytest.mark.parametrize(
+    ("mech", "angle", "group"),
+    [
+        # coupler and rocker stretched out exactly: the pin's height computes as the
+        # root of -8e-17, and the pose was said not to assemble
+        (assur.catalog.four_bar(crank=0.04, coupler=0.06, rocker=0.06, frame=0.08),
+         180.0, "RRR (coupler, rocker)"),
+        # the rod square to the slide line, its length the crank's
+        (assur.catalog.slider_crank(rod=0.074), 90.0, "RRP (rod, slider)"),
+    ],
+)  # fmt: skip
+def test_a_group_stretched_out_exactly_stands_at_a_dead_centre(mech, angle, group):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)
+        with pytest.raises(assur.SingularConfigurationError) as caught:
+            assur.kinematics(mech, [angle])
+        assert str(caught.value).startswith(
+            f"group {group}: dead centre at driver position {angle:g} deg"
+        )
+        # a sweep that skips it keeps its neighbours
+        table = assur.kinematics(mech, [angle - 10.0, angle, angle + 10.0], True)
+    assert table.skipped.tolist() == [angle]
+    assert len(table) == 2

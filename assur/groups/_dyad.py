@@ -40,6 +40,7 @@ __all__ = [
     "DEAD_CENTRE",
     "Closure",
     "DyadSolver",
+    "closing_root",
     "compile_dyad",
     "linear_step",
     "reaction",
@@ -52,6 +53,22 @@ Closure = Callable[["DyadSolver", list[Motion], Any], tuple[Any, Any]]
 Discriminant = Callable[["DyadSolver", list[Motion]], Any]
 """A two-branch kind's discriminant: ``(dyad, bodies) -> D``, dimensionless, negative
 where the dyad cannot close and zero where its two branches meet."""
+
+ROUNDING = 1e-14
+"""Square root's argument, relative to the size of its terms, below zero by which a
+dyad still closes: a pose stretched out exactly (a change point) is computed a few
+ulps short of closing."""
+
+
+def closing_root(square: Any, size: Any) -> Any:
+    """Return the square root of ``square``; 0 within rounding below 0; NaN beyond.
+
+    ``size`` is that of the terms ``square`` is the difference of.
+    """
+    rounded = (square < 0.0) & (square >= -ROUNDING * size)
+    with np.errstate(invalid="ignore"):
+        return np.sqrt(np.where(rounded, 0.0, square))[()]
+
 
 DEAD_CENTRE = 1e-6
 """Smallest sine of a dyad's transmission angle accepted in the reference pose."""

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._vec import add, cross, dot, mul, sub
-from assur.groups._dyad import DyadSolver, compile_dyad, guide
+from assur.groups._dyad import DyadSolver, closing_root, compile_dyad, guide
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._protocol import CompileContext
 
@@ -34,8 +34,8 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     b = dot((wx, wy), (ex, ey))
     # |w|^2 - (w.e)^2 is the squared distance of P from the slider's line
     normal = cross(ex, ey, wx, wy)
-    with np.errstate(invalid="ignore"):
-        root = np.sqrt(d1[0] * d1[0] + d1[1] * d1[1] - normal * normal)
+    reach = d1[0] * d1[0] + d1[1] * d1[1]
+    root = closing_root(reach - normal * normal, reach)
     sigma = sub(mul(branch, root), b)
     vx, vy = add(wx, mul(sigma, ex)), add(wy, mul(sigma, ey))
     return np.arctan2(cross(d1[0], d1[1], vx, vy), dot(d1, (vx, vy))), sigma

@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur.groups._dyad import DyadSolver, compile_dyad
+from assur.groups._dyad import DyadSolver, closing_root, compile_dyad
 from assur.groups._motion import Motion, point
 from assur.groups._protocol import CompileContext
 
@@ -35,7 +35,7 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         inv = np.divide(1.0, gx * gx + gy * gy)
         a = 0.5 + 0.5 * (r1 - r2) * inv
-        h = branch * np.sqrt(r1 * inv - a * a)
+        h = branch * closing_root(r1 * inv - a * a, r1 * inv)
     # u1 = M - P1 and u2 = M - P2 in components
     u1x, u1y = a * gx - h * gy, a * gy + h * gx
     u2x, u2y = u1x - gx, u1y - gy
