@@ -6,13 +6,14 @@ crank, or a prismatic joint's slide) and interpolated linearly over the batch.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from assur._vec import Array
-from assur.errors import ModelError
+from assur.errors import AssurWarning, ModelError
 from assur.model import LoadTable, resolve_point
 from assur.plan import Plan
 
@@ -75,7 +76,19 @@ def _compile(plan: Plan) -> LoadPlan:
     count = len(plan.bodies)
     mass, inertia, center = np.zeros(count), np.zeros(count), np.zeros((count, 2))
     still = _never_turning(plan)
+    # without a mass or load anywhere there is no force analysis to warn of
+    loaded = [bool(link.mass) for link in mech.links]
     for link in mech.links:
+        if link.inertia and not link.mass and (mech.loads or any(loaded)):
+            # a link without a mass is massless (FORMAT.md): its inertia was left
+            # out of the analysis without a word
+            warnings.warn(
+                f"links.{link.name}.inertia: {link.inertia:g} kg m^2 on a link with "
+                f"{'no mass' if link.mass is None else 'a mass of 0'} is left out: "
+                "the link is massless; give it a mass > 0 for its inertia to count",
+                AssurWarning,
+                stacklevel=2,
+            )
         if not link.mass:
             continue
         for key in ("center", "inertia"):

@@ -162,9 +162,31 @@ def test_massless_link_has_zero_inertia_columns():
         dataclasses.replace(link, mass=None) if link.name == "rocker" else link
         for link in mech.links
     )
-    t = assur.forces(dataclasses.replace(mech, links=links), [0.0, 45.0])
+    # its inertia, left as it was, is said to be left out
+    with pytest.warns(assur.AssurWarning) as caught:
+        t = assur.forces(dataclasses.replace(mech, links=links), [0.0, 45.0])
+    assert str(caught[0].message) == (
+        "links.rocker.inertia: 8.53333e-05 kg m^2 on a link with no mass is left "
+        "out: the link is massless; give it a mass > 0 for its inertia to count"
+    )
     for column in ("rocker.Fi.x", "rocker.Fi.y", "rocker.Mi"):
         np.testing.assert_array_equal(t[column], 0.0)
+
+
+def test_an_inertia_on_a_mass_of_0_is_said_to_be_left_out():
+    # its Mi was 0, not -J alpha, without a word
+    mech = assur.catalog.four_bar()
+    links = tuple(
+        dataclasses.replace(link, mass=0.0, inertia=0.1) if link.name == "coupler"
+        else link
+        for link in mech.links
+    )  # fmt: skip
+    with pytest.warns(
+        assur.AssurWarning,
+        match=r"links\.coupler\.inertia: 0\.1 kg m\^2 on a link with a mass of 0 is "
+        "left out",
+    ):
+        assur.forces(dataclasses.replace(mech, links=links), [0.0])
 
 
 @pytest.mark.parametrize(

@@ -145,7 +145,9 @@ FIXED = {
     "table_key_line_break.toml": "ModelError",
     "tiny_link_far_apart.toml": "ModelError",
     "triad_small_prismatic.toml": "table",
-    "unexplained_inf_sum.toml": "AssemblyError",
+    # its rod stands square to the guide at 45 and 225 deg, a root of -1.3e-15 of
+    # its size: a dead centre, where it was said not to assemble
+    "unexplained_inf_sum.toml": "SingularConfigurationError",
     "vertical_slider_on_the_axis.toml": "SingularConfigurationError",
 }
 """Reproducers of failures the fuzzing found and that are fixed, with how each ends
