@@ -224,6 +224,7 @@ def mobility(mech: Mechanism) -> int:
     >>> mobility(catalog.four_bar())
     1
     """
+    mech = mechanism_of(mech)
     n = len(mech.links)
     p4 = sum(joint.kind == "slot" for joint in mech.joints)
     p5 = len(mech.joints) - p4
@@ -244,6 +245,7 @@ def graph(mech: Mechanism) -> Any:
     """
     import networkx as nx
 
+    mech = mechanism_of(mech)
     g = nx.MultiGraph()
     g.add_node(GROUND)
     g.add_nodes_from(link.name for link in mech.links)
@@ -281,13 +283,13 @@ def structure(mech: Mechanism, driver: str | None = None) -> Structure:
     mech = mechanism_of(mech)
     if driver is not None:
         if driver not in {j.name for j in mech.joints}:
-            msg = f"--driver: unknown joint {driver!r}"
+            msg = f"driver: unknown joint {driver!r}"
             raise DecompositionError(msg)
         omega = mech.drivers[0].omega if mech.drivers else 1.0
         try:
             mech = dataclasses.replace(mech, drivers=(Driver(driver, omega),))
         except ModelError as err:
-            msg = f"--driver: {str(err).split(': ', 1)[-1]}"
+            msg = f"driver: {str(err).split(': ', 1)[-1]}"
             raise DecompositionError(msg) from None
     try:
         drivers, groups, topo = decompose(mech)
@@ -296,7 +298,7 @@ def structure(mech: Mechanism, driver: str | None = None) -> Structure:
             raise
         # the count of inputs is the option's doing, not the file's
         msg = (
-            f"--driver: {str(err).split(': ', 1)[-1]} (--driver sets one input; "
+            f"driver: {str(err).split(': ', 1)[-1]} (driver= sets one input; "
             "without it the file's drivers are used)"
         )
         raise DecompositionError(msg) from None

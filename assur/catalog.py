@@ -10,7 +10,7 @@ from typing import Any
 
 from assur._vec import real
 from assur.errors import ModelError
-from assur.model import Driver, Joint, Link, Mechanism, Point, Toward
+from assur.model import LARGEST, Driver, Joint, Link, Mechanism, Point, Toward
 
 __all__ = ["four_bar", "slider_crank"]
 
@@ -160,6 +160,12 @@ def _number(name: str, value: Any) -> float:
     number = real(value)
     if number is None or not math.isfinite(number):
         msg = f"{name}: expected a finite number, got {value!r}"
+        raise ModelError(msg)
+    if abs(number) > LARGEST:
+        # the model refuses such numbers too; the geometry's squares overflowed first
+        msg = (
+            f"{name}: expected a number of magnitude at most {LARGEST:g}, got {value!r}"
+        )
         raise ModelError(msg)
     return number
 

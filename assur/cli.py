@@ -425,8 +425,11 @@ def _cmd_structure(args: argparse.Namespace) -> int:
     try:
         s = structure(mech, driver=args.driver)
     except DecompositionError as err:
-        if args.driver is not None and str(err).startswith("--driver:"):
-            raise UsageError(str(err)) from err  # the option, not the file
+        text = str(err)
+        if args.driver is not None and text.startswith("driver:"):
+            # the option, not the file: named as the command line spells it
+            text = "--" + text.replace("(driver= sets", "(--driver sets", 1)
+            raise UsageError(text) from err
         raise
     _say(json.dumps(s.to_dict(), indent=2) if args.json else str(s))
     return 0

@@ -456,6 +456,23 @@ def _check_number(entry: str, value: object, minimum: float | None = None) -> No
         _fail(entry, f"expected a number >= {minimum:g}, got {describe(value)}")
 
 
+def _sequence_fault(value: object, expected: str, count: int | None = None) -> str:
+    """Return what is wrong with a sequence of numbers (``expected``: what it is not).
+
+    Numbers of the right count of which one is too large or not finite are named
+    as such, not said to be of the wrong count.
+    """
+    if (
+        isinstance(value, tuple | list)
+        and (len(value) == count if count is not None else len(value) >= 2)
+        and all(map(_number, value))
+    ):
+        bad = next((v for v in value if not _finite(v)), None)
+        if bad is not None:
+            return f"{_number_fault(bad)} in {describe(value)}"
+    return f"expected {expected}, got {describe(value)}"
+
+
 def _check_vec(entry: str, value: object) -> None:
     ok = (
         isinstance(value, tuple | list) and len(value) == 2 and all(map(_finite, value))
@@ -937,7 +954,7 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
     ):
         _fail(
             f"{entry}.table",
-            f"expected at least two finite positions, got {describe(table.table)}",
+            _sequence_fault(table.table, "at least two finite positions"),
         )
     xs = np.asarray(table.table, dtype=float)
     if np.any(np.diff(xs) <= 0):
@@ -964,8 +981,9 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
         ):
             _fail(
                 entry,
-                f"expected {len(xs)} finite values, one per table position, "
-                f"got {describe(seq)}",
+                _sequence_fault(
+                    seq, f"{len(xs)} finite values, one per table position", len(xs)
+                ),
             )
 
 

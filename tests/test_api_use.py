@@ -7,6 +7,8 @@ arrays, or of another table's, can alter.
 
 from __future__ import annotations
 
+import dataclasses
+import math
 from pathlib import Path
 
 import numpy as np
@@ -298,3 +300,76 @@ def test_anything_else_is_no_number(value):
     from assur._vec import real
 
     assert real(value) is None
+
+
+def _with_table(table):  # type: ignore[no-untyped-def]
+    mech = assur.catalog.four_bar()
+    return dataclasses.replace(mech, loads=(assur.Load("coupler", "B", table),))
+
+
+@pytest.mark.parametrize(
+    ("call", "kind", "message"),
+    [
+        # the squares of the catalog's geometry overflowed: a raw OverflowError
+        (
+            lambda: assur.catalog.slider_crank(rod=1e155),
+            assur.ModelError,
+            "rod: expected a number of magnitude at most 1e+15, got 1e+155",
+        ),
+        # given answers were not checked: ValueError, TypeError, AttributeError
+        (
+            lambda: assur.explain(assur.catalog.four_bar(), 45.0, {"C.v": math.nan}),
+            assur.UsageError,
+            "answers.C.v: expected a finite number, got nan",
+        ),
+        (
+            lambda: assur.explain(assur.catalog.four_bar(), 45.0, [1.0]),
+            assur.UsageError,
+            "answers: expected a mapping of quantity names to numbers, got list",
+        ),
+        (
+            lambda: assur.explain(assur.catalog.four_bar(), 45.0, {3: 1.0}),
+            assur.UsageError,
+            "answers: expected quantity names as keys, got 3",
+        ),
+        # a table's value too large was said to be of the wrong count
+        (
+            lambda: _with_table(
+                assur.LoadTable("driver", (0.0, 360.0), ((1e16, 0.0), (0.0, 0.0)))
+            ),
+            assur.ModelError,
+            "loads[0].force: expected a number of magnitude at most 1e+15, got "
+            "1e+16 in [1e+16, 0.0]",
+        ),
+        (
+            lambda: _with_table(
+                assur.LoadTable("driver", (0.0, 1e16), ((1.0, 0.0), (0.0, 0.0)))
+            ),
+            assur.ModelError,
+            "loads[0].force.table: expected a number of magnitude at most 1e+15, "
+            "got 1e+16 in [0.0, 1e+16]",
+        ),
+        # AttributeError of a file's name where the mechanism goes
+        (
+            lambda: assur.mobility("x.toml"),
+            assur.UsageError,
+            "mechanism: expected an assur.Mechanism, got str (read the file with "
+            "assur.load)",
+        ),
+        (
+            lambda: assur.graph(None),
+            assur.UsageError,
+            "mechanism: expected an assur.Mechanism, got NoneType",
+        ),
+        # the library's argument was named as the command line's option
+        (
+            lambda: assur.structure(assur.catalog.four_bar(), driver="Z"),
+            assur.DecompositionError,
+            "driver: unknown joint 'Z'",
+        ),
+    ],
+)
+def test_the_library_says_what_is_wrong_in_one_line(call, kind, message):
+    with pytest.raises(kind) as caught:
+        call()
+    assert str(caught.value) == message

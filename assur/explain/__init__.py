@@ -15,7 +15,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from assur._structure import structure
-from assur.explain._answers import answer_blocks, read_answers
+from assur.explain._answers import answer_blocks, checked_answers, read_answers
 from assur.explain._forces_text import forces_blocks
 from assur.explain._inertia_text import inertia_blocks
 from assur.explain._kinematics_text import kinematics_blocks
@@ -60,6 +60,8 @@ def explain(
         When the mechanism cannot be assembled at ``angle``.
     ModelError
         When an answer names no quantity of the mechanism.
+    UsageError
+        When ``answers`` is not a mapping of names to finite numbers.
 
     Examples
     --------
@@ -68,6 +70,8 @@ def explain(
     >>> str(note).startswith("# ")
     True
     """
+    if answers is not None:
+        answers = checked_answers(answers)
     pos = position(mechanism, angle)
     blocks: list[Block] = []
     blocks += structure_blocks(structure(mechanism))

@@ -15,7 +15,7 @@ from collections.abc import Mapping
 
 from assur._text import describe
 from assur._vec import real
-from assur.errors import ModelError
+from assur.errors import ModelError, UsageError
 from assur.explain._note import Block, Display, Grid, Heading, Para
 from assur.explain._position import Position
 from assur.explain._tex import ZERO, name, num, plain
@@ -73,6 +73,33 @@ def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
             raise ModelError(msg)
         answers[key] = number
     return answers, str(data.get("source", ""))
+
+
+def checked_answers(answers: object) -> dict[str, float]:
+    """Return given answers as floats by name, checked as :func:`read_answers` does.
+
+    Raises
+    ------
+    UsageError
+        For anything but a mapping of names to finite real numbers.
+    """
+    if not isinstance(answers, Mapping):
+        msg = (
+            "answers: expected a mapping of quantity names to numbers, got "
+            f"{type(answers).__name__}"
+        )
+        raise UsageError(msg)
+    out = {}
+    for key, value in answers.items():
+        if not isinstance(key, str):
+            msg = f"answers: expected quantity names as keys, got {describe(key)}"
+            raise UsageError(msg)
+        number = real(value)
+        if number is None or not math.isfinite(number):
+            msg = f"answers.{key}: expected a finite number, got {describe(value)}"
+            raise UsageError(msg)
+        out[key] = number
+    return out
 
 
 def _flat(table: Mapping[str, object], prefix: str = "") -> dict[str, object]:
