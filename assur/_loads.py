@@ -168,7 +168,7 @@ def table_values(
             "position"
         )
         raise ModelError(msg)
-    return [np.interp(at, xs, np.asarray(v)) for v in table.values]
+    return [_interpolate(at, xs, np.asarray(v, dtype=float)) for v in table.values]
 
 
 def _periodic(xs: Array, values: Any, at: Array) -> list[Array]:
@@ -187,8 +187,23 @@ def _periodic(xs: Array, values: Any, at: Array) -> list[Array]:
     out = []
     for v in values:
         ys = np.asarray(v, dtype=float)
-        out.append(np.interp(turn, grid, ys if closed else np.append(ys, ys[0])))
+        out.append(_interpolate(turn, grid, ys if closed else np.append(ys, ys[0])))
     return out
+
+
+def _interpolate(at: Array, xs: Array, ys: Array) -> Array:
+    """Interpolate ``ys`` over ``xs`` (increasing) linearly at ``at``; ends held.
+
+    As ``np.interp``, but through the fraction of each step, which stays within
+    [0, 1]: ``np.interp`` divides the step in the values by the step in the
+    positions first, which overflows where a table jumps (1e15 N within 1e-300 deg
+    gave inf).
+    """
+    at = np.asarray(at, dtype=float)
+    j = np.clip(np.searchsorted(xs, at, side="right") - 1, 0, len(xs) - 2)
+    with np.errstate(invalid="ignore"):
+        w = np.clip((at - xs[j]) / (xs[j + 1] - xs[j]), 0.0, 1.0)
+    return ys[j] + w * (ys[j + 1] - ys[j])  # type: ignore[no-any-return]
 
 
 def _never_turning(plan: Plan) -> set[int]:
