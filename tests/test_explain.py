@@ -10,6 +10,7 @@ note's documented notation: ``\\vec v_{\\mathrm{C}}`` is the velocity of point C
 
 from __future__ import annotations
 
+import html
 import math
 import re
 from pathlib import Path
@@ -400,6 +401,71 @@ def test_mathml_of_the_constructs() -> None:
         mathml(r"\frac{a}{b")
 
 
+NBSP, THIN = "\u00a0", "\u2009"
+
+
+def test_mathml_text_keeps_its_spaces() -> None:
+    # lines the note writes; a browser drops a token's edge spaces, hence NBSP
+    from assur.explain._mathml import mathml
+
+    assert mathml(r"\text{the point of ground at } C") == (
+        f"<math><mtext>the point of ground at{NBSP}</mtext><mi>C</mi></math>"
+    )
+    assert "<mtext>(joint C)</mtext>" in mathml(r"F \quad \text{(joint C)}")
+    assert mathml(r"\text{from } C \text{ to } B") == (
+        f"<math><mtext>from{NBSP}</mtext><mi>C</mi>"
+        f"<mtext>{NBSP}to{NBSP}</mtext><mi>B</mi></math>"
+    )
+    against = mathml(r"\text{at } 45^\circ \text{ (against } \vec a_G\text{)}")
+    assert f"<mtext>at{NBSP}</mtext><msup><mn>45</mn><mo>°</mo></msup>" in against
+    assert f"<mtext>{NBSP}(against{NBSP}</mtext>" in against
+    assert "<mtext>forces on left_rocker along x</mtext>" in mathml(
+        r"\text{forces on left\_rocker along x}:\ 1 = 1"
+    )
+
+
+def test_mathml_units_are_spaced_and_raised() -> None:
+    from assur.explain._mathml import mathml
+
+    torque = mathml(r"M_{i} = -18.08\ \mathrm{N\,m}")
+    assert torque.endswith(
+        f'<mn>18.08</mn><mspace width="0.25em"/><mtext>N{THIN}m</mtext></math>'
+    )
+    for unit in ("m", "rad"):
+        assert mathml(rf"\mathrm{{{unit}/s^2}}") == (
+            f"<math><mrow><mtext>{unit}/</mtext>"
+            "<msup><mtext>s</mtext><mn>2</mn></msup></mrow></math>"
+        )
+    assert mathml(r"\mathrm{B\ block}") == "<math><mtext>B block</mtext></math>"
+    assert mathml(r"\mathrm{a\hat{}b}") == "<math><mtext>a^b</mtext></math>"
+    assert mathml(r"x\;y\quad z") == (
+        '<math><mi>x</mi><mspace width="0.28em"/><mi>y</mi>'
+        '<mspace width="1em"/><mi>z</mi></math>'
+    )
+
+
+TEXT_OR_ROMAN = re.compile(r"\\(?:text|mathrm)\{((?:[^{}]|\\[{}])*)\}")
+
+
+@pytest.mark.parametrize("stem", ["slider_crank_exercise", "class3", "tenbar"])
+def test_html_note_sets_every_text_and_unit(stem: str) -> None:
+    # every \text{} and \mathrm{} of the note, read back from its MathML
+    note = explain(assur.load(EXAMPLES / f"{stem}.toml"), 45.0)
+    page = note.to_html()
+    shown = {
+        html.unescape(t).replace(NBSP, " ").replace(THIN, r"\,")
+        for t in re.findall(r"<mtext>([^<]*)</mtext>", page)
+    }
+    written = {
+        re.sub(r"\\([_{}$%&#])", r"\1", t).replace(r"\ ", " ")
+        for t in TEXT_OR_ROMAN.findall(str(note))
+        if "^" not in t
+    }
+    assert written - shown == set()
+    assert "s^2" not in page
+    assert page.count("<msup><mtext>s</mtext><mn>2</mn></msup>") > 0
+
+
 @pytest.mark.parametrize(
     ("stem", "angle"),
     [
@@ -453,6 +519,7 @@ def test_html_report_holds_the_note() -> None:
     assert "Inertia loads" in section
     assert "group by group" in section
     assert section.count("<math") > 50
+    assert f"<mtext>N{THIN}m</mtext>" in section  # the note's units, as on its page
     assert re.search(r"https?://", page) is None
 
 

@@ -3,8 +3,10 @@ r"""The small subset of TeX the note writes, turned into MathML (no network need
 Supported: numbers, letters, operators, groups ``{...}``, sub- and superscripts,
 ``\frac``, ``\sqrt``, ``\vec``, ``\dot``, ``\ddot``, ``\mathrm``, ``\text``,
 ``\left``/``\right``, Greek letters, the operators and spaces of :data:`SYMBOLS`.
-Anything else raises ``ValueError`` (a test renders every note, so a construct
-missing here shows at once). Browsers render MathML Core natively.
+As in TeX, ``\text`` keeps its spaces while ``\mathrm`` stays mathematics: its
+spaces come from ``\,`` or ``\ `` and its ``^2`` is a superscript. Anything else
+raises ``ValueError`` (a test renders every note, so a construct missing here shows
+at once). Browsers render MathML Core natively.
 """
 
 from __future__ import annotations
@@ -28,7 +30,13 @@ SYMBOLS = {
 }  # fmt: skip
 FUNCTIONS = ("arccos", "arcsin", "arctan", "cos", "sin", "tan", "ln", "exp")
 SPACES = {"quad": "1em", "qquad": "2em", ",": "0.17em", ";": "0.28em", " ": "0.25em"}
+TEXT_SPACES = {
+    "quad": "\u2003", "qquad": "\u2003\u2003", ",": "\u2009", ";": "\u2005", " ": " ",
+}  # fmt: skip
+"""The spaces of :data:`SPACES` as characters (em, thin and four-per-em spaces), for
+inside ``\\text`` and ``\\mathrm``, where they join the words of one ``<mtext>``."""
 TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\d+(?:\.\d+)?|[A-Za-z]|\s+|.", re.S)
+EDGE_SPACES = re.compile(r"^ +| +$")
 
 
 def mathml(tex: str, display: bool = False) -> str:
@@ -39,7 +47,8 @@ def mathml(tex: str, display: bool = False) -> str:
     >>> mathml(r"\omega_{1} = 200")
     '<math><msub><mi>ω</mi><mrow><mn>1</mn></mrow></msub><mo>=</mo><mn>200</mn></math>'
     """
-    tokens = [t for t in TOKEN.findall(tex) if not t.isspace()]
+    # spaces are kept as tokens: math skips them, but \text sets them
+    tokens = TOKEN.findall(tex)
     body, rest = _sequence(tokens, 0, None)
     if rest != len(tokens):
         msg = f"unbalanced braces in {tex!r}"
@@ -48,12 +57,21 @@ def mathml(tex: str, display: bool = False) -> str:
     return f"<math{block}>{body}</math>"
 
 
+def _skip(tokens: list[str], i: int) -> int:
+    """Return the index of the first token from ``i`` on that is not a space."""
+    while i < len(tokens) and tokens[i].isspace():
+        i += 1
+    return i
+
+
 def _sequence(tokens: list[str], i: int, end: str | None) -> tuple[str, int]:
     """Parse atoms until ``end`` (a closing brace) or the end; return MathML."""
     out = []
+    i = _skip(tokens, i)
     while i < len(tokens) and tokens[i] != end:
         atom, i = _atom(tokens, i)
         out.append(atom)
+        i = _skip(tokens, i)
     if end is not None:
         if i >= len(tokens):
             msg = "a brace is not closed"
@@ -64,6 +82,7 @@ def _sequence(tokens: list[str], i: int, end: str | None) -> tuple[str, int]:
 
 def _argument(tokens: list[str], i: int) -> tuple[str, int]:
     """Parse one argument: a group in braces, or a single token."""
+    i = _skip(tokens, i)
     if i >= len(tokens):
         msg = "an argument is missing"
         raise ValueError(msg)
@@ -73,32 +92,108 @@ def _argument(tokens: list[str], i: int) -> tuple[str, int]:
     return _base(tokens, i)
 
 
-def _raw(tokens: list[str], i: int) -> tuple[str, int]:
-    r"""Return the text of a braced argument as written (for ``\text``)."""
-    if tokens[i] != "{":
-        return tokens[i], i + 1
-    depth, j, parts = 1, i + 1, []
+def _mtext(text: str) -> str:
+    """Return ``text`` as ``<mtext>``, its edge spaces made no-break spaces."""
+    # a browser drops the spaces at the ends of a MathML token (``at `` shows ``at``)
+    kept = EDGE_SPACES.sub(lambda m: "\u00a0" * len(m.group()), text)
+    return f"<mtext>{escape(kept)}</mtext>"
+
+
+def _character(token: str) -> str:
+    r"""Return the text a token of ``\text`` or ``\mathrm`` stands for."""
+    if not token.startswith("\\"):
+        return token
+    name = token[1:]
+    # a name's caret is written \hat{} (over nothing); its braces are skipped
+    for table in (TEXT_SPACES, SYMBOLS, GREEK, {"hat": "^"}):
+        if name in table:
+            return table[name]
+    msg = f"the note's MathML knows no \\{name} in text"
+    raise ValueError(msg)
+
+
+def _group_end(tokens: list[str], i: int) -> int:
+    """Return the index of the brace that closes the one before ``i``."""
+    depth = 1
     while depth:
+        if i >= len(tokens):
+            msg = "a brace is not closed"
+            raise ValueError(msg)
+        depth += tokens[i] == "{"
+        depth -= tokens[i] == "}"
+        i += 1
+    return i - 1
+
+
+def _text(tokens: list[str], i: int) -> tuple[str, int]:
+    r"""Parse the argument of ``\text``: words set as written, spaces and all."""
+    i = _skip(tokens, i)
+    if i >= len(tokens):
+        msg = "an argument is missing"
+        raise ValueError(msg)
+    if tokens[i] != "{":
+        return _mtext(_character(tokens[i])), i + 1
+    end = _group_end(tokens, i + 1)
+    chars, after_word = [], False
+    for t in tokens[i + 1 : end]:
+        # TeX drops the spaces after a control word (\quad x), and inner braces
+        if t in ("{", "}") or (after_word and t.isspace()):
+            continue
+        chars.append(" " if t.isspace() else _character(t))
+        after_word = t[0] == "\\" and t[1:].isalpha()
+    return _mtext("".join(chars)), end + 1
+
+
+def _roman(tokens: list[str], i: int) -> tuple[str, int]:
+    r"""Parse the argument of ``\mathrm``: upright text whose ``^``/``_`` are scripts.
+
+    It stays mathematics: spaces between letters are not set (``\,`` is), and
+    ``\mathrm{m/s^2}`` raises the 2 over the s alone, as TeX does.
+    """
+    i = _skip(tokens, i)
+    if i >= len(tokens) or tokens[i] != "{":
+        return _text(tokens, i)
+    end = _group_end(tokens, i + 1)
+    pieces, run, j = [], "", i + 1
+    while j < end:
         t = tokens[j]
-        depth += t == "{"
-        depth -= t == "}"
-        if depth:
-            parts.append(SYMBOLS.get(t[1:], t[1:]) if t.startswith("\\") else t)
+        if t in ("^", "_"):
+            # a script binds to the character before it, not to the whole word
+            if run[:-1]:
+                pieces.append(_mtext(run[:-1]))
+            script, j = _scripts(_mtext(run[-1:]), tokens, j)
+            if j > end:
+                msg = "a script in \\mathrm is missing its argument"
+                raise ValueError(msg)
+            pieces.append(script)
+            run = ""
+            continue
+        if t not in ("{", "}") and not t.isspace():
+            run += _character(t)
         j += 1
-    return "".join(parts), j
+    if run:
+        pieces.append(_mtext(run))
+    body = "".join(pieces)
+    return (body if len(pieces) == 1 else f"<mrow>{body}</mrow>"), end + 1
 
 
 def _atom(tokens: list[str], i: int) -> tuple[str, int]:
     """Parse a base with its sub- and superscripts."""
     base, i = _base(tokens, i)
+    return _scripts(base, tokens, i)
+
+
+def _scripts(base: str, tokens: list[str], i: int) -> tuple[str, int]:
+    """Attach the sub- and superscripts from ``i`` on to ``base``."""
     sub = sup = None
+    i = _skip(tokens, i)
     while i < len(tokens) and tokens[i] in ("_", "^"):
         arg, j = _argument(tokens, i + 1)
         if tokens[i] == "_":
             sub = arg
         else:
             sup = arg
-        i = j
+        i = _skip(tokens, j)
     if sub and sup:
         return f"<msubsup>{base}{sub}{sup}</msubsup>", i
     if sub:
@@ -110,6 +205,10 @@ def _atom(tokens: list[str], i: int) -> tuple[str, int]:
 
 def _base(tokens: list[str], i: int) -> tuple[str, int]:
     """Parse one token (or a command with its arguments)."""
+    i = _skip(tokens, i)
+    if i >= len(tokens):
+        msg = "an argument is missing"
+        raise ValueError(msg)
     t = tokens[i]
     if t == "{":
         body, i = _sequence(tokens, i + 1, "}")
@@ -133,9 +232,10 @@ def _command(name: str, tokens: list[str], i: int) -> tuple[str, int]:
         return f"<mo>{escape(SYMBOLS[name])}</mo>", i
     if name in FUNCTIONS:
         return f"<mi>{name}</mi>", i
-    if name in ("mathrm", "text"):
-        text, i = _raw(tokens, i)
-        return f"<mtext>{escape(text)}</mtext>", i
+    if name == "text":
+        return _text(tokens, i)
+    if name == "mathrm":
+        return _roman(tokens, i)
     if name == "frac":
         top, i = _argument(tokens, i)
         bottom, i = _argument(tokens, i)
