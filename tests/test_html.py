@@ -403,6 +403,40 @@ def test_script_writes_the_schema_units(tmp_path: Path) -> None:
     assert "the bar in the lower left corner is 10000 N)" in shown["note"]
 
 
+SCRIPT = Path(assur.html.__file__).parent / "report.js"
+SPREAD = re.compile(r"[(,]\s*\.\.\.|\.apply\(")
+"""An array spread into a call's arguments (``Math.min(...values)``), or applied."""
+
+
+def test_script_spreads_no_array_into_a_call() -> None:
+    # each argument takes a place on the stack: Math.max(...values) over a sweep
+    # of 36 001 positions overflows it (RangeError), so the script loops instead
+    code = re.sub(r"//.*", "", SCRIPT.read_text(encoding="utf-8"))
+    spread = [
+        line.strip() for line in code.splitlines() if SPREAD.search(line) is not None
+    ]
+    assert spread == []
+
+
+def test_script_finds_the_extent_of_a_long_sweep() -> None:
+    node = _executable("node", "nodejs")
+    if node is None:
+        pytest.skip("node not found")
+    found = re.search(
+        r"^  function extent\(.*?^  }$", SCRIPT.read_text(encoding="utf-8"), re.M | re.S
+    )
+    assert found is not None
+    # 200 000 values (twice the most positions a page holds), every 7th left out
+    run = found.group() + (
+        "\nconst a = Array.from({length: 200000}, (_, i) => i % 7 ? i - 1e5 : null);"
+        "\nconsole.log(JSON.stringify(extent([a, [null, 3e5]])));"
+    )
+    out = subprocess.run(
+        [node, "-e", run], capture_output=True, text=True, check=True, timeout=60
+    )
+    assert json.loads(out.stdout) == [-99999, 300000]
+
+
 # ------------------------------------------------------------------ the browser
 
 CHROMIUM_FLAGS = (

@@ -232,8 +232,10 @@
       const deg = g ? -Math.atan2(g.uy[i], g.ux[i]) * 180 / Math.PI : 0;
       moving(item.node, p[0], p[1], deg);
     }
-    for (const item of pivots) moving(item.node, ...at(item.name, i));
-    for (const item of marks) moving(item.node, ...at(item.name, i));
+    for (const item of pivots.concat(marks)) {
+      const p = at(item.name, i);
+      moving(item.node, p[0], p[1]);
+    }
     for (const item of circles) {
       const p = at(item.name, i);
       set(item.node, {cx: p[0], cy: p[1]});
@@ -250,6 +252,20 @@
       set(item.node, {x1: p[0], y1: p[1], x2: p[0] + fx * perNewton,
         y2: p[1] - fy * perNewton, visibility: shown ? "visible" : "hidden"});
     }
+  }
+
+  // the lowest and highest value of some series, nulls left out; a loop, as a
+  // sweep spread into Math.min's arguments (100 000 positions) overflows the stack
+  function extent(lists) {
+    let lo = Infinity, hi = -Infinity;
+    for (const values of lists) {
+      for (const v of values) {
+        if (v === null) continue;
+        if (v < lo) lo = v;
+        if (v > hi) hi = v;
+      }
+    }
+    return [lo, hi];
   }
 
   // diagrams against the driver position, with a marker at the current one
@@ -280,8 +296,7 @@
     const series = spec.series.map((item, j) => Object.assign({
       values: data.columns[item.key],
       colour: item.dashed ? "#111827" : SERIES[j % SERIES.length]}, item));
-    const finite = series.flatMap((item) => item.values.filter((v) => v !== null));
-    let lo = Math.min(...finite), hi = Math.max(...finite);
+    let [lo, hi] = extent(series.map((item) => item.values));
     if (!(hi - lo > 1e-12 * Math.max(1, Math.abs(hi)))) {
       const half = Math.abs(hi) * 0.1 || 1;
       lo -= half; hi += half;
