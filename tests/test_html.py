@@ -391,6 +391,7 @@ def test_script_writes_the_schema_units(tmp_path: Path) -> None:
         "s (m)",
         "v (m/s)",
         "a (m/s²)",
+        "M (N·m)",
         "joint",
         "Fx (N)",
         "Fy (N)",

@@ -170,3 +170,18 @@ def test_the_first_position_is_written_with_its_unit() -> None:
     assert (
         row_position(table(("R", "A"), ("P", "E")), 0) == "A: φ = 30.0°, E: s = -0.04 m"
     )
+
+
+def test_a_prismatic_pair_s_couple_is_shown_with_its_slide() -> None:
+    # the slot's couple M was on no part of the page
+    from assur.html._data import report_data
+
+    table = assur.forces(
+        assur.load(Path(__file__).parent.parent / "examples" / "whitworth.toml"),
+        np.arange(0.0, 360.0, 30.0),
+    )
+    data = report_data(table.plan, assur.structure(table.mechanism), table)
+    slides = data["current"]["slides"]
+    assert slides["head"][-1] == "M (N·m)"
+    assert [row["keys"][-1] for row in slides["rows"]] == ["slot.M", "guide.M"]
+    np.testing.assert_allclose(data["columns"]["slot.M"], table["slot.M"], rtol=1e-5)

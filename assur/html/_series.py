@@ -88,12 +88,19 @@ def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
         {"name": x, "keys": [f"{x}.angle", f"{x}.omega", f"{x}.alpha"]}
         for x in moving_links(plan, table)
     ]
-    slides = [
-        {"name": p.name, "keys": [f"{p.name}.s", f"{p.name}.v", f"{p.name}.a"]}
-        for p in joints
-        if p.kind == "P"
-    ]
     forced = table.force_state is not None
+    sliding = [p.name for p in joints if p.kind == "P"]
+    # a prismatic pair's couple is its reaction's third part: shown with its slide
+    couples = forced and all(f"{name}.M" in table.columns for name in sliding)
+    slides = [
+        {
+            "name": name,
+            "keys": [
+                f"{name}.{x}" for x in ("s", "v", "a", "M")[: 4 if couples else 3]
+            ],
+        }
+        for name in sliding
+    ]
     suffixes = ("Fx", "Fy", "F") if forced else ("x", "y")
     points = [
         {"name": p.name, "keys": [f"{p.name}.{x}" for x in suffixes]} for p in joints
@@ -106,7 +113,7 @@ def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
     ]
     parts = {
         "links": ("link", ("angle", "ω", "α"), links),
-        "slides": ("slide", ("s", "v", "a"), slides),
+        "slides": ("slide", ("s", "v", "a", "M")[: 4 if couples else 3], slides),
         "joints": ("joint", ("Fx", "Fy", "|F|") if forced else ("x", "y"), points),
         "inertia": ("inertia of", ("Fi,x", "Fi,y", "Mi"), inertia),
     }
