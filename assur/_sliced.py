@@ -22,12 +22,14 @@ import numpy as np
 from assur._output import path_text
 from assur._vec import Array, full
 from assur.analysis import SKIPPED_WHY
+from assur.columns import balancing_columns
 from assur.errors import (
     AssemblyError,
     AssurWarning,
     SelfLockingError,
     SingularConfigurationError,
 )
+from assur.plan import plan_of
 
 __all__ = ["CHUNK", "Skipped", "Slice", "slices"]
 
@@ -165,13 +167,14 @@ def _check(
     from assur.analysis import kinematics
 
     rubbing = forces and any(j.friction > 0.0 for j in mech.joints)
+    loads = balancing_columns(plan_of(mech)) if rubbing else []
     for start in range(0, len(rest), chunk):
         part = rest[start : start + chunk]
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # given once, by the analysis itself
             try:
                 if rubbing:
-                    force_table(mech, part, columns=["driver.torque"])
+                    force_table(mech, part, columns=loads)
                 else:
                     kinematics(mech, part, columns=["angle"])
             except (AssemblyError, SingularConfigurationError) as err:
@@ -194,7 +197,7 @@ def _raise_as_whole(
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         if forces:
-            force_table(mech, given, skip, columns=["driver.torque"])
+            force_table(mech, given, skip, columns=balancing_columns(plan_of(mech)))
         else:
             kinematics(mech, given, skip, columns=["angle"])
     raise err  # pragma: no cover - the whole sweep fails where a slice did

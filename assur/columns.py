@@ -24,7 +24,15 @@ from assur.plan import Plan
 if TYPE_CHECKING:
     pass
 
-__all__ = ["Column", "Selection", "families", "pretty_unit", "schema", "selection"]
+__all__ = [
+    "Column",
+    "Selection",
+    "balancing_columns",
+    "families",
+    "pretty_unit",
+    "schema",
+    "selection",
+]
 
 POINT_PARTS = (("x", "y"), ("vx", "vy"), ("ax", "ay"), ("jx", "jy"))
 """Column suffixes of a point's position, velocity, acceleration and jerk."""
@@ -92,6 +100,16 @@ def schema(plan: Plan, forces: bool) -> tuple[Column, ...]:
             found += _force_columns(plan)
         found = plan.memo[key] = tuple(found)
     return found  # type: ignore[no-any-return]
+
+
+def balancing_columns(plan: Plan) -> list[str]:
+    """Return the names of the drivers' balancing loads in a forces table of ``plan``.
+
+    ``driver.torque`` (N m), or ``driver.force`` (N) for a prismatic driver; with
+    several drivers also each one's own, named after its joint (``A.torque``,
+    ``P.force``), in table order.
+    """
+    return [c.name for c in schema(plan, True) if c.family == "balancing"]
 
 
 def _position_unit(plan: Plan, i: int) -> str:

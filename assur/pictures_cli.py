@@ -217,9 +217,13 @@ def _kept(mech: Any, positions: Any, forces: bool, skip: bool) -> tuple[Any, Any
     """
     from assur.analysis import forces as force_table
     from assur.analysis import kinematics
+    from assur.columns import balancing_columns
+    from assur.plan import plan_of
 
     if forces:  # friction may lock positions that assemble
-        table = force_table(mech, positions, skip, columns=["angle", "driver.torque"])
+        # the balancing loads alone: a torque or a force, as each driver moves
+        loads = balancing_columns(plan_of(mech))
+        table = force_table(mech, positions, skip, columns=["angle", *loads])
     else:
         table = kinematics(mech, positions, skip, columns=["angle"])
     return _some_kept(table).given, table.skipped

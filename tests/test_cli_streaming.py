@@ -531,3 +531,16 @@ def test_friction_locking_in_a_later_slice_writes_nothing(
     out, err = capsys.readouterr()
     assert (status, out) == (2, "")
     assert "its friction locks it at driver position 248 deg (7 of 31 positions)" in err
+
+
+def test_friction_of_a_prismatic_driver_is_checked_slice_by_slice(capsys, monkeypatch):
+    # the check of a long sweep with friction asked for driver.torque, which a
+    # prismatic driver has not (its balancing load is driver.force)
+    monkeypatch.setattr(_sliced, "CHUNK", 8)  # 21 positions: three slices
+    path = Path(__file__).parent / "data" / "friction" / "ram_up_a_steep_guide.toml"
+    status = cli.main(["forces", str(path), "--angles", "0:0.02:0.001", "--csv", "-"])
+    out, err = capsys.readouterr()
+    assert status == 0, err
+    header, *rows = out.splitlines()
+    assert "driver.force" in header.split(",")
+    assert len(rows) == 21

@@ -289,6 +289,21 @@ def test_animate_frames_spread_over_the_angles(
         assert gif.n_frames == 3
 
 
+@pytest.mark.pictures
+def test_animate_forces_of_a_prismatic_driver(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # the sweep was checked with driver.torque, which a prismatic driver has not
+    out = tmp_path / "ram.gif"
+    ram = str(Path(__file__).parent / "data" / "explain" / "ram_only.toml")
+    argv = ["animate", ram, "--forces", "--frames", "3", "-o", str(out)]
+    status, stdout, err = _run(capsys, *argv)
+    assert status == 0, err
+    assert stdout == f"wrote {out} (3 frames)\n"
+    with Image.open(out) as gif:
+        assert gif.n_frames == 3
+
+
 @pytest.mark.parametrize(
     ("argv", "parts"),
     [
