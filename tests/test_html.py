@@ -567,7 +567,7 @@ def test_kinematics_only_page_in_the_browser(browser: Any, tmp_path: Path) -> No
 
 
 def test_the_diagrams_break_where_positions_were_left_out() -> None:
-    from assur.html._data import gaps
+    from assur._gaps import gaps
 
     triad = assur.load(Path(__file__).parent / "data" / "edge" / "triadP.toml")
     table = assur.kinematics(triad, np.arange(30.0, 390.0, 1.0), skip_unassembled=True)

@@ -48,6 +48,8 @@ RANKS = {
     "assur.analysis": 9,
     # variants of one topology solved in one batch, from the analysis's own steps
     "assur._batch": 9,
+    # where a sweep's lines break, after the positions the analysis left out
+    "assur._gaps": 9,
     # studies: many variants, summarised; pandas, xarray and dask imported lazily
     "assur.study": 10,
     "assur.io": 10,

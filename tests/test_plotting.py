@@ -443,6 +443,52 @@ def test_plot_shaking(six_bar: assur.Table) -> None:
     np.testing.assert_array_equal(moment.lines[0].get_ydata(), six_bar["shaking.M"])
 
 
+@pytest.fixture(scope="module")
+def locked_triad() -> assur.Table:
+    """A crank whose triad cannot be assembled from 87 to 281 deg: left out."""
+    mech = assur.load(
+        Path(__file__).parent / "data" / "edge" / "triad_locks_ahead.toml"
+    )
+    return assur.forces(mech, np.arange(0.0, 360.0, 1.0), skip_unassembled=True)
+
+
+def _broken_at(drawn: np.ndarray, want: np.ndarray, row: int) -> None:
+    """``drawn`` is ``want`` with one NaN (a break in the line) before ``row``."""
+    drawn = np.asarray(drawn, dtype=float)
+    assert np.flatnonzero(np.isnan(drawn)).tolist() == [row]
+    np.testing.assert_array_equal(np.delete(drawn, row), want)
+
+
+def test_sweep_diagrams_break_where_positions_were_left_out(
+    locked_triad: assur.Table,
+) -> None:
+    # one straight line ran from 86 to 282 deg, as if there were data in between
+    t = locked_triad
+    row = 87
+    assert t["angle"][row - 1 : row + 1].tolist() == [86.0, 282.0]
+    ax = plotting.plot_motion(t, ["rod"], "omega")
+    _broken_at(ax.lines[0].get_xdata(), t["angle"], row)
+    _broken_at(ax.lines[0].get_ydata(), t["rod.omega"], row)
+    ax = plotting.plot_motion(t, ["C"], "v")
+    for line, part in zip(ax.lines, ("vx", "vy"), strict=True):
+        _broken_at(line.get_ydata(), t[f"C.{part}"], row)
+    ax = plotting.plot_paths(t, ["C"])
+    (path,) = (ln for ln in ax.lines if ln.get_label() == "C")
+    _broken_at(path.get_xdata(), t["C.x"], row)
+    _broken_at(path.get_ydata(), t["C.y"], row)
+    ax = plotting.plot_torque(t)
+    _broken_at(ax.lines[0].get_xdata(), t["angle"], row)
+    _broken_at(ax.lines[0].get_ydata(), t["driver.torque"], row)
+    (panel,) = (a for a in plotting.plot_hodographs(t, ["C"]).axes if a.axison)
+    _broken_at(panel.lines[0].get_xdata(), t["C.Fx"], row)
+    _broken_at(panel.lines[0].get_ydata(), t["C.Fy"], row)
+    polar, force, moment = plotting.plot_shaking(t).axes
+    _broken_at(polar.lines[0].get_ydata(), t["shaking.Fy"], row)
+    _broken_at(force.lines[0].get_xdata(), t["angle"], row)
+    _broken_at(force.lines[1].get_ydata(), t["shaking.Fy"], row)
+    _broken_at(moment.lines[0].get_ydata(), t["shaking.M"], row)
+
+
 @pytest.mark.parametrize(
     "function", [plotting.plot_torque, plotting.plot_hodographs, plotting.plot_shaking]
 )

@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._gaps import gaps
 from assur._structure import Group, Structure
 from assur._style import DRIVER_COLOUR, group_colour, link_colours
 from assur._text import roman
@@ -230,22 +231,3 @@ def _bounds(plan: Plan, data: dict[str, Any]) -> list[float]:
             middle = 0.5 * (box[lo] + box[lo + 1])
             box[lo], box[lo + 1] = middle - 0.5 * least, middle + 0.5 * least
     return box
-
-
-def gaps(table: Table) -> list[int]:
-    """Return the rows after which positions were left out (the lines break there).
-
-    Each row ``i`` follows a left-out position: one of the table's ``skipped``
-    lies between its first driver's positions at rows ``i - 1`` and ``i``.
-    """
-    kept = np.asarray(table.given[:, 0], dtype=float)
-    left = np.ravel(table.skipped) if table.skipped.ndim == 1 else table.skipped[:, 0]
-    if len(kept) < 2 or not len(left):
-        return []
-    step = np.diff(kept)
-    if not (np.all(step > 0) or np.all(step < 0)):
-        return []  # a sweep that turns back: no order to place them in
-    order = kept if step[0] > 0 else kept[::-1]
-    at = np.searchsorted(order, left)
-    rows = at if step[0] > 0 else len(kept) - at
-    return np.unique(rows[(rows > 0) & (rows < len(kept))]).tolist()

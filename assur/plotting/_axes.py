@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._gaps import broken, gaps
 from assur.plotting._context import _revolute, _unit
 from assur.plotting._style import literal
 
@@ -67,6 +68,16 @@ def _driver_axis(ax: Any, table: Table) -> np.ndarray:
         ax.set_xlabel(f"driver position s [{unit}]")
     ax.grid(True, lw=0.5, alpha=0.5)
     return x
+
+
+def _broken(table: Table, values: Any) -> np.ndarray:
+    """Return ``values``, one per row of ``table``, with NaN where its lines break.
+
+    A NaN row goes between two positions kept with positions left out between them
+    (``skip_unassembled``), so that a line does not cross them as if it had data
+    there; a sweep with none left out gives ``values`` as they are.
+    """
+    return broken(values, gaps(table))
 
 
 def _handles(entries: list[tuple[str, str]]) -> list[Any]:

@@ -11,9 +11,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._gaps import gaps
 from assur.columns import LINK_PARTS, POINT_PARTS
 from assur.errors import ModelError
 from assur.plotting._axes import (
+    _broken,
     _driver_axis,
     _frame_axes,
     _new_axes,
@@ -83,7 +85,8 @@ def plot_motion(
     elif isinstance(names, str):
         names = [names]
     ax = _new_axes(ax, (8.0, 4.5))
-    x = _driver_axis(ax, table)
+    # lines break where positions were left out, x and y alike
+    x = _broken(table, _driver_axis(ax, table))
     ctx = _context(table)
     plotted = [
         key for name in names for key in _plot_quantity(ax, ctx, x, name, quantity)
@@ -117,7 +120,7 @@ def _plot_quantity(
     if f"{name}.{quantity}" in table:
         ax.plot(
             x,
-            table[f"{name}.{quantity}"],
+            _broken(table, table[f"{name}.{quantity}"]),
             lw=1.6,
             label=literal(name),
             color=color,
@@ -126,10 +129,15 @@ def _plot_quantity(
         return [f"{name}.{quantity}"]
     if quantity in VECTORS and f"{name}.{VECTORS[quantity][0]}" in table:
         cx, cy = VECTORS[quantity]
-        line = ax.plot(x, table[f"{name}.{cx}"], lw=1.6, label=literal(f"{name} {cx}"))
+        line = ax.plot(
+            x,
+            _broken(table, table[f"{name}.{cx}"]),
+            lw=1.6,
+            label=literal(f"{name} {cx}"),
+        )
         ax.plot(
             x,
-            table[f"{name}.{cy}"],
+            _broken(table, table[f"{name}.{cy}"]),
             lw=1.6,
             ls="--",
             color=line[0].get_color(),
@@ -215,6 +223,7 @@ def plot_paths(
     )
     extra = {p.name for p in table.mechanism.points}
     names = list(points) if points is not None else _moving_points(table)
+    rows = gaps(table)
     for k, name in enumerate(names):
         if f"{name}.x" not in table:
             msg = f"plot_paths: no point {name!r}; expected a joint or an extra point"
@@ -222,15 +231,16 @@ def plot_paths(
         xy = np.column_stack([table[f"{name}.x"], table[f"{name}.y"]])
         color = PATH_COLORS[k % len(PATH_COLORS)]
         coupler = name in extra
+        line = _broken(table, xy)
         ax.plot(
-            xy[:, 0],
-            xy[:, 1],
+            line[:, 0],
+            line[:, 1],
             color=color,
             lw=2.4 if coupler else 1.4,
             zorder=5,
             label=literal(f"{name} (coupler curve)" if coupler else name),
         )
-        _sense(ax, xy, color)
+        _sense(ax, xy, color, rows)
         seen += list(xy)
     _frame_axes(ax, ctx, seen, ctx.size, margin=0.06)
     ax.set_title(f"{titled(table.mechanism)}: paths of points", fontsize=10)
@@ -240,12 +250,17 @@ def plot_paths(
     return ax
 
 
-def _sense(ax: Any, xy: np.ndarray, color: str) -> None:
-    """Draw an arrowhead a third of the way along a path: the sense of motion."""
+def _sense(ax: Any, xy: np.ndarray, color: str, rows: Sequence[int] = ()) -> None:
+    """Draw an arrowhead a third of the way along a path: the sense of motion.
+
+    ``rows``: the rows after positions left out; the arrow is not drawn across them.
+    """
     from matplotlib.patches import FancyArrowPatch
 
     k = len(xy) // 3
-    if len(xy) < 3 or not np.all(np.isfinite(xy[k : k + 2])):
+    while k + 1 in rows:  # a step across positions left out has no direction
+        k += 1
+    if len(xy) < 3 or k + 2 > len(xy) or not np.all(np.isfinite(xy[k : k + 2])):
         return
     ax.add_patch(
         FancyArrowPatch(

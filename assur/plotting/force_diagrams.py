@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur.errors import ModelError
-from assur.plotting._axes import _driver_axis, _new_axes, labelled_legend
+from assur.plotting._axes import _broken, _driver_axis, _new_axes, labelled_legend
 from assur.plotting._context import _context, _need_forces, _unit
 from assur.plotting._geometry import _on
 from assur.plotting._style import BALANCING_COLOR, literal, titled
@@ -64,7 +64,11 @@ def _plot_balancing(ax: Any, table: Table, x: np.ndarray, i: int, name: str) -> 
     balancing = table[key]
     step = max(1, len(x) // 36)
     ax.plot(
-        x, balancing, color=color, lw=1.8, label=f"balancing {what}{name} (equilibrium)"
+        _broken(table, x),
+        _broken(table, balancing),
+        color=color,
+        lw=1.8,
+        label=f"balancing {what}{name} (equilibrium)",
     )
     ax.plot(
         x[::step],
@@ -84,7 +88,7 @@ def _plot_balancing(ax: Any, table: Table, x: np.ndarray, i: int, name: str) -> 
 
 def _locus(ax: Any, table: Table, fx: np.ndarray, fy: np.ndarray, color: str) -> None:
     """Draw the hodograph of a force: its tip's path, the origin, a few marks."""
-    ax.plot(fx, fy, color=color, lw=1.5)
+    ax.plot(_broken(table, fx), _broken(table, fy), color=color, lw=1.5)
     ax.plot([0], [0], marker="+", color="black", ms=9)
     ax.axhline(0.0, color="#999999", lw=0.5)
     ax.axvline(0.0, color="#999999", lw=0.5)
@@ -204,18 +208,20 @@ def plot_shaking(table: Table) -> Any:
     polar.set_ylabel(f"Fy [{_unit(table, 'shaking.Fy')}]")
     polar.set_title("hodograph of the shaking force", fontsize=9)
     force = fig.add_subplot(grid[0, 1])
-    x = _driver_axis(force, table)
-    force.plot(x, shaking[:, 0], label="Fx", lw=1.5)
-    force.plot(x, shaking[:, 1], label="Fy", lw=1.5)
+    # lines break where positions were left out; the hodograph breaks in _locus
+    x = _broken(table, _driver_axis(force, table))
+    lines = _broken(table, shaking)
+    force.plot(x, lines[:, 0], label="Fx", lw=1.5)
+    force.plot(x, lines[:, 1], label="Fy", lw=1.5)
     force.plot(
-        x, np.hypot(shaking[:, 0], shaking[:, 1]), label="|F|", lw=1.5, color="black"
+        x, np.hypot(lines[:, 0], lines[:, 1]), label="|F|", lw=1.5, color="black"
     )
     force.set_ylabel(f"force [{_unit(table, 'shaking.Fx')}]")
     labelled_legend(force, fontsize=8, ncols=3)
     force.set_xlabel("")
     moment = fig.add_subplot(grid[1, 1], sharex=force)
     _driver_axis(moment, table)
-    moment.plot(x, shaking[:, 2], color="#d62728", lw=1.5, label="M about the origin")
+    moment.plot(x, lines[:, 2], color="#d62728", lw=1.5, label="M about the origin")
     moment.set_ylabel(f"moment [{_unit(table, 'shaking.M')}]")
     labelled_legend(moment, fontsize=8)
     fig.suptitle(
