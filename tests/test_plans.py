@@ -321,3 +321,31 @@ def test_a_folder_written_again_holds_one_mechanism_s_plans(tmp_path: Path) -> N
         *(f"{stem}.{suffix}" for stem in ("velocity_plan", "acceleration_plan",
           "instant_centres") for suffix in ("png", "svg")),
     }  # fmt: skip
+
+
+def _inside(ax, points: np.ndarray) -> bool:
+    """Whether every point lies within the limits of ``ax``."""
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    x, y = np.transpose(points)
+    return bool(np.all((x0 <= x) & (x <= x1) & (y0 <= y) & (y <= y1)))
+
+
+@pytest.mark.parametrize("stem", STEMS)
+def test_the_instant_centres_drawn_are_within_the_limits(stem: str) -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import draw
+
+    # the centres were plotted after draw() had framed the mechanism alone: the
+    # rod's centre of the lecture exercise, at (0.245, 0.245) m, stood above y = 0.078
+    table = table_at(assur.load(EXAMPLES / f"{stem}.toml"), 45.0)
+    ax = plans.instant_centres(table)
+    centres = [ln.get_xydata()[0] for ln in ax.lines if ln.get_zorder() == 9]
+    assert centres
+    assert _inside(ax, np.array(centres))
+    # the mechanism stays in view: the limits are those of draw() or wider
+    alone = draw(table)
+    corners = np.array([alone.get_xlim(), alone.get_ylim()]).T
+    assert _inside(ax, corners)
+    plt.close(alone.figure)
+    plt.close(ax.figure)

@@ -449,18 +449,23 @@ def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
     size = pos.size()
     middle = np.mean([pos.origin(b) for b in range(len(pos.plan.bodies))], axis=0)
     places: list[tuple[np.ndarray, list[str]]] = []
+    drawn: list[np.ndarray] = []
     for (i, j), p in centres.items():
         if p is None or float(np.hypot(*(p - middle))) > 3 * size:
             continue
         absolute = i == 0
         ax.plot(*p, "s" if absolute else "o", ms=6 if absolute else 4,
                 color="#d62728" if absolute else "#1f77b4", zorder=9)  # fmt: skip
+        drawn.append(p)
         label = f"I{pos.link(i)}-{pos.link(j)}" if i else f"I{pos.link(j)}"
         _place(places, p, label, 0.02 * size)
         if i and centres.get((0, i)) is not None and centres.get((0, j)) is not None:
             line = np.array([centres[(0, i)], centres[(0, j)]])
             if float(np.abs(line - middle).max()) < 3 * size:
                 ax.plot(line[:, 0], line[:, 1], ls=":", lw=0.7, color="#1f77b4")
+                drawn += list(line)
+    # draw() framed the mechanism alone: a centre beyond it would be cut off
+    _widen(ax, drawn, 0.1 * size)
     for p, labels in places:  # the centres at one place (a pin, say) in one label
         ax.annotate(
             literal(", ".join(labels)),
@@ -471,6 +476,21 @@ def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
         )
     ax.set_title(_title(pos, "instant centres"), fontsize=10)
     return ax
+
+
+def _widen(ax: Any, points: list[np.ndarray], pad: float) -> None:
+    """Widen the limits of ``ax`` to hold ``points`` with ``pad`` (m) round them.
+
+    Limits are never narrowed: what they held (the mechanism) stays in view.
+    """
+    if not points:
+        return
+    pts = np.reshape(points, (-1, 2))
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    low = np.minimum([x0, y0], pts.min(axis=0) - pad)
+    high = np.maximum([x1, y1], pts.max(axis=0) + pad)
+    ax.set_xlim(low[0], high[0])
+    ax.set_ylim(low[1], high[1])
 
 
 def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:
