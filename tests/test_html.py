@@ -577,3 +577,20 @@ def test_the_diagrams_break_where_positions_were_left_out() -> None:
     # an uneven sweep with nothing left out has no gap
     uneven = np.r_[np.arange(0.0, 90.0), np.arange(90.0, 361.0, 10.0)]
     assert gaps(assur.kinematics(assur.catalog.slider_crank(), uneven)) == []
+
+
+def test_the_readout_gives_every_driver_s_position(tmp_path: Path) -> None:
+    # only the first driver's angle was shown: the second crank's never was
+    node = _executable("node", "nodejs")
+    if node is None:
+        pytest.skip("node not found")
+    mech = assur.load(EXAMPLES / "five_bar_two_cranks.toml")
+    path = tmp_path / "five_bar.html"
+    write_report(mech, path)
+    out = subprocess.run(
+        [node, "-e", FAKE_DOM, str(path)], capture_output=True, text=True, check=True
+    )
+    shown = json.loads(out.stdout)
+    assert shown["errors"] == []
+    first, second = default_positions(mech)[0]
+    assert shown["readout"].startswith(f"driver angle {first:g}° · E {second:g}° · ")

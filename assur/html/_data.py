@@ -104,6 +104,7 @@ def _columns(table: Table, data: dict[str, Any]) -> dict[str, list[float | None]
     Positions are left out: they are in ``data["points"]`` already.
     """
     keys = [s["key"] for c in data["charts"] for s in c["series"]]
+    keys += [other["key"] for other in data["driver"]["others"]]
     keys += [
         key
         for part in data["current"].values()

@@ -35,12 +35,21 @@ def units(table: Table, keys: list[str]) -> str:
     return " or ".join(dict.fromkeys(unit(table, key) for key in keys))
 
 
-def driver_label(table: Table) -> dict[str, str]:
-    """Return the name and unit of the driver position (the diagrams' abscissa)."""
-    prismatic = table.plan.drivers[0].kind == "P"
+def driver_label(table: Table) -> dict[str, Any]:
+    """Return the name and unit of the driver position (the diagrams' abscissa).
+
+    With several drivers, ``others`` names the position column of each driver
+    after the first (the abscissa), which the readout shows too.
+    """
+    drivers = table.plan.drivers
+    prismatic = drivers[0].kind == "P"
+    others = [{"name": d.pair.name, "key": f"{d.pair.name}.drive"} for d in drivers[1:]]
+    for other in others:
+        other["unit"] = unit(table, other["key"])
     return {
         "label": "driver position" if prismatic else "driver angle",
         "unit": unit(table, "angle"),
+        "others": others,
     }
 
 
@@ -173,7 +182,9 @@ def charts(plan: Plan, table: Table) -> list[dict[str, Any]]:
 
 def table_columns(plan: Plan, table: Table) -> list[tuple[str, str]]:
     """Return the HTML table's columns as (column key, heading with unit)."""
-    columns = [("angle", driver_label(table)["label"])]
+    driver = driver_label(table)
+    columns = [("angle", driver["label"])]
+    columns += [(x["key"], f"position of {x['name']}") for x in driver["others"]]
     joints = visible_pairs(plan)
     if table.force_state is not None:
         columns += [(f"{p.name}.F", f"|F| {p.name}") for p in joints]

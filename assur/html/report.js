@@ -407,8 +407,12 @@
     drawMechanism(i);
     cursors.forEach((mark) => mark(i));
     for (const item of live) item.cell.textContent = fmt(value(item.key, i));
-    let text = data.driver.label + " " + fmt(data.angle[i]) +
-      (data.driver.unit === "deg" ? "°" : " " + data.driver.unit);
+    const at = (value, unit) => fmt(value) + (unit === "deg" ? "°" : " " + unit);
+    let text = data.driver.label + " " + at(data.angle[i], data.driver.unit);
+    // the other drivers' positions: the abscissa is the first one's
+    for (const other of data.driver.others) {
+      text += " · " + other.name + " " + at(data.columns[other.key][i], other.unit);
+    }
     if (data.forces) {
       for (const item of data.forces.balancing) {
         if (item.dashed) continue;
