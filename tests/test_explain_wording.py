@@ -8,6 +8,7 @@ table, not against the note.
 
 from __future__ import annotations
 
+import dataclasses
 import re
 from pathlib import Path
 
@@ -260,3 +261,9 @@ def test_a_fixed_pivot_reached_through_its_link_sums_to_zero():
     tangent = str(explain(assur.load(DATA / "prp_tangent.toml"), 0.0))
     line = next(x for x in tangent.splitlines() if r"\vec a_{\mathrm{C}} = " in x)
     assert r"= (0,\ 0),\quad a_{\mathrm{C}} = 0 $$" in line
+
+
+def test_a_dollar_in_the_name_is_bare_in_the_page_s_title():
+    mech = dataclasses.replace(assur.catalog.four_bar(), name="$x$ bar")
+    page = explain(mech, 45.0).to_html()
+    assert "<title>$x$ bar: the analysis explained</title>" in page

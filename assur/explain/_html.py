@@ -68,9 +68,11 @@ def html_page(note: Note) -> str:
     from html import escape
 
     title = inline(note.title)
+    # the title is Markdown, a name's dollar sign escaped: the tab shows it bare
+    bare = escape(note.title.replace("\\$", "$"))
     return (
         '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
-        f"<title>{escape(note.title)}</title>\n<style>{STYLE}</style>\n</head>\n"
+        f"<title>{bare}</title>\n<style>{STYLE}</style>\n</head>\n"
         f'<body>\n<article class="note">\n<h1>{title}</h1>\n{html_body(note)}\n'
         "</article>\n</body>\n</html>\n"
     )
