@@ -17,7 +17,14 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
-from assur._text import counted, listing, public_name, roman
+from assur._text import (
+    NAME_LIMIT,
+    counted,
+    listing,
+    public_name,
+    roman,
+    shortened,
+)
 from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, mechanism_of, resolve_point
 
@@ -643,9 +650,11 @@ def _parallel_text(index: _Index, unknown: set[str]) -> str | None:
     if parallel is None:
         return None
     first, second = parallel
-    a, b = _public(first.links)
+    # names cut short: a name of hundreds of characters would make the line a page
+    a, b = (shortened(x, NAME_LIMIT) for x in _public(first.links))
+    one, two = (shortened(p.name, NAME_LIMIT) for p in (first, second))
     return (
-        f"joints {first.name} and {second.name} both join {a} and {b}: "
+        f"joints {one} and {two} both join {a} and {b}: "
         f"{_parallel_reason(index, first, second)}"
     )
 

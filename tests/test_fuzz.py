@@ -133,6 +133,7 @@ FIXED = {
     "check_subnormal_velocities.toml": "table",
     "dynamics_class3_load_table.toml": "table",
     "dynamics_speed_overflow.toml": "table",
+    "doubled_pin_long_name.toml": "DecompositionError",
     "ic_overflow.toml": "table",
     "leftover_long_message.toml": "DecompositionError",
     "long_names_listed.toml": "ModelError",
