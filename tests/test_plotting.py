@@ -829,3 +829,46 @@ def test_a_free_body_is_in_equilibrium_as_drawn(stem):
     rubbing = stem != "slider_crank_exercise"
     assert ("friction circle (dashed), reaction tangent" in entries) == rubbing
     plt.close(ax.figure)
+
+
+def _is_load(text) -> bool:  # type: ignore[no-untyped-def]
+    """Whether a label names a load: a reaction, an inertia load, a weight, a torque."""
+    return text.get_text().startswith(("$R", "$F", "$M", "$G", "$T", "$Q"))
+
+
+def _load_label_overlaps(ax) -> list[tuple[str, str]]:  # type: ignore[no-untyped-def]
+    """The pairs of labels that overlap, one of them a load's (on the drawing)."""
+    ax.figure.canvas.draw()
+    renderer = ax.figure.canvas.get_renderer()
+    texts = [t for t in ax.texts if t.get_visible() and t.get_text()]
+    boxes = [t.get_window_extent(renderer) for t in texts]
+    return [
+        (texts[i].get_text(), texts[j].get_text())
+        for i in range(len(texts))
+        for j in range(i + 1, len(texts))
+        if (_is_load(texts[i]) or _is_load(texts[j])) and boxes[i].overlaps(boxes[j])
+    ]
+
+
+@pytest.mark.parametrize(
+    ("name", "angle", "group"),
+    [
+        ("slider_crank_exercise", 45.0, None),
+        ("class3", 30.0, 0),
+        ("six_bar_lecture", 60.0, 1),
+    ],
+)
+def test_the_loads_labels_do_not_overlap(
+    name: str, angle: float, group: int | None
+) -> None:
+    # at a slider its reaction, the guide's and its inertia force were named at one
+    # point, one label over another; a rod's inertia force hid under its couple's
+    table = assur.forces(assur.load(EXAMPLES / f"{name}.toml"), [angle])
+    if group is None:
+        ax = plotting.draw(table, forces=True)
+    else:
+        ax = plotting.draw_free_body(table, group)
+    try:
+        assert _load_label_overlaps(ax) == []
+    finally:
+        plt.close(ax.figure)

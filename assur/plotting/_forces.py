@@ -16,6 +16,7 @@ import numpy as np
 from assur._vec import full
 from assur.plotting._context import _unit
 from assur.plotting._geometry import _nice, _public
+from assur.plotting._labels import LOAD_LABELS
 from assur.plotting._style import (
     ARROW_LENGTH,
     BALANCING_COLOR,
@@ -274,7 +275,7 @@ def _draw_force(
     if text:
         u = force / mag
         words = f"{a.label} = {mag:.3g} {a.units[0]}" if text == "values" else a.label
-        ax.text(
+        label = ax.text(
             *(tip + 0.5 * ctx.r * u),
             words,
             fontsize=7.5,
@@ -284,6 +285,7 @@ def _draw_force(
             zorder=7,
             bbox=LABEL_BOX,
         )
+        LOAD_LABELS.add(label)
     return tip
 
 
@@ -313,7 +315,7 @@ def _draw_couple(
         # the balancing torque always shows its value
         value = text == "values" or a.kind == "balancing"
         words = f"{a.label} = {couple:.3g} {a.units[1]}" if value else a.label
-        ax.text(
+        label = ax.text(
             *(a.point + rad * np.array([0.7, 0.8])),
             words,
             fontsize=7.5,
@@ -323,4 +325,5 @@ def _draw_couple(
             zorder=7,
             bbox=LABEL_BOX,
         )
+        LOAD_LABELS.add(label)
     return [a.point - rad, a.point + rad]

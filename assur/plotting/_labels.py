@@ -6,6 +6,7 @@ of points to keep clear of grows with every label placed.
 
 from __future__ import annotations
 
+import weakref
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -74,3 +75,92 @@ def _label_link(
             "alpha": max(alpha, 0.35),
         },
     )
+
+
+LOAD_LABELS: weakref.WeakSet[Any] = weakref.WeakSet()
+"""The labels of forces and couples drawn: :func:`spread_labels` may move them.
+(Held aside, not as a ``gid``: an SVG writes a gid as an element's id, which must
+be unique in a page.)"""
+SPREAD_STEPS = 40
+"""Most rounds in which :func:`spread_labels` pushes overlapping labels apart."""
+
+
+def spread_labels(ax: Any) -> None:
+    """Move the loads' labels apart where they overlap each other or other labels.
+
+    Loads meet at the joints: at a slider its reaction, the guide's and its inertia
+    force are named at one point. Each round takes every overlapping pair in turn
+    and pushes the load labels in it clear (half each for two load labels, all of
+    it for one beside a joint's or a link's name, which stay), until none overlaps
+    or :data:`SPREAD_STEPS` rounds have passed. The layout is settled first: the
+    overlaps are measured on the drawing as it will be seen.
+    """
+    texts = [t for t in ax.texts if t.get_visible() and t.get_text()]
+    movable = np.array([t in LOAD_LABELS for t in texts])
+    if not movable.any():
+        return
+    # the labels moved do not resize the axes; two draws settle the layout (a
+    # legend beside the axes shrinks them, which moves the labels it made room
+    # for: the second draw finds where they are seen)
+    for text, load in zip(texts, movable, strict=True):
+        if load:
+            text.set_in_layout(False)
+    canvas = ax.figure.canvas
+    if not hasattr(canvas, "get_renderer"):
+        # a figure made without pyplot (the report's SVG) measures its text as Agg
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        canvas = FigureCanvasAgg(ax.figure)
+    canvas.draw()
+    canvas.draw()
+    renderer = canvas.get_renderer()
+    # the boxes (x0, y0, x1, y1, display units) move with their labels
+    boxes = np.array([t.get_window_extent(renderer).extents for t in texts])
+    moved = np.zeros((len(texts), 2))
+    for _ in range(SPREAD_STEPS):
+        clear = True
+        for i, j in _overlapping(boxes):
+            if not (movable[i] or movable[j]):
+                continue
+            clear = False
+            push = _push(boxes[i], boxes[j])
+            share = 0.5 if movable[i] and movable[j] else 1.0
+            for k, sign in ((i, 1.0), (j, -1.0)):
+                if movable[k]:
+                    step = sign * share * push
+                    boxes[k] += np.tile(step, 2)
+                    moved[k] += step
+        if clear:
+            break
+    to_data = ax.transData.inverted()
+    for text, step in zip(texts, moved, strict=True):
+        if step.any():
+            at = ax.transData.transform(text.get_position()) + step
+            text.set_position(tuple(to_data.transform(at)))
+
+
+def _overlapping(boxes: np.ndarray) -> list[tuple[int, int]]:
+    """Return the pairs of boxes (rows x0, y0, x1, y1) that overlap."""
+    x0, y0, x1, y1 = boxes.T
+    cross = (
+        (x0[:, None] < x1[None, :])
+        & (x0[None, :] < x1[:, None])
+        & (y0[:, None] < y1[None, :])
+        & (y0[None, :] < y1[:, None])
+    )
+    i, j = np.nonzero(np.triu(cross, 1))
+    return list(zip(i.tolist(), j.tolist(), strict=True))
+
+
+def _push(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Return the shift (display units) that takes box ``a`` clear of box ``b``.
+
+    Along the axis of the smaller overlap, away from ``b``'s centre (upward or to
+    the right for boxes centred alike), with a pixel to spare.
+    """
+    dx = min(a[2], b[2]) - max(a[0], b[0])
+    dy = min(a[3], b[3]) - max(a[1], b[1])
+    away = a[:2] + a[2:] - b[:2] - b[2:]
+    if dx < dy:
+        return np.array([np.copysign(dx + 1.0, away[0] or 1.0), 0.0])
+    return np.array([0.0, np.copysign(dy + 1.0, away[1] or 1.0)])

@@ -40,6 +40,7 @@ from assur.plotting._forces import (
     _tex,
 )
 from assur.plotting._geometry import _anchor, _extent, _public
+from assur.plotting._labels import spread_labels
 from assur.plotting._style import (
     INERTIA_COLOR,
     LOAD_COLOR,
@@ -221,6 +222,7 @@ def draw_free_body(
             (_scale_text(arrows, scale), ""),
         ],
     )
+    spread_labels(ax)
     return ax
 
 

@@ -30,7 +30,7 @@ from assur.plotting._forces import (
     _scale_text,
 )
 from assur.plotting._geometry import _extent, _public, _shape, _skeleton
-from assur.plotting._labels import _label_joints, _label_link
+from assur.plotting._labels import _label_joints, _label_link, spread_labels
 from assur.plotting._parts import _draw_guide, _draw_joint, _draw_link, _draw_pivot
 from assur.plotting._style import (
     BALANCING_COLOR,
@@ -114,6 +114,8 @@ def draw(
     row = _row(table, angle)
     ax = _new_axes(ax)
     _draw_row(ax, ctx, row, forces, scale, labels, groups)
+    if forces and labels:
+        spread_labels(ax)
     return ax
 
 
