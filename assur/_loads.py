@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._tables import interpolate, periodic
 from assur._vec import Array
 from assur.errors import AssurWarning, ModelError
 from assur.model import LoadTable, resolve_point
@@ -155,7 +156,7 @@ def table_values(
     if table.over == "driver":
         first = plan.drivers[0]
         if first.kind == "R":
-            return _periodic(xs, table.values, np.degrees(drive[:, 0]))
+            return periodic(xs, table.values, np.degrees(drive[:, 0]))
         at, what = drive[:, 0], "the driver's position"
     else:
         at, what = slides[table.over], f"the slide of joint {table.over!r}"
@@ -168,42 +169,7 @@ def table_values(
             "position"
         )
         raise ModelError(msg)
-    return [_interpolate(at, xs, np.asarray(v, dtype=float)) for v in table.values]
-
-
-def _periodic(xs: Array, values: Any, at: Array) -> list[Array]:
-    """Interpolate a table over one turn of a crank at angles ``at`` (deg).
-
-    An angle is read within the turn that starts at the table's first position;
-    after its last position the table runs back to its first value, a turn on,
-    unless it reaches there itself: a table from 0 to 360 whose ends differ (a
-    load that grows over the turn, say) jumps back at 0.
-    """
-    turn = xs[0] + np.remainder(at - xs[0], 360.0)
-    # a remainder rounded up to a whole turn is the turn's start
-    turn[turn >= xs[0] + 360.0] = xs[0]
-    closed = xs[-1] >= xs[0] + 360.0
-    grid = xs if closed else np.append(xs, xs[0] + 360.0)
-    out = []
-    for v in values:
-        ys = np.asarray(v, dtype=float)
-        out.append(_interpolate(turn, grid, ys if closed else np.append(ys, ys[0])))
-    return out
-
-
-def _interpolate(at: Array, xs: Array, ys: Array) -> Array:
-    """Interpolate ``ys`` over ``xs`` (increasing) linearly at ``at``; ends held.
-
-    As ``np.interp``, but through the fraction of each step, which stays within
-    [0, 1]: ``np.interp`` divides the step in the values by the step in the
-    positions first, which overflows where a table jumps (1e15 N within 1e-300 deg
-    gave inf).
-    """
-    at = np.asarray(at, dtype=float)
-    j = np.clip(np.searchsorted(xs, at, side="right") - 1, 0, len(xs) - 2)
-    with np.errstate(invalid="ignore"):
-        w = np.clip((at - xs[j]) / (xs[j + 1] - xs[j]), 0.0, 1.0)
-    return ys[j] + w * (ys[j + 1] - ys[j])  # type: ignore[no-any-return]
+    return [interpolate(at, xs, np.asarray(v, dtype=float)) for v in table.values]
 
 
 def _never_turning(plan: Plan) -> set[int]:

@@ -17,6 +17,7 @@ from typing import Any, NoReturn
 
 import numpy as np
 
+from assur._tables import disagreement
 from assur._text import describe, key_text, suggest
 from assur.errors import ModelError, UsageError
 
@@ -959,16 +960,6 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
     xs = np.asarray(table.table, dtype=float)
     if np.any(np.diff(xs) <= 0):
         _fail(f"{entry}.table", "expected strictly increasing positions")
-    kinds = {j.name: j.kind for j in mech.joints}
-    turning = bool(mech.drivers) and kinds.get(mech.drivers[0].joint) == "revolute"
-    if table.over == "driver" and turning and xs[-1] - xs[0] > 360.0 * (1 + 1e-12):
-        # the crank's position is read within one turn: two entries a turn apart
-        # would give one position two values
-        _fail(
-            f"{entry}.table",
-            f"spans {xs[-1] - xs[0]:g} deg; expected positions within one turn (the "
-            "last at most 360 deg after the first), read modulo 360",
-        )
     values = table.values
     if not isinstance(values, tuple) or len(values) != ncomp:
         count = len(values) if isinstance(values, tuple) else describe(values)
@@ -984,6 +975,20 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
                 _sequence_fault(
                     seq, f"{len(xs)} finite values, one per table position", len(xs)
                 ),
+            )
+    kinds = {j.name: j.kind for j in mech.joints}
+    turning = bool(mech.drivers) and kinds.get(mech.drivers[0].joint) == "revolute"
+    if table.over != "driver" or not turning:
+        return
+    for seq in values:
+        # a crank's angle is read modulo 360: entries a turn apart are one position
+        found = disagreement(xs, np.asarray(seq, dtype=float))
+        if found is not None:
+            _fail(
+                entry,
+                f"the value at {found[0]:g} deg is not the one at {found[1]:g} deg, a "
+                "whole number of turns before; expected values that repeat from turn "
+                "to turn (the crank's angle is read modulo 360)",
             )
 
 

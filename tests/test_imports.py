@@ -28,6 +28,7 @@ RANKS = {
     "assur._optional": 0,
     "assur._progress": 0,
     "assur._style": 0,
+    "assur._tables": 0,
     "assur.model": 1,
     "assur._structure": 2,
     "assur.report": 2,

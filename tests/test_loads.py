@@ -135,11 +135,34 @@ def test_a_table_short_of_a_turn_runs_back_to_its_first_value():
     np.testing.assert_allclose(t["driver.torque"], np.negative(expected), atol=1e-12)
 
 
-def test_a_table_over_more_than_a_turn_of_the_crank_is_refused():
+def test_a_table_over_more_turns_is_read_as_its_first_when_they_repeat():
+    # FORMAT.md sets no limit on the span: a table over two turns that repeats
+    # itself reads as its first turn (it was refused for a while)
+    two = LoadTable(
+        "driver", tuple(np.arange(0.0, 721.0, 90.0)), ((-1e3, 0.0) * 4 + (-1e3,),)
+    )
+    one = LoadTable("driver", (0.0, 90.0, 180.0, 270.0), ((-1e3, 0.0, -1e3, 0.0),))
+    at = np.arange(-90.0, 450.0, 15.0)
+    a = assur.forces(crank_slider(Load("crank", torque=two)), at)
+    b = assur.forces(crank_slider(Load("crank", torque=one)), at)
+    np.testing.assert_array_equal(a["driver.torque"], b["driver.torque"])
+
+
+def test_a_table_over_more_turns_that_do_not_repeat_is_refused():
+    # a load growing over two turns gives the crank's position two values
     table = LoadTable("driver", (0.0, 360.0, 720.0), ((0.0, 1.0, 2.0),))
     with pytest.raises(assur.ModelError) as caught:
         crank_slider(Load("crank", torque=table)).validate()
     assert str(caught.value) == (
-        "loads[0].torque.table: spans 720 deg; expected positions within one turn "
-        "(the last at most 360 deg after the first), read modulo 360"
+        "loads[0].torque: the value at 720 deg is not the one at 0 deg, a whole "
+        "number of turns before; expected values that repeat from turn to turn (the "
+        "crank's angle is read modulo 360)"
     )
+
+
+def test_a_table_s_last_value_is_read_exactly():
+    # the step's fraction times the jump cancelled badly next to a jump of 1e15
+    from assur._tables import interpolate
+
+    xs, ys = np.array([0.0, 0.05, 0.1]), np.array([0.0, 1e15, 0.3])
+    assert interpolate(np.array([0.1, 0.05, 0.0]), xs, ys).tolist() == [0.3, 1e15, 0.0]

@@ -1,0 +1,94 @@
+"""Load tables: values given at positions, read in between by straight lines.
+
+A table over a crank is periodic: an angle is read modulo 360 within the turn that
+starts at the table's first position (FORMAT.md, "A load table over a revolute
+driver is periodic").
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from assur._vec import Array
+
+__all__ = ["TURN", "disagreement", "interpolate", "periodic"]
+
+TURN = 360.0
+"""A crank's turn, deg."""
+SAME_TURN = 1e-12
+"""Relative slack by which a table's last position may pass a whole turn from its
+first and still close that turn."""
+AGREE = 1e-9
+"""Difference, relative to a table's largest value (at least 1), below which two
+values a turn apart agree."""
+
+
+def interpolate(at: Array, xs: Array, ys: Array) -> Array:
+    """Interpolate ``ys`` over ``xs`` (increasing) linearly at ``at``; ends held.
+
+    As ``np.interp``, but through the fraction of each step, which stays within
+    [0, 1]: ``np.interp`` divides the step in the values by the step in the
+    positions first, which overflows where a table jumps (1e15 N within 1e-300 deg
+    gave inf). Each end of a step is given exactly.
+    """
+    at = np.asarray(at, dtype=float)
+    j = np.clip(np.searchsorted(xs, at, side="right") - 1, 0, len(xs) - 2)
+    with np.errstate(invalid="ignore"):
+        w = np.clip((at - xs[j]) / (xs[j + 1] - xs[j]), 0.0, 1.0)
+    return (1.0 - w) * ys[j] + w * ys[j + 1]  # type: ignore[no-any-return]
+
+
+def periodic(xs: Array, values: Any, at: Array) -> list[Array]:
+    """Interpolate a table over a crank's turn at angles ``at`` (deg).
+
+    An angle is read within the turn that starts at the table's first position.
+    After its last position the table runs back to its first value, a turn on,
+    unless it reaches there itself: a table from 0 to 360 whose ends differ (a load
+    that grows over the turn, say) jumps back at 0. The entries of a table that
+    goes on past a turn repeat those of its first turn (:func:`disagreement`
+    finds any that do not); the first turn's are read.
+    """
+    first = _first_turn(xs)
+    xs = xs[first]
+    turn = xs[0] + np.remainder(np.asarray(at, dtype=float) - xs[0], TURN)
+    # a remainder rounded up to a whole turn is the turn's start
+    turn[turn >= xs[0] + TURN] = xs[0]
+    return [
+        interpolate(turn, *_closed(xs, np.asarray(v, dtype=float)[first]))
+        for v in values
+    ]
+
+
+def disagreement(xs: Array, ys: Array) -> tuple[float, float] | None:
+    """Return the first entry past the first turn whose value is not the first turn's.
+
+    As ``(position, the position a whole number of turns before)``, deg; None
+    when every entry past the first turn repeats it (or there are none).
+    """
+    first = _first_turn(xs)
+    if first.all():
+        return None
+    head, values = _closed(xs[first], ys[first])
+    later = np.flatnonzero(np.logical_not(first))
+    back = xs[0] + np.remainder(xs[later] - xs[0], TURN)
+    expected = interpolate(back, head, values)
+    slack = AGREE * max(1.0, float(np.max(np.abs(ys))))
+    bad = np.flatnonzero(np.abs(expected - ys[later]) > slack)
+    if not bad.size:
+        return None
+    k = int(bad[0])
+    return float(xs[later[k]]), float(back[k])
+
+
+def _first_turn(xs: Array) -> Array:
+    """Return the mask of a table's positions within its first turn (the end in)."""
+    return xs <= xs[0] + TURN * (1.0 + SAME_TURN)  # type: ignore[no-any-return]
+
+
+def _closed(xs: Array, ys: Array) -> tuple[Array, Array]:
+    """Return the grid of one turn: back to the first value a turn on, if open."""
+    if xs[-1] >= xs[0] + TURN:
+        return xs, ys
+    return np.append(xs, xs[0] + TURN), np.append(ys, ys[0])
