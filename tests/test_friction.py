@@ -616,3 +616,23 @@ def test_a_motion_followed_in_finer_steps_is_no_lock():
     assert table["driver.torque"][1] == pytest.approx(-16.988, abs=1e-3)
     # the oracle too needs finer steps to stay on the motion here
     assert_matches_friction_solve(mech, table, raises=96)
+
+
+def test_a_motion_followed_on_from_where_it_held_is_no_lock():
+    # at much friction (the slot of rpp_steep x23.7) the second, finer raising
+    # started from no friction again and was said to lock at -51.4 deg; followed on
+    # from the last friction the first raising held at, it moves, as the global
+    # solve finds
+    base = assur.load(FRICTION_DATA / "rpp_steep.toml")
+    mech = dataclasses.replace(
+        base,
+        joints=tuple(
+            dataclasses.replace(j, friction=j.friction * 23.737027856943964)
+            if j.friction
+            else j
+            for j in base.joints
+        ),
+    )
+    table = assur.forces(mech, [-51.4])
+    assert table["driver.torque"][0] == pytest.approx(-80.618, abs=1e-3)
+    assert_matches_friction_solve(mech, table, raises=96)
