@@ -281,7 +281,8 @@ class _Warnings:
         self.mech = mech
         self.skip = skip
         self.near: dict[str, _Runs] = {}
-        self.other: dict[tuple[type[Warning], str], None] = {}
+        # the other warnings, in the order first met
+        self.order: dict[tuple[type[Warning], str], None] = {}
         self.count = 0
         self.previous_last: Array | None = None
 
@@ -291,7 +292,7 @@ class _Warnings:
             text = str(w.message)
             head, mark, ranges = text.rpartition(POSITIONS)
             if not (issubclass(w.category, AssurWarning) and mark and NEAR in head):
-                self.other.setdefault((w.category, text))
+                self.order.setdefault((w.category, text))
                 continue
             runs = [r.split(" to ") for r in ranges.split("; ")]
             cut = runs[-1] == ["..."]
@@ -325,11 +326,16 @@ class _Warnings:
         return any(str(w.message).startswith(key) for w in caught)
 
     def give(self) -> None:
-        """Issue the warnings of the whole sweep."""
+        """Issue the warnings of the whole sweep, in a whole sweep's order.
+
+        One call warns of the change points first, then of values as they are
+        solved, and of positions near a dead centre last; each kind in the order
+        first met.
+        """
+        for category, other in self.order:
+            warnings.warn(other, category, stacklevel=3)
         for key, found in self.near.items():
             runs = [r[0] if r[0] == r[-1] else f"{r[0]} to {r[-1]}" for r in found.runs]
             more = found.cut or len(runs) > RUNS_SHOWN
             text = "; ".join(runs[:RUNS_SHOWN]) + ("; ..." if more else "")
             warnings.warn(key + text, AssurWarning, stacklevel=3)
-        for category, text in self.other:
-            warnings.warn(text, category, stacklevel=3)

@@ -217,6 +217,23 @@ def test_a_sweep_longer_than_a_batch_is_summarised_slice_by_slice(monkeypatch):
     assert found["warning"].iloc[3].count("dead centre") == 1
 
 
+def test_a_long_sweep_s_warnings_come_in_a_separate_call_s_order(monkeypatch):
+    # a rod as long as the crank: two change points, then near a dead centre; the
+    # slices gave the dead centre first
+    from assur import _sliced, study
+
+    monkeypatch.setattr(study, "CHUNK", 500)
+    monkeypatch.setattr(_sliced, "CHUNK", 400)
+    angles = np.linspace(0.0, 360.0, 1000, endpoint=False) + 0.1
+    found = assur.sweep(catalog.slider_crank, {"rod": [0.074]}, angles).summary
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assur.forces(catalog.slider_crank(rod=0.074), angles)
+    said = [" ".join(str(w.message).split()) for w in caught]
+    assert len(said) == 3
+    assert found["warning"].iloc[0] == " | ".join(said)
+
+
 def test_a_wrong_parameter_name_is_not_a_variant_failure():
     # a name the factory does not take is a mistake in the study, not a variant that
     # fails: said before any variant is built
