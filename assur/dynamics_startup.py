@@ -416,8 +416,8 @@ def _not_settled(runs: _Runs, motor: Motor, model: Reduced, turns: int) -> None:
     hint = ""
     if motor.no_load_speed is None:
         hint = (
-            f"; a constant torque settles only at the mean load torque "
-            f"{-model.motor:.6g} N m (the motor torque of assur.dynamics), so give "
+            f"; a constant torque settles only where it balances the mean load, at "
+            f"{model.motor:.6g} N m (the motor torque of assur.dynamics), so give "
             "the motor a no_load_speed"
         )
     else:
