@@ -99,8 +99,8 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "--turns",
         type=int,
         metavar="N",
-        default=MAX_TURNS,
-        help=f"most turns the start-up may take to settle (default {MAX_TURNS})",
+        help=f"most turns the start-up may take to settle (default {MAX_TURNS}; with "
+        "--startup or --startup-csv)",
     )
     p.add_argument(
         "--startup-csv",
@@ -142,7 +142,8 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         sizing = assur.flywheel_sizing(mech, args.delta)
         inertia = sizing.exact
     start = args.startup or args.startup_csv is not None
-    run = assur.startup(mech, inertia, turns=args.turns) if start else None
+    turns = MAX_TURNS if args.turns is None else args.turns
+    run = assur.startup(mech, inertia, turns=turns) if start else None
     try:
         state = solved(mech, inertia)
     except ModelError as err:
@@ -287,8 +288,12 @@ def _check_options(args: argparse.Namespace) -> None:
             f"most {LARGEST:g})"
         )
         raise UsageError(msg)
-    if args.turns < 1:
+    if args.turns is not None and args.turns < 1:
         msg = f"--turns {args.turns}: expected a whole number of turns from 1"
+        raise UsageError(msg)
+    if args.turns is not None and not (args.startup or args.startup_csv is not None):
+        # only the start-up counts turns: the option alone did nothing, silently
+        msg = f"--turns {args.turns}: expected --startup (or --startup-csv) with it"
         raise UsageError(msg)
     if args.delta is not None and not delta_in_range(args.delta):
         msg = (

@@ -356,6 +356,9 @@ def test_turns_of_the_startup(capsys, tmp_path: Path):
     assert "the motion does not settle in 3 turns" in line
     line = one_error(capsys, "dynamics", path, "--startup", "--turns", "0")
     assert "--turns 0: expected a whole number of turns from 1" in line
+    # without a start-up the option did nothing, without a word
+    line = one_error(capsys, "dynamics", path, "--delta", "0.05", "--turns", "5")
+    assert line.endswith("--turns 5: expected --startup (or --startup-csv) with it")
 
 
 def test_an_estimate_below_zero_is_not_printed_as_one(capsys):
