@@ -115,25 +115,24 @@ def spread_labels(ax: Any) -> None:
     canvas.draw()
     renderer = canvas.get_renderer()
     # the boxes (x0, y0, x1, y1, display units) move with their labels
-    boxes = np.array([t.get_window_extent(renderer).extents for t in texts])
-    moved = np.zeros((len(texts), 2))
+    start = np.array([t.get_window_extent(renderer).extents for t in texts])
+    boxes = start.copy()
     for _ in range(SPREAD_STEPS):
         clear = True
         for i, j in _overlapping(boxes):
-            if not (movable[i] or movable[j]):
+            # a pair cleared by an earlier push of this round is left alone
+            push = _push(boxes[i], boxes[j])
+            if push is None or not (movable[i] or movable[j]):
                 continue
             clear = False
-            push = _push(boxes[i], boxes[j])
             share = 0.5 if movable[i] and movable[j] else 1.0
             for k, sign in ((i, 1.0), (j, -1.0)):
                 if movable[k]:
-                    step = sign * share * push
-                    boxes[k] += np.tile(step, 2)
-                    moved[k] += step
+                    boxes[k] += np.tile(sign * share * push, 2)
         if clear:
             break
     to_data = ax.transData.inverted()
-    for text, step in zip(texts, moved, strict=True):
+    for text, step in zip(texts, boxes[:, :2] - start[:, :2], strict=True):
         if step.any():
             at = ax.transData.transform(text.get_position()) + step
             text.set_position(tuple(to_data.transform(at)))
@@ -152,14 +151,17 @@ def _overlapping(boxes: np.ndarray) -> list[tuple[int, int]]:
     return list(zip(i.tolist(), j.tolist(), strict=True))
 
 
-def _push(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def _push(a: np.ndarray, b: np.ndarray) -> np.ndarray | None:
     """Return the shift (display units) that takes box ``a`` clear of box ``b``.
 
     Along the axis of the smaller overlap, away from ``b``'s centre (upward or to
-    the right for boxes centred alike), with a pixel to spare.
+    the right for boxes centred alike), with a pixel to spare; None when the boxes
+    do not overlap.
     """
     dx = min(a[2], b[2]) - max(a[0], b[0])
     dy = min(a[3], b[3]) - max(a[1], b[1])
+    if not (dx > 0 and dy > 0):
+        return None
     away = a[:2] + a[2:] - b[:2] - b[2:]
     if dx < dy:
         return np.array([np.copysign(dx + 1.0, away[0] or 1.0), 0.0])
