@@ -91,17 +91,15 @@ class _Parser(argparse.ArgumentParser):
         """
         # arguments no command takes are found by the top parser: name the command
         command = self.prog.partition(" ")[2] or self.command
-        where = f"{command}: " if command else ""
-        line = f"assur: error: {where}{message} (see '{self.prog} --help')"
-        if command and not self.prog.partition(" ")[2]:
-            line = line.replace(f"'{self.prog} --help'", f"'assur {command} --help'")
+        where, prog = (f"{command}: ", f"assur {command}") if command else ("", "assur")
+        line = f"assur: error: {where}{message} (see '{prog} --help')"
         self.exit(2, " ".join(line.split()) + "\n")
 
     command = ""
     """The command being parsed, once known (see :func:`_main`)."""
 
 
-def _parser() -> tuple[argparse.ArgumentParser, list[str]]:
+def _parser() -> tuple[_Parser, list[str]]:
     """Return the parser and the names of its commands."""
     parser = _Parser(
         prog="assur",
@@ -259,8 +257,7 @@ def _main(argv: list[str]) -> int:
             f"assur: error: unknown command {describe(argv[0])}{hint}", file=sys.stderr
         )
         return 2
-    if isinstance(parser, _Parser):
-        parser.command = next((a for a in argv if a in commands), "")
+    parser.command = next((a for a in argv if a in commands), "")
     handler = None
     try:
         try:
