@@ -423,10 +423,9 @@ def _followed(
 
     Each position starts at step ``begin`` (0: no friction), from its ``sizes``
     there, with at most ``most`` Newton steps each. A position the solution leaves
-    is dropped from the later steps: it
-    locks, or is followed again in shorter steps. Returns the sizes at the last
-    step each position held, whether it held to the end, that step, and the
-    Newton steps taken.
+    is dropped from the later steps: it locks, or is followed again in shorter
+    steps. Returns the sizes at the last step each position held, whether it held
+    to the end, that step, and the Newton steps taken.
     """
     sizes = sizes.copy()
     held = np.ones(sizes.shape[0], dtype=bool)

@@ -78,9 +78,9 @@ def _compile(plan: Plan) -> LoadPlan:
     mass, inertia, center = np.zeros(count), np.zeros(count), np.zeros((count, 2))
     still = _never_turning(plan)
     # without a mass or load anywhere there is no force analysis to warn of
-    loaded = [bool(link.mass) for link in mech.links]
+    analysed = bool(mech.loads) or any(link.mass for link in mech.links)
     for link in mech.links:
-        if link.inertia and not link.mass and (mech.loads or any(loaded)):
+        if link.inertia and not link.mass and analysed:
             # a link without a mass is massless (FORMAT.md): its inertia was left
             # out of the analysis without a word
             warnings.warn(

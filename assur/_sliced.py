@@ -1,10 +1,10 @@
 """Long sweeps analysed a slice of positions at a time.
 
 ``assur kinematics|forces`` call the library on slices of :data:`CHUNK` driver
-positions and hand each slice's columns to the writers (:mod:`assur._tableio`), and a
-study summarises each variant of a long sweep so, so that memory stays bounded
-whatever the number of positions. What comes out is what
-the whole table gives: the links' angles run on continuously from one slice to the
+positions and hand each slice's columns to the writers (:mod:`assur._tableio`); a
+study summarises each variant of a long sweep slice by slice too. Memory stays
+bounded whatever the number of positions, and what comes out is what the whole
+table gives: the links' angles run on continuously from one slice to the
 next, a warning near a dead centre names its positions over the whole sweep, once,
 and a position that cannot be assembled is reported as the whole sweep reports it.
 """

@@ -18,7 +18,7 @@ from typing import Any, NoReturn
 import numpy as np
 
 from assur._tables import disagreement
-from assur._text import describe, key_text, suggest
+from assur._text import describe, key_text, listing, suggest
 from assur.errors import ModelError, UsageError
 
 __all__ = [
@@ -538,10 +538,7 @@ def _unknown(kind: str, name: object, known: Iterable[str]) -> str:
 
 def _on_the_frame(why: str, links: list[str]) -> str:
     """Return the message of a point or load on the frame (``why``: what it does)."""
-    return (
-        f"{GROUND!r} is the frame: {why}; expected a moving link "
-        f"({', '.join(links[:6])}{', ...' if len(links) > 6 else ''})"
-    )
+    return f"{GROUND!r} is the frame: {why}; expected a moving link ({listing(links)})"
 
 
 def _check_point(entry: str, spec: object, points: set[str]) -> None:

@@ -101,14 +101,9 @@ def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
     sliding = [p.name for p in joints if p.kind == "P"]
     # a prismatic pair's couple is its reaction's third part: shown with its slide
     couples = forced and all(f"{name}.M" in table.columns for name in sliding)
+    motion = ("s", "v", "a", "M") if couples else ("s", "v", "a")
     slides = [
-        {
-            "name": name,
-            "keys": [
-                f"{name}.{x}" for x in ("s", "v", "a", "M")[: 4 if couples else 3]
-            ],
-        }
-        for name in sliding
+        {"name": name, "keys": [f"{name}.{x}" for x in motion]} for name in sliding
     ]
     suffixes = ("Fx", "Fy", "F") if forced else ("x", "y")
     points = [
@@ -122,7 +117,7 @@ def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
     ]
     parts = {
         "links": ("link", ("angle", "ω", "α"), links),
-        "slides": ("slide", ("s", "v", "a", "M")[: 4 if couples else 3], slides),
+        "slides": ("slide", motion, slides),
         "joints": ("joint", ("Fx", "Fy", "|F|") if forced else ("x", "y"), points),
         "inertia": ("inertia of", ("Fi,x", "Fi,y", "Mi"), inertia),
     }
