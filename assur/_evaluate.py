@@ -141,19 +141,25 @@ def _angle(table: Table, columns: list[Column]) -> dict[str, Array]:
 
 
 def _continuous(angle: Array) -> Array:
-    """Remove the jumps of a turn from angles (rad), along the last axis.
+    """Remove the jumps of a turn from angles (rad), along the last axis, in place.
 
-    The first of each row is put in (-pi, pi].
+    The first of each row is put in (-pi, pi]; returns ``angle``.
     """
     first = angle[..., :1]
     shift = first - (math.pi - np.remainder(math.pi - first, 2.0 * math.pi))
+    # the turns between neighbours, then their running sum, in one array: a long
+    # sweep's angles pass through memory a few times instead of nine
+    turns = np.diff(angle)
+    turns *= 0.5 / math.pi
     with np.errstate(invalid="ignore"):
-        turns = np.round(np.diff(angle) * (0.5 / math.pi))
+        np.rint(turns, out=turns)
     if np.any(turns):
-        turns = np.nan_to_num(turns)
-        steps = np.concatenate((np.zeros_like(first), np.cumsum(turns, axis=-1)), -1)
-        angle = angle - 2.0 * math.pi * steps
-    return angle - shift  # type: ignore[no-any-return]
+        np.nan_to_num(turns, copy=False)
+        np.cumsum(turns, axis=-1, out=turns)
+        turns *= 2.0 * math.pi
+        angle[..., 1:] -= turns
+    angle -= shift
+    return angle
 
 
 def _link(table: Table, columns: list[Column]) -> dict[str, Array]:
