@@ -122,7 +122,9 @@ def slices(
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             try:
-                table = analyse(mech, part, skip, progress=_told(advance))
+                table = analyse(
+                    mech, part, skip_unassembled=skip, progress=_told(advance)
+                )
             except (AssemblyError, SingularConfigurationError) as err:
                 if n > chunk:
                     _raise_as_whole(mech, given, skip, err)
@@ -197,9 +199,14 @@ def _raise_as_whole(
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         if forces:
-            force_table(mech, given, skip, columns=balancing_columns(plan_of(mech)))
+            force_table(
+                mech,
+                given,
+                skip_unassembled=skip,
+                columns=balancing_columns(plan_of(mech)),
+            )
         else:
-            kinematics(mech, given, skip, columns=["angle"])
+            kinematics(mech, given, skip_unassembled=skip, columns=["angle"])
     raise err  # pragma: no cover - the whole sweep fails where a slice did
 
 
@@ -322,7 +329,9 @@ class _Warnings:
 
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
-            kinematics(self.mech, position, self.skip, columns=["angle"])
+            kinematics(
+                self.mech, position, skip_unassembled=self.skip, columns=["angle"]
+            )
         return any(str(w.message).startswith(key) for w in caught)
 
     def give(self) -> None:

@@ -217,7 +217,7 @@ def _unit(v: tuple[float, float]) -> tuple[float, float]:
     return (v[0] / length, v[1] / length)
 
 
-def mobility(mech: Mechanism) -> int:
+def mobility(mechanism: Mechanism) -> int:
     """Return the degrees of freedom by the Chebyshev-Gruebler formula.
 
     Notes
@@ -231,14 +231,14 @@ def mobility(mech: Mechanism) -> int:
     >>> mobility(catalog.four_bar())
     1
     """
-    mech = mechanism_of(mech)
+    mech = mechanism_of(mechanism)
     n = len(mech.links)
     p4 = sum(joint.kind == "slot" for joint in mech.joints)
     p5 = len(mech.joints) - p4
     return 3 * n - 2 * p5 - p4
 
 
-def graph(mech: Mechanism) -> Any:
+def graph(mechanism: Mechanism) -> Any:
     """Return the mechanism as a networkx multigraph: links as nodes, joints edges.
 
     Each edge is keyed by the joint's name and carries its ``kind``.
@@ -252,7 +252,7 @@ def graph(mech: Mechanism) -> Any:
     """
     import networkx as nx
 
-    mech = mechanism_of(mech)
+    mech = mechanism_of(mechanism)
     g = nx.MultiGraph()
     g.add_node(GROUND)
     g.add_nodes_from(link.name for link in mech.links)
@@ -261,12 +261,12 @@ def graph(mech: Mechanism) -> Any:
     return g
 
 
-def structure(mech: Mechanism, driver: str | None = None) -> Structure:
-    """Analyse the structure of ``mech``: mobility and Assur groups.
+def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
+    """Analyse the structure of ``mechanism``: mobility and Assur groups.
 
     Parameters
     ----------
-    mech : Mechanism
+    mechanism : Mechanism
     driver : str, optional
         Analyse with this joint as the only input instead of the file's drivers (the
         class of a mechanism depends on its input link).
@@ -287,7 +287,7 @@ def structure(mech: Mechanism, driver: str | None = None) -> Structure:
     >>> s.formula
     'I(ground, crank) -> II(coupler, rocker)'
     """
-    mech = mechanism_of(mech)
+    mech = mechanism_of(mechanism)
     if driver is not None:
         if driver not in {j.name for j in mech.joints}:
             msg = f"driver: unknown joint {driver!r}"

@@ -73,10 +73,10 @@ def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
 def kinematics(
     mechanism: Mechanism,
     angles: Sequence[float] | Array,
-    skip_unassembled: bool = False,
-    *,
     omega: Any = None,
     epsilon: Any = None,
+    *,
+    skip_unassembled: bool = False,
     columns: Sequence[str] | None = None,
     progress: bool | Callback = False,
 ) -> Table:
@@ -88,15 +88,15 @@ def kinematics(
     angles : array_like
         Driver positions, deg (m for a prismatic driver); shape (n,) or, with several
         drivers, (n, drivers).
-    skip_unassembled : bool
-        Leave out the positions where a group cannot be assembled, stands at a dead
-        centre or is locked by friction, instead of raising; ``Table.skipped`` lists
-        them.
     omega, epsilon : float or array_like, optional
         The driver's speed (rad/s; m/s for a prismatic driver) and acceleration
         (rad/s^2; m/s^2) at every position, replacing the file's constants: a number
         (every driver's), or one value per position (shape (n,); (n, drivers) with
         several drivers).
+    skip_unassembled : bool
+        Leave out the positions where a group cannot be assembled, stands at a dead
+        centre or is locked by friction, instead of raising; ``Table.skipped`` lists
+        them.
     columns : sequence of str, optional
         Compute only these columns (and ``angle``). A table of the drivers' columns
         alone (``["driver.torque"]``, say) keeps none of the links' motions or
@@ -132,10 +132,10 @@ def kinematics(
 def forces(
     mechanism: Mechanism,
     angles: Sequence[float] | Array,
-    skip_unassembled: bool = False,
-    *,
     omega: Any = None,
     epsilon: Any = None,
+    *,
+    skip_unassembled: bool = False,
     columns: Sequence[str] | None = None,
     progress: bool | Callback = False,
 ) -> Table:
@@ -584,6 +584,13 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
         if value is None:
             out.append(tuple(float(v) for v in default))
             continue
+        if isinstance(value, bool | np.bool_):
+            # the third argument was skip_unassembled before omega took its place
+            msg = (
+                f"{entry}: expected real numbers, got {value}; expected "
+                "skip_unassembled=... by name to leave out unassembled positions"
+            )
+            raise UsageError(msg)
         arr = _real(value, entry, "rad/s or m/s" if entry == "omega" else "rad/s^2")
         if not np.all(np.isfinite(arr)):
             msg = f"{entry}: expected finite numbers"

@@ -607,8 +607,8 @@ def _table_text(t: LoadTable, comps: tuple[str, ...]) -> str:
     )
 
 
-def dumps(mech: Mechanism, json_format: bool = False) -> str:
-    """Return the text of a mechanism file for ``mech``, TOML or JSON.
+def dumps(mechanism: Mechanism, json_format: bool = False) -> str:
+    """Return the text of a mechanism file for ``mechanism``, TOML or JSON.
 
     With ``json_format`` the JSON of the same keys and values (read back by
     :func:`loads` with ``json_format``).
@@ -617,8 +617,9 @@ def dumps(mech: Mechanism, json_format: bool = False) -> str:
         import tomllib
 
         # the TOML text's data, which holds exactly the mechanism's numbers
-        return json.dumps(tomllib.loads(dumps(mech)), indent=2, ensure_ascii=False)
-    mech = mechanism_of(mech)
+        text = dumps(mechanism)
+        return json.dumps(tomllib.loads(text), indent=2, ensure_ascii=False)
+    mech = mechanism_of(mechanism)
     out = [f"format = {FORMAT_VERSION}", f"name = {_value(mech.name)}"]
     if mech.description:
         out.append(f"description = {_value(mech.description)}")
@@ -674,8 +675,8 @@ def dumps(mech: Mechanism, json_format: bool = False) -> str:
     return "\n".join(out) + "\n"
 
 
-def save(mech: Mechanism, path: str | Path) -> None:
-    """Write ``mech`` as a mechanism file, whole or not at all.
+def save(mechanism: Mechanism, path: str | Path) -> None:
+    """Write ``mechanism`` as a mechanism file, whole or not at all.
 
     JSON for a ``.json`` suffix (any case), TOML for any other, as :func:`load` reads
     them. The file is written whole or not at all (:func:`assur._output.write_text`).
@@ -688,7 +689,8 @@ def save(mech: Mechanism, path: str | Path) -> None:
     from pathlib import Path
 
     path = _path(path, "the file's")
-    write_text(path, dumps(mech, json_format=Path(path).suffix.lower() == ".json"))
+    json_format = Path(path).suffix.lower() == ".json"
+    write_text(path, dumps(mechanism, json_format=json_format))
 
 
 def _path(path: Any, whose: str) -> Any:

@@ -223,9 +223,11 @@ def _kept(mech: Any, positions: Any, forces: bool, skip: bool) -> tuple[Any, Any
     if forces:  # friction may lock positions that assemble
         # the balancing loads alone: a torque or a force, as each driver moves
         loads = balancing_columns(plan_of(mech))
-        table = force_table(mech, positions, skip, columns=["angle", *loads])
+        table = force_table(
+            mech, positions, skip_unassembled=skip, columns=["angle", *loads]
+        )
     else:
-        table = kinematics(mech, positions, skip, columns=["angle"])
+        table = kinematics(mech, positions, skip_unassembled=skip, columns=["angle"])
     return _some_kept(table).given, table.skipped
 
 

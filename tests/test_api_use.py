@@ -49,7 +49,14 @@ def test_no_column_can_be_made_writeable_again():
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda m: assur.forces(m, [0.0], 150.0), "skip_unassembled: expected True"),
+        (
+            lambda m: assur.forces(m, [0.0], True),
+            "omega: expected real numbers, got True; expected skip_unassembled=",
+        ),
+        (
+            lambda m: assur.forces(m, [0.0], None, False),
+            "epsilon: expected real numbers, got False",
+        ),
         (lambda m: assur.kinematics(m, True), "angles: expected real numbers .* True"),
         (lambda m: assur.kinematics(m, [0.0], omega=True), "omega: expected real"),
         (

@@ -55,7 +55,7 @@ def whole(command: str, path: Path, spec: str, skip: bool = False):
     analyse = assur.forces if command == "forces" else assur.kinematics
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        table = analyse(mech, given, skip)
+        table = analyse(mech, given, skip_unassembled=skip)
     return table, [str(w.message) for w in caught]
 
 

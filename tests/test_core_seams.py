@@ -277,6 +277,24 @@ def test_velocities_scale_with_the_speed_and_accelerations_split():
             )
 
 
+def test_speeds_are_the_third_and_fourth_arguments_as_format_md_writes_them():
+    """``assur.kinematics(mechanism, angles, omega=None, epsilon=None)``: by position
+    as by name, the same table; the skipping of unassembled positions goes by name."""
+    mech = assur.catalog.slider_crank()
+    at = positions(mech, 12)
+    omega, epsilon = speeds(len(at), 2.0)
+    for analyse in (assur.kinematics, assur.forces):
+        by_name = analyse(mech, at, omega=omega, epsilon=epsilon)
+        by_place = analyse(mech, at, omega, epsilon)
+        assert by_place.columns == by_name.columns
+        for name in ("rod.alpha", "C.ay"):
+            np.testing.assert_array_equal(by_place[name], by_name[name])
+        assert not np.array_equal(by_place["rod.alpha"], analyse(mech, at)["rod.alpha"])
+    table = assur.forces(mech, at, omega, skip_unassembled=True)
+    np.testing.assert_array_equal(table["crank.omega"], omega)
+    np.testing.assert_array_equal(table["crank.alpha"], 0.0)
+
+
 def test_bad_speed_arrays_are_refused():
     mech = assur.catalog.slider_crank()
     with pytest.raises(assur.UsageError, match="omega: expected a number or one value"):

@@ -284,6 +284,8 @@ def test_a_group_stretched_out_exactly_stands_at_a_dead_centre(mech, angle, grou
             f"group {group}: dead centre at driver position {angle:g} deg"
         )
         # a sweep that skips it keeps its neighbours
-        table = assur.kinematics(mech, [angle - 10.0, angle, angle + 10.0], True)
+        table = assur.kinematics(
+            mech, [angle - 10.0, angle, angle + 10.0], skip_unassembled=True
+        )
     assert table.skipped.tolist() == [angle]
     assert len(table) == 2

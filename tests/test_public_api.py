@@ -120,6 +120,25 @@ def test_functions_are_the_functions():
         assert inspect.isfunction(getattr(assur, name)), name
 
 
+def test_parameters_are_named_as_format_md_writes_them():
+    """``assur.structure(mechanism)``, ``assur.kinematics(mechanism, angles, omega=None,
+    epsilon=None)``, ...: a call by those names works."""
+    for name in assur.__all__:
+        value = getattr(assur, name)
+        if not inspect.isfunction(value):
+            continue
+        first = next(iter(inspect.signature(value).parameters))
+        assert first not in ("mech", "m"), name
+    mech = assur.catalog.four_bar()
+    assert assur.mobility(mechanism=mech) == 1
+    assert assur.structure(mechanism=mech).formula.startswith("I(ground, crank)")
+    assert assur.graph(mechanism=mech).number_of_edges() == 4
+    assert assur.loads(assur.dumps(mechanism=mech)) == mech
+    for analyse in (assur.kinematics, assur.forces):
+        params = list(inspect.signature(analyse).parameters)
+        assert params[:4] == ["mechanism", "angles", "omega", "epsilon"]
+
+
 def test_error_tree():
     assert issubclass(assur.ModelError, assur.AssurError)
     assert issubclass(assur.ModelError, ValueError)
@@ -133,23 +152,21 @@ def test_version_is_a_string():
     assert assur.__version__
 
 
-def test_import_is_light_and_quick():
+def test_import_is_light():
     code = (
-        "import sys, time, json\n"
-        "start = time.perf_counter()\n"
+        "import sys, json\n"
         "import assur\n"
-        "elapsed = time.perf_counter() - start\n"
         "heavy = ('matplotlib', 'scipy', 'networkx')\n"
         "heavy = sorted(m for m in heavy if m in sys.modules)\n"
-        "data = {'elapsed': elapsed, 'heavy': heavy, 'file': assur.__file__}\n"
+        "data = {'heavy': heavy, 'file': assur.__file__}\n"
         "print(json.dumps(data))\n"
     )
     result = run_python(code)
     assert result.returncode == 0, result.stderr
     data = json.loads(result.stdout)
     assert Path(data["file"]).resolve().parent == ROOT / "assur"
+    # what it costs in time is measured by benchmarks/bench_sweep.py, not here
     assert data["heavy"] == []
-    assert data["elapsed"] < 1.0  # a sanity bound, not a benchmark
 
 
 def test_reading_and_structure_stay_light():
