@@ -35,9 +35,9 @@ from assur.errors import (
 )
 from assur.model import LARGEST, Mechanism
 from assur.plan import Plan, plan_of
-from assur.table import Table
+from assur.table import Columns, Table
 
-__all__ = ["Table", "default_positions", "forces", "kinematics"]
+__all__ = ["Columns", "Table", "default_positions", "forces", "kinematics"]
 
 CHUNK = 8192
 """Driver positions solved at once; long sweeps run in slices of this size."""

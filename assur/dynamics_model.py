@@ -24,6 +24,7 @@ from assur.dynamics_reduced import Reduced, check_dynamic, reduce, reduced_at
 from assur.dynamics_steady import Steady, steady_state
 from assur.errors import UsageError
 from assur.model import LARGEST, Mechanism
+from assur.table import Columns
 
 __all__ = [
     "COLUMNS",
@@ -46,16 +47,19 @@ COLUMNS = (
     ("driver.epsilon", "driver", "epsilon", "rad/s^2"),
 )
 """The columns of a :class:`Dynamics` table: name, owner, quantity, unit."""
+NONE_SKIPPED = np.zeros(0)
+NONE_SKIPPED.flags.writeable = False
 
 
 @dataclass(frozen=True, eq=False)
-class Dynamics:
+class Dynamics(Columns):
     """The dynamic model and the steady motion of a crank, per crank angle.
 
-    A table like :class:`assur.Table`: ``result["driver.omega"]`` is a read-only
-    array with one value per crank angle, ``columns`` lists the names, ``schema``
-    their units; ``to_csv`` writes it. The figures of the steady state over the whole
-    turn are attributes (and :meth:`summary`).
+    A table with the columns of :class:`assur.Table`: ``result["driver.omega"]`` is
+    a read-only array with one value per crank angle, ``columns`` lists the names,
+    ``schema`` their units; ``arrays``, ``to_array``, ``to_csv``, ``to_dict``,
+    ``to_pandas`` and ``to_parquet`` give them as a sweep's table does. The figures
+    of the steady state over the whole turn are attributes (and :meth:`summary`).
 
     Attributes
     ----------
@@ -142,27 +146,15 @@ class Dynamics:
         )
         return {name: float(getattr(self, name)) for name in names}
 
-    def to_csv(self, path: Any = None) -> str | None:
-        """Write the table as CSV (see :meth:`assur.Table.to_csv`)."""
-        from assur.io import write_csv
-
-        return write_csv(self, path)
+    @property
+    def skipped(self) -> Array:
+        """Crank angles left out: none, every angle has its steady motion (deg)."""
+        return NONE_SKIPPED
 
     def to_dict(self) -> dict[str, Any]:
         """Return JSON-ready data: name, the steady state's figures, columns, rows."""
-        rows = np.column_stack([self.values[c] for c in self.columns])
-        return {
-            "name": self.mechanism.name,
-            "dynamics": self.summary(),
-            "columns": list(self.columns),
-            "rows": [
-                {
-                    c: (v if math.isfinite(v) else None)
-                    for c, v in zip(self.columns, r, strict=True)
-                }
-                for r in rows.tolist()
-            ],
-        }
+        data = super().to_dict()
+        return {"name": data["name"], "dynamics": self.summary(), **data}
 
     def plot(self, **kwargs: Any) -> Any:
         """Draw the dynamic model (see :func:`assur.plotting.plot_dynamics`)."""

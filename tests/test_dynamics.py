@@ -222,6 +222,36 @@ def test_the_table_reads_like_a_table(tmp_path: Path):
     assert (tmp_path / "d.csv").read_text() == text
 
 
+def test_the_table_has_every_column_method_of_a_sweep_s_table(tmp_path: Path):
+    """FORMAT.md: ``assur.dynamics(...) -> Table``; what a Table's columns give."""
+    t = steady("four_bar")
+    sweep = assur.kinematics(example("four_bar"), [0.0, 1.0])
+    for name in dir(sweep):
+        if name.startswith(("to_", "arrays")):
+            assert callable(getattr(t, name)), name
+    assert isinstance(t, assur.table.Columns)
+    assert isinstance(sweep, assur.table.Columns)
+    block = t.to_array()
+    assert block.shape == (360, len(t.columns))
+    for i, name in enumerate(t.columns):
+        np.testing.assert_array_equal(block[:, i], t[name])
+        np.testing.assert_array_equal(t.arrays()[i], t[name])
+    frame = t.to_pandas()
+    assert list(frame.columns) == list(t.columns)
+    np.testing.assert_array_equal(frame["driver.omega"].to_numpy(), t["driver.omega"])
+    assert t.skipped.shape == (0,)
+    with pytest.raises(TypeError, match="a Dynamics is not iterable"):
+        iter(t)
+    pq = pytest.importorskip("pyarrow.parquet")
+    t.to_parquet(tmp_path / "d.parquet")
+    read = pq.read_table(tmp_path / "d.parquet")
+    assert read.column_names == list(t.columns)
+    assert read.schema.field("driver.epsilon").metadata[b"unit"] == b"rad/s^2"
+    np.testing.assert_array_equal(
+        read.column("driver.omega").to_numpy(), t["driver.omega"]
+    )
+
+
 # ---------------------------------------------------------------------------- flywheel
 
 

@@ -88,8 +88,8 @@ AGAINST_THE_DIRECTION = {
     # STYLE.md: a result may offer .plot() only as a one-line forward to plotting
     ("assur.table", "assur.plotting", "Table.plot"),
     # the same kind of one-line forward, to io.write_csv; STYLE.md names only .plot()
-    ("assur.table", "assur.io", "Table.to_csv"),
-    ("assur.table", "assur.io", "Table.to_parquet"),
+    ("assur.table", "assur.io", "Columns.to_csv"),
+    ("assur.table", "assur.io", "Columns.to_parquet"),
 }
 
 # (importer, imported): imports left out of the cycle check, each with its reason.
