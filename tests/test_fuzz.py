@@ -217,7 +217,11 @@ def test_a_raw_exception_is_a_failure(monkeypatch):
 
 def test_a_hang_is_a_failure(monkeypatch):
     def slow(mech):
-        time.sleep(5)
+        # a hang spends CPU time, which the limit counts; time.time() ends the loop
+        # after 60 s should the limit ever fail to strike
+        start = time.time()
+        while time.time() - start < 60.0:
+            pass
 
     monkeypatch.setattr(assur, "structure", slow)
     outcome = run_case(bases()[0][1], time_limit=0.2)
