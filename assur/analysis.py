@@ -646,13 +646,20 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
             mask = _all_failures(troubles, n, trouble.group, trouble.what)
             first = int(np.flatnonzero(mask)[0])
             where = _where(plan, given[first])
-            good = _ranges(plan, given, ~_all_failures(troubles, n))
             if trouble.what == "assembly":
+                # where the mechanism assembles, whatever else stops it there
+                closes = ~_all_failures(troubles, n, what="assembly")
+                good = _ranges(plan, given, closes)
                 msg = (
                     f"group {trouble.group}: cannot be assembled at driver position "
                     f"{where} ({int(mask.sum())} of {n} positions fail); it assembles "
                     f"for {good or 'none of them'}"
                 )
+                locked = closes & _all_failures(troubles, n, what="locked")
+                if locked.any():
+                    msg += (
+                        f" (where friction locks it at {_ranges(plan, given, locked)})"
+                    )
                 raise AssemblyError(msg)
             if trouble.what == "locked":
                 msg = (

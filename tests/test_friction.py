@@ -636,3 +636,26 @@ def test_a_motion_followed_on_from_where_it_held_is_no_lock():
     table = assur.forces(mech, [-51.4])
     assert table["driver.torque"][0] == pytest.approx(-80.618, abs=1e-3)
     assert_matches_friction_solve(mech, table, raises=96)
+
+
+def test_an_assembly_error_names_where_it_assembles_and_where_it_locks():
+    """Where a group does not assemble and friction locks it elsewhere, the message
+    says where it assembles (locked positions too) and where it locks."""
+    mech = assur.load(FRICTION_DATA / "triad_assembles_and_locks.toml")
+    at = np.arange(0.0, 361.0, 10.0)
+    with pytest.raises(assur.AssemblyError) as raised:
+        assur.forces(mech, at)
+    message = str(raised.value)
+    assert "(12 of 37 positions fail)" in message
+    assert "it assembles for 0 deg to 110 deg; 240 deg to 360 deg (" in message
+    assert message.endswith(
+        "(where friction locks it at 0 deg to 110 deg; 260 deg to 310 deg; 360 deg)"
+    )
+    # the same positions as the kinematics and the skipped force sweep find
+    assembles = assur.kinematics(mech, at, skip_unassembled=True)
+    assert len(assembles) == 25
+    moving = assur.forces(mech, at, skip_unassembled=True)
+    locked = np.setdiff1d(assembles["angle"], moving["angle"])
+    np.testing.assert_array_equal(
+        locked, [*range(0, 111, 10), 260, 270, 280, 290, 300, 310, 360]
+    )
