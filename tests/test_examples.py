@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import doctest
 import runpy
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -48,6 +49,17 @@ def test_gallery_script_draws(script, agg, tmp_path, monkeypatch, capsys):
     for number in agg.get_fignums():
         assert agg.figure(number).axes, f"{script.name}: figure {number} is empty"
     assert list(tmp_path.iterdir()) == [], f"{script.name} wrote files"
+
+
+def test_the_docs_extra_installs_what_the_gallery_runs():
+    # the build runs every script; a study (assur.sweep) needs the study extra's pandas
+    pyproject = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    extras = pyproject["project"]["optional-dependencies"]
+    studies = [s for s in SCRIPTS if "assur.sweep(" in s.read_text(encoding="utf-8")]
+    assert studies
+    assert "assur[study]" in extras["docs"] or set(extras["study"]) <= set(
+        extras["docs"]
+    )
 
 
 def test_gallery_scripts_have_a_title():
