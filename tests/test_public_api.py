@@ -10,6 +10,7 @@ import importlib
 import inspect
 import json
 import os
+import re
 import subprocess
 import sys
 import types
@@ -137,6 +138,25 @@ def test_parameters_are_named_as_format_md_writes_them():
     for analyse in (assur.kinematics, assur.forces):
         params = list(inspect.signature(analyse).parameters)
         assert params[:4] == ["mechanism", "angles", "omega", "epsilon"]
+
+
+def test_the_api_index_lists_every_name():
+    # docs/api/index.rst's "Top-level names" documents each name where it lives
+    text = (ROOT / "docs" / "api" / "index.rst").read_text(encoding="utf-8")
+    listed = {
+        name: module
+        for module, name in re.findall(r"~(assur[\w.]*)\.(\w+)$", text, re.M)
+    }
+    for name in assur.__all__:
+        value = getattr(assur, name)
+        if name == "__version__":
+            continue
+        if isinstance(value, types.ModuleType):
+            assert f"``assur.{name}``" in text, name
+            continue
+        assert name in listed, f"docs/api/index.rst does not list {name}"
+        home = importlib.import_module(listed[name])
+        assert getattr(home, name) is value, f"{name} is not {listed[name]}.{name}"
 
 
 def test_error_tree():
