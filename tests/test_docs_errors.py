@@ -48,6 +48,15 @@ def test_the_page_shows_every_error_kind():
         assert f"~assur.errors.{name}`" in text, name
 
 
+def test_the_conventions_table_lists_every_error_kind():
+    text = (DOCS / "conventions.rst").read_text("utf-8")
+    import assur.errors
+
+    for name in assur.errors.__all__:
+        if name != "AssurError":  # the base class, named above the table
+            assert f"* - :class:`~assur.errors.{name}`" in text, name
+
+
 @pytest.mark.parametrize(("argv", "lines"), CASES, ids=[" ".join(a) for a, _ in CASES])
 def test_each_message_is_printed_as_shown(argv, lines, monkeypatch, capsys):
     monkeypatch.chdir(DOCS / "files" / "errors")
