@@ -2,12 +2,14 @@
 
 Every ``examples/plot_*.py`` runs top to bottom under matplotlib's Agg backend and
 must draw at least one figure. The ``>>>`` examples of the documentation pages run
-as doctests from the repository's root, where their relative paths point.
+as doctests from the repository's root, where their relative paths point. Each
+```` ```python ```` block of README.md runs on its own, as a reader pastes it.
 """
 
 from __future__ import annotations
 
 import doctest
+import re
 import runpy
 import tomllib
 from pathlib import Path
@@ -16,6 +18,8 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 SCRIPTS = sorted((ROOT / "examples").glob("plot_*.py"))
+README = (ROOT / "README.md").read_text(encoding="utf-8")
+README_BLOCKS = re.findall(r"^```python\n(.*?)^```", README, re.M | re.S)
 PAGES = sorted(
     page
     for page in (ROOT / "docs").glob("*.rst")
@@ -79,3 +83,18 @@ def test_documentation_snippets(page, monkeypatch):
         str(page), module_relative=False, optionflags=flags, verbose=False, report=False
     )
     assert result.failed == 0, f"{page.name}: {result.failed} doctest(s) failed"
+
+
+def test_readme_has_python_blocks():
+    assert len(README_BLOCKS) >= 2
+
+
+@pytest.mark.parametrize("number", range(len(README_BLOCKS)))
+def test_readme_python_block(number, tmp_path, monkeypatch, capsys):
+    code = README_BLOCKS[number]
+    if "assur.sweep(" in code:
+        pytest.importorskip("pandas")  # the study extra
+    # in a scratch directory, where the block's examples/ paths still point
+    (tmp_path / "examples").symlink_to(ROOT / "examples")
+    monkeypatch.chdir(tmp_path)
+    exec(compile(code, f"README.md python block {number + 1}", "exec"), {})
