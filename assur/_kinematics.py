@@ -638,7 +638,7 @@ def extend(plan: Plan, state: KinematicState) -> KinematicState:
     A state of positions alone (that of a table of few columns) has its velocities
     and accelerations solved as well.
 
-    A long sweep is solved in slices of :data:`CHUNK` positions, as the sweep was;
+    A long sweep is solved in slices of ``CHUNK`` positions, as the sweep was;
     only the jerks are new, the lower levels are the state's own arrays.
     """
     if state.top >= 3:

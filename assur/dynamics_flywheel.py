@@ -82,14 +82,14 @@ def flywheel(mechanism: Mechanism, delta: float) -> float:
     mechanism : Mechanism
         One revolute driver, masses; its ``omega`` is the nominal speed.
     delta : float
-        ``(max w - min w) / omega`` of the steady state, from :data:`SMALLEST_DELTA`
+        ``(max w - min w) / omega`` of the steady state, from ``SMALLEST_DELTA``
         to below 2 (at 2 the crank stops).
 
     Returns
     -------
     float
         The inertia added on the crank, kg m^2, to a relative tolerance of
-        :data:`DELTA_RTOL` on the root of ``delta(J) - delta``.
+        ``DELTA_RTOL`` on the root of ``delta(J) - delta``.
 
     Raises
     ------
@@ -97,8 +97,8 @@ def flywheel(mechanism: Mechanism, delta: float) -> float:
         For ``delta`` out of its range, or when the mechanism alone already runs
         with a smaller fluctuation (no flywheel can raise it).
     ModelError
-        See :func:`assur.dynamics`; also when the inertia found does not give
-        ``delta`` (to 1e-6 of it).
+        See :func:`assur.dynamics <assur.dynamics_model.dynamics>`; also when the
+        inertia found does not give ``delta`` (to 1e-6 of it).
     ConvergenceError
         When the search for the inertia does not converge.
 
@@ -184,7 +184,7 @@ def _prepared(mechanism: Mechanism, delta: Any) -> tuple[Reduced, float]:
 def delta_in_range(delta: float) -> bool:
     """Whether a coefficient of speed fluctuation can be asked for.
 
-    From :data:`SMALLEST_DELTA` to below 2, where the smallest speed would be zero.
+    From ``SMALLEST_DELTA`` to below 2, where the smallest speed would be zero.
     """
     return math.isfinite(delta) and SMALLEST_DELTA <= delta < 2.0
 

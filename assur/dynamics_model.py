@@ -55,11 +55,12 @@ NONE_SKIPPED.flags.writeable = False
 class Dynamics(Columns):
     """The dynamic model and the steady motion of a crank, per crank angle.
 
-    A table with the columns of :class:`assur.Table`: ``result["driver.omega"]`` is
-    a read-only array with one value per crank angle, ``columns`` lists the names,
-    ``schema`` their units; ``arrays``, ``to_array``, ``to_csv``, ``to_dict``,
-    ``to_pandas`` and ``to_parquet`` give them as a sweep's table does. The figures
-    of the steady state over the whole turn are attributes (and :meth:`summary`).
+    A table with the columns of :class:`~assur.analysis.Table`:
+    ``result["driver.omega"]`` is a read-only array with one value per crank angle,
+    ``columns`` lists the names, ``schema`` their units; ``arrays``, ``to_array``,
+    ``to_csv``, ``to_dict``, ``to_pandas`` and ``to_parquet`` give them as a sweep's
+    table does. The figures of the steady state over the whole turn are attributes
+    (and :meth:`summary`).
 
     Attributes
     ----------
@@ -212,8 +213,8 @@ def dynamics(
 
     so that the balancing torque of the kinetostatics at that motion is
     :math:`M_d - J_f \varepsilon`. The work is integrated on an internal grid of
-    :data:`~assur.dynamics_reduced.GRID_START` to
-    :data:`~assur.dynamics_reduced.GRID_MOST` positions a turn, refined until it
+    ``GRID_START`` to
+    ``GRID_MOST`` positions a turn, refined until it
     changes by less than :data:`~assur.dynamics_reduced.GRID_RTOL`; the extremes of
     the speed are found on that grid and its interpolants, whatever ``angles`` is.
 

@@ -202,10 +202,10 @@ class Reduced:
 def reduce(mechanism: Mechanism) -> Reduced:
     """Sample the reduced model on a grid over one turn, fine enough to integrate.
 
-    The grid starts at the reference pose with :data:`GRID_START` positions and is
-    doubled (up to :data:`GRID_MOST`) until the work over the turn and the
+    The grid starts at the reference pose with ``GRID_START`` positions and is
+    doubled (up to ``GRID_MOST``) until the work over the turn and the
     interpolants of ``J`` and ``M`` between grid points agree to :data:`GRID_RTOL`
-    and :data:`BETWEEN_RTOL`, or until ``M`` proves to be noise (its typical miss
+    and ``BETWEEN_RTOL``, or until ``M`` proves to be noise (its typical miss
     between grid points not halved by two doublings in a row: the rounding of a
     huge load, say), which a warning names with the work's estimated error.
 

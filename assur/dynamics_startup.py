@@ -59,7 +59,7 @@ class Startup:
     omega : ndarray (n,)
         Crank speed, rad/s.
     settle_time : float
-        Time after which the speed stays within :data:`SETTLE_BAND` of the mean
+        Time after which the speed stays within ``SETTLE_BAND`` of the mean
         speed of the periodic motion of its crank angle, s.
     turns : int
         Turns integrated.
@@ -140,9 +140,9 @@ def startup(
     the reduced torque ``M`` are the periodic interpolants of
     :func:`assur.dynamics_reduced.reduce`. The integration (DOP853, or Radau
     under a motor whose speed relaxes a thousand times a turn; relative
-    tolerance :data:`RTOL`) stops at every turn; the motion is periodic when the
+    tolerance ``RTOL``) stops at every turn; the motion is periodic when the
     speed there, extrapolated geometrically from the last turns, changes by less
-    than :data:`PERIODIC_RTOL`.
+    than ``PERIODIC_RTOL``.
 
     Examples
     --------
@@ -394,7 +394,7 @@ def _periodic(crossings: list[float]) -> bool:
     """Whether the speeds at the reference pose have stopped changing.
 
     The changes from turn to turn are taken to shrink geometrically; what is left of
-    them must be below :data:`PERIODIC_RTOL` of the speed.
+    them must be below ``PERIODIC_RTOL`` of the speed.
     """
     if len(crossings) < 3:
         return False

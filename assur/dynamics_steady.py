@@ -85,7 +85,7 @@ def steady_state(model: Reduced, omega: float, flywheel: float = 0.0) -> Steady:
     :math:`E_0`, so the mean of its extremes is too: Brent's method finds
     :math:`E_0` between the energy at which the crank just comes to rest and one at
     which even the smallest speed exceeds ``|omega|``. The extremes are found on the
-    grid, then on the interpolants to :data:`ANGLE_ATOL`.
+    grid, then on the interpolants to ``ANGLE_ATOL``.
     """
     from scipy.optimize import brentq
 
@@ -117,7 +117,7 @@ def check_inertia(model: Reduced, inertia: Array, flywheel: float) -> None:
     """Refuse a reduced inertia that vanishes (a turn without mass in motion).
 
     ``inertia`` is ``J`` on the grid of ``model``, flywheel included. Zero is below
-    :data:`NO_INERTIA` of the largest value, or below the fourth power of the grid's
+    ``NO_INERTIA`` of the largest value, or below the fourth power of the grid's
     step (rad) times it, which is what the minimum between grid points is known to.
 
     Raises

@@ -80,7 +80,7 @@ def load(path: str | Path) -> Mechanism:
     Parameters
     ----------
     path : str or path-like
-        The file; at most :data:`MAX_FILE_BYTES` bytes of UTF-8 text (a byte-order
+        The file; at most 16 MiB (``MAX_FILE_BYTES``) of UTF-8 text (a byte-order
         mark is welcome). A ``.json`` suffix (any case) reads JSON, any other TOML.
 
     Raises
@@ -679,7 +679,8 @@ def save(mechanism: Mechanism, path: str | Path) -> None:
     """Write ``mechanism`` as a mechanism file, whole or not at all.
 
     JSON for a ``.json`` suffix (any case), TOML for any other, as :func:`load` reads
-    them. The file is written whole or not at all (:func:`assur._output.write_text`).
+    them. The file is written whole or not at all: to a temporary file beside it, then
+    moved over it in one step.
 
     Raises
     ------
@@ -720,8 +721,8 @@ def write_csv(table: Any, path: Any = None) -> str | None:
     ----------
     table : Table
     path : str, path-like, file object or "-", optional
-        Where to write: a file (written whole or not at all, see
-        :mod:`assur._output`), an open text or binary stream (UTF-8), or ``"-"``
+        Where to write: a file (written whole or not at all: to a temporary file
+        moved over it), an open text or binary stream (UTF-8), or ``"-"``
         for standard output.
 
     Raises
@@ -771,8 +772,8 @@ def write_parquet(table: Any, path: Any) -> None:
 
     Every column is float64, named as in the table, with its unit in the field's
     metadata (key ``unit``); the schema's metadata holds the mechanism's name (key
-    ``assur.name``). The rows go in groups of
-    :data:`~assur._tableio.PARQUET_ROWS`. The file is written whole or not at all.
+    ``assur.name``). The rows go in groups of 65536 (``PARQUET_ROWS``). The file is
+    written whole or not at all.
 
     Raises
     ------

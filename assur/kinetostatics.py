@@ -4,10 +4,10 @@ Every link gets its d'Alembert loads (``-m a_G`` at the centre of mass and ``-J_
 alpha``), gravity and external loads. The groups are then solved in the reverse order
 of attachment, each statically determinate and receiving the reactions of the groups
 solved before it; the driving links come last and give the balancing torque (or force).
-Each step returns a record (:class:`~assur.groups._protocol.Equilibrium`,
-:class:`~assur.groups.driver.Balance`). The principle of virtual power gives the same
-balancing loads independently (:func:`virtual_power`), and every link's equilibrium
-can be checked again from the reactions (:func:`residual`).
+Each step returns a record (an ``Equilibrium`` per group, a ``Balance`` per driver).
+The principle of virtual power gives the same balancing loads independently
+(:func:`virtual_power`), and every link's equilibrium can be checked again from the
+reactions (:func:`residual`).
 
 Everything here reads the links' motions only; they come from the forward pass or are
 rebuilt from a frozen :class:`~assur._kinematics.KinematicState`.
@@ -211,7 +211,7 @@ def reverse(
     Each group receives its links' applied loads plus the reactions of the groups
     solved before it; what it passes to the links it hangs on is added to theirs.
     With friction in the pairs (and ``friction``) each group is solved by the
-    iteration of :mod:`assur._friction`, and the balancing loads overcome the
+    iteration of ``assur._friction``, and the balancing loads overcome the
     driving pairs' friction too.
     """
     rubbing = friction and has_friction(plan)
@@ -423,9 +423,9 @@ def offset(
 
     The couple about the pair's point moves the resultant normal force ``N`` by
     ``M / N`` along the slide line. NaN where there is no normal force: where ``|N|``
-    is below :data:`NO_FORCE` times ``scale``, the largest reaction of the mechanism
+    is below ``NO_FORCE`` times ``scale``, the largest reaction of the mechanism
     at that position (N), as rounding leaves it; and where the force would act more
-    than :data:`FAR_FORCE` times the mechanism's ``size`` (m) away, a pure couple.
+    than ``FAR_FORCE`` times the mechanism's ``size`` (m) away, a pure couple.
     """
     nx, ny = rotated(bodies[pair.first], pair.normal)
     normal = np.asarray(dot((fx, fy), (nx, ny)), dtype=float)

@@ -281,7 +281,7 @@ class Mechanism:
         Extra points to report.
     motor : Motor, optional
         The motor on the driving crank, for a start-up in time
-        (:func:`assur.startup`); nothing else reads it.
+        (:func:`assur.startup <assur.dynamics_startup.startup>`); nothing else reads it.
 
     Raises
     ------

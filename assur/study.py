@@ -1,14 +1,14 @@
 """Studies: many variants of a mechanism, each summarised over a sweep.
 
 :func:`sweep` builds every variant from its parameters, solves the variants of one
-form together in batches (:mod:`assur._batch`) and gathers one row of summary values
-per variant (:meth:`assur.Table.summary`). A batch's plan is compiled at once from the
-variants' numbers against a template, one compiled variant of the form
-(:mod:`assur._variants`): compiling each variant's plan on its own cost more than
-solving its positions. Variants the template does not serve are compiled one by one
-and stacked (:mod:`assur._stack`), or analysed alone. With a dask.distributed client
-the variants are split into partitions that the cluster's workers run. pandas,
-xarray and dask are imported only when a study needs them.
+form together in batches (``assur._batch``) and gathers one row of summary values
+per variant (:meth:`Table.summary <assur.analysis.Table.summary>`). A batch's plan
+is compiled at once from the variants' numbers against a template, one compiled
+variant of the form (``assur._variants``): compiling each variant's plan on its own
+cost more than solving its positions. Variants the template does not serve are
+compiled one by one and stacked (``assur._stack``), or analysed alone. With a
+dask.distributed client the variants are split into partitions that the cluster's
+workers run. pandas, xarray and dask are imported only when a study needs them.
 """
 
 from __future__ import annotations

@@ -31,8 +31,8 @@ class Columns:
     """What every table of results offers: its columns by name, and their export.
 
     A subclass gives ``columns`` (the names, in order), ``column(name)`` (a
-    :class:`~assur.columns.Column`), ``table[name]`` (a read-only array, one value
-    per row), ``len(table)`` and ``mechanism``; the rest follows from them.
+    ``Column``: owner, quantity, unit), ``table[name]`` (a read-only array, one
+    value per row), ``len(table)`` and ``mechanism``; the rest follows from them.
     """
 
     __slots__ = ()
@@ -373,7 +373,10 @@ class Table(Columns):
         ``driver.power.mean``, the mean of the balancing loads times the drivers'
         speeds (W). With friction also ``J.friction.loss``, the mean power lost in
         joint J (W), ``friction.loss`` in all, ``driver.power_ideal.mean`` without
-        friction and ``efficiency`` (see :func:`assur.summary.efficiency`).
+        friction and ``efficiency``, ``driver.power_ideal.mean`` over
+        ``driver.power.mean``: the share of the driver's work that reaches the loads
+        (NaN where the driver does no net work, or the loads give back work it still
+        supplies).
 
         Means are over the table's positions: time averages over a cycle when the
         positions are equally spaced over a whole cycle at a constant driver speed.

@@ -42,8 +42,9 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
         The page: structure report, an animated SVG drawing with a range slider
         (``id="angle"``), diagrams over the sweep and a table; for a mechanism with
         masses and one crank, its steady state (``id="dynamics"``, see
-        :func:`assur.dynamics`); with forces, the note of the first position
-        (``id="note"``, :func:`assur.explain`), the links' inertia loads there
+        :func:`assur.dynamics <assur.dynamics_model.dynamics>`); with forces, the
+        note of the first position (``id="note"``, :func:`assur.explain`), the
+        links' inertia loads there
         (``id="inertia"``) and each Assur group's free-body diagram as inline SVG
         (``id="free-bodies"``, :func:`assur.plotting.draw_free_body`); the data as
         JSON in

@@ -1,8 +1,10 @@
 """Pictures of the dynamic model: J(phi), the torques, the speed, Wittenbauer, start-up.
 
-Each function takes the result of :func:`assur.dynamics` (or of :func:`assur.startup`)
-and draws on the given axes or on new ones; :func:`plot_dynamics` puts the four
-pictures of the steady state on one figure.
+Each function takes the result of
+:func:`assur.dynamics <assur.dynamics_model.dynamics>` (or of
+:func:`assur.startup <assur.dynamics_startup.startup>`) and draws on the given axes
+or on new ones; :func:`plot_dynamics` puts the four pictures of the steady state on
+one figure.
 """
 
 from __future__ import annotations
@@ -58,7 +60,7 @@ def plot_reduced_inertia(result: Dynamics, ax: Any = None) -> Any:
     Parameters
     ----------
     result : Dynamics
-        The result of :func:`assur.dynamics`.
+        The result of :func:`assur.dynamics <assur.dynamics_model.dynamics>`.
     ax : matplotlib Axes, optional
 
     Returns
@@ -208,7 +210,7 @@ def plot_startup(run: Startup, ax: Any = None) -> Any:
     Parameters
     ----------
     run : Startup
-        The result of :func:`assur.startup`.
+        The result of :func:`assur.startup <assur.dynamics_startup.startup>`.
     ax : matplotlib Axes, optional
 
     Returns
