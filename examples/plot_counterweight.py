@@ -86,8 +86,9 @@ fig.tight_layout()
 # %%
 # A study of counterweights
 # -------------------------
-# :func:`assur.sweep` analyses a range of counterweights at once; the summary gives
-# each one's largest load on the crank's bearing A and the largest driving torque.
+# :func:`assur.sweep <assur.study.sweep>` analyses a range of counterweights at
+# once; the summary gives each one's largest load on the crank's bearing A and the
+# largest driving torque.
 
 masses = np.linspace(0.0, 2.0 * best.x, 21)
 study = assur.sweep(balanced, {"counterweight": masses}, angles)

@@ -5,9 +5,9 @@ Tolerance study: the spread of the crank-pin load
 The slider-crank of the kinetostatics lesson (crank 0.074 m, rod 0.200 m, crank at
 200 rad/s) is made to drawing tolerances: every manufactured mechanism has slightly
 different link lengths. How much does the largest load on the crank pin B vary from
-one mechanism to the next? :func:`assur.sweep` analyses a sample of mechanisms, each
-over a turn, and gives the summary of each (one row per sample), here the largest
-reaction in joint B over the turn, ``B.F.max``.
+one mechanism to the next? :func:`assur.sweep <assur.study.sweep>` analyses a
+sample of mechanisms, each over a turn, and gives the summary of each (one row per
+sample), here the largest reaction in joint B over the turn, ``B.F.max``.
 
 The sample has 10^4 mechanisms, each analysed over a turn in 5 degree steps:
 720 000 positions in all, solved in stacked batches of variants in a few seconds.
