@@ -82,14 +82,14 @@ def flywheel(mechanism: Mechanism, delta: float) -> float:
     mechanism : Mechanism
         One revolute driver, masses; its ``omega`` is the nominal speed.
     delta : float
-        ``(max w - min w) / omega`` of the steady state, from ``SMALLEST_DELTA``
-        to below 2 (at 2 the crank stops).
+        ``(max w - min w) / omega`` of the steady state, from 1e-9
+        (``SMALLEST_DELTA``) to below 2 (at 2 the crank stops).
 
     Returns
     -------
     float
-        The inertia added on the crank, kg m^2, to a relative tolerance of
-        ``DELTA_RTOL`` on the root of ``delta(J) - delta``.
+        The inertia added on the crank, kg m^2, to a relative tolerance of 1e-12
+        (``DELTA_RTOL``) on the root of ``delta(J) - delta``.
 
     Raises
     ------
@@ -116,7 +116,24 @@ def flywheel(mechanism: Mechanism, delta: float) -> float:
 def flywheel_sizing(mechanism: Mechanism, delta: float) -> FlywheelSizing:
     r"""Return the exact flywheel and the two classical estimates beside it.
 
-    Parameters are those of :func:`flywheel`.
+    Parameters
+    ----------
+    mechanism : Mechanism
+        One revolute driver, masses; its ``omega`` is the nominal speed.
+    delta : float
+        ``(max w - min w) / omega`` of the steady state, from 1e-9 to below 2, as
+        :func:`flywheel` takes it.
+
+    Returns
+    -------
+    FlywheelSizing
+        The inertia :func:`flywheel` returns (``exact``), Wittenbauer's estimate
+        and the energy-swing estimate, kg m^2 each.
+
+    Raises
+    ------
+    UsageError, ModelError, ConvergenceError
+        As :func:`flywheel` raises them.
 
     Notes
     -----

@@ -83,10 +83,17 @@ def load(path: str | Path) -> Mechanism:
         The file; at most 16 MiB (``MAX_FILE_BYTES``) of UTF-8 text (a byte-order
         mark is welcome). A ``.json`` suffix (any case) reads JSON, any other TOML.
 
+    Returns
+    -------
+    Mechanism
+        The mechanism the file describes, validated.
+
     Raises
     ------
     ModelError
         With a one-line message naming the file, the entry and what is wrong.
+    UsageError
+        When ``path`` is not a path.
 
     Examples
     --------
@@ -153,10 +160,25 @@ def read_capped(path: Any, where: str, most: int, kind: str, expected: str) -> b
 def loads(text: str, json_format: bool = False) -> Mechanism:
     """Read a mechanism from TOML (or JSON) text.
 
+    Parameters
+    ----------
+    text : str or bytes
+        The text of a mechanism file (bytes are read as UTF-8, a byte-order mark
+        welcome).
+    json_format : bool, default False
+        Read ``text`` as JSON instead of TOML.
+
+    Returns
+    -------
+    Mechanism
+        The mechanism the text describes, validated.
+
     Raises
     ------
     ModelError
         With a one-line message naming the entry and what is wrong.
+    UsageError
+        When ``text`` is not text (a file's path, say: read it with :func:`load`).
     """
     import tomllib
 
@@ -610,8 +632,23 @@ def _table_text(t: LoadTable, comps: tuple[str, ...]) -> str:
 def dumps(mechanism: Mechanism, json_format: bool = False) -> str:
     """Return the text of a mechanism file for ``mechanism``, TOML or JSON.
 
-    With ``json_format`` the JSON of the same keys and values (read back by
-    :func:`loads` with ``json_format``).
+    Parameters
+    ----------
+    mechanism : Mechanism
+        The mechanism to write.
+    json_format : bool, default False
+        Write JSON of the same keys and values instead of TOML.
+
+    Returns
+    -------
+    str
+        The file's text; :func:`loads` (with the same ``json_format``) reads it back
+        as an equal mechanism.
+
+    Raises
+    ------
+    UsageError
+        When ``mechanism`` is not a :class:`~assur.model.Mechanism`.
     """
     if json_format:
         import tomllib
@@ -682,10 +719,19 @@ def save(mechanism: Mechanism, path: str | Path) -> None:
     them. The file is written whole or not at all: to a temporary file beside it, then
     moved over it in one step.
 
+    Parameters
+    ----------
+    mechanism : Mechanism
+        The mechanism to write.
+    path : str or path-like
+        The file to write; a ``.json`` suffix writes JSON, any other TOML.
+
     Raises
     ------
     OutputError
         When the file cannot be written; an old file of that name is kept.
+    UsageError
+        When ``path`` is not a path or ``mechanism`` not a Mechanism.
     """
     from pathlib import Path
 

@@ -84,7 +84,22 @@ class Columns:
     def to_csv(self, path: Any = None) -> str | None:
         """Write the table as CSV to ``path`` (a path, a file object or ``"-"``).
 
-        Without ``path`` the CSV text is returned.
+        Parameters
+        ----------
+        path : str, path-like, file object or "-", optional
+            Where to write: a file (written whole or not at all), an open text or
+            binary stream (UTF-8), or ``"-"`` for standard output. Without it the
+            CSV text is returned.
+
+        Returns
+        -------
+        str or None
+            The CSV text when ``path`` is not given, else None.
+
+        Raises
+        ------
+        OutputError
+            When the file cannot be written; an old file of that name is kept.
         """
         from assur.io import write_csv
 
@@ -279,7 +294,24 @@ class Table(Columns):
         return found
 
     def column(self, name: str) -> Column:
-        """Return the description of column ``name`` (owner, quantity, unit)."""
+        """Return the description of column ``name`` (owner, quantity, unit).
+
+        Parameters
+        ----------
+        name : str
+            A column's name, e.g. ``"rod.omega"`` or ``"B.Fx"``.
+
+        Returns
+        -------
+        Column
+            Its ``name``, ``owner``, ``quantity`` and ``unit`` (SI in plain text,
+            angles in degrees).
+
+        Raises
+        ------
+        KeyError
+            For a name the table has no column of, with the nearest names.
+        """
         try:
             return self._index[name]
         except KeyError:
@@ -380,6 +412,12 @@ class Table(Columns):
 
         Means are over the table's positions: time averages over a cycle when the
         positions are equally spaced over a whole cycle at a constant driver speed.
+
+        Returns
+        -------
+        dict of str to float
+            The values by name, in SI units; the positions (``J.F.at``) in degrees,
+            or metres for a prismatic driver.
 
         Raises
         ------
