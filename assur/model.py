@@ -97,7 +97,8 @@ class Link:
     mass : float, optional
         Mass, kg. A link without mass is massless.
     center : PointSpec, optional
-        Centre of mass in the reference pose.
+        Centre of mass in the reference pose: coordinates (m), a point's name or a
+        :class:`Toward`.
     inertia : float, optional
         Moment of inertia about the centre of mass, kg m^2.
     """
@@ -224,7 +225,19 @@ class Load:
 
 @dataclass(frozen=True, slots=True)
 class Point:
-    """An extra point of a link to report (a coupler point, say)."""
+    """An extra point of a link to report (a coupler point, say).
+
+    Parameters
+    ----------
+    name : str
+        Identifier, unique among joints and points; the point's columns are
+        ``name.x``, ``name.y``, ...
+    link : str
+        The link the point is fixed in.
+    at : PointSpec
+        Position in the reference pose: coordinates (m), another point's name or a
+        :class:`Toward`.
+    """
 
     name: str
     link: str
@@ -272,12 +285,19 @@ class Mechanism:
     links : tuple of Link
         The moving links; the frame ``"ground"`` is implicit.
     joints : tuple of Joint
+        The pairs joining the links to each other and to the frame.
     drivers : tuple of Driver
-    name, description : str
+        The driven joints, one per degree of freedom.
+    name : str, default ""
+        The mechanism's name, shown in reports and kept with exported tables.
+    description : str, default ""
+        Free text on the mechanism, kept in its file and shown in its HTML report.
     gravity : tuple of float, optional
         Gravitational acceleration vector, m/s^2, e.g. ``(0.0, -9.81)``.
-    loads : tuple of Load
-    points : tuple of Point
+    loads : tuple of Load, default ()
+        External forces and torques; weights come from ``gravity`` and inertia loads
+        from the masses, neither is a load.
+    points : tuple of Point, default ()
         Extra points to report.
     motor : Motor, optional
         The motor on the driving crank, for a start-up in time
