@@ -166,10 +166,10 @@ def sweep(
     UsageError
         For parameters that are not equal-length 1-D arrays of real numbers, that
         the factory does not take or that are named as a column of the summary
-        (``error``, ``warning``, ``variant``) or of :meth:`Study.tables`
-        (``position``, ``column``, ``values``, ``driver``); driver positions that
-        are not finite real numbers; a ``client`` that is not a dask.distributed
-        client or ``partitions`` that is not a positive integer.
+        (``error``, ``warning``, ``variant``, ``efficiency``) or of
+        :meth:`Study.tables` (``position``, ``column``, ``values``, ``driver``);
+        driver positions that are not finite real numbers; a ``client`` that is not
+        a dask.distributed client or ``partitions`` that is not a positive integer.
     ImportError
         When pandas (or with ``client``, dask.distributed) is not installed.
 

@@ -179,6 +179,17 @@ def test_parameters_are_checked(parameters, message):
         assur.sweep(catalog.slider_crank, parameters, ANGLES)
 
 
+def test_the_refused_names_are_documented():
+    # the docstring and the study page list every name a parameter may not take
+    # (the docstring had left out efficiency)
+    from assur.study import RESERVED
+
+    page = (Path(__file__).parent.parent / "docs" / "study.rst").read_text("utf-8")
+    for name in RESERVED:
+        assert f"``{name}``" in assur.sweep.__doc__, name
+        assert f"``{name}``" in page, name
+
+
 def test_angles_are_checked():
     # the value at fault is named: the shape shown was a valid one
     with pytest.raises(assur.UsageError) as caught:
