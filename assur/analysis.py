@@ -141,13 +141,41 @@ def forces(
 ) -> Table:
     """Kinematics plus inertia loads, joint reactions and balancing loads.
 
-    Parameters are those of :func:`kinematics`.
+    Parameters
+    ----------
+    mechanism : Mechanism
+        With masses (and centres of mass and inertias) or loads.
+    angles : array_like
+        Driver positions, deg (m for a prismatic driver); shape (n,) or, with several
+        drivers, (n, drivers).
+    omega, epsilon : float or array_like, optional
+        The drivers' speeds (rad/s; m/s) and accelerations (rad/s^2; m/s^2) at every
+        position, replacing the file's constants, as in :func:`kinematics`.
+    skip_unassembled : bool
+        Leave out the positions where a group cannot be assembled, stands at a dead
+        centre or is locked by friction, instead of raising.
+    columns : sequence of str, optional
+        Compute only these columns (and ``angle``), as in :func:`kinematics`.
+    progress : bool or callable, optional
+        A progress bar on standard error, or a callback ``progress(done, total)``.
+
+    Returns
+    -------
+    Table
+        Every kinematics column, then inertia loads (N, N m), joint reactions (N, N
+        m), the balancing loads (N m, or N for a prismatic driver) and their checks
+        by virtual power.
 
     Raises
     ------
     ModelError
         When no link has a mass and no load is applied, when a link with a mass lacks
         its centre of mass or inertia, or a load table does not cover the sweep.
+    AssemblyError, SingularConfigurationError, SelfLockingError
+        At the first driver position where a group cannot close, is at a dead centre
+        or is locked by friction, naming the group.
+    UsageError
+        When an argument cannot be used (shape, values, unknown column).
 
     Examples
     --------
