@@ -10,10 +10,12 @@ load follows from the powers alone, without one reaction.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
 from assur._kinematics import velocity_coefficients
+from assur._vec import Array
 from assur.explain._forces_text import couple_blocks, force_symbol
 from assur.explain._friction_text import driver_friction, power_rows, sliding_total
 from assur.explain._loads_text import (
@@ -30,7 +32,15 @@ from assur.explain._tex import name, num, par, plain, vec
 from assur.groups._motion import Motion
 from assur.groups.driver import DriverPlan
 
-__all__ = ["driver_blocks", "lever_blocks", "lever_load", "lever_rates", "lever_terms"]
+__all__ = [
+    "LeverTerm",
+    "driver_blocks",
+    "lever_blocks",
+    "lever_load",
+    "lever_parts",
+    "lever_rates",
+    "lever_terms",
+]
 
 
 def _balancing(pos: Position, i: int) -> float:
@@ -318,12 +328,32 @@ def _percent(x: float) -> str:
     return "0" if x == 0 else f"{x:.1e}".replace("e", "\\cdot 10^{") + "}"
 
 
-def lever_terms(
-    pos: Position, bodies: list[Motion]
-) -> tuple[list[tuple[str, ...]], float]:
-    """Return the table rows of every load's power and their sum (W)."""
-    rows: list[tuple[str, ...]] = []
-    total_power = 0.0
+@dataclass(frozen=True, slots=True)
+class LeverTerm:
+    """One load's power on the lever: a force at its point, or a couple on its link.
+
+    ``load`` acts on link ``body``. For a force (``couple`` false) ``velocity`` is
+    its point's (m/s); for a couple ``omega`` is the link's angular velocity
+    (rad/s). ``power`` is ``F . v`` or ``M omega`` (W): minus its moment about the
+    pole of the lever (the velocity plan turned by +90 degrees).
+    """
+
+    load: Load
+    body: int
+    couple: bool
+    velocity: Array
+    omega: float
+    power: float
+
+
+def lever_parts(pos: Position, bodies: list[Motion]) -> list[LeverTerm]:
+    r"""Return every load's term on the lever: forces and couples, link by link.
+
+    ``bodies`` are the velocities the lever uses (:func:`lever_rates`). A load with
+    a force and a couple gives two terms; a couple acts as its power
+    :math:`M_L \omega_L`, whatever the points of the link.
+    """
+    out: list[LeverTerm] = []
     for b in range(1, len(pos.plan.bodies)):
         m = bodies[b]
         w = float(np.ravel(m.phi[1])[0])
@@ -334,24 +364,23 @@ def lever_terms(
                 r = load.point - o
                 v = vo + w * np.array([-r[1], r[0]])
                 p = float(np.dot(load.force, v))
-                rows.append(
-                    (
-                        f"${load.tex}$",
-                        f"${vec(load.force)}$",
-                        f"$\\vec v = {vec(v)}$",
-                        f"${num(p)}$",
-                    )
-                )
-                total_power += p
+                out.append(LeverTerm(load, b, False, v, w, p))
             if load.couple:
-                p = load.couple * w
-                rows.append(
-                    (
-                        f"${load.tex}$",
-                        f"${num(load.couple)}$",
-                        f"$\\omega = {num(w)}$",
-                        f"${num(p)}$",
-                    )
-                )
-                total_power += p
+                out.append(LeverTerm(load, b, True, np.zeros(2), w, load.couple * w))
+    return out
+
+
+def lever_terms(
+    pos: Position, bodies: list[Motion]
+) -> tuple[list[tuple[str, ...]], float]:
+    """Return the table rows of every load's power and their sum (W)."""
+    rows: list[tuple[str, ...]] = []
+    total_power = 0.0
+    for t in lever_parts(pos, bodies):
+        if t.couple:
+            given, rate = num(t.load.couple), f"\\omega = {num(t.omega)}"
+        else:
+            given, rate = vec(t.load.force), f"\\vec v = {vec(t.velocity)}"
+        rows.append((f"${t.load.tex}$", f"${given}$", f"${rate}$", f"${num(t.power)}$"))
+        total_power += t.power
     return rows, total_power
