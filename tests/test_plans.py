@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import matplotlib
@@ -10,6 +11,7 @@ import numpy as np
 import pytest
 
 import assur
+from assur.explain._lever import lever_parts, lever_rates
 from assur.explain._solve import position, table_at
 from assur.plotting import plans
 
@@ -349,3 +351,110 @@ def test_the_instant_centres_drawn_are_within_the_limits(stem: str) -> None:
     assert _inside(ax, corners)
     plt.close(alone.figure)
     plt.close(ax.figure)
+
+
+def _with_torque(tmp_path: Path) -> Path:
+    """The crank-rocker four-bar with a torque of -4 N m resisting its rocker."""
+    path = tmp_path / "four_bar_torque.toml"
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    path.write_text(text + '\n[[loads]]\nlink = "rocker"\ntorque = -4.0\n', "utf-8")
+    return path
+
+
+LEVERS = [
+    "slider_crank_exercise",
+    "six_bar_lecture",
+    "four_bar",
+    "whitworth",
+    "four_bar_bearings",
+    "torque",
+]
+"""Levers whose couples must be counted: inertia couples on every link but the
+slider-crank's crank, a couple on a block with no two joints apart (Whitworth), an
+external torque with friction (bearings) and without (``torque``)."""
+
+
+@pytest.mark.parametrize("stem", LEVERS)
+@pytest.mark.parametrize("angle", [45.0, 160.0, 290.0])
+def test_the_lever_s_terms_add_up_to_the_balancing_load(
+    stem: str, angle: float, tmp_path: Path
+) -> None:
+    path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
+    mech = assur.load(path)
+    torque = float(assur.forces(mech, [angle])["driver.torque"][0])
+    terms = plans.lever_moments(table_at(mech, angle))
+    couples = [t for t, _ in terms if t.startswith(("M_{i,", "T_{"))]
+    assert couples, "every one of these levers carries a couple"
+    total = sum(share for _, share in terms)
+    assert total == pytest.approx(torque, rel=1e-9, abs=1e-12 * abs(torque))
+
+
+def test_the_exercise_s_lever_counts_the_rod_s_inertia_couple() -> None:
+    # without the couple the drawn forces give 89.53 N m, not the 84.625 N m printed
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    terms = dict(plans.lever_moments(table_at(mech, 45.0)))
+    rod = "M_{i,\\mathrm{rod}}"
+    # -M omega_rod / omega = -(-18.083)(-54.21) / 200
+    assert terms[rod] == pytest.approx(-4.9018, abs=5e-5)
+    forces = sum(v for k, v in terms.items() if k != rod)
+    assert forces == pytest.approx(89.527, abs=5e-4)
+    assert sum(terms.values()) == pytest.approx(84.625, abs=5e-4)
+
+
+def _listed(ax) -> tuple[dict[str, float], str]:
+    """The terms written beside a lever (label: value) and the sum as written."""
+    (text,) = [t.get_text() for t in ax.texts if "balancing load" in t.get_text()]
+    *rows, last = [line for line in text.splitlines() if ":  " in line or "sum" in line]
+    terms = {}
+    for row in rows:
+        label, value = row.rsplit(":  ", 1)
+        terms[label] = float(value)
+    return terms, last.split(": ")[1].split()[0]
+
+
+@pytest.mark.parametrize("stem", LEVERS)
+def test_the_terms_written_on_the_lever_add_up_by_hand(
+    stem: str, tmp_path: Path
+) -> None:
+    import matplotlib.pyplot as plt
+
+    path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
+    table = table_at(assur.load(path), 45.0)
+    ax = plans.zhukovsky_lever(table)
+    terms, written = _listed(ax)
+    plt.close(ax.figure)
+    # each term one decimal finer than the sum: the rounding of a handful of terms
+    # stays below the sum's last digit
+    places = len(written.partition(".")[2])
+    assert abs(sum(terms.values()) - float(written)) <= 10.0 ** (-places)
+    assert float(written) == pytest.approx(plans.lever_balance(table), rel=1e-4)
+    # every couple is written, by its symbol as mathtext
+    couples = [t for t, _ in plans.lever_moments(table) if t.startswith(("M_", "T_"))]
+    assert sum(label.startswith(("$M_{i,", "$T_{")) for label in terms) == len(couples)
+
+
+@pytest.mark.parametrize("stem", LEVERS)
+def test_the_forces_drawn_on_the_lever_give_its_load(stem: str, tmp_path: Path) -> None:
+    # the moments about the pole of the arrows drawn (a couple as its pair of forces
+    # at two joints' images), over the speed, are the balancing load less friction's
+    # share and the couples only listed (a block whose joints coincide)
+    path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
+    table = table_at(assur.load(path), 45.0)
+    pos = position(assur.load(path), 45.0)
+    bodies, speed, _ = lever_rates(pos, 0)
+    lever = dataclasses.replace(pos, bodies=bodies)
+    terms = lever_parts(pos, bodies)
+    arrows = plans._lever_arrows(lever, terms)
+    drawn = sum(a[0] * f[1] - a[1] * f[0] for a, f, _, _ in arrows) / speed
+    listed_only = sum(
+        -t.power / speed
+        for t in terms
+        if t.couple and plans._joints_apart(lever, t.body) is None
+    )
+    shares = dict(plans.lever_moments(table))
+    want = sum(shares.values()) - shares.get("friction", 0.0) - listed_only
+    assert drawn == pytest.approx(want, rel=1e-9, abs=1e-12)
+    pairs = [a for a in arrows if a[3] == plans.COUPLE]
+    assert len(pairs) == 2 * sum(
+        t.couple and plans._joints_apart(lever, t.body) is not None for t in terms
+    )
