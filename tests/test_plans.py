@@ -458,3 +458,25 @@ def test_the_forces_drawn_on_the_lever_give_its_load(stem: str, tmp_path: Path) 
     assert len(pairs) == 2 * sum(
         t.couple and plans._joints_apart(lever, t.body) is not None for t in terms
     )
+
+
+@pytest.mark.parametrize("stem", LEVERS)
+def test_the_note_s_lever_lists_the_terms_the_picture_lists(
+    stem: str, tmp_path: Path
+) -> None:
+    from assur.explain import explain
+
+    path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
+    mech = assur.load(path)
+    note = str(explain(mech, 45.0)).split("## 6. Check by Zhukovsky's lever")[1]
+    # the table of powers: | $load$ | force or couple | velocity | $power$ |
+    rows = [line.split(" | ") for line in note.splitlines() if line.startswith("| $")]
+    shown = [(cells[0][3:-1], cells[-1].strip(" |$")) for cells in rows]
+    speed = lever_rates(position(mech, 45.0), 0)[1]
+    terms = plans.lever_moments(table_at(mech, 45.0))
+    want = [(t, -share * speed) for t, share in terms if t != "friction"]
+    assert [t for t, _ in shown] == [t for t, _ in want]
+    for (_, got), (_, power) in zip(shown, want, strict=True):
+        # to half a unit of the last digit printed
+        half = 0.5 * 10.0 ** -len(got.partition(".")[2])
+        assert abs(float(got) - power) <= half * (1 + 1e-9)
