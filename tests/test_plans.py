@@ -480,3 +480,17 @@ def test_the_note_s_lever_lists_the_terms_the_picture_lists(
         # to half a unit of the last digit printed
         half = 0.5 * 10.0 ** -len(got.partition(".")[2])
         assert abs(float(got) - power) <= half * (1 + 1e-9)
+
+
+def test_the_documented_couple_numbers_are_the_note_s() -> None:
+    # docs/explain.rst quotes the rod's couple on the exercise's lever at 45 degrees
+    from assur.explain import explain
+
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    note = str(explain(mech, 45.0))
+    row = r"| $M_{i,\mathrm{rod}}$ | $-18.08$ | $\omega = -54.21$ | $980.36$ |"
+    assert row in note
+    terms = dict(plans.lever_moments(table_at(mech, 45.0)))
+    assert round(terms[r"M_{i,\mathrm{rod}}"], 2) == pytest.approx(-4.90)
+    shown = [f"{v:.2f}" for k, v in terms.items() if k.startswith(r"\vec F")]
+    assert shown == ["0.00", "32.73", "56.79"]

@@ -3,9 +3,10 @@
 The velocity plan (pole ``p``, every point's image), the acceleration plan (normal,
 tangential, Coriolis and relative parts as separate arrows, along the chains of the
 note), the force polygon of every group, Zhukovsky's lever (the velocity plan turned
-by 90 degrees with every load at its image point) and the instant centres on the
-mechanism. Each plan states its scale as a student does: so many units per mm of
-the drawing. matplotlib is imported inside the functions only.
+by 90 degrees with every force at its image point, every couple as a pair of forces
+at two joints' images, each load's share of the balancing load listed) and the
+instant centres on the mechanism. Each plan states its scale as a student does: so
+many units per mm of the drawing. matplotlib is imported inside the functions only.
 """
 
 from __future__ import annotations
