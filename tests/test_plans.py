@@ -13,7 +13,7 @@ import pytest
 import assur
 from assur.explain._lever import lever_parts, lever_rates
 from assur.explain._solve import position, table_at
-from assur.plotting import plans
+from assur.plotting import lever, plans
 
 matplotlib.use("Agg")
 
@@ -41,12 +41,12 @@ def test_plan_images_are_the_table_s_velocities_and_accelerations(stem: str) -> 
 def test_lever_gives_the_balancing_torque(stem: str, angle: float) -> None:
     mech = assur.load(EXAMPLES / f"{stem}.toml")
     torque = assur.forces(mech, [angle])["driver.torque"][0]
-    assert plans.lever_balance(table_at(mech, angle)) == pytest.approx(torque, rel=1e-9)
+    assert lever.lever_balance(table_at(mech, angle)) == pytest.approx(torque, rel=1e-9)
 
 
 def test_lever_of_the_lecture_exercise() -> None:
     mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
-    assert plans.lever_balance(table_at(mech, 45.0)) == pytest.approx(84.625, abs=5e-4)
+    assert lever.lever_balance(table_at(mech, 45.0)) == pytest.approx(84.625, abs=5e-4)
 
 
 @pytest.mark.parametrize(
@@ -102,7 +102,7 @@ def test_every_point_is_on_each_plan(stem: str) -> None:
         assert _labels(ax) == points
         plt.close(ax.figure)
     if mech.links[0].mass or stem == "slider_crank_exercise":
-        ax = plans.zhukovsky_lever(table_at(mech, 45.0))
+        ax = lever.zhukovsky_lever(table_at(mech, 45.0))
         assert _labels(ax) == points
         plt.close(ax.figure)
 
@@ -161,7 +161,7 @@ def test_the_lever_counts_friction(path: Path, angle: float) -> None:
         abs(want),
         float(np.max([table[c][0] for c in table.columns if c.endswith(".F")])) * 1e-3,
     )
-    assert plans.lever_balance(table) == pytest.approx(want, abs=1e-9 * scale)
+    assert lever.lever_balance(table) == pytest.approx(want, abs=1e-9 * scale)
 
 
 @pytest.mark.parametrize(
@@ -187,7 +187,7 @@ def test_the_lever_of_a_driver_at_rest_is_per_unit_speed(tmp_path: Path) -> None
     assert "omega = 0.0" in text
     mech = assur.loads(text)
     table = assur.forces(mech, [45.0])
-    assert plans.lever_balance(table) == pytest.approx(
+    assert lever.lever_balance(table) == pytest.approx(
         float(table["driver.torque"][0]), rel=1e-9
     )
 
@@ -198,21 +198,21 @@ def test_each_driver_has_its_lever() -> None:
     table = assur.forces(assur.load(EXAMPLES / "five_bar_two_cranks.toml"), [[60, 60]])
     for i, name in enumerate(("A", "E")):
         want = float(table[f"{name}.torque"][0])
-        assert plans.lever_balance(table, driver=i) == pytest.approx(want, rel=1e-9)
-        ax = plans.zhukovsky_lever(table, driver=i)
+        assert lever.lever_balance(table, driver=i) == pytest.approx(want, rel=1e-9)
+        ax = lever.zhukovsky_lever(table, driver=i)
         assert f"driver {name}" in ax.get_title()
         plt.close(ax.figure)
     with pytest.raises(
         assur.UsageError, match="lever_balance: no driver 2; expected 0 to 1"
     ):
-        plans.lever_balance(table, driver=2)
+        lever.lever_balance(table, driver=2)
 
 
 def test_the_lever_needs_a_forces_table() -> None:
     table = assur.kinematics(
         assur.load(EXAMPLES / "slider_crank_exercise.toml"), [30.0]
     )
-    for draw in (plans.lever_balance, plans.zhukovsky_lever):
+    for draw in (lever.lever_balance, lever.zhukovsky_lever):
         with pytest.raises(assur.ModelError, match="needs a forces table"):
             draw(table)
 
@@ -298,7 +298,7 @@ def test_a_crank_alone_has_plans_and_a_lever_but_no_polygon(
     table = assur.forces(assur.load(path), [30.0])
     # the crank's own inertia torque: J epsilon about its pivot, m e^2 included
     assert float(table["driver.torque"][0]) == pytest.approx((0.001 + 0.05**2) * 2.0)
-    assert plans.lever_balance(table) == pytest.approx(table["driver.torque"][0])
+    assert lever.lever_balance(table) == pytest.approx(table["driver.torque"][0])
     with pytest.raises(assur.ModelError, match="no Assur group, so no polygon"):
         plans.force_polygons(table)
     status = main(["plot", str(path), "--group", "1", "-o", str(tmp_path / "g.png")])
@@ -382,7 +382,7 @@ def test_the_lever_s_terms_add_up_to_the_balancing_load(
     path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
     mech = assur.load(path)
     torque = float(assur.forces(mech, [angle])["driver.torque"][0])
-    terms = plans.lever_moments(table_at(mech, angle))
+    terms = lever.lever_moments(table_at(mech, angle))
     couples = [t for t, _ in terms if t.startswith(("M_{i,", "T_{"))]
     assert couples, "every one of these levers carries a couple"
     total = sum(share for _, share in terms)
@@ -392,7 +392,7 @@ def test_the_lever_s_terms_add_up_to_the_balancing_load(
 def test_the_exercise_s_lever_counts_the_rod_s_inertia_couple() -> None:
     # without the couple the drawn forces give 89.53 N m, not the 84.625 N m printed
     mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
-    terms = dict(plans.lever_moments(table_at(mech, 45.0)))
+    terms = dict(lever.lever_moments(table_at(mech, 45.0)))
     rod = "M_{i,\\mathrm{rod}}"
     # -M omega_rod / omega = -(-18.083)(-54.21) / 200
     assert terms[rod] == pytest.approx(-4.9018, abs=5e-5)
@@ -420,16 +420,16 @@ def test_the_terms_written_on_the_lever_add_up_by_hand(
 
     path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
     table = table_at(assur.load(path), 45.0)
-    ax = plans.zhukovsky_lever(table)
+    ax = lever.zhukovsky_lever(table)
     terms, written = _listed(ax)
     plt.close(ax.figure)
     # each term one decimal finer than the sum: the rounding of a handful of terms
     # stays below the sum's last digit
     places = len(written.partition(".")[2])
     assert abs(sum(terms.values()) - float(written)) <= 10.0 ** (-places)
-    assert float(written) == pytest.approx(plans.lever_balance(table), rel=1e-4)
+    assert float(written) == pytest.approx(lever.lever_balance(table), rel=1e-4)
     # every couple is written, by its symbol as mathtext
-    couples = [t for t, _ in plans.lever_moments(table) if t.startswith(("M_", "T_"))]
+    couples = [t for t, _ in lever.lever_moments(table) if t.startswith(("M_", "T_"))]
     assert sum(label.startswith(("$M_{i,", "$T_{")) for label in terms) == len(couples)
 
 
@@ -442,21 +442,21 @@ def test_the_forces_drawn_on_the_lever_give_its_load(stem: str, tmp_path: Path) 
     table = table_at(assur.load(path), 45.0)
     pos = position(assur.load(path), 45.0)
     bodies, speed, _ = lever_rates(pos, 0)
-    lever = dataclasses.replace(pos, bodies=bodies)
+    turned = dataclasses.replace(pos, bodies=bodies)
     terms = lever_parts(pos, bodies)
-    arrows = plans._lever_arrows(lever, terms)
+    arrows = lever._lever_arrows(turned, terms)
     drawn = sum(a[0] * f[1] - a[1] * f[0] for a, f, _, _ in arrows) / speed
     listed_only = sum(
         -t.power / speed
         for t in terms
-        if t.couple and plans._joints_apart(lever, t.body) is None
+        if t.couple and lever._joints_apart(turned, t.body) is None
     )
-    shares = dict(plans.lever_moments(table))
+    shares = dict(lever.lever_moments(table))
     want = sum(shares.values()) - shares.get("friction", 0.0) - listed_only
     assert drawn == pytest.approx(want, rel=1e-9, abs=1e-12)
-    pairs = [a for a in arrows if a[3] == plans.COUPLE]
+    pairs = [a for a in arrows if a[3] == lever.COUPLE]
     assert len(pairs) == 2 * sum(
-        t.couple and plans._joints_apart(lever, t.body) is not None for t in terms
+        t.couple and lever._joints_apart(turned, t.body) is not None for t in terms
     )
 
 
@@ -473,7 +473,7 @@ def test_the_note_s_lever_lists_the_terms_the_picture_lists(
     rows = [line.split(" | ") for line in note.splitlines() if line.startswith("| $")]
     shown = [(cells[0][3:-1], cells[-1].strip(" |$")) for cells in rows]
     speed = lever_rates(position(mech, 45.0), 0)[1]
-    terms = plans.lever_moments(table_at(mech, 45.0))
+    terms = lever.lever_moments(table_at(mech, 45.0))
     want = [(t, -share * speed) for t, share in terms if t != "friction"]
     assert [t for t, _ in shown] == [t for t, _ in want]
     for (_, got), (_, power) in zip(shown, want, strict=True):
@@ -490,7 +490,7 @@ def test_the_documented_couple_numbers_are_the_note_s() -> None:
     note = str(explain(mech, 45.0))
     row = r"| $M_{i,\mathrm{rod}}$ | $-18.08$ | $\omega = -54.21$ | $980.36$ |"
     assert row in note
-    terms = dict(plans.lever_moments(table_at(mech, 45.0)))
+    terms = dict(lever.lever_moments(table_at(mech, 45.0)))
     assert round(terms[r"M_{i,\mathrm{rod}}"], 2) == pytest.approx(-4.90)
     shown = [f"{v:.2f}" for k, v in terms.items() if k.startswith(r"\vec F")]
     assert shown == ["0.00", "32.73", "56.79"]

@@ -32,13 +32,13 @@ from assur.plotting.dynamics import (
     plot_startup,
 )
 from assur.plotting.force_diagrams import plot_hodographs, plot_shaking, plot_torque
+from assur.plotting.lever import zhukovsky_lever
 from assur.plotting.mechanism import draw
 from assur.plotting.plans import (
     acceleration_plan,
     force_polygons,
     instant_centres,
     velocity_plan,
-    zhukovsky_lever,
 )
 
 __all__ = [

@@ -11,17 +11,13 @@ many units per mm of the drawing. matplotlib is imported inside the functions on
 
 from __future__ import annotations
 
-import dataclasses
 import functools
 import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._vec import integer
-from assur.errors import ModelError, UsageError
-from assur.explain._friction_text import power_rows
-from assur.explain._lever import LeverTerm, lever_load, lever_parts, lever_rates
+from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
 from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
@@ -29,11 +25,9 @@ from assur.explain._tex import TEX_SPECIAL
 from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._geometry import _nice
-from assur.plotting._labels import LOAD_LABELS, spread_labels
 from assur.plotting._style import literal, math_name, titled
 
 if TYPE_CHECKING:
-    from assur.groups._motion import Motion
     from assur.table import Table
 
 __all__ = [
@@ -41,11 +35,8 @@ __all__ = [
     "force_polygons",
     "images",
     "instant_centres",
-    "lever_balance",
-    "lever_moments",
     "relative_centres",
     "velocity_plan",
-    "zhukovsky_lever",
 ]
 
 PLAN_SIZE = 80.0
@@ -354,222 +345,6 @@ def _outer(pos: Position, rec: Any, body: int) -> list[Any]:
         for p in rec.pairs
         if body in (p.first, p.second) and not {p.first, p.second} <= inside
     ]
-
-
-def lever_balance(table: Table, angle: Any = None, driver: int = 0) -> float:
-    """Return the balancing load read off Zhukovsky's lever, N m or N.
-
-    The sum of the moments about the pole of every load at its image point (the
-    velocity plan turned by +90 degrees), of the couples' terms and of friction's
-    power, divided by the driver's speed: the balancing load of driver ``driver``
-    (its index in the file's order). With several drivers, or a driver standing
-    still, the velocities are those per unit speed of that driver, the others held
-    (as the explanatory note's lever).
-
-    Raises
-    ------
-    ModelError
-        For a kinematics table.
-    UsageError
-        For a driver index out of range.
-    """
-    pos = _lever_position(table, angle, driver, "lever_balance")
-    return lever_load(pos, driver)
-
-
-def _lever_position(table: Table, angle: Any, driver: int, what: str) -> Position:
-    """Return the solved position of a lever, its table and driver checked."""
-    from assur.plotting._context import _need_forces
-
-    _need_forces(table, what)
-    count = len(table.plan.drivers)
-    index = integer(driver)
-    if index is None or not 0 <= index < count:
-        msg = f"{what}: no driver {driver!r}; expected 0 to {count - 1}"
-        raise UsageError(msg)
-    return _pos(table, angle)
-
-
-def lever_moments(
-    table: Table, angle: Any = None, driver: int = 0
-) -> list[tuple[str, float]]:
-    r"""Return the terms Zhukovsky's lever lists, N m or N: they add up to its load.
-
-    One term per load, in the note's order, as (its TeX symbol, its moment about
-    the pole of the lever divided by the driver's speed): ``-F . v / omega`` for a
-    force, ``-M omega_L / omega`` for a couple on link L (the moment of the pair of
-    forces :math:`\pm M / l` that replaces it at two joints of L); with friction,
-    one last term ``"friction"`` (its power over the speed). Their sum is
-    :func:`lever_balance`. With several drivers, or a driver standing still, the
-    speeds are per unit speed of the driver.
-
-    Raises
-    ------
-    ModelError, UsageError
-        As :func:`lever_balance`.
-    """
-    pos = _lever_position(table, angle, driver, "lever_moments")
-    rates = lever_rates(pos, driver)[:2]
-    return [(t, share) for t, share, _ in _shares(pos, rates)]
-
-
-def _shares(
-    pos: Position, rates: tuple[list[Motion], float]
-) -> list[tuple[str, float, LeverTerm | None]]:
-    """Return each load's share of the balancing load, friction's last (if any)."""
-    bodies, speed = rates
-    out: list[tuple[str, float, LeverTerm | None]] = [
-        (t.load.tex, -t.power / speed, t) for t in lever_parts(pos, bodies)
-    ]
-    if pos.result is not None and pos.result.friction:
-        lost = power_rows(pos, bodies, bodies is pos.bodies)[1]
-        out.append(("friction", -lost / speed, None))
-    return out
-
-
-def zhukovsky_lever(
-    table: Table, angle: Any = None, ax: Any = None, driver: int = 0
-) -> Any:
-    """Draw Zhukovsky's lever: the velocity plan turned by 90 degrees, the loads on it.
-
-    Every force acts at its point's image; a couple M on a link acts as the pair of
-    forces ``M / l`` and ``-M / l`` across the link's two joints farthest apart, at
-    their images (a link without two joints apart has its couple listed only).
-    Beside the lever every load's moment about the pole divided by the driver's
-    speed is listed (:func:`lever_moments`): the terms add up to the balancing load
-    of driver ``driver`` written below them (friction's power in; see
-    :func:`lever_balance`). With several drivers, or a driver standing still, the
-    plan is that of the velocities per unit speed of the driver.
-
-    Returns
-    -------
-    matplotlib.axes.Axes
-
-    Raises
-    ------
-    ModelError, UsageError
-        As :func:`lever_balance`.
-    """
-    pos = _lever_position(table, angle, driver, "zhukovsky_lever")
-    bodies, speed, _ = lever_rates(pos, driver)
-    unit_speed = bodies is not pos.bodies
-    lever = dataclasses.replace(pos, bodies=bodies)
-    found = {n: _perp(v) for n, v in images(lever, 1).items()}
-    mu = _scale(list(found.values()))
-    d = pos.plan.drivers[driver]
-    whose = f" of driver {d.pair.name}" if len(pos.plan.drivers) > 1 else ""
-    ax = _axes(ax, _title(pos, f"Zhukovsky's lever{literal(whose)}"), (11.0, 6.5))
-    _images_plot(ax, found, mu, "#777777")
-    shares = _shares(pos, (bodies, speed))
-    arrows = _lever_arrows(lever, [t for _, _, t in shares if t is not None])
-    # a couple's pair is drawn to its own scale: beside the inertia forces it is
-    # often a fraction of a millimetre
-    fmu, cmu = (
-        _scale([f for _, f, _, c in arrows if (c == COUPLE) == pair]) * 2.0
-        for pair in (False, True)
-    )
-    for at, force, label, color in arrows:
-        tip = at / mu + force / (cmu if color == COUPLE else fmu)
-        _arrow(ax, at / mu, tip, color)
-        LOAD_LABELS.add(ax.annotate(label, tip, fontsize=7, color=color))
-    balancing = lever_load(pos, driver, (bodies, speed))
-    _list_terms(ax, lever, d.kind, shares, (speed, balancing), unit_speed)
-    per = " per unit speed of the driver" if unit_speed else ""
-    mu_unit = "(m/s)/mm" if not unit_speed else "m/mm" if d.kind == "R" else "1/mm"
-    entries = [(f"force, 1 mm = {fmu:g} N", "#d62728")]
-    if any(c == COUPLE for *_, c in arrows):
-        entries.append((f"couple M as ±M/l at two joints, 1 mm = {cmu:g} N", COUPLE))
-    note = f"lever: μv = {mu:g} {mu_unit}{per},\nturned 90°"
-    _legend(ax, entries, note, beside=True)
-    spread_labels(ax)
-    return ax
-
-
-COUPLE = "#9467bd"
-"""The colour of a couple's pair of forces on the lever."""
-PAIR_GAP = 1e-6
-"""Two joints of a link closer than this times the mechanism's size carry no pair."""
-
-
-def _lever_arrows(
-    lever: Position, terms: list[LeverTerm]
-) -> list[tuple[np.ndarray, np.ndarray, str, str]]:
-    """Return the lever's arrows: (image, m/s; force, N; label; colour).
-
-    A force at its point's image; a couple ``M`` as ``M perp(d) / |d|^2`` at the
-    image of joint P and its opposite at joint Q's (``d = P - Q``): the pair's
-    moment is ``M`` and its power ``M omega``, as the couple's.
-    """
-    out = []
-    for t in terms:
-        if not t.couple:
-            image = _perp(t.velocity)
-            out.append((image, t.load.force, _symbol(t.load.tex), "#d62728"))
-            continue
-        ends = _joints_apart(lever, t.body)
-        if ends is None:
-            continue
-        (p, at_p), (q, at_q) = ends
-        d = at_p - at_q
-        force = t.load.couple * _perp(d) / float(np.dot(d, d))
-        label = f"{t.load.tex}/l_{{{tex_name(p)}{tex_name(q)}}}"
-        for point, sign, text in ((at_p, 1.0, label), (at_q, -1.0, f"-{label}")):
-            image = _perp(lever.coincident(t.body, point, 1))
-            out.append((image, sign * force, _symbol(text), COUPLE))
-    return out
-
-
-def _joints_apart(
-    pos: Position, body: int
-) -> tuple[tuple[str, np.ndarray], tuple[str, np.ndarray]] | None:
-    """Return the two revolute joints of ``body`` farthest apart, or None."""
-    pins = [
-        (p.name, pos.pair_point(p))
-        for p in pos.plan.pairs.values()
-        if p.kind == "R" and body in (p.first, p.second) and "~" not in p.name
-    ]
-    best, far = None, PAIR_GAP * pos.size()
-    for i, (a, at_a) in enumerate(pins):
-        for b, at_b in pins[i + 1 :]:
-            gap = float(np.hypot(*(at_a - at_b)))
-            if gap > far:
-                best, far = ((a, at_a), (b, at_b)), gap
-    return best
-
-
-def _list_terms(
-    ax: Any,
-    lever: Position,
-    kind: str,
-    shares: list[tuple[str, float, LeverTerm | None]],
-    rates: tuple[float, float],
-    unit_speed: bool,
-) -> None:
-    """Write every load's share of the balancing load beside the lever, and the sum.
-
-    ``rates`` are the driver's speed and the balancing load; ``unit_speed`` says the
-    speeds are per unit speed of the driver. The shares carry one decimal more than
-    the sum: they add up by hand to the sum written.
-    """
-    speed, balancing = rates
-    unit, rate, speed_unit = ("N·m", "ω", "rad/s") if kind == "R" else ("N", "v", "m/s")
-    given = "per unit speed" if unit_speed else f"{rate} = {speed:g} {speed_unit}"
-    big = max([abs(balancing)] + [abs(x) for _, x, _ in shares] + [1e-300])
-    places = max(0, 4 - math.floor(math.log10(big)))
-    lines = [
-        f"each load's moment about the pole / {rate}",
-        f"({given}; a couple: -M·ω_L/{rate}), {unit}:",
-    ]
-    for tex, share, t in shares:
-        head = "friction" if t is None else _symbol(tex)
-        if t is not None and t.couple:
-            head += f" ({t.load.couple:.6g} N·m, ω_L/{rate} = {t.omega / speed:.6g}"
-            head += ")" if _joints_apart(lever, t.body) else "; listed only)"
-        # rounded first: a share that rounds to nothing is written +0, not -0
-        lines.append(f"{head}:  {round(share, places + 1) + 0.0:+.{places + 1}f}")
-    lines.append(f"sum = balancing load: {balancing:.{places}f} {unit}")
-    ax.text(1.03, 1.0, "\n".join(lines), transform=ax.transAxes, fontsize=8,
-            va="top", ha="left", linespacing=1.7)  # fmt: skip
 
 
 def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
