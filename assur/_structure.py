@@ -13,7 +13,7 @@ import dataclasses
 import functools
 import heapq
 import math
-from collections.abc import Iterator
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -338,8 +338,9 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     ------
     DecompositionError
         When the mobility differs from the number of drivers, or links are left
-        over (the message then names two joints between the same two links or a
-        rigid part among the links left over, when there is one).
+        over (the message then names two joints between the same two links, a
+        loop of sliding pairs alone or a rigid part among the links left over, when
+        there is one).
 
     Notes
     -----
@@ -349,9 +350,12 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     and p lower pairs (those among its links and to known links) has 3k = 2p, every
     proper part of it keeps a positive mobility 3k' - 2p' > 0, no part of its own
     links is rigid (2p'' < 3(k'' - 1) for the pairs p'' among k'' of its links), and
-    not all its pairs slide. Candidates are connected sets of unknown links; only
-    those next to a link that became known are examined again, so a chain of small
-    groups decomposes in time about linear in its length.
+    its prismatic pairs close no loop, the known links taken as one (each ties the
+    rotations of its two links: a loop of them ties one twice, and the count
+    3k = 2p is then wrong; the three pairs of a PPP dyad are such a loop).
+    Candidates are connected sets of unknown links; only those next to a link that
+    became known are examined again, so a chain of small groups decomposes in time
+    about linear in its length.
     """
     w = mobility(mech)
     topo = topology(mech)
@@ -577,8 +581,8 @@ def _is_group(
     k = len(subset)
     if 2 * len(counted) != 3 * k:
         return False, None
-    if all(p.kind == "P" for p in counted):
-        return False, None  # a chain of only sliding pairs cannot fix its rotation
+    if _sliding_loop(counted, known) is not None:
+        return False, None  # rotations tied twice: the count 3k = 2p is wrong
     links = sorted(subset, key=index.rank.__getitem__)
     bit = {name: 1 << i for i, name in enumerate(links)}
     masks = [sum(bit[x] for x in p.links if x in bit) for p in counted]
@@ -598,6 +602,52 @@ def _is_group(
         if size < k and 2 * len(inside) >= 3 * size:
             minimal = False  # a proper part without mobility
     return minimal, None
+
+
+def _sliding_loop(pairs: list[Pair], known: set[str]) -> list[Pair] | None:
+    """Return prismatic ``pairs`` that close a loop, known links taken as one.
+
+    A prismatic pair ties the rotations of its two links. Around a loop of them
+    one tie repeats the others, and between known links (whose rotations are given)
+    every tie repeats: the equations the count 3k = 2p relies on are dependent. The
+    loop's pairs come in order around it, the pair that closes it last.
+    """
+    tree: dict[str, list[tuple[str, Pair]]] = {}
+    for pair in pairs:
+        if pair.kind != "P":
+            continue
+        a, b = (GROUND if x in known else x for x in pair.links)
+        path = _path(tree, a, b)
+        if path is not None:
+            return [*path, pair]
+        tree.setdefault(a, []).append((b, pair))
+        tree.setdefault(b, []).append((a, pair))
+    return None
+
+
+def _path(
+    tree: dict[str, list[tuple[str, Pair]]], start: str, end: str
+) -> list[Pair] | None:
+    """Return the pairs of the forest ``tree`` on the way from start to end, or None."""
+    if start == end:
+        return []
+    way: dict[str, tuple[str, Pair] | None] = {start: None}
+    todo = [start]
+    while todo:
+        node = todo.pop()
+        for other, pair in tree.get(node, ()):
+            if other not in way:
+                way[other] = (node, pair)
+                todo.append(other)
+    if end not in way:
+        return None
+    path = []
+    step = way[end]
+    while step is not None:
+        node, pair = step
+        path.append(pair)
+        step = way[node]
+    return path[::-1]
 
 
 @functools.cache
@@ -622,6 +672,10 @@ def _leftover(
             f"{head}, because {parallel}; expected one joint between two links (or "
             "one link in place of two welded ones)"
         )
+    pairs = [p for p in index.pairs if unknown.intersection(p.links)]
+    loop = _sliding_loop(pairs, known)
+    if loop is not None:
+        return f"{head}, because {_sliding_text(loop, known)}"
     stuck = [r for r in rigid if unknown.issuperset(r.links)]
     if stuck:
         r = min(stuck, key=lambda r: (len(r.links), [index.rank[x] for x in r.links]))
@@ -631,7 +685,6 @@ def _leftover(
             f"{listing(_public(r.links))} rigid (k = {k}, p = {p}: 2p >= 3(k - 1)); "
             "expected one link in their place, or fewer joints between them"
         )
-    pairs = [p for p in index.pairs if unknown.intersection(p.links)]
     if len(left) > MAX_GROUP_LINKS and 3 * len(left) == 2 * len(pairs):
         # the links left over may be one group too large for the search
         return (
@@ -642,6 +695,26 @@ def _leftover(
             f"not solve; expected groups of at most {MAX_GROUP_LINKS} links"
         )
     return f"{head}; expected a chain made of Assur groups"
+
+
+def _sliding_text(loop: list[Pair], known: set[str]) -> str:
+    """Return what a loop of sliding pairs alone does, and what was expected."""
+    names = listing(_public(tuple(p.name for p in loop)))
+    ends = sorted({x for p in loop for x in p.links if x in known})
+    through = f" through the {_links_text(ends, 'known ')}" if ends else ""
+    links = tuple(dict.fromkeys(x for p in loop for x in p.links if x not in known))
+    return (
+        f"joints {names} close a loop of sliding pairs alone{through}: each ties "
+        "the rotations of its two links, so the loop ties those of "
+        f"{_links_text(links)} once too often and W = 3n - 2p5 - p4 miscounts; "
+        "expected a revolute pair in place of one of them"
+    )
+
+
+def _links_text(names: Sequence[str], adjective: str = "") -> str:
+    """Return "link a" or "links a, b" (as a reader sees them)."""
+    noun = "link" if len(names) == 1 else "links"
+    return f"{adjective}{noun} {listing(_public(tuple(names)))}"
 
 
 def _parallel_text(index: _Index, unknown: set[str]) -> str | None:

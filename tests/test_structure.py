@@ -19,9 +19,10 @@ import pytest
 import assur
 from assur import DecompositionError, Driver, Joint, Link, Mechanism, _structure
 
-from .conftest import EXAMPLES
+from .conftest import DATA, EXAMPLES
 
 KINDS = {"R": "revolute", "P": "prismatic", "S": "slot"}
+STRUCTURE_DATA = DATA / "structure"
 
 
 def build(joints: list[tuple], drivers: list[str], name: str = "") -> Mechanism:
@@ -643,6 +644,41 @@ def test_open_chain_with_a_sliding_dyad_is_no_group():
     assert assur.mobility(mech) == 1
     with pytest.raises(DecompositionError, match=r"^links a, b, c, d are left over"):
         assur.structure(mech)
+
+
+@pytest.mark.parametrize(
+    ("name", "through"),
+    [("sliding_loop", "link ground"), ("sliding_lock", "links crank, ground")],
+)
+def test_a_loop_of_sliding_pairs_alone_is_no_group(name, through):
+    # yg, xy, xz, zg slide in a loop through the frame (or from the frame to the
+    # crank): one rotation is tied twice, and d, x, y, z were a class III triad
+    match = (
+        r"^links d, x, y, z are left over: .* on the known links crank, ground, "
+        r"because joints yg, xy, xz, zg close a loop of sliding pairs alone through "
+        rf"the known {through}: each ties the rotations of its two links, so the "
+        r"loop ties those of links y, x, z once too often and W = 3n - 2p5 - p4 "
+        r"miscounts; expected a revolute pair in place of one of them$"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(assur.load(STRUCTURE_DATA / f"{name}.toml"))
+
+
+@pytest.mark.parametrize("sliding", ["F", "FG", "BFG", "DFG", "CDE", "BCDEFG"])
+def test_a_triad_with_sliding_pairs_and_no_loop_of_them_is_a_group(sliding):
+    # the sliding pairs of these triads close no loop: each is still a triad
+    joints = [
+        (j.name, "P", j.links, j.at, (1.0, 0.3))
+        if j.name in sliding
+        else (j.name, "R", j.links, j.at)
+        for j in six_bar().joints
+    ]
+    if sliding != "BCDEFG":
+        (g,) = assur.structure(build(joints, ["O2"])).groups
+        assert (g.kind, set(g.links)) == ("triad", {"rod", "plate", "left", "right"})
+    else:  # all six slide: the loops rod-plate-left-frame-crank and the like
+        with pytest.raises(DecompositionError, match=r"loop of sliding pairs alone"):
+            assur.structure(build(joints, ["O2"]))
 
 
 def test_open_path_of_four_links_is_never_described_as_a_group():
