@@ -610,13 +610,16 @@ def _sliding_loop(pairs: list[Pair], known: set[str]) -> list[Pair] | None:
     A prismatic pair ties the rotations of its two links. Around a loop of them
     one tie repeats the others, and between known links (whose rotations are given)
     every tie repeats: the equations the count 3k = 2p relies on are dependent. The
-    loop's pairs come in order around it, the pair that closes it last.
+    loop's pairs come in order around it, from a known link when it passes one, the
+    pair that closes it last.
     """
     tree: dict[str, list[tuple[str, Pair]]] = {}
     for pair in pairs:
         if pair.kind != "P":
             continue
         a, b = (GROUND if x in known else x for x in pair.links)
+        if b == GROUND:
+            a, b = b, a  # the loop then reads from a known link
         path = _path(tree, a, b)
         if path is not None:
             return [*path, pair]
@@ -703,6 +706,13 @@ def _sliding_text(loop: list[Pair], known: set[str]) -> str:
     ends = sorted({x for p in loop for x in p.links if x in known})
     through = f" through the {_links_text(ends, 'known ')}" if ends else ""
     links = tuple(dict.fromkeys(x for p in loop for x in p.links if x not in known))
+    if len(loop) == 3 and len(links) == 2:
+        return (
+            f"joints {names} are three sliding pairs, which cannot fix the rotation "
+            f"of the dyad {listing(_public(links))} (they tie it twice over, to the "
+            f"{_links_text(ends, 'known ')}, and leave it free to slide); expected a "
+            "revolute pair in place of one of them"
+        )
     return (
         f"joints {names} close a loop of sliding pairs alone{through}: each ties "
         "the rotations of its two links, so the loop ties those of "
