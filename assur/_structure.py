@@ -669,7 +669,9 @@ def _leftover(
         "(3k = 2p, every part movable) on the known links "
         f"{listing(sorted(known))}"
     )
-    parallel = _parallel_text(index, unknown)
+    # two joints between known links (the frame and an input link) do not stop a
+    # group by themselves, but the joint entered twice is missing from the chain
+    parallel = _parallel_text(index, unknown) or _parallel_text(index, set(index.links))
     if parallel is not None:
         return (
             f"{head}, because {parallel}; expected one joint between two links (or "
@@ -743,7 +745,7 @@ def _parallel_text(index: _Index, unknown: set[str]) -> str | None:
 
 
 def _parallel(index: _Index, unknown: set[str]) -> tuple[Pair, Pair] | None:
-    """Return the first two pairs between the same two links, one of them unknown."""
+    """Return the first two pairs between the same two links, one in ``unknown``."""
     for name in index.links:
         if name not in unknown:
             continue

@@ -599,6 +599,20 @@ def test_four_bar_with_its_ground_pivot_relinked(links, match):
         assur.structure(relinked("four_bar.toml", "O4", links))
 
 
+def test_four_bar_with_its_rocker_s_pivot_on_the_crank():
+    # O4 typed as ["ground", "crank"]: the frame and the crank, both known, were
+    # not looked at, and the rocker was left over without a reason
+    match = (
+        r"^links coupler, rocker are left over: .* on the known links crank, ground, "
+        r"because joints O2 and O4 both join ground and crank: two revolute pairs at "
+        r"two points weld the links into one rigid body; expected one joint between "
+        r"two links \(or one link in place of two welded ones\)$"
+    )
+    for links in [("ground", "crank"), ("crank", "ground")]:
+        with pytest.raises(DecompositionError, match=match):
+            assur.structure(relinked("four_bar.toml", "O4", links))
+
+
 def test_four_bar_with_its_rocker_pinned_to_the_crank():
     # coupler and rocker hang on the crank alone: still a dyad, rigid with the crank
     s = assur.structure(relinked("four_bar.toml", "O4", ("crank", "rocker")))
