@@ -337,8 +337,10 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     Raises
     ------
     DecompositionError
-        When the mobility differs from the number of drivers, or links are left
-        over (the message then names two joints between the same two links, a
+        When the mobility differs from the number of drivers (the message then
+        names two joints between the same two links, a part not joined to the frame
+        or a link on one joint, when there is one), or links are left over (the
+        message then names two joints between the same two links, a
         loop of sliding pairs alone or a rigid part among the links left over, when
         there is one).
 
@@ -362,17 +364,11 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     if w != len(mech.drivers):
         n = len(mech.links)
         p4 = sum(j.kind == "slot" for j in mech.joints)
-        why = _miscount(topo, w, mech)
+        why, expected = _miscount(topo, w, mech)
         msg = (
             f"drivers: the mechanism has W = 3*{n} - 2*{len(mech.joints) - p4} - {p4}"
             f" = {counted(w, 'degree', 'degrees')} of freedom but "
-            f"{counted(len(mech.drivers), 'driver')}{why}; "
-            + (
-                "expected links that can move (W >= 1), one driver per degree of "
-                "freedom"
-                if why.startswith(" (none")
-                else "expected one driver per degree of freedom"
-            )
+            f"{counted(len(mech.drivers), 'driver')}{why}; expected {expected}"
         )
         raise DecompositionError(msg)
     by_name = {p.name: p for p in topo.pairs}
@@ -394,21 +390,73 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     return tuple(drivers), groups, topo
 
 
-def _miscount(topo: Topology, w: int, mech: Mechanism) -> str:
-    """Return why the degrees of freedom may differ from the drivers (or nothing).
+PER_FREEDOM = "one driver per degree of freedom"
 
-    A joint counted twice is named; a count of none or fewer is said to be one.
+
+def _miscount(topo: Topology, w: int, mech: Mechanism) -> tuple[str, str]:
+    """Return why the degrees of freedom may differ from the drivers; what was expected.
+
+    A joint counted twice is named; a count of none or fewer is said to be one. A
+    count above the drivers names a part not joined to the frame, or a link that
+    hangs on one joint: their freedom is one no driver can take (a driver acts
+    between the frame and its input link).
     """
     index = _index(topo)
     parallel = _parallel_text(index, set(index.links))
     if parallel is not None:
-        return f", as {parallel}"
+        return f", as {parallel}", PER_FREEDOM
     if w <= 0:
-        return (
+        why = (
             " (none: a rigid chain, or a link repeating a constraint, such as a "
             "third parallel crank of a parallelogram, which the count cannot see)"
         )
-    return ""
+        return why, f"links that can move (W >= 1), {PER_FREEDOM}"
+    if w > len(mech.drivers):
+        loose = _loose_text(index, mech)
+        if loose is not None:
+            return loose
+    return "", PER_FREEDOM
+
+
+def _loose_text(index: _Index, mech: Mechanism) -> tuple[str, str] | None:
+    """Return the links not joined to the frame, or else those on one joint alone."""
+    joined = {GROUND}
+    todo = [GROUND]
+    while todo:
+        for other in index.neighbours[todo.pop()]:
+            if other not in joined:
+                joined.add(other)
+                todo.append(other)
+    apart = [x for x in index.links if x not in joined]
+    if apart:
+        return (
+            f", as {_links_text(apart)} {'is' if len(apart) == 1 else 'are'} joined "
+            "to the frame by no chain of joints",
+            "every link joined to the frame through joints",
+        )
+    drivers = {d.joint for d in mech.drivers}
+    driven = {x for p in index.pairs if p.name in drivers for x in p.links}
+    # a link on one joint to the frame is a crank that a driver may take: not named
+    hanging = [
+        (x, index.pairs[index.incident[x][0]])
+        for x in index.links
+        if len(index.incident[x]) == 1 and x not in driven
+    ]
+    hanging = [(x, p) for x, p in hanging if GROUND not in p.links]
+    if not hanging:
+        return None
+    expected = "every link held by two joints at least (an input link by its driver)"
+    if len(hanging) == 1:
+        ((link, pair),) = hanging
+        moves = "turns about it" if pair.kind == "R" else "slides along it"
+        why = (
+            f", as {_links_text([link])} hangs on joint {public_name(pair.name)} "
+            f"alone and {moves} freely"
+        )
+        return why, expected
+    links = _links_text([x for x, _ in hanging])
+    pairs = listing(_public(tuple(p.name for _, p in hanging)))
+    return f", as {links} hang on one joint each ({pairs}) and move freely", expected
 
 
 _DECOMPOSED: dict[Any, tuple[Group, ...]] = {}

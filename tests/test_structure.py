@@ -492,6 +492,57 @@ def test_mobility_differs_from_drivers():
         assur.structure(none)
 
 
+def with_links(mech: Mechanism, links: list[str], joints: list[tuple]) -> Mechanism:
+    """``mech`` with more links and joints ``(name, kind letter, (link, link), at)``."""
+    added = tuple(
+        Joint(j[0], KINDS[j[1]], j[2], j[3], (1.0, 0.0) if j[1] == "P" else None)
+        for j in joints
+    )
+    return dataclasses.replace(
+        mech,
+        links=(*mech.links, *(Link(x) for x in links)),
+        joints=(*mech.joints, *added),
+    )
+
+
+@pytest.mark.parametrize(
+    ("kind", "moves"), [("R", "turns about"), ("P", "slides along")]
+)
+def test_a_link_on_one_joint_is_named_when_the_count_goes_wrong(kind, moves):
+    # W = 2 with one driver: "expected one driver per degree of freedom" could not be
+    # followed, since a driver acts between the frame and its input link
+    mech = with_links(
+        assur.catalog.four_bar(),
+        ["flag"],
+        [("E", kind, ("coupler", "flag"), (0.1, 0.1))],
+    )
+    with pytest.raises(DecompositionError) as caught:
+        assur.structure(mech)
+    assert str(caught.value) == (
+        "drivers: the mechanism has W = 3*4 - 2*5 - 0 = 2 degrees of freedom but 1 "
+        f"driver, as link flag hangs on joint E alone and {moves} it freely; "
+        "expected every link held by two joints at least (an input link by its "
+        "driver)"
+    )
+
+
+def test_a_part_not_joined_to_the_frame_is_named_when_the_count_goes_wrong():
+    # a triangle p, q, r joined to nothing: W = 1 + 3 with one driver
+    triangle = [
+        ("pq", "R", ("p", "q"), (1.0, 0.0)),
+        ("qr", "R", ("q", "r"), (1.0, 1.0)),
+        ("rp", "R", ("r", "p"), (0.0, 1.0)),
+    ]
+    mech = with_links(assur.catalog.four_bar(), ["p", "q", "r"], triangle)
+    with pytest.raises(DecompositionError) as caught:
+        assur.structure(mech)
+    assert str(caught.value) == (
+        "drivers: the mechanism has W = 3*6 - 2*7 - 0 = 4 degrees of freedom but 1 "
+        "driver, as links p, q, r are joined to the frame by no chain of joints; "
+        "expected every link joined to the frame through joints"
+    )
+
+
 def test_leftover_links_are_named():
     # link 2 is pinned to the frame and to the crank, link 3 to 2 and to the frame
     # (over-constrained), links 4 and 5 dangle from the crank: W = 3*5 - 2*7 = 1 but
