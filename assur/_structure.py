@@ -738,6 +738,9 @@ def _leftover(
             f"{listing(_public(r.links))} rigid (k = {k}, p = {p}: 2p >= 3(k - 1)); "
             "expected one link in their place, or fewer joints between them"
         )
+    misheld = _misheld_text(index, left, known)
+    if misheld is not None:
+        return f"{head}, because {misheld}"
     if len(left) > MAX_GROUP_LINKS and 3 * len(left) == 2 * len(pairs):
         # the links left over may be one group too large for the search
         return (
@@ -748,6 +751,37 @@ def _leftover(
             f"not solve; expected groups of at most {MAX_GROUP_LINKS} links"
         )
     return f"{head}; expected a chain made of Assur groups"
+
+
+def _misheld_text(index: _Index, left: tuple[str, ...], known: set[str]) -> str | None:
+    """Return the link left over held to known links twice, the one on one joint.
+
+    Neither can be in an Assur group: the first is a part without mobility on the
+    known links (2p >= 3k with k = 1), and without the second the rest of the group
+    would have 3k' - 2p' = -1.
+    """
+    held = []
+    for name in left:
+        pairs = [index.pairs[i] for i in index.incident[name]]
+        fixed = [p for p in pairs if all(x == name or x in known for x in p.links)]
+        if len(fixed) >= 2:
+            names = listing(_public(tuple(p.name for p in fixed)))
+            held.append(
+                f"{_links_text([name])} is held to the known links by joints "
+                f"{names}, which fix it"
+            )
+            break
+    for name in left:
+        if len(index.incident[name]) == 1:
+            pair = public_name(index.pairs[index.incident[name][0]].name)
+            held.append(f"{_links_text([name])} hangs on joint {pair} alone")
+            break
+    if not held:
+        return None
+    return (
+        f"{', and '.join(held)}; expected every link of a group held by two joints "
+        "at least, at most one of them to a known link"
+    )
 
 
 def _sliding_text(loop: list[Pair], known: set[str]) -> str:

@@ -399,7 +399,9 @@ def test_a_group_spoiled_by_the_group_before_it():
     )
     assert assur.mobility(mech) == 1
     match = (
-        r"^links x, y, w, v are left over: .* on the known links crank, ground, p, q;"
+        r"^links x, y, w, v are left over: .* on the known links crank, ground, p, "
+        r"q, because link x is held to the known links by joints E, H, which fix it, "
+        r"and link v hangs on joint L alone;"
     )
     with pytest.raises(DecompositionError, match=match):
         assur.structure(mech)
@@ -562,8 +564,10 @@ def test_leftover_links_are_named():
     assert assur.mobility(mech) == 1
     match = (
         r"^links 2, 3, 4, 5 are left over: they form no Assur group \(3k = 2p, every "
-        r"part movable\) on the known links 1, ground; expected a chain made of "
-        r"Assur groups$"
+        r"part movable\) on the known links 1, ground, because link 2 is held to the "
+        r"known links by joints g1, j12, which fix it, and link 5 hangs on joint j45 "
+        r"alone; expected every link of a group held by two joints at least, at most "
+        r"one of them to a known link$"
     )
     with pytest.raises(DecompositionError, match=match):
         assur.structure(mech)
@@ -904,6 +908,20 @@ def test_a_group_larger_than_the_search_is_named_so():
     (group,) = found.groups
     assert (group.group_class, len(group.links)) == (8, 8)
     assert group.label == "class VIII (d0, d1, d2, d3, d4, d5, d6, d7)"
+
+
+def test_links_held_twice_or_on_one_joint_are_no_larger_group():
+    # ten links left over with 3k = 2p were said to "may form one larger group"; u0
+    # is held to the crank and the frame (B0, X) and v4 hangs on C4: no group at all
+    match = (
+        r"^links u0, v0, u1, v1, u2, v2, \.\.\. \(10 in all\) are left over: .* on the "
+        r"known links c0, ground, because link u0 is held to the known links by "
+        r"joints B0, X, which fix it, and link v4 hangs on joint C4 alone; expected "
+        r"every link of a group held by two joints at least, at most one of them to "
+        r"a known link$"
+    )
+    with pytest.raises(DecompositionError, match=match):
+        assur.structure(assur.load(STRUCTURE_DATA / "overfixed_chain.toml"))
 
 
 def test_a_pin_entered_twice_is_named_when_the_count_goes_wrong():
