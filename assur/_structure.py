@@ -474,6 +474,8 @@ class _Index:
     rank: dict[str, int]
     incident: dict[str, tuple[int, ...]]
     neighbours: dict[str, frozenset[str]]
+    ends: dict[str, tuple[str, ...]]
+    """The link at the other end of each pair on a link (one entry a pair)."""
 
 
 def _index(topo: Topology) -> _Index:
@@ -481,18 +483,22 @@ def _index(topo: Topology) -> _Index:
     incident: dict[str, list[int]] = {GROUND: []}
     incident.update({name: [] for name in topo.links})
     neighbours: dict[str, set[str]] = {name: set() for name in incident}
+    ends: dict[str, list[str]] = {name: [] for name in incident}
     for i, pair in enumerate(topo.pairs):
         a, b = pair.links
         incident[a].append(i)
         incident[b].append(i)
         neighbours[a].add(b)
         neighbours[b].add(a)
+        ends[a].append(b)
+        ends[b].append(a)
     return _Index(
         topo.pairs,
         topo.links,
         {name: i for i, name in enumerate(topo.links)},
         {name: tuple(v) for name, v in incident.items()},
         {name: frozenset(v) for name, v in neighbours.items()},
+        {name: tuple(v) for name, v in ends.items()},
     )
 
 
@@ -583,15 +589,18 @@ def _connected(
 
     Given the ``known`` links, only those that may be Assur groups on them: a set
     is not grown past a part with no mobility on the known links (2p >= 3k), which
-    would be a proper part of every larger set. Without that, a link held twice
+    would be a proper part of every larger set, nor past one that cannot reach
+    3k = 2p in ``k`` links (see `_may_close`). Without that, a link held twice
     (a pin doubled) next to a link with many neighbours made the search of a
-    failing decomposition grow every set around it, for seconds to minutes.
+    failing decomposition grow every set around it, for seconds to minutes; and a
+    hub of sixteen spokes, one of them pinned twice, took six seconds.
     """
     frontier = {frozenset([seed]) for seed in seeds}
+    trees: dict[str, bool] = {}
     for _ in range(k - 1):
         if known is not None:
             frontier = {
-                s for s in frontier if 2 * len(_counted(index, s, known)) < 3 * len(s)
+                s for s in frontier if _may_close(index, s, unknown, known, k, trees)
             }
         grown = set()
         for subset in frontier:
@@ -601,6 +610,82 @@ def _connected(
                         grown.add(subset | {other})
         frontier = grown
     return frontier
+
+
+def _may_close(
+    index: _Index,
+    subset: frozenset[str],
+    unknown: set[str],
+    known: set[str],
+    k: int,
+    trees: dict[str, bool],
+) -> bool:
+    """Return whether ``subset`` may grow into a set of ``k`` links with 3k = 2p.
+
+    The subset S must keep a mobility m = 3s - 2p_S > 0 (else it is a part without
+    mobility of every larger set). Adding links R gives a set of mobility at least
+    m - sum(2a + b - 3) over R, for a link with a pairs to S and the known links and
+    b pairs to other unknown links (a pair inside R counts half at each end), so
+    the k - s best such gains must reach m; R lies within k - s joints of S. In a
+    tree of unknown links (see `_tree`) R holds no link with two pairs to known
+    links either: alone it is a part without mobility, so a set holding it is no
+    group, and a tree holds no rigid part that such a set could name when the
+    search fails.
+    """
+    mobile = 3 * len(subset) - 2 * len(_counted(index, subset, known))
+    if mobile <= 0:
+        return False
+    missing = k - len(subset)
+    gains = []
+    free = []  # the gains of links with fewer than two pairs to known links
+    seen = set(subset)
+    ring: set[str] = set(subset)
+    for _ in range(missing):
+        ring = {
+            x
+            for name in ring
+            for x in index.neighbours[name]
+            if x in unknown and x not in seen
+        }
+        seen |= ring
+        for name in ring:
+            ends = index.ends[name]
+            fixed = sum(x in known for x in ends)
+            held = fixed + sum(x in subset for x in ends)
+            gains.append(2 * held + (len(ends) - held) - 3)
+            if fixed < 2:
+                free.append(gains[-1])
+    if not _reaches(gains, missing, mobile):
+        return False
+    return _reaches(free, missing, mobile) or not _tree(index, unknown, subset, trees)
+
+
+def _reaches(gains: list[int], count: int, mobile: int) -> bool:
+    """Return whether ``count`` of ``gains`` may add up to ``mobile`` or more."""
+    return len(gains) >= count and sum(sorted(gains, reverse=True)[:count]) >= mobile
+
+
+def _tree(
+    index: _Index, unknown: set[str], subset: frozenset[str], trees: dict[str, bool]
+) -> bool:
+    """Return whether the unknown links joined to ``subset`` form a tree (no loop).
+
+    A rigid part has as many pairs as links at least, hence a loop. ``trees`` keeps
+    the answer for every link of a part already examined.
+    """
+    first = next(iter(subset))
+    if first not in trees:
+        part = {first}
+        todo = [first]
+        while todo:
+            for other in index.neighbours[todo.pop()]:
+                if other in unknown and other not in part:
+                    part.add(other)
+                    todo.append(other)
+        pairs = {i for name in part for i in index.incident[name]}
+        inside = sum(all(x in part for x in index.pairs[i].links) for i in pairs)
+        trees.update(dict.fromkeys(part, inside == len(part) - 1))
+    return trees[first]
 
 
 def _counted(index: _Index, links: frozenset[str], known: set[str]) -> list[Pair]:
