@@ -267,3 +267,25 @@ def test_a_dollar_in_the_name_is_bare_in_the_page_s_title():
     mech = dataclasses.replace(assur.catalog.four_bar(), name="$x$ bar")
     page = explain(mech, 45.0).to_html()
     assert "<title>$x$ bar: the analysis explained</title>" in page
+
+
+CRANK_ONLY = """name = "crank"
+[links.crank]
+[joints.A]
+kind = "revolute"
+links = ["ground", "crank"]
+at = [0.0, 0.0]
+[[drivers]]
+joint = "A"
+omega = 1.0
+"""
+
+
+def test_the_structure_s_counts_agree_with_their_nouns() -> None:
+    # "$p_4 = 1$ higher pairs" and "$n = 1$ moving links"
+    note = str(explain(assur.load(EXAMPLES / "slot_mechanism.toml"), 30.0))
+    assert "$p_5 = 5$ lower pairs and $p_4 = 1$ higher pair." in note
+    crank = str(explain(assur.loads(CRANK_ONLY), 30.0))
+    assert "$n = 1$ moving link, $p_5 = 1$ lower pair and $p_4 = 0$ higher pairs." in (
+        crank
+    )

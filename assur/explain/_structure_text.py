@@ -20,15 +20,21 @@ def _kind(kind: str) -> str:
     return {"triad": "triad", "general": "group"}.get(kind, f"dyad {kind}")
 
 
+def _plural(count: int, noun: str) -> str:
+    """Return ``noun`` as it follows the number ``count`` (set apart in TeX)."""
+    return noun if count == 1 else f"{noun}s"
+
+
 def structure_blocks(s: Structure) -> list[Block]:
     """Return the structural analysis: W, the groups in order, why each is one."""
     n, p5, p4 = s.links, s.lower_pairs, s.higher_pairs
     blocks: list[Block] = [
         Heading(2, "1. Structure"),
         Para(
-            f"The mechanism has $n = {n}$ moving links, $p_5 = {p5}$ lower pairs and "
-            f"$p_4 = {p4}$ higher pairs. Chebyshev-Gruebler's formula gives its "
-            "degrees of freedom:"
+            f"The mechanism has $n = {n}$ moving {_plural(n, 'link')}, $p_5 = {p5}$ "
+            f"lower {_plural(p5, 'pair')} and $p_4 = {p4}$ higher "
+            f"{_plural(p4, 'pair')}. Chebyshev-Gruebler's formula gives its degrees "
+            "of freedom:"
         ),
         Display(
             (f"W = 3n - 2p_5 - p_4 = 3 \\cdot {n} - 2 \\cdot {p5} - {p4} = {s.dof}",)
