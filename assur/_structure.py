@@ -134,7 +134,7 @@ class Structure:
 
     @property
     def mechanism_class(self) -> int:
-        """Class of the mechanism: the highest class of its groups."""
+        """Class of the mechanism: the highest class of its groups (I without any)."""
         return max((g.group_class for g in self.groups), default=1)
 
     @property

@@ -34,6 +34,14 @@ def _why(g: Group) -> str:
     )
 
 
+def _class_reason(s: Structure) -> str:
+    """Return where the class of the mechanism comes from."""
+    if s.groups:
+        return "the highest class of its groups"
+    inputs = "its input link" if len(s.drivers) == 1 else "its input links"
+    return f"the frame and {inputs} alone, no Assur group"
+
+
 def structure_report(s: Structure) -> str:
     """Return the teaching report of a structural analysis."""
     n, p5, p4 = s.links, s.lower_pairs, s.higher_pairs
@@ -83,8 +91,7 @@ def structure_report(s: Structure) -> str:
     lines += [
         "",
         f"Structure formula: {s.formula}",
-        f"Class of the mechanism: {roman(s.mechanism_class)} (the highest class "
-        "of its groups)",
+        f"Class of the mechanism: {roman(s.mechanism_class)} ({_class_reason(s)})",
     ]
     lines.append(
         "Kinematics runs through the groups in this order; the force analysis in "

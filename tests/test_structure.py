@@ -832,6 +832,16 @@ def test_report_of_a_general_group():
     assert WHY.format(k=4, p=6, n=12) in report
 
 
+def test_report_of_a_mechanism_without_groups():
+    # a crank alone was said to be of class I as "the highest class of its groups"
+    s = assur.structure(build([("A", "R", ("ground", "crank"), (0.0, 0.0))], ["A"]))
+    assert (s.groups, s.mechanism_class) == ((), 1)
+    line = (
+        "Class of the mechanism: I (the frame and its input link alone, no Assur group)"
+    )
+    assert line in str(s)
+
+
 def test_to_dict_is_json():
     s = assur.structure(assur.load(EXAMPLES / "whitworth.toml"))
     data = json.loads(json.dumps(s.to_dict()))
