@@ -11,8 +11,10 @@ and chains that are no minimal Assur groups).
 from __future__ import annotations
 
 import dataclasses
+import importlib
 import json
 import math
+import re
 
 import pytest
 
@@ -20,6 +22,8 @@ import assur
 from assur import DecompositionError, Driver, Joint, Link, Mechanism, _structure
 
 from .conftest import DATA, EXAMPLES
+
+DOCS = EXAMPLES.parent / "docs"
 
 KINDS = {"R": "revolute", "P": "prismatic", "S": "slot"}
 STRUCTURE_DATA = DATA / "structure"
@@ -854,6 +858,24 @@ def test_to_dict_is_json():
     assert data["groups"][0]["order"] == 2
     assert data["drivers"][0]["internal_pairs"] == ["O2"]
     assert set(data["groups"][1]["attached_to"]) == {"lever", "ground"}
+
+
+def test_the_docs_state_the_search_as_the_code_does():
+    # cli.rst left out "general" (class IV and six- to eight-link groups in the
+    # JSON); concepts.rst pointed at assur.structure.structure, which no module
+    # holds, and stated the test of a group as 2p_s <= 3s for every subset
+    cli = (DOCS / "cli.rst").read_text("utf-8")
+    for kind in (*DYADS, "triad", "general"):
+        assert f"``{kind}``" in cli, kind
+    concepts = (DOCS / "concepts.rst").read_text("utf-8")
+    targets = re.findall(r":func:`[^`<]*<([^>]+)>`", concepts)
+    assert targets
+    for target in targets:
+        module, _, name = target.rpartition(".")
+        assert hasattr(importlib.import_module(module), name), target
+    criterion = " ".join(concepts.split())
+    for rule in ("2p_s < 3s", "2q_s < 3(s - 1)", "prismatic pairs close no loop"):
+        assert rule in criterion, rule
 
 
 def test_structure_does_not_change_the_mechanism():
