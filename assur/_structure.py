@@ -340,9 +340,9 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
         When the mobility differs from the number of drivers (the message then
         names two joints between the same two links, a part not joined to the frame
         or a link on one joint, when there is one), or links are left over (the
-        message then names two joints between the same two links, a
-        loop of sliding pairs alone or a rigid part among the links left over, when
-        there is one).
+        message then names two joints between the same two links, a loop of sliding
+        pairs alone, a rigid part, or a link held twice by known links or on one
+        joint, when there is one).
 
     Notes
     -----
