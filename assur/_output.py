@@ -38,8 +38,14 @@ __all__ = [
 
 NAME_KEPT = 80
 """Most characters of the target's name kept in a temporary name (names are short)."""
-IN_PLACE = ("/dev/", "/proc/")
-"""Folders whose entries are written in place (``/dev/stdout`` is not to replace)."""
+PROCESS_FILES = "/proc/"
+"""The folder whose entries name a process's open files (``/dev/stdout`` leads there).
+
+A path through it is written in place: what it leads to is the process's stream, not
+a file to replace, whatever that stream is (a pipe, a terminal, a shell's file).
+"""
+LINKS_FOLLOWED = 40
+"""Most symbolic links followed in a path, as the system's own limit (``ELOOP``)."""
 
 
 def path_text(path: Any) -> str:
@@ -274,9 +280,12 @@ def _not_a_folder(path: str | os.PathLike[str]) -> None:
 
 
 def _target(path: Path) -> tuple[Path, bool]:
-    """Return the file to replace (links followed) and whether to write in place."""
-    if str(path).startswith(IN_PLACE):
-        return path, True
+    """Return the file to replace (links followed) and whether to write in place.
+
+    Only a regular file (or a new one) is replaced; a device, a FIFO or a socket
+    is written in place, where it lies (``/dev/shm`` is a folder of regular files),
+    and so is a process's open file named through ``/proc`` (``/dev/stdout``).
+    """
     try:
         mode = os.stat(path).st_mode
     except FileNotFoundError:
@@ -291,8 +300,34 @@ def _target(path: Path) -> tuple[Path, bool]:
         raise OutputError(msg)
     if mode is not None and not stat.S_ISREG(mode):
         return path, True
-    real = path.__class__(os.path.realpath(path))
-    return real, str(real).startswith(IN_PLACE)
+    if _through_process_files(path):
+        return path, True
+    return path.__class__(os.path.realpath(path)), False
+
+
+def _through_process_files(path: Path) -> bool:
+    """Whether ``path``, its links followed one by one, passes through ``/proc``.
+
+    ``os.path.realpath`` cannot tell: ``/dev/stdout`` links to ``/proc/self/fd/1``,
+    which reads as the name of the file the shell opened (``> out.csv``).
+    """
+    pending = os.path.abspath(path)
+    for _ in range(LINKS_FOLLOWED):
+        if (pending + "/").startswith(PROCESS_FILES):
+            return True
+        parts = pending.split("/")
+        for end in range(2, len(parts) + 1):
+            prefix = "/".join(parts[:end])
+            try:
+                link = os.readlink(prefix)
+            except OSError:  # not a link, or not there
+                continue
+            folder = os.path.dirname(prefix)
+            pending = os.path.normpath(os.path.join(folder, link, *parts[end:]))
+            break
+        else:
+            return False
+    return False
 
 
 def _reserve(target: Path) -> Path:

@@ -9,9 +9,11 @@ from __future__ import annotations
 
 import errno
 import os
+import shutil
 import stat
 import subprocess
 import sys
+import tempfile
 import threading
 from pathlib import Path
 
@@ -214,6 +216,60 @@ def test_a_fifo_is_written_in_place(tmp_path: Path):
     assert received == [b"through the pipe" * 10_000]
     assert stat.S_ISFIFO(os.stat(fifo).st_mode)
     assert names(tmp_path) == {"pipe"}
+
+
+@pytest.fixture
+def shm_old():
+    """An old regular file in /dev/shm (a tmpfs under /dev), removed afterwards."""
+    shm = Path("/dev/shm")
+    if not shm.is_dir() or not os.access(shm, os.W_OK):
+        pytest.skip("no writable /dev/shm")
+    folder = Path(tempfile.mkdtemp(prefix="assur-test.", dir=shm))
+    path = folder / "table.csv"
+    path.write_text(OLD, encoding="utf-8")
+    yield path
+    shutil.rmtree(folder, ignore_errors=True)
+
+
+def test_a_regular_file_under_dev_is_replaced_not_written_in_place(
+    monkeypatch, shm_old: Path
+):
+    # /dev/shm holds regular files: a failed write kept nothing of the old one
+    fail_midway(monkeypatch, KeyboardInterrupt())
+    with pytest.raises(KeyboardInterrupt):
+        write_text(shm_old, "x" * 1000)
+    assert shm_old.read_text(encoding="utf-8") == OLD
+    assert names(shm_old.parent) == {"table.csv"}
+    monkeypatch.undo()
+    write_text(shm_old, "new\n")
+    assert shm_old.read_text(encoding="utf-8") == "new\n"
+    assert names(shm_old.parent) == {"table.csv"}
+
+
+def test_dev_stdout_on_a_shell_file_is_written_in_place(tmp_path: Path):
+    # /dev/stdout leads through /proc/self/fd/1 to the file the shell opened: it is
+    # the process's stream, written where it is, not a file to replace
+    if not Path("/dev/stdout").is_symlink():
+        pytest.skip("no /dev/stdout link")
+    out = tmp_path / "out.txt"
+    out.write_text("before\n", encoding="utf-8")
+    inode = out.stat().st_ino
+    code = (
+        "import sys; from assur._output import write_text; "
+        "write_text('/dev/stdout', 'written\\n')"
+    )
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    with open(out, "a", encoding="utf-8") as stream:
+        subprocess.run(
+            [sys.executable, "-c", code],
+            stdout=stream,
+            env=env,
+            check=True,
+            timeout=60,
+        )
+    assert out.read_text(encoding="utf-8") == "written\n"
+    assert out.stat().st_ino == inode
+    assert names(tmp_path) == {"out.txt"}
 
 
 def test_write_all_writes_again_what_a_short_write_left():
