@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._text import counted
 from assur._vec import Array, integer, real
 from assur.dynamics_model import checked_flywheel
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce
@@ -312,7 +313,7 @@ def _integrate(
         if _periodic(runs.crossings):
             break
     else:
-        _not_settled(runs, motor, model, turns)
+        _not_settled(runs, motor, model, turns, omega0)
     return runs
 
 
@@ -409,9 +410,15 @@ def _periodic(crossings: list[float]) -> bool:
     return ratio < 1 and change * ratio / (1 - ratio) <= limit
 
 
-def _not_settled(runs: _Runs, motor: Motor, model: Reduced, turns: int) -> None:
-    """Raise: the speed still changes after ``turns`` turns."""
-    last, before = runs.crossings[-1], runs.crossings[-2]
+def _not_settled(
+    runs: _Runs, motor: Motor, model: Reduced, turns: int, omega0: float
+) -> None:
+    """Raise: the speed still changes after ``turns`` turns.
+
+    The change is the last turn's; after a single turn, from the speed at the start.
+    """
+    speeds = [omega0, *runs.crossings]
+    last, before = speeds[-1], speeds[-2]
     change = abs(last - before) / abs(last)
     hint = ""
     if motor.no_load_speed is None:
@@ -428,7 +435,7 @@ def _not_settled(runs: _Runs, motor: Motor, model: Reduced, turns: int) -> None:
                 "a larger 'turns', --turns on the command line)"
             )
     msg = (
-        f"startup: the motion does not settle in {turns} turns (the speed, "
+        f"startup: the motion does not settle in {counted(turns, 'turn')} (the speed, "
         f"{last:.6g} rad/s, still changes by {100 * change:.3g} % a turn){hint}"
     )
     raise ModelError(msg)

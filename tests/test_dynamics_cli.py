@@ -361,6 +361,15 @@ def test_turns_of_the_startup(capsys, tmp_path: Path):
     assert line.endswith("--turns 5: expected --startup (or --startup-csv) with it")
 
 
+def test_one_turn_of_the_startup_is_one_error(capsys, tmp_path: Path):
+    # it was an IndexError's traceback and exit status 1
+    path = with_motor(tmp_path)
+    line = one_error(capsys, "dynamics", path, "--startup", "--turns", "1")
+    assert line.startswith(
+        f"assur: error: {path}: startup: the motion does not settle in 1 turn ("
+    )
+
+
 def test_an_estimate_below_zero_is_not_printed_as_one(capsys):
     # Wittenbauer's estimate was printed as -0.000133258 (-1.2e+10 %)
     delta = 0.6712204614  # just above the four-bar's own fluctuation

@@ -100,6 +100,20 @@ def test_a_motor_too_weak_to_start():
         assur.startup(mech)
 
 
+def test_one_turn_does_not_settle_and_says_so():
+    # a single turn has one speed at the reference pose: the change is from the
+    # start's (it was an IndexError, the last two turns' speeds looked up)
+    mech = example("slider_crank_exercise")
+    motor = Motor(120.0, 250.0)
+    with pytest.raises(assur.ModelError) as caught:
+        assur.startup(mech, 0.0, motor=motor, turns=1)
+    message = str(caught.value)
+    assert message.startswith("startup: the motion does not settle in 1 turn (")
+    assert "still changes by 100 % a turn" in message
+    with pytest.raises(assur.ModelError, match="does not settle in 2 turns"):
+        assur.startup(mech, 0.0, motor=motor, turns=2)
+
+
 def test_a_constant_torque_above_the_load_does_not_settle():
     mech, t = example("whitworth"), steady("whitworth")
     with pytest.raises(assur.ModelError) as caught:
