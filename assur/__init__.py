@@ -10,6 +10,12 @@ inertia loads, joint reactions and balancing torque.
 I(ground, crank) -> II(rod, slider)
 """
 
+# Ctrl-C while the modules below load (numpy, scipy) ends the command line quietly,
+# when this import starts it (python -m assur, the assur script)
+from assur import _start
+
+_start.guard()
+
 from assur import catalog
 from assur._structure import Group, Structure, graph, mobility, structure
 from assur.analysis import Table, forces, kinematics

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any, NoReturn
 
 import numpy as np
 
-from assur import _output
+from assur import _output, _start
 from assur._cli_common import (
     add_angle_option,
     check_distinct,
@@ -194,6 +194,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     the command quietly with status 0.
     """
     try:
+        _start.release()  # Ctrl-C is a KeyboardInterrupt again, caught below
         with _stoppable(), _closed_streams(), _lenient_streams():
             return _main(list(sys.argv[1:] if argv is None else argv))
     except (KeyboardInterrupt, _Stopped) as stop:

@@ -28,6 +28,8 @@ RANKS = {
     "assur._optional": 0,
     "assur._progress": 0,
     "assur._style": 0,
+    # the command line's Ctrl-C guard, run first by the package: the standard library
+    "assur._start": 0,
     "assur._tables": 0,
     "assur.model": 1,
     "assur._structure": 2,
