@@ -33,6 +33,8 @@ __all__ = [
 
 MAX_POSITIONS = 10_000_000
 """Most driver positions one command analyses (the library takes any number)."""
+EMPTY_NAME = "expected a {what} name, got an empty one"
+"""What an option that takes a path says of an empty value (``--csv=``)."""
 
 
 def parse_angles(spec: str, drivers: int = 1, option: str = "--angles") -> np.ndarray:
@@ -239,22 +241,59 @@ def check_distinct(outputs: list[tuple[str, Any]]) -> None:
         seen.append((option, path))
 
 
+def given(text: str) -> str:
+    """Return a file name as it is written (``-`` too); refuse an empty one.
+
+    An argparse type: ``--csv=`` (or ``--csv ''``) printed the table and wrote
+    nothing, and ``-o ''`` meant the current folder.
+
+    Raises
+    ------
+    argparse.ArgumentTypeError
+        For an empty name.
+    """
+    import argparse
+
+    if text == "":
+        raise argparse.ArgumentTypeError(EMPTY_NAME.format(what="file"))
+    return text
+
+
+def input_file(text: str) -> Path:
+    """Return the name of a file to read as a Path; refuse an empty one."""
+    return Path(given(text))
+
+
 def file_name(text: str) -> Path:
     """Return an output file's name as a Path (an argparse type).
 
     Raises
     ------
     argparse.ArgumentTypeError
-        For a name ending with a slash, a folder's (a Path would drop the slash).
+        For an empty name, or one ending with a slash, a folder's (a Path would
+        drop the slash).
     """
     import argparse
 
     from assur._output import folder_name
 
-    fault = folder_name(text)
+    fault = folder_name(given(text))
     if fault is not None:
         msg = f"{text}: {fault}; expected a file"
         raise argparse.ArgumentTypeError(msg)
+    return Path(text)
+
+
+def folder(text: str) -> Path:
+    """Return an output folder's name as a Path; refuse an empty one.
+
+    An empty name was the current folder, whose old pictures of the same names
+    were then replaced (and the stale ones of a set removed).
+    """
+    import argparse
+
+    if text == "":
+        raise argparse.ArgumentTypeError(EMPTY_NAME.format(what="folder"))
     return Path(text)
 
 

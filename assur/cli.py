@@ -29,6 +29,8 @@ from assur._cli_common import (
     check_distinct,
     check_not_input,
     file_name,
+    given,
+    input_file,
     is_stdout,
     load_mechanism,
     one_position,
@@ -108,7 +110,7 @@ def _parser() -> tuple[_Parser, list[str]]:
     parser.add_argument("-q", "--quiet", action="store_true", help=QUIET)
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     p = sub.add_parser("structure", help="degrees of freedom and Assur groups")
-    p.add_argument("file", type=Path)
+    p.add_argument("file", type=input_file)
     p.add_argument(
         "--json", action="store_true", help="print JSON instead of the report"
     )
@@ -118,7 +120,7 @@ def _parser() -> tuple[_Parser, list[str]]:
         ("forces", "inertia loads, joint reactions, balancing torque"),
     ):
         p = sub.add_parser(name, help=text)
-        p.add_argument("file", type=Path)
+        p.add_argument("file", type=input_file)
         p.add_argument(
             "--angles",
             metavar="START:STOP:STEP",
@@ -126,13 +128,17 @@ def _parser() -> tuple[_Parser, list[str]]:
             "one turn from the reference pose in steps of 1 deg",
         )
         p.add_argument(
-            "--csv", metavar="PATH", help="write the full table as CSV ('-': stdout)"
+            "--csv",
+            type=given,
+            metavar="PATH",
+            help="write the full table as CSV ('-': stdout)",
         )
         p.add_argument(
             "--json", action="store_true", help="print the full table as JSON"
         )
         p.add_argument(
             "--parquet",
+            type=given,
             metavar="PATH",
             help="write the full table as Parquet (needs pyarrow)",
         )
@@ -148,7 +154,7 @@ def _parser() -> tuple[_Parser, list[str]]:
         "every joint, balancing load, mean power, friction losses (JSON with --json)",
     )
     p = sub.add_parser("explain", help="the analysis at one position, step by step")
-    p.add_argument("file", type=Path)
+    p.add_argument("file", type=input_file)
     add_angle_option(p)
     p.add_argument(
         "-o",
@@ -161,7 +167,7 @@ def _parser() -> tuple[_Parser, list[str]]:
     p.add_argument(
         "--answers",
         metavar="TOML",
-        type=Path,
+        type=input_file,
         help="given answers to compare with (a table [answers] of quantity = value)",
     )
     from assur import dynamics_cli
@@ -247,11 +253,7 @@ def _stoppable() -> Iterator[None]:
 def _main(argv: list[str]) -> int:
     """Parse ``argv`` and run its command (see :func:`main`)."""
     parser, commands = _parser()
-    # a range may start below zero: keep "--angles -30:30:10" from reading as an option
-    for i in range(len(argv) - 1):
-        if argv[i] in ("--angles", "--angle") and argv[i + 1].startswith("-"):
-            argv[i : i + 2] = [f"{argv[i]}={argv[i + 1]}", ""]
-    argv = [a for a in argv if a != ""]
+    argv = _joined_ranges(argv)
     if argv and not argv[0].startswith("-") and argv[0] not in commands:
         hint = suggest(argv[0], commands)
         print(
@@ -283,6 +285,27 @@ def _main(argv: list[str]) -> int:
         )
         return 2
     return status
+
+
+def _joined_ranges(argv: list[str]) -> list[str]:
+    """Join ``--angles`` to a value that starts with a minus sign.
+
+    A range may start below zero: "--angles -30:30:10" must not read as two options.
+    Other arguments stay as they are, empty ones too (``--csv ''`` is refused by
+    name, not taken for an option without its value).
+    """
+    joined: list[str] = []
+    rest = iter(argv)
+    for argument in rest:
+        if argument in ("--angles", "--angle"):
+            value = next(rest, None)
+            if value is not None and value.startswith("-"):
+                joined.append(f"{argument}={value}")
+                continue
+            joined.extend([argument] if value is None else [argument, value])
+            continue
+        joined.append(argument)
+    return joined
 
 
 class _Closed:

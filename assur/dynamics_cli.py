@@ -17,7 +17,6 @@ import math
 import sys
 import warnings
 from collections.abc import Callable
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -26,6 +25,8 @@ from assur._cli_common import (
     check_distinct,
     check_not_input,
     check_structure,
+    given,
+    input_file,
     is_stdout,
     load_mechanism,
     parse_angles,
@@ -68,7 +69,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "dynamics",
         help="dynamic model reduced to the crank: steady state, flywheel, start-up",
     )
-    p.add_argument("file", type=Path)
+    p.add_argument("file", type=input_file)
     p.add_argument(
         "--angles",
         metavar="START:STOP:STEP",
@@ -104,11 +105,14 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     )
     p.add_argument(
         "--startup-csv",
+        type=given,
         metavar="PATH",
         help="write the start-up's time, crank angle and speed as CSV (implies "
         "--startup)",
     )
-    p.add_argument("--csv", metavar="PATH", help="write the table as CSV ('-': stdout)")
+    p.add_argument(
+        "--csv", type=given, metavar="PATH", help="write the table as CSV ('-': stdout)"
+    )
     p.add_argument("--json", action="store_true", help="print everything as JSON")
     return {"dynamics": _cmd_dynamics}
 

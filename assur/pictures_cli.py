@@ -26,6 +26,8 @@ from assur._cli_common import (
     check_not_input,
     check_range,
     file_name,
+    folder,
+    input_file,
     load_mechanism,
     one_position,
     positions,
@@ -139,9 +141,9 @@ def _common(
     dpi: float | None = None,
     dpi_range: tuple[float, float] = DPI_RANGE,
 ) -> None:
-    p.add_argument("file", type=Path)
+    p.add_argument("file", type=input_file)
     # a file's name written as a folder's ("x.svg/") would lose its slash in a Path
-    kind = Path if metavar == "DIR" else file_name
+    kind = folder if metavar == "DIR" else file_name
     p.add_argument(
         "-o", "--output", type=kind, required=True, metavar=metavar, help=text
     )

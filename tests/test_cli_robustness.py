@@ -528,3 +528,48 @@ def test_a_driver_added_to_a_structure_is_said_not_to_help(tmp_path, capsys):
     assert line.endswith(
         "; expected links that can move (W >= 1), one driver per degree of freedom"
     )
+
+
+# --- empty names ------------------------------------------------------------------
+
+EMPTY_NAMES = [
+    ("kinematics", "--csv", "file"),
+    ("forces", "--parquet", "file"),
+    ("dynamics", "--csv", "file"),
+    ("dynamics", "--startup-csv", "file"),
+    ("explain", "--output", "file"),
+    ("explain", "--answers", "file"),
+    ("plot", "--output", "file"),
+    ("animate", "--output", "file"),
+    ("report", "--output", "file"),
+    ("diagrams", "--output", "folder"),
+    ("plans", "--output", "folder"),
+]
+
+
+@pytest.mark.parametrize(("command", "option", "what"), EMPTY_NAMES)
+@pytest.mark.parametrize("form", ["joined", "apart"])
+def test_an_empty_name_is_refused(
+    monkeypatch, capsys, tmp_path: Path, command, option, what, form
+):
+    # --csv= printed the table and wrote nothing; --output= wrote into the current
+    # folder and removed its pictures of the set's names; --csv '' was "expected one
+    # argument" (empty arguments were dropped)
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "torque.png").write_bytes(b"the user's picture")
+    given = [f"{option}="] if form == "joined" else [option, ""]
+    line = one_error(capsys, command, SLIDER, *given)
+    shown = "-o/--output" if option == "--output" else option
+    assert line == (
+        f"assur: error: {command}: argument {shown}: expected a {what} name, got an "
+        f"empty one (see 'assur {command} --help')"
+    )
+    assert os.listdir(tmp_path) == ["torque.png"]
+
+
+def test_an_empty_mechanism_file_name_is_refused(capsys):
+    line = one_error(capsys, "kinematics", "")
+    assert line.startswith(
+        "assur: error: kinematics: argument file: expected a file name, got an empty "
+        "one"
+    )
