@@ -252,11 +252,60 @@ def output_folder(
         with _reported(where, any_error):
             yield temporary
             target.mkdir(parents=True, exist_ok=True)
-            for item in sorted(temporary.iterdir()):
-                _sync(item)
-                os.replace(item, target / item.name)
+            _move_all(sorted(temporary.iterdir()), target, temporary)
     finally:
         shutil.rmtree(temporary, ignore_errors=True)
+
+
+def _move_all(items: list[Path], target: Path, temporary: Path) -> None:
+    """Move every file of ``items`` into the folder ``target``, or none of them.
+
+    Every place is checked before the first file moves: a folder in a file's place
+    is refused by name. Should a move still fail, those done are undone: each old
+    file was kept (a hard link in ``temporary``) and is put back.
+    """
+    for item in items:
+        place = target / item.name
+        if place.is_dir() and not place.is_symlink():
+            msg = f"{path_text(place)}: cannot write the file (it is a folder)"
+            raise OutputError(msg)
+    moved: list[tuple[Path, bool, Path | None]] = []
+    try:
+        for item in items:
+            place = target / item.name
+            _sync(item)
+            existed, kept = _keep_old(place, temporary)
+            try:
+                os.replace(item, place)
+            except OSError as err:
+                reason = err.strerror or err
+                msg = f"{path_text(place)}: cannot write the file ({reason})"
+                raise OutputError(msg) from err
+            moved.append((place, existed, kept))
+    except BaseException:
+        for place, existed, kept in reversed(moved):
+            with contextlib.suppress(OSError):
+                if kept is not None:
+                    os.replace(kept, place)
+                elif not existed:
+                    os.unlink(place)
+        raise
+
+
+def _keep_old(place: Path, temporary: Path) -> tuple[bool, Path | None]:
+    """Return whether ``place`` holds a file, and that file kept in ``temporary``.
+
+    The old file is kept as a hard link; on a file system without them it is not
+    (None), and cannot be put back.
+    """
+    kept = temporary / f".old.{place.name}"
+    try:
+        os.link(place, kept, follow_symlinks=False)
+    except FileNotFoundError:
+        return os.path.lexists(place), None
+    except OSError:
+        return True, None
+    return True, kept
 
 
 def folder_name(path: str | os.PathLike[str]) -> str | None:

@@ -321,6 +321,51 @@ def test_a_set_of_files_that_fails_midway_lands_not_at_all(tmp_path: Path):
     assert (target / "a.png").read_bytes() == b"old a"
 
 
+def fill_three(target: Path) -> None:
+    """Write new a.png, b.png and c.png through output_folder."""
+    with output_folder(target) as folder:
+        for name in ("a.png", "b.png", "c.png"):
+            (folder / name).write_bytes(b"new")
+
+
+def test_a_folder_in_a_file_s_place_is_named_before_any_file_lands(tmp_path: Path):
+    # a.png was replaced, then b.png failed: half a set, and the folder named
+    target = tmp_path / "diagrams"
+    target.mkdir()
+    (target / "a.png").write_bytes(b"old a")
+    (target / "b.png").mkdir()
+    with pytest.raises(OutputError) as info:
+        fill_three(target)
+    assert str(info.value) == (
+        f"{target / 'b.png'}: cannot write the file (it is a folder)"
+    )
+    assert names(target) == {"a.png", "b.png"}
+    assert (target / "a.png").read_bytes() == b"old a"
+    assert names(tmp_path) == {"diagrams"}
+
+
+def test_a_move_that_fails_midway_puts_the_old_files_back(monkeypatch, tmp_path: Path):
+    target = tmp_path / "diagrams"
+    target.mkdir()
+    (target / "a.png").write_bytes(b"old a")
+    replace = os.replace
+
+    def fail_at_c(source, destination):
+        if Path(destination).name == "c.png":
+            raise OSError(errno.EACCES, "Permission denied")
+        replace(source, destination)
+
+    monkeypatch.setattr(_output.os, "replace", fail_at_c)
+    with pytest.raises(OutputError) as info:
+        fill_three(target)
+    assert str(info.value) == (
+        f"{target / 'c.png'}: cannot write the file (Permission denied)"
+    )
+    assert names(target) == {"a.png"}
+    assert (target / "a.png").read_bytes() == b"old a"
+    assert names(tmp_path) == {"diagrams"}
+
+
 def test_a_set_of_files_into_a_new_nested_folder(tmp_path: Path):
     target = tmp_path / "x" / "y" / "z"
     with output_folder(target) as folder:

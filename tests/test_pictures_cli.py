@@ -249,6 +249,30 @@ def test_diagrams_into_a_file(
     _error_line(err, "is a file; expected a folder")
 
 
+@pytest.mark.pictures
+def test_diagrams_over_a_folder_in_a_picture_s_place_replace_none(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # dynamics.png, hodographs.png and motion.png were replaced before paths.png
+    # failed, and the message named the folder, not the file
+    out = tmp_path / "d"
+    argv = ["diagrams", SLIDER, "--angles", "0:360:60", "--dpi", "30", "-o", str(out)]
+    status, _, err = _run(capsys, *argv)
+    assert status == 0, err
+    old = {p.name: p.read_bytes() for p in out.iterdir()}
+    (out / "paths.png").unlink()
+    (out / "paths.png").mkdir()
+    status, _, err = _run(capsys, *argv[:3], "0:360:30", *argv[4:])
+    assert status == 2
+    assert err == (
+        f"assur: error: {out / 'paths.png'}: cannot write the file (it is a folder)\n"
+    )
+    for name, data in old.items():
+        if name != "paths.png":
+            assert (out / name).read_bytes() == data, name
+    assert {p.name for p in tmp_path.iterdir()} == {"d"}
+
+
 # --------------------------------------------------------------------- animate
 
 
