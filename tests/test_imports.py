@@ -32,6 +32,11 @@ RANKS = {
     "assur._start": 0,
     "assur._tables": 0,
     "assur.model": 1,
+    # the structure's modules, in their own direction: _topology -> _diagnosis ->
+    # _group_search -> _structure (the cycle check keeps them apart)
+    "assur._topology": 2,
+    "assur._diagnosis": 2,
+    "assur._group_search": 2,
     "assur._structure": 2,
     "assur.report": 2,
     "assur.groups": 3,

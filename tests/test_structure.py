@@ -20,6 +20,7 @@ import pytest
 
 import assur
 from assur import DecompositionError, Driver, Joint, Link, Mechanism, _structure
+from assur import _group_search as search
 
 from .conftest import DATA, EXAMPLES
 
@@ -1021,13 +1022,13 @@ def test_a_failing_search_does_not_grow_sets_past_a_part_held_too_often(monkeypa
     # the master rod pinned twice can be in no group; every set of up to eight
     # links around it was grown and tested: 44 s to the error with 20 rods
     tested = []
-    is_group = _structure._is_group
+    is_group = search._is_group
 
     def counting(index, subset, known):  # type: ignore[no-untyped-def]
         tested.append(subset)
         return is_group(index, subset, known)
 
-    monkeypatch.setattr(_structure, "_is_group", counting)
+    monkeypatch.setattr(search, "_is_group", counting)
     _structure._DECOMPOSED.clear()
     with pytest.raises(DecompositionError) as caught:
         assur.structure(_radial(20))
@@ -1060,13 +1061,13 @@ def test_a_failing_search_does_not_grow_sets_that_cannot_close(monkeypatch):
     # (170,000 sets, 6 s of CPU with 16 spokes): none can reach 3k = 2p, for no link
     # it could take brings more constraints than freedoms
     tested = []
-    is_group = _structure._is_group
+    is_group = search._is_group
 
     def counting(index, subset, known):  # type: ignore[no-untyped-def]
         tested.append(subset)
         return is_group(index, subset, known)
 
-    monkeypatch.setattr(_structure, "_is_group", counting)
+    monkeypatch.setattr(search, "_is_group", counting)
     _structure._DECOMPOSED.clear()
     with pytest.raises(DecompositionError) as caught:
         assur.structure(_hub(16))

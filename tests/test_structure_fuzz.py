@@ -19,6 +19,8 @@ import pytest
 
 import assur
 from assur import AssurError, Joint, Link, Mechanism, ModelError, _structure
+from assur import _group_search as search
+from assur._topology import _index
 from assur.model import resolve_point
 
 from .conftest import example_files
@@ -131,22 +133,22 @@ def reference(mech: Mechanism) -> list[tuple] | None:
     first links), same test of a group, no bookkeeping of what changed.
     """
     topo = _structure.topology(mech)
-    index = _structure._index(topo)
+    index = _index(topo)
     by_name = {p.name: p for p in topo.pairs}
     known = {"ground"} | {x for d in mech.drivers for x in by_name[d.joint].links}
     unknown = [name for name in topo.links if name not in known]
     groups = []
     while unknown:
-        for k in range(2, min(len(unknown), _structure.MAX_GROUP_LINKS) + 1, 2):
-            candidates = _structure._connected(index, set(unknown), set(unknown), k)
-            found = [s for s in candidates if _structure._is_group(index, s, known)[0]]
+        for k in range(2, min(len(unknown), search.MAX_GROUP_LINKS) + 1, 2):
+            candidates = search._connected(index, set(unknown), set(unknown), k)
+            found = [s for s in candidates if search._is_group(index, s, known)[0]]
             if found:
                 best = min(found, key=lambda s: sorted(index.rank[x] for x in s))
                 break
         else:
             return None
         links = sorted(best, key=index.rank.__getitem__)
-        counted = _structure._counted(index, best, known)
+        counted = search._counted(index, best, known)
         groups.append(dataclasses.astuple(_structure._describe(links, counted, known)))
         known |= best
         unknown = [name for name in unknown if name not in best]
