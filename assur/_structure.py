@@ -78,7 +78,33 @@ class Group:
 
 @dataclass(frozen=True, slots=True)
 class Structure:
-    """The structural analysis of a mechanism; ``str()`` gives the teaching report."""
+    """The structural analysis of a mechanism; ``str()`` gives the teaching report.
+
+    Attributes
+    ----------
+    name : str
+        The mechanism's name (empty when it has none).
+    links : int
+        Number n of moving links, the frame left out (as are the blocks that
+        replace slots in the groups).
+    lower_pairs : int
+        Number p5 of lower pairs: the revolute and prismatic joints.
+    higher_pairs : int
+        Number p4 of higher pairs: the slots (a pin in a straight slot).
+    dof : int
+        Degrees of freedom W = 3n - 2p5 - p4 (see `mobility`), which equals the
+        number of drivers.
+    drivers : tuple of Group
+        One class I group per driver (the frame and the input link), in the order
+        of the drivers.
+    groups : tuple of Group
+        The Assur groups in the order they attach, which is the order of the
+        kinematic (forward) pass.
+    slots : tuple of str
+        Names of the slot joints. In the groups, slot ``J`` is a block ``"J~block"``
+        sliding in it through the prismatic pair ``J`` and carrying the pin through
+        the revolute pair ``"J~pin"``.
+    """
 
     name: str
     links: int
@@ -140,6 +166,18 @@ class Structure:
 def mobility(mechanism: Mechanism) -> int:
     """Return the degrees of freedom by the Chebyshev-Gruebler formula.
 
+    Parameters
+    ----------
+    mechanism : Mechanism
+        The mechanism whose links and joints are counted; its drivers play no part.
+
+    Returns
+    -------
+    int
+        The degrees of freedom W: the number of drivers a mechanism needs. Zero or
+        less for a rigid chain; the count cannot see a link that repeats a
+        constraint (a third parallel crank of a parallelogram).
+
     Notes
     -----
     :math:`W = 3n - 2p_5 - p_4` with n moving links, p5 lower pairs (revolute and
@@ -161,7 +199,18 @@ def mobility(mechanism: Mechanism) -> int:
 def graph(mechanism: Mechanism) -> Any:
     """Return the mechanism as a networkx multigraph: links as nodes, joints edges.
 
-    Each edge is keyed by the joint's name and carries its ``kind``.
+    Parameters
+    ----------
+    mechanism : Mechanism
+        The mechanism whose links and joints make the graph.
+
+    Returns
+    -------
+    networkx.MultiGraph
+        One node per link, named as the link: the frame ``"ground"`` and every
+        moving link. One edge per joint, between the two links it joins, keyed by
+        the joint's name and carrying its ``kind`` (``"revolute"``, ``"prismatic"``
+        or ``"slot"``); two joints between the same two links are two edges.
 
     Examples
     --------
@@ -187,6 +236,7 @@ def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
     Parameters
     ----------
     mechanism : Mechanism
+        The mechanism to analyse, with one driver per degree of freedom.
     driver : str, optional
         Analyse with this joint as the only input instead of the file's drivers (the
         class of a mechanism depends on its input link).
@@ -194,6 +244,9 @@ def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
     Returns
     -------
     Structure
+        The counts of links and pairs, the mobility, the driving links and the Assur
+        groups in the order they attach; ``str()`` of it is the teaching report and
+        ``to_dict()`` the same as JSON-ready data.
 
     Raises
     ------
