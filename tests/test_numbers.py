@@ -126,7 +126,7 @@ def test_a_parallelogram_exactly_at_its_change_point_is_a_dead_centre():
         warnings.simplefilter("ignore", assur.AssurWarning)
         with pytest.raises(assur.SingularConfigurationError, match="180 deg"):
             assur.forces(mech, [170.0, 180.0, 190.0])
-    table, _ = record(assur.forces, mech, [170.0, 180.0, 190.0], True)
+    table, _ = record(assur.forces, mech, [170.0, 180.0, 190.0], skip_unassembled=True)
     assert table.skipped.tolist() == [180.0]
     assert np.all(np.abs(table["driver.torque"]) < 1e3)
 
