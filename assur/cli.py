@@ -215,6 +215,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         return INTERRUPTED
 
 
+RESEND = 0.5
+"""Seconds after which SIGTERM or SIGHUP is sent again while the command still runs."""
+
+
 class _Stopped(BaseException):
     """SIGTERM or SIGHUP, raised where the command is: it unwinds like Ctrl-C."""
 
@@ -235,19 +239,39 @@ def _stoppable() -> Iterator[None]:
         yield
         return
 
+    again: list[threading.Timer] = []
+
     def stop(signum: int, frame: Any) -> None:
+        # an exception raised where Python ignores it (a __del__ or a weakref
+        # callback of matplotlib's) would leave the command running: the signal
+        # comes again shortly, until one lands where it unwinds the command
+        timer = threading.Timer(RESEND, os.kill, (os.getpid(), signum))
+        timer.daemon = True
+        again.append(timer)
+        timer.start()
         raise _Stopped(signum)
+
+    previous = sys.unraisablehook
+
+    def unraised(unraisable: Any) -> None:
+        # a stop that could not unwind the command is sent again: no report of it
+        if not isinstance(unraisable.exc_value, _Stopped):
+            previous(unraisable)
 
     saved = {}
     for name in ("SIGTERM", "SIGHUP"):
         number = getattr(signal, name, None)
         if number is not None:
             saved[number] = signal.signal(number, stop)
+    sys.unraisablehook = unraised
     try:
         yield
     finally:
+        for timer in again:
+            timer.cancel()
         for number, handler in saved.items():
             signal.signal(number, handler)
+        sys.unraisablehook = previous
 
 
 def _main(argv: list[str]) -> int:

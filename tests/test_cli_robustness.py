@@ -118,6 +118,33 @@ def test_a_stop_during_an_animation_keeps_the_old_file(
     assert os.listdir(tmp_path) == ["film.gif"]
 
 
+def test_a_stop_that_python_ignores_comes_again(capsys):
+    # SIGTERM handled inside a __del__ (or a weakref callback of matplotlib's):
+    # Python ignores the exception raised there, and the animation went on to its
+    # end; the signal is sent again until it unwinds the command, unreported
+    class Finalized:
+        def __del__(self) -> None:
+            os.kill(os.getpid(), signal.SIGTERM)
+            time.sleep(0.05)  # the handler runs here, its exception ignored
+
+    waited = [0.0]
+
+    def command() -> None:
+        with cli._stoppable():
+            Finalized()
+            started = time.monotonic()
+            while waited[0] < 10.0:
+                waited[0] = time.monotonic() - started
+                time.sleep(0.01)
+
+    with pytest.raises(cli._Stopped):
+        command()
+    assert waited[0] < 5.0
+    assert "Exception ignored" not in capsys.readouterr().err
+    # and once the command is over, no signal comes after it
+    time.sleep(2 * cli.RESEND)
+
+
 # --- outputs that fail ----------------------------------------------------------
 
 

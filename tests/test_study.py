@@ -260,7 +260,9 @@ def test_sweep_on_a_local_cluster(slider_study):
             n_workers=2,
             processes=True,
             threads_per_worker=1,
-            dashboard_address=None,
+            # a free port: the HTTP server starts even without a dashboard, and its
+            # default port taken (another cluster) was a warning, an error here
+            dashboard_address=":0",
         ) as cluster,
         distributed.Client(cluster) as client,
     ):
