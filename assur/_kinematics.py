@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._follow import advance, drivers, layout, nested, tangents
 from assur._vec import Array, Leaf, Mask, gather, is_array, take_rows
 from assur.groups._motion import Motion
 from assur.groups._pairs import slide
@@ -32,10 +33,6 @@ __all__ = [
     "velocity_coefficients",
 ]
 
-BRANCH_TOLERANCE = 1e-6
-"""A continuation step stays on its branch when the step back from the pose it found
-returns to the pose it started from, within this many radians and this fraction of
-the group's reach."""
 CONTINUATION_STEP = math.radians(5.0)
 """Largest step of the driver along the continuation path of a Newton-solved group."""
 MAX_STEPS = 4000
@@ -187,24 +184,6 @@ def solve(
     return bodies, troubles
 
 
-def drivers(plan: Plan, drive: Array, speed: Any, acceleration: Any) -> list[Motion]:
-    """Return every body at rest but the driving links, which move as prescribed."""
-    bodies: list[Motion] = [frame(plan)] * len(plan.bodies)
-    for i, d in enumerate(plan.drivers):
-        m = motion(d, drive[:, i], speed[i], acceleration[i])
-        m.finish()
-        bodies[d.body] = m
-    return bodies
-
-
-def frame(plan: Plan) -> Motion:
-    """Return the frame's motion, made once per plan (it never changes)."""
-    found = plan.memo.get("frame")
-    if found is None:
-        found = plan.memo["frame"] = Motion.fixed()
-    return found  # type: ignore[no-any-return]
-
-
 def _continuation(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
     """Follow the Newton groups from the reference pose to ``drive``.
 
@@ -299,22 +278,25 @@ def _stride(plan: Plan, driver: Any) -> float:
     return CONTINUATION_STEP if driver.kind == "R" else 0.05 * plan.scale
 
 
-def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> list[Any]:
-    """Return the Newton groups' poses at ``marks`` whole steps from the reference.
+def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> Array:
+    """Return the Newton groups at ``marks`` whole steps from the reference (packed).
 
     The reference pose is solved first; the anchors on either side are then walked
     to one after the other, each one step on from the last, both sides together, and
     kept with the plan (a few numbers): the slices of a long sweep, and every later
-    sweep of the mechanism, start from them. A group that fails at an anchor is NaN
-    from there on; a side's walk stops where every group has failed.
+    sweep of the mechanism, start from them. Each anchor keeps its poses, their rates
+    of change per unit of the driver and their Jacobians' signs (rows, marks); a side
+    whose step fails is NaN from there on, and its walk stops.
     """
     driver = plan.drivers[0]
     step = _stride(plan, driver)
     key = "anchors" if branch_of is None else "anchors-past-change-points"
     kept: dict[float, Array] = plan.memo.setdefault(key, {})
+    size = 3 * sum(layout(plan))
     if 0.0 not in kept:
-        found, _ = _step(plan, np.array([[driver.reference]]), None, branch_of)
-        kept[0.0] = _flat(plan, key, found)[:, 0]
+        at = np.array([[driver.reference]])
+        pose, _, rate, signs = tangents(plan, at, None, np.ones((1, 1)), branch_of)
+        kept[0.0] = np.concatenate([pose[:, 0], rate[:, 0], signs[:, 0]])
     wanted = marks.tolist()
     # each side: its direction, the last anchor walked to and the farthest wanted
     sides = []
@@ -328,132 +310,48 @@ def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> list[
         sign, last = np.array([side[:2] for side in sides]).T
         start = (driver.reference + sign * last * step)[:, None]
         at = (driver.reference + sign * (last + 1.0) * step)[:, None]
-        found, failed = _step(plan, at, _nested(plan, key, rows), branch_of, start)
-        flat = _flat(plan, key, found)
+        stride = sign * step
+        begun = (rows[:size], rows[size : 2 * size] * stride, rows[2 * size :])
+        top = np.ones(len(sides))
+        pose, rate, signs, failed = advance(plan, start, at, begun, branch_of, top)
+        flat = np.concatenate([pose, rate / stride, signs])
         for i, side in enumerate(sides):
             side[1] += 1.0
             kept[side[0] * side[1]] = flat[:, i]
             if failed[:, i].all():
-                # no group can come back: every farther anchor fails alike
+                # nothing comes back from a failed step: every farther anchor fails
                 while side[1] < side[2]:
                     side[1] += 1.0
                     kept[side[0] * side[1]] = flat[:, i]
         sides = [side for side in sides if side[1] < side[2]]
-    return _nested(plan, key, np.array([kept[m] for m in wanted]).T)
-
-
-def _flat(plan: Plan, key: str, poses: list[Any]) -> Array:
-    """Return the Newton groups' poses as one array (values, positions).
-
-    Notes how they nest (the same at every position) in the plan's memo.
-    """
-    plan.memo[key + "-layout"] = [[len(pose) for pose in group] for group in poses]
-    return np.array([v for group in poses for pose in group for v in pose])
-
-
-def _nested(plan: Plan, key: str, rows: Array) -> list[Any]:
-    """Return poses laid out as :func:`_flat` noted, from its arrays' rows."""
-    values = iter(rows)
-    return [
-        [tuple(next(values) for _ in range(size)) for size in group]
-        for group in plan.memo[key + "-layout"]
-    ]
+    return np.array([kept[m] for m in wanted]).T
 
 
 def _anchored(
     plan: Plan,
     drive: Array,
     branch_of: BranchOf | None,
-    walked: list[Any],
+    walked: Array,
     which: Any,
     start: Array,
 ) -> list[Any]:
-    """Reach ``drive`` (one driver) in one step from the poses ``walked`` to anchors.
+    """Reach ``drive`` (one driver) from the anchors ``walked`` (:func:`_anchor_poses`).
 
     The anchors lie whole continuation steps from the reference pose on the driver's
-    path, ``which[i]`` the last before position ``i``: each position is reached in
-    steps of at most :data:`CONTINUATION_STEP`, at the cost of one step a position
-    instead of one for every step of its distance (a dense sweep of a crank has many
-    positions per anchor). A group's pose is NaN where it failed, at the anchor or
-    on the step. ``start`` holds each position's anchor (rad or m).
+    path, ``which[i]`` the last before position ``i``: each position is reached from
+    it by :func:`assur._follow.advance` (one step where nothing is in the way), at the
+    cost of one step a position instead of one for every step of its distance (a
+    dense sweep of a crank has many positions per anchor). A group's pose is NaN
+    where it failed, at the anchor or on the way. ``start`` holds each position's
+    anchor (rad or m).
     """
-    guess = [[tuple(v[which] for v in pose) for pose in poses] for poses in walked]
-    return _step(plan, drive, guess, branch_of, start[:, None])[0]
-
-
-def _step(
-    plan: Plan,
-    at: Array,
-    current: list[Any] | None,
-    branch_of: BranchOf | None,
-    start: Array | None = None,
-) -> tuple[list[Any], Mask]:
-    """Take one continuation step: every group at driver positions ``at``.
-
-    ``current`` holds the Newton groups' poses to start from (None, or a group's
-    None: the reference pose), at driver positions ``start`` (n, d). Returns their
-    solved poses, and whether each group failed at each position (groups,
-    positions). With ``start``, a pose that is not on the branch of the one it
-    started from fails too (:func:`_off_branch`).
-    """
-    still = [0.0] * len(plan.drivers)
-    bodies = drivers(plan, at, still, still)
-    branch = {} if branch_of is None else branch_of(at)
-    found: list[Any] = []
-    failed = []
-    for index, solver in enumerate(plan.solvers):
-        if solver.newton:
-            guess = None if current is None else current[len(found)]
-            assembly = solver.assemble(bodies, at.shape[0], guess)
-            found.append(assembly.guess)
-            failed.append(assembly.failed)
-        else:
-            solver.assemble(bodies, at.shape[0], branch=branch.get(index))
-    mask = np.array(failed, dtype=bool).reshape(len(found), at.shape[0])
-    if start is not None and found:
-        off = _off_branch(plan, start, current, found, branch_of) & ~mask
-        if off.any():
-            mask |= off
-            found = [
-                [tuple(np.where(bad, np.nan, v) for v in pose) for pose in poses]
-                for poses, bad in zip(found, off, strict=True)
-            ]
-    return found, mask
-
-
-def _off_branch(
-    plan: Plan,
-    start: Array,
-    current: list[Any] | None,
-    found: list[Any],
-    branch_of: BranchOf | None,
-) -> Mask:
-    """Return where a step left the branch it started on (groups, positions).
-
-    Past the driver's limit (a crank that can only rock, say) Newton's method may
-    still converge, to another assembly of the group far from the one followed: the
-    step back to ``start`` from such a pose returns to that other assembly, not to
-    the pose it started from. A step on the branch returns whence it came.
-    """
-    back, failed = _step(plan, start, found, branch_of)
-    # the groups solved by Newton's method know their reference pose and reach
-    newton: list[Any] = [solver for solver in plan.solvers if solver.newton]
-    off = failed.copy()
-    for g, solver in enumerate(newton):
-        began = _poses(solver, None if current is None else current[g])
-        for returned, pose in zip(back[g], began, strict=True):
-            phi, x, y = (np.abs(a - b) for a, b in zip(returned, pose, strict=True))
-            with np.errstate(invalid="ignore"):
-                near = np.maximum(phi, np.maximum(x, y) / solver.reach)
-                off[g] |= ~(near <= BRANCH_TOLERANCE)
-    return off
-
-
-def _poses(solver: Any, poses: Any) -> Any:
-    """Return a Newton group's poses, the reference pose where ``poses`` is None."""
-    if poses is not None:
-        return poses
-    return [(0.0, x, y) for x, y in solver.origins]
+    size = 3 * sum(layout(plan))
+    values = walked[:, which]
+    span = drive[:, 0] - start
+    begun = (values[:size], values[size : 2 * size] * span, values[2 * size :])
+    top = np.ones(drive.shape[0])
+    pose = advance(plan, start[:, None], drive, begun, branch_of, top)[0]
+    return nested(plan, pose)
 
 
 def _straight(
@@ -463,39 +361,15 @@ def _straight(
     reference: Array,
     counts: Array,
 ) -> list[Any]:
-    """Walk every position to ``drive`` on its own path, ``counts`` steps long."""
+    """Walk every position to ``drive`` on its own path, in steps of 1/``counts``."""
     n = drive.shape[0]
-    newton = [solver for solver in plan.solvers if solver.newton]
-    # every pose NaN until its position is reached (an empty sweep has none)
-    result: list[Any] = [
-        [tuple(np.full(n, np.nan) for _ in range(3)) for _ in solver.bodies]
-        for solver in newton
-    ]
-    current: list[Any] = [None] * len(newton)
-    active = np.arange(n)
-    s = 1
-    while active.size:
-        fraction = np.minimum(s / counts[active], 1.0)
-        before = np.minimum((s - 1) / counts[active], 1.0)
-        path = drive[active] - reference
-        at = reference + path * fraction[:, None]
-        start = reference + path * before[:, None]
-        current, failed = _step(plan, at, current, branch_of, start)
-        # arrived, or stopped by a failed step
-        finish = (fraction >= 1.0) | failed.any(axis=0)
-        if finish.any():
-            rows = active[finish]
-            for g, poses in enumerate(current):
-                for kept, pose in zip(result[g], poses, strict=True):
-                    for whole, part in zip(kept, pose, strict=True):
-                        whole[rows] = part[finish]
-            keep = ~finish
-            active = active[keep]
-            current = [
-                [tuple(v[keep] for v in pose) for pose in poses] for poses in current
-            ]
-        s += 1
-    return result
+    if not n:
+        return nested(plan, np.zeros((3 * sum(layout(plan)), 0)))
+    base = np.repeat(reference[None, :], n, axis=0)
+    path = drive - base
+    pose, _, rate, sign = tangents(plan, base, None, path, branch_of)
+    pose = advance(plan, base, drive, (pose, rate, sign), branch_of, 1.0 / counts)[0]
+    return nested(plan, pose)
 
 
 def _too_far(plan: Plan, drive: Array, counts: Array) -> None:

@@ -11,11 +11,11 @@ evenly over one turn. "shared" is the library as it is: the positions share thei
 paths from the reference pose (the poses at whole continuation steps are walked to
 once per mechanism and kept, every position is one step on from the last before it),
 timed as a later call (the anchors kept) and as a first call (walked to anew).
-"separate" walks each
-position to its angle on its own path, as the library did before. Both give the same
-poses (``tests/test_numbers.py`` holds them to 1e-9). Both check every step by a step
-back to where it started (a step that does not return to its pose has left the
-branch), which doubles their solves. Writes
+"separate" walks each position to its angle on its own path, as the library did
+before. Both give the same poses (``tests/test_numbers.py`` holds them to 1e-9).
+Both check every step against its prediction along the branch's tangent (a step
+whose correction is large, whose tangent turns sharply or whose Jacobian changes sign
+is halved). Writes
 ``benchmarks/results-continuation.json`` (``--output`` overrides); prints a table. The
 exit status is 0 whatever the figures are.
 """

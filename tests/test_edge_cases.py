@@ -289,3 +289,114 @@ def test_a_group_stretched_out_exactly_stands_at_a_dead_centre(mech, angle, grou
         )
     assert table.skipped.tolist() == [angle]
     assert len(table) == 2
+
+
+# ------------------------------------------------------------------------------------
+# A triad near a change point: the continuation keeps to the branch it is on
+
+
+NEAR = EDGE / "triad_near_change_point.toml"
+
+
+def _triad_path(targets: list[float], step_deg: float = 0.05) -> dict[float, tuple]:
+    """Follow the triad of ``NEAR`` from its reference pose, in fine steps.
+
+    An independent continuation (not assur's): the unknowns are the plate's
+    rotation and its pin C, the equations the rod's and the rockers' lengths, solved
+    by Newton's method from the last pose at every step of ``step_deg`` along the
+    crank's straight path to each target (deg). A step that does not converge, or
+    moves the pose by more than 0.02 (rad, m), ends the path: the branch's limit.
+    Returns C (m) and the plate's rotation (rad) at each target reached.
+    """
+    import tomllib
+
+    data = tomllib.loads(NEAR.read_text(encoding="utf-8"))
+    at = {k: np.array(v["at"], float) for k, v in data["joints"].items()}
+    o, b0, c0 = at["O2"], at["B"], at["C"]
+    rc = np.linalg.norm(b0 - o)
+    ref = math.degrees(math.atan2(b0[1] - o[1], b0[0] - o[0]))
+    rod = np.linalg.norm(c0 - b0)
+    hangs = [(at["D"] - c0, at["F"]), (at["E"] - c0, at["G"])]
+    lengths = [np.linalg.norm(at["D"] - at["F"]), np.linalg.norm(at["E"] - at["G"])]
+
+    def solve(q, theta):
+        for _ in range(30):
+            b = o + rc * np.array([math.cos(theta), math.sin(theta)])
+            c, s = math.cos(q[0]), math.sin(q[0])
+            res = [np.sum((q[1:] - b) ** 2) - rod**2]
+            jac = [[0.0, *(2.0 * (q[1:] - b))]]
+            for (d, pivot), length in zip(hangs, lengths, strict=True):
+                u = np.array([c * d[0] - s * d[1], s * d[0] + c * d[1]])
+                gap = q[1:] + u - pivot
+                res.append(gap @ gap - length**2)
+                jac.append([2.0 * gap @ np.array([-u[1], u[0]]), *(2.0 * gap)])
+            if max(abs(r) for r in res) < 1e-16:
+                return q
+            q = q - np.linalg.solve(np.array(jac), np.array(res))
+        return None
+
+    out = {}
+    for side in (1.0, -1.0):
+        q = np.array([0.0, *c0])
+        theta = ref
+        ahead = [t for t in targets if (t - ref) * side >= 0]
+        for target in sorted(ahead, key=lambda t: abs(t - ref)):
+            count = max(1, math.ceil(abs(target - theta) / step_deg))
+            begin = theta
+            for i in range(1, count + 1):
+                theta = begin + (target - begin) * i / count
+                new = solve(q, math.radians(theta))
+                if new is None or np.max(np.abs(new - q)) > 0.02:
+                    break
+                q = new
+            else:
+                out[target] = (q[1], q[2], q[0])
+                continue
+            break
+    return out
+
+
+def _triad_oracle(angles) -> dict[float, tuple]:
+    """The oracle's pose at each crank angle (deg), as assur takes a crank angle.
+
+    The angle within half a turn of the reference pose (60 deg); where the branch
+    ends before it, the same angle a turn the other way round.
+    """
+    near = {a: 60.0 + (a - 60.0 + 180.0) % 360.0 - 180.0 for a in angles}
+    other = {a: w - 360.0 if w > 60.0 else w + 360.0 for a, w in near.items()}
+    path = _triad_path(sorted(set(near.values()) | set(other.values())))
+    return {a: path.get(near[a], path.get(other[a])) for a in angles}
+
+
+@pytest.mark.parametrize(
+    "angles",
+    [
+        np.arange(0.0, 361.0, 45.0),
+        np.arange(95.0, 105.01, 0.25),
+        np.arange(0.0, 360.0, 1.0),
+    ],
+    ids=["coarse", "dense", "one-degree"],
+)
+def test_a_triad_near_a_change_point_keeps_to_its_branch(angles):
+    """Past 99.2 deg the 5-deg continuation once jumped onto the other assembly
+    (joint C 7.6 mm off at 100 deg, 55 mm at 150 deg, without a word), and a dense
+    sweep said that 99.25 deg cannot be assembled."""
+    oracle = _triad_oracle(angles.tolist())
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        table = assur.kinematics(assur.load(NEAR), angles)
+    want = np.array([oracle[a] for a in angles.tolist()])
+    np.testing.assert_allclose(table["C.x"], want[:, 0], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(table["C.y"], want[:, 1], rtol=0, atol=1e-9)
+    turned = np.radians(table["plate.angle"]) - want[:, 2]
+    np.testing.assert_allclose(np.sin(turned), 0.0, atol=1e-9)
+
+
+def test_a_triad_near_a_change_point_folds_where_the_oracle_does():
+    """214 deg is on the branch the forward way; 214.5 deg lies past its fold and
+    is reached the other way round (as -145.5 deg), as the oracle finds."""
+    table = assur.kinematics(assur.load(NEAR), [214.0, 214.5, -145.5])
+    path = _triad_path([214.0, 214.5, -145.5])
+    assert 214.5 not in path
+    want = [path[214.0][0], path[-145.5][0], path[-145.5][0]]
+    np.testing.assert_allclose(table["C.x"], want, rtol=0, atol=1e-9)

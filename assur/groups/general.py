@@ -115,6 +115,23 @@ class GeneralSolver:
         """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of every link."""
         derivative(self, bodies, k, lin.jacobian)
 
+    def tangent(self, bodies: list[Motion]) -> Array:
+        """Solve the links' velocities (level 1) and return the Jacobian's sign.
+
+        The sign of the Jacobian's determinant (n,) keeps along a branch that the
+        driver can follow: it changes only where the Jacobian is singular (a dead
+        centre, or where two assemblies meet). NaN where the pose failed.
+        """
+        n = _count(self, bodies)
+        jac = jacobian(self, bodies, n)
+        bad = ~np.isfinite(jac).all(axis=(1, 2))
+        jac[bad] = np.eye(jac.shape[-1])
+        sign = np.linalg.slogdet(jac)[0]
+        jac[sign == 0.0] = np.eye(jac.shape[-1])  # exactly singular: no velocity
+        sign[bad] = np.nan
+        derivative(self, bodies, 1, jac)
+        return sign
+
     def equilibrium(self, bodies: list[Motion], loads: list[Wrench]) -> Equilibrium:
         """Solve every reaction of the group from three equations per link."""
         return equilibrium(self, bodies, loads)
