@@ -32,10 +32,12 @@ larger of the driver's and the predicted motion of the group's links)."""
 TURN = 0.5
 """Largest turn of the path's tangent over one step, rad, in the space of the driver's
 position and the groups' poses (angles in rad, lengths in units of the reach)."""
-HALVINGS = 24
-"""A step is halved at most this many times below the largest step. A step that small
-which still changes the Jacobian's sign (or turns sharply) passes a point where two
-assemblies meet: it is taken, and the motion carries on with continuous velocities."""
+HALVINGS = 10
+"""A step is halved at most this many times below the largest step (5 deg / 1024, about
+0.005 deg, for a crank). A step that small which changes the Jacobian's sign with a
+tangent that turns little passes a point where two assemblies meet (a change point,
+or two that pass closer than such a step resolves): it is taken, and the motion
+carries on with continuous velocities. Any other step refused at that size fails."""
 PASSES = 2000
 """Most trial steps of a batch; positions not arrived by then fail."""
 
@@ -247,5 +249,5 @@ def _accepted(
             # no motion at all (a position at its start) turns nothing: NaN passes
             straight = ~(cosine < math.cos(TURN))
             converged = np.isfinite(correction)
-            out.append(converged & small & ((straight & kept[g]) | floor))
+            out.append(converged & small & straight & (kept[g] | floor))
     return np.array(out)

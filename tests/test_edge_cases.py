@@ -400,3 +400,17 @@ def test_a_triad_near_a_change_point_folds_where_the_oracle_does():
     assert 214.5 not in path
     want = [path[214.0][0], path[-145.5][0], path[-145.5][0]]
     np.testing.assert_allclose(table["C.x"], want, rtol=0, atol=1e-9)
+
+
+@pytest.mark.parametrize("step", [45.0, 1.0, 0.5, 0.013])
+def test_a_triad_through_its_change_points_stays_a_parallelogram(step):
+    """The continuation's halved steps near a change point once followed the other
+    assembly (the plate turned 7.5 deg at 239.5 deg in a 0.5-deg sweep)."""
+    mech = assur.load(EDGE / "triad_parallelogram.toml")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)  # near a dead centre
+        table = assur.kinematics(mech, np.arange(0.0, 360.0, step))
+    np.testing.assert_allclose(table["plate.angle"], 0.0, atol=1e-6)
+    np.testing.assert_allclose(
+        table["left_rocker.angle"], table["right_rocker.angle"], atol=1e-6
+    )
