@@ -8,8 +8,9 @@ driver's range around the reference pose is scanned once per plan for such point
 each position's branch is then the reference pose's, flipped once for every change
 point on the driver's straight path from the reference pose.
 
-Scanned: one driver, the dyads attached before any group solved by Newton's method
-(whose branch its continuation follows).
+Scanned: one driver, every dyad; a group solved by Newton's method has no branch to
+choose (its continuation follows it), and the dyads attached after it are scanned on
+the poses its continuation reaches along the grid.
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._kinematics import drivers
+from assur._kinematics import continuation, drivers
 from assur._vec import Array
 from assur.plan import Plan
 
@@ -76,13 +77,38 @@ def change_points(plan: Plan) -> ChangePoints | None:
 
 
 def _closed(plan: Plan) -> list[int]:
-    """Return the solvers the scan covers: those before any Newton group."""
-    out = []
-    for g, solver in enumerate(plan.solvers):
-        if solver.newton:
-            break
-        out.append(g)
-    return out
+    """Return the solvers the scan covers: up to the last closed-form one."""
+    closed = [g for g, solver in enumerate(plan.solvers) if not solver.newton]
+    return list(range(closed[-1] + 1)) if closed else []
+
+
+def _assemble(
+    plan: Plan, bodies: list[Any], at: Array, flips: dict[int, Array], g: int
+) -> None:
+    """Assemble solver ``g`` at driver positions ``at`` (n,) on its branch so far.
+
+    A Newton group takes the poses of its continuation from the reference pose,
+    on the branches the change points found so far give the dyads before it.
+    """
+    solver = plan.solvers[g]
+    ref = plan.drivers[0].reference
+    drive = at[:, None]
+    if solver.newton:
+        found = {k: points for k, points in flips.items() if k < g}
+
+        def branch_of(x: Array) -> dict[int, Array]:
+            return {
+                k: _branch(plan.solvers[k], points, x, ref)
+                for k, points in found.items()
+            }
+
+        guesses = continuation(plan, drive, branch_of if found else None)
+        k = sum(1 for s in plan.solvers[:g] if s.newton)
+        solver.assemble(bodies, at.shape[0], guesses[k])
+        return
+    points = flips.get(g)
+    branch = None if points is None else _branch(solver, points, drive, ref)
+    solver.assemble(bodies, at.shape[0], branch=branch)
 
 
 def _scan(plan: Plan) -> ChangePoints | None:
@@ -112,10 +138,9 @@ def _scan(plan: Plan) -> ChangePoints | None:
                 points = _touches(plan, grid, values, flips, g)
                 if points.size:
                     flips[g] = points
-            branch = None
-            if g in flips:
-                branch = _branch(solver, flips[g], grid[:, None], d.reference)
-            solver.assemble(bodies, n, branch=branch)
+            _assemble(plan, bodies, grid, flips, g)
+    # anchors walked on the branches of a part of the change points are not kept
+    plan.memo.pop("anchors-past-change-points", None)
     if not flips:
         return None
     found = tuple(flips.get(g, np.zeros(0)) for g in range(len(plan.solvers)))
@@ -131,17 +156,13 @@ def _discriminants(
     give them.
     """
     n = at.shape[0]
-    drive = at[:, None]
-    bodies = drivers(plan, drive, (0.0,), (0.0,))
-    ref = plan.drivers[0].reference
+    bodies = drivers(plan, at[:, None], (0.0,), (0.0,))
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         for g, solver in enumerate(plan.solvers[: upto + 1]):
             if g == upto:
                 values = solver.discriminant(bodies)
                 return None if values is None else np.broadcast_to(values, (n,))
-            points = flips.get(g)
-            branch = None if points is None else _branch(solver, points, drive, ref)
-            solver.assemble(bodies, n, branch=branch)
+            _assemble(plan, bodies, at, flips, g)
     return None
 
 

@@ -26,6 +26,7 @@ from assur.plan import Plan
 __all__ = [
     "KinematicState",
     "Trouble",
+    "continuation",
     "extend",
     "motions",
     "solve",
@@ -153,7 +154,7 @@ def solve(
     troubles met; positions that fail hold NaN.
     """
     n = drive.shape[0]
-    guesses = _continuation(plan, drive, branch_of) if plan.newton else None
+    guesses = continuation(plan, drive, branch_of) if plan.newton else None
     branch = {} if branch_of is None else branch_of(drive)
     bodies = drivers(plan, drive, speed, acceleration)
     troubles: list[Trouble] = []
@@ -184,7 +185,7 @@ def solve(
     return bodies, troubles
 
 
-def _continuation(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
+def continuation(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
     """Follow the Newton groups from the reference pose to ``drive``.
 
     Each position is reached along the straight path of the driver from the reference

@@ -414,3 +414,29 @@ def test_a_triad_through_its_change_points_stays_a_parallelogram(step):
     np.testing.assert_allclose(
         table["left_rocker.angle"], table["right_rocker.angle"], atol=1e-6
     )
+
+
+# ------------------------------------------------------------------------------------
+# A dyad's change points after a triad
+
+
+@pytest.mark.parametrize("step", [45.0, 0.5])
+def test_a_dyad_after_a_triad_stays_a_parallelogram(step):
+    """The dyad's change points were looked for only before the first triad: the
+    sweep flipped to an antiparallelogram near 77.4 deg (po.omega -2.28 -> +6.85
+    rad/s between 77 and 77.5 deg) with a dead centre's warning alone."""
+    mech = assur.load(EDGE / "class3_parallelogram.toml")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        table = assur.kinematics(mech, np.arange(0.0, 360.0, step))
+    said = [str(w.message) for w in caught]
+    changes = [s for s in said if "change point" in s]
+    assert all(s.startswith("group RRR (pc, po)") for s in changes), said
+    assert any("77.4" in s for s in changes), said
+    # po stays parallel to the rocker's F-H: it turns as the rocker does
+    gap = (table["po.angle"] - table["left_rocker.angle"] + 180.0) % 360.0 - 180.0
+    np.testing.assert_allclose(gap - gap[0], 0.0, atol=1e-6)
+    far = np.abs(table["angle"] - 77.414) > 1.0
+    np.testing.assert_allclose(
+        table["po.omega"][far], table["left_rocker.omega"][far], rtol=1e-9, atol=1e-9
+    )
