@@ -739,7 +739,16 @@ def _where(plan: Plan, position: Array) -> str:
 
 
 def _ranges(plan: Plan, given: Array, mask: Mask) -> str:
-    """Describe the runs of consecutive positions in ``mask``."""
+    """Describe the runs of consecutive positions in ``mask``.
+
+    One driver's positions given out of order are taken in increasing order: a run
+    is then of neighbours among all the positions given.
+    """
+    if given.shape[1] == 1 and given.shape[0] > 1:
+        step = np.diff(given[:, 0])
+        if not (np.all(step >= 0.0) or np.all(step <= 0.0)):
+            order = np.argsort(given[:, 0], kind="stable")
+            given, mask = given[order], mask[order]
     idx = np.flatnonzero(mask)
     if idx.size == 0:
         return ""
