@@ -1018,9 +1018,8 @@ def _radial(rods: int) -> assur.Mechanism:
     return assur.loads("\n".join(lines) + "\n")
 
 
-def test_a_failing_search_does_not_grow_sets_past_a_part_held_too_often(monkeypatch):
-    # the master rod pinned twice can be in no group; every set of up to eight
-    # links around it was grown and tested: 44 s to the error with 20 rods
+def _sets_tested(monkeypatch, mech: assur.Mechanism) -> tuple[list, str]:  # type: ignore[type-arg]
+    """Return the sets of links the search tested, and the error its failure gave."""
     tested = []
     is_group = search._is_group
 
@@ -1031,8 +1030,15 @@ def test_a_failing_search_does_not_grow_sets_past_a_part_held_too_often(monkeypa
     monkeypatch.setattr(search, "_is_group", counting)
     _structure._DECOMPOSED.clear()
     with pytest.raises(DecompositionError) as caught:
-        assur.structure(_radial(20))
-    assert "joints B and B2 both join crank and master" in str(caught.value)
+        assur.structure(mech)
+    return tested, str(caught.value)
+
+
+def test_a_failing_search_does_not_grow_sets_past_a_part_held_too_often(monkeypatch):
+    # the master rod pinned twice can be in no group; every set of up to eight
+    # links around it was grown and tested: 44 s to the error with 20 rods
+    tested, error = _sets_tested(monkeypatch, _radial(20))
+    assert "joints B and B2 both join crank and master" in error
     # sets holding the master rod are tested as pairs with a neighbour, not grown
     assert max((len(s) for s in tested if "master" in s), default=0) <= 2
     assert len(tested) < 200
@@ -1060,16 +1066,6 @@ def test_a_failing_search_does_not_grow_sets_that_cannot_close(monkeypatch):
     # every connected set of up to eight links around the hub was grown and tested
     # (170,000 sets, 6 s of CPU with 16 spokes): none can reach 3k = 2p, for no link
     # it could take brings more constraints than freedoms
-    tested = []
-    is_group = search._is_group
-
-    def counting(index, subset, known):  # type: ignore[no-untyped-def]
-        tested.append(subset)
-        return is_group(index, subset, known)
-
-    monkeypatch.setattr(search, "_is_group", counting)
-    _structure._DECOMPOSED.clear()
-    with pytest.raises(DecompositionError) as caught:
-        assur.structure(_hub(16))
-    assert "joints D and G0 both join v0 and ground" in str(caught.value)
+    tested, error = _sets_tested(monkeypatch, _hub(16))
+    assert "joints D and G0 both join v0 and ground" in error
     assert len(tested) < 100
