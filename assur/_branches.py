@@ -10,7 +10,8 @@ point on the driver's straight path from the reference pose.
 
 Scanned: one driver, every dyad; a group solved by Newton's method has no branch to
 choose (its continuation follows it), and the dyads attached after it are scanned on
-the poses its continuation reaches along the grid.
+the poses its continuation reaches along the grid. Several drivers: see
+:mod:`assur._paths`.
 """
 
 from __future__ import annotations

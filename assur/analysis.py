@@ -21,6 +21,7 @@ from assur import kinetostatics as _kst
 from assur._branches import branches
 from assur._evaluate import SHORT
 from assur._loads import compile_loads
+from assur._paths import path_changes
 from assur._progress import Callback, progress
 from assur._text import counted, describe, position_text
 from assur._vec import Array, Mask, gather, is_array
@@ -222,7 +223,7 @@ def _sweep(
     # the drivers' columns alone need none of the links' motions or reactions kept
     keep = names is None or any(c.family not in DRIVERS_ONLY for c in chosen.columns)
     troubles: list[Any] = []
-    passed = _change_points(plan, drive)
+    passed = _change_points(plan, given, drive)
     what = "forces" if chosen.forces else "kinematics"
     with progress(what, n, show) as bar:
         tree = _passes(
@@ -274,7 +275,7 @@ def _passes(
     """
     n = drive.shape[0]
     loads = compile_loads(plan) if with_forces else None
-    branch_of = (lambda at: branches(plan, at)[0]) if passed else None
+    branch_of = _branch_of(plan) if passed else None
 
     def pieces() -> Iterator[tuple[slice, Any]]:
         for start in range(0, max(n, 1), CHUNK):  # an empty sweep has one slice
@@ -460,8 +461,10 @@ def _owners(plan: Plan, tree: Any) -> list[tuple[str, Any]]:
     return out
 
 
-def _change_points(plan: Plan, drive: Array) -> bool:
+def _change_points(plan: Plan, given: Array, drive: Array) -> bool:
     """Warn of the change points the sweep passes; return whether it passes any."""
+    if len(plan.drivers) > 1:
+        return _path_change_points(plan, given, drive)
     passed = branches(plan, drive)[1]
     for g, position in passed:
         d = plan.drivers[0]
@@ -474,6 +477,28 @@ def _change_points(plan: Plan, drive: Array) -> bool:
             stacklevel=4,
         )
     return bool(passed)
+
+
+def _path_change_points(plan: Plan, given: Array, drive: Array) -> bool:
+    """Warn of the change points on the positions' paths (several drivers)."""
+    count = path_changes(plan, drive).count
+    for g, c in count.items():
+        warnings.warn(
+            f"group {plan.solvers[g].label}: its two assembly branches meet on the "
+            "straight path from the reference pose to driver positions "
+            f"{_ranges(plan, given, c > 0)} (a change point); the motion is carried "
+            "through onto the branch whose velocities are continuous",
+            AssurWarning,
+            stacklevel=5,
+        )
+    return bool(count)
+
+
+def _branch_of(plan: Plan) -> _kin.BranchOf:
+    """Return the groups' branches past change points as a function of position."""
+    if len(plan.drivers) > 1:
+        return lambda at: path_changes(plan, at).branch
+    return lambda at: branches(plan, at)[0]
 
 
 def _at(rates: Rates, rows: Any) -> Rates:

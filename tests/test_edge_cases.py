@@ -464,3 +464,74 @@ def test_where_it_assembles_is_told_in_order_for_positions_out_of_order():
     assert str(caught.value).endswith(
         "it assembles for 330 deg to 280 deg; 45 deg to 40 deg"
     ), str(caught.value)
+
+
+# ------------------------------------------------------------------------------------
+# Change points on the straight paths of two drivers
+
+
+FIVE_PARALLELOGRAM = EDGE / "five_bar_parallelogram.toml"
+
+
+@pytest.mark.parametrize(
+    "angles",
+    [
+        np.repeat(np.arange(60.0, 421.0, 45.0)[:, None], 2, axis=1),
+        np.array([[195.0, -30.0], [-170.0, 400.0], [425.0, 95.0], [-250.0, 60.0]]),
+        np.stack(np.meshgrid(np.arange(-300.0, 400.0, 41.0), [-90.0, 120.0, 500.0]))
+        .reshape(2, -1)
+        .T,
+    ],
+    ids=["together", "apart", "grid"],
+)
+def test_a_dyad_on_two_cranks_stays_a_parallelogram(angles):
+    """With two drivers the change points were not looked for: the sweep switched
+    to an antiparallelogram past 180 deg without a word (po.omega -19.03 rad/s at
+    195 deg for the crank's 10) and back past 360 deg."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        table = assur.kinematics(assur.load(FIVE_PARALLELOGRAM), angles)
+    said = [str(w.message) for w in caught]
+    assert len(said) == 1, said
+    assert said[0].startswith(
+        "group RRR (pc, po): its two assembly branches meet on the straight path "
+        "from the reference pose to driver positions "
+    )
+    # po stays parallel to the crank's A-H: it turns as the crank does
+    np.testing.assert_allclose(table["po.omega"], 10.0, rtol=1e-9)
+    np.testing.assert_allclose(table["po.alpha"], 0.0, atol=1e-6)
+    gap = (table["po.angle"] - table["left_crank.angle"] + 180.0) % 360.0 - 180.0
+    np.testing.assert_allclose(gap, 0.0, atol=1e-6)
+
+
+def test_the_warning_names_the_positions_whose_path_meets_a_change_point():
+    """60 and 150 deg are reached from 60 deg without passing 180 deg; 195 deg
+    and beyond are not."""
+    angles = np.repeat(np.arange(60.0, 421.0, 45.0)[:, None], 2, axis=1)
+    with pytest.warns(assur.AssurWarning) as caught:
+        assur.kinematics(assur.load(FIVE_PARALLELOGRAM), angles)
+    (message,) = [str(w.message) for w in caught]
+    assert "driver positions 195 deg, 195 deg to 420 deg, 420 deg (a change point)" in (
+        message
+    )
+
+
+def test_a_five_bar_without_change_points_is_quiet_and_unchanged():
+    """The two-crank five-bar's rods never line up: nothing changes branch, and its
+    numbers are those of before the paths were scanned."""
+    angles = [[60, 120], [200, -30], [-170, 400], [425, 95], [359.5, 0.5]]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        table = assur.kinematics(
+            assur.load(EXAMPLES / "five_bar_two_cranks.toml"), angles
+        )
+    # C.x, C.y (m) and left_rod.omega (rad/s) at each position
+    want = [
+        [0.075, 0.14129466118988526, -3.6363636363636349],
+        [0.0748116039182648, 0.02834770117108968, 2.784079139125752],
+        [0.06401067182693168, 0.05394597156943192, 5.7738812476720129],
+        [0.07890902265289888, 0.1389921175492778, -1.3584105490595861],
+        [0.11456250709743848, 0.09367330508974633, 0.037479502265329513],
+    ]
+    got = np.stack([table["C.x"], table["C.y"], table["left_rod.omega"]], axis=1)
+    np.testing.assert_allclose(got, want, rtol=1e-12)

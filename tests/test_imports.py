@@ -45,6 +45,7 @@ RANKS = {
     "assur._friction": 5,
     "assur._kinematics": 5,
     "assur._branches": 6,
+    "assur._paths": 6,
     "assur.kinetostatics": 6,
     "assur.columns": 7,
     "assur._evaluate": 7,
