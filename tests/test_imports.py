@@ -43,6 +43,7 @@ RANKS = {
     "assur.plan": 4,
     "assur._loads": 5,
     "assur._friction": 5,
+    "assur._follow": 5,
     "assur._kinematics": 5,
     "assur._branches": 6,
     "assur._paths": 6,
