@@ -48,8 +48,9 @@ CHUNK = 8192
 class Trouble:
     """Driver positions (``mask``) where a group met trouble.
 
-    Group ``group`` failed (``what``: "assembly", "singular") or came near a dead
-    centre ("near").
+    Group ``group`` failed (``what``: "assembly", "singular"), came near a dead
+    centre ("near") or was reached the other way round the crank's circle ("other
+    way": the short way its branch folds before the position).
     """
 
     group: str
@@ -154,17 +155,18 @@ def solve(
     troubles met; positions that fail hold NaN.
     """
     n = drive.shape[0]
-    guesses = continuation(plan, drive, branch_of) if plan.newton else None
+    guesses, around = _continued(plan, drive, branch_of) if plan.newton else ([], [])
     branch = {} if branch_of is None else branch_of(drive)
     bodies = drivers(plan, drive, speed, acceleration)
     troubles: list[Trouble] = []
     g = 0
     for index, solver in enumerate(plan.solvers):
-        guess = None
+        guess = turned = None
         if solver.newton:
-            assert guesses is not None
-            guess, g = guesses[g], g + 1
+            guess, turned, g = guesses[g], around[g], g + 1
         failed = solver.assemble(bodies, n, guess, branch.get(index)).failed
+        if turned is not None and (turned & ~failed).any():
+            troubles.append(Trouble(solver.label, "other way", turned & ~failed))
         lin = solver.linearize(bodies)
         # a failed pose has no conditioning (NaN): it is below no threshold
         low = lin.conditioning < solver.near
@@ -192,19 +194,33 @@ def continuation(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[A
     pose; a crank position that path cannot reach (the group does not assemble
     somewhere on the way) is tried again the other way round the circle.
     """
+    return _continued(plan, drive, branch_of)[0]
+
+
+def _continued(
+    plan: Plan, drive: Array, branch_of: BranchOf | None
+) -> tuple[list[Any], list[Mask]]:
+    """Return :func:`continuation`'s poses and where each group went the other way.
+
+    The masks (n,), one per Newton group, mark the positions reached the other way
+    round the circle.
+    """
     guesses = _walk(plan, drive, branch_of)
+    n = drive.shape[0]
+    around = [np.zeros(n, dtype=bool) for _ in guesses]
     if len(plan.drivers) != 1 or plan.drivers[0].kind != "R" or not guesses:
-        return guesses
-    failed = np.zeros(drive.shape[0], dtype=bool)
+        return guesses, around
+    failed = np.zeros(n, dtype=bool)
     for group in guesses:
         failed |= ~np.isfinite(group[0][0])
     if not failed.any():
-        return guesses
+        return guesses, around
     gap = drive[failed] - plan.drivers[0].reference
     retry = _walk(
         plan, drive[failed] - 2.0 * math.pi * np.where(gap >= 0, 1.0, -1.0), branch_of
     )
-    for group, again in zip(guesses, retry, strict=True):
+    for group, again, turned in zip(guesses, retry, around, strict=True):
+        turned[failed] = ~np.isfinite(group[0][0][failed]) & np.isfinite(again[0][0])
         for i, (pose, other) in enumerate(zip(group, again, strict=True)):
             merged = []
             for value, alternative in zip(pose, other, strict=True):
@@ -214,7 +230,7 @@ def continuation(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[A
                 )
                 merged.append(value)
             group[i] = tuple(merged)
-    return guesses
+    return guesses, around
 
 
 def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:

@@ -394,7 +394,7 @@ def _unexplained(
         return
     explained = np.zeros(given.shape[0], dtype=bool)
     for trouble in found:
-        if trouble.what != "near":
+        if trouble.what not in NOTICES:
             explained |= trouble.mask
     owners = _owners(plan, tree)
     bad = np.zeros(given.shape[0], dtype=bool)
@@ -687,12 +687,13 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
         return None
     n = given.shape[0]
     ok = np.ones(n, dtype=bool)
-    near: dict[str, Mask] = {}
+    notices: dict[tuple[str, str], Mask] = {}
     for trouble, start in troubles:
         mask = np.zeros(n, dtype=bool)
         mask[start : start + trouble.mask.shape[0]] = trouble.mask
-        if trouble.what == "near":
-            near[trouble.group] = near.get(trouble.group, mask) | mask
+        if trouble.what in NOTICES:
+            key = (trouble.what, trouble.group)
+            notices[key] = notices.get(key, mask) | mask
             continue
         if not skip:
             # every slice's positions of this trouble: the counts are the sweep's
@@ -729,9 +730,9 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
             )
             raise SingularConfigurationError(msg)
         ok &= ~mask
-    for group, mask in near.items():
+    for (what, group), mask in notices.items():
         mask &= ok
-        if mask.any():
+        if mask.any() and what == "near":
             warnings.warn(
                 f"group {group}: near a dead centre (within about 2 degrees of "
                 f"transmission angle 0 or 180) at driver positions "
@@ -739,7 +740,56 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                 AssurWarning,
                 stacklevel=4,
             )
+        elif what == "other way" and (mask & _short_way(plan, given)).any():
+            mask &= _short_way(plan, given)
+            warnings.warn(_around(plan, given, group, mask, ok), AssurWarning, 4)
     return None if ok.all() else ok
+
+
+NOTICES = frozenset({"near", "other way"})
+"""Troubles that are told, not failures: near a dead centre, reached the other way."""
+
+
+def _short_way(plan: Plan, given: Array) -> Mask:
+    """Return where a crank's angle as given turns the way of its short path.
+
+    The short path from the reference pose is the way a position reached the other
+    way round did not go.
+
+    -145.5 deg given for a reference pose at 60 deg asks for the way back, and is
+    not said to be reached the other way when it is reached that way round.
+    """
+    gap = given[:, 0] - math.degrees(plan.drivers[0].reference)
+    short = np.remainder(gap + 180.0, 360.0) - 180.0
+    return np.sign(gap) == np.sign(short)  # type: ignore[no-any-return]
+
+
+def _around(plan: Plan, given: Array, group: str, mask: Mask, ok: Mask) -> str:
+    """Return the warning of positions reached the other way round the circle.
+
+    Names, on each side of the reference pose, the last position reached the short
+    way and the first that is not (the group's branch folds between them).
+    """
+    reference = math.degrees(plan.drivers[0].reference)
+    ahead = np.remainder(given[:, 0] - reference + 180.0, 360.0) - 180.0
+    limits = []
+    for side in (1.0, -1.0):
+        far = mask & (ahead * side > 0.0)
+        if not far.any():
+            continue
+        first = np.flatnonzero(far)[np.argmin(ahead[far] * side)]
+        near = ok & ~mask & (ahead * side >= 0.0) & (ahead * side < ahead[first] * side)
+        stop = f"before {_where(plan, given[first])}"
+        if near.any():
+            last = np.flatnonzero(near)[np.argmax(ahead[near] * side)]
+            stop = f"between {_where(plan, given[last])} and {stop[7:]}"
+        limits.append(stop)
+    return (
+        f"group {group}: driver positions {_ranges(plan, given, mask)} are reached "
+        "turning the other way round from the reference pose "
+        f"({_where(plan, np.array([reference]))}); the group cannot follow the crank "
+        f"to them the short way (its branch folds {' and '.join(limits)})"
+    )
 
 
 def _all_failures(
@@ -751,7 +801,7 @@ def _all_failures(
     """
     bad = np.zeros(n, dtype=bool)
     for trouble, start in troubles:
-        if trouble.what == "near" or (group is not None and trouble.group != group):
+        if trouble.what in NOTICES or (group is not None and trouble.group != group):
             continue
         if what is None or trouble.what == what:
             bad[start : start + trouble.mask.shape[0]] |= trouble.mask

@@ -382,9 +382,13 @@ def test_a_triad_near_a_change_point_keeps_to_its_branch(angles):
     (joint C 7.6 mm off at 100 deg, 55 mm at 150 deg, without a word), and a dense
     sweep said that 99.25 deg cannot be assembled."""
     oracle = _triad_oracle(angles.tolist())
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
         table = assur.kinematics(assur.load(NEAR), angles)
+    # the positions past the fold at 214.3 deg are reached the other way, and said
+    said = [str(w.message) for w in caught]
+    assert all("reached turning the other way round" in s for s in said), said
+    assert len(said) == int(np.any((angles > 214.3) & (angles < 240.0)))
     want = np.array([oracle[a] for a in angles.tolist()])
     np.testing.assert_allclose(table["C.x"], want[:, 0], rtol=0, atol=1e-9)
     np.testing.assert_allclose(table["C.y"], want[:, 1], rtol=0, atol=1e-9)
@@ -395,11 +399,38 @@ def test_a_triad_near_a_change_point_keeps_to_its_branch(angles):
 def test_a_triad_near_a_change_point_folds_where_the_oracle_does():
     """214 deg is on the branch the forward way; 214.5 deg lies past its fold and
     is reached the other way round (as -145.5 deg), as the oracle finds."""
-    table = assur.kinematics(assur.load(NEAR), [214.0, 214.5, -145.5])
+    with pytest.warns(assur.AssurWarning, match=r"positions 214\.5 deg are reached"):
+        table = assur.kinematics(assur.load(NEAR), [214.0, 214.5, -145.5])
     path = _triad_path([214.0, 214.5, -145.5])
     assert 214.5 not in path
     want = [path[214.0][0], path[-145.5][0], path[-145.5][0]]
     np.testing.assert_allclose(table["C.x"], want, rtol=0, atol=1e-9)
+
+
+@pytest.mark.parametrize("step", [1.0, 0.04])
+def test_positions_reached_the_other_way_round_are_said_once(step):
+    """A one-degree sweep got 215 deg as -145 deg, on the backward path, past the
+    forward path's fold at 214.3 deg: the poses jumped between 214 and 215 deg
+    without a word. Said once, for a sweep of several slices too (0.04 deg)."""
+    angles = np.arange(0.0, 360.0, step)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        table = assur.kinematics(assur.load(NEAR), angles)
+    said = [str(w.message) for w in caught]
+    assert len(said) == 1, said
+    first = angles[angles > 214.3][0]
+    last = angles[angles < 240.0][-1]
+    below = angles[angles < 214.3][-1]
+    assert said[0] == (
+        "group triad (rod, plate, left_rocker, right_rocker): driver positions "
+        f"{first:g} deg to {last:g} deg are reached turning the other way round from "
+        "the reference pose (60 deg); the group cannot follow the crank to them the "
+        f"short way (its branch folds between {below:g} deg and {first:g} deg)"
+    )
+    # the numbers are those of the backward path, as before
+    other = assur.kinematics(assur.load(NEAR), [first - 360.0])
+    row = np.flatnonzero(angles == first)[0]
+    np.testing.assert_allclose(table["C.x"][row], other["C.x"][0], rtol=0, atol=1e-12)
 
 
 @pytest.mark.parametrize("step", [45.0, 1.0, 0.5, 0.013])
