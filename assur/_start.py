@@ -73,7 +73,10 @@ def _command_line() -> bool:
         return _module_run() in ("assur", "assur.__main__")
     main = sys.modules.get("__main__")
     path = getattr(main, "__file__", None)
-    if not isinstance(path, str) or path != first or os.path.basename(path) != SCRIPT:
+    if not isinstance(path, str) or os.path.basename(path) != SCRIPT:
+        return False
+    # __main__.__file__ is absolute, sys.argv[0] as typed (bin/assur, ./assur)
+    if os.path.abspath(first) != os.path.abspath(path):
         return False
     try:
         with open(path, "rb") as script:

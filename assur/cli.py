@@ -216,7 +216,8 @@ def main(argv: Sequence[str] | None = None) -> int:
 
 
 RESEND = 0.5
-"""Seconds after which SIGTERM or SIGHUP is sent again while the command still runs."""
+"""Seconds after which SIGTERM or SIGHUP is sent again when Python ignored the
+exception it raised."""
 
 
 class _Stopped(BaseException):
@@ -242,21 +243,22 @@ def _stoppable() -> Iterator[None]:
     again: list[threading.Timer] = []
 
     def stop(signum: int, frame: Any) -> None:
-        # an exception raised where Python ignores it (a __del__ or a weakref
-        # callback of matplotlib's) would leave the command running: the signal
-        # comes again shortly, until one lands where it unwinds the command
-        timer = threading.Timer(RESEND, os.kill, (os.getpid(), signum))
-        timer.daemon = True
-        again.append(timer)
-        timer.start()
         raise _Stopped(signum)
 
     previous = sys.unraisablehook
 
     def unraised(unraisable: Any) -> None:
-        # a stop that could not unwind the command is sent again: no report of it
-        if not isinstance(unraisable.exc_value, _Stopped):
+        stopped = unraisable.exc_value
+        if not isinstance(stopped, _Stopped):
             previous(unraisable)
+            return
+        # raised where Python ignores an exception (a __del__, a weakref callback
+        # of matplotlib's), the stop left the command running: it comes again
+        # shortly, unreported, until one lands where it unwinds the command
+        timer = threading.Timer(RESEND, os.kill, (os.getpid(), stopped.signum))
+        timer.daemon = True
+        again.append(timer)
+        timer.start()
 
     saved = {}
     for name in ("SIGTERM", "SIGHUP"):

@@ -50,6 +50,9 @@ TIME_LIMIT = 30.0
 CPU time, not the clock's: on a machine busy with other work a case takes the
 same CPU time but several times the wall time (the slowest fixed case takes about
 6 s of CPU here, and took 13 s of wall time at a load of 6 on 2 cores)."""
+WAIT_FACTOR = 10.0
+"""A case that waits (a lock, a read, a sleep) spends no CPU time: it counts as a
+hang after this many times :data:`TIME_LIMIT` of the clock's time."""
 MAX_MESSAGE = 400
 """Longest acceptable error message, characters."""
 DYNAMICS_ANGLES = tuple(range(0, 360, 30))
@@ -129,8 +132,8 @@ def run_case(text: str, time_limit: float | None = TIME_LIMIT) -> Outcome:
 
 @contextlib.contextmanager
 def _time_limit(seconds: float | None) -> Iterator[None]:
-    """Raise :class:`Hang` after ``seconds`` of CPU time (main thread only, else no
-    limit)."""
+    """Raise :class:`Hang` after ``seconds`` of CPU time, or :data:`WAIT_FACTOR`
+    times as long by the clock (main thread only, else no limit)."""
     if seconds is None or threading.current_thread() is not threading.main_thread():
         yield
         return
@@ -138,13 +141,20 @@ def _time_limit(seconds: float | None) -> Iterator[None]:
     def handler(signum: int, frame: Any) -> None:
         raise Hang
 
-    old = signal.signal(signal.SIGPROF, handler)
-    signal.setitimer(signal.ITIMER_PROF, seconds)
+    # CPU time for work that spins; the clock, far longer, for work that waits
+    timers = (
+        (signal.SIGPROF, signal.ITIMER_PROF, seconds),
+        (signal.SIGALRM, signal.ITIMER_REAL, WAIT_FACTOR * seconds),
+    )
+    saved = [signal.signal(number, handler) for number, _, _ in timers]
+    for _, timer, limit in timers:
+        signal.setitimer(timer, limit)
     try:
         yield
     finally:
-        signal.setitimer(signal.ITIMER_PROF, 0)
-        signal.signal(signal.SIGPROF, old)
+        for (number, timer, _), old in zip(timers, saved, strict=True):
+            signal.setitimer(timer, 0)
+            signal.signal(number, old)
 
 
 def _pipeline(text: str, stage: list[str], caught: list[Any]) -> Outcome:

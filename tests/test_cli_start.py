@@ -74,11 +74,14 @@ def test_ctrl_c_while_python_m_assur_loads_is_one_line(tmp_path: Path):
     assert not (tmp_path / "out.csv").exists()
 
 
-def test_ctrl_c_while_the_assur_script_loads_is_one_line(tmp_path: Path):
+@pytest.mark.parametrize("typed", ["absolute", "bin/assur", "./bin/assur"])
+def test_ctrl_c_while_the_assur_script_loads_is_one_line(tmp_path: Path, typed: str):
+    # the script named as the shell was given it: a relative name was not known
     script = tmp_path / "bin" / "assur"
     script.parent.mkdir()
     script.write_text(SCRIPT.format(python=sys.executable), encoding="utf-8")
-    result = run(tmp_path, str(script), "forces", str(SLIDER), "--csv", "out.csv")
+    name = str(script) if typed == "absolute" else typed
+    result = run(tmp_path, name, "forces", str(SLIDER), "--csv", "out.csv")
     assert (result.returncode, result.stderr) == (130, "assur: interrupted\n")
     assert not (tmp_path / "out.csv").exists()
 

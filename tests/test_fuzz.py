@@ -229,6 +229,18 @@ def test_a_hang_is_a_failure(monkeypatch):
     assert outcome.signature.startswith("hang in structure")
 
 
+def test_a_case_that_waits_is_a_hang_too(monkeypatch):
+    # waiting spends no CPU time: the clock's limit, ten times longer, ends it
+    def waiting(mech):
+        time.sleep(30)
+
+    monkeypatch.setattr(assur, "structure", waiting)
+    started = time.monotonic()
+    outcome = run_case(bases()[0][1], time_limit=0.1)
+    assert outcome.signature.startswith("hang in structure")
+    assert time.monotonic() - started < 20.0
+
+
 def test_a_stray_warning_is_a_failure(monkeypatch):
     real = assur.structure
 
