@@ -122,10 +122,10 @@ def zhukovsky_lever(
     forces ``M / l`` and ``-M / l`` across the link's two joints farthest apart, at
     their images (a link without two joints apart has its couple listed only).
     Beside the lever every load's moment about the pole divided by the driver's
-    speed is listed (:func:`lever_moments`): the terms add up to the balancing load
-    of driver ``driver`` written below them (friction's power in; see
-    :func:`lever_balance`). With several drivers, or a driver standing still, the
-    plan is that of the velocities per unit speed of the driver.
+    speed is listed (``assur.plotting.lever.lever_moments``): the terms add up to
+    the balancing load of driver ``driver`` written below them (friction's power
+    in; see ``lever_balance``). With several drivers, or a driver standing still,
+    the plan is that of the velocities per unit speed of the driver.
 
     Returns
     -------
@@ -134,7 +134,7 @@ def zhukovsky_lever(
     Raises
     ------
     ModelError, UsageError
-        As :func:`lever_balance`.
+        As ``lever_balance``.
     """
     pos = _lever_position(table, angle, driver, "zhukovsky_lever")
     bodies, speed, _ = lever_rates(pos, driver)
