@@ -280,21 +280,9 @@ def _passes(
     def pieces() -> Iterator[tuple[slice, Any]]:
         for start in range(0, max(n, 1), CHUNK):  # an empty sweep has one slice
             rows = slice(start, min(start + CHUNK, n))
-            part = _at(rates, rows)
-            # failed or dead-centre positions carry NaN through; _report names them
-            with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-                bodies, found = _kin.solve(
-                    plan, drive[rows], *part, top=top, branch_of=branch_of
-                )
-                kin = _kin.state_of(plan, bodies, drive[rows], part, top)
-                fields = None
-                if loads is not None:
-                    forces, result = _kst.solve(plan, loads, bodies, kin)
-                    fields = forces.fields()
-                    found += [
-                        _kin.Trouble(label, "locked", mask)
-                        for label, mask in result.locked
-                    ]
+            kin, fields, found = _solve_slice(
+                plan, drive[rows], _at(rates, rows), top, loads, branch_of
+            )
             troubles.extend((t, start) for t in found)
             _unexplained(plan, given[rows], (kin.motion, kin.slide, fields), found, top)
             bar.advance(rows.stop - rows.start)
@@ -307,6 +295,29 @@ def _passes(
                 yield rows, ((), {}, kept)
 
     return gather(n, pieces())
+
+
+def _solve_slice(
+    plan: Plan,
+    drive: Array,
+    rates: Rates,
+    top: int,
+    loads: Any,
+    branch_of: _kin.BranchOf | None,
+) -> tuple[_kin.KinematicState, Any, list[Any]]:
+    """Solve one slice of a sweep; return its state, force fields and troubles."""
+    # failed or dead-centre positions carry NaN through; _report names them
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        bodies, found = _kin.solve(plan, drive, *rates, top=top, branch_of=branch_of)
+        kin = _kin.state_of(plan, bodies, drive, rates, top)
+        fields = None
+        if loads is not None:
+            forces, result = _kst.solve(plan, loads, bodies, kin)
+            fields = forces.fields()
+            found += [
+                _kin.Trouble(label, "locked", mask) for label, mask in result.locked
+            ]
+    return kin, fields, found
 
 
 def _states(
