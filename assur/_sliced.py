@@ -190,23 +190,13 @@ def _raise_as_whole(
 ) -> NoReturn:
     """Raise the error of the whole sweep: its counts and ranges cover every position.
 
-    Only the positions are solved again (no velocities, no forces), for the whole
-    sweep at once; with ``forces`` (friction that locks), the balancing loads alone.
+    Only the positions are solved again (no velocities, no forces), with ``forces``
+    (friction that locks) the balancing loads too, slice by slice: memory stays that
+    of one slice and a byte a position.
     """
-    from assur.analysis import forces as force_table
-    from assur.analysis import kinematics
+    from assur.analysis import report_troubles
 
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        if forces:
-            force_table(
-                mech,
-                given,
-                skip_unassembled=skip,
-                columns=balancing_columns(plan_of(mech)),
-            )
-        else:
-            kinematics(mech, given, skip_unassembled=skip, columns=["angle"])
+    report_troubles(mech, given.reshape(len(given), -1), forces, skip)
     raise err  # pragma: no cover - the whole sweep fails where a slice did
 
 

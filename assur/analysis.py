@@ -25,7 +25,7 @@ from assur._paths import path_changes
 from assur._progress import Callback, progress
 from assur._text import counted, describe, position_text
 from assur._vec import Array, Mask, gather, is_array
-from assur.columns import selection
+from assur.columns import balancing_columns, selection
 from assur.errors import (
     AssemblyError,
     AssurWarning,
@@ -318,6 +318,48 @@ def _solve_slice(
                 _kin.Trouble(label, "locked", mask) for label, mask in result.locked
             ]
     return kin, fields, found
+
+
+def report_troubles(
+    mech: Mechanism, given: Array, with_forces: bool, skip: bool
+) -> None:
+    """Raise the error of a sweep as :func:`kinematics` or :func:`forces` raise it.
+
+    ``given`` (n, drivers) holds valid driver positions as given (deg or m), the
+    drivers' rates are the file's. Only the positions are solved (with
+    ``with_forces``, the balancing loads too: friction may lock), in the slices
+    of a sweep, keeping no more than each failure's mask (a byte a position): the
+    message names the whole sweep's counts and ranges in the memory of one slice.
+    Returns when nothing fails (or ``skip`` leaves the failures out); warns of
+    nothing.
+    """
+    plan = plan_of(mech)
+    n = given.shape[0]
+    chosen = selection(
+        plan, with_forces, balancing_columns(plan) if with_forces else ["angle"]
+    )
+    rates = driver_rates(plan, None, None, n)
+    loads = compile_loads(plan) if chosen.forces else None
+    starts = range(0, n, CHUNK)
+    troubles: list[Any] = []
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", AssurWarning)
+        # a sweep passes a change point where one of its slices does (each slice's
+        # range takes in the reference pose); each position's branch is its own
+        passed = any(
+            _change_points(
+                plan, given[a : a + CHUNK], to_si(plan, given[a : a + CHUNK])
+            )
+            for a in starts
+        )
+        branch_of = _branch_of(plan) if passed else None
+        for a in starts:
+            rows = slice(a, min(a + CHUNK, n))
+            drive = to_si(plan, given[rows])
+            part = _at(rates, rows)
+            _, _, found = _solve_slice(plan, drive, part, chosen.top, loads, branch_of)
+            troubles += [(t, a) for t in found if t.what not in NOTICES]
+    _report(plan, given, troubles, skip)
 
 
 def _states(
