@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 import warnings
@@ -204,6 +205,45 @@ def test_a_failure_in_a_later_slice_is_reported_for_the_whole_sweep(
         )
         assert (status, out) == (2, "")
         assert "of 20001 positions fail" in err
+
+
+@pytest.mark.parametrize(
+    ("command", "spec", "friction"),
+    [
+        ("kinematics", "0:720:0.02", None),  # two runs fail, in three slices
+        ("forces", "150:359:0.005", 1.5),  # locked in two slices
+    ],
+)
+def test_a_failure_over_several_slices_is_counted_as_the_whole_sweep(
+    small_slices, tmp_path, capsys, command, spec, friction
+):
+    # the sweep is solved again slice by slice for its message, keeping only where
+    # each slice fails: the counts and ranges are the whole sweep's all the same
+    if friction is None:
+        # cannot be assembled from about 112 to 248 deg
+        mech = assur.catalog.four_bar(
+            crank=0.06, coupler=0.07, rocker=0.0645, frame=0.1, angle=30.0
+        )
+        path = tmp_path / "four_bar.toml"
+        assur.save(mech, path)
+    else:
+        text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+        path = tmp_path / "locks.toml"
+        path.write_text(text.replace("friction = 0.8", f"friction = {friction}"))
+    mech = assur.load(path)
+    given = parse_angles(spec)
+    analyse = assur.forces if command == "forces" else assur.kinematics
+    with pytest.raises(assur.AssurError) as whole:
+        analyse(mech, given)
+    failing = re.search(r"\((\d+) of \d+ positions", str(whole.value))
+    assert failing is not None
+    assert int(failing[1]) > 8192  # more than one of the library's slices
+    status, out, err = run(
+        capsys, command, path, "--angles", spec, "--csv", tmp_path / "t.csv"
+    )
+    assert (status, out) == (2, "")
+    assert err == f"assur: error: {path}: {whole.value}\n"
+    assert f"of {len(given)} positions" in err
 
 
 def test_the_readable_table_of_a_long_sweep(small_slices, capsys):
