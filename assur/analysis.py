@@ -873,16 +873,21 @@ def _ranges(plan: Plan, given: Array, mask: Mask) -> str:
     is then of neighbours among all the positions given.
     """
     if given.shape[1] == 1 and given.shape[0] > 1:
-        step = np.diff(given[:, 0])
-        if not (np.all(step >= 0.0) or np.all(step <= 0.0)):
-            order = np.argsort(given[:, 0], kind="stable")
+        x = given[:, 0]
+        # compared in place: a long sweep's steps would take 8 bytes a position
+        if not (np.all(x[1:] >= x[:-1]) or np.all(x[1:] <= x[:-1])):
+            order = np.argsort(x, kind="stable")
             given, mask = given[order], mask[order]
-    idx = np.flatnonzero(mask)
-    if idx.size == 0:
+    if not mask.any():
         return ""
-    breaks = np.flatnonzero(np.diff(idx) > 1)
-    starts = np.r_[idx[0], idx[breaks + 1]]
-    ends = np.r_[idx[breaks], idx[-1]]
+    # the runs' ends alone, not the index of every position in them
+    edges = np.flatnonzero(mask[1:] != mask[:-1]) + 1
+    starts = edges[mask[edges]]
+    ends = edges[~mask[edges]] - 1
+    if mask[0]:
+        starts = np.r_[0, starts]
+    if mask[-1]:
+        ends = np.r_[ends, mask.shape[0] - 1]
     runs = []
     for a, b in zip(starts, ends, strict=True):
         first, last = _where(plan, given[a]), _where(plan, given[b])
