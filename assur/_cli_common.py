@@ -252,10 +252,15 @@ def given(text: str) -> str:
     argparse.ArgumentTypeError
         For an empty name.
     """
+    return _named(text, "file")
+
+
+def _named(text: str, what: str) -> str:
+    """Return ``text``; an empty one is refused as a ``what`` name (argparse)."""
     import argparse
 
     if text == "":
-        raise argparse.ArgumentTypeError(EMPTY_NAME.format(what="file"))
+        raise argparse.ArgumentTypeError(EMPTY_NAME.format(what=what))
     return text
 
 
@@ -290,11 +295,7 @@ def folder(text: str) -> Path:
     An empty name was the current folder, whose old pictures of the same names
     were then replaced (and the stale ones of a set removed).
     """
-    import argparse
-
-    if text == "":
-        raise argparse.ArgumentTypeError(EMPTY_NAME.format(what="folder"))
-    return Path(text)
+    return Path(_named(text, "folder"))
 
 
 def is_stdout(path: Any) -> bool:
