@@ -19,11 +19,12 @@ import numpy as np
 from assur import _kinematics as _kin
 from assur import kinetostatics as _kst
 from assur._branches import CANDIDATE, STEP, TURNS
+from assur._drive import EXACT_DEGREES, driver_rates, to_si
 from assur._loads import compile_loads
 from assur._stack import restack, stack_loads, stack_plans
 from assur._variants import Many
 from assur._vec import Array, Mask, is_array, leaves
-from assur.analysis import CHUNK, EXACT_DEGREES, driver_rates, to_si
+from assur.analysis import CHUNK
 from assur.columns import selection
 from assur.plan import Plan
 from assur.summary import Summary
@@ -101,7 +102,7 @@ def summaries(
 def _drive(first: Plan, references: Array, given: Array) -> Array:
     """Return the driver positions of every variant in turn, rad (see ``to_si``).
 
-    Angles below :data:`~assur.analysis.EXACT_DEGREES` are converted as they are, the
+    Angles below :data:`~assur._drive.EXACT_DEGREES` are converted as they are, the
     same for every variant; larger ones are reduced about each variant's reference.
     """
     if not first.newton and np.all(np.abs(given) < EXACT_DEGREES):

@@ -20,8 +20,8 @@ from typing import Any, NoReturn
 import numpy as np
 
 from assur._output import path_text
+from assur._troubles import SKIPPED_WHY
 from assur._vec import Array, full
-from assur.analysis import SKIPPED_WHY
 from assur.columns import balancing_columns
 from assur.errors import (
     AssemblyError,

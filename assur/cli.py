@@ -48,8 +48,8 @@ from assur._output import (
 )
 from assur._sliced import Skipped, Slice, slices
 from assur._text import describe, number_text, suggest
+from assur._troubles import SKIPPED_WHY
 from assur._vec import Array
-from assur.analysis import SKIPPED_WHY
 from assur.errors import (
     AssurError,
     AssurWarning,

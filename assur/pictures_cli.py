@@ -35,7 +35,7 @@ from assur._cli_common import (
 )
 from assur._output import output_folder, output_path, path_text
 from assur._text import counted, describe
-from assur.analysis import SKIPPED_WHY
+from assur._troubles import SKIPPED_WHY
 from assur.errors import AssemblyError, AssurError, AssurWarning, UsageError
 from assur.plotting._style import titled
 

@@ -23,12 +23,13 @@ from typing import Any
 import numpy as np
 
 from assur._batch import CHUNK, near_change_points, stacked, summaries
+from assur._drive import positions
 from assur._loads import compile_loads
 from assur._stack import Unstackable, signature
 from assur._text import suggest
 from assur._variants import Template, compile_many, form, numbers, template
 from assur._vec import Array, integer
-from assur.analysis import forces, positions
+from assur.analysis import forces
 from assur.errors import AssurError, AssurWarning, UsageError
 from assur.model import Mechanism
 from assur.plan import Plan, compile_plan

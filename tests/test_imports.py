@@ -45,11 +45,15 @@ RANKS = {
     "assur._friction": 5,
     "assur._follow": 5,
     "assur._kinematics": 5,
+    # the driver positions and speeds a sweep is given, read and turned into SI units
+    "assur._drive": 5,
     "assur._branches": 6,
     "assur._paths": 6,
     "assur.kinetostatics": 6,
     "assur.columns": 7,
     "assur._evaluate": 7,
+    # a sweep's troubles: errors, positions left out, warnings (change points too)
+    "assur._troubles": 7,
     "assur.table": 8,
     "assur.summary": 8,
     "assur._stack": 6,

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from assur._drive import positions
 from assur._loads import compile_loads
-from assur.analysis import Table, forces, kinematics, positions
+from assur.analysis import Table, forces, kinematics
 from assur.errors import UsageError
 from assur.explain._position import Position, from_table
 from assur.model import Mechanism

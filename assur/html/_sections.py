@@ -14,7 +14,8 @@ import numpy as np
 
 from assur._structure import Structure
 from assur._text import roman, row_position
-from assur.analysis import SKIPPED_WHY, Table
+from assur._troubles import SKIPPED_WHY
+from assur.analysis import Table
 from assur.html._data import all_groups, public
 from assur.html._series import table_columns
 from assur.plan import Plan

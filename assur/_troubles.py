@@ -1,0 +1,315 @@
+"""What a sweep met on its way: errors raised, positions left out, warnings.
+
+The sweep's slices hand their troubles here with the start of their slice; the
+messages name the whole sweep's counts and ranges of driver positions (as given).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from typing import Any
+
+import numpy as np
+
+from assur._branches import branches
+from assur._paths import path_changes
+from assur._text import position_text
+from assur._vec import Array, Mask, is_array
+from assur.errors import (
+    AssemblyError,
+    AssurWarning,
+    SelfLockingError,
+    SingularConfigurationError,
+)
+from assur.plan import Plan
+
+SKIPPED_WHY = (
+    "where a group cannot be assembled, stands at a dead centre or is locked by "
+    "friction"
+)
+"""What the positions ``skip_unassembled`` leaves out have in common."""
+
+
+def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask | None:
+    """Raise or warn about the troubles of a sweep.
+
+    Returns the mask of the positions kept, or None when every position is.
+    """
+    if not troubles:
+        return None
+    n = given.shape[0]
+    ok = np.ones(n, dtype=bool)
+    notices: dict[tuple[str, str], Mask] = {}
+    for trouble, start in troubles:
+        mask = np.zeros(n, dtype=bool)
+        mask[start : start + trouble.mask.shape[0]] = trouble.mask
+        if trouble.what in NOTICES:
+            key = (trouble.what, trouble.group)
+            notices[key] = notices.get(key, mask) | mask
+            continue
+        if not skip:
+            # every slice's positions of this trouble: the counts are the sweep's
+            mask = _all_failures(troubles, n, trouble.group, trouble.what)
+            first = int(np.flatnonzero(mask)[0])
+            where = _where(plan, given[first])
+            if trouble.what == "assembly":
+                # where the mechanism assembles, whatever else stops it there
+                closes = ~_all_failures(troubles, n, what="assembly")
+                good = _ranges(plan, given, closes)
+                msg = (
+                    f"group {trouble.group}: cannot be assembled at driver position "
+                    f"{where} ({int(mask.sum())} of {n} positions fail); it assembles "
+                    f"for {good or 'none of them'}"
+                )
+                locked = closes & _all_failures(troubles, n, what="locked")
+                if locked.any():
+                    msg += (
+                        f" (where friction locks it at {_ranges(plan, given, locked)})"
+                    )
+                raise AssemblyError(msg)
+            if trouble.what == "locked":
+                msg = (
+                    f"group {trouble.group}: its friction locks it at driver position "
+                    f"{where} ({int(mask.sum())} of {n} positions): no driving load "
+                    "moves it there (self-locking, or too near it to settle); "
+                    "expected less friction, or positions where it can be driven"
+                )
+                raise SelfLockingError(msg)
+            msg = (
+                f"group {trouble.group}: dead centre at driver position {where} "
+                "(its velocity equations are singular there); expected positions "
+                "away from dead centres"
+            )
+            raise SingularConfigurationError(msg)
+        ok &= ~mask
+    for (what, group), mask in notices.items():
+        mask &= ok
+        if mask.any() and what == "near":
+            warnings.warn(
+                f"group {group}: near a dead centre (within about 2 degrees of "
+                f"transmission angle 0 or 180) at driver positions "
+                f"{_ranges(plan, given, mask)}",
+                AssurWarning,
+                stacklevel=4,
+            )
+        elif what == "other way" and (mask & _short_way(plan, given)).any():
+            mask &= _short_way(plan, given)
+            warnings.warn(_around(plan, given, group, mask, ok), AssurWarning, 4)
+    return None if ok.all() else ok
+
+
+NOTICES = frozenset({"near", "other way"})
+"""Troubles that are told, not failures: near a dead centre, reached the other way."""
+
+
+def _short_way(plan: Plan, given: Array) -> Mask:
+    """Return where a crank's angle as given turns the way of its short path.
+
+    The short path from the reference pose is the way a position reached the other
+    way round did not go.
+
+    -145.5 deg given for a reference pose at 60 deg asks for the way back, and is
+    not said to be reached the other way when it is reached that way round.
+    """
+    gap = given[:, 0] - math.degrees(plan.drivers[0].reference)
+    short = np.remainder(gap + 180.0, 360.0) - 180.0
+    return np.sign(gap) == np.sign(short)  # type: ignore[no-any-return]
+
+
+def _around(plan: Plan, given: Array, group: str, mask: Mask, ok: Mask) -> str:
+    """Return the warning of positions reached the other way round the circle.
+
+    Names, on each side of the reference pose, the last position reached the short
+    way and the first that is not (the group's branch folds between them).
+    """
+    reference = math.degrees(plan.drivers[0].reference)
+    ahead = np.remainder(given[:, 0] - reference + 180.0, 360.0) - 180.0
+    limits = []
+    for side in (1.0, -1.0):
+        far = mask & (ahead * side > 0.0)
+        if not far.any():
+            continue
+        first = np.flatnonzero(far)[np.argmin(ahead[far] * side)]
+        near = ok & ~mask & (ahead * side >= 0.0) & (ahead * side < ahead[first] * side)
+        stop = f"before {_where(plan, given[first])}"
+        if near.any():
+            last = np.flatnonzero(near)[np.argmax(ahead[near] * side)]
+            stop = f"between {_where(plan, given[last])} and {stop[7:]}"
+        limits.append(stop)
+    return (
+        f"group {group}: driver positions {_ranges(plan, given, mask)} are reached "
+        "turning the other way round from the reference pose "
+        f"({_where(plan, np.array([reference]))}); the group cannot follow the crank "
+        f"to them the short way (its branch folds {' and '.join(limits)})"
+    )
+
+
+def _all_failures(
+    troubles: list[Any], n: int, group: str | None = None, what: str | None = None
+) -> Mask:
+    """Return the positions where the sweep fails (not those near a dead centre).
+
+    With ``group`` and ``what``, those of that group's trouble of that kind only.
+    """
+    bad = np.zeros(n, dtype=bool)
+    for trouble, start in troubles:
+        if trouble.what in NOTICES or (group is not None and trouble.group != group):
+            continue
+        if what is None or trouble.what == what:
+            bad[start : start + trouble.mask.shape[0]] |= trouble.mask
+    return bad
+
+
+def _where(plan: Plan, position: Array) -> str:
+    """Describe one position of the drivers (as given) for a message."""
+    return position_text([d.kind for d in plan.drivers], position.tolist())
+
+
+def _ranges(plan: Plan, given: Array, mask: Mask) -> str:
+    """Describe the runs of consecutive positions in ``mask``.
+
+    One driver's positions given out of order are taken in increasing order: a run
+    is then of neighbours among all the positions given.
+    """
+    if given.shape[1] == 1 and given.shape[0] > 1:
+        x = given[:, 0]
+        # compared in place: a long sweep's steps would take 8 bytes a position
+        if not (np.all(x[1:] >= x[:-1]) or np.all(x[1:] <= x[:-1])):
+            order = np.argsort(x, kind="stable")
+            given, mask = given[order], mask[order]
+    if not mask.any():
+        return ""
+    # the runs' ends alone, not the index of every position in them
+    edges = np.flatnonzero(mask[1:] != mask[:-1]) + 1
+    starts = edges[mask[edges]]
+    ends = edges[~mask[edges]] - 1
+    if mask[0]:
+        starts = np.r_[0, starts]
+    if mask[-1]:
+        ends = np.r_[ends, mask.shape[0] - 1]
+    runs = []
+    for a, b in zip(starts, ends, strict=True):
+        first, last = _where(plan, given[a]), _where(plan, given[b])
+        runs.append(first if a == b else f"{first} to {last}")
+    return "; ".join(runs[:6]) + ("; ..." if len(runs) > 6 else "")
+
+
+def _unexplained(
+    plan: Plan, given: Array, tree: Any, found: list[Any], top: int
+) -> None:
+    """Warn of values that are not finite where no failed position explains them.
+
+    An overflow or a singular force system, say; the warning names what and where.
+    """
+    arrays = _arrays(tree, top)
+    if not arrays:
+        return
+    # one sum of them all is finite when each of them is (an overflow of the sum,
+    # or inf - inf, sends the search below, which looks at each)
+    with np.errstate(invalid="ignore", over="ignore"):
+        total = arrays[0] + arrays[1] if len(arrays) > 1 else arrays[0].copy()
+        for x in arrays[2:]:
+            total += x
+    if np.isfinite(total).all():
+        return
+    explained = np.zeros(given.shape[0], dtype=bool)
+    for trouble in found:
+        if trouble.what not in NOTICES:
+            explained |= trouble.mask
+    owners = _owners(plan, tree)
+    bad = np.zeros(given.shape[0], dtype=bool)
+    named: list[str] = []
+    for owner, value in owners:
+        if is_array(value):
+            wrong = ~np.isfinite(value) & ~explained
+            if wrong.any():
+                bad |= wrong
+                if owner not in named:
+                    named.append(owner)
+    if bad.any():
+        warnings.warn(
+            f"values of {', '.join(named[:6])}{', ...' if len(named) > 6 else ''} are "
+            f"not finite at driver positions {_ranges(plan, given, bad)}, where no "
+            "group fails: the inputs are out of the range the arithmetic can follow",
+            AssurWarning,
+            stacklevel=7,
+        )
+
+
+def _arrays(tree: Any, top: int) -> list[Array]:
+    """Return the arrays a value that is not finite would reach.
+
+    NaN and inf spread from a position to its derivatives, so each link's highest
+    derivative stands for its motion; and from a reaction to the frame's loads.
+    """
+    motion, _, fields = tree
+    levels = top + 1
+    out = [
+        x
+        for entries in motion
+        for x in entries[top : 3 * levels : levels]
+        if x.__class__ is np.ndarray
+    ]
+    if fields is not None:
+        _, reactions, balancing, shaking, *_ = fields
+        for group in (*reactions.values(), balancing, shaking):
+            out += [x for x in group if x.__class__ is np.ndarray]
+    return out
+
+
+def _owners(plan: Plan, tree: Any) -> list[tuple[str, Any]]:
+    """Pair every leaf of a sweep's states with the link or joint it belongs to."""
+    motion, slide, fields = tree
+    out = [
+        (f"link {plan.bodies[b]}", x)
+        for b, entries in enumerate(motion)
+        for x in entries
+    ]
+    out += [(f"joint {name}", x) for name, values in slide.items() for x in values]
+    if fields is not None:
+        inertia, reactions, balancing, shaking, *_ = fields
+        out += [
+            (f"link {plan.bodies[b]}", x)
+            for b, values in enumerate(inertia)
+            for x in values or ()
+        ]
+        out += [
+            (f"joint {name}", x) for name, values in reactions.items() for x in values
+        ]
+        out += [("driver", x) for x in balancing]
+        out += [("shaking", x) for x in shaking]
+    return out
+
+
+def _change_points(plan: Plan, given: Array, drive: Array) -> bool:
+    """Warn of the change points the sweep passes; return whether it passes any."""
+    if len(plan.drivers) > 1:
+        return _path_change_points(plan, given, drive)
+    passed = branches(plan, drive)[1]
+    for g, position in passed:
+        d = plan.drivers[0]
+        value = math.degrees(position) if d.kind == "R" else position
+        warnings.warn(
+            f"group {plan.solvers[g].label}: its two assembly branches meet at driver "
+            f"position {_where(plan, np.array([value]))} (a change point); the motion "
+            "is carried through onto the branch whose velocities are continuous",
+            AssurWarning,
+            stacklevel=4,
+        )
+    return bool(passed)
+
+
+def _path_change_points(plan: Plan, given: Array, drive: Array) -> bool:
+    """Warn of the change points on the positions' paths (several drivers)."""
+    count = path_changes(plan, drive).count
+    for g, c in count.items():
+        warnings.warn(
+            f"group {plan.solvers[g].label}: its two assembly branches meet on the "
+            "straight path from the reference pose to driver positions "
+            f"{_ranges(plan, given, c > 0)} (a change point); the motion is carried "
+            "through onto the branch whose velocities are continuous",
+            AssurWarning,
+            stacklevel=5,
+        )
+    return bool(count)
