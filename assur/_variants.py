@@ -33,6 +33,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assur._loads import LoadPlan, compile_loads
+from assur._points import PointSpec
 from assur._stack import Rows, repeat, signature
 from assur._vec import Array, Mask, wrap
 from assur.groups._dyad import (
@@ -47,7 +48,7 @@ from assur.groups._dyad import (
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan
 from assur.groups.driver import DriverPlan
-from assur.model import LoadTable, Mechanism, PointSpec, Toward
+from assur.model import LoadTable, Mechanism, Toward
 from assur.plan import FAR, SMALL, Plan, compile_plan
 
 __all__ = [

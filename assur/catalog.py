@@ -8,9 +8,10 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from assur._checks import LARGEST
 from assur._vec import real
 from assur.errors import ModelError
-from assur.model import LARGEST, Driver, Joint, Link, Mechanism, Point, Toward
+from assur.model import Driver, Joint, Link, Mechanism, Point, Toward
 
 __all__ = ["four_bar", "slider_crank"]
 

@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._checks import LARGEST
 from assur._cli_common import (
     check_distinct,
     check_not_input,
@@ -51,7 +52,6 @@ from assur.dynamics_model import result as dynamics_rows
 from assur.dynamics_reduced import check_dynamic
 from assur.dynamics_startup import MAX_TURNS
 from assur.errors import AssurWarning, ModelError, UsageError
-from assur.model import LARGEST
 
 __all__ = ["register"]
 

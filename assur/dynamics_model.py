@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._checks import LARGEST
 from assur._text import suggest
 from assur._vec import Array, real
 from assur.analysis import default_positions
@@ -23,7 +24,7 @@ from assur.columns import Column
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce, reduced_at
 from assur.dynamics_steady import Steady, steady_state
 from assur.errors import UsageError
-from assur.model import LARGEST, Mechanism
+from assur.model import Mechanism
 from assur.table import Columns
 
 __all__ = [

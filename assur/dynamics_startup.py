@@ -16,13 +16,14 @@ from typing import Any
 
 import numpy as np
 
+from assur._motor import validate_motor
 from assur._text import counted
 from assur._vec import Array, integer, real
 from assur.dynamics_model import checked_flywheel
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce
 from assur.dynamics_steady import check_inertia
 from assur.errors import ModelError, UsageError
-from assur.model import Mechanism, Motor, validate_motor
+from assur.model import Mechanism, Motor
 
 __all__ = ["Startup", "startup"]
 

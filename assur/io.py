@@ -15,6 +15,7 @@ from os import PathLike
 from typing import TYPE_CHECKING, Any, NoReturn
 
 from assur import _output
+from assur._checks import LARGEST
 from assur._output import (
     StdoutError,
     finishing,
@@ -23,10 +24,10 @@ from assur._output import (
     stdout_writer,
     write_text,
 )
+from assur._points import PointSpec
 from assur._text import describe, key_text, suggest
 from assur.errors import AssurError, ModelError, UsageError
 from assur.model import (
-    LARGEST,
     Driver,
     Joint,
     Link,
@@ -35,7 +36,6 @@ from assur.model import (
     Mechanism,
     Motor,
     Point,
-    PointSpec,
     Toward,
     mechanism_of,
 )

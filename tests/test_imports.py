@@ -31,6 +31,13 @@ RANKS = {
     # the command line's Ctrl-C guard, run first by the package: the standard library
     "assur._start": 0,
     "assur._tables": 0,
+    # the model's checks, below it: numbers and names -> points -> loads, motor ->
+    # the whole mechanism (the cycle check keeps them apart)
+    "assur._checks": 0,
+    "assur._points": 0,
+    "assur._load_checks": 0,
+    "assur._motor": 0,
+    "assur._validation": 1,
     "assur.model": 1,
     # the structure's modules, in their own direction: _topology -> _diagnosis ->
     # _group_search -> _structure (the cycle check keeps them apart)

@@ -593,17 +593,19 @@ NUMERIC_FAULTS = {
 def test_a_known_skeleton_gives_the_full_checks_message(fault, monkeypatch):
     # a mechanism whose skeleton passed before has only its numbers checked; its
     # message must be the one every check gives
-    from assur import catalog, model
+    from assur import _validation, catalog
 
     base = catalog.slider_crank()
-    assert model._skeleton(base) in model._VALID
+    assert _validation._skeleton(base) in _validation._VALID
     fields = _parts(base, **NUMERIC_FAULTS[fault])
     with pytest.raises(ModelError) as quick:
         Mechanism(**fields)
-    every = model._validate_all
+    every = _validation._validate_all
     ran = []
-    monkeypatch.setattr(model, "_VALID", set())
-    monkeypatch.setattr(model, "_validate_all", lambda m: ran.append(1) or every(m))
+    monkeypatch.setattr(_validation, "_VALID", set())
+    monkeypatch.setattr(
+        _validation, "_validate_all", lambda m: ran.append(1) or every(m)
+    )
     with pytest.raises(ModelError) as full:
         Mechanism(**fields)
     assert ran

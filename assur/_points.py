@@ -1,0 +1,223 @@
+"""Points of the reference pose: how they are given, checked and resolved.
+
+A point is given as coordinates, a joint's or extra point's name, or a
+:class:`Toward`; :func:`resolve_point` turns any of them into coordinates (m), and the
+model's validation checks every point of a mechanism resolves.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur._checks import (
+    _check_vec,
+    _coincide,
+    _entry,
+    _fail,
+    _finite,
+    _no_entry,
+    _number,
+    _number_fault,
+    _tuples,
+    _unknown,
+)
+from assur._text import describe
+
+if TYPE_CHECKING:
+    from assur.model import Mechanism
+
+
+Vec2 = tuple[float, float]
+
+
+@dataclass(frozen=True, slots=True)
+class Toward:
+    """A point at ``distance`` from point ``start`` in the direction of ``toward``.
+
+    Parameters
+    ----------
+    start, toward : str
+        Names of two distinct points (joints or extra points).
+    distance : float
+        Distance from ``start``, m (negative goes away from ``toward``).
+    """
+
+    start: str
+    toward: str
+    distance: float
+
+    def __post_init__(self) -> None:
+        _tuples(self, "distance")
+
+
+PointSpec = Vec2 | str | Toward
+"""A point of the reference pose: coordinates (m), a point's name, or a Toward."""
+
+
+def _spec_text(spec: object) -> str:
+    """Return a point specification as the file writes it, shortened."""
+    if isinstance(spec, Toward):
+        return (
+            f"{{from = {describe(spec.start)}, toward = {describe(spec.toward)}, "
+            f"distance = {describe(spec.distance)}}}"
+        )
+    return describe(spec)
+
+
+def _check_point(entry: str, spec: object, points: set[str]) -> None:
+    if isinstance(spec, str):
+        if spec not in points:
+            _fail(entry, _unknown("point", spec, points))
+    elif isinstance(spec, Toward):
+        for key, ref in (("from", spec.start), ("toward", spec.toward)):
+            if not isinstance(ref, str) or ref not in points:
+                _fail(f"{entry}.{key}", _unknown("point", ref, points))
+        if spec.start == spec.toward:
+            _fail(
+                entry,
+                f"'from' and 'toward' are the same point {describe(spec.start)}; "
+                "expected two distinct points",
+            )
+        if not _finite(spec.distance):
+            _fail(f"{entry}.distance", _number_fault(spec.distance))
+    else:
+        _check_vec(entry, spec)
+
+
+def _check_axis(entry: str, axis: object, points: set[str]) -> None:
+    """Check a link's axis: two points, each of any form."""
+    if not isinstance(axis, tuple) or len(axis) != 2 or all(map(_number, axis)):
+        hint = (
+            " (a direction [x, y] is the axis of a prismatic joint)"
+            if isinstance(axis, tuple) and len(axis) == 2
+            else ""
+        )
+        _fail(
+            entry,
+            f"expected two points (each [x, y], a point's name or "
+            f"{{from, toward, distance}}), got {describe(axis)}{hint}",
+        )
+    for index, spec in enumerate(axis):
+        _check_point(f"{entry}[{index}]", spec, points)
+
+
+def resolve_point(
+    mech: Mechanism, spec: PointSpec, entry: str = "point", _depth: int = 0
+) -> np.ndarray:
+    """Return the reference-pose coordinates (m) of a point specification.
+
+    Parameters
+    ----------
+    mech : Mechanism
+    spec : PointSpec
+        Coordinates, a joint's or extra point's name, or a :class:`Toward`. A name
+        stands for where that joint or point is in the reference pose, whichever
+        link the specification belongs to.
+    entry : str
+        Where the specification was found, for error messages.
+
+    Returns
+    -------
+    numpy.ndarray of shape (2,)
+    """
+    if _depth > 32:
+        _fail(entry, "points refer to each other in a circle")
+    if isinstance(spec, str):
+        for joint in mech.joints:
+            if joint.name == spec:
+                return resolve_point(mech, joint.at, entry, _depth + 1)
+        for point in mech.points:
+            if point.name == spec:
+                return resolve_point(mech, point.at, entry, _depth + 1)
+        _fail(entry, f"unknown point {describe(spec)}")
+    if isinstance(spec, Toward):
+        a = resolve_point(mech, spec.start, entry, _depth + 1)
+        b = resolve_point(mech, spec.toward, entry, _depth + 1)
+        return _toward(spec, a, b, entry)
+    return np.asarray(spec, dtype=float)
+
+
+def _toward(spec: Toward, a: np.ndarray, b: np.ndarray, entry: str) -> np.ndarray:
+    """Return the point of ``spec`` from its two points ``a`` and ``b`` resolved."""
+    if _coincide(a, b):
+        _fail(
+            entry,
+            f"points {describe(spec.start)} and {describe(spec.toward)} coincide; "
+            "expected two distinct points",
+        )
+    length = float(np.hypot(*(b - a)))
+    return a + (b - a) * (spec.distance / length)
+
+
+def _resolver(mech: Mechanism) -> Any:
+    """Return :func:`resolve_point` for ``mech``, quicker on names of coordinates.
+
+    Validation resolves every point, most of them names of joints given as
+    coordinates: those are looked up once. Anything else (a name of a name, a Toward
+    of such names, a fault) goes through resolve_point, so results and messages are
+    the same.
+    """
+    plain: dict[str, np.ndarray] = {}
+    for name, at in [(j.name, j.at) for j in mech.joints] + [
+        (p.name, p.at) for p in mech.points
+    ]:
+        if at.__class__ is tuple and name not in plain:
+            plain[name] = np.asarray(at, dtype=float)
+
+    def resolve(spec: PointSpec, entry: str = "point") -> np.ndarray:
+        if spec.__class__ is tuple:
+            return np.asarray(spec, dtype=float)  # as resolve_point does
+        # names are unique by now: ``plain`` holds the one point of each name
+        if spec.__class__ is str and spec in plain:
+            return plain[spec]  # type: ignore[index]
+        if isinstance(spec, Toward) and spec.start in plain and spec.toward in plain:
+            return _toward(spec, plain[spec.start], plain[spec.toward], entry)
+        return resolve_point(mech, spec, entry)
+
+    return resolve
+
+
+def _check_resolvable(
+    mech: Mechanism, entries: bool = True, resolve: Any = None
+) -> None:
+    """Every point must have coordinates (a from/toward pair must not coincide).
+
+    Without ``entries`` the messages name no entry (cheaper when none is expected:
+    see :func:`_validate_numbers`). ``resolve`` is the mechanism's
+    :func:`_resolver`, made here if not given.
+    """
+    resolve = resolve or _resolver(mech)
+    where = _entry if entries else _no_entry
+    for joint in mech.joints:
+        resolve(joint.at, where("joints", joint.name, ".at"))
+    for point in mech.points:
+        resolve(point.at, where("points", point.name, ".at"))
+    for link in mech.links:
+        if link.center is not None:
+            resolve(link.center, where("links", link.name, ".center"))
+        if link.axis is not None:
+            entry = where("links", link.name, ".axis")
+            a, b = (resolve(p, f"{entry}[{i}]") for i, p in enumerate(link.axis))
+            if _coincide(a, b):
+                _fail(
+                    entry,
+                    f"its two points {_spec_text(link.axis[0])} and "
+                    f"{_spec_text(link.axis[1])} coincide at ({a[0]:.6g}, {a[1]:.6g}) "
+                    "in the reference pose; expected two distinct points",
+                )
+    for index, load in enumerate(mech.loads):
+        if load.at is not None:
+            resolve(load.at, f"loads[{index}].at" if entries else "")
+
+
+def point_links(mech: Mechanism) -> dict[str, tuple[str, ...]]:
+    """Return, for every named point, the links it belongs to.
+
+    A joint's point belongs to both of its links, an extra point to its link.
+    """
+    owners: dict[str, tuple[str, ...]] = {j.name: tuple(j.links) for j in mech.joints}
+    owners.update({p.name: (p.link,) for p in mech.points})
+    return owners
