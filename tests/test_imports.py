@@ -74,6 +74,11 @@ RANKS = {
     # studies: many variants, summarised; pandas, xarray and dask imported lazily
     "assur.study": 10,
     "assur.io": 10,
+    # a mechanism file, for io: its entries read (the file contract, KEYS) -> its
+    # syntax decoded, its text written (the cycle check keeps them apart)
+    "assur._file_entries": 10,
+    "assur._file_syntax": 10,
+    "assur._file_text": 10,
     "assur._output": 10,
     # long sweeps a slice at a time: the command line's tables, long studies
     "assur._sliced": 10,
