@@ -3,53 +3,44 @@
 A thin edge over the library: it parses arguments, reads the mechanism file, runs the
 analysis and writes text, CSV or JSON. Any error of the input, of an option or of an
 output becomes one line on standard error and exit status 2; Ctrl-C exits with 130.
+
+This module holds :func:`main`, the parser and the dispatch to the commands; the
+signals and standard streams are :mod:`assur._cli_process`'s, the sweeps of
+``kinematics`` and ``forces`` :mod:`assur._cli_sweep`'s.
 """
 
 from __future__ import annotations
 
 import argparse
-import contextlib
-import errno
 import json
-import math
-import os
-import signal
 import sys
-import threading
 import warnings
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, NoReturn
+from typing import Any, NoReturn
 
-import numpy as np
-
-from assur import _output, _start
+from assur import _start
 from assur._cli_common import (
     add_angle_option,
-    check_distinct,
     check_not_input,
     file_name,
     given,
     input_file,
-    is_stdout,
     load_mechanism,
     one_position,
     parse_angles,
-    positions,
-    terminal,
 )
-from assur._output import (
-    StdoutError,
-    finishing,
-    output_path,
-    path_text,
-    stdout_writer,
-    write_stdout,
+from assur._cli_process import (
+    _closed_streams,
+    _lenient_streams,
+    _quiet_stdout,
+    _stoppable,
+    _Stopped,
 )
-from assur._sliced import Skipped, Slice, slices
-from assur._text import describe, number_text, suggest
+from assur._cli_sweep import _sweep
+from assur._output import path_text, write_stdout
+from assur._text import describe, suggest
 from assur._troubles import SKIPPED_WHY
-from assur._vec import Array
 from assur.errors import (
     AssurError,
     AssurWarning,
@@ -59,18 +50,11 @@ from assur.errors import (
     UsageError,
 )
 
-if TYPE_CHECKING:
-    from assur.summary import Summary
-
 __all__ = ["main", "parse_angles"]
 
 COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {}
 INTERRUPTED = 130
 """Exit status after Ctrl-C (128 + SIGINT), as shells report it."""
-SUMMARY_ROWS = 400
-"""Most rows of the readable table; --csv, --json and --parquet give them all."""
-LONG_SWEEP = 100_000
-"""Driver positions from which a sweep shows a progress bar (on a terminal)."""
 QUIET = "no progress bars, no 'wrote ...' lines or notes (errors and warnings stay)"
 
 
@@ -215,67 +199,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         return INTERRUPTED
 
 
-RESEND = 0.5
-"""Seconds after which SIGTERM or SIGHUP is sent again when Python ignored the
-exception it raised."""
-
-
-class _Stopped(BaseException):
-    """SIGTERM or SIGHUP, raised where the command is: it unwinds like Ctrl-C."""
-
-    def __init__(self, signum: int) -> None:
-        super().__init__(signum)
-        self.signum = signum
-
-
-@contextlib.contextmanager
-def _stoppable() -> Iterator[None]:
-    """Let SIGTERM and SIGHUP end the command as Ctrl-C does, while it runs.
-
-    By default they end the process at once, leaving an output's temporary file
-    behind; raised as an exception, they remove it and keep the old file. (Only
-    the main thread can take signals; SIGKILL cannot be taken at all.)
-    """
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-
-    again: list[threading.Timer] = []
-
-    def stop(signum: int, frame: Any) -> None:
-        raise _Stopped(signum)
-
-    previous = sys.unraisablehook
-
-    def unraised(unraisable: Any) -> None:
-        stopped = unraisable.exc_value
-        if not isinstance(stopped, _Stopped):
-            previous(unraisable)
-            return
-        # raised where Python ignores an exception (a __del__, a weakref callback
-        # of matplotlib's), the stop left the command running: it comes again
-        # shortly, unreported, until one lands where it unwinds the command
-        timer = threading.Timer(RESEND, os.kill, (os.getpid(), stopped.signum))
-        timer.daemon = True
-        again.append(timer)
-        timer.start()
-
-    saved = {}
-    for name in ("SIGTERM", "SIGHUP"):
-        number = getattr(signal, name, None)
-        if number is not None:
-            saved[number] = signal.signal(number, stop)
-    sys.unraisablehook = unraised
-    try:
-        yield
-    finally:
-        for timer in again:
-            timer.cancel()
-        for number, handler in saved.items():
-            signal.signal(number, handler)
-        sys.unraisablehook = previous
-
-
 def _main(argv: list[str]) -> int:
     """Parse ``argv`` and run its command (see :func:`main`)."""
     parser, commands = _parser()
@@ -332,80 +255,6 @@ def _joined_ranges(argv: list[str]) -> list[str]:
             continue
         joined.append(argument)
     return joined
-
-
-class _Closed:
-    """Standard output started closed (``>&-``): every write is an OSError.
-
-    Python leaves ``sys.stdout`` None then; a command writing only files, with
-    ``--quiet``, still runs, one that writes to standard output says it cannot.
-    """
-
-    encoding = "utf-8"
-    errors = "strict"
-
-    @property
-    def buffer(self) -> _Closed:
-        return self
-
-    def write(self, data: Any) -> int:
-        raise OSError(errno.EBADF, "standard output is closed")
-
-    def flush(self) -> None:
-        pass
-
-    def isatty(self) -> bool:
-        return False
-
-    def fileno(self) -> int:
-        raise OSError(errno.EBADF, "standard output is closed")
-
-
-@contextlib.contextmanager
-def _closed_streams() -> Iterator[None]:
-    """Stand in for standard output or error when they started closed."""
-    saved = sys.stdout, sys.stderr
-    with contextlib.ExitStack() as stack:
-        if sys.stdout is None:
-            sys.stdout = _Closed()  # type: ignore[assignment]
-        if sys.stderr is None:  # nowhere to say anything: the exit status speaks
-            sys.stderr = stack.enter_context(open(os.devnull, "w"))
-        try:
-            yield
-        finally:
-            sys.stdout, sys.stderr = saved
-
-
-@contextlib.contextmanager
-def _lenient_streams() -> Iterator[None]:
-    """Write what a terminal's encoding cannot show as backslash escapes."""
-    saved = []
-    for stream in (sys.stdout, sys.stderr):
-        errors = getattr(stream, "errors", None)
-        if errors in (None, "backslashreplace") or not hasattr(stream, "reconfigure"):
-            continue
-        with contextlib.suppress(OSError, ValueError):
-            stream.reconfigure(errors="backslashreplace")
-            saved.append((stream, errors))
-    try:
-        yield
-    finally:
-        for stream, errors in saved:
-            with contextlib.suppress(OSError, ValueError):
-                stream.reconfigure(errors=errors)
-
-
-def _quiet_stdout() -> None:
-    """Point standard output at nothing, so the exit does not flush it again."""
-    try:
-        descriptor = sys.stdout.fileno()
-    except (AttributeError, OSError, ValueError):
-        return  # not a file: nothing flushes at exit
-    devnull = os.open(os.devnull, os.O_WRONLY)
-    try:
-        os.dup2(devnull, descriptor)
-    finally:
-        os.close(devnull)
 
 
 class _OtherFileError(ModelError):
@@ -531,334 +380,8 @@ def _cmd_forces(args: argparse.Namespace) -> int:
     return _sweep(args, forces=True)
 
 
-def _sweep(args: argparse.Namespace, forces: bool) -> int:
-    """Analyse the sweep slice by slice; write its table or print its summary."""
-    _check_outputs(args)
-    mech = load_mechanism(args.file)
-    given = positions(mech, args.angles)
-    skipped = Skipped()
-    from assur.summary import Summary
-
-    summary = Summary() if getattr(args, "summary", False) else None
-    tables = bool(args.csv or args.parquet or (args.json and summary is None))
-    writing = tables or summary is not None
-    with _bar(args, "forces" if forces else "kinematics", len(given)) as bar:
-        told = None if bar is None or tables else bar.advance
-        parts = slices(
-            mech, given, forces, args.skip_unassembled, skipped, told, check=writing
-        )
-        if summary is not None:
-            parts = _summed(parts, summary)
-        if tables:
-            rows, names = _write_tables(args, parts, bar)
-        elif summary is not None:
-            for _ in parts:
-                pass
-        else:
-            text, names = _summary(parts, forces)
-    quiet = _quiet(args)
-    if skipped.count and not quiet:
-        print(skipped.note(args.file), file=sys.stderr)
-    if summary is not None:
-        _say(_summary_text(mech.name, summary, args.json))
-    if not writing:
-        _say(text)
-        if not quiet:
-            full = "--csv PATH or --json for the full table"
-            print(f"({len(names)} columns in all: {full})")
-        return 0
-    if not tables:
-        return 0
-    # standard output may carry a table: the lines then go to standard error
-    lines = sys.stderr if args.json or is_stdout(args.csv or "") else sys.stdout
-    for target in (args.csv, args.parquet):
-        if target and not is_stdout(target) and not quiet:
-            size = f"{rows} rows x {len(names)} columns"
-            print(f"wrote {size} to {path_text(target)}", file=lines)
-    return 0
-
-
-def _check_outputs(args: argparse.Namespace) -> None:
-    """Refuse outputs that cannot be written, before anything is analysed."""
-    for option in ("--csv", "--parquet"):
-        target = getattr(args, option[2:])
-        if target:
-            check_not_input(option, target, args.file)
-    check_distinct([("--csv", args.csv), ("--parquet", args.parquet)])
-    # /dev/stdout and its kin are standard output as much as "-" is
-    csv = "-" if args.csv and is_stdout(args.csv) else args.csv
-    shown = "-" if args.csv == "-" else path_text(args.csv)
-    if csv == "-" and getattr(args, "summary", False):
-        msg = (
-            f"--csv {shown} and --summary: both write to standard output; expected "
-            "--csv PATH with --summary"
-        )
-        raise UsageError(msg)
-    if csv == "-" and args.json:
-        msg = (
-            f"--csv {shown} and --json: both write to standard output; expected one "
-            "of them (or --csv PATH)"
-        )
-        raise UsageError(msg)
-    on_stdout = "--json" if args.json else "--csv -" if args.csv == "-" else None
-    for option in ("--csv", "--parquet"):
-        target = getattr(args, option[2:])
-        if on_stdout and target and target != "-" and is_stdout(target):
-            # /dev/stdout and its kin: two tables mixed in one stream
-            msg = (
-                f"{option} {path_text(target)}: is standard output, where "
-                f"{on_stdout} writes; expected a file of its own"
-            )
-            raise UsageError(msg)
-    if args.parquet == "-":
-        msg = "--parquet -: a Parquet file is not text; expected a file name"
-        raise UsageError(msg)
-    if args.parquet:
-        from assur._tableio import import_pyarrow
-
-        try:
-            import_pyarrow()
-        except ImportError as err:
-            msg = f"--parquet {path_text(args.parquet)}: {err}"
-            raise UsageError(msg) from err
-
-
 def _quiet(args: argparse.Namespace) -> bool:
     return bool(getattr(args, "quiet", False))
-
-
-@contextlib.contextmanager
-def _bar(args: argparse.Namespace, what: str, total: int) -> Iterator[Any]:
-    """Yield a progress bar for a long sweep on a terminal, else None."""
-    if _quiet(args) or total < LONG_SWEEP or not terminal():
-        yield None
-        return
-    from assur._progress import progress
-
-    with progress(what, total, show=True) as bar:
-        yield bar
-
-
-def _write_tables(
-    args: argparse.Namespace, parts: Iterator[Slice], bar: Any
-) -> tuple[int, tuple[str, ...]]:
-    """Write every slice to the outputs asked for; return the rows and the columns."""
-    rows = 0
-    names: tuple[str, ...] = ()
-    try:
-        with contextlib.ExitStack() as stack:
-            writers: list[Any] = []
-            for part in parts:
-                table = part.table
-                if not writers:
-                    names = table.columns
-                    writers = _writers(args, stack, table, bar)
-                arrays = part.arrays()
-                for writer in writers:
-                    writer.write(arrays)
-                rows += len(table)
-                if bar is not None:
-                    bar.advance(len(table.skipped))
-                del part, table, arrays  # one slice in memory at a time
-    except StdoutError as err:
-        raise err.error from None  # after the files' cleanup: main reports it
-    for writer in writers:
-        if isinstance(writer, _Spared) and writer.gone is not None:
-            # the files are whole: main stops quietly, as for standard output alone
-            raise writer.gone
-    if _json_table(args):
-        _say("")
-    return rows, names
-
-
-def _json_table(args: argparse.Namespace) -> bool:
-    """Whether the table goes to standard output as JSON (``--json``, no summary)."""
-    return bool(args.json) and not getattr(args, "summary", False)
-
-
-class _Spared:
-    """The writer of standard output beside file outputs.
-
-    A reader that goes away (``| head``) stops the table on standard output, not
-    the files asked for: they are written to the end; ``gone`` keeps the error.
-    """
-
-    def __init__(self, writer: Any) -> None:
-        self.writer = writer
-        self.gone: BrokenPipeError | None = None
-
-    def write(self, columns: Any) -> None:
-        self._guarded(self.writer.write, columns)
-
-    def close(self) -> None:
-        self._guarded(self.writer.close)
-
-    def _guarded(self, action: Callable[..., None], *args: Any) -> None:
-        if self.gone is not None:
-            return
-        try:
-            action(*args)
-        except StdoutError as err:
-            if not isinstance(err.error, BrokenPipeError):
-                raise
-            self.gone = err.error
-
-
-def _writers(
-    args: argparse.Namespace, stack: contextlib.ExitStack, table: Any, bar: Any
-) -> list[Any]:
-    """Open the outputs asked for; return their writers (closed by ``stack``).
-
-    The first writer tells the progress bar of the rows written.
-    """
-    from assur._tableio import CsvWriter, JsonWriter, ParquetWriter
-
-    names, name = table.columns, table.mechanism.name
-    advance = [None if bar is None else bar.advance]
-    writers: list[Any] = []
-
-    def told() -> Any:
-        found, advance[0] = advance[0], None
-        return found
-
-    if args.csv:
-        write, encode = _open(stack, args.csv)
-        writers.append(CsvWriter(write, names, encode, told()))
-    if args.parquet:
-        path = stack.enter_context(output_path(args.parquet))
-        units = [table.column(c).unit for c in names]
-        writers.append(ParquetWriter(path, name, names, units, told()))
-    json_table = _json_table(args)
-    if json_table:
-        write, encode = _open(stack, "-")
-        writers.append(JsonWriter(write, name, names, encode, told()))
-    if len(writers) > 1 and (json_table or args.csv == "-"):
-        # standard output is one of the outputs, the files the others
-        at = -1 if json_table else 0
-        writers[at] = _Spared(writers[at])
-    for writer in writers:
-        stack.enter_context(finishing(writer))
-    return writers
-
-
-def _open(stack: contextlib.ExitStack, target: str) -> tuple[Any, Any]:
-    """Return the ``write(bytes)`` and ``encode(text)`` of an output (``-``: stdout)."""
-    if target == "-":
-        return stdout_writer()
-    path = stack.enter_context(output_path(target))
-    stream = stack.enter_context(path.open("wb"))
-    return (lambda data: _output.write_all(stream, data)), None
-
-
-def _summed(parts: Iterator[Slice], summary: Summary) -> Iterator[Slice]:
-    """Yield the slices, each added to ``summary`` on its way."""
-    for part in parts:
-        summary.add(part.table)
-        yield part
-
-
-def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
-    """Return the summary as aligned lines with units, or as JSON."""
-    from assur.summary import undefined
-
-    values = summary.result()
-    why = undefined(values)
-    if as_json:
-        data = {
-            "name": name,
-            "positions": summary.count,
-            "summary": {k: v if math.isfinite(v) else None for k, v in values.items()},
-            "units": {k: summary.units[k] for k in values},
-        }
-        if why:
-            data["undefined"] = why  # why a value is null
-        return json.dumps(data, indent=2)
-    width = max(len(k) for k in values)
-    lines = [f"Summary over {summary.count} positions ({name})"]
-    for key, value in values.items():
-        unit = summary.units[key]
-        if key in why:
-            lines.append(f"  {key.ljust(width)}  {'undefined':>14}  ({why[key]})")
-            continue
-        shown = number_text(value, ">14.6g")
-        lines.append(f"  {key.ljust(width)}  {shown}  {unit}".rstrip())
-    return "\n".join(lines)
-
-
-def _summary(parts: Iterator[Slice], forces: bool) -> tuple[str, tuple[str, ...]]:
-    """Return the readable table of the first rows and the table's column names."""
-    names: tuple[str, ...] = ()
-    picked: list[str] = []
-    units: list[str] = []
-    kept: list[list[Array]] = []
-    rows = 0
-    for part in parts:
-        table = part.table
-        if not names:
-            names = table.columns
-            picked = summary_columns(table, forces)
-            units = [table.column(c).unit for c in picked]
-        room = SUMMARY_ROWS - sum(len(k[0]) for k in kept)
-        if room > 0 and len(table):
-            kept.append([part.column(c)[:room] for c in picked])
-        rows += len(table)
-    columns = [np.concatenate(k) for k in zip(*kept, strict=True)] if kept else []
-    return format_table(picked, units, columns, rows), names
-
-
-def summary_columns(table: Any, forces: bool) -> list[str]:
-    """Pick the readable table's columns from the table's schema.
-
-    Kinematics: every link's angle, angular velocity and angular acceleration.
-    Forces: the magnitude of every reaction and every balancing load with its
-    virtual-power check (and, with friction, the load without friction).
-    """
-    if forces:
-        families = {"magnitude", "balancing", "check", "ideal"}
-        picked = [c.name for c in table.schema if c.family in families]
-    else:
-        picked = [
-            c.name
-            for c in table.schema
-            if (c.family == "angle")
-            or (c.family == "link" and c.quantity in ("omega", "alpha"))
-        ]
-    return ["angle", *picked]
-
-
-def format_table(
-    names: list[str],
-    units: list[str],
-    columns: list[Array],
-    rows: int,
-    limit: int = SUMMARY_ROWS,
-) -> str:
-    """Return an aligned text table of ``columns`` with a units row.
-
-    ``rows`` is the number of rows in all; beyond the ``limit`` shown, a last line
-    says how many were left out.
-    """
-    heads = list(names)
-    marks = [f"[{u}]" if u else "" for u in units]
-    cells = (
-        [[number_text(v) for v in values] for values in zip(*columns, strict=True)]
-        if columns
-        else []
-    )
-    widths = [
-        max(len(h), len(u), *(len(r[i]) for r in cells))
-        for i, (h, u) in enumerate(zip(heads, marks, strict=True))
-    ]
-    lines = [
-        "  ".join(h.rjust(w) for h, w in zip(heads, widths, strict=True)),
-        "  ".join(u.rjust(w) for u, w in zip(marks, widths, strict=True)),
-    ]
-    lines += [
-        "  ".join(v.rjust(w) for v, w in zip(r, widths, strict=True)) for r in cells
-    ]
-    if rows > limit:
-        lines.append(f"... {rows - limit} more rows: --csv PATH or --json for all")
-    return "\n".join(lines)
 
 
 if __name__ == "__main__":  # pragma: no cover

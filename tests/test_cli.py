@@ -487,7 +487,7 @@ def test_skip_unassembled_lists_positions_in_degrees(double_rocker, capsys):
 def test_minus_zero_is_shown_as_zero(capsys):
     # a value that is zero shows as 0 whatever its sign bit (atan2 and products of
     # zeros give -0.0): in readable tables and the dynamic model's figures
-    from assur.cli import format_table
+    from assur._cli_summary import format_table
 
     text = format_table(["a", "b"], ["N", "m"], [np.array([-0.0]), np.array([-1.5])], 1)
     assert text.splitlines()[2].split() == ["0", "-1.5"]

@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 import assur
-from assur import cli
+from assur import _cli_process, cli
 from assur._cli_common import MAX_POSITIONS, parse_angles
 from assur.errors import ModelError, UsageError
 
@@ -130,19 +130,19 @@ def test_a_stop_that_python_ignores_comes_again(capsys):
     waited = [0.0]
 
     def command() -> None:
-        with cli._stoppable():
+        with _cli_process._stoppable():
             Finalized()
             started = time.monotonic()
             while waited[0] < 10.0:
                 waited[0] = time.monotonic() - started
                 time.sleep(0.01)
 
-    with pytest.raises(cli._Stopped):
+    with pytest.raises(_cli_process._Stopped):
         command()
     assert waited[0] < 5.0
     assert "Exception ignored" not in capsys.readouterr().err
     # and once the command is over, no signal comes after it
-    time.sleep(2 * cli.RESEND)
+    time.sleep(2 * _cli_process.RESEND)
 
 
 # --- outputs that fail ----------------------------------------------------------

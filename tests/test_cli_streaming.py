@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 import assur
-from assur import _sliced, cli
+from assur import _cli_summary, _cli_sweep, _sliced, cli
 from assur._cli_common import parse_angles
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
@@ -253,7 +253,7 @@ def test_the_readable_table_of_a_long_sweep(small_slices, capsys):
     lines = out.splitlines()
     assert lines[-2] == f"... {20001 - 400} more rows: --csv PATH or --json for all"
     last = lines[-3].split()
-    picked = cli.summary_columns(table, forces=False)
+    picked = _cli_summary.summary_columns(table, forces=False)
     assert last == [f"{table[c][399]:.6g}" for c in picked]
 
 
@@ -311,7 +311,7 @@ def test_csv_path_and_json_write_the_lines_to_standard_error(tmp_path, capsys):
 
 @pytest.fixture
 def long_is_short(monkeypatch):
-    monkeypatch.setattr(cli, "LONG_SWEEP", 1000)
+    monkeypatch.setattr(_cli_sweep, "LONG_SWEEP", 1000)
 
 
 @pytest.mark.parametrize("output", [[], ["--csv", "t.csv"]])
@@ -381,7 +381,7 @@ def test_summary_columns_as_the_names_picked_them(path):
         "angle",
         *(c for c in kinematics.columns if c.endswith((".angle", ".omega", ".alpha"))),
     ]
-    assert cli.summary_columns(kinematics, forces=False) == by_name
+    assert _cli_summary.summary_columns(kinematics, forces=False) == by_name
     try:
         forces = assur.forces(mech, given, skip_unassembled=True)
     except assur.ModelError:
@@ -399,7 +399,7 @@ def test_summary_columns_as_the_names_picked_them(path):
             if c.endswith(".F") or c.startswith("driver.") or c in drivers
         ),
     ]
-    assert cli.summary_columns(forces, forces=True) == by_name
+    assert _cli_summary.summary_columns(forces, forces=True) == by_name
 
 
 def test_units_of_the_readable_table(capsys):

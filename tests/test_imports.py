@@ -100,6 +100,13 @@ RANKS = {
     # the public API re-exports the core and io
     "assur": 11,
     "assur._cli_common": 12,
+    # the command line's parts, apart from its parser and dispatch (the cycle check
+    # keeps them apart): signals and standard streams; the sweep commands' tables,
+    # written (_cli_tables) or printed (_cli_summary), slice by slice (_cli_sweep)
+    "assur._cli_process": 12,
+    "assur._cli_summary": 12,
+    "assur._cli_tables": 12,
+    "assur._cli_sweep": 12,
     "assur.cli": 12,
     "assur.dynamics_cli": 12,
     "assur.pictures_cli": 12,

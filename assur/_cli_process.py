@@ -1,0 +1,162 @@
+"""How the command line meets its process: the signals that stop it, its streams.
+
+SIGTERM and SIGHUP unwind a command as Ctrl-C does (:func:`_stoppable`); standard
+output or error that started closed get a stand-in (:func:`_closed_streams`); what a
+terminal's encoding cannot show is written as backslash escapes
+(:func:`_lenient_streams`). :func:`assur.cli.main` wraps every command in them.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import errno
+import os
+import signal
+import sys
+import threading
+from collections.abc import Iterator
+from typing import Any
+
+__all__ = [
+    "RESEND",
+    "_Stopped",
+    "_closed_streams",
+    "_lenient_streams",
+    "_quiet_stdout",
+    "_stoppable",
+]
+
+
+RESEND = 0.5
+"""Seconds after which SIGTERM or SIGHUP is sent again when Python ignored the
+exception it raised."""
+
+
+class _Stopped(BaseException):
+    """SIGTERM or SIGHUP, raised where the command is: it unwinds like Ctrl-C."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+@contextlib.contextmanager
+def _stoppable() -> Iterator[None]:
+    """Let SIGTERM and SIGHUP end the command as Ctrl-C does, while it runs.
+
+    By default they end the process at once, leaving an output's temporary file
+    behind; raised as an exception, they remove it and keep the old file. (Only
+    the main thread can take signals; SIGKILL cannot be taken at all.)
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    again: list[threading.Timer] = []
+
+    def stop(signum: int, frame: Any) -> None:
+        raise _Stopped(signum)
+
+    previous = sys.unraisablehook
+
+    def unraised(unraisable: Any) -> None:
+        stopped = unraisable.exc_value
+        if not isinstance(stopped, _Stopped):
+            previous(unraisable)
+            return
+        # raised where Python ignores an exception (a __del__, a weakref callback
+        # of matplotlib's), the stop left the command running: it comes again
+        # shortly, unreported, until one lands where it unwinds the command
+        timer = threading.Timer(RESEND, os.kill, (os.getpid(), stopped.signum))
+        timer.daemon = True
+        again.append(timer)
+        timer.start()
+
+    saved = {}
+    for name in ("SIGTERM", "SIGHUP"):
+        number = getattr(signal, name, None)
+        if number is not None:
+            saved[number] = signal.signal(number, stop)
+    sys.unraisablehook = unraised
+    try:
+        yield
+    finally:
+        for timer in again:
+            timer.cancel()
+        for number, handler in saved.items():
+            signal.signal(number, handler)
+        sys.unraisablehook = previous
+
+
+class _Closed:
+    """Standard output started closed (``>&-``): every write is an OSError.
+
+    Python leaves ``sys.stdout`` None then; a command writing only files, with
+    ``--quiet``, still runs, one that writes to standard output says it cannot.
+    """
+
+    encoding = "utf-8"
+    errors = "strict"
+
+    @property
+    def buffer(self) -> _Closed:
+        return self
+
+    def write(self, data: Any) -> int:
+        raise OSError(errno.EBADF, "standard output is closed")
+
+    def flush(self) -> None:
+        pass
+
+    def isatty(self) -> bool:
+        return False
+
+    def fileno(self) -> int:
+        raise OSError(errno.EBADF, "standard output is closed")
+
+
+@contextlib.contextmanager
+def _closed_streams() -> Iterator[None]:
+    """Stand in for standard output or error when they started closed."""
+    saved = sys.stdout, sys.stderr
+    with contextlib.ExitStack() as stack:
+        if sys.stdout is None:
+            sys.stdout = _Closed()  # type: ignore[assignment]
+        if sys.stderr is None:  # nowhere to say anything: the exit status speaks
+            sys.stderr = stack.enter_context(open(os.devnull, "w"))
+        try:
+            yield
+        finally:
+            sys.stdout, sys.stderr = saved
+
+
+@contextlib.contextmanager
+def _lenient_streams() -> Iterator[None]:
+    """Write what a terminal's encoding cannot show as backslash escapes."""
+    saved = []
+    for stream in (sys.stdout, sys.stderr):
+        errors = getattr(stream, "errors", None)
+        if errors in (None, "backslashreplace") or not hasattr(stream, "reconfigure"):
+            continue
+        with contextlib.suppress(OSError, ValueError):
+            stream.reconfigure(errors="backslashreplace")
+            saved.append((stream, errors))
+    try:
+        yield
+    finally:
+        for stream, errors in saved:
+            with contextlib.suppress(OSError, ValueError):
+                stream.reconfigure(errors=errors)
+
+
+def _quiet_stdout() -> None:
+    """Point standard output at nothing, so the exit does not flush it again."""
+    try:
+        descriptor = sys.stdout.fileno()
+    except (AttributeError, OSError, ValueError):
+        return  # not a file: nothing flushes at exit
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, descriptor)
+    finally:
+        os.close(devnull)

@@ -1,0 +1,145 @@
+"""What ``assur kinematics|forces`` prints instead of the full table.
+
+The readable table of the first rows (:func:`_summary`, :func:`format_table`) and,
+with ``--summary``, the summary of the whole sweep (:func:`_summed`,
+:func:`_summary_text`).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Iterator
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur._sliced import Slice
+from assur._text import number_text
+from assur._vec import Array
+
+if TYPE_CHECKING:
+    from assur.summary import Summary
+
+__all__ = [
+    "SUMMARY_ROWS",
+    "_summary",
+    "_summary_text",
+    "_summed",
+    "format_table",
+    "summary_columns",
+]
+
+SUMMARY_ROWS = 400
+"""Most rows of the readable table; --csv, --json and --parquet give them all."""
+
+
+def _summed(parts: Iterator[Slice], summary: Summary) -> Iterator[Slice]:
+    """Yield the slices, each added to ``summary`` on its way."""
+    for part in parts:
+        summary.add(part.table)
+        yield part
+
+
+def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
+    """Return the summary as aligned lines with units, or as JSON."""
+    from assur.summary import undefined
+
+    values = summary.result()
+    why = undefined(values)
+    if as_json:
+        data = {
+            "name": name,
+            "positions": summary.count,
+            "summary": {k: v if math.isfinite(v) else None for k, v in values.items()},
+            "units": {k: summary.units[k] for k in values},
+        }
+        if why:
+            data["undefined"] = why  # why a value is null
+        return json.dumps(data, indent=2)
+    width = max(len(k) for k in values)
+    lines = [f"Summary over {summary.count} positions ({name})"]
+    for key, value in values.items():
+        unit = summary.units[key]
+        if key in why:
+            lines.append(f"  {key.ljust(width)}  {'undefined':>14}  ({why[key]})")
+            continue
+        shown = number_text(value, ">14.6g")
+        lines.append(f"  {key.ljust(width)}  {shown}  {unit}".rstrip())
+    return "\n".join(lines)
+
+
+def _summary(parts: Iterator[Slice], forces: bool) -> tuple[str, tuple[str, ...]]:
+    """Return the readable table of the first rows and the table's column names."""
+    names: tuple[str, ...] = ()
+    picked: list[str] = []
+    units: list[str] = []
+    kept: list[list[Array]] = []
+    rows = 0
+    for part in parts:
+        table = part.table
+        if not names:
+            names = table.columns
+            picked = summary_columns(table, forces)
+            units = [table.column(c).unit for c in picked]
+        room = SUMMARY_ROWS - sum(len(k[0]) for k in kept)
+        if room > 0 and len(table):
+            kept.append([part.column(c)[:room] for c in picked])
+        rows += len(table)
+    columns = [np.concatenate(k) for k in zip(*kept, strict=True)] if kept else []
+    return format_table(picked, units, columns, rows), names
+
+
+def summary_columns(table: Any, forces: bool) -> list[str]:
+    """Pick the readable table's columns from the table's schema.
+
+    Kinematics: every link's angle, angular velocity and angular acceleration.
+    Forces: the magnitude of every reaction and every balancing load with its
+    virtual-power check (and, with friction, the load without friction).
+    """
+    if forces:
+        families = {"magnitude", "balancing", "check", "ideal"}
+        picked = [c.name for c in table.schema if c.family in families]
+    else:
+        picked = [
+            c.name
+            for c in table.schema
+            if (c.family == "angle")
+            or (c.family == "link" and c.quantity in ("omega", "alpha"))
+        ]
+    return ["angle", *picked]
+
+
+def format_table(
+    names: list[str],
+    units: list[str],
+    columns: list[Array],
+    rows: int,
+    limit: int = SUMMARY_ROWS,
+) -> str:
+    """Return an aligned text table of ``columns`` with a units row.
+
+    ``rows`` is the number of rows in all; beyond the ``limit`` shown, a last line
+    says how many were left out.
+    """
+    heads = list(names)
+    marks = [f"[{u}]" if u else "" for u in units]
+    cells = (
+        [[number_text(v) for v in values] for values in zip(*columns, strict=True)]
+        if columns
+        else []
+    )
+    widths = [
+        max(len(h), len(u), *(len(r[i]) for r in cells))
+        for i, (h, u) in enumerate(zip(heads, marks, strict=True))
+    ]
+    lines = [
+        "  ".join(h.rjust(w) for h, w in zip(heads, widths, strict=True)),
+        "  ".join(u.rjust(w) for u, w in zip(marks, widths, strict=True)),
+    ]
+    lines += [
+        "  ".join(v.rjust(w) for v, w in zip(r, widths, strict=True)) for r in cells
+    ]
+    if rows > limit:
+        lines.append(f"... {rows - limit} more rows: --csv PATH or --json for all")
+    return "\n".join(lines)
