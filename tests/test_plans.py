@@ -444,20 +444,17 @@ def test_the_forces_drawn_on_the_lever_give_its_load(stem: str, tmp_path: Path) 
     bodies, speed, _ = lever_rates(pos, 0)
     turned = dataclasses.replace(pos, bodies=bodies)
     terms = lever_parts(pos, bodies)
-    arrows = lever._lever_arrows(turned, terms)
+    apart = lever._apart(turned, terms)
+    arrows = lever._lever_arrows(turned, terms, apart)
     drawn = sum(a[0] * f[1] - a[1] * f[0] for a, f, _, _ in arrows) / speed
     listed_only = sum(
-        -t.power / speed
-        for t in terms
-        if t.couple and lever._joints_apart(turned, t.body) is None
+        -t.power / speed for t in terms if t.couple and apart[t.body] is None
     )
     shares = dict(lever.lever_moments(table))
     want = sum(shares.values()) - shares.get("friction", 0.0) - listed_only
     assert drawn == pytest.approx(want, rel=1e-9, abs=1e-12)
-    pairs = [a for a in arrows if a[3] == lever.COUPLE]
-    assert len(pairs) == 2 * sum(
-        t.couple and lever._joints_apart(turned, t.body) is not None for t in terms
-    )
+    pairs = [a for a in arrows if a[3]]
+    assert len(pairs) == 2 * sum(t.couple and apart[t.body] is not None for t in terms)
 
 
 @pytest.mark.parametrize("stem", LEVERS)

@@ -318,7 +318,9 @@ def lever_load(
     the velocities and the speed of :func:`lever_rates`, if found already.
     """
     bodies, speed = lever_rates(pos, i)[:2] if rates is None else rates
-    _, power = lever_terms(pos, bodies)
+    power = 0.0
+    for t in lever_parts(pos, bodies):
+        power += t.power  # in the order lever_terms sums them: the same bits
     _, lost = power_rows(pos, bodies, bodies is pos.bodies)
     return -(power + lost) / speed
 

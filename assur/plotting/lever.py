@@ -147,23 +147,27 @@ def zhukovsky_lever(
     ax = _axes(ax, _title(pos, f"Zhukovsky's lever{literal(whose)}"), (11.0, 6.5))
     _images_plot(ax, found, mu, "#777777")
     shares = _shares(pos, (bodies, speed))
-    arrows = _lever_arrows(lever, [t for _, _, t in shares if t is not None])
+    terms = [t for _, _, t in shares if t is not None]
+    apart = _apart(lever, terms)
+    arrows = _lever_arrows(lever, terms, apart)
     # a couple's pair is drawn to its own scale: beside the inertia forces it is
     # often a fraction of a millimetre
     fmu, cmu = (
-        _scale([f for _, f, _, c in arrows if (c == COUPLE) == pair]) * 2.0
+        _scale([f for _, f, _, c in arrows if c == pair]) * 2.0
         for pair in (False, True)
     )
-    for at, force, label, color in arrows:
-        tip = at / mu + force / (cmu if color == COUPLE else fmu)
+    for at, force, label, couple in arrows:
+        color = COUPLE if couple else FORCE
+        tip = at / mu + force / (cmu if couple else fmu)
         _arrow(ax, at / mu, tip, color)
         LOAD_LABELS.add(ax.annotate(label, tip, fontsize=7, color=color))
-    balancing = lever_load(pos, driver, (bodies, speed))
-    _list_terms(ax, lever, d.kind, shares, (speed, balancing), unit_speed)
+    # the shares add up to the balancing load: their sum is the one written
+    balancing = math.fsum(share for _, share, _ in shares)
+    _list_terms(ax, apart, d.kind, shares, (speed, balancing), unit_speed)
     per = " per unit speed of the driver" if unit_speed else ""
     mu_unit = "(m/s)/mm" if not unit_speed else "m/mm" if d.kind == "R" else "1/mm"
-    entries = [(f"force, 1 mm = {fmu:g} N", "#d62728")]
-    if any(c == COUPLE for *_, c in arrows):
+    entries = [(f"force, 1 mm = {fmu:g} N", FORCE)]
+    if any(couple for *_, couple in arrows):
         entries.append((f"couple M as ±M/l at two joints, 1 mm = {cmu:g} N", COUPLE))
     note = f"lever: μv = {mu:g} {mu_unit}{per},\nturned 90°"
     _legend(ax, entries, note, beside=True)
@@ -171,16 +175,32 @@ def zhukovsky_lever(
     return ax
 
 
+FORCE = "#d62728"
+"""The colour of a force on the lever."""
 COUPLE = "#9467bd"
 """The colour of a couple's pair of forces on the lever."""
 PAIR_GAP = 1e-6
 """Two joints of a link closer than this times the mechanism's size carry no pair."""
 
 
+Ends = tuple[tuple[str, np.ndarray], tuple[str, np.ndarray]]
+"""Two joints of a link: each its name and its place (m)."""
+
+
+def _apart(lever: Position, terms: list[LeverTerm]) -> dict[int, Ends | None]:
+    """Return the two joints farthest apart of each link with a couple in ``terms``.
+
+    None for a link without two joints apart.
+    """
+    return {t.body: _joints_apart(lever, t.body) for t in terms if t.couple}
+
+
 def _lever_arrows(
-    lever: Position, terms: list[LeverTerm]
-) -> list[tuple[np.ndarray, np.ndarray, str, str]]:
-    """Return the lever's arrows: (image, m/s; force, N; label; colour).
+    lever: Position, terms: list[LeverTerm], apart: dict[int, Ends | None]
+) -> list[tuple[np.ndarray, np.ndarray, str, bool]]:
+    """Return the lever's arrows: (image, m/s; force, N; label; whether a couple's).
+
+    ``apart`` holds the joints of each link with a couple (:func:`_apart`).
 
     A force at its point's image; a couple ``M`` as ``M perp(d) / |d|^2`` at the
     image of joint P and its opposite at joint Q's (``d = P - Q``): the pair's
@@ -190,9 +210,9 @@ def _lever_arrows(
     for t in terms:
         if not t.couple:
             image = _perp(t.velocity)
-            out.append((image, t.load.force, _symbol(t.load.tex), "#d62728"))
+            out.append((image, t.load.force, _symbol(t.load.tex), False))
             continue
-        ends = _joints_apart(lever, t.body)
+        ends = apart[t.body]
         if ends is None:
             continue
         (p, at_p), (q, at_q) = ends
@@ -201,13 +221,11 @@ def _lever_arrows(
         label = f"{t.load.tex}/l_{{{tex_name(p)}{tex_name(q)}}}"
         for point, sign, text in ((at_p, 1.0, label), (at_q, -1.0, f"-{label}")):
             image = _perp(lever.coincident(t.body, point, 1))
-            out.append((image, sign * force, _symbol(text), COUPLE))
+            out.append((image, sign * force, _symbol(text), True))
     return out
 
 
-def _joints_apart(
-    pos: Position, body: int
-) -> tuple[tuple[str, np.ndarray], tuple[str, np.ndarray]] | None:
+def _joints_apart(pos: Position, body: int) -> Ends | None:
     """Return the two revolute joints of ``body`` farthest apart, or None."""
     pins = [
         (p.name, pos.pair_point(p))
@@ -225,7 +243,7 @@ def _joints_apart(
 
 def _list_terms(
     ax: Any,
-    lever: Position,
+    apart: dict[int, Ends | None],
     kind: str,
     shares: list[tuple[str, float, LeverTerm | None]],
     rates: tuple[float, float],
@@ -233,6 +251,7 @@ def _list_terms(
 ) -> None:
     """Write every load's share of the balancing load beside the lever, and the sum.
 
+    ``apart`` holds the joints of each link with a couple (:func:`_apart`);
     ``rates`` are the driver's speed and the balancing load; ``unit_speed`` says the
     speeds are per unit speed of the driver. The shares carry one decimal more than
     the sum: they add up by hand to the sum written.
@@ -250,7 +269,7 @@ def _list_terms(
         head = "friction" if t is None else _symbol(tex)
         if t is not None and t.couple:
             head += f" ({t.load.couple:.6g} N·m, ω_L/{rate} = {t.omega / speed:.6g}"
-            head += ")" if _joints_apart(lever, t.body) else "; listed only)"
+            head += ")" if apart[t.body] else "; listed only)"
         # rounded first: a share that rounds to nothing is written +0, not -0
         lines.append(f"{head}:  {round(share, places + 1) + 0.0:+.{places + 1}f}")
     lines.append(f"sum = balancing load: {balancing:.{places}f} {unit}")
