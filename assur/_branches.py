@@ -22,11 +22,12 @@ from typing import Any
 
 import numpy as np
 
-from assur._kinematics import continuation, drivers
+from assur._follow import drivers
+from assur._kinematics import continuation
 from assur._vec import Array
 from assur.plan import Plan
 
-__all__ = ["ChangePoints", "branches", "change_points"]
+__all__ = ["ChangePoints", "branches", "change_points", "flipped"]
 
 STEP = math.radians(0.5)
 """Grid step of the scan of a crank, rad."""
@@ -208,7 +209,12 @@ def _branch(solver: Any, points: Array, drive: Array, ref: float) -> Array:
             count += x >= c
         else:
             count += x <= c
-    return np.where(count % 2 == 1, -solver.branch, solver.branch).astype(float)
+    return flipped(solver.branch, count)
+
+
+def flipped(own: float, count: Any) -> Array:
+    """Return the branch ``own`` (+1 or -1) flipped ``count`` times (an array)."""
+    return np.where(count % 2 == 1, -own, own).astype(float)
 
 
 def branches(

@@ -21,7 +21,16 @@ from assur.groups._motion import Motion
 from assur.groups.driver import motion
 from assur.plan import Plan
 
-__all__ = ["advance", "drivers", "frame", "layout", "nested", "packed", "tangents"]
+__all__ = [
+    "BranchOf",
+    "advance",
+    "drivers",
+    "frame",
+    "layout",
+    "nested",
+    "packed",
+    "tangents",
+]
 
 BRANCH_TOLERANCE = 1e-6
 """A corrector's change to the predicted pose always accepted: this many radians and
@@ -42,6 +51,8 @@ PASSES = 2000
 """Most trial steps of a batch; positions not arrived by then fail."""
 
 BranchOf = Callable[[Array], dict[int, Array]]
+"""Each closed-form group's branch at driver positions (n, d), SI units, by solver
+index; a group absent keeps its reference pose's branch."""
 
 
 def drivers(plan: Plan, drive: Array, speed: Any, acceleration: Any) -> list[Motion]:

@@ -10,13 +10,12 @@ from which every point of every link follows.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
-from assur._follow import advance, drivers, layout, nested, tangents
+from assur._follow import BranchOf, advance, drivers, layout, nested, tangents
 from assur._vec import Array, Leaf, Mask, gather, is_array, take_rows
 from assur.groups._motion import Motion
 from assur.groups._pairs import slide
@@ -132,11 +131,6 @@ class KinematicState:
 def _at(value: Leaf, row: int) -> float:
     """Return a leaf's value at one row."""
     return float(value[row]) if is_array(value) else float(value)
-
-
-BranchOf = Callable[[Array], dict[int, Array]]
-"""Each closed-form group's branch at driver positions (n, d), SI units, by solver
-index; a group absent keeps its reference pose's branch."""
 
 
 def solve(

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._branches import CANDIDATE, REFINE, TOUCH
+from assur._branches import CANDIDATE, REFINE, TOUCH, flipped
 from assur._follow import drivers
 from assur._vec import Array, Index
 from assur.plan import Plan
@@ -100,8 +100,7 @@ def _changes(plan: Plan, drive: Array) -> PathChanges:
     count = {g: c for g, c in counts.items() if c.any()}
     branch = {}
     for g, c in count.items():
-        own = plan.solvers[g].branch
-        branch[g] = np.where(c % 2 == 1, -own, own).astype(float)
+        branch[g] = flipped(plan.solvers[g].branch, c)
     return PathChanges(count, branch)
 
 
@@ -192,7 +191,7 @@ def _flips(own: float, paths: _Paths, where: Index, s: Array) -> tuple[Index, Ar
     np.add.at(change, paths.first[where] + past.astype(np.int64) + 1, 1)
     np.add.at(change, paths.first[where] + paths.m[where] + 3, -1)
     before = np.cumsum(change)[:size]
-    return count, np.where(before % 2 == 1, -own, own).astype(float)
+    return count, flipped(own, before)
 
 
 def _touches(

@@ -93,9 +93,10 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                 AssurWarning,
                 stacklevel=4,
             )
-        elif what == "other way" and (mask & _short_way(plan, given)).any():
+        elif what == "other way":
             mask &= _short_way(plan, given)
-            warnings.warn(_around(plan, given, group, mask, ok), AssurWarning, 4)
+            if mask.any():
+                warnings.warn(_around(plan, given, group, mask, ok), AssurWarning, 4)
     return None if ok.all() else ok
 
 
