@@ -112,15 +112,8 @@ def _sequence_fault(value: object, expected: str, count: int | None = None) -> s
 
 
 def _check_vec(entry: str, value: object) -> None:
-    ok = (
-        isinstance(value, tuple | list) and len(value) == 2 and all(map(_finite, value))
-    )
-    if ok:
-        return
-    if isinstance(value, tuple | list) and len(value) == 2 and all(map(_number, value)):
-        bad = next(v for v in value if not _finite(v))
-        _fail(entry, f"{_number_fault(bad)} in {describe(value)}")
-    _fail(entry, f"expected two finite numbers [x, y], got {describe(value)}")
+    if not _vec_ok(value):
+        _fail(entry, _sequence_fault(value, "two finite numbers [x, y]", 2))
 
 
 def _vec_ok(value: object) -> bool:

@@ -12,10 +12,10 @@ from typing import Any
 
 import numpy as np
 
+from assur._checks import LARGEST
 from assur._text import counted, describe
 from assur._vec import Array
 from assur.errors import ModelError, UsageError
-from assur.model import LARGEST
 from assur.plan import Plan
 
 EXACT_DEGREES = 1e4

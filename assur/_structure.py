@@ -230,6 +230,29 @@ def graph(mechanism: Mechanism) -> Any:
     return g
 
 
+class DriverChoiceError(DecompositionError):
+    """A decomposition that fails for the input ``structure(driver=...)`` chose.
+
+    ``reason`` says why, without the argument's name; with ``counted`` the count of
+    inputs is at fault, which the one input the argument sets explains. The message
+    names the argument as the library spells it (:meth:`spelled` as another does).
+    """
+
+    def __init__(self, reason: str, counted: bool = False) -> None:
+        self.reason = reason
+        self.counted = counted
+        super().__init__(self.spelled("driver", "driver="))
+
+    def spelled(self, name: str, setting: str) -> str:
+        """Return the message with the argument named ``name`` (set as ``setting``)."""
+        note = (
+            f" ({setting} sets one input; without it the file's drivers are used)"
+            if self.counted
+            else ""
+        )
+        return f"{name}: {self.reason}{note}"
+
+
 def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
     """Analyse the structure of ``mechanism``: mobility and Assur groups.
 
@@ -263,25 +286,21 @@ def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
     mech = mechanism_of(mechanism)
     if driver is not None:
         if driver not in {j.name for j in mech.joints}:
-            msg = f"driver: unknown joint {driver!r}"
-            raise DecompositionError(msg)
+            msg = f"unknown joint {driver!r}"
+            raise DriverChoiceError(msg)
         omega = mech.drivers[0].omega if mech.drivers else 1.0
         try:
             mech = dataclasses.replace(mech, drivers=(Driver(driver, omega),))
         except ModelError as err:
-            msg = f"driver: {str(err).split(': ', 1)[-1]}"
-            raise DecompositionError(msg) from None
+            raise DriverChoiceError(str(err).split(": ", 1)[-1]) from None
     try:
         drivers, groups, topo = decompose(mech)
     except DecompositionError as err:
         if driver is None or not str(err).startswith("drivers:"):
             raise
         # the count of inputs is the option's doing, not the file's
-        msg = (
-            f"driver: {str(err).split(': ', 1)[-1]} (driver= sets one input; "
-            "without it the file's drivers are used)"
-        )
-        raise DecompositionError(msg) from None
+        reason = str(err).split(": ", 1)[-1]
+        raise DriverChoiceError(reason, counted=True) from None
     n = len(mech.links)
     p4 = len(topo.slots)
     return Structure(

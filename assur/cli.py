@@ -44,7 +44,6 @@ from assur._troubles import SKIPPED_WHY
 from assur.errors import (
     AssurError,
     AssurWarning,
-    DecompositionError,
     ModelError,
     OutputError,
     UsageError,
@@ -53,8 +52,6 @@ from assur.errors import (
 __all__ = ["main", "parse_angles"]
 
 COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {}
-INTERRUPTED = 130
-"""Exit status after Ctrl-C (128 + SIGINT), as shells report it."""
 QUIET = "no progress bars, no 'wrote ...' lines or notes (errors and warnings stay)"
 
 
@@ -196,7 +193,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             print("assur: terminated", file=sys.stderr)
             return 128 + stop.signum
         print("assur: interrupted", file=sys.stderr)
-        return INTERRUPTED
+        return _start.INTERRUPTED
 
 
 def _main(argv: list[str]) -> int:
@@ -315,18 +312,14 @@ def _error(text: str) -> None:
 
 
 def _cmd_structure(args: argparse.Namespace) -> int:
-    from assur._structure import structure
+    from assur._structure import DriverChoiceError, structure
 
     mech = load_mechanism(args.file)
     try:
         s = structure(mech, driver=args.driver)
-    except DecompositionError as err:
-        text = str(err)
-        if args.driver is not None and text.startswith("driver:"):
-            # the option, not the file: named as the command line spells it
-            text = "--" + text.replace("(driver= sets", "(--driver sets", 1)
-            raise UsageError(text) from err
-        raise
+    except DriverChoiceError as err:
+        # the option, not the file: named as the command line spells it
+        raise UsageError(err.spelled("--driver", "--driver")) from err
     _say(json.dumps(s.to_dict(), indent=2) if args.json else str(s))
     return 0
 

@@ -14,10 +14,7 @@ from os import PathLike
 from typing import TYPE_CHECKING, Any
 
 from assur import _output
-from assur._file_entries import FORMAT_VERSION as FORMAT_VERSION
-from assur._file_entries import KEYS as KEYS
 from assur._file_entries import parse
-from assur._file_syntax import MAX_NESTING as MAX_NESTING
 from assur._file_syntax import _decoded, file_data
 from assur._file_text import toml_text
 from assur._output import (

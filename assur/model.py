@@ -14,7 +14,6 @@ from os import PathLike
 from typing import Any
 
 from assur import _checks
-from assur._checks import LARGEST as LARGEST  # still imported from here by analysis
 from assur._checks import _fail, _tuples
 from assur._load_checks import LoadTable
 from assur._motor import Motor
