@@ -298,6 +298,11 @@ def folder(text: str) -> Path:
     return Path(_named(text, "folder"))
 
 
+def quiet(args: Any) -> bool:
+    """Whether the command was asked to be quiet (``-q``, before or after it)."""
+    return bool(getattr(args, "quiet", False))
+
+
 def is_stdout(path: Any) -> bool:
     """Whether ``path`` names the file standard output writes to (``/dev/stdout``)."""
     if str(path) == "-":

@@ -13,7 +13,13 @@ import sys
 from collections.abc import Iterator
 from typing import Any
 
-from assur._cli_common import is_stdout, load_mechanism, positions, terminal
+from assur._cli_common import (
+    is_stdout,
+    load_mechanism,
+    positions,
+    quiet,
+    terminal,
+)
 from assur._cli_summary import _summary, _summary_text, _summed
 from assur._cli_tables import _check_outputs, _write_tables
 from assur._output import path_text, write_stdout
@@ -50,14 +56,14 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
                 pass
         else:
             text, names = _summary(parts, forces)
-    quiet = bool(getattr(args, "quiet", False))
-    if skipped.count and not quiet:
+    hushed = quiet(args)
+    if skipped.count and not hushed:
         print(skipped.note(args.file), file=sys.stderr)
     if summary is not None:
         write_stdout(_summary_text(mech.name, summary, args.json) + "\n")
     if not writing:
         write_stdout(text + "\n")
-        if not quiet:
+        if not hushed:
             full = "--csv PATH or --json for the full table"
             print(f"({len(names)} columns in all: {full})")
         return 0
@@ -66,7 +72,7 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
     # standard output may carry a table: the lines then go to standard error
     lines = sys.stderr if args.json or is_stdout(args.csv or "") else sys.stdout
     for target in (args.csv, args.parquet):
-        if target and not is_stdout(target) and not quiet:
+        if target and not is_stdout(target) and not hushed:
             size = f"{rows} rows x {len(names)} columns"
             print(f"wrote {size} to {path_text(target)}", file=lines)
     return 0
@@ -75,7 +81,7 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
 @contextlib.contextmanager
 def _bar(args: argparse.Namespace, what: str, total: int) -> Iterator[Any]:
     """Yield a progress bar for a long sweep on a terminal, else None."""
-    if getattr(args, "quiet", False) or total < LONG_SWEEP or not terminal():
+    if quiet(args) or total < LONG_SWEEP or not terminal():
         yield None
         return
     from assur._progress import progress

@@ -29,6 +29,7 @@ from assur._cli_common import (
     load_mechanism,
     one_position,
     parse_angles,
+    quiet,
 )
 from assur._cli_process import (
     _closed_streams,
@@ -360,7 +361,7 @@ def _cmd_explain(args: argparse.Namespace) -> int:
         _say(str(note).rstrip("\n"))
         return 0
     note.write(args.output)
-    if not _quiet(args):
+    if not quiet(args):
         print(f"wrote {path_text(args.output)}")
     return 0
 
@@ -371,10 +372,6 @@ def _cmd_kinematics(args: argparse.Namespace) -> int:
 
 def _cmd_forces(args: argparse.Namespace) -> int:
     return _sweep(args, forces=True)
-
-
-def _quiet(args: argparse.Namespace) -> bool:
-    return bool(getattr(args, "quiet", False))
 
 
 if __name__ == "__main__":  # pragma: no cover

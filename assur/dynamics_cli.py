@@ -31,6 +31,7 @@ from assur._cli_common import (
     is_stdout,
     load_mechanism,
     parse_angles,
+    quiet,
     terminal,
 )
 from assur._output import (
@@ -125,7 +126,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     mech = load_mechanism(args.file)
     check_structure(mech)
     check_dynamic(mech)  # one crank and masses, before its --angles are read
-    if not getattr(args, "quiet", False) and any(j.friction > 0.0 for j in mech.joints):
+    if not quiet(args) and any(j.friction > 0.0 for j in mech.joints):
         print(
             f"assur: note: {path_text(args.file)}: the dynamic model leaves the "
             "joints' friction out"
@@ -260,7 +261,7 @@ class _Rows:
 def _stream(rows: _Rows, writer: Any, args: argparse.Namespace) -> None:
     """Write every slice of ``rows`` with ``writer``; a bar on a long sweep."""
     n = len(rows)
-    show = n >= LONG_SWEEP and terminal() and not getattr(args, "quiet", False)
+    show = n >= LONG_SWEEP and terminal() and not quiet(args)
     with progress("dynamics", n, show=show) as bar:
         for start in range(0, n, SLICE):
             part = rows.part(start, min(start + SLICE, n))
@@ -380,7 +381,7 @@ def _write_files(
 
 def _wrote(args: argparse.Namespace, written: list[tuple[Any, int, int]]) -> None:
     """Say which files were written (``(path, rows, columns)``), unless --quiet."""
-    if getattr(args, "quiet", False):
+    if quiet(args):
         return
     # standard output may carry the table or the JSON: the lines go to stderr then
     lines = sys.stderr if (args.json or args.csv == "-") else sys.stdout

@@ -31,6 +31,7 @@ from assur._cli_common import (
     load_mechanism,
     one_position,
     positions,
+    quiet,
     terminal,
 )
 from assur._output import output_folder, output_path, path_text
@@ -245,7 +246,7 @@ def _say_skipped(args: argparse.Namespace, skipped: Any) -> None:
     """Note the positions left out of the sweep (``--skip-unassembled``), if any."""
     from assur._sliced import Skipped
 
-    if len(skipped) and not getattr(args, "quiet", False):
+    if len(skipped) and not quiet(args):
         found = Skipped()
         found.add(skipped)
         print(found.note(args.file), file=sys.stderr)
@@ -281,13 +282,13 @@ def _save(fig: Any, path: Path, dpi: float) -> None:
 
 def _wrote(args: argparse.Namespace, text: str) -> None:
     """Say what was written, unless ``--quiet``."""
-    if not getattr(args, "quiet", False):
+    if not quiet(args):
         print(f"wrote {text}")
 
 
 def _show(args: argparse.Namespace) -> bool:
     """Whether to show progress bars: on a terminal, without ``--quiet``."""
-    return terminal() and not getattr(args, "quiet", False)
+    return terminal() and not quiet(args)
 
 
 PLANS = (
@@ -348,7 +349,7 @@ def _cmd_plans(args: argparse.Namespace) -> int:
         for i in range(count):
             lever = "zhukovsky_lever" if count == 1 else f"zhukovsky_lever_{i + 1}"
             makers[lever] = _lever(plotting, t, i)
-    elif not getattr(args, "quiet", False):
+    elif not quiet(args):
         print(
             f"assur: note: {path_text(args.file)}: no force polygons and no lever: "
             "no link has a mass and no load is applied",
