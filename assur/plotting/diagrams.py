@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._gaps import gaps
+from assur._gaps import broken, gaps
 from assur.columns import LINK_PARTS, POINT_PARTS
 from assur.errors import ModelError
 from assur.plotting._axes import (
@@ -231,7 +231,7 @@ def plot_paths(
         xy = np.column_stack([table[f"{name}.x"], table[f"{name}.y"]])
         color = PATH_COLORS[k % len(PATH_COLORS)]
         coupler = name in extra
-        line = _broken(table, xy)
+        line = broken(xy, rows)
         ax.plot(
             line[:, 0],
             line[:, 1],
