@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from assur._text import NAME_LIMIT, listing, public_name, shortened
-from assur._topology import Pair, Topology, _Index, _index, _public
+from assur._topology import Pair, Topology, _component, _Index, _index, _public
 from assur.model import GROUND, Mechanism
 
 PER_FREEDOM = "one driver per degree of freedom"
@@ -46,13 +46,7 @@ def _miscount(topo: Topology, w: int, mech: Mechanism) -> tuple[str, str]:
 
 def _loose_text(index: _Index, mech: Mechanism) -> tuple[str, str] | None:
     """Return the links not joined to the frame, or else those on one joint alone."""
-    joined = {GROUND}
-    todo = [GROUND]
-    while todo:
-        for other in index.neighbours[todo.pop()]:
-            if other not in joined:
-                joined.add(other)
-                todo.append(other)
+    joined = _component(index, GROUND)
     apart = [x for x in index.links if x not in joined]
     if apart:
         return (

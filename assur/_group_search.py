@@ -12,7 +12,7 @@ import heapq
 from collections.abc import Iterator
 
 from assur._diagnosis import _leftover, _Rigid, _sliding_loop
-from assur._topology import Pair, _Index
+from assur._topology import Pair, _component, _Index
 from assur.errors import DecompositionError
 
 MAX_GROUP_LINKS = 8
@@ -189,13 +189,7 @@ def _tree(
     """
     first = next(iter(subset))
     if first not in trees:
-        part = {first}
-        todo = [first]
-        while todo:
-            for other in index.neighbours[todo.pop()]:
-                if other in unknown and other not in part:
-                    part.add(other)
-                    todo.append(other)
+        part = _component(index, first, unknown)
         pairs = {i for name in part for i in index.incident[name]}
         inside = sum(all(x in part for x in index.pairs[i].links) for i in pairs)
         trees.update(dict.fromkeys(part, inside == len(part) - 1))

@@ -120,3 +120,18 @@ def _index(topo: Topology) -> _Index:
         {name: frozenset(v) for name, v in neighbours.items()},
         {name: tuple(v) for name, v in ends.items()},
     )
+
+
+def _component(index: _Index, start: str, within: set[str] | None = None) -> set[str]:
+    """Return the links joined to ``start`` by chains of joints, itself included.
+
+    With ``within``, the chains go through links of ``within`` alone.
+    """
+    part = {start}
+    todo = [start]
+    while todo:
+        for other in index.neighbours[todo.pop()]:
+            if other not in part and (within is None or other in within):
+                part.add(other)
+                todo.append(other)
+    return part
