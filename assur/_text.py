@@ -60,7 +60,12 @@ def counted(count: int, noun: str, plural: str | None = None) -> str:
     >>> counted(1, "driver"), counted(2, "driver"), counted(0, "degree", "degrees")
     ('1 driver', '2 drivers', '0 degrees')
     """
-    return f"{count} {noun if count == 1 else plural or noun + 's'}"
+    return f"{count} {noun_for(count, noun, plural)}"
+
+
+def noun_for(count: int, noun: str, plural: str | None = None) -> str:
+    """Return ``noun`` as it follows the number ``count``: plural unless one."""
+    return noun if count == 1 else plural or noun + "s"
 
 
 def public_name(name: str) -> str:

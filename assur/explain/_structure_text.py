@@ -7,7 +7,7 @@ formula with its numbers and the order of the two passes.
 from __future__ import annotations
 
 from assur._structure import Structure
-from assur._text import counted, roman
+from assur._text import counted, noun_for, roman
 from assur.explain._note import Block, Display, Heading, Items, Para
 from assur.explain._tex import plain
 from assur.report import _why
@@ -20,20 +20,15 @@ def _kind(kind: str) -> str:
     return {"triad": "triad", "general": "group"}.get(kind, f"dyad {kind}")
 
 
-def _plural(count: int, noun: str) -> str:
-    """Return ``noun`` as it follows the number ``count`` (set apart in TeX)."""
-    return noun if count == 1 else f"{noun}s"
-
-
 def structure_blocks(s: Structure) -> list[Block]:
     """Return the structural analysis: W, the groups in order, why each is one."""
     n, p5, p4 = s.links, s.lower_pairs, s.higher_pairs
     blocks: list[Block] = [
         Heading(2, "1. Structure"),
         Para(
-            f"The mechanism has $n = {n}$ moving {_plural(n, 'link')}, $p_5 = {p5}$ "
-            f"lower {_plural(p5, 'pair')} and $p_4 = {p4}$ higher "
-            f"{_plural(p4, 'pair')}. Chebyshev-Gruebler's formula gives its degrees "
+            f"The mechanism has $n = {n}$ moving {noun_for(n, 'link')}, $p_5 = {p5}$ "
+            f"lower {noun_for(p5, 'pair')} and $p_4 = {p4}$ higher "
+            f"{noun_for(p4, 'pair')}. Chebyshev-Gruebler's formula gives its degrees "
             "of freedom:"
         ),
         Display(
