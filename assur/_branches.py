@@ -17,6 +17,7 @@ the poses its continuation reaches along the grid. Several drivers: see
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -27,7 +28,7 @@ from assur._kinematics import continuation
 from assur._vec import Array
 from assur.plan import Plan
 
-__all__ = ["ChangePoints", "branches", "change_points", "flipped"]
+__all__ = ["ChangePoints", "branches", "change_points", "flipped", "lowest"]
 
 STEP = math.radians(0.5)
 """Grid step of the scan of a crank, rad."""
@@ -177,23 +178,32 @@ def _touches(
     index = np.flatnonzero(low) + 1
     if index.size == 0:
         return np.zeros(0)
-    a, b = grid[index - 1].copy(), grid[index + 1].copy()
-    ratio = (math.sqrt(5.0) - 1.0) / 2.0
-    for _ in range(REFINE):
-        c, d = b - ratio * (b - a), a + ratio * (b - a)
-        fc = _discriminants(plan, c, flips, g)
-        fd = _discriminants(plan, d, flips, g)
-        assert fc is not None
-        assert fd is not None
-        left = ~(fc > fd)  # the minimum is in [a, d]; NaN (open) counts as low
-        b = np.where(left, d, b)
-        a = np.where(left, a, c)
-    middle = 0.5 * (a + b)
-    minimum = _discriminants(plan, middle, flips, g)
-    assert minimum is not None
+
+    def discriminant(x: Array) -> Array:
+        found = _discriminants(plan, x, flips, g)
+        assert found is not None
+        return found
+
+    middle, minimum = lowest(discriminant, grid[index - 1], grid[index + 1])
     # a touch, not a dip below zero (where the dyad stops: no branch beyond)
     touch = np.abs(minimum) <= TOUCH
     return np.sort(middle[touch])
+
+
+def lowest(f: Callable[[Array], Array], a: Array, b: Array) -> tuple[Array, Array]:
+    """Return where ``f`` is lowest in each interval ``[a, b]``, and its value there.
+
+    Golden-section search, :data:`REFINE` steps, every interval at once; a NaN
+    (a pose that does not close) counts as low.
+    """
+    ratio = (math.sqrt(5.0) - 1.0) / 2.0
+    for _ in range(REFINE):
+        c, d = b - ratio * (b - a), a + ratio * (b - a)
+        left = ~(f(c) > f(d))  # the minimum is in [a, d]
+        b = np.where(left, d, b)
+        a = np.where(left, a, c)
+    middle = 0.5 * (a + b)
+    return middle, f(middle)
 
 
 def _branch(solver: Any, points: Array, drive: Array, ref: float) -> Array:

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._branches import CANDIDATE, REFINE, TOUCH, flipped
+from assur._branches import CANDIDATE, TOUCH, flipped, lowest
 from assur._follow import drivers
 from assur._vec import Array, Index
 from assur.plan import Plan
@@ -214,22 +214,16 @@ def _touches(
     # the lowest value of the parabola through the three samples: zero for a
     # discriminant that touches zero quadratically, however far the samples
     bend = before - 2.0 * here + after
-    lowest = here - (after - before) ** 2 / (8.0 * np.where(bend > 0.0, bend, np.inf))
-    k = k[low & (np.minimum(np.abs(here), np.abs(lowest)) < CANDIDATE)]
+    vertex = here - (after - before) ** 2 / (8.0 * np.where(bend > 0.0, bend, np.inf))
+    k = k[low & (np.minimum(np.abs(here), np.abs(vertex)) < CANDIDATE)]
     if k.size == 0:
         return k, np.zeros(0)
     where = paths.owner[k]
-    a, b = paths.s[k - 1].copy(), paths.s[k + 1].copy()
-    ratio = (math.sqrt(5.0) - 1.0) / 2.0
-    for _ in range(REFINE):
-        c, d = b - ratio * (b - a), a + ratio * (b - a)
-        fc = _values(plan, groups, paths.at(c, where), flipped, k, g)
-        fd = _values(plan, groups, paths.at(d, where), flipped, k, g)
-        left = ~(fc > fd)  # the minimum is in [a, d]; NaN (open) counts as low
-        b = np.where(left, d, b)
-        a = np.where(left, a, c)
-    middle = 0.5 * (a + b)
-    minimum = _values(plan, groups, paths.at(middle, where), flipped, k, g)
+    middle, minimum = lowest(
+        lambda s: _values(plan, groups, paths.at(s, where), flipped, k, g),
+        paths.s[k - 1],
+        paths.s[k + 1],
+    )
     # a touch, not a dip below zero (where the dyad stops: no branch beyond)
     touch = np.abs(minimum) <= TOUCH
     return where[touch], middle[touch]
