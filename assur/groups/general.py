@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
-from assur._vec import Array
+from assur._vec import Array, Mask
 from assur.groups._dyad import dead_centre, reaction
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan, partials, residual, unit_wrenches
@@ -103,13 +103,18 @@ class GeneralSolver:
 
     def linearize(self, bodies: list[Motion]) -> Linearization:
         """Return the Jacobian, with the rows of failed positions made harmless."""
-        jac = jacobian(self, bodies, _count(self, bodies))
-        failed = ~np.isfinite(jac).all(axis=(1, 2))
-        jac[failed] = np.eye(jac.shape[-1])
+        jac, failed = self._finite_jacobian(bodies)
         cond = conditioning(self, jac)
         singular = ~failed & ~(cond >= self.singular)
         jac[singular] = np.eye(jac.shape[-1])  # their derivatives are not defined
         return Linearization(jac, cond, singular)
+
+    def _finite_jacobian(self, bodies: list[Motion]) -> tuple[Array, Mask]:
+        """Return the Jacobian, the identity where a pose failed, and where it did."""
+        jac = jacobian(self, bodies, _count(self, bodies))
+        failed = np.logical_not(np.isfinite(jac).all(axis=(1, 2)))
+        jac[failed] = np.eye(jac.shape[-1])
+        return jac, failed
 
     def derivative(self, bodies: list[Motion], k: int, lin: Linearization) -> None:
         """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of every link."""
@@ -122,10 +127,7 @@ class GeneralSolver:
         driver can follow: it changes only where the Jacobian is singular (a dead
         centre, or where two assemblies meet). NaN where the pose failed.
         """
-        n = _count(self, bodies)
-        jac = jacobian(self, bodies, n)
-        bad = ~np.isfinite(jac).all(axis=(1, 2))
-        jac[bad] = np.eye(jac.shape[-1])
+        jac, bad = self._finite_jacobian(bodies)
         sign = np.linalg.slogdet(jac)[0]
         jac[sign == 0.0] = np.eye(jac.shape[-1])  # exactly singular: no velocity
         sign[bad] = np.nan
