@@ -99,7 +99,7 @@ def _assemble(
     if solver.newton:
         found = {k: points for k, points in flips.items() if k < g}
 
-        def branch_of(x: Array) -> dict[int, Array]:
+        def branch_of(x: Array, upto: int) -> dict[int, Array]:
             return {
                 k: _branch(plan.solvers[k], points, x, ref)
                 for k, points in found.items()

@@ -23,6 +23,7 @@ from assur.plan import Plan
 
 __all__ = [
     "BranchOf",
+    "Branches",
     "advance",
     "drivers",
     "frame",
@@ -50,9 +51,14 @@ carries on with continuous velocities. Any other step refused at that size fails
 PASSES = 2000
 """Most trial steps of a batch; positions not arrived by then fail."""
 
-BranchOf = Callable[[Array], dict[int, Array]]
+BranchOf = Callable[[Array, int], dict[int, Array]]
 """Each closed-form group's branch at driver positions (n, d), SI units, by solver
-index; a group absent keeps its reference pose's branch."""
+index; a group absent keeps its reference pose's branch. The second argument is a
+solver index: the groups before it are all the caller reads."""
+Branches = BranchOf | dict[int, Array] | None
+"""The closed-form groups' branches for a step: a :data:`BranchOf`, the branch of
+each group at each of the step's positions (n,) by solver index, or None for the
+reference pose's."""
 
 
 def drivers(plan: Plan, drive: Array, speed: Any, acceleration: Any) -> list[Motion]:
@@ -112,7 +118,7 @@ def tangents(
     at: Array,
     guess: list[Any] | None,
     direction: Array,
-    branch_of: BranchOf | None,
+    branch_of: Branches,
 ) -> tuple[Array, Mask, Array, Array]:
     """Solve the Newton groups at driver positions ``at`` (n, d) from ``guess``.
 
@@ -123,8 +129,11 @@ def tangents(
     n = at.shape[0]
     still = [0.0] * len(plan.drivers)
     bodies = drivers(plan, at, list(direction.T), still)
-    branch = {} if branch_of is None else branch_of(at)
     last = max(i for i, solver in enumerate(plan.solvers) if solver.newton)
+    if branch_of is None or isinstance(branch_of, dict):
+        branch = branch_of or {}
+    else:
+        branch = branch_of(at, last)
     found: list[Any] = []
     failed = []
     rates = []
@@ -154,19 +163,21 @@ def advance(
     start: Array,
     target: Array,
     begun: tuple[Array, Array, Array],
-    branch_of: BranchOf | None,
+    branch_of: Branches,
     top: Array,
 ) -> tuple[Array, Array, Array, Mask]:
     """Follow the Newton groups from driver positions ``start`` to ``target`` (n, d).
 
     ``begun`` holds their packed poses at ``start``, rates of change per unit of the
     path ``target - start`` and Jacobians' signs (see :func:`tangents`); ``top`` (n,)
-    the largest step, as a fraction of the path. Each position takes steps of its
-    own: a prediction along the tangent, corrected by Newton's method, accepted only
-    when the correction is small, the tangent turns little and the Jacobian keeps its
-    sign; otherwise the step is halved, at most :data:`HALVINGS` times, after which
-    the groups still refusing it fail there (the others go on). Returns the same
-    three at ``target`` and where each group failed (groups, n; its pose then NaN).
+    the largest step, as a fraction of the path; ``branch_of`` the closed-form
+    groups' branches (a dict: one per position, kept over the whole step). Each
+    position takes steps of its own: a prediction along the tangent, corrected by
+    Newton's method, accepted only when the correction is small, the tangent turns
+    little and the Jacobian keeps its sign; otherwise the step is halved, at most
+    :data:`HALVINGS` times, after which the groups still refusing it fail there (the
+    others go on). Returns the same three at ``target`` and where each group failed
+    (groups, n; its pose then NaN).
     """
     path = target - start
     pose, rate, sign = (a.copy() for a in begun)
@@ -188,12 +199,15 @@ def advance(
         trial = np.minimum(t[rows] + h[rows], 1.0)
         dt = trial - t[rows]
         guess = pose[:, rows] + rate[:, rows] * dt
+        branch = branch_of
+        if isinstance(branch, dict):
+            branch = {g: values[rows] for g, values in branch.items()}
         found, bad, new, signs = tangents(
             plan,
             start[rows] + path[rows] * trial[:, None],
             nested(plan, guess),
             path[rows],
-            branch_of,
+            branch,
         )
         new = np.where(np.isfinite(new), new, rate[:, rows])
         floor = dt <= bottom[rows] * (1.0 + 1e-9)

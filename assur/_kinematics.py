@@ -150,7 +150,7 @@ def solve(
     """
     n = drive.shape[0]
     guesses, around = _continued(plan, drive, branch_of) if plan.newton else ([], [])
-    branch = {} if branch_of is None else branch_of(drive)
+    branch = {} if branch_of is None else branch_of(drive, len(plan.solvers))
     bodies = drivers(plan, drive, speed, acceleration)
     troubles: list[Trouble] = []
     g = 0

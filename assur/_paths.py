@@ -6,21 +6,22 @@ closed-form dyad's discriminant is sampled along each path; where it touches zer
 change point, see :mod:`assur._branches`) the dyad moves on onto its other branch, so
 a position's branch is the reference pose's flipped once per change point on its path.
 
-Scanned: the groups before the first one solved by Newton's method (the dyads after
-one would need its continuation to every sample of every path).
+Scanned: every closed-form dyad. A group solved by Newton's method has no branch to
+choose; it is walked along each path from sample to sample, so that the dyads after
+it are scanned on the poses its continuation reaches.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from assur._branches import CANDIDATE, TOUCH, flipped, lowest
-from assur._follow import drivers
+from assur._follow import advance, drivers, layout, nested, tangents
 from assur._vec import Array, Index
 from assur.plan import Plan
 
@@ -52,37 +53,40 @@ class PathChanges:
     branch: dict[int, Array]
 
 
-def path_changes(plan: Plan, drive: Array) -> PathChanges:
+def path_changes(plan: Plan, drive: Array, upto: int | None = None) -> PathChanges:
     """Return the change points on the paths to driver positions ``drive`` (n, d), SI.
 
-    The last few batches asked for are kept with the plan.
+    ``upto``: the groups before this solver index are all the caller reads (the
+    continuation of a Newton group needs those before it only). The last few batches
+    asked for are kept with the plan.
     """
+    groups = _scanned(plan, len(plan.solvers) if upto is None else upto)
+    if not groups:
+        return PathChanges({}, {})
     kept: dict[bytes, PathChanges] = plan.memo.setdefault("path-changes", {})
-    key = np.ascontiguousarray(drive, dtype=float).tobytes() + str(drive.shape).encode()
+    key = np.ascontiguousarray(drive, dtype=float).tobytes()
+    key += f"{drive.shape} {len(groups)}".encode()
     found = kept.get(key)
     if found is None:
-        found = _changes(plan, drive)
+        found = _changes(plan, groups, drive)
         if len(kept) >= KEPT:
             kept.pop(next(iter(kept)))
         kept[key] = found
     return found
 
 
-def _scanned(plan: Plan) -> list[int]:
-    """Return the solvers scanned: those before the first Newton-solved one."""
-    out = []
-    for g, solver in enumerate(plan.solvers):
-        if solver.newton:
-            break
-        out.append(g)
-    return out
+def _scanned(plan: Plan, upto: int) -> list[int]:
+    """Return the solvers scanned: up to the last closed-form one before ``upto``."""
+    closed = [g for g, s in enumerate(plan.solvers[:upto]) if not s.newton]
+    return list(range(closed[-1] + 1)) if closed else []
 
 
-def _changes(plan: Plan, drive: Array) -> PathChanges:
-    """Scan the paths to ``drive`` slice by slice (see :func:`path_changes`)."""
-    groups = _scanned(plan)
+def _changes(plan: Plan, groups: list[int], drive: Array) -> PathChanges:
+    """Scan ``groups`` on the paths to ``drive``, slice by slice."""
     n = drive.shape[0]
-    counts: dict[int, Index] = {g: np.zeros(n, dtype=np.int64) for g in groups}
+    counts: dict[int, Index] = {
+        g: np.zeros(n, dtype=np.int64) for g in groups if not plan.solvers[g].newton
+    }
     if n and groups:
         reference = np.array([d.reference for d in plan.drivers])
         unit = np.array(
@@ -148,58 +152,157 @@ def _sampled(reference: Array, drive: Array, m: Index) -> _Paths:
     return _Paths(reference, drive - reference, m, owner, j, s, first)
 
 
+@dataclass(frozen=True, slots=True)
+class _Scan:
+    """What a scan of sampled paths has found so far, by solver index.
+
+    ``flipped[g]``: a dyad's branch at every sample; ``met[g]``: the paths and
+    parameters of its change points; ``walked[g]``: a Newton group's link poses at
+    every sample (see :func:`assur._follow.nested`).
+    """
+
+    paths: _Paths
+    flipped: dict[int, Array] = field(default_factory=dict)
+    met: dict[int, tuple[Index, Array]] = field(default_factory=dict)
+    walked: dict[int, list[Any]] = field(default_factory=dict)
+
+
 def _counts(
     plan: Plan, groups: list[int], reference: Array, drive: Array, m: Index
 ) -> dict[int, Index]:
-    """Return each group's change points on the paths to ``drive`` (n,), by solver.
+    """Return each dyad's change points on the paths to ``drive`` (n,), by solver.
 
     One pass over the samples: each group is assembled on the branches its change
-    points give it before the next group's discriminant is taken.
+    points give it before the next group's discriminant is taken; a Newton group
+    takes the poses its walk along each path reaches (:func:`_walked`).
     """
-    paths = _sampled(reference, drive, m)
+    scan = _Scan(_sampled(reference, drive, m))
+    paths = scan.paths
     size = paths.owner.size
     still = (0.0,) * len(plan.drivers)
     bodies = drivers(plan, paths.at(paths.s, paths.owner), still, still)
-    flipped: dict[int, Array] = {}
     out = {}
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         for g in groups:
             solver = plan.solvers[g]
+            if solver.newton:
+                scan.walked[g] = _walked(plan, g, scan)
+                solver.assemble(bodies, size, scan.walked[g])
+                continue
             values = solver.discriminant(bodies)
             if values is not None:
                 values = np.broadcast_to(values, (size,))
-                where, s = _touches(plan, groups, paths, values, flipped, g)
+                where, s = _touches(plan, groups, scan, values, g)
                 if where.size:
-                    out[g], flipped[g] = _flips(solver.branch, paths, where, s)
+                    out[g], scan.flipped[g] = _flips(solver.branch, paths, where, s)
+                    scan.met[g] = (where, s)
             if g != groups[-1]:
-                solver.assemble(bodies, size, branch=flipped.get(g))
+                solver.assemble(bodies, size, branch=scan.flipped.get(g))
     return out
 
 
 def _flips(own: float, paths: _Paths, where: Index, s: Array) -> tuple[Index, Array]:
     """Return the change points on each path and the branch at every sample.
 
-    ``where`` are the paths and ``s`` the parameters of the change points found; one
-    at the reference pose itself (s = 0) is not crossed.
+    ``where`` are the paths and ``s`` the parameters of the change points found. One
+    ahead of the reference pose (0 < s <= 1) is crossed on the way to the position;
+    one at the reference pose itself or behind it (s <= 0) is not, though the sample
+    behind the reference pose is past it.
     """
-    crossed = (s > 1e-9) & (s <= 1.0 + 1e-9)
-    count = np.bincount(where[crossed], minlength=paths.m.shape[0])
-    # every sample from the change point to its path's end is past it
+    ahead = s > 1e-9
+    count = np.bincount(where[ahead & (s <= 1.0 + 1e-9)], minlength=paths.m.shape[0])
     size = paths.owner.size
     change = np.zeros(size + 1, dtype=np.int64)
-    past = np.clip(np.ceil(s * paths.m[where] - 1e-9), -1, paths.m[where] + 1)
-    np.add.at(change, paths.first[where] + past.astype(np.int64) + 1, 1)
-    np.add.at(change, paths.first[where] + paths.m[where] + 3, -1)
+    m, first = paths.m[where], paths.first[where]
+    # ahead: every sample from the change point to its path's end is past it
+    past = np.clip(np.ceil(s * m - 1e-9), 0, m + 1).astype(np.int64)
+    np.add.at(change, np.where(ahead, first + past + 1, first), 1)
+    np.add.at(change, np.where(ahead, first + m + 3, first + 1), -1)
     before = np.cumsum(change)[:size]
     return count, flipped(own, before)
+
+
+def _crossed(plan: Plan, scan: _Scan, g: int, go: Index, x: Array) -> dict[int, Array]:
+    """Return the dyads' branches before group ``g`` at ``x`` on paths ``go``.
+
+    The rule of :func:`_flips`: a change point is crossed when it lies between the
+    reference pose (s = 0) and ``x``, on either side.
+    """
+    n = scan.paths.m.shape[0]
+    at = np.full(n, np.nan)
+    at[go] = x
+    out = {}
+    for h, (where, s) in scan.met.items():
+        if h < g:
+            y = at[where]
+            crossed = np.where(s > 1e-9, s <= y, s >= y)
+            count = np.bincount(where[crossed], minlength=n)[go]
+            out[h] = flipped(plan.solvers[h].branch, count)
+    return out
+
+
+def _walked(plan: Plan, g: int, scan: _Scan) -> list[Any]:
+    """Return Newton group ``g``'s link poses at every sample, walked along each path.
+
+    Each path is followed from the reference pose through its samples and through the
+    change points met on it by the dyads before ``g``, whose branches flip there (no
+    step spans one); the sample behind the reference pose is reached by a step back.
+    A path's poses are NaN from where the group fails.
+    """
+    paths = scan.paths
+    n = paths.m.shape[0]
+    # each path's stops, in order: its samples from the reference pose on, and the
+    # change points ahead (-1 marks a stop that is not a sample)
+    ahead = np.flatnonzero(paths.j >= 0)
+    s = [paths.s[ahead]]
+    owner = [paths.owner[ahead]]
+    sample = [ahead]
+    for h, (where, t) in scan.met.items():
+        keep = (h < g) & (t > 1e-9) & (t < 1.0 + 1.0 / paths.m[where])
+        s.append(t[keep])
+        owner.append(where[keep])
+        sample.append(np.full(int(keep.sum()), -1))
+    order = np.lexsort((np.concatenate(s), np.concatenate(owner)))
+    s_, owner_, sample_ = (np.concatenate(v)[order] for v in (s, owner, sample))
+    count = np.bincount(owner_, minlength=n)
+    first = np.cumsum(count) - count
+    newton = [h for h, solver in enumerate(plan.solvers) if solver.newton]
+    before = 3 * sum(layout(plan)[: newton.index(g)])
+    rows = slice(before, before + 3 * len(plan.solvers[g].bodies))
+    out = np.full((rows.stop - rows.start, paths.owner.size), np.nan)
+    everywhere = np.arange(n)
+    at = paths.at(np.zeros(n), everywhere)
+    pose, _, rate, sign = tangents(plan, at, None, paths.delta, {})
+    out[:, paths.first + 1] = pose[rows]
+    # the step back, to the sample behind the reference pose
+    back = -1.0 / paths.m
+    begun = (pose, rate * back, sign)
+    branch = _crossed(plan, scan, g, everywhere, 0.5 * back)
+    found = advance(plan, at, paths.at(back, everywhere), begun, branch, np.ones(n))
+    out[:, paths.first] = found[0][rows]
+    for r in range(int(count.max()) - 1):
+        go = np.flatnonzero(count > r + 1)
+        k = first[go] + r
+        a, b = s_[k], s_[k + 1]
+        span = b - a
+        branch = _crossed(plan, scan, g, go, 0.5 * (a + b))
+        begun = (pose[:, go], rate[:, go] * span, sign[:, go])
+        found = advance(
+            plan, paths.at(a, go), paths.at(b, go), begun, branch, np.ones(go.size)
+        )
+        pose[:, go], sign[:, go] = found[0], found[2]
+        moved = span > 0.0
+        rate[:, go[moved]] = found[1][:, moved] / span[moved]
+        here = sample_[k + 1]
+        out[:, here[here >= 0]] = found[0][rows][:, here >= 0]
+    return nested(plan, out)[newton.index(g)]  # type: ignore[no-any-return]
 
 
 def _touches(
     plan: Plan,
     groups: list[int],
-    paths: _Paths,
+    scan: _Scan,
     values: Array,
-    flipped: dict[int, Array],
     g: int,
 ) -> tuple[Index, Array]:
     """Locate where group ``g``'s discriminant touches zero between samples.
@@ -207,6 +310,7 @@ def _touches(
     Returns the paths and parameters of the touches. A discriminant constant along a
     path (a dyad its drivers do not move) has no minimum there.
     """
+    paths = scan.paths
     inside = (paths.j >= 0) & (paths.j <= paths.m[paths.owner])
     k = np.flatnonzero(inside)
     before, here, after = values[k - 1], values[k], values[k + 1]
@@ -219,8 +323,12 @@ def _touches(
     if k.size == 0:
         return k, np.zeros(0)
     where = paths.owner[k]
+    # a Newton group starts from its pose at the sample, then from its last pose
+    near = {
+        h: [tuple(v[k] for v in link) for link in scan.walked[h]] for h in scan.walked
+    }
     middle, minimum = lowest(
-        lambda s: _values(plan, groups, paths.at(s, where), flipped, k, g),
+        lambda s: _values(plan, groups, scan, paths.at(s, where), k, g, near),
         paths.s[k - 1],
         paths.s[k + 1],
     )
@@ -232,14 +340,17 @@ def _touches(
 def _values(
     plan: Plan,
     groups: list[int],
+    scan: _Scan,
     at: Array,
-    flipped: dict[int, Array],
     k: Index,
     g: int,
+    near: dict[int, list[Any]],
 ) -> Any:
     """Return group ``g``'s discriminant at driver positions ``at`` near samples ``k``.
 
-    The groups before it are assembled on their branches at those samples.
+    The groups before it are assembled on their branches at those samples; a Newton
+    group by Newton's method from its pose in ``near``, which then keeps the poses
+    found (where they close).
     """
     n = at.shape[0]
     still = (0.0,) * len(plan.drivers)
@@ -248,7 +359,16 @@ def _values(
         solver = plan.solvers[h]
         if h == g:
             return np.broadcast_to(solver.discriminant(bodies), (n,))
-        branch = flipped.get(h)
+        if solver.newton:
+            found = solver.assemble(bodies, n, near[h]).guess
+            near[h] = [
+                tuple(
+                    np.where(np.isfinite(v), v, w) for v, w in zip(*pair, strict=True)
+                )
+                for pair in zip(found, near[h], strict=True)
+            ]
+            continue
+        branch = scan.flipped.get(h)
         solver.assemble(bodies, n, branch=None if branch is None else branch[k])
     msg = f"group index {g} is not among the scanned ones"
     raise AssertionError(msg)

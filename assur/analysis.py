@@ -416,5 +416,5 @@ class Again:
 def _branch_of(plan: Plan) -> _kin.BranchOf:
     """Return the groups' branches past change points as a function of position."""
     if len(plan.drivers) > 1:
-        return lambda at: path_changes(plan, at).branch
-    return lambda at: branches(plan, at)[0]
+        return lambda at, upto: path_changes(plan, at, upto).branch
+    return lambda at, upto: branches(plan, at)[0]

@@ -18,6 +18,17 @@ whose correction is large, whose tangent turns sharply or whose Jacobian changes
 is halved). Writes
 ``benchmarks/results-continuation.json`` (``--output`` overrides); prints a table. The
 exit status is 0 whatever the figures are.
+
+A second table times sweeps with two drivers, where each position is reached on its
+own straight path from the reference pose and every path is scanned for change
+points (``assur._paths``): the two-crank five-bar (none found), the same with a
+parallelogram dyad (``tests/data/edge/five_bar_parallelogram.toml``), and a triad on
+two cranks with a parallelogram dyad after it
+(``tests/data/edge/two_cranks_class3_parallelogram.toml``: the triad is followed
+along every path so that the dyad can be scanned). The positions: a grid of both
+cranks every 10 degrees (1296) and one crank alone over a turn (360), off the whole
+degrees. Each run
+is a first call of its positions (the scans kept by the plan dropped).
 """
 
 from __future__ import annotations
@@ -27,6 +38,7 @@ import json
 import statistics
 import sys
 import time
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -43,6 +55,13 @@ from assur.plan import plan_of  # noqa: E402
 
 SIZES = {False: (360, 10**3, 10**4, 10**5), True: (360, 10**4)}
 RUNS = {360: 20, 10**3: 10, 10**4: 5, 10**5: 3}
+EDGE = ROOT / "tests" / "data" / "edge"
+TWO_DRIVERS = {
+    "five-bar": (ROOT / "examples" / "five_bar_two_cranks.toml", 0),
+    "five-bar, parallelogram": (EDGE / "five_bar_parallelogram.toml", 0),
+    "triad, parallelogram after it": (EDGE / "two_cranks_class3_parallelogram.toml", 1),
+}
+"""Each mechanism's file and the driver turned alone by the one-crank sweep."""
 
 
 def timed(mech, deg: np.ndarray, runs: int, first: bool = False) -> float:
@@ -59,6 +78,33 @@ def timed(mech, deg: np.ndarray, runs: int, first: bool = False) -> float:
         assur.kinematics(mech, deg)
         times.append(time.perf_counter() - start)
     return statistics.median(times)
+
+
+def two_drivers(quick: bool) -> list[dict[str, object]]:
+    """Time sweeps of the two-driver mechanisms; return and print one row each."""
+    # off the whole degrees, where the parallelograms lie flat (a dead centre)
+    turn = np.arange(360.0) + 0.5
+    runs = 2 if quick else 5
+    rows: list[dict[str, object]] = []
+    print(f"\n{'two drivers':<32} {'positions':<14} {'ms':>9}")
+    for name, (path, swept) in TWO_DRIVERS.items():
+        mech = assur.load(path)
+        alone = np.degrees([[d.reference for d in plan_of(mech).drivers]] * 360)
+        alone[:, swept] = turn  # the other crank at its reference angle
+        grid = np.stack(np.meshgrid(turn[::10], turn[::10])).reshape(2, -1).T
+        for label, at in (("grid 1296", grid), ("one crank 360", alone)):
+            times = []
+            for _ in range(runs):
+                plan_of(mech).memo.pop("path-changes", None)
+                start = time.perf_counter()
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    assur.kinematics(mech, at)
+                times.append(time.perf_counter() - start)
+            seconds = statistics.median(times)
+            rows.append({"mechanism": name, "positions": label, "seconds": seconds})
+            print(f"{name:<32} {label:<14} {seconds * 1e3:>9.1f}")
+    return rows
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -95,7 +141,11 @@ def main(argv: list[str] | None = None) -> int:
             f"{n:>10} {ms[0]:>10.2f} {ms[1]:>11.2f} {ms[2]:>12.2f} "
             f"{alone / shared:>6.1f}"
         )
-    text = json.dumps({"mechanism": "examples/class3.toml", "rows": rows}, indent=1)
+    paths = two_drivers(quick)
+    text = json.dumps(
+        {"mechanism": "examples/class3.toml", "rows": rows, "two_drivers": paths},
+        indent=1,
+    )
     tmp = out.with_suffix(".tmp")
     tmp.write_text(text + "\n", encoding="utf-8")
     tmp.replace(out)
