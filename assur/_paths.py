@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from assur._branches import CANDIDATE, TOUCH, flipped, lowest
-from assur._follow import advance, drivers, layout, nested, tangents
+from assur._follow import advance, drivers, layout, tangents
 from assur._vec import Array, Index
 from assur.plan import Plan
 
@@ -241,31 +241,38 @@ def _crossed(plan: Plan, scan: _Scan, g: int, go: Index, x: Array) -> dict[int, 
     return out
 
 
-def _walked(plan: Plan, g: int, scan: _Scan) -> list[Any]:
-    """Return Newton group ``g``'s link poses at every sample, walked along each path.
+def _stops(scan: _Scan, g: int) -> tuple[Array, Index, Index, Index]:
+    """Return the stops of the walk of Newton group ``g`` along every path, in order.
 
-    Each path is followed from the reference pose through its samples and through the
-    change points met on it by the dyads before ``g``, whose branches flip there (no
-    step spans one); the sample behind the reference pose is reached by a step back.
-    A path's poses are NaN from where the group fails.
+    A path's stops are its samples from the reference pose on and the change points
+    ahead of it of the dyads before ``g``. Returns their parameters ``s``, their
+    samples (-1 for a change point), and each path's first stop and count of stops.
     """
     paths = scan.paths
-    n = paths.m.shape[0]
-    # each path's stops, in order: its samples from the reference pose on, and the
-    # change points ahead (-1 marks a stop that is not a sample)
     ahead = np.flatnonzero(paths.j >= 0)
-    s = [paths.s[ahead]]
-    owner = [paths.owner[ahead]]
-    sample = [ahead]
+    s, owner, sample = [paths.s[ahead]], [paths.owner[ahead]], [ahead]
     for h, (where, t) in scan.met.items():
         keep = (h < g) & (t > 1e-9) & (t < 1.0 + 1.0 / paths.m[where])
         s.append(t[keep])
         owner.append(where[keep])
         sample.append(np.full(int(keep.sum()), -1))
     order = np.lexsort((np.concatenate(s), np.concatenate(owner)))
-    s_, owner_, sample_ = (np.concatenate(v)[order] for v in (s, owner, sample))
-    count = np.bincount(owner_, minlength=n)
+    count = np.bincount(np.concatenate(owner), minlength=paths.m.shape[0])
     first = np.cumsum(count) - count
+    return np.concatenate(s)[order], np.concatenate(sample)[order], first, count
+
+
+def _walked(plan: Plan, g: int, scan: _Scan) -> list[Any]:
+    """Return Newton group ``g``'s link poses at every sample, walked along each path.
+
+    Each path is followed from the reference pose through its stops (:func:`_stops`):
+    the dyads' branches flip at their change points, and no step spans one. The
+    sample behind the reference pose is reached by a step back. A path's poses are
+    NaN from where the group fails.
+    """
+    paths = scan.paths
+    n = paths.m.shape[0]
+    s, sample, first, count = _stops(scan, g)
     newton = [h for h, solver in enumerate(plan.solvers) if solver.newton]
     before = 3 * sum(layout(plan)[: newton.index(g)])
     rows = slice(before, before + 3 * len(plan.solvers[g].bodies))
@@ -274,7 +281,6 @@ def _walked(plan: Plan, g: int, scan: _Scan) -> list[Any]:
     at = paths.at(np.zeros(n), everywhere)
     pose, _, rate, sign = tangents(plan, at, None, paths.delta, {})
     out[:, paths.first + 1] = pose[rows]
-    # the step back, to the sample behind the reference pose
     back = -1.0 / paths.m
     begun = (pose, rate * back, sign)
     branch = _crossed(plan, scan, g, everywhere, 0.5 * back)
@@ -283,7 +289,7 @@ def _walked(plan: Plan, g: int, scan: _Scan) -> list[Any]:
     for r in range(int(count.max()) - 1):
         go = np.flatnonzero(count > r + 1)
         k = first[go] + r
-        a, b = s_[k], s_[k + 1]
+        a, b = s[k], s[k + 1]
         span = b - a
         branch = _crossed(plan, scan, g, go, 0.5 * (a + b))
         begun = (pose[:, go], rate[:, go] * span, sign[:, go])
@@ -293,9 +299,10 @@ def _walked(plan: Plan, g: int, scan: _Scan) -> list[Any]:
         pose[:, go], sign[:, go] = found[0], found[2]
         moved = span > 0.0
         rate[:, go[moved]] = found[1][:, moved] / span[moved]
-        here = sample_[k + 1]
+        here = sample[k + 1]
         out[:, here[here >= 0]] = found[0][rows][:, here >= 0]
-    return nested(plan, out)[newton.index(g)]  # type: ignore[no-any-return]
+    values = iter(out)
+    return [tuple(next(values) for _ in range(3)) for _ in plan.solvers[g].bodies]
 
 
 def _touches(
