@@ -28,7 +28,7 @@ from assur.explain._loads_text import (
 )
 from assur.explain._note import Block, Display, Grid, Heading, Para
 from assur.explain._position import Position, at
-from assur.explain._tex import name, num, par, plain, vec
+from assur.explain._tex import ZERO, name, num, par, plain, vec
 from assur.groups._motion import Motion
 from assur.groups.driver import DriverPlan
 
@@ -94,7 +94,8 @@ def _ideal(pos: Position, i: int, sym: str) -> str:
         f"(read off the lever below); friction changes it by ${sym} - "
         f"{sym}^{{ideal}} = {num(value)} - {par(ideal)} = {num(extra)}$"
     )
-    if ideal:
+    # a frictionless load that is round-off (at a dead centre) has no size to compare
+    if abs(ideal) > ZERO * _size(pos, i):
         words += (
             f" ($100 \\cdot \\frac{{{num(abs(extra))}}}{{{num(abs(ideal))}}} = "
             f"{num(100.0 * abs(extra) / abs(ideal))}\\,\\%$ of its size)"
@@ -300,13 +301,38 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
         power += lost
     lever = -power / speed
     value = _balancing(pos, i)
-    diff = 100.0 * abs(lever - value) / max(abs(value), 1e-300)
-    lines += [
+    lines.append(
         f"{sym}^{{lever}} = -\\frac{{{top}}}{{{rate}}} = -\\frac{{{shown}}}"
-        f"{{{num(speed)}}} = {num(lever)}",
-        f"\\frac{{|{sym}^{{lever}} - {sym}|}}{{|{sym}|}} = {_percent(diff)}\\,\\%",
-    ]
+        f"{{{num(speed)}}} = {num(lever)}"
+    )
+    size = _size(pos, i)
+    if abs(value) > ZERO * size:
+        diff = 100.0 * abs(lever - value) / abs(value)
+        lines.append(
+            f"\\frac{{|{sym}^{{lever}} - {sym}|}}{{|{sym}|}} = {_percent(diff)}\\,\\%"
+        )
+    else:
+        # a balancing load that is round-off (a dead centre) has no size to compare
+        # with: the difference itself is told, against the loads' shares
+        lines.append(f"|{sym}^{{lever}} - {sym}| = {num(abs(lever - value), size)}")
     return [*blocks, Display(tuple(lines))]
+
+
+def _size(pos: Position, i: int) -> float:
+    """Return the size of driver ``i``'s balancing load (N m or N).
+
+    Every load's share on the lever added up without its direction or sign (force
+    times speed, couple times angular speed), friction's power too: the scale the
+    round-off of the balancing load is measured against.
+    """
+    bodies, speed, _ = lever_rates(pos, i)
+    total = abs(power_rows(pos, bodies, bodies is pos.bodies)[1])
+    for t in lever_parts(pos, bodies):
+        if t.couple:
+            total += abs(t.load.couple * t.omega)
+        else:
+            total += math.hypot(*t.load.force) * math.hypot(*t.velocity)
+    return total / abs(speed)
 
 
 def lever_load(
@@ -327,7 +353,10 @@ def lever_load(
 
 def _percent(x: float) -> str:
     """Return a small percentage in a readable form."""
-    return "0" if x == 0 else f"{x:.1e}".replace("e", "\\cdot 10^{") + "}"
+    if x == 0:
+        return "0"
+    mantissa, exponent = f"{x:.1e}".split("e")
+    return f"{mantissa} \\cdot 10^{{{int(exponent)}}}"
 
 
 @dataclass(frozen=True, slots=True)

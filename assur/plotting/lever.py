@@ -259,8 +259,9 @@ def _list_terms(
     speed, balancing = rates
     unit, rate, speed_unit = ("N·m", "ω", "rad/s") if kind == "R" else ("N", "v", "m/s")
     given = "per unit speed" if unit_speed else f"{rate} = {speed:g} {speed_unit}"
-    big = max([abs(balancing)] + [abs(x) for _, x, _ in shares] + [1e-300])
-    places = max(0, 4 - math.floor(math.log10(big)))
+    big = max([abs(balancing)] + [abs(x) for _, x, _ in shares])
+    # four decimals where every share is nothing (a dead centre), not hundreds
+    places = 4 if big == 0 else min(8, max(0, 4 - math.floor(math.log10(big))))
     lines = [
         f"each load's moment about the pole / {rate}",
         f"({given}; a couple: -M·ω_L/{rate}), {unit}:",
