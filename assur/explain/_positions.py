@@ -189,10 +189,11 @@ def _rpr(pos: Position, s: DyadSolver) -> list[Block]:
     return [
         Para(
             f"Both links turn together (the sliding pair {plain(s.mid.name)} keeps "
-            f"their angle). The slide line, fixed in {lg}, must keep its distance "
+            f"their angle). Across the slide line, along its normal (fixed in {lg}), "
+            f"the pins {plain(s.ext[g].name)} and {plain(s.ext[h].name)} stay "
             f"$c_0 = \\vec n_0 \\cdot (\\vec d_{{{lg}}} - \\vec d_{{{lh}}}) = "
-            f"{num(c0)}$ m from the pin of {lh} (the offsets $\\vec d$ of the pair's "
-            "point from each pin, and the slide line's normal $\\vec n_0$, at angle "
+            f"{num(c0)}$ m apart (the offsets $\\vec d$ of the pair's point from each "
+            "pin, and the slide line's normal $\\vec n_0$, at angle "
             f"$\\nu = {deg(nu)}$, in the reference pose):"
         ),
         Display(
@@ -224,7 +225,10 @@ def _rpp(pos: Position, s: DyadSolver) -> list[Block]:
     q2 = pos.point(second, s.mid.d_second) - _moved(pos, s, second, slide, e)
     q1 = pos.point(first, s.mid.d_first) - _moved(pos, s, first, slide, e)
     r0 = float(np.dot(n, q2 - q1))
-    ne = float(np.dot(n, e)) * (1.0 if second == s.bodies[1] else -1.0)
+    # the slide moves the pair's point on the slider: its gap grows by +n.e per
+    # unit of s when the slider is the pair's second link, by -n.e when its first
+    ahead = second == s.bodies[1]
+    ne = float(np.dot(n, e)) * (1.0 if ahead else -1.0)
     return [
         Para(
             f"Both links turn with the guide of {plain(pos.link(k))} (the two sliding "
@@ -235,7 +239,7 @@ def _rpp(pos: Position, s: DyadSolver) -> list[Block]:
         ),
         Display(
             (
-                f"s = -\\frac{{r_0}}{{\\pm\\vec n \\cdot \\vec e}} = "
+                f"s = -\\frac{{r_0}}{{{'' if ahead else '-'}\\vec n \\cdot \\vec e}} = "
                 f"-\\frac{{{num(r0)}}}{{{num(ne)}}} = {num(slide)}",
             )
         ),

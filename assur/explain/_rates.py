@@ -69,6 +69,9 @@ def _chain(pos: Position, s: DyadSolver, b: int, k: int) -> list[Term]:
         r = m - p
         length = math.hypot(*r)
         base = Term(f"\\vec {letter}_{{{j}}}", pos.point(known, s.d_known[b], k))
+        if length <= 1e-12 * pos.size():
+            # the joint is at the pin itself: no arm, no motion relative to it
+            return [base]
         if k == 1:
             return [
                 base,
