@@ -13,31 +13,37 @@ workers run. pandas, xarray and dask are imported only when a study needs them.
 
 from __future__ import annotations
 
-import inspect
 import itertools
 import warnings
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
-from assur._batch import CHUNK, near_change_points, stacked, summaries
+from assur._batch import CHUNK, near_change_points, summaries
 from assur._drive import positions
-from assur._loads import compile_loads
-from assur._stack import Unstackable, signature
-from assur._text import suggest
-from assur._variants import Template, compile_many, form, numbers, template
+from assur._study_inputs import (
+    RESERVED as RESERVED,  # still assur.study.RESERVED, the names refused
+)
+from assur._study_inputs import (
+    Factory,
+    _angles,
+    _built,
+    _optional,
+    _parameters,
+    _takes,
+    _variant,
+)
+from assur._study_stacks import _compiled, _fill, _keep_the_heap, _template
+from assur._study_tables import _chosen, _known, _names, _table
+from assur._variants import Template, compile_many, form, numbers
 from assur._vec import Array, integer
 from assur.analysis import forces
 from assur.errors import AssurError, AssurWarning, UsageError
 from assur.model import Mechanism
-from assur.plan import Plan, compile_plan
 
 __all__ = ["Study", "sweep"]
-
-Factory = Callable[..., Mechanism]
-"""Builds one variant: ``factory(**parameters) -> Mechanism``."""
 
 
 @dataclass(frozen=True)
@@ -311,116 +317,6 @@ def _block(
     return rows
 
 
-def _template(
-    templates: dict[Any, Template | None],
-    key: Any,
-    members: list[tuple[int, Mechanism]],
-    rest: list[tuple[int, Mechanism]],
-) -> Template | None:
-    """Return the template of the form ``key``, compiling one of ``members`` if new.
-
-    A member that does not compile moves to ``rest`` (compiled again there, it fails
-    as a separate call does); None when the form's plans cannot be stacked (every
-    member is then analysed on its own) or when no member compiles.
-    """
-    if key in templates:
-        return templates[key]
-    while members:
-        try:
-            model = template(members[0][1])
-        except AssurError:
-            rest.append(members.pop(0))
-            continue
-        if len(templates) >= 64:
-            templates.clear()
-        templates[key] = model
-        return model
-    return None
-
-
-def _compiled(
-    rows: list[dict[str, Any]],
-    start: int,
-    members: list[tuple[int, Mechanism]],
-    angles: Array,
-    size: int,
-) -> list[tuple[int, Mechanism]]:
-    """Solve ``members`` each compiled on its own, those of one signature stacked.
-
-    Batches hold at most ``size`` variants. Returns the members to be analysed alone.
-    """
-    groups: dict[Any, list[tuple[int, Mechanism, Plan]]] = {}
-    alone: list[tuple[int, Mechanism]] = []
-    for i, mech in members:
-        try:
-            plan = compile_plan(mech)
-            loads = compile_loads(plan)
-            key = None if loads.empty else signature(plan, loads)
-        except AssurError:
-            key = None
-        if key is None:
-            alone.append((i, mech))
-        else:
-            groups.setdefault(key, []).append((i, mech, plan))
-    for every in groups.values():
-        for first in range(0, len(every), size):
-            alone += _stacked(rows, start, every[first : first + size], angles)
-    return alone
-
-
-def _stacked(
-    rows: list[dict[str, Any]],
-    start: int,
-    group: list[tuple[int, Mechanism, Plan]],
-    angles: Array,
-) -> list[tuple[int, Mechanism]]:
-    """Solve the variants ``group``, of one signature, stacked; return those left."""
-    plans = [plan for _, _, plan in group]
-    try:
-        found = summaries(
-            stacked(plans, angles.shape[0]), plans[0], positions(plans[0], angles)
-        )
-    except Unstackable:
-        found = [None] * len(plans)
-    return _fill(rows, start, [(i, m) for i, m, _ in group], found)
-
-
-def _fill(
-    rows: list[dict[str, Any]],
-    start: int,
-    members: list[tuple[int, Mechanism]],
-    found: list[dict[str, float] | None],
-) -> list[tuple[int, Mechanism]]:
-    """Put each member's summary in its row; return those without one."""
-    alone = []
-    for (i, mech), values in zip(members, found, strict=True):
-        if values is None:
-            alone.append((i, mech))
-        else:
-            rows[i - start].update(values)
-    return alone
-
-
-HEAP = 2 * 1024 * 1024
-"""Values in the block freed once before a study (16 MB; see ``_keep_the_heap``)."""
-
-
-def _keep_the_heap() -> None:
-    """Free one large block, so that the C allocator keeps the batches' memory.
-
-    glibc's malloc gives the free top of its heap back to the system whenever it
-    exceeds a trim threshold (128 kB until a block served by mmap is freed; then
-    twice that block's size). A study's batches allocate and free a few MB of
-    temporaries each, and never a large array: every batch faulted its pages in
-    again (measured on 10^4 variants: 730 000 page faults, 2 s of system time, a
-    third of the study). A long sweep escapes this by freeing its large arrays;
-    freeing one such block (never written) does the same. Elsewhere it costs an
-    allocation.
-    """
-    block = np.empty(HEAP)
-    del block
-
-
 def _alone(mech: Mechanism, angles: Array) -> dict[str, Any]:
     """Return one variant's summary from a call of its own, or why it failed.
 
@@ -453,221 +349,9 @@ def _summed(mech: Mechanism, angles: Array) -> dict[str, Any]:
     return dict(summary.result())
 
 
-def _built(factory: Factory, p: dict[str, Any]) -> Mechanism:
-    """Return the mechanism ``factory(**p)``, checked to be one.
-
-    Raises
-    ------
-    UsageError
-        When the factory returns something else.
-    """
-    mech = factory(**p)
-    if not isinstance(mech, Mechanism):
-        msg = (
-            f"the factory returned {type(mech).__name__} for {_shown(p)}; expected "
-            "an assur.Mechanism"
-        )
-        raise UsageError(msg)
-    return mech
-
-
-def _shown(p: dict[str, Any]) -> str:
-    """Return a variant's parameters as text: ``rod=0.2, crank=0.07``."""
-    return ", ".join(f"{name}={value!r}" for name, value in p.items())
-
-
-def _table(factory: Factory, p: dict[str, Any], angles: Array) -> dict[str, Array]:
-    """Return every column of one variant's force table; empty if it fails."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", AssurWarning)
-        try:
-            mech = _built(factory, p)
-        except Exception:  # the factory's own error: the variant has no table
-            return {}
-        try:
-            table = forces(mech, angles)
-        except AssurError:
-            return {}
-    return dict(zip(table.columns, table.arrays(), strict=True))
-
-
-def _names(tables: list[dict[str, Array] | None]) -> list[str]:
-    """Return the columns of the tables, in the order they are first met."""
-    out: dict[str, None] = {}
-    for table in tables:
-        out.update(dict.fromkeys(table or {}))
-    return list(out)
-
-
-def _known(names: list[str], tables: list[dict[str, Array] | None]) -> list[str]:
-    """Return ``names``, checked against the columns of ``tables`` that have any.
-
-    Raises
-    ------
-    UsageError
-        For a name that no table has (when some variant was analysed).
-    """
-    found = _names(tables)
-    if found:
-        for name in names:
-            if name not in found:
-                msg = (
-                    f"columns: no column {name!r} in the variants analysed"
-                    f"{suggest(name, found, listing=False)}"
-                )
-                raise UsageError(msg)
-    return names
-
-
-def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:
-    """Return the variants' numbers, checked to be the study's (0 to count - 1).
-
-    Raises
-    ------
-    UsageError
-        For a number that is not an integer from 0 to ``count - 1``.
-    """
-    if variants is None:
-        return list(range(count))
-    out = []
-    for given in variants:
-        i = integer(given)
-        if i is None:
-            msg = f"variants: expected variant numbers, got {given!r}"
-            raise UsageError(msg)
-        if not 0 <= i < count:
-            msg = f"variants: no variant {i}; expected numbers from 0 to {count - 1}"
-            raise UsageError(msg)
-        out.append(i)
-    return out
-
-
-def _takes(factory: Factory, parameters: dict[str, Array]) -> None:
-    """Check that ``factory`` takes the parameters by name, before any variant.
-
-    A callable whose signature cannot be read is left to its calls.
-
-    Raises
-    ------
-    UsageError
-        When the factory is not callable or does not take these parameters.
-    """
-    if not callable(factory):
-        msg = f"factory: expected a function returning a Mechanism, got {factory!r}"
-        raise UsageError(msg)
-    try:
-        signature = inspect.signature(factory)
-    except (TypeError, ValueError):
-        return
-    try:
-        signature.bind(**dict.fromkeys(parameters, 0.0))
-    except TypeError as err:
-        name = getattr(factory, "__qualname__", type(factory).__name__)
-        kind = inspect.Parameter
-        by_name = (kind.POSITIONAL_OR_KEYWORD, kind.KEYWORD_ONLY)
-        takes = [p.name for p in signature.parameters.values() if p.kind in by_name]
-        msg = (
-            f"parameters: the factory {name} {err}; expected its parameters "
-            f"({', '.join(takes) or 'none by name'})"
-        )
-        raise UsageError(msg) from None
-
-
-def _optional(module: str) -> Any:
-    """Import an optional dependency of studies, saying how to install it."""
-    from assur._optional import optional
-
-    return optional(module, "a study", "study")
-
-
 def _line(err: BaseException) -> str:
     """Return an error as one line: its class and its message."""
     return f"{type(err).__name__}: {' '.join(str(err).split())}"
-
-
-def _variant(parameters: dict[str, Array], i: int) -> dict[str, Any]:
-    """Return the parameters of variant ``i`` (Python floats, ints or bools)."""
-    return {name: values[i].item() for name, values in parameters.items()}
-
-
-RESERVED = (
-    "error",
-    "warning",
-    "variant",
-    "position",
-    "column",
-    "values",
-    "driver",
-    "efficiency",
-)
-"""Names of the summary's and the tables' own columns and dimensions."""
-
-
-def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
-    """Check the parameters; return them as read-only float arrays."""
-    if not isinstance(parameters, Mapping) or not parameters:
-        msg = (
-            "parameters: expected a mapping of names to 1-D arrays (one value per "
-            f"variant), got {type(parameters).__name__}"
-            f"{' (empty)' if isinstance(parameters, Mapping) else ''}"
-        )
-        raise UsageError(msg)
-    out: dict[str, Array] = {}
-    for name, values in parameters.items():
-        if not isinstance(name, str) or not name.isidentifier():
-            msg = f"parameters: expected names that are identifiers, got {name!r}"
-            raise UsageError(msg)
-        if name in RESERVED:
-            msg = (
-                f"parameters: {name!r} names a column of the study's results; "
-                f"expected another name (not {', '.join(RESERVED)})"
-            )
-            raise UsageError(msg)
-        try:
-            arr = np.array(values)
-        except (TypeError, ValueError) as err:
-            msg = f"parameters.{name}: expected a 1-D array of real numbers"
-            raise UsageError(msg) from err
-        if arr.dtype.kind not in "biuf" or arr.ndim != 1 or not arr.size:
-            what = f"shape {arr.shape}" if arr.dtype.kind in "biuf" else str(arr.dtype)
-            msg = f"parameters.{name}: expected a 1-D array of real numbers, got {what}"
-            raise UsageError(msg)
-        # counts and choices stay integers; the rest are floats
-        out[name] = arr.astype(float) if arr.dtype.kind == "f" else arr.copy()
-        out[name].flags.writeable = False
-    lengths = {name: len(v) for name, v in out.items()}
-    if len(set(lengths.values())) > 1:
-        told = ", ".join(f"{name} {n}" for name, n in lengths.items())
-        msg = (
-            "parameters: expected arrays of one length (one value per variant), "
-            f"got {told}"
-        )
-        raise UsageError(msg)
-    return out
-
-
-def _angles(angles: Any) -> Array:
-    """Check the driver positions; return them as a read-only float array."""
-    try:
-        arr = np.array(angles, dtype=float)
-    except (TypeError, ValueError) as err:
-        msg = (
-            "angles: expected real numbers (driver positions), got "
-            f"{type(angles).__name__}"
-        )
-        raise UsageError(msg) from err
-    if arr.ndim not in (1, 2) or not arr.shape[0]:
-        msg = (
-            "angles: expected driver positions of shape (n,) or (n, drivers), got "
-            f"shape {arr.shape}"
-        )
-        raise UsageError(msg)
-    if not np.all(np.isfinite(arr)):
-        bad = float(arr[~np.isfinite(arr)].flat[0])
-        msg = f"angles: expected finite driver positions, got {bad!r} among them"
-        raise UsageError(msg)
-    arr.flags.writeable = False
-    return arr
 
 
 def _distributed(

@@ -1,0 +1,167 @@
+"""A study's inputs: its parameters, driver positions and factory, checked.
+
+What :func:`assur.study.sweep` is given is checked here before any variant is built:
+the parameters and their names, the driver positions, the factory and what it
+returns; with one variant's parameters and the optional libraries a study imports.
+"""
+
+from __future__ import annotations
+
+import inspect
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import numpy as np
+
+from assur._vec import Array
+from assur.errors import UsageError
+from assur.model import Mechanism
+
+Factory = Callable[..., Mechanism]
+"""Builds one variant: ``factory(**parameters) -> Mechanism``."""
+
+
+def _built(factory: Factory, p: dict[str, Any]) -> Mechanism:
+    """Return the mechanism ``factory(**p)``, checked to be one.
+
+    Raises
+    ------
+    UsageError
+        When the factory returns something else.
+    """
+    mech = factory(**p)
+    if not isinstance(mech, Mechanism):
+        msg = (
+            f"the factory returned {type(mech).__name__} for {_shown(p)}; expected "
+            "an assur.Mechanism"
+        )
+        raise UsageError(msg)
+    return mech
+
+
+def _shown(p: dict[str, Any]) -> str:
+    """Return a variant's parameters as text: ``rod=0.2, crank=0.07``."""
+    return ", ".join(f"{name}={value!r}" for name, value in p.items())
+
+
+def _takes(factory: Factory, parameters: dict[str, Array]) -> None:
+    """Check that ``factory`` takes the parameters by name, before any variant.
+
+    A callable whose signature cannot be read is left to its calls.
+
+    Raises
+    ------
+    UsageError
+        When the factory is not callable or does not take these parameters.
+    """
+    if not callable(factory):
+        msg = f"factory: expected a function returning a Mechanism, got {factory!r}"
+        raise UsageError(msg)
+    try:
+        signature = inspect.signature(factory)
+    except (TypeError, ValueError):
+        return
+    try:
+        signature.bind(**dict.fromkeys(parameters, 0.0))
+    except TypeError as err:
+        name = getattr(factory, "__qualname__", type(factory).__name__)
+        kind = inspect.Parameter
+        by_name = (kind.POSITIONAL_OR_KEYWORD, kind.KEYWORD_ONLY)
+        takes = [p.name for p in signature.parameters.values() if p.kind in by_name]
+        msg = (
+            f"parameters: the factory {name} {err}; expected its parameters "
+            f"({', '.join(takes) or 'none by name'})"
+        )
+        raise UsageError(msg) from None
+
+
+def _optional(module: str) -> Any:
+    """Import an optional dependency of studies, saying how to install it."""
+    from assur._optional import optional
+
+    return optional(module, "a study", "study")
+
+
+def _variant(parameters: dict[str, Array], i: int) -> dict[str, Any]:
+    """Return the parameters of variant ``i`` (Python floats, ints or bools)."""
+    return {name: values[i].item() for name, values in parameters.items()}
+
+
+RESERVED = (
+    "error",
+    "warning",
+    "variant",
+    "position",
+    "column",
+    "values",
+    "driver",
+    "efficiency",
+)
+"""Names of the summary's and the tables' own columns and dimensions."""
+
+
+def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
+    """Check the parameters; return them as read-only float arrays."""
+    if not isinstance(parameters, Mapping) or not parameters:
+        msg = (
+            "parameters: expected a mapping of names to 1-D arrays (one value per "
+            f"variant), got {type(parameters).__name__}"
+            f"{' (empty)' if isinstance(parameters, Mapping) else ''}"
+        )
+        raise UsageError(msg)
+    out: dict[str, Array] = {}
+    for name, values in parameters.items():
+        if not isinstance(name, str) or not name.isidentifier():
+            msg = f"parameters: expected names that are identifiers, got {name!r}"
+            raise UsageError(msg)
+        if name in RESERVED:
+            msg = (
+                f"parameters: {name!r} names a column of the study's results; "
+                f"expected another name (not {', '.join(RESERVED)})"
+            )
+            raise UsageError(msg)
+        try:
+            arr = np.array(values)
+        except (TypeError, ValueError) as err:
+            msg = f"parameters.{name}: expected a 1-D array of real numbers"
+            raise UsageError(msg) from err
+        if arr.dtype.kind not in "biuf" or arr.ndim != 1 or not arr.size:
+            what = f"shape {arr.shape}" if arr.dtype.kind in "biuf" else str(arr.dtype)
+            msg = f"parameters.{name}: expected a 1-D array of real numbers, got {what}"
+            raise UsageError(msg)
+        # counts and choices stay integers; the rest are floats
+        out[name] = arr.astype(float) if arr.dtype.kind == "f" else arr.copy()
+        out[name].flags.writeable = False
+    lengths = {name: len(v) for name, v in out.items()}
+    if len(set(lengths.values())) > 1:
+        told = ", ".join(f"{name} {n}" for name, n in lengths.items())
+        msg = (
+            "parameters: expected arrays of one length (one value per variant), "
+            f"got {told}"
+        )
+        raise UsageError(msg)
+    return out
+
+
+def _angles(angles: Any) -> Array:
+    """Check the driver positions; return them as a read-only float array."""
+    try:
+        arr = np.array(angles, dtype=float)
+    except (TypeError, ValueError) as err:
+        msg = (
+            "angles: expected real numbers (driver positions), got "
+            f"{type(angles).__name__}"
+        )
+        raise UsageError(msg) from err
+    if arr.ndim not in (1, 2) or not arr.shape[0]:
+        msg = (
+            "angles: expected driver positions of shape (n,) or (n, drivers), got "
+            f"shape {arr.shape}"
+        )
+        raise UsageError(msg)
+    if not np.all(np.isfinite(arr)):
+        bad = float(arr[~np.isfinite(arr)].flat[0])
+        msg = f"angles: expected finite driver positions, got {bad!r} among them"
+        raise UsageError(msg)
+    arr.flags.writeable = False
+    return arr

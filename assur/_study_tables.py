@@ -1,0 +1,82 @@
+"""A study's full tables: one variant's force table, the variants and columns chosen.
+
+What :meth:`assur.study.Study.tables` computes on demand, variant by variant.
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Sequence
+from typing import Any
+
+from assur._study_inputs import Factory, _built
+from assur._text import suggest
+from assur._vec import Array, integer
+from assur.analysis import forces
+from assur.errors import AssurError, AssurWarning, UsageError
+
+
+def _table(factory: Factory, p: dict[str, Any], angles: Array) -> dict[str, Array]:
+    """Return every column of one variant's force table; empty if it fails."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", AssurWarning)
+        try:
+            mech = _built(factory, p)
+        except Exception:  # the factory's own error: the variant has no table
+            return {}
+        try:
+            table = forces(mech, angles)
+        except AssurError:
+            return {}
+    return dict(zip(table.columns, table.arrays(), strict=True))
+
+
+def _names(tables: list[dict[str, Array] | None]) -> list[str]:
+    """Return the columns of the tables, in the order they are first met."""
+    out: dict[str, None] = {}
+    for table in tables:
+        out.update(dict.fromkeys(table or {}))
+    return list(out)
+
+
+def _known(names: list[str], tables: list[dict[str, Array] | None]) -> list[str]:
+    """Return ``names``, checked against the columns of ``tables`` that have any.
+
+    Raises
+    ------
+    UsageError
+        For a name that no table has (when some variant was analysed).
+    """
+    found = _names(tables)
+    if found:
+        for name in names:
+            if name not in found:
+                msg = (
+                    f"columns: no column {name!r} in the variants analysed"
+                    f"{suggest(name, found, listing=False)}"
+                )
+                raise UsageError(msg)
+    return names
+
+
+def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:
+    """Return the variants' numbers, checked to be the study's (0 to count - 1).
+
+    Raises
+    ------
+    UsageError
+        For a number that is not an integer from 0 to ``count - 1``.
+    """
+    if variants is None:
+        return list(range(count))
+    out = []
+    for given in variants:
+        i = integer(given)
+        if i is None:
+            msg = f"variants: expected variant numbers, got {given!r}"
+            raise UsageError(msg)
+        if not 0 <= i < count:
+            msg = f"variants: no variant {i}; expected numbers from 0 to {count - 1}"
+            raise UsageError(msg)
+        out.append(i)
+    return out
