@@ -10,20 +10,21 @@ and becomes the :class:`Template`, and every variant is read into one row of num
 template's plan for all the rows at once with numpy, with the arithmetic of
 ``compile_plan`` (subtractions of the same coordinates, the same closures of the
 dyads), so that a variant gets the numbers its own plan would hold, bit for bit. The
-result is the stacked plan of :mod:`assur._stack`, built without a plan per variant.
+result is the stacked plan of :mod:`assur._stack`, built without a plan per variant
+(``assur._variant_plans``).
 
 ``compile_plan`` refuses some mechanisms (a reference pose that a dyad does not close
 or closes at a dead centre, a link too small beside the mechanism, ...). Those checks
-are made here on every row, with margins: a variant that fails or nearly fails one, or
-whose plan could not share the batch (the core's origin moved, a branch nearly
-undecided), is marked and compiled on its own by the caller, so that it fails or
-warns exactly as a separate call does. Only dyads are compiled so: a template with a
-group solved by Newton's method is not stackable (:func:`assur._stack.signature`).
+are made on every row, with margins (``assur._variant_checks``): a variant that fails
+or nearly fails one, or whose plan could not share the batch (the core's origin moved,
+a branch nearly undecided), is marked and compiled on its own by the caller, so that
+it fails or warns exactly as a separate call does. Only dyads are compiled so: a
+template with a group solved by Newton's method is not stackable
+(:func:`assur._stack.signature`).
 """
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from collections.abc import Callable, Hashable
 from dataclasses import dataclass
@@ -34,22 +35,14 @@ from numpy.typing import NDArray
 
 from assur._loads import LoadPlan, compile_loads
 from assur._points import PointSpec
-from assur._stack import Rows, repeat, signature
-from assur._vec import Array, Mask, wrap
-from assur.groups._dyad import (
-    APART,
-    BRANCH_TOLERANCE,
-    DEAD_CENTRE,
-    DyadSolver,
-    conditioning,
-    jacobian,
-    offsets,
-)
+from assur._stack import repeat, signature
+from assur._variant_checks import MARGIN, _branch, _diameters, _small_links
+from assur._variant_plans import Leaf, _as_is, _dyad, _loads, _pair_plans, _plan
+from assur._vec import Array, Mask
+from assur.groups._dyad import DyadSolver
 from assur.groups._motion import Motion
-from assur.groups._pairs import PairPlan
-from assur.groups.driver import DriverPlan
 from assur.model import LoadTable, Mechanism, Toward
-from assur.plan import FAR, SMALL, Plan, compile_plan
+from assur.plan import FAR, Plan, compile_plan
 
 __all__ = [
     "Compiled",
@@ -61,13 +54,6 @@ __all__ = [
     "template",
 ]
 
-MARGIN = 4.0
-"""Factor by which a variant must clear each check of ``compile_plan`` to be compiled
-here; one nearer the limit is compiled on its own (and fails there if it must)."""
-UNDECIDED = 1e3 * BRANCH_TOLERANCE
-"""A variant whose other branch also closes within this is compiled on its own."""
-
-Leaf = Callable[[Array], Any]
 Index = NDArray[np.intp]
 """Indices of variants (rows)."""
 
@@ -347,224 +333,3 @@ def compile_many(model: Template, rows: Array) -> tuple[Compiled, Mask]:
             branches.append(branch)
             doubtful |= bad
     return Compiled(model, rows, offsets, origins, scale, branches), doubtful
-
-
-def _as_is(values: Array) -> Array:
-    """Return each variant's value once (the leaves of the checks)."""
-    return values
-
-
-def _vector(x: Array, y: Array, leaf: Leaf) -> Any:
-    """Return a vector whose components are leaves: Rows when one of them varies."""
-    a, b = leaf(x), leaf(y)
-    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
-        return Rows((a, b))
-    return (a, b)
-
-
-def _diameters(points: Array) -> Array:
-    """Largest distance between two of the points (k, P, 2) of each variant, m."""
-    gap = points[:, :, None, :] - points[:, None, :, :]
-    return np.sqrt((gap * gap).sum(axis=-1)).max(axis=(1, 2))
-
-
-def _small_links(t: Plan, core: dict[str, Array], scale: Array) -> Mask:
-    """Mark variants with a link near the smallest size ``compile_plan`` accepts."""
-    pins: dict[str, list[Array]] = {}
-    for pair in t.topology.pairs:
-        if pair.kind == "R":
-            for link in pair.links:
-                pins.setdefault(link, []).append(core[pair.name])
-    near = np.zeros(scale.shape, dtype=bool)
-    for link, at in pins.items():
-        if link == t.bodies[0] or len(at) < 2:
-            continue
-        size = _diameters(np.stack(at, axis=1))
-        near |= (size * MARGIN > 1e-12) & ~(size > MARGIN * SMALL * scale)
-    return near
-
-
-def _pair_plans(
-    t: Plan, offsets: dict[str, tuple[Array, Array]], leaf: Leaf
-) -> dict[str, PairPlan]:
-    """Return the template's pair plans with each variant's offsets.
-
-    A slide line's direction is part of the :func:`form`: the kernels take it for a
-    constant (a dictionary key, an angle computed once).
-    """
-    out = {}
-    for name, p in t.pairs.items():
-        first, second = offsets[name]
-        out[name] = dataclasses.replace(
-            p,
-            d_first=_vector(first[:, 0], first[:, 1], leaf),
-            d_second=_vector(second[:, 0], second[:, 1], leaf),
-        )
-    return out
-
-
-def _dyad(solver: DyadSolver, pairs: dict[str, PairPlan], scale: Any) -> DyadSolver:
-    """Return ``solver`` with the pairs ``pairs``, chosen as ``compile_dyad`` does."""
-    ext = (pairs[solver.ext[0].name], pairs[solver.ext[1].name])
-    mid = pairs[solver.mid.name]
-    bodies, known = solver.bodies, solver.known
-    d_known, d_mid = offsets(ext, mid, bodies, known)
-    return dataclasses.replace(
-        solver, ext=ext, mid=mid, d_known=d_known, d_mid=d_mid, scale=scale, branch=1.0
-    )
-
-
-def _branch(
-    dyad: DyadSolver, motions: tuple[Motion, ...], scale: Array
-) -> tuple[Array, Mask]:
-    """Return each variant's branch, as ``compile_dyad`` chooses it, and the doubtful.
-
-    Doubtful: the reference pose does not close (or only loosely) on the branch, the
-    other branch closes too, the outer pins nearly meet, or the pose is near a dead
-    centre.
-    """
-    misses = []
-    for sign in (1.0, -1.0):
-        q = dyad.closure(dyad, list(motions), sign)
-        parts = [
-            np.abs(wrap(x)) if e.kind == "R" else np.abs(x) / scale
-            for x, e in zip(q, dyad.ext, strict=True)
-        ]
-        misses.append(np.maximum(parts[0], parts[1]))
-    plus, minus = misses
-    lower = minus < plus
-    best, other = np.where(lower, minus, plus), np.where(lower, plus, minus)
-    doubtful = ~(best * MARGIN <= BRANCH_TOLERANCE)
-    if dyad.gap is not None:  # a kind with two branches
-        doubtful |= ~(other > UNDECIDED)
-    branch = np.where(lower, -1.0, 1.0)
-    chosen = dataclasses.replace(dyad, branch=branch)  # type: ignore[arg-type]
-    reference = list(motions)
-    chosen.assemble(reference, len(branch))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        cond = conditioning(chosen, jacobian(chosen, reference))
-    doubtful |= ~(cond >= MARGIN * DEAD_CENTRE)
-    if dyad.ext[0].kind == "R" and dyad.ext[1].kind == "R":
-        (a, b), (da, db) = dyad.known, dyad.d_known
-        gap = np.hypot(
-            (motions[b].ox[0] + db[0]) - (motions[a].ox[0] + da[0]),
-            (motions[b].oy[0] + db[1]) - (motions[a].oy[0] + da[1]),
-        )
-        doubtful |= ~(gap > MARGIN * APART * scale)
-    return branch, doubtful
-
-
-def _plan(
-    model: Template,
-    rows: Array,
-    leaf: Leaf,
-    offsets: dict[str, tuple[Array, Array]],
-    origins: Array,
-    scale: Array,
-    branches: list[Array],
-    points: bool = True,
-) -> tuple[Plan, Array]:
-    """Return the stacked plan, and every variant's reference driver position.
-
-    Without ``points``, the reported points' offsets are the template's.
-    """
-    t = model.plan
-    col = model.columns
-    shift = np.asarray(t.shift)
-    pairs = _pair_plans(t, offsets, leaf)
-    size = leaf(scale)
-    solvers = []
-    for solver, branch in zip(t.solvers, branches, strict=True):
-        assert isinstance(solver, DyadSolver)
-        dyad = _dyad(solver, pairs, size)
-        solvers.append(dataclasses.replace(dyad, branch=leaf(branch)))
-    drivers = []
-    references = np.zeros(rows.shape[0])
-    for d in t.drivers:
-        c = col.get(("angle", t.bodies[d.body]))
-        angle = np.zeros(rows.shape[0]) if c is None else rows[:, c]
-        if d.kind == "R":
-            references = angle
-        drivers.append(
-            DriverPlan(
-                pairs[d.pair.name],
-                d.body,
-                d.omega,
-                d.epsilon,
-                leaf(angle),
-                _vector(origins[:, d.body, 0], origins[:, d.body, 1], leaf),
-                leaf(angle) if d.kind == "R" else 0.0,
-            )
-        )
-    offset = [p.d_second for p in pairs.values() if not p.virtual]
-    mech = t.mechanism
-    located = [(("point", p.name), t.index[p.link]) for p in mech.points] + [
-        (("center", link.name), t.index[link.name])
-        for link in mech.links
-        if link.center is not None
-    ]
-    if not points:
-        offset, located = list(t.point_offset), []
-    for key, b in located:
-        c = col[key]
-        xy = rows[:, c : c + 2] - shift - origins[:, b]
-        offset.append(_vector(xy[:, 0], xy[:, 1], leaf))
-    plan = Plan(
-        mech,
-        t.topology,
-        t.groups,
-        t.bodies,
-        t.origins,
-        t.shift,
-        t.angle0,
-        tuple(drivers),
-        tuple(solvers),
-        pairs,
-        t.points,
-        t.point_body,
-        tuple(offset),
-        size,
-        t.index,
-    )
-    return plan, references
-
-
-def _loads(model: Template, rows: Array, leaf: Leaf, origins: Array) -> LoadPlan:
-    """Return the stacked loads: the template's, with each variant's numbers."""
-    t, first = model.plan, model.loads
-    col = model.columns
-    shift = np.asarray(t.shift)
-
-    def offset(key: Any, b: int) -> Any:
-        c = col[key]
-        xy = rows[:, c : c + 2] - shift - origins[:, b]
-        return _vector(xy[:, 0], xy[:, 1], leaf)
-
-    mech = t.mechanism
-    center: list[Any] = [(0.0, 0.0)] * len(t.bodies)
-    stacked = []
-    for link in mech.links:
-        if link.mass:
-            b = t.index[link.name]
-            center[b] = offset(("center", link.name), b)
-            c = col[("mass", link.name)]
-            stacked.append((b, leaf(rows[:, c]), leaf(rows[:, c + 1])))
-    forces, torques = [], []
-    for i, load in enumerate(mech.loads):
-        b = t.index[load.link]
-        if load.force is not None:
-            c = col[("force", i)]
-            value = _vector(rows[:, c], rows[:, c + 1], leaf)
-            forces.append((b, offset(("at", i), b), value, f"loads[{i}].force"))
-        if load.torque is not None:
-            torque = leaf(rows[:, col[("torque", i)]])
-            torques.append((b, torque, f"loads[{i}].torque"))
-    return LoadPlan(
-        first.mass,
-        tuple(center),
-        first.inertia,
-        first.gravity,
-        tuple(forces),
-        tuple(torques),
-        tuple(sorted(stacked, key=lambda x: x[0])),
-    )

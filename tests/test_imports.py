@@ -66,6 +66,9 @@ RANKS = {
     "assur._stack": 6,
     # many variants compiled at once against a template plan
     "assur._variants": 6,
+    # their parts: the checks made on the variants' rows, their stacked plan and loads
+    "assur._variant_checks": 6,
+    "assur._variant_plans": 6,
     "assur.analysis": 9,
     # variants of one topology solved in one batch, from the analysis's own steps
     "assur._batch": 9,
