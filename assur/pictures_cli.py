@@ -5,17 +5,16 @@ mechanism file, runs the analysis and writes pictures with matplotlib's Agg back
 closing every figure it opens; bad input raises an :class:`~assur.errors.AssurError`
 that the command line prints as one line. Every picture is written whole or not at
 all (:mod:`assur._output`), the diagrams as one set.
+Its parts: the files (``assur._picture_files``), the sweeps drawn
+(``assur._picture_sweeps``) and ``assur plans`` (``assur._picture_plans``).
 """
 
 from __future__ import annotations
 
 import argparse
-import contextlib
 import math
-import re
-import sys
 import warnings
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -34,21 +33,37 @@ from assur._cli_common import (
     quiet,
     terminal,
 )
-from assur._output import output_folder, output_path, path_text
-from assur._text import counted, describe
-from assur._troubles import SKIPPED_WHY
-from assur.errors import AssemblyError, AssurError, AssurWarning, UsageError
+from assur._output import output_folder, path_text
+from assur._picture_files import (
+    DPI,
+    DPI_RANGE,
+    GIF_DPI_RANGE,
+    PICTURE_SUFFIXES,
+    _check_dpi,
+    _clear_stale,
+    _draw,
+    _figures,
+    _folder,
+    _output,
+    _save,
+    _wrote,
+)
+from assur._picture_plans import PLANS as PLANS  # still assur.pictures_cli.PLANS
+from assur._picture_plans import _cmd_plans
+from assur._picture_sweeps import (
+    _drawn,
+    _kept,
+    _say_skipped,
+    _skip_option,
+    _sweep,
+    _table,
+)
+from assur._text import counted
+from assur.errors import AssurError, AssurWarning, UsageError
 from assur.plotting._style import titled
 
 __all__ = ["register"]
 
-PICTURE_SUFFIXES = (".png", ".svg", ".pdf")
-DPI = 150
-"""Resolution of the PNG pictures, dots per inch."""
-DPI_RANGE = (10.0, 1200.0)
-"""Resolutions accepted for pictures, dots per inch."""
-GIF_DPI_RANGE = (10.0, 300.0)
-"""Resolutions accepted for animations, dots per inch (every frame is kept)."""
 FPS_RANGE = (0.1, 100.0)
 """Frame rates accepted, frames per second (a GIF counts in hundredths of a second)."""
 FRAMES_RANGE = (1, 1000)
@@ -158,225 +173,9 @@ def _common(
         )
 
 
-def _check_dpi(args: argparse.Namespace, bounds: tuple[float, float]) -> float:
-    return check_range(
-        "--dpi", args.dpi, *bounds, "a positive resolution", "dots per inch"
-    )
-
-
-def _pyplot() -> Any:
-    """Return pyplot on the Agg backend: the command line never opens a window."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
-@contextlib.contextmanager
-def _figures() -> Iterator[Any]:
-    """Yield pyplot on Agg; close every figure opened inside on the way out."""
-    plt = _pyplot()
-    before = set(plt.get_fignums())
-    try:
-        yield plt
-    finally:
-        for number in set(plt.get_fignums()) - before:
-            plt.close(number)
-
-
-def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
-    """Return ``-o``, checked: a known suffix and not the mechanism file."""
-    path: Path = args.output
-    suffix = path.suffix.lower()
-    if suffix not in allowed:
-        wanted = " or ".join(allowed)
-        msg = (
-            f"-o {path_text(path)}: unknown file type {describe(suffix or '(none)')}; "
-            f"expected {wanted}"
-        )
-        raise UsageError(msg)
-    check_not_input("-o", path, args.file)
-    return path
-
-
-def _skip_option(p: argparse.ArgumentParser) -> None:
-    """Add ``--skip-unassembled`` to a command drawing a sweep."""
-    p.add_argument(
-        "--skip-unassembled",
-        action="store_true",
-        help=f"leave out the positions {SKIPPED_WHY}",
-    )
-
-
-def _kept(mech: Any, positions: Any, forces: bool, skip: bool) -> tuple[Any, Any]:
-    """Return the positions of a sweep that can be drawn, shape (n, drivers).
-
-    Also the positions left out (deg, or m).
-
-    One column is kept (memory stays that of the positions); what cannot be
-    assembled raises, or with ``skip`` is left out, as a whole table would.
-    """
-    from assur.analysis import forces as force_table
-    from assur.analysis import kinematics
-    from assur.columns import balancing_columns
-    from assur.plan import plan_of
-
-    if forces:  # friction may lock positions that assemble
-        # the balancing loads alone: a torque or a force, as each driver moves
-        loads = balancing_columns(plan_of(mech))
-        table = force_table(
-            mech, positions, skip_unassembled=skip, columns=["angle", *loads]
-        )
-    else:
-        table = kinematics(mech, positions, skip_unassembled=skip, columns=["angle"])
-    return _some_kept(table).given, table.skipped
-
-
-def _table(mech: Any, positions: Any, forces: bool, skip: bool = False) -> Any:
-    from assur.analysis import forces as force_table
-    from assur.analysis import kinematics
-
-    analyse = force_table if forces else kinematics
-    return _some_kept(analyse(mech, positions, skip_unassembled=skip))
-
-
-def _say_skipped(args: argparse.Namespace, skipped: Any) -> None:
-    """Note the positions left out of the sweep (``--skip-unassembled``), if any."""
-    from assur._sliced import Skipped
-
-    if len(skipped) and not quiet(args):
-        found = Skipped()
-        found.add(skipped)
-        print(found.note(args.file), file=sys.stderr)
-
-
-def _some_kept(table: Any) -> Any:
-    """Return ``table``; an AssemblyError when every position was left out."""
-    if len(table) or not len(table.skipped):
-        return table
-    msg = (
-        f"every position of the sweep is left out ({SKIPPED_WHY}); expected "
-        "positions where the mechanism moves"
-    )
-    raise AssemblyError(msg)
-
-
-def _draw(fig: Any, path: Path, dpi: float) -> None:
-    """Write ``fig`` to ``path`` in the format of its suffix and close it."""
-    try:
-        fig.savefig(path, dpi=dpi, bbox_inches="tight", format=path.suffix[1:].lower())
-    finally:
-        _pyplot().close(fig)
-
-
-def _save(fig: Any, path: Path, dpi: float) -> None:
-    """Write ``fig`` to ``path``, whole or not at all, and close it."""
-    try:
-        with output_path(path, any_error=True) as temporary:
-            _draw(fig, temporary, dpi)
-    finally:
-        _pyplot().close(fig)
-
-
-def _wrote(args: argparse.Namespace, text: str) -> None:
-    """Say what was written, unless ``--quiet``."""
-    if not quiet(args):
-        print(f"wrote {text}")
-
-
 def _show(args: argparse.Namespace) -> bool:
     """Whether to show progress bars: on a terminal, without ``--quiet``."""
     return terminal() and not quiet(args)
-
-
-PLANS = (
-    "velocity_plan",
-    "acceleration_plan",
-    "force_polygons",
-    "zhukovsky_lever",
-    "instant_centres",
-)
-"""Names of the plans ``assur plans`` writes (each as .png and .svg), in order, for
-one driver; with several, one lever each: ``zhukovsky_lever_1``, ``_2``, ..."""
-
-
-LEVER = re.compile(r"zhukovsky_lever_[0-9]+\.(png|svg)")
-"""The file names of the levers of a mechanism with several drivers."""
-
-
-def _clear_stale(out: Path, written: list[str], ours: list[str]) -> None:
-    """Remove the files of ``ours`` in ``out`` that this run did not write.
-
-    A folder written before keeps its other files; the command's own, left from
-    another mechanism (its force polygons, its levers), would mix with the new set.
-    """
-    for name in set(ours) - set(written):
-        with contextlib.suppress(FileNotFoundError):
-            (out / name).unlink()
-
-
-def _folder(out: Path, what: str) -> Path:
-    """Return ``-o``'s folder for ``what``; a file of that name is a UsageError."""
-    if out.exists() and not out.is_dir():
-        msg = f"-o {path_text(out)}: is a file; expected a folder for the {what}"
-        raise UsageError(msg)
-    return out
-
-
-def _cmd_plans(args: argparse.Namespace) -> int:
-    from assur import plotting
-    from assur._loads import compile_loads
-    from assur.plan import plan_of
-
-    dpi = _check_dpi(args, DPI_RANGE)
-    out = _folder(args.output, "plans")
-    mech = load_mechanism(args.file)
-    angle = one_position(mech, args.angle)
-    loaded = not compile_loads(plan_of(mech)).empty
-    at = np.asarray(angle, dtype=float).reshape(1, -1)
-    t = _table(mech, at if at.shape[1] > 1 else at[:, 0], loaded)
-    makers: dict[str, Callable[[], Any]] = {
-        "velocity_plan": lambda: plotting.velocity_plan(t).figure,
-        "acceleration_plan": lambda: plotting.acceleration_plan(t).figure,
-    }
-    if loaded:
-        if plan_of(mech).groups:  # a crank alone has no group: no polygon to draw
-            makers["force_polygons"] = lambda: plotting.force_polygons(t)
-        # one lever per driver, numbered in the file's order when there are several
-        count = len(mech.drivers)
-        for i in range(count):
-            lever = "zhukovsky_lever" if count == 1 else f"zhukovsky_lever_{i + 1}"
-            makers[lever] = _lever(plotting, t, i)
-    elif not quiet(args):
-        print(
-            f"assur: note: {path_text(args.file)}: no force polygons and no lever: "
-            "no link has a mass and no load is applied",
-            file=sys.stderr,
-        )
-    makers["instant_centres"] = lambda: plotting.instant_centres(t).figure
-    written = []
-    with _figures(), output_folder(out, any_error=True) as folder:
-        for name in makers:
-            fig = makers[name]()
-            for suffix in (".png", ".svg"):
-                fig.savefig(folder / f"{name}{suffix}", dpi=dpi, bbox_inches="tight")
-                written.append(f"{name}{suffix}")
-            _pyplot().close(fig)
-    ours = [f"{name}{suffix}" for name in PLANS for suffix in (".png", ".svg")]
-    levers = [
-        p.name for p in out.glob("zhukovsky_lever_*.*") if LEVER.fullmatch(p.name)
-    ]
-    _clear_stale(out, written, ours + levers)
-    for name in written:
-        _wrote(args, path_text(out / name))
-    return 0
-
-
-def _lever(plotting: Any, table: Any, driver: int) -> Callable[[], Any]:
-    """Return what draws the lever of driver ``driver`` (its index) of ``table``."""
-    return lambda: plotting.zhukovsky_lever(table, driver=driver).figure
 
 
 def _cmd_plot(args: argparse.Namespace) -> int:
@@ -424,36 +223,6 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         _save(fig, output, dpi)
     _wrote(args, path_text(output))
     return 0
-
-
-def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:
-    """Return the mechanism and its table over ``--angles`` (forces if it has loads)."""
-    from assur._loads import compile_loads
-    from assur.plan import plan_of
-
-    mech = load_mechanism(args.file)
-    loaded = not compile_loads(plan_of(mech)).empty
-    return mech, _table(
-        mech,
-        _drawn(positions(mech, args.angles), "diagrams draw every position"),
-        loaded if forces is None else forces,
-        getattr(args, "skip_unassembled", False),
-    )
-
-
-DRAWN_MOST = 100_000
-"""Most positions of a sweep that diagrams or a report hold whole (every one)."""
-
-
-def _drawn(sweep: Any, why: str) -> Any:
-    """Return ``sweep``; a UsageError when it holds more than :data:`DRAWN_MOST`."""
-    if len(sweep) > DRAWN_MOST:
-        msg = (
-            f"--angles: {len(sweep)} positions; expected at most {DRAWN_MOST} "
-            f"({why}; a larger step)"
-        )
-        raise UsageError(msg)
-    return sweep
 
 
 def _cmd_diagrams(args: argparse.Namespace) -> int:

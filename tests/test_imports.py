@@ -117,6 +117,11 @@ RANKS = {
     "assur._cli_sweep": 12,
     "assur.cli": 12,
     "assur.dynamics_cli": 12,
+    # the picture commands' parts (the cycle check keeps them apart): the files ->
+    # the sweeps drawn -> assur plans
+    "assur._picture_files": 12,
+    "assur._picture_sweeps": 12,
+    "assur._picture_plans": 12,
     "assur.pictures_cli": 12,
     "assur.__main__": 13,
 }

@@ -1,0 +1,111 @@
+"""The picture commands' files: pyplot on Agg, and each picture written whole.
+
+Resolutions and suffixes checked, every figure closed, a folder's stale files of a
+command removed, and what was written said.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+from assur._cli_common import check_not_input, check_range, quiet
+from assur._output import output_path, path_text
+from assur._text import describe
+from assur.errors import UsageError
+
+PICTURE_SUFFIXES = (".png", ".svg", ".pdf")
+DPI = 150
+"""Resolution of the PNG pictures, dots per inch."""
+DPI_RANGE = (10.0, 1200.0)
+"""Resolutions accepted for pictures, dots per inch."""
+GIF_DPI_RANGE = (10.0, 300.0)
+"""Resolutions accepted for animations, dots per inch (every frame is kept)."""
+
+
+def _pyplot() -> Any:
+    """Return pyplot on the Agg backend: the command line never opens a window."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+@contextlib.contextmanager
+def _figures() -> Iterator[Any]:
+    """Yield pyplot on Agg; close every figure opened inside on the way out."""
+    plt = _pyplot()
+    before = set(plt.get_fignums())
+    try:
+        yield plt
+    finally:
+        for number in set(plt.get_fignums()) - before:
+            plt.close(number)
+
+
+def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
+    """Return ``-o``, checked: a known suffix and not the mechanism file."""
+    path: Path = args.output
+    suffix = path.suffix.lower()
+    if suffix not in allowed:
+        wanted = " or ".join(allowed)
+        msg = (
+            f"-o {path_text(path)}: unknown file type {describe(suffix or '(none)')}; "
+            f"expected {wanted}"
+        )
+        raise UsageError(msg)
+    check_not_input("-o", path, args.file)
+    return path
+
+
+def _draw(fig: Any, path: Path, dpi: float) -> None:
+    """Write ``fig`` to ``path`` in the format of its suffix and close it."""
+    try:
+        fig.savefig(path, dpi=dpi, bbox_inches="tight", format=path.suffix[1:].lower())
+    finally:
+        _pyplot().close(fig)
+
+
+def _save(fig: Any, path: Path, dpi: float) -> None:
+    """Write ``fig`` to ``path``, whole or not at all, and close it."""
+    try:
+        with output_path(path, any_error=True) as temporary:
+            _draw(fig, temporary, dpi)
+    finally:
+        _pyplot().close(fig)
+
+
+def _clear_stale(out: Path, written: list[str], ours: list[str]) -> None:
+    """Remove the files of ``ours`` in ``out`` that this run did not write.
+
+    A folder written before keeps its other files; the command's own, left from
+    another mechanism (its force polygons, its levers), would mix with the new set.
+    """
+    for name in set(ours) - set(written):
+        with contextlib.suppress(FileNotFoundError):
+            (out / name).unlink()
+
+
+def _folder(out: Path, what: str) -> Path:
+    """Return ``-o``'s folder for ``what``; a file of that name is a UsageError."""
+    if out.exists() and not out.is_dir():
+        msg = f"-o {path_text(out)}: is a file; expected a folder for the {what}"
+        raise UsageError(msg)
+    return out
+
+
+def _check_dpi(args: argparse.Namespace, bounds: tuple[float, float]) -> float:
+    return check_range(
+        "--dpi", args.dpi, *bounds, "a positive resolution", "dots per inch"
+    )
+
+
+def _wrote(args: argparse.Namespace, text: str) -> None:
+    """Say what was written, unless ``--quiet``."""
+    if not quiet(args):
+        print(f"wrote {text}")
