@@ -6,6 +6,8 @@ torque) and the table of the reduced quantities and the crank's motion; with
 ``--forces`` the force table at that motion, with ``--startup`` the start-up under
 the file's motor. Tables go out whole or not at all (:mod:`assur._output`); faults
 raise :class:`~assur.errors.UsageError` or :class:`~assur.errors.ModelError`.
+Its parts: the options checked (``assur._dynamics_options``), the figures given
+(``assur._dynamics_figures``).
 """
 
 from __future__ import annotations
@@ -13,7 +15,6 @@ from __future__ import annotations
 import argparse
 import contextlib
 import json
-import math
 import sys
 import warnings
 from collections.abc import Callable
@@ -21,19 +22,24 @@ from typing import Any
 
 import numpy as np
 
-from assur._checks import LARGEST
 from assur._cli_common import (
-    check_distinct,
-    check_not_input,
     check_structure,
     given,
     input_file,
-    is_stdout,
     load_mechanism,
     parse_angles,
     quiet,
     terminal,
 )
+from assur._dynamics_figures import (
+    _figures,
+    _head,
+    _header,
+    _startup_data,
+    _startup_lines,
+    startup_csv,
+)
+from assur._dynamics_options import _check_options
 from assur._output import (
     StdoutError,
     output_path,
@@ -46,13 +52,11 @@ from assur._progress import progress
 from assur._tableio import CsvWriter, JsonWriter
 from assur._text import number_text
 from assur._vec import Array
-from assur.columns import pretty_unit
-from assur.dynamics_flywheel import SMALLEST_DELTA, delta_in_range
-from assur.dynamics_model import flywheel_in_range, solved
 from assur.dynamics_model import result as dynamics_rows
+from assur.dynamics_model import solved
 from assur.dynamics_reduced import check_dynamic
 from assur.dynamics_startup import MAX_TURNS
-from assur.errors import AssurWarning, ModelError, UsageError
+from assur.errors import AssurWarning, ModelError
 
 __all__ = ["register"]
 
@@ -270,65 +274,6 @@ def _stream(rows: _Rows, writer: Any, args: argparse.Namespace) -> None:
             del part  # one slice in memory at a time
 
 
-def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
-    """Return the JSON document's figures: what comes before its columns."""
-    data: dict[str, Any] = {"dynamics": result.summary()}
-    if sizing is not None:
-        data["flywheel"] = {
-            "delta": sizing.delta,
-            "exact": sizing.exact,
-            "wittenbauer": sizing.wittenbauer,
-            "energy_swing": sizing.energy_swing,
-        }
-    if run is not None:
-        data["startup"] = _startup_data(run)
-    return data
-
-
-def _check_options(args: argparse.Namespace) -> None:
-    """Refuse options that cannot be used, before anything is computed."""
-    if args.flywheel is not None and not flywheel_in_range(args.flywheel):
-        msg = (
-            f"--flywheel {args.flywheel:g}: expected an inertia >= 0, kg m^2 (at "
-            f"most {LARGEST:g})"
-        )
-        raise UsageError(msg)
-    if args.turns is not None and args.turns < 1:
-        msg = f"--turns {args.turns}: expected a whole number of turns from 1"
-        raise UsageError(msg)
-    if args.turns is not None and not (args.startup or args.startup_csv is not None):
-        # only the start-up counts turns: the option alone did nothing, silently
-        msg = f"--turns {args.turns}: expected --startup (or --startup-csv) with it"
-        raise UsageError(msg)
-    if args.delta is not None and not delta_in_range(args.delta):
-        msg = (
-            f"--delta {args.delta:g}: expected a coefficient of speed fluctuation "
-            f"from {SMALLEST_DELTA:g} to below 2, such as 0.02"
-        )
-        raise UsageError(msg)
-    if args.csv and is_stdout(args.csv):
-        # /dev/stdout and its kin are written as "-" is: no file replaced there
-        shown = args.csv if args.csv == "-" else path_text(args.csv)
-        if args.json:
-            msg = (
-                f"--csv {shown} and --json: both write to standard output; expected "
-                "one of them"
-            )
-            raise UsageError(msg)
-        args.csv = "-"
-    if args.csv:
-        check_not_input("--csv", args.csv, args.file)
-    if args.startup_csv is not None:
-        if is_stdout(args.startup_csv):
-            msg = (
-                f"--startup-csv {args.startup_csv}: expected a file of its own "
-                "(not standard output, nor the --csv file)"
-            )
-            raise UsageError(msg)
-        check_not_input("--startup-csv", args.startup_csv, args.file)
-        check_distinct([("--csv", args.csv), ("--startup-csv", args.startup_csv)])
-
-
 class _Joined:
     """The dynamics table and the force table at its motion, side by side."""
 
@@ -389,101 +334,6 @@ def _wrote(args: argparse.Namespace, written: list[tuple[Any, int, int]]) -> Non
         print(f"wrote {rows} rows x {columns} columns to {path_text(path)}", file=lines)
 
 
-def startup_csv(run: Any) -> str:
-    """Return the start-up's samples as CSV text: time (s), angle (deg), omega (rad/s).
-
-    Numbers are written with 17 significant digits (``repr``), so reading the file
-    gives back the same floats.
-    """
-    rows = ["time,angle,omega"]
-    rows += [
-        f"{t!r},{a!r},{w!r}"
-        for t, a, w in zip(
-            run.time.tolist(), run.angle.tolist(), run.omega.tolist(), strict=True
-        )
-    ]
-    return "\n".join(rows) + "\n"
-
-
-def _motor_shown(result: Any) -> float:
-    """Return the motor torque to print (N m): 0 where it is the mean's round-off.
-
-    Loads that do no net work (gravity alone) leave a mean of a few ulps of their
-    torques: a turn's work that is not 10^-12 of the energy swing is none.
-    """
-    if abs(result.motor) * 2.0 * math.pi <= 1e-12 * result.energy_swing:
-        return 0.0
-    return float(result.motor)
-
-
-def _figures(result: Any, sizing: Any, run: Any) -> str:
-    """Return the figures of the steady state (and start-up) as aligned lines."""
-    kgm2 = pretty_unit("kg m^2")
-    lines = [
-        ("nominal crank speed", f"{result.omega:.6g} rad/s"),
-        ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
-        ("motor torque", f"{number_text(_motor_shown(result))} N·m (constant)"),
-        ("coefficient of speed fluctuation", f"delta = {result.delta:.6g}"),
-        (
-            "largest speed",
-            f"{result.speed_max:.6g} rad/s at {result.angle_max:.6g} deg",
-        ),
-        (
-            "smallest speed",
-            f"{result.speed_min:.6g} rad/s at {result.angle_min:.6g} deg",
-        ),
-        ("energy swing", f"{result.energy_swing:.6g} J"),
-        ("kinetic energy at the reference pose", f"{result.energy:.6g} J"),
-        (
-            "internal grid",
-            f"{result.grid} positions a turn (work to {result.tolerance:.1g})",
-        ),
-    ]
-    if sizing is not None:
-        gaps = {k: f"{100 * v:+.3g} %" for k, v in sizing.differences().items()}
-        lines[1] = (
-            "flywheel",
-            f"{sizing.exact:.6g} {kgm2} (exact, for delta = {sizing.delta:g})",
-        )
-        # the classical estimates drop terms of the order of the mechanism's own
-        # fluctuation: close to it they fail, even below zero
-        names = {"wittenbauer": "Wittenbauer", "energy_swing": "energy swing"}
-        good = [
-            f"{label} {getattr(sizing, k):.6g} ({gaps[k]})"
-            for k, label in names.items()
-            if getattr(sizing, k) >= 0
-        ]
-        failed = [label for k, label in names.items() if not getattr(sizing, k) >= 0]
-        if failed:
-            good.append(
-                f"{' and '.join(failed)} none (below zero this close to the "
-                "mechanism's own delta)"
-            )
-        lines.insert(2, ("classical estimates", ", ".join(good)))
-    if run is not None:
-        lines += _startup_lines(run)
-    return _header(result.mechanism, lines)
-
-
-def _startup_lines(run: Any) -> list[tuple[str, str]]:
-    """Return the figures of a start-up, as (label, value) lines."""
-    return [
-        ("start-up", f"settles in {run.settle_time:.6g} s ({run.turns} turns)"),
-        (
-            "periodic motion",
-            f"mean speed {run.mean_speed:.6g} rad/s, delta = {run.delta:.6g}",
-        ),
-    ]
-
-
-def _header(mechanism: Any, lines: list[tuple[str, str]]) -> str:
-    """Return the mechanism's name over the figures' ``lines``, aligned."""
-    name = mechanism.name or "Mechanism"
-    width = max(len(k) for k, _ in lines)
-    body = "\n".join(f"  {k.ljust(width)}  {v}" for k, v in lines)
-    return f"{name}: dynamic model reduced to the crank\n{body}"
-
-
 def _readable(table: Any, forces: bool, total: int) -> str:
     """Return the first rows of the main columns as an aligned text table.
 
@@ -511,19 +361,3 @@ def _readable(table: Any, forces: bool, total: int) -> str:
     if total > ROWS_SHOWN:
         lines.append(f"... {total - ROWS_SHOWN} more rows: --csv PATH or --json")
     return "\n".join(lines)
-
-
-def _startup_data(run: Any) -> dict[str, Any]:
-    """Return a start-up's figures and its motion, JSON-ready."""
-    return {
-        "settle_time": run.settle_time,
-        "turns": run.turns,
-        "period": run.period,
-        "mean_speed": run.mean_speed,
-        "speed_max": run.speed_max,
-        "speed_min": run.speed_min,
-        "delta": run.delta,
-        "time": run.time.tolist(),
-        "angle": run.angle.tolist(),
-        "omega": run.omega.tolist(),
-    }

@@ -116,6 +116,9 @@ RANKS = {
     "assur._cli_tables": 12,
     "assur._cli_sweep": 12,
     "assur.cli": 12,
+    # the dynamics command's parts: its options checked, the figures it gives
+    "assur._dynamics_options": 12,
+    "assur._dynamics_figures": 12,
     "assur.dynamics_cli": 12,
     # the picture commands' parts (the cycle check keeps them apart): the files ->
     # the sweeps drawn -> assur plans

@@ -1,0 +1,139 @@
+"""The figures ``assur dynamics`` gives: the steady state's and the start-up's.
+
+As aligned lines of text, as the JSON document's head, and the start-up's samples
+as CSV.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from assur._text import number_text
+from assur.columns import pretty_unit
+
+
+def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
+    """Return the JSON document's figures: what comes before its columns."""
+    data: dict[str, Any] = {"dynamics": result.summary()}
+    if sizing is not None:
+        data["flywheel"] = {
+            "delta": sizing.delta,
+            "exact": sizing.exact,
+            "wittenbauer": sizing.wittenbauer,
+            "energy_swing": sizing.energy_swing,
+        }
+    if run is not None:
+        data["startup"] = _startup_data(run)
+    return data
+
+
+def startup_csv(run: Any) -> str:
+    """Return the start-up's samples as CSV text: time (s), angle (deg), omega (rad/s).
+
+    Numbers are written with 17 significant digits (``repr``), so reading the file
+    gives back the same floats.
+    """
+    rows = ["time,angle,omega"]
+    rows += [
+        f"{t!r},{a!r},{w!r}"
+        for t, a, w in zip(
+            run.time.tolist(), run.angle.tolist(), run.omega.tolist(), strict=True
+        )
+    ]
+    return "\n".join(rows) + "\n"
+
+
+def _motor_shown(result: Any) -> float:
+    """Return the motor torque to print (N m): 0 where it is the mean's round-off.
+
+    Loads that do no net work (gravity alone) leave a mean of a few ulps of their
+    torques: a turn's work that is not 10^-12 of the energy swing is none.
+    """
+    if abs(result.motor) * 2.0 * math.pi <= 1e-12 * result.energy_swing:
+        return 0.0
+    return float(result.motor)
+
+
+def _figures(result: Any, sizing: Any, run: Any) -> str:
+    """Return the figures of the steady state (and start-up) as aligned lines."""
+    kgm2 = pretty_unit("kg m^2")
+    lines = [
+        ("nominal crank speed", f"{result.omega:.6g} rad/s"),
+        ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
+        ("motor torque", f"{number_text(_motor_shown(result))} N·m (constant)"),
+        ("coefficient of speed fluctuation", f"delta = {result.delta:.6g}"),
+        (
+            "largest speed",
+            f"{result.speed_max:.6g} rad/s at {result.angle_max:.6g} deg",
+        ),
+        (
+            "smallest speed",
+            f"{result.speed_min:.6g} rad/s at {result.angle_min:.6g} deg",
+        ),
+        ("energy swing", f"{result.energy_swing:.6g} J"),
+        ("kinetic energy at the reference pose", f"{result.energy:.6g} J"),
+        (
+            "internal grid",
+            f"{result.grid} positions a turn (work to {result.tolerance:.1g})",
+        ),
+    ]
+    if sizing is not None:
+        gaps = {k: f"{100 * v:+.3g} %" for k, v in sizing.differences().items()}
+        lines[1] = (
+            "flywheel",
+            f"{sizing.exact:.6g} {kgm2} (exact, for delta = {sizing.delta:g})",
+        )
+        # the classical estimates drop terms of the order of the mechanism's own
+        # fluctuation: close to it they fail, even below zero
+        names = {"wittenbauer": "Wittenbauer", "energy_swing": "energy swing"}
+        good = [
+            f"{label} {getattr(sizing, k):.6g} ({gaps[k]})"
+            for k, label in names.items()
+            if getattr(sizing, k) >= 0
+        ]
+        failed = [label for k, label in names.items() if not getattr(sizing, k) >= 0]
+        if failed:
+            good.append(
+                f"{' and '.join(failed)} none (below zero this close to the "
+                "mechanism's own delta)"
+            )
+        lines.insert(2, ("classical estimates", ", ".join(good)))
+    if run is not None:
+        lines += _startup_lines(run)
+    return _header(result.mechanism, lines)
+
+
+def _startup_lines(run: Any) -> list[tuple[str, str]]:
+    """Return the figures of a start-up, as (label, value) lines."""
+    return [
+        ("start-up", f"settles in {run.settle_time:.6g} s ({run.turns} turns)"),
+        (
+            "periodic motion",
+            f"mean speed {run.mean_speed:.6g} rad/s, delta = {run.delta:.6g}",
+        ),
+    ]
+
+
+def _header(mechanism: Any, lines: list[tuple[str, str]]) -> str:
+    """Return the mechanism's name over the figures' ``lines``, aligned."""
+    name = mechanism.name or "Mechanism"
+    width = max(len(k) for k, _ in lines)
+    body = "\n".join(f"  {k.ljust(width)}  {v}" for k, v in lines)
+    return f"{name}: dynamic model reduced to the crank\n{body}"
+
+
+def _startup_data(run: Any) -> dict[str, Any]:
+    """Return a start-up's figures and its motion, JSON-ready."""
+    return {
+        "settle_time": run.settle_time,
+        "turns": run.turns,
+        "period": run.period,
+        "mean_speed": run.mean_speed,
+        "speed_max": run.speed_max,
+        "speed_min": run.speed_min,
+        "delta": run.delta,
+        "time": run.time.tolist(),
+        "angle": run.angle.tolist(),
+        "omega": run.omega.tolist(),
+    }
