@@ -6,6 +6,8 @@ crank, ``J(phi) phi'' + 0.5 J'(phi) phi'^2 = M_motor(phi') + M(phi)``, with
 reference pose repeats from turn to turn; then it reports the time to settle and the
 periodic motion's figures. A crank whose motor cannot carry it past its peak load
 stalls, and the error says where.
+Its parts: what it is given, checked (``assur._startup_checks``), and how its
+run of turns ends (``assur._startup_turns``).
 """
 
 from __future__ import annotations
@@ -16,13 +18,16 @@ from typing import Any
 
 import numpy as np
 
-from assur._motor import validate_motor
-from assur._text import counted
-from assur._vec import Array, integer, real
+from assur._startup_checks import _motor, _speed, _starts, _turns
+from assur._startup_turns import (
+    PERIODIC_RTOL as PERIODIC_RTOL,  # still assur.dynamics_startup.PERIODIC_RTOL
+)
+from assur._startup_turns import _check_turned, _not_settled, _periodic
+from assur._vec import Array
 from assur.dynamics_model import checked_flywheel
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce
 from assur.dynamics_steady import check_inertia
-from assur.errors import ModelError, UsageError
+from assur.errors import UsageError
 from assur.model import Mechanism, Motor
 
 __all__ = ["Startup", "startup"]
@@ -30,9 +35,6 @@ __all__ = ["Startup", "startup"]
 RTOL = 1e-10
 """Relative tolerance of the time integration (scipy's DOP853, or Radau under a stiff
 motor)."""
-PERIODIC_RTOL = 1e-8
-"""The motion is periodic when the speed at the reference pose, extrapolated from the
-last turns, changes by less than this fraction of itself."""
 SETTLE_BAND = 0.02
 """The time to settle is the time after which the speed stays within this fraction
 of the mean speed of the periodic motion at the same crank angle."""
@@ -174,46 +176,6 @@ def startup(
     return _result(mechanism, engine, inertia, model, runs)
 
 
-def _speed(omega0: Any) -> float:
-    """Return the starting speed as a float (rad/s); a UsageError if not a number."""
-    number = real(omega0)
-    if number is None:
-        msg = f"omega0: expected a crank speed in rad/s, got {omega0!r}"
-        raise UsageError(msg)
-    return number
-
-
-def _turns(turns: Any) -> int:
-    """Return the most turns to integrate, checked: a whole number from 1."""
-    number = integer(turns)
-    if number is None or number < 1:
-        msg = f"turns: expected a whole number of turns from 1, got {turns!r}"
-        raise UsageError(msg)
-    return number
-
-
-def _motor(mechanism: Mechanism, motor: Motor | None) -> Motor:
-    """Return the motor to use: the one given, or the mechanism's."""
-    if motor is not None:
-        if not isinstance(motor, Motor):
-            msg = f"motor: expected an assur.Motor, got {type(motor).__name__}"
-            raise UsageError(msg)
-        try:
-            # the checks of a file's [motor]: a torque, a speed of its sense
-            validate_motor(motor)
-        except ModelError as err:
-            raise UsageError(str(err)) from None
-        return motor
-    if mechanism.motor is None:
-        msg = (
-            "startup: the mechanism has no motor; expected a [motor] table with "
-            "'torque' (N m at standstill) and, for an electric motor, "
-            "'no_load_speed' (rad/s)"
-        )
-        raise ModelError(msg)
-    return mechanism.motor
-
-
 class _Curves:
     """Fast scalar interpolants of ``J + J_f``, ``dJ/dphi`` and ``M`` (periodic)."""
 
@@ -236,23 +198,6 @@ class _Curves:
         inertia = ((a * x + b) * x + c) * x + d + self.flywheel
         slope = (3.0 * a * x + 2.0 * b) * x + c
         return inertia, slope, ((e * x + f) * x + g) * x + h
-
-
-def _starts(model: Reduced, motor: Motor, omega0: float, curves: _Curves) -> None:
-    """Refuse a start from rest where the motor's torque does not beat the load's."""
-    if omega0 != 0:
-        return
-    _, _, load = curves(model.start)
-    sense = math.copysign(1.0, motor.torque)
-    if sense * (motor.torque + load) > 0:
-        return
-    msg = (
-        f"startup: the motor cannot start the crank: at crank angle "
-        f"{math.degrees(model.start):.6g} deg its torque at standstill "
-        f"({motor.torque:.6g} N m) does not overcome the load torque there "
-        f"({load:.6g} N m)"
-    )
-    raise ModelError(msg)
 
 
 @dataclass
@@ -353,33 +298,6 @@ def _time_limit(scale: float, model: Reduced, motor: Motor, curves: _Curves) -> 
     return max(1e4 * 2.0 * math.pi / scale, 100.0 * first)
 
 
-def _check_turned(sol: Any, model: Reduced, curves: _Curves, motor: Motor) -> None:
-    """Raise when the crank stalled or crept to a halt instead of turning."""
-    if sol.status == 1 and len(sol.t_events[0]):
-        return
-    if sol.status < 0:
-        msg = f"startup: the time integration failed: {sol.message}"
-        raise ModelError(msg)
-    if not len(sol.t_events[1]):  # the time limit: still moving, ever so slowly
-        phi, w, when = float(sol.y[0, -1]), float(sol.y[1, -1]), float(sol.t[-1])
-        msg = (
-            f"startup: the crank creeps: {when - float(sol.t[0]):.6g} s after its "
-            f"last turn it has not made another (at crank angle "
-            f"{math.degrees(phi):.6g} deg, {w:.6g} rad/s); expected a motor or "
-            "flywheel that turns it at a pace"
-        )
-        raise ModelError(msg)
-    phi, when = float(sol.y_events[1][0][0]), float(sol.t_events[1][0])
-    _, _, load = curves(phi)
-    where = math.degrees(phi)
-    msg = (
-        f"startup: the crank stalls at crank angle {where:.6g} deg (at t = "
-        f"{when:.6g} s): the motor cannot carry it past its peak load (load torque "
-        f"{load:.6g} N m there, motor torque at standstill {motor.torque:.6g} N m)"
-    )
-    raise ModelError(msg)
-
-
 def _keep(runs: _Runs, sol: Any, end: float) -> None:
     """Keep samples of a turn (evenly spaced in time) and its dense solution."""
     begin = float(sol.t[0])
@@ -390,77 +308,6 @@ def _keep(runs: _Runs, sol: Any, end: float) -> None:
     runs.omega.append(values[1])
     runs.crossings.append(float(sol.sol(end)[1]))
     runs.last, runs.span = sol.sol, (begin, end)
-
-
-def _periodic(crossings: list[float]) -> bool:
-    """Whether the speeds at the reference pose have stopped changing.
-
-    The changes from turn to turn are taken to shrink geometrically; what is left of
-    them must be below ``PERIODIC_RTOL`` of the speed.
-    """
-    if len(crossings) < 3:
-        return False
-    last, before, earlier = crossings[-1], crossings[-2], crossings[-3]
-    change, previous = abs(last - before), abs(before - earlier)
-    limit = PERIODIC_RTOL * abs(last)
-    if change > limit:
-        return False
-    if change == 0 or previous == 0:
-        return True
-    ratio = change / previous
-    return ratio < 1 and change * ratio / (1 - ratio) <= limit
-
-
-def _not_settled(
-    runs: _Runs, motor: Motor, model: Reduced, turns: int, omega0: float
-) -> None:
-    """Raise: the speed still changes after ``turns`` turns.
-
-    The change is the last turn's; after a single turn, from the speed at the start.
-    """
-    speeds = [omega0, *runs.crossings]
-    last, before = speeds[-1], speeds[-2]
-    change = abs(last - before) / abs(last)
-    hint = ""
-    if motor.no_load_speed is None:
-        hint = (
-            f"; a constant torque settles only where it balances the mean load, at "
-            f"{model.motor:.6g} N m (the motor torque of assur.dynamics), so give "
-            "the motor a no_load_speed"
-        )
-    else:
-        more = _turns_left(runs.crossings)
-        if more is not None:
-            hint = (
-                f"; at its pace it settles in about {turns + more} turns (expected "
-                "a larger 'turns', --turns on the command line)"
-            )
-    msg = (
-        f"startup: the motion does not settle in {counted(turns, 'turn')} (the speed, "
-        f"{last:.6g} rad/s, still changes by {100 * change:.3g} % a turn){hint}"
-    )
-    raise ModelError(msg)
-
-
-def _turns_left(crossings: list[float]) -> int | None:
-    """Return about how many more turns :func:`_periodic` needs, or None.
-
-    The change of the speed at the reference pose from turn to turn, shrinking
-    geometrically by the last turns' ratio ``r``, leaves ``change * r / (1 - r)``
-    to come; None when it does not shrink at a steady ratio yet (the crank still
-    gathering speed, say).
-    """
-    if len(crossings) < 4:
-        return None
-    changes = np.abs(np.diff(crossings[-4:]))
-    if not (changes > 0).all():
-        return None
-    ratios = changes[1:] / changes[:-1]
-    ratio, change = float(ratios[-1]), float(changes[-1])
-    if not ratio < 1 or abs(ratios[0] - ratio) > 0.01 * ratio:
-        return None
-    goal = PERIODIC_RTOL * abs(crossings[-1]) * (1 - ratio) / ratio
-    return max(1, math.ceil(math.log(goal / change) / math.log(ratio)))
 
 
 def _result(

@@ -99,6 +99,9 @@ RANKS = {
     "assur.dynamics_model": 10,
     "assur.dynamics_flywheel": 10,
     "assur.dynamics_startup": 10,
+    # the start-up's parts: what it is given, checked; how its run of turns ends
+    "assur._startup_checks": 10,
+    "assur._startup_turns": 10,
     "assur.dynamics_shown": 10,
     "assur.html": 10,
     # the explanatory note reads the analysis like the pictures do

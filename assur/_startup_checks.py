@@ -1,0 +1,75 @@
+"""What a start-up is given, checked: the starting speed, the turns and the motor.
+
+And a start from rest refused where the motor's torque does not beat the load's.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from assur._motor import validate_motor
+from assur._vec import integer, real
+from assur.dynamics_reduced import Reduced
+from assur.errors import ModelError, UsageError
+from assur.model import Mechanism, Motor
+
+if TYPE_CHECKING:
+    from assur.dynamics_startup import _Curves
+
+
+def _speed(omega0: Any) -> float:
+    """Return the starting speed as a float (rad/s); a UsageError if not a number."""
+    number = real(omega0)
+    if number is None:
+        msg = f"omega0: expected a crank speed in rad/s, got {omega0!r}"
+        raise UsageError(msg)
+    return number
+
+
+def _turns(turns: Any) -> int:
+    """Return the most turns to integrate, checked: a whole number from 1."""
+    number = integer(turns)
+    if number is None or number < 1:
+        msg = f"turns: expected a whole number of turns from 1, got {turns!r}"
+        raise UsageError(msg)
+    return number
+
+
+def _motor(mechanism: Mechanism, motor: Motor | None) -> Motor:
+    """Return the motor to use: the one given, or the mechanism's."""
+    if motor is not None:
+        if not isinstance(motor, Motor):
+            msg = f"motor: expected an assur.Motor, got {type(motor).__name__}"
+            raise UsageError(msg)
+        try:
+            # the checks of a file's [motor]: a torque, a speed of its sense
+            validate_motor(motor)
+        except ModelError as err:
+            raise UsageError(str(err)) from None
+        return motor
+    if mechanism.motor is None:
+        msg = (
+            "startup: the mechanism has no motor; expected a [motor] table with "
+            "'torque' (N m at standstill) and, for an electric motor, "
+            "'no_load_speed' (rad/s)"
+        )
+        raise ModelError(msg)
+    return mechanism.motor
+
+
+def _starts(model: Reduced, motor: Motor, omega0: float, curves: _Curves) -> None:
+    """Refuse a start from rest where the motor's torque does not beat the load's."""
+    if omega0 != 0:
+        return
+    _, _, load = curves(model.start)
+    sense = math.copysign(1.0, motor.torque)
+    if sense * (motor.torque + load) > 0:
+        return
+    msg = (
+        f"startup: the motor cannot start the crank: at crank angle "
+        f"{math.degrees(model.start):.6g} deg its torque at standstill "
+        f"({motor.torque:.6g} N m) does not overcome the load torque there "
+        f"({load:.6g} N m)"
+    )
+    raise ModelError(msg)
