@@ -50,6 +50,8 @@ RANKS = {
     "assur.plan": 4,
     "assur._loads": 5,
     "assur._friction": 5,
+    # the sizes of a group's reactions with friction, by Newton's method
+    "assur._newton": 5,
     "assur._follow": 5,
     "assur._kinematics": 5,
     # the driver positions and speeds a sweep is given, read and turned into SI units
