@@ -20,8 +20,9 @@ from typing import Any
 
 import numpy as np
 
+from assur._crosscheck import residual, virtual_power
 from assur._friction import Still, friction_wrench, rate, solve_group, still
-from assur._kinematics import KinematicState, velocity_coefficients
+from assur._kinematics import KinematicState
 from assur._loads import LoadPlan, table_values
 from assur._vec import Array, Leaf, Mask, add, cross, dot, full, mul, sub, take_rows
 from assur.groups._motion import Motion, direction, point, rotated
@@ -37,9 +38,6 @@ from its point is a pure couple: its offset is NaN."""
 NO_FORCE = 1e-12
 """A prismatic pair's normal force below this fraction of the largest reaction at the
 same position is no force: rounding is all it holds."""
-SLOW = 1e-100
-"""Below this driver speed (rad/s or m/s) velocities are too small to be divided by
-the speed: the velocity coefficients are solved at unit speed instead."""
 
 __all__ = [
     "Applied",
@@ -373,43 +371,6 @@ def solve(
     return forces, result
 
 
-def virtual_power(
-    plan: Plan, bodies: list[Motion], applied: Applied, which: int, speed: Any
-) -> Any:
-    r"""Balancing load of driver ``which`` from the principle of virtual power.
-
-    ``speed`` is the driver's speed in ``bodies`` (rad/s or m/s; a float or one value
-    per position).
-
-    Notes
-    -----
-    For a unit speed of the driver (the others held), the power of the balancing load
-    plus that of every applied load (inertia loads included) is zero:
-    :math:`T = -\sum_b (F_b \cdot v_{b,O} + \tau_{b,O}\,\omega_b)`, where
-    :math:`v_{b,O} = v_b - \omega_b o_b^\perp` is the velocity of the body point at the
-    origin about which :math:`\tau_{b,O}` is taken.
-    """
-    scale: Any
-    if len(plan.drivers) == 1 and np.all(np.abs(speed) > SLOW):
-        coeff, scale = bodies, 1.0 / speed  # velocities are linear in the one speed
-    else:
-        coeff, scale = velocity_coefficients(plan, bodies, which), 1.0
-    total: Any = 0.0
-    for b in range(1, len(plan.bodies)):
-        fx, fy, tau = applied.wrenches[b]
-        if not (np.ndim(fx) or np.ndim(fy) or np.ndim(tau) or fx or fy or tau):
-            continue  # a massless, unloaded link does no work
-        m, v = bodies[b], coeff[b]
-        w = v.phi[1]
-        total = (
-            total
-            + fx * (v.ox[1] + w * m.oy[0])
-            + fy * (v.oy[1] - w * m.ox[0])
-            + tau * w
-        )
-    return -scale * total
-
-
 def offset(
     pair: PairPlan,
     bodies: list[Motion],
@@ -434,54 +395,3 @@ def offset(
         none = ~(np.abs(normal) > NO_FORCE * np.asarray(scale))
         none |= ~(np.abs(couple) <= FAR_FORCE * size * np.abs(normal))
         return np.where(none, np.nan, couple / np.where(none, 1.0, normal))
-
-
-def residual(
-    plan: Plan, bodies: list[Motion], applied: Applied, forces: ForceState, out: Array
-) -> None:
-    """Write the largest unbalanced force (N) and moment about the link's origin (N m).
-
-    Every link's loads are summed again from the applied loads, the reactions of all
-    its pairs and the balancing loads: an independent check of the reverse pass.
-    ``out`` is an array (2, n): the forces are written into its first row, the
-    moments into its second.
-    """
-    n = out.shape[1]
-    # the sums of the moving links only (the frame takes what they pass to it)
-    total = np.empty((3, len(plan.bodies), n))
-    for b in range(1, len(plan.bodies)):
-        for i, value in enumerate(applied.wrenches[b]):
-            total[i, b] = value
-    for name, (fx, fy, couple) in forces.reactions.items():
-        pair = plan.pairs[name]
-        qx, qy = point(bodies[pair.second], pair.d_second, 0)
-        tau = cross(qx, qy, fx, fy)
-        if pair.kind == "P":
-            tau = add(tau, couple)
-        for i, value in enumerate((fx, fy, tau)):
-            total[i, pair.second] += value
-            if pair.first:
-                total[i, pair.first] -= value
-    for d, value in zip(plan.drivers, forces.balancing, strict=True):
-        if d.kind == "R":
-            total[2, d.body] += value
-        else:
-            assert d.pair.axis is not None
-            ex, ey = d.pair.axis
-            fx, fy = value * ex, value * ey
-            m = bodies[d.body]
-            total[0, d.body] += fx
-            total[1, d.body] += fy
-            total[2, d.body] += m.ox[0] * fy - m.oy[0] * fx
-    out[...] = 0.0
-    force, moment = out
-    spare = np.empty(n)
-    for b in range(1, len(bodies)):
-        fx, fy, tau = total[:, b]
-        m = bodies[b]
-        np.maximum(force, np.abs(fx, out=spare), out=force)
-        np.maximum(force, np.abs(fy, out=spare), out=force)
-        # the moment about the link's origin: tau - o x F, in place
-        tau -= np.multiply(m.ox[0], fy, out=spare)
-        tau += np.multiply(m.oy[0], fx, out=spare)
-        np.maximum(moment, np.abs(tau, out=spare), out=moment)

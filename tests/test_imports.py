@@ -59,6 +59,8 @@ RANKS = {
     "assur._branches": 6,
     "assur._paths": 6,
     "assur.kinetostatics": 6,
+    # the reverse pass checked again: virtual power, every link's equilibrium
+    "assur._crosscheck": 6,
     "assur.columns": 7,
     "assur._evaluate": 7,
     # a sweep's troubles: errors, positions left out, warnings (change points too)
