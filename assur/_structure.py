@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from assur._diagnosis import _miscount
+from assur._group import Group, _describe
 from assur._group_search import _attach
 from assur._text import counted, roman
 from assur._topology import Pair, Topology, _index, _public, topology
@@ -31,49 +32,6 @@ __all__ = [
     "structure",
     "topology",
 ]
-
-
-@dataclass(frozen=True, slots=True)
-class Group:
-    """One step of the decomposition.
-
-    Attributes
-    ----------
-    group_class, order : int
-        Class (I for a driving link, II for a dyad, ...) and order (number of external
-        pairs) after Artobolevsky.
-    kind : str
-        ``"driver"``, a dyad's pair signature (``"RRR"``, ``"RRP"``, ``"RPR"``,
-        ``"PRP"``, ``"RPP"``) read from one external pair to the other, ``"triad"`` for
-        the class III group of a ternary and three binary links, or ``"general"``
-        for any other group. Class II groups are always dyads; triads and general
-        groups are of class III or higher.
-    links : tuple of str
-        The group's links, in solving order (a dyad's first link carries the first
-        external pair of its signature).
-    internal, external : tuple of str
-        Pairs between links of the group; pairs to known links (external pairs of a
-        dyad in signature order).
-    attached_to : tuple of str
-        Known links the group hangs on, each once, in the order of the external
-        pairs that join them.
-    """
-
-    group_class: int
-    order: int
-    kind: str
-    links: tuple[str, ...]
-    internal: tuple[str, ...]
-    external: tuple[str, ...]
-    attached_to: tuple[str, ...]
-
-    @property
-    def label(self) -> str:
-        """Short label such as ``"RRR (2, 3)"``; ``"class IV (...)"`` beyond triads."""
-        kind = self.kind
-        if kind == "general":
-            kind = f"class {roman(self.group_class)}"
-        return f"{kind} ({', '.join(_public(self.links))})"
 
 
 @dataclass(frozen=True, slots=True)
@@ -386,70 +344,3 @@ _DECOMPOSED: dict[Any, tuple[Group, ...]] = {}
 """The groups found for each shape of mechanism (links, pairs' names, kinds and links,
 known links): the search reads nothing else once it succeeds, so the variants of a
 study (and a mechanism analysed again) skip it."""
-
-
-def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
-    """Classify a group found by the search."""
-    inside = set(links)
-    internal = [p for p in counted if p.links[0] in inside and p.links[1] in inside]
-    external = [p for p in counted if p not in internal]
-    if len(links) == 2:
-        return _describe_dyad(links, internal[0], external, known)
-    attached = _known_links(external, known)
-    import networkx as nx
-
-    g = nx.Graph()
-    g.add_nodes_from(links)
-    g.add_edges_from(p.links for p in internal)
-    longest = max((len(c) for c in nx.simple_cycles(g)), default=0)
-    degree = max(dict(g.degree()).values())
-    group_class = max(longest, degree)
-    if group_class < 3:
-        # the search never yields one: such a chain holds a dyad without mobility
-        msg = (
-            f"links {', '.join(_public(tuple(links)))}: a chain of {len(links)} links "
-            "whose joints among them form an open path is no minimal Assur group (a "
-            "class II group is a dyad); expected a dyad or a group of class III or "
-            "higher"
-        )
-        raise DecompositionError(msg)
-    kind = (
-        "triad"
-        if (group_class == 3 and len(links) == 4 and len(external) == 3)
-        else "general"
-    )
-    return Group(
-        group_class,
-        len(external),
-        kind,
-        tuple(links),
-        tuple(p.name for p in internal),
-        tuple(p.name for p in external),
-        attached,
-    )
-
-
-def _describe_dyad(
-    links: list[str], middle: Pair, external: list[Pair], known: set[str]
-) -> Group:
-    """Order a dyad's links and external pairs so that its signature is canonical."""
-    first, second = links
-    e1 = next(p for p in external if first in p.links)
-    e2 = next(p for p in external if p is not e1)
-    forward = e1.kind + middle.kind + e2.kind
-    if forward[::-1] > forward:
-        first, second, e1, e2 = second, first, e2, e1
-    kind = max(forward, forward[::-1])
-    attached = _known_links([e1, e2], known)
-    return Group(
-        2, 2, kind, (first, second), (middle.name,), (e1.name, e2.name), attached
-    )
-
-
-def _known_links(external: list[Pair], known: set[str]) -> tuple[str, ...]:
-    """Return the known links the ``external`` pairs join, in the pairs' order.
-
-    Each link once: a dyad on two links reads "on X, Y through P, Q" with P on X.
-    """
-    found = (x for p in external for x in p.links if x in known)
-    return tuple(dict.fromkeys(found))

@@ -40,10 +40,12 @@ RANKS = {
     "assur._validation": 1,
     "assur.model": 1,
     # the structure's modules, in their own direction: _topology -> _diagnosis ->
-    # _group_search -> _structure (the cycle check keeps them apart)
+    # _group_search, _group -> _structure (the cycle check keeps them apart)
     "assur._topology": 2,
     "assur._diagnosis": 2,
     "assur._group_search": 2,
+    # one group found by the search, classified
+    "assur._group": 2,
     "assur._structure": 2,
     "assur.report": 2,
     "assur.groups": 3,
