@@ -280,7 +280,7 @@ def file_name(text: str) -> Path:
     """
     import argparse
 
-    from assur._output import folder_name
+    from assur._targets import folder_name
 
     fault = folder_name(given(text))
     if fault is not None:

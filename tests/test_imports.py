@@ -94,6 +94,8 @@ RANKS = {
     "assur._file_syntax": 10,
     "assur._file_text": 10,
     "assur._output": 10,
+    # where an output goes: the path named, the file it leads to
+    "assur._targets": 10,
     # long sweeps a slice at a time: the command line's tables, long studies
     "assur._sliced": 10,
     "assur._tableio": 10,
