@@ -20,17 +20,14 @@ from assur.explain._friction_text import power_rows
 from assur.explain._lever import LeverTerm, lever_load, lever_parts, lever_rates
 from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
+from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend
 from assur.plotting._labels import LOAD_LABELS, spread_labels
+from assur.plotting._mathtext import _symbol
 from assur.plotting._style import literal
 from assur.plotting.plans import (
-    _arrow,
-    _axes,
-    _images_plot,
-    _legend,
     _perp,
     _pos,
     _scale,
-    _symbol,
     _title,
     images,
 )

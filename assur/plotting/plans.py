@@ -11,7 +11,6 @@ many units per mm of the drawing. matplotlib is imported inside the functions on
 
 from __future__ import annotations
 
-import functools
 import math
 from typing import TYPE_CHECKING, Any
 
@@ -21,11 +20,12 @@ from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
 from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
-from assur.explain._tex import TEX_SPECIAL
 from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
+from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend, _place
 from assur.plotting._geometry import _nice
-from assur.plotting._style import literal, math_name, titled
+from assur.plotting._mathtext import _symbol
+from assur.plotting._style import literal, titled
 
 if TYPE_CHECKING:
     from assur.table import Table
@@ -41,8 +41,6 @@ __all__ = [
 
 PLAN_SIZE = 80.0
 """Length of the longest vector of a plan, mm of the drawing (about)."""
-SAME_PLACE = 0.5
-"""Images closer than this (mm of the drawing) are named in one label."""
 SAME_RATE = 1e-9
 """Two links whose angular speeds differ by less than this times the fastest link's
 turn together: their relative instant centre is at infinity."""
@@ -69,76 +67,6 @@ def _scale(vectors: list[np.ndarray]) -> float:
     """Return a plan's scale, units per mm: a round number, longest about 80 mm."""
     big = max((float(np.hypot(*v)) for v in vectors), default=0.0)
     return _nice(big / PLAN_SIZE) if big > 0 else 1.0
-
-
-def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> None:
-    """Draw an arrow from ``start`` to ``end`` (mm)."""
-    from matplotlib.patches import FancyArrowPatch
-
-    if float(np.hypot(*(end - start))) < 1e-9:
-        return
-    ax.add_patch(
-        FancyArrowPatch(
-            tuple(start), tuple(end), arrowstyle="-|>", mutation_scale=11,
-            color=color, lw=kw.pop("lw", 1.4), shrinkA=0, shrinkB=0, **kw,
-        )
-    )  # fmt: skip
-
-
-def _label(name: str) -> str:
-    """Return a point's image label: lower case, as the plans name them."""
-    if name.endswith(".G"):
-        return f"g({name[:-2]})"
-    return name.lower() if len(name) <= 3 else name
-
-
-def _axes(ax: Any, title: str, size: tuple[float, float] = (7.5, 6.5)) -> Any:
-    """Return axes to draw on, titled, equal aspect, in mm of the drawing.
-
-    ``size`` is a new figure's, inches.
-    """
-    import matplotlib.pyplot as plt
-
-    if ax is None:
-        _, ax = plt.subplots(figsize=size, layout="constrained")
-    ax.set_title(title, fontsize=10)
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel("mm of the plan")
-    ax.grid(True, lw=0.4, alpha=0.4)
-    return ax
-
-
-def _images_plot(ax: Any, found: dict[str, np.ndarray], mu: float, color: str) -> None:
-    """Draw every image from the pole; name them, those at one place in one label."""
-    places: list[tuple[np.ndarray, list[str]]] = []
-    for name, v in found.items():
-        tip = v / mu
-        _arrow(ax, np.zeros(2), tip, color, lw=0.9, alpha=0.55)
-        ax.plot(*tip, "o", ms=3.5, color=color, gid=f"image-{name}")
-        _place(places, tip, _label(name), SAME_PLACE)
-    for tip, names in places:
-        ax.annotate(
-            literal(" = ".join(names)),
-            tip,
-            xytext=(4, 4),
-            textcoords="offset points",
-            fontsize=8,
-        )
-    ax.plot([0], [0], "ko", ms=5)
-    ax.annotate(
-        "pole", (0, 0), xytext=(-14, -12), textcoords="offset points", fontsize=8
-    )
-
-
-def _place(
-    places: list[tuple[np.ndarray, list[str]]], at: np.ndarray, name: str, near: float
-) -> None:
-    """Add ``name`` at ``at`` to ``places``: to the names within ``near`` of it."""
-    for where, names in places:
-        if float(np.hypot(*(where - at))) <= near:
-            names.append(name)
-            return
-    places.append((at, [name]))
 
 
 def _chains(
@@ -186,21 +114,6 @@ def _part(tex: str) -> str:
         if f"^{{{part}}}" in tex:
             return part
     return "v"
-
-
-def _legend(
-    ax: Any, entries: list[tuple[str, str]], note: str, beside: bool = False
-) -> None:
-    """Put a legend of coloured entries and a note (the scale).
-
-    ``beside``: at the foot of the space right of the axes, not on the drawing.
-    """
-    from matplotlib.lines import Line2D
-
-    handles = [Line2D([], [], color=c, lw=3, label=literal(t)) for t, c in entries]
-    handles.append(Line2D([], [], color="none", label=note))
-    where = {"loc": "lower left", "bbox_to_anchor": (1.02, 0.0)} if beside else {}
-    ax.legend(handles=handles, fontsize=8, **({"loc": "best"} | where))
 
 
 def _title(pos: Position, what: str) -> str:
@@ -442,60 +355,6 @@ def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:
             q = rhs / (wi - wj)  # = perp(P)
             out[(i, j)] = np.array([q[1], -q[0]])
     return out
-
-
-def _symbol(tex: str) -> str:
-    """Return a load's TeX symbol (as the note writes it) for a picture, as mathtext.
-
-    The names in it are drawn as written (:func:`~assur.plotting._style.math_name`);
-    a symbol mathtext still cannot set is written plain.
-    """
-    math_text = f"${_names(tex)}$"
-    try:
-        _parser().parse(math_text, 72)
-    except ValueError:
-        return literal(tex.replace("\\vec ", "").replace("\\", ""))
-    return math_text
-
-
-NAME = "\\mathrm{"
-"""How the note's TeX begins a name (see :func:`assur.explain._tex.name`)."""
-UNESCAPED = sorted(
-    ((code, char) for char, code in {**TEX_SPECIAL, " ": "\\ "}.items()),
-    key=lambda pair: -len(pair[0]),
-)
-"""The note's TeX escapes of a name's characters, longest first."""
-
-
-def _names(tex: str) -> str:
-    r"""Return ``tex`` with every name (``\mathrm{...}``) as mathtext draws it."""
-    out = []
-    start = tex.find(NAME)
-    while start >= 0:
-        out.append(tex[:start])
-        i, chars = start + len(NAME), []
-        while tex[i] != "}":
-            for code, char in UNESCAPED:
-                if tex.startswith(code, i):
-                    chars.append(char)
-                    i += len(code)
-                    break
-            else:
-                chars.append(tex[i])
-                i += 1
-        out.append(math_name("".join(chars)))
-        tex = tex[i + 1 :]
-        start = tex.find(NAME)
-    out.append(tex)
-    return "".join(out)
-
-
-@functools.cache
-def _parser() -> Any:
-    """Return a mathtext parser (made once)."""
-    from matplotlib.mathtext import MathTextParser
-
-    return MathTextParser("path")
 
 
 def _pos(table: Table, angle: Any) -> Position:

@@ -1,0 +1,102 @@
+"""What every plan is drawn with: its axes in mm, arrows, images, legend.
+
+The images of the points are drawn from the pole and named, those at one place in one
+label; the legend lists the coloured parts and states the scale. matplotlib is
+imported inside the functions only.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from assur.plotting._style import literal
+
+SAME_PLACE = 0.5
+"""Images closer than this (mm of the drawing) are named in one label."""
+
+
+def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> None:
+    """Draw an arrow from ``start`` to ``end`` (mm)."""
+    from matplotlib.patches import FancyArrowPatch
+
+    if float(np.hypot(*(end - start))) < 1e-9:
+        return
+    ax.add_patch(
+        FancyArrowPatch(
+            tuple(start), tuple(end), arrowstyle="-|>", mutation_scale=11,
+            color=color, lw=kw.pop("lw", 1.4), shrinkA=0, shrinkB=0, **kw,
+        )
+    )  # fmt: skip
+
+
+def _label(name: str) -> str:
+    """Return a point's image label: lower case, as the plans name them."""
+    if name.endswith(".G"):
+        return f"g({name[:-2]})"
+    return name.lower() if len(name) <= 3 else name
+
+
+def _axes(ax: Any, title: str, size: tuple[float, float] = (7.5, 6.5)) -> Any:
+    """Return axes to draw on, titled, equal aspect, in mm of the drawing.
+
+    ``size`` is a new figure's, inches.
+    """
+    import matplotlib.pyplot as plt
+
+    if ax is None:
+        _, ax = plt.subplots(figsize=size, layout="constrained")
+    ax.set_title(title, fontsize=10)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("mm of the plan")
+    ax.grid(True, lw=0.4, alpha=0.4)
+    return ax
+
+
+def _images_plot(ax: Any, found: dict[str, np.ndarray], mu: float, color: str) -> None:
+    """Draw every image from the pole; name them, those at one place in one label."""
+    places: list[tuple[np.ndarray, list[str]]] = []
+    for name, v in found.items():
+        tip = v / mu
+        _arrow(ax, np.zeros(2), tip, color, lw=0.9, alpha=0.55)
+        ax.plot(*tip, "o", ms=3.5, color=color, gid=f"image-{name}")
+        _place(places, tip, _label(name), SAME_PLACE)
+    for tip, names in places:
+        ax.annotate(
+            literal(" = ".join(names)),
+            tip,
+            xytext=(4, 4),
+            textcoords="offset points",
+            fontsize=8,
+        )
+    ax.plot([0], [0], "ko", ms=5)
+    ax.annotate(
+        "pole", (0, 0), xytext=(-14, -12), textcoords="offset points", fontsize=8
+    )
+
+
+def _place(
+    places: list[tuple[np.ndarray, list[str]]], at: np.ndarray, name: str, near: float
+) -> None:
+    """Add ``name`` at ``at`` to ``places``: to the names within ``near`` of it."""
+    for where, names in places:
+        if float(np.hypot(*(where - at))) <= near:
+            names.append(name)
+            return
+    places.append((at, [name]))
+
+
+def _legend(
+    ax: Any, entries: list[tuple[str, str]], note: str, beside: bool = False
+) -> None:
+    """Put a legend of coloured entries and a note (the scale).
+
+    ``beside``: at the foot of the space right of the axes, not on the drawing.
+    """
+    from matplotlib.lines import Line2D
+
+    handles = [Line2D([], [], color=c, lw=3, label=literal(t)) for t, c in entries]
+    handles.append(Line2D([], [], color="none", label=note))
+    where = {"loc": "lower left", "bbox_to_anchor": (1.02, 0.0)} if beside else {}
+    ax.legend(handles=handles, fontsize=8, **({"loc": "best"} | where))

@@ -1,0 +1,67 @@
+"""A load's symbol on a picture: the note's TeX, set as matplotlib's mathtext.
+
+The names in a symbol are drawn as written; a symbol mathtext cannot set is written
+plain.
+"""
+
+from __future__ import annotations
+
+import functools
+from typing import Any
+
+from assur.explain._tex import TEX_SPECIAL
+from assur.plotting._style import literal, math_name
+
+
+def _symbol(tex: str) -> str:
+    """Return a load's TeX symbol (as the note writes it) for a picture, as mathtext.
+
+    The names in it are drawn as written (:func:`~assur.plotting._style.math_name`);
+    a symbol mathtext still cannot set is written plain.
+    """
+    math_text = f"${_names(tex)}$"
+    try:
+        _parser().parse(math_text, 72)
+    except ValueError:
+        return literal(tex.replace("\\vec ", "").replace("\\", ""))
+    return math_text
+
+
+NAME = "\\mathrm{"
+"""How the note's TeX begins a name (see :func:`assur.explain._tex.name`)."""
+UNESCAPED = sorted(
+    ((code, char) for char, code in {**TEX_SPECIAL, " ": "\\ "}.items()),
+    key=lambda pair: -len(pair[0]),
+)
+"""The note's TeX escapes of a name's characters, longest first."""
+
+
+def _names(tex: str) -> str:
+    r"""Return ``tex`` with every name (``\mathrm{...}``) as mathtext draws it."""
+    out = []
+    start = tex.find(NAME)
+    while start >= 0:
+        out.append(tex[:start])
+        i, chars = start + len(NAME), []
+        while tex[i] != "}":
+            for code, char in UNESCAPED:
+                if tex.startswith(code, i):
+                    chars.append(char)
+                    i += len(code)
+                    break
+            else:
+                chars.append(tex[i])
+                i += 1
+        out.append(math_name("".join(chars)))
+        tex = tex[i + 1 :]
+        start = tex.find(NAME)
+    out.append(tex)
+    return "".join(out)
+
+
+@functools.cache
+def _parser() -> Any:
+    """Return a mathtext parser (made once)."""
+    from matplotlib.mathtext import MathTextParser
+
+    return MathTextParser("path")
