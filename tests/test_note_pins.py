@@ -1,7 +1,7 @@
-"""The note's words where a pair's point is a pin, and where a slide's sign matters.
+"""The note's words and the plans' legend where a term is nothing or a sign matters.
 
-Checked on the bundled Whitworth mechanism (its block's pin is the slot's point) and
-the Scotch yoke (an RPP dyad).
+Checked on the bundled Whitworth mechanism (its block's pin is the slot's point), the
+Scotch yoke (an RPP dyad) and the lecture's slider-crank (no Coriolis term).
 """
 
 from __future__ import annotations
@@ -45,3 +45,24 @@ def test_the_rpp_slide_is_written_with_its_sign() -> None:
     (line,) = [x for x in note.splitlines() if r"s = -\frac{r_0}" in x]
     r0, ne, s = (float(v) for v in re.findall(r"-?\d+\.?\d*(?:e-?\d+)?", line)[-3:])
     assert -r0 / ne == pytest.approx(s, rel=1e-3)
+
+
+def _legend(stem: str, angle: float) -> list[str]:
+    import matplotlib.pyplot as plt
+
+    from assur.explain._solve import table_at
+    from assur.plotting import plans
+
+    ax = plans.acceleration_plan(table_at(assur.load(EXAMPLES / f"{stem}.toml"), angle))
+    legend = ax.get_legend()
+    texts = [t.get_text() for t in legend.get_texts()] if legend else []
+    plt.close(ax.figure)
+    return texts
+
+
+def test_the_acceleration_plan_s_legend_names_the_parts_drawn() -> None:
+    """A slider on the frame has no Coriolis term, and none is drawn: the legend
+    named it."""
+    assert not any("Coriolis" in t for t in _legend("slider_crank_exercise", 45.0))
+    # the Whitworth block slides on a turning lever: its Coriolis term is drawn
+    assert any("Coriolis" in t for t in _legend("whitworth", 100.0))

@@ -17,18 +17,22 @@ SAME_PLACE = 0.5
 """Images closer than this (mm of the drawing) are named in one label."""
 
 
-def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> None:
-    """Draw an arrow from ``start`` to ``end`` (mm)."""
+def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> bool:
+    """Draw an arrow from ``start`` to ``end`` (mm); return whether it was drawn.
+
+    One shorter than 1e-9 mm (a term that is nothing) is not.
+    """
     from matplotlib.patches import FancyArrowPatch
 
     if float(np.hypot(*(end - start))) < 1e-9:
-        return
+        return False
     ax.add_patch(
         FancyArrowPatch(
             tuple(start), tuple(end), arrowstyle="-|>", mutation_scale=11,
             color=color, lw=kw.pop("lw", 1.4), shrinkA=0, shrinkB=0, **kw,
         )
     )  # fmt: skip
+    return True
 
 
 def _label(name: str) -> str:

@@ -93,8 +93,10 @@ def _chains(
                 color = palette.get(part, "#555555")
                 end = tip + term.value / mu
                 if part != "base":
-                    _arrow(ax, tip, end, color, lw=1.8)
-                    kinds[part] = color
+                    # the legend names the parts drawn: a Coriolis term of nothing
+                    # (a slider on a guide that does not turn) is not
+                    if _arrow(ax, tip, end, color, lw=1.8):
+                        kinds[part] = color
                 elif not any(np.hypot(*(term.value - v)) <= 1e-9 * size for v in shown):
                     _arrow(ax, tip, end, color, lw=1.8)
                     ax.annotate(_symbol(term.tex), end, fontsize=8, color=color)
