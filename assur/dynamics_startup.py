@@ -6,8 +6,8 @@ crank, ``J(phi) phi'' + 0.5 J'(phi) phi'^2 = M_motor(phi') + M(phi)``, with
 reference pose repeats from turn to turn; then it reports the time to settle and the
 periodic motion's figures. A crank whose motor cannot carry it past its peak load
 stalls, and the error says where.
-Its parts: what it is given, checked (``assur._startup_checks``), and how its
-run of turns ends (``assur._startup_turns``).
+Its parts: what it is given, checked (``assur._startup_checks``), how its run of
+turns ends (``assur._startup_turns``) and when it settles (``assur._startup_settle``).
 """
 
 from __future__ import annotations
@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from assur._startup_checks import _motor, _speed, _starts, _turns
+from assur._startup_settle import periodic_speed, settle_time
 from assur._startup_turns import (
     PERIODIC_RTOL as PERIODIC_RTOL,  # still assur.dynamics_startup.PERIODIC_RTOL
 )
@@ -64,7 +65,8 @@ class Startup:
         Crank speed, rad/s.
     settle_time : float
         Time after which the speed stays within ``SETTLE_BAND`` of the mean
-        speed of the periodic motion of its crank angle, s.
+        speed around the periodic motion's speed at its crank angle, s; found on
+        the continuous solution, not on the samples.
     turns : int
         Turns integrated.
     period : float
@@ -146,7 +148,8 @@ def startup(
     under a motor whose speed relaxes a thousand times a turn; relative
     tolerance ``RTOL``) stops at every turn; the motion is periodic when the
     speed there, extrapolated geometrically from the last turns, changes by less
-    than ``PERIODIC_RTOL``.
+    than ``PERIODIC_RTOL``. The time to settle is where the continuous solution
+    enters the band for good (:mod:`assur._startup_settle`).
 
     Examples
     --------
@@ -202,12 +205,18 @@ class _Curves:
 
 @dataclass
 class _Runs:
-    """The samples of the turns integrated, and the last turn's dense solution."""
+    """The samples of the turns integrated, where each began, its dense solution.
+
+    The dense solution is the last turn's; ``turn`` integrates any turn again (the
+    same steps, so the same solution).
+    """
 
     time: list[Array] = field(default_factory=list)
     angle: list[Array] = field(default_factory=list)
     omega: list[Array] = field(default_factory=list)
     crossings: list[float] = field(default_factory=list)
+    starts: list[tuple[float, list[float]]] = field(default_factory=list)
+    turn: Any = None
     last: Any = None
     span: tuple[float, float] = (0.0, 0.0)
 
@@ -216,6 +225,29 @@ def _integrate(
     model: Reduced, motor: Motor, curves: _Curves, omega0: float, turns: int
 ) -> _Runs:
     """Integrate turn by turn until the speed at the reference pose repeats."""
+    sense = math.copysign(1.0, motor.torque)
+    runs = _Runs(turn=_stepper(model, motor, curves))
+    state, t = [model.start, omega0], 0.0
+    for k in range(1, turns + 1):
+        sol = runs.turn(t, state, k)
+        _check_turned(sol, model, curves, motor)
+        runs.starts.append((t, state))
+        target = model.start + sense * 2.0 * math.pi * k
+        t, state = float(sol.t_events[0][0]), [target, float(sol.y_events[0][0][1])]
+        _keep(runs, sol, t)
+        if _periodic(runs.crossings):
+            break
+    else:
+        _not_settled(runs, motor, model, turns, omega0)
+    return runs
+
+
+def _stepper(model: Reduced, motor: Motor, curves: _Curves) -> Any:
+    """Return ``turn(t, state, k)``, the integration of the crank's ``k``-th turn.
+
+    From the time ``t`` (s) and ``state`` (rad, rad/s) to the end of that turn, or
+    the crank's stall, or the time limit.
+    """
     from scipy.integrate import solve_ivp
 
     sense = math.copysign(1.0, motor.torque)
@@ -231,19 +263,18 @@ def _integrate(
         return float(sense * y[1])
 
     stall.terminal, stall.direction = True, -1.0  # type: ignore[attr-defined]
-    runs = _Runs()
-    state, t = [model.start, omega0], 0.0
     scale = _speed_scale(model, motor, curves)
     limit = _time_limit(scale, model, motor, curves)
     method = "Radau" if _stiff(model, motor, curves) else "DOP853"
-    for k in range(1, turns + 1):
+
+    def turn(t: float, state: list[float], k: int) -> Any:
         target = model.start + sense * 2.0 * math.pi * k
 
-        def turned(_t: float, y: Array, target: float = target) -> float:
+        def turned(_t: float, y: Array) -> float:
             return float(sense * (y[0] - target))
 
         turned.terminal, turned.direction = True, 1.0  # type: ignore[attr-defined]
-        sol = solve_ivp(
+        return solve_ivp(
             rhs,
             (t, t + limit),
             state,
@@ -253,14 +284,8 @@ def _integrate(
             events=(turned, stall),
             dense_output=True,
         )
-        _check_turned(sol, model, curves, motor)
-        t, state = float(sol.t_events[0][0]), [target, float(sol.y_events[0][0][1])]
-        _keep(runs, sol, t)
-        if _periodic(runs.crossings):
-            break
-    else:
-        _not_settled(runs, motor, model, turns, omega0)
-    return runs
+
+    return turn
 
 
 def _stiff(model: Reduced, motor: Motor, curves: _Curves) -> bool:
@@ -326,17 +351,9 @@ def _result(
     period = end - begin
     sense = math.copysign(1.0, motor.torque)
     mean = sense * 2.0 * math.pi / period
-    # the periodic speed at each sample's crank angle, from the last turn
-    turn = (fine[0] - model.start) % (2.0 * math.pi)
-    order = np.argsort(turn)
-    periodic = np.interp(
-        (angle - model.start) % (2.0 * math.pi),
-        turn[order],
-        fine[1][order],
-        period=2.0 * math.pi,
-    )
-    off = np.flatnonzero(np.abs(omega - periodic) > SETTLE_BAND * abs(mean))
-    settle = 0.0 if off.size == 0 else float(time[min(off[-1] + 1, len(time) - 1)])
+    speed = periodic_speed(fine, sense)
+    band = SETTLE_BAND * abs(mean)
+    settle = settle_time(runs, (time, angle, omega), speed, band)
     degrees = np.degrees(angle)
     for a in (time, degrees, omega):
         a.flags.writeable = False

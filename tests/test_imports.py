@@ -107,9 +107,11 @@ RANKS = {
     "assur.dynamics_model": 10,
     "assur.dynamics_flywheel": 10,
     "assur.dynamics_startup": 10,
-    # the start-up's parts: what it is given, checked; how its run of turns ends
+    # the start-up's parts: what it is given, checked; how its run of turns ends;
+    # when it settles
     "assur._startup_checks": 10,
     "assur._startup_turns": 10,
+    "assur._startup_settle": 10,
     "assur.dynamics_shown": 10,
     "assur.html": 10,
     # the explanatory note reads the analysis like the pictures do
