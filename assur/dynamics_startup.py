@@ -303,12 +303,21 @@ def _stiff(model: Reduced, motor: Motor, curves: _Curves) -> bool:
 
 
 def _speed_scale(model: Reduced, motor: Motor, curves: _Curves) -> float:
-    """Return a speed (rad/s) to scale tolerances and time limits."""
-    if motor.no_load_speed is not None:
-        return abs(motor.no_load_speed)
+    """Return a speed (rad/s) to scale tolerances and time limits.
+
+    The motor's (its no-load speed, or what a turn of its stall torque gives from
+    rest), or what a turn of the peak load torque gives, the larger: the loads may
+    drive the crank far faster than a weak motor would (under 1e-300 N m and a
+    30 N m load the speed's tolerance was 1e-160 rad/s, and scipy's error norms
+    overflowed).
+    """
     inertia = float(np.mean(model.inertia)) + curves.flywheel
-    # the speed a turn of the stall torque alone would give from rest
-    return math.sqrt(4.0 * math.pi * abs(motor.torque) / inertia)
+    peak = float(np.max(np.abs(model.torque)))
+    # the speed a turn of a torque alone would give from rest
+    loads = math.sqrt(4.0 * math.pi * peak / inertia)
+    if motor.no_load_speed is not None:
+        return max(abs(motor.no_load_speed), loads)
+    return max(math.sqrt(4.0 * math.pi * abs(motor.torque) / inertia), loads)
 
 
 def _time_limit(scale: float, model: Reduced, motor: Motor, curves: _Curves) -> float:

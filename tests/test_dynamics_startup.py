@@ -266,3 +266,29 @@ def test_the_periodic_extremes_against_a_runge_kutta_turn():
     )
     assert run.speed_max == pytest.approx(np.max(np.abs(w)), rel=2e-7)
     assert run.speed_min == pytest.approx(np.min(np.abs(w)), rel=2e-7)
+
+
+def test_a_vanishing_motor_torque_stalls_where_the_loads_work_runs_out():
+    """Under 1e-300 N m the crank moves by its loads alone and stops where their
+    work from the start is back at zero (kinetic energy from rest). The speed's
+    tolerance was scaled by the motor's 1e-150 rad/s: scipy's error norms
+    overflowed ("overflow encountered in dot", warnings here are errors)."""
+    from scipy.optimize import brentq
+
+    from . import oracle
+    from .test_startup_settle import loaded_slider_crank
+
+    mech = loaded_slider_crank()
+    torque = oracle.crank_model(mech).torque
+    start = math.radians(45.0)  # the reference pose
+    grid = start + np.radians(np.arange(1.0, 360.0))
+    work = [torque.integrate(start, phi) for phi in grid]
+    i = int(np.flatnonzero(np.array(work) < 0)[0])
+    stop = brentq(lambda p: torque.integrate(start, p), grid[i - 1], grid[i])
+    for motor in (Motor(1e-300), Motor(1e-300, 180.0)):
+        with pytest.raises(assur.ModelError) as caught:
+            assur.startup(mech, motor=motor)
+        message = str(caught.value)
+        assert message.startswith("startup: the crank stalls at crank angle 282.5")
+        angle = float(message.split("crank angle ")[1].split(" deg")[0])
+        assert angle == pytest.approx(math.degrees(stop), abs=1e-3)
