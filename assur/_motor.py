@@ -56,7 +56,8 @@ def validate_motor(motor: object) -> None:
         return
     if not _finite(speed):
         _fail("motor.no_load_speed", _number_fault(speed))
-    if speed * motor.torque <= 0:  # type: ignore[operator]
+    # the signs compared, not the product: 1e-300 * 1e-300 is 0
+    if speed == 0 or (speed > 0) != (motor.torque > 0):  # type: ignore[operator]
         _fail(
             "motor.no_load_speed",
             f"{describe(speed)} rad/s against a torque of {describe(motor.torque)} "

@@ -188,6 +188,16 @@ def test_bad_motor_tables(text, message):
         assur.loads(base + "\n[motor]\n" + text + "\n")
 
 
+def test_a_tiny_motor_of_one_sense_is_accepted():
+    # the check multiplied speed and torque: 1e-300 * 1e-300 underflows to 0 and
+    # was refused as "expected a speed of the torque's sign"
+    base = assur.dumps(assur.catalog.four_bar())
+    tiny = assur.loads(base + "\n[motor]\ntorque = 1e-300\nno_load_speed = 1e-300\n")
+    assert tiny.motor == Motor(1e-300, 1e-300)
+    with pytest.raises(assur.ModelError, match=r"motor\.no_load_speed: 0\.0 rad/s"):
+        assur.loads(base + "\n[motor]\ntorque = 1e-300\nno_load_speed = 0.0\n")
+
+
 def test_a_motor_built_in_code_is_checked():
     with pytest.raises(assur.ModelError, match="motor: expected a Motor"):
         dataclasses.replace(assur.catalog.four_bar(), motor=5.0)
