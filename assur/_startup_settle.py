@@ -1,8 +1,8 @@
-"""When a start-up settles: its speed enters the band around the periodic motion's.
+"""When a start-up settles, and the periodic motion's extreme speeds.
 
-The band is around the periodic speed at the same crank angle. The samples (90 a
-turn) only say in which interval the speed last enters it; the time itself is found
-on the integrator's continuous solution of that turn.
+It settles where its speed enters the band around the periodic speed at the same
+crank angle: the samples (90 a turn) only say in which interval it last enters it;
+the time itself, like the extremes, is found on the integrator's continuous solution.
 """
 
 from __future__ import annotations
@@ -82,3 +82,24 @@ def _crossing(motion: Any, speed: Any, band: float, times: Array) -> float:
     return float(
         brentq(lambda t: float(outside(t)), low, high, xtol=1e-12 * (high - low))
     )
+
+
+def extreme(motion: Any, times: Array, speeds: Array, sign: float) -> float:
+    """Return the largest (``sign`` 1) or smallest (-1) speed of the last turn, rad/s.
+
+    The best sample of ``times``, refined between its neighbours on the dense
+    solution ``motion`` (samples alone miss the peak by up to 1e-5 of it).
+    """
+    from scipy.optimize import minimize_scalar
+
+    i = int(np.argmax(sign * speeds))
+    low, high = times[max(i - 1, 0)], times[min(i + 1, len(times) - 1)]
+    found = minimize_scalar(
+        lambda t: -sign * abs(float(motion(t)[1])),
+        bounds=(low, high),
+        method="bounded",
+        options={"xatol": 1e-12 * max(abs(high), 1.0)},
+    )
+    best = abs(float(motion(found.x)[1]))
+    # never worse than the sample itself
+    return max(best, float(speeds[i])) if sign > 0 else min(best, float(speeds[i]))

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from assur._startup_checks import _motor, _speed, _starts, _turns
-from assur._startup_settle import periodic_speed, settle_time
+from assur._startup_settle import extreme, periodic_speed, settle_time
 from assur._startup_turns import (
     PERIODIC_RTOL as PERIODIC_RTOL,  # still assur.dynamics_startup.PERIODIC_RTOL
 )
@@ -355,8 +355,8 @@ def _result(
     times = np.linspace(begin, end, FINE + 1)
     fine = runs.last(times)
     speeds = np.abs(fine[1])
-    fastest = _extreme(runs.last, times, speeds, 1.0)
-    slowest = _extreme(runs.last, times, speeds, -1.0)
+    fastest = extreme(runs.last, times, speeds, 1.0)
+    slowest = extreme(runs.last, times, speeds, -1.0)
     period = end - begin
     sense = math.copysign(1.0, motor.torque)
     mean = sense * 2.0 * math.pi / period
@@ -380,24 +380,3 @@ def _result(
         fastest,
         slowest,
     )
-
-
-def _extreme(motion: Any, times: Array, speeds: Array, sign: float) -> float:
-    """Return the largest (``sign`` 1) or smallest (-1) speed of the last turn, rad/s.
-
-    The best sample of ``times``, refined between its neighbours on the dense
-    solution ``motion`` (samples alone miss the peak by up to 1e-5 of it).
-    """
-    from scipy.optimize import minimize_scalar
-
-    i = int(np.argmax(sign * speeds))
-    low, high = times[max(i - 1, 0)], times[min(i + 1, len(times) - 1)]
-    found = minimize_scalar(
-        lambda t: -sign * abs(float(motion(t)[1])),
-        bounds=(low, high),
-        method="bounded",
-        options={"xatol": 1e-12 * max(abs(high), 1.0)},
-    )
-    best = abs(float(motion(found.x)[1]))
-    # never worse than the sample itself
-    return max(best, float(speeds[i])) if sign > 0 else min(best, float(speeds[i]))
