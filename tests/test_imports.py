@@ -56,6 +56,8 @@ RANKS = {
     "assur._newton": 5,
     "assur._follow": 5,
     "assur._kinematics": 5,
+    # the forward pass's frozen result: made from the motions, rebuilt, extended
+    "assur._state": 5,
     # the driver positions and speeds a sweep is given, read and turned into SI units
     "assur._drive": 5,
     "assur._branches": 6,
