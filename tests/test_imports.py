@@ -67,6 +67,8 @@ RANKS = {
     "assur._crosscheck": 6,
     "assur.columns": 7,
     "assur._evaluate": 7,
+    # the columns computed slice by slice from the links' rebuilt motions
+    "assur._chunks": 7,
     # a sweep's troubles: errors, positions left out, warnings (change points too)
     "assur._troubles": 7,
     "assur.table": 8,
