@@ -72,6 +72,8 @@ RANKS = {
     # a sweep's troubles: errors, positions left out, warnings (change points too)
     "assur._troubles": 7,
     "assur.table": 8,
+    # what every table of results offers: its columns by name, and their export
+    "assur._exports": 8,
     "assur.summary": 8,
     "assur._stack": 6,
     # many variants compiled at once against a template plan
@@ -153,8 +155,8 @@ AGAINST_THE_DIRECTION = {
     # STYLE.md: a result may offer .plot() only as a one-line forward to plotting
     ("assur.table", "assur.plotting", "Table.plot"),
     # the same kind of one-line forward, to io.write_csv; STYLE.md names only .plot()
-    ("assur.table", "assur.io", "Columns.to_csv"),
-    ("assur.table", "assur.io", "Columns.to_parquet"),
+    ("assur._exports", "assur.io", "Columns.to_csv"),
+    ("assur._exports", "assur.io", "Columns.to_parquet"),
 }
 
 # (importer, imported): imports left out of the cycle check, each with its reason.
