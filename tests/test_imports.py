@@ -82,6 +82,8 @@ RANKS = {
     "assur._variant_checks": 6,
     "assur._variant_plans": 6,
     "assur.analysis": 9,
+    # a sweep solved slice by slice: the passes over its slices, its states gathered
+    "assur._passes": 9,
     # variants of one topology solved in one batch, from the analysis's own steps
     "assur._batch": 9,
     # where a sweep's lines break, after the positions the analysis left out
