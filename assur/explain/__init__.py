@@ -16,10 +16,11 @@ from typing import Any
 
 from assur._structure import structure
 from assur.explain._answers import answer_blocks, checked_answers, read_answers
+from assur.explain._driver_text import driver_blocks
 from assur.explain._forces_text import forces_blocks
 from assur.explain._inertia_text import inertia_blocks
 from assur.explain._kinematics_text import kinematics_blocks
-from assur.explain._lever import driver_blocks, lever_blocks
+from assur.explain._lever import lever_blocks
 from assur.explain._note import Block, Note, Para
 from assur.explain._solve import position
 from assur.explain._structure_text import structure_blocks

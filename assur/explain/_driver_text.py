@@ -1,0 +1,171 @@
+"""The input link's equilibrium, as the note writes it: section 5.
+
+The frame's reaction follows from the input link's force sum and the balancing load
+from its moments about the driving pair (a crank) or its forces along the guide (a
+slider), friction in the driving pair included.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from assur.explain._forces_text import couple_blocks, force_symbol
+from assur.explain._friction_text import driver_friction, sliding_total
+from assur.explain._lever import _balancing, _size, _speed, _symbol
+from assur.explain._loads_text import Load, force_lines, link_loads, moment_line, total
+from assur.explain._note import Block, Display, Heading, Para
+from assur.explain._position import Position
+from assur.explain._tex import ZERO, name, num, par, plain, vec
+
+__all__ = ["driver_blocks"]
+
+
+def driver_blocks(pos: Position) -> list[Block]:
+    """Return each input link's equilibrium: the frame's reaction, balancing load."""
+    plan = pos.plan
+    solved = {b for s in plan.solvers for b in s.bodies}
+    blocks: list[Block] = [Heading(2, "5. The input link")]
+    many = len(plan.drivers) > 1
+    for i, d in enumerate(plan.drivers):
+        body = d.body
+        loads = link_loads(pos, body, solved | {x.body for x in plan.drivers} - {body})
+        blocks += [
+            Para(f"Known loads on {plain(pos.link(body))}:"),
+            Display(tuple(force_lines(loads))),
+        ]
+        if d.kind == "R":
+            blocks += _crank(pos, i, loads)
+        else:
+            blocks += _slider(pos, i, loads)
+        value = _balancing(pos, i)
+        sym = _symbol(d, many)
+        unit = "N m" if d.kind == "R" else "N"
+        blocks.append(Para(f"So ${sym} = {num(value)}$ {unit}." + _ideal(pos, i, sym)))
+    return blocks
+
+
+def _ideal(pos: Position, i: int, sym: str) -> str:
+    """Return the words comparing the balancing load with the frictionless one."""
+    assert pos.result is not None
+    if not pos.result.ideal:
+        return ""
+    ideal = float(np.ravel(pos.result.ideal[i])[0])
+    value = _balancing(pos, i)
+    extra = value - ideal
+    d = pos.plan.drivers[i]
+    speed = _speed(pos, d)
+    words = (
+        f" Without friction the same motion needs ${sym}^{{ideal}} = {num(ideal)}$ "
+        f"(read off the lever below); friction changes it by ${sym} - "
+        f"{sym}^{{ideal}} = {num(value)} - {par(ideal)} = {num(extra)}$"
+    )
+    # a frictionless load that is round-off (at a dead centre) has no size to compare
+    if abs(ideal) > ZERO * _size(pos, i):
+        words += (
+            f" ($100 \\cdot \\frac{{{num(abs(extra))}}}{{{num(abs(ideal))}}} = "
+            f"{num(100.0 * abs(extra) / abs(ideal))}\\,\\%$ of its size)"
+        )
+    if not speed:
+        return words + "."
+    # the difference times the driver's speed is the power friction takes from it,
+    # whatever the signs of the load and the speed
+    rate = "\\omega" if d.kind == "R" else "v"
+    whose = "" if len(pos.plan.drivers) == 1 else " this driver's share of"
+    return (
+        words + f", and the driver supplies $({sym} - {sym}^{{ideal}})\\,{rate} = "
+        f"{num(extra)} \\cdot {par(speed)} = {num(extra * speed)}$ W more:{whose} "
+        "the power friction takes."
+    )
+
+
+def _crank(pos: Position, i: int, loads: list[Load]) -> list[Block]:
+    """Return a crank's moments about its pivot and force sum, with its friction."""
+    d = pos.plan.drivers[i]
+    sym = _symbol(d, len(pos.plan.drivers) > 1)
+    j = name(d.pair.name)
+    symbol = force_symbol(pos, 0, d.body)
+    frame = -total(loads)
+    line, m = moment_line(loads, pos.pair_point(d.pair), j)
+    reaction = (
+        f"\\vec {symbol} = -\\sum \\vec F = {vec(frame)}\\ \\mathrm{{N}},\\quad "
+        f"{symbol} = {num(math.hypot(*frame))}\\ \\mathrm{{N}}"
+    )
+    rubbing = driver_friction(pos, i)
+    words = (
+        f"Moments about {plain(d.pair.name)} (the frame's reaction passes through "
+        f"it) give the balancing torque ${sym}$ the frame applies to the link; its "
+        "force sum gives the frame's reaction"
+    )
+    if rubbing is None:
+        return [
+            Para(words + ":"),
+            Display(
+                (
+                    line,
+                    f"{sym} = -\\sum M_{{{j}}} = {num(-m)}\\ \\mathrm{{N\\,m}}",
+                    reaction,
+                )
+            ),
+        ]
+    lines, couple, term = rubbing
+    return [
+        Para(
+            words + ", whose size sets the friction couple in "
+            f"{plain(d.pair.name)}; the balancing torque overcomes that couple too:"
+        ),
+        Display((line, reaction, *lines)),
+        Display(
+            (
+                f"{sym} = -\\sum M_{{{j}}} {term} = {num(-m)} - {par(couple)} = "
+                f"{num(-m - couple)}\\ \\mathrm{{N\\,m}}",
+            )
+        ),
+    ]
+
+
+def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
+    """Return an input slider's forces along and across its guide, with friction."""
+    d = pos.plan.drivers[i]
+    sym = _symbol(d, len(pos.plan.drivers) > 1)
+    symbol = force_symbol(pos, 0, d.body)
+    e = np.asarray(d.pair.axis, dtype=float)
+    along = float(np.dot(total(loads), e))
+    rest = -total(loads) + along * e
+    rubbing = driver_friction(pos, i)
+    # the balancing force and the friction force act along the guide through the
+    # pair's point: its moments there give the guide's couple
+    couple = couple_blocks(pos, d.pair, d.body, loads)
+    if rubbing is None:
+        return [
+            Para(
+                f"Forces along the guide give the balancing force ${sym}$; across "
+                "it, the frame's normal reaction:"
+            ),
+            Display(
+                (
+                    f"{sym} = -\\sum \\vec F \\cdot \\vec e = -{par(along)} = "
+                    f"{num(-along)}\\ \\mathrm{{N}}",
+                    f"\\vec {symbol} = {vec(rest)}\\ \\mathrm{{N}}",
+                )
+            ),
+            *couple,
+        ]
+    lines, force, term = rubbing
+    return [
+        Para(
+            "Forces across the guide give the frame's normal reaction, whose size "
+            f"sets the friction in {plain(d.pair.name)}; forces along it the "
+            f"balancing force ${sym}$, which overcomes the friction too:"
+        ),
+        Display(
+            (
+                sliding_total(pos, d.pair, d.body, rest, symbol),
+                *lines,
+                f"{sym} = -\\sum \\vec F \\cdot \\vec e {term} = -{par(along)} - "
+                f"{par(force)} = {num(-along - force)}\\ \\mathrm{{N}}",
+            )
+        ),
+        *couple,
+    ]
