@@ -26,9 +26,10 @@ import numpy as np
 from assur._follow import drivers
 from assur._kinematics import continuation
 from assur._vec import Array
+from assur._walk import flipped
 from assur.plan import Plan
 
-__all__ = ["ChangePoints", "branches", "change_points", "flipped", "lowest"]
+__all__ = ["ChangePoints", "branches", "change_points", "closed", "lowest"]
 
 STEP = math.radians(0.5)
 """Grid step of the scan of a crank, rad."""
@@ -79,10 +80,14 @@ def change_points(plan: Plan) -> ChangePoints | None:
     return plan.memo["change-points"]  # type: ignore[no-any-return]
 
 
-def _closed(plan: Plan) -> list[int]:
-    """Return the solvers the scan covers: up to the last closed-form one."""
-    closed = [g for g, solver in enumerate(plan.solvers) if not solver.newton]
-    return list(range(closed[-1] + 1)) if closed else []
+def closed(plan: Plan, upto: int | None = None) -> list[int]:
+    """Return the solvers a scan covers: up to the last closed-form one.
+
+    Only those before solver index ``upto`` count (all of them when None).
+    """
+    last = len(plan.solvers) if upto is None else upto
+    found = [g for g, solver in enumerate(plan.solvers[:last]) if not solver.newton]
+    return list(range(found[-1] + 1)) if found else []
 
 
 def _assemble(
@@ -118,7 +123,7 @@ def _scan(plan: Plan) -> ChangePoints | None:
     if len(plan.drivers) != 1:
         return None
     d = plan.drivers[0]
-    groups = _closed(plan)
+    groups = closed(plan)
     if d.kind == "R":
         half = TURNS * 2.0 * math.pi
         grid = d.reference + np.arange(-half, half + STEP / 2, STEP)
@@ -220,11 +225,6 @@ def _branch(solver: Any, points: Array, drive: Array, ref: float) -> Array:
         else:
             count += x <= c
     return flipped(solver.branch, count)
-
-
-def flipped(own: float, count: Any) -> Array:
-    """Return the branch ``own`` (+1 or -1) flipped ``count`` times (an array)."""
-    return np.where(count % 2 == 1, -own, own).astype(float)
 
 
 def branches(

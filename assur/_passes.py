@@ -19,7 +19,7 @@ from assur._branches import branches
 from assur._drive import Rates, _at
 from assur._evaluate import SHORT
 from assur._loads import compile_loads
-from assur._paths import path_changes
+from assur._paths import PathBranches
 from assur._progress import progress
 from assur._troubles import _unexplained
 from assur._vec import Array, Mask, gather
@@ -165,5 +165,5 @@ class Again:
 def _branch_of(plan: Plan) -> _kin.BranchOf:
     """Return the groups' branches past change points as a function of position."""
     if len(plan.drivers) > 1:
-        return lambda at, upto: path_changes(plan, at, upto).branch
+        return PathBranches(plan)
     return lambda at, upto: branches(plan, at)[0]

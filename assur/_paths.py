@@ -20,12 +20,13 @@ from typing import Any
 
 import numpy as np
 
-from assur._branches import CANDIDATE, TOUCH, flipped, lowest
-from assur._follow import advance, drivers, layout, tangents
+from assur._branches import CANDIDATE, TOUCH, closed, lowest
+from assur._follow import drivers, layout, tangents
 from assur._vec import Array, Index
+from assur._walk import PAST, Met, flipped, ordered, walk
 from assur.plan import Plan
 
-__all__ = ["PathChanges", "path_changes"]
+__all__ = ["PathBranches", "PathChanges", "path_changes"]
 
 CRANK_STEP = math.radians(2.0)
 """Largest step between samples of a path along a crank's angle, rad (four of the
@@ -46,11 +47,33 @@ class PathChanges:
 
     ``count[g]`` (n,) is how many change points of group ``g`` lie on the path from
     the reference pose to each position, ``branch[g]`` (n,) its branch there (+1 or
-    -1); groups that meet none on any path are absent.
+    -1); groups that meet none on any path are absent. ``met`` holds every change
+    point found near the paths (a little behind the reference pose and beyond the
+    positions too): its path and parameter.
     """
 
     count: dict[int, Index]
     branch: dict[int, Array]
+    met: Met = field(default_factory=dict)
+
+
+@dataclass(frozen=True, slots=True)
+class PathBranches:
+    """The groups' branches at positions reached on straight paths (a BranchOf).
+
+    Also tells the change points on the paths (see :class:`assur._walk.OnPaths`):
+    the continuation then walks through them rather than asking at every step.
+    """
+
+    plan: Plan
+
+    def __call__(self, at: Array, upto: int) -> dict[int, Array]:
+        """Return each dyad's branch at driver positions ``at`` (n, d), SI units."""
+        return path_changes(self.plan, at, upto).branch
+
+    def met(self, drive: Array, upto: int) -> Met:
+        """Return the change points on the paths to ``drive`` (n, d), SI units."""
+        return path_changes(self.plan, drive, upto).met
 
 
 def path_changes(plan: Plan, drive: Array, upto: int | None = None) -> PathChanges:
@@ -60,7 +83,7 @@ def path_changes(plan: Plan, drive: Array, upto: int | None = None) -> PathChang
     continuation of a Newton group needs those before it only). The last few batches
     asked for are kept with the plan.
     """
-    groups = _scanned(plan, len(plan.solvers) if upto is None else upto)
+    groups = closed(plan, len(plan.solvers) if upto is None else upto)
     if not groups:
         return PathChanges({}, {})
     kept: dict[bytes, PathChanges] = plan.memo.setdefault("path-changes", {})
@@ -75,18 +98,13 @@ def path_changes(plan: Plan, drive: Array, upto: int | None = None) -> PathChang
     return found
 
 
-def _scanned(plan: Plan, upto: int) -> list[int]:
-    """Return the solvers scanned: up to the last closed-form one before ``upto``."""
-    closed = [g for g, s in enumerate(plan.solvers[:upto]) if not s.newton]
-    return list(range(closed[-1] + 1)) if closed else []
-
-
 def _changes(plan: Plan, groups: list[int], drive: Array) -> PathChanges:
     """Scan ``groups`` on the paths to ``drive``, slice by slice."""
     n = drive.shape[0]
     counts: dict[int, Index] = {
         g: np.zeros(n, dtype=np.int64) for g in groups if not plan.solvers[g].newton
     }
+    met: dict[int, list[tuple[Index, Array]]] = {}
     if n and groups:
         reference = np.array([d.reference for d in plan.drivers])
         unit = np.array(
@@ -99,13 +117,21 @@ def _changes(plan: Plan, groups: list[int], drive: Array) -> PathChanges:
         intervals = np.maximum(2, np.ceil(far)).astype(np.int64)
         for rows in _slices(intervals + 3):
             found = _counts(plan, groups, reference, drive[rows], intervals[rows])
-            for g, c in found.items():
+            for g, c in found[0].items():
                 counts[g][rows] = c
+            for g, (where, at) in found[1].items():
+                met.setdefault(g, []).append((where + rows.start, at))
     count = {g: c for g, c in counts.items() if c.any()}
     branch = {}
     for g, c in count.items():
         branch[g] = flipped(plan.solvers[g].branch, c)
-    return PathChanges(count, branch)
+    joined: Met = {}
+    for g, parts in met.items():
+        joined[g] = (
+            np.concatenate([where for where, _ in parts]),
+            np.concatenate([at for _, at in parts]),
+        )
+    return PathChanges(count, branch, joined)
 
 
 def _slices(sizes: Index) -> Iterator[slice]:
@@ -154,7 +180,7 @@ def _sampled(reference: Array, drive: Array, m: Index) -> _Paths:
 
 @dataclass(frozen=True, slots=True)
 class _Scan:
-    """What a scan of sampled paths has found so far, by solver index.
+    """What a scan of sampled paths finds, by solver index, filled in group by group.
 
     ``flipped[g]``: a dyad's branch at every sample; ``met[g]``: the paths and
     parameters of its change points; ``walked[g]``: a Newton group's link poses at
@@ -163,18 +189,19 @@ class _Scan:
 
     paths: _Paths
     flipped: dict[int, Array] = field(default_factory=dict)
-    met: dict[int, tuple[Index, Array]] = field(default_factory=dict)
+    met: Met = field(default_factory=dict)
     walked: dict[int, list[Any]] = field(default_factory=dict)
 
 
 def _counts(
     plan: Plan, groups: list[int], reference: Array, drive: Array, m: Index
-) -> dict[int, Index]:
-    """Return each dyad's change points on the paths to ``drive`` (n,), by solver.
+) -> tuple[dict[int, Index], Met]:
+    """Return each dyad's change points on the paths to ``drive``, by solver.
 
-    One pass over the samples: each group is assembled on the branches its change
-    points give it before the next group's discriminant is taken; a Newton group
-    takes the poses its walk along each path reaches (:func:`_walked`).
+    Returns how many lie on each path (n,) and where they all lie (see
+    :class:`PathChanges`). One pass over the samples: each group is assembled on the
+    branches its change points give it before the next group's discriminant is taken;
+    a Newton group takes the poses its walk along each path reaches (:func:`_walked`).
     """
     scan = _Scan(_sampled(reference, drive, m))
     paths = scan.paths
@@ -198,7 +225,7 @@ def _counts(
                     scan.met[g] = (where, s)
             if g != groups[-1]:
                 solver.assemble(bodies, size, branch=scan.flipped.get(g))
-    return out
+    return out, scan.met
 
 
 def _flips(own: float, paths: _Paths, where: Index, s: Array) -> tuple[Index, Array]:
@@ -207,102 +234,115 @@ def _flips(own: float, paths: _Paths, where: Index, s: Array) -> tuple[Index, Ar
     ``where`` are the paths and ``s`` the parameters of the change points found. One
     ahead of the reference pose (0 < s <= 1) is crossed on the way to the position;
     one at the reference pose itself or behind it (s <= 0) is not, though the sample
-    behind the reference pose is past it.
+    behind the reference pose is past it (the rule of :func:`assur._walk.crossed`).
     """
-    ahead = s > 1e-9
-    count = np.bincount(where[ahead & (s <= 1.0 + 1e-9)], minlength=paths.m.shape[0])
+    ahead = s > PAST
+    count = np.bincount(where[ahead & (s <= 1.0 + PAST)], minlength=paths.m.shape[0])
     size = paths.owner.size
     change = np.zeros(size + 1, dtype=np.int64)
     m, first = paths.m[where], paths.first[where]
     # ahead: every sample from the change point to its path's end is past it
-    past = np.clip(np.ceil(s * m - 1e-9), 0, m + 1).astype(np.int64)
+    past = np.clip(np.ceil(s * m - PAST), 0, m + 1).astype(np.int64)
     np.add.at(change, np.where(ahead, first + past + 1, first), 1)
     np.add.at(change, np.where(ahead, first + m + 3, first + 1), -1)
     before = np.cumsum(change)[:size]
     return count, flipped(own, before)
 
 
-def _crossed(plan: Plan, scan: _Scan, g: int, go: Index, x: Array) -> dict[int, Array]:
-    """Return the dyads' branches before group ``g`` at ``x`` on paths ``go``.
-
-    The rule of :func:`_flips`: a change point is crossed when it lies between the
-    reference pose (s = 0) and ``x``, on either side.
-    """
-    n = scan.paths.m.shape[0]
-    at = np.full(n, np.nan)
-    at[go] = x
-    out = {}
-    for h, (where, s) in scan.met.items():
-        if h < g:
-            y = at[where]
-            crossed = np.where(s > 1e-9, s <= y, s >= y)
-            count = np.bincount(where[crossed], minlength=n)[go]
-            out[h] = flipped(plan.solvers[h].branch, count)
-    return out
-
-
-def _stops(scan: _Scan, g: int) -> tuple[Array, Index, Index, Index]:
-    """Return the stops of the walk of Newton group ``g`` along every path, in order.
-
-    A path's stops are its samples from the reference pose on and the change points
-    ahead of it of the dyads before ``g``. Returns their parameters ``s``, their
-    samples (-1 for a change point), and each path's first stop and count of stops.
-    """
-    paths = scan.paths
-    ahead = np.flatnonzero(paths.j >= 0)
-    s, owner, sample = [paths.s[ahead]], [paths.owner[ahead]], [ahead]
-    for h, (where, t) in scan.met.items():
-        keep = (h < g) & (t > 1e-9) & (t < 1.0 + 1.0 / paths.m[where])
-        s.append(t[keep])
-        owner.append(where[keep])
-        sample.append(np.full(int(keep.sum()), -1))
-    order = np.lexsort((np.concatenate(s), np.concatenate(owner)))
-    count = np.bincount(np.concatenate(owner), minlength=paths.m.shape[0])
-    first = np.cumsum(count) - count
-    return np.concatenate(s)[order], np.concatenate(sample)[order], first, count
-
-
 def _walked(plan: Plan, g: int, scan: _Scan) -> list[Any]:
     """Return Newton group ``g``'s link poses at every sample, walked along each path.
 
-    Each path is followed from the reference pose through its stops (:func:`_stops`):
-    the dyads' branches flip at their change points, and no step spans one. The
-    sample behind the reference pose is reached by a step back. A path's poses are
-    NaN from where the group fails.
+    Each path is followed from the reference pose through its samples and the
+    change points on it of the dyads before ``g`` (:func:`assur._walk.walk`); the
+    sample behind the reference pose is reached by a walk back, through those
+    between. A path's poses are NaN from where the group fails.
     """
     paths = scan.paths
     n = paths.m.shape[0]
-    s, sample, first, count = _stops(scan, g)
+    met = {h: found for h, found in scan.met.items() if h < g}
     newton = [h for h, solver in enumerate(plan.solvers) if solver.newton]
     before = 3 * sum(layout(plan)[: newton.index(g)])
     rows = slice(before, before + 3 * len(plan.solvers[g].bodies))
     out = np.full((rows.stop - rows.start, paths.owner.size), np.nan)
-    everywhere = np.arange(n)
-    at = paths.at(np.zeros(n), everywhere)
+    reference = paths.reference
+    at = np.repeat(reference[None, :], n, axis=0)
     pose, _, rate, sign = tangents(plan, at, None, paths.delta, {})
-    out[:, paths.first + 1] = pose[rows]
-    back = -1.0 / paths.m
-    begun = (pose, rate * back, sign)
-    branch = _crossed(plan, scan, g, everywhere, 0.5 * back)
-    found = advance(plan, at, paths.at(back, everywhere), begun, branch, np.ones(n))
-    out[:, paths.first] = found[0][rows]
-    for r in range(int(count.max()) - 1):
-        go = np.flatnonzero(count > r + 1)
-        k = first[go] + r
-        a, b = s[k], s[k + 1]
-        span = b - a
-        branch = _crossed(plan, scan, g, go, 0.5 * (a + b))
-        begun = (pose[:, go], rate[:, go] * span, sign[:, go])
-        found = advance(
-            plan, paths.at(a, go), paths.at(b, go), begun, branch, np.ones(go.size)
-        )
-        pose[:, go], sign[:, go] = found[0], found[2]
-        moved = span > 0.0
-        rate[:, go[moved]] = found[1][:, moved] / span[moved]
-        here = sample[k + 1]
-        out[:, here[here >= 0]] = found[0][rows][:, here >= 0]
+    begun = (pose, rate, sign)
+    out[:, paths.first + 1] = begun[0][rows]
+    # back: along -delta to the sample behind, through the change points between;
+    # one at the reference pose itself is crossed going back, as _flips has it
+    back = {
+        h: (where, np.where(t > PAST, -t, np.maximum(-t, 2.0 * PAST)))
+        for h, (where, t) in met.items()
+    }
+    everywhere = np.arange(n)
+    stops = _stops(n, back, 1.0 / paths.m, everywhere, paths.first)
+    walk(
+        plan,
+        (reference, -paths.delta),
+        stops[:3],
+        back,
+        np.full(n, np.inf),
+        _reversed(begun),
+        _recorder(out, rows, stops[3]),
+    )
+    ahead = np.flatnonzero(paths.j >= 1)
+    stops = _stops(n, met, paths.s[ahead], paths.owner[ahead], ahead)
+    walk(
+        plan,
+        (reference, paths.delta),
+        stops[:3],
+        met,
+        np.full(n, np.inf),
+        begun,
+        _recorder(out, rows, stops[3]),
+    )
     values = iter(out)
     return [tuple(next(values) for _ in range(3)) for _ in plan.solvers[g].bodies]
+
+
+def _recorder(out: Array, rows: slice, samples: Index) -> Any:
+    """Return what keeps a walk's poses at its stops that are samples, in ``out``.
+
+    ``rows`` are the group's rows of the packed poses; ``samples`` each stop's
+    sample (-1 for a change point).
+    """
+
+    def record(k: Index, pose: Array) -> None:
+        sample = samples[k]
+        out[:, sample[sample >= 0]] = pose[rows][:, sample >= 0]
+
+    return record
+
+
+def _reversed(begun: tuple[Array, Array, Array]) -> tuple[Array, Array, Array]:
+    """Return poses, rates and signs for a walk the other way: the rates negated."""
+    return begun[0], -begun[1], begun[2]
+
+
+def _stops(
+    n: int, met: Met, s: Array, owner: Index, sample: Index
+) -> tuple[Array, Index, Index, Index]:
+    """Return the stops of a walk along ``n`` paths, by path and parameter.
+
+    The stops are the samples at parameters ``s`` on paths ``owner`` (``sample``
+    their indices) and the change points of ``met`` between the reference pose and
+    each path's last sample. Returns their parameters, each path's first stop and
+    count, and the samples (-1 for a change point).
+    """
+    last = np.zeros(n)
+    np.maximum.at(last, owner, s)
+    params, paths, samples = [s], [owner], [sample]
+    for where, t in met.values():
+        keep = (t > PAST) & (t < last[where])
+        params.append(t[keep])
+        paths.append(where[keep])
+        samples.append(np.full(int(keep.sum()), -1))
+    s_ = np.concatenate(params)
+    owner_ = np.concatenate(paths)
+    sample_ = np.concatenate(samples)
+    order, first, count = ordered(owner_, s_, n)
+    return s_[order], first, count, sample_[order]
 
 
 def _touches(

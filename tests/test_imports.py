@@ -55,6 +55,8 @@ RANKS = {
     # the sizes of a group's reactions with friction, by Newton's method
     "assur._newton": 5,
     "assur._follow": 5,
+    # walks of the Newton groups along straight paths, through change points
+    "assur._walk": 5,
     "assur._kinematics": 5,
     # the forward pass's frozen result: made from the motions, rebuilt, extended
     "assur._state": 5,

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 
+import numpy as np
 import pytest
 
 import assur
@@ -38,13 +39,34 @@ def test_the_rpr_position_says_the_pins_stay_apart_across_the_slide() -> None:
     assert "from the pin of" not in note
 
 
-def test_the_rpp_slide_is_written_with_its_sign() -> None:
-    """s = -r0 / (+-n.e) never said which sign: the one of the pair at hand."""
-    note = str(explain(assur.load(EXAMPLES / "scotch_yoke.toml"), 100.0))
+@pytest.mark.parametrize("swapped", [False, True], ids=["yoke-block", "block-yoke"])
+def test_the_rpp_slide_is_written_with_its_sign(swapped: bool, tmp_path) -> None:
+    """s = -r0 / (+-n.e) never said which sign. The sign written, times n.e of the
+    vectors written, is the denominator written; s is the yoke's slide, both ways
+    round of the slot's links (which turn n over)."""
+    text = (EXAMPLES / "scotch_yoke.toml").read_text(encoding="utf-8")
+    if swapped:
+        text = text.replace('links = ["yoke", "block"]', 'links = ["block", "yoke"]')
+        assert 'links = ["block", "yoke"]' in text
+    path = tmp_path / "yoke.toml"
+    path.write_text(text, encoding="utf-8")
+    mech = assur.load(path)
+    note = str(explain(mech, 100.0))
     assert r"\pm" not in note
+    (words,) = [x for x in note.splitlines() if "must bring the pair slot" in x]
+    e, n = (
+        np.array([float(v) for v in re.search(rf"\\vec {x} = \(([^)]*)\)", words)
+                  .group(1).replace("\\", "").split(",")])
+        for x in ("e", "n")
+    )  # fmt: skip
     (line,) = [x for x in note.splitlines() if r"s = -\frac{r_0}" in x]
-    r0, ne, s = (float(v) for v in re.findall(r"-?\d+\.?\d*(?:e-?\d+)?", line)[-3:])
-    assert -r0 / ne == pytest.approx(s, rel=1e-3)
+    sign = -1.0 if r"{-\vec n \cdot \vec e}" in line else 1.0
+    assert sign == 1.0 or r"{\vec n \cdot \vec e}" not in line
+    r0, ne, slide = (float(v) for v in re.findall(r"-?\d+\.?\d*", line)[-3:])
+    assert ne == pytest.approx(sign * float(np.dot(n, e)), abs=1e-4)
+    assert -r0 / ne == pytest.approx(slide, rel=1e-3)
+    slid = assur.kinematics(mech, [100.0])["guide.s"][0]
+    assert slide == pytest.approx(slid, rel=1e-3)
 
 
 def _legend(stem: str, angle: float) -> list[str]:

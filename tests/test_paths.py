@@ -20,6 +20,8 @@ from assur._paths import _flips, _sampled
 from .conftest import DATA
 
 TWO_CRANKS_CLASS3 = DATA / "edge" / "two_cranks_class3_parallelogram.toml"
+TWO_TRIADS = DATA / "edge" / "two_triads_two_cranks.toml"
+ONE_TRIAD = DATA / "edge" / "class3_parallelogram.toml"
 
 
 def _sweep(angles: np.ndarray) -> tuple[assur.Table, list[str]]:
@@ -68,6 +70,26 @@ def test_the_parallelogram_holds_wherever_both_cranks_go(angles):
     """Paths that turn both cranks, some through both change points."""
     table, _ = _sweep(angles)
     _parallel(table)
+
+
+def test_two_triads_on_two_cranks_move_as_each_does_alone():
+    """Two Newton groups with a dyad of change points between them: each copy moves
+    as the one-crank file does on its own crank (the change points of both dyads
+    crossed on the paths)."""
+    first = np.array([-170.0, 30.0, 95.0, 265.0, 420.0])
+    second = np.array([-100.0, 85.0, 270.0])
+    angles = np.stack(np.meshgrid(first, second)).reshape(2, -1).T
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)
+        both = assur.kinematics(assur.load(TWO_TRIADS), angles)
+        one = assur.load(ONE_TRIAD)
+        alone = [assur.kinematics(one, angles[:, i]) for i in (0, 1)]
+    for suffix, table in zip(("", "_2"), alone, strict=True):
+        gap = (both[f"po{suffix}.angle"] - table["po.angle"] + 180.0) % 360.0 - 180.0
+        np.testing.assert_allclose(gap, 0.0, atol=1e-8)
+        np.testing.assert_allclose(
+            both[f"po{suffix}.omega"], table["po.omega"], rtol=1e-8, atol=1e-8
+        )
 
 
 def test_a_change_point_behind_the_reference_pose_flips_the_sample_behind_it():
