@@ -72,8 +72,8 @@ class ChangePoints:
 def change_points(plan: Plan) -> ChangePoints | None:
     """Return the change points of ``plan`` (scanned once and kept), or None.
 
-    None when nothing can change branch: several drivers, or no two-branch dyad
-    before the first group followed by continuation.
+    None when nothing can change branch: several drivers (their paths are scanned
+    by :mod:`assur._paths`), or no change point found.
     """
     if "change-points" not in plan.memo:
         plan.memo["change-points"] = _scan(plan)

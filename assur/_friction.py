@@ -14,10 +14,10 @@ Given the senses of the relative motions, the reactions are affine in those size
 the frictionless solution plus each pair's response to a unit of its friction, found
 by solving the group once per pair with friction. What is left is a small system
 ``s = |R(s)|`` of one unknown per pair with friction, solved by Newton's method at
-every position at once. Of its solutions (a slider may also wedge in its guide) the
-one that grows from the frictionless one as the friction rises is the motion; where
-it has none with every size positive, no load can drive the group against its
-friction: it locks.
+every position at once (:mod:`assur._newton`). Of its solutions (a slider may also
+wedge in its guide) the one that grows from the frictionless one as the friction
+rises is the motion; where it has none with every size positive, no load can drive
+the group against its friction: it locks.
 """
 
 from __future__ import annotations

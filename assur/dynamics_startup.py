@@ -20,9 +20,6 @@ import numpy as np
 
 from assur._startup_checks import _motor, _speed, _starts, _turns
 from assur._startup_settle import extreme, periodic_speed, settle_time
-from assur._startup_turns import (
-    PERIODIC_RTOL as PERIODIC_RTOL,  # still assur.dynamics_startup.PERIODIC_RTOL
-)
 from assur._startup_turns import _check_turned, _not_settled, _periodic
 from assur._vec import Array
 from assur.dynamics_model import checked_flywheel

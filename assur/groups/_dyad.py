@@ -5,8 +5,9 @@ one coordinate: its rotation (revolute pair, the body's origin is the pin) or it
 along the guide (prismatic pair, the body turns with the guide). The middle pair gives
 two equations in those two coordinates. Positions are closed form, one module per kind
 (its ``closure``); velocities, accelerations and jerks solve the same 2x2 Jacobian with
-Cramer's rule, element by element over the batch; reactions eliminate the external
-pairs with one equation per link (the virtual power along that link's own coordinate).
+Cramer's rule, element by element over the batch (:mod:`assur.groups._coordinates`);
+reactions eliminate the external pairs with one equation per link (the virtual power
+along that link's own coordinate).
 """
 
 from __future__ import annotations
