@@ -14,6 +14,7 @@ workers run. pandas, xarray and dask are imported only when a study needs them.
 from __future__ import annotations
 
 import itertools
+import threading
 import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
@@ -219,13 +220,15 @@ def summarise(
     count = len(next(iter(parameters.values())))
     frames = []
     size = max(1, min(CHUNK // max(1, angles.shape[0]), BLOCK // GROUPED))
-    _keep_the_heap()
     templates: dict[Any, Template | None] = {}
-    for first in range(0, count, GROUPED * size):
-        block = range(first, min(first + GROUPED * size, count))
-        rows = _block(factory, parameters, angles, block, templates, size)
-        # a block's rows as columns: a dict per variant costs ten times as much
-        frames.append(pd.DataFrame(rows, index=pd.RangeIndex(block.start, block.stop)))
+    with ONE_AT_A_TIME:
+        _keep_the_heap()
+        for first in range(0, count, GROUPED * size):
+            block = range(first, min(first + GROUPED * size, count))
+            rows = _block(factory, parameters, angles, block, templates, size)
+            # a block's rows as columns: a dict per variant costs ten times as much
+            index = pd.RangeIndex(block.start, block.stop)
+            frames.append(pd.DataFrame(rows, index=index))
     frame = ordered(pd.concat(frames), list(parameters))
     frame.index = pd.RangeIndex(start, start + count, name="variant")
     return frame
@@ -242,6 +245,11 @@ def ordered(frame: Any, parameters: list[str]) -> Any:
     return frame.reindex(columns=[*parameters, *rest, *last])
 
 
+ONE_AT_A_TIME = threading.Lock()
+"""Held by the process while it summarises variants: each variant's warnings are
+recorded with ``warnings.catch_warnings``, which swaps process-wide state (the
+filters, ``showwarning``); two threads recording at once lose each other's warnings
+or file them under the wrong variant."""
 GROUPED = 8
 """Batches of variants built and compiled together: the checks of a compilation cost
 about as much for a few hundred variants as for the few dozen of one batch."""
