@@ -1,6 +1,7 @@
 """A study's full tables: one variant's force table, the variants and columns chosen.
 
-What :meth:`assur.study.Study.tables` computes on demand, variant by variant.
+What :meth:`assur.study.Study.tables` computes on demand, variant by variant; and
+the order of the summary's columns, one process's or many partitions'.
 """
 
 from __future__ import annotations
@@ -80,3 +81,14 @@ def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:
             raise UsageError(msg)
         out.append(i)
     return out
+
+
+def ordered(frame: Any, parameters: list[str]) -> Any:
+    """Return the summary ``frame`` with its columns in order.
+
+    The parameters, the summary values in the order met, then ``error`` and
+    ``warning``.
+    """
+    last = ["error", "warning"]
+    rest = [c for c in frame.columns if c not in parameters and c not in last]
+    return frame.reindex(columns=[*parameters, *rest, *last])

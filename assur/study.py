@@ -13,7 +13,6 @@ workers run. pandas, xarray and dask are imported only when a study needs them.
 
 from __future__ import annotations
 
-import itertools
 import threading
 import warnings
 from collections.abc import Mapping, Sequence
@@ -37,11 +36,11 @@ from assur._study_inputs import (
     _variant,
 )
 from assur._study_stacks import _compiled, _fill, _keep_the_heap, _template
-from assur._study_tables import _chosen, _known, _names, _table
+from assur._study_tables import _chosen, _known, _names, _table, ordered
 from assur._variants import Template, compile_many, form, numbers
-from assur._vec import Array, integer
+from assur._vec import Array
 from assur.analysis import forces
-from assur.errors import AssurError, AssurWarning, UsageError
+from assur.errors import AssurError, AssurWarning
 from assur.model import Mechanism
 
 __all__ = ["Study", "sweep"]
@@ -204,7 +203,9 @@ def sweep(
     if client is None:
         table = summarise(factory, values, given)
     else:
-        table = _distributed(client, factory, values, given, partitions)
+        from assur._study_cluster import _distributed
+
+        table = _distributed(client, summarise, factory, values, given, partitions)
     return Study(factory, values, given, table)
 
 
@@ -232,17 +233,6 @@ def summarise(
     frame = ordered(pd.concat(frames), list(parameters))
     frame.index = pd.RangeIndex(start, start + count, name="variant")
     return frame
-
-
-def ordered(frame: Any, parameters: list[str]) -> Any:
-    """Return the summary ``frame`` with its columns in order.
-
-    The parameters, the summary values in the order met, then ``error`` and
-    ``warning``.
-    """
-    last = ["error", "warning"]
-    rest = [c for c in frame.columns if c not in parameters and c not in last]
-    return frame.reindex(columns=[*parameters, *rest, *last])
 
 
 ONE_AT_A_TIME = threading.Lock()
@@ -360,40 +350,3 @@ def _summed(mech: Mechanism, angles: Array) -> dict[str, Any]:
 def _line(err: BaseException) -> str:
     """Return an error as one line: its class and its message."""
     return f"{type(err).__name__}: {' '.join(str(err).split())}"
-
-
-def _distributed(
-    client: Any,
-    factory: Factory,
-    parameters: dict[str, Array],
-    angles: Array,
-    partitions: int | None,
-) -> Any:
-    """Run the variants in partitions on a dask.distributed cluster; one DataFrame."""
-    import pandas as pd
-
-    _optional("distributed")
-    if not all(callable(getattr(client, f, None)) for f in ("submit", "gather")):
-        msg = f"client: expected a dask.distributed Client, got {client!r}"
-        raise UsageError(msg)
-    if partitions is not None and (integer(partitions) or 0) < 1:
-        msg = f"partitions: expected a positive number, got {partitions!r}"
-        raise UsageError(msg)
-    count = len(next(iter(parameters.values())))
-    if partitions is None:
-        threads = sum(client.nthreads().values()) or 1
-        partitions = 2 * threads
-    bounds = np.linspace(0, count, min(count, max(1, partitions)) + 1).astype(int)
-    futures = [
-        client.submit(
-            summarise,
-            factory,
-            {name: v[a:b] for name, v in parameters.items()},
-            angles,
-            int(a),
-            pure=False,
-        )
-        for a, b in itertools.pairwise(bounds)
-    ]
-    # partitions of other topologies bring their own columns: ordered as one run's
-    return ordered(pd.concat(client.gather(futures)), list(parameters))

@@ -93,10 +93,11 @@ RANKS = {
     # studies: many variants, summarised; pandas, xarray and dask imported lazily
     "assur.study": 10,
     # a study's parts: its inputs checked -> its variants compiled and stacked, its
-    # full tables (the cycle check keeps them apart)
+    # full tables, its partitions on a cluster (the cycle check keeps them apart)
     "assur._study_inputs": 10,
     "assur._study_stacks": 10,
     "assur._study_tables": 10,
+    "assur._study_cluster": 10,
     "assur.io": 10,
     # a mechanism file, for io: its entries read (the file contract, KEYS) -> its
     # syntax decoded, its text written (the cycle check keeps them apart)

@@ -1,0 +1,61 @@
+"""Studies on a dask.distributed cluster: the variants in partitions, one per task.
+
+:func:`assur.study.sweep` with a client splits the variants into partitions; each
+worker runs :func:`assur.study.summarise` on its partitions, and the partitions'
+summaries come back as one DataFrame.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from assur._study_inputs import Factory, _optional
+from assur._study_tables import ordered
+from assur._vec import Array, integer
+from assur.errors import UsageError
+
+
+def _distributed(
+    client: Any,
+    summarise: Callable[..., Any],
+    factory: Factory,
+    parameters: dict[str, Array],
+    angles: Array,
+    partitions: int | None,
+) -> Any:
+    """Run the variants in partitions on a dask.distributed cluster; one DataFrame.
+
+    Each partition is ``summarise(factory, parameters, angles, start)`` on a worker
+    (:func:`assur.study.summarise`).
+    """
+    import pandas as pd
+
+    _optional("distributed")
+    if not all(callable(getattr(client, f, None)) for f in ("submit", "gather")):
+        msg = f"client: expected a dask.distributed Client, got {client!r}"
+        raise UsageError(msg)
+    if partitions is not None and (integer(partitions) or 0) < 1:
+        msg = f"partitions: expected a positive number, got {partitions!r}"
+        raise UsageError(msg)
+    count = len(next(iter(parameters.values())))
+    if partitions is None:
+        threads = sum(client.nthreads().values()) or 1
+        partitions = 2 * threads
+    bounds = np.linspace(0, count, min(count, max(1, partitions)) + 1).astype(int)
+    futures = [
+        client.submit(
+            summarise,
+            factory,
+            {name: v[a:b] for name, v in parameters.items()},
+            angles,
+            int(a),
+            pure=False,
+        )
+        for a, b in itertools.pairwise(bounds)
+    ]
+    # partitions of other topologies bring their own columns: ordered as one run's
+    return ordered(pd.concat(client.gather(futures)), list(parameters))
