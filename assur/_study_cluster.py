@@ -35,6 +35,8 @@ def _distributed(
     import pandas as pd
 
     _optional("distributed")
+    from distributed import KilledWorker
+
     if not all(callable(getattr(client, f, None)) for f in ("submit", "gather")):
         msg = f"client: expected a dask.distributed Client, got {client!r}"
         raise UsageError(msg)
@@ -57,5 +59,27 @@ def _distributed(
         )
         for a, b in itertools.pairwise(bounds)
     ]
+    frames = []
+    for (a, b), future in zip(itertools.pairwise(bounds), futures, strict=True):
+        try:
+            frames.append(client.gather(future))
+        except KilledWorker:
+            # the partition is lost, not the others: its rows say so
+            frames.append(_killed(parameters, int(a), int(b)))
     # partitions of other topologies bring their own columns: ordered as one run's
-    return ordered(pd.concat(client.gather(futures)), list(parameters))
+    return ordered(pd.concat(frames), list(parameters))
+
+
+def _killed(parameters: dict[str, Array], a: int, b: int) -> Any:
+    """Return the rows of variants ``a`` to ``b - 1``, whose worker process died."""
+    import pandas as pd
+
+    why = (
+        f"KilledWorker: the worker process running variants {a} to {b - 1} (one "
+        "partition) died each time it held them: one of them, or a partition run "
+        "beside them, ends its process (os._exit, a crash, out of memory); expected "
+        "each variant to return or raise (run them in smaller partitions to find which)"
+    )
+    rows = {name: v[a:b] for name, v in parameters.items()}
+    index = pd.RangeIndex(a, b, name="variant")
+    return pd.DataFrame({**rows, "error": why, "warning": ""}, index=index)

@@ -184,7 +184,10 @@ def sweep(
     -----
     A variant whose factory raises or returns something other than a Mechanism, or
     whose analysis raises an AssurError, is not fatal: its ``error`` says why, as
-    ``assur.forces(factory(**p), angles)`` would have said. Variants that share a
+    ``assur.forces(factory(**p), angles)`` would have said. A variant that ends its
+    process ends a study without ``client``; with one, the rows of its partition say
+    ``KilledWorker: ...`` once dask gives the partition up (``docs/study.rst``,
+    "On a cluster"), the others are kept. Variants that share a
     topology are solved together, the plan's structure once and their numbers
     stacked over variants x positions. Integer and boolean parameters reach the
     factory as Python ints and bools, the others as floats.

@@ -7,6 +7,8 @@ process must not take the finished partitions with it.
 
 from __future__ import annotations
 
+import os
+
 import numpy as np
 import pytest
 
@@ -44,3 +46,43 @@ def test_warnings_stay_with_their_variant_on_a_worker_of_several_threads():
     said = found["warning"].to_numpy()
     assert all("change point" in w for w in said[::2])
     assert all(w == "" for w in said[1::2])
+
+
+def ending(rod: float) -> assur.Mechanism:
+    """A slider-crank, except for a rod of 0.3 m: its process ends at once."""
+    if rod == 0.3:
+        os._exit(3)
+    return catalog.slider_crank(rod=rod)
+
+
+def test_a_variant_that_kills_its_worker_costs_its_partition_not_the_study():
+    # a worker process that died (os._exit, a crash, out of memory) took the study
+    # with it: KilledWorker, and every finished partition lost
+    dask = pytest.importorskip("dask")
+    rods = [0.2, 0.21, 0.22, 0.3, 0.23, 0.24]
+    angles = np.arange(0.0, 360.0, 10.0)
+    with (
+        # a partition is given up at the first death (the default waits for four)
+        dask.config.set({"distributed.scheduler.allowed-failures": 0}),
+        distributed.LocalCluster(
+            n_workers=1, processes=True, threads_per_worker=1, dashboard_address=":0"
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        found = assur.sweep(ending, {"rod": rods}, angles, client, partitions=3)
+    summary = found.summary
+    assert summary["rod"].tolist() == rods
+    killed = "KilledWorker: the worker process running variants {} to {} (one part"
+    assert summary["error"][3].startswith(killed.format(2, 3))
+    assert np.isnan(summary["B.F.max"][3])
+    # a partition the worker held when it died (queued, or its result not yet
+    # fetched) is lost with it; the others are kept
+    kept = [i for i in range(len(rods)) if summary["error"][i] == ""]
+    assert kept
+    for i in range(len(rods)):
+        first = i - i % 2
+        if i not in kept:
+            assert summary["error"][i].startswith(killed.format(first, first + 1))
+            continue
+        want = assur.forces(catalog.slider_crank(rod=rods[i]), angles).summary()
+        assert summary["B.F.max"][i] == pytest.approx(want["B.F.max"], rel=1e-12)
