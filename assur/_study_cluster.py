@@ -43,6 +43,10 @@ def _distributed(
     if partitions is not None and (integer(partitions) or 0) < 1:
         msg = f"partitions: expected a positive number, got {partitions!r}"
         raise UsageError(msg)
+    if getattr(client, "status", None) in ("closing", "closed"):
+        # else an AttributeError from deep inside the client, or ClosedClientError
+        msg = f"client: {client!r} is closed; expected a running client"
+        raise UsageError(msg)
     count = len(next(iter(parameters.values())))
     if partitions is None:
         threads = sum(client.nthreads().values()) or 1

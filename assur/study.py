@@ -176,7 +176,8 @@ def sweep(
         (``error``, ``warning``, ``variant``, ``efficiency``) or of
         :meth:`Study.tables` (``position``, ``column``, ``values``, ``driver``);
         driver positions that are not finite real numbers; a ``client`` that is not
-        a dask.distributed client or ``partitions`` that is not a positive integer.
+        a dask.distributed client or is closed, or ``partitions`` that is not a
+        positive integer.
     ImportError
         When pandas (or with ``client``, dask.distributed) is not installed.
 

@@ -86,3 +86,20 @@ def test_a_variant_that_kills_its_worker_costs_its_partition_not_the_study():
             continue
         want = assur.forces(catalog.slider_crank(rod=rods[i]), angles).summary()
         assert summary["B.F.max"][i] == pytest.approx(want["B.F.max"], rel=1e-12)
+
+
+@pytest.mark.parametrize("partitions", [None, 2])
+def test_a_closed_client_is_refused(partitions):
+    # an AttributeError ('NoneType' object has no attribute 'ncores') from the
+    # client's own code, or its ClosedClientError
+    with (
+        distributed.LocalCluster(
+            n_workers=1, processes=False, threads_per_worker=1, dashboard_address=":0"
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        pass
+    with pytest.raises(assur.UsageError, match=r"^client: <Client: .* is closed; exp"):
+        assur.sweep(
+            catalog.slider_crank, {"rod": [0.2]}, [0.0], client, partitions=partitions
+        )
