@@ -19,8 +19,9 @@ from typing import Any, NoReturn
 
 import numpy as np
 
+from assur._drive import positions, to_si
 from assur._output import path_text
-from assur._troubles import SKIPPED_WHY
+from assur._troubles import SKIPPED_WHY, _change_points
 from assur._vec import Array, full
 from assur.columns import balancing_columns
 from assur.errors import (
@@ -33,6 +34,8 @@ from assur.plan import plan_of
 
 __all__ = ["CHUNK", "Skipped", "Slice", "slices"]
 
+FAILURES = (AssemblyError, SingularConfigurationError, SelfLockingError)
+"""The errors of a sweep that fails at some of its positions."""
 CHUNK = 65536
 """Driver positions analysed and written at once (a multiple of the library's slice,
 so that every number is computed as in one call over the whole sweep)."""
@@ -98,8 +101,9 @@ def slices(
 ) -> Iterator[Slice]:
     """Analyse ``given`` (driver positions, deg or m) slice by slice; yield each slice.
 
-    Warnings near a dead centre are gathered and given once the sweep is done;
-    positions left out are added to ``skipped``. ``advance(count)`` is told of the
+    Warnings near a dead centre are gathered and given once the sweep is done; when a
+    slice fails, the warnings a whole sweep gives before its error are given first.
+    Positions left out are added to ``skipped``. ``advance(count)`` is told of the
     positions solved (a progress bar). With ``check``, the positions of the whole
     sweep are solved first (slice by slice, a small part of the work), so that a
     position that cannot be assembled stops the command before anything is written.
@@ -125,18 +129,25 @@ def slices(
                 table = analyse(
                     mech, part, skip_unassembled=skip, progress=_told(advance)
                 )
-            except (AssemblyError, SingularConfigurationError) as err:
-                if n > chunk:
-                    _raise_as_whole(mech, given, skip, err)
-                raise
-            except SelfLockingError as err:
-                if n > chunk:
-                    _raise_as_whole(mech, given, skip, err, forces=True)
-                raise
+            except FAILURES as err:
+                failed: Exception | None = err
+            else:
+                failed = None
+        near.add(caught, part)
+        if failed is not None:
+            # the warnings a whole sweep gives before its error, then the error
+            near.give_before_error(given[start + chunk :], chunk)
+            if n > chunk:
+                locked = isinstance(failed, SelfLockingError)
+                _raise_as_whole(mech, given, skip, failed, forces=locked)
+            raise failed
         if check and not skip and start == 0:
             # after the first slice, so that its other faults (no masses) come first
-            _check(mech, given[chunk:], given, chunk, forces)
-        near.add(caught, part)
+            try:
+                _check(mech, given[chunk:], given, chunk, forces)
+            except FAILURES:
+                near.give_before_error(given[chunk:], chunk)
+                raise
         skipped.add(table.skipped)
         angles = angles or _Angles(table)
         yield Slice(table, angles.carry(table))
@@ -323,6 +334,25 @@ class _Warnings:
                 self.mech, position, skip_unassembled=self.skip, columns=["angle"]
             )
         return any(str(w.message).startswith(key) for w in caught)
+
+    def give_before_error(self, rest: Array, chunk: int) -> None:
+        """Issue the warnings a whole sweep gives before its error.
+
+        The change points over every position (those of ``rest``, the positions not
+        yet solved, found ``chunk`` at a time) and the other warnings met so far, in
+        the order first met; not the positions near a dead centre, which a sweep
+        that fails does not list.
+        """
+        plan = plan_of(self.mech)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            for start in range(0, len(rest), chunk):
+                part = positions(plan, rest[start : start + chunk])
+                _change_points(plan, part, to_si(plan, part))
+        for w in caught:
+            self.order.setdefault((w.category, str(w.message)))
+        for category, other in self.order:
+            warnings.warn(other, category, stacklevel=3)
 
     def give(self) -> None:
         """Issue the warnings of the whole sweep, in a whole sweep's order.

@@ -580,3 +580,27 @@ def test_an_undefined_efficiency_says_why_from_the_row():
     assert undefined(row) == {
         "efficiency": "the driver does no net work (mean power <= 0): the loads drive"
     }
+
+
+@pytest.mark.parametrize("sliced", [400, 65536])
+def test_a_long_sweep_that_fails_keeps_a_separate_call_s_warnings(monkeypatch, sliced):
+    # a slide line offset by more than the crank: a change point at 270 deg, then a
+    # dead centre there. The change point's warning was dropped with the error
+    from assur import _sliced, study
+
+    monkeypatch.setattr(study, "CHUNK", 500)
+    monkeypatch.setattr(_sliced, "CHUNK", sliced)
+    angles = np.linspace(0.0, 360.0, 1000, endpoint=False)
+    p = {"offset": [0.126], "angle": [90.0]}
+    found = assur.sweep(catalog.slider_crank, p, angles).summary
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        with pytest.raises(assur.SingularConfigurationError) as raised:
+            assur.forces(catalog.slider_crank(offset=0.126, angle=90.0), angles)
+    said = [" ".join(str(w.message).split()) for w in caught]
+    assert said
+    assert "change point" in said[0]
+    assert found["warning"].iloc[0] == " | ".join(said)
+    assert found["error"].iloc[0] == (
+        f"SingularConfigurationError: {' '.join(str(raised.value).split())}"
+    )
