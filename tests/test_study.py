@@ -604,3 +604,57 @@ def test_a_long_sweep_that_fails_keeps_a_separate_call_s_warnings(monkeypatch, s
     assert found["error"].iloc[0] == (
         f"SingularConfigurationError: {' '.join(str(raised.value).split())}"
     )
+
+
+def test_a_variant_without_friction_says_so_beside_one_with_it():
+    # a study over the friction coefficient: the frictionless variant has no losses
+    # and no efficiency (NaN, as any value a variant lacks), and undefined() said
+    # the loads drive it
+    from assur.summary import undefined
+
+    def rubbing(f: float) -> assur.Mechanism:
+        m = catalog.slider_crank()
+        joints = tuple(
+            dataclasses.replace(j, friction=f, radius=0.01)
+            if j.kind == "revolute"
+            else dataclasses.replace(j, friction=f)
+            for j in m.joints
+        )
+        load = assur.model.Load("slider", at="C", force=(-1000.0, 0.0))
+        return dataclasses.replace(m, joints=joints, loads=(load,))
+
+    summary = assur.sweep(rubbing, {"f": [0.0, 0.05]}, ANGLES).summary
+    assert (summary["error"] == "").all()
+    none = "no friction in this variant: no losses, no efficiency"
+    lacking = [
+        "A.friction.loss",
+        "B.friction.loss",
+        "C.friction.loss",
+        "guide.friction.loss",
+        "friction.loss",
+        "driver.power_ideal.mean",
+        "efficiency",
+    ]
+    assert undefined(summary.loc[0]) == dict.fromkeys(lacking, none)
+    assert undefined(summary.loc[1]) == {}
+
+
+def test_a_value_a_variant_does_not_have_or_was_not_analysed_for_says_so():
+    from assur.summary import undefined
+
+    # a slider-crank, a four-bar (its joint D the slider-crank lacks, and no guide),
+    # and a slider-crank that cannot be built
+    parameters = {"kind": [0, 1, 0], "crank": [0.074, 0.08, 0.074]}
+    parameters["rod"] = [0.2, 0.14, 0.04]
+    summary = assur.sweep(mixed, parameters, ANGLES).summary
+    assert summary["error"].tolist()[:2] == ["", ""]
+    lacks = "not a value of this variant (its mechanism has no such part)"
+    assert undefined(summary.loc[0]) == dict.fromkeys(
+        ["D.F.max", "D.F.at", "D.F.rms"], lacks
+    )
+    assert undefined(summary.loc[1]) == dict.fromkeys(
+        ["guide.F.max", "guide.F.at", "guide.F.rms"], lacks
+    )
+    assert set(undefined(summary.loc[2]).values()) == {
+        "the variant was not analysed (see its error)"
+    }
