@@ -151,8 +151,11 @@ def sweep(
     Parameters
     ----------
     factory : callable
-        ``factory(**p)`` returns the Mechanism of one variant; with ``client`` it
-        must be picklable (a function of an importable module).
+        ``factory(**p)`` returns the Mechanism of one variant. With ``client`` it
+        is sent to the workers with cloudpickle: a function of a module is sent by
+        name (the workers must import that module), one defined in a script or a
+        notebook (a lambda too) by value; whatever it calls must be importable on
+        the workers.
     parameters : mapping of str to array_like
         Each parameter's values, 1-D arrays of equal length: one variant per index.
     angles : array_like
@@ -353,4 +356,5 @@ def _summed(mech: Mechanism, angles: Array) -> dict[str, Any]:
 
 def _line(err: BaseException) -> str:
     """Return an error as one line: its class and its message."""
-    return f"{type(err).__name__}: {' '.join(str(err).split())}"
+    said = " ".join(str(err).split())
+    return f"{type(err).__name__}: {said}" if said else type(err).__name__

@@ -452,6 +452,17 @@ def test_a_factory_error_of_any_kind_is_the_variants_alone():
     assert study.summary["B.F.max"].iloc[3] == pytest.approx(expected["B.F.max"])
 
 
+def empty(rod: float) -> assur.Mechanism:
+    """A factory that fails with an error of no message."""
+    raise ZeroDivisionError
+
+
+def test_an_error_without_a_message_is_its_class_alone():
+    # "ZeroDivisionError: ", with a colon before nothing
+    study = assur.sweep(empty, {"rod": [0.2]}, ANGLES)
+    assert study.summary["error"].tolist() == ["ZeroDivisionError"]
+
+
 def test_a_factory_that_takes_any_names_is_called_with_them():
     # no signature to check against: each variant's call says what is wrong
     def anything(**p):
