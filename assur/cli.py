@@ -262,38 +262,39 @@ class _OtherFileError(ModelError):
 def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace) -> int:
     """Run one command, turning assur's errors and warnings into one-line messages."""
     source = path_text(args.file)
+    failure = None
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", AssurWarning)
         try:
             status = handler(args)
         except (OutputError, _OtherFileError) as err:  # not about the mechanism file
-            _error(str(err))
-            status = 2
+            failure = str(err)
         except AssurError as err:
             text = str(err)
-            _error(text if text.startswith(source) else f"{source}: {text}")
-            status = 2
+            failure = text if text.startswith(source) else f"{source}: {text}"
         except BrokenPipeError:
             raise  # the reader of standard output has gone: main stops quietly
         except OSError as err:
             reason = err.strerror or str(err)
             if err.filename:
-                _error(f"{path_text(err.filename)}: {reason}")
+                failure = f"{path_text(err.filename)}: {reason}"
             else:
-                _error(f"standard output: cannot write ({reason})")
-            status = 2
+                failure = f"standard output: cannot write ({reason})"
         except MemoryError:
-            _error(
+            failure = (
                 f"{source}: out of memory; expected fewer positions (--angles) or a "
                 "smaller output"
             )
-            status = 2
-    # shown only once the recording has stopped, so showing cannot record again
+    # shown only once the recording has stopped, so showing cannot record again;
+    # the warnings met on the way come before the error that stopped the command
     for w in caught:
         if issubclass(w.category, AssurWarning):
             print(f"assur: warning: {source}: {_one_line(w.message)}", file=sys.stderr)
         else:
             warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+    if failure is not None:
+        _error(failure)
+        status = 2
     return status
 
 
