@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._progress import Progress
 from assur._study_inputs import Factory, _optional
 from assur._study_tables import ordered
 from assur._vec import Array, integer
@@ -21,17 +22,17 @@ from assur.errors import UsageError
 
 def _distributed(
     client: Any,
-    summarise: Callable[..., Any],
-    factory: Factory,
-    parameters: dict[str, Array],
-    angles: Array,
+    run: tuple[Callable[..., Any], Factory, dict[str, Array], Array],
     partitions: int | None,
+    bar: Progress,
 ) -> Any:
     """Run the variants in partitions on a dask.distributed cluster; one DataFrame.
 
-    Each partition is ``summarise(factory, parameters, angles, start)`` on a worker
-    (:func:`assur.study.summarise`).
+    ``run`` is ``(summarise, factory, parameters, angles)``: each partition is
+    ``summarise(factory, parameters, angles, start)`` on a worker
+    (:func:`assur.study.summarise`). ``bar`` is told of each partition gathered.
     """
+    summarise, factory, parameters, angles = run
     import pandas as pd
 
     _optional("distributed")
@@ -70,6 +71,7 @@ def _distributed(
         except KilledWorker:
             # the partition is lost, not the others: its rows say so
             frames.append(_killed(parameters, int(a), int(b)))
+        bar.advance(int(b - a))
     # partitions of other topologies bring their own columns: ordered as one run's
     return ordered(pd.concat(frames), list(parameters))
 

@@ -23,6 +23,8 @@ import numpy as np
 
 from assur._batch import CHUNK, near_change_points, summaries
 from assur._drive import positions
+from assur._progress import Callback, Progress
+from assur._progress import progress as counted
 from assur._study_inputs import (
     RESERVED as RESERVED,  # still assur.study.RESERVED, the names refused
 )
@@ -145,6 +147,7 @@ def sweep(
     client: Any = None,
     *,
     partitions: int | None = None,
+    progress: bool | Callback = False,
 ) -> Study:
     """Analyse many variants of a mechanism and summarise each over a sweep.
 
@@ -165,6 +168,10 @@ def sweep(
         Run the variants on this cluster's workers (each needs assur installed).
     partitions : int, optional
         Number of partitions with ``client`` (default: two per worker thread).
+    progress : bool or callable, optional
+        Show a progress bar of the variants done on standard error (True), or call
+        ``progress(done, total)`` as they are (counted by batch, or by partition
+        with ``client``).
 
     Returns
     -------
@@ -207,21 +214,29 @@ def sweep(
     _takes(factory, values)
     given = _angles(angles)
     _optional("pandas")
-    if client is None:
-        table = summarise(factory, values, given)
-    else:
-        from assur._study_cluster import _distributed
+    count = len(next(iter(values.values())))
+    with counted("variants", count, progress) as bar:
+        if client is None:
+            table = summarise(factory, values, given, bar=bar)
+        else:
+            from assur._study_cluster import _distributed
 
-        table = _distributed(client, summarise, factory, values, given, partitions)
+            run = (summarise, factory, values, given)
+            table = _distributed(client, run, partitions, bar)
     return Study(factory, values, given, table)
 
 
 def summarise(
-    factory: Factory, parameters: dict[str, Array], angles: Array, start: int = 0
+    factory: Factory,
+    parameters: dict[str, Array],
+    angles: Array,
+    start: int = 0,
+    bar: Progress | None = None,
 ) -> Any:
     """Return the summary DataFrame of variants numbered from ``start`` (one process).
 
-    What :func:`sweep` runs, or each partition of it on a worker.
+    What :func:`sweep` runs, or each partition of it on a worker; ``bar`` is told
+    of each batch of variants done.
     """
     import pandas as pd
 
@@ -237,6 +252,8 @@ def summarise(
             # a block's rows as columns: a dict per variant costs ten times as much
             index = pd.RangeIndex(block.start, block.stop)
             frames.append(pd.DataFrame(rows, index=index))
+            if bar is not None:
+                bar.advance(len(block))
     frame = ordered(pd.concat(frames), list(parameters))
     frame.index = pd.RangeIndex(start, start + count, name="variant")
     return frame

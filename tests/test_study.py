@@ -669,3 +669,23 @@ def test_a_value_a_variant_does_not_have_or_was_not_analysed_for_says_so():
     assert set(undefined(summary.loc[2]).values()) == {
         "the variant was not analysed (see its error)"
     }
+
+
+def test_progress_counts_the_variants_done():
+    told = []
+    parameters = {"rod": np.linspace(0.2, 0.3, 300)}
+    study = assur.sweep(
+        catalog.slider_crank,
+        parameters,
+        np.arange(0.0, 360.0, 30.0),
+        progress=lambda done, total: told.append((done, total)),
+    )
+    assert len(study.summary) == 300
+    done = [d for d, _ in told]
+    assert done, "the callback was never called"
+    assert done == sorted(done)
+    assert done[-1] == 300
+    assert {t for _, t in told} == {300}
+    # no bar, no call: the library is quiet unless asked
+    quiet = assur.sweep(catalog.slider_crank, parameters, np.arange(0.0, 360.0, 30.0))
+    assert quiet.summary.equals(study.summary)

@@ -103,3 +103,24 @@ def test_a_closed_client_is_refused(partitions):
         assur.sweep(
             catalog.slider_crank, {"rod": [0.2]}, [0.0], client, partitions=partitions
         )
+
+
+def test_progress_counts_the_partitions_gathered():
+    told = []
+    parameters = {"rod": np.linspace(0.2, 0.3, 10)}
+    with (
+        distributed.LocalCluster(
+            n_workers=1, processes=False, threads_per_worker=1, dashboard_address=":0"
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        assur.sweep(
+            catalog.slider_crank,
+            parameters,
+            np.arange(0.0, 360.0, 30.0),
+            client,
+            partitions=3,
+            progress=lambda done, total: told.append((done, total)),
+        )
+    # three partitions of 3, 3 and 4 variants (np.linspace bounds 0, 3, 6, 10)
+    assert told == [(3, 10), (6, 10), (10, 10)]
