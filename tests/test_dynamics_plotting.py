@@ -81,3 +81,33 @@ def test_diagrams_leave_out_a_crank_that_cannot_turn_round():
     assert _steady(assur.forces(example("whitworth"), [0.0])).delta == pytest.approx(
         0.05
     )
+
+
+def _texts(ax) -> list[str]:
+    return [t.get_text() for t in ax.texts]
+
+
+def test_a_mechanism_without_loads_says_so_at_a_readable_scale():
+    """With no loads the reduced torque and the work are zero: the panels showed a
+    flat line on an axis of +-2e-13 J (round-off)."""
+    from assur.plotting import dynamics as pictures
+
+    result = assur.dynamics(example("slider_crank_exercise"))
+    kinetic = 0.5 * np.max(result["reduced.inertia"]) * result.omega**2
+    ax = pictures.plot_energy_mass(result)
+    low, high = ax.get_ylim()
+    assert high - low >= 0.09 * kinetic
+    assert any("no loads" in t for t in _texts(ax))
+    ax = pictures.plot_reduced_torque(result)
+    low, high = ax.get_ylim()
+    assert high - low >= 0.09 * kinetic
+    assert any("no loads" in t for t in _texts(ax))
+
+
+def test_a_mechanism_with_loads_draws_its_curves():
+    from assur.plotting import dynamics as pictures
+
+    result = assur.dynamics(example("whitworth"), flywheel=10.0)
+    for draw in (pictures.plot_energy_mass, pictures.plot_reduced_torque):
+        ax = draw(result)
+        assert not any("no loads" in t for t in _texts(ax))

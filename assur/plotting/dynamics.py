@@ -92,10 +92,35 @@ def plot_reduced_torque(result: Dynamics, ax: Any = None) -> Any:
         label=f"motor {result.motor:.4g} {unit}",
     )
     ax.axhline(0.0, color="black", lw=0.6)
+    scale = _kinetic(result)  # N m per rad: the torques' own scale
+    if _nothing(result["reduced.torque"], scale):
+        ax.set_ylim(-0.05 * scale, 0.05 * scale)
+        _say_nothing(ax, "no loads: the reduced torque is zero at every angle")
     ax.set_ylabel(f"reduced torque [{unit}]")
     ax.set_title("Reduced torque of the loads and the motor", fontsize=10)
     labelled_legend(ax, fontsize=8)
     return ax
+
+
+NOTHING = 1e-9
+"""Values below this fraction of the mechanism's kinetic energy (J, or N m a radian)
+are round-off: a panel of them says there is nothing to show, at a readable scale."""
+
+
+def _kinetic(result: Dynamics) -> float:
+    """Return the kinetic energy at the largest reduced inertia and mean speed, J."""
+    return float(0.5 * np.max(result["reduced.inertia"]) * result.omega**2)
+
+
+def _nothing(values: Any, scale: float) -> bool:
+    """Whether ``values`` are all round-off against ``scale``."""
+    return bool(np.max(np.abs(values)) <= NOTHING * scale)
+
+
+def _say_nothing(ax: Any, text: str) -> None:
+    """Write ``text`` across the middle of a panel that shows nothing."""
+    ax.text(0.5, 0.62, text, transform=ax.transAxes, ha="center", fontsize=9,
+            color="#555555")  # fmt: skip
 
 
 def plot_speed(result: Dynamics, ax: Any = None) -> Any:
@@ -160,6 +185,11 @@ def plot_energy_mass(result: Dynamics, ax: Any = None) -> Any:
         )
     low, high = float(work.min()), float(work.max())
     pad = 0.2 * max(high - low, 1e-12 * max(abs(high), 1.0))
+    scale = _kinetic(result)
+    if _nothing(work, scale):
+        # no loads: the work is zero, not a curve of round-off (+-2e-13 J)
+        low, high, pad = 0.0, 0.0, 0.05 * scale
+        _say_nothing(ax, "no loads: no work is done, the curve is J alone")
     ax.set_ylim(low - pad, high + pad)
     ax.set_xlim(*span)
     ax.set_xlabel(f"reduced inertia of the mechanism J [{pretty_unit('kg m^2')}]")
