@@ -86,3 +86,15 @@ def test_the_lever_of_zero_shares_is_written_to_four_decimals() -> None:
     assert lines[-1].startswith("sum = balancing load: ")
     assert np.isclose(float(lines[-1].split(": ")[1].split()[0]), 0.0)
     assert len(lines[-1].split(": ")[1].split()[0].partition(".")[2]) == 4
+
+
+def test_the_lever_writes_a_link_s_speed_as_mathtext() -> None:
+    """'ω_L/ω' was written with a literal underscore beside the lever."""
+    import matplotlib.pyplot as plt
+
+    table = table_at(assur.load(EXERCISE), 45.0)
+    ax = lever.zhukovsky_lever(table)
+    (text,) = [t.get_text() for t in ax.texts if "balancing load" in t.get_text()]
+    plt.close(ax.figure)
+    assert "ω_L" not in text
+    assert r"$\omega_L$" in text

@@ -261,12 +261,13 @@ def _list_terms(
     places = 4 if big == 0 else min(8, max(0, 4 - math.floor(math.log10(big))))
     lines = [
         f"each load's moment about the pole / {rate}",
-        f"({given}; a couple: -M·ω_L/{rate}), {unit}:",
+        f"({given}; a couple: -M·$\\omega_L$/{rate}), {unit}:",
     ]
     for tex, share, t in shares:
         head = "friction" if t is None else _symbol(tex)
         if t is not None and t.couple:
-            head += f" ({t.load.couple:.6g} N·m, ω_L/{rate} = {t.omega / speed:.6g}"
+            ratio = t.omega / speed
+            head += f" ({t.load.couple:.6g} N·m, $\\omega_L$/{rate} = {ratio:.6g}"
             head += ")" if apart[t.body] else "; listed only)"
         # rounded first: a share that rounds to nothing is written +0, not -0
         lines.append(f"{head}:  {round(share, places + 1) + 0.0:+.{places + 1}f}")
