@@ -872,3 +872,21 @@ def test_the_loads_labels_do_not_overlap(
         assert _load_label_overlaps(ax) == []
     finally:
         plt.close(ax.figure)
+
+
+def test_the_driver_axis_names_the_driver_of_several():
+    """A two-crank five-bar's diagrams are drawn against the first crank's angle:
+    the axis said "driver angle" alone."""
+    import matplotlib.pyplot as plt
+
+    table = assur.forces(
+        assur.load(EXAMPLES / "five_bar_two_cranks.toml"),
+        np.stack([np.arange(0.0, 360.0, 10.0), np.full(36, 120.0)], axis=1),
+    )
+    ax = plotting.plot_torque(table)
+    assert ax.get_xlabel() == "driver A angle φ [deg]"
+    plt.close(ax.figure)
+    one = assur.forces(assur.catalog.slider_crank(), np.arange(0.0, 360.0, 10.0))
+    ax = plotting.plot_torque(one)
+    assert ax.get_xlabel() == "driver angle φ [deg]"
+    plt.close(ax.figure)

@@ -58,14 +58,17 @@ def _driver_axis(ax: Any, table: Table) -> np.ndarray:
 
     x = np.asarray(table["angle"])
     unit = _unit(table, "angle")
+    drivers = table.mechanism.drivers
+    # with several drivers the axis is the first one's: it is named
+    whose = f" {drivers[0].joint}" if len(drivers) > 1 else ""
     if _revolute(table):
-        ax.set_xlabel(f"driver angle φ [{unit}]")
+        ax.set_xlabel(f"driver{whose} angle φ [{unit}]")
         if np.ptp(x) >= 180.0:
             ax.xaxis.set_major_locator(
                 MultipleLocator(90.0 if np.ptp(x) > 400 else 45.0)
             )
     else:
-        ax.set_xlabel(f"driver position s [{unit}]")
+        ax.set_xlabel(f"driver{whose} position s [{unit}]")
     ax.grid(True, lw=0.5, alpha=0.5)
     return x
 
