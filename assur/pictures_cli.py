@@ -70,6 +70,7 @@ FRAMES_RANGE = (1, 1000)
 """Numbers of frames accepted in an animation."""
 DIAGRAMS = (
     "motion",
+    "slides",
     "paths",
     "decomposition",
     "torque",
@@ -242,6 +243,25 @@ def _cmd_diagrams(args: argparse.Namespace) -> int:
     return 0
 
 
+def _slides(plotting: Any, plt: Any, table: Any, joints: list[str]) -> Any:
+    """Return the figure of the prismatic pairs' slides, speeds and accelerations.
+
+    For a slider-crank the slider's stroke is the motion that matters, and the
+    links' angles leave it out.
+    """
+    fig, axes = plt.subplots(
+        3, 1, figsize=(8.0, 9.0), sharex=True, layout="constrained"
+    )
+    for ax, quantity in zip(axes, ("s", "v", "a"), strict=True):
+        plotting.plot_motion(table, joints, quantity=quantity, ax=ax)
+        ax.set_title("")
+    title = f"{titled(table.mechanism)}: slides of the prismatic pairs"
+    axes[0].set_title(title, fontsize=10)
+    for ax in axes[:-1]:
+        ax.set_xlabel("")
+    return fig
+
+
 def _diagrams(
     plotting: Any,
     plt: Any,
@@ -265,8 +285,11 @@ def _diagrams(
     axes[0].set_title(f"{titled(table.mechanism)}: motion of the links", fontsize=10)
     for ax in axes[:-1]:
         ax.set_xlabel("")
-    figures = {
-        "motion": lambda: fig,
+    figures = {"motion": lambda: fig}
+    sliding = [j.name for j in table.mechanism.joints if j.kind == "prismatic"]
+    if sliding:
+        figures["slides"] = lambda: _slides(plotting, plt, table, sliding)
+    figures |= {
         "paths": lambda: plotting.plot_paths(table).figure,
         "decomposition": lambda: plotting.draw_decomposition(table),
     }

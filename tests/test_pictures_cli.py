@@ -200,8 +200,9 @@ def test_diagrams_kinematics_only(
         str(out),
     )
     assert status == 0, err
-    assert {p.name for p in out.iterdir()} == KINEMATIC
-    assert stdout.count("wrote ") == 3
+    # the ten-bar's sliders get their slides drawn
+    assert {p.name for p in out.iterdir()} == KINEMATIC | {"slides.png"}
+    assert stdout.count("wrote ") == 4
     for path in out.iterdir():
         _png(path)
 
@@ -215,7 +216,9 @@ def test_diagrams_with_forces(
         capsys, "diagrams", SLOT, "--angles", "40:400:30", "--dpi", "40", "-o", str(out)
     )
     assert status == 0, err
-    assert {p.name for p in out.iterdir()} == KINEMATIC | KINETIC | {"dynamics.png"}
+    # its slot and guide are prismatic: their slides are drawn too
+    want = KINEMATIC | KINETIC | {"dynamics.png", "slides.png"}
+    assert {p.name for p in out.iterdir()} == want
     for path in out.iterdir():
         _png(path)
 
@@ -595,4 +598,23 @@ def test_diagrams_written_again_hold_one_mechanism_s_set(
     assert (out / "torque.png").exists()
     status, _, _ = _run(capsys, argv[0], str(EXAMPLES / "tenbar.toml"), *argv[1:])
     assert status == 0
-    assert {p.name for p in out.iterdir()} == KINEMATIC
+    assert {p.name for p in out.iterdir()} == KINEMATIC | {"slides.png"}
+
+
+def test_the_slides_diagram_draws_each_prismatic_pair_s_motion() -> None:
+    """A slider-crank's stroke is the motion that matters: motion.png (the links'
+    angles) left it out."""
+    import assur
+    from assur import plotting
+    from assur.pictures_cli import _slides
+
+    table = assur.kinematics(assur.catalog.slider_crank(), np.arange(0.0, 360.0, 15.0))
+    fig = _slides(plotting, plt, table, ["guide"])
+    try:
+        for ax, part in zip(fig.axes, ("s", "v", "a"), strict=True):
+            (line,) = ax.lines
+            assert line.get_label() == "guide"
+            np.testing.assert_allclose(line.get_ydata(), table[f"guide.{part}"])
+            assert ax.get_ylabel().startswith(f"{part} [")
+    finally:
+        plt.close(fig)
