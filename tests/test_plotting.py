@@ -223,6 +223,59 @@ def test_default_force_scale_is_round_and_fits(slider_crank: assur.Table) -> Non
     assert length <= plotting.ARROW_LENGTH * ctx.size * (1 + 1e-9)
 
 
+@pytest.mark.parametrize(
+    "stem", ["whitworth", "five_bar_two_cranks", "scotch_yoke", "class3"]
+)
+def test_overview_draws_the_applied_loads(stem: str) -> None:
+    # the loads drawn on the links, with the reactions of the frame, balance: the
+    # external forces and the weights are drawn too, in the legend's load colour
+    from assur.plotting._forces import _tex
+    from assur.plotting._style import LOAD_COLOR
+
+    mech = _load(stem)
+    table = assur.forces(mech, default_positions(mech)[::30])
+    plan = compile_plan(mech)
+    ctx = plotting._context(table)
+    pairs = {f"$R_{{{_tex(name)}}}$": p for name, p in plan.pairs.items()}
+    weights = sum(bool(x.mass) for x in mech.links) if mech.gravity else 0
+    forces = sum(load.force is not None for load in mech.loads)
+    couples = sum(load.torque is not None for load in mech.loads)
+    for row in range(len(table)):
+        arrows = plotting._overview_arrows(ctx, ctx.pose(row), row)
+        applied = [a for a in arrows if a.kind in ("gravity", "load")]
+        assert sum(a.force is not None for a in applied) == weights + forces
+        assert sum(a.couple is not None for a in applied) == couples
+        total, largest = np.zeros(2), 0.0
+        for a in arrows:
+            if a.force is None:
+                continue
+            sign = 1.0
+            if a.kind == "reaction":
+                pair = pairs[a.label]
+                if 0 not in (pair.first, pair.second):
+                    continue  # between two moving links: drawn on one of them only
+                sign = 1.0 if pair.first == 0 else -1.0
+            total += sign * np.asarray(a.force)
+            largest = max(largest, float(np.hypot(*a.force)))
+        assert np.hypot(*total) <= 1e-9 * largest
+    row = 1
+    ax = plotting.draw(table, angle=float(table["angle"][row]), forces=True)
+    assert "gravity, external load" in _legend_texts(ax)
+    arrows = plotting._overview_arrows(ctx, ctx.pose(row), row)
+    nonzero = sum(
+        bool(np.any(a.force)) if a.force is not None else bool(a.couple)
+        for a in arrows
+        if a.kind in ("gravity", "load")
+    )
+    drawn = [
+        p
+        for p in ax.patches
+        if isinstance(p, FancyArrowPatch)
+        and matplotlib.colors.same_color(p.get_edgecolor(), LOAD_COLOR)
+    ]
+    assert len(drawn) == nonzero > 0
+
+
 def test_nice_numbers() -> None:
     assert [plotting._nice(x) for x in (0.7, 1.0, 1.2, 3.0, 7.0, 1234.0)] == [
         1.0,

@@ -15,12 +15,13 @@ import numpy as np
 
 from assur._vec import full
 from assur.plotting._context import _unit
-from assur.plotting._geometry import _nice, _public
+from assur.plotting._geometry import _anchor, _nice, _public
 from assur.plotting._labels import LOAD_LABELS
 from assur.plotting._style import (
     ARROW_LENGTH,
     BALANCING_COLOR,
     INERTIA_COLOR,
+    LOAD_COLOR,
     REACTION_COLOR,
     math_name,
 )
@@ -167,6 +168,91 @@ def _inertia_arrows(ctx: _Context, row: int, links: Iterable[str]) -> list[_Arro
     return arrows
 
 
+def _applied_arrows(
+    ctx: _Context, pose: _Pose, row: int, links: list[str], bodies: set[int]
+) -> list[_Arrow]:
+    """Return the weights of ``links`` and the external loads on ``bodies`` at ``row``.
+
+    The loads applied to a free body (:func:`draw_free_body`) or to every link
+    (:func:`draw`), drawn alike.
+    """
+    return _gravity_arrows(ctx.table, links, row) + _load_arrows(ctx, pose, row, bodies)
+
+
+def _gravity_arrows(table: Table, links: list[str], row: int) -> list[_Arrow]:
+    """Return the weight of each massive link of ``links``, at its centre of mass."""
+    mech = table.mechanism
+    if mech.gravity is None or not any(mech.gravity):
+        return []
+    g = np.asarray(mech.gravity, dtype=float)
+    return [
+        _Arrow(
+            f"$G_{{{_tex(x)}}}$",
+            _centre(table, x, row),
+            mech.link(x).mass * g,
+            None,
+            LOAD_COLOR,
+            _link_units(table, x),
+            "gravity",
+        )
+        for x in links
+        if mech.link(x).mass
+    ]
+
+
+def _load_arrows(
+    ctx: _Context, pose: _Pose, row: int, bodies: set[int]
+) -> list[_Arrow]:
+    """Return the external forces and torques on ``bodies`` at ``row``."""
+    from assur.model import resolve_point
+
+    plan, mech = ctx.plan, ctx.table.mechanism
+    arrows = []
+    for i, load in enumerate(mech.loads):
+        b = plan.body(load.link)
+        if b not in bodies:
+            continue
+        name, units = _tex(load.link), _link_units(ctx.table, load.link)
+        if load.force is not None:
+            assert load.at is not None  # the model requires a force's point
+            at = pose.at(b, plan.offset(b, resolve_point(mech, load.at)))
+            force = _load_value(ctx, row, load.force, f"loads[{i}].force")
+            arrows.append(
+                _Arrow(f"$F_{{{name}}}$", at, force, None, LOAD_COLOR, units, "load")
+            )
+        if load.torque is not None:
+            at = _anchor(ctx, pose, b)
+            torque = _load_value(ctx, row, load.torque, f"loads[{i}].torque")
+            arrows.append(
+                _Arrow(
+                    f"$T_{{{name}}}$",
+                    at,
+                    None,
+                    float(torque[0]),
+                    LOAD_COLOR,
+                    units,
+                    "load",
+                )
+            )
+    return arrows
+
+
+def _load_value(ctx: _Context, row: int, value: Any, entry: str) -> np.ndarray:
+    """Return a load's value at ``row``: constant, or from its load table (N, N m)."""
+    from assur._loads import table_values
+    from assur.model import LoadTable
+
+    if not isinstance(value, LoadTable):
+        return np.atleast_1d(np.asarray(value, dtype=float))
+    state = ctx.table.state
+    drive = state.drive[row : row + 1]
+    slides = {
+        k: full(s[0], len(ctx.table))[row : row + 1] for k, s in state.slide.items()
+    }
+    values = table_values(value, ctx.plan, drive, slides, entry)
+    return np.array([c[0] for c in values])
+
+
 def _link_units(table: Table, link: str) -> tuple[str, str]:
     """Units of a force and a torque on ``link``: of its inertia loads' columns."""
     return _units(table, f"{link}.Fi.x", f"{link}.Mi")
@@ -180,9 +266,14 @@ def _reaction_units(table: Table, name: str) -> tuple[str, str]:
 
 
 def _overview_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
-    """Inertia loads, reactions and balancing loads at ``row`` for :func:`draw`."""
+    """Inertia loads, applied loads, reactions and balancing loads at ``row``.
+
+    The loads of :func:`draw`: with the reactions, those on each link balance.
+    """
     links = [link.name for link in ctx.table.mechanism.links]
+    bodies = set(range(len(ctx.plan.bodies)))
     arrows = _inertia_arrows(ctx, row, links)
+    arrows += _applied_arrows(ctx, pose, row, links, bodies)
     for name, pair in ctx.plan.pairs.items():
         if not pair.virtual:
             q, f, m = _reaction(ctx, pose, row, name)

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._structure import Group, Structure
-from assur._vec import full, integer
+from assur._vec import integer
 from assur.errors import ModelError, UsageError
 from assur.model import GROUND
 from assur.plotting._axes import _frame_axes, _legend, _new_axes
@@ -27,19 +27,18 @@ from assur.plotting._context import (
     checked_scale,
 )
 from assur.plotting._forces import (
+    _applied_arrows,
     _Arrow,
-    _centre,
     _draw_arrows,
     _draw_friction_circles,
     _inertia_arrows,
-    _link_units,
     _reaction,
     _reaction_units,
     _scale,
     _scale_text,
     _tex,
 )
-from assur.plotting._geometry import _anchor, _extent, _public
+from assur.plotting._geometry import _extent, _public
 from assur.plotting._labels import spread_labels
 from assur.plotting._style import (
     INERTIA_COLOR,
@@ -253,84 +252,9 @@ def _free_body_arrows(table: Table, group_index: int, row: int) -> list[_Arrow]:
     pose = ctx.pose(row)
     return (
         _inertia_arrows(ctx, row, links)
-        + _gravity_arrows(table, links, row)
-        + _load_arrows(ctx, pose, row, bodies)
+        + _applied_arrows(ctx, pose, row, links, bodies)
         + _pair_arrows(ctx, pose, row, bodies)
     )
-
-
-def _gravity_arrows(table: Table, links: list[str], row: int) -> list[_Arrow]:
-    """Return the weight of each massive link of ``links``, at its centre of mass."""
-    mech = table.mechanism
-    if mech.gravity is None or not any(mech.gravity):
-        return []
-    g = np.asarray(mech.gravity, dtype=float)
-    return [
-        _Arrow(
-            f"$G_{{{_tex(x)}}}$",
-            _centre(table, x, row),
-            mech.link(x).mass * g,
-            None,
-            LOAD_COLOR,
-            _link_units(table, x),
-            "gravity",
-        )
-        for x in links
-        if mech.link(x).mass
-    ]
-
-
-def _load_arrows(
-    ctx: _Context, pose: _Pose, row: int, bodies: set[int]
-) -> list[_Arrow]:
-    """Return the external forces and torques on ``bodies`` at ``row``."""
-    from assur.model import resolve_point
-
-    plan, mech = ctx.plan, ctx.table.mechanism
-    arrows = []
-    for i, load in enumerate(mech.loads):
-        b = plan.body(load.link)
-        if b not in bodies:
-            continue
-        name, units = _tex(load.link), _link_units(ctx.table, load.link)
-        if load.force is not None:
-            assert load.at is not None  # the model requires a force's point
-            at = pose.at(b, plan.offset(b, resolve_point(mech, load.at)))
-            force = _load_value(ctx, row, load.force, f"loads[{i}].force")
-            arrows.append(
-                _Arrow(f"$F_{{{name}}}$", at, force, None, LOAD_COLOR, units, "load")
-            )
-        if load.torque is not None:
-            at = _anchor(ctx, pose, b)
-            torque = _load_value(ctx, row, load.torque, f"loads[{i}].torque")
-            arrows.append(
-                _Arrow(
-                    f"$T_{{{name}}}$",
-                    at,
-                    None,
-                    float(torque[0]),
-                    LOAD_COLOR,
-                    units,
-                    "load",
-                )
-            )
-    return arrows
-
-
-def _load_value(ctx: _Context, row: int, value: Any, entry: str) -> np.ndarray:
-    """Return a load's value at ``row``: constant, or from its load table (N, N m)."""
-    from assur._loads import table_values
-    from assur.model import LoadTable
-
-    if not isinstance(value, LoadTable):
-        return np.atleast_1d(np.asarray(value, dtype=float))
-    state = ctx.table.state
-    drive = state.drive[row : row + 1]
-    slides = {
-        k: full(s[0], len(ctx.table))[row : row + 1] for k, s in state.slide.items()
-    }
-    values = table_values(value, ctx.plan, drive, slides, entry)
-    return np.array([c[0] for c in values])
 
 
 def _pair_arrows(

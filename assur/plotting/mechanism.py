@@ -37,6 +37,7 @@ from assur.plotting._style import (
     FAINT,
     GROUND_COLOR,
     INERTIA_COLOR,
+    LOAD_COLOR,
     REACTION_COLOR,
     literal,
     titled,
@@ -143,9 +144,11 @@ def _draw_row(
         arrows = _overview_arrows(ctx, pose, row)
         scale = checked_scale(scale) or _scale(arrows, ctx.size)
         seen += _draw_arrows(ax, ctx, arrows, scale, "names" if labels else None)
+        applied = any(a.kind in ("gravity", "load") for a in arrows)
         entries += [
             ("reaction, by first link on second", REACTION_COLOR),
             ("inertia force and torque", INERTIA_COLOR),
+            *[("gravity, external load", LOAD_COLOR)] * applied,
             ("balancing load", BALANCING_COLOR),
             (_scale_text(arrows, scale), ""),
         ]
