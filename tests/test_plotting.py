@@ -376,6 +376,18 @@ def test_free_body_labels_values(six_bar: assur.Table) -> None:
     )
 
 
+def test_free_body_title_numbers_the_group_as_the_command_line() -> None:
+    # group 1 of the Whitworth mechanism is an RPR dyad of class II: the title names
+    # it "group 1", the class in words, not "group II"
+    table = assur.forces(_load("whitworth"), [200.0])
+    first, second = (plotting.draw_free_body(table, k) for k in (0, 1))
+    assert first.get_title().startswith(
+        "Free body of group 1 (class II, order 2, RPR (block, lever))\n"
+    )
+    assert second.get_title().startswith("Free body of group 2 (class II, order 2, ")
+    assert "group II" not in first.get_title()
+
+
 def test_free_body_couple_of_a_guide_in_newton_metres() -> None:
     # the yoke's guide is short: its reaction is drawn as a couple (and a force,
     # here none), each value with its own unit

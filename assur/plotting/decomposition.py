@@ -173,7 +173,8 @@ def draw_free_body(
         A forces table.
     group_index : int
         Index of the group in the order of attachment (0: the first Assur group;
-        drivers are not counted).
+        drivers are not counted). The title numbers the groups from 1, as
+        ``assur plot --group N`` does.
     angle : float, optional
         Driver position, deg (nearest row; default the first).
     ax : matplotlib Axes, optional
@@ -206,8 +207,10 @@ def draw_free_body(
     rubbing = _draw_friction_circles(ax, ctx, pose, bodies)
     _frame_axes(ax, ctx, seen, 0.5 * ctx.size, margin=0.12)
     text, color, _ = ctx.legend[len(ctx.plan.drivers) + group_index]
+    # numbered from 1 as `assur plot --group N` is; the class comes after, in words
+    heading = f"Free body of group {group_index + 1} (class {text})"
     ax.set_title(
-        literal(f"Free body of group {text}\n{_position_title(table, row)}"),
+        literal(f"{heading}\n{_position_title(table, row)}"),
         fontsize=10,
     )
     _legend(
