@@ -276,6 +276,38 @@ def test_overview_draws_the_applied_loads(stem: str) -> None:
     assert len(drawn) == nonzero > 0
 
 
+def _arrow_lengths(ax) -> list[tuple[float, float]]:
+    """Return each arrow's length on the page and its head's length, points."""
+    ax.figure.canvas.draw()
+    points = ax.figure.dpi / 72.0
+    lengths = []
+    for p in ax.patches:
+        if not isinstance(p, FancyArrowPatch):
+            continue
+        # matplotlib keeps the arrow's ends (or its path) as given, data coordinates
+        ends = p._posA_posB if p._posA_posB is not None else p._path_original.vertices
+        page = p.get_transform().transform(np.asarray(ends, dtype=float))
+        length = float(np.sum(np.hypot(*np.diff(page, axis=0).T))) / points
+        lengths.append((length, 0.4 * p.get_mutation_scale()))  # "-|>" head length
+    return lengths
+
+
+def test_a_short_arrow_has_a_head_shorter_than_itself(six_bar) -> None:
+    # R_B of the exercise at 60 deg is a few points long: its head shrinks with it
+    table = assur.forces(_load("slider_crank_exercise"), [60.0])
+    overview = _arrow_lengths(plotting.draw(table, forces=True))
+    assert min(length for length, _ in overview) < 10.0  # short ones are there
+    for lengths in (
+        overview,
+        _arrow_lengths(plotting.draw_free_body(table, 0)),
+        _arrow_lengths(plotting.draw_free_body(six_bar, 0, angle=60.0)),
+    ):
+        assert len(lengths) >= 5
+        for length, head in lengths:
+            assert head <= 0.4 * length * (1 + 1e-9)
+            assert head <= 0.4 * 13  # the long ones keep their heads
+
+
 def test_nice_numbers() -> None:
     assert [plotting._nice(x) for x in (0.7, 1.0, 1.2, 3.0, 7.0, 1234.0)] == [
         1.0,

@@ -16,6 +16,7 @@ import numpy as np
 from assur._vec import full
 from assur.plotting._context import _unit
 from assur.plotting._geometry import _anchor, _nice, _public
+from assur.plotting._heads import fitted_arrow
 from assur.plotting._labels import LOAD_LABELS
 from assur.plotting._style import (
     ARROW_LENGTH,
@@ -346,23 +347,10 @@ def _draw_force(
     text: str | None,
 ) -> np.ndarray:
     """Draw the force of ``a`` (``force``) as a straight arrow; return its tip."""
-    from matplotlib.patches import FancyArrowPatch
-
     mag = float(np.hypot(*force))
     tip = a.point + force / (scale * 100.0)
-    ax.add_patch(
-        FancyArrowPatch(
-            tuple(a.point),
-            tuple(tip),
-            arrowstyle="-|>",
-            mutation_scale=13,
-            color=a.color,
-            lw=1.7,
-            shrinkA=0,
-            shrinkB=0,
-            zorder=6,
-        )
-    )
+    # a short arrow's head shrinks with it: its direction stays readable
+    ax.add_patch(fitted_arrow([a.point, tip], 13, color=a.color, lw=1.7, zorder=6))
     if text:
         u = force / mag
         words = f"{a.label} = {mag:.3g} {a.units[0]}" if text == "values" else a.label
@@ -384,24 +372,12 @@ def _draw_couple(
     ax: Any, ctx: _Context, a: _Arrow, couple: float, text: str | None
 ) -> list[np.ndarray]:
     """Draw the couple of ``a`` (``couple``) as a curved arrow; return its box."""
-    from matplotlib.patches import FancyArrowPatch
-    from matplotlib.path import Path
-
     rad = (3.4 if a.kind == "balancing" else 2.3) * ctx.r
     t = np.linspace(math.radians(-100), math.radians(150), 40)
     if couple < 0:
         t = t[::-1]
     arc = a.point + rad * np.column_stack([np.cos(t), np.sin(t)])
-    ax.add_patch(
-        FancyArrowPatch(
-            path=Path(arc),
-            arrowstyle="-|>",
-            mutation_scale=11,
-            color=a.color,
-            lw=1.5,
-            zorder=6,
-        )
-    )
+    ax.add_patch(fitted_arrow(arc, 11, color=a.color, lw=1.5, zorder=6))
     if text:
         # the balancing torque always shows its value
         value = text == "values" or a.kind == "balancing"
