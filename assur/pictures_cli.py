@@ -243,22 +243,41 @@ def _cmd_diagrams(args: argparse.Namespace) -> int:
     return 0
 
 
+def _panels(
+    plotting: Any, plt: Any, table: Any, names: Any, quantities: tuple[str, ...]
+) -> Any:
+    """Return a figure of ``quantities`` of ``names``, a panel each, over the sweep.
+
+    ``names`` None: every moving link. The panels share the driver's axis.
+    """
+    fig, axes = plt.subplots(
+        len(quantities), 1, figsize=(8.0, 9.0), sharex=True, layout="constrained"
+    )
+    for ax, quantity in zip(axes, quantities, strict=True):
+        plotting.plot_motion(table, names, quantity=quantity, ax=ax)
+        ax.set_title("")
+    for ax in axes[:-1]:
+        ax.set_xlabel("")
+    return fig
+
+
+def _motion(plotting: Any, plt: Any, table: Any) -> Any:
+    """Return the figure of the links' angles, angular speeds and accelerations."""
+    fig = _panels(plotting, plt, table, None, ("angle", "omega", "alpha"))
+    title = f"{titled(table.mechanism)}: motion of the links"
+    fig.axes[0].set_title(title, fontsize=10)
+    return fig
+
+
 def _slides(plotting: Any, plt: Any, table: Any, joints: list[str]) -> Any:
     """Return the figure of the prismatic pairs' slides, speeds and accelerations.
 
     For a slider-crank the slider's stroke is the motion that matters, and the
     links' angles leave it out.
     """
-    fig, axes = plt.subplots(
-        3, 1, figsize=(8.0, 9.0), sharex=True, layout="constrained"
-    )
-    for ax, quantity in zip(axes, ("s", "v", "a"), strict=True):
-        plotting.plot_motion(table, joints, quantity=quantity, ax=ax)
-        ax.set_title("")
+    fig = _panels(plotting, plt, table, joints, ("s", "v", "a"))
     title = f"{titled(table.mechanism)}: slides of the prismatic pairs"
-    axes[0].set_title(title, fontsize=10)
-    for ax in axes[:-1]:
-        ax.set_xlabel("")
+    fig.axes[0].set_title(title, fontsize=10)
     return fig
 
 
@@ -276,16 +295,7 @@ def _diagrams(
     """
     from assur._progress import progress
 
-    fig, axes = plt.subplots(
-        3, 1, figsize=(8.0, 9.0), sharex=True, layout="constrained"
-    )
-    for ax, quantity in zip(axes, ("angle", "omega", "alpha"), strict=True):
-        plotting.plot_motion(table, quantity=quantity, ax=ax)
-        ax.set_title("")
-    axes[0].set_title(f"{titled(table.mechanism)}: motion of the links", fontsize=10)
-    for ax in axes[:-1]:
-        ax.set_xlabel("")
-    figures = {"motion": lambda: fig}
+    figures = {"motion": lambda: _motion(plotting, plt, table)}
     sliding = [j.name for j in table.mechanism.joints if j.kind == "prismatic"]
     if sliding:
         figures["slides"] = lambda: _slides(plotting, plt, table, sliding)
