@@ -987,3 +987,19 @@ def test_the_driver_axis_names_the_driver_of_several():
     ax = plotting.plot_torque(one)
     assert ax.get_xlabel() == "driver angle φ [deg]"
     plt.close(ax.figure)
+
+
+def test_an_arrow_of_no_length_is_drawn_without_a_warning():
+    """A zero force drawn to scale is an arrow of no length: its head's size, a
+    third of it, was 0 and matplotlib divided 0 by 0 (a RuntimeWarning)."""
+    import matplotlib.pyplot as plt
+
+    from assur.plotting._heads import fitted_arrow
+
+    fig, ax = plt.subplots()
+    try:
+        ax.add_patch(fitted_arrow([[0.0, 0.0], [0.0, 0.0]], 13.0))
+        ax.add_patch(fitted_arrow([[0.0, 0.0], [1.0, 0.5]], 13.0))
+        fig.canvas.draw()  # warnings are errors in the tests
+    finally:
+        plt.close(fig)

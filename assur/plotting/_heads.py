@@ -63,7 +63,10 @@ def _arrow_class() -> type:
             return pixels / renderer.points_to_pixels(1.0)
 
         def draw(self, renderer: Any) -> None:
-            self.set_mutation_scale(head_scale(self.length(renderer), self.head))
+            length = self.length(renderer)
+            if not length > 0.0:
+                return  # an arrow of no length has no direction to show
+            self.set_mutation_scale(head_scale(length, self.head))
             super().draw(renderer)
 
     return FittedArrow
