@@ -491,3 +491,27 @@ def test_the_documented_couple_numbers_are_the_note_s() -> None:
     assert round(terms[r"M_{i,\mathrm{rod}}"], 2) == pytest.approx(-4.90)
     shown = [f"{v:.2f}" for k, v in terms.items() if k.startswith(r"\vec F")]
     assert shown == ["0.00", "32.73", "56.79"]
+
+
+@pytest.mark.parametrize(
+    ("draw", "angle"), [("velocity_plan", 91.0), ("acceleration_plan", 95.0)]
+)
+def test_a_short_arrow_of_a_plan_has_a_head_shorter_than_itself(
+    draw: str, angle: float
+) -> None:
+    # the plans drew every head 11 pt long: a short vector's hid its direction (the
+    # Whitworth block hardly slides near 90 deg)
+    from .test_plotting import _arrow_lengths
+
+    table = table_at(assur.load(EXAMPLES / "whitworth.toml"), angle)
+    ax = getattr(plans, draw)(table)
+    import matplotlib.pyplot as plt
+
+    lengths = _arrow_lengths(ax)
+    plt.close(ax.figure)
+    assert lengths
+    # shorter than the fixed head was long (0.4 x 11 pt) in 0.4
+    assert min(length for length, _ in lengths) < 11.0
+    for length, head in lengths:
+        assert head <= 0.4 * length * (1 + 1e-9)
+        assert head <= 0.4 * 11

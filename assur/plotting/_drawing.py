@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from assur.plotting._heads import fitted_arrow
 from assur.plotting._style import literal
 
 SAME_PLACE = 0.5
@@ -20,18 +21,13 @@ SAME_PLACE = 0.5
 def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> bool:
     """Draw an arrow from ``start`` to ``end`` (mm); return whether it was drawn.
 
-    One shorter than 1e-9 mm (a term that is nothing) is not.
+    One shorter than 1e-9 mm (a term that is nothing) is not; a short one gets a
+    head shorter than itself (:mod:`assur.plotting._heads`).
     """
-    from matplotlib.patches import FancyArrowPatch
-
     if float(np.hypot(*(end - start))) < 1e-9:
         return False
-    ax.add_patch(
-        FancyArrowPatch(
-            tuple(start), tuple(end), arrowstyle="-|>", mutation_scale=11,
-            color=color, lw=kw.pop("lw", 1.4), shrinkA=0, shrinkB=0, **kw,
-        )
-    )  # fmt: skip
+    lw = kw.pop("lw", 1.4)
+    ax.add_patch(fitted_arrow([start, end], 11.0, color=color, lw=lw, **kw))
     return True
 
 
