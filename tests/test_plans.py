@@ -510,7 +510,7 @@ def test_a_short_arrow_of_a_plan_has_a_head_shorter_than_itself(
     lengths = _arrow_lengths(ax)
     plt.close(ax.figure)
     assert lengths
-    # shorter than the fixed head was long (0.4 x 11 pt) in 0.4
+    # some are under 11 pt: the fixed head (4.4 pt) was over 0.4 of their length
     assert min(length for length, _ in lengths) < 11.0
     for length, head in lengths:
         assert head <= 0.4 * length * (1 + 1e-9)
