@@ -258,6 +258,13 @@ def _panels(
         ax.set_title("")
     for ax in axes[:-1]:
         ax.set_xlabel("")
+    # the panels draw the same lines: one legend beside them, where it covers none
+    handles, labels = axes[0].get_legend_handles_labels()
+    for ax in axes:
+        if ax.get_legend() is not None:
+            ax.get_legend().remove()
+    if handles:
+        fig.legend(handles, labels, loc="outside right upper", fontsize=8)
     return fig
 
 

@@ -618,3 +618,24 @@ def test_the_slides_diagram_draws_each_prismatic_pair_s_motion() -> None:
             assert ax.get_ylabel().startswith(f"{part} [")
     finally:
         plt.close(fig)
+
+
+def test_the_stacked_panels_share_one_legend_beside_them() -> None:
+    """Each of motion.png's panels had its legend, over the ten-bar's curves."""
+    import assur
+    from assur import plotting
+    from assur.pictures_cli import _motion
+
+    table = assur.kinematics(assur.load(TENBAR), np.arange(0.0, 360.0, 10.0))
+    fig = _motion(plotting, plt, table)
+    try:
+        assert all(ax.get_legend() is None for ax in fig.axes)
+        (legend,) = fig.legends
+        labels = [t.get_text() for t in legend.get_texts()]
+        assert labels == [line.get_label() for line in fig.axes[0].lines]
+        fig.canvas.draw()
+        box = legend.get_window_extent()
+        for ax in fig.axes:
+            assert box.x0 >= ax.get_window_extent().x1  # beside, covering nothing
+    finally:
+        plt.close(fig)
