@@ -16,8 +16,8 @@ import numpy as np
 
 from assur._follow import BranchOf, advance, drivers, layout, nested, tangents
 from assur._state import KinematicState, extend, motions, state_of
-from assur._vec import Array, Index, Mask
-from assur._walk import PAST, OnPaths, ordered, walk
+from assur._vec import Array, Mask
+from assur._walk import OnPaths, stops, walk
 from assur.groups._motion import Motion
 from assur.groups.driver import motion
 from assur.plan import Plan
@@ -304,16 +304,9 @@ def _straight(
         last = max(g for g, solver in enumerate(plan.solvers) if solver.newton)
         met = branch_of.met(drive, last)
         # each path's stops: the change points on the way, then the position
-        s: list[Array] = [np.ones(n)]
-        owner: list[Index] = [np.arange(n)]
-        for where, t in met.values():
-            on = (t > PAST) & (t < 1.0)
-            s.append(t[on])
-            owner.append(where[on])
-        at, paths = np.concatenate(s), np.concatenate(owner)
-        order, first, count = ordered(paths, at, n)
-        stops = (at[order], first, count)
-        pose = walk(plan, (reference, path), stops, met, 1.0 / counts)[0]
+        everywhere = np.arange(n)
+        ends = stops(n, met, np.ones(n), everywhere, everywhere)[:3]
+        pose = walk(plan, (reference, path), ends, met, 1.0 / counts)[0]
         return nested(plan, pose)
     pose, _, rate, sign = tangents(plan, base, None, path, branch_of)
     pose = advance(plan, base, drive, (pose, rate, sign), branch_of, 1.0 / counts)[0]

@@ -23,7 +23,7 @@ import numpy as np
 from assur._branches import CANDIDATE, TOUCH, closed, lowest
 from assur._follow import drivers, layout, tangents
 from assur._vec import Array, Index
-from assur._walk import PAST, Met, flipped, ordered, walk
+from assur._walk import PAST, Met, flipped, stops, walk
 from assur.plan import Plan
 
 __all__ = ["PathBranches", "PathChanges", "path_changes"]
@@ -268,7 +268,7 @@ def _walked(plan: Plan, g: int, scan: _Scan) -> list[Any]:
     at = np.repeat(reference[None, :], n, axis=0)
     pose, _, rate, sign = tangents(plan, at, None, paths.delta, {})
     begun = (pose, rate, sign)
-    out[:, paths.first + 1] = begun[0][rows]
+    out[:, paths.first + 1] = pose[rows]
     # back: along -delta to the sample behind, through the change points between;
     # one at the reference pose itself is crossed going back, as _flips has it
     back = {
@@ -276,26 +276,26 @@ def _walked(plan: Plan, g: int, scan: _Scan) -> list[Any]:
         for h, (where, t) in met.items()
     }
     everywhere = np.arange(n)
-    stops = _stops(n, back, 1.0 / paths.m, everywhere, paths.first)
+    ends = stops(n, back, 1.0 / paths.m, everywhere, paths.first)
     walk(
         plan,
         (reference, -paths.delta),
-        stops[:3],
+        ends[:3],
         back,
         np.full(n, np.inf),
         _reversed(begun),
-        _recorder(out, rows, stops[3]),
+        _recorder(out, rows, ends[3]),
     )
     ahead = np.flatnonzero(paths.j >= 1)
-    stops = _stops(n, met, paths.s[ahead], paths.owner[ahead], ahead)
+    ends = stops(n, met, paths.s[ahead], paths.owner[ahead], ahead)
     walk(
         plan,
         (reference, paths.delta),
-        stops[:3],
+        ends[:3],
         met,
         np.full(n, np.inf),
         begun,
-        _recorder(out, rows, stops[3]),
+        _recorder(out, rows, ends[3]),
     )
     values = iter(out)
     return [tuple(next(values) for _ in range(3)) for _ in plan.solvers[g].bodies]
@@ -318,31 +318,6 @@ def _recorder(out: Array, rows: slice, samples: Index) -> Any:
 def _reversed(begun: tuple[Array, Array, Array]) -> tuple[Array, Array, Array]:
     """Return poses, rates and signs for a walk the other way: the rates negated."""
     return begun[0], -begun[1], begun[2]
-
-
-def _stops(
-    n: int, met: Met, s: Array, owner: Index, sample: Index
-) -> tuple[Array, Index, Index, Index]:
-    """Return the stops of a walk along ``n`` paths, by path and parameter.
-
-    The stops are the samples at parameters ``s`` on paths ``owner`` (``sample``
-    their indices) and the change points of ``met`` between the reference pose and
-    each path's last sample. Returns their parameters, each path's first stop and
-    count, and the samples (-1 for a change point).
-    """
-    last = np.zeros(n)
-    np.maximum.at(last, owner, s)
-    params, paths, samples = [s], [owner], [sample]
-    for where, t in met.values():
-        keep = (t > PAST) & (t < last[where])
-        params.append(t[keep])
-        paths.append(where[keep])
-        samples.append(np.full(int(keep.sum()), -1))
-    s_ = np.concatenate(params)
-    owner_ = np.concatenate(paths)
-    sample_ = np.concatenate(samples)
-    order, first, count = ordered(owner_, s_, n)
-    return s_[order], first, count, sample_[order]
 
 
 def _touches(

@@ -18,7 +18,7 @@ from assur._follow import advance, tangents
 from assur._vec import Array, Index
 from assur.plan import Plan
 
-__all__ = ["PAST", "Met", "OnPaths", "crossed", "flipped", "ordered", "walk"]
+__all__ = ["PAST", "Met", "OnPaths", "crossed", "flipped", "stops", "walk"]
 
 Met = dict[int, tuple[Index, Array]]
 """The change points of closed-form groups on straight paths, by solver index: the
@@ -65,14 +65,31 @@ def crossed(plan: Plan, met: Met, n: int, go: Index, x: Array) -> dict[int, Arra
     return out
 
 
-def ordered(owner: Index, s: Array, n: int) -> tuple[Index, Index, Index]:
-    """Return the order of stops by path and parameter, each path's first and count.
+def stops(
+    n: int, met: Met, s: Array, owner: Index, sample: Index
+) -> tuple[Array, Index, Index, Index]:
+    """Return the stops of a walk along ``n`` paths, by path and parameter.
 
-    ``owner`` and ``s`` are the stops' paths (of ``n``) and parameters, in any order.
+    The stops are the points at parameters ``s`` on paths ``owner`` (``sample``
+    their indices, kept with them) and the change points of ``met`` between the
+    reference pose and each path's last point. Returns their parameters, each
+    path's first stop and count (what :func:`walk` takes), and the samples (-1 for
+    a change point).
     """
-    order = np.lexsort((s, owner))
-    count = np.bincount(owner, minlength=n)
-    return order, np.cumsum(count) - count, count
+    last = np.zeros(n)
+    np.maximum.at(last, owner, s)
+    params, paths, samples = [s], [owner], [sample]
+    for where, t in met.values():
+        keep = (t > PAST) & (t < last[where])
+        params.append(t[keep])
+        paths.append(where[keep])
+        samples.append(np.full(int(keep.sum()), -1))
+    at = np.concatenate(params)
+    on = np.concatenate(paths)
+    order = np.lexsort((at, on))
+    count = np.bincount(on, minlength=n)
+    first = np.cumsum(count) - count
+    return at[order], first, count, np.concatenate(samples)[order]
 
 
 def walk(
@@ -88,7 +105,7 @@ def walk(
 
     ``path`` is the reference pose's driver positions (d,) and each path's ``delta``
     (n, d); ``stops`` their parameters path by path, increasing and above 0, with
-    each path's first stop and count (:func:`ordered`). The dyads' branches flip at
+    each path's first stop and count (:func:`stops`). The dyads' branches flip at
     the change points ``met``, which the stops must include (no step spans one);
     ``top`` (n,) is the largest step, in units of the parameter. ``begun`` holds the
     packed poses, rates per unit of the parameter and Jacobians' signs at the
