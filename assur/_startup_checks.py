@@ -15,7 +15,7 @@ from assur.errors import ModelError, UsageError
 from assur.model import Mechanism, Motor
 
 if TYPE_CHECKING:
-    from assur.dynamics_startup import _Curves
+    from assur._startup_curves import Curves
 
 
 def _speed(omega0: Any) -> float:
@@ -58,7 +58,7 @@ def _motor(mechanism: Mechanism, motor: Motor | None) -> Motor:
     return mechanism.motor
 
 
-def _starts(model: Reduced, motor: Motor, omega0: float, curves: _Curves) -> None:
+def _starts(model: Reduced, motor: Motor, omega0: float, curves: Curves) -> None:
     """Refuse a start from rest where the motor's torque does not beat the load's."""
     if omega0 != 0:
         return

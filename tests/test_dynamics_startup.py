@@ -27,7 +27,10 @@ def test_constant_torque_keeps_the_steady_state():
         motor=Motor(t.motor),
         omega0=float(t["driver.omega"][0]),
     )
-    assert run.turns <= 6  # periodic from the first turn on, to rounding
+    # periodic from the first turn on, to rounding: a constant torque neither damps
+    # nor grows a change of speed (the multiplier is 1), so the changes must be
+    # seen to wander either way, as rounding does
+    assert run.turns <= 10
     assert run.settle_time == 0.0
     energy = assur.dynamics(mech, run.angle, flywheel=t.flywheel)
     np.testing.assert_allclose(run.omega, energy["driver.omega"], rtol=1e-6)

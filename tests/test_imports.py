@@ -121,6 +121,7 @@ RANKS = {
     # the start-up's parts: what it is given, checked; how its run of turns ends;
     # when it settles
     "assur._startup_checks": 10,
+    "assur._startup_curves": 10,
     "assur._startup_turns": 10,
     "assur._startup_settle": 10,
     "assur.dynamics_shown": 10,

@@ -10,7 +10,9 @@ after 50, 4380 after 200, 10555 taken).
 from __future__ import annotations
 
 import functools
+import math
 
+import numpy as np
 import pytest
 
 import assur
@@ -65,3 +67,112 @@ def test_a_crank_gathering_speed_on_a_heavy_flywheel_is_told_no_number():
         message = told(5.0, turns)
         assert NOT_YET in message
         assert "settles in about" not in message
+
+
+def approach(limit: float, ratio: float, first: float, turns: int) -> list[float]:
+    """Speeds at the reference pose, turn by turn, nearing ``limit`` geometrically."""
+    return [limit - first * ratio**k for k in range(turns)]
+
+
+@pytest.mark.parametrize("ratio", [0.3, 0.72, 0.9, 0.99, 0.9987])
+@pytest.mark.parametrize("dip", [1.0, 0.6, 0.3])
+def test_periodic_is_said_within_its_tolerance_of_the_limit(ratio, dip):
+    """The turn-to-turn changes shrink by ``ratio``; one turn's change (the last
+    before each test) comes out ``dip`` times its due, as the integration's error
+    makes it. The motion is said periodic only near PERIODIC_RTOL of its limit: by
+    the ratio of the last two changes it was said 2.6 times that far off (ratio
+    0.72, dip 0.6) to 100 times (ratio 0.9987, dip 0.3)."""
+    from assur._startup_turns import PERIODIC_RTOL, _periodic
+
+    limit = 100.0
+    speeds = approach(limit, ratio, 50.0, 40000)
+    for k in range(3, len(speeds)):
+        seen = speeds[:k]
+        seen[-1] = seen[-2] + dip * (seen[-1] - seen[-2])
+        if _periodic(seen, lambda: ratio):
+            break
+    else:
+        pytest.fail("never said periodic")
+    # a dip of 0.3 shifts the last speed by 0.7 of its change, and one of the
+    # eight estimates of the limit: 11 % of the distance left undercounted
+    assert abs(seen[-1] - limit) <= 1.2 * PERIODIC_RTOL * limit
+    # and not far sooner than it had to: a turn before, it was not yet periodic
+    assert abs(speeds[k - 2] - limit) > 0.5 * PERIODIC_RTOL * limit
+
+
+def test_changes_of_either_sign_are_noise():
+    """The speeds of a periodic motion wander by the integration's error: changes
+    of either sign below the tolerance are periodic; above it they are not."""
+    from assur._startup_turns import PERIODIC_RTOL, _periodic
+
+    wander = [1.0, -0.5, 0.8, -0.9, 0.3, -0.2, 0.6, -0.4, 0.5]
+    for size, expected in ((0.9, True), (1.2, False)):
+        speeds = [50.0]
+        for w in wander:
+            speeds.append(speeds[-1] + w * size * PERIODIC_RTOL * 50.0)
+        assert _periodic(speeds, lambda: pytest.fail("not asked")) is expected
+
+
+def test_the_multiplier_is_the_turn_maps_slope():
+    """How much nearer its periodic motion a turn brings the speed, against the
+    oracle's own reduction integrated over a turn (RK4) from two nearby speeds:
+    the slope of its turn-to-turn map. The speeds' changes turn to turn shrink by
+    about 0.713 there too."""
+    from assur import dynamics_startup as ds
+    from assur._startup_curves import Curves
+    from assur._startup_turns import _multiplier
+    from assur.dynamics_reduced import reduce
+
+    from . import oracle
+
+    mech = assur.catalog.slider_crank()
+    motor, flywheel = Motor(30.0, 180.0), 0.01
+    model = reduce(mech)
+    curves = Curves(model, flywheel)
+    runs = ds._integrate(model, motor, curves, 0.0, 200)
+    found = _multiplier(runs.last, runs.span, curves, motor)
+
+    crank = oracle.crank_model(mech, flywheel)
+    phi0, w0 = model.start, runs.crossings[-2]
+
+    def turned(w: float) -> float:
+        _, phi, speed = oracle.integrate_turn(
+            crank, phi0, w, motor.torque, 6000, motor.no_load_speed
+        )
+        # the speed where the angle passes phi0 + 2 pi, between the last two steps
+        end = phi0 + 2.0 * math.pi
+        return float(np.interp(end, phi[-2:], speed[-2:]))
+
+    h = 1e-5 * w0
+    slope = (turned(w0 + h) - turned(w0 - h)) / (2.0 * h)
+    assert found == pytest.approx(slope, rel=1e-4)  # found: 3.9e-5
+    assert found == pytest.approx(0.7135, abs=1e-4)
+
+
+def test_a_turn_is_the_same_after_thousands_of_turns():
+    """The motion is autonomous: a turn started at the same speed is the same turn,
+    however many came before. The angle was integrated from the reference pose
+    under a relative tolerance, which loosened with every turn: after 5000 turns
+    the speed at the end of a turn came out 5.8e-9 of itself off (now 1.8e-11, the
+    rounding of the angle where the curves are read), and the speeds at the
+    reference pose wandered by 5e-10 a turn, by 1.4e-7 in jumps."""
+    from assur import dynamics_startup as ds
+    from assur._startup_curves import Curves
+    from assur.dynamics_reduced import reduce
+
+    model = reduce(assur.catalog.slider_crank())
+    motor = Motor(30.0, 180.0)
+    turn = ds._stepper(model, motor, Curves(model, 0.01))
+    w = 175.0
+    first = turn(0.0, [model.start, w], 1)
+    later = turn(0.0, [model.start + 2.0 * math.pi * 5000, w], 5001)
+    assert later.t_events[0][0] == pytest.approx(first.t_events[0][0], rel=1e-10)
+    end = later.y_events[0][0]
+    assert end[1] == pytest.approx(first.y_events[0][0][1], rel=1e-10)
+    assert end[0] == pytest.approx(model.start + 2.0 * math.pi * 5001, abs=1e-9)
+    # the dense solution and the samples are in angles from the reference pose
+    middle = 0.5 * (later.t[0] + later.t[-1])
+    assert later.sol(middle)[0] == pytest.approx(
+        first.sol(middle)[0] + 2.0 * math.pi * 5000, rel=1e-10
+    )
+    assert later.y[0][0] == model.start + 2.0 * math.pi * 5000
