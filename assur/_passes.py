@@ -21,15 +21,13 @@ from assur._evaluate import SHORT
 from assur._loads import compile_loads
 from assur._paths import PathBranches
 from assur._progress import progress
+from assur._state import CHUNK
 from assur._troubles import _unexplained
 from assur._vec import Array, Mask, gather
 from assur.errors import AssurWarning
 from assur.plan import Plan
 
 __all__ = ["CHUNK", "Again"]
-
-CHUNK = 8192
-"""Driver positions solved at once; long sweeps run in slices of this size."""
 
 
 def _passes(

@@ -21,6 +21,7 @@ import numpy as np
 
 from assur._drive import positions, to_si
 from assur._output import path_text
+from assur._state import CHUNK as SWEEP_SLICE
 from assur._troubles import SKIPPED_WHY, _change_points
 from assur._vec import Array, full
 from assur.columns import balancing_columns
@@ -36,9 +37,9 @@ __all__ = ["CHUNK", "Skipped", "Slice", "slices"]
 
 FAILURES = (AssemblyError, SingularConfigurationError, SelfLockingError)
 """The errors of a sweep that fails at some of its positions."""
-CHUNK = 65536
+CHUNK = 8 * SWEEP_SLICE
 """Driver positions analysed and written at once (a multiple of the library's slice,
-so that every number is computed as in one call over the whole sweep)."""
+so that every number is computed as in one call over the whole sweep): 65536."""
 SKIPPED_SHOWN = 20
 """Positions left out that the note lists."""
 RUNS_SHOWN = 6

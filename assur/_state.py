@@ -23,7 +23,8 @@ __all__ = ["KinematicState", "extend", "motions", "own_slides", "state_of"]
 LEVELS = 4
 """Position, velocity, acceleration and jerk."""
 CHUNK = 8192
-"""Positions whose jerks are solved at once (the sweep's own slices)."""
+"""Driver positions solved at once: a long sweep runs in slices of this size, and
+its jerks, solved later, in the same slices (so every number is as in the sweep)."""
 
 
 @dataclass(frozen=True, slots=True)
