@@ -20,6 +20,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._change_limits import across_change_points
 from assur._loads import compile_loads
 from assur._text import describe, fitting
 from assur._vec import Array
@@ -289,7 +290,12 @@ def _sample(
     angles = math.degrees(start) + 360.0 * k / count
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", AssurWarning)
-        values = reduced_at(mech, angles)[1:]
+        # at a change point the sweep is singular: J, J' and M are its limits
+        values = tuple(
+            across_change_points(
+                plan_of(mech), angles, lambda a: reduced_at(mech, a)[1:]
+            )
+        )
     for w in caught:
         if not issubclass(w.category, AssurWarning):
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)

@@ -1,0 +1,69 @@
+"""The dynamic model through change points, where the sweep itself is singular.
+
+A parallelogram four-bar passes its change points (0 and 180 deg) on the branch
+whose velocities are continuous; its coupler translates, so its reduced inertia and
+reduced torque are known by hand. With the crank's reference pose at 45 deg the
+model's grid met 180 deg exactly, and the model was refused: "the crank cannot make
+a full turn: dead centre at driver position 180 deg".
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur._change_limits import across_change_points
+from assur.dynamics_reduced import reduce, reduced_at
+from assur.plan import plan_of
+
+EDGE = Path(__file__).parent / "data" / "edge"
+INERTIA = 0.5 * 0.1**2 + 0.001 + 1.0 * 0.1**2
+"""The crank's mass at A, its own inertia, the translating coupler (kg m^2)."""
+G = 9.81
+"""The file's gravity (m/s^2), the format's default."""
+
+
+def parallelogram() -> assur.Mechanism:
+    return assur.load(EDGE / "parallelogram_masses.toml")
+
+
+def test_the_reduced_model_of_a_parallelogram_at_its_change_points():
+    mech = parallelogram()
+    with warnings.catch_warnings():
+        # the model's grid names the change points it passed
+        warnings.simplefilter("ignore", assur.AssurWarning)
+        model = reduce(mech)
+    degrees = np.degrees(model.angle) % 360.0
+    assert np.any(np.isclose(degrees, 180.0, atol=1e-9))
+    np.testing.assert_allclose(model.inertia, INERTIA, rtol=1e-8)
+    # gravity on the crank's and the coupler's masses, both moving as A does:
+    # V = g (0.5 + 1.0) 0.1 sin(phi), M = -dV/dphi
+    torque = -G * 1.5 * 0.1 * np.cos(model.angle)
+    np.testing.assert_allclose(model.torque, torque, atol=1e-8 * 1.5)
+
+
+def test_values_at_a_change_point_are_the_limits_of_its_sides():
+    """Interpolated at 180 deg and at 1e-7 rad from it; the sweep itself is
+    refused there, and a millionth of a degree away its rounding is 1e-4."""
+    mech = parallelogram()
+    plan = plan_of(mech)
+    angles = np.array([90.0, 180.0, 180.0 + math.degrees(1e-7), 270.0])
+
+    def evaluate(a):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", assur.AssurWarning)
+            return reduced_at(mech, a)[1:]
+
+    inertia, slope, torque = across_change_points(plan, angles, evaluate)
+    np.testing.assert_allclose(inertia, INERTIA, rtol=1e-8)
+    # found: 4.7e-8 of the inertia, the rounding of the accelerations 0.11 deg away
+    np.testing.assert_allclose(slope, 0.0, atol=1e-7 * INERTIA)
+    expected = -G * 0.15 * np.cos(np.radians(angles))
+    np.testing.assert_allclose(torque, expected, atol=1e-8)
+    with pytest.raises(assur.SingularConfigurationError):
+        evaluate(np.array([180.0]))
