@@ -10,8 +10,8 @@ point on the driver's straight path from the reference pose.
 
 Scanned: one driver, every dyad; a group solved by Newton's method has no branch to
 choose (its continuation follows it), and the dyads attached after it are scanned on
-the poses its continuation reaches along the grid. Several drivers: see
-:mod:`assur._paths`.
+the poses its continuation reaches along the grid, walked on the branches of the
+change points found before it. Several drivers: see :mod:`assur._paths`.
 """
 
 from __future__ import annotations
@@ -96,7 +96,8 @@ def _assemble(
     """Assemble solver ``g`` at driver positions ``at`` (n,) on its branch so far.
 
     A Newton group takes the poses of its continuation from the reference pose,
-    on the branches the change points found so far give the dyads before it.
+    on the branches the change points found so far give the dyads before it; the
+    anchors of that continuation are kept for those change points alone.
     """
     solver = plan.solvers[g]
     ref = plan.drivers[0].reference
@@ -110,7 +111,13 @@ def _assemble(
                 for k, points in found.items()
             }
 
-        guesses = continuation(plan, drive, branch_of if found else None)
+        # a later Newton group, past more change points, walks anchors of its own:
+        # those walked for an earlier one put the dyads between them on their
+        # reference branches (the last dyad of two triads with a parallelogram
+        # between them lost its change points)
+        anchors = plan.memo.setdefault("scan-anchors", {})
+        kept = anchors.setdefault(tuple(found), {}) if found else None
+        guesses = continuation(plan, drive, branch_of if found else None, kept)
         k = sum(1 for s in plan.solvers[:g] if s.newton)
         solver.assemble(bodies, at.shape[0], guesses[k])
         return
@@ -148,7 +155,7 @@ def _scan(plan: Plan) -> ChangePoints | None:
                     flips[g] = points
             _assemble(plan, bodies, grid, flips, g)
     # anchors walked on the branches of a part of the change points are not kept
-    plan.memo.pop("anchors-past-change-points", None)
+    plan.memo.pop("scan-anchors", None)
     if not flips:
         return None
     found = tuple(flips.get(g, np.zeros(0)) for g in range(len(plan.solvers)))

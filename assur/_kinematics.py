@@ -101,25 +101,35 @@ def solve(
     return bodies, troubles
 
 
-def continuation(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
+def continuation(
+    plan: Plan,
+    drive: Array,
+    branch_of: BranchOf | None,
+    kept: dict[float, Array] | None = None,
+) -> list[Any]:
     """Follow the Newton groups from the reference pose to ``drive``.
 
     Each position is reached along the straight path of the driver from the reference
     pose; a crank position that path cannot reach (the group does not assemble
-    somewhere on the way) is tried again the other way round the circle.
+    somewhere on the way) is tried again the other way round the circle. ``kept``
+    holds the anchors walked on the branches ``branch_of`` gives (see
+    :func:`_anchor_poses`); None: the plan's own.
     """
-    return _continued(plan, drive, branch_of)[0]
+    return _continued(plan, drive, branch_of, kept)[0]
 
 
 def _continued(
-    plan: Plan, drive: Array, branch_of: BranchOf | None
+    plan: Plan,
+    drive: Array,
+    branch_of: BranchOf | None,
+    kept: dict[float, Array] | None = None,
 ) -> tuple[list[Any], list[Mask]]:
     """Return :func:`continuation`'s poses and where each group went the other way.
 
     The masks (n,), one per Newton group, mark the positions reached the other way
     round the circle.
     """
-    guesses = _walk(plan, drive, branch_of)
+    guesses = _walk(plan, drive, branch_of, kept)
     n = drive.shape[0]
     around = [np.zeros(n, dtype=bool) for _ in guesses]
     if len(plan.drivers) != 1 or plan.drivers[0].kind != "R" or not guesses:
@@ -130,9 +140,8 @@ def _continued(
     if not failed.any():
         return guesses, around
     gap = drive[failed] - plan.drivers[0].reference
-    retry = _walk(
-        plan, drive[failed] - 2.0 * math.pi * np.where(gap >= 0, 1.0, -1.0), branch_of
-    )
+    turn = 2.0 * math.pi * np.where(gap >= 0, 1.0, -1.0)
+    retry = _walk(plan, drive[failed] - turn, branch_of, kept)
     for group, again, turned in zip(guesses, retry, around, strict=True):
         turned[failed] = ~np.isfinite(group[0][0][failed]) & np.isfinite(again[0][0])
         for i, (pose, other) in enumerate(zip(group, again, strict=True)):
@@ -147,7 +156,12 @@ def _continued(
     return guesses, around
 
 
-def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
+def _walk(
+    plan: Plan,
+    drive: Array,
+    branch_of: BranchOf | None,
+    kept: dict[float, Array] | None = None,
+) -> list[Any]:
     """Return the Newton groups' poses along straight paths to ``drive``.
 
     Every position takes steps of at most :data:`CONTINUATION_STEP` (a crank) or a
@@ -169,17 +183,23 @@ def _walk(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
         marks, which = np.unique(
             np.trunc((drive[:, 0] - reference[0]) / step[0]), return_inverse=True
         )
-        walked = _anchor_poses(plan, marks, branch_of)
+        walked = _anchor_poses(plan, marks, branch_of, kept)
         start = reference[0] + marks[which.ravel()] * step[0]
         return _anchored(plan, drive, branch_of, walked, which.ravel(), start)
     return _straight(plan, drive, branch_of, reference, counts)
 
 
-def _separate(plan: Plan, drive: Array, branch_of: BranchOf | None) -> list[Any]:
+def _separate(
+    plan: Plan,
+    drive: Array,
+    branch_of: BranchOf | None,
+    kept: dict[float, Array] | None = None,
+) -> list[Any]:
     """Walk every position on its own straight path from the reference pose.
 
     What :func:`_walk` does with several drivers; with one, the paths it shares
-    reach the same poses (the tests and benchmarks/bench_continuation.py compare).
+    reach the same poses (the tests and benchmarks/bench_continuation.py compare,
+    putting it in :func:`_walk`'s place: ``kept`` is that one's, no anchors here).
     """
     reference, _, counts = _distances(plan, drive)
     return _straight(plan, drive, branch_of, reference, counts)
@@ -209,7 +229,12 @@ def _stride(plan: Plan, driver: Any) -> float:
     return CONTINUATION_STEP if driver.kind == "R" else 0.05 * plan.scale
 
 
-def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> Array:
+def _anchor_poses(
+    plan: Plan,
+    marks: Array,
+    branch_of: BranchOf | None,
+    kept: dict[float, Array] | None = None,
+) -> Array:
     """Return the Newton groups at ``marks`` whole steps from the reference (packed).
 
     The reference pose is solved first; the anchors on either side are then walked
@@ -217,12 +242,15 @@ def _anchor_poses(plan: Plan, marks: Array, branch_of: BranchOf | None) -> Array
     kept with the plan (a few numbers): the slices of a long sweep, and every later
     sweep of the mechanism, start from them. Each anchor keeps its poses, their rates
     of change per unit of the driver and their Jacobians' signs (rows, marks); a side
-    whose step fails is NaN from there on, and its walk stops.
+    whose step fails is NaN from there on, and its walk stops. ``kept`` holds the
+    anchors walked on the branches ``branch_of`` gives, by mark; None: the plan's own
+    for the reference pose's branches or for every change point.
     """
     driver = plan.drivers[0]
     step = _stride(plan, driver)
-    key = "anchors" if branch_of is None else "anchors-past-change-points"
-    kept: dict[float, Array] = plan.memo.setdefault(key, {})
+    if kept is None:
+        key = "anchors" if branch_of is None else "anchors-past-change-points"
+        kept = plan.memo.setdefault(key, {})
     size = 3 * sum(layout(plan))
     if 0.0 not in kept:
         at = np.array([[driver.reference]])
