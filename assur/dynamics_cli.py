@@ -152,7 +152,10 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         inertia = sizing.exact
     start = args.startup or args.startup_csv is not None
     turns = MAX_TURNS if args.turns is None else args.turns
-    run = assur.startup(mech, inertia, turns=turns) if start else None
+    run = None
+    if start:
+        shown = terminal() and not quiet(args)
+        run = assur.startup(mech, inertia, turns=turns, progress=shown)
     try:
         state = solved(mech, inertia)
     except ModelError as err:

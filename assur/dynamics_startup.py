@@ -13,11 +13,14 @@ turns ends (``assur._startup_turns``) and when it settles (``assur._startup_sett
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from assur._progress import Callback
+from assur._progress import progress as show_progress
 from assur._startup_checks import _motor, _speed, _starts, _turns
 from assur._startup_curves import Curves
 from assur._startup_settle import extreme, periodic_speed, settle_time
@@ -114,6 +117,7 @@ def startup(
     motor: Motor | None = None,
     omega0: float = 0.0,
     turns: int = MAX_TURNS,
+    progress: bool | Callback = False,
 ) -> Startup:
     """Integrate the crank's motion in time from the reference pose until periodic.
 
@@ -129,6 +133,10 @@ def startup(
         Crank speed at the start, rad/s: 0 (from rest) or of the motor's sense.
     turns : int
         Most turns to integrate.
+    progress : bool or callable
+        True: a bar of the turns integrated on standard error (the command line
+        shows one on a terminal); a callable ``(done, total)`` is told after each
+        turn instead. The total is ``turns``: the motion may settle sooner.
 
     Returns
     -------
@@ -149,10 +157,11 @@ def startup(
     the reduced torque ``M`` are the periodic interpolants of
     :func:`assur.dynamics_reduced.reduce`. The integration (DOP853, or Radau
     under a motor whose speed relaxes a thousand times a turn; relative
-    tolerance ``RTOL``) stops at every turn; the motion is periodic when the
-    speed there, extrapolated geometrically from the last turns, changes by less
-    than ``PERIODIC_RTOL``. The time to settle is where the continuous solution
-    enters the band for good (:mod:`assur._startup_settle`).
+    tolerance ``RTOL``, each turn's angle from its start) stops at every turn; the
+    motion is periodic when the speed there is within ``PERIODIC_RTOL`` of its
+    limit, told by the turn map's multiplier (:mod:`assur._startup_turns`). The
+    time to settle is where the continuous solution enters the band for good
+    (:mod:`assur._startup_settle`).
 
     Examples
     --------
@@ -178,7 +187,8 @@ def startup(
     check_inertia(model, model.inertia + inertia, inertia)
     curves = Curves(model, inertia)
     _starts(model, engine, omega0, curves)
-    runs = _integrate(model, engine, curves, omega0, turns)
+    with show_progress("startup turns", turns, show=progress) as bar:
+        runs = _integrate(model, engine, curves, omega0, turns, bar.advance)
     return _result(mechanism, engine, inertia, model, runs)
 
 
@@ -201,9 +211,17 @@ class _Runs:
 
 
 def _integrate(
-    model: Reduced, motor: Motor, curves: Curves, omega0: float, turns: int
+    model: Reduced,
+    motor: Motor,
+    curves: Curves,
+    omega0: float,
+    turns: int,
+    advance: Callable[[int], None] | None = None,
 ) -> _Runs:
-    """Integrate turn by turn until the speed at the reference pose repeats."""
+    """Integrate turn by turn until the speed at the reference pose repeats.
+
+    ``advance(1)`` is called after each turn (a progress bar's).
+    """
     sense = math.copysign(1.0, motor.torque)
     runs = _Runs(turn=_stepper(model, motor, curves))
     state, t = [model.start, omega0], 0.0
@@ -214,6 +232,8 @@ def _integrate(
         target = model.start + sense * 2.0 * math.pi * k
         t, state = float(sol.t_events[0][0]), [target, float(sol.y_events[0][0][1])]
         _keep(runs, sol, t)
+        if advance is not None:
+            advance(1)
         if _periodic(
             runs.crossings,
             lambda: _multiplier(runs.last, runs.span, curves, motor),
