@@ -6,8 +6,10 @@ crank, ``J(phi) phi'' + 0.5 J'(phi) phi'^2 = M_motor(phi') + M(phi)``, with
 reference pose repeats from turn to turn; then it reports the time to settle and the
 periodic motion's figures. A crank whose motor cannot carry it past its peak load
 stalls, and the error says where.
-Its parts: what it is given, checked (``assur._startup_checks``), how its run of
-turns ends (``assur._startup_turns``) and when it settles (``assur._startup_settle``).
+Its parts: what it is given, checked (``assur._startup_checks``), the model's curves
+(``assur._startup_curves``), one turn integrated (``assur._startup_steps``), how its
+run of turns ends (``assur._startup_turns``) and when it settles
+(``assur._startup_settle``).
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from assur._progress import progress as show_progress
 from assur._startup_checks import _motor, _speed, _starts, _turns
 from assur._startup_curves import Curves
 from assur._startup_settle import extreme, periodic_speed, settle_time
+from assur._startup_steps import stepper
 from assur._startup_turns import (
     _check_turned,
     _multiplier,
@@ -39,9 +42,6 @@ from assur.model import Mechanism, Motor
 
 __all__ = ["Startup", "startup"]
 
-RTOL = 1e-10
-"""Relative tolerance of the time integration (scipy's DOP853, or Radau under a stiff
-motor)."""
 SETTLE_BAND = 0.02
 """The time to settle is the time after which the speed stays within this fraction
 of the mean speed of the periodic motion at the same crank angle."""
@@ -157,10 +157,11 @@ def startup(
     the reduced torque ``M`` are the periodic interpolants of
     :func:`assur.dynamics_reduced.reduce`. The integration (DOP853, or Radau
     under a motor whose speed relaxes a thousand times a turn; relative
-    tolerance ``RTOL``, each turn's angle from its start) stops at every turn; the
-    motion is periodic when the speed there is within ``PERIODIC_RTOL`` of its
-    limit, told by the turn map's multiplier (:mod:`assur._startup_turns`). The
-    time to settle is where the continuous solution enters the band for good
+    tolerance 1e-10, each turn's angle counted from its start:
+    :mod:`assur._startup_steps`) stops at every turn; the motion is periodic when
+    the speed there is within ``PERIODIC_RTOL`` of its limit, told by the turn
+    map's multiplier (:mod:`assur._startup_turns`). The time to settle is where the
+    continuous solution enters the band for good
     (:mod:`assur._startup_settle`).
 
     Examples
@@ -223,7 +224,7 @@ def _integrate(
     ``advance(1)`` is called after each turn (a progress bar's).
     """
     sense = math.copysign(1.0, motor.torque)
-    runs = _Runs(turn=_stepper(model, motor, curves))
+    runs = _Runs(turn=stepper(model, motor, curves))
     state, t = [model.start, omega0], 0.0
     for k in range(1, turns + 1):
         sol = runs.turn(t, state, k)
@@ -242,121 +243,6 @@ def _integrate(
     else:
         _not_settled(runs, motor, model, turns, omega0)
     return runs
-
-
-def _stepper(model: Reduced, motor: Motor, curves: Curves) -> Any:
-    """Return ``turn(t, state, k)``, the integration of the crank's ``k``-th turn.
-
-    From the time ``t`` (s) and ``state`` (rad, rad/s) to the end of that turn, or
-    the crank's stall, or the time limit.
-    """
-    from scipy.integrate import solve_ivp
-
-    sense = math.copysign(1.0, motor.torque)
-    torque, free = motor.torque, motor.no_load_speed
-
-    def rhs(_t: float, y: Any) -> list[float]:
-        phi, w = y
-        inertia, slope, load = curves(phi)
-        drive = torque if free is None else torque * (1.0 - w / free)
-        return [w, (drive + load - 0.5 * slope * w * w) / inertia]
-
-    def stall(_t: float, y: Array) -> float:
-        return float(sense * y[1])
-
-    stall.terminal, stall.direction = True, -1.0  # type: ignore[attr-defined]
-    scale = _speed_scale(model, motor, curves)
-    limit = _time_limit(scale, model, motor, curves)
-    method = "Radau" if _stiff(model, motor, curves) else "DOP853"
-
-    def turn(t: float, state: list[float], k: int) -> Any:
-        # the angle is integrated from the turn's start: the relative tolerance on
-        # an angle counted from the reference pose loosened turn by turn (1e-6 rad
-        # after 1400 turns), and the speed at the pose jumped by 1e-7 of itself
-        base = model.start + sense * 2.0 * math.pi * (k - 1)
-        end = sense * 2.0 * math.pi
-
-        def local(_t: float, y: Array) -> list[float]:
-            return rhs(_t, (y[0] + base, y[1]))
-
-        def turned(_t: float, y: Array) -> float:
-            return float(sense * (y[0] - end))
-
-        turned.terminal, turned.direction = True, 1.0  # type: ignore[attr-defined]
-        sol = solve_ivp(
-            local,
-            (t, t + limit),
-            [state[0] - base, state[1]],
-            method=method,
-            rtol=RTOL,
-            atol=[RTOL, RTOL * scale],
-            events=(turned, stall),
-            dense_output=True,
-        )
-        return _absolute(sol, base)
-
-    return turn
-
-
-def _absolute(sol: Any, base: float) -> Any:
-    """Return ``sol``, a turn's integration, with its angles (rad) plus ``base``."""
-    sol.y[0] += base
-    for found in sol.y_events:
-        if len(found):
-            found[:, 0] += base
-    dense = sol.sol
-
-    def absolute(t: Any) -> Array:
-        values = dense(t)
-        values[0] += base
-        return values  # type: ignore[no-any-return]
-
-    sol.sol = absolute
-    return sol
-
-
-def _stiff(model: Reduced, motor: Motor, curves: Curves) -> bool:
-    """Whether an electric motor holds the speed far faster than a turn takes.
-
-    Its torque falls by ``T / w0`` per rad/s: the speed relaxes at the rate
-    ``T / (w0 J)``. An explicit method steps at that pace all along; beyond a
-    thousand relaxations a turn an implicit one (Radau) takes far fewer steps.
-    """
-    if motor.no_load_speed is None:
-        return False
-    inertia = float(np.min(model.inertia)) + curves.flywheel
-    rate = abs(motor.torque / motor.no_load_speed) / inertia
-    return rate * 2.0 * math.pi / abs(motor.no_load_speed) > 1e3
-
-
-def _speed_scale(model: Reduced, motor: Motor, curves: Curves) -> float:
-    """Return a speed (rad/s) to scale tolerances and time limits.
-
-    The motor's (its no-load speed, or what a turn of its stall torque gives from
-    rest), or what a turn of the peak load torque gives, the larger: the loads may
-    drive the crank far faster than a weak motor would (under 1e-300 N m and a
-    30 N m load the speed's tolerance was 1e-160 rad/s, and scipy's error norms
-    overflowed).
-    """
-    inertia = float(np.mean(model.inertia)) + curves.flywheel
-    peak = float(np.max(np.abs(model.torque)))
-    # the speed a turn of a torque alone would give from rest
-    loads = math.sqrt(4.0 * math.pi * peak / inertia)
-    if motor.no_load_speed is not None:
-        return max(abs(motor.no_load_speed), loads)
-    return max(math.sqrt(4.0 * math.pi * abs(motor.torque) / inertia), loads)
-
-
-def _time_limit(scale: float, model: Reduced, motor: Motor, curves: Curves) -> float:
-    """Return the time (s) a turn may take before the crank counts as stopped.
-
-    Ten thousand turns at the speed scale, and at least a hundred times the time
-    the stall torque alone takes to turn the crank once from rest: a heavy
-    flywheel turns slowly, not never.
-    """
-    inertia = float(np.mean(model.inertia)) + curves.flywheel
-    first = math.sqrt(4.0 * math.pi * inertia / abs(motor.torque))
-    return max(1e4 * 2.0 * math.pi / scale, 100.0 * first)
 
 
 def _keep(runs: _Runs, sol: Any, end: float) -> None:

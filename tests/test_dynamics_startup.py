@@ -236,10 +236,10 @@ def test_a_heavy_flywheel_turns_slowly_and_does_not_stall():
 
 
 def test_a_crank_that_creeps_is_not_said_to_stall(monkeypatch):
-    from assur import dynamics_startup
+    from assur import _startup_steps
 
     # a time limit far too short for the first turn: the crank still moves there
-    monkeypatch.setattr(dynamics_startup, "_time_limit", lambda *args: 0.01)
+    monkeypatch.setattr(_startup_steps, "_time_limit", lambda *args: 0.01)
     with pytest.raises(assur.ModelError, match=r"startup: the crank creeps: 0\.01 s"):
         assur.startup(crank(motor=Motor(2.0, 10.0)))
 
@@ -247,13 +247,13 @@ def test_a_crank_that_creeps_is_not_said_to_stall(monkeypatch):
 def test_a_stiff_motor_is_integrated_implicitly(monkeypatch):
     """A motor whose speed relaxes thousands of times a turn: the explicit method
     took minutes (torque 1e8 N m); the implicit one gives the same motion."""
-    from assur import dynamics_startup
+    from assur import _startup_steps
 
     from .test_dynamics import example
 
     mech = dataclasses.replace(example("whitworth"), motor=Motor(3e5, 6.0))
     stiff = assur.startup(mech, 13.0)
-    monkeypatch.setattr(dynamics_startup, "_stiff", lambda *args: False)
+    monkeypatch.setattr(_startup_steps, "_stiff", lambda *args: False)
     explicit = assur.startup(mech, 13.0)
     # periodic to 1e-8 a turn either way (the implicit steps repeat sooner)
     for name in ("settle_time", "mean_speed", "speed_max", "speed_min", "period"):

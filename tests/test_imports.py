@@ -122,6 +122,7 @@ RANKS = {
     # when it settles
     "assur._startup_checks": 10,
     "assur._startup_curves": 10,
+    "assur._startup_steps": 10,
     "assur._change_limits": 10,
     "assur._startup_turns": 10,
     "assur._startup_settle": 10,

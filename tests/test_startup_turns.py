@@ -156,13 +156,13 @@ def test_a_turn_is_the_same_after_thousands_of_turns():
     the speed at the end of a turn came out 5.8e-9 of itself off (now 1.8e-11, the
     rounding of the angle where the curves are read), and the speeds at the
     reference pose wandered by 5e-10 a turn, by 1.4e-7 in jumps."""
-    from assur import dynamics_startup as ds
     from assur._startup_curves import Curves
+    from assur._startup_steps import stepper
     from assur.dynamics_reduced import reduce
 
     model = reduce(assur.catalog.slider_crank())
     motor = Motor(30.0, 180.0)
-    turn = ds._stepper(model, motor, Curves(model, 0.01))
+    turn = stepper(model, motor, Curves(model, 0.01))
     w = 175.0
     first = turn(0.0, [model.start, w], 1)
     later = turn(0.0, [model.start + 2.0 * math.pi * 5000, w], 5001)
