@@ -306,12 +306,15 @@ def _pt(v: Any) -> tuple[float, float]:
 
 
 def _angles0(mech: Mechanism, index: dict[str, int]) -> Array:
+    """Return each link's angle in the reference pose (rad, in (-pi, pi])."""
     angle0 = np.zeros(len(index))
     for link in mech.links:
         if link.axis is not None:
             a = resolve_point(mech, link.axis[0])
             b = resolve_point(mech, link.axis[1])
-            angle0[index[link.name]] = math.atan2(b[1] - a[1], b[0] - a[0])
+            angle = math.atan2(b[1] - a[1], b[0] - a[0])
+            # in (-180, 180] deg: atan2 gives -180 for a direction whose y is -0.0
+            angle0[index[link.name]] = math.pi if angle == -math.pi else angle
     return angle0
 
 
