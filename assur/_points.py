@@ -67,14 +67,26 @@ def _spec_text(spec: object) -> str:
     return describe(spec)
 
 
-def _check_point(entry: str, spec: object, points: set[str]) -> None:
+def _check_point(
+    entry: str, spec: object, points: set[str], itself: str | None = None
+) -> None:
+    """Check a point's specification; ``itself``: the point it places, if named."""
+
+    def known(where: str, ref: object) -> None:
+        if itself is not None and ref == itself:
+            _fail(
+                where,
+                f"the point {describe(itself)} is placed at itself; expected "
+                "coordinates [x, y] or another point",
+            )
+        if not isinstance(ref, str) or ref not in points:
+            _fail(where, _unknown("point", ref, points))
+
     if isinstance(spec, str):
-        if spec not in points:
-            _fail(entry, _unknown("point", spec, points))
+        known(entry, spec)
     elif isinstance(spec, Toward):
         for key, ref in (("from", spec.start), ("toward", spec.toward)):
-            if not isinstance(ref, str) or ref not in points:
-                _fail(f"{entry}.{key}", _unknown("point", ref, points))
+            known(f"{entry}.{key}", ref)
         if spec.start == spec.toward:
             _fail(
                 entry,

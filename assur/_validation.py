@@ -151,11 +151,11 @@ def _validate_numbers(mech: Mechanism) -> None:
     for joint in mech.joints:
         if not _point_ok(joint.at):
             entry = f"joints.{key_text(joint.name)}.at"
-            _check_point(entry, joint.at, names - {joint.name})
+            _check_point(entry, joint.at, names - {joint.name}, joint.name)
     for point in mech.points:
         if not _point_ok(point.at):
             entry = f"points.{key_text(point.name)}.at"
-            _check_point(entry, point.at, names - {point.name})
+            _check_point(entry, point.at, names - {point.name}, point.name)
     for link in mech.links:
         if link.center is not None and not _point_ok(link.center):
             _check_point(_entry("links", link.name, ".center"), link.center, names)
@@ -216,13 +216,11 @@ def _validate_all(mech: Mechanism) -> None:
             _fail(f"{entry}.link", _unknown("link", point.link, link_names))
         point_names.add(point.name)
     for joint in mech.joints:
-        _check_point(
-            f"joints.{key_text(joint.name)}.at", joint.at, point_names - {joint.name}
-        )
+        entry = f"joints.{key_text(joint.name)}.at"
+        _check_point(entry, joint.at, point_names - {joint.name}, joint.name)
     for point in mech.points:
-        _check_point(
-            f"points.{key_text(point.name)}.at", point.at, point_names - {point.name}
-        )
+        entry = f"points.{key_text(point.name)}.at"
+        _check_point(entry, point.at, point_names - {point.name}, point.name)
     used = {name for joint in mech.joints for name in joint.links}
     for link in mech.links:
         entry = f"links.{key_text(link.name)}"
