@@ -192,6 +192,8 @@ def parse(data: dict[str, Any]) -> Mechanism:
     """
     _check_keys("", data, KEYS[""])
     version = _get(data, "format", FORMAT_VERSION)
+    if type(version) is float and version == FORMAT_VERSION:
+        version = FORMAT_VERSION  # JSON has one kind of number: 1.0 is 1
     if type(version) is not int or version != FORMAT_VERSION:
         _fail(
             "format",
