@@ -7,6 +7,7 @@ dynamics' tables: arrays, CSV, Parquet, JSON-ready data and pandas, from the col
 from __future__ import annotations
 
 import math
+from abc import ABCMeta, abstractmethod
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
@@ -19,12 +20,14 @@ from assur.model import Mechanism
 __all__ = ["Columns"]
 
 
-class Columns:
+class Columns(metaclass=ABCMeta):
     """What every table of results offers: its columns by name, and their export.
 
     A subclass gives ``columns`` (the names, in order), ``column(name)`` (a
     ``Column``: owner, quantity, unit), ``table[name]`` (a read-only array, one
     value per row), ``len(table)`` and ``mechanism``; the rest follows from them.
+    An abstract base (``abc``): a table of another kind may be registered as a
+    :class:`~assur.analysis.Table` (the dynamic model's is).
     """
 
     __slots__ = ()
@@ -39,13 +42,16 @@ class Columns:
         def mechanism(self) -> Mechanism:
             """The mechanism the table was computed for."""
 
+    @abstractmethod
     def column(self, name: str) -> Column:  # pragma: no cover - every table's own
         """Return the description of column ``name`` (owner, quantity, unit)."""
         raise NotImplementedError
 
+    @abstractmethod
     def __getitem__(self, name: str) -> Array:  # pragma: no cover - every table's own
         raise NotImplementedError
 
+    @abstractmethod
     def __len__(self) -> int:  # pragma: no cover - every table's own
         raise NotImplementedError
 

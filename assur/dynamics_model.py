@@ -25,7 +25,7 @@ from assur.dynamics_reduced import Reduced, check_dynamic, reduce, reduced_at
 from assur.dynamics_steady import Steady, steady_state
 from assur.errors import UsageError
 from assur.model import Mechanism
-from assur.table import Columns
+from assur.table import Columns, Table
 
 __all__ = [
     "COLUMNS",
@@ -61,7 +61,9 @@ class Dynamics(Columns):
     ``columns`` lists the names, ``schema`` their units; ``arrays``, ``to_array``,
     ``to_csv``, ``to_dict``, ``to_pandas`` and ``to_parquet`` give them as a sweep's
     table does. The figures of the steady state over the whole turn are attributes
-    (and :meth:`summary`).
+    (and :meth:`summary`). Registered as a :class:`~assur.analysis.Table`:
+    ``isinstance(result, assur.Table)`` holds, as the format says ``dynamics``
+    returns one.
 
     Attributes
     ----------
@@ -163,6 +165,9 @@ class Dynamics(Columns):
         from assur.plotting import plot_dynamics
 
         return plot_dynamics(self, **kwargs)
+
+
+Table.register(Dynamics)
 
 
 def dynamics(
