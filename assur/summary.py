@@ -80,6 +80,8 @@ class Summary:
     _joints: dict[str, _Running] = field(default_factory=dict)
     _drivers: dict[str, _Running] = field(default_factory=dict)
     _power: Any = 0.0
+    _own: dict[str, Any] = field(default_factory=dict)
+    """Each driver's own mean power, by its joint's name (several drivers)."""
     _ideal: Any = 0.0
     _losses: dict[str, Any] = field(default_factory=dict)
     _rubbing: bool = False
@@ -112,10 +114,13 @@ class Summary:
             running.add(np.asarray(table[name]).reshape(shape), where)
         forces = table.force_state
         state = table.state
-        for i in range(len(table.plan.drivers)):
+        for i, driver in enumerate(table.plan.drivers):
             speed = full(state.speed[i], n)
             power = full(forces.balancing[i], n) * speed
             self._power = self._power + _sums(power, shape)
+            name = driver.pair.name
+            if name in self._own:
+                self._own[name] = self._own[name] + _sums(power, shape)
             if self._rubbing:
                 ideal = full(forces.ideal[i], n) * speed
                 self._ideal = self._ideal + _sums(ideal, shape)
@@ -140,6 +145,10 @@ class Summary:
                 for part in ("max", "min", "mean", "rms"):
                     units[f"{column.name}.{part}"] = column.unit
         units["driver.power.mean"] = "W"
+        if len(plan.drivers) > 1:
+            for driver in plan.drivers:
+                units[f"{driver.pair.name}.power.mean"] = "W"
+                self._own[driver.pair.name] = 0.0
         self._rubbing = any(p.friction > 0.0 for p in plan.pairs.values())
         if self._rubbing:
             for name, pair in plan.pairs.items():
@@ -183,6 +192,8 @@ class Summary:
             out[f"{name}.mean"] = r.total / n
             out[f"{name}.rms"] = np.sqrt(r.squares / n)
         out["driver.power.mean"] = _per_variant(self._power / n, self.variants)
+        for name, power in self._own.items():
+            out[f"{name}.power.mean"] = _per_variant(power / n, self.variants)
         if self._rubbing:
             for name, loss in self._losses.items():
                 out[f"{name}.friction.loss"] = _per_variant(loss / n, self.variants)

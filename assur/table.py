@@ -290,10 +290,12 @@ class Table(Columns):
         ``driver.torque.max``, ``.min``, ``.mean`` and ``.rms`` (``driver.force.*``
         for a prismatic driver; every driver's ``J.torque.*`` too with several);
         ``driver.power.mean``, the mean of the balancing loads times the drivers'
-        speeds (W). With friction also ``J.friction.loss``, the mean power lost in
-        joint J (W), ``friction.loss`` in all, ``driver.power_ideal.mean`` without
-        friction and ``efficiency``, ``driver.power_ideal.mean`` over
-        ``driver.power.mean``: the share of the driver's work that reaches the loads
+        speeds (W), all drivers' together (with several, each one's own too:
+        ``J.power.mean``, J its joint). With friction also ``J.friction.loss``, the
+        mean power lost in joint J (W), ``friction.loss`` in all,
+        ``driver.power_ideal.mean`` without friction and ``efficiency``,
+        ``driver.power_ideal.mean`` over ``driver.power.mean``: the share of the
+        driver's work that reaches the loads
         (NaN where the driver does no net work, or the loads give back work it still
         supplies).
 
