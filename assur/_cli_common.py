@@ -103,7 +103,16 @@ def _one_range(text: str, option: str) -> np.ndarray:
         raise UsageError(msg)
     # in halves too (exact scalings by 2): STEP times a count may overflow where
     # the positions do not
-    return 2.0 * (start / 2 + step / 2 * np.arange(math.floor(count + 1e-9) + 1))
+    found = 2.0 * (start / 2 + step / 2 * np.arange(math.floor(count + 1e-9) + 1))
+    # compared, not subtracted: neighbours near the largest float overflow
+    ahead = found[1:] > found[:-1] if step > 0 else found[1:] < found[:-1]
+    if not np.all(ahead):
+        msg = (
+            f"{option}: in {describe(text)} the step is below the resolution of the "
+            "positions (some come out equal); expected a larger step"
+        )
+        raise UsageError(msg)
+    return found
 
 
 def positions(mech: Any, spec: str | None, option: str = "--angles") -> np.ndarray:
