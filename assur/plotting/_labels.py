@@ -117,11 +117,13 @@ def spread_labels(ax: Any) -> None:
     # the boxes (x0, y0, x1, y1, display units) move with their labels
     start = np.array([t.get_window_extent(renderer).extents for t in texts])
     boxes = start.copy()
-    for _ in range(SPREAD_STEPS):
+    for step in range(SPREAD_STEPS):
         clear = True
         for i, j in _overlapping(boxes):
-            # a pair cleared by an earlier push of this round is left alone
-            push = _push(boxes[i], boxes[j])
+            # a pair cleared by an earlier push of this round is left alone; the
+            # room left grows round by round, so that a label caught between two
+            # others is not pushed to and fro for ever
+            push = _push(boxes[i], boxes[j], 1.0 + step)
             if push is None or not (movable[i] or movable[j]):
                 continue
             clear = False
@@ -129,6 +131,7 @@ def spread_labels(ax: Any) -> None:
             for k, sign in ((i, 1.0), (j, -1.0)):
                 if movable[k]:
                     boxes[k] += np.tile(sign * share * push, 2)
+        _keep_inside(boxes, movable, ax.bbox.extents)
         if clear:
             break
     to_data = ax.transData.inverted()
@@ -136,6 +139,18 @@ def spread_labels(ax: Any) -> None:
         if step.any():
             at = ax.transData.transform(text.get_position()) + step
             text.set_position(tuple(to_data.transform(at)))
+
+
+def _keep_inside(boxes: np.ndarray, movable: np.ndarray, frame: np.ndarray) -> None:
+    """Shift the movable boxes back inside ``frame`` (x0, y0, x1, y1), in place.
+
+    A label past the axes' edge ran into the legend beside them.
+    """
+    low = np.maximum(frame[:2] - boxes[:, :2], 0.0)
+    high = np.minimum(frame[2:] - boxes[:, 2:], 0.0)
+    # a box wider than the frame keeps its left (or lower) edge inside
+    shift = np.where(low > 0, low, high) * movable[:, None]
+    boxes += np.tile(shift, 2)
 
 
 def _overlapping(boxes: np.ndarray) -> list[tuple[int, int]]:
@@ -151,12 +166,12 @@ def _overlapping(boxes: np.ndarray) -> list[tuple[int, int]]:
     return list(zip(i.tolist(), j.tolist(), strict=True))
 
 
-def _push(a: np.ndarray, b: np.ndarray) -> np.ndarray | None:
+def _push(a: np.ndarray, b: np.ndarray, spare: float = 1.0) -> np.ndarray | None:
     """Return the shift (display units) that takes box ``a`` clear of box ``b``.
 
     Along the axis of the smaller overlap, away from ``b``'s centre (upward or to
-    the right for boxes centred alike), with a pixel to spare; None when the boxes
-    do not overlap.
+    the right for boxes centred alike), with ``spare`` pixels to spare; None when
+    the boxes do not overlap.
     """
     dx = min(a[2], b[2]) - max(a[0], b[0])
     dy = min(a[3], b[3]) - max(a[1], b[1])
@@ -164,5 +179,5 @@ def _push(a: np.ndarray, b: np.ndarray) -> np.ndarray | None:
         return None
     away = a[:2] + a[2:] - b[:2] - b[2:]
     if dx < dy:
-        return np.array([np.copysign(dx + 1.0, away[0] or 1.0), 0.0])
-    return np.array([0.0, np.copysign(dy + 1.0, away[1] or 1.0)])
+        return np.array([np.copysign(dx + spare, away[0] or 1.0), 0.0])
+    return np.array([0.0, np.copysign(dy + spare, away[1] or 1.0)])
