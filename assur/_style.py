@@ -12,10 +12,19 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from assur.plan import Plan
 
-__all__ = ["DRIVER_COLOUR", "GROUP_COLOURS", "group_colour", "link_colours"]
+__all__ = [
+    "DRIVER_COLOUR",
+    "GROUP_COLOURS",
+    "REACTION_COLOUR",
+    "group_colour",
+    "link_colours",
+]
 
 DRIVER_COLOUR = "#334155"
 """Colour of every driving link (and of its balancing load in the pictures)."""
+REACTION_COLOUR = "#d62728"
+"""Colour of every joint reaction: in each picture (overview, free body, force
+polygon) and in the report's drawing, so that a reaction looks the same in all."""
 GROUP_COLOURS = (
     "#0072b2",
     "#d55e00",

@@ -2,7 +2,8 @@
 
 Both sections show the report's first position. The inertia table is read back
 from the page; the free-body diagrams are inline SVG whose labels matplotlib keeps
-as comments (``<!-- $R_{\\text{B}}$ = 20.6 N -->``), read back the same way.
+as comments (``<!-- $\\vec F_{\\text{2},\\text{3}}$ = 20.6 N -->``), read back the
+same way.
 """
 
 from __future__ import annotations
@@ -90,7 +91,15 @@ def test_one_free_body_per_group_with_the_table_s_reactions(report) -> None:
         svg = figure[figure.index("<svg") : figure.rindex("</svg>") + 6]
         ET.fromstring(svg)  # well formed
         group = plan.groups[int(index) - 1]
-        labels = re.findall(r"<!-- \$R_\{\\text\{(\w+)\}[^$]*\$ = (\S+) N -->", svg)
+        # a reaction is named by the links it joins (F_{i,j}, link i on link j)
+        found = re.findall(
+            r"<!-- \$\\vec F_\{\\text\{(\w+)\},\\text\{(\w+)\}\}\$ = (\S+) N -->", svg
+        )
+        by_links = {}
+        for name, pair in plan.pairs.items():
+            ends = (plan.bodies[pair.first], plan.bodies[pair.second])
+            by_links[ends] = by_links[ends[::-1]] = name.split("~")[0]
+        labels = [(by_links[(i, j)], printed) for i, j, printed in found]
         # every pair on its links: the groups solved before it act on it too
         bodies = {plan.body(x) for x in group.links}
         joints = {

@@ -16,7 +16,7 @@ import numpy as np
 
 from assur._gaps import gaps
 from assur._structure import Group, Structure
-from assur._style import DRIVER_COLOUR, group_colour, link_colours
+from assur._style import DRIVER_COLOUR, REACTION_COLOUR, group_colour, link_colours
 from assur._text import roman
 from assur._vec import Array, full
 from assur.analysis import Table
@@ -70,6 +70,8 @@ def report_data(plan: Plan, struct: Structure, table: Table) -> dict[str, Any]:
             "joints": [p.name for p in joints],
             "balancing": balancing(table)[0],
             "unit": units(table, [f"{p.name}.F" for p in joints]),
+            # the pictures' colour of a reaction: the report draws it alike
+            "colour": REACTION_COLOUR,
         }
     return data
 

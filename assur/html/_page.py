@@ -13,6 +13,7 @@ from string import Template
 from typing import Any
 
 from assur._structure import Structure
+from assur._style import REACTION_COLOUR
 from assur.analysis import Table
 from assur.html._data import to_json
 from assur.html._free_bodies import free_bodies_html
@@ -67,6 +68,7 @@ def assemble_page(
         "free_bodies": free_bodies_html(table),
         "summary": summary_html(table),
         "data": to_json(data),
+        "reaction_colour": REACTION_COLOUR,
         "css": _asset("report.css"),
         "script": _asset("report.js"),
     }

@@ -209,12 +209,12 @@
       .find((s) => s >= raw * (1 - 1e-9));
     perNewton = BAR / newtons;
     for (const j of data.forces.joints) {
-      const line = el("line", {stroke: "#c2185b", "stroke-width": 2.2,
+      const line = el("line", {stroke: data.forces.colour, "stroke-width": 2.2,
         "marker-end": "url(#arrowhead)", "data-force": j}, layer.forces);
       arrows.push({node: line, name: j});
     }
     const bar = el("g", {class: "scale"}, svg);
-    el("line", {x1: 14, y1: H - 16, x2: 14 + BAR, y2: H - 16, stroke: "#c2185b",
+    el("line", {x1: 14, y1: H - 16, x2: 14 + BAR, y2: H - 16, stroke: data.forces.colour,
       "stroke-width": 2.2, "marker-end": "url(#arrowhead)"}, bar);
     const label = el("text", {x: 20 + BAR, y: H - 12, class: "label"}, bar);
     label.textContent = fmt(newtons) + " " + data.forces.unit;

@@ -18,6 +18,7 @@ from assur.plotting._context import _unit
 from assur.plotting._geometry import _anchor, _nice, _public
 from assur.plotting._heads import fitted_arrow
 from assur.plotting._labels import LOAD_LABELS
+from assur.plotting._mathtext import reaction_symbol
 from assur.plotting._style import (
     ARROW_LENGTH,
     BALANCING_COLOR,
@@ -219,7 +220,8 @@ def _load_arrows(
             at = pose.at(b, plan.offset(b, resolve_point(mech, load.at)))
             force = _load_value(ctx, row, load.force, f"loads[{i}].force")
             arrows.append(
-                _Arrow(f"$F_{{{name}}}$", at, force, None, LOAD_COLOR, units, "load")
+                # Q, as the note writes it: F_{i,j} is the force of link i on link j
+                _Arrow(f"$Q_{{{name}}}$", at, force, None, LOAD_COLOR, units, "load")
             )
         if load.torque is not None:
             at = _anchor(ctx, pose, b)
@@ -278,7 +280,8 @@ def _overview_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
     for name, pair in ctx.plan.pairs.items():
         if not pair.virtual:
             q, f, m = _reaction(ctx, pose, row, name)
-            label = f"$R_{{{_tex(name)}}}$"
+            bodies_ = ctx.plan.bodies
+            label = reaction_symbol(bodies_[pair.first], bodies_[pair.second])
             units = _reaction_units(ctx.table, name)
             arrows.append(_Arrow(label, q, f, m, REACTION_COLOR, units, "reaction"))
     return arrows + _balancing_arrows(ctx, pose, row)

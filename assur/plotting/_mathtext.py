@@ -10,6 +10,7 @@ import functools
 from typing import Any
 
 from assur.explain._tex import TEX_SPECIAL
+from assur.explain._tex import name as tex_name
 from assur.plotting._style import literal, math_name
 
 
@@ -25,6 +26,22 @@ def _symbol(tex: str) -> str:
     except ValueError:
         return literal(tex.replace("\\vec ", "").replace("\\", ""))
     return math_text
+
+
+def reaction_symbol(by: str, on: str) -> str:
+    r"""Return the name of the force of link ``by`` on link ``on`` in every picture.
+
+    The note's :math:`\vec F_{i,j}` (the textbook's :math:`R_{ij}` with the links'
+    names): the same text in the overview, a free body, a force polygon and the
+    report, whichever joint carries the force (the table's ``J.Fx`` is
+    :math:`\vec F_{first,second}` of joint J).
+
+    Examples
+    --------
+    >>> reaction_symbol("crank", "rod")
+    '$\\vec F_{\\text{crank},\\text{rod}}$'
+    """
+    return _symbol(f"\\vec F_{{{tex_name(by)},{tex_name(on)}}}")
 
 
 NAME = "\\mathrm{"

@@ -4,11 +4,20 @@ from __future__ import annotations
 
 from typing import Any
 
+from assur._style import REACTION_COLOUR
+
 BALANCING_COLOR = "#6a3d9a"
 """Colour of the balancing loads (the links' colours are in :mod:`assur._style`)."""
 GROUND_COLOR = "#333333"
 PLAIN_COLOR = "#4d4d4d"
-REACTION_COLOR = "#d62728"
+REACTION_COLOR = REACTION_COLOUR
+"""Colour of every joint reaction, in every picture and in the HTML report."""
+REACTION_LEGEND = (
+    "reaction F\N{LATIN SUBSCRIPT SMALL LETTER I}\N{LATIN SUBSCRIPT SMALL LETTER J}:"
+    " by link i on link j (table: J.Fx, J.Fy)"
+)
+"""The legend's entry for the reactions, the same in every picture that draws them
+(plain text: a legend's entries are drawn as written, see :func:`literal`)."""
 INERTIA_COLOR = "#111111"
 LOAD_COLOR = "#00838f"
 PATH_COLORS = (

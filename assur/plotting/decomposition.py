@@ -36,14 +36,15 @@ from assur.plotting._forces import (
     _reaction_units,
     _scale,
     _scale_text,
-    _tex,
 )
 from assur.plotting._geometry import _extent, _public
 from assur.plotting._labels import spread_labels
+from assur.plotting._mathtext import reaction_symbol
 from assur.plotting._style import (
     INERTIA_COLOR,
     LOAD_COLOR,
     REACTION_COLOR,
+    REACTION_LEGEND,
     literal,
     titled,
 )
@@ -217,7 +218,7 @@ def draw_free_body(
         ax,
         [
             (text, color),
-            ("reaction", REACTION_COLOR),
+            (REACTION_LEGEND, REACTION_COLOR),
             ("inertia force and torque", INERTIA_COLOR),
             ("gravity, external load", LOAD_COLOR),
             *[("friction circle (dashed), reaction tangent", "")] * bool(rubbing),
@@ -270,14 +271,13 @@ def _pair_arrows(
         inside = (pair.first in bodies, pair.second in bodies)
         if not any(inside):
             continue
-        label = _tex(_public(name))
-        if all(inside):
-            first, second = (
-                _tex(_public(plan.bodies[x])) for x in (pair.first, pair.second)
-            )
-            label = f"{label},{first}\\to {second}"
+        # the force on the group (outside pairs), or of the first link on the second
+        by, on = pair.first, pair.second
+        if not inside[1]:
+            by, on = on, by
         q, f, m = _reaction(ctx, pose, row, name, 1.0 if inside[1] else -1.0)
         kind = "internal" if all(inside) else "reaction"
         units = _reaction_units(ctx.table, name)
-        arrows.append(_Arrow(f"$R_{{{label}}}$", q, f, m, REACTION_COLOR, units, kind))
+        label = reaction_symbol(plan.bodies[by], plan.bodies[on])
+        arrows.append(_Arrow(label, q, f, m, REACTION_COLOR, units, kind))
     return arrows

@@ -39,6 +39,7 @@ from assur.plotting._style import (
     INERTIA_COLOR,
     LOAD_COLOR,
     REACTION_COLOR,
+    REACTION_LEGEND,
     literal,
     titled,
 )
@@ -146,7 +147,7 @@ def _draw_row(
         seen += _draw_arrows(ax, ctx, arrows, scale, "names" if labels else None)
         applied = any(a.kind in ("gravity", "load") for a in arrows)
         entries += [
-            ("reaction, by first link on second", REACTION_COLOR),
+            (REACTION_LEGEND, REACTION_COLOR),
             ("inertia force and torque", INERTIA_COLOR),
             *[("gravity, external load", LOAD_COLOR)] * applied,
             ("balancing load", BALANCING_COLOR),

@@ -20,12 +20,18 @@ from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
 from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
-from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend, _place
 from assur.plotting._geometry import _nice
-from assur.plotting._mathtext import _symbol
-from assur.plotting._style import literal, titled
+from assur.plotting._mathtext import _symbol, reaction_symbol
+from assur.plotting._style import (
+    INERTIA_COLOR,
+    LOAD_COLOR,
+    REACTION_COLOR,
+    REACTION_LEGEND,
+    literal,
+    titled,
+)
 
 if TYPE_CHECKING:
     from assur.table import Table
@@ -44,7 +50,6 @@ PLAN_SIZE = 80.0
 SAME_RATE = 1e-9
 """Two links whose angular speeds differ by less than this times the fastest link's
 turn together: their relative instant centre is at infinity."""
-COLORS = ("#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf")
 
 
 def images(pos: Position, k: int) -> dict[str, np.ndarray]:
@@ -211,22 +216,19 @@ def force_polygons(table: Table, angle: Any = None) -> Any:
 def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
     """Draw one group's force polygon on ``ax``."""
     sequence: list[tuple[str, np.ndarray, str]] = []
-    for i, body in enumerate(rec.bodies):
+    for body in rec.bodies:
         pair = _outer(pos, rec, body)
         # a sliding pair's reaction is its normal part: its friction force is listed
         for load in link_loads(pos, body, solved, [p.name for p in pair]):
             if math.hypot(*load.force) > 0:  # a couple is no side of the polygon
-                sequence.append((load.tex, load.force, COLORS[i % len(COLORS)]))
+                sequence.append((_symbol(load.tex), load.force, _colour(load.tex)))
         for p in pair:
             r = rec.reactions[p.name]
             sign = 1.0 if p.second == body else -1.0
             f = sign * np.array([float(np.ravel(r.fx)[0]), float(np.ravel(r.fy)[0])])
             other = p.first if p.second == body else p.second
-            # F_ij: the force of link i on link j, as the note writes it
-            symbol = (
-                f"\\vec F_{{{tex_name(pos.link(other))},{tex_name(pos.link(body))}}}"
-            )
-            sequence.append((symbol, f, "#111111"))
+            symbol = reaction_symbol(pos.link(other), pos.link(body))
+            sequence.append((symbol, f, REACTION_COLOR))
     mu = _scale([f for _, f, _ in sequence])
     tip = np.zeros(2)
     for label, f, color in sequence:
@@ -234,8 +236,9 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
         _arrow(ax, tip, end, color)
         mid = 0.5 * (tip + end)
         ax.annotate(
-            _symbol(label),
+            label,
             mid,
+            color=color,
             fontsize=7,
             xytext=(3, 3),
             textcoords="offset points",
@@ -250,6 +253,30 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
         f"scale: μF = {mu:g} N/mm",
         fontsize=9,
     )
+    # the colours of the mechanism drawings, so a reaction reads alike in both
+    kinds = {
+        REACTION_COLOR: REACTION_LEGEND,
+        INERTIA_COLOR: "inertia force",
+        LOAD_COLOR: "gravity, external load",
+    }
+    shown = {c for _, _, c in sequence}
+    entries = [(text, c) for c, text in kinds.items() if c in shown]
+    _legend(ax, entries, f"μF = {mu:g} N/mm")
+
+
+def _colour(tex: str) -> str:
+    """Return the colour of a known load (the note's TeX), as the other pictures'.
+
+    A reaction of a link solved before (``F_{i,j}``, a guide's normal force ``N``
+    and its friction force ``F_f``) is drawn as every reaction is; inertia loads
+    and the other loads in their colours of the mechanism drawings.
+    """
+    tex = tex.removeprefix("-")
+    if tex.startswith("\\vec F_{i,"):
+        return INERTIA_COLOR
+    if tex.startswith(("\\vec F_{", "\\vec N_")):
+        return REACTION_COLOR
+    return LOAD_COLOR
 
 
 def _outer(pos: Position, rec: Any, body: int) -> list[Any]:
