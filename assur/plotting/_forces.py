@@ -7,7 +7,7 @@ N per cm of drawing (the drawing is in metres), couples as arcs.
 from __future__ import annotations
 
 import math
-from collections.abc import Collection, Iterable
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -15,6 +15,7 @@ import numpy as np
 
 from assur._vec import full
 from assur.plotting._context import _unit
+from assur.plotting._friction import shown_point
 from assur.plotting._geometry import _anchor, _nice, _public
 from assur.plotting._heads import fitted_arrow
 from assur.plotting._labels import LOAD_LABELS
@@ -58,6 +59,14 @@ class _Arrow:
     color: str
     units: tuple[str, str]
     kind: str
+    shown: np.ndarray | None = None
+    """Where the force is drawn, when not at ``point``: a reaction tangent to its
+    enlarged friction circle (:mod:`assur.plotting._friction`)."""
+
+    @property
+    def at(self) -> np.ndarray:
+        """Return the point the arrow is drawn from, m."""
+        return self.point if self.shown is None else self.shown
 
 
 def _units(table: Table, force: str = "", couple: str = "") -> tuple[str, str]:
@@ -100,47 +109,6 @@ def _reaction(
     if abs(normal) > 1e-9 and abs(m / normal) < 0.5 * ctx.size:
         return q + (m / normal) * e, f, None
     return q, f, m
-
-
-def _friction_circles(
-    ctx: _Context, pose: _Pose, bodies: Collection[int] | None = None
-) -> list[tuple[np.ndarray, float]]:
-    """Return the centre and radius f r (m) of each revolute pair's friction circle.
-
-    With ``bodies``, those of the pairs of these bodies only.
-    """
-    return [
-        (pose.at(p.second, p.d_second), p.friction * p.radius)
-        for p in ctx.plan.pairs.values()
-        if p.kind == "R" and p.friction > 0.0 and not p.virtual
-        if bodies is None or p.first in bodies or p.second in bodies
-    ]
-
-
-def _draw_friction_circles(
-    ax: Any, ctx: _Context, pose: _Pose, bodies: Collection[int] | None = None
-) -> int:
-    """Draw the friction circles, dashed, to the drawing's scale; return how many.
-
-    With ``bodies``, those of the pairs of these bodies only (a group's free body).
-    """
-    from matplotlib.patches import Circle
-
-    circles = _friction_circles(ctx, pose, bodies)
-    for k, (centre, radius) in enumerate(circles):
-        ax.add_patch(
-            Circle(
-                tuple(centre),
-                radius,
-                fill=False,
-                ls="--",
-                lw=0.8,
-                color=REACTION_COLOR,
-                zorder=6,
-                gid=f"friction-circle-{k}",  # an SVG id: one of its own each
-            )
-        )
-    return len(circles)
 
 
 def _centre(table: Table, link: str, row: int) -> np.ndarray:
@@ -279,12 +247,27 @@ def _overview_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
     arrows += _applied_arrows(ctx, pose, row, links, bodies)
     for name, pair in ctx.plan.pairs.items():
         if not pair.virtual:
-            q, f, m = _reaction(ctx, pose, row, name)
-            bodies_ = ctx.plan.bodies
-            label = reaction_symbol(bodies_[pair.first], bodies_[pair.second])
-            units = _reaction_units(ctx.table, name)
-            arrows.append(_Arrow(label, q, f, m, REACTION_COLOR, units, "reaction"))
+            arrows.append(_reaction_arrow(ctx, pose, row, name, 1.0, "reaction"))
     return arrows + _balancing_arrows(ctx, pose, row)
+
+
+def _reaction_arrow(
+    ctx: _Context, pose: _Pose, row: int, name: str, sign: float, kind: str
+) -> _Arrow:
+    """Return the reaction of pair ``name`` on its second link (``sign`` -1: first).
+
+    Named the force of the other link on the one it acts on; a journal's drawn
+    tangent to its friction circle as that circle is drawn, enlarged.
+    """
+    pair = ctx.plan.pairs[name]
+    q, f, m = _reaction(ctx, pose, row, name, sign)
+    by, on = (ctx.plan.bodies[b] for b in (pair.first, pair.second))
+    label = reaction_symbol(by, on) if sign > 0 else reaction_symbol(on, by)
+    units = _reaction_units(ctx.table, name)
+    shown = None
+    if pair.kind == "R" and name in ctx.forces.friction:
+        shown = shown_point(ctx, pose.at(pair.second, pair.d_second), q)
+    return _Arrow(label, q, f, m, REACTION_COLOR, units, kind, shown)
 
 
 def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
@@ -351,9 +334,9 @@ def _draw_force(
 ) -> np.ndarray:
     """Draw the force of ``a`` (``force``) as a straight arrow; return its tip."""
     mag = float(np.hypot(*force))
-    tip = a.point + force / (scale * 100.0)
+    tip = a.at + force / (scale * 100.0)
     # a short arrow's head shrinks with it: its direction stays readable
-    ax.add_patch(fitted_arrow([a.point, tip], 13, color=a.color, lw=1.7, zorder=6))
+    ax.add_patch(fitted_arrow([a.at, tip], 13, color=a.color, lw=1.7, zorder=6))
     if text:
         u = force / mag
         words = f"{a.label} = {mag:.3g} {a.units[0]}" if text == "values" else a.label

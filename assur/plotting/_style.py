@@ -14,7 +14,7 @@ REACTION_COLOR = REACTION_COLOUR
 """Colour of every joint reaction, in every picture and in the HTML report."""
 REACTION_LEGEND = (
     "reaction F\N{LATIN SUBSCRIPT SMALL LETTER I}\N{LATIN SUBSCRIPT SMALL LETTER J}:"
-    " by link i on link j (table: J.Fx, J.Fy)"
+    " link i on link j (J.Fx, J.Fy)"
 )
 """The legend's entry for the reactions, the same in every picture that draws them
 (plain text: a legend's entries are drawn as written, see :func:`literal`)."""

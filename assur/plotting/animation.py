@@ -133,7 +133,7 @@ def _film_limits(ctx: _Context, forces: bool) -> tuple[list[Any], float | None]:
         arrows = [a for r in rows for a in _overview_arrows(ctx, ctx.pose(r), r)]
         scale = _scale(arrows, ctx.size)
         limits += [
-            a.point + a.force / (scale * 100.0) for a in arrows if a.force is not None
+            a.at + a.force / (scale * 100.0) for a in arrows if a.force is not None
         ]
     return [np.nanmin(limits, axis=0), np.nanmax(limits, axis=0)], scale
 

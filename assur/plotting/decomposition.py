@@ -30,16 +30,14 @@ from assur.plotting._forces import (
     _applied_arrows,
     _Arrow,
     _draw_arrows,
-    _draw_friction_circles,
     _inertia_arrows,
-    _reaction,
-    _reaction_units,
+    _reaction_arrow,
     _scale,
     _scale_text,
 )
+from assur.plotting._friction import draw_friction_circles, friction_legend
 from assur.plotting._geometry import _extent, _public
 from assur.plotting._labels import spread_labels
-from assur.plotting._mathtext import reaction_symbol
 from assur.plotting._style import (
     INERTIA_COLOR,
     LOAD_COLOR,
@@ -203,9 +201,9 @@ def draw_free_body(
     arrows = _free_body_arrows(table, group_index, row)
     scale = checked_scale(scale) or _scale(arrows, 0.8 * ctx.size)
     seen += _draw_arrows(ax, ctx, arrows, scale, "values")
-    seen += [a.point for a in arrows]
+    seen += [a.at for a in arrows]
     # a journal's friction couple is in its reaction's line, tangent to this circle
-    rubbing = _draw_friction_circles(ax, ctx, pose, bodies)
+    rubbing = draw_friction_circles(ax, ctx, pose, bodies)
     _frame_axes(ax, ctx, seen, 0.5 * ctx.size, margin=0.12)
     text, color, _ = ctx.legend[len(ctx.plan.drivers) + group_index]
     # numbered from 1 as `assur plot --group N` is; the class comes after, in words
@@ -221,7 +219,7 @@ def draw_free_body(
             (REACTION_LEGEND, REACTION_COLOR),
             ("inertia force and torque", INERTIA_COLOR),
             ("gravity, external load", LOAD_COLOR),
-            *[("friction circle (dashed), reaction tangent", "")] * bool(rubbing),
+            *[(friction_legend(ctx), "")] * bool(rubbing),
             (_scale_text(arrows, scale), ""),
         ],
     )
@@ -272,12 +270,7 @@ def _pair_arrows(
         if not any(inside):
             continue
         # the force on the group (outside pairs), or of the first link on the second
-        by, on = pair.first, pair.second
-        if not inside[1]:
-            by, on = on, by
-        q, f, m = _reaction(ctx, pose, row, name, 1.0 if inside[1] else -1.0)
         kind = "internal" if all(inside) else "reaction"
-        units = _reaction_units(ctx.table, name)
-        label = reaction_symbol(plan.bodies[by], plan.bodies[on])
-        arrows.append(_Arrow(label, q, f, m, REACTION_COLOR, units, kind))
+        sign = 1.0 if inside[1] else -1.0
+        arrows.append(_reaction_arrow(ctx, pose, row, name, sign, kind))
     return arrows

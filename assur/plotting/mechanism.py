@@ -24,11 +24,11 @@ from assur.plotting._context import (
 )
 from assur.plotting._forces import (
     _draw_arrows,
-    _draw_friction_circles,
     _overview_arrows,
     _scale,
     _scale_text,
 )
+from assur.plotting._friction import draw_friction_circles, friction_legend
 from assur.plotting._geometry import _extent, _public, _shape, _skeleton
 from assur.plotting._labels import _label_joints, _label_link, spread_labels
 from assur.plotting._parts import _draw_guide, _draw_joint, _draw_link, _draw_pivot
@@ -153,8 +153,8 @@ def _draw_row(
             ("balancing load", BALANCING_COLOR),
             (_scale_text(arrows, scale), ""),
         ]
-        if _draw_friction_circles(ax, ctx, pose):
-            entries.insert(-1, ("friction circle (dashed), reaction tangent", ""))
+        if draw_friction_circles(ax, ctx, pose):
+            entries.insert(-1, (friction_legend(ctx), ""))
     _frame_axes(ax, ctx, list(limits) if limits is not None else seen, ctx.size)
     title = f"{titled(ctx.table.mechanism)}, {literal(_position_title(ctx.table, row))}"
     ax.set_title(title, fontsize=10)
