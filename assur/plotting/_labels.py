@@ -11,11 +11,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur.plotting._bars import BAR_LABELS, settled_renderer
 from assur.plotting._geometry import (
     _joint_direction,
     _link_spot,
     _link_spots,
     _merge_joints,
+    _shape,
 )
 from assur.plotting._style import literal
 
@@ -57,7 +59,7 @@ def _label_link(
         return
     at = _link_spot(spots, ctx.r, busy)
     busy.append(at[None, :])
-    ax.text(
+    text = ax.text(
         at[0],
         at[1],
         literal(ctx.plan.bodies[body]),
@@ -75,6 +77,10 @@ def _label_link(
             "alpha": max(alpha, 0.35),
         },
     )
+    points = _shape(ctx, pose, body).points
+    if len(points) == 2:
+        # a bar: clear_bars moves the name off it if it hides most of it
+        BAR_LABELS[text] = (np.asarray(points[0]), np.asarray(points[1]), ctx.r)
 
 
 LOAD_LABELS: weakref.WeakSet[Any] = weakref.WeakSet()
@@ -82,6 +88,8 @@ LOAD_LABELS: weakref.WeakSet[Any] = weakref.WeakSet()
 (Held aside, not as a ``gid``: an SVG writes a gid as an element's id, which must
 be unique in a page.)"""
 SPREAD_STEPS = 40
+LEADER = 12.0
+"""A label moved farther than this (points) is joined to its load by a thin line."""
 """Most rounds in which :func:`spread_labels` pushes overlapping labels apart."""
 
 
@@ -99,21 +107,11 @@ def spread_labels(ax: Any) -> None:
     movable = np.array([t in LOAD_LABELS for t in texts])
     if not movable.any():
         return
-    # the labels moved do not resize the axes; two draws settle the layout (a
-    # legend beside the axes shrinks them, which moves the labels it made room
-    # for: the second draw finds where they are seen)
+    # the labels moved do not resize the axes
     for text, load in zip(texts, movable, strict=True):
         if load:
             text.set_in_layout(False)
-    canvas = ax.figure.canvas
-    if not hasattr(canvas, "get_renderer"):
-        # a figure made without pyplot (the report's SVG) measures its text as Agg
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-        canvas = FigureCanvasAgg(ax.figure)
-    canvas.draw()
-    canvas.draw()
-    renderer = canvas.get_renderer()
+    renderer = settled_renderer(ax)
     # the boxes (x0, y0, x1, y1, display units) move with their labels
     start = np.array([t.get_window_extent(renderer).extents for t in texts])
     boxes = start.copy()
@@ -135,10 +133,24 @@ def spread_labels(ax: Any) -> None:
         if clear:
             break
     to_data = ax.transData.inverted()
-    for text, step in zip(texts, boxes[:, :2] - start[:, :2], strict=True):
+    far = LEADER * ax.figure.dpi / 72.0
+    for text, box, old in zip(texts, boxes, start, strict=True):
+        step = box[:2] - old[:2]
         if step.any():
-            at = ax.transData.transform(text.get_position()) + step
-            text.set_position(tuple(to_data.transform(at)))
+            was = ax.transData.transform(text.get_position())
+            text.set_position(tuple(to_data.transform(was + step)))
+            if float(np.hypot(*step)) > far:
+                _leader(ax, text, was, box)
+
+
+def _leader(ax: Any, text: Any, was: np.ndarray, box: np.ndarray) -> None:
+    """Join a label moved far to where it was put (display ``was``) by a thin line.
+
+    The line ends at the label box's nearest point, so it does not cross the name.
+    """
+    near = np.clip(was, box[:2], box[2:])
+    ends = ax.transData.inverted().transform(np.array([was, near]))
+    ax.plot(*ends.T, color=text.get_color(), lw=0.5, alpha=0.7, zorder=6.8)
 
 
 def _keep_inside(boxes: np.ndarray, movable: np.ndarray, frame: np.ndarray) -> None:

@@ -17,6 +17,7 @@ from assur._vec import integer
 from assur.errors import ModelError, UsageError
 from assur.model import GROUND
 from assur.plotting._axes import _frame_axes, _legend, _new_axes
+from assur.plotting._bars import clear_bars
 from assur.plotting._context import (
     _Context,
     _context,
@@ -223,6 +224,7 @@ def draw_free_body(
             (_scale_text(arrows, scale), ""),
         ],
     )
+    clear_bars(ax)
     spread_labels(ax)
     return ax
 

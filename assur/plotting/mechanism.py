@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur.plotting._axes import _frame_axes, _legend, _new_axes
+from assur.plotting._bars import clear_bars
 from assur.plotting._context import (
     _Context,
     _context,
@@ -116,6 +117,8 @@ def draw(
     row = _row(table, angle)
     ax = _new_axes(ax)
     _draw_row(ax, ctx, row, forces, scale, labels, groups)
+    if labels:
+        clear_bars(ax)
     if forces and labels:
         spread_labels(ax)
     return ax
