@@ -76,3 +76,31 @@ def test_no_name_hides_most_of_its_bar(stem: str, angle: float) -> None:
             assert hidden <= 0.5 * length, name.get_text()
     finally:
         plt.close(ax.figure)
+
+
+def test_a_joint_name_keeps_off_the_sliding_block() -> None:
+    # "C, guide" was set over the slider's block, the block left out of what a
+    # joint's name keeps clear of
+    from assur.plotting._geometry import BLOCK_HALF
+
+    table = assur.forces(assur.load(EXAMPLES / "slider_crank_exercise.toml"), [45.0])
+    ax = plotting.draw(table, forces=True)
+    try:
+        ax.figure.canvas.draw()
+        renderer = ax.figure.canvas.get_renderer()
+        (name,) = [t for t in ax.texts if t.get_text() == "C, guide"]
+        size = float(table.plan.scale)
+        # the guide is along x: the block is a rectangle about C, axis-aligned
+        c = np.array([table["C.x"][0], table["C.y"][0]])
+        half = np.array(BLOCK_HALF) * size
+        low, high = ax.transData.transform(np.array([c - half, c + half]))
+        box = label_box(name, renderer)
+        apart = (
+            box[2] <= low[0]
+            or high[0] <= box[0]
+            or box[3] <= low[1]
+            or high[1] <= box[1]
+        )
+        assert apart, (box, low, high)
+    finally:
+        plt.close(ax.figure)

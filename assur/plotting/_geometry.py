@@ -17,6 +17,8 @@ if TYPE_CHECKING:
     from assur.plan import Plan
     from assur.plotting._context import _Context, _Pose
 
+BLOCK_HALF = (0.05, 0.024)
+"""Half length and half height of a sliding block, in sizes of the mechanism."""
 JOINT_TURNS = np.radians([45, 135, 90, 0, 180, 225, 315, 270])
 """Directions tried for a joint's label, in order of preference, rad."""
 
@@ -137,19 +139,38 @@ def _extent(
 def _skeleton(ctx: _Context, pose: _Pose, bodies: set[int]) -> np.ndarray:
     """Sample points along every bar, edge and guide drawn (to keep labels off them)."""
     samples = []
+    segments = [(g[0], g[1]) for g in _shape(ctx, pose, 0).guides]
     for body in bodies:
         if body == 0 or ctx.hidden(body):
             continue
         shape = _shape(ctx, pose, body)
-        segments = [
+        segments += [
             (a, b) for i, a in enumerate(shape.points) for b in shape.points[i + 1 :]
         ]
         segments += [(g[0], g[1]) for g in shape.guides]
-        for a, b in segments:
-            count = max(2, int(np.hypot(*(b - a)) / ctx.r) + 1)
-            samples.append(a + np.outer(np.linspace(0.0, 1.0, count), b - a))
+        # a sliding block's outline: a joint's name was set over the block
+        segments += _block_edges(ctx, shape.blocks)
         samples += [np.array(shape.points).reshape(-1, 2)]
+    for a, b in segments:
+        count = max(2, int(np.hypot(*(b - a)) / ctx.r) + 1)
+        samples.append(a + np.outer(np.linspace(0.0, 1.0, count), b - a))
     return np.vstack(samples) if samples else np.zeros((0, 2))
+
+
+def _block_edges(
+    ctx: _Context, blocks: list[tuple[np.ndarray, np.ndarray]]
+) -> list[tuple[np.ndarray, np.ndarray]]:
+    """Return the four edges of each sliding block (as :func:`_draw_block` draws it)."""
+    edges = []
+    for centre, e in blocks:
+        n = np.array([-e[1], e[0]])
+        half_l, half_h = BLOCK_HALF[0] * ctx.size, BLOCK_HALF[1] * ctx.size
+        corners = [
+            centre + sl * half_l * e + sh * half_h * n
+            for sl, sh in ((1, 1), (-1, 1), (-1, -1), (1, -1))
+        ]
+        edges += [(corners[k - 1], corners[k]) for k in range(4)]
+    return edges
 
 
 def _anchor(ctx: _Context, pose: _Pose, body: int) -> np.ndarray:

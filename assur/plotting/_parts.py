@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur.plotting._geometry import _area, _farthest, _hull, _shape
+from assur.plotting._geometry import BLOCK_HALF, _area, _farthest, _hull, _shape
 from assur.plotting._style import FAINT, GROUND_COLOR
 
 if TYPE_CHECKING:
@@ -207,7 +207,7 @@ def _draw_block(
     from matplotlib.patches import Polygon
 
     n = np.array([-e[1], e[0]])
-    half_l, half_h = 0.05 * ctx.size, 0.024 * ctx.size
+    half_l, half_h = BLOCK_HALF[0] * ctx.size, BLOCK_HALF[1] * ctx.size
     corners = [
         centre + sl * half_l * e + sh * half_h * n
         for sl, sh in ((-1, -1), (1, -1), (1, 1), (-1, 1))
