@@ -86,3 +86,18 @@ def test_the_report_draws_reactions_in_the_pictures_colour() -> None:
     assert "stroke: data.forces.colour" in page
     # its free-body strip is draw_free_body's: the same names
     assert reaction_symbol("crank", "rod") in page
+
+
+def test_a_rubbing_guide_side_is_its_normal_force() -> None:
+    # with friction the polygon draws the guide's normal force and its friction
+    # force as two sides, as the note does: F_{ground,slider} (their sum, in the
+    # other pictures) named the normal part alone
+    table = assur.forces(assur.load(EXAMPLES / "slider_crank_friction.toml"), [45.0])
+    fig = plotting.force_polygons(table)
+    try:
+        texts = {t.get_text(): t for t in fig.axes[0].texts}
+        assert reaction_symbol("ground", "slider") not in texts
+        for name in ("$\\vec N_{\\text{guide}}$", "$\\vec F_{f,\\text{guide}}$"):
+            assert to_hex(texts[name].get_color()) == REACTION_COLOUR
+    finally:
+        plt.close(fig)

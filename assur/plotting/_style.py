@@ -68,3 +68,18 @@ def math_name(text: str) -> str:
 def titled(mechanism: Any) -> str:
     """Return a mechanism's name for a title, drawn as written ("Mechanism" if none)."""
     return literal(mechanism.name or "Mechanism")
+
+
+def load_colour(tex: str) -> str:
+    """Return the colour of a known load (the note's TeX), as the other pictures'.
+
+    A reaction of a link solved before (``F_{i,j}``, a guide's normal force ``N``
+    and its friction force ``F_f``) is drawn as every reaction is; inertia loads
+    and the other loads in their colours of the mechanism drawings.
+    """
+    tex = tex.removeprefix("-")
+    if tex.startswith("\\vec F_{i,"):
+        return INERTIA_COLOR
+    if tex.startswith(("\\vec F_{", "\\vec N_")):
+        return REACTION_COLOR
+    return LOAD_COLOR

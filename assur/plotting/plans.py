@@ -20,6 +20,7 @@ from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
 from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
+from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend, _place
 from assur.plotting._geometry import _nice
@@ -30,6 +31,7 @@ from assur.plotting._style import (
     REACTION_COLOR,
     REACTION_LEGEND,
     literal,
+    load_colour,
     titled,
 )
 
@@ -221,13 +223,17 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
         # a sliding pair's reaction is its normal part: its friction force is listed
         for load in link_loads(pos, body, solved, [p.name for p in pair]):
             if math.hypot(*load.force) > 0:  # a couple is no side of the polygon
-                sequence.append((_symbol(load.tex), load.force, _colour(load.tex)))
+                sequence.append((_symbol(load.tex), load.force, load_colour(load.tex)))
         for p in pair:
             r = rec.reactions[p.name]
             sign = 1.0 if p.second == body else -1.0
             f = sign * np.array([float(np.ravel(r.fx)[0]), float(np.ravel(r.fy)[0])])
             other = p.first if p.second == body else p.second
             symbol = reaction_symbol(pos.link(other), pos.link(body))
+            if p.kind == "P" and p.friction > 0.0:
+                # its normal part only, as the note names it: F_f is its own side
+                normal = f"\\vec N_{{{tex_name(p.name)}}}"
+                symbol = _symbol(normal if sign > 0 else "-" + normal)
             sequence.append((symbol, f, REACTION_COLOR))
     mu = _scale([f for _, f, _ in sequence])
     tip = np.zeros(2)
@@ -262,21 +268,6 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
     shown = {c for _, _, c in sequence}
     entries = [(text, c) for c, text in kinds.items() if c in shown]
     _legend(ax, entries, f"μF = {mu:g} N/mm")
-
-
-def _colour(tex: str) -> str:
-    """Return the colour of a known load (the note's TeX), as the other pictures'.
-
-    A reaction of a link solved before (``F_{i,j}``, a guide's normal force ``N``
-    and its friction force ``F_f``) is drawn as every reaction is; inertia loads
-    and the other loads in their colours of the mechanism drawings.
-    """
-    tex = tex.removeprefix("-")
-    if tex.startswith("\\vec F_{i,"):
-        return INERTIA_COLOR
-    if tex.startswith(("\\vec F_{", "\\vec N_")):
-        return REACTION_COLOR
-    return LOAD_COLOR
 
 
 def _outer(pos: Position, rec: Any, body: int) -> list[Any]:
