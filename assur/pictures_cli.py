@@ -48,6 +48,7 @@ from assur._picture_files import (
     _save,
     _wrote,
 )
+from assur._picture_panels import motion_figure, slides_figure
 from assur._picture_plans import PLANS as PLANS  # still assur.pictures_cli.PLANS
 from assur._picture_plans import _cmd_plans
 from assur._picture_sweeps import (
@@ -60,7 +61,6 @@ from assur._picture_sweeps import (
 )
 from assur._text import counted
 from assur.errors import AssurError, AssurWarning, UsageError
-from assur.plotting._style import titled
 
 __all__ = ["register"]
 
@@ -96,7 +96,9 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         action="store_true",
         help="draw inertia loads, joint reactions and balancing load",
     )
-    p.add_argument("--scale", type=float, metavar="N", help="force scale: N per cm")
+    p.add_argument(
+        "--scale", type=float, metavar="N", help="force scale: N per cm on the axes"
+    )
     p.add_argument(
         "--group",
         type=int,
@@ -243,51 +245,6 @@ def _cmd_diagrams(args: argparse.Namespace) -> int:
     return 0
 
 
-def _panels(
-    plotting: Any, plt: Any, table: Any, names: Any, quantities: tuple[str, ...]
-) -> Any:
-    """Return a figure of ``quantities`` of ``names``, a panel each, over the sweep.
-
-    ``names`` None: every moving link. The panels share the driver's axis.
-    """
-    fig, axes = plt.subplots(
-        len(quantities), 1, figsize=(8.0, 9.0), sharex=True, layout="constrained"
-    )
-    for ax, quantity in zip(axes, quantities, strict=True):
-        plotting.plot_motion(table, names, quantity=quantity, ax=ax)
-        ax.set_title("")
-    for ax in axes[:-1]:
-        ax.set_xlabel("")
-    # the panels draw the same lines: one legend beside them, where it covers none
-    handles, labels = axes[0].get_legend_handles_labels()
-    for ax in axes:
-        if ax.get_legend() is not None:
-            ax.get_legend().remove()
-    if handles:
-        fig.legend(handles, labels, loc="outside right upper", fontsize=8)
-    return fig
-
-
-def _motion(plotting: Any, plt: Any, table: Any) -> Any:
-    """Return the figure of the links' angles, angular speeds and accelerations."""
-    fig = _panels(plotting, plt, table, None, ("angle", "omega", "alpha"))
-    title = f"{titled(table.mechanism)}: motion of the links"
-    fig.axes[0].set_title(title, fontsize=10)
-    return fig
-
-
-def _slides(plotting: Any, plt: Any, table: Any, joints: list[str]) -> Any:
-    """Return the figure of the prismatic pairs' slides, speeds and accelerations.
-
-    For a slider-crank the slider's stroke is the motion that matters, and the
-    links' angles leave it out.
-    """
-    fig = _panels(plotting, plt, table, joints, ("s", "v", "a"))
-    title = f"{titled(table.mechanism)}: slides of the prismatic pairs"
-    fig.axes[0].set_title(title, fontsize=10)
-    return fig
-
-
 def _diagrams(
     plotting: Any,
     plt: Any,
@@ -302,10 +259,10 @@ def _diagrams(
     """
     from assur._progress import progress
 
-    figures = {"motion": lambda: _motion(plotting, plt, table)}
+    figures = {"motion": lambda: motion_figure(plotting, plt, table)}
     sliding = [j.name for j in table.mechanism.joints if j.kind == "prismatic"]
     if sliding:
-        figures["slides"] = lambda: _slides(plotting, plt, table, sliding)
+        figures["slides"] = lambda: slides_figure(plotting, plt, table, sliding)
     figures |= {
         "paths": lambda: plotting.plot_paths(table).figure,
         "decomposition": lambda: plotting.draw_decomposition(table),

@@ -606,10 +606,10 @@ def test_the_slides_diagram_draws_each_prismatic_pair_s_motion() -> None:
     angles) left it out."""
     import assur
     from assur import plotting
-    from assur.pictures_cli import _slides
+    from assur._picture_panels import slides_figure
 
     table = assur.kinematics(assur.catalog.slider_crank(), np.arange(0.0, 360.0, 15.0))
-    fig = _slides(plotting, plt, table, ["guide"])
+    fig = slides_figure(plotting, plt, table, ["guide"])
     try:
         for ax, part in zip(fig.axes, ("s", "v", "a"), strict=True):
             (line,) = ax.lines
@@ -624,10 +624,10 @@ def test_the_stacked_panels_share_one_legend_beside_them() -> None:
     """Each of motion.png's panels had its legend, over the ten-bar's curves."""
     import assur
     from assur import plotting
-    from assur.pictures_cli import _motion
+    from assur._picture_panels import motion_figure
 
     table = assur.kinematics(assur.load(TENBAR), np.arange(0.0, 360.0, 10.0))
-    fig = _motion(plotting, plt, table)
+    fig = motion_figure(plotting, plt, table)
     try:
         assert all(ax.get_legend() is None for ax in fig.axes)
         (legend,) = fig.legends

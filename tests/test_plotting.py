@@ -203,7 +203,7 @@ def test_draw_forces_arrows_and_scale(slider_crank: assur.Table) -> None:
     plan = compile_plan(slider_crank.mechanism)
     # a reaction per joint, a balancing torque, inertia force and torque of the rod
     assert len(arrows) >= len(plan.pairs) + 3
-    assert "force scale: 1 cm = 500 N" in _legend_texts(ax)
+    assert "force scale: 1 cm on the axes = 500 N" in _legend_texts(ax)
 
 
 def test_force_arrows_carry_the_table_values(slider_crank: assur.Table) -> None:

@@ -296,7 +296,9 @@ def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
 def _scale_text(arrows: Iterable[_Arrow], scale: float) -> str:
     """Return the legend's note of the force scale, in the forces' unit."""
     units = dict.fromkeys(a.units[0] for a in arrows if a.force is not None)
-    return f"force scale: 1 cm = {scale:g} {' or '.join(units)}"
+    # the drawing is in the mechanism's metres: a centimetre read on its axes,
+    # not on the page (whose size the viewer chooses)
+    return f"force scale: 1 cm on the axes = {scale:g} {' or '.join(units)}"
 
 
 def _scale(arrows: Iterable[_Arrow], size: float) -> float:
