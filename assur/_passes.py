@@ -21,6 +21,7 @@ from assur._evaluate import SHORT
 from assur._loads import compile_loads
 from assur._paths import PathBranches
 from assur._progress import progress
+from assur._reach import unreached
 from assur._state import CHUNK
 from assur._troubles import _unexplained
 from assur._vec import Array, Mask, gather
@@ -84,6 +85,8 @@ def _solve_slice(
     # failed or dead-centre positions carry NaN through; _report names them
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         bodies, found = _kin.solve(plan, drive, *rates, top=top, branch_of=branch_of)
+        # a closed-form group assembles where the mechanism cannot go too
+        found += unreached(plan, drive, found)
         kin = _kin.state_of(plan, bodies, drive, rates, top)
         fields = None
         if loads is not None:

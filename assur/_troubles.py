@@ -14,6 +14,7 @@ import numpy as np
 
 from assur._branches import branches
 from assur._paths import path_changes
+from assur._reach import reach
 from assur._text import position_text
 from assur._vec import Array, Mask, is_array
 from assur.errors import (
@@ -26,7 +27,7 @@ from assur.plan import Plan
 
 SKIPPED_WHY = (
     "where a group cannot be assembled, stands at a dead centre or is locked by "
-    "friction"
+    "friction, or that the mechanism cannot reach from its reference pose"
 )
 """What the positions ``skip_unassembled`` leaves out have in common."""
 
@@ -53,9 +54,12 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
             mask = _all_failures(troubles, n, trouble.group, trouble.what)
             first = int(np.flatnonzero(mask)[0])
             where = _where(plan, given[first])
+            if trouble.what == "unreached":
+                raise AssemblyError(_unreached(plan, given, mask, trouble.group))
             if trouble.what == "assembly":
-                # where the mechanism assembles, whatever else stops it there
+                # where the mechanism assembles and goes, whatever else stops it there
                 closes = ~_all_failures(troubles, n, what="assembly")
+                closes &= ~_all_failures(troubles, n, what="unreached")
                 good = _ranges(plan, given, closes)
                 msg = (
                     f"group {trouble.group}: cannot be assembled at driver position "
@@ -143,6 +147,54 @@ def _around(plan: Plan, given: Array, group: str, mask: Mask, ok: Mask) -> str:
         "turning the other way round from the reference pose "
         f"({_where(plan, np.array([reference]))}); the group cannot follow the crank "
         f"to them the short way (its branch folds {' and '.join(limits)})"
+    )
+
+
+def _unreached(plan: Plan, given: Array, mask: Mask, group: str) -> str:
+    """Return the error of positions the mechanism cannot reach (one driver).
+
+    Names the first of them, the barrier on its way from the reference pose and the
+    range of positions reached (:mod:`assur._reach`).
+    """
+    span = reach(plan)
+    assert span is not None
+    d = plan.drivers[0]
+
+    def at(x: float) -> str:
+        # a barrier found by root finding lands within rounding of a round number
+        value = round(math.degrees(x) if d.kind == "R" else x / plan.scale, 6)
+        value = value if d.kind == "R" else value * plan.scale
+        return _where(plan, np.array([value + 0.0]))
+
+    row = given[int(np.flatnonzero(mask)[0])]
+    x = math.radians(row[0]) if d.kind == "R" else float(row[0])
+    barrier = (span.above if x > d.reference else span.below) or span.above
+    barrier = barrier or span.below
+    assert barrier is not None
+    if barrier.kind == "assembly":
+        why = (
+            "is on another circuit of the mechanism: it cannot reach it from its "
+            f"reference pose at {at(d.reference)} (the group cannot be assembled "
+            f"between about {at(barrier.start)} and {at(barrier.end)})"
+        )
+    else:
+        why = (
+            "is beyond a dead centre of the group: the mechanism cannot reach it from "
+            f"its reference pose at {at(d.reference)} (the group is at a dead centre "
+            f"at about {at(barrier.start)}, which the driver cannot carry it through)"
+        )
+    if span.below is None:
+        expected = f"up to about {at(span.last)}"
+    elif span.above is None:
+        expected = f"from about {at(span.first)}"
+    else:
+        expected = f"from about {at(span.first)} to {at(span.last)}"
+    if span.period is not None:
+        expected += " (or whole turns from them)"
+    return (
+        f"group {group}: driver position {_where(plan, row)} {why} "
+        f"({int(mask.sum())} of {mask.shape[0]} positions); expected positions "
+        f"{expected}"
     )
 
 

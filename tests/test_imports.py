@@ -64,6 +64,8 @@ RANKS = {
     "assur._drive": 5,
     "assur._branches": 6,
     "assur._paths": 6,
+    # the driver positions one driver reaches from the reference pose, scanned once
+    "assur._reach": 6,
     "assur.kinetostatics": 6,
     # the reverse pass checked again: virtual power, every link's equilibrium
     "assur._crosscheck": 6,

@@ -27,6 +27,7 @@ __all__ = [
     "jacobian",
     "linear_step",
     "set_pose",
+    "signed_conditioning",
     "solve2",
 ]
 
@@ -100,10 +101,21 @@ def jacobian(plan: DyadSolver, bodies: list[Motion]) -> Jacobian:
 def conditioning(plan: DyadSolver, jac: Jacobian) -> Any:
     """Sine of the angle between the Jacobian's columns: 0 at a dead centre.
 
-    The sine does not change when a column is scaled, so the units of the links'
-    coordinates (rad or m) do not matter; a prismatic pair's normal equation is divided
-    by the mechanism's size ``scale`` (m) to weigh like its rotation equation. For an
-    RRR dyad the measure is the sine of the transmission angle.
+    The absolute value of :func:`signed_conditioning`.
+    """
+    return np.abs(signed_conditioning(plan, jac))
+
+
+def signed_conditioning(plan: DyadSolver, jac: Jacobian) -> Any:
+    """Signed sine of the angle between the Jacobian's columns (its determinant's sign).
+
+    The sign changes only where the pose passes a dead centre (or a change point,
+    where the branch changes): :mod:`assur._reach` finds the dead centres a sweep
+    would pass between two grid points. The sine does not change when a column is
+    scaled, so the units of the links' coordinates (rad or m) do not matter; a
+    prismatic pair's normal equation is divided by the mechanism's size ``scale`` (m)
+    to weigh like its rotation equation. For an RRR dyad the measure is the sine of
+    the transmission angle.
     """
     j00, j01, j10, j11 = jac
     # a pose that does not close (parallel slide lines, say) has infinite entries:
@@ -112,7 +124,7 @@ def conditioning(plan: DyadSolver, jac: Jacobian) -> Any:
         if plan.mid.kind == "P":
             j10, j11 = j10 / plan.scale, j11 / plan.scale
         det = j00 * j11 - j01 * j10
-        return np.abs(det) / np.sqrt((j00 * j00 + j10 * j10) * (j01 * j01 + j11 * j11))
+        return det / np.sqrt((j00 * j00 + j10 * j10) * (j01 * j01 + j11 * j11))
 
 
 def solve2(jac: Jacobian, r0: Any, r1: Any) -> tuple[Any, Any]:
