@@ -11,7 +11,7 @@ import sys
 from typing import Any
 
 from assur._cli_common import load_mechanism, positions, quiet
-from assur._troubles import SKIPPED_WHY
+from assur._troubles import SKIPPED_WHY, UNREACHED_WHY, skipped_why
 from assur.errors import AssemblyError, UsageError
 
 
@@ -20,7 +20,7 @@ def _skip_option(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--skip-unassembled",
         action="store_true",
-        help=f"leave out the positions {SKIPPED_WHY}",
+        help=f"leave out the positions {SKIPPED_WHY}, {UNREACHED_WHY}",
     )
 
 
@@ -56,13 +56,13 @@ def _table(mech: Any, positions: Any, forces: bool, skip: bool = False) -> Any:
     return _some_kept(analyse(mech, positions, skip_unassembled=skip))
 
 
-def _say_skipped(args: argparse.Namespace, skipped: Any) -> None:
-    """Note the positions left out of the sweep (``--skip-unassembled``), if any."""
+def _say_skipped(args: argparse.Namespace, skipped: Any, plan: Any) -> None:
+    """Note the positions left out of the sweep of ``plan`` (``--skip-unassembled``)."""
     from assur._sliced import Skipped
 
     if len(skipped) and not quiet(args):
         found = Skipped()
-        found.add(skipped)
+        found.add(skipped, plan)
         print(found.note(args.file), file=sys.stderr)
 
 
@@ -71,7 +71,8 @@ def _some_kept(table: Any) -> Any:
     if len(table) or not len(table.skipped):
         return table
     msg = (
-        f"every position of the sweep is left out ({SKIPPED_WHY}); expected "
+        f"every position of the sweep is left out "
+        f"({skipped_why(table.plan, table.skipped)}); expected "
         "positions where the mechanism moves"
     )
     raise AssemblyError(msg)

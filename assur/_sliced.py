@@ -22,7 +22,7 @@ import numpy as np
 from assur._drive import positions, to_si
 from assur._output import path_text
 from assur._state import CHUNK as SWEEP_SLICE
-from assur._troubles import SKIPPED_WHY, _change_points
+from assur._troubles import _change_points, skipped_why
 from assur._vec import Array, full
 from assur.columns import balancing_columns
 from assur.errors import (
@@ -72,9 +72,12 @@ class Skipped:
     count: int = 0
     values: list[float] = field(default_factory=list)
     more: bool = False
+    why: str = ""
 
-    def add(self, positions: Array) -> None:
-        """Count the positions left out of one slice."""
+    def add(self, positions: Array, plan: Any = None) -> None:
+        """Count the positions left out of one slice (of the mechanism ``plan``)."""
+        why = skipped_why(plan, positions)
+        self.why = why if len(why) > len(self.why) else self.why
         self.count += len(positions)
         flat = np.ravel(positions)
         room = SKIPPED_SHOWN - len(self.values)
@@ -87,7 +90,7 @@ class Skipped:
         more = ", ..." if self.more else ""
         return (
             f"assur: note: {path_text(source)}: left out {self.count} "
-            f"position(s) {SKIPPED_WHY}: {shown}{more}"
+            f"position(s) {self.why}: {shown}{more}"
         )
 
 
@@ -149,7 +152,7 @@ def slices(
             except FAILURES:
                 near.give_before_error(given[chunk:], chunk)
                 raise
-        skipped.add(table.skipped)
+        skipped.add(table.skipped, table.plan)
         angles = angles or _Angles(table)
         yield Slice(table, angles.carry(table))
         del table  # one slice in memory at a time

@@ -27,9 +27,29 @@ from assur.plan import Plan
 
 SKIPPED_WHY = (
     "where a group cannot be assembled, stands at a dead centre or is locked by "
-    "friction, or that the mechanism cannot reach from its reference pose"
+    "friction"
 )
 """What the positions ``skip_unassembled`` leaves out have in common."""
+UNREACHED_WHY = "or that the mechanism cannot reach from its reference pose"
+"""Added to :data:`SKIPPED_WHY` when some of them are beyond a barrier (see
+:mod:`assur._reach`)."""
+
+
+def skipped_why(plan: Plan | None, skipped: Array) -> str:
+    """Return why the positions ``skipped`` (as given, deg or m) were left out.
+
+    :data:`SKIPPED_WHY`, and :data:`UNREACHED_WHY` when some of them lie beyond a
+    barrier of ``plan`` (a position there may also fail to assemble: it is beyond
+    the barrier all the same).
+    """
+    span = None if plan is None or len(plan.drivers) != 1 else reach(plan)
+    if span is None or not len(skipped):
+        return SKIPPED_WHY
+    x = np.ravel(skipped)
+    x = np.radians(x) if plan is not None and plan.drivers[0].kind == "R" else x
+    if span.reached(x).all():
+        return SKIPPED_WHY
+    return f"{SKIPPED_WHY}, {UNREACHED_WHY}"
 
 
 def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask | None:

@@ -41,7 +41,7 @@ from assur._cli_process import (
 from assur._cli_sweep import _sweep
 from assur._output import path_text, write_stdout
 from assur._text import describe, suggest
-from assur._troubles import SKIPPED_WHY
+from assur._troubles import SKIPPED_WHY, UNREACHED_WHY
 from assur.errors import (
     AssurError,
     AssurWarning,
@@ -127,7 +127,7 @@ def _parser() -> tuple[_Parser, list[str]]:
         p.add_argument(
             "--skip-unassembled",
             action="store_true",
-            help=f"leave out the positions {SKIPPED_WHY}",
+            help=f"leave out the positions {SKIPPED_WHY}, {UNREACHED_WHY}",
         )
     p.add_argument(
         "--summary",

@@ -239,7 +239,7 @@ def _cmd_diagrams(args: argparse.Namespace) -> int:
     with _figures() as plt, output_folder(out, any_error=True) as folder:
         written = _diagrams(plotting, plt, table, folder, dpi, _show(args))
     _clear_stale(out, written, [f"{name}.png" for name in DIAGRAMS])
-    _say_skipped(args, table.skipped)
+    _say_skipped(args, table.skipped, table.plan)
     for name in written:
         _wrote(args, path_text(out / name))
     return 0
@@ -336,7 +336,7 @@ def _cmd_animate(args: argparse.Namespace) -> int:
             dpi=dpi,
             progress=_show(args),
         )
-    _say_skipped(args, skipped)
+    _say_skipped(args, skipped, table.plan)
     _wrote(args, f"{path_text(output)} ({count} frames)")
     return 0
 

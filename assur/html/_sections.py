@@ -14,7 +14,7 @@ import numpy as np
 
 from assur._structure import Structure
 from assur._text import roman, row_position
-from assur._troubles import SKIPPED_WHY
+from assur._troubles import skipped_why
 from assur.analysis import Table
 from assur.html._data import all_groups, public
 from assur.html._series import table_columns
@@ -70,7 +70,8 @@ def meta_html(struct: Structure, table: Table, data: dict[str, Any]) -> str:
     if table.skipped.size:
         total = len(table) + table.skipped.shape[0]
         parts.append(
-            f"{table.skipped.shape[0]} of {total} positions left out ({SKIPPED_WHY})"
+            f"{table.skipped.shape[0]} of {total} positions left out "
+            f"({skipped_why(table.plan, table.skipped)})"
         )
     return " · ".join(escape(p) for p in parts)
 

@@ -1,0 +1,174 @@
+"""Positions a one-driver mechanism cannot reach from its reference pose (assur._reach).
+
+A closed-form dyad is assembled at each position on its reference branch; a position
+on another circuit of a non-Grashof four-bar, or past a PRP dyad's dead centre (its
+pin at infinity), used to come out assembled there without a word. The four-bar's
+rows are checked against a continuation of its own by small Newton steps.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import assur
+from assur._reach import reach
+from assur.cli import main
+from assur.plan import plan_of
+
+from .conftest import DATA, EXAMPLES
+
+EDGE = DATA / "edge"
+CIRCUITS = EDGE / "crank_rocker_two_circuits.toml"
+PRP = EDGE / "prp_dead_centre.toml"
+PRP45 = EDGE / "prp_dead_centre_45.toml"
+
+
+def _continued(mech: assur.Mechanism, step_deg: float = 0.05) -> dict[float, float]:
+    """Follow the four-bar from its reference pose by small Newton steps.
+
+    Returns the rocker's angle (deg) at every input angle reached (deg), both ways
+    from the reference pose until the loop no longer closes.
+    """
+    at = {j.name: np.array(j.at, dtype=float) for j in mech.joints}
+    o2, a0, b0, o4 = at["O2"], at["A"], at["B"], at["O4"]
+    crank = float(np.hypot(*(a0 - o2)))
+    coupler = float(np.hypot(*(b0 - a0)))
+    rocker = float(np.hypot(*(b0 - o4)))
+    phi0 = math.degrees(math.atan2(*(a0 - o2)[::-1]))
+    out = {}
+    for sign in (1.0, -1.0):
+        b = b0.copy()
+        for k in range(int(360.0 / step_deg)):
+            phi = phi0 + sign * k * step_deg
+            t = math.radians(phi)
+            a = o2 + crank * np.array([math.cos(t), math.sin(t)])
+            for _ in range(30):
+                f = np.array(
+                    [(b - a) @ (b - a) - coupler**2, (b - o4) @ (b - o4) - rocker**2]
+                )
+                jac = 2.0 * np.array([b - a, b - o4])
+                if abs(np.linalg.det(jac)) < 1e-6:
+                    break
+                b = b - np.linalg.solve(jac, f)
+            if not np.max(np.abs(f)) < 1e-14:
+                break
+            out[round(phi, 6)] = math.degrees(math.atan2(*(b - o4)[::-1]))
+    return out
+
+
+def test_another_circuit_is_an_error_naming_the_group_and_the_range():
+    mech = assur.load(CIRCUITS)
+    with pytest.raises(assur.AssemblyError) as caught:
+        assur.forces(mech, [30.0, 300.0])
+    text = str(caught.value)
+    assert text.startswith(
+        "group RRR (coupler, rocker): driver position 300 deg is on another circuit "
+        "of the mechanism: it cannot reach it from its reference pose at 30 deg"
+    )
+    assert "cannot be assembled between about 119.5 deg and 263 deg" in text
+    assert "expected positions from about 16 deg to 119 deg" in text
+
+
+def test_another_circuit_is_left_out_and_the_rows_kept_follow_the_motion():
+    mech = assur.load(CIRCUITS)
+    angles = np.arange(30.0, 391.0, 10.0)
+    table = assur.forces(mech, angles, skip_unassembled=True)
+    np.testing.assert_array_equal(table["angle"], [*range(30, 111, 10), 380, 390])
+    np.testing.assert_array_equal(table.skipped, np.arange(120.0, 371.0, 10.0))
+    path = _continued(mech)
+    keys = np.array(sorted(path))
+    # the circuit of the reference pose: input angles 15.9 to 119.4 deg
+    assert 119.0 < keys.max() < 120.0
+    assert 15.5 < keys.min() < 16.5
+    for angle, rocker in zip(table["angle"], table["rocker.angle"], strict=True):
+        # the same input angle a whole number of turns away, on the continued path
+        phi = angle - 360.0 * round((angle - 30.0) / 360.0)
+        near = keys[np.argmin(np.abs(keys - phi))]
+        assert abs(near - phi) < 0.03
+        gap = (rocker - path[float(near)] + 180.0) % 360.0 - 180.0
+        assert abs(gap) < 0.1, (angle, rocker, path[float(near)])
+
+
+def test_the_sweep_of_both_circuits_names_where_the_mechanism_assembles():
+    mech = assur.load(CIRCUITS)
+    with pytest.raises(
+        assur.AssemblyError, match=r"it assembles for 30 deg to 110 deg; 380"
+    ):
+        assur.kinematics(mech, np.arange(30.0, 391.0, 10.0))
+
+
+def test_the_command_line_leaves_another_circuit_out_and_says_why(capsys):
+    status = main(
+        [
+            "forces",
+            str(CIRCUITS),
+            "--angles",
+            "30:390:10",
+            "--skip-unassembled",
+            "--csv",
+            "-",
+        ]
+    )
+    out, err = capsys.readouterr()
+    assert status == 0, err
+    rows = [line.split(",")[0] for line in out.splitlines()[1:]]
+    assert [float(r) for r in rows] == [*range(30, 111, 10), 380, 390]
+    assert "left out 26 position(s)" in err
+    assert "or that the mechanism cannot reach from its reference pose" in err
+
+
+@pytest.mark.parametrize("path", [PRP, PRP45], ids=["60", "45"])
+def test_a_sweep_past_a_dead_centre_it_does_not_hit_is_an_error(path):
+    mech = assur.load(path)
+    angles = [60.0, 100.0, 170.0, 185.5, 200.0]
+    with pytest.raises(assur.AssemblyError) as caught:
+        assur.kinematics(mech, angles)
+    assert str(caught.value).startswith(
+        "group PRP (block, ram): driver position 185.5 deg is beyond a dead centre of "
+        "the group"
+    )
+    assert "at a dead centre at about 180 deg" in str(caught.value)
+    table = assur.kinematics(mech, angles, skip_unassembled=True)
+    np.testing.assert_array_equal(table["angle"], [60.0, 100.0, 170.0])
+    np.testing.assert_array_equal(table.skipped, [185.5, 200.0])
+
+
+@pytest.mark.parametrize("path", [PRP, PRP45], ids=["60", "45"])
+def test_the_dynamic_model_of_a_crank_that_cannot_turn_fully_is_an_error(path):
+    mech = assur.load(path)
+    failures = (assur.AssemblyError, assur.SingularConfigurationError)
+    expected = r"the crank cannot make a full turn: group PRP \(block, ram\)"
+    with pytest.raises(failures, match=expected):
+        assur.flywheel(mech, 0.05)
+    with pytest.raises(failures, match=expected):
+        assur.dynamics(mech)
+
+
+def test_a_crank_that_turns_fully_has_no_barrier():
+    for path in (
+        EXAMPLES / "four_bar.toml",
+        EXAMPLES / "tenbar.toml",
+        EDGE / "five_bar_parallelogram.toml",
+    ):
+        assert reach(plan_of(assur.load(path))) is None, path
+
+
+@pytest.mark.parametrize(
+    "mech",
+    [
+        assur.load(EDGE / "class3_parallelogram.toml"),
+        assur.catalog.four_bar(crank=0.05, coupler=0.1, rocker=0.05, frame=0.1),
+    ],
+    ids=["triad-and-dyad", "four-bar"],
+)
+def test_a_parallelogram_passes_its_change_points(mech):
+    assert reach(plan_of(mech)) is None
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)
+        # its change points (0 and 180 deg for the four-bar) are not hit: dead centres
+        table = assur.kinematics(mech, np.arange(0.25, 720.0, 0.5))
+    assert table.skipped.size == 0
