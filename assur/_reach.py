@@ -2,12 +2,12 @@
 
 A closed-form dyad is assembled at each position on its reference branch: it does not
 follow the motion. A position the mechanism cannot reach without being taken apart
-(another circuit of a non-Grashof four-bar, or the far side of a PRP dyad's dead
-centre, where its pin goes off to infinity) is then assembled all the same. The
-driver's range around the reference pose is scanned once per plan for barriers (a
-closed-form group that fails or is singular, or whose Jacobian's determinant changes
-sign between two grid points); :func:`unreached` marks the positions beyond them for
-the forward pass, a trouble of kind "unreached".
+(another circuit of a four-bar whose input only rocks, or the far side of a PRP
+dyad's dead centre, where its pin goes off to infinity) is then assembled all the
+same. The driver's range around the reference pose is scanned once per plan for
+barriers (a closed-form group that fails or is singular, or whose Jacobian's
+determinant changes sign between two grid points); :func:`unreached` marks the
+positions beyond them for the forward pass, a trouble of kind "unreached".
 """
 
 from __future__ import annotations
@@ -22,11 +22,10 @@ from assur._branches import SIZES, SLIDER_POINTS, STEP, branches, change_points
 from assur._follow import BranchOf
 from assur._kinematics import Trouble, solve
 from assur._vec import Array, Mask
-from assur.groups._coordinates import jacobian, signed_conditioning
 from assur.groups._motion import Motion
 from assur.plan import Plan
 
-__all__ = ["Barrier", "Reach", "reach", "unreached"]
+__all__ = ["Barrier", "Reach", "beyond", "reach", "unreached"]
 
 TURN = 2.0 * math.pi
 """A crank's turn, rad; it is scanned one turn either side of the reference pose."""
@@ -115,6 +114,28 @@ def unreached(plan: Plan, drive: Array, found: list[Trouble]) -> list[Trouble]:
     return troubles
 
 
+def beyond(plan: Plan, drive: Array) -> Mask:
+    """Return where driver positions ``drive`` (n, 1) are marked "unreached".
+
+    Those beyond a barrier where every group assembles, away from dead centres: the
+    positions :func:`unreached` gives a trouble of their own (rad or m).
+    """
+    span = reach(plan)
+    if span is None or drive.shape[1] != 1:
+        return np.zeros(drive.shape[0], dtype=bool)
+    out = ~span.reached(drive[:, 0])
+    if out.any():
+        branch_of = _branches_of(plan) if change_points(plan) is not None else None
+        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+            found = solve(plan, drive[out], (0.0,), (0.0,), 0, branch_of)[1]
+        far = np.ones(int(out.sum()), dtype=bool)
+        for trouble in found:
+            if trouble.what in BARRIERS:
+                far &= ~trouble.mask
+        out[out] = far
+    return out  # type: ignore[no-any-return]
+
+
 def _grid(plan: Plan) -> tuple[Array, float | None]:
     """Return the scan's driver positions (rad or m) and a crank's period."""
     d = plan.drivers[0]
@@ -137,7 +158,8 @@ def _scan(plan: Plan) -> Reach | None:
         bodies, found = solve(plan, grid[:, None], (0.0,), (0.0,), 0, branch_of)
     barriers = _failed(plan, grid, found, cps)
     for g, solver in enumerate(plan.solvers):
-        if solver.newton:
+        # a family without a signed conditioning: only its failures are barriers
+        if solver.newton or not hasattr(solver, "signed_conditioning"):
             continue
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             det = _determinant(solver, bodies)
@@ -198,8 +220,8 @@ def _singular(found: list[Trouble], plan: Plan, g: int, i: int) -> bool:
 
 
 def _determinant(solver: Any, bodies: list[Motion]) -> Any:
-    """Return a closed-form dyad's signed conditioning (its determinant's sign)."""
-    return signed_conditioning(solver, jacobian(solver, bodies))
+    """Return a closed-form group's signed conditioning (its determinant's sign)."""
+    return solver.signed_conditioning(bodies)
 
 
 def _sign_changes(grid: Array, det: Array, cps: Array) -> list[tuple[float, float]]:

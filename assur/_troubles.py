@@ -14,7 +14,7 @@ import numpy as np
 
 from assur._branches import branches
 from assur._paths import path_changes
-from assur._reach import reach
+from assur._reach import beyond, reach
 from assur._text import position_text
 from assur._vec import Array, Mask, is_array
 from assur.errors import (
@@ -39,15 +39,14 @@ def skipped_why(plan: Plan | None, skipped: Array) -> str:
     """Return why the positions ``skipped`` (as given, deg or m) were left out.
 
     :data:`SKIPPED_WHY`, and :data:`UNREACHED_WHY` when some of them lie beyond a
-    barrier of ``plan`` (a position there may also fail to assemble: it is beyond
-    the barrier all the same).
+    barrier of ``plan`` where every group assembles (those that fail to assemble
+    there are told by the first).
     """
-    span = None if plan is None or len(plan.drivers) != 1 else reach(plan)
-    if span is None or not len(skipped):
+    if plan is None or len(plan.drivers) != 1 or reach(plan) is None:
         return SKIPPED_WHY
     x = np.ravel(skipped)
-    x = np.radians(x) if plan is not None and plan.drivers[0].kind == "R" else x
-    if span.reached(x).all():
+    x = np.radians(x) if plan.drivers[0].kind == "R" else x
+    if not beyond(plan, x[:, None]).any():
         return SKIPPED_WHY
     return f"{SKIPPED_WHY}, {UNREACHED_WHY}"
 

@@ -83,8 +83,9 @@ def kinematics(
         several drivers).
     skip_unassembled : bool
         Leave out the positions where a group cannot be assembled, stands at a dead
-        centre or is locked by friction, instead of raising; ``Table.skipped`` lists
-        them.
+        centre or is locked by friction, or that the mechanism cannot reach from its
+        reference pose (one driver: see :mod:`assur._reach`), instead of raising;
+        ``Table.skipped`` lists them.
     columns : sequence of str, optional
         Compute only these columns (and ``angle``). A table of the drivers' columns
         alone (``["driver.torque"]``, say) keeps none of the links' motions or
@@ -101,7 +102,9 @@ def kinematics(
     ------
     AssemblyError, SingularConfigurationError
         At the first driver position where a group cannot close or is at a dead
-        centre, naming the group.
+        centre, naming the group; an AssemblyError too at a position the mechanism
+        cannot reach from its reference pose (another circuit, or past a dead
+        centre), naming the group that stops it and the positions it reaches.
     UsageError
         When an argument cannot be used (shape, values, unknown column).
 
@@ -141,7 +144,8 @@ def forces(
         position, replacing the file's constants, as in :func:`kinematics`.
     skip_unassembled : bool
         Leave out the positions where a group cannot be assembled, stands at a dead
-        centre or is locked by friction, instead of raising.
+        centre or is locked by friction, or that the mechanism cannot reach from its
+        reference pose, instead of raising.
     columns : sequence of str, optional
         Compute only these columns (and ``angle``), as in :func:`kinematics`.
     progress : bool or callable, optional
@@ -161,7 +165,8 @@ def forces(
         its centre of mass or inertia, or a load table does not cover the sweep.
     AssemblyError, SingularConfigurationError, SelfLockingError
         At the first driver position where a group cannot close, is at a dead centre
-        or is locked by friction, naming the group.
+        or is locked by friction, naming the group; an AssemblyError too at a
+        position the mechanism cannot reach from its reference pose.
     UsageError
         When an argument cannot be used (shape, values, unknown column).
 

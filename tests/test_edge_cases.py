@@ -479,22 +479,23 @@ def test_a_dyad_after_a_triad_stays_a_parallelogram(step):
 
 
 def test_where_it_assembles_is_told_in_order_for_positions_out_of_order():
-    """The runs were taken in the order given: "300 deg to 45 deg; 330 deg to 40 deg;
-    280 deg" for a double rocker that assembles from 30 to 60 and 264 to 336 deg."""
+    """The runs were taken in the order given: "420 deg to 45 deg; 430 deg to 40 deg;
+    400 deg" for a double rocker that assembles from 24 to 96 deg (a turn on, 384 to
+    456 deg) on the circuit of its reference pose."""
     mech = assur.catalog.four_bar(
         crank=0.1, coupler=0.05, rocker=0.08, frame=0.1, angle=60.0
     )
-    at = [300.0, 45.0, 0.0, 330.0, 40.0, 180.0, 280.0]
+    at = [420.0, 45.0, 0.0, 430.0, 40.0, 180.0, 400.0]
     with pytest.raises(assur.AssemblyError) as caught:
         assur.kinematics(mech, at)
     assert str(caught.value).endswith(
-        "it assembles for 40 deg to 45 deg; 280 deg to 330 deg"
+        "it assembles for 40 deg to 45 deg; 400 deg to 430 deg"
     ), str(caught.value)
     # in order, the runs are as they were
     with pytest.raises(assur.AssemblyError) as caught:
         assur.kinematics(mech, sorted(at, reverse=True))
     assert str(caught.value).endswith(
-        "it assembles for 330 deg to 280 deg; 45 deg to 40 deg"
+        "it assembles for 430 deg to 400 deg; 45 deg to 40 deg"
     ), str(caught.value)
 
 

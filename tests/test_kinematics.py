@@ -346,7 +346,9 @@ def test_two_drivers(case):
 
 def long_crank_four_bar() -> tuple[assur.Mechanism, np.ndarray, np.ndarray]:
     """A four-bar whose crank (0.12 m) is too long to turn fully, the positions of one
-    turn in steps of 1 degree from 60, and which of them assemble (closed form)."""
+    turn in steps of 1 degree from 60, and which of them it reaches: the closed form
+    closes there, on the reference pose's circuit (the run of closing positions
+    around 60 degrees; its dyad closes on another circuit too)."""
     crank, coupler, rocker, frame = 0.12, 0.12, 0.08, 0.10
     mech = assur.catalog.four_bar(
         crank=crank, coupler=coupler, rocker=rocker, frame=frame, angle=60.0
@@ -355,7 +357,11 @@ def long_crank_four_bar() -> tuple[assur.Mechanism, np.ndarray, np.ndarray]:
     diagonal = np.sqrt(
         crank**2 + frame**2 - 2 * crank * frame * np.cos(np.radians(angles))
     )
-    ok = (diagonal <= coupler + rocker) & (diagonal >= abs(coupler - rocker))
+    closes = (diagonal <= coupler + rocker) & (diagonal >= abs(coupler - rocker))
+    # the run from the first position up, and the one that comes back to it from
+    # the end of the turn
+    ok = np.cumprod(closes).astype(bool) | np.cumprod(closes[::-1])[::-1].astype(bool)
+    assert ok.sum() < closes.sum()  # the other circuit is left out
     return mech, angles, ok
 
 

@@ -1,9 +1,9 @@
 """Positions a one-driver mechanism cannot reach from its reference pose (assur._reach).
 
 A closed-form dyad is assembled at each position on its reference branch; a position
-on another circuit of a non-Grashof four-bar, or past a PRP dyad's dead centre (its
-pin at infinity), used to come out assembled there without a word. The four-bar's
-rows are checked against a continuation of its own by small Newton steps.
+on another circuit of a four-bar whose input only rocks, or past a PRP dyad's dead
+centre (its pin at infinity), used to come out assembled there without a word. The
+four-bar's rows are checked against a continuation of its own by small Newton steps.
 """
 
 from __future__ import annotations

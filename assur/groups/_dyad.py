@@ -28,6 +28,7 @@ from assur.groups._coordinates import (
     jacobian,
     linear_step,
     set_pose,
+    signed_conditioning,
     solve2,
 )
 from assur.groups._motion import Motion, point
@@ -152,6 +153,14 @@ class DyadSolver:
     def derivative(self, bodies: list[Motion], k: int, lin: Linearization) -> None:
         """Solve level ``k`` (1 velocity, 2 acceleration, 3 jerk) of both links."""
         derivative(self, bodies, k, lin.jacobian)
+
+    def signed_conditioning(self, bodies: list[Motion]) -> Any:
+        """Return the conditioning with its determinant's sign (see assur._reach).
+
+        Optional in the protocol: a closed-form family that offers it has the
+        dead centres it passes between two positions found.
+        """
+        return signed_conditioning(self, jacobian(self, bodies))
 
     def equilibrium(self, bodies: list[Motion], loads: list[Wrench]) -> Equilibrium:
         """Solve the dyad's three reactions in closed form."""
