@@ -45,7 +45,9 @@ class Trouble:
 
     Group ``group`` failed (``what``: "assembly", "singular"), came near a dead
     centre ("near") or was reached the other way round the crank's circle ("other
-    way": the short way its branch folds before the position).
+    way": the short way its branch folds before the position). The passes add
+    "unreached" (:mod:`assur._reach`): the group stops the mechanism before the
+    position, which it assembles on another circuit or past a dead centre.
     """
 
     group: str
