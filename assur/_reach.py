@@ -200,13 +200,10 @@ def _failed(plan: Plan, grid: Array, found: list[Trouble], cps: Array) -> list[B
     if not bad.any():
         return []
     # the runs of consecutive grid points that fail, each of its first group
-    edges = np.flatnonzero(np.diff(bad.astype(np.int8)) != 0) + 1
-    starts = np.r_[0, edges][bad[np.r_[0, edges]]]
+    steps = np.diff(np.r_[False, bad, False].astype(np.int8))
+    starts, ends = np.flatnonzero(steps == 1), np.flatnonzero(steps == -1) - 1
     out = []
-    for i in starts.tolist():
-        j = i
-        while j + 1 < bad.shape[0] and bad[j + 1]:
-            j += 1
+    for i, j in zip(starts.tolist(), ends.tolist(), strict=True):
         g = int(owner[i])
         kind = "singular" if i == j and _singular(found, plan, g, i) else "assembly"
         out.append(Barrier(g, kind, float(grid[i]), float(grid[j])))
