@@ -191,16 +191,18 @@ def _unreached(plan: Plan, given: Array, mask: Mask, group: str) -> str:
     barrier = barrier or span.below
     assert barrier is not None
     if barrier.kind == "assembly":
+        head = "is on another circuit of the mechanism"
         why = (
-            "is on another circuit of the mechanism: it cannot reach it from its "
-            f"reference pose at {at(d.reference)} (the group cannot be assembled "
-            f"between about {at(barrier.start)} and {at(barrier.end)})"
+            f"it cannot reach it from its reference pose at {at(d.reference)}; the "
+            f"group cannot be assembled between about {at(barrier.start)} and "
+            f"{at(barrier.end)}"
         )
     else:
+        head = "is beyond a dead centre of the group"
         why = (
-            "is beyond a dead centre of the group: the mechanism cannot reach it from "
-            f"its reference pose at {at(d.reference)} (the group is at a dead centre "
-            f"at about {at(barrier.start)}, which the driver cannot carry it through)"
+            "the mechanism cannot reach it from its reference pose at "
+            f"{at(d.reference)}; the group is at a dead centre at about "
+            f"{at(barrier.start)}, which the driver cannot carry it through"
         )
     if span.below is None:
         expected = f"up to about {at(span.last)}"
@@ -211,9 +213,9 @@ def _unreached(plan: Plan, given: Array, mask: Mask, group: str) -> str:
     if span.period is not None:
         expected += " (or whole turns from them)"
     return (
-        f"group {group}: driver position {_where(plan, row)} {why} "
-        f"({int(mask.sum())} of {mask.shape[0]} positions); expected positions "
-        f"{expected}"
+        f"group {group}: driver position {_where(plan, row)} {head} "
+        f"({int(mask.sum())} of {mask.shape[0]} positions): {why}; expected "
+        f"positions {expected}"
     )
 
 

@@ -67,7 +67,8 @@ def test_another_circuit_is_an_error_naming_the_group_and_the_range():
     text = str(caught.value)
     assert text.startswith(
         "group RRR (coupler, rocker): driver position 300 deg is on another circuit "
-        "of the mechanism: it cannot reach it from its reference pose at 30 deg"
+        "of the mechanism (1 of 2 positions): it cannot reach it from its reference "
+        "pose at 30 deg; "
     )
     assert "cannot be assembled between about 119.5 deg and 263 deg" in text
     assert "expected positions from about 16 deg to 119 deg" in text
