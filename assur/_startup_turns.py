@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._text import counted
+from assur._vec import Array
 from assur.dynamics_reduced import Reduced
 from assur.errors import ModelError
 from assur.model import Motor
@@ -30,6 +31,9 @@ WINDOW = 8
 which damps the noise of single turns' changes near the periodic motion."""
 MULTIPLIER_SAMPLES = 512
 """Samples of a turn the multiplier's integral is taken over (trapezoids)."""
+NOISE_MOST = 1e-6
+"""Changes of either sign larger than this fraction of the speed are not taken for
+the integration's scatter (a relative tolerance of 1e-10 a step)."""
 TRUST = 0.1
 """The turns still needed are told only while the ratio of successive changes would
 move by less than this fraction of ``1 - r`` over the rest of the approach."""
@@ -67,31 +71,40 @@ def _periodic(crossings: list[float], multiplier: Callable[[], float]) -> bool:
 
     Near its periodic motion the speed at the reference pose comes back each turn
     ``multiplier()`` times as far from its limit (:func:`_multiplier`, asked for
-    only once a turn's change is within the tolerance): what is left of the changes
-    must be below ``PERIODIC_RTOL`` of the speed. The ratio of the last two changes
-    is too noisy for that: on the slider-crank one came out 0.43 amid 0.72s (the
-    multiplier: 0.7135), and the motion was taken as periodic 3.9e-8 of its speed
-    from its limit. What the integration's error a turn (``RTOL`` a step) leaves
-    of the periodic speed, the changes cannot tell: they then wander either way.
+    only near it): what is left of the changes must be below ``PERIODIC_RTOL`` of
+    the speed. The ratio of the last two changes is too noisy for that: on the
+    slider-crank one came out 0.43 amid 0.72s (the multiplier: 0.7135), and the
+    motion was taken as periodic 3.9e-8 of its speed from its limit.
+
+    The flow keeps the order of speeds, so the changes keep one sign until they
+    are the integration's own scatter (2e-8 to 9e-8 of the speed on the six-bar
+    under a motor, whose steps span many knots of the model's splines). Changes of
+    either sign are that scatter: the speed is periodic once what the approach
+    leaves, at most the scatter carried on by the multiplier, is below the
+    tolerance or below the scatter the periodic speed has itself.
     """
     if len(crossings) < 3:
         return False
-    change = abs(crossings[-1] - crossings[-2])
-    limit = PERIODIC_RTOL * abs(crossings[-1])
-    if change > limit:
-        return False
-    if change == 0:
-        return True
     changes = np.diff(crossings[-(WINDOW + 1) :])
-    if not (changes * changes[-1] > 0).all():
-        # the flow keeps the order of speeds, so the changes keep one sign until
-        # they are the integration's noise: the speed is as periodic as it can tell
-        return bool(np.max(np.abs(changes)) <= limit)
+    limit = PERIODIC_RTOL * abs(crossings[-1])
+    if changes[-1] == 0:
+        return True
+    mixed = not (changes * changes[-1] > 0).all()
+    if not mixed and abs(changes[-1]) > limit:
+        return False
+    if mixed and np.max(np.abs(changes)) <= limit:
+        return True
     ratio = multiplier()
     if not math.isfinite(ratio):  # the crank stops for an instant each turn
         ratio = float(np.abs(changes[-1] / changes[0])) ** (1.0 / (len(changes) - 1))
     if not 0 <= ratio < 1:
         return False
+    if mixed:
+        scatter = _scatter(changes)
+        if scatter > NOISE_MOST * abs(crossings[-1]):
+            return False  # not an integration's scatter: no periodic motion yet
+        own = scatter / math.sqrt(1.0 - ratio * ratio)
+        return scatter * ratio / (1.0 - ratio) <= max(limit, own)
     # where each of the last turns' speeds, carried on by its change, says the
     # limit is: their mean damps one turn's error, which shifts its speed and its
     # change
@@ -99,6 +112,15 @@ def _periodic(crossings: list[float], multiplier: Callable[[], float]) -> bool:
     window = np.asarray(crossings[-changes.shape[0] :])
     limit_speed = float(np.mean(window + ahead * changes))
     return abs(limit_speed - crossings[-1]) <= limit
+
+
+def _scatter(changes: Array) -> float:
+    """Return the scatter of speeds whose turn-to-turn ``changes`` are noise.
+
+    Their rms over root 2: two independent scatters of size s make a change of
+    size s times root 2.
+    """
+    return float(np.sqrt(np.mean(changes * changes) / 2.0))
 
 
 def _multiplier(
@@ -149,7 +171,14 @@ def _not_settled(
         )
     else:
         more = _turns_left(runs.crossings)
-        if more is None:
+        changes = np.diff(runs.crossings[-(WINDOW + 1) :])
+        if changes.size > 1 and not (changes * changes[-1] > 0).all():
+            hint = (
+                "; its changes a turn go either way: the integration's scatter, "
+                f"about {_scatter(changes) / abs(last):.2g} of the speed, hides "
+                "where its periodic speed lies at the pace it approaches it"
+            )
+        elif more is None:
             hint = (
                 "; its change a turn does not shrink at a steady ratio yet (the "
                 "crank still gathering speed, say), so the turns it needs cannot be "
