@@ -16,7 +16,9 @@ from typing import Any
 
 import numpy as np
 
+from assur._change_limits import across_change_points
 from assur._checks import LARGEST
+from assur._drive import positions
 from assur._text import suggest
 from assur._vec import Array, real
 from assur.analysis import default_positions
@@ -25,6 +27,7 @@ from assur.dynamics_reduced import Reduced, check_dynamic, reduce, reduced_at
 from assur.dynamics_steady import Steady, steady_state
 from assur.errors import UsageError
 from assur.model import Mechanism
+from assur.plan import plan_of
 from assur.table import Columns, Table
 
 __all__ = [
@@ -258,7 +261,12 @@ def solved(mechanism: Mechanism, flywheel: float = 0.0) -> tuple[Reduced, Steady
 
 def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dynamics:
     """Return the table of ``steady`` at the crank angles ``angles`` (deg)."""
-    angle, inertia, slope, torque = reduced_at(mech, angles)
+    plan = plan_of(mech)
+    angle = positions(plan, angles)[:, 0]
+    # at a change point the sweep is singular: J, J' and M are its limits there
+    inertia, slope, torque = across_change_points(
+        plan, angle, lambda a: reduced_at(mech, a)[1:]
+    )
     inertia = inertia + steady.flywheel
     # the work is periodic: a turn taken off in degrees is exact, in radians of a
     # huge angle (1e15 deg, say) it is not

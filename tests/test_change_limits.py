@@ -67,3 +67,35 @@ def test_values_at_a_change_point_are_the_limits_of_its_sides():
     np.testing.assert_allclose(torque, expected, atol=1e-8)
     with pytest.raises(assur.SingularConfigurationError):
         evaluate(np.array([180.0]))
+
+
+def test_the_dynamics_table_at_the_default_angles():
+    """Its rows in 1 deg steps from 45 deg meet 180 deg: refused as a dead centre."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)
+        table = assur.dynamics(parallelogram())
+    assert 180.0 in table["angle"]
+    np.testing.assert_allclose(table["reduced.inertia"], INERTIA, rtol=1e-8)
+    np.testing.assert_allclose(table["reduced.inertia_slope"], 0.0, atol=1e-7 * INERTIA)
+
+
+@pytest.mark.parametrize("off", [0.001, 0.01])
+def test_a_grid_passing_near_a_change_point(off):
+    """The crank's reference pose 45.001 deg: the model's grid passes 1.7e-5 rad
+    from 180 deg, where the sweep's slope of J is 1.4 times J (rounding): the grid
+    was refined to 65536 points and J' still peaked at 0.17 J."""
+    text = (EDGE / "parallelogram_masses.toml").read_text(encoding="utf-8")
+    t = math.radians(45.0 + off)
+    ax, ay = 0.1 * math.cos(t), 0.1 * math.sin(t)
+    text = text.replace(
+        "at = [0.07071067811865475, 0.07071067811865475]", f"at = [{ax!r}, {ay!r}]"
+    ).replace(
+        "at = [0.37071067811865475, 0.07071067811865475]",
+        f"at = [{ax + 0.3!r}, {ay!r}]",
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)
+        model = reduce(assur.loads(text))
+    assert model.angle.shape[0] == 2048
+    np.testing.assert_allclose(model.inertia, INERTIA, rtol=1e-8)
+    assert np.max(np.abs(model.splines[0](model.angle, 1))) < 1e-6 * INERTIA
