@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._style import REACTION_COLOUR
 from assur._vec import full
 from assur.plotting._context import _unit
 from assur.plotting._friction import shown_point
@@ -25,7 +26,6 @@ from assur.plotting._style import (
     BALANCING_COLOR,
     INERTIA_COLOR,
     LOAD_COLOR,
-    REACTION_COLOR,
     math_name,
 )
 
@@ -267,7 +267,7 @@ def _reaction_arrow(
     shown = None
     if pair.kind == "R" and name in ctx.forces.friction:
         shown = shown_point(ctx, pose.at(pair.second, pair.d_second), q)
-    return _Arrow(label, q, f, m, REACTION_COLOR, units, kind, shown)
+    return _Arrow(label, q, f, m, REACTION_COLOUR, units, kind, shown)
 
 
 def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:

@@ -14,8 +14,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._style import REACTION_COLOUR
 from assur.plotting._geometry import _nice
-from assur.plotting._style import REACTION_COLOR
 
 if TYPE_CHECKING:
     from assur.plotting._context import _Context, _Pose
@@ -85,7 +85,7 @@ def draw_friction_circles(
                 fill=False,
                 ls="--",
                 lw=0.8,
-                color=REACTION_COLOR,
+                color=REACTION_COLOUR,
                 zorder=6,
                 gid=f"friction-circle-{k}",  # an SVG id: one of its own each
             )

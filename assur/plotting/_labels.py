@@ -88,9 +88,9 @@ LOAD_LABELS: weakref.WeakSet[Any] = weakref.WeakSet()
 (Held aside, not as a ``gid``: an SVG writes a gid as an element's id, which must
 be unique in a page.)"""
 SPREAD_STEPS = 40
+"""Most rounds in which :func:`spread_labels` pushes overlapping labels apart."""
 LEADER = 12.0
 """A label moved farther than this (points) is joined to its load by a thin line."""
-"""Most rounds in which :func:`spread_labels` pushes overlapping labels apart."""
 
 
 def spread_labels(ax: Any) -> None:

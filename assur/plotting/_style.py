@@ -10,8 +10,6 @@ BALANCING_COLOR = "#6a3d9a"
 """Colour of the balancing loads (the links' colours are in :mod:`assur._style`)."""
 GROUND_COLOR = "#333333"
 PLAIN_COLOR = "#4d4d4d"
-REACTION_COLOR = REACTION_COLOUR
-"""Colour of every joint reaction, in every picture and in the HTML report."""
 REACTION_LEGEND = (
     "reaction F\N{LATIN SUBSCRIPT SMALL LETTER I}\N{LATIN SUBSCRIPT SMALL LETTER J}:"
     " link i on link j (J.Fx, J.Fy)"
@@ -81,5 +79,5 @@ def load_colour(tex: str) -> str:
     if tex.startswith("\\vec F_{i,"):
         return INERTIA_COLOR
     if tex.startswith(("\\vec F_{", "\\vec N_")):
-        return REACTION_COLOR
+        return REACTION_COLOUR
     return LOAD_COLOR

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._structure import Group, Structure
+from assur._style import REACTION_COLOUR
 from assur._vec import integer
 from assur.errors import ModelError, UsageError
 from assur.model import GROUND
@@ -42,7 +43,6 @@ from assur.plotting._labels import spread_labels
 from assur.plotting._style import (
     INERTIA_COLOR,
     LOAD_COLOR,
-    REACTION_COLOR,
     REACTION_LEGEND,
     literal,
     titled,
@@ -217,7 +217,7 @@ def draw_free_body(
         ax,
         [
             (text, color),
-            (REACTION_LEGEND, REACTION_COLOR),
+            (REACTION_LEGEND, REACTION_COLOUR),
             ("inertia force and torque", INERTIA_COLOR),
             ("gravity, external load", LOAD_COLOR),
             *[(friction_legend(ctx), "")] * bool(rubbing),

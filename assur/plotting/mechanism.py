@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._style import REACTION_COLOUR
 from assur.plotting._axes import _frame_axes, _legend, _new_axes
 from assur.plotting._bars import clear_bars
 from assur.plotting._context import (
@@ -39,7 +40,6 @@ from assur.plotting._style import (
     GROUND_COLOR,
     INERTIA_COLOR,
     LOAD_COLOR,
-    REACTION_COLOR,
     REACTION_LEGEND,
     literal,
     titled,
@@ -150,7 +150,7 @@ def _draw_row(
         seen += _draw_arrows(ax, ctx, arrows, scale, "names" if labels else None)
         applied = any(a.kind in ("gravity", "load") for a in arrows)
         entries += [
-            (REACTION_LEGEND, REACTION_COLOR),
+            (REACTION_LEGEND, REACTION_COLOUR),
             ("inertia force and torque", INERTIA_COLOR),
             *[("gravity, external load", LOAD_COLOR)] * applied,
             ("balancing load", BALANCING_COLOR),

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._style import REACTION_COLOUR
 from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
 from assur.explain._position import Position, from_table
@@ -28,7 +29,6 @@ from assur.plotting._mathtext import _symbol, reaction_symbol
 from assur.plotting._style import (
     INERTIA_COLOR,
     LOAD_COLOR,
-    REACTION_COLOR,
     REACTION_LEGEND,
     literal,
     load_colour,
@@ -234,7 +234,7 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
                 # its normal part only, as the note names it: F_f is its own side
                 normal = f"\\vec N_{{{tex_name(p.name)}}}"
                 symbol = _symbol(normal if sign > 0 else "-" + normal)
-            sequence.append((symbol, f, REACTION_COLOR))
+            sequence.append((symbol, f, REACTION_COLOUR))
     mu = _scale([f for _, f, _ in sequence])
     tip = np.zeros(2)
     for label, f, color in sequence:
@@ -261,7 +261,7 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
     )
     # the colours of the mechanism drawings, so a reaction reads alike in both
     kinds = {
-        REACTION_COLOR: REACTION_LEGEND,
+        REACTION_COLOUR: REACTION_LEGEND,
         INERTIA_COLOR: "inertia force",
         LOAD_COLOR: "gravity, external load",
     }
