@@ -29,7 +29,7 @@ from assur._vec import Array
 from assur._walk import flipped
 from assur.plan import Plan
 
-__all__ = ["ChangePoints", "branches", "change_points", "closed", "lowest"]
+__all__ = ["ChangePoints", "branches", "change_points", "closed", "gaps", "lowest"]
 
 STEP = math.radians(0.5)
 """Grid step of the scan of a crank, rad."""
@@ -140,6 +140,7 @@ def _scan(plan: Plan) -> ChangePoints | None:
         grid = d.reference + np.linspace(-half, half, SLIDER_POINTS)
         period = None
     flips: dict[int, Array] = {}
+    gaps: dict[int, Array] = {}
     # one pass over the grid: each group is assembled on the branches its change
     # points give it before the next group's discriminant is taken
     n = grid.shape[0]
@@ -150,12 +151,15 @@ def _scan(plan: Plan) -> ChangePoints | None:
             values = solver.discriminant(bodies)
             if values is not None:
                 values = np.broadcast_to(values, (n,))
-                points = _touches(plan, grid, values, flips, g)
+                points, dips = _touches(plan, grid, values, flips, g)
                 if points.size:
                     flips[g] = points
+                if dips.size:
+                    gaps[g] = dips
             _assemble(plan, bodies, grid, flips, g)
     # anchors walked on the branches of a part of the change points are not kept
     plan.memo.pop("scan-anchors", None)
+    plan.memo["gaps"] = gaps
     if not flips:
         return None
     found = tuple(flips.get(g, np.zeros(0)) for g in range(len(plan.solvers)))
@@ -183,13 +187,17 @@ def _discriminants(
 
 def _touches(
     plan: Plan, grid: Array, values: Array, flips: dict[int, Array], g: int
-) -> Array:
-    """Locate where group ``g``'s discriminant touches zero between grid points."""
+) -> tuple[Array, Array]:
+    """Locate where group ``g``'s discriminant touches zero between grid points.
+
+    Also where it dips below zero there: a gap where the group cannot be assembled,
+    narrower than the grid's step (see :func:`gaps`).
+    """
     inner = values[1:-1]
     low = (inner <= values[:-2]) & (inner <= values[2:]) & (np.abs(inner) < CANDIDATE)
     index = np.flatnonzero(low) + 1
     if index.size == 0:
-        return np.zeros(0)
+        return np.zeros(0), np.zeros(0)
 
     def discriminant(x: Array) -> Array:
         found = _discriminants(plan, x, flips, g)
@@ -199,7 +207,18 @@ def _touches(
     middle, minimum = lowest(discriminant, grid[index - 1], grid[index + 1])
     # a touch, not a dip below zero (where the dyad stops: no branch beyond)
     touch = np.abs(minimum) <= TOUCH
-    return np.sort(middle[touch])
+    return np.sort(middle[touch]), np.sort(middle[minimum < -TOUCH])
+
+
+def gaps(plan: Plan) -> dict[int, Array]:
+    """Return where each dyad's discriminant dips below zero between grid points.
+
+    Driver positions (rad or m) by solver index, found by the scan for change points
+    (:func:`change_points`, one driver): each lies in a gap where the dyad cannot be
+    assembled, which the grid may step over (narrower than 0.5 deg of a crank).
+    """
+    change_points(plan)
+    return plan.memo.get("gaps", {})  # type: ignore[no-any-return]
 
 
 def lowest(f: Callable[[Array], Array], a: Array, b: Array) -> tuple[Array, Array]:

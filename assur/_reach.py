@@ -18,7 +18,14 @@ from typing import Any
 
 import numpy as np
 
-from assur._branches import SIZES, SLIDER_POINTS, STEP, branches, change_points
+from assur._branches import (
+    SIZES,
+    SLIDER_POINTS,
+    STEP,
+    branches,
+    change_points,
+    gaps,
+)
 from assur._follow import BranchOf
 from assur._kinematics import Trouble, solve
 from assur._vec import Array, Mask
@@ -157,6 +164,9 @@ def _scan(plan: Plan) -> Reach | None:
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         bodies, found = solve(plan, grid[:, None], (0.0,), (0.0,), 0, branch_of)
     barriers = _failed(plan, grid, found, cps)
+    # gaps narrower than the grid's step, found where a discriminant dips below zero
+    for g, where in gaps(plan).items():
+        barriers += [Barrier(g, "assembly", float(x), float(x)) for x in where]
     for g, solver in enumerate(plan.solvers):
         # a family without a signed conditioning: only its failures are barriers
         if solver.newton or not hasattr(solver, "signed_conditioning"):

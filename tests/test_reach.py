@@ -173,3 +173,69 @@ def test_a_parallelogram_passes_its_change_points(mech):
         # its change points (0 and 180 deg for the four-bar) are not hit: dead centres
         table = assur.kinematics(mech, np.arange(0.25, 720.0, 0.5))
     assert table.skipped.size == 0
+
+
+def _narrow_gap(reference: float) -> assur.Mechanism:
+    """A four-bar that cannot be assembled for input angles within 0.196 deg of 0.
+
+    Input 0.3, coupler 0.25, rocker 0.20499, frame 0.255: the coupler and rocker
+    reach 0.45499 at most, 0.04501 at least, and the input's pin comes 0.045 from the
+    rocker's pivot at 0 deg. Its two circuits are a gap of 0.39 deg apart: the scan's
+    grid of 0.5 deg steps over it when the reference pose is 30.25 deg.
+    """
+    a, b, c, d = 0.3, 0.25, 0.20499, 0.255
+    t = math.radians(reference)
+    ax, ay = a * math.cos(t), a * math.sin(t)
+    dx, dy = d - ax, -ay
+    r = math.hypot(dx, dy)
+    along = (b * b - c * c + r * r) / (2 * r)
+    h = math.sqrt(b * b - along * along)
+    bx, by = ax + (along * dx - h * dy) / r, ay + (along * dy + h * dx) / r
+    text = f"""
+format = 1
+name = "narrow gap"
+[links.input]
+axis = ["O2", "A"]
+[links.coupler]
+axis = ["A", "B"]
+[links.rocker]
+axis = ["O4", "B"]
+[joints.O2]
+kind = "revolute"
+links = ["ground", "input"]
+at = [0.0, 0.0]
+[joints.A]
+kind = "revolute"
+links = ["input", "coupler"]
+at = [{ax!r}, {ay!r}]
+[joints.B]
+kind = "revolute"
+links = ["coupler", "rocker"]
+at = [{bx!r}, {by!r}]
+[joints.O4]
+kind = "revolute"
+links = ["ground", "rocker"]
+at = [{d!r}, 0.0]
+[[drivers]]
+joint = "O2"
+omega = 10.0
+"""
+    return assur.loads(text)
+
+
+@pytest.mark.parametrize("reference", [30.0, 30.25])
+def test_a_gap_narrower_than_the_scan_s_step_is_a_barrier(reference):
+    """With the reference at 30.25 deg no grid point fell in the gap: the rows at
+    -1 and -10 deg came out on the other circuit (the rocker reversed, -180 deg)."""
+    mech = _narrow_gap(reference)
+    found = reach(plan_of(mech))
+    assert found is not None
+    assert math.degrees(found.low) == pytest.approx(0.0, abs=0.2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)  # near a dead centre
+        table = assur.kinematics(
+            mech, [reference, 10.0, 1.0, -1.0, -10.0], skip_unassembled=True
+        )
+        np.testing.assert_array_equal(table["angle"], [reference, 10.0, 1.0])
+        with pytest.raises(assur.AssemblyError, match="is on another circuit"):
+            assur.kinematics(mech, [reference, -10.0])
