@@ -132,8 +132,11 @@ def _near(batch: Many, drive: Array) -> Mask:
     :func:`assur._branches.change_points` scans a grid for minima of each dyad's
     discriminant below :data:`~assur._branches.CANDIDATE`; a variant whose
     discriminants stay above it on that grid all along its path (and a step beyond)
-    has none there, and its sweep keeps the reference pose's branches. Variants
-    driven beyond the scanned window are marked too. ``batch`` holds the variants,
+    has none there, and its sweep keeps the reference pose's branches. A PRP or RPP
+    dyad has no discriminant: a variant whose dyad's determinant changes sign along
+    its path (a dead centre it cannot pass, its positions beyond it out of reach,
+    see :mod:`assur._reach`) is marked too, and so are variants driven beyond the
+    scanned window. ``batch`` holds the variants,
     each over its ``drive`` positions.
     """
     reference = batch.references
@@ -156,13 +159,17 @@ def _near(batch: Many, drive: Array) -> Mask:
         plan = batch.again(length)
     else:
         plan = restack(batch.plan, m, length)
-    near = np.concatenate(
-        [
-            _below(plan, reference, steps[p * length : (p + 1) * length])
-            for p in range(parts)
-        ],
-        axis=1,
-    )
+    found = [
+        _below(plan, reference, steps[p * length : (p + 1) * length])
+        for p in range(parts)
+    ]
+    near = np.concatenate([f[0] for f in found], axis=1)
+    # a dyad's determinant of the other sign than at the reference pose: a dead
+    # centre lies between (a PRP dyad's pin at infinity has no discriminant)
+    zero = int(np.flatnonzero(steps == 0)[0])
+    for g in range(len(found[0][1])):
+        sign = np.concatenate([f[1][g] for f in found], axis=1)
+        near |= sign * sign[:, zero : zero + 1] < 0.0
     # only the grid's points along each variant's own path count
     along = (steps[None, :] >= np.floor(low / STEP)[:, None] - 1) & (
         steps[None, :] <= np.ceil(high / STEP)[:, None] + 1
@@ -170,18 +177,34 @@ def _near(batch: Many, drive: Array) -> Mask:
     return outside | (near & along).any(axis=1)
 
 
-def _below(plan: Plan, reference: Array, steps: Array) -> Mask:
-    """Mark the grid's points (k, steps) where a discriminant is below CANDIDATE."""
+def _below(plan: Plan, reference: Array, steps: Array) -> tuple[Mask, list[Array]]:
+    """Mark the grid's points (k, steps) where a discriminant is below CANDIDATE.
+
+    Also return the sign of the Jacobian's determinant there (k, steps) of each
+    closed-form dyad that has no discriminant, one array per dyad.
+    """
+    k = reference.shape[0]
     grid = (reference[:, None] + steps[None, :] * STEP).reshape(-1, 1)
     n = grid.shape[0]
     bodies = _kin.drivers(plan, grid, (0.0,), (0.0,))
     near = np.zeros(n, dtype=bool)
+    signs = []
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        last = len(plan.solvers) - 1
         for i, solver in enumerate(plan.solvers):
             values = solver.discriminant(bodies)
             if values is not None:
                 near |= ~(np.broadcast_to(values, (n,)) >= CANDIDATE)
-            # a group is assembled only for the discriminants of those after it
-            if i < len(plan.solvers) - 1:
+            # the determinant of a closed-form dyad without a discriminant (PRP,
+            # RPP): one with a discriminant meets its dead centres where that is 0
+            signed = getattr(solver, "signed_conditioning", None)
+            if solver.newton or values is not None:
+                signed = None
+            # a group is assembled for the discriminants of those after it, and a
+            # dyad for its own determinant
+            if signed is not None or i < last:
                 solver.assemble(bodies, n)
-    return near.reshape(reference.shape[0], -1)
+            if signed is not None:
+                det = np.broadcast_to(signed(bodies), (n,))
+                signs.append(np.sign(det).reshape(k, -1))
+    return near.reshape(k, -1), signs

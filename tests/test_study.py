@@ -689,3 +689,25 @@ def test_progress_counts_the_variants_done():
     # no bar, no call: the library is quiet unless asked
     quiet = assur.sweep(catalog.slider_crank, parameters, np.arange(0.0, 360.0, 30.0))
     assert quiet.summary.equals(study.summary)
+
+
+def _prp(ram: float) -> assur.Mechanism:
+    """The PRP dyad of tests/data/edge: its crank cannot pass 0 and 180 deg."""
+    mech = assur.load(Path(__file__).parent / "data" / "edge" / "prp_dead_centre.toml")
+    links = tuple(
+        dataclasses.replace(link, mass=ram) if link.name == "ram" else link
+        for link in mech.links
+    )
+    return dataclasses.replace(mech, links=links)
+
+
+def test_a_variant_beyond_a_dead_centre_between_its_positions_fails_as_alone():
+    """Positions 100 and 200 deg of a PRP dyad whose reference pose is 60 deg: a
+    dead centre at 180 lies between, with no discriminant to show it, and no
+    position near it. The batch summed the far side's numbers without a word."""
+    angles = [60.0, 100.0, 200.0]
+    study = assur.sweep(_prp, {"ram": [1.0, 2.0]}, angles)
+    with pytest.raises(assur.AssemblyError) as caught:
+        assur.forces(_prp(2.0), angles)
+    for error in study.summary["error"].tolist():
+        assert error == f"AssemblyError: {caught.value}"
