@@ -8,7 +8,9 @@ summarised as it is analysed; :func:`summarize` does it for one table.
 
 Means and RMS values are over the table's positions: they are time averages over a
 cycle when the positions are equally spaced over a whole cycle and the driver turns
-at a constant speed (the default sweep of one turn in 1 degree steps is).
+at a constant speed (the default sweep of one turn in 1 degree steps is). A crank's
+sweep that ends a whole number of turns on from its first position (``0:360:10``)
+ends on its first pose again, and that pose counts once.
 """
 
 from __future__ import annotations
@@ -35,6 +37,8 @@ class _Running:
     bottom: Array
     total: Array
     squares: Array
+    last: Array
+    """The values at the last position added (see :meth:`Summary.results`)."""
 
     @classmethod
     def start(cls, variants: int) -> _Running:
@@ -43,6 +47,7 @@ class _Running:
             np.full(variants, -math.inf),
             np.full(variants, math.nan),
             np.full(variants, math.inf),
+            np.zeros(variants),
             np.zeros(variants),
             np.zeros(variants),
         )
@@ -61,6 +66,7 @@ class _Running:
         self.bottom = np.fmin(self.bottom, np.min(values, axis=1))
         self.total = self.total + np.sum(values, axis=1)
         self.squares = self.squares + np.einsum("ij,ij->i", values, values)
+        self.last = values[:, -1]
 
 
 @dataclass
@@ -85,6 +91,12 @@ class Summary:
     _ideal: Any = 0.0
     _losses: dict[str, Any] = field(default_factory=dict)
     _rubbing: bool = False
+    _crank: bool = False
+    """One revolute driver: a sweep may end where it began, a turn on."""
+    _ends: list[float] = field(default_factory=list)
+    """The first and the last driver position added (deg)."""
+    _tail: dict[str, Any] = field(default_factory=dict)
+    """The sums' terms of the last position added, by the sum's name."""
 
     def add(self, table: Any) -> None:
         """Add the positions of ``table``, a forces table (one slice of a sweep).
@@ -114,18 +126,28 @@ class Summary:
             running.add(np.asarray(table[name]).reshape(shape), where)
         forces = table.force_state
         state = table.state
+        tail: dict[str, Any] = {"power": 0.0, "ideal": 0.0}
         for i, driver in enumerate(table.plan.drivers):
             speed = full(state.speed[i], n)
             power = full(forces.balancing[i], n) * speed
             self._power = self._power + _sums(power, shape)
+            tail["power"] = tail["power"] + _lasts(power, shape)
             name = driver.pair.name
             if name in self._own:
                 self._own[name] = self._own[name] + _sums(power, shape)
+                tail[name] = _lasts(power, shape)
             if self._rubbing:
                 ideal = full(forces.ideal[i], n) * speed
                 self._ideal = self._ideal + _sums(ideal, shape)
+                tail["ideal"] = tail["ideal"] + _lasts(ideal, shape)
         for name, power in friction_powers(table).items():
             self._losses[name] = self._losses.get(name, 0.0) - _sums(power, shape)
+            tail[f"{name}.friction"] = -_lasts(power, shape)
+        if shape[1]:
+            self._tail = tail
+            self._ends[:] = [*self._ends[:1], float(where[0, -1])]
+            if len(self._ends) == 1:  # the first slice: its first position too
+                self._ends.insert(0, float(where[0, 0]))
 
     def _start(self, table: Any) -> None:
         """Name the summary's values after the table's columns."""
@@ -150,6 +172,7 @@ class Summary:
                 units[f"{driver.pair.name}.power.mean"] = "W"
                 self._own[driver.pair.name] = 0.0
         self._rubbing = any(p.friction > 0.0 for p in plan.pairs.values())
+        self._crank = len(plan.drivers) == 1 and plan.drivers[0].kind == "R"
         if self._rubbing:
             for name, pair in plan.pairs.items():
                 if pair.friction > 0.0 and not pair.virtual:
@@ -181,31 +204,75 @@ class Summary:
         if not n:
             msg = "summary: the table has no positions to summarise"
             raise UsageError(msg)
+        # a sweep that ends a whole turn on from where it began (0:360:10) ends on
+        # its first pose again: counted twice, it tipped a cycle's mean power
+        closing = self._closes()
+        if closing:
+            n -= 1
+        tail = self._tail if closing else {}
+
+        def less(total: Any, key: str) -> Any:
+            return total - tail[key] if closing else total
+
         out: dict[str, Array] = {}
         for name, r in self._joints.items():
             out[f"{name}.F.max"] = r.top
             out[f"{name}.F.at"] = r.at
-            out[f"{name}.F.rms"] = np.sqrt(r.squares / n)
+            out[f"{name}.F.rms"] = np.sqrt(_cut(r.squares, r.last**2, closing) / n)
         for name, r in self._drivers.items():
             out[f"{name}.max"] = r.top
             out[f"{name}.min"] = r.bottom
-            out[f"{name}.mean"] = r.total / n
-            out[f"{name}.rms"] = np.sqrt(r.squares / n)
-        out["driver.power.mean"] = _per_variant(self._power / n, self.variants)
-        for name, power in self._own.items():
-            out[f"{name}.power.mean"] = _per_variant(power / n, self.variants)
+            out[f"{name}.mean"] = _cut(r.total, r.last, closing) / n
+            out[f"{name}.rms"] = np.sqrt(_cut(r.squares, r.last**2, closing) / n)
+        power = less(self._power, "power")
+        out["driver.power.mean"] = _per_variant(power / n, self.variants)
+        for name, own in self._own.items():
+            out[f"{name}.power.mean"] = _per_variant(less(own, name) / n, self.variants)
         if self._rubbing:
-            for name, loss in self._losses.items():
+            losses = {
+                name: less(loss, f"{name}.friction")
+                for name, loss in self._losses.items()
+            }
+            for name, loss in losses.items():
                 out[f"{name}.friction.loss"] = _per_variant(loss / n, self.variants)
-            lost = _per_variant(sum(self._losses.values()) / n, self.variants)
+            lost = _per_variant(sum(losses.values()) / n, self.variants)
             out["friction.loss"] = lost
-            ideal = _per_variant(self._ideal / n, self.variants)
+            ideal = _per_variant(less(self._ideal, "ideal") / n, self.variants)
             out["driver.power_ideal.mean"] = ideal
             power = out["driver.power.mean"]
             out["efficiency"] = np.array(
                 [efficiency(*v) for v in zip(power, ideal, lost, strict=True)]
             )
         return out
+
+    def _closes(self) -> bool:
+        """Whether the positions end a whole number of turns on from where they began.
+
+        One revolute driver, more than one position: the last is then the first
+        pose again.
+        """
+        if not self._crank or self.count < 2 or len(self._ends) != 2:
+            return False
+        first, last = self._ends
+        turns = (last - first) / 360.0
+        return last != first and abs(turns - round(turns)) <= 1e-12 * max(
+            1.0, abs(turns)
+        )
+
+
+def _cut(total: Array, last: Array, closing: bool) -> Array:
+    """Return ``total`` less the last position's term ``last`` when ``closing``."""
+    return total - last if closing else total
+
+
+def _lasts(values: Array, shape: tuple[int, int]) -> Array:
+    """Return each variant's value at its last position (a table of variants).
+
+    Zeros for a table of no positions.
+    """
+    if not shape[1]:
+        return np.zeros(shape[0])
+    return values.reshape(shape)[:, -1]
 
 
 def _sums(values: Array, shape: tuple[int, int]) -> Array:

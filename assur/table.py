@@ -301,6 +301,8 @@ class Table(Columns):
 
         Means are over the table's positions: time averages over a cycle when the
         positions are equally spaced over a whole cycle at a constant driver speed.
+        A crank's sweep that ends a whole number of turns on from its first position
+        (``0:360:10``) ends on its first pose again, and that pose counts once.
 
         Returns
         -------

@@ -209,3 +209,21 @@ def test_an_undefined_efficiency_says_why(capsys):
     # a defined one has no reason
     assert main(["forces", path, "--summary", "--json"]) == 0
     assert "undefined" not in json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize("stop", [360.0, 720.0, -360.0])
+def test_a_sweep_ending_a_whole_turn_on_counts_that_pose_once(stop):
+    """0:360:10 ends on its first pose again: counted twice, it tipped a shaper's
+    mean driver power to -1.50 W (+1.264 W over the cycle, its friction loss) and
+    its efficiency to "the loads drive"."""
+    mech = assur.load(EXAMPLES / "slider_crank_friction.toml")
+    step = 10.0 if stop > 0 else -10.0
+    closed = assur.forces(mech, np.arange(0.0, stop + step / 2, step)).summary()
+    cycle = assur.forces(mech, np.arange(0.0, 360.0 * np.sign(stop), step)).summary()
+    assert closed.keys() == cycle.keys()
+    for name, value in cycle.items():
+        assert closed[name] == pytest.approx(value, rel=1e-12, abs=1e-9), name
+    # a sweep that ends short of a whole turn counts every position
+    short = assur.forces(mech, np.arange(0.0, 350.0, 10.0))
+    powers = short["driver.torque"] * short["crank.omega"]
+    assert short.summary()["driver.power.mean"] == pytest.approx(np.mean(powers))
