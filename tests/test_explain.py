@@ -342,9 +342,9 @@ def test_a_wrong_answer_key_names_the_answers_file(capsys, tmp_path) -> None:
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert err == (
-        f"assur: error: {answers}: answers.rod.omegaa: no such quantity; expected a "
-        "table column, 'P.v' or 'P.a' (a point's speed, acceleration) or 'L.Fi' (a "
-        "link's inertia force)\n"
+        f"assur: error: {answers}: answers.rod.omegaa: no such quantity (did you "
+        "mean 'rod.omega'?); expected a table column, 'P.v' or 'P.a' (a point's "
+        "speed, acceleration) or 'L.Fi' (a link's inertia force)\n"
     )
     assert main([*argv[:-1], str(tmp_path / "none.toml")]) == 2
     err = capsys.readouterr().err

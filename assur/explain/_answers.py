@@ -13,7 +13,7 @@ import math
 import os
 from collections.abc import Mapping
 
-from assur._text import describe
+from assur._text import describe, suggest
 from assur._vec import real
 from assur.errors import ModelError, UsageError
 from assur.explain._note import Block, Display, Grid, Heading, Para
@@ -130,9 +130,15 @@ def computed(pos: Position, key: str) -> float:
     if what in pairs and f"{owner}.{pairs[what][0]}" in table.columns:
         x, y = (float(table[f"{owner}.{c}"][0]) for c in pairs[what])
         return math.hypot(x, y)
+    # the names a mistyped key may have meant: the columns and the magnitudes
+    known = [*table.columns]
+    for what, (x, _) in pairs.items():
+        known += [c[: -len(x)] + what for c in table.columns if c.endswith(f".{x}")]
+    hint = suggest(key, known, listing=False).removeprefix("; ")
     msg = (
-        f"answers.{key}: no such quantity; expected a table column, 'P.v' or 'P.a' "
-        "(a point's speed, acceleration) or 'L.Fi' (a link's inertia force)"
+        f"answers.{key}: no such quantity{f' ({hint})' if hint else ''}; expected a "
+        "table column, 'P.v' or 'P.a' (a point's speed, acceleration) or 'L.Fi' (a "
+        "link's inertia force)"
     )
     raise ModelError(msg)
 
