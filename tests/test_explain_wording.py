@@ -289,3 +289,10 @@ def test_the_structure_s_counts_agree_with_their_nouns() -> None:
     assert "$n = 1$ moving link, $p_5 = 1$ lower pair and $p_4 = 0$ higher pairs." in (
         crank
     )
+
+
+def test_an_rpr_note_says_why_its_links_angles_differ():
+    """'Both links turn together' was followed by two different angles (26.8 and
+    -169.09 deg) with no word of how each is measured."""
+    text = str(explain(assur.load(EXAMPLES / "whitworth.toml"), 60.0))
+    assert "their angles below differ by a constant" in text

@@ -189,7 +189,10 @@ def _rpr(pos: Position, s: DyadSolver) -> list[Block]:
     return [
         Para(
             f"Both links turn together (the sliding pair {plain(s.mid.name)} keeps "
-            f"their angle). Across the slide line, along its normal (fixed in {lg}), "
+            "the angle between them: their angles below differ by a constant, each "
+            "measured along its own axis, or as its turn from the reference pose for "
+            "a link without one). Across the slide line, along its normal (fixed in "
+            f"{lg}), "
             f"the pins {plain(s.ext[g].name)} and {plain(s.ext[h].name)} stay "
             f"$c_0 = \\vec n_0 \\cdot (\\vec d_{{{lg}}} - \\vec d_{{{lh}}}) = "
             f"{num(c0)}$ m apart (the offsets $\\vec d$ of the pair's point from each "
