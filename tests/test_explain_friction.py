@@ -235,3 +235,20 @@ def test_the_documented_friction_numbers_are_the_note_s() -> None:
         assert text in note, text
     zero, _ = _note_and_table(FRICTION, 0.0)
     assert r"-0.15 \cdot 17.93 \cdot 0 = 0" in zero
+
+
+def test_a_group_rubbing_in_its_guide_alone_states_the_sliding_law_alone() -> None:
+    """Its paragraph opened with a revolute pair's couple, which it has none of."""
+    import dataclasses
+
+    mech = assur.load(EXAMPLES / "slider_crank_friction.toml")
+    joints = tuple(
+        j if j.kind == "prismatic" else dataclasses.replace(j, friction=0.0)
+        for j in mech.joints
+    )
+    note = str(explain(dataclasses.replace(mech, joints=joints), 45.0))
+    assert "Friction in guide: a sliding pair's force" in note
+    assert "revolute pair's couple" not in note
+    both = str(explain(mech, 45.0))
+    assert "a revolute pair's couple" in both
+    assert "a sliding pair's force" in both

@@ -132,8 +132,9 @@ def computed(pos: Position, key: str) -> float:
         return math.hypot(x, y)
     # the names a mistyped key may have meant: the columns and the magnitudes
     known = [*table.columns]
-    for what, (x, _) in pairs.items():
-        known += [c[: -len(x)] + what for c in table.columns if c.endswith(f".{x}")]
+    for part, (first, _) in pairs.items():
+        ending = f".{first}"
+        known += [c[: -len(first)] + part for c in table.columns if c.endswith(ending)]
     hint = suggest(key, known, listing=False).removeprefix("; ")
     msg = (
         f"answers.{key}: no such quantity{f' ({hint})' if hint else ''}; expected a "

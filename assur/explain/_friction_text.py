@@ -171,13 +171,23 @@ def group_friction_blocks(
             (plain(p.name), f"${num(start[p.name])}$", f"${symbol} = {num(final)}$")
         )
         lines += friction_lines(pos, p, symbol, final)
-    return [
-        Para(
-            f"Friction in {listed}: a revolute pair's couple $M_f = -\\rho\\,|R|\\,"
+    # each law the group's pairs have: a group rubbing in guides alone has no couple
+    laws = []
+    if any(p.kind == "R" for p in pairs):
+        laws.append(
+            "a revolute pair's couple $M_f = -\\rho\\,|R|\\,"
             "\\mathrm{sgn}(\\omega_2 - \\omega_1)$ ($\\rho = f r$, the radius of its "
             "friction circle; $\\omega_2 - \\omega_1$ the rotation of its second link "
-            "relative to its first), a sliding pair's force $F_f = -f\\,|N|\\,"
-            "\\mathrm{sgn}\\,\\dot s$ along its slide line (kinetic friction only: a "
+            "relative to its first)"
+        )
+    if any(p.kind == "P" for p in pairs):
+        laws.append(
+            "a sliding pair's force $F_f = -f\\,|N|\\,\\mathrm{sgn}\\,\\dot s$ "
+            "along its slide line"
+        )
+    return [
+        Para(
+            f"Friction in {listed}: {', '.join(laws)} (kinetic friction only: a "
             "pair at rest, its relative speed below $10^{-11}$ of the mechanism's "
             "fastest motion, has none). Each depends on the size of a reaction not "
             "yet known. With the senses of the relative motions known, "
