@@ -254,13 +254,17 @@ def test_a_fixed_pivot_reached_through_its_link_sums_to_zero():
     # velocity of a frame pivot, whose size the same line gave as 0
     note = str(explain(assur.load(EXAMPLES / "class3.toml"), 0.0))
     line = next(x for x in note.splitlines() if x.startswith(r"$$ \vec v_{\mathrm{F}}"))
-    assert line.endswith(r"= (0,\ 0),\quad v_{\mathrm{F}} = 0 $$")
+    assert line.endswith(
+        r"= (0,\ 0)\ \mathrm{m/s},\quad v_{\mathrm{F}} = 0\ \mathrm{m/s} $$"
+    )
     found = re.findall(r"10\^\{-1[3-9]\}", note.replace(note.split("lever}")[-1], ""))
     assert not found
     # a dyad's equation whose terms cancel (a slot tangent to the crank's circle)
     tangent = str(explain(assur.load(DATA / "prp_tangent.toml"), 0.0))
     line = next(x for x in tangent.splitlines() if r"\vec a_{\mathrm{C}} = " in x)
-    assert r"= (0,\ 0),\quad a_{\mathrm{C}} = 0 $$" in line
+    assert (
+        r"= (0,\ 0)\ \mathrm{m/s^2},\quad a_{\mathrm{C}} = 0\ \mathrm{m/s^2} $$" in line
+    )
 
 
 def test_a_dollar_in_the_name_is_bare_in_the_page_s_title():

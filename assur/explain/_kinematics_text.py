@@ -9,8 +9,8 @@ from __future__ import annotations
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position
 from assur.explain._positions import dyad_positions
-from assur.explain._rates import body_points, dyad_rates, point_lines
-from assur.explain._tex import deg, name, num, plain, point_name, vec
+from assur.explain._rates import SPEED, TURN, body_points, dyad_rates, point_lines
+from assur.explain._tex import LENGTH, deg, name, num, plain, point_name, unit, vec
 from assur.groups._dyad import DyadSolver
 from assur.groups.driver import DriverPlan
 
@@ -38,7 +38,10 @@ def _driver(pos: Position, d: DriverPlan) -> list[Block]:
     else:
         v = pos.pair_point(d.pair, 1)
         a = pos.pair_point(d.pair, 2)
-        given = [f"\\vec v_{{{j}}} = {vec(v)},\\quad \\vec a_{{{j}}} = {vec(a)}"]
+        given = [
+            f"\\vec v_{{{j}}} = {vec(v)}{SPEED[1]},\\quad \\vec a_{{{j}}} = "
+            f"{vec(a)}{SPEED[2]}"
+        ]
         text = (
             f"The input link {plain(pos.link(body))} slides along the guide "
             f"{plain(d.pair.name)}; its speed and acceleration are given:"
@@ -49,6 +52,7 @@ def _driver(pos: Position, d: DriverPlan) -> list[Block]:
         if k == 0:
             lines = [
                 f"\\vec r_{{{point_name(p)}}} = {vec(pos.point(body, off))}"
+                f"{unit(LENGTH[0])}"
                 for p, off in body_points(pos, body)
                 if p not in skip
             ]
@@ -86,9 +90,9 @@ def _points(pos: Position, s: DyadSolver, k: int) -> list[Block]:
             skip.add(s.mid.name)
         lines += point_lines(pos, body, base, label, k, skip)
     w = [
-        f"\\omega_{{{name(pos.link(b))}}} = {num(pos.omega(b))}"
+        f"\\omega_{{{name(pos.link(b))}}} = {num(pos.omega(b))}{TURN[1]}"
         if k == 1
-        else f"\\varepsilon_{{{name(pos.link(b))}}} = {num(pos.epsilon(b))}"
+        else f"\\varepsilon_{{{name(pos.link(b))}}} = {num(pos.epsilon(b))}{TURN[2]}"
         for b in s.bodies
     ]
     text = "The group's links turn at" if k == 1 else "Their angular accelerations:"
@@ -111,8 +115,8 @@ def _general(pos: Position, solver: object) -> list[Block]:
     ]
     lines = [
         f"\\varphi_{{{name(pos.link(b))}}} = {deg(pos.angle(b))},\\quad "
-        f"\\omega_{{{name(pos.link(b))}}} = {num(pos.omega(b))},\\quad "
-        f"\\varepsilon_{{{name(pos.link(b))}}} = {num(pos.epsilon(b))}"
+        f"\\omega_{{{name(pos.link(b))}}} = {num(pos.omega(b))}{TURN[1]},\\quad "
+        f"\\varepsilon_{{{name(pos.link(b))}}} = {num(pos.epsilon(b))}{TURN[2]}"
         for b in bodies
     ]
     blocks.append(Display(tuple(lines)))
@@ -127,7 +131,7 @@ def _general(pos: Position, solver: object) -> list[Block]:
             label = point_name(base_name)
             lines.append(
                 f"\\vec {'v' if k == 1 else 'a'}_{{{label}}} = "
-                f"{vec(pos.point(b, offset, k))}"
+                f"{vec(pos.point(b, offset, k))}{SPEED[k]}"
             )
             lines += point_lines(pos, b, base, label, k, {base_name})
         blocks += [Heading(4, what), Display(tuple(lines))]

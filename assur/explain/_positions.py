@@ -14,10 +14,13 @@ import numpy as np
 from assur._vec import Array
 from assur.explain._note import Block, Display, Para
 from assur.explain._position import Position, cross, perp
-from assur.explain._tex import deg, name, num, par, plain, vec
+from assur.explain._tex import LENGTH, deg, name, num, par, plain, unit, vec
 from assur.groups._dyad import DyadSolver
 
 __all__ = ["dyad_positions"]
+
+M = unit(LENGTH[0])
+"""The unit of a length or a position, after a result."""
 
 
 def _sq(x: float) -> str:
@@ -71,18 +74,18 @@ def _rrr(pos: Position, s: DyadSolver) -> list[Block]:
         ),
         Display(
             (
-                f"d = |{b}{d}| = \\sqrt{{{_sq(g[0])} + {_sq(g[1])}}} = {num(dist)}",
+                f"d = |{b}{d}| = \\sqrt{{{_sq(g[0])} + {_sq(g[1])}}} = {num(dist)}{M}",
                 f"a = \\frac{{l_{{{b}{c}}}^2 - l_{{{d}{c}}}^2 + d^2}}{{2d}} = "
                 f"\\frac{{{_sq(l1)} - {_sq(l2)} + {_sq(dist)}}}{{2 \\cdot {num(dist)}}}"
-                f" = {num(a)}",
+                f" = {num(a)}{M}",
                 f"h = {sign}\\sqrt{{l_{{{b}{c}}}^2 - a^2}} = {sign}\\sqrt{{{_sq(l1)} - "
-                f"{_sq(a)}}} = {num(h)}",
+                f"{_sq(a)}}} = {num(h)}{M}",
                 f"\\vec e = \\frac{{\\vec r_{{{d}}} - \\vec r_{{{b}}}}}{{d}} = "
                 f"{vec(e)}",
                 f"\\vec r_{{{c}}} = \\vec r_{{{b}}} + a\\,\\vec e + "
                 "h\\,\\vec e^{\\perp}"
                 f" = {vec(pb)} + {par(a)} \\cdot {vec(e)} + {par(h)} \\cdot "
-                f"{vec(perp(e))} = {vec(pc)}",
+                f"{vec(perp(e))} = {vec(pc)}{M}",
             )
         ),
     ]
@@ -111,13 +114,14 @@ def _rrp(pos: Position, s: DyadSolver) -> list[Block]:
         ),
         Display(
             (
-                f"\\vec w = \\vec r_{{{c}_0}} - \\vec r_{{{b}}} = {vec(w)},\\quad "
-                f"\\vec w \\cdot \\vec e = {num(we)},\\quad |\\vec w|^2 = {num(ww)}",
+                f"\\vec w = \\vec r_{{{c}_0}} - \\vec r_{{{b}}} = {vec(w)}{M},\\quad "
+                f"\\vec w \\cdot \\vec e = {num(we)}{M},\\quad |\\vec w|^2 = "
+                f"{num(ww)}{unit('m^2')}",
                 f"s = -\\vec w \\cdot \\vec e {sign} \\sqrt{{(\\vec w \\cdot \\vec e)^2"
                 f" - |\\vec w|^2 + l_{{{b}{c}}}^2}} = -{par(we)} {sign} \\sqrt{{"
-                f"{_sq(we)} - {num(ww)} + {_sq(length)}}} = {num(slide)}",
+                f"{_sq(we)} - {num(ww)} + {_sq(length)}}} = {num(slide)}{M}",
                 f"\\vec r_{{{c}}} = \\vec r_{{{c}_0}} + s\\,\\vec e = {vec(c0)} + "
-                f"{par(slide)} \\cdot {vec(e)} = {vec(pc)}",
+                f"{par(slide)} \\cdot {vec(e)} = {vec(pc)}{M}",
             )
         ),
         Para(
@@ -150,17 +154,16 @@ def _prp(pos: Position, s: DyadSolver) -> list[Block]:
         ),
         Display(
             (
-                f"\\vec w = \\vec r_2 - \\vec r_1 = {vec(w)},\\quad \\vec e_1 \\times "
-                "\\vec e_2 = "
-                f"{num(det)}",
+                f"\\vec w = \\vec r_2 - \\vec r_1 = {vec(w)}{M},\\quad "
+                f"\\vec e_1 \\times \\vec e_2 = {num(det)}",
                 "s_1 = \\frac{\\vec w \\times \\vec e_2}"
                 "{\\vec e_1 \\times \\vec e_2}"
-                f" = \\frac{{{num(cross(w, dirs[1]))}}}{{{num(det)}}} = {num(s1)},"
+                f" = \\frac{{{num(cross(w, dirs[1]))}}}{{{num(det)}}} = {num(s1)}{M},"
                 "\\quad"
                 " s_2 = \\frac{\\vec w \\times \\vec e_1}"
                 "{\\vec e_1 \\times \\vec e_2}"
-                f" = \\frac{{{num(cross(w, dirs[0]))}}}{{{num(det)}}} = {num(s2)}",
-                f"\\vec r_{{{c}}} = \\vec r_1 + s_1 \\vec e_1 = {vec(pc)}",
+                f" = \\frac{{{num(cross(w, dirs[0]))}}}{{{num(det)}}} = {num(s2)}{M}",
+                f"\\vec r_{{{c}}} = \\vec r_1 + s_1 \\vec e_1 = {vec(pc)}{M}",
             )
         ),
     ]
@@ -202,8 +205,8 @@ def _rpr(pos: Position, s: DyadSolver) -> list[Block]:
         Display(
             (
                 f"\\vec D = \\vec r_{{{phn}}} - \\vec r_{{{pgn}}} = "
-                f"{vec(dvec)},\\quad "
-                f"|\\vec D| = {num(dist)},\\quad \\theta_D = {deg(theta)}",
+                f"{vec(dvec)}{M},\\quad "
+                f"|\\vec D| = {num(dist)}{M},\\quad \\theta_D = {deg(theta)}",
                 "\\psi = \\arccos\\frac{c_0}{|\\vec D|} = "
                 f"\\arccos\\frac{{{num(c0)}}}"
                 f"{{{num(dist)}}} = {deg(psi)}",
@@ -243,7 +246,7 @@ def _rpp(pos: Position, s: DyadSolver) -> list[Block]:
         Display(
             (
                 f"s = -\\frac{{r_0}}{{{'' if ahead else '-'}\\vec n \\cdot \\vec e}} = "
-                f"-\\frac{{{num(r0)}}}{{{num(ne)}}} = {num(slide)}",
+                f"-\\frac{{{num(r0)}}}{{{num(ne)}}} = {num(slide)}{M}",
             )
         ),
     ]

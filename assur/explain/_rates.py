@@ -17,12 +17,27 @@ import numpy as np
 from assur._vec import Array
 from assur.explain._note import Block, Display, Para
 from assur.explain._position import Position, perp
-from assur.explain._tex import cramer, name, num, par, point_name, text, vec
+from assur.explain._tex import (
+    LENGTH,
+    ROTATION,
+    cramer,
+    name,
+    num,
+    par,
+    point_name,
+    text,
+    unit,
+    vec,
+)
 from assur.groups._dyad import DyadSolver
 
 __all__ = ["Term", "body_points", "dyad_rates", "point_lines"]
 
 LEVEL = {1: ("v", "velocities"), 2: ("a", "accelerations")}
+SPEED = {k: unit(LENGTH[k]) for k in (1, 2)}
+"""The unit of a point's velocity (k = 1) or acceleration (k = 2)."""
+TURN = {k: unit(ROTATION[k]) for k in (1, 2)}
+"""The unit of a link's angular velocity (k = 1) or acceleration (k = 2)."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -82,7 +97,8 @@ def _chain(pos: Position, s: DyadSolver, b: int, k: int) -> list[Term]:
                     _rotation(s, b, 1, pos),
                     perp(r),
                     f"v_{{{mid}{j}}} = |\\omega_{{{link}}}| \\cdot l_{{{j}{mid}}} = "
-                    f"{num(abs(w))} \\cdot {num(length)} = {num(abs(w) * length)}",
+                    f"{num(abs(w))} \\cdot {num(length)} = "
+                    f"{num(abs(w) * length)}{SPEED[1]}",
                 ),
             ]
         return [
@@ -92,7 +108,7 @@ def _chain(pos: Position, s: DyadSolver, b: int, k: int) -> list[Term]:
                 -w * w * r,
                 f"\\text{{from }} {mid} \\text{{ to }} {j},\\ a^n = \\omega_{{{link}}}"
                 f"^2 l_{{{j}{mid}}} = {par(w)}^2 \\cdot {num(length)} = "
-                f"{num(w * w * length)}",
+                f"{num(w * w * length)}{SPEED[2]}",
             ),
             Term(
                 f"\\vec a^{{t}}_{{{mid}{j}}}",
@@ -101,7 +117,8 @@ def _chain(pos: Position, s: DyadSolver, b: int, k: int) -> list[Term]:
                 _rotation(s, b, 2, pos),
                 perp(r),
                 f"a^t_{{{mid}{j}}} = |\\varepsilon_{{{link}}}| \\cdot l_{{{j}{mid}}} = "
-                f"{num(abs(eps))} \\cdot {num(length)} = {num(abs(eps) * length)}",
+                f"{num(abs(eps))} \\cdot {num(length)} = "
+                f"{num(abs(eps) * length)}{SPEED[2]}",
             ),
         ]
     e = _slide_sign(s, b) * pos.turned(known, pair.axis or (1.0, 0.0))
@@ -155,7 +172,7 @@ def _sliding(
             f"\\vec a^{{k}}_{{{j}}}",
             2 * wg * rel * perp(e),
             f"2\\,\\vec\\omega \\times \\vec v^r,\\ a^k = 2 \\cdot {par(wg)} \\cdot "
-            f"{par(rel)} = {num(2 * wg * rel)}",
+            f"{par(rel)} = {num(2 * wg * rel)}{SPEED[2]}",
         ),
         Term(
             f"\\vec a^{{r}}_{{{j}}}",
@@ -208,7 +225,11 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
     letter = LEVEL[k][0]
     mid = name(s.mid.name)
     names, a, rhs = _solve(left, right)
-    lines = cramer(names, a, rhs)[0] if len(names) == 2 else []
+    units = tuple(
+        TURN[k] if n.startswith(("\\omega", "\\varepsilon")) else SPEED[k]
+        for n in names
+    )
+    lines = cramer(names, a, rhs, (units[0], units[-1]))[0] if len(names) == 2 else []
     # every vector of the equation is judged against its largest term: one that
     # sums or solves to round-off of them is 0
     scale = max(math.hypot(*t.value) for t in left + right)
@@ -217,7 +238,7 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
         Display((f"{_sum(left)} = {_sum(right)}",)),
         Display(
             tuple(
-                f"{t.tex} = {vec(t.value, scale)}"
+                f"{t.tex} = {vec(t.value, scale)}{SPEED[k]}"
                 + (f",\\quad {t.note}" if t.note else "")
                 for t in left + right
                 if t.unknown is None
@@ -238,13 +259,14 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
         ]
     unknown = [t for t in left + right if t.unknown is not None]
     results = [
-        f"{t.tex} = {vec(t.value, scale)}" + (f",\\quad {t.size}" if t.size else "")
+        f"{t.tex} = {vec(t.value, scale)}{SPEED[k]}"
+        + (f",\\quad {t.size}" if t.size else "")
         for t in unknown
     ]
     total = sum((t.value for t in left), np.zeros(2))
     results.append(
-        f"\\vec {letter}_{{{mid}}} = {_sum(left)} = {vec(total, scale)},\\quad "
-        f"{letter}_{{{mid}}} = {num(math.hypot(*total), scale)}"
+        f"\\vec {letter}_{{{mid}}} = {_sum(left)} = {vec(total, scale)}{SPEED[k]},"
+        f"\\quad {letter}_{{{mid}}} = {num(math.hypot(*total), scale)}{SPEED[k]}"
     )
     blocks.append(Display(tuple(results)))
     return blocks
@@ -296,8 +318,8 @@ def point_lines(
             lines.append(
                 f"\\vec v_{{{x}}} = \\vec v_{{{label}}} + \\omega_{{{link}}} \\times "
                 f"\\vec r_{{{label}{x}}} = {vec(here)} + {par(w)} \\cdot "
-                f"{vec(perp(r))} = {vec(value, scale)},\\quad v_{{{x}}} = "
-                f"{num(math.hypot(*value), scale)}"
+                f"{vec(perp(r))} = {vec(value, scale)}{SPEED[1]},\\quad v_{{{x}}} = "
+                f"{num(math.hypot(*value), scale)}{SPEED[1]}"
             )
         else:
             lines.append(
@@ -306,7 +328,7 @@ def point_lines(
                 f"\\times \\vec r_{{{label}{x}}} - \\omega_{{{link}}}^2 "
                 f"\\vec r_{{{label}"
                 f"{x}}} = {vec(here)} + {par(eps)} \\cdot {vec(perp(r))} - {par(w)}^2 "
-                f"\\cdot {vec(r)} = {vec(value, scale)},\\quad a_{{{x}}} = "
-                f"{num(math.hypot(*value), scale)}"
+                f"\\cdot {vec(r)} = {vec(value, scale)}{SPEED[2]},\\quad a_{{{x}}} = "
+                f"{num(math.hypot(*value), scale)}{SPEED[2]}"
             )
     return lines

@@ -13,6 +13,8 @@ from typing import Any
 import numpy as np
 
 __all__ = [
+    "LENGTH",
+    "ROTATION",
     "ZERO",
     "cramer",
     "deg",
@@ -23,6 +25,7 @@ __all__ = [
     "point_name",
     "text",
     "times",
+    "unit",
     "vec",
 ]
 
@@ -35,6 +38,15 @@ DECIMALS = 2
 """Fewest decimals a number keeps."""
 SCIENTIFIC = (1e-4, 1e8)
 """Magnitudes outside this range are written with a power of ten."""
+LENGTH = ("m", "m/s", "m/s^2")
+"""Units of a position, a velocity and an acceleration (by level 0, 1, 2)."""
+ROTATION = ("rad", "rad/s", "rad/s^2")
+"""Units of an angle, an angular velocity and an angular acceleration."""
+
+
+def unit(symbol: str) -> str:
+    r"""Return the unit ``symbol`` to follow a result, as ``\ \mathrm{m/s}``."""
+    return f"\\ \\mathrm{{{symbol}}}"
 
 
 def num(x: float, scale: float = 1.0) -> str:
@@ -153,11 +165,14 @@ def text(words: str) -> str:
     return "".join("\\" + c if c in "_{}$%&#" else c for c in kept)
 
 
-def cramer(names: list[str], a: Any, rhs: Any) -> tuple[list[str], list[float]]:
+def cramer(
+    names: list[str], a: Any, rhs: Any, units: tuple[str, str] = ("", "")
+) -> tuple[list[str], list[float]]:
     """Return a 2 x 2 system ``a x = rhs`` solved by Cramer's rule, with numbers.
 
     The lines are the two component equations, the determinant and each unknown's
-    quotient; the values are the unknowns ``names``.
+    quotient, ending with ``units[i]`` (a :func:`unit`, or ""); the values are the
+    unknowns ``names``.
     """
     det = float(a[0, 0] * a[1, 1] - a[0, 1] * a[1, 0])
     tops = [
@@ -179,6 +194,6 @@ def cramer(names: list[str], a: Any, rhs: Any) -> tuple[list[str], list[float]]:
     for i in (0, 1):
         lines.append(
             f"{names[i]} = \\frac{{{num(tops[i])}}}{{{num(det, ref * ref)}}} = "
-            f"{num(values[i])}"
+            f"{num(values[i])}{units[i]}"
         )
     return lines, values
