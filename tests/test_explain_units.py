@@ -97,3 +97,15 @@ def test_slider_crank_velocities_end_with_metres_per_second() -> None:
     )
     assert r"\vec r_{\mathrm{B}} = (0.05233,\ 0.05233)\ \mathrm{m}" in lines
     assert any(x.endswith(r"= 587.84\ \mathrm{m/s^2}") for x in lines)
+
+
+@pytest.mark.parametrize(("asked", "shown"), [(200.0, "200"), (420.0, "420")])
+def test_the_crank_angle_is_printed_as_asked(asked: float, shown: str) -> None:
+    lines = _kinematics("slider_crank_exercise", asked)
+    assert lines[0].startswith(rf"\varphi_{{\mathrm{{crank}}}} = {shown}^\circ,")
+
+
+def test_each_crank_angle_is_printed_as_asked() -> None:
+    note = str(explain(assur.load(EXAMPLES / "five_bar_two_cranks.toml"), [200, 420]))
+    assert r"\varphi_{\mathrm{left\_crank}} = 200^\circ," in note
+    assert r"\varphi_{\mathrm{right\_crank}} = 420^\circ," in note

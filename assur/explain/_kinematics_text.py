@@ -6,19 +6,32 @@ acceleration equations, and the motion of every other point of its links.
 
 from __future__ import annotations
 
+import math
+
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position
 from assur.explain._positions import dyad_positions
 from assur.explain._rates import SPEED, TURN, body_points, dyad_rates, point_lines
 from assur.explain._tex import LENGTH, deg, name, num, plain, point_name, unit, vec
 from assur.groups._dyad import DyadSolver
-from assur.groups.driver import DriverPlan
 
 __all__ = ["kinematics_blocks"]
 
 
-def _driver(pos: Position, d: DriverPlan) -> list[Block]:
-    """Return the input link's motion and that of its points."""
+def _given_angle(pos: Position, i: int) -> str:
+    r"""Return crank ``i``'s angle in degrees as its position was given, ``^\circ``.
+
+    The link's angle is put in the turn of the given position (the table's column),
+    so 200 prints as 200, not -160.
+    """
+    angle = math.degrees(pos.angle(pos.plan.drivers[i].body))
+    given = float(pos.table.given[0, i])
+    return f"{num(angle + 360.0 * round((given - angle) / 360.0))}^\\circ"
+
+
+def _driver(pos: Position, i: int) -> list[Block]:
+    """Return input link ``i``'s motion and that of its points."""
+    d = pos.plan.drivers[i]
     body = d.body
     link = name(pos.link(body))
     pivot = pos.pair_point(d.pair)
@@ -26,7 +39,7 @@ def _driver(pos: Position, d: DriverPlan) -> list[Block]:
     if d.kind == "R":
         w, eps = pos.omega(body), pos.epsilon(body)
         given = [
-            f"\\varphi_{{{link}}} = {deg(pos.angle(body))},\\quad \\omega_{{{link}}} "
+            f"\\varphi_{{{link}}} = {_given_angle(pos, i)},\\quad \\omega_{{{link}}} "
             f"= {num(w)}\\ \\mathrm{{rad/s}},\\quad \\varepsilon_{{{link}}} = "
             f"{num(eps)}\\ \\mathrm{{rad/s^2}}"
         ]
@@ -142,10 +155,10 @@ def kinematics_blocks(pos: Position) -> list[Block]:
     """Return the kinematic analysis: the input links, then each group in order."""
     plan = pos.plan
     blocks: list[Block] = [Heading(2, "2. Kinematics, group by group")]
-    for d in plan.drivers:
+    for i, d in enumerate(plan.drivers):
         blocks += [
             Heading(3, f"Input link {plain(pos.link(d.body))}"),
-            *_driver(pos, d),
+            *_driver(pos, i),
         ]
     for g, solver in zip(plan.groups, plan.solvers, strict=True):
         blocks.append(Heading(3, f"Group {plain(g.label)}"))
