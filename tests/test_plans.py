@@ -13,7 +13,7 @@ import pytest
 import assur
 from assur.explain._lever import lever_parts, lever_rates
 from assur.explain._solve import position, table_at
-from assur.plotting import lever, plans
+from assur.plotting import lever, plans, polygons
 
 matplotlib.use("Agg")
 
@@ -171,7 +171,7 @@ def test_force_polygons_close_with_friction(path: Path, angle: float) -> None:
     import matplotlib.pyplot as plt
 
     # a sliding pair's friction force was left out: open by exactly that force
-    fig = plans.force_polygons(assur.forces(assur.load(path), [angle]))
+    fig = polygons.force_polygons(assur.forces(assur.load(path), [angle]))
     try:
         for ax in fig.axes:
             gap = float(ax.get_title().split("closes within ")[1].split(" mm")[0])
@@ -246,7 +246,7 @@ def test_a_name_is_drawn_whole_in_the_force_polygons(tmp_path: Path) -> None:
     path = tmp_path / "odd.toml"
     path.write_text(text)
     table = assur.forces(assur.load(path), [30.0])
-    fig = plans.force_polygons(table)
+    fig = polygons.force_polygons(table)
     try:
         labels = [t.get_text() for ax in fig.axes for t in ax.texts]
         fig.canvas.draw()  # every label can be set
@@ -300,7 +300,7 @@ def test_a_crank_alone_has_plans_and_a_lever_but_no_polygon(
     assert float(table["driver.torque"][0]) == pytest.approx((0.001 + 0.05**2) * 2.0)
     assert lever.lever_balance(table) == pytest.approx(table["driver.torque"][0])
     with pytest.raises(assur.ModelError, match="no Assur group, so no polygon"):
-        plans.force_polygons(table)
+        polygons.force_polygons(table)
     status = main(["plot", str(path), "--group", "1", "-o", str(tmp_path / "g.png")])
     assert status == 2
     assert "expected no --group: only its input link moves" in capsys.readouterr().err
@@ -515,3 +515,48 @@ def test_a_short_arrow_of_a_plan_has_a_head_shorter_than_itself(
     for length, head in lengths:
         assert head <= 0.4 * length * (1 + 1e-9)
         assert head <= 0.4 * 11
+
+
+LABELLED = Path(__file__).parent / "data" / "plans"
+"""The mechanisms whose plans a review found labels overlapping on."""
+
+
+def _boxes(fig, texts) -> np.ndarray:
+    """Return the display boxes (x0, y0, x1, y1) of ``texts`` as drawn."""
+    renderer = fig.canvas.get_renderer()
+    return np.array([t.get_window_extent(renderer).extents for t in texts])
+
+
+def _overlaps(boxes: np.ndarray) -> list[tuple[int, int]]:
+    """Return the pairs of boxes that overlap (more than half a pixel each way)."""
+    return [
+        (i, j)
+        for i in range(len(boxes))
+        for j in range(i + 1, len(boxes))
+        if min(boxes[i, 2], boxes[j, 2]) - max(boxes[i, 0], boxes[j, 0]) > 0.5
+        and min(boxes[i, 3], boxes[j, 3]) - max(boxes[i, 1], boxes[j, 1]) > 0.5
+    ]
+
+
+@pytest.mark.parametrize(("stem", "angle"), [("fourbar", 60.0), ("inverted", 230.0)])
+def test_the_force_polygons_names_do_not_overlap(stem: str, angle: float) -> None:
+    import matplotlib.pyplot as plt
+
+    # F_crank,coupler was written over m_rocker g; F_ground,guide over F_crank,block
+    table = assur.forces(assur.load(LABELLED / f"{stem}.toml"), [angle])
+    fig = polygons.force_polygons(table)
+    try:
+        fig.canvas.draw()
+        for ax in fig.axes:
+            texts = [t for t in ax.texts if t.get_text()]
+            assert len(texts) >= 5
+            boxes = _boxes(fig, texts)
+            pairs = _overlaps(boxes)
+            assert not pairs, [
+                (texts[i].get_text(), texts[j].get_text()) for i, j in pairs
+            ]
+            frame = ax.bbox.extents
+            assert (boxes[:, :2] >= frame[:2] - 1).all()
+            assert (boxes[:, 2:] <= frame[2:] + 1).all()
+    finally:
+        plt.close(fig)

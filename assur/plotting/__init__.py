@@ -36,10 +36,10 @@ from assur.plotting.lever import zhukovsky_lever
 from assur.plotting.mechanism import draw
 from assur.plotting.plans import (
     acceleration_plan,
-    force_polygons,
     instant_centres,
     velocity_plan,
 )
+from assur.plotting.polygons import force_polygons
 
 __all__ = [
     "acceleration_plan",

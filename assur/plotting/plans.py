@@ -11,27 +11,18 @@ many units per mm of the drawing. matplotlib is imported inside the functions on
 
 from __future__ import annotations
 
-import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._style import REACTION_COLOUR
-from assur.errors import ModelError
-from assur.explain._loads_text import link_loads
 from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
-from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend, _place
 from assur.plotting._geometry import _nice
-from assur.plotting._mathtext import _symbol, reaction_symbol
+from assur.plotting._mathtext import _symbol
 from assur.plotting._style import (
-    INERTIA_COLOR,
-    LOAD_COLOR,
-    REACTION_LEGEND,
     literal,
-    load_colour,
     titled,
 )
 
@@ -40,7 +31,6 @@ if TYPE_CHECKING:
 
 __all__ = [
     "acceleration_plan",
-    "force_polygons",
     "images",
     "instant_centres",
     "relative_centres",
@@ -177,107 +167,6 @@ def _plan(table: Table, angle: Any, ax: Any, level: int) -> Any:
     legend = _chains(ax, pos, level, mu, list(found.values()))
     _legend(ax, legend, f"scale: {symbol} = {mu:g} {unit}")
     return ax
-
-
-def force_polygons(table: Table, angle: Any = None) -> Any:
-    """Draw the force polygon of every Assur group (reverse order), closed.
-
-    Each polygon runs through the known loads on the group's first link and its
-    outer reaction (with its friction force), then those of the next link: the
-    group is in equilibrium, so the polygon closes at its start (the title gives
-    the gap, round-off).
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-    """
-    import matplotlib.pyplot as plt
-
-    from assur.plotting._context import _need_forces
-
-    _need_forces(table, "force_polygons")
-    pos = _pos(table, angle)
-    assert pos.result is not None
-    records = pos.result.groups
-    if not records:
-        msg = (
-            "force_polygons: the mechanism has no Assur group, so no polygon; "
-            "expected a mechanism whose input links move a group"
-        )
-        raise ModelError(msg)
-    fig, axes = plt.subplots(1, len(records), figsize=(5.5 * len(records), 5.2),
-                             layout="constrained", squeeze=False)  # fmt: skip
-    solved: set[int] = set()
-    for ax, rec in zip(axes.flat, records, strict=True):
-        _polygon(ax, pos, rec, solved)
-        solved |= set(rec.bodies)
-    fig.suptitle(_title(pos, "force polygons"), fontsize=10)
-    return fig
-
-
-def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
-    """Draw one group's force polygon on ``ax``."""
-    sequence: list[tuple[str, np.ndarray, str]] = []
-    for body in rec.bodies:
-        pair = _outer(pos, rec, body)
-        # a sliding pair's reaction is its normal part: its friction force is listed
-        for load in link_loads(pos, body, solved, [p.name for p in pair]):
-            if math.hypot(*load.force) > 0:  # a couple is no side of the polygon
-                sequence.append((_symbol(load.tex), load.force, load_colour(load.tex)))
-        for p in pair:
-            r = rec.reactions[p.name]
-            sign = 1.0 if p.second == body else -1.0
-            f = sign * np.array([float(np.ravel(r.fx)[0]), float(np.ravel(r.fy)[0])])
-            other = p.first if p.second == body else p.second
-            symbol = reaction_symbol(pos.link(other), pos.link(body))
-            if p.kind == "P" and p.friction > 0.0:
-                # its normal part only, as the note names it: F_f is its own side
-                normal = f"\\vec N_{{{tex_name(p.name)}}}"
-                symbol = _symbol(normal if sign > 0 else "-" + normal)
-            sequence.append((symbol, f, REACTION_COLOUR))
-    mu = _scale([f for _, f, _ in sequence])
-    tip = np.zeros(2)
-    for label, f, color in sequence:
-        end = tip + f / mu
-        _arrow(ax, tip, end, color)
-        mid = 0.5 * (tip + end)
-        ax.annotate(
-            label,
-            mid,
-            color=color,
-            fontsize=7,
-            xytext=(3, 3),
-            textcoords="offset points",
-        )
-        tip = end
-    ax.plot([0], [0], "ko", ms=4)
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.grid(True, lw=0.4, alpha=0.4)
-    ax.set_xlabel("mm of the polygon")
-    ax.set_title(
-        f"group {literal(rec.label)}: closes within {float(np.hypot(*tip)):.1e} mm\n"
-        f"scale: μF = {mu:g} N/mm",
-        fontsize=9,
-    )
-    # the colours of the mechanism drawings, so a reaction reads alike in both
-    kinds = {
-        REACTION_COLOUR: REACTION_LEGEND,
-        INERTIA_COLOR: "inertia force",
-        LOAD_COLOR: "gravity, external load",
-    }
-    shown = {c for _, _, c in sequence}
-    entries = [(text, c) for c, text in kinds.items() if c in shown]
-    _legend(ax, entries, f"μF = {mu:g} N/mm")
-
-
-def _outer(pos: Position, rec: Any, body: int) -> list[Any]:
-    """Return the pairs of ``rec`` that join ``body`` to a link outside the group."""
-    inside = set(rec.bodies)
-    return [
-        p
-        for p in rec.pairs
-        if body in (p.first, p.second) and not {p.first, p.second} <= inside
-    ]
 
 
 def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:

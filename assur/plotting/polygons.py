@@ -1,0 +1,145 @@
+"""The force polygon of every Assur group, drawn as a student draws it.
+
+Each polygon runs through the known loads on the group's links and their outer
+reactions, tip to tail, to its own scale (so many N per mm); the sides' names are
+put beside them and pushed apart where they meet (:func:`spread_labels`).
+matplotlib is imported inside the functions only.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur._style import REACTION_COLOUR
+from assur.errors import ModelError
+from assur.explain._loads_text import link_loads
+from assur.explain._position import Position
+from assur.explain._tex import name as tex_name
+from assur.plotting._drawing import _arrow, _legend
+from assur.plotting._labels import LOAD_LABELS, spread_labels
+from assur.plotting._mathtext import _symbol, reaction_symbol
+from assur.plotting._style import (
+    INERTIA_COLOR,
+    LOAD_COLOR,
+    REACTION_LEGEND,
+    literal,
+    load_colour,
+)
+from assur.plotting.plans import PLAN_SIZE, _perp, _pos, _scale, _title
+
+if TYPE_CHECKING:
+    from assur.table import Table
+
+__all__ = ["force_polygons"]
+
+
+def force_polygons(table: Table, angle: Any = None) -> Any:
+    """Draw the force polygon of every Assur group (reverse order), closed.
+
+    Each polygon runs through the known loads on the group's first link and its
+    outer reaction (with its friction force), then those of the next link: the
+    group is in equilibrium, so the polygon closes at its start (the title gives
+    the gap, round-off).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    import matplotlib.pyplot as plt
+
+    from assur.plotting._context import _need_forces
+
+    _need_forces(table, "force_polygons")
+    pos = _pos(table, angle)
+    assert pos.result is not None
+    records = pos.result.groups
+    if not records:
+        msg = (
+            "force_polygons: the mechanism has no Assur group, so no polygon; "
+            "expected a mechanism whose input links move a group"
+        )
+        raise ModelError(msg)
+    fig, axes = plt.subplots(1, len(records), figsize=(5.5 * len(records), 5.2),
+                             layout="constrained", squeeze=False)  # fmt: skip
+    solved: set[int] = set()
+    for ax, rec in zip(axes.flat, records, strict=True):
+        _polygon(ax, pos, rec, solved)
+        solved |= set(rec.bodies)
+    fig.suptitle(_title(pos, "force polygons"), fontsize=10)
+    # the sides meet at the polygon's corners: their names are pushed apart there
+    for ax in axes.flat:
+        spread_labels(ax)
+    return fig
+
+
+def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
+    """Draw one group's force polygon on ``ax``."""
+    sequence: list[tuple[str, np.ndarray, str]] = []
+    for body in rec.bodies:
+        pair = _outer(pos, rec, body)
+        # a sliding pair's reaction is its normal part: its friction force is listed
+        for load in link_loads(pos, body, solved, [p.name for p in pair]):
+            if math.hypot(*load.force) > 0:  # a couple is no side of the polygon
+                sequence.append((_symbol(load.tex), load.force, load_colour(load.tex)))
+        for p in pair:
+            r = rec.reactions[p.name]
+            sign = 1.0 if p.second == body else -1.0
+            f = sign * np.array([float(np.ravel(r.fx)[0]), float(np.ravel(r.fy)[0])])
+            other = p.first if p.second == body else p.second
+            symbol = reaction_symbol(pos.link(other), pos.link(body))
+            if p.kind == "P" and p.friction > 0.0:
+                # its normal part only, as the note names it: F_f is its own side
+                normal = f"\\vec N_{{{tex_name(p.name)}}}"
+                symbol = _symbol(normal if sign > 0 else "-" + normal)
+            sequence.append((symbol, f, REACTION_COLOUR))
+    mu = _scale([f for _, f, _ in sequence])
+    tip = np.zeros(2)
+    for label, f, color in sequence:
+        end = tip + f / mu
+        _arrow(ax, tip, end, color)
+        # the name beside the side's middle, on its left (in data units, as
+        # spread_labels moves it)
+        side = end - tip
+        left = _perp(side) / max(float(np.hypot(*side)), 1e-12)
+        at = 0.5 * (tip + end) + 0.02 * PLAN_SIZE * left
+        text = ax.annotate(
+            label,
+            tuple(at),
+            color=color,
+            fontsize=7,
+            ha="left" if left[0] >= 0 else "right",
+            va="bottom" if left[1] >= 0 else "top",
+        )
+        LOAD_LABELS.add(text)
+        tip = end
+    ax.plot([0], [0], "ko", ms=4)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, lw=0.4, alpha=0.4)
+    ax.set_xlabel("mm of the polygon")
+    ax.set_title(
+        f"group {literal(rec.label)}: closes within {float(np.hypot(*tip)):.1e} mm\n"
+        f"scale: μF = {mu:g} N/mm",
+        fontsize=9,
+    )
+    # the colours of the mechanism drawings, so a reaction reads alike in both
+    kinds = {
+        REACTION_COLOUR: REACTION_LEGEND,
+        INERTIA_COLOR: "inertia force",
+        LOAD_COLOR: "gravity, external load",
+    }
+    shown = {c for _, _, c in sequence}
+    entries = [(text, c) for c, text in kinds.items() if c in shown]
+    _legend(ax, entries, f"μF = {mu:g} N/mm")
+
+
+def _outer(pos: Position, rec: Any, body: int) -> list[Any]:
+    """Return the pairs of ``rec`` that join ``body`` to a link outside the group."""
+    inside = set(rec.bodies)
+    return [
+        p
+        for p in rec.pairs
+        if body in (p.first, p.second) and not {p.first, p.second} <= inside
+    ]
