@@ -560,3 +560,31 @@ def test_the_force_polygons_names_do_not_overlap(stem: str, angle: float) -> Non
             assert (boxes[:, 2:] <= frame[2:] + 1).all()
     finally:
         plt.close(fig)
+
+
+def test_the_lever_s_names_stay_inside_it_off_the_list_of_terms() -> None:
+    import matplotlib.pyplot as plt
+
+    # b = slot = g(block) ran out of the lever over the list's m_lever g line
+    table = assur.forces(assur.load(LABELLED / "shaper.toml"), [200.0])
+    ax = lever.zhukovsky_lever(table)
+    fig = ax.figure
+    try:
+        fig.canvas.draw()
+        # every text drawn but the ticks' (those past the limits are not drawn)
+        texts = [*ax.texts, ax.title, ax.xaxis.label, *ax.get_legend().get_texts()]
+        boxes = _boxes(fig, texts)
+        page = fig.bbox.extents
+        assert (boxes[:, :2] >= page[:2] - 1).all()
+        assert (boxes[:, 2:] <= page[2:] + 1).all()
+        (terms,) = [t for t in ax.texts if "sum = balancing load" in t.get_text()]
+        labels = [t for t in ax.texts if t is not terms]
+        assert any(" = g(block)" in t.get_text() for t in labels)
+        inside = _boxes(fig, labels)
+        frame = ax.bbox.extents
+        assert (inside[:, :2] >= frame[:2] - 1).all()
+        assert (inside[:, 2:] <= frame[2:] + 1).all()
+        pairs = _overlaps(np.vstack([_boxes(fig, [terms]), inside]))
+        assert not [labels[j - 1].get_text() for i, j in pairs if i == 0]
+    finally:
+        plt.close(fig)

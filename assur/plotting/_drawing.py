@@ -54,26 +54,35 @@ def _axes(ax: Any, title: str, size: tuple[float, float] = (7.5, 6.5)) -> Any:
     return ax
 
 
-def _images_plot(ax: Any, found: dict[str, np.ndarray], mu: float, color: str) -> None:
-    """Draw every image from the pole; name them, those at one place in one label."""
+def _images_plot(
+    ax: Any, found: dict[str, np.ndarray], mu: float, color: str
+) -> list[Any]:
+    """Draw every image from the pole; name them, those at one place in one label.
+
+    Return the names' texts.
+    """
     places: list[tuple[np.ndarray, list[str]]] = []
+    texts = []
     for name, v in found.items():
         tip = v / mu
         _arrow(ax, np.zeros(2), tip, color, lw=0.9, alpha=0.55)
         ax.plot(*tip, "o", ms=3.5, color=color, gid=f"image-{name}")
         _place(places, tip, _label(name), SAME_PLACE)
     for tip, names in places:
-        ax.annotate(
-            literal(" = ".join(names)),
-            tip,
-            xytext=(4, 4),
-            textcoords="offset points",
-            fontsize=8,
+        texts.append(
+            ax.annotate(
+                literal(" = ".join(names)),
+                tip,
+                xytext=(4, 4),
+                textcoords="offset points",
+                fontsize=8,
+            )
         )
     ax.plot([0], [0], "ko", ms=5)
     ax.annotate(
         "pole", (0, 0), xytext=(-14, -12), textcoords="offset points", fontsize=8
     )
+    return texts
 
 
 def _place(

@@ -84,7 +84,8 @@ def _label_link(
 
 
 LOAD_LABELS: weakref.WeakSet[Any] = weakref.WeakSet()
-"""The labels of forces and couples drawn: :func:`spread_labels` may move them.
+"""The labels of forces and couples drawn (and the images' names on Zhukovsky's
+lever): :func:`spread_labels` may move them.
 (Held aside, not as a ``gid``: an SVG writes a gid as an element's id, which must
 be unique in a page.)"""
 SPREAD_STEPS = 40
@@ -132,15 +133,27 @@ def spread_labels(ax: Any) -> None:
         _keep_inside(boxes, movable, ax.bbox.extents)
         if clear:
             break
-    to_data = ax.transData.inverted()
     far = LEADER * ax.figure.dpi / 72.0
     for text, box, old in zip(texts, boxes, start, strict=True):
         step = box[:2] - old[:2]
         if step.any():
-            was = ax.transData.transform(text.get_position())
-            text.set_position(tuple(to_data.transform(was + step)))
+            was = _move(ax, text, step)
             if float(np.hypot(*step)) > far:
                 _leader(ax, text, was, box)
+
+
+def _move(ax: Any, text: Any, step: np.ndarray) -> np.ndarray:
+    """Move ``text`` by ``step`` (display units); return where it points (display).
+
+    A label set off its point by so many points (a plan's image's name) keeps its
+    point and changes its offset; any other is in data units.
+    """
+    if getattr(text, "anncoords", None) == "offset points":
+        text.xyann = tuple(np.add(text.xyann, step * 72.0 / ax.figure.dpi))
+        return ax.transData.transform(text.xy)
+    was = ax.transData.transform(text.get_position())
+    text.set_position(tuple(ax.transData.inverted().transform(was + step)))
+    return was
 
 
 def _leader(ax: Any, text: Any, was: np.ndarray, box: np.ndarray) -> None:

@@ -142,7 +142,9 @@ def zhukovsky_lever(
     d = pos.plan.drivers[driver]
     whose = f" of driver {d.pair.name}" if len(pos.plan.drivers) > 1 else ""
     ax = _axes(ax, _title(pos, f"Zhukovsky's lever{literal(whose)}"), (11.0, 6.5))
-    _images_plot(ax, found, mu, "#777777")
+    # the images' names too are kept inside the lever's frame, off the list beside
+    # it, and clear of the loads' names
+    LOAD_LABELS.update(_images_plot(ax, found, mu, "#777777"))
     shares = _shares(pos, (bodies, speed))
     terms = [t for _, _, t in shares if t is not None]
     apart = _apart(lever, terms)
