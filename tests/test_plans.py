@@ -588,3 +588,24 @@ def test_the_lever_s_names_stay_inside_it_off_the_list_of_terms() -> None:
         assert not [labels[j - 1].get_text() for i, j in pairs if i == 0]
     finally:
         plt.close(fig)
+
+
+@pytest.mark.parametrize("level", [1, 2])
+def test_the_guide_s_point_under_the_block_is_named(level: int) -> None:
+    import matplotlib.pyplot as plt
+
+    # the tip of v_SQ (a_SQ's parts) on the RPR group's plans had no name
+    table = assur.forces(assur.load(LABELLED / "inverted.toml"), [230.0])
+    pos = plans._pos(table, 230.0)
+    pair = pos.plan.pairs["S"]
+    guide = pos.coincident(pair.first, pos.pair_point(pair), level)
+    mu = plans._scale(list(plans.images(pos, level).values()))
+    draw = plans.velocity_plan if level == 1 else plans.acceleration_plan
+    ax = draw(table, 230.0)
+    try:
+        named = [
+            t.get_text() for t in ax.texts if np.allclose(t.xy, guide / mu, atol=1e-9)
+        ]
+    finally:
+        plt.close(ax.figure)
+    assert named == ["$\\text{s}_{\\text{guide}}$"]

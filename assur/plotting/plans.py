@@ -17,6 +17,7 @@ import numpy as np
 
 from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
+from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend, _place
 from assur.plotting._geometry import _nice
@@ -89,6 +90,9 @@ def _chains(
                 part = "base" if i == 0 and term.unknown is None else _part(term.tex)
                 color = palette.get(part, "#555555")
                 end = tip + term.value / mu
+                if i and part in "rk" and _part(side[i - 1].tex) not in "rk":
+                    # the tip before the slide is the guide's point under the slider
+                    _name_guide_point(ax, pos, s, tip, mu, shown)
                 if part != "base":
                     # the legend names the parts drawn: a Coriolis term of nothing
                     # (a slider on a guide that does not turn) is not
@@ -105,6 +109,22 @@ def _chains(
     for part, color in kinds.items():
         legend.append((names.get(part, part), color))
     return legend
+
+
+def _name_guide_point(
+    ax: Any, pos: Position, s: DyadSolver, tip: np.ndarray, mu: float, shown: list
+) -> None:
+    """Name the image ``tip`` (mm) of the guide's point under the middle slider.
+
+    Not where a named image is already (a guide's point that is a joint).
+    """
+    size = max((float(np.hypot(*v)) for v in shown), default=0.0)
+    if any(np.hypot(*(tip * mu - v)) <= 1e-9 * size for v in shown):
+        return
+    guide = tex_name(pos.link(s.mid.first))
+    label = _symbol(f"{tex_name(s.mid.name.lower())}_{{{guide}}}")
+    ax.plot(*tip, "o", ms=3.5, color="#333333")
+    ax.annotate(label, tip, xytext=(4, 4), textcoords="offset points", fontsize=8)
 
 
 def _part(tex: str) -> str:
