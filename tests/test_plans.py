@@ -609,3 +609,20 @@ def test_the_guide_s_point_under_the_block_is_named(level: int) -> None:
     finally:
         plt.close(ax.figure)
     assert named == ["$\\text{s}_{\\text{guide}}$"]
+
+
+@pytest.mark.parametrize(("stem", "angle"), [("shaper", 200.0), ("inverted", 230.0)])
+def test_the_plans_names_do_not_overlap(stem: str, angle: float) -> None:
+    import matplotlib.pyplot as plt
+
+    # slot_lever, the guide's point, was written over b = slot = g(block)
+    table = assur.forces(assur.load(LABELLED / f"{stem}.toml"), [angle])
+    for draw in (plans.velocity_plan, plans.acceleration_plan):
+        ax = draw(table, angle)
+        try:
+            ax.figure.canvas.draw()
+            texts = [t for t in ax.texts if t.get_text()]
+            pairs = _overlaps(_boxes(ax.figure, texts))
+        finally:
+            plt.close(ax.figure)
+        assert not [(texts[i].get_text(), texts[j].get_text()) for i, j in pairs]

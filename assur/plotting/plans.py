@@ -21,6 +21,7 @@ from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend, _place
 from assur.plotting._geometry import _nice
+from assur.plotting._labels import LOAD_LABELS, spread_labels
 from assur.plotting._mathtext import _symbol
 from assur.plotting._style import (
     literal,
@@ -124,7 +125,10 @@ def _name_guide_point(
     guide = tex_name(pos.link(s.mid.first))
     label = _symbol(f"{tex_name(s.mid.name.lower())}_{{{guide}}}")
     ax.plot(*tip, "o", ms=3.5, color="#333333")
-    ax.annotate(label, tip, xytext=(4, 4), textcoords="offset points", fontsize=8)
+    text = ax.annotate(
+        label, tip, xytext=(4, 4), textcoords="offset points", fontsize=8
+    )
+    LOAD_LABELS.add(text)  # spread_labels moves it clear of the images' names
 
 
 def _part(tex: str) -> str:
@@ -183,9 +187,10 @@ def _plan(table: Table, angle: Any, ax: Any, level: int) -> Any:
     found = images(pos, level)
     mu = _scale(list(found.values()))
     ax = _axes(ax, _title(pos, what))
-    _images_plot(ax, found, mu, "#333333")
+    LOAD_LABELS.update(_images_plot(ax, found, mu, "#333333"))
     legend = _chains(ax, pos, level, mu, list(found.values()))
     _legend(ax, legend, f"scale: {symbol} = {mu:g} {unit}")
+    spread_labels(ax)  # images close together: their names are pushed apart
     return ax
 
 
