@@ -266,19 +266,29 @@ def test_the_periodic_extremes_against_a_runge_kutta_turn():
     """The largest and smallest speeds of the settled turn, against the oracle's own
     reduction integrated over that turn (RK4, 8000 steps) from where the package's
     last turn starts. Sampled at 2048 points they were off by 4e-6."""
-    from . import oracle
     from .test_dynamics import example
 
     mech = example("four_bar")
     motor = Motor(0.5, 25.0)
     run = assur.startup(mech, motor=motor)
+    fastest, slowest = oracle_extremes(mech, motor, run)
+    assert run.speed_max == pytest.approx(fastest, rel=2e-7)
+    assert run.speed_min == pytest.approx(slowest, rel=2e-7)
+
+
+def oracle_extremes(
+    mech: assur.Mechanism, motor: Motor, run: assur.Startup
+) -> tuple[float, float]:
+    """The largest and smallest speeds of the oracle's RK4 turn (8000 steps, its own
+    reduction) from where the start-up's last turn starts."""
+    from . import oracle
+
     last = np.flatnonzero(run.time >= run.time[-1] - run.period * (1 - 1e-9))[0]
     phi0, w0 = math.radians(run.angle[last]), run.omega[last]
     _, _, w = oracle.integrate_turn(
         oracle.crank_model(mech), phi0, w0, motor.torque, 8000, motor.no_load_speed
     )
-    assert run.speed_max == pytest.approx(np.max(np.abs(w)), rel=2e-7)
-    assert run.speed_min == pytest.approx(np.min(np.abs(w)), rel=2e-7)
+    return float(np.max(np.abs(w))), float(np.min(np.abs(w)))
 
 
 def test_a_vanishing_motor_torque_stalls_where_the_loads_work_runs_out():
@@ -348,16 +358,11 @@ def test_a_start_up_whose_turns_scatter_settles():
     "still gathering speed"; its periodic motion is reached in a few turns (the
     multiplier 0.145). The extremes of its settled turn agree with the oracle's RK4
     turn from the same start."""
-    from . import oracle
 
     mech = example("six_bar_lecture")
     motor = Motor(1.0, 40.0)
     run = assur.startup(mech, motor=motor, turns=60)
     assert run.turns < 40
-    last = np.flatnonzero(run.time >= run.time[-1] - run.period * (1 - 1e-9))[0]
-    phi0, w0 = math.radians(run.angle[last]), run.omega[last]
-    _, _, w = oracle.integrate_turn(
-        oracle.crank_model(mech), phi0, w0, motor.torque, 8000, motor.no_load_speed
-    )
-    assert run.speed_max == pytest.approx(np.max(np.abs(w)), rel=1e-6)
-    assert run.speed_min == pytest.approx(np.min(np.abs(w)), rel=1e-6)
+    fastest, slowest = oracle_extremes(mech, motor, run)
+    assert run.speed_max == pytest.approx(fastest, rel=1e-6)
+    assert run.speed_min == pytest.approx(slowest, rel=1e-6)
