@@ -35,7 +35,7 @@ def test_the_lever_check_at_a_dead_centre_is_the_difference(angle: float) -> Non
     assert abs(table["driver.torque"][0]) < 1e-12
     assert abs(table["driver.torque_check"][0]) < 1e-12
     note = str(explain(assur.load(EXERCISE), angle))
-    assert r"|M_{b}^{lever} - M_{b}| = 0 $$" in note
+    assert r"|M_{b}^{lever} - M_{b}| = 0\ \mathrm{N\,m} $$" in note
     assert r"{|M_{b}|}" not in note
 
 

@@ -109,3 +109,21 @@ def test_each_crank_angle_is_printed_as_asked() -> None:
     note = str(explain(assur.load(EXAMPLES / "five_bar_two_cranks.toml"), [200, 420]))
     assert r"\varphi_{\mathrm{left\_crank}} = 200^\circ," in note
     assert r"\varphi_{\mathrm{right\_crank}} = 420^\circ," in note
+
+
+@pytest.mark.parametrize(
+    "stem", ["whitworth", "slider_crank_exercise", "six_bar_lecture"]
+)
+def test_the_reactions_solved_by_cramer_s_rule_have_units(stem):
+    """A force polygon's two unknowns (F^n, N) in N, a sliding pair's couple M in
+    N m, and the lever's balancing load: they were bare numbers."""
+    note = str(explain(assur.load(EXAMPLES / f"{stem}.toml"), 45.0))
+    solved = [
+        x[3:-3]
+        for x in note.splitlines()
+        if x.startswith("$$ ") and r"\frac{" in x and re.match(r"\$\$ (N|M|F)_", x)
+    ]
+    assert solved
+    for line in solved:
+        wanted = r"\ \mathrm{N\,m}" if line.startswith("M_") else r"\ \mathrm{N}"
+        assert line.rstrip().endswith(wanted), line

@@ -33,6 +33,7 @@ from assur.explain._loads_text import (
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position, cross, perp, unit
 from assur.explain._tex import cramer, name, num, par, plain, text, vec
+from assur.explain._tex import unit as unit_text
 from assur.explain._triad_text import system_blocks
 from assur.groups._dyad import DyadSolver
 from assur.groups._pairs import PairPlan
@@ -117,7 +118,7 @@ def _revolute_middle(
     every = loads[0] + loads[1]
     rhs = -(total(every) + known_t)
     a = np.column_stack(dirs)
-    lines, values = cramer(names, a, rhs)
+    lines, values = cramer(names, a, rhs, (unit_text("N"), unit_text("N")))
     # a PRP dyad's outer pairs slide: no tangential part was found
     turning = any(pair.kind == "R" for pair in s.ext)
     blocks += [
@@ -257,7 +258,10 @@ def _sliding_middle(
                 f"{par(sgn * float(np.dot(nm, eb)))}\\,N_{{{j}}} = {num(-along)}"
             )
     solved_lines, (normal, couple) = cramer(
-        [f"N_{{{j}}}", f"M_{{{j}}}"], np.array(rows), np.array(rhs)
+        [f"N_{{{j}}}", f"M_{{{j}}}"],
+        np.array(rows),
+        np.array(rhs),
+        (unit_text("N"), unit_text("N\\,m")),
     )
     blocks: list[Block] = [
         Para(

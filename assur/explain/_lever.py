@@ -109,6 +109,8 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     tick = "" if actual else "'"
     rate = ("\\omega" if d.kind == "R" else "v") + tick
     unit = "\\ \\mathrm{W}" if actual else ""
+    # the balancing load's own unit: a couple on a crank, a force on a slider
+    load_unit = "\\ \\mathrm{N\\,m}" if d.kind == "R" else "\\ \\mathrm{N}"
     head = "power (W)" if actual else "power per unit speed"
     blocks: list[Block] = [
         Para(f"With {note} (driver {plain(d.pair.name)}):"),
@@ -133,7 +135,7 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
         ]
         lines += [
             f"{sym}^{{ideal}} = -\\frac{{\\sum P{tick}}}{{{rate}}} = -\\frac{{"
-            f"{num(power)}}}{{{num(speed)}}} = {num(-power / speed)}",
+            f"{num(power)}}}{{{num(speed)}}} = {num(-power / speed)}{load_unit}",
             f"\\sum P_{{f}}{tick} = {num(lost)}{unit}",
         ]
         top = f"\\sum P{tick} + \\sum P_{{f}}{tick}"
@@ -143,7 +145,7 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     value = _balancing(pos, i)
     lines.append(
         f"{sym}^{{lever}} = -\\frac{{{top}}}{{{rate}}} = -\\frac{{{shown}}}"
-        f"{{{num(speed)}}} = {num(lever)}"
+        f"{{{num(speed)}}} = {num(lever)}{load_unit}"
     )
     size = _size(pos, i)
     if abs(value) > ZERO * size:
@@ -154,7 +156,9 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     else:
         # a balancing load that is round-off (a dead centre) has no size to compare
         # with: the difference itself is told, against the loads' shares
-        lines.append(f"|{sym}^{{lever}} - {sym}| = {num(abs(lever - value), size)}")
+        lines.append(
+            f"|{sym}^{{lever}} - {sym}| = {num(abs(lever - value), size)}{load_unit}"
+        )
     return [*blocks, Display(tuple(lines))]
 
 
