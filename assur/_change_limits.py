@@ -10,12 +10,14 @@ torque, has there the value it tends to from either side.
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Callable, Sequence
 
 import numpy as np
 
 from assur._branches import change_points
 from assur._vec import Array
+from assur.errors import AssurWarning
 from assur.plan import Plan
 
 __all__ = ["across_change_points"]
@@ -51,12 +53,18 @@ def across_change_points(
     on = np.isfinite(at)
     if not on.any():
         return [np.asarray(v) for v in evaluate(angles)]
-    # the sweep is taken a degree off the change points, its values there replaced
-    kept = [np.array(v) for v in evaluate(np.where(on, at + 1.0, angles))]
     step = math.degrees(STEP)
-    # the positions around each change point met, node by node
+    # the positions around each change point met, node by node: their warnings
+    # (near a dead centre) are of positions nobody asked for
     around = (at[on][None, :] + step * NODES[:, None]).ravel()
-    found = [np.asarray(v).reshape(NODES.shape[0], -1) for v in evaluate(around)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", AssurWarning)
+        found = [np.asarray(v).reshape(NODES.shape[0], -1) for v in evaluate(around)]
+    kept = [np.full(angles.shape, np.nan) for _ in found]
+    rest = ~on
+    if rest.any():
+        for values, part in zip(kept, evaluate(angles[rest]), strict=True):
+            values[rest] = part
     u = (angles[on] - at[on]) / step
     weights = []
     for i, node in enumerate(NODES):

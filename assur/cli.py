@@ -287,9 +287,16 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
             )
     # shown only once the recording has stopped, so showing cannot record again;
     # the warnings met on the way come before the error that stopped the command
+    told = set()
     for w in caught:
         if issubclass(w.category, AssurWarning):
-            print(f"assur: warning: {source}: {_one_line(w.message)}", file=sys.stderr)
+            line = _one_line(w.message)
+            if line in told:
+                # the same notice from another of the command's sweeps (the
+                # dynamic model, its table and the forces at its motion)
+                continue
+            told.add(line)
+            print(f"assur: warning: {source}: {line}", file=sys.stderr)
         else:
             warnings.showwarning(w.message, w.category, w.filename, w.lineno)
     if failure is not None:

@@ -99,3 +99,20 @@ def test_a_grid_passing_near_a_change_point(off):
     assert model.angle.shape[0] == 2048
     np.testing.assert_allclose(model.inertia, INERTIA, rtol=1e-8)
     assert np.max(np.abs(model.splines[0](model.angle, 1))) < 1e-6 * INERTIA
+
+
+def test_the_command_line_tells_each_warning_once(capsys):
+    """The dynamic model, its table and the positions around a change point each
+    warned of the same change point and of positions nobody asked for (181 deg):
+    25 warnings for rows at 180.001 to 180.005 deg."""
+    from assur.cli import main
+
+    path = EDGE / "parallelogram_masses.toml"
+    assert main(["dynamics", str(path), "--angles", "170:190:5"]) == 0
+    lines = [x for x in capsys.readouterr().err.splitlines() if "warning" in x]
+    assert lines
+    assert len(lines) == len(set(lines))
+    assert not any("181 deg" in x for x in lines)
+    assert main(["dynamics", str(path), "--angles", "180.001:180.005:0.002"]) == 0
+    lines = [x for x in capsys.readouterr().err.splitlines() if "warning" in x]
+    assert len(lines) == len(set(lines)) <= 2
