@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
+import contextlib
+from collections.abc import Iterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -26,3 +29,25 @@ def example(request: pytest.FixtureRequest) -> assur.Mechanism:
 @pytest.fixture
 def data_dir() -> Path:
     return DATA
+
+
+@contextlib.contextmanager
+def local_client(
+    workers: int = 1, processes: bool = False, threads: int = 1
+) -> Iterator[Any]:
+    """A dask.distributed client of a local cluster, closed on leaving.
+
+    The dashboard on a free port: the HTTP server starts even without one, and its
+    default port taken (another cluster) was a warning, an error here.
+    """
+    distributed = pytest.importorskip("distributed")
+    with (
+        distributed.LocalCluster(
+            n_workers=workers,
+            processes=processes,
+            threads_per_worker=threads,
+            dashboard_address=":0",
+        ) as cluster,
+        distributed.Client(cluster) as client,
+    ):
+        yield client

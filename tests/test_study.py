@@ -18,6 +18,8 @@ import pytest
 import assur
 from assur import catalog
 
+from .conftest import local_client
+
 pytest.importorskip("pandas")
 
 ANGLES = np.arange(0.0, 360.0, 3.0) + 45.0
@@ -253,19 +255,8 @@ def test_a_wrong_parameter_name_is_not_a_variant_failure():
 
 
 def test_sweep_on_a_local_cluster(slider_study):
-    distributed = pytest.importorskip("distributed")
     parameters, study = slider_study
-    with (
-        distributed.LocalCluster(
-            n_workers=2,
-            processes=True,
-            threads_per_worker=1,
-            # a free port: the HTTP server starts even without a dashboard, and its
-            # default port taken (another cluster) was a warning, an error here
-            dashboard_address=":0",
-        ) as cluster,
-        distributed.Client(cluster) as client,
-    ):
+    with local_client(workers=2, processes=True) as client:
         remote = assur.sweep(catalog.slider_crank, parameters, ANGLES, client=client)
     assert_agrees(remote.summary, separate(catalog.slider_crank, parameters, ANGLES))
     assert list(remote.summary.index) == list(range(len(RODS)))

@@ -15,8 +15,10 @@ import pytest
 import assur
 from assur import catalog
 
+from .conftest import local_client
+
 pytest.importorskip("pandas")
-distributed = pytest.importorskip("distributed")
+pytest.importorskip("distributed")
 
 
 def test_warnings_stay_with_their_variant_on_a_worker_of_several_threads():
@@ -31,15 +33,7 @@ def test_warnings_stay_with_their_variant_on_a_worker_of_several_threads():
         "omega": np.linspace(100.0, 200.0, n),
     }
     angles = np.arange(0.5, 360.0, 2.0)
-    with (
-        distributed.LocalCluster(
-            n_workers=1,
-            processes=False,
-            threads_per_worker=4,
-            dashboard_address=":0",
-        ) as cluster,
-        distributed.Client(cluster) as client,
-    ):
+    with local_client(threads=4) as client:
         found = assur.sweep(
             catalog.slider_crank, parameters, angles, client, partitions=16
         ).summary
@@ -64,10 +58,7 @@ def test_a_variant_that_kills_its_worker_costs_its_partition_not_the_study():
     with (
         # a partition is given up at the first death (the default waits for four)
         dask.config.set({"distributed.scheduler.allowed-failures": 0}),
-        distributed.LocalCluster(
-            n_workers=1, processes=True, threads_per_worker=1, dashboard_address=":0"
-        ) as cluster,
-        distributed.Client(cluster) as client,
+        local_client(processes=True) as client,
     ):
         found = assur.sweep(ending, {"rod": rods}, angles, client, partitions=3)
     summary = found.summary
@@ -92,12 +83,7 @@ def test_a_variant_that_kills_its_worker_costs_its_partition_not_the_study():
 def test_a_closed_client_is_refused(partitions):
     # an AttributeError ('NoneType' object has no attribute 'ncores') from the
     # client's own code, or its ClosedClientError
-    with (
-        distributed.LocalCluster(
-            n_workers=1, processes=False, threads_per_worker=1, dashboard_address=":0"
-        ) as cluster,
-        distributed.Client(cluster) as client,
-    ):
+    with local_client() as client:
         pass
     with pytest.raises(assur.UsageError, match=r"^client: <Client: .* is closed; exp"):
         assur.sweep(
@@ -108,12 +94,7 @@ def test_a_closed_client_is_refused(partitions):
 def test_progress_counts_the_partitions_gathered():
     told = []
     parameters = {"rod": np.linspace(0.2, 0.3, 10)}
-    with (
-        distributed.LocalCluster(
-            n_workers=1, processes=False, threads_per_worker=1, dashboard_address=":0"
-        ) as cluster,
-        distributed.Client(cluster) as client,
-    ):
+    with local_client() as client:
         assur.sweep(
             catalog.slider_crank,
             parameters,
