@@ -124,7 +124,11 @@ def _scatter(changes: Array) -> float:
 
 
 def _multiplier(
-    solution: Any, span: tuple[float, float], curves: Curves, motor: Motor
+    solution: Any,
+    span: tuple[float, float],
+    model: Reduced,
+    flywheel: float,
+    motor: Motor,
 ) -> float:
     """How much nearer its periodic motion a turn brings the speed, a ratio.
 
@@ -133,21 +137,21 @@ def _multiplier(
     turn comes back ``exp(int dg/dw dphi)`` times as large at its end, the
     integral taken along the turn ``solution`` (dense, over the times ``span``, s)
     in time as ``int (dg/dw) w dt``, where ``(dg/dw) w = (N_w w - N) / (J w)`` and
-    ``N_w = T'(w) - J' w``. NaN when the crank stops for an instant in the turn.
+    ``N_w = T'(w) - J' w``. ``J`` is the model's with the ``flywheel`` (kg m^2).
+    NaN when the crank stops for an instant in the turn.
     """
     begin, end = span
     times = np.linspace(begin, end, MULTIPLIER_SAMPLES + 1)
     angle, speed = solution(times)
+    if not np.all(speed):
+        return math.nan  # dg/dw is unbounded where the crank stops
     slope_motor = 0.0
     if motor.no_load_speed is not None:
         slope_motor = -motor.torque / motor.no_load_speed
-    if not np.all(speed):
-        return math.nan  # dg/dw is unbounded where the crank stops
-    values = np.empty(times.shape[0])
-    for i, (phi, w) in enumerate(zip(angle.tolist(), speed.tolist(), strict=True)):
-        inertia, slope, load = curves(phi)
-        net = motor.at(w) + load - 0.5 * slope * w * w
-        values[i] = ((slope_motor - slope * w) * w - net) / (inertia * w)
+    inertia = model.inertia_at(angle) + flywheel
+    slope = model.slope_at(angle)
+    net = motor.at(speed) + model.torque_at(angle) - 0.5 * slope * speed * speed
+    values = ((slope_motor - slope * speed) * speed - net) / (inertia * speed)
     step = (end - begin) / MULTIPLIER_SAMPLES
     return math.exp(step * float(np.sum(values) - 0.5 * (values[0] + values[-1])))
 

@@ -237,7 +237,7 @@ def _integrate(
             advance(1)
         if _periodic(
             runs.crossings,
-            lambda: _multiplier(runs.last, runs.span, curves, motor),
+            lambda: _multiplier(runs.last, runs.span, model, curves.flywheel, motor),
         ):
             break
     else:

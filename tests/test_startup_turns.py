@@ -140,7 +140,7 @@ def test_the_multiplier_is_the_turn_maps_slope():
     model = reduce(mech)
     curves = Curves(model, flywheel)
     runs = ds._integrate(model, motor, curves, 0.0, 200)
-    found = _multiplier(runs.last, runs.span, curves, motor)
+    found = _multiplier(runs.last, runs.span, model, flywheel, motor)
 
     crank = oracle.crank_model(mech, flywheel)
     phi0, w0 = model.start, runs.crossings[-2]
