@@ -207,37 +207,40 @@ class Summary:
         # a sweep that ends a whole turn on from where it began (0:360:10) ends on
         # its first pose again: counted twice, it tipped a cycle's mean power
         closing = self._closes()
-        if closing:
-            n -= 1
-        tail = self._tail if closing else {}
+        n -= closing
 
-        def less(total: Any, key: str) -> Any:
-            return total - tail[key] if closing else total
+        def less(total: Any, last: Any) -> Any:
+            # the sum without its last position's term, when that is the first's
+            return total - last if closing else total
 
         out: dict[str, Array] = {}
         for name, r in self._joints.items():
             out[f"{name}.F.max"] = r.top
             out[f"{name}.F.at"] = r.at
-            out[f"{name}.F.rms"] = np.sqrt(_cut(r.squares, r.last**2, closing) / n)
+            out[f"{name}.F.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
         for name, r in self._drivers.items():
             out[f"{name}.max"] = r.top
             out[f"{name}.min"] = r.bottom
-            out[f"{name}.mean"] = _cut(r.total, r.last, closing) / n
-            out[f"{name}.rms"] = np.sqrt(_cut(r.squares, r.last**2, closing) / n)
-        power = less(self._power, "power")
+            out[f"{name}.mean"] = less(r.total, r.last) / n
+            out[f"{name}.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
+        power = less(self._power, self._tail.get("power"))
         out["driver.power.mean"] = _per_variant(power / n, self.variants)
         for name, own in self._own.items():
-            out[f"{name}.power.mean"] = _per_variant(less(own, name) / n, self.variants)
+            out[f"{name}.power.mean"] = _per_variant(
+                less(own, self._tail.get(name)) / n, self.variants
+            )
         if self._rubbing:
             losses = {
-                name: less(loss, f"{name}.friction")
+                name: less(loss, self._tail.get(f"{name}.friction"))
                 for name, loss in self._losses.items()
             }
             for name, loss in losses.items():
                 out[f"{name}.friction.loss"] = _per_variant(loss / n, self.variants)
             lost = _per_variant(sum(losses.values()) / n, self.variants)
             out["friction.loss"] = lost
-            ideal = _per_variant(less(self._ideal, "ideal") / n, self.variants)
+            ideal = _per_variant(
+                less(self._ideal, self._tail.get("ideal")) / n, self.variants
+            )
             out["driver.power_ideal.mean"] = ideal
             power = out["driver.power.mean"]
             out["efficiency"] = np.array(
@@ -258,11 +261,6 @@ class Summary:
         return last != first and abs(turns - round(turns)) <= 1e-12 * max(
             1.0, abs(turns)
         )
-
-
-def _cut(total: Array, last: Array, closing: bool) -> Array:
-    """Return ``total`` less the last position's term ``last`` when ``closing``."""
-    return total - last if closing else total
 
 
 def _lasts(values: Array, shape: tuple[int, int]) -> Array:
