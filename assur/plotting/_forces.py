@@ -157,7 +157,7 @@ def _gravity_arrows(table: Table, links: list[str], row: int) -> list[_Arrow]:
     g = np.asarray(mech.gravity, dtype=float)
     return [
         _Arrow(
-            f"$G_{{{_tex(x)}}}$",
+            f"$m_{{{_tex(x)}}} g$",
             _centre(table, x, row),
             mech.link(x).mass * g,
             None,
