@@ -361,6 +361,50 @@ def _with_torque(tmp_path: Path) -> Path:
     return path
 
 
+CYLINDER = """format = 1
+name = "Oscillating cylinder"
+[links.crank]
+[links.piston]
+[links.cylinder]
+mass = 1.2
+center = "O4"
+inertia = 1.5e-3
+[joints.O2]
+kind = "revolute"
+links = ["ground", "crank"]
+at = [0.0, 0.0]
+[joints.B]
+kind = "revolute"
+links = ["crank", "piston"]
+at = [0.025, 0.0433013]
+[joints.bore]
+kind = "prismatic"
+links = ["cylinder", "piston"]
+at = [0.025, 0.0433013]
+axis = [-0.155, 0.0433013]
+[joints.O4]
+kind = "revolute"
+links = ["ground", "cylinder"]
+at = [0.18, 0.0]
+[[drivers]]
+joint = "O2"
+omega = 15.0
+"""
+"""An oscillating cylinder whose only load is its own inertia couple: a link whose
+two joints apart are a pivot and a prismatic joint (the bore)."""
+
+
+def _lever_file(stem: str, tmp_path: Path) -> Path:
+    """The mechanism file of one of ``LEVERS``."""
+    if stem == "torque":
+        return _with_torque(tmp_path)
+    if stem == "cylinder":
+        path = tmp_path / "cylinder.toml"
+        path.write_text(CYLINDER, "utf-8")
+        return path
+    return EXAMPLES / f"{stem}.toml"
+
+
 LEVERS = [
     "slider_crank_exercise",
     "six_bar_lecture",
@@ -368,10 +412,12 @@ LEVERS = [
     "whitworth",
     "four_bar_bearings",
     "torque",
+    "cylinder",
 ]
 """Levers whose couples must be counted: inertia couples on every link but the
 slider-crank's crank, a couple on a block with no two joints apart (Whitworth), an
-external torque with friction (bearings) and without (``torque``)."""
+external torque with friction (bearings) and without (``torque``), a couple carried
+by a pivot and a prismatic joint (``cylinder``)."""
 
 
 @pytest.mark.parametrize("stem", LEVERS)
@@ -379,7 +425,7 @@ external torque with friction (bearings) and without (``torque``)."""
 def test_the_lever_s_terms_add_up_to_the_balancing_load(
     stem: str, angle: float, tmp_path: Path
 ) -> None:
-    path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
+    path = _lever_file(stem, tmp_path)
     mech = assur.load(path)
     torque = float(assur.forces(mech, [angle])["driver.torque"][0])
     terms = lever.lever_moments(table_at(mech, angle))
@@ -418,7 +464,7 @@ def test_the_terms_written_on_the_lever_add_up_by_hand(
 ) -> None:
     import matplotlib.pyplot as plt
 
-    path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
+    path = _lever_file(stem, tmp_path)
     table = table_at(assur.load(path), 45.0)
     ax = lever.zhukovsky_lever(table)
     terms, written = _listed(ax)
@@ -438,7 +484,7 @@ def test_the_forces_drawn_on_the_lever_give_its_load(stem: str, tmp_path: Path) 
     # the moments about the pole of the arrows drawn (a couple as its pair of forces
     # at two joints' images), over the speed, are the balancing load less friction's
     # share and the couples only listed (a block whose joints coincide)
-    path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
+    path = _lever_file(stem, tmp_path)
     table = table_at(assur.load(path), 45.0)
     pos = position(assur.load(path), 45.0)
     bodies, speed, _ = lever_rates(pos, 0)
@@ -463,7 +509,7 @@ def test_the_note_s_lever_lists_the_terms_the_picture_lists(
 ) -> None:
     from assur.explain import explain
 
-    path = _with_torque(tmp_path) if stem == "torque" else EXAMPLES / f"{stem}.toml"
+    path = _lever_file(stem, tmp_path)
     mech = assur.load(path)
     note = str(explain(mech, 45.0)).split("## 6. Check by Zhukovsky's lever")[1]
     # the table of powers: | $load$ | force or couple | velocity | $power$ |
@@ -626,3 +672,16 @@ def test_the_plans_names_do_not_overlap(stem: str, angle: float) -> None:
         finally:
             plt.close(ax.figure)
         assert not [(texts[i].get_text(), texts[j].get_text()) for i, j in pairs]
+
+
+def test_a_cylinder_s_couple_acts_at_its_pivot_and_its_bore(tmp_path: Path) -> None:
+    import matplotlib.pyplot as plt
+
+    table = table_at(assur.load(_lever_file("cylinder", tmp_path)), 70.0)
+    ax = lever.zhukovsky_lever(table)
+    texts = [t.get_text() for t in ax.texts]
+    plt.close(ax.figure)
+    assert not any("listed only" in t for t in texts)
+    # the pair's forces, and the image of the cylinder's point at the bore
+    assert sum("/l_{" in t for t in texts) == 2
+    assert r"$\text{bore}_{\text{cylinder}}$" in texts

@@ -149,6 +149,7 @@ def zhukovsky_lever(
     terms = [t for _, _, t in shares if t is not None]
     apart = _apart(lever, terms)
     arrows = _lever_arrows(lever, terms, apart)
+    _name_pair_points(ax, lever, apart, found, mu)
     # a couple's pair is drawn to its own scale: beside the inertia forces it is
     # often a fraction of a millimetre
     fmu, cmu = (
@@ -224,12 +225,46 @@ def _lever_arrows(
     return out
 
 
+def _name_pair_points(
+    ax: Any,
+    lever: Position,
+    apart: dict[int, Ends | None],
+    found: dict[str, np.ndarray],
+    mu: float,
+) -> None:
+    """Mark and name the images a couple's pair acts at that are no named image.
+
+    A link's point at a prismatic joint (a cylinder's at its bore) moves unlike
+    the joint's point on the other link: its image is ``bore_cylinder``, as on
+    the velocity plan.
+    """
+    size = max((float(np.hypot(*v)) for v in found.values()), default=0.0)
+    for body, ends in apart.items():
+        for name, at in ends or ():
+            image = _perp(lever.coincident(body, at, 1))
+            if any(np.hypot(*(image - v)) <= 1e-9 * size for v in found.values()):
+                continue
+            tip = image / mu
+            ax.plot(*tip, "o", ms=3.5, color="#333333")
+            link = tex_name(lever.link(body))
+            label = _symbol(f"{tex_name(name.lower())}_{{{link}}}")
+            LOAD_LABELS.add(
+                ax.annotate(
+                    label, tip, xytext=(4, 4), textcoords="offset points", fontsize=8
+                )
+            )
+
+
 def _joints_apart(pos: Position, body: int) -> Ends | None:
-    """Return the two revolute joints of ``body`` farthest apart, or None."""
+    """Return the two joints of ``body`` farthest apart, or None.
+
+    A prismatic joint counts at its point: any two points of a link carry its
+    couple as a pair of forces (an oscillating cylinder's pivot and its bore).
+    """
     pins = [
         (p.name, pos.pair_point(p))
         for p in pos.plan.pairs.values()
-        if p.kind == "R" and body in (p.first, p.second) and "~" not in p.name
+        if body in (p.first, p.second) and "~" not in p.name
     ]
     best, far = None, PAIR_GAP * pos.size()
     for i, (a, at_a) in enumerate(pins):
