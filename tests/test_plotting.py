@@ -339,8 +339,8 @@ def test_draw_forces_needs_a_forces_table(tenbar: assur.Table) -> None:
 def test_animation_scale_covers_two_drivers(five_bar: assur.Table) -> None:
     ax = plotting.draw(five_bar, forces=True)
     labels = [t.get_text() for t in ax.texts]
-    assert any("T_{b,\\text{A}}" in t for t in labels)
-    assert any("T_{b,\\text{E}}" in t for t in labels)
+    assert any("M_{b,\\text{A}}" in t for t in labels)
+    assert any("M_{b,\\text{E}}" in t for t in labels)
 
 
 # ---------------------------------------------------- decomposition, free body

@@ -277,14 +277,16 @@ def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:
     for i, d in enumerate(drivers):
         p = pose.at(d.pair.second, d.pair.d_second)
         value = float(full(ctx.forces.balancing[i], len(ctx.table))[row])
-        label = f"$T_{{b,{_tex(d.pair.name)}}}$" if len(drivers) > 1 else "$T_b$"
+        # the note's symbols: M_b for a torque, F_b for a force
+        letter = "M" if d.kind == "R" else "F"
+        many = len(drivers) > 1
+        label = f"${letter}_{{b,{_tex(d.pair.name)}}}$" if many else f"${letter}_b$"
         owner = "driver" if len(drivers) == 1 else d.pair.name
         if d.kind == "R":
             units = _units(ctx.table, couple=f"{owner}.torque")
             arrow = _Arrow(label, p, None, value, BALANCING_COLOR, units, "balancing")
         else:
             e = pose.turn(d.pair.first, d.pair.axis)
-            label = label.replace("T", "F")
             units = _units(ctx.table, force=f"{owner}.force")
             arrow = _Arrow(
                 label, p, value * e, None, BALANCING_COLOR, units, "balancing"
