@@ -9,6 +9,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
+import numpy as np
+
 from assur._text import number_text
 from assur.columns import pretty_unit
 
@@ -106,11 +108,26 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
 
 def _startup_lines(run: Any) -> list[tuple[str, str]]:
     """Return the figures of a start-up, as (label, value) lines."""
+    # the crank's turns until it settles, not those integrated to tell it has
+    turned = abs(float(np.interp(run.settle_time, run.time, run.angle)) - run.angle[0])
+    middle = 0.5 * (run.speed_max + run.speed_min)
     return [
-        ("start-up", f"settles in {run.settle_time:.6g} s ({run.turns} turns)"),
+        (
+            "start-up",
+            f"settles in {run.settle_time:.6g} s ({turned / 360.0:.3g} turns; "
+            f"{run.turns} turns integrated)",
+        ),
         (
             "periodic motion",
-            f"mean speed {run.mean_speed:.6g} rad/s, delta = {run.delta:.6g}",
+            # magnitudes, as the steady state's extremes are
+            f"speed {run.speed_min:.6g} to {run.speed_max:.6g} rad/s, mean "
+            f"{abs(run.mean_speed):.6g} rad/s (2 pi / period {run.period:.6g} s)"
+            + (", clockwise" if run.mean_speed < 0 else ""),
+        ),
+        (
+            "",
+            # the steady state's definition: over the mean of the extreme speeds
+            f"delta = {run.delta:.6g} (max - min over their mean, {middle:.6g} rad/s)",
         ),
     ]
 

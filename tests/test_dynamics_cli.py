@@ -139,8 +139,15 @@ def test_startup_from_the_file_motor(capsys, tmp_path: Path):
     )
     assert (status, err) == (0, "")
     run_ = assur.startup(assur.load(path), 20.0)
-    assert f"settles in {run_.settle_time:.6g} s ({run_.turns} turns)" in out
-    assert f"mean speed {run_.mean_speed:.6g} rad/s" in out
+    # the turns the crank makes until it settles, and those integrated
+    turned = np.interp(run_.settle_time, run_.time, run_.angle) - run_.angle[0]
+    settles = f"settles in {run_.settle_time:.6g} s ({abs(turned) / 360:.3g} turns; "
+    assert settles + f"{run_.turns} turns integrated)" in out
+    assert f"mean {abs(run_.mean_speed):.6g} rad/s (2 pi / period" in out
+    # delta is over the mean of the extremes (the steady state's), which is printed
+    middle = (run_.speed_max + run_.speed_min) / 2
+    delta = (run_.speed_max - run_.speed_min) / middle
+    assert f"delta = {delta:.6g} (max - min over their mean, {middle:.6g} rad/s)" in out
 
 
 def test_startup_samples_to_csv_and_json(capsys, tmp_path: Path):
@@ -237,7 +244,7 @@ def test_startup_where_the_file_speed_has_no_steady_state(capsys, tmp_path: Path
     assert err.startswith("assur: warning: ")
     assert "would come to rest" in err
     assert err.endswith("shown: the start-up alone\n")
-    assert f"mean speed {run_.mean_speed:.6g} rad/s" in out
+    assert f"mean {abs(run_.mean_speed):.6g} rad/s" in out
     assert "nominal crank speed" not in out
     status, out, _ = run(capsys, "dynamics", path, "--startup", "--json")
     assert status == 0
@@ -444,3 +451,14 @@ def test_a_lock_in_a_later_slice_writes_nothing(capsys, monkeypatch, tmp_path, o
     assert (
         "its friction locks it at driver position 248 deg (7 of 31 positions)" in line
     )
+
+
+def test_a_clockwise_start_up_prints_its_speeds_as_magnitudes(capsys) -> None:
+    path = Path(__file__).parent / "data" / "edge" / "four_bar_motor_clockwise.toml"
+    argv = ("dynamics", path, "--flywheel", "0.01", "--startup", "--angles", "-50")
+    status, out, _ = run(capsys, *argv)
+    assert status == 0
+    run_ = assur.startup(assur.load(path), 0.01)
+    assert run_.mean_speed < 0 < run_.speed_min < run_.speed_max
+    assert f"mean {-run_.mean_speed:.6g} rad/s (2 pi / period" in out
+    assert out.count(", clockwise\n") == 1
