@@ -6,12 +6,13 @@ And a start from rest refused where the motor's torque does not beat the load's.
 from __future__ import annotations
 
 import math
+import warnings
 from typing import TYPE_CHECKING, Any
 
 from assur._motor import validate_motor
 from assur._vec import integer, real
 from assur.dynamics_reduced import Reduced
-from assur.errors import ModelError, UsageError
+from assur.errors import AssurWarning, ModelError, UsageError
 from assur.model import Mechanism, Motor
 
 if TYPE_CHECKING:
@@ -56,6 +57,24 @@ def _motor(mechanism: Mechanism, motor: Motor | None) -> Motor:
         )
         raise ModelError(msg)
     return mechanism.motor
+
+
+def _against_omega(mechanism: Mechanism, motor: Motor) -> None:
+    """Warn when the motor turns the crank against the driver's ``omega``.
+
+    The start-up then runs the other way than the steady state, the flywheel's
+    sizing and the forces at ``omega``, all shown beside it by ``assur dynamics``.
+    """
+    omega = float(mechanism.drivers[0].omega)
+    if omega * motor.torque >= 0:
+        return
+    sense = "counter-clockwise" if motor.torque > 0 else "clockwise"
+    msg = (
+        f"startup: the motor turns the crank {sense} (torque {motor.torque:g} N m), "
+        f"against the driver's omega = {omega:g} rad/s: the start-up runs the other "
+        "way than every analysis at omega; expected a motor of omega's sign"
+    )
+    warnings.warn(msg, AssurWarning, stacklevel=3)
 
 
 def _starts(model: Reduced, motor: Motor, omega0: float, curves: Curves) -> None:

@@ -23,7 +23,7 @@ import numpy as np
 
 from assur._progress import Callback
 from assur._progress import progress as show_progress
-from assur._startup_checks import _motor, _speed, _starts, _turns
+from assur._startup_checks import _against_omega, _motor, _speed, _starts, _turns
 from assur._startup_curves import Curves
 from assur._startup_settle import extreme, periodic_speed, settle_time
 from assur._startup_steps import stepper
@@ -174,6 +174,7 @@ def startup(
     """
     check_dynamic(mechanism, "startup")
     engine = _motor(mechanism, motor)
+    _against_omega(mechanism, engine)
     inertia = checked_flywheel(flywheel)
     sense = math.copysign(1.0, engine.torque)
     omega0 = _speed(omega0)

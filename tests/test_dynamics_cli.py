@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import subprocess
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -462,3 +463,21 @@ def test_a_clockwise_start_up_prints_its_speeds_as_magnitudes(capsys) -> None:
     assert run_.mean_speed < 0 < run_.speed_min < run_.speed_max
     assert f"mean {-run_.mean_speed:.6g} rad/s (2 pi / period" in out
     assert out.count(", clockwise\n") == 1
+
+
+def test_a_motor_against_omega_is_told(capsys, tmp_path: Path) -> None:
+    # the four-bar turns clockwise (omega -25); this motor turns it the other way
+    path = Path(__file__).parent / "data" / "edge" / "four_bar_motor_clockwise.toml"
+    text = path.read_text().replace("torque = -8.0", "torque = 8.0")
+    target = tmp_path / "against.toml"
+    target.write_text(text.replace("no_load_speed = -30.0", "no_load_speed = 30.0"))
+    with pytest.warns(assur.AssurWarning, match="against the driver's omega = -25"):
+        run_ = assur.startup(assur.load(target), 0.01)
+    assert run_.mean_speed > 0
+    status, _, err = run(capsys, "dynamics", target, "--flywheel", "0.01", "--startup")
+    assert status == 0
+    assert err.count("the motor turns the crank counter-clockwise (torque 8 N m)") == 1
+    # a motor of omega's sign: no word
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", assur.AssurWarning)
+        assur.startup(assur.load(path), 0.01)

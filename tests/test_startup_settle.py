@@ -112,7 +112,9 @@ def test_a_balanced_crank_settles_at_tau_ln_50(stall, free):
     tau = J w0 / T, enters the band of 2 % around w0 at tau ln 50; either sense, and
     a motor so stiff (tau = 1.3 us) that the first sample comes 5000 tau late."""
     tau = (3.0 * 0.2**2 + 0.01) * free / stall
-    run = assur.startup(crank(motor=Motor(stall, free)))
+    run = assur.startup(
+        crank(omega=math.copysign(10.0, free), motor=Motor(stall, free))
+    )
     # the periodic speed is w0 to 1e-8 (periodic to 1e-8 a turn): the band's edge
     # moves by that much, the time by 1e-8 / 0.02 * tau / ln 50 of itself
     assert run.settle_time == pytest.approx(tau * math.log(50.0), rel=1e-6)
