@@ -130,18 +130,6 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     mech = load_mechanism(args.file)
     check_structure(mech)
     check_dynamic(mech)  # one crank and masses, before its --angles are read
-    if not quiet(args) and any(j.friction > 0.0 for j in mech.joints):
-        print(
-            f"assur: note: {path_text(args.file)}: the dynamic model leaves the "
-            "joints' friction out"
-            + (
-                "; the force table's driver.torque overcomes it too (its "
-                "driver.torque_ideal is the model's)"
-                if args.forces
-                else ""
-            ),
-            file=sys.stderr,
-        )
     angles = (
         default_positions(mech) if args.angles is None else parse_angles(args.angles)
     )
@@ -169,6 +157,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     if run is not None and args.startup_csv is not None:
         startup_file.append((args.startup_csv, startup_csv(run), len(run.time), 3))
     if state is None:
+        _notes(args, mech)
         _write_files(args, startup_file, None)
         if args.json:
             document = {"name": mech.name, "startup": _startup_data(run)}
@@ -178,6 +167,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         return 0
     rows = _Rows(mech, state, angles, args.forces)
     rows.check()
+    _notes(args, mech)
     # the files first, as a set: standard output read by a pipe may go away
     _write_files(args, startup_file, rows)
     if args.json or args.csv == "-":
@@ -201,6 +191,29 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         text = _readable(shown, args.forces, len(angles))
         write_stdout(figures + "\n\n" + text + "\n")
     return 0
+
+
+def _notes(args: argparse.Namespace, mech: Any) -> None:
+    """Tell what the dynamic model leaves out of the file, once the work is done."""
+    if quiet(args):
+        return
+    where = f"assur: note: {path_text(args.file)}: the dynamic model leaves the"
+    if any(j.friction > 0.0 for j in mech.joints):
+        shown = (
+            "; the force table's driver.torque overcomes it too (its "
+            "driver.torque_ideal is the model's)"
+            if args.forces
+            else ""
+        )
+        print(f"{where} joints' friction out{shown}", file=sys.stderr)
+    epsilon = float(mech.drivers[0].epsilon)
+    if epsilon != 0.0:
+        # the model finds the crank's acceleration from its equation of motion
+        print(
+            f"{where} driver's epsilon = {epsilon:g} rad/s^2 out: the crank's "
+            "acceleration is its equation of motion's (driver.epsilon)",
+            file=sys.stderr,
+        )
 
 
 class _Rows:

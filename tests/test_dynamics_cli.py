@@ -18,6 +18,11 @@ from .test_cli_robustness import shell
 
 WHITWORTH = EXAMPLES / "whitworth.toml"
 FOUR_BAR = EXAMPLES / "four_bar.toml"
+EPSILON_NOTE = (
+    "assur: note: {}: the dynamic model leaves the driver's epsilon = 10 rad/s^2 "
+    "out: the crank's acceleration is its equation of motion's (driver.epsilon)\n"
+)
+"""What ``assur dynamics`` tells of the four-bar's file (its crank accelerates)."""
 
 
 def run(capsys, *args) -> tuple[int, str, str]:
@@ -37,7 +42,7 @@ def one_error(capsys, *args) -> str:
 
 def test_figures_and_table(capsys):
     status, out, err = run(capsys, "dynamics", FOUR_BAR, "--angles", "0:90:30")
-    assert (status, err) == (0, "")
+    assert (status, err) == (0, EPSILON_NOTE.format(FOUR_BAR))
     t = assur.dynamics(assur.load(FOUR_BAR), [0.0, 30.0, 60.0, 90.0])
     assert "dynamic model reduced to the crank" in out
     assert f"delta = {t.delta:.6g}" in out
@@ -273,7 +278,8 @@ def test_json_and_a_csv_file_are_both_written(capsys, tmp_path: Path):
     assert lines[0].split(",") == list(t.columns) == data["columns"]
     assert len(lines) == 1 + 4
     # the line saying so goes to standard error, beside the JSON
-    assert err == f"wrote 4 rows x {len(t.columns)} columns to {target}\n"
+    wrote = f"wrote 4 rows x {len(t.columns)} columns to {target}\n"
+    assert err == EPSILON_NOTE.format(FOUR_BAR) + wrote
 
 
 def test_the_files_are_written_as_a_set(capsys, tmp_path: Path):
@@ -313,7 +319,7 @@ def test_standard_output_by_another_name(tmp_path: Path, options, message):
 
 def test_dev_stdout_is_written_as_standard_output(tmp_path: Path):
     result = _shell(tmp_path, "--angles 0:90:30 --csv /dev/stdout")
-    assert result.stderr == ""
+    assert result.stderr == EPSILON_NOTE.format(FOUR_BAR)
     # no "wrote ..." line in the stream after the table
     assert len(result.stdout.splitlines()) == 1 + 4
     assert "wrote" not in result.stdout
@@ -481,3 +487,20 @@ def test_a_motor_against_omega_is_told(capsys, tmp_path: Path) -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error", assur.AssurWarning)
         assur.startup(assur.load(path), 0.01)
+
+
+def test_the_file_s_epsilon_is_said_to_be_left_out(capsys, tmp_path: Path) -> None:
+    text = WHITWORTH.read_text()
+    assert "epsilon = 0.0" in text
+    path = tmp_path / "accelerating.toml"
+    path.write_text(text.replace("epsilon = 0.0", "epsilon = 5.0"))
+    status, out, err = run(capsys, "dynamics", path, "--flywheel", "20")
+    assert status == 0
+    assert err == (
+        f"assur: note: {path}: the dynamic model leaves the driver's epsilon = 5 "
+        "rad/s^2 out: the crank's acceleration is its equation of motion's "
+        "(driver.epsilon)\n"
+    )
+    # the same model as without it
+    _, same, _ = run(capsys, "dynamics", WHITWORTH, "--flywheel", "20")
+    assert out == same.replace(WHITWORTH.name, path.name)
