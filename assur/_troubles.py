@@ -15,7 +15,7 @@ import numpy as np
 from assur._branches import branches
 from assur._paths import path_changes
 from assur._reach import beyond, reach
-from assur._text import position_text
+from assur._runs import position_where, runs_text
 from assur._vec import Array, Mask, is_array
 from assur.errors import (
     AssemblyError,
@@ -72,14 +72,14 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
             # every slice's positions of this trouble: the counts are the sweep's
             mask = _all_failures(troubles, n, trouble.group, trouble.what)
             first = int(np.flatnonzero(mask)[0])
-            where = _where(plan, given[first])
+            where = position_where(plan, given[first])
             if trouble.what == "unreached":
                 raise AssemblyError(_unreached(plan, given, mask, trouble.group))
             if trouble.what == "assembly":
                 # where the mechanism assembles and goes, whatever else stops it there
                 closes = ~_all_failures(troubles, n, what="assembly")
                 closes &= ~_all_failures(troubles, n, what="unreached")
-                good = _ranges(plan, given, closes)
+                good = runs_text(plan, given, closes)
                 msg = (
                     f"group {trouble.group}: cannot be assembled at driver position "
                     f"{where} ({int(mask.sum())} of {n} positions fail); it assembles "
@@ -87,9 +87,8 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                 )
                 locked = closes & _all_failures(troubles, n, what="locked")
                 if locked.any():
-                    msg += (
-                        f" (where friction locks it at {_ranges(plan, given, locked)})"
-                    )
+                    locks = runs_text(plan, given, locked)
+                    msg += f" (where friction locks it at {locks})"
                 raise AssemblyError(msg)
             if trouble.what == "locked":
                 msg = (
@@ -112,7 +111,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
             warnings.warn(
                 f"group {group}: near a dead centre (within about 2 degrees of "
                 f"transmission angle 0 or 180) at driver positions "
-                f"{_ranges(plan, given, mask)}",
+                f"{runs_text(plan, given, mask)}",
                 AssurWarning,
                 stacklevel=4,
             )
@@ -156,15 +155,16 @@ def _around(plan: Plan, given: Array, group: str, mask: Mask, ok: Mask) -> str:
             continue
         first = np.flatnonzero(far)[np.argmin(ahead[far] * side)]
         near = ok & ~mask & (ahead * side >= 0.0) & (ahead * side < ahead[first] * side)
-        stop = f"before {_where(plan, given[first])}"
+        stop = f"before {position_where(plan, given[first])}"
         if near.any():
             last = np.flatnonzero(near)[np.argmax(ahead[near] * side)]
-            stop = f"between {_where(plan, given[last])} and {stop[7:]}"
+            stop = f"between {position_where(plan, given[last])} and {stop[7:]}"
         limits.append(stop)
     return (
-        f"group {group}: driver positions {_ranges(plan, given, mask)} are reached "
+        f"group {group}: driver positions {runs_text(plan, given, mask)} are reached "
         "turning the other way round from the reference pose "
-        f"({_where(plan, np.array([reference]))}); the group cannot follow the crank "
+        f"({position_where(plan, np.array([reference]))}); the group cannot follow "
+        "the crank "
         f"to them the short way (its branch folds {' and '.join(limits)})"
     )
 
@@ -183,7 +183,7 @@ def _unreached(plan: Plan, given: Array, mask: Mask, group: str) -> str:
         # a barrier found by root finding lands within rounding of a round number
         value = round(math.degrees(x) if d.kind == "R" else x / plan.scale, 6)
         value = value if d.kind == "R" else value * plan.scale
-        return _where(plan, np.array([value + 0.0]))
+        return position_where(plan, np.array([value + 0.0]))
 
     row = given[int(np.flatnonzero(mask)[0])]
     x = math.radians(row[0]) if d.kind == "R" else float(row[0])
@@ -213,7 +213,7 @@ def _unreached(plan: Plan, given: Array, mask: Mask, group: str) -> str:
     if span.period is not None:
         expected += " (or whole turns from them)"
     return (
-        f"group {group}: driver position {_where(plan, row)} {head} "
+        f"group {group}: driver position {position_where(plan, row)} {head} "
         f"({int(mask.sum())} of {mask.shape[0]} positions): {why}; expected "
         f"positions {expected}"
     )
@@ -233,40 +233,6 @@ def _all_failures(
         if what is None or trouble.what == what:
             bad[start : start + trouble.mask.shape[0]] |= trouble.mask
     return bad
-
-
-def _where(plan: Plan, position: Array) -> str:
-    """Describe one position of the drivers (as given) for a message."""
-    return position_text([d.kind for d in plan.drivers], position.tolist())
-
-
-def _ranges(plan: Plan, given: Array, mask: Mask) -> str:
-    """Describe the runs of consecutive positions in ``mask``.
-
-    One driver's positions given out of order are taken in increasing order: a run
-    is then of neighbours among all the positions given.
-    """
-    if given.shape[1] == 1 and given.shape[0] > 1:
-        x = given[:, 0]
-        # compared in place: a long sweep's steps would take 8 bytes a position
-        if not (np.all(x[1:] >= x[:-1]) or np.all(x[1:] <= x[:-1])):
-            order = np.argsort(x, kind="stable")
-            given, mask = given[order], mask[order]
-    if not mask.any():
-        return ""
-    # the runs' ends alone, not the index of every position in them
-    edges = np.flatnonzero(mask[1:] != mask[:-1]) + 1
-    starts = edges[mask[edges]]
-    ends = edges[~mask[edges]] - 1
-    if mask[0]:
-        starts = np.r_[0, starts]
-    if mask[-1]:
-        ends = np.r_[ends, mask.shape[0] - 1]
-    runs = []
-    for a, b in zip(starts, ends, strict=True):
-        first, last = _where(plan, given[a]), _where(plan, given[b])
-        runs.append(first if a == b else f"{first} to {last}")
-    return "; ".join(runs[:6]) + ("; ..." if len(runs) > 6 else "")
 
 
 def _unexplained(
@@ -304,7 +270,7 @@ def _unexplained(
     if bad.any():
         warnings.warn(
             f"values of {', '.join(named[:6])}{', ...' if len(named) > 6 else ''} are "
-            f"not finite at driver positions {_ranges(plan, given, bad)}, where no "
+            f"not finite at driver positions {runs_text(plan, given, bad)}, where no "
             "group fails: the inputs are out of the range the arithmetic can follow",
             AssurWarning,
             stacklevel=7,
@@ -366,8 +332,9 @@ def _change_points(plan: Plan, given: Array, drive: Array) -> bool:
         value = math.degrees(position) if d.kind == "R" else position
         warnings.warn(
             f"group {plan.solvers[g].label}: its two assembly branches meet at driver "
-            f"position {_where(plan, np.array([value]))} (a change point); the motion "
-            "is carried through onto the branch whose velocities are continuous",
+            f"position {position_where(plan, np.array([value]))} (a change point); "
+            "the motion is carried through onto the branch whose velocities are "
+            "continuous",
             AssurWarning,
             stacklevel=4,
         )
@@ -381,7 +348,7 @@ def _path_change_points(plan: Plan, given: Array, drive: Array) -> bool:
         warnings.warn(
             f"group {plan.solvers[g].label}: its two assembly branches meet on the "
             "straight path from the reference pose to driver positions "
-            f"{_ranges(plan, given, c > 0)} (a change point); the motion is carried "
+            f"{runs_text(plan, given, c > 0)} (a change point); the motion is carried "
             "through onto the branch whose velocities are continuous",
             AssurWarning,
             stacklevel=5,

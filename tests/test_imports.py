@@ -74,6 +74,7 @@ RANKS = {
     # the columns computed slice by slice from the links' rebuilt motions
     "assur._chunks": 7,
     # a sweep's troubles: errors, positions left out, warnings (change points too)
+    "assur._runs": 6,
     "assur._troubles": 7,
     "assur.table": 8,
     # what every table of results offers: its columns by name, and their export

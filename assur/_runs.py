@@ -1,0 +1,81 @@
+"""Driver positions named in messages: one position, and runs of them.
+
+A sweep of one crank over a whole turn closes on itself: a run that reaches its
+last position goes on at its first one, and the two are told as one range.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from assur._text import position_text
+from assur._vec import Array, Mask
+from assur.plan import Plan
+
+__all__ = ["position_where", "runs_text"]
+
+MOST_RUNS = 6
+"""Runs named in one message; more are written as an ellipsis."""
+
+
+def position_where(plan: Plan, position: Array) -> str:
+    """Describe one position of the drivers (as given) for a message."""
+    return position_text([d.kind for d in plan.drivers], position.tolist())
+
+
+def runs_text(plan: Plan, given: Array, mask: Mask) -> str:
+    """Describe the runs of consecutive positions in ``mask``.
+
+    One driver's positions given out of order are taken in increasing order: a run
+    is then of neighbours among all the positions given. A crank's sweep over a
+    whole turn joins its last run to its first: "-11 deg to 41 deg", not "40 deg to
+    41 deg; 349 deg to 399 deg" for a sweep from 40 to 399 deg.
+    """
+    if given.shape[1] == 1 and given.shape[0] > 1:
+        x = given[:, 0]
+        # compared in place: a long sweep's steps would take 8 bytes a position
+        if not (np.all(x[1:] >= x[:-1]) or np.all(x[1:] <= x[:-1])):
+            order = np.argsort(x, kind="stable")
+            given, mask = given[order], mask[order]
+    if not mask.any():
+        return ""
+    # the runs' ends alone, not the index of every position in them
+    edges = np.flatnonzero(mask[1:] != mask[:-1]) + 1
+    starts = edges[mask[edges]]
+    ends = edges[~mask[edges]] - 1
+    if mask[0]:
+        starts = np.r_[0, starts]
+    if mask[-1]:
+        ends = np.r_[ends, mask.shape[0] - 1]
+    runs = []
+    turn = _turn(plan, given) if len(starts) > 1 and mask[0] and mask[-1] else 0.0
+    if turn:
+        # the last run goes on into the first: told from where the last begins,
+        # a turn back, to where the first ends
+        first = position_where(plan, given[starts[-1]] - turn)
+        runs.append(f"{first} to {position_where(plan, given[ends[0]])}")
+        starts, ends = starts[1:-1], ends[1:-1]
+    for a, b in zip(starts, ends, strict=True):
+        first, last = position_where(plan, given[a]), position_where(plan, given[b])
+        runs.append(first if a == b else f"{first} to {last}")
+    more = "; ..." if len(runs) > MOST_RUNS else ""
+    return "; ".join(runs[:MOST_RUNS]) + more
+
+
+def _turn(plan: Plan, given: Array) -> float:
+    """Return +-360 when one crank's sweep (in order) spans a whole turn, else 0.
+
+    A whole turn: the step after the last position would reach the first one a
+    turn on (a sweep from 40 to 399 deg in steps of 1), or the last position is
+    the first one a turn on (0 to 360 deg).
+    """
+    if len(plan.drivers) != 1 or plan.drivers[0].kind != "R" or given.shape[0] < 3:
+        return 0.0
+    x = given[:, 0]
+    span, step = float(x[-1] - x[0]), float(x[-1] - x[-2])
+    if step == 0.0 or (span > 0) != (step > 0):
+        return 0.0
+    turn = 360.0 if span > 0 else -360.0
+    # to the rounding of a sweep's positions, whatever their size
+    tiny = 1e-9 * max(360.0, float(np.max(np.abs(x))))
+    return turn if abs(span + step - turn) <= tiny or abs(span - turn) <= tiny else 0.0

@@ -1,0 +1,67 @@
+"""Runs of driver positions in messages (assur._runs): a whole turn is one range."""
+
+from __future__ import annotations
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+import assur
+from assur._runs import _turn, runs_text
+from assur.plan import compile_plan
+
+from .conftest import EXAMPLES
+
+
+def _crank() -> assur.Mechanism:
+    return assur.load(EXAMPLES / "four_bar.toml")
+
+
+def _text(mech: assur.Mechanism, x: np.ndarray, mask: np.ndarray) -> str:
+    return runs_text(compile_plan(mech), x.reshape(-1, 1), mask)
+
+
+def _between(x: np.ndarray, low: float, high: float) -> np.ndarray:
+    """Positions whose angle, modulo a turn, is from ``low`` to ``high`` (deg)."""
+    return np.remainder(x - low, 360.0) <= high - low
+
+
+@pytest.mark.parametrize(
+    ("start", "stop", "step", "want"),
+    [
+        # one turn from 40 deg: the first run goes on into the last
+        (40.0, 400.0, 1.0, "-11 deg to 41 deg"),
+        # ending on the first pose again
+        (40.0, 401.0, 1.0, "-11 deg to 41 deg"),
+        # the other way round: told in the sweep's order
+        (40.0, -320.0, -1.0, "41 deg to -11 deg"),
+        # less than a turn: two runs
+        (40.0, 390.0, 1.0, "40 deg to 41 deg; 349 deg to 389 deg"),
+    ],
+)
+def test_a_whole_turn_joins_its_ends(start, stop, step, want) -> None:
+    x = np.arange(start, stop, step)
+    assert _text(_crank(), x, _between(x, -11.0, 41.0)) == want
+
+
+def test_runs_inside_a_turn_are_told_apart() -> None:
+    x = np.arange(0.0, 360.0, 1.0)
+    mask = _between(x, 10.0, 20.0) | _between(x, 100.0, 120.0)
+    assert _text(_crank(), x, mask) == "10 deg to 20 deg; 100 deg to 120 deg"
+    # every position: one run, nothing to join
+    assert _text(_crank(), x, np.ones_like(mask)) == "0 deg to 359 deg"
+
+
+def test_only_one_crank_s_sweep_wraps() -> None:
+    x = np.arange(0.0, 360.0, 1.0)
+    assert _turn(compile_plan(_crank()), x.reshape(-1, 1)) == 360.0
+    # a prismatic driver's 360 mm of travel is no turn
+    exercise = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    pushed = dataclasses.replace(exercise, drivers=(assur.Driver("guide", 1.0),))
+    slider = compile_plan(pushed)
+    assert [d.kind for d in slider.drivers] == ["P"]
+    assert _turn(slider, x.reshape(-1, 1)) == 0.0
+    # nor are two cranks' positions
+    two = compile_plan(assur.load(EXAMPLES / "five_bar_two_cranks.toml"))
+    assert _turn(two, np.stack([x, x], axis=1)) == 0.0
