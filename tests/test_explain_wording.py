@@ -300,3 +300,36 @@ def test_an_rpr_note_says_why_its_links_angles_differ():
     -169.09 deg) with no word of how each is measured."""
     text = str(explain(assur.load(EXAMPLES / "whitworth.toml"), 60.0))
     assert "their angles below differ by a constant" in text
+
+
+@pytest.mark.parametrize(
+    ("path", "angle"),
+    [
+        (EXAMPLES / "class3.toml", 70.0),
+        (Path(__file__).parent / "data" / "edge" / "triadP.toml", 300.0),
+    ],
+)
+def test_a_triad_s_note_says_whose_load_each_unknown_is(path: Path, angle: float):
+    # twelve equations in F_x^B ... with no word of which link's force on which
+    from assur.plan import compile_plan
+
+    mech = assur.load(path)
+    note = str(explain(mech, angle))
+    (line,) = [x for x in note.splitlines() if x.startswith("The unknowns are")]
+    assert "each of the joint's first link on its second" in line
+    plan = compile_plan(mech)
+    (triad,) = plan.groups
+    bodies = {plan.body(x) for x in triad.links}
+    told = dict(
+        part.split(": ") for part in line.rstrip(".").split(". ")[1].split("; ")
+    )
+    # every joint of the triad's links is told, with the first link on the second
+    want = {
+        name: f"{plan.bodies[pair.first]} on {plan.bodies[pair.second]}"
+        for name, pair in plan.pairs.items()
+        if {pair.first, pair.second} & bodies
+    }
+    assert told == want
+    assert len(told) == 6
+    sliding = any(pair.kind == "P" for pair in plan.pairs.values())
+    assert ("normal force $N^{J}$" in line) == sliding

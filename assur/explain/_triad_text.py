@@ -11,7 +11,7 @@ import numpy as np
 
 from assur.explain._note import Block, Display, Para
 from assur.explain._position import Position
-from assur.explain._tex import name, num, par, text
+from assur.explain._tex import name, num, par, plain, text
 from assur.groups._protocol import Equilibrium
 
 __all__ = ["system_blocks"]
@@ -35,6 +35,7 @@ def system_blocks(pos: Position, rec: Equilibrium) -> list[Block]:
         )
     values = [f"{sym} = {num(v)}" for sym, v in zip(symbols, x, strict=True)]
     return [
+        Para(_meaning(pos, eq.unknowns)),
         Para(
             "Each link's two force sums and its moment equation, with the known loads "
             "on the right (N, N m):"
@@ -50,3 +51,30 @@ def _unknown(key: str) -> str:
     joint, _, part = key.rpartition(".")
     what = {"Fx": "F_{x}", "Fy": "F_{y}", "N": "N", "M": "M"}[part]
     return f"{what}^{{{name(joint)}}}"
+
+
+def _meaning(pos: Position, unknowns: list[str]) -> str:
+    """Say what the unknowns are: each joint's load of its first link on its second.
+
+    The table's columns of the same joint (``J.Fx``, ``J.Fy``, ``J.M``) hold the
+    same loads.
+    """
+    joints = list(dict.fromkeys(u.rpartition(".")[0] for u in unknowns))
+    pairs = []
+    for joint in joints:
+        pair = pos.plan.pairs[joint]
+        first, second = plain(pos.link(pair.first)), plain(pos.link(pair.second))
+        pairs.append(f"{plain(joint)}: {first} on {second}")
+    # a sliding pair's unknowns are its normal force and its couple
+    sliding = any(u.endswith((".N", ".M")) for u in unknowns)
+    extra = (
+        " (a sliding pair's normal force $N^{J}$ along its normal, and its couple "
+        "$M^{J}$, the table's J.M)"
+        if sliding
+        else ""
+    )
+    return (
+        "The unknowns are the loads in the joints, each of the joint's first link "
+        f"on its second: $F_{{x}}^{{J}}, F_{{y}}^{{J}}$ as the table's J.Fx, J.Fy"
+        f"{extra}. {'; '.join(pairs)}."
+    )
