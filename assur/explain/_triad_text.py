@@ -7,6 +7,8 @@ sums and its moment equation, the known loads on the right, then the solution.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 from assur.explain._note import Block, Display, Para
@@ -53,7 +55,7 @@ def _unknown(key: str) -> str:
     return f"{what}^{{{name(joint)}}}"
 
 
-def _meaning(pos: Position, unknowns: list[str]) -> str:
+def _meaning(pos: Position, unknowns: Sequence[str]) -> str:
     """Say what the unknowns are: each joint's load of its first link on its second.
 
     The table's columns of the same joint (``J.Fx``, ``J.Fy``, ``J.M``) hold the
