@@ -13,6 +13,7 @@ import re
 from pathlib import Path
 
 import matplotlib
+import numpy as np
 import pytest
 
 import assur
@@ -333,3 +334,19 @@ def test_a_triad_s_note_says_whose_load_each_unknown_is(path: Path, angle: float
     assert len(told) == 6
     sliding = any(pair.kind == "P" for pair in plan.pairs.values())
     assert ("normal force $N^{J}$" in line) == sliding
+
+
+def test_round_off_is_told_as_zero() -> None:
+    # the yoke at mid-stroke: its inertia force was (-1.492e-11, -2.63e-12) N
+    path = Path(__file__).parent / "data" / "edge" / "inclined_scotch_yoke.toml"
+    mech = assur.load(path)
+    table = assur.forces(mech, [70.0])
+    pin = np.hypot(table["B.ax"][0], table["B.ay"][0])
+    yoke = np.hypot(table["yoke.G.ax"][0], table["yoke.G.ay"][0])
+    assert 0.0 < yoke < 1e-9 * pin  # round-off, not nothing
+    note = str(explain(mech, 70.0))
+    assert r"\vec F_{i,\mathrm{yoke}} = (0,\ 0)\ \mathrm{N}" in note
+    assert r"a_{G_{\mathrm{yoke}}} = 0\ \mathrm{m/s^2}" in note
+    # no power of ten below 1e-9 but the lever's relative check
+    tiny = [x for x in note.splitlines() if re.search(r"10\^\{-(1\d|9)\}", x)]
+    assert all("M_{b}^{lever} - M_{b}" in x for x in tiny), tiny

@@ -18,7 +18,7 @@ import numpy as np
 from assur._loads import table_values
 from assur._vec import Array
 from assur.explain._position import Position, at, cross, value
-from assur.explain._tex import name, num, par, point_name, vec
+from assur.explain._tex import ZERO, name, num, par, point_name, vec
 from assur.groups._pairs import PairPlan
 from assur.model import LoadTable
 
@@ -55,7 +55,15 @@ def inertia_load(pos: Position, body: int) -> tuple[Array, float] | None:
     found = pos.applied.inertia[body]
     if found is None:
         return None
-    return at(found[0], found[1]), value(found[2])
+    force, torque = at(found[0], found[1]), value(found[2])
+    # a link at rest in its motion (a yoke at mid-stroke) carries round-off: told
+    # as the nothing it is, not as 1.5e-11 N
+    least = ZERO * pos.rate_scale(2)
+    mass, inertia = float(pos.loads.mass[body]), float(pos.loads.inertia[body])
+    force[np.abs(force) < mass * least] = 0.0
+    if abs(torque) < inertia * least / pos.size():
+        torque = 0.0
+    return force, torque
 
 
 def _centre(pos: Position, body: int) -> Array:

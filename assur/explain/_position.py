@@ -16,6 +16,7 @@ import numpy as np
 from assur._kinematics import motions
 from assur._loads import LoadPlan, compile_loads
 from assur._vec import Array
+from assur.explain._tex import ZERO
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.kinetostatics import Applied, Reverse, applied_loads, reverse
@@ -80,7 +81,7 @@ class Position:
     def point(self, body: int, offset: tuple[float, float], k: int = 0) -> Array:
         """Return level ``k`` of a body point (position in file coordinates)."""
         p = at(*point(self.bodies[body], offset, k))
-        return p + self.shift() if k == 0 else p
+        return p + self.shift() if k == 0 else self._clean(p, k)
 
     def pair_point(self, pair: PairPlan, k: int = 0) -> Array:
         """Return level ``k`` of a pair's point, the one moving with its second link."""
@@ -92,12 +93,17 @@ class Position:
         return at(m.ox[0], m.oy[0]) + self.shift()
 
     def omega(self, body: int) -> float:
-        """Return a body's angular velocity, rad/s."""
-        return value(self.bodies[body].phi[1])
+        """Return a body's angular velocity, rad/s (0 for round-off)."""
+        return self._turn(body, 1)
 
     def epsilon(self, body: int) -> float:
-        """Return a body's angular acceleration, rad/s^2."""
-        return value(self.bodies[body].phi[2])
+        """Return a body's angular acceleration, rad/s^2 (0 for round-off)."""
+        return self._turn(body, 2)
+
+    def _turn(self, body: int, k: int) -> float:
+        """Return level ``k`` of a body's rotation, zero if it is round-off."""
+        w = value(self.bodies[body].phi[k])
+        return 0.0 if abs(w) * self.size() < ZERO * self.rate_scale(k) else w
 
     def angle(self, body: int) -> float:
         """Return a link's angle (its axis direction, or its rotation), rad."""
@@ -117,8 +123,8 @@ class Position:
         w = self.omega(body)
         base = at(m.ox[k], m.oy[k])
         if k == 1:
-            return base + w * perp(r)
-        return base + self.epsilon(body) * perp(r) - w * w * r
+            return self._clean(base + w * perp(r), k)
+        return self._clean(base + self.epsilon(body) * perp(r) - w * w * r, k)
 
     def link(self, body: int) -> str:
         """Return a body's name as the file gives it."""
@@ -127,6 +133,23 @@ class Position:
     def size(self) -> float:
         """Return the mechanism's size, m."""
         return float(self.plan.scale)
+
+    def rate_scale(self, k: int) -> float:
+        """Return a size of the mechanism's motion at level ``k`` (m/s, m/s^2).
+
+        What a velocity or an acceleration is told from round-off by: a yoke at
+        mid-stroke has 1e-11 m/s^2 where the crank's pin has 20.
+        """
+        size, big = self.size(), 0.0
+        for m in self.bodies:
+            turn = max(abs(value(m.phi[j])) ** (k / j) for j in range(1, k + 1))
+            big = max(big, math.hypot(value(m.ox[k]), value(m.oy[k])), turn * size)
+        return big
+
+    def _clean(self, v: Array, k: int) -> Array:
+        """Return ``v`` (level ``k``) with its round-off set to zero."""
+        v[np.abs(v) < ZERO * self.rate_scale(k)] = 0.0
+        return v
 
 
 def perp(v: Array) -> Array:
