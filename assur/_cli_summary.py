@@ -51,6 +51,7 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
         data = {
             "name": name,
             "positions": summary.count,
+            "closes_a_turn": summary.closes(),
             "summary": {k: v if math.isfinite(v) else None for k, v in values.items()},
             "units": {k: summary.units[k] for k in values},
         }
@@ -58,7 +59,9 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
             data["undefined"] = why  # why a value is null
         return json.dumps(data, indent=2)
     width = max(len(k) for k in values)
-    lines = [f"Summary over {summary.count} positions ({name})"]
+    # a whole turn's sweep ends on its first pose: the means count that pose once
+    once = " (the closing pose counted once)" if summary.closes() else ""
+    lines = [f"Summary over {summary.count} positions{once} ({name})"]
     for key, value in values.items():
         unit = summary.units[key]
         if key in why:

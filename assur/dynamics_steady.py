@@ -1,6 +1,6 @@
 """The steady state of a crank under a constant motor torque: the energy equation.
 
-Over a turn the motor's constant torque does back the work of the loads, so the
+Over a turn the motor's constant torque does the work the loads take, so the
 kinetic energy ``0.5 J(phi) w^2 = E0 + W(phi)`` is periodic; :func:`steady_state`
 finds the energy ``E0`` at the reference pose for which the mean of the largest and
 the smallest speed is the crank's nominal speed, and where those extremes occur.

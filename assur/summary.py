@@ -206,7 +206,7 @@ class Summary:
             raise UsageError(msg)
         # a sweep that ends a whole turn on from where it began (0:360:10) ends on
         # its first pose again: counted twice, it tipped a cycle's mean power
-        closing = self._closes()
+        closing = self.closes()
         n -= closing
 
         def less(total: Any, last: Any) -> Any:
@@ -248,7 +248,7 @@ class Summary:
             )
         return out
 
-    def _closes(self) -> bool:
+    def closes(self) -> bool:
         """Whether the positions end a whole number of turns on from where they began.
 
         One revolute driver, more than one position: the last is then the first

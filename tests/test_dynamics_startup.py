@@ -49,7 +49,7 @@ def test_an_electric_motor_from_rest_settles():
     run = assur.startup(mech, t.flywheel, motor=motor)
     assert run.omega[0] == 0.0
     assert 0.0 < run.settle_time < run.time[-1]
-    # in the periodic state the motor does back the loads' work: its mean torque is
+    # in the periodic state the motor does the work the loads take: its mean torque is
     # the steady state's, up to the speed fluctuation's second order
     assert run.mean_speed == pytest.approx(
         free * (1.0 - t.motor / motor.torque), rel=2e-3

@@ -227,3 +227,18 @@ def test_a_sweep_ending_a_whole_turn_on_counts_that_pose_once(stop):
     short = assur.forces(mech, np.arange(0.0, 350.0, 10.0))
     powers = short["driver.torque"] * short["crank.omega"]
     assert short.summary()["driver.power.mean"] == pytest.approx(np.mean(powers))
+
+
+@pytest.mark.parametrize(("stop", "closes"), [(360, True), (350, False)])
+def test_the_summary_says_a_closing_pose_is_counted_once(capsys, stop, closes):
+    # "Summary over 37 positions" stood over means of 36
+    path = EXAMPLES / "slider_crank_friction.toml"
+    argv = ["forces", str(path), "--summary", "--angles", f"0:{stop}:10"]
+    assert main(argv) == 0
+    head = capsys.readouterr().out.splitlines()[0]
+    once = " (the closing pose counted once)" if closes else ""
+    name = assur.load(path).name
+    assert head == f"Summary over {stop // 10 + 1} positions{once} ({name})"
+    assert main([*argv, "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert (data["positions"], data["closes_a_turn"]) == (stop // 10 + 1, closes)

@@ -107,7 +107,7 @@ def _figures_html(result: Any) -> str:
     note = (
         f"Steady state at the nominal speed {result.omega:.5g} rad/s (the mean of "
         f"the largest and the smallest), {why}, under the constant motor torque "
-        "that does back the loads' work over a turn."
+        "whose work over a turn is the work the loads take."
     )
     if any(j.friction for j in result.mechanism.joints):
         # the summary above counts friction's loss: say why the motor does not
