@@ -10,6 +10,7 @@ passes.
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -81,8 +82,12 @@ class Structure:
     @property
     def formula(self) -> str:
         """Structure formula, e.g. ``I(ground, 1) -> II(2, 3)``."""
+        return self._formula(_public)
+
+    def _formula(self, names: Callable[[tuple[str, ...]], tuple[str, ...]]) -> str:
+        """Return the structure formula with the links named by ``names``."""
         steps = [
-            f"{roman(g.group_class)}({', '.join(_public(g.links))})"
+            f"{roman(g.group_class)}({', '.join(names(g.links))})"
             for g in (*self.drivers, *self.groups)
         ]
         return " -> ".join(steps)
@@ -110,7 +115,8 @@ class Structure:
             "dof": self.dof,
             "drivers": [group(g) for g in self.drivers],
             "groups": [group(g) for g in self.groups],
-            "formula": self.formula,
+            # the names of the JSON's links (a slot's block is B~block there)
+            "formula": self._formula(lambda links: links),
             "mechanism_class": self.mechanism_class,
             "slots": list(self.slots),
         }

@@ -1069,3 +1069,14 @@ def test_a_failing_search_does_not_grow_sets_that_cannot_close(monkeypatch):
     tested, error = _sets_tested(monkeypatch, _hub(16))
     assert "joints D and G0 both join v0 and ground" in error
     assert len(tested) < 100
+
+
+def test_the_json_formula_names_links_as_the_json_does():
+    # "II(lever, B (block))" stood beside links ["lever", "B~block"]
+    data = assur.structure(assur.load(EXAMPLES / "slot_mechanism.toml")).to_dict()
+    steps = [
+        f"{g['class_roman']}({', '.join(g['links'])})"
+        for g in (*data["drivers"], *data["groups"])
+    ]
+    assert data["formula"] == " -> ".join(steps)
+    assert "~block" in data["formula"]
