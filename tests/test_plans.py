@@ -685,3 +685,28 @@ def test_a_cylinder_s_couple_acts_at_its_pivot_and_its_bore(tmp_path: Path) -> N
     # the pair's forces, and the image of the cylinder's point at the bore
     assert sum("/l_{" in t for t in texts) == 2
     assert r"$\text{bore}_{\text{cylinder}}$" in texts
+
+
+def test_an_accelerating_crank_s_pin_is_drawn_in_two_parts(monkeypatch) -> None:
+    # its acceleration was one grey arrow from the pole, epsilon's part unseen
+    mech = assur.load(EXAMPLES / "four_bar.toml")
+    table = assur.kinematics(mech, [70.0])
+    w, eps = table["crank.omega"][0], table["crank.alpha"][0]
+    assert eps != 0
+    drawn = []
+
+    def record(ax, start, end, color, **kw):
+        drawn.append((np.asarray(start), np.asarray(end), color))
+        return True
+
+    monkeypatch.setattr(plans, "_arrow", record)
+    plans.acceleration_plan(table_at(mech, 70.0))
+    mu = plans._scale(list(plans.images(position(mech, 70.0), 2).values()))
+    pivot = mech.joint(mech.drivers[0].joint).at
+    r = np.array([table["A.x"][0] - pivot[0], table["A.y"][0] - pivot[1]])
+    normal = -w * w * r / mu
+    tip = np.array([table["A.ax"][0], table["A.ay"][0]]) / mu
+    n = [c for s, e, c in drawn if np.allclose(s, 0) and np.allclose(e, normal)]
+    t = [c for s, e, c in drawn if np.allclose(s, normal) and np.allclose(e, tip)]
+    assert len(n) == len(t) == 1
+    assert n != t  # two colours: normal and tangential

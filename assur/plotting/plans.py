@@ -82,6 +82,8 @@ def _chains(
     palette = {"base": "#555555", "n": "#1f77b4", "t": "#d62728", "k": "#9467bd",
                "r": "#2ca02c", "v": "#d62728"}  # fmt: skip
     size = max((float(np.hypot(*v)) for v in shown), default=0.0)
+    if k == 2:
+        _crank_parts(ax, pos, mu, palette, kinds)
     for s in pos.plan.solvers:
         if not isinstance(s, DyadSolver):
             continue
@@ -110,6 +112,47 @@ def _chains(
     for part, color in kinds.items():
         legend.append((names.get(part, part), color))
     return legend
+
+
+def _crank_parts(
+    ax: Any, pos: Position, mu: float, palette: dict[str, str], kinds: dict[str, str]
+) -> None:
+    """Draw the acceleration of each point of an accelerating crank in two parts.
+
+    The normal part ``-omega^2 r`` toward the pivot, then the tangential one
+    ``epsilon x r``, ending at the point's image (a crank at constant speed has
+    the normal part alone, its image).
+    """
+    plan = pos.plan
+    for d in plan.drivers:
+        eps = pos.epsilon(d.body)
+        # a crank on the frame: its pivot stands still
+        if d.kind != "R" or not eps or 0 not in (d.pair.first, d.pair.second):
+            continue
+        pivot, w = pos.pair_point(d.pair), pos.omega(d.body)
+        # the crank's own points, and its joints (kept on the links they join)
+        places = [
+            pos.point(body, offset)
+            for name, body, offset in zip(
+                plan.points, plan.point_body, plan.point_offset, strict=True
+            )
+            if body == d.body and "~" not in name
+        ]
+        places += [
+            pos.pair_point(p)
+            for p in plan.pairs.values()
+            if d.body in (p.first, p.second) and "~" not in p.name
+        ]
+        for r in {tuple(place - pivot) for place in places}:
+            if not any(r):
+                continue
+            normal, tangential = -w * w * np.array(r), eps * _perp(np.array(r))
+            if _arrow(ax, np.zeros(2), normal / mu, palette["n"], lw=1.8):
+                kinds["n"] = palette["n"]
+            if _arrow(
+                ax, normal / mu, (normal + tangential) / mu, palette["t"], lw=1.8
+            ):
+                kinds["t"] = palette["t"]
 
 
 def _name_guide_point(
