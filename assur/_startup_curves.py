@@ -29,6 +29,10 @@ class Curves:
     def __call__(self, phi: float) -> tuple[float, float, float]:
         """Return ``J + J_f``, ``dJ/dphi`` and ``M`` at ``phi`` (rad)."""
         u = (phi - self.start) % (2.0 * math.pi)
+        if not math.isfinite(u):
+            # a trial step of the integrator past every float (a motor of 1e10 N m):
+            # nothing to interpolate, and the step is refused
+            return math.nan, math.nan, math.nan
         i = min(int(u / self.step), self.count - 1)
         x = u - i * self.step
         a, b, c, d = (row[i] for row in self.j)

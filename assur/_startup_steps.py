@@ -63,16 +63,19 @@ def stepper(model: Reduced, motor: Motor, curves: Curves) -> Any:
             return float(sense * (y[0] - end))
 
         turned.terminal, turned.direction = True, 1.0  # type: ignore[attr-defined]
-        sol = solve_ivp(
-            local,
-            (t, t + limit),
-            [state[0] - base, state[1]],
-            method=method,
-            rtol=RTOL,
-            atol=[RTOL, RTOL * scale],
-            events=(turned, stall),
-            dense_output=True,
-        )
+        # a trial step may overflow (a motor of 1e10 N m): the integrator refuses
+        # it and shortens the step, with no word to the user
+        with np.errstate(over="ignore", invalid="ignore"):
+            sol = solve_ivp(
+                local,
+                (t, t + limit),
+                [state[0] - base, state[1]],
+                method=method,
+                rtol=RTOL,
+                atol=[RTOL, RTOL * scale],
+                events=(turned, stall),
+                dense_output=True,
+            )
         return _absolute(sol, base)
 
     return turn

@@ -9,15 +9,20 @@ after 50, 4380 after 200, 10555 taken).
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
+import warnings
 
 import numpy as np
 import pytest
 
 import assur
 from assur import Motor
+from assur._startup_curves import Curves
+from assur.dynamics_reduced import reduce
 
+from .conftest import EXAMPLES
 from .test_startup_settle import loaded_slider_crank
 
 MOTOR = Motor(30.0, 180.0)
@@ -186,3 +191,17 @@ def test_a_turn_is_the_same_after_thousands_of_turns():
         first.sol(middle)[0] + 2.0 * math.pi * 5000, rel=1e-10
     )
     assert later.y[0][0] == model.start + 2.0 * math.pi * 5000
+
+
+def test_a_motor_past_every_float_is_one_error() -> None:
+    # a torque of 1e10 N m: a trial step overflowed, and the interpolation of the
+    # model at a NaN angle raised a bare ValueError (a traceback, exit status 1)
+    mech = dataclasses.replace(
+        assur.load(EXAMPLES / "slider_crank_exercise.toml"), motor=Motor(1e10)
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # and no RuntimeWarning of the overflow
+        with pytest.raises(assur.ModelError, match="does not settle in 30 turns"):
+            assur.startup(mech, turns=30)
+    curves = Curves(reduce(mech), 0.0)
+    assert all(math.isnan(v) for v in curves(math.inf))
