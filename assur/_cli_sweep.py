@@ -25,10 +25,11 @@ from assur._cli_tables import _check_outputs, _write_tables
 from assur._output import path_text, write_stdout
 from assur._sliced import Skipped, slices
 
-__all__ = ["LONG_SWEEP", "_sweep"]
+__all__ = ["BAR_DELAY", "_sweep"]
 
-LONG_SWEEP = 100_000
-"""Driver positions from which a sweep shows a progress bar (on a terminal)."""
+BAR_DELAY = 1.0
+"""Seconds a sweep runs before its progress bar appears (on a terminal): whatever
+makes it long, its positions or its mechanism's columns."""
 
 
 def _sweep(args: argparse.Namespace, forces: bool) -> int:
@@ -80,11 +81,11 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
 
 @contextlib.contextmanager
 def _bar(args: argparse.Namespace, what: str, total: int) -> Iterator[Any]:
-    """Yield a progress bar for a long sweep on a terminal, else None."""
-    if quiet(args) or total < LONG_SWEEP or not terminal():
+    """Yield a progress bar on a terminal (shown once the sweep runs long), or None."""
+    if quiet(args) or not terminal():
         yield None
         return
     from assur._progress import progress
 
-    with progress(what, total, show=True) as bar:
+    with progress(what, total, show=True, delay=BAR_DELAY) as bar:
         yield bar

@@ -24,10 +24,12 @@ from numpy.typing import NDArray
 
 from assur._vec import Array
 
-__all__ = ["BLOCK_ROWS", "csv_lines"]
+__all__ = ["BLOCK_VALUES", "csv_lines"]
 
-BLOCK_ROWS = 512
-"""Rows formatted at once: the temporaries of a block stay in the processor's cache."""
+BLOCK_VALUES = 65536
+"""Numbers formatted at once (512 rows of 128 columns): the temporaries of a block
+stay in the processor's cache, and a table of 17 000 columns takes a few rows at a
+time, not 512 (1.8 GB of temporaries)."""
 NEAR_HALF = 2e-3
 """A scaled number closer than this to a rounding tie is rounded exactly (see below)."""
 LIMIT = 290
@@ -122,9 +124,10 @@ def csv_lines(values: Array) -> bytes:
     if not LITTLE_ENDIAN:  # the words below are laid out little-end first
         line = ",".join(["%.12g"] * values.shape[1]) + "\n"
         return "".join(line % tuple(row) for row in values.tolist()).encode()
+    rows = max(1, BLOCK_VALUES // values.shape[1])
     blocks = [
-        _block(values[start : start + BLOCK_ROWS])
-        for start in range(0, values.shape[0], BLOCK_ROWS)
+        _block(values[start : start + rows])
+        for start in range(0, values.shape[0], rows)
     ]
     return b"".join(blocks)
 

@@ -8,6 +8,7 @@ a terminal. The bar is tqdm's, imported only when a bar is shown.
 from __future__ import annotations
 
 import sys
+import time
 from collections.abc import Callable
 from types import TracebackType
 from typing import Any
@@ -21,16 +22,29 @@ Callback = Callable[[int, int], None]
 class Progress:
     """Report ``done`` out of ``total`` units of work; a no-op when not enabled."""
 
-    def __init__(self, what: str, total: int, show: bool | Callback = False) -> None:
+    def __init__(
+        self,
+        what: str,
+        total: int,
+        show: bool | Callback = False,
+        delay: float = 0.0,
+    ) -> None:
         self.total = total
         self.done = 0
         self._callback: Callback | None = show if callable(show) else None
         self._bar: Any = None
+        # a bar appears only once the work has run ``delay`` seconds
+        self._shown_from = time.monotonic() + delay
         if show is True and total > 0:
             from tqdm import tqdm
 
             self._bar = tqdm(
-                total=total, desc=what, file=sys.stderr, leave=False, unit_scale=True
+                total=total,
+                desc=what,
+                file=sys.stderr,
+                leave=False,
+                unit_scale=True,
+                delay=delay,
             )
 
     def advance(self, count: int) -> None:
@@ -38,7 +52,7 @@ class Progress:
         self.done += count
         if self._bar is not None:
             self._bar.update(count)
-            if self.done >= self.total:
+            if self.done >= self.total and time.monotonic() >= self._shown_from:
                 # tqdm skips updates that come fast; the last one is always shown
                 self._bar.refresh()
         if self._callback is not None:
@@ -62,10 +76,13 @@ class Progress:
         self.close()
 
 
-def progress(what: str, total: int, show: bool | Callback = False) -> Progress:
+def progress(
+    what: str, total: int, show: bool | Callback = False, delay: float = 0.0
+) -> Progress:
     """Return a :class:`Progress` of ``total`` units named ``what``.
 
     ``show``: True for a bar on standard error, a callable ``(done, total)`` to be
-    told, False for nothing.
+    told, False for nothing. ``delay``: seconds before a bar appears (none for work
+    done sooner).
     """
-    return Progress(what, total, show)
+    return Progress(what, total, show, delay)

@@ -27,6 +27,7 @@ from assur._vec import Array, full
 from assur.columns import balancing_columns
 from assur.errors import (
     AssemblyError,
+    AssurError,
     AssurWarning,
     SelfLockingError,
     SingularConfigurationError,
@@ -38,8 +39,11 @@ __all__ = ["CHUNK", "Skipped", "Slice", "slices"]
 FAILURES = (AssemblyError, SingularConfigurationError, SelfLockingError)
 """The errors of a sweep that fails at some of its positions."""
 CHUNK = 8 * SWEEP_SLICE
-"""Driver positions analysed and written at once (a multiple of the library's slice,
-so that every number is computed as in one call over the whole sweep): 65536."""
+"""Most driver positions analysed and written at once (a multiple of the library's
+slice, so that every number is computed as in one call over the whole sweep): 65536."""
+SLICE_VALUES = 1 << 24
+"""Most numbers of one slice's table (128 MB): a mechanism of very many columns
+takes fewer positions at a time (see :func:`_chunk`)."""
 SKIPPED_SHOWN = 20
 """Positions left out that the note lists."""
 RUNS_SHOWN = 6
@@ -121,7 +125,7 @@ def slices(
     from assur.analysis import kinematics
 
     analyse = force_table if forces else kinematics
-    chunk = CHUNK
+    chunk = _chunk(mech, forces)
     n = len(given)
     angles: _Angles | None = None
     near = _Warnings(mech, skip)
@@ -157,6 +161,26 @@ def slices(
         yield Slice(table, angles.carry(table))
         del table  # one slice in memory at a time
     near.give()
+
+
+def _chunk(mech: Any, forces: bool) -> int:
+    """Return the driver positions of one slice: its table within ``SLICE_VALUES``.
+
+    A whole number of the library's slices while that fits (the numbers then are
+    those of one call over the whole sweep, byte for byte); else a power of two,
+    at least 64 (a chain of 300 dyads, 17 736 columns: 512 positions; numbers
+    computed in another grouping may differ in their last bit).
+    """
+    from assur.columns import schema
+
+    try:
+        columns = len(schema(plan_of(mech), forces))
+    except AssurError:
+        return CHUNK  # the analysis of the first slice says what is wrong
+    rows = SLICE_VALUES // max(1, columns)
+    if rows >= SWEEP_SLICE:
+        return min(CHUNK, rows // SWEEP_SLICE * SWEEP_SLICE)
+    return max(64, 1 << max(0, rows.bit_length() - 1))
 
 
 def _told(advance: Callable[[int], None] | None) -> Any:

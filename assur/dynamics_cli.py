@@ -31,6 +31,7 @@ from assur._cli_common import (
     quiet,
     terminal,
 )
+from assur._cli_sweep import BAR_DELAY
 from assur._dynamics_figures import (
     _figures,
     _head,
@@ -62,8 +63,6 @@ __all__ = ["register"]
 
 SLICE = 65536
 """Rows computed and written at once (the table is never held whole)."""
-LONG_SWEEP = 100_000
-"""Positions from which a sweep shows a progress bar (on a terminal)."""
 ROWS_SHOWN = 400
 """Most rows of the readable tables; --csv and --json give them all."""
 
@@ -281,8 +280,8 @@ class _Rows:
 def _stream(rows: _Rows, writer: Any, args: argparse.Namespace) -> None:
     """Write every slice of ``rows`` with ``writer``; a bar on a long sweep."""
     n = len(rows)
-    show = n >= LONG_SWEEP and terminal() and not quiet(args)
-    with progress("dynamics", n, show=show) as bar:
+    show = terminal() and not quiet(args)
+    with progress("dynamics", n, show=show, delay=BAR_DELAY) as bar:
         for start in range(0, n, SLICE):
             part = rows.part(start, min(start + SLICE, n))
             writer.write([np.asarray(part[c], dtype=float) for c in rows.names])

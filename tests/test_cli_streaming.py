@@ -315,7 +315,7 @@ def test_csv_path_and_json_write_the_lines_to_standard_error(tmp_path, capsys):
 
 @pytest.fixture
 def long_is_short(monkeypatch):
-    monkeypatch.setattr(_cli_sweep, "LONG_SWEEP", 1000)
+    monkeypatch.setattr(_cli_sweep, "BAR_DELAY", 0.0)
 
 
 @pytest.mark.parametrize("output", [[], ["--csv", "t.csv"]])
@@ -588,3 +588,32 @@ def test_friction_of_a_prismatic_driver_is_checked_slice_by_slice(capsys, monkey
     header, *rows = out.splitlines()
     assert "driver.force" in header.split(",")
     assert len(rows) == 21
+
+
+@pytest.mark.parametrize(
+    ("values", "chunk"),
+    [(1 << 24, 65536), (109 * 8192 * 3, 3 * 8192), (109 * 5000, 4096), (10, 64)],
+)
+def test_a_slice_holds_a_bounded_number_of_values(monkeypatch, values, chunk):
+    # a chain of 300 dyads (17 736 columns) took 65 536 positions a slice: 9 GB
+    mech = assur.load(SLIDER_CRANK)
+    assert len(assur.forces(mech, [0.0]).columns) == 109
+    monkeypatch.setattr(_sliced, "SLICE_VALUES", values)
+    assert _sliced._chunk(mech, True) == chunk
+
+
+def test_slices_smaller_than_the_library_s_give_its_numbers(
+    capsys, monkeypatch, tmp_path
+):
+    monkeypatch.setattr(_sliced, "SLICE_VALUES", 109 * 100)  # 64 positions a slice
+    target = tmp_path / "t.csv"
+    angles = "0:1000:0.7"
+    status, _, _ = run(
+        capsys, "forces", SLIDER_CRANK, "--angles", angles, "--csv", target
+    )
+    assert status == 0
+    written = np.loadtxt(target, delimiter=",", skiprows=1)
+    table = assur.forces(assur.load(SLIDER_CRANK), parse_angles(angles))
+    assert written.shape == (len(table), 109)
+    # the same numbers, to the CSV's 12 digits (another grouping: the last bit)
+    np.testing.assert_allclose(written, table.to_array(), rtol=1e-11, atol=1e-9)
