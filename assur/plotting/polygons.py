@@ -1,8 +1,8 @@
 """The force polygon of every Assur group, drawn as a student draws it.
 
 Each polygon runs through the known loads on the group's links and their outer
-reactions, tip to tail, to its own scale (so many N per mm); the sides' names are
-put beside them and pushed apart where they meet (:func:`spread_labels`).
+reactions, tip to tail, to its own scale (so many N per mm); each side's name is
+put beside it, outside the polygon, clear of the other sides and names.
 matplotlib is imported inside the functions only.
 """
 
@@ -19,8 +19,8 @@ from assur.explain._loads_text import link_loads
 from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
 from assur.plotting._drawing import _arrow, _legend
-from assur.plotting._labels import LOAD_LABELS, spread_labels
 from assur.plotting._mathtext import _symbol, reaction_symbol
+from assur.plotting._placing import Name, place_names
 from assur.plotting._style import (
     INERTIA_COLOR,
     LOAD_COLOR,
@@ -28,12 +28,15 @@ from assur.plotting._style import (
     literal,
     load_colour,
 )
-from assur.plotting.plans import PLAN_SIZE, _perp, _pos, _scale, _title
+from assur.plotting.plans import _pos, _scale, _title
 
 if TYPE_CHECKING:
     from assur.table import Table
 
 __all__ = ["force_polygons"]
+
+TINY_SIDE = 1e-9
+"""A side shorter than this times the polygon's longest is round-off: not drawn."""
 
 
 def force_polygons(table: Table, angle: Any = None) -> Any:
@@ -65,18 +68,20 @@ def force_polygons(table: Table, angle: Any = None) -> Any:
     fig, axes = plt.subplots(1, len(records), figsize=(5.5 * len(records), 5.2),
                              layout="constrained", squeeze=False)  # fmt: skip
     solved: set[int] = set()
+    names = []
     for ax, rec in zip(axes.flat, records, strict=True):
-        _polygon(ax, pos, rec, solved)
+        names.append(_polygon(ax, pos, rec, solved))
         solved |= set(rec.bodies)
     fig.suptitle(_title(pos, "force polygons"), fontsize=10)
-    # the sides meet at the polygon's corners: their names are pushed apart there
-    for ax in axes.flat:
-        spread_labels(ax)
+    # the sides meet at the polygon's corners: each name beside its own side,
+    # outside the polygon, clear of the other sides and names
+    for ax, own in zip(axes.flat, names, strict=True):
+        place_names(ax, own)
     return fig
 
 
-def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
-    """Draw one group's force polygon on ``ax``."""
+def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> list[Name]:
+    """Draw one group's force polygon on ``ax``; return its sides' names to place."""
     sequence: list[tuple[str, np.ndarray, str]] = []
     for body in rec.bodies:
         pair = _outer(pos, rec, body)
@@ -96,26 +101,23 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
                 symbol = _symbol(normal if sign > 0 else "-" + normal)
             sequence.append((symbol, f, REACTION_COLOUR))
     mu = _scale([f for _, f, _ in sequence])
-    tip = np.zeros(2)
-    for label, f, color in sequence:
-        end = tip + f / mu
+    tips = np.cumsum([np.zeros(2)] + [f / mu for _, f, _ in sequence], axis=0)
+    longest = max(float(np.hypot(*f)) for _, f, _ in sequence) / mu
+    # the names go outside the polygon, away from its middle
+    middle = tips[:-1].mean(axis=0)
+    names = []
+    for (label, _, color), tip, end in zip(sequence, tips[:-1], tips[1:], strict=True):
+        # a side of round-off (a slider's inertia force at mid-stroke) is nothing:
+        # neither drawn nor named, though the next side starts at its tip
+        if float(np.hypot(*(end - tip))) <= TINY_SIDE * longest:
+            continue
         _arrow(ax, tip, end, color)
-        # the name beside the side's middle, on its left (in data units, as
-        # spread_labels moves it)
-        side = end - tip
-        left = _perp(side) / max(float(np.hypot(*side)), 1e-12)
-        at = 0.5 * (tip + end) + 0.02 * PLAN_SIZE * left
-        text = ax.annotate(
-            label,
-            tuple(at),
-            color=color,
-            fontsize=7,
-            ha="left" if left[0] >= 0 else "right",
-            va="bottom" if left[1] >= 0 else "top",
-        )
-        LOAD_LABELS.add(text)
-        tip = end
+        text = ax.annotate(label, tuple(0.5 * (tip + end)), color=color, fontsize=7)
+        names.append(Name(text, tip, end, middle))
+    tip = tips[-1]
     ax.plot([0], [0], "ko", ms=4)
+    # room round the polygon for the names outside it
+    ax.margins(0.12)
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, lw=0.4, alpha=0.4)
     ax.set_xlabel("mm of the polygon")
@@ -133,6 +135,7 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> None:
     shown = {c for _, _, c in sequence}
     entries = [(text, c) for c, text in kinds.items() if c in shown]
     _legend(ax, entries, f"μF = {mu:g} N/mm")
+    return names
 
 
 def _outer(pos: Position, rec: Any, body: int) -> list[Any]:

@@ -1,0 +1,273 @@
+"""Names put where they are read as their own: beside their side or point, clear.
+
+Each name tries places round what it names (a side of a force polygon, an image,
+an instant centre) and takes the one that costs least: a place past the axes'
+frame, over another name or across a line drawn is (nearly) barred, one nearer to
+another side or point than its own is shunned, and of the rest the nearest wins.
+Measured on the drawing as it will be seen, in display units.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from assur.plotting._bars import label_box, settled_renderer
+
+BARRED = 1e6
+"""Cost of a place that cuts a name off at the axes' frame."""
+CLASH = 1e4
+"""Cost of each name overlapped, or line crossed, by a name at a place."""
+RIVAL = 3e3
+"""Cost of a place nearer another named side or point than the name's own."""
+GAP = 4.0
+"""Room left between a name and what it names, points."""
+RINGS = (1.0, 3.0, 7.0, 14.0)
+"""The distances tried (times :data:`GAP`, past the name's own half-size)."""
+CLEAR = 10.0
+"""A name nearer than this (points) to another side or point than its own is
+shunned, the more the nearer."""
+LEADER = 14.0
+"""A name farther than this (points) from what it names is joined to it by a line."""
+ALONG = (0.5, 0.38, 0.62, 0.26, 0.74, 0.14, 0.86)
+"""Where along a side its name is tried, from its tail (its middle first)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Name:
+    """A name to place: its text and what it names, a segment (data coordinates).
+
+    A point is a segment of no length. ``away``, when given, is a point (data)
+    the name rather stands away from (a polygon's centroid: its sides' names go
+    outside it).
+    """
+
+    text: Any
+    start: np.ndarray
+    end: np.ndarray
+    away: np.ndarray | None = None
+
+
+def place_names(
+    ax: Any,
+    names: list[Name],
+    lines: np.ndarray | None = None,
+    avoid: list[Any] | None = None,
+) -> None:
+    """Put every name of ``names`` at its best place on ``ax``, in turn (twice).
+
+    ``lines`` are segments (k, 2, 2), data coordinates, that no name may cross,
+    beside the named sides themselves; the other texts of ``ax``, its legend and
+    the artists ``avoid`` (markers, small patches) are kept clear of. The names
+    do not resize the axes.
+    """
+    if not names:
+        return
+    for name in names:
+        name.text.set_in_layout(False)
+    renderer = settled_renderer(ax)
+    to_display = ax.transData.transform
+    own = np.array([to_display([n.start, n.end]) for n in names])
+    others = np.empty((0, 2, 2)) if lines is None else np.asarray(lines, float)
+    segments = np.concatenate(
+        [own, to_display(others.reshape(-1, 2)).reshape(-1, 2, 2)]
+    )
+    placed = {id(n.text) for n in names}
+    fixed = [label_box(t, renderer) for t in ax.texts
+             if t.get_visible() and t.get_text() and id(t) not in placed]  # fmt: skip
+    legend = ax.get_legend()
+    if legend is not None:
+        fixed.append(np.asarray(legend.get_window_extent(renderer).extents))
+    fixed += [np.asarray(a.get_window_extent(renderer).extents) for a in avoid or ()]
+    sizes = np.array([_size(n.text, renderer) for n in names])
+    boxes = np.full((len(names), 4), np.nan)
+    pixels = ax.figure.dpi / 72.0
+    frame = np.asarray(ax.bbox.extents) + np.array([1.0, 1.0, -1.0, -1.0])
+    for _ in range(2):
+        for i, name in enumerate(names):
+            away = None if name.away is None else to_display(name.away)
+            centres = _candidates(own[i], sizes[i], away, GAP * pixels)
+            others_boxes = np.array([*fixed, *np.delete(boxes, i, axis=0)])
+            cost = _costs(
+                centres, sizes[i], frame, others_boxes, segments, i, own, CLEAR * pixels
+            )
+            best = centres[int(np.argmin(cost))]
+            boxes[i] = np.concatenate([best - sizes[i] / 2, best + sizes[i] / 2])
+    for name, box, ends in zip(names, boxes, own, strict=True):
+        _put(ax, name.text, 0.5 * (box[:2] + box[2:]))
+        near = _nearest(0.5 * (box[:2] + box[2:]), ends)
+        if _gap(box, near) > LEADER * pixels:
+            _leader(ax, name.text, near, box)
+
+
+def _size(text: Any, renderer: Any) -> np.ndarray:
+    """Return the width and height of ``text`` with its box, display units."""
+    x0, y0, x1, y1 = label_box(text, renderer)
+    return np.array([x1 - x0, y1 - y0])
+
+
+def _candidates(
+    ends: np.ndarray, size: np.ndarray, away: np.ndarray | None, gap: float
+) -> np.ndarray:
+    """Return the centres (display) tried for a name of ``size`` beside ``ends``.
+
+    Beside a side: along it, on the side away from ``away`` first; round a point:
+    in sixteen directions, right and up first. Each ring a little farther out.
+    """
+    a, b = ends
+    d = b - a
+    length = float(np.hypot(*d))
+    # round a point, and round a short side's middle too (a corner is crowded)
+    turns = np.deg2rad(np.arange(16) * 22.5 + 45.0)
+    units = np.stack([np.cos(turns), np.sin(turns)], axis=1)
+    bases = np.repeat(0.5 * (a + b)[None, :], len(units), axis=0)
+    if length >= 1.0:
+        n = np.array([-d[1], d[0]]) / length
+        if away is not None and float(np.dot(0.5 * (a + b) - away, n)) < 0:
+            n = -n
+        along = np.array([side * n for _ in ALONG for side in (1.0, -1.0)])
+        units = np.concatenate([along, units])
+        bases = np.concatenate(
+            [np.array([a + t * d for t in ALONG for _ in (1.0, -1.0)]), bases]
+        )
+    # the distance from a box's centre to its edge along each direction
+    half = 0.5 * (np.abs(units[:, 0]) * size[0] + np.abs(units[:, 1]) * size[1])
+    rings = [bases + units * (half + ring * gap)[:, None] for ring in RINGS]
+    return np.concatenate(rings)
+
+
+def _costs(
+    centres: np.ndarray,
+    size: np.ndarray,
+    frame: np.ndarray,
+    boxes: np.ndarray,
+    segments: np.ndarray,
+    own: int,
+    named: np.ndarray,
+    clear: float,
+) -> np.ndarray:
+    """Return the cost of a name of ``size`` centred at each of ``centres``.
+
+    ``segments`` (display) are the named ones (``named``, the name's own the
+    ``own``-th) and then the other lines; a place nearer than ``clear`` to
+    another named side or point costs more the nearer it is.
+    """
+    low, high = centres - size / 2, centres + size / 2
+    cost = np.zeros(len(centres))
+    out = (low < frame[:2]).any(axis=1) | (high > frame[2:]).any(axis=1)
+    cost += BARRED * out
+    boxes = boxes[~np.isnan(boxes).any(axis=1)] if len(boxes) else boxes.reshape(0, 4)
+    if len(boxes):
+        wide = np.minimum(high[:, None, 0], boxes[None, :, 2]) - np.maximum(
+            low[:, None, 0], boxes[None, :, 0]
+        )
+        tall = np.minimum(high[:, None, 1], boxes[None, :, 3]) - np.maximum(
+            low[:, None, 1], boxes[None, :, 1]
+        )
+        area = np.clip(wide, 0, None) * np.clip(tall, 0, None)
+        cost += CLASH * (area > 0).sum(axis=1) + area.sum(axis=1)
+    cost += CLASH * _crossed(low, high, segments).sum(axis=1)
+    # how far each place's box is from each named side or point
+    apart = np.array([_box_distance(low, high, s) for s in named])
+    mine = apart[own]
+    if len(named) > 1:
+        rival = np.delete(apart, own, axis=0).min(axis=0)
+        cost += RIVAL * (rival <= mine)
+        # where two sides cross, a name by either is read as the other's too
+        cost += 20.0 * np.clip(clear - rival, 0.0, None)
+    return cost + 0.05 * _distance(centres, named[own]) + np.arange(len(centres)) * 1e-3
+
+
+def _crossed(low: np.ndarray, high: np.ndarray, segments: np.ndarray) -> np.ndarray:
+    """Return whether each box (``low``, ``high``) meets each segment: (boxes, k).
+
+    Liang and Barsky's clipping: the segment's parameters inside every slab.
+    """
+    a = segments[None, :, 0, :]
+    d = segments[None, :, 1, :] - a
+    lo, hi = low[:, None, :], high[:, None, :]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t1 = (lo - a) / d
+        t2 = (hi - a) / d
+    flat = np.abs(d) < 1e-9
+    inside = (a >= lo) & (a <= hi)
+    enter = np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(t1, t2))
+    leave = np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(t1, t2))
+    start = np.maximum(enter.max(axis=2), 0.0)
+    stop = np.minimum(leave.min(axis=2), 1.0)
+    return start <= stop
+
+
+def _distance(points: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """Return the distance of each of ``points`` from the segment ``ends``."""
+    a, b = ends
+    d = b - a
+    square = float(np.dot(d, d))
+    t = np.zeros(len(points)) if square == 0 else (points - a) @ d / square
+    foot = a + np.clip(t, 0.0, 1.0)[:, None] * d
+    return np.hypot(*(points - foot).T)
+
+
+def _box_distance(low: np.ndarray, high: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """Return the distance of each box (``low``, ``high``) from the segment ``ends``.
+
+    Nothing for a box the segment meets; else the least of its corners' distances
+    from the segment and the segment's ends' from the box.
+    """
+    corners = np.stack(
+        [
+            low,
+            high,
+            np.stack([low[:, 0], high[:, 1]], 1),
+            np.stack([high[:, 0], low[:, 1]], 1),
+        ],
+        axis=1,
+    )
+    near = _distance(corners.reshape(-1, 2), ends).reshape(-1, 4).min(axis=1)
+    for end in ends:
+        near = np.minimum(near, np.hypot(*(end - np.clip(end, low, high)).T))
+    crossed = _crossed(low, high, ends[None, :, :])[:, 0]
+    return np.where(crossed, 0.0, near)
+
+
+def _nearest(point: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """Return the point of the segment ``ends`` nearest to ``point``."""
+    a, b = ends
+    d = b - a
+    square = float(np.dot(d, d))
+    t = 0.0 if square == 0 else float(np.clip(np.dot(point - a, d) / square, 0, 1))
+    return a + t * d
+
+
+def _gap(box: np.ndarray, point: np.ndarray) -> float:
+    """Return the distance from ``point`` to the box (x0, y0, x1, y1)."""
+    return float(np.hypot(*(point - np.clip(point, box[:2], box[2:]))))
+
+
+def _put(ax: Any, text: Any, centre: np.ndarray) -> None:
+    """Centre ``text`` at ``centre`` (display), in the units of its coordinates."""
+    text.set_horizontalalignment("center")
+    text.set_verticalalignment("center")
+    if getattr(text, "anncoords", None) == "offset points":
+        anchor = ax.transData.transform(text.xy)
+        text.xyann = tuple((centre - anchor) * 72.0 / ax.figure.dpi)
+        return
+    text.set_position(tuple(ax.transData.inverted().transform(centre)))
+
+
+def _leader(ax: Any, text: Any, near: np.ndarray, box: np.ndarray) -> None:
+    """Join a name put far off to what it names by a thin line, to its box's edge.
+
+    Added as an artist, not plotted: the limits, which the names were placed
+    within, stay.
+    """
+    from matplotlib.lines import Line2D
+
+    edge = np.clip(near, box[:2], box[2:])
+    ends = ax.transData.inverted().transform(np.array([near, edge]))
+    line = Line2D(*ends.T, color=text.get_color(), lw=0.5, alpha=0.7, zorder=6.8,
+                  transform=ax.transData)  # fmt: skip
+    line.set_in_layout(False)
+    ax.add_artist(line)
