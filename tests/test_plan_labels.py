@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import assur
-from assur.plotting import polygons
+from assur.plotting import plans, polygons
 
 matplotlib.use("Agg")
 
@@ -109,3 +109,71 @@ def test_a_side_of_round_off_is_neither_drawn_nor_named() -> None:
         assert "closes within 0.0e+00 mm" in ax.get_title()
     finally:
         plt.close(fig)
+
+
+def _texts(ax) -> list:
+    """Return the texts of ``ax`` with something written."""
+    return [t for t in ax.texts if t.get_visible() and t.get_text()]
+
+
+@pytest.mark.parametrize("stem", ["slotted_lever", "inclined", "sixbar"])
+def test_the_instant_centres_names_are_apart_inside_the_frame(stem: str) -> None:
+    import matplotlib.pyplot as plt
+
+    # the shaper had some 20 names over one another, the six-bar 8; the slider-
+    # crank's "C, guide" ran past the frame and Irod-slider lay on the slider
+    table = assur.kinematics(assur.load(TRIAL / f"{stem}.toml"), [70.0])
+    ax = plans.instant_centres(table)
+    fig = ax.figure
+    try:
+        fig.canvas.draw()
+        texts = _texts(ax)
+        boxes = [_box(fig, t) for t in texts]
+        frame = ax.bbox.extents
+        for i, (text, box) in enumerate(zip(texts, boxes, strict=True)):
+            assert _inside(box, frame), text.get_text()
+            for j in range(i + 1, len(texts)):
+                pair = (text.get_text(), texts[j].get_text())
+                # the drawing's own names are draw()'s: a centre's is not on any
+                if any(n.startswith("I") for n in pair):
+                    assert not _overlap(box, boxes[j]), pair
+        # a centre's name lies on no small patch: a joint's circle, the block
+        blocks = [p.get_window_extent().extents for p in ax.patches]
+        small = [b for b in blocks if (b[2] - b[0]) * (b[3] - b[1]) < 2000]
+        for text, box in zip(texts, boxes, strict=True):
+            if text.get_text().startswith("I"):
+                assert not any(_overlap(box, b) for b in small), text.get_text()
+    finally:
+        plt.close(fig)
+
+
+def test_a_far_centre_is_shown_at_the_edge_with_its_coordinates() -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.explain._solve import position
+    from assur.plotting import draw
+
+    # the shaper's rod turns slowly: its centre, at y = 1.18 m, squeezed the
+    # mechanism (0.4 m tall) into a strip
+    mech = assur.load(TRIAL / "slotted_lever.toml")
+    table = assur.kinematics(mech, [70.0])
+    ax = plans.instant_centres(table)
+    alone = draw(table)
+    try:
+        far = plans.relative_centres(position(mech, 70.0))[(0, 4)]
+        assert far is not None
+        assert far[1] > 1.0
+        (y0, y1), (a0, a1) = ax.get_ylim(), alone.get_ylim()
+        assert y1 < far[1]
+        assert y1 - y0 < 1.5 * (a1 - a0)
+        (named,) = [t for t in _texts(ax) if t.get_text().startswith("Irod (")]
+        assert f"{far[0]:.3g}, {far[1]:.3g}) m" in named.get_text()
+        # the arrow at the edge points at it
+        (arrow,) = [p for p in ax.patches if hasattr(p, "_posA_posB")]
+        tail, tip = np.array(arrow._posA_posB)
+        way = (tip - tail) / np.hypot(*(tip - tail))
+        toward = (far - tip) / np.hypot(*(far - tip))
+        assert np.dot(way, toward) > 0.99
+    finally:
+        plt.close(ax.figure)
+        plt.close(alone.figure)

@@ -19,12 +19,12 @@ from assur.explain._position import Position, from_table
 from assur.explain._rates import _sides
 from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
-from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend, _place
+from assur.plotting._centres import draw_centres, relative_centres
+from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend
 from assur.plotting._geometry import _nice
 from assur.plotting._labels import LOAD_LABELS, spread_labels
 from assur.plotting._mathtext import _symbol
 from assur.plotting._style import (
-    literal,
     titled,
 )
 
@@ -41,9 +41,6 @@ __all__ = [
 
 PLAN_SIZE = 80.0
 """Length of the longest vector of a plan, mm of the drawing (about)."""
-SAME_RATE = 1e-9
-"""Two links whose angular speeds differ by less than this times the fastest link's
-turn together: their relative instant centre is at infinity."""
 
 
 def images(pos: Position, k: int) -> dict[str, np.ndarray]:
@@ -242,96 +239,18 @@ def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
 
     The absolute centre of a link is where its velocity is zero; the relative centre
     of two links is their common point of equal velocity, on the line of their two
-    absolute centres (Kennedy's theorem: the line is drawn dashed).
+    absolute centres (Kennedy's theorem: the line is drawn dotted). The view
+    stays on the mechanism: a centre far from it is shown by an arrow at the
+    frame's edge pointing toward it, named with its coordinates.
 
     Returns
     -------
     matplotlib.axes.Axes
     """
-    from assur.plotting.mechanism import draw
-
     pos = _pos(table, angle)
-    table = pos.table
-    ax = draw(table, ax=ax)
-    centres = relative_centres(pos)
-    size = pos.size()
-    middle = np.mean([pos.origin(b) for b in range(len(pos.plan.bodies))], axis=0)
-    places: list[tuple[np.ndarray, list[str]]] = []
-    drawn: list[np.ndarray] = []
-    for (i, j), p in centres.items():
-        if p is None or float(np.hypot(*(p - middle))) > 3 * size:
-            continue
-        absolute = i == 0
-        ax.plot(*p, "s" if absolute else "o", ms=6 if absolute else 4,
-                color="#d62728" if absolute else "#1f77b4", zorder=9)  # fmt: skip
-        drawn.append(p)
-        label = f"I{pos.link(i)}-{pos.link(j)}" if i else f"I{pos.link(j)}"
-        _place(places, p, label, 0.02 * size)
-        if i and centres.get((0, i)) is not None and centres.get((0, j)) is not None:
-            line = np.array([centres[(0, i)], centres[(0, j)]])
-            if float(np.abs(line - middle).max()) < 3 * size:
-                ax.plot(line[:, 0], line[:, 1], ls=":", lw=0.7, color="#1f77b4")
-                drawn += list(line)
-    # draw() framed the mechanism alone: a centre beyond it would be cut off
-    _widen(ax, drawn, 0.1 * size)
-    for p, labels in places:  # the centres at one place (a pin, say) in one label
-        ax.annotate(
-            literal(", ".join(labels)),
-            p,
-            xytext=(3, -9),
-            textcoords="offset points",
-            fontsize=7,
-        )
+    ax = draw_centres(pos, ax)
     ax.set_title(_title(pos, "instant centres"), fontsize=10)
     return ax
-
-
-def _widen(ax: Any, points: list[np.ndarray], pad: float) -> None:
-    """Widen the limits of ``ax`` to hold ``points`` with ``pad`` (m) round them.
-
-    Limits are never narrowed: what they held (the mechanism) stays in view.
-    """
-    if not points:
-        return
-    pts = np.reshape(points, (-1, 2))
-    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-    low = np.minimum([x0, y0], pts.min(axis=0) - pad)
-    high = np.maximum([x1, y1], pts.max(axis=0) + pad)
-    ax.set_xlim(low[0], high[0])
-    ax.set_ylim(low[1], high[1])
-
-
-def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:
-    """Return the instant centre of every two bodies (0: the frame), m.
-
-    The primary centres first: the pin of a revolute pair, and at infinity (None)
-    for a sliding pair. Every other is the point where both bodies' velocities are
-    equal; None where they turn at the same rate (to :data:`SAME_RATE` of the
-    fastest link's speed: two links that both translate, say).
-    """
-    out: dict[tuple[int, int], np.ndarray | None] = {}
-    count = len(pos.plan.bodies)
-    for pair in pos.plan.pairs.values():
-        i, j = sorted((pair.first, pair.second))
-        if "~" not in pos.link(i) + pos.link(j):
-            out[(i, j)] = pos.pair_point(pair) if pair.kind == "R" else None
-    fastest = max(abs(pos.omega(b)) for b in range(count))
-    for i in range(count):
-        for j in range(i + 1, count):
-            if "~" in pos.link(i) + pos.link(j) or (i, j) in out:
-                continue
-            wi, wj = pos.omega(i), pos.omega(j)
-            if not abs(wi - wj) > SAME_RATE * fastest:
-                out[(i, j)] = None
-                continue
-            oi, oj = pos.origin(i), pos.origin(j)
-            # v_oi + wi perp(P - oi) = v_oj + wj perp(P - oj)
-            vi = pos.coincident(i, oi, 1)
-            vj = pos.coincident(j, oj, 1)
-            rhs = vj - vi - wj * _perp(oj) + wi * _perp(oi)
-            q = rhs / (wi - wj)  # = perp(P)
-            out[(i, j)] = np.array([q[1], -q[0]])
-    return out
 
 
 def _pos(table: Table, angle: Any) -> Position:

@@ -1,0 +1,174 @@
+"""The instant centres drawn on the mechanism, for :func:`plans.instant_centres`.
+
+The view stays on the mechanism and the centres near it; a centre far off (a
+link that hardly turns has its own beyond the page) is shown at the frame's edge
+by an arrow toward it, named with its coordinates. Every name is put where it is
+read as its centre's (:func:`place_names`). matplotlib is imported inside the
+functions only.
+"""
+
+from __future__ import annotations
+
+import itertools
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from assur.explain._position import perp
+from assur.plotting._drawing import _place
+from assur.plotting._heads import fitted_arrow
+from assur.plotting._placing import Name, place_names
+from assur.plotting._style import literal
+
+if TYPE_CHECKING:
+    from assur.explain._position import Position
+
+FAR = 2.5
+"""A centre farther than this many times the mechanism's frame's half-diagonal
+from its middle is shown at the edge of the view, not in it."""
+MARGIN = 0.08
+"""Room round the mechanism and the centres in view, a share of the view's span."""
+SAME_RATE = 1e-9
+"""Two links whose angular speeds differ by less than this times the fastest link's
+turn together: their relative instant centre is at infinity."""
+ABSOLUTE = {"marker": "s", "ms": 6, "color": "#d62728"}
+RELATIVE = {"marker": "o", "ms": 4, "color": "#1f77b4"}
+"""How an absolute centre (a link's about the frame) and a relative one are drawn."""
+
+
+def draw_centres(pos: Position, ax: Any) -> Any:
+    """Draw the mechanism at ``pos`` with its instant centres on ``ax``; return it."""
+    from matplotlib.patches import Polygon
+
+    from assur.plotting.mechanism import draw
+
+    ax = draw(pos.table, ax=ax)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    middle = np.array([x0 + x1, y0 + y1]) / 2
+    reach = FAR * 0.5 * float(np.hypot(x1 - x0, y1 - y0))
+    centres = {k: p for k, p in relative_centres(pos).items() if p is not None}
+    near = {k: p for k, p in centres.items() if np.hypot(*(p - middle)) <= reach}
+    _kennedy_lines(ax, centres)
+    places: list[tuple[np.ndarray, list[str]]] = []
+    for (i, j), p in near.items():
+        ax.plot(*p, ls="none", zorder=9, **(RELATIVE if i else ABSOLUTE))
+        _place(places, p, _name(pos, i, j), 0.02 * pos.size())
+    _frame(ax, [np.array([[x0, y0], [x1, y1]]), *near.values()])
+    names = [
+        Name(ax.annotate(literal(", ".join(labels)), tuple(p), fontsize=7), p, p)
+        for p, labels in places
+    ]
+    for (i, j), p in centres.items():
+        if (i, j) not in near:
+            names.append(_far_centre(ax, p, _name(pos, i, j), i == 0))
+    bars = [
+        np.column_stack([line.get_xdata(), line.get_ydata()])
+        for line in ax.lines
+        if line.get_linestyle() in ("-", "-.", "--") and len(line.get_xdata()) > 1
+    ]
+    # a plate's edges too (a patch: its corners closed round)
+    bars += [np.vstack([p.get_xy(), p.get_xy()[:1]]) for p in ax.patches
+             if isinstance(p, Polygon) and p.get_fill()]  # fmt: skip
+    lines = [np.array([a, b]) for bar in bars for a, b in itertools.pairwise(bar)]
+    place_names(ax, names, np.array(lines) if lines else None, _small_patches(ax))
+    return ax
+
+
+def _name(pos: Position, i: int, j: int) -> str:
+    """Return the name of the centre of bodies ``i`` and ``j`` (0: the frame)."""
+    return f"I{pos.link(i)}-{pos.link(j)}" if i else f"I{pos.link(j)}"
+
+
+def _kennedy_lines(ax: Any, centres: dict[tuple[int, int], np.ndarray]) -> None:
+    """Draw, dotted, the line of the absolute centres each relative centre is on.
+
+    Drawn whole: the view, set after, cuts those running out of it.
+    """
+    for i, j in centres:
+        if i and (0, i) in centres and (0, j) in centres:
+            line = np.array([centres[(0, i)], centres[(0, j)]])
+            ax.plot(line[:, 0], line[:, 1], ls=":", lw=0.7, color="#1f77b4")
+
+
+def _frame(ax: Any, points: list[np.ndarray]) -> None:
+    """Set the limits of ``ax`` round ``points`` (m), with :data:`MARGIN` to spare."""
+    pts = np.vstack([np.reshape(p, (-1, 2)) for p in points])
+    low, high = pts.min(axis=0), pts.max(axis=0)
+    pad = MARGIN * float(max(high - low))
+    ax.set_xlim(low[0] - pad, high[0] + pad)
+    ax.set_ylim(low[1] - pad, high[1] + pad)
+
+
+def _far_centre(ax: Any, p: np.ndarray, label: str, absolute: bool) -> Name:
+    """Draw an arrow at the frame's edge toward the far centre ``p``; return its name.
+
+    The arrow points from the middle of the view toward ``p``; its name gives
+    ``p``'s coordinates, m.
+    """
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    middle = np.array([x0 + x1, y0 + y1]) / 2
+    half = 0.96 * np.array([x1 - x0, y1 - y0]) / 2
+    u = (p - middle) / float(np.hypot(*(p - middle)))
+    with np.errstate(divide="ignore"):
+        reach = float(np.min(half / np.abs(u)))
+    tip = middle + reach * u
+    tail = tip - 0.07 * float(max(half)) * u
+    style = ABSOLUTE if absolute else RELATIVE
+    ax.add_patch(fitted_arrow([tail, tip], 9.0, color=style["color"], lw=1.2,
+                              zorder=9))  # fmt: skip
+    ax.plot(*tail, ls="none", zorder=9, mfc="white", **style)
+    text = ax.annotate(
+        literal(f"{label} ({p[0]:.3g}, {p[1]:.3g}) m"),
+        tuple(tail),
+        fontsize=7,
+        color=style["color"],
+    )
+    return Name(text, tail, tail)
+
+
+def _small_patches(ax: Any) -> list[Any]:
+    """Return what the names keep clear of: small patches, the centres' markers.
+
+    A patch smaller than a fiftieth of the view: a joint's circle, a block.
+    """
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    view = (x1 - x0) * (y1 - y0)
+    small = []
+    for patch in ax.patches:
+        box = patch.get_extents().transformed(ax.transData.inverted())
+        if box.width * box.height < view / 50:
+            small.append(patch)
+    return small + [line for line in ax.lines if line.get_zorder() == 9]
+
+
+def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:
+    """Return the instant centre of every two bodies (0: the frame), m.
+
+    The primary centres first: the pin of a revolute pair, and at infinity (None)
+    for a sliding pair. Every other is the point where both bodies' velocities are
+    equal; None where they turn at the same rate (to :data:`SAME_RATE` of the
+    fastest link's speed: two links that both translate, say).
+    """
+    out: dict[tuple[int, int], np.ndarray | None] = {}
+    count = len(pos.plan.bodies)
+    for pair in pos.plan.pairs.values():
+        i, j = sorted((pair.first, pair.second))
+        if "~" not in pos.link(i) + pos.link(j):
+            out[(i, j)] = pos.pair_point(pair) if pair.kind == "R" else None
+    fastest = max(abs(pos.omega(b)) for b in range(count))
+    for i in range(count):
+        for j in range(i + 1, count):
+            if "~" in pos.link(i) + pos.link(j) or (i, j) in out:
+                continue
+            wi, wj = pos.omega(i), pos.omega(j)
+            if not abs(wi - wj) > SAME_RATE * fastest:
+                out[(i, j)] = None
+                continue
+            oi, oj = pos.origin(i), pos.origin(j)
+            # v_oi + wi perp(P - oi) = v_oj + wj perp(P - oj)
+            vi = pos.coincident(i, oi, 1)
+            vj = pos.coincident(j, oj, 1)
+            rhs = vj - vi - wj * perp(oj) + wi * perp(oi)
+            q = rhs / (wi - wj)  # = perp(P)
+            out[(i, j)] = np.array([q[1], -q[0]])
+    return out
