@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import assur
-from assur.plotting import plans, polygons
+from assur.plotting import lever, plans, polygons
 
 matplotlib.use("Agg")
 
@@ -177,3 +177,31 @@ def test_a_far_centre_is_shown_at_the_edge_with_its_coordinates() -> None:
     finally:
         plt.close(ax.figure)
         plt.close(alone.figure)
+
+
+@pytest.mark.parametrize("stem", ["sixbar", "slotted_lever"])
+def test_the_lever_s_names_are_apart_and_off_the_arrows(stem: str) -> None:
+    import matplotlib.pyplot as plt
+
+    # the six-bar's three couples' names piled up at c, the shaper's loads'
+    # names at e and f lay on each other and on the arrows
+    table = assur.forces(assur.load(TRIAL / f"{stem}.toml"), [70.0])
+    ax = lever.zhukovsky_lever(table)
+    fig = ax.figure
+    try:
+        fig.canvas.draw()
+        texts = [t for t in _texts(ax) if "sum = balancing load" not in t.get_text()]
+        boxes = [_box(fig, t) for t in texts]
+        arrows = [ax.transData.transform(np.array(p._posA_posB)) for p in ax.patches]
+        frame = ax.bbox.extents
+        for i, (text, box) in enumerate(zip(texts, boxes, strict=True)):
+            name = text.get_text()
+            assert _inside(box, frame), name
+            for j in range(i + 1, len(texts)):
+                assert not _overlap(box, boxes[j]), (name, texts[j].get_text())
+            # a name crosses no arrow but (at most) its own; the pole's name is
+            # where every image's arrow starts
+            crossed = [k for k, a in enumerate(arrows) if _meets(box, *a)]
+            assert len(crossed) <= 1 or name == "pole", name
+    finally:
+        plt.close(fig)

@@ -21,8 +21,8 @@ from assur.explain._lever import LeverTerm, lever_load, lever_parts, lever_rates
 from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
 from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend
-from assur.plotting._labels import LOAD_LABELS, spread_labels
 from assur.plotting._mathtext import _symbol
+from assur.plotting._placing import Name, place_names
 from assur.plotting._style import literal
 from assur.plotting.plans import (
     _perp,
@@ -144,12 +144,13 @@ def zhukovsky_lever(
     ax = _axes(ax, _title(pos, f"Zhukovsky's lever{literal(whose)}"), (11.0, 6.5))
     # the images' names too are kept inside the lever's frame, off the list beside
     # it, and clear of the loads' names
-    LOAD_LABELS.update(_images_plot(ax, found, mu, "#777777"))
+    images_named = _images_plot(ax, found, mu, "#777777")
+    names = [Name(t, np.asarray(t.xy), np.asarray(t.xy)) for t in images_named]
     shares = _shares(pos, (bodies, speed))
     terms = [t for _, _, t in shares if t is not None]
     apart = _apart(lever, terms)
     arrows = _lever_arrows(lever, terms, apart)
-    _name_pair_points(ax, lever, apart, found, mu)
+    names += _name_pair_points(ax, lever, apart, found, mu)
     # a couple's pair is drawn to its own scale: beside the inertia forces it is
     # often a fraction of a millimetre
     fmu, cmu = (
@@ -159,8 +160,11 @@ def zhukovsky_lever(
     for at, force, label, couple in arrows:
         color = COUPLE if couple else FORCE
         tip = at / mu + force / (cmu if couple else fmu)
-        _arrow(ax, at / mu, tip, color)
-        LOAD_LABELS.add(ax.annotate(label, tip, fontsize=7, color=color))
+        # a load of nothing (a crank's inertia force at its centre) gets no arrow
+        # and no name: its share, nothing, is listed
+        if _arrow(ax, at / mu, tip, color):
+            text = ax.annotate(label, tuple(tip), fontsize=7, color=color)
+            names.append(Name(text, at / mu, tip))
     # the shares add up to the balancing load: their sum is the one written
     balancing = math.fsum(share for _, share, _ in shares)
     _list_terms(ax, apart, d.kind, shares, (speed, balancing), unit_speed)
@@ -171,7 +175,11 @@ def zhukovsky_lever(
         entries.append((f"couple M as ±M/l at two joints, 1 mm = {cmu:g} N", COUPLE))
     note = f"lever: μv = {mu:g} {mu_unit}{per},\nturned 90°"
     _legend(ax, entries, note, beside=True)
-    spread_labels(ax)
+    # room round the lever for the names; each beside its arrow or image, clear
+    # of the other names, arrows and the images' rays from the pole
+    ax.margins(0.08)
+    rays = [np.array([np.zeros(2), v / mu]) for v in found.values()]
+    place_names(ax, names, np.array(rays) if rays else None)
     return ax
 
 
@@ -231,14 +239,17 @@ def _name_pair_points(
     apart: dict[int, Ends | None],
     found: dict[str, np.ndarray],
     mu: float,
-) -> None:
+) -> list[Name]:
     """Mark and name the images a couple's pair acts at that are no named image.
+
+    Return the names, to place.
 
     A link's point at a prismatic joint (a cylinder's at its bore) moves unlike
     the joint's point on the other link: its image is ``bore_cylinder``, as on
     the velocity plan.
     """
     size = max((float(np.hypot(*v)) for v in found.values()), default=0.0)
+    names = []
     for body, ends in apart.items():
         for name, at in ends or ():
             image = _perp(lever.coincident(body, at, 1))
@@ -248,11 +259,11 @@ def _name_pair_points(
             ax.plot(*tip, "o", ms=3.5, color="#333333")
             link = tex_name(lever.link(body))
             label = _symbol(f"{tex_name(name.lower())}_{{{link}}}")
-            LOAD_LABELS.add(
-                ax.annotate(
-                    label, tip, xytext=(4, 4), textcoords="offset points", fontsize=8
-                )
+            text = ax.annotate(
+                label, tip, xytext=(4, 4), textcoords="offset points", fontsize=8
             )
+            names.append(Name(text, tip, tip))
+    return names
 
 
 def _joints_apart(pos: Position, body: int) -> Ends | None:
