@@ -84,8 +84,10 @@ def _label_link(
 
 
 LOAD_LABELS: weakref.WeakSet[Any] = weakref.WeakSet()
-"""The labels of forces and couples drawn (and the images' names on Zhukovsky's
-lever): :func:`spread_labels` may move them.
+"""The labels of forces and couples drawn (and the images' names on the velocity
+and acceleration plans): :func:`spread_labels` may move them. The force polygons,
+Zhukovsky's lever and the instant centres place theirs with
+:func:`assur.plotting._placing.place_names`, which keeps them off the lines too.
 (Held aside, not as a ``gid``: an SVG writes a gid as an element's id, which must
 be unique in a page.)"""
 SPREAD_STEPS = 40
