@@ -218,6 +218,33 @@ def check_structure(mech: Any) -> None:
     plan_of(mech)
 
 
+TABLE_SUFFIXES = {"CSV": (".csv", ".txt"), "Parquet": (".parquet", ".pq")}
+"""The names a table file of each format may end in."""
+OTHER_SUFFIXES = frozenset(
+    {".csv", ".txt", ".parquet", ".pq", ".json", ".toml", ".html", ".htm", ".md"}
+    | {".tex", ".png", ".svg", ".pdf", ".gif", ".xlsx", ".xls"}
+)
+"""Names of files of a known format: a table of another is refused under them (a
+name of no known format, or none, is taken as given)."""
+
+
+def check_table_suffix(option: str, target: Any, kind: str) -> None:
+    """Refuse a table file named for another format (``--csv x.parquet``).
+
+    ``kind`` is ``"CSV"`` or ``"Parquet"``; standard output is let through.
+    """
+    if not target or target == "-" or is_stdout(target):
+        return
+    suffix = Path(target).suffix.lower()
+    allowed = TABLE_SUFFIXES[kind]
+    if suffix in OTHER_SUFFIXES and suffix not in allowed:
+        msg = (
+            f"{option} {path_text(target)}: a {suffix} name for {kind}; expected a "
+            f"name ending in {' or '.join(allowed)}"
+        )
+        raise UsageError(msg)
+
+
 def check_not_input(option: str, output: Any, source: Path) -> None:
     """Refuse an output that is the mechanism file read (the same file, any name)."""
     if str(output) == "-":

@@ -13,7 +13,12 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from assur import _output
-from assur._cli_common import check_distinct, check_not_input, is_stdout
+from assur._cli_common import (
+    check_distinct,
+    check_not_input,
+    check_table_suffix,
+    is_stdout,
+)
 from assur._output import (
     StdoutError,
     finishing,
@@ -30,9 +35,10 @@ __all__ = ["_check_outputs", "_write_tables"]
 
 def _check_outputs(args: argparse.Namespace) -> None:
     """Refuse outputs that cannot be written, before anything is analysed."""
-    for option in ("--csv", "--parquet"):
+    for option, kind in (("--csv", "CSV"), ("--parquet", "Parquet")):
         target = getattr(args, option[2:])
         if target:
+            check_table_suffix(option, target, kind)
             check_not_input(option, target, args.file)
     check_distinct([("--csv", args.csv), ("--parquet", args.parquet)])
     # /dev/stdout and its kin are standard output as much as "-" is

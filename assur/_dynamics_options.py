@@ -9,7 +9,12 @@ from __future__ import annotations
 import argparse
 
 from assur._checks import LARGEST
-from assur._cli_common import check_distinct, check_not_input, is_stdout
+from assur._cli_common import (
+    check_distinct,
+    check_not_input,
+    check_table_suffix,
+    is_stdout,
+)
 from assur._output import path_text
 from assur.dynamics_flywheel import SMALLEST_DELTA, delta_in_range
 from assur.dynamics_model import flywheel_in_range
@@ -48,6 +53,7 @@ def _check_options(args: argparse.Namespace) -> None:
             raise UsageError(msg)
         args.csv = "-"
     if args.csv:
+        check_table_suffix("--csv", args.csv, "CSV")
         check_not_input("--csv", args.csv, args.file)
     if args.startup_csv is not None:
         if is_stdout(args.startup_csv):
@@ -56,5 +62,6 @@ def _check_options(args: argparse.Namespace) -> None:
                 "(not standard output, nor the --csv file)"
             )
             raise UsageError(msg)
+        check_table_suffix("--startup-csv", args.startup_csv, "CSV")
         check_not_input("--startup-csv", args.startup_csv, args.file)
         check_distinct([("--csv", args.csv), ("--startup-csv", args.startup_csv)])

@@ -617,3 +617,39 @@ def test_slices_smaller_than_the_library_s_give_its_numbers(
     assert written.shape == (len(table), 109)
     # the same numbers, to the CSV's 12 digits (another grouping: the last bit)
     np.testing.assert_allclose(written, table.to_array(), rtol=1e-11, atol=1e-9)
+
+
+@pytest.mark.parametrize(
+    ("command", "option", "name", "kind"),
+    [
+        ("forces", "--csv", "t.parquet", "CSV"),
+        ("forces", "--csv", "t.json", "CSV"),
+        ("kinematics", "--parquet", "t.csv", "Parquet"),
+        ("dynamics", "--csv", "t.png", "CSV"),
+        ("dynamics", "--startup-csv", "t.parquet", "CSV"),
+    ],
+)
+def test_a_table_named_for_another_format_is_refused(
+    capsys, monkeypatch, tmp_path, command, option, name, kind
+):
+    # --csv x.parquet wrote CSV text into x.parquet, without a word
+    monkeypatch.chdir(tmp_path)
+    status, out, err = run(capsys, command, SLIDER_CRANK, option, name)
+    assert (status, out) == (2, "")
+    suffix = name.rpartition(".")[2]
+    assert err.rstrip("\n").endswith(
+        f"{option} {name}: a .{suffix} name for {kind}; expected a name ending in "
+        + (".csv or .txt" if kind == "CSV" else ".parquet or .pq")
+    )
+    assert err.count("\n") == 1
+    assert not list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("name", ["t.csv", "t.txt", "t"])
+def test_a_csv_file_of_any_other_name_is_written(capsys, monkeypatch, tmp_path, name):
+    monkeypatch.chdir(tmp_path)
+    status, _, _ = run(
+        capsys, "forces", SLIDER_CRANK, "--angles", "0:10:5", "--csv", name
+    )
+    assert status == 0
+    assert (tmp_path / name).read_text().startswith("angle,")
