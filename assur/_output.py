@@ -118,15 +118,26 @@ class StdoutError(Exception):
 def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
     """Return ``write(bytes)`` to standard output and the ``encode(text)`` it needs.
 
-    Text that the output's encoding cannot show is encoded with backslash escapes;
-    a failed write raises :class:`StdoutError`.
+    Text that the output's encoding cannot show (a column's name in Cyrillic on an
+    ASCII output) raises :class:`~assur.errors.OutputError`: escaped, the names in
+    the table would change without a word. A failed write raises
+    :class:`StdoutError`.
     """
     stream = sys.stdout
     encoding = stream.encoding or "utf-8"
     buffer = getattr(stream, "buffer", None)
 
     def encode(text: str) -> bytes:
-        return text.encode(encoding, "backslashreplace")
+        try:
+            return text.encode(encoding)
+        except UnicodeEncodeError as err:
+            bad = err.object[err.start : err.end]
+            msg = (
+                f"standard output: its encoding ({encoding}) cannot write {bad!r} "
+                "of the table; expected a file (written in UTF-8) or standard "
+                "output in UTF-8 (PYTHONIOENCODING=utf-8)"
+            )
+            raise OutputError(msg) from None
 
     def write(data: bytes) -> None:
         try:

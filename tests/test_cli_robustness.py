@@ -8,6 +8,7 @@ output survives a failed write.
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import signal
 import subprocess
@@ -600,3 +601,35 @@ def test_an_empty_mechanism_file_name_is_refused(capsys):
         "assur: error: kinematics: argument file: expected a file name, got an empty "
         "one"
     )
+
+
+def test_a_name_standard_output_cannot_write_is_one_error(tmp_path: Path) -> None:
+    # on an ASCII output the CSV's names came out as \u0448..., changed silently
+    text = (EXAMPLES / "four_bar.toml").read_text()
+    text = text.replace("[links.rocker]", '[links."шатун"]')
+    (tmp_path / "cyr.toml").write_text(text.replace('"rocker"', '"шатун"'))
+
+    def ascii_run(*options: str) -> subprocess.CompletedProcess[str]:
+        argv = [sys.executable, "-m", "assur", "forces", "cyr.toml", *options]
+        env = subprocess_env(PYTHONIOENCODING="ascii")
+        return subprocess.run(
+            [*argv, "--angles", "0:10:5"],
+            cwd=tmp_path,
+            env=env,
+            capture_output=True,
+            text=True,
+            timeout=120,
+            check=False,
+        )
+
+    result = ascii_run("--csv", "-")
+    assert (result.returncode, result.stdout) == (2, "")
+    # standard error is ASCII too: the name is escaped in the message alone
+    assert result.stderr == (
+        "assur: error: standard output: its encoding (ascii) cannot write "
+        "'\\u0448\\u0430\\u0442\\u0443\\u043d' of the table; expected a file "
+        "(written in UTF-8) or standard output in UTF-8 (PYTHONIOENCODING=utf-8)\n"
+    )
+    # JSON escapes them as JSON does: the names read back unchanged
+    result = ascii_run("--json")
+    assert "шатун.angle" in json.loads(result.stdout)["columns"]
