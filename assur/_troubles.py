@@ -80,9 +80,12 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                 closes = ~_all_failures(troubles, n, what="assembly")
                 closes &= ~_all_failures(troubles, n, what="unreached")
                 good = runs_text(plan, given, closes)
+                count, total = int(mask.sum()), int(n - closes.sum())
+                # the group's own count; the other groups' failures add to the sweep's
+                more = f", {total} with the other groups'" if total > count else ""
                 msg = (
                     f"group {trouble.group}: cannot be assembled at driver position "
-                    f"{where} ({int(mask.sum())} of {n} positions fail); it assembles "
+                    f"{where} ({count} of {n} positions fail{more}); it assembles "
                     f"for {good or 'none of them'}"
                 )
                 locked = closes & _all_failures(troubles, n, what="locked")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -12,6 +13,8 @@ from assur._runs import _turn, runs_text
 from assur.plan import compile_plan
 
 from .conftest import EXAMPLES
+
+EDGE = Path(__file__).parent / "data" / "edge"
 
 
 def _crank() -> assur.Mechanism:
@@ -65,3 +68,14 @@ def test_only_one_crank_s_sweep_wraps() -> None:
     # nor are two cranks' positions
     two = compile_plan(assur.load(EXAMPLES / "five_bar_two_cranks.toml"))
     assert _turn(two, np.stack([x, x], axis=1)) == 0.0
+
+
+def test_a_failure_s_count_tells_the_other_groups_failures_too() -> None:
+    # "(4 of 121 positions fail)" where 85 fail: the count was the first group's
+    mech = assur.load(EDGE / "tenbar_two_groups_fail.json")
+    angles = np.arange(-180.0, 181.0, 3.0)
+    with pytest.raises(assur.AssemblyError) as raised:
+        assur.kinematics(mech, angles)
+    left = assur.kinematics(mech, angles, skip_unassembled=True)
+    assert len(angles) - len(left) == 85
+    assert "(4 of 121 positions fail, 85 with the other groups');" in str(raised.value)
