@@ -81,8 +81,9 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                 closes &= ~_all_failures(troubles, n, what="unreached")
                 good = runs_text(plan, given, closes)
                 count, total = int(mask.sum()), int(n - closes.sum())
-                # the group's own count; the other groups' failures add to the sweep's
-                more = f", {total} with the other groups'" if total > count else ""
+                # the group's own count; other groups' failures, and positions
+                # out of reach, add to the sweep's
+                more = f", {total} in all" if total > count else ""
                 msg = (
                     f"group {trouble.group}: cannot be assembled at driver position "
                     f"{where} ({count} of {n} positions fail{more}); it assembles "
