@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-from assur._cli_common import check_not_input, check_range, quiet
+from assur._cli_common import OTHER_SUFFIXES, check_not_input, check_range, quiet
 from assur._output import output_path, path_text
 from assur._text import describe
 from assur.errors import UsageError
@@ -95,6 +95,13 @@ def _folder(out: Path, what: str) -> Path:
     """Return ``-o``'s folder for ``what``; a file of that name is a UsageError."""
     if out.exists() and not out.is_dir():
         msg = f"-o {path_text(out)}: is a file; expected a folder for the {what}"
+        raise UsageError(msg)
+    if not out.is_dir() and out.suffix.lower() in OTHER_SUFFIXES:
+        # -o x.png made a folder named x.png: a picture's name, surely
+        msg = (
+            f"-o {path_text(out)}: a {out.suffix} file's name; expected a folder for "
+            f"the {what}"
+        )
         raise UsageError(msg)
     return out
 

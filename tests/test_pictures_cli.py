@@ -252,6 +252,18 @@ def test_diagrams_into_a_file(
     _error_line(err, "is a file; expected a folder")
 
 
+@pytest.mark.parametrize("command", ["diagrams", "plans"])
+def test_a_folder_named_like_a_picture_is_refused(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], command: str
+) -> None:
+    # -o x.png made a folder named x.png for the pictures
+    target = tmp_path / "x.png"
+    status, _, err = _run(capsys, command, TENBAR, "-o", str(target))
+    assert status == 2
+    _error_line(err, f"-o {target}: a .png file's name; expected a folder for the")
+    assert not target.exists()
+
+
 @pytest.mark.pictures
 def test_diagrams_over_a_folder_in_a_picture_s_place_replace_none(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
