@@ -163,9 +163,9 @@ def _table(entry: str, value: dict, comps: tuple[str, ...], kind: str) -> LoadTa
     )
 
 
-def _text(entry: str, value: Any) -> str:
+def _text(entry: str, value: Any, what: str = "a name") -> str:
     if not isinstance(value, str):
-        _fail(entry, f"expected a name in quotes, got {_echo(value)}")
+        _fail(entry, f"expected {what} in quotes, got {_echo(value)}")
     return value
 
 
@@ -234,7 +234,7 @@ def parse(data: dict[str, Any]) -> Mechanism:
         tuple(joints),
         tuple(drivers),
         name=_text("name", _get(data, "name", "")),
-        description=_text("description", _get(data, "description", "")),
+        description=_text("description", _get(data, "description", ""), "text"),
         gravity=gravity,
         loads=tuple(loads_),
         points=tuple(points),

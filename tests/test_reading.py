@@ -250,6 +250,12 @@ def test_a_name_with_a_control_character_as_the_file(tmp_path):
             f"drivers[0].joint: unknown joint '{'A' * 55}...' (known: A, B, C, guide)",
         ),
         (
+            'name = "Slider-crank"',
+            'name = "Slider-crank"\ndescription = true',
+            # a description is text, not a name
+            "description: expected text in quotes, got true",
+        ),
+        (
             'kind = "revolute"',
             "kind = 1979-05-27T07:32:00Z",
             "joints.A.kind: expected a name in quotes, got the date and time "
