@@ -95,7 +95,14 @@ def _one_range(text: str, option: str) -> np.ndarray:
     # halves first: STOP - START may overflow where their halves do not
     count = (stop / 2 - start / 2) / step * 2
     if not count < MAX_POSITIONS:
-        shown = f"{math.floor(count) + 1}" if math.isfinite(count) else "too many"
+        # a count too long to read is given by its size (1e+300, not 301 digits)
+        shown = (
+            "too many"
+            if not math.isfinite(count)
+            else f"{math.floor(count) + 1}"
+            if count < 1e15
+            else f"about {count:.3g}"
+        )
         msg = (
             f"{option}: {describe(text)} gives {shown} positions; expected at most "
             f"{MAX_POSITIONS} (a larger step)"
