@@ -366,7 +366,8 @@ def test_plot_names_its_own_option(capsys, tmp_path: Path):
 
 
 @pytest.mark.parametrize(
-    "spec", ["0:1:1e-320", "-1e308:1e308:1e300", "0:1e308:1e-308", "0:1e9:1e-3"]
+    "spec",
+    ["0:1:1e-320", "-1e308:1e308:1e300", "0:1e308:1e-308", "0:1e9:1e-3", "0:10:1e-300"],
 )
 def test_absurd_ranges_are_one_usage_error(spec, capsys):
     line = one_error(capsys, "kinematics", FOUR_BAR, f"--angles={spec}")
