@@ -38,8 +38,8 @@ def _check_outputs(args: argparse.Namespace) -> None:
     for option, kind in (("--csv", "CSV"), ("--parquet", "Parquet")):
         target = getattr(args, option[2:])
         if target:
-            check_table_suffix(option, target, kind)
             check_not_input(option, target, args.file)
+            check_table_suffix(option, target, kind)
     check_distinct([("--csv", args.csv), ("--parquet", args.parquet)])
     # /dev/stdout and its kin are standard output as much as "-" is
     csv = "-" if args.csv and is_stdout(args.csv) else args.csv

@@ -53,8 +53,8 @@ def _check_options(args: argparse.Namespace) -> None:
             raise UsageError(msg)
         args.csv = "-"
     if args.csv:
-        check_table_suffix("--csv", args.csv, "CSV")
         check_not_input("--csv", args.csv, args.file)
+        check_table_suffix("--csv", args.csv, "CSV")
     if args.startup_csv is not None:
         if is_stdout(args.startup_csv):
             msg = (
@@ -62,6 +62,6 @@ def _check_options(args: argparse.Namespace) -> None:
                 "(not standard output, nor the --csv file)"
             )
             raise UsageError(msg)
-        check_table_suffix("--startup-csv", args.startup_csv, "CSV")
         check_not_input("--startup-csv", args.startup_csv, args.file)
+        check_table_suffix("--startup-csv", args.startup_csv, "CSV")
         check_distinct([("--csv", args.csv), ("--startup-csv", args.startup_csv)])

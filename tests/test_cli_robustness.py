@@ -458,10 +458,11 @@ def test_non_ascii_names_on_an_ascii_terminal(tmp_path: Path):
     text = text.replace("[links.coupler]", '[links."coupleur→"]')
     mech = tmp_path / "u.toml"
     mech.write_text(text, encoding="utf-8")
+    # what a person reads shows the name escaped; a CSV table would hold it changed,
+    # and is refused (test_a_name_standard_output_cannot_write_is_one_error)
     for argv in (
         ["structure"],
         ["kinematics", "--angles", "0"],
-        ["kinematics", "--angles", "0", "--csv", "-"],
         ["forces", "--angles", "0", "--json"],
     ):
         result = subprocess.run(
