@@ -20,7 +20,10 @@ from assur.plan import Plan
 
 __all__ = ["LoadPlan", "compile_loads", "table_values"]
 
-WHAT = {"center": "centre of mass", "inertia": "moment of inertia about it, kg m^2"}
+WHAT = {
+    "center": "centre of mass",
+    "inertia": "moment of inertia about the centre of mass, kg m^2",
+}
 
 
 @dataclass(frozen=True, slots=True)

@@ -1,7 +1,9 @@
 """Driver positions named in messages: one position, and runs of them.
 
 A sweep of one crank over a whole turn closes on itself: a run that reaches its
-last position goes on at its first one, and the two are told as one range.
+last position goes on at its first one, and where the runs are of the whole sweep
+(an error's ranges) the two are told as one range. A warning's runs are of one slice
+of a long sweep at a time, merged by the command line: those are never joined.
 """
 
 from __future__ import annotations
@@ -23,13 +25,14 @@ def position_where(plan: Plan, position: Array) -> str:
     return position_text([d.kind for d in plan.drivers], position.tolist())
 
 
-def runs_text(plan: Plan, given: Array, mask: Mask) -> str:
+def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
     """Describe the runs of consecutive positions in ``mask``.
 
     One driver's positions given out of order are taken in increasing order: a run
     is then of neighbours among all the positions given. A crank's sweep over a
-    whole turn joins its last run to its first: "-11 deg to 41 deg", not "40 deg to
-    41 deg; 349 deg to 399 deg" for a sweep from 40 to 399 deg.
+    whole turn joins its last run to its first with ``join`` (``given`` is then the
+    whole sweep): "-11 deg to 41 deg", not "40 deg to 41 deg; 349 deg to 399 deg"
+    for a sweep from 40 to 399 deg.
     """
     if given.shape[1] == 1 and given.shape[0] > 1:
         x = given[:, 0]
@@ -48,12 +51,14 @@ def runs_text(plan: Plan, given: Array, mask: Mask) -> str:
     if mask[-1]:
         ends = np.r_[ends, mask.shape[0] - 1]
     runs = []
-    turn = _turn(plan, given) if len(starts) > 1 and mask[0] and mask[-1] else 0.0
+    ends_in = join and len(starts) > 1 and mask[0] and mask[-1]
+    turn = _turn(plan, given) if ends_in else 0.0
     if turn:
         # the last run goes on into the first: told from where the last begins,
-        # a turn back, to where the first ends
+        # a turn back, to where the first ends (one position when they meet)
         first = position_where(plan, given[starts[-1]] - turn)
-        runs.append(f"{first} to {position_where(plan, given[ends[0]])}")
+        last = position_where(plan, given[ends[0]])
+        runs.append(first if first == last else f"{first} to {last}")
         starts, ends = starts[1:-1], ends[1:-1]
     for a, b in zip(starts, ends, strict=True):
         first, last = position_where(plan, given[a]), position_where(plan, given[b])
@@ -76,6 +81,9 @@ def _turn(plan: Plan, given: Array) -> float:
     if step == 0.0 or (span > 0) != (step > 0):
         return 0.0
     turn = 360.0 if span > 0 else -360.0
-    # to the rounding of a sweep's positions, whatever their size
-    tiny = 1e-9 * max(360.0, float(np.max(np.abs(x))))
+    # to the rounding of a sweep's positions (a few units of their last place),
+    # and always well inside a step
+    tiny = 1e-9 * 360.0 + 8.0 * float(np.spacing(np.max(np.abs(x))))
+    if not tiny < 0.5 * abs(step):
+        return 0.0
     return turn if abs(span + step - turn) <= tiny or abs(span - turn) <= tiny else 0.0

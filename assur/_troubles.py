@@ -79,7 +79,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                 # where the mechanism assembles and goes, whatever else stops it there
                 closes = ~_all_failures(troubles, n, what="assembly")
                 closes &= ~_all_failures(troubles, n, what="unreached")
-                good = runs_text(plan, given, closes)
+                good = runs_text(plan, given, closes, join=True)
                 count, total = int(mask.sum()), int(n - closes.sum())
                 # the group's own count; other groups' failures, and positions
                 # out of reach, add to the sweep's
@@ -91,7 +91,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                 )
                 locked = closes & _all_failures(troubles, n, what="locked")
                 if locked.any():
-                    locks = runs_text(plan, given, locked)
+                    locks = runs_text(plan, given, locked, join=True)
                     msg += f" (where friction locks it at {locks})"
                 raise AssemblyError(msg)
             if trouble.what == "locked":

@@ -166,6 +166,9 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         return 0
     rows = _Rows(mech, state, angles, args.forces)
     rows.check()
+    if args.csv == "-":
+        # a name standard output cannot write stops the command before any file
+        stdout_writer()[1](",".join(rows.names))
     _notes(args, mech)
     # the files first, as a set: standard output read by a pipe may go away
     _write_files(args, startup_file, rows)

@@ -232,7 +232,8 @@ def write_csv(table: Any, path: Any = None) -> str | None:
     Raises
     ------
     OutputError
-        When the file cannot be written; an old file of that name is kept.
+        When the file cannot be written; an old file of that name is kept. For
+        ``"-"``, also when standard output's encoding cannot write a column's name.
 
     Examples
     --------

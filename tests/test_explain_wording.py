@@ -350,3 +350,11 @@ def test_round_off_is_told_as_zero() -> None:
     # no power of ten below 1e-9 but the lever's relative check
     tiny = [x for x in note.splitlines() if re.search(r"10\^\{-(1\d|9)\}", x)]
     assert all("M_{b}^{lever} - M_{b}" in x for x in tiny), tiny
+
+
+def test_a_small_rate_the_user_gave_is_kept() -> None:
+    # an epsilon of 1e-7 beside an omega of 20 was written 0 as round-off
+    mech = assur.load(EXAMPLES / "four_bar.toml")
+    driver = dataclasses.replace(mech.drivers[0], epsilon=1e-7)
+    note = str(explain(dataclasses.replace(mech, drivers=(driver,)), 45.0))
+    assert r"\varepsilon_{\mathrm{crank}} = 1 \cdot 10^{-7}\ \mathrm{rad/s^2}" in note

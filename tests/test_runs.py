@@ -22,7 +22,7 @@ def _crank() -> assur.Mechanism:
 
 
 def _text(mech: assur.Mechanism, x: np.ndarray, mask: np.ndarray) -> str:
-    return runs_text(compile_plan(mech), x.reshape(-1, 1), mask)
+    return runs_text(compile_plan(mech), x.reshape(-1, 1), mask, join=True)
 
 
 def _between(x: np.ndarray, low: float, high: float) -> np.ndarray:
@@ -79,3 +79,29 @@ def test_a_failure_s_count_tells_the_other_groups_failures_too() -> None:
     left = assur.kinematics(mech, angles, skip_unassembled=True)
     assert len(angles) - len(left) == 85
     assert "(4 of 121 positions fail, 85 in all);" in str(raised.value)
+
+
+def test_runs_of_a_slice_are_not_joined() -> None:
+    # a warning's runs are of one slice of a long sweep: a slice that spans a turn
+    # joined its ends, and the merged warning claimed 178 to 362 deg near a dead centre
+    x = np.arange(0.0, 360.0, 1.0)
+    mask = _between(x, -2.0, 2.0) | _between(x, 178.0, 182.0)
+    plan = compile_plan(_crank())
+    assert runs_text(plan, x.reshape(-1, 1), mask) == (
+        "0 deg to 2 deg; 178 deg to 182 deg; 358 deg to 359 deg"
+    )
+    assert _text(_crank(), x, mask) == "-2 deg to 2 deg; 178 deg to 182 deg"
+
+
+def test_a_joined_run_of_one_pose_is_told_once() -> None:
+    # the first pose and the closing one alone: "0 deg to 0 deg"
+    x = np.arange(0.0, 361.0, 1.0)
+    mask = np.zeros(len(x), dtype=bool)
+    mask[[0, -1, 100]] = True
+    assert _text(_crank(), x, mask) == "0 deg; 100 deg"
+
+
+def test_a_turn_is_no_wider_than_the_rounding_of_far_angles() -> None:
+    # a tolerance of 1e-9 of the angles passed a whole turn beyond 3.6e11 deg
+    far = np.array([1e12, 1e12 + 10.0, 1e12 + 20.0]).reshape(-1, 1)
+    assert _turn(compile_plan(_crank()), far) == 0.0

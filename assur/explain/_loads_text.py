@@ -17,8 +17,8 @@ import numpy as np
 
 from assur._loads import table_values
 from assur._vec import Array
-from assur.explain._position import Position, at, cross, value
-from assur.explain._tex import ZERO, name, num, par, point_name, vec
+from assur.explain._position import ROUND_OFF, Position, at, cross, value
+from assur.explain._tex import name, num, par, point_name, vec
 from assur.groups._pairs import PairPlan
 from assur.model import LoadTable
 
@@ -58,7 +58,7 @@ def inertia_load(pos: Position, body: int) -> tuple[Array, float] | None:
     force, torque = at(found[0], found[1]), value(found[2])
     # a link at rest in its motion (a yoke at mid-stroke) carries round-off: told
     # as the nothing it is, not as 1.5e-11 N
-    least = ZERO * pos.rate_scale(2)
+    least = ROUND_OFF * pos.rate_scale(2)
     mass, inertia = float(pos.loads.mass[body]), float(pos.loads.inertia[body])
     force[np.abs(force) < mass * least] = 0.0
     if abs(torque) < inertia * least / pos.size():

@@ -8,7 +8,7 @@ record. Points are returned in the file's coordinates (the core's shifted back).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -16,7 +16,6 @@ import numpy as np
 from assur._kinematics import motions
 from assur._loads import LoadPlan, compile_loads
 from assur._vec import Array
-from assur.explain._tex import ZERO
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.kinetostatics import Applied, Reverse, applied_loads, reverse
@@ -26,7 +25,12 @@ from assur.plan import Plan
 if TYPE_CHECKING:
     from assur.table import Table
 
-__all__ = ["Position", "at", "from_table", "value"]
+__all__ = ["ROUND_OFF", "Position", "at", "from_table", "value"]
+
+ROUND_OFF = 1e-12
+"""A rate below this fraction of the mechanism's at its level is round-off and is
+written 0 (a yoke at mid-stroke: 3e-13); a small rate the user gave (an epsilon of
+1e-7 beside an omega of 20: 2.5e-10) is kept."""
 
 
 def value(leaf: Any) -> float:
@@ -63,6 +67,9 @@ class Position:
     applied: Applied | None
     result: Reverse | None
     loads: LoadPlan
+    scales: dict[tuple[int, int], float] = field(
+        default_factory=dict, compare=False, repr=False
+    )
 
     @property
     def plan(self) -> Plan:
@@ -103,7 +110,9 @@ class Position:
     def _turn(self, body: int, k: int) -> float:
         """Return level ``k`` of a body's rotation, zero if it is round-off."""
         w = value(self.bodies[body].phi[k])
-        return 0.0 if abs(w) * self.size() < ZERO * self.rate_scale(k) else w
+        if any(d.body == body for d in self.plan.drivers):
+            return w  # the user's own input, however small
+        return 0.0 if abs(w) * self.size() < ROUND_OFF * self.rate_scale(k) else w
 
     def angle(self, body: int) -> float:
         """Return a link's angle (its axis direction, or its rotation), rad."""
@@ -140,15 +149,22 @@ class Position:
         What a velocity or an acceleration is told from round-off by: a yoke at
         mid-stroke has 1e-11 m/s^2 where the crank's pin has 20.
         """
-        size, big = self.size(), 0.0
-        for m in self.bodies:
-            turn = max(abs(value(m.phi[j])) ** (k / j) for j in range(1, k + 1))
-            big = max(big, math.hypot(value(m.ox[k]), value(m.oy[k])), turn * size)
-        return big
+        # once per motion (a lever's copy has velocities per unit speed): a note
+        # asks for it at every point it writes
+        key = (id(self.bodies), k)
+        found = self.scales.get(key)
+        if found is None:
+            size, found = self.size(), 0.0
+            for m in self.bodies:
+                turn = max(abs(value(m.phi[j])) ** (k / j) for j in range(1, k + 1))
+                found = max(found, math.hypot(value(m.ox[k]), value(m.oy[k])))
+                found = max(found, turn * size)
+            self.scales[key] = found
+        return found
 
     def _clean(self, v: Array, k: int) -> Array:
         """Return ``v`` (level ``k``) with its round-off set to zero."""
-        v[np.abs(v) < ZERO * self.rate_scale(k)] = 0.0
+        v[np.abs(v) < ROUND_OFF * self.rate_scale(k)] = 0.0
         return v
 
 
