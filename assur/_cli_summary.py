@@ -60,7 +60,7 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
         return json.dumps(data, indent=2)
     width = max(len(k) for k in values)
     # a whole turn's sweep ends on its first pose: the means count that pose once
-    once = " (the closing pose counted once)" if summary.closes() else ""
+    once = ", the closing pose counted once" if summary.closes() else ""
     lines = [f"Summary over {summary.count} positions{once} ({name})"]
     for key, value in values.items():
         unit = summary.units[key]

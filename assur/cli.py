@@ -90,6 +90,9 @@ def _parser() -> tuple[_Parser, list[str]]:
         description="Kinetostatic analysis of planar linkages, built on Assur groups.",
     )
     parser.add_argument("-q", "--quiet", action="store_true", help=QUIET)
+    from assur import __version__
+
+    parser.add_argument("--version", action="version", version=f"assur {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     p = sub.add_parser("structure", help="degrees of freedom and Assur groups")
     p.add_argument("file", type=input_file)

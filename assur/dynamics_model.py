@@ -95,8 +95,8 @@ class Dynamics(Columns):
         Estimated relative error of the work integral on that grid.
     """
 
-    mechanism: Mechanism
-    schema: tuple[Column, ...]
+    mechanism: Mechanism = field(repr=False)
+    schema: tuple[Column, ...] = field(repr=False)
     omega: float
     delta: float
     flywheel: float

@@ -141,13 +141,21 @@ def loads(text: str, json_format: bool = False) -> Mechanism:
     ModelError
         With a one-line message naming the entry and what is wrong.
     UsageError
-        When ``text`` is not text (a file's path, say: read it with :func:`load`).
+        When ``text`` is not text, or is a file's path (a ``Path``, or one line
+        ending in ``.toml`` or ``.json``): read a file with :func:`load`.
     """
     if isinstance(text, bytes | bytearray):
         text = _decoded(bytes(text))
     if not isinstance(text, str):
         hint = " (read a file with assur.load)" if isinstance(text, PathLike) else ""
         msg = f"text: expected a mechanism file's text, got {type(text).__name__}{hint}"
+        raise UsageError(msg)
+    if "\n" not in text and text.strip().lower().endswith((".toml", ".json")):
+        # assur.loads("examples/x.toml") said "not valid TOML: Expected '='"
+        msg = (
+            f"text: {text.strip()!r} is a file's name; expected a mechanism file's "
+            "text (read a file with assur.load)"
+        )
         raise UsageError(msg)
     return parse(file_data(text, json_format))
 

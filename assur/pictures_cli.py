@@ -110,9 +110,9 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     _common(
         p,
         "DIR",
-        "folder for motion.png, paths.png, decomposition.png; with masses or "
-        "loads, torque.png, hodographs.png, shaking.png; with masses and one "
-        "crank, dynamics.png",
+        "folder for motion.png, paths.png, decomposition.png; with prismatic "
+        "pairs, slides.png; with masses or loads, torque.png, hodographs.png, "
+        "shaking.png; with masses and one crank, dynamics.png",
         DPI,
     )
     p.add_argument("--angles", **angles)

@@ -231,6 +231,14 @@ class Table(Columns):
             self._store(evaluate(self, column))
         return self._cache[name]
 
+    def __repr__(self) -> str:
+        # the dataclass's repr spelt out every state array: 20 000 characters for
+        # two rows, in a notebook's cell
+        kind = "forces" if self.force_state is not None else "kinematics"
+        name = self.plan.mechanism.name or "mechanism"
+        size = f"{len(self)} rows x {len(self.columns)} columns"
+        return f"<assur.Table: {kind} of {name!r}, {size}>"
+
     def __len__(self) -> int:
         return int(self.given.shape[0])
 

@@ -16,6 +16,8 @@ import pytest
 
 import assur
 
+from .conftest import EXAMPLES
+
 
 def test_a_table_keeps_its_own_copy_of_the_positions():
     # the caller's array was the table's: changing it relabelled every row
@@ -380,3 +382,30 @@ def test_the_library_says_what_is_wrong_in_one_line(call, kind, message):
     with pytest.raises(kind) as caught:
         call()
     assert str(caught.value) == message
+
+
+def test_a_table_s_repr_is_a_line() -> None:
+    # a two-row table's repr spelt out every state array: 19 583 characters
+    table = assur.forces(assur.catalog.slider_crank(), [0.0, 90.0])
+    assert repr(table) == (
+        "<assur.Table: forces of 'Slider-crank exercise', 2 rows x 109 columns>"
+    )
+    kinematics = assur.kinematics(assur.catalog.four_bar(), np.arange(72.0))
+    assert repr(kinematics).startswith("<assur.Table: kinematics of ")
+    assert repr(kinematics).endswith(", 72 rows x 83 columns>")
+    # the dynamics table: its figures, not its mechanism and columns
+    whitworth = assur.load(EXAMPLES / "whitworth.toml")
+    dynamics = assur.dynamics(whitworth, [0.0], flywheel=20.0)
+    assert repr(dynamics).startswith("Dynamics(omega=5.0, delta=")
+    assert len(repr(dynamics)) < 400
+
+
+def test_a_file_s_name_given_as_its_text_is_told() -> None:
+    # "not valid TOML: Expected '=' after a key" for loads("examples/x.toml")
+    with pytest.raises(assur.UsageError, match=r"is a file's name; .*assur\.load"):
+        assur.loads("examples/slider_crank_exercise.toml")
+    with pytest.raises(assur.UsageError, match=r"is a file's name"):
+        assur.loads("m.JSON\n".rstrip("\n"))
+    # the text of a file is read, whatever it ends with
+    text = (EXAMPLES / "four_bar.toml").read_text() + "\n# see four_bar.toml"
+    assert assur.loads(text).name == "Crank-rocker four-bar"

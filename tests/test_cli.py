@@ -506,3 +506,9 @@ def test_a_range_near_the_largest_float(recwarn):
     for start, step, count in ((0.0, 0.1, 3601), (-33.3, 0.37, 2793)):
         found = parse_angles(f"{start}:{start + step * (count - 1)}:{step}")
         np.testing.assert_array_equal(found, start + step * np.arange(count))
+
+
+def test_version(capsys):
+    # main() turns argparse's exit into its status
+    assert main(["--version"]) == 0
+    assert capsys.readouterr().out == f"assur {assur.__version__}\n"

@@ -236,7 +236,7 @@ def test_the_summary_says_a_closing_pose_is_counted_once(capsys, stop, closes):
     argv = ["forces", str(path), "--summary", "--angles", f"0:{stop}:10"]
     assert main(argv) == 0
     head = capsys.readouterr().out.splitlines()[0]
-    once = " (the closing pose counted once)" if closes else ""
+    once = ", the closing pose counted once" if closes else ""
     name = assur.load(path).name
     assert head == f"Summary over {stop // 10 + 1} positions{once} ({name})"
     assert main([*argv, "--json"]) == 0
