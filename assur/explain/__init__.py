@@ -45,7 +45,9 @@ def explain(
         Driver position, deg (m for a prismatic driver); one value per driver.
     answers : mapping of str to float, optional
         Given answers to compare with (a textbook's), by table column or magnitude
-        (``"rod.G.a"``, ``"rod.Fi"``, ``"C.v"``): see :func:`read_answers`.
+        (``"rod.G.a"``, ``"rod.Fi"``, ``"C.v"``): see :func:`read_answers`
+        (``from assur.explain import read_answers``; ``assur.explain`` is this
+        function).
     source : str
         Where the given answers come from, for the note's words.
 
