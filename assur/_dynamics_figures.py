@@ -77,7 +77,8 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
         ("kinetic energy at the reference pose", f"{result.energy:.6g} J"),
         (
             "internal grid",
-            f"{result.grid} positions a turn (work to {result.tolerance:.1g})",
+            f"{result.grid} positions a turn (the work's relative error "
+            f"{result.tolerance:.1g})",
         ),
     ]
     if sizing is not None:

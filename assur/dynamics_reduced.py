@@ -316,6 +316,10 @@ def _model(start: float, values: Sequence[Array]) -> Reduced:
     # a periodic cubic spline integrates over its period as the trapezoid rule does,
     # so the mean taken here leaves a work that is periodic to rounding
     motor = 0.0 - float(np.mean(torque))  # no load: +0, not -0
+    if abs(motor) <= 1e-13 * float(np.max(np.abs(torque), initial=0.0)):
+        # loads that do no work over a turn (gravity alone): their mean is
+        # round-off, shown as -6.9e-18 N m in the table beside a figure of 0
+        motor = 0.0
     net = CubicSpline(
         knots, closed[2] + motor, bc_type="periodic", extrapolate="periodic"
     )

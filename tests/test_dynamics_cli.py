@@ -528,3 +528,16 @@ def test_a_name_standard_output_cannot_write_stops_before_any_file(tmp_path: Pat
     assert result.stderr.startswith("assur: error: standard output: its encoding")
     assert result.stderr.count("\n") == 1
     assert not (tmp_path / "s.csv").exists()
+
+
+def test_loads_that_do_no_work_need_no_motor() -> None:
+    # gravity alone: the motor's torque was -6.9e-18 N m in the table, 0 above it
+    mech = assur.load(EXAMPLES / "six_bar_lecture.toml")
+    table = assur.dynamics(mech, [0.0, 45.0], flywheel=0.4)
+    assert table.motor == 0.0
+    assert np.all(table["driver.motor"] == 0.0)
+    # the model's own mean: round-off against the largest reduced torque
+    from assur.dynamics_reduced import reduce
+
+    model = reduce(mech)
+    assert abs(np.mean(model.torque)) < 1e-13 * np.max(np.abs(model.torque))
