@@ -36,7 +36,8 @@ row = 0  # the first row is 45 degrees
 print(f"balancing torque at 45 deg: {table['driver.torque'][row]:.3f} N m")
 print(f"  by virtual power:          {table['driver.torque_check'][row]:.3f} N m")
 for joint in ("A", "B", "C", "guide"):
-    fx, fy = table[f"{joint}.Fx"][row], table[f"{joint}.Fy"][row]
+    # + 0.0: a component of -0.0 N is printed 0.00, not -0.00
+    fx, fy = table[f"{joint}.Fx"][row] + 0.0, table[f"{joint}.Fy"][row] + 0.0
     print(f"reaction {joint:>5}: ({fx:9.2f}, {fy:9.2f}) N")
 
 # %%

@@ -358,3 +358,11 @@ def test_a_small_rate_the_user_gave_is_kept() -> None:
     driver = dataclasses.replace(mech.drivers[0], epsilon=1e-7)
     note = str(explain(dataclasses.replace(mech, drivers=(driver,)), 45.0))
     assert r"\varepsilon_{\mathrm{crank}} = 1 \cdot 10^{-7}\ \mathrm{rad/s^2}" in note
+
+
+def test_an_answer_a_hair_below_ours_differs_by_plus_zero() -> None:
+    # "-0.000 %" stood in the answers' table for a given value 1e-9 below the note's
+    from assur.explain._answers import _verdict
+
+    assert _verdict(84.625 * (1 - 1e-9), 84.625) == ("$+0.000$ %", "agrees")
+    assert _verdict(84.625 * (1 - 1e-4), 84.625) == ("$-0.010$ %", "agrees")

@@ -180,6 +180,8 @@ def _verdict(value: float, ours: float) -> tuple[str, str]:
     diff = (value - ours) / abs(ours)
     if abs(diff) < 1e4:
         shown = f"{100 * diff:+.3f}"
+        # a difference that rounds to nothing is +0.000, not -0.000
+        shown = "+0.000" if shown == "-0.000" else shown
     else:  # three digits of a difference too large to read so (nor to scale by 100)
         mantissa, power = f"{diff:+.2e}".split("e")
         shown = f"{mantissa}e{int(power) + 2:+03d}"
