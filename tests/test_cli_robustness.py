@@ -240,6 +240,19 @@ def test_a_fifo_whose_reader_stops_early_is_one_error(tmp_path: Path, capsys):
     assert line == f"assur: error: {fifo}: cannot write the file (Broken pipe)"
 
 
+def on_ascii(tmp_path: Path, *argv: str) -> subprocess.CompletedProcess[str]:
+    """Run ``assur ARGV`` in ``tmp_path`` with standard streams in ASCII."""
+    return subprocess.run(
+        [sys.executable, "-m", "assur", *argv],
+        cwd=tmp_path,
+        env=subprocess_env(PYTHONIOENCODING="ascii"),
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+
+
 def shell(tmp_path: Path, command: str) -> subprocess.CompletedProcess[str]:
     """Run ``assur COMMAND`` in a shell (which reads ``| cat``, ``>&-`` and such)."""
     return subprocess.run(
@@ -614,17 +627,7 @@ def test_a_name_standard_output_cannot_write_is_one_error(tmp_path: Path) -> Non
     (tmp_path / "cyr.toml").write_text(text.replace('"rocker"', '"шатун"'))
 
     def ascii_run(*options: str) -> subprocess.CompletedProcess[str]:
-        argv = [sys.executable, "-m", "assur", "forces", "cyr.toml", *options]
-        env = subprocess_env(PYTHONIOENCODING="ascii")
-        return subprocess.run(
-            [*argv, "--angles", "0:10:5"],
-            cwd=tmp_path,
-            env=env,
-            capture_output=True,
-            text=True,
-            timeout=120,
-            check=False,
-        )
+        return on_ascii(tmp_path, "forces", "cyr.toml", *options, "--angles", "0:10:5")
 
     result = ascii_run("--csv", "-")
     assert (result.returncode, result.stdout) == (2, "")

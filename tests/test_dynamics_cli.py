@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import subprocess
-import sys
 import warnings
 from pathlib import Path
 
@@ -509,21 +508,13 @@ def test_the_file_s_epsilon_is_said_to_be_left_out(capsys, tmp_path: Path) -> No
 
 def test_a_name_standard_output_cannot_write_stops_before_any_file(tmp_path: Path):
     # the start-up's CSV was written, and "wrote ..." said, before the error
-    from .test_cli_robustness import subprocess_env
+    from .test_cli_robustness import on_ascii
 
     path = Path(__file__).parent / "data" / "edge" / "four_bar_motor_clockwise.toml"
     text = path.read_text().replace("[links.rocker]", '[links."ракер"]')
     (tmp_path / "m.toml").write_text(text.replace('"rocker"', '"ракер"'))
     argv = ["dynamics", "m.toml", "--flywheel", "0.01", "--startup-csv", "s.csv"]
-    result = subprocess.run(
-        [sys.executable, "-m", "assur", *argv, "--forces", "--csv", "-"],
-        cwd=tmp_path,
-        env=subprocess_env(PYTHONIOENCODING="ascii"),
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    result = on_ascii(tmp_path, *argv, "--forces", "--csv", "-")
     assert (result.returncode, result.stdout) == (2, "")
     assert result.stderr.startswith("assur: error: standard output: its encoding")
     assert result.stderr.count("\n") == 1
