@@ -14,15 +14,32 @@ from assur._text import position_text
 from assur._vec import Array, Mask
 from assur.plan import Plan
 
-__all__ = ["position_where", "runs_text"]
+__all__ = ["position_where", "runs_text", "telling_apart"]
 
 MOST_RUNS = 6
 """Runs named in one message; more are written as an ellipsis."""
 
 
-def position_where(plan: Plan, position: Array) -> str:
+def position_where(plan: Plan, position: Array, digits: int = 6) -> str:
     """Describe one position of the drivers (as given) for a message."""
-    return position_text([d.kind for d in plan.drivers], position.tolist())
+    return position_text([d.kind for d in plan.drivers], position.tolist(), digits)
+
+
+def telling_apart(pairs: list[tuple[Array, Array]]) -> int:
+    """Return the significant digits (6 to 17) that write each pair's two apart.
+
+    A run's end and the position just past it, a failing position and the last
+    good one: at a step of 1e-4 deg both were "149.528 deg".
+    """
+    for digits in range(6, 17):
+        if all(
+            position_text("R" * len(a), a.tolist(), digits)
+            != position_text("R" * len(b), b.tolist(), digits)
+            for a, b in pairs
+            if not np.array_equal(a, b)
+        ):
+            return digits
+    return 17
 
 
 def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
@@ -50,18 +67,26 @@ def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
         starts = np.r_[0, starts]
     if mask[-1]:
         ends = np.r_[ends, mask.shape[0] - 1]
+    n = given.shape[0]
+    shown = list(zip(starts, ends, strict=True))[: MOST_RUNS + 1]
+    # each end written apart from the position just past it
+    digits = telling_apart(
+        [(given[a], given[a - 1]) for a, _ in shown if a > 0]
+        + [(given[b], given[b + 1]) for _, b in shown if b < n - 1]
+    )
     runs = []
     ends_in = join and len(starts) > 1 and mask[0] and mask[-1]
     turn = _turn(plan, given) if ends_in else 0.0
     if turn:
         # the last run goes on into the first: told from where the last begins,
         # a turn back, to where the first ends (one position when they meet)
-        first = position_where(plan, given[starts[-1]] - turn)
-        last = position_where(plan, given[ends[0]])
+        first = position_where(plan, given[starts[-1]] - turn, digits)
+        last = position_where(plan, given[ends[0]], digits)
         runs.append(first if first == last else f"{first} to {last}")
         starts, ends = starts[1:-1], ends[1:-1]
     for a, b in zip(starts, ends, strict=True):
-        first, last = position_where(plan, given[a]), position_where(plan, given[b])
+        first = position_where(plan, given[a], digits)
+        last = position_where(plan, given[b], digits)
         runs.append(first if a == b else f"{first} to {last}")
     more = "; ..." if len(runs) > MOST_RUNS else ""
     return "; ".join(runs[:MOST_RUNS]) + more

@@ -211,11 +211,13 @@ def listing(names: Sequence[str], limit: int = 6) -> str:
     return shown if len(names) <= limit else f"{shown}, ... ({len(names)} in all)"
 
 
-def position_text(kinds: Sequence[str], values: Sequence[float]) -> str:
+def position_text(
+    kinds: Sequence[str], values: Sequence[float], digits: int = 6
+) -> str:
     """Return driver positions for a message: "30 deg" or "0.1 m", comma-separated.
 
     ``kinds`` holds each driver's pair kind ("R" or "P"), ``values`` its position in
-    the user's units (deg, or m).
+    the user's units (deg, or m), written to ``digits`` significant digits.
 
     Examples
     --------
@@ -223,7 +225,7 @@ def position_text(kinds: Sequence[str], values: Sequence[float]) -> str:
     '30 deg, 0.125 m'
     """
     return ", ".join(
-        f"{x:.6g} deg" if kind == "R" else f"{x:.6g} m"
+        f"{x:.{digits}g} deg" if kind == "R" else f"{x:.{digits}g} m"
         for kind, x in zip(kinds, values, strict=False)
     )
 

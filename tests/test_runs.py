@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 import dataclasses
+import re
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import assur
-from assur._runs import _turn, runs_text
+from assur._runs import _turn, runs_text, telling_apart
 from assur.plan import compile_plan
 
 from .conftest import EXAMPLES
@@ -105,3 +106,22 @@ def test_a_turn_is_no_wider_than_the_rounding_of_far_angles() -> None:
     # a tolerance of 1e-9 of the angles passed a whole turn beyond 3.6e11 deg
     far = np.array([1e12, 1e12 + 10.0, 1e12 + 20.0]).reshape(-1, 1)
     assert _turn(compile_plan(_crank()), far) == 0.0
+
+
+def test_a_fine_step_s_neighbours_are_written_apart() -> None:
+    # at a step of 1e-4 deg: "cannot be assembled at 149.528 deg ... it assembles
+    # for 60 deg to 149.528 deg"
+    mech = assur.catalog.four_bar(
+        crank=0.1, coupler=0.05, rocker=0.08, frame=0.1, angle=60.0
+    )
+    with pytest.raises(assur.AssemblyError) as raised:
+        assur.kinematics(mech, np.arange(80.0, 82.0, 1e-4))
+    found = re.search(
+        r"driver position (\S+) deg .* it assembles for \S+ deg to (\S+) deg",
+        str(raised.value),
+    )
+    assert found is not None
+    failing, last_good = (float(v) for v in found.groups())
+    assert failing - last_good == pytest.approx(1e-4, rel=1e-6)
+    # and a coarse sweep keeps six digits
+    assert telling_apart([(np.array([30.0]), np.array([31.0]))]) == 6
