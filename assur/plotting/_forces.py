@@ -19,7 +19,7 @@ from assur.plotting._context import _unit
 from assur.plotting._friction import shown_point
 from assur.plotting._geometry import _anchor, _nice, _public
 from assur.plotting._heads import fitted_arrow
-from assur.plotting._labels import LOAD_LABELS
+from assur.plotting._loadnames import name_load
 from assur.plotting._mathtext import reaction_symbol
 from assur.plotting._style import (
     ARROW_LENGTH,
@@ -354,7 +354,7 @@ def _draw_force(
             zorder=7,
             bbox=LABEL_BOX,
         )
-        LOAD_LABELS.add(label)
+        name_load(label, a.at, tip)
     return tip
 
 
@@ -367,6 +367,7 @@ def _draw_couple(
     if couple < 0:
         t = t[::-1]
     arc = a.point + rad * np.column_stack([np.cos(t), np.sin(t)])
+    # the name is read as the couple's by its arc's upper right
     ax.add_patch(fitted_arrow(arc, 11, color=a.color, lw=1.5, zorder=6))
     if text:
         # the balancing torque always shows its value
@@ -382,5 +383,6 @@ def _draw_couple(
             zorder=7,
             bbox=LABEL_BOX,
         )
-        LOAD_LABELS.add(label)
+        q = a.point + rad * np.array([math.cos(0.9), math.sin(0.9)])
+        name_load(label, q, q, arc)
     return [a.point - rad, a.point + rad]

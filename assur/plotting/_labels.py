@@ -19,6 +19,7 @@ from assur.plotting._geometry import (
     _merge_joints,
     _shape,
 )
+from assur.plotting._loadnames import name_load
 from assur.plotting._style import literal
 
 if TYPE_CHECKING:
@@ -36,7 +37,7 @@ def _label_joints(
         d = _joint_direction(p, ctx.r, busy)
         at = p + 2.0 * ctx.r * d
         busy.append(at[None, :])
-        ax.text(
+        text = ax.text(
             at[0],
             at[1],
             literal(", ".join(names)),
@@ -48,6 +49,8 @@ def _label_joints(
             alpha=max(alpha, 0.35),
             zorder=7,
         )
+        # a picture with loads moves it clear of them (place_loads)
+        name_load(text, p, p)
 
 
 def _label_link(
@@ -84,9 +87,9 @@ def _label_link(
 
 
 LOAD_LABELS: weakref.WeakSet[Any] = weakref.WeakSet()
-"""The labels of forces and couples drawn (and the images' names on the velocity
-and acceleration plans): :func:`spread_labels` may move them. The force polygons,
-Zhukovsky's lever and the instant centres place theirs with
+"""The images' names on the velocity and acceleration plans: :func:`spread_labels`
+may move them. The pictures with loads (:mod:`assur.plotting._loadnames`), the
+force polygons, Zhukovsky's lever and the instant centres place theirs with
 :func:`assur.plotting._placing.place_names`, which keeps them off the lines too.
 (Held aside, not as a ``gid``: an SVG writes a gid as an element's id, which must
 be unique in a page.)"""

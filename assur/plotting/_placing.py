@@ -41,13 +41,17 @@ class Name:
 
     A point is a segment of no length. ``away``, when given, is a point (data)
     the name rather stands away from (a polygon's centroid: its sides' names go
-    outside it).
+    outside it). A name whose ``rival`` is false (a joint's, beside the forces
+    at it) does not keep the others from coming near what it names; one that
+    ``shuns`` nothing (a joint's again) may come nearer the others' than its own.
     """
 
     text: Any
     start: np.ndarray
     end: np.ndarray
     away: np.ndarray | None = None
+    rival: bool = True
+    shuns: bool = True
 
 
 def place_names(
@@ -55,13 +59,15 @@ def place_names(
     names: list[Name],
     lines: np.ndarray | None = None,
     avoid: list[Any] | None = None,
+    width: float = 0.0,
 ) -> None:
     """Put every name of ``names`` at its best place on ``ax``, in turn (twice).
 
     ``lines`` are segments (k, 2, 2), data coordinates, that no name may cross,
     beside the named sides themselves; the other texts of ``ax``, its legend and
-    the artists ``avoid`` (markers, small patches) are kept clear of. The names
-    do not resize the axes.
+    the artists ``avoid`` (markers, small patches) are kept clear of, and the
+    lines by half their ``width`` (points: a link's bar is broad). The names do
+    not resize the axes.
     """
     if not names:
         return
@@ -82,6 +88,7 @@ def place_names(
         fixed.append(np.asarray(legend.get_window_extent(renderer).extents))
     fixed += [np.asarray(a.get_window_extent(renderer).extents) for a in avoid or ()]
     sizes = np.array([_size(n.text, renderer) for n in names])
+    rivals = np.array([n.rival for n in names])
     boxes = np.full((len(names), 4), np.nan)
     pixels = ax.figure.dpi / 72.0
     frame = np.asarray(ax.bbox.extents) + np.array([1.0, 1.0, -1.0, -1.0])
@@ -90,8 +97,18 @@ def place_names(
             away = None if name.away is None else to_display(name.away)
             centres = _candidates(own[i], sizes[i], away, GAP * pixels)
             others_boxes = np.array([*fixed, *np.delete(boxes, i, axis=0)])
+            shunned = rivals.copy() if name.shuns else np.zeros(len(names), bool)
+            shunned[i] = True
             cost = _costs(
-                centres, sizes[i], frame, others_boxes, segments, i, own, CLEAR * pixels
+                centres,
+                sizes[i],
+                frame,
+                others_boxes,
+                segments,
+                int(shunned[:i].sum()),
+                _from_apart(own, i, shunned, CLEAR * pixels),
+                CLEAR * pixels,
+                0.5 * width * pixels,
             )
             best = centres[int(np.argmin(cost))]
             boxes[i] = np.concatenate([best - sizes[i] / 2, best + sizes[i] / 2])
@@ -100,6 +117,25 @@ def place_names(
         near = _nearest(0.5 * (box[:2] + box[2:]), ends)
         if _gap(box, near) > LEADER * pixels:
             _leader(ax, name.text, near, box)
+
+
+def _from_apart(
+    own: np.ndarray, i: int, shunned: np.ndarray, clear: float
+) -> np.ndarray:
+    """Return the named segments (display) the ``i``-th name is measured against.
+
+    Those ``shunned`` only; a rival that starts where the ``i``-th starts (forces
+    at one point) less its first ``clear``: near that point, a name is as near one
+    as the other, and is read by its own further out.
+    """
+    named = own.copy()
+    shared = np.hypot(*(named[:, 0] - own[i, 0]).T) < 1.0
+    shared[i] = False
+    d = named[:, 1] - named[:, 0]
+    length = np.hypot(*d.T)
+    cut = np.minimum(clear, length) / np.where(length > 0, length, 1.0)
+    named[shared, 0] += (cut[:, None] * d)[shared]
+    return named[shunned]
 
 
 def _size(text: Any, renderer: Any) -> np.ndarray:
@@ -147,12 +183,14 @@ def _costs(
     own: int,
     named: np.ndarray,
     clear: float,
+    half: float = 0.0,
 ) -> np.ndarray:
     """Return the cost of a name of ``size`` centred at each of ``centres``.
 
     ``segments`` (display) are the named ones (``named``, the name's own the
     ``own``-th) and then the other lines; a place nearer than ``clear`` to
-    another named side or point costs more the nearer it is.
+    another named side or point costs more the nearer it is; a line is crossed
+    within ``half`` of it.
     """
     low, high = centres - size / 2, centres + size / 2
     cost = np.zeros(len(centres))
@@ -168,7 +206,7 @@ def _costs(
         )
         area = np.clip(wide, 0, None) * np.clip(tall, 0, None)
         cost += CLASH * (area > 0).sum(axis=1) + area.sum(axis=1)
-    cost += CLASH * _crossed(low, high, segments).sum(axis=1)
+    cost += CLASH * _crossed(low - half, high + half, segments).sum(axis=1)
     # how far each place's box is from each named side or point
     apart = np.array([_box_distance(low, high, s) for s in named])
     mine = apart[own]

@@ -39,7 +39,7 @@ from assur.plotting._forces import (
 )
 from assur.plotting._friction import draw_friction_circles, friction_legend
 from assur.plotting._geometry import _extent, _public
-from assur.plotting._labels import spread_labels
+from assur.plotting._loadnames import place_loads
 from assur.plotting._style import (
     INERTIA_COLOR,
     LOAD_COLOR,
@@ -225,7 +225,7 @@ def draw_free_body(
         ],
     )
     clear_bars(ax)
-    spread_labels(ax)
+    place_loads(ax)
     return ax
 
 

@@ -32,7 +32,8 @@ from assur.plotting._forces import (
 )
 from assur.plotting._friction import draw_friction_circles, friction_legend
 from assur.plotting._geometry import _extent, _public, _shape, _skeleton
-from assur.plotting._labels import _label_joints, _label_link, spread_labels
+from assur.plotting._labels import _label_joints, _label_link
+from assur.plotting._loadnames import place_loads
 from assur.plotting._parts import _draw_guide, _draw_joint, _draw_link, _draw_pivot
 from assur.plotting._style import (
     BALANCING_COLOR,
@@ -120,7 +121,7 @@ def draw(
     if labels:
         clear_bars(ax)
     if forces and labels:
-        spread_labels(ax)
+        place_loads(ax)
     return ax
 
 
