@@ -25,8 +25,9 @@ NAMED: weakref.WeakKeyDictionary[Any, tuple[np.ndarray, np.ndarray, np.ndarray]]
 (a point twice for a joint's or a couple's name), and a line (k, 2) that the
 names keep off besides, a couple's arc (none, (0, 2), for the others).
 (Held aside, not as a ``gid``: an SVG writes a gid as an element's id.)"""
-SEEN = 3.0
-"""Length of a force's arrow, points, below which the arrow is not seen."""
+SEEN = 6.0
+"""Length of a force's arrow, points, below which it is read as a point: its
+head is a speck, shorter than its name is high."""
 
 
 def name_load(text: Any, start: Any, end: Any, line: Any = None) -> None:
@@ -68,7 +69,7 @@ def _name(ax: Any, text: Any) -> Name:
     force = len(arc) == 0 and not np.array_equal(start, end)
     rival = force and seen >= SEEN * ax.figure.dpi / 72.0
     joint = len(arc) == 0 and not force
-    return Name(text, start, end, rival=bool(rival), shuns=not joint)
+    return Name(text, start, end, rival=bool(rival), shuns=not joint, tip=force)
 
 
 def _drawn_lines(ax: Any) -> list[np.ndarray]:

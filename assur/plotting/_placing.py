@@ -29,6 +29,8 @@ RINGS = (1.0, 3.0, 7.0, 14.0)
 CLEAR = 10.0
 """A name nearer than this (points) to another side or point than its own is
 shunned, the more the nearer."""
+PASSES = 2
+"""Rounds in which every name is put at its best place, the others where they are."""
 LEADER = 14.0
 """A name farther than this (points) from what it names is joined to it by a line."""
 ALONG = (0.5, 0.38, 0.62, 0.26, 0.74, 0.14, 0.86)
@@ -44,6 +46,7 @@ class Name:
     outside it). A name whose ``rival`` is false (a joint's, beside the forces
     at it) does not keep the others from coming near what it names; one that
     ``shuns`` nothing (a joint's again) may come nearer the others' than its own.
+    A name with a ``tip`` (an arrow's, at ``end``) is tried round it too.
     """
 
     text: Any
@@ -52,6 +55,7 @@ class Name:
     away: np.ndarray | None = None
     rival: bool = True
     shuns: bool = True
+    tip: bool = False
 
 
 def place_names(
@@ -92,10 +96,10 @@ def place_names(
     boxes = np.full((len(names), 4), np.nan)
     pixels = ax.figure.dpi / 72.0
     frame = np.asarray(ax.bbox.extents) + np.array([1.0, 1.0, -1.0, -1.0])
-    for _ in range(2):
+    for _ in range(PASSES):
         for i, name in enumerate(names):
             away = None if name.away is None else to_display(name.away)
-            centres = _candidates(own[i], sizes[i], away, GAP * pixels)
+            centres = _candidates(own[i], sizes[i], away, GAP * pixels, name.tip)
             others_boxes = np.array([*fixed, *np.delete(boxes, i, axis=0)])
             shunned = rivals.copy() if name.shuns else np.zeros(len(names), bool)
             shunned[i] = True
@@ -125,15 +129,17 @@ def _from_apart(
     """Return the named segments (display) the ``i``-th name is measured against.
 
     Those ``shunned`` only; a rival that starts where the ``i``-th starts (forces
-    at one point) less its first ``clear``: near that point, a name is as near one
-    as the other, and is read by its own further out.
+    at one point) less its part alongside the ``i``-th and ``clear`` more: there
+    a name is as near one as the other, and is read by its own further out.
     """
     named = own.copy()
     shared = np.hypot(*(named[:, 0] - own[i, 0]).T) < 1.0
     shared[i] = False
     d = named[:, 1] - named[:, 0]
     length = np.hypot(*d.T)
-    cut = np.minimum(clear, length) / np.where(length > 0, length, 1.0)
+    u = d / np.where(length > 0, length, 1.0)[:, None]
+    alongside = np.clip(u @ (own[i, 1] - own[i, 0]), 0.0, None)
+    cut = np.minimum(clear + alongside, length) / np.where(length > 0, length, 1.0)
     named[shared, 0] += (cut[:, None] * d)[shared]
     return named[shunned]
 
@@ -145,12 +151,17 @@ def _size(text: Any, renderer: Any) -> np.ndarray:
 
 
 def _candidates(
-    ends: np.ndarray, size: np.ndarray, away: np.ndarray | None, gap: float
+    ends: np.ndarray,
+    size: np.ndarray,
+    away: np.ndarray | None,
+    gap: float,
+    tip: bool = False,
 ) -> np.ndarray:
     """Return the centres (display) tried for a name of ``size`` beside ``ends``.
 
     Beside a side: along it, on the side away from ``away`` first; round a point:
-    in sixteen directions, right and up first. Each ring a little farther out.
+    in sixteen directions, right and up first; then, for a ``tip``, round the
+    side's end as round a point. Each ring a little farther out.
     """
     a, b = ends
     d = b - a
@@ -168,6 +179,9 @@ def _candidates(
         bases = np.concatenate(
             [np.array([a + t * d for t in ALONG for _ in (1.0, -1.0)]), bases]
         )
+        if tip:
+            units = np.concatenate([units, units[-16:]])
+            bases = np.concatenate([bases, np.repeat(b[None, :], 16, axis=0)])
     # the distance from a box's centre to its edge along each direction
     half = 0.5 * (np.abs(units[:, 0]) * size[0] + np.abs(units[:, 1]) * size[1])
     rings = [bases + units * (half + ring * gap)[:, None] for ring in RINGS]
