@@ -111,3 +111,25 @@ def labelled_legend(ax: Any, **kwargs: Any) -> None:
     """
     if ax.get_legend_handles_labels()[0]:
         ax.legend(**kwargs)
+
+
+def fill_box(ax: Any) -> None:
+    """Widen (or heighten) the view of equal-aspect ``ax`` to fill the room laid out.
+
+    An equal-aspect picture of a tall group leaves its axes a narrow strip of the
+    room the layout gave them; the view grows about its middle instead, so that
+    the axes take all of it. Measured once the layout (a legend beside) settles.
+    """
+    from assur.plotting._bars import settled_renderer
+
+    settled_renderer(ax)
+    room = ax.get_position(original=True).transformed(ax.figure.transFigure)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    wide, tall = x1 - x0, y1 - y0
+    shape = room.width / room.height
+    if wide / tall < shape:
+        grow = 0.5 * (tall * shape - wide)
+        ax.set_xlim(x0 - grow, x1 + grow)
+    else:
+        grow = 0.5 * (wide / shape - tall)
+        ax.set_ylim(y0 - grow, y1 + grow)

@@ -17,7 +17,7 @@ from assur._style import REACTION_COLOUR
 from assur._vec import integer
 from assur.errors import ModelError, UsageError
 from assur.model import GROUND
-from assur.plotting._axes import _frame_axes, _legend, _new_axes
+from assur.plotting._axes import _frame_axes, _legend, _new_axes, fill_box
 from assur.plotting._bars import clear_bars
 from assur.plotting._context import (
     _Context,
@@ -224,6 +224,8 @@ def draw_free_body(
             (_scale_text(arrows, scale), ""),
         ],
     )
+    # the loads' names, with their values, need the room beside a tall group
+    fill_box(ax)
     clear_bars(ax)
     place_loads(ax)
     return ax
