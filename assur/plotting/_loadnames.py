@@ -47,9 +47,9 @@ def place_loads(ax: Any) -> None:
     texts = [t for t in ax.texts if t in NAMED and t.get_visible() and t.get_text()]
     if not texts:
         return
-    # a joint's name (a point) first: it has few places, beside its circle
-    texts.sort(key=lambda t: 0 if np.array_equal(NAMED[t][0], NAMED[t][1]) else 1)
     names = [_name(ax, t) for t in texts]
+    # a joint's name first: it has few places, beside its circle
+    names.sort(key=lambda n: n.shuns)
     arcs = [NAMED[t][2] for t in texts]
     lines = _drawn_lines(ax) + [np.array(p) for a in arcs for p in pairwise(a)]
     segments = np.array(lines) if lines else None
@@ -60,8 +60,8 @@ def _name(ax: Any, text: Any) -> Name:
     """Return the name ``text`` to place, with what it names.
 
     Only a force seen is a rival: a name nearer its arrow is read as its own.
-    An arrow shorter than :data:`SEEN` is drawn as nothing, and a couple is read
-    by its letter. A joint's name shuns nothing: the forces at a joint start
+    An arrow shorter than :data:`SEEN` is read as a point, and a couple by its
+    letter. A joint's name shuns nothing: the forces at a joint start
     beside it.
     """
     start, end, arc = NAMED[text]
