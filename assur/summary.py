@@ -241,8 +241,12 @@ class Summary:
             ideal = _per_variant(
                 less(self._ideal, self._tail.get("ideal")) / n, self.variants
             )
-            out["driver.power_ideal.mean"] = ideal
             power = out["driver.power.mean"]
+            # no load takes work (inertia alone): the mean is round-off of powers
+            # that cancel, -1.6e-13 W beside a driver's 2564 W, and is 0
+            noise = 1e-12 * np.maximum(np.abs(power), np.abs(lost))
+            ideal = np.where(np.abs(ideal) <= noise, 0.0, ideal)
+            out["driver.power_ideal.mean"] = ideal
             out["efficiency"] = np.array(
                 [efficiency(*v) for v in zip(power, ideal, lost, strict=True)]
             )

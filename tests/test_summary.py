@@ -242,3 +242,12 @@ def test_the_summary_says_a_closing_pose_is_counted_once(capsys, stop, closes):
     assert main([*argv, "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert (data["positions"], data["closes_a_turn"]) == (stop // 10 + 1, closes)
+
+
+def test_an_ideal_power_of_round_off_is_zero():
+    # no load takes work (inertia alone): -1.6e-13 W stood beside a driver's 2564 W
+    mech = assur.load(EXAMPLES / "slider_crank_friction.toml")
+    summary = assur.forces(mech, np.arange(0.0, 360.0, 1.0)).summary()
+    assert summary["driver.power_ideal.mean"] == 0.0
+    assert summary["driver.power.mean"] == pytest.approx(summary["friction.loss"])
+    assert summary["efficiency"] == 0.0
