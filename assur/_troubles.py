@@ -89,7 +89,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                 msg = (
                     f"group {trouble.group}: cannot be assembled at driver position "
                     f"{where} ({count} of {n} positions fail{more}); it assembles "
-                    f"for {good or 'none of them'}"
+                    f"for {good or _none_of_them(plan)}"
                 )
                 locked = closes & _all_failures(troubles, n, what="locked")
                 if locked.any():
@@ -186,10 +186,7 @@ def _unreached(plan: Plan, given: Array, mask: Mask, group: str) -> str:
     d = plan.drivers[0]
 
     def at(x: float) -> str:
-        # a barrier found by root finding lands within rounding of a round number
-        value = round(math.degrees(x) if d.kind == "R" else x / plan.scale, 6)
-        value = value if d.kind == "R" else value * plan.scale
-        return position_where(plan, np.array([value + 0.0]))
+        return _reached_at(plan, x)
 
     row = given[int(np.flatnonzero(mask)[0])]
     x = math.radians(row[0]) if d.kind == "R" else float(row[0])
@@ -210,19 +207,45 @@ def _unreached(plan: Plan, given: Array, mask: Mask, group: str) -> str:
             f"{at(d.reference)}; the group is at a dead centre at about "
             f"{at(barrier.start)}, which the driver cannot carry it through"
         )
-    if span.below is None:
-        expected = f"up to about {at(span.last)}"
-    elif span.above is None:
-        expected = f"from about {at(span.first)}"
-    else:
-        expected = f"from about {at(span.first)} to {at(span.last)}"
-    if span.period is not None:
-        expected += " (or whole turns from them)"
     return (
         f"group {group}: driver position {position_where(plan, row)} {head} "
         f"({int(mask.sum())} of {mask.shape[0]} positions): {why}; expected "
-        f"positions {expected}"
+        f"positions {_reached(plan, span)}"
     )
+
+
+def _none_of_them(plan: Plan) -> str:
+    """Say that no position given assembles, and where the mechanism does.
+
+    One position asked for (``assur plot --angle 350``) said "none of them" alone.
+    """
+    span = reach(plan) if len(plan.drivers) == 1 else None
+    if span is None:
+        return "none of them"
+    return f"none of them: the mechanism reaches positions {_reached(plan, span)}"
+
+
+def _reached_at(plan: Plan, x: float) -> str:
+    """Return a driver position of :mod:`assur._reach` (rad, or m) for a message."""
+    d = plan.drivers[0]
+    # a barrier found by root finding lands within rounding of a round number
+    value = round(math.degrees(x) if d.kind == "R" else x / plan.scale, 6)
+    value = value if d.kind == "R" else value * plan.scale
+    return position_where(plan, np.array([value + 0.0]))
+
+
+def _reached(plan: Plan, span: Any) -> str:
+    """Return the positions ``span`` (a :class:`~assur._reach.Reach`) spans."""
+    if span.below is None:
+        expected = f"up to about {_reached_at(plan, span.last)}"
+    elif span.above is None:
+        expected = f"from about {_reached_at(plan, span.first)}"
+    else:
+        first, last = _reached_at(plan, span.first), _reached_at(plan, span.last)
+        expected = f"from about {first} to {last}"
+    if span.period is not None:
+        expected += " (or whole turns from them)"
+    return expected
 
 
 def _all_failures(

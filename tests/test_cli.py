@@ -422,6 +422,7 @@ def test_unassembled_positions_fail(double_rocker, capsys):
     assert text == (
         "group RRR (coupler, rocker): cannot be assembled at driver position "
         "0 deg (9 of 13 positions fail, 11 in all); it assembles for 30 deg to 60 deg"
+        " (--skip-unassembled leaves such positions out)"
     )
     text = fails(capsys, ["forces", double_rocker, "--angles", "120"], double_rocker)
     assert text.startswith(
@@ -512,3 +513,19 @@ def test_version(capsys):
     # main() turns argparse's exit into its status
     assert main(["--version"]) == 0
     assert capsys.readouterr().out == f"assur {assur.__version__}\n"
+
+
+def test_one_position_out_of_the_range_says_where_the_range_is(double_rocker, capsys):
+    # "it assembles for none of them" was all a student got for --angle 200
+    text = fails(capsys, ["forces", double_rocker, "--angles", "200"], double_rocker)
+    found = re.search(
+        r"it assembles for none of them: the mechanism reaches positions from about "
+        r"(\S+) deg to (\S+) deg \(or whole turns from them\)",
+        text,
+    )
+    assert found is not None, text
+    low, high = (float(v) for v in found.groups())
+    # the range the sweep of test_unassembled_positions_fail found, 30 to 60 deg in
+    # steps of 30, within the scan's step
+    assert low < 30.0 < 60.0 < high < 200.0
+    assert text.endswith("(--skip-unassembled leaves such positions out)")
