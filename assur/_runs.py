@@ -14,7 +14,7 @@ from assur._text import position_text
 from assur._vec import Array, Mask
 from assur.plan import Plan
 
-__all__ = ["position_where", "runs_text", "telling_apart"]
+__all__ = ["digits_apart", "position_where", "runs_text", "telling_apart"]
 
 MOST_RUNS = 6
 """Runs named in one message; more are written as an ellipsis."""
@@ -40,6 +40,27 @@ def telling_apart(pairs: list[tuple[Array, Array]]) -> int:
         ):
             return digits
     return 17
+
+
+def digits_apart(given: Array, first: int) -> int:
+    """Return the digits that write position ``first`` apart from its neighbours.
+
+    Its nearest positions by value on either side (with one driver), or the one
+    given before it: at a step of 1e-4 deg a failing position and the last good
+    one were both "149.528 deg".
+    """
+    here = given[first]
+    if given.shape[1] == 1:
+        x = given[:, 0]
+        lower, higher = x[x < here[0]], x[x > here[0]]
+        near = [
+            np.array([v.max() if v is lower else v.min()])
+            for v in (lower, higher)
+            if v.size
+        ]
+    else:
+        near = [given[first - 1]] if first else []
+    return telling_apart([(here, other) for other in near])
 
 
 def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
@@ -68,15 +89,18 @@ def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
     if mask[-1]:
         ends = np.r_[ends, mask.shape[0] - 1]
     n = given.shape[0]
-    shown = list(zip(starts, ends, strict=True))[: MOST_RUNS + 1]
-    # each end written apart from the position just past it
-    digits = telling_apart(
-        [(given[a], given[a - 1]) for a, _ in shown if a > 0]
-        + [(given[b], given[b + 1]) for _, b in shown if b < n - 1]
-    )
-    runs = []
     ends_in = join and len(starts) > 1 and mask[0] and mask[-1]
     turn = _turn(plan, given) if ends_in else 0.0
+    # each end written apart from the position just past it; every run named is
+    # among them (the joined one too, from its start a turn back)
+    shown = list(zip(starts, ends, strict=True))[: MOST_RUNS + 2]
+    pairs = [(given[a], given[a - 1]) for a, _ in shown if a > 0]
+    pairs += [(given[b], given[b + 1]) for _, b in shown if b < n - 1]
+    if turn:
+        s = starts[-1]
+        pairs.append((given[s] - turn, given[s - 1] - turn))
+    digits = telling_apart(pairs)
+    runs = []
     if turn:
         # the last run goes on into the first: told from where the last begins,
         # a turn back, to where the first ends (one position when they meet)

@@ -15,7 +15,7 @@ import numpy as np
 from assur._branches import branches
 from assur._paths import path_changes
 from assur._reach import beyond, reach
-from assur._runs import position_where, runs_text, telling_apart
+from assur._runs import digits_apart, position_where, runs_text
 from assur._vec import Array, Mask, is_array
 from assur.errors import (
     AssemblyError,
@@ -72,9 +72,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
             # every slice's positions of this trouble: the counts are the sweep's
             mask = _all_failures(troubles, n, trouble.group, trouble.what)
             first = int(np.flatnonzero(mask)[0])
-            # written apart from the position before it (a fine step's neighbour)
-            digits = telling_apart([(given[first], given[first - 1])] if first else [])
-            where = position_where(plan, given[first], digits)
+            where = position_where(plan, given[first], digits_apart(given, first))
             if trouble.what == "unreached":
                 raise AssemblyError(_unreached(plan, given, mask, trouble.group))
             if trouble.what == "assembly":

@@ -150,7 +150,7 @@ def loads(text: str, json_format: bool = False) -> Mechanism:
         hint = " (read a file with assur.load)" if isinstance(text, PathLike) else ""
         msg = f"text: expected a mechanism file's text, got {type(text).__name__}{hint}"
         raise UsageError(msg)
-    if "\n" not in text and text.strip().lower().endswith((".toml", ".json")):
+    if "\n" not in text.strip() and text.strip().lower().endswith((".toml", ".json")):
         # assur.loads("examples/x.toml") said "not valid TOML: Expected '='"
         msg = (
             f"text: {text.strip()!r} is a file's name; expected a mechanism file's "

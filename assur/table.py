@@ -236,7 +236,8 @@ class Table(Columns):
         # two rows, in a notebook's cell
         kind = "forces" if self.force_state is not None else "kinematics"
         name = self.plan.mechanism.name or "mechanism"
-        size = f"{len(self)} rows x {len(self.columns)} columns"
+        rows = "1 row" if len(self) == 1 else f"{len(self)} rows"
+        size = f"{rows} x {len(self.columns)} columns"
         return f"<assur.Table: {kind} of {name!r}, {size}>"
 
     def __len__(self) -> int:

@@ -393,6 +393,8 @@ def test_a_table_s_repr_is_a_line() -> None:
     kinematics = assur.kinematics(assur.catalog.four_bar(), np.arange(72.0))
     assert repr(kinematics).startswith("<assur.Table: kinematics of ")
     assert repr(kinematics).endswith(", 72 rows x 83 columns>")
+    one = assur.kinematics(assur.catalog.four_bar(), [0.0])
+    assert repr(one).endswith(", 1 row x 83 columns>")
     # the dynamics table: its figures, not its mechanism and columns
     whitworth = assur.load(EXAMPLES / "whitworth.toml")
     dynamics = assur.dynamics(whitworth, [0.0], flywheel=20.0)
@@ -405,7 +407,7 @@ def test_a_file_s_name_given_as_its_text_is_told() -> None:
     with pytest.raises(assur.UsageError, match=r"is a file's name; .*assur\.load"):
         assur.loads("examples/slider_crank_exercise.toml")
     with pytest.raises(assur.UsageError, match=r"is a file's name"):
-        assur.loads("m.JSON\n".rstrip("\n"))
+        assur.loads("m.JSON\n")
     # the text of a file is read, whatever it ends with
     text = (EXAMPLES / "four_bar.toml").read_text() + "\n# see four_bar.toml"
     assert assur.loads(text).name == "Crank-rocker four-bar"

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import assur
-from assur._runs import _turn, runs_text, telling_apart
+from assur._runs import _turn, digits_apart, runs_text, telling_apart
 from assur.plan import compile_plan
 
 from .conftest import EXAMPLES
@@ -125,3 +125,27 @@ def test_a_fine_step_s_neighbours_are_written_apart() -> None:
     assert failing - last_good == pytest.approx(1e-4, rel=1e-6)
     # and a coarse sweep keeps six digits
     assert telling_apart([(np.array([30.0]), np.array([31.0]))]) == 6
+
+
+def test_a_failing_position_is_written_apart_from_its_nearest_neighbours() -> None:
+    # given out of order: 137.8736 fails, 137.87355 (given after it) assembles; both
+    # were "137.874 deg"
+    mech = assur.catalog.four_bar(0.06, 0.07, 0.08, 0.1)
+    angles = [100.0, 137.8736, 137.8735, 137.87355, 120.0]
+    with pytest.raises(assur.AssemblyError) as raised:
+        assur.kinematics(mech, angles)
+    found = re.search(r"driver position (\S+) deg", str(raised.value))
+    assert found is not None
+    assert float(found.group(1)) == pytest.approx(137.8736, abs=1e-9)
+    given = np.array(angles).reshape(-1, 1)
+    digits = digits_apart(given, 1)
+    assert f"{137.8736:.{digits}g}" != f"{137.87355:.{digits}g}"
+    assert f"{137.8736:.6g}" == f"{137.87355:.6g}"  # as they were
+
+
+def test_a_joined_run_s_start_is_written_apart_too() -> None:
+    # the joined run's start, a turn back, was not among the ends told apart: it
+    # began "-355 deg" where the position before it, failing, is -355 deg too
+    x = np.r_[np.arange(-350.0, 5.0, 1.0), 5.0, 5.00001, np.arange(6.0, 10.5, 1.0)]
+    mask = (x <= -9.0) | (x >= 5.00001)
+    assert _text(_crank(), x, mask).startswith("-354.99999 deg to -9 deg")
