@@ -209,7 +209,13 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         table = _table(mech, position, True)
         with _figures() as plt:
             fig, ax = plt.subplots(figsize=(9.0, 6.5), layout="constrained")
-            draw_free_body(table, args.group - 1, ax=ax, scale=args.scale)
+            draw_free_body(
+                table,
+                args.group - 1,
+                ax=ax,
+                scale=args.scale,
+                labels=not args.no_labels,
+            )
             _save(fig, output, dpi)
         _wrote(args, path_text(output))
         return 0

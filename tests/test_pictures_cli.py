@@ -651,3 +651,19 @@ def test_the_stacked_panels_share_one_legend_beside_them() -> None:
             assert box.x0 >= ax.get_window_extent().x1  # beside, covering nothing
     finally:
         plt.close(fig)
+
+
+@pytest.mark.pictures
+def test_plot_group_leaves_out_the_names_with_no_labels(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # --no-labels was not passed on to the free body: the two pictures were the
+    # same, pixel for pixel
+    named, bare = tmp_path / "named.png", tmp_path / "bare.png"
+    for out, extra in ((named, ()), (bare, ("--no-labels",))):
+        argv = ("plot", SLIDER, "--angle", "30", "--group", "1", *extra)
+        status, _, err = _run(capsys, *argv, "-o", str(out))
+        assert status == 0, err
+    with Image.open(named) as a, Image.open(bare) as b:
+        assert np.asarray(a).shape == np.asarray(b).shape
+        assert (np.asarray(a) != np.asarray(b)).any()

@@ -424,6 +424,13 @@ def test_free_body_labels_values(six_bar: assur.Table) -> None:
     )
 
 
+def test_free_body_without_labels_names_nothing(six_bar: assur.Table) -> None:
+    # labels=False was missing: the free body named its joints, links and loads
+    ax = plotting.draw_free_body(six_bar, 0, angle=60.0, labels=False)
+    assert not [t for t in ax.texts if t.get_visible() and t.get_text()]
+    assert any(type(p).__name__ == "FittedArrow" for p in ax.patches)
+
+
 def test_free_body_title_numbers_the_group_as_the_command_line() -> None:
     # group 1 of the Whitworth mechanism is an RPR dyad of class II: the title names
     # it "group 1", the class in words, not "group II"

@@ -159,6 +159,7 @@ def draw_free_body(
     angle: Any = None,
     ax: Any = None,
     scale: float | None = None,
+    labels: bool = True,
 ) -> Any:
     """Draw the free-body diagram of one Assur group at one driver position.
 
@@ -180,6 +181,8 @@ def draw_free_body(
     ax : matplotlib Axes, optional
     scale : float, optional
         Force scale, N per cm of drawing.
+    labels : bool
+        Name the joints and links, and the loads with their values.
 
     Returns
     -------
@@ -198,10 +201,10 @@ def draw_free_body(
     group = ctx.plan.groups[group_index]
     bodies = {ctx.plan.body(x) for x in group.links}
     ax = _new_axes(ax, (9.0, 6.5))
-    seen = _draw_mechanism(ax, ctx, pose, bodies, frame=False)
+    seen = _draw_mechanism(ax, ctx, pose, bodies, labels=labels, frame=False)
     arrows = _free_body_arrows(table, group_index, row)
     scale = checked_scale(scale) or _scale(arrows, 0.8 * ctx.size)
-    seen += _draw_arrows(ax, ctx, arrows, scale, "values")
+    seen += _draw_arrows(ax, ctx, arrows, scale, "values" if labels else None)
     seen += [a.at for a in arrows]
     # a journal's friction couple is in its reaction's line, tangent to this circle
     rubbing = draw_friction_circles(ax, ctx, pose, bodies)
@@ -226,8 +229,9 @@ def draw_free_body(
     )
     # the loads' names, with their values, need the room beside a tall group
     fill_box(ax)
-    clear_bars(ax)
-    place_loads(ax)
+    if labels:
+        clear_bars(ax)
+        place_loads(ax)
     return ax
 
 
