@@ -7,6 +7,7 @@ equilibrium, and that the files written are valid.
 
 from __future__ import annotations
 
+import itertools
 import subprocess
 import sys
 from pathlib import Path
@@ -553,6 +554,29 @@ def test_plot_hodographs(slot: assur.Table) -> None:
     assert len([ax for ax in fig.axes if ax.axison]) == 1
     with pytest.raises(assur.ModelError, match="no joint 'B~pin'"):
         plotting.plot_hodographs(slot, ["B~pin"])
+
+
+def test_a_hodograph_s_tick_labels_are_apart() -> None:
+    # a student's crank-rocker: the first panel's Fx ticks ran together,
+    # "-2500-2000-1500-1000-500", a point apart; a gap of 4 points reads
+    mech = assur.load(Path(__file__).parent / "data" / "plans" / "crank_rocker.toml")
+    fig = plotting.plot_hodographs(assur.forces(mech, default_positions(mech)))
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    gap = 4.0 * fig.dpi / 72.0
+    for ax in (a for a in fig.axes if a.axison):
+        for axis, (low, high) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+            boxes = [
+                label.get_window_extent(renderer).extents
+                for tick, label in zip(
+                    axis.get_majorticklocs(), axis.get_ticklabels(), strict=True
+                )
+                if label.get_visible() and label.get_text() and low <= tick <= high
+            ]
+            assert len(boxes) >= 2
+            for a, b in itertools.pairwise(boxes):
+                apart = max(b[0] - a[2], a[0] - b[2], b[1] - a[3], a[1] - b[3])
+                assert apart > gap, (ax.get_title(), axis.axis_name)
 
 
 def test_plot_shaking(six_bar: assur.Table) -> None:

@@ -132,6 +132,7 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
     matplotlib.figure.Figure
     """
     import matplotlib.pyplot as plt
+    from matplotlib.ticker import MaxNLocator
 
     forces = _need_forces(table, "plot_hodographs")
     ctx = _context(table)
@@ -158,6 +159,9 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
         ax.set_xlabel(f"Fx [{_unit(table, f'{name}.Fx')}]", fontsize=8)
         ax.set_ylabel(f"Fy [{_unit(table, f'{name}.Fy')}]", fontsize=8)
         ax.tick_params(labelsize=7)
+        # a panel is narrow: matplotlib's default of up to nine ticks ran
+        # "-2500-2000-1500" together along Fx
+        ax.xaxis.set_major_locator(MaxNLocator(nbins=4, steps=[1, 2, 2.5, 5, 10]))
     for ax in list(axes.flat)[len(names) :]:
         ax.set_axis_off()
     fig.suptitle(
