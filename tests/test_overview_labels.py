@@ -187,3 +187,52 @@ def test_a_free_body_s_names_are_apart_and_by_their_arrows(path, angle) -> None:
             assert _problems(ax, arrows, scale, nearest=False) == [], group
         finally:
             plt.close(ax.figure)
+
+
+def _link_names_over_inertia(ax) -> list[str]:
+    """Return the links' names (boxed, edged in their colour) over an inertia arrow."""
+    from matplotlib.colors import same_color
+    from matplotlib.path import Path as Outline
+    from matplotlib.transforms import Bbox
+
+    from assur.plotting._style import INERTIA_COLOR
+
+    ax.figure.canvas.draw()
+    boxes = _boxes(ax)
+    arrows = [p for p in ax.patches if hasattr(p, "points")
+              and same_color(p.get_edgecolor(), INERTIA_COLOR)]  # fmt: skip
+    assert arrows
+    wrong = []
+    for text, box in boxes.items():
+        patch = text.get_bbox_patch()
+        if patch is None or not patch.get_edgecolor()[3]:
+            continue
+        inner = Bbox.from_extents(*box)
+        for arrow in arrows:
+            # drawn under the arrows, never over them
+            if text.get_zorder() >= arrow.get_zorder():
+                wrong.append(f"{text.get_text()} drawn over an inertia arrow")
+            seen = ax.transData.transform(np.asarray(arrow.points, float))
+            if Outline(seen).intersects_bbox(inner, filled=False):
+                wrong.append(f"{text.get_text()} over an inertia arrow")
+    return wrong
+
+
+def test_the_links_names_keep_off_the_inertia_arrows() -> None:
+    import matplotlib.pyplot as plt
+
+    # a student's crank-rocker (centres of mass at the bars' middles): the names
+    # "coupler" and "rocker" lay on their bars' middles, over the inertia forces
+    # and couples drawn from there, and hid them
+    path = HERE / "data" / "plans" / "crank_rocker.toml"
+    table = assur.forces(assur.load(path), [30.0])
+    ax = mechanism.draw(table, forces=True)
+    try:
+        assert _link_names_over_inertia(ax) == []
+    finally:
+        plt.close(ax.figure)
+    ax = decomposition.draw_free_body(table, 0)
+    try:
+        assert _link_names_over_inertia(ax) == []
+    finally:
+        plt.close(ax.figure)

@@ -19,6 +19,7 @@ from assur.plotting._geometry import (
     _merge_joints,
     _shape,
 )
+from assur.plotting._linknames import note_spots
 from assur.plotting._loadnames import name_load
 from assur.plotting._style import literal
 
@@ -71,7 +72,8 @@ def _label_link(
         va="center",
         color=ctx.color[body],
         alpha=max(alpha, 0.35),
-        zorder=6.5,
+        # under the loads' arrows, which start at a bar's middle too
+        zorder=5.5,
         bbox={
             "boxstyle": "round,pad=0.25",
             "facecolor": "white",
@@ -81,9 +83,12 @@ def _label_link(
         },
     )
     points = _shape(ctx, pose, body).points
-    if len(points) == 2:
+    bar = len(points) == 2
+    if bar:
         # a bar: clear_bars moves the name off it if it hides most of it
         BAR_LABELS[text] = (np.asarray(points[0]), np.asarray(points[1]), ctx.r)
+    # and clear_arrows off the loads' arrows, on a picture with loads
+    note_spots(text, spots, np.asarray(points, float) if bar else None, ctx.r)
 
 
 LOAD_LABELS: weakref.WeakSet[Any] = weakref.WeakSet()

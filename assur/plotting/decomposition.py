@@ -39,7 +39,8 @@ from assur.plotting._forces import (
 )
 from assur.plotting._friction import draw_friction_circles, friction_legend
 from assur.plotting._geometry import _extent, _public
-from assur.plotting._loadnames import place_loads
+from assur.plotting._linknames import clear_arrows
+from assur.plotting._loadnames import NAMED, place_loads
 from assur.plotting._style import (
     INERTIA_COLOR,
     LOAD_COLOR,
@@ -231,6 +232,8 @@ def draw_free_body(
     fill_box(ax)
     if labels:
         clear_bars(ax)
+        # the link's names first: the loads' names are then put clear of them
+        clear_arrows(ax, NAMED)
         place_loads(ax)
     return ax
 

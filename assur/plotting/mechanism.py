@@ -33,7 +33,8 @@ from assur.plotting._forces import (
 from assur.plotting._friction import draw_friction_circles, friction_legend
 from assur.plotting._geometry import _extent, _public, _shape, _skeleton
 from assur.plotting._labels import _label_joints, _label_link
-from assur.plotting._loadnames import place_loads
+from assur.plotting._linknames import clear_arrows
+from assur.plotting._loadnames import NAMED, place_loads
 from assur.plotting._parts import _draw_guide, _draw_joint, _draw_link, _draw_pivot
 from assur.plotting._style import (
     BALANCING_COLOR,
@@ -121,6 +122,8 @@ def draw(
     if labels:
         clear_bars(ax)
     if forces and labels:
+        # the link's names first: the loads' names are then put clear of them
+        clear_arrows(ax, NAMED)
         place_loads(ax)
     return ax
 
