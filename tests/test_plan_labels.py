@@ -209,3 +209,46 @@ def test_the_lever_s_names_are_apart_and_off_the_arrows(stem: str) -> None:
             assert len(crossed) <= 1 or name == "pole", name
     finally:
         plt.close(fig)
+
+
+@pytest.mark.parametrize(
+    "draw", [plans.velocity_plan, plans.acceleration_plan, lever.zhukovsky_lever]
+)
+def test_a_crank_rocker_s_plans_names_are_apart(draw) -> None:
+    import matplotlib.pyplot as plt
+
+    # a student's crank-rocker at 30 degrees: on the lever "g(coupler)" lay on
+    # "g(crank)" and "m_crank g" on "m_coupler g", and at the pole (the rocker
+    # nearly still) "o1 = o2", "b", "g(rocker)" and "m_rocker g" piled up; on
+    # the velocity plan "b", "g(rocker)" and "o1 = o2" (boxes a pixel apart or
+    # touching)
+    table = assur.forces(assur.load(TRIAL / "crank_rocker.toml"), [30.0])
+    ax = draw(table)
+    fig = ax.figure
+    try:
+        fig.canvas.draw()
+        texts = [t for t in _texts(ax) if "sum = balancing load" not in t.get_text()]
+        boxes = [_box(fig, t) for t in texts]
+        frame = ax.bbox.extents
+        wrong = [t.get_text() for t, box in zip(texts, boxes, strict=True)
+                 if not _inside(box, frame)]  # fmt: skip
+        # boxes that touch read as one name: a point and a half apart at least
+        space = 1.5 * fig.dpi / 72.0
+        wrong += [
+            (text.get_text(), texts[j].get_text())
+            for i, (text, box) in enumerate(zip(texts, boxes, strict=True))
+            for j in range(i + 1, len(texts))
+            if _overlap(box + np.array([-space, -space, space, space]), boxes[j])
+        ]
+        # and none lies on an image's dot
+        dots = [ax.transData.transform(np.column_stack(line.get_data()))[0]
+                for line in ax.lines if line.get_marker() == "o"]  # fmt: skip
+        wrong += [
+            text.get_text()
+            for text, box in zip(texts, boxes, strict=True)
+            for dot in dots
+            if _overlap(box, np.concatenate([dot - 2.0, dot + 2.0]))
+        ]
+        assert wrong == []
+    finally:
+        plt.close(fig)

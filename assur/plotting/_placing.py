@@ -24,6 +24,8 @@ RIVAL = 3e3
 """Cost of a place nearer another named side or point than the name's own."""
 GAP = 4.0
 """Room left between a name and what it names, points."""
+SPACE = 2.0
+"""Room left between two names, points: boxes that touch read as one name."""
 RINGS = (1.0, 3.0, 7.0, 14.0)
 """The distances tried (times :data:`GAP`, past the name's own half-size)."""
 CLEAR = 10.0
@@ -101,6 +103,7 @@ def place_names(
             away = None if name.away is None else to_display(name.away)
             centres = _candidates(own[i], sizes[i], away, GAP * pixels, name.tip)
             others_boxes = np.array([*fixed, *np.delete(boxes, i, axis=0)])
+            others_boxes += SPACE * pixels * np.array([-1.0, -1.0, 1.0, 1.0])
             shunned = rivals.copy() if name.shuns else np.zeros(len(names), bool)
             shunned[i] = True
             cost = _costs(

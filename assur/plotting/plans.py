@@ -11,6 +11,7 @@ many units per mm of the drawing. matplotlib is imported inside the functions on
 
 from __future__ import annotations
 
+import weakref
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -22,8 +23,8 @@ from assur.groups._dyad import DyadSolver
 from assur.plotting._centres import draw_centres, relative_centres
 from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend
 from assur.plotting._geometry import _nice
-from assur.plotting._labels import LOAD_LABELS, spread_labels
 from assur.plotting._mathtext import _symbol
+from assur.plotting._placing import Name, place_names
 from assur.plotting._style import (
     titled,
 )
@@ -41,6 +42,10 @@ __all__ = [
 
 PLAN_SIZE = 80.0
 """Length of the longest vector of a plan, mm of the drawing (about)."""
+IMAGE_NAMES: weakref.WeakSet[Any] = weakref.WeakSet()
+"""The images' names on the velocity and acceleration plans, which
+:func:`_name_images` places. (Held aside, not as a ``gid``: an SVG writes a gid as
+an element's id, which must be unique in a page.)"""
 
 
 def images(pos: Position, k: int) -> dict[str, np.ndarray]:
@@ -168,7 +173,7 @@ def _name_guide_point(
     text = ax.annotate(
         label, tip, xytext=(4, 4), textcoords="offset points", fontsize=8
     )
-    LOAD_LABELS.add(text)  # spread_labels moves it clear of the images' names
+    IMAGE_NAMES.add(text)  # _name_images places it with the images' names
 
 
 def _part(tex: str) -> str:
@@ -227,11 +232,25 @@ def _plan(table: Table, angle: Any, ax: Any, level: int) -> Any:
     found = images(pos, level)
     mu = _scale(list(found.values()))
     ax = _axes(ax, _title(pos, what))
-    LOAD_LABELS.update(_images_plot(ax, found, mu, "#333333"))
+    IMAGE_NAMES.update(_images_plot(ax, found, mu, "#333333"))
     legend = _chains(ax, pos, level, mu, list(found.values()))
     _legend(ax, legend, f"scale: {symbol} = {mu:g} {unit}")
-    spread_labels(ax)  # images close together: their names are pushed apart
+    _name_images(ax)
     return ax
+
+
+def _name_images(ax: Any) -> None:
+    """Put each image's name by its own image, off the arrows, dots and other names.
+
+    Images close together (a link nearly still has its points' images by the
+    pole) had their names pushed apart only until their boxes touched, over the
+    arrows and the dots beside them.
+    """
+    texts = [t for t in ax.texts if t in IMAGE_NAMES and t.get_text()]
+    names = [Name(t, np.asarray(t.xy, float), np.asarray(t.xy, float)) for t in texts]
+    arrows = [np.asarray(p.points, float) for p in ax.patches if hasattr(p, "points")]
+    dots = [line for line in ax.lines if line.get_marker() == "o"]
+    place_names(ax, names, np.array(arrows) if arrows else None, dots)
 
 
 def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
