@@ -371,3 +371,16 @@ def terminal() -> bool:
         return bool(sys.stderr.isatty())
     except (AttributeError, OSError, ValueError):
         return False
+
+
+def skip_hint(args: Any, err: Exception) -> str:
+    """Return a hint of --skip-unassembled after a position a sweep cannot solve.
+
+    Only for a command that has the option and was not given it.
+    """
+    from assur.errors import AssemblyError, SelfLockingError, SingularConfigurationError
+
+    stops = (AssemblyError, SelfLockingError, SingularConfigurationError)
+    if getattr(args, "skip_unassembled", True) or not isinstance(err, stops):
+        return ""
+    return " (--skip-unassembled leaves such positions out)"

@@ -30,6 +30,7 @@ from assur._cli_common import (
     one_position,
     parse_angles,
     quiet,
+    skip_hint,
 )
 from assur._cli_process import (
     _closed_streams,
@@ -273,7 +274,7 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
         except (OutputError, _OtherFileError) as err:  # not about the mechanism file
             failure = str(err)
         except AssurError as err:
-            text = str(err) + _skip_hint(args, err)
+            text = str(err) + skip_hint(args, err)
             failure = text if text.startswith(source) else f"{source}: {text}"
         except BrokenPipeError:
             raise  # the reader of standard output has gone: main stops quietly
@@ -306,19 +307,6 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
         _error(failure)
         status = 2
     return status
-
-
-def _skip_hint(args: argparse.Namespace, err: Exception) -> str:
-    """Return a hint of --skip-unassembled after a position the sweep cannot solve.
-
-    Only for a command that has the option and was not given it.
-    """
-    from assur.errors import AssemblyError, SelfLockingError, SingularConfigurationError
-
-    stops = (AssemblyError, SelfLockingError, SingularConfigurationError)
-    if getattr(args, "skip_unassembled", True) or not isinstance(err, stops):
-        return ""
-    return " (--skip-unassembled leaves such positions out)"
 
 
 def _one_line(text: object) -> str:
