@@ -21,6 +21,8 @@ from assur.plotting import decomposition, mechanism
 from assur.plotting._context import _context
 from assur.plotting._forces import _overview_arrows, _scale
 
+from .test_plan_labels import _distance, _overlap
+
 matplotlib.use("Agg")
 
 CLEAR = 10.0
@@ -47,21 +49,6 @@ def _boxes(ax) -> dict:
         art = text if patch is None else patch
         out[text] = np.asarray(art.get_window_extent(renderer).extents)
     return out
-
-
-def _distance(box: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
-    """Return the distance from ``box`` to the segment ``a``-``b`` (sampled)."""
-    t = np.linspace(0.0, 1.0, 2000)[:, None]
-    points = a + t * (b - a)
-    return float(np.hypot(*(points - np.clip(points, box[:2], box[2:])).T).min())
-
-
-def _overlap(a: np.ndarray, b: np.ndarray) -> bool:
-    """Whether two boxes overlap by more than half a pixel each way."""
-    return bool(
-        min(a[2], b[2]) - max(a[0], b[0]) > 0.5
-        and min(a[3], b[3]) - max(a[1], b[1]) > 0.5
-    )
 
 
 def _pixels(ax) -> float:
