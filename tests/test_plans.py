@@ -15,6 +15,8 @@ from assur.explain._lever import lever_parts, lever_rates
 from assur.explain._solve import position, table_at
 from assur.plotting import lever, plans, polygons
 
+from .test_plan_labels import _overlap
+
 matplotlib.use("Agg")
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
@@ -579,8 +581,7 @@ def _overlaps(boxes: np.ndarray) -> list[tuple[int, int]]:
         (i, j)
         for i in range(len(boxes))
         for j in range(i + 1, len(boxes))
-        if min(boxes[i, 2], boxes[j, 2]) - max(boxes[i, 0], boxes[j, 0]) > 0.5
-        and min(boxes[i, 3], boxes[j, 3]) - max(boxes[i, 1], boxes[j, 1]) > 0.5
+        if _overlap(boxes[i], boxes[j])
     ]
 
 
