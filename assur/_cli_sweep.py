@@ -23,13 +23,10 @@ from assur._cli_common import (
 from assur._cli_summary import _summary, _summary_text, _summed
 from assur._cli_tables import _check_outputs, _write_tables
 from assur._output import path_text, write_stdout
+from assur._progress import BAR_DELAY
 from assur._sliced import Skipped, slices
 
-__all__ = ["BAR_DELAY", "_sweep"]
-
-BAR_DELAY = 1.0
-"""Seconds a sweep runs before its progress bar appears (on a terminal): whatever
-makes it long, its positions or its mechanism's columns."""
+__all__ = ["_sweep"]
 
 
 def _sweep(args: argparse.Namespace, forces: bool) -> int:

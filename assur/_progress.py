@@ -13,8 +13,11 @@ from collections.abc import Callable
 from types import TracebackType
 from typing import Any
 
-__all__ = ["Progress", "progress"]
+__all__ = ["BAR_DELAY", "Progress", "progress"]
 
+BAR_DELAY = 1.0
+"""Seconds the command line's work runs before its progress bar appears (on a
+terminal): whatever makes it long, its positions or its mechanism's columns."""
 Callback = Callable[[int, int], None]
 """A caller's own report: ``callback(done, total)``."""
 

@@ -31,7 +31,6 @@ from assur._cli_common import (
     quiet,
     terminal,
 )
-from assur._cli_sweep import BAR_DELAY
 from assur._dynamics_figures import (
     _figures,
     _head,
@@ -49,7 +48,7 @@ from assur._output import (
     write_all,
     write_stdout,
 )
-from assur._progress import progress
+from assur._progress import BAR_DELAY, progress
 from assur._tableio import CsvWriter, JsonWriter
 from assur._text import number_text
 from assur._vec import Array
