@@ -223,3 +223,44 @@ def test_the_links_names_keep_off_the_inertia_arrows() -> None:
         assert _link_names_over_inertia(ax) == []
     finally:
         plt.close(ax.figure)
+
+
+def test_the_loads_are_named_as_the_note_names_them() -> None:
+    # the note and the polygons number a link's loads (Q_{slider,1}, Q_{slider,2},
+    # then its couples); the mechanism's picture wrote Q_{slider} for each of them
+    from assur.explain import explain
+
+    text = (HERE.parent / "examples" / "slider_crank_exercise.toml").read_text()
+    text += """
+[[loads]]
+link = "slider"
+at = "C"
+torque = 2.0
+[[loads]]
+link = "slider"
+at = "C"
+force = [-300.0, 0.0]
+[[loads]]
+link = "rod"
+at = "B"
+force = [0.0, -40.0]
+[[loads]]
+link = "slider"
+at = "C"
+force = [0.0, -20.0]
+"""
+    mech = assur.loads(text)
+    table = assur.forces(mech, [60.0])
+    ax = mechanism.draw(table, forces=True)
+    names = {t.get_text() for t in ax.texts if t.get_text().startswith(("$Q", "$T"))}
+    matplotlib.pyplot.close(ax.figure)
+    assert names == {
+        r"$Q_{\text{slider},1}$",
+        r"$Q_{\text{slider},2}$",
+        r"$T_{\text{slider},3}$",
+        r"$Q_{\text{rod},1}$",
+    }
+    note = str(explain(mech, 60.0))
+    for name in names:
+        # the note's TeX sets a name upright with \mathrm, matplotlib's with \text
+        assert name.strip("$").replace(r"\text", r"\mathrm") in note, name

@@ -7,7 +7,7 @@ N per cm of drawing (the drawing is in metres), couples as arcs.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -178,6 +178,7 @@ def _load_arrows(
 
     plan, mech = ctx.plan, ctx.table.mechanism
     arrows = []
+    number = _load_numbers(mech.loads)
     for i, load in enumerate(mech.loads):
         b = plan.body(load.link)
         if b not in bodies:
@@ -189,14 +190,22 @@ def _load_arrows(
             force = _load_value(ctx, row, load.force, f"loads[{i}].force")
             arrows.append(
                 # Q, as the note writes it: F_{i,j} is the force of link i on link j
-                _Arrow(f"$Q_{{{name}}}$", at, force, None, LOAD_COLOR, units, "load")
+                _Arrow(
+                    f"$Q_{{{name},{number[i, 'force']}}}$",
+                    at,
+                    force,
+                    None,
+                    LOAD_COLOR,
+                    units,
+                    "load",
+                )
             )
         if load.torque is not None:
             at = _anchor(ctx, pose, b)
             torque = _load_value(ctx, row, load.torque, f"loads[{i}].torque")
             arrows.append(
                 _Arrow(
-                    f"$T_{{{name}}}$",
+                    f"$T_{{{name},{number[i, 'torque']}}}$",
                     at,
                     None,
                     float(torque[0]),
@@ -206,6 +215,22 @@ def _load_arrows(
                 )
             )
     return arrows
+
+
+def _load_numbers(loads: Sequence[Any]) -> dict[tuple[int, str], int]:
+    """Return the number of each external force and torque on its link (the note's).
+
+    A link's forces come first, 1, 2, ... in the file's order, then its torques:
+    Q_{ram,1} here is the note's and the polygons' Q_{ram,1}. Keys are the load's
+    index and ``"force"`` or ``"torque"``.
+    """
+    count: dict[str, int] = {}
+    number = {}
+    for part in ("force", "torque"):
+        for i, load in enumerate(loads):
+            if getattr(load, part) is not None:
+                count[load.link] = number[i, part] = count.get(load.link, 0) + 1
+    return number
 
 
 def _load_value(ctx: _Context, row: int, value: Any, entry: str) -> np.ndarray:
