@@ -549,3 +549,16 @@ def test_random_triads_follow_one_branch_whatever_the_step(monkeypatch, seed, re
         np.testing.assert_array_equal(coarse.skipped, fine.skipped)
         for name in names:
             np.testing.assert_allclose(coarse[name], fine[name], rtol=0, atol=1e-9)
+
+
+def test_a_mechanism_drawn_in_millimetres_is_warned_of():
+    # the exercise's figures copied from the drawing as they are (crank 74, rod 200):
+    # every speed would be in mm/s labelled m/s, every inertia force 1000 times too big
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    with pytest.warns(assur.AssurWarning, match=r"245\.4 m across.*millimetres"):
+        assur.forces(assur.io.parse(scaled(mech, 1000.0)), [30.0])
+    # the same mechanism in metres, and one 39 m across (a crane's), are not
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assur.forces(mech, [30.0])
+        assur.kinematics(assur.io.parse(scaled(mech, 160.0)), [30.0])
