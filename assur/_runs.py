@@ -69,7 +69,7 @@ def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
     One driver's positions given out of order are taken in increasing order: a run
     is then of neighbours among all the positions given. A crank's sweep over a
     whole turn joins its last run to its first with ``join`` (``given`` is then the
-    whole sweep): "-11 deg to 41 deg", not "40 deg to 41 deg; 349 deg to 399 deg"
+    whole sweep): "349 deg to 401 deg", not "40 deg to 41 deg; 349 deg to 399 deg"
     for a sweep from 40 to 399 deg.
     """
     if given.shape[1] == 1 and given.shape[0] > 1:
@@ -97,15 +97,29 @@ def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
     pairs = [(given[a], given[a - 1]) for a, _ in shown if a > 0]
     pairs += [(given[b], given[b + 1]) for _, b in shown if b < n - 1]
     if turn:
-        s = starts[-1]
-        pairs.append((given[s] - turn, given[s - 1] - turn))
+        s, e = starts[-1], ends[0]
+        # the joined run told in the sweep's own angles, as far as they go: the
+        # last run a turn back into the first, or the first a turn on into the
+        # last, whichever strays less beyond the sweep (from 355 down to 0 deg,
+        # "195 deg to -15 deg", where the other said "555 deg to 345 deg")
+        low, high = float(given[:, 0].min()), float(given[:, 0].max())
+
+        def beyond(value: float) -> float:
+            return max(low - value, value - high, 0.0)
+
+        if beyond(given[e, 0] + turn) < beyond(given[s, 0] - turn):
+            shift = (0.0, turn)
+            pairs.append((given[e] + turn, given[e + 1] + turn))
+        else:
+            shift = (-turn, 0.0)
+            pairs.append((given[s] - turn, given[s - 1] - turn))
     digits = telling_apart(pairs)
     runs = []
     if turn:
         # the last run goes on into the first: told from where the last begins,
         # a turn back, to where the first ends (one position when they meet)
-        first = position_where(plan, given[starts[-1]] - turn, digits)
-        last = position_where(plan, given[ends[0]], digits)
+        first = position_where(plan, given[starts[-1]] + shift[0], digits)
+        last = position_where(plan, given[ends[0]] + shift[1], digits)
         runs.append(first if first == last else f"{first} to {last}")
         starts, ends = starts[1:-1], ends[1:-1]
     for a, b in zip(starts, ends, strict=True):

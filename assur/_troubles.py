@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 
@@ -59,6 +59,14 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
     if not troubles:
         return None
     n = given.shape[0]
+    failures = [trouble for trouble, _ in troubles if trouble.what not in NOTICES]
+    if failures and not skip:
+        # the sweep's first failing position, whichever group fails there: a later
+        # group failing earlier in the sweep is what stops it (the lever's dyad
+        # was named at 270 deg where the ram's failed from 200 deg)
+        _fail(
+            plan, given, troubles, min(failures, key=lambda t: _first(troubles, n, t))
+        )
     ok = np.ones(n, dtype=bool)
     notices: dict[tuple[str, str], Mask] = {}
     for trouble, start in troubles:
@@ -68,46 +76,6 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
             key = (trouble.what, trouble.group)
             notices[key] = notices.get(key, mask) | mask
             continue
-        if not skip:
-            # every slice's positions of this trouble: the counts are the sweep's
-            mask = _all_failures(troubles, n, trouble.group, trouble.what)
-            first = int(np.flatnonzero(mask)[0])
-            where = position_where(plan, given[first], digits_apart(given, first))
-            if trouble.what == "unreached":
-                raise AssemblyError(_unreached(plan, given, mask, trouble.group))
-            if trouble.what == "assembly":
-                # where the mechanism assembles and goes, whatever else stops it there
-                closes = ~_all_failures(troubles, n, what="assembly")
-                closes &= ~_all_failures(troubles, n, what="unreached")
-                good = runs_text(plan, given, closes, join=True)
-                count, total = int(mask.sum()), int(n - closes.sum())
-                # the group's own count; other groups' failures, and positions
-                # out of reach, add to the sweep's
-                more = f", {total} in all" if total > count else ""
-                msg = (
-                    f"group {trouble.group}: cannot be assembled at driver position "
-                    f"{where} ({count} of {n} positions fail{more}); it assembles "
-                    f"for {good or _none_of_them(plan)}"
-                )
-                locked = closes & _all_failures(troubles, n, what="locked")
-                if locked.any():
-                    locks = runs_text(plan, given, locked, join=True)
-                    msg += f" (where friction locks it at {locks})"
-                raise AssemblyError(msg)
-            if trouble.what == "locked":
-                msg = (
-                    f"group {trouble.group}: its friction locks it at driver position "
-                    f"{where} ({int(mask.sum())} of {n} positions): no driving load "
-                    "moves it there (self-locking, or too near it to settle); "
-                    "expected less friction, or positions where it can be driven"
-                )
-                raise SelfLockingError(msg)
-            msg = (
-                f"group {trouble.group}: dead centre at driver position {where} "
-                "(its velocity equations are singular there); expected positions "
-                "away from dead centres"
-            )
-            raise SingularConfigurationError(msg)
         ok &= ~mask
     for (what, group), mask in notices.items():
         mask &= ok
@@ -244,6 +212,55 @@ def _reached(plan: Plan, span: Any) -> str:
     if span.period is not None:
         expected += " (or whole turns from them)"
     return expected
+
+
+def _first(troubles: list[Any], n: int, trouble: Any) -> int:
+    """Return the first of ``n`` positions where ``trouble``'s group fails so."""
+    mask = _all_failures(troubles, n, trouble.group, trouble.what)
+    return int(np.flatnonzero(mask)[0])
+
+
+def _fail(plan: Plan, given: Array, troubles: list[Any], trouble: Any) -> NoReturn:
+    """Raise the error of ``trouble``, counted over every slice of the sweep."""
+    n = given.shape[0]
+    mask = _all_failures(troubles, n, trouble.group, trouble.what)
+    first = int(np.flatnonzero(mask)[0])
+    where = position_where(plan, given[first], digits_apart(given, first))
+    if trouble.what == "unreached":
+        raise AssemblyError(_unreached(plan, given, mask, trouble.group))
+    if trouble.what == "assembly":
+        # where the mechanism assembles and goes, whatever else stops it there
+        closes = ~_all_failures(troubles, n, what="assembly")
+        closes &= ~_all_failures(troubles, n, what="unreached")
+        good = runs_text(plan, given, closes, join=True)
+        count, total = int(mask.sum()), int(n - closes.sum())
+        # the group's own count; other groups' failures, and positions out of
+        # reach, add to the sweep's
+        more = f", {total} in all" if total > count else ""
+        msg = (
+            f"group {trouble.group}: cannot be assembled at driver position "
+            f"{where} ({count} of {n} positions fail{more}); it assembles "
+            f"for {good or _none_of_them(plan)}"
+        )
+        locked = closes & _all_failures(troubles, n, what="locked")
+        if locked.any():
+            locks = runs_text(plan, given, locked, join=True)
+            msg += f" (where friction locks it at {locks})"
+        raise AssemblyError(msg)
+    if trouble.what == "locked":
+        msg = (
+            f"group {trouble.group}: its friction locks it at driver position "
+            f"{where} ({int(mask.sum())} of {n} positions): no driving load "
+            "moves it there (self-locking, or too near it to settle); "
+            "expected less friction, or positions where it can be driven"
+        )
+        raise SelfLockingError(msg)
+    msg = (
+        f"group {trouble.group}: dead centre at driver position {where} "
+        "(its velocity equations are singular there); expected positions "
+        "away from dead centres"
+    )
+    raise SingularConfigurationError(msg)
 
 
 def _all_failures(

@@ -34,12 +34,15 @@ def _between(x: np.ndarray, low: float, high: float) -> np.ndarray:
 @pytest.mark.parametrize(
     ("start", "stop", "step", "want"),
     [
-        # one turn from 40 deg: the first run goes on into the last
-        (40.0, 400.0, 1.0, "-11 deg to 41 deg"),
+        # one turn from 40 deg: the last run goes on into the first, told in the
+        # sweep's own angles as far as they go (401 deg, not -11 deg)
+        (40.0, 400.0, 1.0, "349 deg to 401 deg"),
         # ending on the first pose again
-        (40.0, 401.0, 1.0, "-11 deg to 41 deg"),
+        (40.0, 401.0, 1.0, "349 deg to 401 deg"),
         # the other way round: told in the sweep's order
         (40.0, -320.0, -1.0, "41 deg to -11 deg"),
+        # from 355 down to 0 deg: not "555 deg to 345 deg"
+        (355.0, -1.0, -5.0, "40 deg to -10 deg"),
         # less than a turn: two runs
         (40.0, 390.0, 1.0, "40 deg to 41 deg; 349 deg to 389 deg"),
     ],
@@ -79,7 +82,39 @@ def test_a_failure_s_count_tells_the_other_groups_failures_too() -> None:
         assur.kinematics(mech, angles)
     left = assur.kinematics(mech, angles, skip_unassembled=True)
     assert len(angles) - len(left) == 85
-    assert "(4 of 121 positions fail, 85 in all);" in str(raised.value)
+    # the sweep's first failing position, -180 deg, is the second group's
+    assert str(raised.value).startswith(
+        "group RRR (4, 5): cannot be assembled at driver position -180 deg "
+        "(68 of 121 positions fail, 85 in all);"
+    )
+
+
+@pytest.mark.parametrize(
+    ("angles", "where"),
+    [
+        (np.arange(0.0, 360.0, 5.0), "200 deg"),
+        (np.arange(355.0, -1.0, -5.0), "340 deg"),
+        (np.array([270.0, 200.0]), "270 deg"),
+        (np.array([200.0, 270.0]), "200 deg"),
+    ],
+)
+def test_the_error_names_the_sweep_s_first_failing_position(angles, where) -> None:
+    # the lever's dyad (the first group) fails at 270 deg alone, the ram's from 200
+    # deg: the error named the lever's at 270 deg, where the sweep stops at 200 deg
+    mech = assur.load(EDGE / "shaper_two_groups_fail.toml")
+    with pytest.raises(assur.AssemblyError) as raised:
+        assur.kinematics(mech, angles)
+    text = str(raised.value)
+    group = "RPR (block, lever)" if where == "270 deg" else "RRP (rod, ram)"
+    assert text.startswith(
+        f"group {group}: cannot be assembled at driver position {where} ("
+    ), text
+    if len(angles) > 2:
+        assert text.endswith(
+            "it assembles for -15 deg to 195 deg"
+            if angles[0] < angles[-1]
+            else "it assembles for 195 deg to -15 deg"
+        )
 
 
 def test_runs_of_a_slice_are_not_joined() -> None:
