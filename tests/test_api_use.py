@@ -411,3 +411,46 @@ def test_a_file_s_name_given_as_its_text_is_told() -> None:
     # the text of a file is read, whatever it ends with
     text = (EXAMPLES / "four_bar.toml").read_text() + "\n# see four_bar.toml"
     assert assur.loads(text).name == "Crank-rocker four-bar"
+
+
+def test_a_start_up_s_and_a_study_s_repr_are_their_figures() -> None:
+    # the start-up's repr spelt out its mechanism (1200 characters), the study's
+    # every parameter value and angle
+    mech = assur.catalog.slider_crank()
+    run = assur.startup(mech, 0.05, motor=assur.Motor(20.0, no_load_speed=250.0))
+    assert repr(run).startswith("Startup(motor=Motor(torque=20.0, no_load_speed=250.0)")
+    assert "Mechanism" not in repr(run)
+    assert len(repr(run)) < 300
+    study = assur.sweep(
+        assur.catalog.slider_crank, {"rod": [0.2, 0.25, 0.01]}, range(0, 360, 10)
+    )
+    assert repr(study) == (
+        "<assur.Study: 3 variants of rod, 36 positions each, 1 failed>"
+    )
+
+
+@pytest.mark.parametrize(
+    ("name", "given", "expected"),
+    [
+        ("plot_motion", "dynamics", "a table of assur.kinematics or assur.forces"),
+        ("plot_paths", "dynamics", "a table of assur.kinematics or assur.forces"),
+        ("plot_speed", "forces", "the result of assur.dynamics, got Table"),
+        ("plot_reduced_inertia", "forces", "the result of assur.dynamics"),
+        ("plot_reduced_torque", "forces", "the result of assur.dynamics"),
+        ("plot_energy_mass", "mechanism", "the result of assur.dynamics"),
+        ("plot_dynamics", "forces", "the result of assur.dynamics"),
+        ("plot_startup", "dynamics", "the result of assur.startup, got Dynamics"),
+    ],
+)
+def test_a_picture_of_the_wrong_result_is_one_usage_error(name, given, expected):
+    # an AttributeError, a KeyError or a TypeError from deep inside, before
+    import assur.plotting
+
+    mech = assur.catalog.slider_crank()
+    results = {
+        "mechanism": lambda: mech,
+        "forces": lambda: assur.forces(mech, [0.0, 90.0]),
+        "dynamics": lambda: assur.dynamics(mech, [0.0, 90.0]),
+    }
+    with pytest.raises(assur.UsageError, match=f"expected {expected}"):
+        getattr(assur.plotting, name)(results[given]())

@@ -21,7 +21,7 @@ from assur.plotting._axes import (
     _new_axes,
     labelled_legend,
 )
-from assur.plotting._context import _Context, _context, _row, _unit
+from assur.plotting._context import _Context, _context, _row, _unit, whole
 from assur.plotting._style import PATH_COLORS, literal, titled
 from assur.plotting.mechanism import _draw_mechanism
 
@@ -80,6 +80,7 @@ def plot_motion(
     >>> import matplotlib.pyplot as plt
     >>> plt.close(ax.figure)
     """
+    whole(table, "plot_motion")
     if names is None:
         names = _moving(table, quantity)
     elif isinstance(names, str):

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur.columns import pretty_unit
+from assur.errors import UsageError
 from assur.plotting._axes import _new_axes, labelled_legend
 from assur.plotting._style import BALANCING_COLOR, PATH_COLORS, titled
 
@@ -35,6 +36,28 @@ INERTIA_COLOR = PATH_COLORS[2]
 LOAD_COLOR = PATH_COLORS[1]
 TANGENT_COLORS = ("#d62728", "#1f77b4")
 """Colours of the tangents of the largest and the smallest speed."""
+
+
+def _expect(result: Any, kind: str, what: str) -> None:
+    """Refuse a ``result`` that is not a ``kind`` (``"Dynamics"`` or ``"Startup"``).
+
+    Raises
+    ------
+    UsageError
+        Naming ``what`` and the function whose result it expects: a forces table
+        gave an AttributeError from deep inside.
+    """
+    from assur.dynamics_model import Dynamics
+    from assur.dynamics_startup import Startup
+
+    made = {
+        "Dynamics": (Dynamics, "assur.dynamics"),
+        "Startup": (Startup, "assur.startup"),
+    }
+    cls, maker = made[kind]
+    if not isinstance(result, cls):
+        msg = f"{what}: expected the result of {maker}, got {type(result).__name__}"
+        raise UsageError(msg)
 
 
 def _angle_axis(ax: Any, result: Dynamics) -> Any:
@@ -67,6 +90,7 @@ def plot_reduced_inertia(result: Dynamics, ax: Any = None) -> Any:
     -------
     matplotlib.axes.Axes
     """
+    _expect(result, "Dynamics", "plot_reduced_inertia")
     ax = _new_axes(ax, (8.0, 4.5))
     x = _angle_axis(ax, result)
     ax.plot(x, result["reduced.inertia"], color=INERTIA_COLOR, lw=1.8)
@@ -80,6 +104,7 @@ def plot_reduced_torque(result: Dynamics, ax: Any = None) -> Any:
 
     Parameters are those of :func:`plot_reduced_inertia`.
     """
+    _expect(result, "Dynamics", "plot_reduced_torque")
     ax = _new_axes(ax, (8.0, 4.5))
     x = _angle_axis(ax, result)
     unit = pretty_unit(result.column("reduced.torque").unit)
@@ -128,6 +153,7 @@ def plot_speed(result: Dynamics, ax: Any = None) -> Any:
 
     Parameters are those of :func:`plot_reduced_inertia`.
     """
+    _expect(result, "Dynamics", "plot_speed")
     ax = _new_axes(ax, (8.0, 4.5))
     x = _angle_axis(ax, result)
     sign = 1.0 if result.omega > 0 else -1.0
@@ -161,6 +187,7 @@ def plot_energy_mass(result: Dynamics, ax: Any = None) -> Any:
 
     Parameters are those of :func:`plot_reduced_inertia`.
     """
+    _expect(result, "Dynamics", "plot_energy_mass")
     ax = _new_axes(ax, (6.0, 5.0))
     inertia = np.asarray(result["reduced.inertia"]) - result.flywheel
     work = np.asarray(result["reduced.work"])
@@ -222,6 +249,7 @@ def plot_dynamics(result: Dynamics) -> Any:
     """
     import matplotlib.pyplot as plt
 
+    _expect(result, "Dynamics", "plot_dynamics")
     fig, axes = plt.subplots(2, 2, figsize=(12.0, 8.0), layout="constrained")
     plot_reduced_inertia(result, axes[0, 0])
     plot_reduced_torque(result, axes[0, 1])
@@ -247,6 +275,7 @@ def plot_startup(run: Startup, ax: Any = None) -> Any:
     -------
     matplotlib.axes.Axes
     """
+    _expect(run, "Startup", "plot_startup")
     ax = _new_axes(ax, (8.0, 4.5))
     ax.plot(run.time, run.omega, color=SPEED_COLOR, lw=1.2, label="ω(t)")
     ax.axhline(run.mean_speed, color="black", lw=0.8, ls=":", label="periodic mean")
