@@ -132,10 +132,16 @@ class Columns(metaclass=ABCMeta):
         }
 
     def to_pandas(self) -> Any:
-        """Return a pandas DataFrame (pandas must be installed)."""
+        """Return a pandas DataFrame (pandas must be installed).
+
+        Its ``attrs["units"]`` gives each column's unit by name (``"N"``,
+        ``"rad/s"``; angles in ``"deg"``), as the Parquet file's metadata does.
+        """
         import pandas as pd
 
-        return pd.DataFrame(dict(zip(self.columns, self.arrays(), strict=True)))
+        frame = pd.DataFrame(dict(zip(self.columns, self.arrays(), strict=True)))
+        frame.attrs["units"] = {name: self.column(name).unit for name in self.columns}
+        return frame
 
 
 def _json_number(v: float) -> float | None:

@@ -83,7 +83,8 @@ class Startup:
         Largest and smallest speed of the periodic motion, rad/s (magnitudes).
     """
 
-    mechanism: Mechanism
+    # the repr is the start-up's figures: the mechanism's spelt out 1200 characters
+    mechanism: Mechanism = field(repr=False)
     motor: Motor
     flywheel: float
     time: Array = field(repr=False)
@@ -149,7 +150,10 @@ def startup(
         peak load (the crank stalls, at the crank angle named); when the motion does
         not settle within ``turns`` turns (a constant torque above the mean load's).
     UsageError
-        For a negative flywheel or an ``omega0`` against the motor.
+        For a negative flywheel, an ``omega0`` against the motor, or a ``motor``
+        argument that is not a motor (a torque of 0, say).
+    AssemblyError
+        When the crank cannot make a whole turn.
 
     Notes
     -----

@@ -77,6 +77,16 @@ class Study:
     def __len__(self) -> int:
         return len(self.summary)
 
+    def __repr__(self) -> str:
+        # the dataclass's repr spelt out every parameter's values and the angles
+        failed = int((self.summary["error"] != "").sum())
+        names = ", ".join(self.parameters) or "no parameters"
+        n = len(self.angles)
+        return (
+            f"<assur.Study: {len(self)} variants of {names}, {n} "
+            f"position{'s' if n != 1 else ''} each, {failed} failed>"
+        )
+
     def tables(
         self,
         variants: Sequence[int] | None = None,

@@ -86,6 +86,14 @@ def test_table_to_pandas():
     assert isinstance(frame, pd.DataFrame)
     assert list(frame.columns) == list(t.columns)
     np.testing.assert_array_equal(frame["coupler.omega"], t["coupler.omega"])
+    # each column's unit, as the schema gives it (the frame carried none)
+    units = frame.attrs["units"]
+    assert list(units) == list(t.columns)
+    assert units["coupler.omega"] == "rad/s"
+    assert units["angle"] == "deg"
+    assert units["B.ax"] == "m/s^2"
+    dynamics = assur.dynamics(assur.catalog.slider_crank(), [0.0, 90.0]).to_pandas()
+    assert dynamics.attrs["units"]["driver.omega"] == "rad/s"
 
 
 def test_near_dead_centre_is_warned_once_with_positions():
