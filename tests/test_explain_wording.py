@@ -366,3 +366,14 @@ def test_an_answer_a_hair_below_ours_differs_by_plus_zero() -> None:
 
     assert _verdict(84.625 * (1 - 1e-9), 84.625) == ("$+0.000$ %", "agrees")
     assert _verdict(84.625 * (1 - 1e-4), 84.625) == ("$-0.010$ %", "agrees")
+
+
+def test_a_sliding_pair_s_couple_carries_its_unit() -> None:
+    # "M_{guide} = -0.0005197 (joint guide)": the couple's figure stood bare
+    note = str(explain(assur.load(EXAMPLES / "slider_crank_exercise.toml"), 30.0))
+    lines = [x for x in note.splitlines() if "\\text{(joint guide)}" in x]
+    assert lines
+    for line in lines:
+        assert re.search(r"M_\{\\mathrm\{guide\}\} = [^,]*\\mathrm\{N\\,m\}", line), (
+            line
+        )

@@ -317,7 +317,8 @@ def _totals(pos: Position, rec: Equilibrium) -> list[str]:
             )
         if pair.kind == "P":
             line += (
-                f",\\quad M_{{{name(pair.name)}}} = {num(float(np.ravel(r.couple)[0]))}"
+                f",\\quad M_{{{name(pair.name)}}} = "
+                f"{num(float(np.ravel(r.couple)[0]))}\\ \\mathrm{{N\\,m}}"
             )
         lines.append(line + f"\\quad \\text{{(joint {text(pair.name)})}}")
     return lines
