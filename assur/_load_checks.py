@@ -34,6 +34,12 @@ if TYPE_CHECKING:
 class LoadTable:
     """A load tabulated against a position, interpolated linearly.
 
+    Over a crank the table is periodic (positions modulo 360 deg): a table that
+    stops short of a turn runs linearly from its last value back to its first, a
+    turn on. A load over part of a turn only (a cutting stroke) is written with
+    zeros at its ends, or it acts over the rest of the turn too. Over a slide or a
+    prismatic driver the table must cover every analysed position.
+
     Parameters
     ----------
     over : str

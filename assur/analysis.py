@@ -162,7 +162,8 @@ def forces(
     ------
     ModelError
         When no link has a mass and no load is applied, when a link with a mass lacks
-        its centre of mass or inertia, or a load table does not cover the sweep.
+        its centre of mass or inertia, or a load table over a slide or a prismatic
+        driver does not cover the sweep (one over a crank is periodic).
     AssemblyError, SingularConfigurationError, SelfLockingError
         At the first driver position where a group cannot close, is at a dead centre
         or is locked by friction, naming the group; an AssemblyError too at a

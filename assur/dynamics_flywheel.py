@@ -101,6 +101,8 @@ def flywheel(mechanism: Mechanism, delta: float) -> float:
         inertia found does not give ``delta`` (to 1e-6 of it).
     ConvergenceError
         When the search for the inertia does not converge.
+    AssemblyError
+        When the crank cannot make a whole turn.
 
     Examples
     --------

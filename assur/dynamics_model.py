@@ -207,6 +207,9 @@ def dynamics(
         inertia that vanishes, or a mean speed too low to carry the crank round.
     UsageError
         For a flywheel that is negative or not a number.
+    AssemblyError
+        When the crank cannot make a whole turn (the mechanism does not assemble
+        at every crank angle), naming the group and the angles it reaches.
 
     Notes
     -----

@@ -297,7 +297,9 @@ class Table(Columns):
         over the positions (N), ``J.F.at``, the driver position where it occurs (deg,
         or m for a prismatic driver) and ``J.F.rms``; for the balancing load
         ``driver.torque.max``, ``.min``, ``.mean`` and ``.rms`` (``driver.force.*``
-        for a prismatic driver; every driver's ``J.torque.*`` too with several);
+        for a prismatic driver; with several drivers these are the first driver's,
+        as the column ``driver.torque`` is, and every driver's own ``J.torque.*``
+        is given too: size each motor on its own);
         ``driver.power.mean``, the mean of the balancing loads times the drivers'
         speeds (W), all drivers' together (with several, each one's own too:
         ``J.power.mean``, J its joint). With friction also ``J.friction.loss``, the
@@ -307,6 +309,9 @@ class Table(Columns):
         driver's work that reaches the loads
         (NaN where the driver does no net work, or the loads give back work it still
         supplies).
+
+        A table made with ``columns=`` summarises the joints and drivers among its
+        columns only (``columns=["driver.torque"]`` gives the driver's figures).
 
         Means are over the table's positions: time averages over a cycle when the
         positions are equally spaced over a whole cycle at a constant driver speed.

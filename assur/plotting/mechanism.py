@@ -99,8 +99,9 @@ def draw(
     Raises
     ------
     ModelError
-        When ``forces`` is asked of a kinematics table, or ``angle`` has the wrong
-        number of values.
+        When ``forces`` is asked of a kinematics table.
+    UsageError
+        When ``angle`` is not a driver position, or has the wrong number of values.
 
     Examples
     --------
