@@ -171,7 +171,8 @@ def _writers(
     json_table = _json_table(args)
     if json_table:
         write, encode = _open(stack, "-")
-        writers.append(JsonWriter(write, name, names, encode, told()))
+        units = [table.column(c).unit for c in names]
+        writers.append(JsonWriter(write, name, names, encode, told(), units=units))
     if len(writers) > 1 and (json_table or args.csv == "-"):
         # standard output is one of the outputs, the files the others
         at = -1 if json_table else 0

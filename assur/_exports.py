@@ -120,11 +120,12 @@ class Columns(metaclass=ABCMeta):
         write_parquet(self, path)
 
     def to_dict(self) -> dict[str, Any]:
-        """Return JSON-ready data: the mechanism's name, the columns and the rows."""
+        """Return JSON-ready data: the name, the columns, their units and the rows."""
         rows = self.to_array()
         return {
             "name": self.mechanism.name,
             "columns": list(self.columns),
+            "units": {name: self.column(name).unit for name in self.columns},
             "rows": [
                 {c: _json_number(v) for c, v in zip(self.columns, row, strict=True)}
                 for row in rows.tolist()

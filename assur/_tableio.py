@@ -89,7 +89,7 @@ class CsvWriter:
 
 
 class JsonWriter:
-    """Write ``{"name": ..., "columns": [...], "rows": [{...}, ...]}`` by rows.
+    """Write ``{"name": ..., "columns": [...], "units": {...}, "rows": [...]}`` by rows.
 
     The text is that of ``json.dumps(table.to_dict())``: numbers as Python writes
     them, ``null`` for a value that is not a finite number.
@@ -103,12 +103,21 @@ class JsonWriter:
         encode: Callable[[str], bytes] | None = None,
         advance: Advance | None = None,
         head: dict[str, Any] | None = None,
+        units: Sequence[str] = (),
     ) -> None:
         self._write = write
         self._encode = encode or (lambda text: text.encode("utf-8"))
         self._advance = advance
         # more entries (figures of the dynamics, say) go between the name and columns
-        start = json.dumps({"name": name, **(head or {}), "columns": list(names)})
+        start = json.dumps(
+            {
+                "name": name,
+                **(head or {}),
+                "columns": list(names),
+                # each column's unit by name, as the Parquet file's metadata has it
+                **({"units": dict(zip(names, units, strict=True))} if units else {}),
+            }
+        )
         self._write(self._encode(start[:-1] + ', "rows": ['))
         # one template per row: '{"angle": %s, "crank.angle": %s, ...}'
         keys = ", ".join(f"{json.dumps(n).replace('%', '%%')}: %s" for n in names)

@@ -176,7 +176,9 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         try:
             head = _head(rows.first, sizing, run)
             out: CsvWriter | JsonWriter = (
-                JsonWriter(write, mech.name, rows.names, encode, head=head)
+                JsonWriter(
+                    write, mech.name, rows.names, encode, head=head, units=rows.units
+                )
                 if args.json
                 else CsvWriter(write, rows.names, encode)
             )
@@ -230,7 +232,9 @@ class _Rows:
         model, steady = state
         # the figures of the steady state: the same whatever the rows
         self.first = dynamics_rows(mech, model, steady, angles[:1])
-        self.names = self.part(0, 1).columns
+        first = self.part(0, 1)
+        self.names = first.columns
+        self.units = [first.column(name).unit for name in self.names]
 
     def part(self, start: int, stop: int) -> Any:
         """Return the rows ``start`` to ``stop`` (a Dynamics, or joined with forces)."""

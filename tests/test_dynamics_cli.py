@@ -81,6 +81,8 @@ def test_json(capsys):
     t = assur.dynamics(assur.load(WHITWORTH), [0.0, 90.0, 180.0, 270.0, 360.0], 20.0)
     assert data["dynamics"] == t.summary()
     assert data["columns"] == list(t.columns)
+    assert data["units"] == {c: t.column(c).unit for c in t.columns}
+    assert data["units"]["reduced.inertia"] == "kg m^2"
     assert [r["driver.omega"] for r in data["rows"]] == t["driver.omega"].tolist()
 
 

@@ -54,7 +54,9 @@ def test_many_columns_are_written_a_few_rows_at_a_time(
     assert forces_table.to_csv() == old_csv_text(forces_table)
     parts: list[bytes] = []
     names = forces_table.columns
-    writer = _tableio.JsonWriter(parts.append, forces_table.mechanism.name, names)
+    units = [forces_table.column(c).unit for c in names]
+    name = forces_table.mechanism.name
+    writer = _tableio.JsonWriter(parts.append, name, names, units=units)
     writer.write(_tableio.table_columns(forces_table))
     writer.close()
     assert b"".join(parts).decode() == json.dumps(forces_table.to_dict())
@@ -86,13 +88,20 @@ def test_json_by_rows_is_json_dumps(forces_table, monkeypatch):
     names = forces_table.columns
     assert np.isnan(forces_table["slider.ic.x"]).all()
     parts: list[bytes] = []
-    writer = _tableio.JsonWriter(parts.append, forces_table.mechanism.name, names)
+    units = [forces_table.column(c).unit for c in names]
+    name = forces_table.mechanism.name
+    writer = _tableio.JsonWriter(parts.append, name, names, units=units)
     columns = _tableio.table_columns(forces_table)
     for start in range(0, len(forces_table), 1000):  # slices of a sweep
         writer.write([c[start : start + 1000] for c in columns])
     writer.close()
     text = b"".join(parts).decode()
     assert text == json.dumps(forces_table.to_dict())
+    # each column's unit by its name, as the Parquet file's metadata has it
+    units = json.loads(text)["units"]
+    assert list(units) == list(names)
+    assert units["driver.torque"] == "N m"
+    assert units["crank.alpha"] == "rad/s^2"
 
 
 def test_json_of_odd_names():
