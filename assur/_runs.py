@@ -69,7 +69,7 @@ def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
     One driver's positions given out of order are taken in increasing order: a run
     is then of neighbours among all the positions given. A crank's sweep over a
     whole turn joins its last run to its first with ``join`` (``given`` is then the
-    whole sweep): "349 deg to 401 deg", not "40 deg to 41 deg; 349 deg to 399 deg"
+    whole sweep): "-11 deg to 41 deg", not "40 deg to 41 deg; 349 deg to 399 deg"
     for a sweep from 40 to 399 deg.
     """
     if given.shape[1] == 1 and given.shape[0] > 1:
@@ -98,16 +98,21 @@ def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
     pairs += [(given[b], given[b + 1]) for _, b in shown if b < n - 1]
     if turn:
         s, e = starts[-1], ends[0]
-        # the joined run told in the sweep's own angles, as far as they go: the
-        # last run a turn back into the first, or the first a turn on into the
-        # last, whichever strays less beyond the sweep (from 355 down to 0 deg,
-        # "195 deg to -15 deg", where the other said "555 deg to 345 deg")
+        # the joined run told from its start a turn back, into the first run; or
+        # from the first run on into the last a turn on, where that is both
+        # nearer zero and less beyond the sweep (from 355 down to 0 deg: "195
+        # deg to -15 deg", not "555 deg to 345 deg")
         low, high = float(given[:, 0].min()), float(given[:, 0].max())
+        back = (float(given[s, 0] - turn), float(given[e, 0]))
+        on = (float(given[s, 0]), float(given[e, 0] + turn))
 
-        def beyond(value: float) -> float:
-            return max(low - value, value - high, 0.0)
+        def beyond(ends: tuple[float, float]) -> float:
+            return max(max(low - v, v - high) for v in ends)
 
-        if beyond(given[e, 0] + turn) < beyond(given[s, 0] - turn):
+        def size(ends: tuple[float, float]) -> float:
+            return max(abs(v) for v in ends)
+
+        if size(on) < size(back) and beyond(on) < beyond(back):
             shift = (0.0, turn)
             pairs.append((given[e] + turn, given[e + 1] + turn))
         else:

@@ -61,12 +61,15 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
     n = given.shape[0]
     failures = [trouble for trouble, _ in troubles if trouble.what not in NOTICES]
     if failures and not skip:
-        # the sweep's first failing position, whichever group fails there: a later
-        # group failing earlier in the sweep is what stops it (the lever's dyad
-        # was named at 270 deg where the ram's failed from 200 deg)
-        _fail(
-            plan, given, troubles, min(failures, key=lambda t: _first(troubles, n, t))
-        )
+        # a group that does not assemble first (its message tells where friction
+        # locks too), then the sweep's first failing position, whichever group
+        # fails there (the lever's dyad was named at 270 deg where the ram's
+        # failed from 200 deg)
+        def rank(t: Any) -> tuple[bool, int]:
+            first = np.argmax(_all_failures(troubles, n, t.group, t.what))
+            return t.what not in ("assembly", "unreached"), int(first)
+
+        _fail(plan, given, troubles, min(failures, key=rank))
     ok = np.ones(n, dtype=bool)
     notices: dict[tuple[str, str], Mask] = {}
     for trouble, start in troubles:
@@ -212,12 +215,6 @@ def _reached(plan: Plan, span: Any) -> str:
     if span.period is not None:
         expected += " (or whole turns from them)"
     return expected
-
-
-def _first(troubles: list[Any], n: int, trouble: Any) -> int:
-    """Return the first of ``n`` positions where ``trouble``'s group fails so."""
-    mask = _all_failures(troubles, n, trouble.group, trouble.what)
-    return int(np.flatnonzero(mask)[0])
 
 
 def _fail(plan: Plan, given: Array, troubles: list[Any], trouble: Any) -> NoReturn:

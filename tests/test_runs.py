@@ -34,11 +34,10 @@ def _between(x: np.ndarray, low: float, high: float) -> np.ndarray:
 @pytest.mark.parametrize(
     ("start", "stop", "step", "want"),
     [
-        # one turn from 40 deg: the last run goes on into the first, told in the
-        # sweep's own angles as far as they go (401 deg, not -11 deg)
-        (40.0, 400.0, 1.0, "349 deg to 401 deg"),
+        # one turn from 40 deg: the first run goes on into the last
+        (40.0, 400.0, 1.0, "-11 deg to 41 deg"),
         # ending on the first pose again
-        (40.0, 401.0, 1.0, "349 deg to 401 deg"),
+        (40.0, 401.0, 1.0, "-11 deg to 41 deg"),
         # the other way round: told in the sweep's order
         (40.0, -320.0, -1.0, "41 deg to -11 deg"),
         # from 355 down to 0 deg: not "555 deg to 345 deg"
