@@ -24,7 +24,8 @@ from assur._cli_summary import _summary, _summary_text, _summed
 from assur._cli_tables import _check_outputs, _write_tables
 from assur._output import path_text, write_stdout
 from assur._progress import BAR_DELAY
-from assur._sliced import Skipped, slices
+from assur._skipped import Skipped
+from assur._sliced import slices
 
 __all__ = ["_sweep"]
 

@@ -58,7 +58,7 @@ def _table(mech: Any, positions: Any, forces: bool, skip: bool = False) -> Any:
 
 def _say_skipped(args: argparse.Namespace, skipped: Any, plan: Any) -> None:
     """Note the positions left out of the sweep of ``plan`` (``--skip-unassembled``)."""
-    from assur._sliced import Skipped
+    from assur._skipped import Skipped
 
     if len(skipped) and not quiet(args):
         found = Skipped()

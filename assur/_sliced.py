@@ -14,15 +14,15 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, NoReturn
 
 import numpy as np
 
 from assur._drive import positions, to_si
-from assur._output import path_text
+from assur._skipped import Skipped
 from assur._state import CHUNK as SWEEP_SLICE
-from assur._troubles import _change_points, skipped_why
+from assur._troubles import _change_points
 from assur._vec import Array, full
 from assur.columns import balancing_columns
 from assur.errors import (
@@ -34,7 +34,7 @@ from assur.errors import (
 )
 from assur.plan import plan_of
 
-__all__ = ["CHUNK", "Skipped", "Slice", "slices"]
+__all__ = ["CHUNK", "Slice", "slices"]
 
 FAILURES = (AssemblyError, SingularConfigurationError, SelfLockingError)
 """The errors of a sweep that fails at some of its positions."""
@@ -44,8 +44,6 @@ slice, so that every number is computed as in one call over the whole sweep): 65
 SLICE_VALUES = 1 << 24
 """Most numbers of one slice's table (128 MB): a mechanism of very many columns
 takes fewer positions at a time (see :func:`_chunk`)."""
-SKIPPED_SHOWN = 20
-"""Positions left out that the note lists."""
 RUNS_SHOWN = 6
 """Runs of positions that a warning lists (as :mod:`assur.analysis` does)."""
 NEAR = ": near a dead centre "
@@ -67,35 +65,6 @@ class Slice:
     def arrays(self) -> list[Array]:
         """Return every column over the slice, in order."""
         return [self.column(name) for name in self.table.columns]
-
-
-@dataclass
-class Skipped:
-    """The positions left out over the sweep (``--skip-unassembled``)."""
-
-    count: int = 0
-    values: list[float] = field(default_factory=list)
-    more: bool = False
-    why: str = ""
-
-    def add(self, positions: Array, plan: Any = None) -> None:
-        """Count the positions left out of one slice (of the mechanism ``plan``)."""
-        why = skipped_why(plan, positions)
-        self.why = why if len(why) > len(self.why) else self.why
-        self.count += len(positions)
-        flat = np.ravel(positions)
-        room = SKIPPED_SHOWN - len(self.values)
-        self.values += flat[:room].tolist()
-        self.more |= flat.size > room
-
-    def note(self, source: Any) -> str:
-        """Return the note naming the positions left out of ``source``'s sweep."""
-        shown = ", ".join(f"{x:g}" for x in self.values)
-        more = ", ..." if self.more else ""
-        return (
-            f"assur: note: {path_text(source)}: left out {self.count} "
-            f"position(s) {self.why}: {shown}{more}"
-        )
 
 
 def slices(

@@ -372,7 +372,8 @@ def _alone(mech: Mechanism, angles: Array) -> dict[str, Any]:
 
 def _summed(mech: Mechanism, angles: Array) -> dict[str, Any]:
     """Return the summary of a long sweep, computed a slice of positions at a time."""
-    from assur._sliced import Skipped, slices
+    from assur._skipped import Skipped
+    from assur._sliced import slices
     from assur.summary import Summary
 
     summary = Summary()

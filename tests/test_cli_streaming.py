@@ -178,10 +178,10 @@ def test_many_runs_near_dead_centres_are_cut_as_one_table_cuts_them(
     table, _ = whole("kinematics", double_rocker, spec, skip=True)
     shown = ", ".join(f"{x:g}" for x in np.ravel(table.skipped)[:20])
     assert lines[0] == (
-        f"assur: note: {double_rocker}: left out {len(table.skipped)} position(s) "
+        f"assur: note: {double_rocker}: left out {len(table.skipped)} positions "
         "where a group cannot be assembled, stands at a dead centre or is locked by "
         "friction, or that the mechanism cannot reach from its reference pose: "
-        f"{shown}, ..."
+        f"{shown}, ... deg"
     )
     assert len(lines) == 2
 
@@ -655,3 +655,34 @@ def test_a_csv_file_of_any_other_name_is_written(capsys, monkeypatch, tmp_path, 
     )
     assert status == 0
     assert (tmp_path / name).read_text().startswith("angle,")
+
+
+def test_the_note_of_positions_left_out_tells_each_driver_s_with_its_unit():
+    # a crank and a slider: "129, 0.0647823, 130, 0.0666876" read as four
+    # positions; one driver's positions took no unit
+    from types import SimpleNamespace
+
+    from assur._skipped import Skipped
+    from assur.plan import compile_plan
+
+    two = SimpleNamespace(
+        drivers=[SimpleNamespace(kind="R"), SimpleNamespace(kind="P")]
+    )
+    found = Skipped()
+    found.add(np.array([[129.0, 0.0647823], [130.0, 0.0666876]]), two)
+    assert found.note("m.toml").endswith(
+        ": (129 deg, 0.0647823 m); (130 deg, 0.0666876 m)"
+    )
+    assert "left out 2 positions " in found.note("m.toml")
+    one = Skipped()
+    crank = compile_plan(assur.catalog.four_bar())
+    one.add(np.arange(100.0, 130.0).reshape(-1, 1), crank)
+    assert one.note("m.toml").endswith(
+        ": 100, 101, 102, 103, 104, 105, 106, 107, "
+        "108, 109, 110, 111, 112, 113, 114, 115, 116, "
+        "117, 118, 119, ... deg"
+    )
+    single = Skipped()
+    single.add(np.array([[200.0]]), crank)
+    assert ": left out 1 position " in single.note("m.toml")
+    assert single.note("m.toml").endswith(": 200 deg")

@@ -490,7 +490,7 @@ def test_self_locking_on_the_command_line(tmp_path, capsys):
     assert "locks it at driver position 250 deg" in err[0]
     status = main(["forces", str(path), "--angles", "0:355:5", "--skip-unassembled"])
     assert status == 0
-    assert "left out 9 position(s)" in capsys.readouterr().err
+    assert "left out 9 positions" in capsys.readouterr().err
 
 
 def test_a_journal_of_radius_zero_has_no_friction_couple():

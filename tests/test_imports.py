@@ -112,6 +112,7 @@ RANKS = {
     "assur._targets": 10,
     # long sweeps a slice at a time: the command line's tables, long studies
     "assur._sliced": 10,
+    "assur._skipped": 10,
     "assur._tableio": 10,
     "assur._csvtext": 10,
     "assur.plotting": 10,

@@ -524,10 +524,10 @@ def test_diagrams_skip_positions_a_crank_cannot_reach(
     )
     assert status == 0, err
     (note,) = (line for line in err.splitlines() if "note" in line)
-    assert note.startswith(f"assur: note: {TRIAD_P}: left out 123 position(s) ")
+    assert note.startswith(f"assur: note: {TRIAD_P}: left out 123 positions ")
     assert note.endswith(
         ": 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, "
-        "126, 127, 128, 129, 130, 131, 132, 133, 134, ..."
+        "126, 127, 128, 129, 130, 131, 132, 133, 134, ... deg"
     )
 
 
@@ -546,7 +546,7 @@ def test_animate_counts_the_sweep_and_skips_over_it(
     assert "(3 frames)" in out_text
     # the note counts the sweep's positions left out, not the frames'
     (note,) = err.splitlines()
-    assert f"{TRIAD_P}: left out 123 position(s) " in note
+    assert f"{TRIAD_P}: left out 123 positions " in note
     with Image.open(out) as im:
         assert im.n_frames == 3
     status, _, err = _run(capsys, *argv, "--skip-unassembled", "--angles", "200:220:1")

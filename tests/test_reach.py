@@ -120,7 +120,7 @@ def test_the_command_line_leaves_another_circuit_out_and_says_why(capsys):
     assert status == 0, err
     rows = [line.split(",")[0] for line in out.splitlines()[1:]]
     assert [float(r) for r in rows] == [*range(30, 111, 10), 380, 390]
-    assert "left out 26 position(s)" in err
+    assert "left out 26 positions" in err
     assert "or that the mechanism cannot reach from its reference pose" in err
 
 

@@ -1,0 +1,65 @@
+"""The positions a sweep left out (``--skip-unassembled``), and the note naming them."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from assur._output import path_text
+from assur._troubles import skipped_why
+from assur._vec import Array
+
+__all__ = ["Skipped"]
+
+SKIPPED_SHOWN = 20
+"""Positions left out that the note lists."""
+
+
+@dataclass
+class Skipped:
+    """The positions left out over the sweep (``--skip-unassembled``)."""
+
+    count: int = 0
+    values: list[list[float]] = field(default_factory=list)
+    """The first positions left out, one list of the drivers' positions each."""
+    more: bool = False
+    why: str = ""
+    units: tuple[str, ...] = ("deg",)
+    """Each driver's unit: deg for a crank, m for a slider."""
+
+    def add(self, positions: Array, plan: Any = None) -> None:
+        """Count the positions left out of one slice (of the mechanism ``plan``)."""
+        why = skipped_why(plan, positions)
+        self.why = why if len(why) > len(self.why) else self.why
+        self.count += len(positions)
+        rows = np.asarray(positions, dtype=float)
+        if rows.ndim == 1:  # one driver's positions
+            rows = rows[:, np.newaxis]
+        room = SKIPPED_SHOWN - len(self.values)
+        self.values += rows[:room].tolist()
+        self.more |= len(rows) > room
+        if plan is not None:
+            self.units = tuple("deg" if d.kind == "R" else "m" for d in plan.drivers)
+
+    def note(self, source: Any) -> str:
+        """Return the note naming the positions left out of ``source``'s sweep."""
+        more = ", ..." if self.more else ""
+        if len(self.units) == 1:
+            # one driver: its positions, the unit once
+            shown = ", ".join(f"{v[0]:g}" for v in self.values) + more
+            shown += f" {self.units[0]}"
+        else:
+            # several: each position's drivers together ("129, 0.0648" read as two)
+            shown = "; ".join(
+                "("
+                + ", ".join(f"{x:g} {u}" for x, u in zip(v, self.units, strict=True))
+                + ")"
+                for v in self.values
+            )
+            shown += more.replace(",", ";")
+        counted = "1 position" if self.count == 1 else f"{self.count} positions"
+        return (
+            f"assur: note: {path_text(source)}: left out {counted} {self.why}: {shown}"
+        )
