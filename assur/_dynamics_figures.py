@@ -12,7 +12,6 @@ from typing import Any
 import numpy as np
 
 from assur._text import number_text
-from assur.columns import pretty_unit
 
 
 def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
@@ -59,11 +58,12 @@ def _motor_shown(result: Any) -> float:
 
 def _figures(result: Any, sizing: Any, run: Any) -> str:
     """Return the figures of the steady state (and start-up) as aligned lines."""
-    kgm2 = pretty_unit("kg m^2")
+    # plain ASCII, as the tables' units rows and the options' messages write units
+    kgm2 = "kg m^2"
     lines = [
         ("nominal crank speed", f"{result.omega:.6g} rad/s"),
         ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
-        ("motor torque", f"{number_text(_motor_shown(result))} N·m (constant)"),
+        ("motor torque", f"{number_text(_motor_shown(result))} N m (constant)"),
         ("coefficient of speed fluctuation", f"delta = {result.delta:.6g}"),
         (
             "largest speed",

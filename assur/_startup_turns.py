@@ -170,8 +170,8 @@ def _not_settled(
     if motor.no_load_speed is None:
         hint = (
             f"; a constant torque settles only where it balances the mean load, at "
-            f"{model.motor:.6g} N m (the motor torque of assur.dynamics), so give "
-            "the motor a no_load_speed"
+            f"{model.motor:.6g} N m (the steady state's motor torque, as assur "
+            "dynamics prints it), so give the motor a no_load_speed"
         )
     else:
         more = _turns_left(runs.crossings)

@@ -86,7 +86,8 @@ class Dynamics(Columns):
     speed_max, speed_min : float
         Largest and smallest crank speed over a turn, rad/s (magnitudes).
     angle_max, angle_min : float
-        Crank angles where they occur, deg, within the turn from the reference pose.
+        Crank angles where they occur, deg, within the turn from the reference pose
+        counter-clockwise (the default sweep's, whichever way the crank turns).
     energy_swing : float
         Largest minus smallest ``reduced.work`` over the turn, J.
     grid : int

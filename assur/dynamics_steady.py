@@ -43,7 +43,8 @@ class Steady:
     speed_max, speed_min : float
         Largest and smallest speed over a turn, rad/s (magnitudes).
     angle_max, angle_min : float
-        Crank angles where they occur, rad, within the turn from the reference pose.
+        Crank angles where they occur, rad, within the turn from the reference pose
+        counter-clockwise (that of the default sweep, whichever way the crank turns).
     """
 
     omega: float
@@ -106,7 +107,7 @@ def steady_state(model: Reduced, omega: float, flywheel: float = 0.0) -> Steady:
         return 0.5 * (fast + slow) - target
 
     if gap(lowest) > 0:
-        _comes_to_rest(model, target, rest_angle, lowest, flywheel)
+        _comes_to_rest(model, omega, rest_angle, lowest, flywheel)
     highest = 0.5 * float(np.max(inertia)) * target**2 - float(np.min(model.work))
     highest = max(highest, lowest + 1e-300)
     energy = brentq(gap, lowest, highest, xtol=1e-300, rtol=RTOL)
@@ -233,29 +234,37 @@ def _refined(
 
     if gap(bracket[0]) < 0 < gap(bracket[1]):
         energy = brentq(gap, *bracket, xtol=1e-300, rtol=RTOL)
-    start = model.start
     return Steady(
         omega,
         flywheel,
         energy,
         math.sqrt(float(square(top, energy))),
         math.sqrt(float(square(bottom, energy))),
-        (top - start) % (2.0 * math.pi) + start,
-        (bottom - start) % (2.0 * math.pi) + start,
+        on_turn(model.start, top),
+        on_turn(model.start, bottom),
     )
 
 
+def on_turn(start: float, angle: float) -> float:
+    """Return ``angle`` (rad) within the turn from ``start`` counter-clockwise.
+
+    The turn of the default sweep, whichever way the crank turns.
+    """
+    return (angle - start) % (2.0 * math.pi) + start
+
+
 def _comes_to_rest(
-    model: Reduced, target: float, angle: float, lowest: float, flywheel: float
+    model: Reduced, omega: float, angle: float, lowest: float, flywheel: float
 ) -> None:
-    """Raise: no steady state has the mean speed ``target``; the crank would stop."""
+    """Raise: no steady state has the mean speed ``|omega|``; the crank would stop."""
     top, _ = _grid_extremes(model, model.inertia + flywheel, lowest)
-    where = math.degrees((angle - model.start) % (2.0 * math.pi) + model.start)
+    where = math.degrees(on_turn(model.start, angle))
     swing = float(np.max(model.work) - np.min(model.work))
+    faster = "a larger 'omega'" if omega > 0 else "a faster 'omega' (more negative)"
     msg = (
-        f"dynamics: at a mean speed of {target:.6g} rad/s the crank would come to rest "
-        f"at crank angle {where:.6g} deg: the loads' energy swing ({swing:.6g} J) "
-        f"needs a speed of at least {0.5 * top:.6g} rad/s; expected a larger 'omega' "
-        "or a flywheel"
+        f"dynamics: at a mean speed of {abs(omega):.6g} rad/s the crank would come to "
+        f"rest at crank angle {where:.6g} deg: the loads' energy swing ({swing:.6g} "
+        f"J) needs a speed of at least {0.5 * top:.6g} rad/s; expected {faster} or a "
+        "flywheel (--flywheel or --delta on the command line)"
     )
     raise ModelError(msg)

@@ -442,6 +442,21 @@ def test_too_slow_for_its_loads():
         assur.dynamics(example("offset_slider_crank"))
 
 
+def test_too_slow_names_what_makes_it_faster_whichever_way_it_turns():
+    # "a larger 'omega'" for a crank at -25 rad/s, which needs a more negative one;
+    # the command line's user was sent to the library's arguments
+    mech = example("offset_slider_crank")
+    for sense, faster in ((1.0, "a larger 'omega'"), (-1.0, "more negative")):
+        driver = dataclasses.replace(mech.drivers[0], omega=sense * 100.0)
+        turning = dataclasses.replace(mech, drivers=(driver,))
+        with pytest.raises(assur.ModelError) as raised:
+            assur.dynamics(turning)
+        assert faster in str(raised.value)
+        assert str(raised.value).endswith(
+            "or a flywheel (--flywheel or --delta on the command line)"
+        )
+
+
 def test_no_mass_in_motion():
     with pytest.raises(assur.ModelError, match="reduced inertia is zero"):
         assur.dynamics(engine(), [0.0])

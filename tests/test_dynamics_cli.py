@@ -60,7 +60,7 @@ def test_flywheel_for_a_delta(capsys):
     )
     assert status == 0
     sizing = assur.flywheel_sizing(assur.load(WHITWORTH), 0.05)
-    assert f"{sizing.exact:.6g} kg m² (exact, for delta = 0.05)" in out
+    assert f"{sizing.exact:.6g} kg m^2 (exact, for delta = 0.05)" in out
     assert f"Wittenbauer {sizing.wittenbauer:.6g}" in out
     assert "delta = 0.05\n" in out
 
@@ -409,7 +409,7 @@ def test_a_mean_torque_of_round_off_is_printed_as_zero(capsys):
     assert abs(result.motor) * 2 * np.pi < 1e-12 * result.energy_swing
     status, out, _ = run(capsys, "dynamics", path, "--flywheel", "1", "--angles", "0")
     assert status == 0
-    assert "motor torque                          0 N·m (constant)" in out
+    assert "motor torque                          0 N m (constant)" in out
 
 
 def test_a_long_sweep_is_written_by_slices(capsys, monkeypatch, tmp_path: Path):

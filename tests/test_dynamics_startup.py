@@ -127,7 +127,8 @@ def test_a_constant_torque_above_the_load_does_not_settle():
     assert "does not settle in 20 turns" in str(caught.value)
     assert (
         "a constant torque settles only where it balances the mean load, at "
-        f"{t.motor:.6g} N m (the motor torque of assur.dynamics)" in str(caught.value)
+        f"{t.motor:.6g} N m (the steady state's motor torque, as assur "
+        "dynamics prints it)" in str(caught.value)
     )
 
 
