@@ -20,7 +20,9 @@ from assur._text import counted, describe
 from assur.errors import UsageError
 
 __all__ = [
+    "FILE_HELP",
     "MAX_POSITIONS",
+    "add_file_argument",
     "check_distinct",
     "check_not_input",
     "check_range",
@@ -310,6 +312,15 @@ def _named(text: str, what: str) -> str:
 def input_file(text: str) -> Path:
     """Return the name of a file to read as a Path; refuse an empty one."""
     return Path(given(text))
+
+
+FILE_HELP = "the mechanism file, .toml or .json"
+"""What ``--help`` says of the FILE every command reads."""
+
+
+def add_file_argument(parser: Any) -> None:
+    """Add the positional ``file``, the mechanism file every command reads."""
+    parser.add_argument("file", type=input_file, help=FILE_HELP)
 
 
 def file_name(text: str) -> Path:

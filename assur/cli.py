@@ -22,6 +22,7 @@ from typing import Any, NoReturn
 from assur import _start
 from assur._cli_common import (
     add_angle_option,
+    add_file_argument,
     check_not_input,
     file_name,
     given,
@@ -96,7 +97,7 @@ def _parser() -> tuple[_Parser, list[str]]:
     parser.add_argument("--version", action="version", version=f"assur {__version__}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     p = sub.add_parser("structure", help="degrees of freedom and Assur groups")
-    p.add_argument("file", type=input_file)
+    add_file_argument(p)
     p.add_argument(
         "--json", action="store_true", help="print JSON instead of the report"
     )
@@ -106,7 +107,7 @@ def _parser() -> tuple[_Parser, list[str]]:
         ("forces", "inertia loads, joint reactions, balancing torque"),
     ):
         p = sub.add_parser(name, help=text)
-        p.add_argument("file", type=input_file)
+        add_file_argument(p)
         p.add_argument(
             "--angles",
             metavar="START:STOP:STEP",
@@ -140,7 +141,7 @@ def _parser() -> tuple[_Parser, list[str]]:
         "every joint, balancing load, mean power, friction losses (JSON with --json)",
     )
     p = sub.add_parser("explain", help="the analysis at one position, step by step")
-    p.add_argument("file", type=input_file)
+    add_file_argument(p)
     add_angle_option(p)
     p.add_argument(
         "-o",

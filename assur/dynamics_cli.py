@@ -23,9 +23,9 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import (
+    add_file_argument,
     check_structure,
     given,
-    input_file,
     load_mechanism,
     parse_angles,
     quiet,
@@ -72,7 +72,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "dynamics",
         help="dynamic model reduced to the crank: steady state, flywheel, start-up",
     )
-    p.add_argument("file", type=input_file)
+    add_file_argument(p)
     p.add_argument(
         "--angles",
         metavar="START:STOP:STEP",

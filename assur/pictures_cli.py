@@ -22,11 +22,11 @@ import numpy as np
 
 from assur._cli_common import (
     add_angle_option,
+    add_file_argument,
     check_not_input,
     check_range,
     file_name,
     folder,
-    input_file,
     load_mechanism,
     one_position,
     positions,
@@ -160,7 +160,7 @@ def _common(
     dpi: float | None = None,
     dpi_range: tuple[float, float] = DPI_RANGE,
 ) -> None:
-    p.add_argument("file", type=input_file)
+    add_file_argument(p)
     # a file's name written as a folder's ("x.svg/") would lose its slash in a Path
     kind = folder if metavar == "DIR" else file_name
     p.add_argument(

@@ -189,6 +189,18 @@ def test_usage_error_exits_2(capsys, argv, line):
     assert err == f"assur: error: {line}\n"
 
 
+COMMANDS = ["structure", "kinematics", "forces", "explain", "dynamics"]
+COMMANDS += ["plot", "diagrams", "animate", "plans", "report"]
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_help_says_what_the_file_is(capsys, command):
+    # "positional arguments: file" alone left the reader to guess its format
+    assert main([command, "--help"]) == 0
+    out = capsys.readouterr().out
+    assert re.search(r"^\s+file\s+the mechanism file, \.toml or \.json$", out, re.M)
+
+
 # --- structure ---------------------------------------------------------------------
 
 
