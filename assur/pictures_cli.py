@@ -64,8 +64,17 @@ from assur.errors import AssurError, AssurWarning, UsageError
 
 __all__ = ["register"]
 
-FPS_RANGE = (0.1, 100.0)
-"""Frame rates accepted, frames per second (a GIF counts in hundredths of a second)."""
+FPS_RANGE = (0.1, 50.0)
+"""Frame rates accepted, frames per second.
+
+A GIF's delays are whole hundredths of a second, and browsers play a delay of 1 or
+less as 10: a faster film would play far slower than asked (60 at 10).
+"""
+FPS_WHY = (
+    "(a GIF's delays are whole hundredths of a second, and browsers play 1 or less "
+    "as 10)"
+)
+"""Why the frame rate stops at 50, as ``--fps`` says it."""
 FRAMES_RANGE = (1, 1000)
 """Numbers of frames accepted in an animation."""
 DIAGRAMS = (
@@ -133,7 +142,8 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "--fps",
         type=float,
         default=20.0,
-        help=f"frames per second (default 20, {FPS_RANGE[0]:g} to {FPS_RANGE[1]:g})",
+        help=f"frames per second (default 20, {FPS_RANGE[0]:g} to {FPS_RANGE[1]:g}: "
+        "faster GIFs play slower in browsers)",
     )
     p.add_argument("--forces", action="store_true", help="draw the loads and reactions")
     p = sub.add_parser(
@@ -320,7 +330,7 @@ def _cmd_animate(args: argparse.Namespace) -> int:
         )
         raise UsageError(msg)
     fps = check_range(
-        "--fps", args.fps, *FPS_RANGE, "a frame rate", "frames per second"
+        "--fps", args.fps, *FPS_RANGE, "a frame rate", f"frames per second {FPS_WHY}"
     )
     mech = load_mechanism(args.file)
     sweep = positions(mech, args.angles)

@@ -432,8 +432,16 @@ def test_a_long_option_is_echoed_briefly(capsys):
         ),
         (
             ["animate", "--fps", "1e-9"],
-            "--fps 1e-09: expected a frame rate from 0.1 to 100 frames per second",
+            "--fps 1e-09: expected a frame rate from 0.1 to 50 frames per second",
         ),
+        # a GIF's delays are whole hundredths of a second, and browsers play one of
+        # 1 or less as 10: 60 and 100 would play at 10 frames per second
+        (
+            ["animate", "--fps", "60"],
+            "--fps 60: expected a frame rate from 0.1 to 50 frames per second (a "
+            "GIF's delays are whole hundredths of a second",
+        ),
+        (["animate", "--fps", "100"], "--fps 100: expected a frame rate"),
         (["animate", "--fps", "1000"], "--fps 1000: expected a frame rate"),
         (["animate", "--fps", "nan"], "--fps nan: expected a frame rate"),
         (
