@@ -12,7 +12,13 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-from assur._cli_common import OTHER_SUFFIXES, check_not_input, check_range, quiet
+from assur._cli_common import (
+    OTHER_SUFFIXES,
+    check_not_input,
+    check_range,
+    quiet,
+    terminal,
+)
 from assur._output import output_path, path_text
 from assur._text import describe
 from assur.errors import UsageError
@@ -110,6 +116,11 @@ def _check_dpi(args: argparse.Namespace, bounds: tuple[float, float]) -> float:
     return check_range(
         "--dpi", args.dpi, *bounds, "a positive resolution", "dots per inch"
     )
+
+
+def _show(args: argparse.Namespace) -> bool:
+    """Whether to show progress bars: on a terminal, without ``--quiet``."""
+    return terminal() and not quiet(args)
 
 
 def _wrote(args: argparse.Namespace, text: str) -> None:

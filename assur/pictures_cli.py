@@ -6,7 +6,8 @@ closing every figure it opens; bad input raises an :class:`~assur.errors.AssurEr
 that the command line prints as one line. Every picture is written whole or not at
 all (:mod:`assur._output`), the diagrams as one set.
 Its parts: the files (``assur._picture_files``), the sweeps drawn
-(``assur._picture_sweeps``) and ``assur plans`` (``assur._picture_plans``).
+(``assur._picture_sweeps``), ``assur plans`` (``assur._picture_plans``) and
+``assur animate`` (``assur._picture_animate``).
 """
 
 from __future__ import annotations
@@ -24,16 +25,14 @@ from assur._cli_common import (
     add_angle_option,
     add_file_argument,
     check_not_input,
-    check_range,
     file_name,
     folder,
     load_mechanism,
     one_position,
     positions,
-    quiet,
-    terminal,
 )
 from assur._output import output_folder, path_text
+from assur._picture_animate import FPS_RANGE, FRAMES_RANGE, _cmd_animate
 from assur._picture_files import (
     DPI,
     DPI_RANGE,
@@ -46,6 +45,7 @@ from assur._picture_files import (
     _folder,
     _output,
     _save,
+    _show,
     _wrote,
 )
 from assur._picture_panels import motion_figure, slides_figure
@@ -53,7 +53,6 @@ from assur._picture_plans import PLANS as PLANS  # still assur.pictures_cli.PLAN
 from assur._picture_plans import _cmd_plans
 from assur._picture_sweeps import (
     _drawn,
-    _kept,
     _say_skipped,
     _skip_option,
     _sweep,
@@ -64,19 +63,6 @@ from assur.errors import AssurError, AssurWarning, UsageError
 
 __all__ = ["register"]
 
-FPS_RANGE = (0.1, 50.0)
-"""Frame rates accepted, frames per second.
-
-A GIF's delays are whole hundredths of a second, and browsers play a delay of 1 or
-less as 10: a faster film would play far slower than asked (60 at 10).
-"""
-FPS_WHY = (
-    "(a GIF's delays are whole hundredths of a second, and browsers play 1 or less "
-    "as 10)"
-)
-"""Why the frame rate stops at 50, as ``--fps`` says it."""
-FRAMES_RANGE = (1, 1000)
-"""Numbers of frames accepted in an animation."""
 DIAGRAMS = (
     "motion",
     "slides",
@@ -136,7 +122,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         default=72,
         metavar="N",
         help="at most N frames, evenly spread over the sweep (default 72, "
-        f"{FRAMES_RANGE[0]} to {FRAMES_RANGE[1]})",
+        f"{FRAMES_RANGE[0]} to {FRAMES_RANGE[1]}; at most 2 GiB of frames at --dpi)",
     )
     p.add_argument(
         "--fps",
@@ -184,11 +170,6 @@ def _common(
             help=f"resolution, dots per inch (default {dpi:g}, {dpi_range[0]:g} to "
             f"{dpi_range[1]:g})",
         )
-
-
-def _show(args: argparse.Namespace) -> bool:
-    """Whether to show progress bars: on a terminal, without ``--quiet``."""
-    return terminal() and not quiet(args)
 
 
 def _cmd_plot(args: argparse.Namespace) -> int:
@@ -316,45 +297,6 @@ def _steady(table: Any) -> Any:
     except AssurError as err:
         warnings.warn(f"no dynamics.png: {err}", AssurWarning, stacklevel=2)
         return None
-
-
-def _cmd_animate(args: argparse.Namespace) -> int:
-    from assur.plotting import animate
-
-    output = _output(args, (".gif",))
-    dpi = _check_dpi(args, GIF_DPI_RANGE)
-    if not FRAMES_RANGE[0] <= args.frames <= FRAMES_RANGE[1]:
-        msg = (
-            f"--frames {args.frames}: expected at least one frame and at most "
-            f"{FRAMES_RANGE[1]}"
-        )
-        raise UsageError(msg)
-    fps = check_range(
-        "--fps", args.fps, *FPS_RANGE, "a frame rate", f"frames per second {FPS_WHY}"
-    )
-    mech = load_mechanism(args.file)
-    sweep = positions(mech, args.angles)
-    # the whole sweep first: what cannot be assembled is counted over it, not the
-    # frames, and the frames are spread over the positions kept
-    kept, skipped = _kept(mech, sweep, args.forces, args.skip_unassembled)
-    sweep = kept[:, 0] if kept.shape[1] == 1 else kept
-    pick = np.unique(
-        np.linspace(0, len(sweep) - 1, min(args.frames, len(sweep))).round().astype(int)
-    )
-    table = _table(mech, sweep[pick], args.forces)
-    with _figures():
-        # written whole or not at all by animate itself
-        count = animate(
-            table,
-            output,
-            forces=args.forces,
-            fps=fps,
-            dpi=dpi,
-            progress=_show(args),
-        )
-    _say_skipped(args, skipped, table.plan)
-    _wrote(args, f"{path_text(output)} ({count} frames)")
-    return 0
 
 
 def _cmd_report(args: argparse.Namespace) -> int:

@@ -157,6 +157,7 @@ RANKS = {
     "assur._picture_sweeps": 12,
     "assur._picture_plans": 12,
     "assur._picture_panels": 12,
+    "assur._picture_animate": 12,
     "assur.pictures_cli": 12,
     "assur.__main__": 13,
 }

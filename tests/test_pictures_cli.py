@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 from assur.cli import main
+from assur.errors import UsageError
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
@@ -363,6 +364,42 @@ def test_animate_bad_input(
     assert status == 2
     _error_line(err, *parts)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_animate_refuses_frames_too_large_for_memory_first(
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # every frame is kept until the last is drawn: 360 at 300 dpi take 9 GB, and
+    # the system killed the command without a word
+    import assur.plotting
+
+    def drawn(*args: object, **kwargs: object) -> int:
+        msg = "a film too large for memory was drawn"
+        raise AssertionError(msg)
+
+    monkeypatch.setattr(assur.plotting, "animate", drawn)
+    out = tmp_path / "a.gif"
+    argv = ["animate", SLIDER, "-o", str(out), "--frames", "1000", "--dpi", "300"]
+    status, _, err = _run(capsys, *argv)
+    assert status == 2
+    _error_line(
+        err,
+        "--frames 1000 --dpi 300: 360 frames of up to 26.1 MB, 9.39 GB in all",
+        "expected at most 2 GiB of frames: at most 82 frames at --dpi 300",
+    )
+    assert not out.exists()
+
+
+def test_a_film_of_the_most_frames_fits_at_the_default_resolution() -> None:
+    from assur._picture_animate import FILM_BYTES, FRAMES_RANGE, _check_film
+
+    _check_film(FRAMES_RANGE[1], FRAMES_RANGE[1], 80.0)
+    _check_film(82, 82, 300.0)
+    with pytest.raises(UsageError, match="at most 82 frames at --dpi 300"):
+        _check_film(83, 83, 300.0)
+    assert FILM_BYTES == 2 * 1024**3
 
 
 # ---------------------------------------------------------------------- report

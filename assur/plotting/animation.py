@@ -30,6 +30,13 @@ __all__ = ["animate"]
 
 WIDTH = 6.0
 """Width of the drawing in every frame, in."""
+HEIGHTS = (2.0, 6.0)
+"""Least and most height of the drawing in a frame, in (it follows the sweep's
+shape between them)."""
+MARGINS = (4.2, 1.1)
+"""A frame's width and height beyond the drawing, in: the axes' numbers, the legend."""
+LARGEST_FRAME = (WIDTH + MARGINS[0], HEIGHTS[1] + MARGINS[1])
+"""Size of the largest frame, in: the most a film's frame takes at a resolution."""
 
 
 def animate(
@@ -148,8 +155,8 @@ def _film_figure(
     import matplotlib.pyplot as plt
 
     span = corners[1] - corners[0] + 0.2 * max(ctx.size, *(corners[1] - corners[0]))
-    height = float(np.clip(WIDTH * span[1] / span[0], 2.0, 6.0))
-    size = (WIDTH + 4.2, height + 1.1)
+    height = float(np.clip(WIDTH * span[1] / span[0], *HEIGHTS))
+    size = (WIDTH + MARGINS[0], height + MARGINS[1])
     fig, ax = plt.subplots(figsize=size)
     fig.subplots_adjust(
         left=0.8 / size[0],
