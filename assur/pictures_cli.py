@@ -13,9 +13,10 @@ Its parts: the files (``assur._picture_files``), the sweeps drawn
 from __future__ import annotations
 
 import argparse
+import contextlib
 import math
 import warnings
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
 
@@ -181,6 +182,13 @@ def _cmd_plot(args: argparse.Namespace) -> int:
     if args.scale is not None and not 0 < args.scale < math.inf:
         msg = f"--scale {args.scale:g}: expected a positive number of newtons per cm"
         raise UsageError(msg)
+    if args.scale is not None and not (args.forces or args.group is not None):
+        # nothing would be drawn to it: the option was silently ignored
+        msg = (
+            f"--scale {args.scale:g}: a force scale, for --forces or --group; "
+            "expected one of them with it"
+        )
+        raise UsageError(msg)
     mech = load_mechanism(args.file)
     # one position, as the rows of a sweep of one
     position = one_position(mech, args.angle)[np.newaxis]
@@ -198,7 +206,7 @@ def _cmd_plot(args: argparse.Namespace) -> int:
             )
             raise UsageError(msg)
         table = _table(mech, position, True)
-        with _figures() as plt:
+        with _figures() as plt, _scale_option(args.scale):
             fig, ax = plt.subplots(figsize=(9.0, 6.5), layout="constrained")
             draw_free_body(
                 table,
@@ -211,7 +219,7 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         _wrote(args, path_text(output))
         return 0
     table = _table(mech, position, args.forces)
-    with _figures() as plt:
+    with _figures() as plt, _scale_option(args.scale):
         fig, ax = plt.subplots(figsize=(9.0, 6.0), layout="constrained")
         draw(
             table,
@@ -223,6 +231,18 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         _save(fig, output, dpi)
     _wrote(args, path_text(output))
     return 0
+
+
+@contextlib.contextmanager
+def _scale_option(scale: float | None) -> Iterator[None]:
+    """Spell a force scale that draws the forces far too long as ``--scale``."""
+    from assur.plotting._context import ScaleError
+
+    try:
+        yield
+    except ScaleError as err:
+        msg = f"--scale {scale:g}: {err.reason}"
+        raise UsageError(msg) from None
 
 
 def _cmd_diagrams(args: argparse.Namespace) -> int:

@@ -135,6 +135,11 @@ def test_plot_two_drivers_one_angle_each(
         (["--angle", "abc"], ["--angle: cannot read 'abc'; expected a number"]),
         (["--angle", "30,40"], ["--angle 30,40: 2 values for 1 driver"]),
         (["--scale", "-5"], ["--scale -5: expected a positive number"]),
+        # nothing is drawn to a force scale without forces: it was silently ignored
+        (
+            ["--scale", "100"],
+            ["--scale 100: a force scale, for --forces or --group; expected one"],
+        ),
         (["--dpi", "0"], ["--dpi 0: expected a positive resolution"]),
     ],
 )
@@ -149,6 +154,25 @@ def test_plot_bad_options(
     assert status == 2
     assert stdout == ""
     _error_line(err, *parts)
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("scale", ["1e-300", "5e-324"])
+@pytest.mark.parametrize("what", [["--forces"], ["--group", "1"]])
+def test_plot_refuses_a_force_scale_that_draws_the_forces_far_too_long(
+    scale: str,
+    what: list[str],
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    # 1e-300 N per cm printed numpy's "overflow encountered in scalar multiply"
+    # (tests turn warnings into errors), 5e-324 a traceback
+    out = tmp_path / "m.png"
+    status, _, err = _run(
+        capsys, "plot", SLIDER, *what, "--scale", scale, "-o", str(out)
+    )
+    assert status == 2
+    _error_line(err, f"--scale {float(scale):g}: draws the largest force", "N per cm")
     assert not out.exists()
 
 

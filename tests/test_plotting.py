@@ -19,6 +19,7 @@ import pytest
 import assur
 from assur import plotting
 from assur.analysis import default_positions
+from assur.errors import UsageError
 from assur.plan import compile_plan
 
 from .test_imports import names_imported
@@ -205,6 +206,20 @@ def test_draw_forces_arrows_and_scale(slider_crank: assur.Table) -> None:
     # a reaction per joint, a balancing torque, inertia force and torque of the rod
     assert len(arrows) >= len(plan.pairs) + 3
     assert "force scale: 1 cm on the axes = 500 N" in _legend_texts(ax)
+
+
+def test_a_force_scale_that_draws_the_forces_far_too_long_is_refused(
+    slider_crank: assur.Table,
+) -> None:
+    # the mechanism a dot, and the picture's numbers overflowing at 1e-300
+    with pytest.raises(UsageError, match=r"^scale: 1e-300 draws the largest force"):
+        plotting.draw(slider_crank, angle=45.0, forces=True, scale=1e-300)
+    with pytest.raises(UsageError, match=r"expected a force scale of at least"):
+        plotting.draw_free_body(slider_crank, 0, angle=45.0, scale=1e-300)
+    plt.close("all")
+    # a thousand times the automatic length (1000 N per cm) is still drawn
+    ax = plotting.draw(slider_crank, angle=45.0, forces=True, scale=1.0)
+    assert "force scale: 1 cm on the axes = 1 N" in _legend_texts(ax)
 
 
 def test_force_arrows_carry_the_table_values(slider_crank: assur.Table) -> None:

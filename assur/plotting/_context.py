@@ -7,6 +7,7 @@ colour, the legend's entries, the travel of every slide and the size of the symb
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -17,12 +18,17 @@ from assur._text import roman, row_position
 from assur._vec import real
 from assur.columns import pretty_unit, schema
 from assur.errors import ModelError, UsageError
-from assur.plotting._style import GROUND_COLOR, PLAIN_COLOR
+from assur.plotting._style import ARROW_LENGTH, GROUND_COLOR, PLAIN_COLOR
 
 if TYPE_CHECKING:
     from assur.analysis import Table
     from assur.kinetostatics import ForceState
     from assur.plan import Plan
+
+LONGEST_ARROW = 1e4
+"""Most times the largest force may be drawn longer than the automatic scale draws
+it: beyond, the mechanism is a dot in the picture, and at 1e-300 N per cm the
+picture's numbers overflow."""
 
 Legend = list[tuple[str, str, tuple[int, ...]]]
 """Legend entries: text, colour and the bodies drawn in that colour."""
@@ -178,6 +184,46 @@ def checked_scale(scale: Any) -> float | None:
         msg = f"scale: {scale!r}; expected a force scale in N per cm, above 0"
         raise UsageError(msg)
     return value
+
+
+def fitted_scale(scale: Any, arrows: Iterable[Any], size: float) -> float | None:
+    """Return a force scale checked (see :func:`checked_scale`) against ``arrows``.
+
+    ``arrows`` are the forces drawn (their ``force``, N, or None for a couple) on a
+    drawing of ``size`` m.
+
+    Raises
+    ------
+    UsageError
+        Also for a scale that draws the largest force more than
+        :data:`LONGEST_ARROW` times longer than the automatic scale does.
+    """
+    value = checked_scale(scale)
+    if value is None:
+        return None
+    big = max(
+        (float(np.hypot(*a.force)) for a in arrows if a.force is not None),
+        default=0.0,
+    )
+    least = big / (ARROW_LENGTH * size * 100.0) / LONGEST_ARROW
+    if value < least:
+        length = big / value / 100.0
+        drawn = f"{length:.3g} m long" if math.isfinite(length) else "too long to tell"
+        reason = (
+            f"draws the largest force ({big:.3g} N) {drawn}, on a drawing {size:.3g} "
+            f"m across; expected a force scale of at least {least:.3g} N per cm"
+        )
+        msg = f"scale: {scale!r} {reason}"
+        raise ScaleError(msg, reason)
+    return value
+
+
+class ScaleError(UsageError):
+    """A force scale that draws the forces far too long; ``reason`` says how."""
+
+    def __init__(self, message: str, reason: str) -> None:
+        super().__init__(message)
+        self.reason = reason
 
 
 def _unit(table: Table, name: str) -> str:

@@ -26,7 +26,7 @@ from assur.plotting._context import (
     _Pose,
     _position_title,
     _row,
-    checked_scale,
+    fitted_scale,
 )
 from assur.plotting._forces import (
     _applied_arrows,
@@ -204,7 +204,9 @@ def draw_free_body(
     ax = _new_axes(ax, (9.0, 6.5))
     seen = _draw_mechanism(ax, ctx, pose, bodies, labels=labels, frame=False)
     arrows = _free_body_arrows(table, group_index, row)
-    scale = checked_scale(scale) or _scale(arrows, 0.8 * ctx.size)
+    scale = fitted_scale(scale, arrows, 0.8 * ctx.size) or _scale(
+        arrows, 0.8 * ctx.size
+    )
     seen += _draw_arrows(ax, ctx, arrows, scale, "values" if labels else None)
     seen += [a.at for a in arrows]
     # a journal's friction couple is in its reaction's line, tangent to this circle

@@ -22,7 +22,7 @@ from assur.plotting._context import (
     _Pose,
     _position_title,
     _row,
-    checked_scale,
+    fitted_scale,
 )
 from assur.plotting._forces import (
     _draw_arrows,
@@ -151,7 +151,7 @@ def _draw_row(
     entries = [(text, c) for text, c, _ in ctx.legend] if groups else []
     if forces:
         arrows = _overview_arrows(ctx, pose, row)
-        scale = checked_scale(scale) or _scale(arrows, ctx.size)
+        scale = fitted_scale(scale, arrows, ctx.size) or _scale(arrows, ctx.size)
         seen += _draw_arrows(ax, ctx, arrows, scale, "names" if labels else None)
         applied = any(a.kind in ("gravity", "load") for a in arrows)
         entries += [
