@@ -181,7 +181,8 @@ def draw_free_body(
         Driver position, deg (nearest row; default the first).
     ax : matplotlib Axes, optional
     scale : float, optional
-        Force scale, N per cm of drawing.
+        Force scale, N per cm of drawing; one that draws the largest force over
+        10 000 times longer than the automatic scale is refused.
     labels : bool
         Name the joints and links, and the loads with their values.
 

@@ -86,7 +86,8 @@ def draw(
         second) and balancing loads as arrows; needs a forces table.
     scale : float, optional
         Force scale, N per cm of drawing (the drawing is in metres); chosen so the
-        largest arrow is about a quarter of the mechanism by default.
+        largest arrow is about a quarter of the mechanism by default. One that
+        draws it over 10 000 times longer than that is refused.
     labels : bool
         Name the joints and links (and give the forces' values).
     groups : bool
@@ -101,7 +102,9 @@ def draw(
     ModelError
         When ``forces`` is asked of a kinematics table.
     UsageError
-        When ``angle`` is not a driver position, or has the wrong number of values.
+        When ``angle`` is not a driver position, or has the wrong number of values,
+        or for a ``scale`` that is not a number above 0 or draws the forces far too
+        long.
 
     Examples
     --------
