@@ -58,8 +58,22 @@ def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
     """Return ``-o``, checked: a known suffix and not the mechanism file."""
     path: Path = args.output
     suffix = path.suffix.lower()
+    wanted = " or ".join(allowed)
+    if str(path) == "-":
+        # "-" is standard output for tables and notes: here it had no suffix
+        what = {".gif": "an animation", ".html": "a report"}.get(allowed[0])
+        msg = (
+            f"-o -: standard output cannot take {what or 'a picture'}; expected a "
+            f"file name ending in {wanted}"
+        )
+        raise UsageError(msg)
+    if path.is_dir():
+        msg = (
+            f"-o {path_text(path)}: is a folder; expected a file name ending in "
+            f"{wanted}"
+        )
+        raise UsageError(msg)
     if suffix not in allowed:
-        wanted = " or ".join(allowed)
         msg = (
             f"-o {path_text(path)}: unknown file type {describe(suffix or '(none)')}; "
             f"expected {wanted}"
@@ -99,6 +113,12 @@ def _clear_stale(out: Path, written: list[str], ours: list[str]) -> None:
 
 def _folder(out: Path, what: str) -> Path:
     """Return ``-o``'s folder for ``what``; a file of that name is a UsageError."""
+    if str(out) == "-":
+        msg = (
+            f"-o -: standard output cannot take a folder of {what}; expected a "
+            "folder's name"
+        )
+        raise UsageError(msg)
     if out.exists() and not out.is_dir():
         msg = f"-o {path_text(out)}: is a file; expected a folder for the {what}"
         raise UsageError(msg)

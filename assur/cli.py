@@ -149,7 +149,7 @@ def _parser() -> tuple[_Parser, list[str]]:
         type=file_name,
         metavar="PATH",
         help="write the note to PATH: .md (Markdown), .html (MathML) or .tex "
-        "(LaTeX); default: Markdown on standard output",
+        "(LaTeX); default and '-': Markdown on standard output",
     )
     p.add_argument(
         "--answers",
@@ -345,6 +345,8 @@ NOTE_SUFFIXES = (".md", ".markdown", ".html", ".htm", ".tex")
 def _cmd_explain(args: argparse.Namespace) -> int:
     from assur.explain import explain, read_answers
 
+    if args.output is not None and str(args.output) == "-":
+        args.output = None  # standard output, where the note goes without -o
     if args.output is not None:
         suffix = Path(args.output).suffix.lower()
         if suffix not in NOTE_SUFFIXES:

@@ -318,6 +318,21 @@ def test_command_line_writes_markdown_html_and_latex(tmp_path: Path, capsys) -> 
     assert not (tmp_path / "n.pdf").exists()
 
 
+def test_command_line_writes_the_note_to_standard_output_for_a_dash(
+    tmp_path: Path, capsys, monkeypatch
+) -> None:
+    # "-o -" said "unknown type of note '(none)'", though the note goes there anyway
+    from assur.cli import main
+
+    monkeypatch.chdir(tmp_path)
+    assert main(["explain", str(EXERCISE), "--angle", "45"]) == 0
+    alone = capsys.readouterr().out
+    assert main(["explain", str(EXERCISE), "--angle", "45", "-o", "-"]) == 0
+    out, err = capsys.readouterr()
+    assert (out, err) == (alone, "")
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_command_line_compares_answers(capsys) -> None:
     from assur.cli import main
 

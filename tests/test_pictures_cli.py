@@ -184,6 +184,60 @@ def test_plot_unknown_suffix(
     _error_line(err, "unknown file type '.bmp'; expected .png or .svg or .pdf")
 
 
+@pytest.mark.parametrize(
+    ("command", "what", "wanted"),
+    [
+        ("plot", "a picture", ".png or .svg or .pdf"),
+        ("animate", "an animation", ".gif"),
+        ("report", "a report", ".html or .htm"),
+    ],
+)
+def test_a_picture_to_standard_output_is_refused_as_such(
+    command: str,
+    what: str,
+    wanted: str,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # "-o -" said "unknown file type '(none)'"
+    monkeypatch.chdir(tmp_path)
+    status, out, err = _run(capsys, command, SLIDER, "-o", "-")
+    assert (status, out) == (2, "")
+    _error_line(
+        err,
+        f"-o -: standard output cannot take {what}; expected a file name ending in "
+        f"{wanted}",
+    )
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("command", ["plot", "animate", "report"])
+def test_a_picture_into_a_folder_is_refused_as_such(
+    command: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # "-o FOLDER" said "unknown file type '(none)'"
+    status, _, err = _run(capsys, command, SLIDER, "-o", str(tmp_path))
+    assert status == 2
+    _error_line(err, f"-o {tmp_path}: is a folder; expected a file name ending in .")
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("command", ["diagrams", "plans"])
+def test_a_set_of_pictures_to_standard_output_is_refused(
+    command: str,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # a folder named "-" was made
+    monkeypatch.chdir(tmp_path)
+    status, _, err = _run(capsys, command, SLIDER, "-o", "-")
+    assert status == 2
+    _error_line(err, "-o -: standard output cannot take a folder of ")
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_plot_missing_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     missing = tmp_path / "nope.toml"
     status, _, err = _run(capsys, "plot", str(missing), "-o", str(tmp_path / "m.png"))
