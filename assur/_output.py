@@ -222,7 +222,8 @@ def output_folder(
 
     The writer puts a set of files (the diagrams of a sweep, say) in the yielded
     folder, which lies beside ``path``. When the block ends without an exception the
-    folder ``path`` is created if need be and every file replaces its namesake
+    folder ``path`` is created if need be (in its parent, which must be there) and
+    every file replaces its namesake
     there; otherwise none of them lands. The temporary folder is removed either way.
 
     Raises
@@ -239,9 +240,8 @@ def output_folder(
     if target.exists() and not target.is_dir():
         msg = f"{where}: is a file; expected a folder"
         raise OutputError(msg)
-    base = target
-    while not base.is_dir() and base != base.parent:
-        base = base.parent
+    # only the last folder is made, as a file's folder must be there already
+    base = target if target.is_dir() else target.parent
     with _reported(where, any_error):
         temporary = Path(
             tempfile.mkdtemp(prefix=f".{target.name[:NAME_KEPT]}.", dir=base)
@@ -249,7 +249,7 @@ def output_folder(
     try:
         with _reported(where, any_error):
             yield temporary
-            target.mkdir(parents=True, exist_ok=True)
+            target.mkdir(exist_ok=True)
             _move_all(sorted(temporary.iterdir()), target, temporary)
     finally:
         shutil.rmtree(temporary, ignore_errors=True)

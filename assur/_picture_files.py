@@ -20,8 +20,9 @@ from assur._cli_common import (
     terminal,
 )
 from assur._output import output_path, path_text
+from assur._targets import missing_folder
 from assur._text import describe
-from assur.errors import UsageError
+from assur.errors import OutputError, UsageError
 
 PICTURE_SUFFIXES = (".png", ".svg", ".pdf")
 DPI = 150
@@ -80,6 +81,11 @@ def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
         )
         raise UsageError(msg)
     check_not_input("-o", path, args.file)
+    fault = missing_folder(path)
+    if fault is not None:
+        # as the write would say, but before the analysis
+        msg = f"{path_text(path)}: cannot write the file ({fault})"
+        raise OutputError(msg)
     return path
 
 
@@ -129,6 +135,14 @@ def _folder(out: Path, what: str) -> Path:
             f"the {what}"
         )
         raise UsageError(msg)
+    fault = None if out.is_dir() else missing_folder(out)
+    if fault is not None:
+        # only the last folder is made: a misspelt parent made a whole new tree
+        msg = (
+            f"{path_text(out)}: cannot make the folder ({fault}: "
+            f"{path_text(out.parent)}); expected a folder in an existing one"
+        )
+        raise OutputError(msg)
     return out
 
 

@@ -6,6 +6,7 @@ path leads to: a regular file to replace, or a stream to write in place.
 
 from __future__ import annotations
 
+import errno
 import os
 import stat
 from typing import TYPE_CHECKING, Any
@@ -15,7 +16,7 @@ from assur.errors import OutputError
 if TYPE_CHECKING:
     from pathlib import Path
 
-__all__ = ["folder_name", "path_text"]
+__all__ = ["folder_name", "missing_folder", "path_text"]
 
 PROCESS_FILES = "/proc/"
 """The folder whose entries name a process's open files (``/dev/stdout`` leads there).
@@ -41,6 +42,27 @@ def folder_name(path: str | os.PathLike[str]) -> str | None:
     if isinstance(path, str) and path.endswith(("/", os.sep)):
         return f"the name ends with {path[-1]!r}, as a folder's"
     return None
+
+
+def missing_folder(path: str | os.PathLike[str]) -> str | None:
+    """Say why the folder that ``path`` lies in cannot hold it; None if it can.
+
+    Checked before the work, so that an output whose folder is missing stops the
+    command at once, as the write itself would after the analysis.
+
+    Examples
+    --------
+    >>> missing_folder("/no/such/folder/t.csv")
+    'No such file or directory'
+    >>> missing_folder("t.csv") is None
+    True
+    """
+    from pathlib import Path
+
+    parent = Path(path).parent
+    if parent.is_dir():
+        return None
+    return os.strerror(errno.ENOTDIR if parent.exists() else errno.ENOENT)
 
 
 def _not_a_folder(path: str | os.PathLike[str]) -> None:

@@ -301,6 +301,20 @@ def fill_folder(target: Path, error: BaseException | None) -> None:
             raise error
 
 
+def test_a_set_of_files_makes_its_folder_only_in_one_that_is_there(tmp_path: Path):
+    # a whole tree was made for a misspelt parent, where a file's folder must exist
+    with output_folder(tmp_path / "diagrams") as folder:
+        (folder / "a.png").write_bytes(b"a")
+    assert names(tmp_path / "diagrams") == {"a.png"}
+    target = tmp_path / "no" / "such" / "diagrams"
+    with (
+        pytest.raises(OutputError, match=r"diagrams: cannot write the file \(No such"),
+        output_folder(target) as folder,
+    ):
+        (folder / "a.png").write_bytes(b"a")
+    assert not (tmp_path / "no").exists()
+
+
 def test_a_set_of_files_lands_whole(tmp_path: Path):
     target = tmp_path / "diagrams"
     with output_folder(target) as folder:
@@ -366,12 +380,14 @@ def test_a_move_that_fails_midway_puts_the_old_files_back(monkeypatch, tmp_path:
     assert names(tmp_path) == {"diagrams"}
 
 
-def test_a_set_of_files_into_a_new_nested_folder(tmp_path: Path):
-    target = tmp_path / "x" / "y" / "z"
+def test_a_set_of_files_into_a_new_folder(tmp_path: Path):
+    # only the last folder is made (see above): its parent must be there
+    target = tmp_path / "x" / "y"
+    (tmp_path / "x").mkdir()
     with output_folder(target) as folder:
         (folder / "a.png").write_bytes(b"a")
     assert names(target) == {"a.png"}
-    assert names(tmp_path) == {"x"}
+    assert names(tmp_path / "x") == {"y"}
     with pytest.raises(OutputError, match=r"is a file; expected a folder"):
         fill_folder(target / "a.png", None)
 

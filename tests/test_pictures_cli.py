@@ -238,6 +238,50 @@ def test_a_set_of_pictures_to_standard_output_is_refused(
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("command", ["diagrams", "plans"])
+def test_a_folder_of_pictures_is_made_only_in_one_that_is_there(
+    command: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # the whole tree was made, where --csv no/such/t.csv is an error
+    target = tmp_path / "no" / "such" / "dir"
+    status, _, err = _run(capsys, command, SLIDER, "-o", str(target))
+    assert status == 2
+    _error_line(
+        err,
+        f"assur: error: {target}: cannot make the folder (No such file or directory: "
+        f"{target.parent}); expected a folder in an existing one",
+    )
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    ("command", "name"), [("plot", "p.png"), ("animate", "a.gif"), ("report", "r.html")]
+)
+def test_a_file_in_a_missing_folder_is_refused_before_the_analysis(
+    command: str,
+    name: str,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # found only once the report's analysis was done
+    import assur._picture_animate
+    import assur.pictures_cli
+
+    def analysed(path: object) -> None:
+        msg = "the mechanism was read"
+        raise AssertionError(msg)
+
+    for module in (assur.pictures_cli, assur._picture_animate):
+        monkeypatch.setattr(module, "load_mechanism", analysed, raising=False)
+    target = tmp_path / "no" / name
+    status, _, err = _run(capsys, command, SLIDER, "-o", str(target))
+    assert status == 2
+    assert err == (
+        f"assur: error: {target}: cannot write the file (No such file or directory)\n"
+    )
+
+
 def test_plot_missing_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     missing = tmp_path / "nope.toml"
     status, _, err = _run(capsys, "plot", str(missing), "-o", str(tmp_path / "m.png"))
