@@ -20,6 +20,7 @@ from assur._text import counted, describe
 from assur.errors import UsageError
 
 __all__ = [
+    "ANGLES_HELP",
     "FILE_HELP",
     "MAX_POSITIONS",
     "add_file_argument",
@@ -314,6 +315,12 @@ def input_file(text: str) -> Path:
     return Path(given(text))
 
 
+ANGLES_HELP = (
+    "driver positions, deg (m for a prismatic driver); default: one turn from the "
+    "reference pose in steps of 1 deg (a prismatic driver: 101 positions over +-20 "
+    "%% of the mechanism's size)"
+)
+"""What ``--help`` says of ``--angles`` (argparse reads ``%%`` as ``%``)."""
 FILE_HELP = "the mechanism file, .toml or .json"
 """What ``--help`` says of the FILE every command reads."""
 

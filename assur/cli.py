@@ -21,6 +21,7 @@ from typing import Any, NoReturn
 
 from assur import _start
 from assur._cli_common import (
+    ANGLES_HELP,
     add_angle_option,
     add_file_argument,
     check_not_input,
@@ -111,8 +112,7 @@ def _parser() -> tuple[_Parser, list[str]]:
         p.add_argument(
             "--angles",
             metavar="START:STOP:STEP",
-            help="driver positions, deg (m for a prismatic driver); default: "
-            "one turn from the reference pose in steps of 1 deg",
+            help=ANGLES_HELP,
         )
         p.add_argument(
             "--csv",

@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import (
+    ANGLES_HELP,
     add_angle_option,
     add_file_argument,
     check_not_input,
@@ -79,21 +80,17 @@ DIAGRAMS = (
 
 def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     """Add the picture commands to the ``sub`` parsers; return their handlers."""
-    angles = {
-        "metavar": "START:STOP:STEP",
-        "help": "driver positions, deg (m for a "
-        "prismatic driver); default: one turn from the reference pose",
-    }
+    angles = {"metavar": "START:STOP:STEP", "help": ANGLES_HELP}
+    forces = "draw the inertia loads, the joint reactions and the balancing load"
     p = sub.add_parser("plot", help="draw the mechanism at one driver position")
-    _common(p, "PATH", "picture to write: .png, .svg or .pdf", DPI)
+    _common(p, "PICTURE", "picture to write: .png, .svg or .pdf", DPI)
     add_angle_option(p)
+    p.add_argument("--forces", action="store_true", help=forces)
     p.add_argument(
-        "--forces",
-        action="store_true",
-        help="draw inertia loads, joint reactions and balancing load",
-    )
-    p.add_argument(
-        "--scale", type=float, metavar="N", help="force scale: N per cm on the axes"
+        "--scale",
+        type=float,
+        metavar="NPERCM",
+        help="force scale, newtons per cm on the axes (with --forces or --group)",
     )
     p.add_argument(
         "--group",
@@ -101,11 +98,15 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         metavar="N",
         help="draw the free-body diagram of Assur group N (1: the first attached)",
     )
-    p.add_argument("--no-labels", action="store_true", help="leave out the names")
+    p.add_argument(
+        "--no-labels",
+        action="store_true",
+        help="leave out the names of the joints, links and forces, and their values",
+    )
     p = sub.add_parser("diagrams", help="write PNG diagrams over a sweep to a folder")
     _common(
         p,
-        "DIR",
+        "FOLDER",
         "folder for motion.png, paths.png, decomposition.png; with prismatic "
         "pairs, slides.png; with masses or loads, torque.png, hodographs.png, "
         "shaking.png; with masses and one crank, dynamics.png",
@@ -114,7 +115,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     p.add_argument("--angles", **angles)
     _skip_option(p)
     p = sub.add_parser("animate", help="write an animated GIF of the sweep")
-    _common(p, "PATH", "GIF file to write", 80.0, GIF_DPI_RANGE)
+    _common(p, "GIF", "GIF file to write", 80.0, GIF_DPI_RANGE)
     p.add_argument("--angles", **angles)
     _skip_option(p)
     p.add_argument(
@@ -132,14 +133,14 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         help=f"frames per second (default 20, {FPS_RANGE[0]:g} to {FPS_RANGE[1]:g}: "
         "faster GIFs play slower in browsers)",
     )
-    p.add_argument("--forces", action="store_true", help="draw the loads and reactions")
+    p.add_argument("--forces", action="store_true", help=forces)
     p = sub.add_parser(
         "plans", help="velocity, acceleration and force plans, lever, instant centres"
     )
-    _common(p, "DIR", "folder for the plans, each as PNG and SVG", DPI)
+    _common(p, "FOLDER", "folder for the plans, each as PNG and SVG", DPI)
     add_angle_option(p)
     p = sub.add_parser("report", help="write an HTML report of the analysis")
-    _common(p, "PATH", "HTML file to write")
+    _common(p, "HTML", "HTML file to write")
     p.add_argument("--angles", **angles)
     return {
         "plot": _cmd_plot,
@@ -159,7 +160,7 @@ def _common(
 ) -> None:
     add_file_argument(p)
     # a file's name written as a folder's ("x.svg/") would lose its slash in a Path
-    kind = folder if metavar == "DIR" else file_name
+    kind = folder if metavar == "FOLDER" else file_name
     p.add_argument(
         "-o", "--output", type=kind, required=True, metavar=metavar, help=text
     )

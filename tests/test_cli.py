@@ -6,6 +6,7 @@ status 2 and no traceback; good input gives the report, a readable table, CSV or
 
 from __future__ import annotations
 
+import argparse
 import csv
 import io
 import json
@@ -199,6 +200,44 @@ def test_help_says_what_the_file_is(capsys, command):
     assert main([command, "--help"]) == 0
     out = capsys.readouterr().out
     assert re.search(r"^\s+file\s+the mechanism file, \.toml or \.json$", out, re.M)
+
+
+def _options(command: str) -> dict[str, argparse.Action]:
+    """Return the options of ``command`` by each of their names."""
+    from assur.cli import _parser
+
+    parser, _ = _parser()
+    sub = next(a for a in parser._actions if a.dest == "command")
+    found = {}
+    for action in sub.choices[command]._actions:
+        for name in action.option_strings:
+            found[name] = action
+    return found
+
+
+def test_the_docs_spell_every_option_as_the_help_does():
+    # the docs had --dpi D, --fps F where --help says --dpi DPI, --fps FPS
+    text = (ROOT / "docs" / "cli.rst").read_text(encoding="utf-8")
+    usage = re.findall(r"^   assur (\w+) +FILE (.*)$", text, re.M)
+    assert len(usage) == len(COMMANDS)
+    for command, line in usage:
+        options = _options(command)
+        for name, metavar in re.findall(r"(--?[\w-]+) ([A-Z][\w:.|-]*)", line):
+            shown = options[name].metavar or options[name].dest.upper()
+            assert metavar.split("|")[0] == shown, (command, name, metavar, shown)
+
+
+def test_the_options_shared_by_commands_are_told_alike():
+    sweeps = ["kinematics", "forces", "diagrams", "animate", "report"]
+    angles = {_options(c)["--angles"].help for c in sweeps}
+    assert len(angles) == 1
+    # right for a prismatic driver too, whose default is no turn
+    assert "a prismatic driver: 101 positions over +-20 %%" in angles.pop()
+    assert _options("plot")["--forces"].help == _options("animate")["--forces"].help
+    assert "values" in _options("plot")["--no-labels"].help
+    # not N, the unit of force
+    assert _options("plot")["--scale"].metavar == "NPERCM"
+    assert "newtons per cm" in _options("plot")["--scale"].help
 
 
 # --- structure ---------------------------------------------------------------------
