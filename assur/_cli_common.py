@@ -3,6 +3,7 @@
 :mod:`assur.cli` and :mod:`assur.pictures_cli` both read the mechanism file, turn
 ``--angles`` into driver positions and check their options here, so that neither
 imports the other. Faults of an option raise :class:`~assur.errors.UsageError`.
+Their arguments' types (names, numbers, FILE) are :mod:`assur._cli_types`'.
 """
 
 from __future__ import annotations
@@ -20,10 +21,7 @@ from assur._text import counted, describe
 from assur.errors import UsageError
 
 __all__ = [
-    "ANGLES_HELP",
-    "FILE_HELP",
     "MAX_POSITIONS",
-    "add_file_argument",
     "check_distinct",
     "check_not_input",
     "check_range",
@@ -36,8 +34,6 @@ __all__ = [
 
 MAX_POSITIONS = 10_000_000
 """Most driver positions one command analyses (the library takes any number)."""
-EMPTY_NAME = "expected a {what} name, got an empty one"
-"""What an option that takes a path says of an empty value (``--csv=``)."""
 
 
 def parse_angles(spec: str, drivers: int = 1, option: str = "--angles") -> np.ndarray:
@@ -285,78 +281,6 @@ def check_distinct(outputs: list[tuple[str, Any]]) -> None:
                 )
                 raise UsageError(msg)
         seen.append((option, path))
-
-
-def given(text: str) -> str:
-    """Return a file name as it is written (``-`` too); refuse an empty one.
-
-    An argparse type: ``--csv=`` (or ``--csv ''``) printed the table and wrote
-    nothing, and ``-o ''`` meant the current folder.
-
-    Raises
-    ------
-    argparse.ArgumentTypeError
-        For an empty name.
-    """
-    return _named(text, "file")
-
-
-def _named(text: str, what: str) -> str:
-    """Return ``text``; an empty one is refused as a ``what`` name (argparse)."""
-    import argparse
-
-    if text == "":
-        raise argparse.ArgumentTypeError(EMPTY_NAME.format(what=what))
-    return text
-
-
-def input_file(text: str) -> Path:
-    """Return the name of a file to read as a Path; refuse an empty one."""
-    return Path(given(text))
-
-
-ANGLES_HELP = (
-    "driver positions, deg (m for a prismatic driver); default: one turn from the "
-    "reference pose in steps of 1 deg (a prismatic driver: 101 positions over +-20 "
-    "%% of the mechanism's size)"
-)
-"""What ``--help`` says of ``--angles`` (argparse reads ``%%`` as ``%``)."""
-FILE_HELP = "the mechanism file, .toml or .json"
-"""What ``--help`` says of the FILE every command reads."""
-
-
-def add_file_argument(parser: Any) -> None:
-    """Add the positional ``file``, the mechanism file every command reads."""
-    parser.add_argument("file", type=input_file, help=FILE_HELP)
-
-
-def file_name(text: str) -> Path:
-    """Return an output file's name as a Path (an argparse type).
-
-    Raises
-    ------
-    argparse.ArgumentTypeError
-        For an empty name, or one ending with a slash, a folder's (a Path would
-        drop the slash).
-    """
-    import argparse
-
-    from assur._targets import folder_name
-
-    fault = folder_name(given(text))
-    if fault is not None:
-        msg = f"{text}: {fault}; expected a file"
-        raise argparse.ArgumentTypeError(msg)
-    return Path(text)
-
-
-def folder(text: str) -> Path:
-    """Return an output folder's name as a Path; refuse an empty one.
-
-    An empty name was the current folder, whose old pictures of the same names
-    were then replaced (and the stale ones of a set removed).
-    """
-    return Path(_named(text, "folder"))
 
 
 def quiet(args: Any) -> bool:

@@ -21,13 +21,8 @@ from typing import Any, NoReturn
 
 from assur import _start
 from assur._cli_common import (
-    ANGLES_HELP,
     add_angle_option,
-    add_file_argument,
     check_not_input,
-    file_name,
-    given,
-    input_file,
     load_mechanism,
     one_position,
     parse_angles,
@@ -42,6 +37,13 @@ from assur._cli_process import (
     _Stopped,
 )
 from assur._cli_sweep import _sweep
+from assur._cli_types import (
+    ANGLES_HELP,
+    add_file_argument,
+    file_name,
+    given,
+    input_file,
+)
 from assur._output import path_text, write_stdout
 from assur._text import describe, suggest
 from assur._troubles import SKIPPED_WHY, UNREACHED_WHY

@@ -23,13 +23,17 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import (
-    add_file_argument,
     check_structure,
-    given,
     load_mechanism,
     parse_angles,
     quiet,
     terminal,
+)
+from assur._cli_types import (
+    add_file_argument,
+    given,
+    number,
+    whole_number,
 )
 from assur._dynamics_figures import (
     _figures,
@@ -81,11 +85,11 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     )
     size = p.add_mutually_exclusive_group()
     size.add_argument(
-        "--flywheel", type=float, metavar="J", help="flywheel on the crank, kg m^2"
+        "--flywheel", type=number, metavar="J", help="flywheel on the crank, kg m^2"
     )
     size.add_argument(
         "--delta",
-        type=float,
+        type=number,
         metavar="D",
         help="find the flywheel for this coefficient of speed fluctuation",
     )
@@ -101,7 +105,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     )
     p.add_argument(
         "--turns",
-        type=int,
+        type=whole_number,
         metavar="N",
         help=f"most turns the start-up may take to settle (default {MAX_TURNS}; with "
         "--startup or --startup-csv)",

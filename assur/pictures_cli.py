@@ -23,15 +23,19 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import (
-    ANGLES_HELP,
     add_angle_option,
-    add_file_argument,
     check_not_input,
-    file_name,
-    folder,
     load_mechanism,
     one_position,
     positions,
+)
+from assur._cli_types import (
+    ANGLES_HELP,
+    add_file_argument,
+    file_name,
+    folder,
+    number,
+    whole_number,
 )
 from assur._output import output_folder, path_text
 from assur._picture_animate import FPS_RANGE, FRAMES_RANGE, _cmd_animate
@@ -88,13 +92,13 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     p.add_argument("--forces", action="store_true", help=forces)
     p.add_argument(
         "--scale",
-        type=float,
+        type=number,
         metavar="NPERCM",
         help="force scale, newtons per cm on the axes (with --forces or --group)",
     )
     p.add_argument(
         "--group",
-        type=int,
+        type=whole_number,
         metavar="N",
         help="draw the free-body diagram of Assur group N (1: the first attached)",
     )
@@ -120,7 +124,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     _skip_option(p)
     p.add_argument(
         "--frames",
-        type=int,
+        type=whole_number,
         default=72,
         metavar="N",
         help="at most N frames, evenly spread over the sweep (default 72, "
@@ -128,7 +132,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     )
     p.add_argument(
         "--fps",
-        type=float,
+        type=number,
         default=20.0,
         help=f"frames per second (default 20, {FPS_RANGE[0]:g} to {FPS_RANGE[1]:g}: "
         "faster GIFs play slower in browsers)",
@@ -167,7 +171,7 @@ def _common(
     if dpi is not None:
         p.add_argument(
             "--dpi",
-            type=float,
+            type=number,
             default=dpi,
             help=f"resolution, dots per inch (default {dpi:g}, {dpi_range[0]:g} to "
             f"{dpi_range[1]:g})",

@@ -179,6 +179,31 @@ def test_driver_option_off_the_frame(capsys):
             "'assur dynamics --help')",
         ),
         (["forcs", "x.toml"], "unknown command 'forcs'; did you mean 'forces'?"),
+        # argparse's "invalid int value: '1.5'" did not say what was expected
+        (
+            ["plot", "x.toml", "-o", "p.png", "--group", "1.5"],
+            "plot: argument --group: expected a whole number (digits only), got "
+            "'1.5' (see 'assur plot --help')",
+        ),
+        (
+            ["plot", "x.toml", "-o", "p.png", "--dpi", ""],
+            "plot: argument --dpi: expected a number, got '' (see 'assur plot --help')",
+        ),
+        (
+            ["animate", "x.toml", "-o", "a.gif", "--frames", "1e3"],
+            "animate: argument --frames: expected a whole number (digits only), got "
+            "'1e3' (see 'assur animate --help')",
+        ),
+        (
+            ["animate", "x.toml", "-o", "a.gif", "--fps", "fast"],
+            "animate: argument --fps: expected a number, got 'fast' (see 'assur "
+            "animate --help')",
+        ),
+        (
+            ["dynamics", "x.toml", "--turns", "2.5"],
+            "dynamics: argument --turns: expected a whole number (digits only), got "
+            "'2.5' (see 'assur dynamics --help')",
+        ),
     ],
 )
 def test_usage_error_exits_2(capsys, argv, line):
