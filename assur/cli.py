@@ -208,11 +208,11 @@ def _main(argv: list[str]) -> int:
     """Parse ``argv`` and run its command (see :func:`main`)."""
     parser, commands = _parser()
     argv = _joined_ranges(argv)
-    if argv and not argv[0].startswith("-") and argv[0] not in commands:
-        hint = suggest(argv[0], commands)
-        print(
-            f"assur: error: unknown command {describe(argv[0])}{hint}", file=sys.stderr
-        )
+    # the command comes first, or after the options of assur itself (-q forcse)
+    first = next((a for a in argv if a not in ("-q", "--quiet")), None)
+    if first is not None and not first.startswith("-") and first not in commands:
+        hint = suggest(first, commands)
+        print(f"assur: error: unknown command {describe(first)}{hint}", file=sys.stderr)
         return 2
     parser.command = next((a for a in argv if a in commands), "")
     handler = None

@@ -179,6 +179,11 @@ def test_driver_option_off_the_frame(capsys):
             "'assur dynamics --help')",
         ),
         (["forcs", "x.toml"], "unknown command 'forcs'; did you mean 'forces'?"),
+        # after assur's own options too: argparse's "invalid choice" had no hint
+        (
+            ["-q", "forcse", "x.toml"],
+            "unknown command 'forcse'; did you mean 'forces'?",
+        ),
         # argparse's "invalid int value: '1.5'" did not say what was expected
         (
             ["plot", "x.toml", "-o", "p.png", "--group", "1.5"],
