@@ -1,12 +1,12 @@
-"""Force arrows: the loads a picture shows, their scale and how they are drawn.
+"""Force arrows: the loads a picture shows and their scale.
 
 An :class:`_Arrow` is a force at a point or a couple; forces are drawn to a scale in
-N per cm of drawing (the drawing is in metres), couples as arcs.
+N per cm of drawing (the drawing is in metres), couples as arcs
+(:mod:`assur.plotting._arrows`).
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -18,8 +18,6 @@ from assur._vec import full
 from assur.plotting._context import _unit
 from assur.plotting._friction import shown_point
 from assur.plotting._geometry import _anchor, _nice, _public
-from assur.plotting._heads import fitted_arrow
-from assur.plotting._loadnames import name_load
 from assur.plotting._mathtext import reaction_symbol
 from assur.plotting._style import (
     ARROW_LENGTH,
@@ -32,14 +30,6 @@ from assur.plotting._style import (
 if TYPE_CHECKING:
     from assur.analysis import Table
     from assur.plotting._context import _Context, _Pose
-
-LABEL_BOX = {
-    "boxstyle": "round,pad=0.1",
-    "facecolor": "white",
-    "edgecolor": "none",
-    "alpha": 0.75,
-}
-"""Background of a force's label."""
 
 
 @dataclass(frozen=True)
@@ -334,80 +324,3 @@ def _scale(arrows: Iterable[_Arrow], size: float) -> float:
         (float(np.hypot(*a.force)) for a in arrows if a.force is not None), default=0.0
     )
     return _nice(big / (ARROW_LENGTH * size * 100.0))
-
-
-def _draw_arrows(
-    ax: Any, ctx: _Context, arrows: list[_Arrow], scale: float, text: str | None
-) -> list[np.ndarray]:
-    """Draw ``arrows`` at ``scale`` N per cm; return their extreme points.
-
-    ``text`` is ``"values"`` (name and value), ``"names"`` or None (no labels).
-    """
-    seen = []
-    tiny = 1e-9 * max([abs(a.couple or 0) for a in arrows] + [1.0])
-    for a in arrows:
-        if a.force is not None and float(np.hypot(*a.force)) > 0:
-            seen.append(_draw_force(ax, ctx, a, a.force, scale, text))
-        if a.couple is not None and abs(a.couple) > tiny:
-            seen += _draw_couple(ax, ctx, a, a.couple, text)
-    return seen
-
-
-def _draw_force(
-    ax: Any,
-    ctx: _Context,
-    a: _Arrow,
-    force: np.ndarray,
-    scale: float,
-    text: str | None,
-) -> np.ndarray:
-    """Draw the force of ``a`` (``force``) as a straight arrow; return its tip."""
-    mag = float(np.hypot(*force))
-    tip = a.at + force / (scale * 100.0)
-    # a short arrow's head shrinks with it: its direction stays readable
-    ax.add_patch(fitted_arrow([a.at, tip], 13, color=a.color, lw=1.7, zorder=6))
-    if text:
-        u = force / mag
-        words = f"{a.label} = {mag:.3g} {a.units[0]}" if text == "values" else a.label
-        label = ax.text(
-            *(tip + 0.5 * ctx.r * u),
-            words,
-            fontsize=7.5,
-            color=a.color,
-            ha="left" if u[0] >= 0 else "right",
-            va="bottom" if u[1] >= 0 else "top",
-            zorder=7,
-            bbox=LABEL_BOX,
-        )
-        name_load(label, a.at, tip)
-    return tip
-
-
-def _draw_couple(
-    ax: Any, ctx: _Context, a: _Arrow, couple: float, text: str | None
-) -> list[np.ndarray]:
-    """Draw the couple of ``a`` (``couple``) as a curved arrow; return its box."""
-    rad = (3.4 if a.kind == "balancing" else 2.3) * ctx.r
-    t = np.linspace(math.radians(-100), math.radians(150), 40)
-    if couple < 0:
-        t = t[::-1]
-    arc = a.point + rad * np.column_stack([np.cos(t), np.sin(t)])
-    # the name is read as the couple's by its arc's upper right
-    ax.add_patch(fitted_arrow(arc, 11, color=a.color, lw=1.5, zorder=6))
-    if text:
-        # the balancing torque always shows its value
-        value = text == "values" or a.kind == "balancing"
-        words = f"{a.label} = {couple:.3g} {a.units[1]}" if value else a.label
-        label = ax.text(
-            *(a.point + rad * np.array([0.7, 0.8])),
-            words,
-            fontsize=7.5,
-            color=a.color,
-            ha="left",
-            va="bottom",
-            zorder=7,
-            bbox=LABEL_BOX,
-        )
-        q = a.point + rad * np.array([math.cos(0.9), math.sin(0.9)])
-        name_load(label, q, q, arc)
-    return [a.point - rad, a.point + rad]

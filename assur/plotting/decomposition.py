@@ -17,6 +17,7 @@ from assur._style import REACTION_COLOUR
 from assur._vec import integer
 from assur.errors import ModelError, UsageError
 from assur.model import GROUND
+from assur.plotting._arrows import _draw_arrows
 from assur.plotting._axes import _frame_axes, _legend, _new_axes, fill_box
 from assur.plotting._bars import clear_bars
 from assur.plotting._context import (
@@ -31,7 +32,6 @@ from assur.plotting._context import (
 from assur.plotting._forces import (
     _applied_arrows,
     _Arrow,
-    _draw_arrows,
     _inertia_arrows,
     _reaction_arrow,
     _scale,

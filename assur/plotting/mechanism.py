@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._style import REACTION_COLOUR
+from assur.plotting._arrows import _draw_arrows
 from assur.plotting._axes import _frame_axes, _legend, _new_axes
 from assur.plotting._bars import clear_bars
 from assur.plotting._context import (
@@ -25,7 +26,6 @@ from assur.plotting._context import (
     fitted_scale,
 )
 from assur.plotting._forces import (
-    _draw_arrows,
     _overview_arrows,
     _scale,
     _scale_text,
