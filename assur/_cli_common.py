@@ -251,13 +251,18 @@ def check_table_suffix(option: str, target: Any, kind: str) -> None:
         raise UsageError(msg)
 
 
-def check_not_input(option: str, output: Any, source: Path) -> None:
-    """Refuse an output that is the mechanism file read (the same file, any name)."""
+def check_not_input(
+    option: str, output: Any, source: Path, what: str = "the mechanism file"
+) -> None:
+    """Refuse an output that is a file read (the same file, any name).
+
+    ``what`` names the file read in the message.
+    """
     if str(output) == "-":
         return
     if _same_file(output, source):
         msg = (
-            f"{option} {path_text(output)}: is the mechanism file being read; "
+            f"{option} {path_text(output)}: is {what} being read; "
             "expected another file for the output"
         )
         raise UsageError(msg)

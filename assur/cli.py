@@ -358,6 +358,9 @@ def _cmd_explain(args: argparse.Namespace) -> int:
             )
             raise UsageError(msg)
         check_not_input("-o", args.output, args.file)
+        if args.answers:
+            # the note would replace the answers it was checked against
+            check_not_input("-o", args.output, args.answers, "the answers file")
     mech = load_mechanism(args.file)
     angle = one_position(mech, args.angle)
     answers, source = None, ""

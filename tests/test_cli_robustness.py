@@ -648,3 +648,18 @@ def test_a_name_standard_output_cannot_write_is_one_error(tmp_path: Path) -> Non
     # JSON escapes them as JSON does: the names read back unchanged
     result = ascii_run("--json")
     assert "шатун.angle" in json.loads(result.stdout)["columns"]
+
+
+def test_a_note_over_its_answers_file_is_refused(tmp_path: Path, capsys):
+    # the note replaced the answers it was to be checked against
+    answers = tmp_path / "answers.md"
+    text = '[answers]\n"rod.omega" = -54.2\n'
+    answers.write_text(text)
+    line = one_error(
+        capsys, "explain", SLIDER, "--angle", "45", "--answers", answers, "-o", answers
+    )
+    assert line.endswith(
+        f"-o {answers}: is the answers file being read; expected another file for "
+        "the output"
+    )
+    assert answers.read_text() == text
