@@ -11,8 +11,8 @@ import sys
 from typing import Any
 
 from assur._cli_common import load_mechanism, positions, quiet
-from assur._troubles import SKIPPED_WHY, UNREACHED_WHY, skipped_why
-from assur.errors import AssemblyError, UsageError
+from assur._troubles import SKIPPED_WHY, UNREACHED_WHY
+from assur.errors import UsageError
 
 
 def _skip_option(p: argparse.ArgumentParser) -> None:
@@ -68,14 +68,13 @@ def _say_skipped(args: argparse.Namespace, skipped: Any, plan: Any) -> None:
 
 def _some_kept(table: Any) -> Any:
     """Return ``table``; an AssemblyError when every position was left out."""
+    from assur._skipped import Skipped
+
     if len(table) or not len(table.skipped):
         return table
-    msg = (
-        f"every position of the sweep is left out "
-        f"({skipped_why(table.plan, table.skipped)}); expected "
-        "positions where the mechanism moves"
-    )
-    raise AssemblyError(msg)
+    found = Skipped()
+    found.add(table.skipped, table.plan)
+    raise found.none_kept()
 
 
 def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:

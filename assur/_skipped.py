@@ -10,6 +10,7 @@ import numpy as np
 from assur._output import path_text
 from assur._troubles import skipped_why
 from assur._vec import Array
+from assur.errors import AssemblyError
 
 __all__ = ["Skipped"]
 
@@ -42,6 +43,14 @@ class Skipped:
         self.more |= len(rows) > room
         if plan is not None:
             self.units = tuple("deg" if d.kind == "R" else "m" for d in plan.drivers)
+
+    def none_kept(self) -> AssemblyError:
+        """Return the error of a sweep whose every position was left out."""
+        msg = (
+            f"every position of the sweep is left out ({self.why}); expected "
+            "positions where the mechanism moves"
+        )
+        return AssemblyError(msg)
 
     def note(self, source: Any) -> str:
         """Return the note naming the positions left out of ``source``'s sweep."""

@@ -126,6 +126,14 @@ def slices(
                 near.give_before_error(given[chunk:], chunk)
                 raise
         skipped.add(table.skipped, table.plan)
+        last = start + chunk >= n
+        if n and skipped.count == n and last:
+            # a table of no rows was written without a word (exit status 0),
+            # where the pictures of the same sweep stop
+            near.give()
+            raise skipped.none_kept()
+        if not len(table) and not last:
+            continue  # no rows: the outputs open with the first slice that has some
         angles = angles or _Angles(table)
         yield Slice(table, angles.carry(table))
         del table  # one slice in memory at a time

@@ -610,3 +610,30 @@ def test_one_position_out_of_the_range_says_where_the_range_is(double_rocker, ca
     # steps of 30, within the scan's step
     assert low < 30.0 < 60.0 < high < 200.0
     assert text.endswith("(--skip-unassembled leaves such positions out)")
+
+
+@pytest.mark.parametrize(
+    "outputs",
+    [["--csv", "t.csv"], ["--json"], ["--csv", "t.csv", "--parquet", "t.parquet"], []],
+)
+def test_a_sweep_with_every_position_left_out_is_an_error(
+    outputs, tmp_path, capsys, monkeypatch
+):
+    # "wrote 0 rows x 83 columns" and exit status 0, where the pictures of the same
+    # sweep stop with this error; in slices of 2, no output opens before it
+    from assur import _sliced
+
+    monkeypatch.setattr(_sliced, "CHUNK", 2)
+    if "--parquet" in outputs:
+        pytest.importorskip("pyarrow")
+    path = tmp_path / "rocker.toml"
+    assur.save(assur.catalog.four_bar(crank=0.09), path)
+    argv = ["kinematics", path, "--angles", "-15:15:10", "--skip-unassembled"]
+    argv += [str(tmp_path / a) if a.startswith("t.") else a for a in outputs]
+    text = fails(capsys, argv, path)
+    assert text.startswith("every position of the sweep is left out (where a group ")
+    assert text.endswith("; expected positions where the mechanism moves")
+    assert sorted(os.listdir(tmp_path)) == ["rocker.toml"]
+    # the summary says the same, not that it has nothing to summarise
+    text = fails(capsys, ["forces", *argv[1:5], "--summary"], path)
+    assert text.startswith("every position of the sweep is left out")
