@@ -59,6 +59,7 @@ from assur._picture_plans import PLANS as PLANS  # still assur.pictures_cli.PLAN
 from assur._picture_plans import _cmd_plans
 from assur._picture_sweeps import (
     _drawn,
+    _kept,
     _say_skipped,
     _skip_option,
     _sweep,
@@ -341,5 +342,14 @@ def _cmd_report(args: argparse.Namespace) -> int:
     )
     with _figures():
         write_report(mech, output, angles=angles)
+    # the page leaves out the positions that cannot be assembled, as
+    # --skip-unassembled does elsewhere: said here as there, not on the page alone
+    from assur._loads import compile_loads
+    from assur.plan import plan_of
+
+    plan = plan_of(mech)
+    sweep = positions(mech, args.angles) if angles is None else angles
+    _, skipped = _kept(mech, sweep, not compile_loads(plan).empty, True)
+    _say_skipped(args, skipped, plan)
     _wrote(args, path_text(output))
     return 0

@@ -573,6 +573,20 @@ def test_report_passes_the_angles(
     np.testing.assert_array_equal(fake_html[0][2], [0.0, 45.0, 90.0])
 
 
+def test_report_names_the_positions_it_leaves_out(
+    fake_html: list[tuple], tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # the page left out 123 positions of 360 without a word on the command line
+    out = tmp_path / "r.html"
+    status, stdout, err = _run(capsys, "report", TRIAD_P, "-o", str(out))
+    assert status == 0, err
+    (note,) = err.splitlines()
+    assert note.startswith(f"assur: note: {TRIAD_P}: left out 123 positions ")
+    assert stdout == f"wrote {out}\n"
+    status, _, err = _run(capsys, "-q", "report", TRIAD_P, "-o", str(out))
+    assert (status, err) == (0, "")
+
+
 def test_report_bad_suffix(
     fake_html: list[tuple], tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
