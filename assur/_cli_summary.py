@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._sliced import Slice
-from assur._text import number_text
+from assur._text import counted, number_text
 from assur._vec import Array
 
 if TYPE_CHECKING:
@@ -61,7 +61,7 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
     width = max(len(k) for k in values)
     # a whole turn's sweep ends on its first pose: the means count that pose once
     once = ", the closing pose counted once" if summary.closes() else ""
-    lines = [f"Summary over {summary.count} positions{once} ({name})"]
+    lines = [f"Summary over {counted(summary.count, 'position')}{once} ({name})"]
     for key, value in values.items():
         unit = summary.units[key]
         if key in why:

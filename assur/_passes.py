@@ -23,7 +23,7 @@ from assur._paths import PathBranches
 from assur._progress import progress
 from assur._reach import unreached
 from assur._state import CHUNK
-from assur._troubles import _unexplained
+from assur._unexplained import _unexplained
 from assur._vec import Array, Mask, gather
 from assur.errors import AssurWarning
 from assur.plan import Plan

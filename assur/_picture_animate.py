@@ -21,6 +21,7 @@ from assur._picture_files import (
     _wrote,
 )
 from assur._picture_sweeps import _kept, _say_skipped, _table
+from assur._text import counted
 from assur.errors import UsageError
 
 __all__ = ["FILM_BYTES", "FPS_RANGE", "FRAMES_RANGE", "_cmd_animate"]
@@ -79,7 +80,7 @@ def _cmd_animate(args: argparse.Namespace) -> int:
             progress=_show(args),
         )
     _say_skipped(args, skipped, table.plan)
-    _wrote(args, f"{path_text(output)} ({count} frames)")
+    _wrote(args, f"{path_text(output)} ({counted(count, 'frame')})")
     return 0
 
 

@@ -10,11 +10,18 @@ from __future__ import annotations
 
 import numpy as np
 
-from assur._text import position_text
+from assur._text import counted, position_text
 from assur._vec import Array, Mask
 from assur.plan import Plan
 
-__all__ = ["digits_apart", "position_where", "runs_text", "telling_apart"]
+__all__ = [
+    "digits_apart",
+    "failing",
+    "position_where",
+    "positions_where",
+    "runs_text",
+    "telling_apart",
+]
 
 MOST_RUNS = 6
 """Runs named in one message; more are written as an ellipsis."""
@@ -23,6 +30,20 @@ MOST_RUNS = 6
 def position_where(plan: Plan, position: Array, digits: int = 6) -> str:
     """Describe one position of the drivers (as given) for a message."""
     return position_text([d.kind for d in plan.drivers], position.tolist(), digits)
+
+
+def positions_where(plan: Plan, given: Array, mask: Mask) -> str:
+    """Return "driver position P", or "driver positions" and their runs."""
+    noun = "position" if int(np.count_nonzero(mask)) == 1 else "positions"
+    return f"driver {noun} {runs_text(plan, given, mask)}"
+
+
+def failing(count: int, total: int, verb: str = "fail") -> str:
+    """Return "3 of 72 positions fail", "1 of 72 positions fails" (``verb`` "")."""
+    said = f"{count} of {counted(total, 'position')}"
+    if not verb:
+        return said
+    return f"{said} {verb}s" if count == 1 else f"{said} {verb}"
 
 
 def telling_apart(pairs: list[tuple[Array, Array]]) -> int:

@@ -48,6 +48,7 @@ RUNS_SHOWN = 6
 """Runs of positions that a warning lists (as :mod:`assur.analysis` does)."""
 NEAR = ": near a dead centre "
 POSITIONS = " at driver positions "
+ONE_POSITION = " at driver position "
 
 
 @dataclass(frozen=True)
@@ -302,7 +303,8 @@ class _Warnings:
     def add(self, caught: list[Any], part: Array) -> None:
         """Take the warnings of one slice of positions ``part``."""
         for w in caught:
-            text = str(w.message)
+            # one position is "at driver position P": its runs are merged alike
+            text = str(w.message).replace(ONE_POSITION, POSITIONS)
             head, mark, ranges = text.rpartition(POSITIONS)
             if not (issubclass(w.category, AssurWarning) and mark and NEAR in head):
                 self.order.setdefault((w.category, text))
@@ -338,7 +340,8 @@ class _Warnings:
             kinematics(
                 self.mech, position, skip_unassembled=self.skip, columns=["angle"]
             )
-        return any(str(w.message).startswith(key) for w in caught)
+        told = (str(w.message).replace(ONE_POSITION, POSITIONS) for w in caught)
+        return any(text.startswith(key) for text in told)
 
     def give_before_error(self, rest: Array, chunk: int) -> None:
         """Issue the warnings a whole sweep gives before its error.
@@ -372,4 +375,6 @@ class _Warnings:
             runs = [r[0] if r[0] == r[-1] else f"{r[0]} to {r[-1]}" for r in found.runs]
             more = found.cut or len(runs) > RUNS_SHOWN
             text = "; ".join(runs[:RUNS_SHOWN]) + ("; ..." if more else "")
+            if len(found.runs) == 1 and found.runs[0][0] == found.runs[0][-1]:
+                key = key.replace(POSITIONS, ONE_POSITION)
             warnings.warn(key + text, AssurWarning, stacklevel=3)

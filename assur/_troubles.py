@@ -15,8 +15,14 @@ import numpy as np
 from assur._branches import branches
 from assur._paths import path_changes
 from assur._reach import beyond, reach
-from assur._runs import digits_apart, position_where, runs_text
-from assur._vec import Array, Mask, is_array
+from assur._runs import (
+    digits_apart,
+    failing,
+    position_where,
+    positions_where,
+    runs_text,
+)
+from assur._vec import Array, Mask
 from assur.errors import (
     AssemblyError,
     AssurWarning,
@@ -85,8 +91,8 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
         if mask.any() and what == "near":
             warnings.warn(
                 f"group {group}: near a dead centre (within about 2 degrees of "
-                f"transmission angle 0 or 180) at driver positions "
-                f"{runs_text(plan, given, mask)}",
+                f"transmission angle 0 or 180) at "
+                f"{positions_where(plan, given, mask)}",
                 AssurWarning,
                 stacklevel=4,
             )
@@ -135,12 +141,12 @@ def _around(plan: Plan, given: Array, group: str, mask: Mask, ok: Mask) -> str:
             last = np.flatnonzero(near)[np.argmax(ahead[near] * side)]
             stop = f"between {position_where(plan, given[last])} and {stop[7:]}"
         limits.append(stop)
+    verb, them = ("is", "it") if np.count_nonzero(mask) == 1 else ("are", "them")
     return (
-        f"group {group}: driver positions {runs_text(plan, given, mask)} are reached "
-        "turning the other way round from the reference pose "
+        f"group {group}: {positions_where(plan, given, mask)} {verb} reached turning "
+        "the other way round from the reference pose "
         f"({position_where(plan, np.array([reference]))}); the group cannot follow "
-        "the crank "
-        f"to them the short way (its branch folds {' and '.join(limits)})"
+        f"the crank to {them} the short way (its branch folds {' and '.join(limits)})"
     )
 
 
@@ -178,7 +184,7 @@ def _unreached(plan: Plan, given: Array, mask: Mask, group: str) -> str:
         )
     return (
         f"group {group}: driver position {position_where(plan, row)} {head} "
-        f"({int(mask.sum())} of {mask.shape[0]} positions): {why}; expected "
+        f"({failing(int(mask.sum()), mask.shape[0], '')}): {why}; expected "
         f"positions {_reached(plan, span)}"
     )
 
@@ -236,7 +242,7 @@ def _fail(plan: Plan, given: Array, troubles: list[Any], trouble: Any) -> NoRetu
         more = f", {total} in all" if total > count else ""
         msg = (
             f"group {trouble.group}: cannot be assembled at driver position "
-            f"{where} ({count} of {n} positions fail{more}); it assembles "
+            f"{where} ({failing(count, n)}{more}); it assembles "
             f"for {good or _none_of_them(plan)}"
         )
         locked = closes & _all_failures(troubles, n, what="locked")
@@ -247,7 +253,7 @@ def _fail(plan: Plan, given: Array, troubles: list[Any], trouble: Any) -> NoRetu
     if trouble.what == "locked":
         msg = (
             f"group {trouble.group}: its friction locks it at driver position "
-            f"{where} ({int(mask.sum())} of {n} positions): no driving load "
+            f"{where} ({failing(int(mask.sum()), n, '')}): no driving load "
             "moves it there (self-locking, or too near it to settle); "
             "expected less friction, or positions where it can be driven"
         )
@@ -274,93 +280,6 @@ def _all_failures(
         if what is None or trouble.what == what:
             bad[start : start + trouble.mask.shape[0]] |= trouble.mask
     return bad
-
-
-def _unexplained(
-    plan: Plan, given: Array, tree: Any, found: list[Any], top: int
-) -> None:
-    """Warn of values that are not finite where no failed position explains them.
-
-    An overflow or a singular force system, say; the warning names what and where.
-    """
-    arrays = _arrays(tree, top)
-    if not arrays:
-        return
-    # one sum of them all is finite when each of them is (an overflow of the sum,
-    # or inf - inf, sends the search below, which looks at each)
-    with np.errstate(invalid="ignore", over="ignore"):
-        total = arrays[0] + arrays[1] if len(arrays) > 1 else arrays[0].copy()
-        for x in arrays[2:]:
-            total += x
-    if np.isfinite(total).all():
-        return
-    explained = np.zeros(given.shape[0], dtype=bool)
-    for trouble in found:
-        if trouble.what not in NOTICES:
-            explained |= trouble.mask
-    owners = _owners(plan, tree)
-    bad = np.zeros(given.shape[0], dtype=bool)
-    named: list[str] = []
-    for owner, value in owners:
-        if is_array(value):
-            wrong = ~np.isfinite(value) & ~explained
-            if wrong.any():
-                bad |= wrong
-                if owner not in named:
-                    named.append(owner)
-    if bad.any():
-        warnings.warn(
-            f"values of {', '.join(named[:6])}{', ...' if len(named) > 6 else ''} are "
-            f"not finite at driver positions {runs_text(plan, given, bad)}, where no "
-            "group fails: the inputs are out of the range the arithmetic can follow",
-            AssurWarning,
-            stacklevel=7,
-        )
-
-
-def _arrays(tree: Any, top: int) -> list[Array]:
-    """Return the arrays a value that is not finite would reach.
-
-    NaN and inf spread from a position to its derivatives, so each link's highest
-    derivative stands for its motion; and from a reaction to the frame's loads.
-    """
-    motion, _, fields = tree
-    levels = top + 1
-    out = [
-        x
-        for entries in motion
-        for x in entries[top : 3 * levels : levels]
-        if x.__class__ is np.ndarray
-    ]
-    if fields is not None:
-        _, reactions, balancing, shaking, *_ = fields
-        for group in (*reactions.values(), balancing, shaking):
-            out += [x for x in group if x.__class__ is np.ndarray]
-    return out
-
-
-def _owners(plan: Plan, tree: Any) -> list[tuple[str, Any]]:
-    """Pair every leaf of a sweep's states with the link or joint it belongs to."""
-    motion, slide, fields = tree
-    out = [
-        (f"link {plan.bodies[b]}", x)
-        for b, entries in enumerate(motion)
-        for x in entries
-    ]
-    out += [(f"joint {name}", x) for name, values in slide.items() for x in values]
-    if fields is not None:
-        inertia, reactions, balancing, shaking, *_ = fields
-        out += [
-            (f"link {plan.bodies[b]}", x)
-            for b, values in enumerate(inertia)
-            for x in values or ()
-        ]
-        out += [
-            (f"joint {name}", x) for name, values in reactions.items() for x in values
-        ]
-        out += [("driver", x) for x in balancing]
-        out += [("shaking", x) for x in shaking]
-    return out
 
 
 def _change_points(plan: Plan, given: Array, drive: Array) -> bool:

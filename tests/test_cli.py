@@ -508,7 +508,7 @@ def test_unassembled_positions_fail(double_rocker, capsys):
     text = fails(capsys, ["forces", double_rocker, "--angles", "120"], double_rocker)
     assert text.startswith(
         "group RRR (coupler, rocker): cannot be assembled at driver "
-        "position 120 deg (1 of 1 positions fail)"
+        "position 120 deg (1 of 1 position fails)"
     )
 
 

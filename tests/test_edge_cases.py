@@ -400,7 +400,7 @@ def test_a_triad_near_a_change_point_keeps_to_its_branch(angles):
 def test_a_triad_near_a_change_point_folds_where_the_oracle_does():
     """214 deg is on the branch the forward way; 214.5 deg lies past its fold and
     is reached the other way round (as -145.5 deg), as the oracle finds."""
-    with pytest.warns(assur.AssurWarning, match=r"positions 214\.5 deg are reached"):
+    with pytest.warns(assur.AssurWarning, match=r"position 214\.5 deg is reached"):
         table = assur.kinematics(assur.load(NEAR), [214.0, 214.5, -145.5])
     path = _triad_path([214.0, 214.5, -145.5])
     assert 214.5 not in path
@@ -422,11 +422,16 @@ def test_positions_reached_the_other_way_round_are_said_once(step):
     first = angles[angles > 214.3][0]
     last = angles[angles < 240.0][-1]
     below = angles[angles < 214.3][-1]
+    reached = (
+        (f"position {first:g} deg is reached", "it")
+        if first == last
+        else (f"positions {first:g} deg to {last:g} deg are reached", "them")
+    )
     assert said[0] == (
-        "group triad (rod, plate, left_rocker, right_rocker): driver positions "
-        f"{first:g} deg to {last:g} deg are reached turning the other way round from "
-        "the reference pose (60 deg); the group cannot follow the crank to them the "
-        f"short way (its branch folds between {below:g} deg and {first:g} deg)"
+        f"group triad (rod, plate, left_rocker, right_rocker): driver {reached[0]} "
+        "turning the other way round from the reference pose (60 deg); the group "
+        f"cannot follow the crank to {reached[1]} the short way (its branch folds "
+        f"between {below:g} deg and {first:g} deg)"
     )
     # the numbers are those of the backward path, as before
     other = assur.kinematics(assur.load(NEAR), [first - 360.0])

@@ -76,6 +76,7 @@ RANKS = {
     # a sweep's troubles: errors, positions left out, warnings (change points too)
     "assur._runs": 6,
     "assur._troubles": 7,
+    "assur._unexplained": 8,
     "assur.table": 8,
     # what every table of results offers: its columns by name, and their export
     "assur._exports": 8,

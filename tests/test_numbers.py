@@ -470,7 +470,7 @@ def test_values_that_are_not_finite_without_a_failure_are_named(monkeypatch):
 
     monkeypatch.setattr(_dyad, "equilibrium", broken)
     with pytest.warns(
-        assur.AssurWarning, match=r"joint C .*not finite at driver positions 20 deg"
+        assur.AssurWarning, match=r"joint C .*not finite at driver position 20 deg"
     ) as caught:
         assur.forces(assur.catalog.slider_crank(), [10.0, 20.0, 30.0])
     assert caught[0].filename == __file__
