@@ -303,8 +303,10 @@ class _Warnings:
     def add(self, caught: list[Any], part: Array) -> None:
         """Take the warnings of one slice of positions ``part``."""
         for w in caught:
-            # one position is "at driver position P": its runs are merged alike
-            text = str(w.message).replace(ONE_POSITION, POSITIONS)
+            text = str(w.message)
+            if NEAR in text:
+                # one position is "at driver position P": its runs merged alike
+                text = text.replace(ONE_POSITION, POSITIONS)
             head, mark, ranges = text.rpartition(POSITIONS)
             if not (issubclass(w.category, AssurWarning) and mark and NEAR in head):
                 self.order.setdefault((w.category, text))
