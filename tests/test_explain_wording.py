@@ -201,6 +201,25 @@ def test_answers_undefined_here_are_not_said_to_agree() -> None:
     assert "every other given answer agrees (1 undefined here)" in note
 
 
+def test_the_given_answers_carry_their_units() -> None:
+    # the table of answers had bare numbers: rad/s, m/s^2, N and N m alike
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    given = {"rod.omega": -54.2, "B.a": 2960.0, "rod.Fi": 1282.6, "driver.torque": 5}
+    part = str(explain(mech, 45.0, answers=given)).split("7. The given answers")[1]
+    assert "| quantity | given | here | unit | difference |  |" in part
+    units = {
+        line.split(" | ")[0].strip("| "): line.split(" | ")[3]
+        for line in part.splitlines()
+        if line.startswith("| ") and "$" in line
+    }
+    assert units == {
+        "rod.omega": r"$\mathrm{rad/s}$",
+        "B.a": r"$\mathrm{m/s^2}$",
+        "rod.Fi": r"$\mathrm{N}$",
+        "driver.torque": r"$\mathrm{N\,m}$",
+    }
+
+
 def test_the_note_s_values_are_the_table_s() -> None:
     mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
     note = explain(mech, 45.0)

@@ -26,6 +26,8 @@ AGREE = 5e-4
 """Relative difference within which a given answer agrees (its printed digits)."""
 
 
+PARTS = {"v": ("vx", "vy"), "a": ("ax", "ay"), "Fi": ("Fi.x", "Fi.y")}
+"""The components of a magnitude an answer may give (a point's speed, say)."""
 MAX_ANSWERS_BYTES = 2**20
 """Largest file of given answers read, bytes (1 MiB; such a file takes a few lines)."""
 
@@ -126,7 +128,7 @@ def computed(pos: Position, key: str) -> float:
     if key in table.columns:
         return float(table[key][0])
     owner, _, what = key.rpartition(".")
-    pairs = {"v": ("vx", "vy"), "a": ("ax", "ay"), "Fi": ("Fi.x", "Fi.y")}
+    pairs = PARTS
     if what in pairs and f"{owner}.{pairs[what][0]}" in table.columns:
         x, y = (float(table[f"{owner}.{c}"][0]) for c in pairs[what])
         return math.hypot(x, y)
@@ -142,6 +144,16 @@ def computed(pos: Position, key: str) -> float:
         "link's inertia force)"
     )
     raise ModelError(msg)
+
+
+def _unit(pos: Position, key: str) -> str:
+    """Return the unit of quantity ``key`` (TeX): its column's, or its parts'."""
+    columns = pos.table.columns
+    if key not in columns:
+        owner, _, what = key.rpartition(".")
+        key = f"{owner}.{PARTS[what][0]}"
+    thin = pos.table.column(key).unit.replace(" ", "\\,")
+    return f"$\\mathrm{{{thin}}}$"
 
 
 def _slip(pos: Position, link: str, given: Mapping[str, float]) -> str | None:
@@ -196,23 +208,29 @@ def answer_blocks(
     for key, value in given.items():
         ours = computed(pos, key)
         rows.append(
-            (plain(key), f"${value:g}$", f"${num(ours)}$", *_verdict(value, ours))
+            (
+                plain(key),
+                f"${value:g}$",
+                f"${num(ours)}$",
+                _unit(pos, key),
+                *_verdict(value, ours),
+            )
         )
     blocks: list[Block] = [
         Heading(2, "7. The given answers"),
         Para(
             f"The answers of {plain(source) or 'the given solution'} against the ones "
-            f"above (they agree within {100 * AGREE:g} %, the digits such answers "
-            "are printed with):"
+            f"above (an answer within {100 * AGREE:g} % of the note's value, the "
+            "digits such answers are printed with, is taken to agree):"
         ),
-        Grid(("quantity", "given", "here", "difference", ""), tuple(rows)),
+        Grid(("quantity", "given", "here", "unit", "difference", ""), tuple(rows)),
     ]
     links = {k[: -len(".Fi")] for k in given if k.endswith(".Fi")}
     for link in sorted(links):
         text = _slip(pos, link, given)
         if text:
             blocks.append(Para(text))
-    verdicts = [r[4] for r in rows]
+    verdicts = [r[5] for r in rows]
     undefined = verdicts.count("undefined here")
     if "differs" in verdicts or undefined == len(verdicts):
         return blocks
