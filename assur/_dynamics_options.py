@@ -16,6 +16,7 @@ from assur._cli_common import (
     is_stdout,
 )
 from assur._output import path_text
+from assur._startup_checks import MOST_TURNS
 from assur.dynamics_flywheel import SMALLEST_DELTA, delta_in_range
 from assur.dynamics_model import flywheel_in_range
 from assur.errors import UsageError
@@ -29,8 +30,11 @@ def _check_options(args: argparse.Namespace) -> None:
             f"most {LARGEST:g})"
         )
         raise UsageError(msg)
-    if args.turns is not None and args.turns < 1:
-        msg = f"--turns {args.turns}: expected a whole number of turns from 1"
+    if args.turns is not None and not 1 <= args.turns <= MOST_TURNS:
+        msg = (
+            f"--turns {args.turns}: expected a whole number of turns from 1 to "
+            f"{MOST_TURNS} (each turn's samples are kept)"
+        )
         raise UsageError(msg)
     if args.turns is not None and not (args.startup or args.startup_csv is not None):
         # only the start-up counts turns: the option alone did nothing, silently

@@ -28,11 +28,23 @@ def _speed(omega0: Any) -> float:
     return number
 
 
+MOST_TURNS = 100_000
+"""Most turns a start-up may integrate: each turn's samples are kept (about 2 kB),
+and a turn takes about 10 ms, so 100 000 take some 200 MB and 20 minutes."""
+
+
 def _turns(turns: Any) -> int:
-    """Return the most turns to integrate, checked: a whole number from 1."""
+    """Return the most turns to integrate, checked: a whole number, 1 to 100 000."""
     number = integer(turns)
     if number is None or number < 1:
         msg = f"turns: expected a whole number of turns from 1, got {turns!r}"
+        raise UsageError(msg)
+    if number > MOST_TURNS:
+        # 1e11 turns were taken: decades of work, memory that runs out first
+        msg = (
+            f"turns: {number}; expected at most {MOST_TURNS} (each turn's samples "
+            "are kept): a motion that has not settled by then is told how many it needs"
+        )
         raise UsageError(msg)
     return number
 

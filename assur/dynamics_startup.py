@@ -133,7 +133,7 @@ def startup(
     omega0 : float
         Crank speed at the start, rad/s: 0 (from rest) or of the motor's sense.
     turns : int
-        Most turns to integrate.
+        Most turns to integrate, 1 to 100 000.
     progress : bool or callable
         True: a bar of the turns integrated on standard error (the command line
         shows one on a terminal); a callable ``(done, total)`` is told after each

@@ -216,6 +216,8 @@ def test_an_animation_s_options_are_checked(tmp_path, options, message):
         ({"omega0": np.array([1.0, 2.0])}, "omega0: expected a crank speed"),
         ({"turns": 0}, "turns: expected a whole number of turns from 1, got 0"),
         ({"turns": 2.5}, "turns: expected a whole number"),
+        # 1e11 turns ran for decades, keeping every turn's samples
+        ({"turns": 10**11}, r"turns: 100000000000; expected at most 100000 \("),
     ],
 )
 def test_a_start_up_s_arguments_are_checked(options, message):

@@ -371,7 +371,9 @@ def test_turns_of_the_startup(capsys, tmp_path: Path):
     line = one_error(capsys, *argv)
     assert "the motion does not settle in 3 turns" in line
     line = one_error(capsys, "dynamics", path, "--startup", "--turns", "0")
-    assert "--turns 0: expected a whole number of turns from 1" in line
+    assert "--turns 0: expected a whole number of turns from 1 to 100000" in line
+    line = one_error(capsys, "dynamics", path, "--startup", "--turns", "99999999999")
+    assert "--turns 99999999999: expected a whole number of turns from 1 to" in line
     # without a start-up the option did nothing, without a word
     line = one_error(capsys, "dynamics", path, "--delta", "0.05", "--turns", "5")
     assert line.endswith("--turns 5: expected --startup (or --startup-csv) with it")

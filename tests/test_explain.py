@@ -271,7 +271,10 @@ def test_the_lecture_s_slip_is_found() -> None:
     answers, source = read_answers(LECTURE_ANSWERS)
     note = str(explain(assur.load(EXERCISE), 45.0, answers, source))
     part = note.split("## 7. The given answers")[1]
-    assert "| rod.Fi | $1283.45$ | $1282.57$ | $\\mathrm{N}$ | $+0.069$ % | differs |" in part
+    assert (
+        "| rod.Fi | $1283.45$ | $1282.57$ | $\\mathrm{N}$ | $+0.069$ % | differs |"
+        in part
+    )
     assert "| rod.G.a | $2565.12$ | $2565.13$ |" in part
     assert "agrees" in part.split("rod.Fi")[0]
     # the lecture's product is off, not its acceleration
