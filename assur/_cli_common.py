@@ -79,18 +79,22 @@ def _one_range(text: str, option: str) -> np.ndarray:
         values = []
     if len(values) == 1 and math.isfinite(values[0]):
         return np.array(values)
-    if (
-        len(values) != 3
-        or not all(map(math.isfinite, values))
-        or values[2] == 0
-        or (values[1] - values[0]) * math.copysign(1.0, values[2]) < 0
-    ):
+    if len(values) != 3 or not all(map(math.isfinite, values)):
         msg = (
             f"{option}: cannot read {describe(text)}; expected START:STOP:STEP with a "
             "step that leads from START to STOP, or a single value"
         )
         raise UsageError(msg)
     start, stop, step = values
+    if step == 0 or (stop - start) * math.copysign(1.0, step) < 0:
+        # read, but going nowhere: "cannot read" it was
+        how = "is 0" if step == 0 else "leads away from STOP"
+        hint = f" ({-step:g} here)" if step else ""
+        msg = (
+            f"{option}: in {describe(text)} the step {how}; expected a step that "
+            f"leads from START to STOP{hint}"
+        )
+        raise UsageError(msg)
     # halves first: STOP - START may overflow where their halves do not
     count = (stop / 2 - start / 2) / step * 2
     if not count < MAX_POSITIONS:
