@@ -89,9 +89,14 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
     for (what, group), mask in notices.items():
         mask &= ok
         if mask.any() and what == "near":
+            # a triad has no one transmission angle: its equations' conditioning
+            how = (
+                "within about 2 degrees of transmission angle 0 or 180"
+                if group.split(" ")[0] in DYADS
+                else "its position equations nearly singular"
+            )
             warnings.warn(
-                f"group {group}: near a dead centre (within about 2 degrees of "
-                f"transmission angle 0 or 180) at "
+                f"group {group}: near a dead centre ({how}) at "
                 f"{positions_where(plan, given, mask)}",
                 AssurWarning,
                 stacklevel=4,
@@ -103,6 +108,8 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
     return None if ok.all() else ok
 
 
+DYADS = frozenset({"RRR", "RRP", "RPR", "PRP", "RPP"})
+"""The kinds of class II group, whose dead centres are a transmission angle's."""
 NOTICES = frozenset({"near", "other way"})
 """Troubles that are told, not failures: near a dead centre, reached the other way."""
 

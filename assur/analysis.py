@@ -42,7 +42,9 @@ __all__ = ["Columns", "Table", "default_positions", "forces", "kinematics"]
 def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
     """Return one full turn from the reference pose in steps of ``step`` degrees.
 
-    For a prismatic driver: 101 positions over +-20 % of the mechanism's size.
+    For a prismatic driver: 101 positions over +-20 % of the mechanism's size. With
+    several drivers, each its own, as many as the shortest has (a crank beside a
+    prismatic driver turns 100 steps of its turn).
     """
     plan = plan_of(mech)
     if not plan.drivers:

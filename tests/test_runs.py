@@ -183,3 +183,24 @@ def test_a_joined_run_s_start_is_written_apart_too() -> None:
     x = np.r_[np.arange(-350.0, 5.0, 1.0), 5.0, 5.00001, np.arange(6.0, 10.5, 1.0)]
     mask = (x <= -9.0) | (x >= 5.00001)
     assert _text(_crank(), x, mask).startswith("-354.99999 deg to -9 deg")
+
+
+def test_a_triad_near_a_dead_centre_is_not_told_of_a_transmission_angle() -> None:
+    # a triad has no one transmission angle: its warning is its equations' conditioning
+    from assur._kinematics import Trouble
+    from assur._troubles import _report
+
+    plan = compile_plan(assur.load(EXAMPLES / "class3.toml"))
+    given = np.array([[10.0], [11.0], [12.0]])
+    near = np.array([False, True, False])
+    for label, how in (
+        ("triad (rod, plate, left, right)", "its position equations nearly singular"),
+        ("RRR (coupler, rocker)", "within about 2 degrees of transmission angle 0"),
+    ):
+        with pytest.warns(assur.AssurWarning) as caught:
+            _report(plan, given, [(Trouble(label, "near", near), 0)], False)
+        assert str(caught[0].message) == (
+            f"group {label}: near a dead centre ({how}"
+            + (" or 180" if label.startswith("RRR") else "")
+            + ") at driver position 11 deg"
+        )
