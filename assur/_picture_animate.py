@@ -24,14 +24,11 @@ from assur._picture_sweeps import _kept, _say_skipped, _table
 from assur._text import counted
 from assur.errors import UsageError
 
-__all__ = ["FILM_BYTES", "FPS_RANGE", "FRAMES_RANGE", "_cmd_animate"]
+__all__ = ["FPS_RANGE", "FRAMES_RANGE", "_cmd_animate"]
 
 FPS_RANGE = (0.1, 50.0)
-"""Frame rates accepted, frames per second.
-
-A GIF's delays are whole hundredths of a second, and browsers play a delay of 1 or
-less as 10: a faster film would play far slower than asked (60 at 10).
-"""
+"""Frame rates accepted, frames per second (to the library's most,
+:data:`assur.plotting.animation.MOST_FPS`)."""
 FPS_WHY = (
     "(a GIF's delays are whole hundredths of a second, and browsers play 1 or less "
     "as 10)"
@@ -39,9 +36,6 @@ FPS_WHY = (
 """Why the frame rate stops at 50, as ``--fps`` says it."""
 FRAMES_RANGE = (1, 1000)
 """Numbers of frames accepted in an animation."""
-FILM_BYTES = 2 * 1024**3
-"""Most bytes of frames a film may hold: the GIF writer keeps every frame, in RGBA,
-until the last is drawn (1000 frames at 300 dpi would take 28 GB)."""
 
 
 def _cmd_animate(args: argparse.Namespace) -> int:
@@ -84,26 +78,14 @@ def _cmd_animate(args: argparse.Namespace) -> int:
     return 0
 
 
-def frame_bytes(dpi: float) -> int:
-    """Return the bytes of the largest frame at ``dpi`` dots per inch, in RGBA.
-
-    Examples
-    --------
-    >>> frame_bytes(80)
-    1853952
-    """
-    from assur.plotting.animation import LARGEST_FRAME
-
-    width, height = (round(side * dpi) for side in LARGEST_FRAME)
-    return 4 * width * height
-
-
 def _check_film(asked: int, frames: int, dpi: float) -> None:
     """Refuse ``frames`` (of the ``asked``) that would not fit in :data:`FILM_BYTES`.
 
     Found before the analysis: a film too large for memory was killed by the
     system, without a word, once its frames were drawn.
     """
+    from assur.plotting.animation import FILM_BYTES, frame_bytes
+
     size = frame_bytes(dpi)
     if frames * size <= FILM_BYTES:
         return

@@ -515,13 +515,15 @@ def test_animate_refuses_frames_too_large_for_memory_first(
 
 
 def test_a_film_of_the_most_frames_fits_at_the_default_resolution() -> None:
-    from assur._picture_animate import FILM_BYTES, FRAMES_RANGE, _check_film
+    from assur._picture_animate import FPS_RANGE, FRAMES_RANGE, _check_film
+    from assur.plotting.animation import FILM_BYTES, MOST_FPS
 
     _check_film(FRAMES_RANGE[1], FRAMES_RANGE[1], 80.0)
     _check_film(82, 82, 300.0)
     with pytest.raises(UsageError, match="at most 82 frames at --dpi 300"):
         _check_film(83, 83, 300.0)
     assert FILM_BYTES == 2 * 1024**3
+    assert FPS_RANGE[1] == MOST_FPS
 
 
 # ---------------------------------------------------------------------- report

@@ -680,6 +680,22 @@ def test_animate_needs_forces_for_arrows(tmp_path: Path, tenbar: assur.Table) ->
     assert not (tmp_path / "x.gif").exists()
 
 
+def test_animate_holds_the_command_s_bounds(tmp_path: Path) -> None:
+    # from Python a film of 10 000 rows at 300 dpi (280 GB of frames) and one at
+    # 100 fps (played at 10 in browsers) were begun
+    mech = assur.catalog.slider_crank()
+    path = tmp_path / "x.gif"
+    table = assur.kinematics(mech, [0.0, 90.0])
+    with pytest.raises(assur.UsageError, match=r"fps: 100; expected at most 50 \("):
+        plotting.animate(table, path, fps=100)
+    many = assur.kinematics(mech, np.linspace(0.0, 360.0, 10_000))
+    with pytest.raises(
+        assur.UsageError, match=r"table: 10000 frames of up to 26.1 MB, 261 GB in all"
+    ):
+        plotting.animate(many, path, dpi=300)
+    assert not path.exists()
+
+
 # ------------------------------------------- the pictures and the report agree
 
 

@@ -37,6 +37,24 @@ MARGINS = (4.2, 1.1)
 """A frame's width and height beyond the drawing, in: the axes' numbers, the legend."""
 LARGEST_FRAME = (WIDTH + MARGINS[0], HEIGHTS[1] + MARGINS[1])
 """Size of the largest frame, in: the most a film's frame takes at a resolution."""
+MOST_FPS = 50.0
+"""Fastest frame rate, frames per second: a GIF's delays are whole hundredths of a
+second, and browsers play a delay of 1 or less as 10 (a film at 60 played at 10)."""
+FILM_BYTES = 2 * 1024**3
+"""Most bytes of frames a film may hold: the GIF writer keeps every frame, in RGBA,
+until the last is drawn (1000 frames at 300 dpi would take 28 GB)."""
+
+
+def frame_bytes(dpi: float) -> int:
+    """Return the bytes of the largest frame at ``dpi`` dots per inch, in RGBA.
+
+    Examples
+    --------
+    >>> frame_bytes(80)
+    1853952
+    """
+    width, height = (round(side * dpi) for side in LARGEST_FRAME)
+    return 4 * width * height
 
 
 def animate(
@@ -73,7 +91,8 @@ def animate(
     Raises
     ------
     UsageError
-        For a ``path`` that is not a file's path, or ``fps`` or ``dpi`` not above 0.
+        For a ``path`` that is not a file's path, ``fps`` or ``dpi`` not above 0,
+        ``fps`` above 50, or frames that would take more than 2 GiB of memory.
     OutputError
         When the file cannot be written (it is written whole or not at all).
     """
@@ -84,6 +103,22 @@ def animate(
         msg = f"path: expected the GIF file's path, got {type(path).__name__}"
         raise UsageError(msg)
     fps, dpi = _above_zero("fps", fps), _above_zero("dpi", dpi)
+    if fps > MOST_FPS:
+        msg = (
+            f"fps: {fps:g}; expected at most {MOST_FPS:g} (a GIF's delays are whole "
+            "hundredths of a second, and browsers play 1 or less as 10)"
+        )
+        raise UsageError(msg)
+    film = len(table) * frame_bytes(dpi)
+    if film > FILM_BYTES:
+        # the writer keeps every frame until the last: the system killed the work
+        msg = (
+            f"table: {len(table)} frames of up to {frame_bytes(dpi) / 1e6:.3g} MB, "
+            f"{film / 1e9:.3g} GB in all, kept in memory until the last is drawn; "
+            f"expected at most {FILM_BYTES / 1024**3:g} GiB of frames (fewer rows, "
+            "or a lower dpi)"
+        )
+        raise UsageError(msg)
     if forces:
         _need_forces(table, "animate(forces=True)")
     ctx = _context(table)
