@@ -253,6 +253,25 @@ def check_table_suffix(option: str, target: Any, kind: str) -> None:
             f"name ending in {' or '.join(allowed)}"
         )
         raise UsageError(msg)
+    folder_there(target)
+
+
+def folder_there(path: Any) -> None:
+    """Refuse, before the work, a file whose folder is missing.
+
+    Raises
+    ------
+    OutputError
+        As the write would, after the analysis: "cannot write the file (No such
+        file or directory)".
+    """
+    from assur._targets import missing_folder
+    from assur.errors import OutputError
+
+    fault = missing_folder(path)
+    if fault is not None:
+        msg = f"{path_text(path)}: cannot write the file ({fault})"
+        raise OutputError(msg)
 
 
 def check_not_input(

@@ -16,6 +16,7 @@ from assur._cli_common import (
     OTHER_SUFFIXES,
     check_not_input,
     check_range,
+    folder_there,
     quiet,
     terminal,
 )
@@ -81,11 +82,7 @@ def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
         )
         raise UsageError(msg)
     check_not_input("-o", path, args.file)
-    fault = missing_folder(path)
-    if fault is not None:
-        # as the write would say, but before the analysis
-        msg = f"{path_text(path)}: cannot write the file ({fault})"
-        raise OutputError(msg)
+    folder_there(path)
     return path
 
 

@@ -658,3 +658,30 @@ def test_a_sweep_with_every_position_left_out_is_an_error(
     # the summary says the same, not that it has nothing to summarise
     text = fails(capsys, ["forces", *argv[1:5], "--summary"], path)
     assert text.startswith("every position of the sweep is left out")
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["kinematics", "--csv", "{missing}/t.csv"],
+        ["forces", "--parquet", "{missing}/t.parquet"],
+        ["dynamics", "--csv", "{missing}/d.csv"],
+        ["dynamics", "--startup-csv", "{missing}/s.csv"],
+    ],
+)
+def test_a_table_in_a_missing_folder_is_refused_before_the_analysis(
+    argv, tmp_path, capsys
+):
+    # found when the first slice was written, after the analysis (an analysis that
+    # fails, here a crank asked for a pose it cannot reach, spoke first)
+    path = tmp_path / "rocker.toml"
+    assur.save(assur.catalog.four_bar(crank=0.09), path)
+    missing = tmp_path / "no" / "such"
+    command, option, target = argv
+    target = Path(target.format(missing=missing))
+    status = main([command, str(path), "--angles", "0", option, str(target)])
+    err = capsys.readouterr().err
+    assert status == 2
+    assert err == (
+        f"assur: error: {target}: cannot write the file (No such file or directory)\n"
+    )
