@@ -80,7 +80,7 @@ def whole_number(text: str) -> int:
     try:
         return int(text)
     except ValueError:
-        msg = f"expected a whole number (digits only), got {describe(text)}"
+        msg = f"expected a whole number, got {describe(text)}"
         raise argparse.ArgumentTypeError(msg) from None
 
 

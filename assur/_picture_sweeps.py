@@ -72,9 +72,14 @@ def _some_kept(table: Any) -> Any:
 
     if len(table) or not len(table.skipped):
         return table
+    from assur._sliced import _first_failure
+    from assur.analysis import forces, kinematics
+
     found = Skipped()
     found.add(table.skipped, table.plan)
-    raise found.none_kept()
+    analyse = forces if table.force_state is not None else kinematics
+    first = table.skipped[:1]
+    raise found.none_kept(_first_failure(analyse, table.mechanism, first))
 
 
 def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:

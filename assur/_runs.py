@@ -120,20 +120,13 @@ def runs_text(plan: Plan, given: Array, mask: Mask, join: bool = False) -> str:
     if turn:
         s, e = starts[-1], ends[0]
         # the joined run told from its start a turn back, into the first run; or
-        # from the first run on into the last a turn on, where that is both
-        # nearer zero and less beyond the sweep (from 355 down to 0 deg: "195
-        # deg to -15 deg", not "555 deg to 345 deg")
-        low, high = float(given[:, 0].min()), float(given[:, 0].max())
-        back = (float(given[s, 0] - turn), float(given[e, 0]))
-        on = (float(given[s, 0]), float(given[e, 0] + turn))
-
-        def beyond(ends: tuple[float, float]) -> float:
-            return max(max(low - v, v - high) for v in ends)
-
-        def size(ends: tuple[float, float]) -> float:
-            return max(abs(v) for v in ends)
-
-        if size(on) < size(back) and beyond(on) < beyond(back):
+        # from the first run on into the last a turn on, where that is nearer
+        # zero by more than half a turn (from 355 down to 0 deg: "195 deg to -15
+        # deg", not "555 deg to 345 deg"; from -350 to 10 deg still "-355 deg to
+        # -9 deg", not "5 deg to 351 deg")
+        back = max(abs(float(given[s, 0] - turn)), abs(float(given[e, 0])))
+        on = max(abs(float(given[s, 0])), abs(float(given[e, 0] + turn)))
+        if on < back - 180.0:
             shift = (0.0, turn)
             pairs.append((given[e] + turn, given[e + 1] + turn))
         else:

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from itertools import pairwise
 from typing import Any
 
 import numpy as np
 
 from assur._output import path_text
+from assur._runs import telling_apart
+from assur._text import counted
 from assur._troubles import skipped_why
 from assur._vec import Array
 from assur.errors import AssemblyError
@@ -44,31 +47,42 @@ class Skipped:
         if plan is not None:
             self.units = tuple("deg" if d.kind == "R" else "m" for d in plan.drivers)
 
-    def none_kept(self) -> AssemblyError:
-        """Return the error of a sweep whose every position was left out."""
+    def none_kept(self, first: str = "") -> AssemblyError:
+        """Return the error of a sweep whose every position was left out.
+
+        ``first`` is the error of the sweep's first position, not left out: what
+        fails there, and where the mechanism assembles.
+        """
+        which = "the one position" if self.count == 1 else "every position"
+        lead = "there" if self.count == 1 else "at the first"
+        why = f"; {lead}, {first}" if first else ""
         msg = (
-            f"every position of the sweep is left out ({self.why}); expected "
-            "positions where the mechanism moves"
+            f"{which} of the sweep is left out ({self.why}){why}; expected positions "
+            "where the mechanism moves"
         )
         return AssemblyError(msg)
 
     def note(self, source: Any) -> str:
         """Return the note naming the positions left out of ``source``'s sweep."""
         more = ", ..." if self.more else ""
+        # neighbours written with the digits that tell them apart (a step of 1e-5
+        # deg gave "197.555" twenty times)
+        rows = [np.array(v) for v in self.values]
+        digits = telling_apart(list(pairwise(rows)))
         if len(self.units) == 1:
             # one driver: its positions, the unit once
-            shown = ", ".join(f"{v[0]:g}" for v in self.values) + more
+            shown = ", ".join(f"{v[0]:.{digits}g}" for v in self.values) + more
             shown += f" {self.units[0]}"
         else:
             # several: each position's drivers together ("129, 0.0648" read as two)
             shown = "; ".join(
                 "("
-                + ", ".join(f"{x:g} {u}" for x, u in zip(v, self.units, strict=True))
+                + ", ".join(
+                    f"{x:.{digits}g} {u}" for x, u in zip(v, self.units, strict=True)
+                )
                 + ")"
                 for v in self.values
             )
             shown += more.replace(",", ";")
-        counted = "1 position" if self.count == 1 else f"{self.count} positions"
-        return (
-            f"assur: note: {path_text(source)}: left out {counted} {self.why}: {shown}"
-        )
+        left = counted(self.count, "position")
+        return f"assur: note: {path_text(source)}: left out {left} {self.why}: {shown}"

@@ -130,15 +130,26 @@ def slices(
         last = start + chunk >= n
         if n and skipped.count == n and last:
             # a table of no rows was written without a word (exit status 0),
-            # where the pictures of the same sweep stop
+            # where the pictures of the same sweep stop; why, at the first
             near.give()
-            raise skipped.none_kept()
+            raise skipped.none_kept(_first_failure(analyse, mech, given[:1]))
         if not len(table) and not last:
             continue  # no rows: the outputs open with the first slice that has some
         angles = angles or _Angles(table)
         yield Slice(table, angles.carry(table))
         del table  # one slice in memory at a time
     near.give()
+
+
+def _first_failure(analyse: Any, mech: Any, first: Array) -> str:
+    """Return the error of the position ``first`` (one row), as the sweep gives it."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", AssurWarning)  # said by the sweep already
+        try:
+            analyse(mech, first)
+        except FAILURES as err:
+            return str(err)
+    return ""
 
 
 def _chunk(mech: Any, forces: bool) -> int:
@@ -377,6 +388,7 @@ class _Warnings:
             runs = [r[0] if r[0] == r[-1] else f"{r[0]} to {r[-1]}" for r in found.runs]
             more = found.cut or len(runs) > RUNS_SHOWN
             text = "; ".join(runs[:RUNS_SHOWN]) + ("; ..." if more else "")
-            if len(found.runs) == 1 and found.runs[0][0] == found.runs[0][-1]:
+            one = len(found.runs) == 1 and found.runs[0][0] == found.runs[0][-1]
+            if one and not found.cut:
                 key = key.replace(POSITIONS, ONE_POSITION)
             warnings.warn(key + text, AssurWarning, stacklevel=3)

@@ -43,7 +43,7 @@ def _turns(turns: Any) -> int:
         # 1e11 turns were taken: decades of work, memory that runs out first
         msg = (
             f"turns: {number}; expected at most {MOST_TURNS} (each turn's samples "
-            "are kept): a motion that has not settled by then is told how many it needs"
+            "are kept): a motion that has not settled by then is told so"
         )
         raise UsageError(msg)
     return number

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._startup_checks import MOST_TURNS
 from assur._text import counted
 from assur._vec import Array
 from assur.dynamics_reduced import Reduced
@@ -192,6 +193,9 @@ def _not_settled(
             hint = (
                 f"; at its pace it settles in about {turns + more} turns (expected "
                 "a larger 'turns', --turns on the command line)"
+                if turns + more <= MOST_TURNS
+                else f"; at its pace it settles in about {turns + more} turns, more "
+                f"than the {MOST_TURNS} a start-up may take"
             )
     msg = (
         f"startup: the motion does not settle in {counted(turns, 'turn')} (the speed, "

@@ -11,15 +11,15 @@ from __future__ import annotations
 
 import functools
 import math
-import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from assur._metres import metres
 from assur._structure import Group, Topology, decompose
 from assur._vec import Array
-from assur.errors import AssurWarning, ModelError
+from assur.errors import ModelError
 from assur.groups import compile_group
 from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan
@@ -162,7 +162,7 @@ def compile_plan(mech: Mechanism) -> Plan:
     drawn = _diameter(np.array(_drawn(mech, topo)))
     _near_enough(topo, drawn)
     _big_enough(topo, pair_at, scale)
-    _metres(drawn)
+    metres(drawn)
     context = CompileContext(
         tuple(names),
         index,
@@ -228,26 +228,6 @@ def _near_enough(topo: Topology, scale: float) -> None:
             "(move the origin near it)"
         )
         raise ModelError(msg)
-
-
-LARGE = 50.0
-"""Size of a mechanism (m) above which its lengths are likely millimetres: a drawing's
-figures copied into the file as they are."""
-
-
-def _metres(size: float) -> None:
-    """Warn of a mechanism whose size suggests lengths in millimetres, not metres.
-
-    Every length of a file is in metres (FORMAT.md): a slider-crank drawn with a
-    74 mm crank and given as 74 turns at 200 rad/s with speeds in km/s, and its
-    inertia forces are a thousand times too large, without a word otherwise.
-    """
-    if size > LARGE:
-        msg = (
-            f"joints: the mechanism is {size:.4g} m across; lengths are in metres "
-            "(SI units): if they are millimetres, divide them by 1000"
-        )
-        warnings.warn(msg, AssurWarning, stacklevel=4)
 
 
 SMALL = 1e-9

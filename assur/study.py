@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from assur import _text
 from assur._batch import CHUNK, near_change_points, summaries
 from assur._drive import positions
 from assur._progress import Callback, Progress
@@ -83,8 +84,8 @@ class Study:
         names = ", ".join(self.parameters) or "no parameters"
         n = len(self.angles)
         return (
-            f"<assur.Study: {len(self)} variants of {names}, {n} "
-            f"position{'s' if n != 1 else ''} each, {failed} failed>"
+            f"<assur.Study: {_text.counted(len(self), 'variant')} of {names}, "
+            f"{_text.counted(n, 'position')} each, {failed} failed>"
         )
 
     def tables(

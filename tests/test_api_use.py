@@ -456,3 +456,25 @@ def test_a_picture_of_the_wrong_result_is_one_usage_error(name, given, expected)
     }
     with pytest.raises(assur.UsageError, match=f"expected {expected}"):
         getattr(assur.plotting, name)(results[given]())
+
+
+def test_a_picture_of_a_table_with_no_rows_is_one_usage_error() -> None:
+    # numpy's "zero-size array to reduction operation fmin" came out of the drawing
+    import assur.plotting
+
+    mech = assur.load(
+        Path(__file__).parent / "data" / "edge" / "shaper_two_groups_fail.toml"
+    )
+    empty = assur.kinematics(mech, [250.0, 260.0], skip_unassembled=True)
+    assert len(empty) == 0
+    for draw in (
+        assur.plotting.draw,
+        assur.plotting.plot_motion,
+        assur.plotting.plot_paths,
+    ):
+        with pytest.raises(
+            assur.UsageError,
+            match=r"the table has no rows \(every position was left out\); expected "
+            "at least one to draw",
+        ):
+            draw(empty)

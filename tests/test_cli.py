@@ -208,7 +208,7 @@ def test_driver_option_off_the_frame(capsys):
         # argparse's "invalid int value: '1.5'" did not say what was expected
         (
             ["plot", "x.toml", "-o", "p.png", "--group", "1.5"],
-            "plot: argument --group: expected a whole number (digits only), got "
+            "plot: argument --group: expected a whole number, got "
             "'1.5' (see 'assur plot --help')",
         ),
         (
@@ -217,7 +217,7 @@ def test_driver_option_off_the_frame(capsys):
         ),
         (
             ["animate", "x.toml", "-o", "a.gif", "--frames", "1e3"],
-            "animate: argument --frames: expected a whole number (digits only), got "
+            "animate: argument --frames: expected a whole number, got "
             "'1e3' (see 'assur animate --help')",
         ),
         (
@@ -227,7 +227,7 @@ def test_driver_option_off_the_frame(capsys):
         ),
         (
             ["dynamics", "x.toml", "--turns", "2.5"],
-            "dynamics: argument --turns: expected a whole number (digits only), got "
+            "dynamics: argument --turns: expected a whole number, got "
             "'2.5' (see 'assur dynamics --help')",
         ),
     ],
@@ -653,11 +653,20 @@ def test_a_sweep_with_every_position_left_out_is_an_error(
     argv += [str(tmp_path / a) if a.startswith("t.") else a for a in outputs]
     text = fails(capsys, argv, path)
     assert text.startswith("every position of the sweep is left out (where a group ")
+    # and why, at the first: the group, the position and where it assembles
+    assert "friction); at the first, group RRR (coupler, rocker): cannot be " in text
+    assert " deg (1 of 1 position fails); it assembles for none of them" in text
     assert text.endswith("; expected positions where the mechanism moves")
     assert sorted(os.listdir(tmp_path)) == ["rocker.toml"]
     # the summary says the same, not that it has nothing to summarise
     text = fails(capsys, ["forces", *argv[1:5], "--summary"], path)
     assert text.startswith("every position of the sweep is left out")
+    # one position is the one
+    text = fails(
+        capsys, ["kinematics", path, "--angles", "0", "--skip-unassembled"], path
+    )
+    assert text.startswith("the one position of the sweep is left out (")
+    assert "friction); there, group RRR (coupler, rocker): cannot be " in text
 
 
 @pytest.mark.parametrize(

@@ -682,6 +682,10 @@ def test_the_note_of_positions_left_out_tells_each_driver_s_with_its_unit():
         "108, 109, 110, 111, 112, 113, 114, 115, 116, "
         "117, 118, 119, ... deg"
     )
+    # neighbours a step of 1e-5 deg apart: "197.555" twenty times, before
+    close = Skipped()
+    close.add(197.55453 + 1e-5 * np.arange(3.0), crank)
+    assert close.note("m.toml").endswith(": 197.55453, 197.55454, 197.55455 deg")
     single = Skipped()
     single.add(np.array([[200.0]]), crank)
     assert ": left out 1 position " in single.note("m.toml")

@@ -49,6 +49,7 @@ RANKS = {
     "assur._structure": 2,
     "assur.report": 2,
     "assur.groups": 3,
+    "assur._metres": 3,
     "assur.plan": 4,
     "assur._loads": 5,
     "assur._friction": 5,

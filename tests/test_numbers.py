@@ -555,8 +555,11 @@ def test_a_mechanism_drawn_in_millimetres_is_warned_of():
     # the exercise's figures copied from the drawing as they are (crank 74, rod 200):
     # every speed would be in mm/s labelled m/s, every inertia force 1000 times too big
     mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
-    with pytest.warns(assur.AssurWarning, match=r"245\.4 m across.*millimetres"):
+    with pytest.warns(
+        assur.AssurWarning, match=r"245\.4 m across.*millimetres"
+    ) as caught:
         assur.forces(assur.io.parse(scaled(mech, 1000.0)), [30.0])
+    assert caught[0].filename == __file__  # the user's line, not the package's
     # the same mechanism in metres, and one 39 m across (a crane's), are not
     with warnings.catch_warnings():
         warnings.simplefilter("error")

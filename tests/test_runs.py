@@ -42,6 +42,8 @@ def _between(x: np.ndarray, low: float, high: float) -> np.ndarray:
         (40.0, -320.0, -1.0, "41 deg to -11 deg"),
         # from 355 down to 0 deg: not "555 deg to 345 deg"
         (355.0, -1.0, -5.0, "40 deg to -10 deg"),
+        # from 360 down to 0: the mirror of the sweep up, not "401 deg to 349 deg"
+        (360.0, -1.0, -1.0, "41 deg to -11 deg"),
         # less than a turn: two runs
         (40.0, 390.0, 1.0, "40 deg to 41 deg; 349 deg to 389 deg"),
     ],

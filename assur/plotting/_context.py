@@ -273,6 +273,11 @@ def whole(table: Any, what: str) -> None:
             f"{type(table).__name__}"
         )
         raise UsageError(msg)
+    if not len(table):
+        # numpy's "zero-size array to reduction operation" came out of the drawing
+        left = " (every position was left out)" if len(table.skipped) else ""
+        msg = f"{what}: the table has no rows{left}; expected at least one to draw"
+        raise UsageError(msg)
 
 
 def _revolute(table: Table) -> bool:
