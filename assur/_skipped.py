@@ -50,8 +50,8 @@ class Skipped:
     def none_kept(self, first: str = "") -> AssemblyError:
         """Return the error of a sweep whose every position was left out.
 
-        ``first`` is the error of the sweep's first position, not left out: what
-        fails there, and where the mechanism assembles.
+        ``first`` is the error the sweep's first position gives when it is not
+        left out: what fails there, and where the mechanism assembles.
         """
         which = "the one position" if self.count == 1 else "every position"
         lead = "there" if self.count == 1 else "at the first"

@@ -67,10 +67,10 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
     n = given.shape[0]
     failures = [trouble for trouble, _ in troubles if trouble.what not in NOTICES]
     if failures and not skip:
-        # the sweep's first failing position, friction's locking last (a failure
-        # to assemble tells where friction locks too), whichever group
-        # fails there (the lever's dyad was named at 270 deg where the ram's
-        # failed from 200 deg)
+        # the sweep's first failing position, whichever group fails there (the
+        # lever's dyad was named at 270 deg where the ram's failed from 200 deg);
+        # friction's locking after any other failure, whose message tells where
+        # friction locks too
         def rank(t: Any) -> tuple[bool, int]:
             first = np.argmax(_all_failures(troubles, n, t.group, t.what))
             return t.what == "locked", int(first)
