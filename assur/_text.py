@@ -214,20 +214,25 @@ def listing(names: Sequence[str], limit: int = 6) -> str:
 def position_text(
     kinds: Sequence[str], values: Sequence[float], digits: int = 6
 ) -> str:
-    """Return driver positions for a message: "30 deg" or "0.1 m", comma-separated.
+    """Return driver positions for a message: "30 deg", "0.1 m" or several's.
 
     ``kinds`` holds each driver's pair kind ("R" or "P"), ``values`` its position in
-    the user's units (deg, or m), written to ``digits`` significant digits.
+    the user's units (deg, or m), written to ``digits`` significant digits. Several
+    drivers' are one position in parentheses: "(30 deg, 0.125 m)", so that a run
+    "(178 deg, 238 deg) to (179 deg, 239 deg)" reads as two positions, not four.
 
     Examples
     --------
     >>> position_text(["R", "P"], [30.0, 0.125])
-    '30 deg, 0.125 m'
+    '(30 deg, 0.125 m)'
+    >>> position_text(["R"], [30.0])
+    '30 deg'
     """
-    return ", ".join(
+    text = ", ".join(
         f"{x:.{digits}g} deg" if kind == "R" else f"{x:.{digits}g} m"
         for kind, x in zip(kinds, values, strict=False)
     )
+    return f"({text})" if len(values) > 1 else text
 
 
 def position_title(

@@ -549,8 +549,9 @@ def test_the_warning_names_the_positions_whose_path_meets_a_change_point():
     with pytest.warns(assur.AssurWarning) as caught:
         assur.kinematics(assur.load(FIVE_PARALLELOGRAM), angles)
     (message,) = [str(w.message) for w in caught]
-    assert "driver positions 195 deg, 195 deg to 420 deg, 420 deg (a change point)" in (
-        message
+    assert (
+        "driver positions (195 deg, 195 deg) to (420 deg, 420 deg) (a change point)"
+        in message
     )
 
 

@@ -51,8 +51,8 @@ def test_a_dyad_after_a_triad_on_two_cranks_stays_a_parallelogram():
     assert len(changes) == 1, said
     assert changes[0].startswith(
         "group RRR (pc, po): its two assembly branches meet on the straight path "
-        "from the reference pose to driver positions 90 deg, 80 deg to 90 deg, "
-        "265 deg (a change point)"
+        "from the reference pose to driver positions (90 deg, 80 deg) to (90 deg, "
+        "265 deg) (a change point)"
     ), changes
 
 
