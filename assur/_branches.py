@@ -278,5 +278,14 @@ def branches(
         branch = _branch(plan.solvers[g], points, x, ref)
         if np.any(branch != plan.solvers[g].branch):
             out[g] = branch
-        passed += [(g, float(c)) for c in points if lo <= c <= hi]
+        # passed: a position lies beyond it from the reference pose (a sweep that
+        # ends on a change point, or one position there, was told the motion is
+        # carried through it, then stopped at its dead centre)
+        # a change point is found to about 1e-8 (rad, or of the mechanism's size)
+        tol = 1e-6 * (1.0 if plan.drivers[0].kind == "R" else plan.scale)
+        passed += [
+            (g, float(c))
+            for c in points
+            if (ref - tol <= c < hi - tol) or (lo + tol < c <= ref + tol)
+        ]
     return out, passed

@@ -8,6 +8,7 @@ copies) only on the branch the change points give it.
 from __future__ import annotations
 
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -80,3 +81,18 @@ def test_the_last_dyads_change_points_are_said(swept):
     changes = [s for s in said if s.startswith("group RRR (pc2, po2)")]
     for where in ("-131.875", "120.016"):
         assert any(f"position {where} deg (a change point)" in s for s in changes), said
+
+
+@pytest.mark.parametrize("angles", [[180.0], [90.0, 135.0, 180.0], [250.0, 180.0]])
+def test_a_sweep_ending_on_a_change_point_is_not_told_it_is_carried_through(angles):
+    # at 180 deg alone: "the motion is carried through onto the branch whose
+    # velocities are continuous", then the error of the dead centre there
+    docs = Path(__file__).parent.parent / "docs" / "files" / "errors"
+    mech = assur.load(docs / "parallelogram.toml")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        with pytest.raises(assur.SingularConfigurationError, match="180 deg"):
+            assur.kinematics(mech, angles)
+    carried = [str(w.message) for w in caught if "carried through" in str(w.message)]
+    # 250 deg lies past the change point: carried through to it, rightly said
+    assert len(carried) == (1 if 250.0 in angles else 0), carried
