@@ -19,6 +19,8 @@ __all__ = ["Skipped"]
 
 SKIPPED_SHOWN = 20
 """Positions left out that the note lists."""
+EXPECTED = "; expected positions where the mechanism moves"
+"""What a sweep with no position kept expects."""
 
 
 @dataclass
@@ -56,11 +58,11 @@ class Skipped:
         which = "the one position" if self.count == 1 else "every position"
         lead = "there" if self.count == 1 else "at the first"
         why = f"; {lead}, {first}" if first else ""
-        msg = (
-            f"{which} of the sweep is left out ({self.why}){why}; expected positions "
-            "where the mechanism moves"
+        # one "expected": the first position's error may say what it expects
+        expected = "" if "; expected" in first else EXPECTED
+        return AssemblyError(
+            f"{which} of the sweep is left out ({self.why}){why}{expected}"
         )
-        return AssemblyError(msg)
 
     def note(self, source: Any) -> str:
         """Return the note naming the positions left out of ``source``'s sweep."""

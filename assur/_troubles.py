@@ -91,7 +91,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
         if mask.any() and what == "near":
             # a triad has no one transmission angle: its equations' conditioning
             how = (
-                "within about 2 degrees of transmission angle 0 or 180"
+                "within about 2 degrees of transmission angle 0 or 180 deg"
                 if group.split(" ")[0] in DYADS
                 else "its position equations nearly singular"
             )
@@ -196,15 +196,20 @@ def _unreached(plan: Plan, given: Array, mask: Mask, group: str) -> str:
     )
 
 
-def _none_of_them(plan: Plan) -> str:
-    """Say that no position given assembles, and where the mechanism does.
+def _none_of_them(plan: Plan, n: int) -> str:
+    """Say that none of the ``n`` positions given assembles, and where it does.
 
-    One position asked for (``assur plot --angle 350``) said "none of them" alone.
+    One position asked for (``assur plot --angle 350``) said "it assembles for
+    none of them" alone.
     """
     span = reach(plan) if len(plan.drivers) == 1 else None
     if span is None:
-        return "none of them"
-    return f"none of them: the mechanism reaches positions {_reached(plan, span)}"
+        alone = "it does not assemble there"
+        return alone if n == 1 else "it assembles for none of them"
+    where = _reached(plan, span)
+    if n == 1:
+        return f"the mechanism reaches only positions {where}"
+    return f"it assembles for none of them: the mechanism reaches positions {where}"
 
 
 def _reached_at(plan: Plan, x: float) -> str:
@@ -249,8 +254,8 @@ def _fail(plan: Plan, given: Array, troubles: list[Any], trouble: Any) -> NoRetu
         more = f", {total} in all" if total > count else ""
         msg = (
             f"group {trouble.group}: cannot be assembled at driver position "
-            f"{where} ({failing(count, n)}{more}); it assembles "
-            f"for {good or _none_of_them(plan)}"
+            f"{where} ({failing(count, n)}{more}); "
+            + (f"it assembles for {good}" if good else _none_of_them(plan, n))
         )
         locked = closes & _all_failures(troubles, n, what="locked")
         if locked.any():

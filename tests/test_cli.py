@@ -618,10 +618,11 @@ def test_version(capsys):
 
 
 def test_one_position_out_of_the_range_says_where_the_range_is(double_rocker, capsys):
-    # "it assembles for none of them" was all a student got for --angle 200
+    # "it assembles for none of them" was all a student got for --angle 200 (and
+    # "none of them" is not said of one position)
     text = fails(capsys, ["forces", double_rocker, "--angles", "200"], double_rocker)
     found = re.search(
-        r"it assembles for none of them: the mechanism reaches positions from about "
+        r"\(1 of 1 position fails\); the mechanism reaches only positions from about "
         r"(\S+) deg to (\S+) deg \(or whole turns from them\)",
         text,
     )
@@ -655,7 +656,7 @@ def test_a_sweep_with_every_position_left_out_is_an_error(
     assert text.startswith("every position of the sweep is left out (where a group ")
     # and why, at the first: the group, the position and where it assembles
     assert "friction); at the first, group RRR (coupler, rocker): cannot be " in text
-    assert " deg (1 of 1 position fails); it assembles for none of them" in text
+    assert " deg (1 of 1 position fails); the mechanism reaches only" in text
     assert text.endswith("; expected positions where the mechanism moves")
     assert sorted(os.listdir(tmp_path)) == ["rocker.toml"]
     # the summary says the same, not that it has nothing to summarise
@@ -693,4 +694,18 @@ def test_a_table_in_a_missing_folder_is_refused_before_the_analysis(
     assert status == 2
     assert err == (
         f"assur: error: {target}: cannot write the file (No such file or directory)\n"
+    )
+
+
+def test_a_sweep_left_out_whole_says_one_expected(capsys):
+    # "...; expected less friction, or positions where it can be driven; expected
+    # positions where the mechanism moves": two clauses of what was expected
+    path = Path(__file__).parent / "data" / "friction" / "rpp_steep.toml"
+    text = fails(
+        capsys, ["forces", path, "--angles", "200", "--skip-unassembled"], path
+    )
+    assert text.startswith("the one position of the sweep is left out (")
+    assert text.count("expected") == 1, text
+    assert text.endswith(
+        "; expected less friction, or positions where it can be driven"
     )

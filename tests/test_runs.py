@@ -203,6 +203,6 @@ def test_a_triad_near_a_dead_centre_is_not_told_of_a_transmission_angle() -> Non
             _report(plan, given, [(Trouble(label, "near", near), 0)], False)
         assert str(caught[0].message) == (
             f"group {label}: near a dead centre ({how}"
-            + (" or 180" if label.startswith("RRR") else "")
+            + (" or 180 deg" if label.startswith("RRR") else "")
             + ") at driver position 11 deg"
         )
