@@ -10,7 +10,7 @@ import numpy as np
 
 from assur._output import path_text
 from assur._runs import telling_apart
-from assur._text import counted
+from assur._text import counted, position_text
 from assur._troubles import skipped_why
 from assur._vec import Array
 from assur.errors import AssemblyError
@@ -32,8 +32,8 @@ class Skipped:
     """The first positions left out, one list of the drivers' positions each."""
     more: bool = False
     why: str = ""
-    units: tuple[str, ...] = ("deg",)
-    """Each driver's unit: deg for a crank, m for a slider."""
+    kinds: tuple[str, ...] = ("R",)
+    """Each driver's pair kind: "R" for a crank (deg), "P" for a slider (m)."""
 
     def add(self, positions: Array, plan: Any = None) -> None:
         """Count the positions left out of one slice (of the mechanism ``plan``)."""
@@ -47,7 +47,7 @@ class Skipped:
         self.values += rows[:room].tolist()
         self.more |= len(rows) > room
         if plan is not None:
-            self.units = tuple("deg" if d.kind == "R" else "m" for d in plan.drivers)
+            self.kinds = tuple(d.kind for d in plan.drivers)
 
     def none_kept(self, first: str = "") -> AssemblyError:
         """Return the error of a sweep whose every position was left out.
@@ -71,20 +71,13 @@ class Skipped:
         # deg gave "197.555" twenty times)
         rows = [np.array(v) for v in self.values]
         digits = telling_apart(list(pairwise(rows)))
-        if len(self.units) == 1:
+        if len(self.kinds) == 1:
             # one driver: its positions, the unit once
             shown = ", ".join(f"{v[0]:.{digits}g}" for v in self.values) + more
-            shown += f" {self.units[0]}"
+            shown += " deg" if self.kinds[0] == "R" else " m"
         else:
-            # several: each position's drivers together ("129, 0.0648" read as two)
-            shown = "; ".join(
-                "("
-                + ", ".join(
-                    f"{x:.{digits}g} {u}" for x, u in zip(v, self.units, strict=True)
-                )
-                + ")"
-                for v in self.values
-            )
+            # several: each position as messages write it, "(129 deg, 0.0648 m)"
+            shown = "; ".join(position_text(self.kinds, v, digits) for v in self.values)
             shown += more.replace(",", ";")
         left = counted(self.count, "position")
         return f"assur: note: {path_text(source)}: left out {left} {self.why}: {shown}"
