@@ -245,13 +245,21 @@ def _fail(plan: Plan, given: Array, troubles: list[Any], trouble: Any) -> NoRetu
         raise AssemblyError(_unreached(plan, given, mask, trouble.group))
     if trouble.what == "assembly":
         # where the mechanism assembles and goes, whatever else stops it there
-        closes = ~_all_failures(troubles, n, what="assembly")
-        closes &= ~_all_failures(troubles, n, what="unreached")
+        apart = ~_all_failures(troubles, n, what="assembly")
+        closes = apart & ~_all_failures(troubles, n, what="unreached")
         good = runs_text(plan, given, closes, join=True)
-        count, total = int(mask.sum()), int(n - closes.sum())
+        count = int(mask.sum())
         # the group's own count; other groups' failures, and positions out of
-        # reach, add to the sweep's
-        more = f", {total} in all" if total > count else ""
+        # reach, are the sweep's too: each said by name
+        others, away = int(n - apart.sum()) - count, int(apart.sum() - closes.sum())
+        more = "".join(
+            f", {k} more {what}"
+            for k, what in (
+                (others, "where other groups cannot be assembled"),
+                (away, "out of reach from the reference pose"),
+            )
+            if k
+        )
         msg = (
             f"group {trouble.group}: cannot be assembled at driver position "
             f"{where} ({failing(count, n)}{more}); "

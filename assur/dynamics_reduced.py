@@ -225,7 +225,7 @@ def reduce(mechanism: Mechanism) -> Reduced:
         try:
             found = _reduce(mechanism)
         except (AssemblyError, SingularConfigurationError) as err:
-            msg = f"dynamics: the crank cannot make a full turn: {err}"
+            msg = f"dynamics: the crank cannot make a full turn, {err}"
             raise type(err)(msg) from err
         plan.memo["dynamics-reduced"] = found
     model, messages = found
@@ -290,12 +290,18 @@ def _sample(
     angles = math.degrees(start) + 360.0 * k / count
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", AssurWarning)
-        # at a change point the sweep is singular: J, J' and M are its limits
-        values = tuple(
-            across_change_points(
-                plan_of(mech), angles, lambda a: reduced_at(mech, a)[1:]
+        try:
+            # at a change point the sweep is singular: J, J' and M are its limits
+            values = tuple(
+                across_change_points(
+                    plan_of(mech), angles, lambda a: reduced_at(mech, a)[1:]
+                )
             )
-        )
+        except (AssemblyError, SingularConfigurationError) as err:
+            # its counts ("512 of 1024 positions") are of the model's own grid,
+            # which the user never asked for: say what they count
+            msg = f"sampled at {k.size} positions over the turn: {err}"
+            raise type(err)(msg) from err
     for w in caught:
         if not issubclass(w.category, AssurWarning):
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)

@@ -523,7 +523,8 @@ def test_unassembled_positions_fail(double_rocker, capsys):
     )
     assert text == (
         "group RRR (coupler, rocker): cannot be assembled at driver position "
-        "0 deg (9 of 13 positions fail, 11 in all); it assembles for 30 deg to 60 deg"
+        "0 deg (9 of 13 positions fail, 2 more out of reach from the reference pose); "
+        "it assembles for 30 deg to 60 deg"
         " (--skip-unassembled leaves such positions out)"
     )
     text = fails(capsys, ["forces", double_rocker, "--angles", "120"], double_rocker)

@@ -488,7 +488,8 @@ def test_a_crank_that_cannot_turn_round():
     rocker = assur.catalog.four_bar(crank=0.09, coupler=0.06, rocker=0.08)
     with pytest.raises(
         assur.AssemblyError,
-        match=r"^dynamics: the crank cannot make a full turn: group RRR "
+        match=r"^dynamics: the crank cannot make a full turn, sampled at 1024 "
+        r"positions over the turn: group RRR "
         r"\(coupler, rocker\): cannot be assembled",
     ):
         assur.dynamics(rocker, [60.0])
