@@ -29,7 +29,7 @@ def _why(g: Group) -> str:
     k = len(g.links)
     p = len(g.internal) + len(g.external)
     return (
-        f"k = {k} links, p = {p} lower pairs: 3k = {3 * k} = 2p = {2 * p}, so the "
+        f"k = {k} links, p = {p} lower pairs: 3k = 2p = {3 * k}, so the "
         "chain has zero mobility on the known links, and no smaller part of it does"
     )
 

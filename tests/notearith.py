@@ -7,7 +7,8 @@ digits it would have kept). An equation ``lhs = e_1 = e_2 = ... = r`` is consist
 when each pair of neighbouring pieces made of numbers only (``e_k`` and ``e_{k+1}``)
 has intervals that meet: the exact value lies in both.
 
-The grammar is the note's: ``+ -``, ``\\cdot``, ``\\frac{}{}``, ``\\sqrt{}``, powers
+The grammar is the note's: ``+ -``, ``\\cdot``, ``\\frac{}{}``, ``\\sqrt{}``,
+``\\vec k \\times`` (a vector turned by 90 degrees), powers
 ``^2``, ``^{k}``, parentheses, brackets, ``\\left( \\right)``, vectors ``(x,\\ y)``,
 and a trailing unit. A piece holding anything else (a symbol) is not numbers only.
 """
@@ -66,7 +67,7 @@ Value = tuple[Interval, ...]
 MATH = re.compile(r"\$\$(.*?)\$\$|\$(.*?)\$")
 TOKEN = re.compile(
     r"\s*(\d+(?:\.\d+)?(?: ?\\cdot 10\^\{-?\d+\})?|\\left\(|\\right\)|\\cdot|"
-    r"\\frac|\\sqrt|,\\ |\^\{-?\d+\}|\^\d|[-+()\[\]{}])"
+    r"\\frac|\\sqrt|\\vec k \\times|,\\ |\^\{-?\d+\}|\^\d|[-+()\[\]{}])"
 )
 UNIT = re.compile(r"(?:\\[ ,]\s*\\mathrm\{(?:[^{}]|\{[^{}]*\})*\}|\\,\\%|\^\\circ)\s*$")
 ZERO_HALF = 1e-4
@@ -183,6 +184,10 @@ class _Parser:
             return self.group("\\right)")
         if token == "{":
             return self.group("}")
+        if token == "\\vec k \\times":
+            # k x (x, y) = (-y, x): a vector turned a quarter turn counter-clockwise
+            x, y = self.factor()
+            return (-y, x)
         if token == "\\sqrt":
             self.take("{")
             inside = self.group("}")

@@ -65,6 +65,9 @@ def test_the_arithmetic_of_the_checker() -> None:
     (value,) = evaluate(r"-\frac{-16925 + (-3239.46)}{200}")
     assert value.lo < 100.82 < value.hi
     assert evaluate(r"(0,\ 0) + 10 \cdot (-0.025,\ 0.0433)") is not None
+    x, y = evaluate(r"(1,\ 0) + 200 \cdot \vec k \times (0.05,\ 0.02)")
+    assert x.lo < -3.0 < x.hi
+    assert y.lo < 10.0 < y.hi
     assert evaluate(r"\sqrt{0.15^2 - 0.09049^2}\ \mathrm{m}") is not None
     assert evaluate(r"\omega_{\mathrm{rod}} - 3") is None  # a symbol: not checked
     assert evaluate(r"\frac{1}{0}") is None  # no bound: not checked

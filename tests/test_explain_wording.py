@@ -9,6 +9,7 @@ table, not against the note.
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import re
 from pathlib import Path
 
@@ -271,11 +272,13 @@ def test_a_sum_of_no_terms_is_written_once(path: Path, angle) -> None:
 
 def test_a_fixed_pivot_reached_through_its_link_sums_to_zero():
     # the sum was judged against its own size: (-5.879 * 10^{-18}, 0) for the
-    # velocity of a frame pivot, whose size the same line gave as 0
+    # velocity of a frame pivot, whose size the same line gave as 0; a triad's
+    # link now starts from its pin to the frame, whose motion is known
     note = str(explain(assur.load(EXAMPLES / "class3.toml"), 0.0))
     line = next(x for x in note.splitlines() if x.startswith(r"$$ \vec v_{\mathrm{F}}"))
-    assert line.endswith(
-        r"= (0,\ 0)\ \mathrm{m/s},\quad v_{\mathrm{F}} = 0\ \mathrm{m/s} $$"
+    assert line == (
+        r"$$ \vec v_{\mathrm{F}} = (0,\ 0)\ \mathrm{m/s},\quad "
+        r"\text{known: a point of ground} $$"
     )
     found = re.findall(r"10\^\{-1[3-9]\}", note.replace(note.split("lever}")[-1], ""))
     assert not found
@@ -396,3 +399,70 @@ def test_a_sliding_pair_s_couple_carries_its_unit() -> None:
         assert re.search(r"M_\{\\mathrm\{guide\}\} = [^,]*\\mathrm\{N\\,m\}", line), (
             line
         )
+
+
+def test_a_turning_link_s_arm_is_the_same_vector_in_both_terms() -> None:
+    # "200 \cdot (-0.05233, 0.05233)" stood for omega x r_AB beside "200^2 \cdot
+    # (0.05233, 0.05233)": r turned by 90 degrees and r, under one symbol
+    note = str(explain(assur.load(EXAMPLES / "slider_crank_exercise.toml"), 45.0))
+    line = next(x for x in note.splitlines() if x.startswith(r"$$ \vec a_{\mathrm{B}}"))
+    arm = r"(0.05233,\ 0.05233)"
+    assert rf"0 \cdot \vec k \times {arm} - 200^2 \cdot {arm}" in line
+    assert r"\vec k \times (x,\ y) = (-y,\ x)" in note
+
+
+def test_a_triad_s_points_start_from_known_pins_each_once() -> None:
+    # v_C and v_D stood bare, the frame's pivots F and G were derived from them
+    # (to 0), and v_D was written twice
+    note = str(explain(assur.load(EXAMPLES / "class3.toml"), 30.0))
+    triad = note.split("### Group triad")[1].split("## 3.")[0]
+    for k in "va":
+        lines = [x for x in triad.splitlines() if x.startswith(rf"$$ \vec {k}_{{")]
+        named = [re.match(rf"\$\$ \\vec {k}_\{{(.*?)\}} = ", x)[1] for x in lines]
+        assert len(named) == len(set(named)), named
+        bare = [
+            x for x in lines if r" + \omega" not in x and r" + \varepsilon" not in x
+        ]
+        # every point given without a formula is a pin on a link outside the group
+        assert [re.match(rf"\$\$ \\vec {k}_\{{(.*?)\}} = ", x)[1] for x in bare] == [
+            r"\mathrm{B}",
+            r"\mathrm{F}",
+            r"\mathrm{G}",
+        ]
+        assert all(r"\text{known: a point of " in x for x in bare)
+
+
+def test_a_slot_s_two_pairs_are_told_apart() -> None:
+    # the sliding pair and the pin were both "(joint B)"; the block was "B\ block"
+    note = str(explain(assur.load(EXAMPLES / "slot_mechanism.toml"), 30.0))
+    assert r"\text{(joint B: the block in the slot)}" in note
+    assert r"\text{(joint B: the pin in the block)}" in note
+    assert r"\text{(joint B)}" not in note
+    assert r"\mathrm{B\ (block)}" in note
+    assert r"\vec d_{B (block)}" not in note
+
+
+def test_an_input_slider_s_forces_are_written_term_by_term() -> None:
+    # "F_b = -\sum F.e = -15.69 = -15.69 N", and N_guide first seen as a divisor
+    note = str(explain(assur.load(DATA / "slider_driven.toml"), 0.03))
+    driver = note.split("## 5. The input link")[1].split("## 6.")[0]
+    lines = driver.splitlines()
+    force = next(x for x in lines if x.startswith(r"$$ F_{b} = "))
+    assert r"-15.69 = -15.69" not in force
+    assert force.count(r"\cdot 0.9659") == 3  # three loads along e
+    normal = next(x for x in lines if x.startswith(r"$$ N_{\mathrm{guide}} = "))
+    assert r"= 3.239\ \mathrm{N}" in normal
+    assert lines.index(normal) < next(
+        i for i, x in enumerate(lines) if x.startswith(r"$$ x_{\mathrm{guide}}")
+    )
+
+
+def test_the_note_s_headings_go_down_one_level_at_a_time() -> None:
+    for stem, angle in (("five_bar_two_cranks", [60.0, 120.0]), ("class3", 30.0)):
+        note = str(explain(assur.load(EXAMPLES / f"{stem}.toml"), angle))
+        levels = [
+            len(x) - len(x.lstrip("#")) for x in note.splitlines() if x[:1] == "#"
+        ]
+        assert all(b <= a + 1 for a, b in itertools.pairwise(levels))
+    two = str(explain(assur.load(EXAMPLES / "five_bar_two_cranks.toml"), [60.0, 120.0]))
+    assert "## 5. The input links\n" in two

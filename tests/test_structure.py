@@ -804,7 +804,7 @@ def test_report_names_every_step():
 
 
 WHY = (
-    "Why an Assur group: k = {k} links, p = {p} lower pairs: 3k = {n} = 2p = {n}, so "
+    "Why an Assur group: k = {k} links, p = {p} lower pairs: 3k = 2p = {n}, so "
     "the chain has zero mobility on the known links, and no smaller part of it does."
 )
 

@@ -14,7 +14,14 @@ import numpy as np
 from assur.explain._forces_text import couple_blocks, force_symbol
 from assur.explain._friction_text import driver_friction, sliding_total
 from assur.explain._lever import _balancing, _size, _speed, _symbol
-from assur.explain._loads_text import Load, force_lines, link_loads, moment_line, total
+from assur.explain._loads_text import (
+    Load,
+    components,
+    force_lines,
+    link_loads,
+    moment_line,
+    total,
+)
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position
 from assur.explain._tex import ZERO, name, num, par, plain, vec
@@ -26,8 +33,10 @@ def driver_blocks(pos: Position) -> list[Block]:
     """Return each input link's equilibrium: the frame's reaction, balancing load."""
     plan = pos.plan
     solved = {b for s in plan.solvers for b in s.bodies}
-    blocks: list[Block] = [Heading(2, "5. The input link")]
     many = len(plan.drivers) > 1
+    blocks: list[Block] = [
+        Heading(2, "5. The input links" if many else "5. The input link")
+    ]
     for i, d in enumerate(plan.drivers):
         body = d.body
         loads = link_loads(pos, body, solved | {x.body for x in plan.drivers} - {body})
@@ -136,7 +145,7 @@ def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
     rubbing = driver_friction(pos, i)
     # the balancing force and the friction force act along the guide through the
     # pair's point: its moments there give the guide's couple
-    couple = couple_blocks(pos, d.pair, d.body, loads)
+    couple = couple_blocks(pos, d.pair, d.body, loads, normal=True)
     if rubbing is None:
         return [
             Para(
@@ -145,7 +154,8 @@ def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
             ),
             Display(
                 (
-                    f"{sym} = -\\sum \\vec F \\cdot \\vec e = -{par(along)} = "
+                    f"{sym} = -\\sum \\vec F \\cdot \\vec e = "
+                    f"-{components(loads, e)} = "
                     f"{num(-along)}\\ \\mathrm{{N}}",
                     f"\\vec {symbol} = {vec(rest)}\\ \\mathrm{{N}}",
                 )
@@ -163,7 +173,8 @@ def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
             (
                 sliding_total(pos, d.pair, d.body, rest, symbol),
                 *lines,
-                f"{sym} = -\\sum \\vec F \\cdot \\vec e {term} = -{par(along)} - "
+                f"{sym} = -\\sum \\vec F \\cdot \\vec e {term} = "
+                f"-{components(loads, e)} - "
                 f"{par(force)} = {num(-along - force)}\\ \\mathrm{{N}}",
             )
         ),

@@ -25,6 +25,7 @@ from assur.explain._friction_text import (
 )
 from assur.explain._loads_text import (
     Load,
+    components,
     force_lines,
     link_loads,
     moment_line,
@@ -185,9 +186,13 @@ def _revolute_middle(
 
 
 def couple_blocks(
-    pos: Position, pair: PairPlan, body: int, loads: list[Load]
+    pos: Position, pair: PairPlan, body: int, loads: list[Load], normal: bool = False
 ) -> list[Block]:
-    """Return the moment equation of a slider about its guide's point: the couple."""
+    """Return the moment equation of a slider about its guide's point: the couple.
+
+    With ``normal``, the normal force is derived here too (a group's was found by
+    its force polygon before).
+    """
     q = pos.pair_point(pair)
     j = name(pair.name)
     sign = 1.0 if pair.second == body else -1.0
@@ -196,16 +201,24 @@ def couple_blocks(
     couple = -sign * m
     e = pos.turned(pair.first, pair.axis or (1.0, 0.0))
     force = -total(loads)
-    normal = sign * float(np.dot(force, perp(e)))
+    across = sign * float(np.dot(force, perp(e)))
     minus = "-" if sign > 0 else ""
     shown = [
         line,
         f"M_{{{j}}} = {minus}\\sum M_{{{j}}} = {num(couple)}\\ \\mathrm{{N\\,m}}",
     ]
-    if abs(normal) > 1e-9 * max(1.0, math.hypot(*force)):
+    if abs(across) > 1e-9 * max(1.0, math.hypot(*force)):
+        if normal:
+            # the normal force, across the guide (n = k x e), said before it divides
+            n = perp(e)
+            shown.append(
+                f"N_{{{j}}} = {minus}\\sum \\vec F \\cdot \\vec n = "
+                f"{minus}{components(loads, n)} = {num(across)}\\ \\mathrm{{N}},"
+                f"\\quad \\vec n = \\vec k \\times \\vec e = {vec(n)}"
+            )
         shown.append(
             f"x_{{{j}}} = \\frac{{M_{{{j}}}}}{{N_{{{j}}}}} = \\frac{{{num(couple)}}}"
-            f"{{{num(normal)}}} = {num(couple / normal)}\\ \\mathrm{{m}}"
+            f"{{{num(across)}}} = {num(couple / across)}\\ \\mathrm{{m}}"
         )
     return [
         Para(
@@ -320,8 +333,17 @@ def _totals(pos: Position, rec: Equilibrium) -> list[str]:
                 f",\\quad M_{{{name(pair.name)}}} = "
                 f"{num(float(np.ravel(r.couple)[0]))}\\ \\mathrm{{N\\,m}}"
             )
-        lines.append(line + f"\\quad \\text{{(joint {text(pair.name)})}}")
+        lines.append(line + f"\\quad \\text{{({_joint(pos, pair.name)})}}")
     return lines
+
+
+def _joint(pos: Position, pair: str) -> str:
+    r"""Return which joint a pair is, for ``\\text``: a slot's two pairs told apart."""
+    if pair.endswith("~pin"):
+        return f"joint {text(pair)}: the pin in the block"
+    if f"{pair}~pin" in pos.plan.pairs:
+        return f"joint {text(pair)}: the block in the slot"
+    return f"joint {text(pair)}"
 
 
 def forces_blocks(pos: Position) -> list[Block]:

@@ -13,7 +13,7 @@ import numpy as np
 from assur.explain._loads_text import inertia_load
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position
-from assur.explain._tex import deg, name, num, par, point_name, vec
+from assur.explain._tex import deg, name, num, par, plain, point_name, vec
 
 __all__ = ["inertia_blocks"]
 
@@ -71,7 +71,10 @@ def inertia_blocks(pos: Position) -> list[Block]:
     if not bodies:
         return [*blocks, Para("No link has a mass: there are no inertia loads.")]
     for b in bodies:
-        blocks += [Heading(4, f"Link {pos.link(b)}"), Display(tuple(_link(pos, b)))]
+        blocks += [
+            Heading(3, f"Link {plain(pos.link(b))}"),
+            Display(tuple(_link(pos, b))),
+        ]
     gravity = np.asarray(pos.loads.gravity, dtype=float)
     if gravity.any():
         blocks.append(

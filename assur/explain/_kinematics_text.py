@@ -133,28 +133,74 @@ def _general(pos: Position, solver: object) -> list[Block]:
         for b in bodies
     ]
     blocks.append(Display(tuple(lines)))
+    starts = _starts(pos, bodies)
+    blocks.append(
+        Para(
+            "Every other point of a link follows from its angular motion, starting "
+            "from a pin whose motion is known from the links before, or found "
+            "already on another link of the group:"
+        )
+    )
     for k, what in ((1, "Velocities"), (2, "Accelerations")):
         lines = []
-        for b in bodies:
+        done: set[str] = set()
+        for b in sorted(bodies, key=lambda b: b not in starts):
             points = body_points(pos, b)
-            if not points:
-                continue
-            base_name, offset = points[0]
-            base = pos.point(b, offset)
+            if b in starts:
+                base_name, offset, known = starts[b]
+            else:
+                # a link with no pin outside the group (a triad's base link)
+                # starts from a point found on a link before it
+                base_name, offset = next(
+                    ((p, d) for p, d in points if p in done), points[0]
+                )
+                known = ""
             label = point_name(base_name)
-            lines.append(
-                f"\\vec {'v' if k == 1 else 'a'}_{{{label}}} = "
-                f"{vec(pos.point(b, offset, k))}{SPEED[k]}"
-            )
-            lines += point_lines(pos, b, base, label, k, {base_name})
+            if base_name not in done:
+                lines.append(
+                    f"\\vec {'v' if k == 1 else 'a'}_{{{label}}} = "
+                    f"{vec(pos.point(b, offset, k))}{SPEED[k]}{known}"
+                )
+            done.add(base_name)
+            lines += point_lines(pos, b, pos.point(b, offset), label, k, set(done))
+            done.update(p for p, _ in points)
         blocks += [Heading(4, what), Display(tuple(lines))]
     return blocks
+
+
+def _starts(
+    pos: Position, bodies: tuple[int, ...]
+) -> dict[int, tuple[str, tuple[float, float], str]]:
+    """Return each link's pin to a link outside the group, as a point to start from.
+
+    Each is ``(name, offset on the link, the TeX saying where it is known from)``.
+    """
+    group = set(bodies)
+    found: dict[int, tuple[str, tuple[float, float], str]] = {}
+    for pair in pos.plan.pairs.values():
+        if pair.kind != "R":
+            continue
+        for body, other, d in (
+            (pair.first, pair.second, pair.d_first),
+            (pair.second, pair.first, pair.d_second),
+        ):
+            if body in group and other not in group:
+                where = f",\\quad \\text{{known: a point of {plain(pos.link(other))}}}"
+                found.setdefault(body, (pair.name.split("~")[0], d, where))
+    return found
 
 
 def kinematics_blocks(pos: Position) -> list[Block]:
     """Return the kinematic analysis: the input links, then each group in order."""
     plan = pos.plan
-    blocks: list[Block] = [Heading(2, "2. Kinematics, group by group")]
+    blocks: list[Block] = [
+        Heading(2, "2. Kinematics, group by group"),
+        Para(
+            "Vectors are written $(x,\\ y)$ in the frame's axes; $\\vec k$ is the "
+            "unit vector out of the plane, so that $\\vec k \\times (x,\\ y) = "
+            "(-y,\\ x)$, the vector turned by $90^\\circ$ counter-clockwise."
+        ),
+    ]
     for i, d in enumerate(plan.drivers):
         blocks += [
             Heading(3, f"Input link {plain(pos.link(d.body))}"),

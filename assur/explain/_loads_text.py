@@ -194,6 +194,20 @@ def total(loads: list[Load]) -> Array:
     return sum((x.force for x in loads), np.zeros(2))
 
 
+def components(loads: list[Load], u: Array) -> str:
+    """Return ``sum F.u`` term by term, ``[F_x u_x + F_y u_y + ...]``, or ``0``.
+
+    The guide's direction or normal ``u`` as numbers: each product can be checked.
+    """
+    terms = [
+        f"{par(float(f[0]))} \\cdot {par(float(u[0]))} + {par(float(f[1]))} \\cdot "
+        f"{par(float(u[1]))}"
+        for f in (x.force for x in loads)
+        if math.hypot(*f) > 0
+    ]
+    return f"[{' + '.join(terms)}]" if terms else "0"
+
+
 def moment(load: Load, about: Array) -> float:
     """Return the moment of ``load`` about ``about``, N m (counter-clockwise)."""
     return cross(load.point - about, load.force) + load.couple

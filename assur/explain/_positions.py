@@ -187,8 +187,10 @@ def _rpr(pos: Position, s: DyadSolver) -> list[Block]:
     sign = "-"
     if abs(math.remainder(normal - nu - turn, 2 * math.pi)) > 1e-6:
         normal, sign = theta + psi, "+"
-    lg, lh = (plain(pos.link(s.bodies[x])) for x in (g, h))
+    lg = plain(pos.link(s.bodies[g]))
     pgn, phn = name(s.ext[g].name), name(s.ext[h].name)
+    # the links' names in the formula are set as names, not words
+    ng, nh = (name(pos.link(s.bodies[x])) for x in (g, h))
     return [
         Para(
             f"Both links turn together (the sliding pair {plain(s.mid.name)} keeps "
@@ -197,7 +199,7 @@ def _rpr(pos: Position, s: DyadSolver) -> list[Block]:
             "a link without one). Across the slide line, along its normal (fixed in "
             f"{lg}), "
             f"the pins {plain(s.ext[g].name)} and {plain(s.ext[h].name)} stay "
-            f"$c_0 = \\vec n_0 \\cdot (\\vec d_{{{lg}}} - \\vec d_{{{lh}}}) = "
+            f"$c_0 = \\vec n_0 \\cdot (\\vec d_{{{ng}}} - \\vec d_{{{nh}}}) = "
             f"{num(c0)}$ m apart (the offsets $\\vec d$ of the pair's point from each "
             "pin, and the slide line's normal $\\vec n_0$, at angle "
             f"$\\nu = {deg(nu)}$, in the reference pose):"

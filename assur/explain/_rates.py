@@ -316,18 +316,18 @@ def point_lines(
         scale = max(math.hypot(*here), *(t * arm for t in terms))
         if k == 1:
             lines.append(
-                f"\\vec v_{{{x}}} = \\vec v_{{{label}}} + \\omega_{{{link}}} \\times "
-                f"\\vec r_{{{label}{x}}} = {vec(here)} + {par(w)} \\cdot "
-                f"{vec(perp(r))} = {vec(value, scale)}{SPEED[1]},\\quad v_{{{x}}} = "
+                f"\\vec v_{{{x}}} = \\vec v_{{{label}}} + \\omega_{{{link}}}\\,\\vec k "
+                f"\\times \\vec r_{{{label}{x}}} = {vec(here)} + {par(w)} \\cdot "
+                f"\\vec k \\times {vec(r)} = {vec(value, scale)}{SPEED[1]},\\quad "
+                f"v_{{{x}}} = "
                 f"{num(math.hypot(*value), scale)}{SPEED[1]}"
             )
         else:
             lines.append(
-                f"\\vec a_{{{x}}} = \\vec a_{{{label}}} + \\varepsilon_{{{link}}} "
-                ""
-                f"\\times \\vec r_{{{label}{x}}} - \\omega_{{{link}}}^2 "
-                f"\\vec r_{{{label}"
-                f"{x}}} = {vec(here)} + {par(eps)} \\cdot {vec(perp(r))} - {par(w)}^2 "
+                f"\\vec a_{{{x}}} = \\vec a_{{{label}}} + \\varepsilon_{{{link}}}\\,"
+                f"\\vec k \\times \\vec r_{{{label}{x}}} - \\omega_{{{link}}}^2 "
+                f"\\vec r_{{{label}{x}}} = {vec(here)} + {par(eps)} \\cdot \\vec k "
+                f"\\times {vec(r)} - {par(w)}^2 "
                 f"\\cdot {vec(r)} = {vec(value, scale)}{SPEED[2]},\\quad a_{{{x}}} = "
                 f"{num(math.hypot(*value), scale)}{SPEED[2]}"
             )

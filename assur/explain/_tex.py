@@ -124,9 +124,10 @@ TEX_SPECIAL = {
 def name(text: str) -> str:
     r"""Return a name from the file set upright in TeX (``\mathrm{rod}``).
 
-    A slot's block is called ``J~block`` inside; it reads "J block" here.
+    A slot's block is called ``J~block`` inside; it reads "J (block)" here, as in
+    the paragraphs.
     """
-    public = text.replace("~block", " block").replace("~pin", "")
+    public = text.replace("~block", " (block)").replace("~pin", "")
     # a space after an escape (``\sim``) ends its command: it is not a space drawn
     body = "".join(r"\ " if c == " " else TEX_SPECIAL.get(c, c) for c in public)
     return f"\\mathrm{{{body}}}"
