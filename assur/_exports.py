@@ -110,6 +110,11 @@ class Columns(metaclass=ABCMeta):
         the field metadata (key ``unit``); the file is written whole or not at all.
         See :func:`assur.io.write_parquet`.
 
+        Parameters
+        ----------
+        path : str or path-like
+            The file to write.
+
         Raises
         ------
         ImportError

@@ -75,6 +75,7 @@ def kinematics(
     Parameters
     ----------
     mechanism : Mechanism
+        The mechanism, as :func:`assur.load` or :mod:`assur.catalog` give it.
     angles : array_like
         Driver positions, deg (m for a prismatic driver); shape (n,) or, with several
         drivers, (n, drivers).
@@ -137,6 +138,7 @@ def forces(
     Parameters
     ----------
     mechanism : Mechanism
+        The mechanism, as :func:`assur.load` or :mod:`assur.catalog` give it.
         With masses (and centres of mass and inertias) or loads.
     angles : array_like
         Driver positions, deg (m for a prismatic driver); shape (n,) or, with several

@@ -165,7 +165,13 @@ class Dynamics(Columns):
         return {"name": data["name"], "dynamics": self.summary(), **data}
 
     def plot(self, **kwargs: Any) -> Any:
-        """Draw the dynamic model (see :func:`assur.plotting.plot_dynamics`)."""
+        """Draw the dynamic model (see :func:`assur.plotting.plot_dynamics`).
+
+        Parameters
+        ----------
+        **kwargs
+            Passed to :func:`assur.plotting.plot_dynamics`.
+        """
         from assur.plotting import plot_dynamics
 
         return plot_dynamics(self, **kwargs)

@@ -162,6 +162,11 @@ class Table(Columns):
         first asked for; a short one (up to 2048 positions asked for, with no
         ``columns=``) solves them in the call.
 
+        Parameters
+        ----------
+        level : int
+            0 positions, 1 velocities, 2 accelerations, 3 jerks.
+
         Raises
         ------
         UsageError
@@ -334,7 +339,16 @@ class Table(Columns):
         return summarize(self)
 
     def plot(self, angle: float | None = None, **kwargs: Any) -> Any:
-        """Draw the mechanism at a driver position (see :func:`assur.plotting.draw`)."""
+        """Draw the mechanism at a driver position (see :func:`assur.plotting.draw`).
+
+        Parameters
+        ----------
+        angle : float or sequence of float, optional
+            Driver position, deg (m for a prismatic driver; one value per driver);
+            the nearest row is drawn. Default: the first row.
+        **kwargs
+            Passed to :func:`assur.plotting.draw` (``forces``, ``ax``, ...).
+        """
         from assur.plotting import draw
 
         return draw(self, angle=angle, **kwargs)

@@ -71,6 +71,11 @@ class Note:
 
         The file is written whole or not at all.
 
+        Parameters
+        ----------
+        path : str or path-like
+            The file to write (.md, .markdown, .html, .htm or .tex).
+
         Raises
         ------
         OutputError
@@ -83,7 +88,13 @@ class Note:
         write_text(path, self.render(os.fspath(path)))
 
     def render(self, path: str) -> str:
-        """Return the text of the note in the format that ``path``'s suffix names."""
+        """Return the text of the note in the format that ``path``'s suffix names.
+
+        Parameters
+        ----------
+        path : str
+            A file name; only its suffix is read.
+        """
         suffix = os.path.splitext(path)[1].lower()
         makers: dict[str, Any] = {
             ".md": self.to_markdown,
