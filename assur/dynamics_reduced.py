@@ -240,13 +240,14 @@ def _reduce(mechanism: Mechanism) -> tuple[Reduced, list[str]]:
     values, caught = _sample(mechanism, start, count, 0, 1)
     model = _model(start, values)
     misses = [math.inf]
+    worst = ("J", 0.0, 0.0)
     while count < GRID_MOST:
         middle, more = _sample(mechanism, start, 2 * count, 1, 2)
         values = tuple(
             np.ravel(np.column_stack(p)) for p in zip(values, middle, strict=True)
         )
         finer = _model(start, values)
-        done, error, miss = _converged(model, finer, middle)
+        done, error, miss, worst = _converged(model, finer, middle)
         misses.append(miss)
         model, count, caught = replace(finer, error=error), 2 * count, caught + more
         if done:
@@ -254,7 +255,28 @@ def _reduce(mechanism: Mechanism) -> tuple[Reduced, list[str]]:
         if _noisy(misses):
             caught.append(_noise_message(misses[-1], error))
             break
+    else:
+        if worst[1] > BETWEEN_RTOL:
+            # the finest grid still misses J: the speeds are known only so far (a
+            # sharp turn of J near a change point, say), which is said, not hidden
+            caught.append(_unresolved_message(count, worst))
     return model, caught
+
+
+OWN = ("the reduced torque is not smooth", "the reduced model is not resolved")
+"""How the grid's own warnings begin (see :func:`_pass_on`)."""
+
+
+def _unresolved_message(count: int, worst: tuple[str, float, float]) -> str:
+    """Return the warning of a grid that reached :data:`GRID_MOST` unresolved."""
+    what, miss, at = worst
+    return (
+        f"the reduced model is not resolved on its finest grid ({count} positions "
+        f"a turn): between grid points the interpolant of {what} misses it by "
+        f"{miss:.2g} of its largest value (near {at:.6g} deg: a sharp turn, as "
+        "near a change point?); the steady state's figures may be off by about as "
+        "much, not within 1e-8"
+    )
 
 
 def _noisy(misses: list[float]) -> bool:
@@ -351,32 +373,48 @@ class _Shifted:
 
 def _converged(
     coarse: Reduced, fine: Reduced, middle: tuple[Array, ...]
-) -> tuple[bool, float, float]:
+) -> tuple[bool, float, float, tuple[str, float, float]]:
     """Whether the finer grid adds nothing (same work, interpolants that held).
 
-    Also the relative change of the work, the estimate of its error, and the typical
-    miss of ``M``'s interpolant at the new points: the median, relative to ``M``'s
-    largest magnitude (a step or a kink of a load misses at a few points only,
-    noise at every one).
+    Also the estimate of the work's relative error, the typical miss of ``M``'s
+    interpolant at the new points: the median, relative to ``M``'s largest
+    magnitude (a step or a kink of a load misses at a few points only, noise at
+    every one), and the worst miss of ``J``'s interpolant: its name, the miss
+    relative to ``J``'s largest value, and where (deg). ``M`` is judged by its
+    work, which a load table's corners leave converged; ``J`` enters the speed
+    pointwise.
     """
     scale = fine.scale
     gap = float(np.max(np.abs(fine.work[::2] - coarse.work)))
     ok = gap <= GRID_RTOL * scale
     mids = fine.angle[1::2]
     misses = []
-    for got, want in (
-        (coarse.inertia_at(mids), middle[0]),
-        (coarse.torque_at(mids), middle[2]),
+    worst = ("J", 0.0, 0.0)
+    for what, got, want in (
+        ("J", coarse.inertia_at(mids), middle[0]),
+        ("M", coarse.torque_at(mids), middle[2]),
     ):
         size = float(np.max(np.abs(want)))
         miss = np.abs(got - want)
         ok = ok and float(np.max(miss)) <= BETWEEN_RTOL * size
         misses.append(float(np.median(miss)) / size if size > 0.0 else 0.0)
-    return bool(ok), (gap / scale if scale > 0 else 0.0), misses[1]
+        i = int(np.argmax(miss))
+        relative = float(miss[i]) / size if size > 0.0 else 0.0
+        if what == "J":
+            worst = (what, relative, math.degrees(float(mids[i])) % 360.0)
+    return bool(ok), (gap / scale if scale > 0 else 0.0), misses[1], worst
 
 
 def _pass_on(messages: list[str], count: int) -> None:
-    """Warn once of each distinct trouble the internal grid met."""
+    """Warn once of each distinct trouble the internal grid met.
+
+    The grid's own troubles (a reduced model that is noise, or not resolved) are
+    warned of apart: they say how far the figures can be trusted.
+    """
+    own = [m for m in messages if m.startswith(OWN)]
+    for message in own:
+        warnings.warn(f"dynamics: {message}", AssurWarning, stacklevel=3)
+    messages = [m for m in messages if not m.startswith(OWN)]
     if not messages:
         return
     # each finer grid meets a trouble again at positions a little closer to its

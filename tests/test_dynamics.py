@@ -537,6 +537,28 @@ def test_a_torque_that_is_rounding_noise_stops_the_grid():
         assert reduce(mech).angle.shape[0] == 2048
 
 
+def test_a_grid_that_reaches_its_finest_unresolved_says_so():
+    # a four-bar a hair from a change point: J turns sharply near 0 and 180 deg, the
+    # grid stopped at 65536 positions with J's interpolant missing by 10 %, and the
+    # steady state's delta came out 3e-4 off with no word of it (a review's own
+    # solver)
+    from assur.dynamics_reduced import GRID_MOST, reduce
+
+    mech = assur.catalog.four_bar(
+        crank=0.04, coupler=0.12, rocker=0.0400000001, frame=0.12
+    )
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always", assur.AssurWarning)
+        model = reduce(mech)
+    assert model.angle.shape[0] == GRID_MOST
+    said = [str(w.message) for w in caught if "not resolved" in str(w.message)]
+    assert len(said) == 1
+    assert said[0].startswith(
+        "dynamics: the reduced model is not resolved on its finest grid (65536 "
+        "positions a turn): between grid points the interpolant of J misses it by "
+    )
+
+
 @pytest.mark.parametrize("omega", [0.0, 1e-170])
 def test_a_crank_at_rest_has_no_steady_state_nor_flywheel(omega, tmp_path, capsys):
     from assur.cli import main
