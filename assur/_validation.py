@@ -19,6 +19,7 @@ from assur._checks import (
     _check_number,
     _check_vec,
     _coincide,
+    _control,
     _entry,
     _fail,
     _finite,
@@ -78,7 +79,8 @@ def _skeleton(mech: Mechanism) -> Any:
     if mech.name.__class__ is not str or mech.description.__class__ is not str:
         return None
     try:
-        parts: list[Any] = [mech.gravity is None]
+        # the name is checked too (no control character in it)
+        parts: list[Any] = [mech.name, mech.gravity is None]
         for link in mech.links:
             axis = link.axis
             if axis is not None:
@@ -199,6 +201,15 @@ def _validate_all(mech: Mechanism) -> None:
     for attr in ("name", "description"):
         if not isinstance(getattr(mech, attr), str):
             _fail(attr, f"expected a text, got {describe(getattr(mech, attr))}")
+    control = _control(mech.name)
+    if control is not None:
+        # the name heads summaries and titles on a terminal: a line break or an
+        # escape sequence in it would split or recolour them
+        _fail(
+            "name",
+            f"the name {describe(mech.name)} holds the control character "
+            f"{control!a}; expected one line of printable characters",
+        )
     link_names = _validate_links(mech)
     all_links = [GROUND, *link_names]
     joint_names = _validate_joints(mech, all_links)

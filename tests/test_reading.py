@@ -293,6 +293,19 @@ def test_names_with_control_characters_are_refused(kind, char, tmp_path):
     )
 
 
+@pytest.mark.parametrize("char", ["\n", "\x1b", "\u2028"])
+def test_a_mechanism_s_name_with_control_characters_is_refused(char, tmp_path):
+    # the name heads the summary and the dynamics' title on a terminal: a line
+    # break split them, an escape sequence recoloured the terminal
+    escaped = json.dumps(f"x{char}[31m", ensure_ascii=True)
+    text = BASE.replace('name = "Slider-crank"', f"name = {escaped}", 1)
+    shown = repr(f"x{char}[31m")
+    assert message(write(tmp_path, "m.toml", text)) == (
+        f"name: the name {shown} holds the control character {char!a}; expected "
+        "one line of printable characters"
+    )
+
+
 def test_names_with_control_characters_are_refused_in_code():
     with pytest.raises(ModelError, match=r"^links\.'a\\nb': the name 'a\\nb' holds"):
         Mechanism(
