@@ -343,6 +343,24 @@ def terminal() -> bool:
         return False
 
 
+def bar_shown(args: Any, *outputs: Any) -> bool:
+    """Whether long work shows a progress bar (on standard error).
+
+    On a terminal, without ``-q``, and not while a table streams to standard output
+    on a terminal too (``--csv -`` read on the screen): the bar's redrawn line would
+    run into the table's rows. ``outputs`` are the paths the work writes as it goes
+    (``True`` for standard output).
+    """
+    if quiet(args) or not terminal():
+        return False
+    if any(path is True or (path and is_stdout(path)) for path in outputs):
+        try:
+            return not sys.stdout.isatty()
+        except (AttributeError, OSError, ValueError):
+            return True
+    return True
+
+
 def skip_hint(args: Any, err: Exception) -> str:
     """Return a hint of --skip-unassembled after a position a sweep cannot solve.
 

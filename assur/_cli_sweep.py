@@ -14,11 +14,11 @@ from collections.abc import Iterator
 from typing import Any
 
 from assur._cli_common import (
+    bar_shown,
     is_stdout,
     load_mechanism,
     positions,
     quiet,
-    terminal,
 )
 from assur._cli_summary import _summary, _summary_text, _summed
 from assur._cli_tables import _check_outputs, _write_tables
@@ -80,7 +80,7 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
 @contextlib.contextmanager
 def _bar(args: argparse.Namespace, what: str, total: int) -> Iterator[Any]:
     """Yield a progress bar on a terminal (shown once the sweep runs long), or None."""
-    if quiet(args) or not terminal():
+    if not bar_shown(args, bool(args.json), args.csv, args.parquet):
         yield None
         return
     from assur._progress import progress

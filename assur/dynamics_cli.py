@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import (
+    bar_shown,
     check_structure,
     load_mechanism,
     parse_angles,
@@ -290,7 +291,7 @@ class _Rows:
 def _stream(rows: _Rows, writer: Any, args: argparse.Namespace) -> None:
     """Write every slice of ``rows`` with ``writer``; a bar on a long sweep."""
     n = len(rows)
-    show = terminal() and not quiet(args)
+    show = bar_shown(args, bool(args.json), args.csv)
     with progress("dynamics", n, show=show, delay=BAR_DELAY) as bar:
         for start in range(0, n, SLICE):
             part = rows.part(start, min(start + SLICE, n))

@@ -332,6 +332,23 @@ def test_a_bar_on_a_terminal(long_is_short, capsys, monkeypatch, tmp_path, outpu
     assert "%|" in err
 
 
+@pytest.mark.parametrize("stdout_tty", [True, False])
+@pytest.mark.parametrize("output", [["--csv", "-"], ["--json"]])
+def test_no_bar_over_a_table_streamed_to_the_terminal(
+    long_is_short, capsys, monkeypatch, output, stdout_tty
+):
+    # the bar's redrawn line ran into the CSV's rows on the screen
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    monkeypatch.setattr(sys.stdout, "isatty", lambda: stdout_tty)
+    status, out, err = run(
+        capsys, "forces", SLIDER_CRANK, "--angles", "0:5000:1", *output
+    )
+    assert status == 0
+    assert out
+    # a table piped on (standard output not a terminal) keeps the bar
+    assert ("%|" in err) is not stdout_tty
+
+
 def test_no_bar_when_standard_error_is_not_a_terminal(long_is_short, capsys):
     status, _, err = run(capsys, "forces", SLIDER_CRANK, "--angles", "0:5000:1")
     assert status == 0
