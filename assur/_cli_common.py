@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._output import path_text
+from assur._output import path_text, standard_output
 from assur._text import counted, describe
 from assur.errors import UsageError
 
@@ -318,13 +318,7 @@ def quiet(args: Any) -> bool:
 
 def is_stdout(path: Any) -> bool:
     """Whether ``path`` names the file standard output writes to (``/dev/stdout``)."""
-    if str(path) == "-":
-        return True
-    try:
-        here, there = os.fstat(sys.stdout.fileno()), os.stat(path)
-    except (AttributeError, OSError, ValueError):
-        return False
-    return (here.st_dev, here.st_ino) == (there.st_dev, there.st_ino)
+    return str(path) == "-" or standard_output(path)
 
 
 def _same_file(a: Any, b: Any) -> bool:

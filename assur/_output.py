@@ -30,6 +30,7 @@ __all__ = [
     "output_folder",
     "output_path",
     "path_text",
+    "standard_output",
     "stdout_writer",
     "write_all",
     "write_bytes",
@@ -199,7 +200,7 @@ def output_path(
     target, in_place = _target(Path(path))
     where = path_text(path)
     if in_place:
-        with _reported(where, any_error):
+        with _reported(where, any_error, standard_output(target)):
             yield target
         return
     with _reported(where, any_error):
@@ -345,20 +346,37 @@ def _remove(path: Path) -> None:
         os.unlink(path)
 
 
+def standard_output(target: str | os.PathLike[str]) -> bool:
+    """Whether ``target`` is the file standard output writes to (``/dev/stdout``)."""
+    try:
+        here, there = os.fstat(sys.stdout.fileno()), os.stat(target)
+    except (AttributeError, OSError, ValueError):
+        return False
+    return (here.st_dev, here.st_ino) == (there.st_dev, there.st_ino)
+
+
 @contextlib.contextmanager
-def _reported(where: str, any_error: bool) -> Iterator[None]:
-    """Turn the failure of a write into an :class:`OutputError` naming ``where``."""
+def _reported(where: str, any_error: bool, stdout: bool = False) -> Iterator[None]:
+    """Turn the failure of a write into an :class:`OutputError` naming ``where``.
+
+    On standard output (``stdout``), a reader that has gone (``| head``) raises
+    BrokenPipeError, which the command line ends on quietly, as for ``-``.
+    """
     try:
         yield
     except AssurError:
         raise
     except OSError as err:
+        if stdout and err.errno == errno.EPIPE:
+            raise BrokenPipeError(errno.EPIPE, os.strerror(errno.EPIPE)) from err
         msg = f"{where}: cannot write the file ({err.strerror or err})"
         raise OutputError(msg) from err
     except Exception as err:
         if not any_error:
             raise
         cause = _os_error(err)
+        if stdout and cause is not None and cause.errno == errno.EPIPE:
+            raise BrokenPipeError(errno.EPIPE, os.strerror(errno.EPIPE)) from err
         if cause is not None:  # a writer that fails again on cleaning up
             msg = f"{where}: cannot write the file ({cause.strerror or cause})"
             raise OutputError(msg) from err

@@ -220,6 +220,31 @@ def test_closed_pipe_is_quiet():
     assert "Traceback" not in run.stderr
 
 
+@pytest.mark.parametrize("option", ["--csv /dev/stdout", "--parquet /dev/stdout"])
+def test_a_closed_pipe_named_dev_stdout_is_quiet_too(option):
+    """``--csv /dev/stdout | head`` ends as ``--csv - | head`` does: status 0.
+
+    It said "cannot write the file (Broken pipe)", status 2.
+    """
+    import subprocess
+    import sys
+
+    if option.startswith("--parquet"):
+        pytest.importorskip("pyarrow")
+    path = EXAMPLES / "slider_crank_exercise.toml"
+    run = subprocess.run(
+        f"set -o pipefail; {sys.executable} -m assur forces {path} --angles "
+        f"0:99999:1 {option} | head -c 10 > /dev/null",
+        shell=True,
+        executable="/bin/bash",
+        capture_output=True,
+        text=True,
+        check=False,
+    )
+    assert run.returncode == 0, run.stderr
+    assert run.stderr == ""
+
+
 def test_summary_leaves_out_the_residual(capsys):
     assert (
         main(["forces", str(EXAMPLES / "slider_crank_exercise.toml"), "--angles", "45"])
