@@ -56,6 +56,11 @@ class Skipped:
         left out: what fails there, and where the mechanism assembles.
         """
         which = "the one position" if self.count == 1 else "every position"
+        if self.count > 1:
+            # the first position's error counts itself alone, "(1 of 1 position
+            # fails)", where the sweep left out every one of its own
+            first = first.replace(" (1 of 1 position fails)", "")
+            first = first.replace(" (1 of 1 position)", "")
         lead = "there" if self.count == 1 else "at the first"
         why = f"; {lead}, {first}" if first else ""
         # one "expected": the first position's error may say what it expects
