@@ -205,3 +205,28 @@ def test_a_motor_past_every_float_is_one_error() -> None:
             assur.startup(mech, turns=30)
     curves = Curves(reduce(mech), 0.0)
     assert all(math.isnan(v) for v in curves(math.inf))
+
+
+def test_a_tiny_change_that_does_not_shrink_is_not_a_crank_gathering_speed():
+    # a four-bar a hair from a change point held at 4e-8 of its speed a turn for
+    # 2000 turns was said to be "still gathering speed"
+    from types import SimpleNamespace
+
+    from assur._startup_turns import _not_settled
+
+    crossings = [40.0 + 1.6e-6 * k for k in range(20)]  # 4e-8 a turn, steadily
+    runs = SimpleNamespace(crossings=crossings)
+    model = reduce(loaded_slider_crank())
+    with pytest.raises(assur.ModelError) as caught:
+        _not_settled(runs, MOTOR, model, 2000, 0.0)  # type: ignore[arg-type]
+    message = str(caught.value)
+    assert "gathering speed" not in message
+    assert message.endswith(
+        "a change this small that does not shrink at a steady ratio is about the "
+        "integration's own scatter (of a reduced model that turns sharply, near a "
+        "change point, say): the motion is periodic to about that"
+    )
+    # a crank still gathering speed (1e-4 of its speed a turn) is told so
+    runs = SimpleNamespace(crossings=[40.0 + 4e-3 * k for k in range(20)])
+    with pytest.raises(assur.ModelError, match="still gathering speed"):
+        _not_settled(runs, MOTOR, model, 2000, 0.0)  # type: ignore[arg-type]
