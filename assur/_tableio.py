@@ -80,6 +80,9 @@ class CsvWriter:
         step = _rows(columns)
         for start in range(0, count, step):
             rows = np.stack([c[start : start + step] for c in columns], axis=-1)
+            # a negative zero (the speed of a point at rest, rounded) reads "-0",
+            # a sign with no number behind it: adding +0 makes it 0, nothing else
+            rows += 0.0
             self._write(csv_lines(rows))
             if self._advance is not None:
                 self._advance(rows.shape[0])
