@@ -125,8 +125,11 @@ class Columns(metaclass=ABCMeta):
         write_parquet(self, path)
 
     def to_dict(self) -> dict[str, Any]:
-        """Return JSON-ready data: the name, the columns, their units and the rows."""
-        rows = self.to_array()
+        """Return JSON-ready data: the name, the columns, their units and the rows.
+
+        NaN is None; a negative zero is 0.0, as the JSON and CSV files write it.
+        """
+        rows = self.to_array() + 0.0
         return {
             "name": self.mechanism.name,
             "columns": list(self.columns),

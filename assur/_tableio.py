@@ -133,6 +133,7 @@ class JsonWriter:
         step = _rows(columns)
         for start in range(0, count, step):
             rows = np.stack([c[start : start + step] for c in columns], axis=-1)
+            rows += 0.0  # -0.0 written 0.0, as the CSV writes it 0
             texts = [self._row % tuple(map(_json_number, row)) for row in rows.tolist()]
             lead = "" if self._first else ", "
             self._first = False
