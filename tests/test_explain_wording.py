@@ -466,3 +466,19 @@ def test_the_note_s_headings_go_down_one_level_at_a_time() -> None:
         assert all(b <= a + 1 for a, b in itertools.pairwise(levels))
     two = str(explain(assur.load(EXAMPLES / "five_bar_two_cranks.toml"), [60.0, 120.0]))
     assert "## 5. The input links\n" in two
+
+
+def test_round_off_of_a_force_or_a_speed_at_a_dead_centre_is_zero() -> None:
+    # at 0 deg the guide's normal force is round-off: it was written (0, 1.426 *
+    # 10^{-14}) N in the polygon and (0, 1.626 * 10^{-14}) N among the reactions, the
+    # slider's speed 5.1 * 10^{-16} m/s and its power 8.3 * 10^{-13} W on the lever
+    note = str(explain(assur.load(EXAMPLES / "slider_crank_exercise.toml"), 0.0))
+    tiny = [x for x in note.splitlines() if re.search(r"10\^\{-(1\d|9)\}", x)]
+    assert tiny == []
+    lines = [
+        x
+        for x in note.splitlines()
+        if r"\vec F_{\mathrm{ground},\mathrm{slider}} =" in x
+    ]
+    assert lines
+    assert all(r"= (0,\ 0)\ \mathrm{N}" in x for x in lines)

@@ -67,6 +67,7 @@ def _revolute_middle(
     pos: Position, s: DyadSolver, loads: list[list[Load]]
 ) -> list[Block]:
     """RRR, RRP, PRP: tangential parts, the force polygon, the middle reaction."""
+    big = pos.force_scale()  # round-off of a force is told by it
     m = pos.pair_point(s.mid)
     mid = name(s.mid.name)
     blocks: list[Block] = []
@@ -136,7 +137,7 @@ def _revolute_middle(
             (
                 "\\sum \\vec F_{known}"
                 + (" + \\sum \\vec F^{t}" if turning else "")
-                + f" = {vec(-rhs)}\\ \\mathrm{{N}}",
+                + f" = {vec(-rhs, big)}\\ \\mathrm{{N}}",
                 *lines,
             )
         ),
@@ -155,7 +156,7 @@ def _revolute_middle(
             continue
         labels.append(f"\\vec {symbol}")
         outer.append(
-            f"\\vec {symbol} = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
+            f"\\vec {symbol} = {vec(f, big)}\\ \\mathrm{{N}},\\quad {symbol} = "
             f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
         )
     first = s.bodies[0]
@@ -171,8 +172,9 @@ def _revolute_middle(
             (
                 f"\\vec {sym} = -\\left(\\sum \\vec F_{{known}} + {labels[0]}"
                 "\\right) = -\\left("
-                f"{vec(total(loads[0]))}"
-                f" + {vec(forces[0])}\\right) = {vec(inner)}\\ \\mathrm{{N}},\\quad "
+                f"{vec(total(loads[0]), big)}"
+                f" + {vec(forces[0], big)}\\right) = {vec(inner, big)}\\ "
+                "\\mathrm{N},\\quad "
                 f"{sym} = {num(math.hypot(*inner))}\\ \\mathrm{{N}}",
             )
         ),
@@ -242,6 +244,7 @@ def _sliding_middle(
     pos: Position, s: DyadSolver, loads: list[list[Load]]
 ) -> list[Block]:
     """RPR, RPP: the middle pair's normal force and couple, then outer reactions."""
+    big = pos.force_scale()  # round-off of a force is told by it
     q = pos.pair_point(s.mid)
     e = pos.turned(s.mid.first, s.mid.axis or (1.0, 0.0))
     nm = perp(e)
@@ -298,14 +301,14 @@ def _sliding_middle(
         pushed = f"{'+' if sgn > 0.0 else '-'} N_{{{j}}}\\vec n"
         sums: tuple[str, ...] = (
             f"\\vec {symbol} = -\\left(\\sum \\vec F_{{known}} {pushed}\\right) = "
-            f"{vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
+            f"{vec(f, big)}\\ \\mathrm{{N}},\\quad {symbol} = "
             f"{num(math.hypot(*f))}\\ \\mathrm{{N}}",
         )
         if pair.kind == "P" and pair.friction > 0.0:
             # the known loads hold the guide's friction: what is left is its normal
             sums = (
                 f"{normal_symbol(pair, body)} = -\\left(\\sum \\vec F_{{known}} "
-                f"{pushed}\\right) = {vec(f)}\\ \\mathrm{{N}}",
+                f"{pushed}\\right) = {vec(f, big)}\\ \\mathrm{{N}}",
                 sliding_total(pos, pair, body, f, symbol),
             )
         blocks += [Para(f"Force sum of {plain(pos.link(body))}:"), Display(sums)]
@@ -316,6 +319,7 @@ def _sliding_middle(
 
 def _totals(pos: Position, rec: Equilibrium) -> list[str]:
     """Return every reaction the group solved, as the force of one link on another."""
+    big = pos.force_scale()  # round-off of a force is told by it
     lines = []
     for pair in rec.pairs:
         r = rec.reactions[pair.name]
@@ -325,7 +329,7 @@ def _totals(pos: Position, rec: Equilibrium) -> list[str]:
             line = sliding_total(pos, pair, pair.second, f, symbol)
         else:
             line = (
-                f"\\vec {symbol} = {vec(f)}\\ \\mathrm{{N}},\\quad {symbol} = "
+                f"\\vec {symbol} = {vec(f, big)}\\ \\mathrm{{N}},\\quad {symbol} = "
                 f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
             )
         if pair.kind == "P":

@@ -251,11 +251,21 @@ def lever_terms(
     """Return the table rows of every load's power and their sum (W)."""
     rows: list[tuple[str, ...]] = []
     total_power = 0.0
-    for t in lever_parts(pos, bodies):
+    parts = lever_parts(pos, bodies)
+    # the round-off of a speed at rest (a slider at its dead centre: 5e-16 m/s) is
+    # told by the fastest, as the round-off of a force by the largest
+    fastest = max((math.hypot(*t.velocity) for t in parts), default=0.0)
+    turning = max((abs(t.omega) for t in parts), default=0.0)
+    # a power is told from round-off by the largest force times the fastest speed
+    # (at a dead centre every power is round-off)
+    powers = pos.force_scale() * fastest
+    for t in parts:
         if t.couple:
-            given, rate = num(t.load.couple), f"\\omega = {num(t.omega)}"
+            given, rate = num(t.load.couple), f"\\omega = {num(t.omega, turning)}"
         else:
-            given, rate = vec(t.load.force), f"\\vec v = {vec(t.velocity)}"
-        rows.append((f"${t.load.tex}$", f"${given}$", f"${rate}$", f"${num(t.power)}$"))
+            given = vec(t.load.force, pos.force_scale())
+            rate = f"\\vec v = {vec(t.velocity, fastest)}"
+        power = num(t.power, powers)
+        rows.append((f"${t.load.tex}$", f"${given}$", f"${rate}$", f"${power}$"))
         total_power += t.power
     return rows, total_power

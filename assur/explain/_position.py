@@ -162,6 +162,25 @@ class Position:
             self.scales[key] = found
         return found
 
+    def force_scale(self) -> float:
+        """Return a size of the loads at play, N: the largest applied force or reaction.
+
+        What a force is told from round-off by: the guide's normal force of an
+        in-line slider-crank at its dead centre is 1.4e-14 N beside 3000 N.
+        """
+        found = self.scales.get((-1, -1))
+        if found is None:
+            found = 0.0
+            if self.applied is not None:
+                for w in self.applied.wrenches:
+                    found = max(found, math.hypot(value(w[0]), value(w[1])))
+            if self.result is not None:
+                for rec in self.result.groups:
+                    for r in rec.reactions.values():
+                        found = max(found, math.hypot(value(r.fx), value(r.fy)))
+            self.scales[(-1, -1)] = found
+        return found
+
     def _clean(self, v: Array, k: int) -> Array:
         """Return ``v`` (level ``k``) with its round-off set to zero."""
         v[np.abs(v) < ROUND_OFF * self.rate_scale(k)] = 0.0
