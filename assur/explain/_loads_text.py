@@ -140,13 +140,10 @@ def link_loads(
     """
     out = own_loads(pos, body)
     assert pos.result is not None
-    reactions = {}
-    for rec in pos.result.groups:
-        reactions.update(rec.reactions)
+    reactions = pos.reactions()
     rubbing = []
-    for pair_name, pair in pos.plan.pairs.items():
-        if body not in (pair.first, pair.second):
-            continue
+    for pair in pos.pairs_of(body):
+        pair_name = pair.name
         other = pair.first if pair.second == body else pair.second
         if other in solved or pair_name in pairs:
             rubbing.append(friction_load(pos, pair, body))

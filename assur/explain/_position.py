@@ -70,6 +70,32 @@ class Position:
     scales: dict[tuple[int, int], float] = field(
         default_factory=dict, compare=False, repr=False
     )
+    memo: dict[str, Any] = field(default_factory=dict, compare=False, repr=False)
+    """Indexes a note reads at every link, built once (a chain of 400 dyads spent
+    most of its note scanning every pair for each link)."""
+
+    def pairs_of(self, body: int) -> list[PairPlan]:
+        """Return the pairs ``body`` takes part in, in the plan's order."""
+        index = self.memo.get("pairs")
+        if index is None:
+            index = {}
+            for pair in self.plan.pairs.values():
+                index.setdefault(pair.first, []).append(pair)
+                if pair.second != pair.first:
+                    index.setdefault(pair.second, []).append(pair)
+            self.memo["pairs"] = index
+        return index.get(body, [])  # type: ignore[no-any-return]
+
+    def reactions(self) -> dict[str, Any]:
+        """Return every pair's reaction the reverse pass solved, by pair name."""
+        found = self.memo.get("reactions")
+        if found is None:
+            found = {}
+            if self.result is not None:
+                for rec in self.result.groups:
+                    found.update(rec.reactions)
+            self.memo["reactions"] = found
+        return found  # type: ignore[no-any-return]
 
     @property
     def plan(self) -> Plan:
