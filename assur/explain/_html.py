@@ -25,6 +25,7 @@ math[display="block"] { margin: 0.4rem 0; overflow-x: auto; text-align: left; }
 .note-eq { margin: 0.6rem 0 0.6rem 1rem; }
 table { border-collapse: collapse; margin: 0.6rem 0; }
 td, th { border: 1px solid #d1d5db; padding: 0.2rem 0.5rem; text-align: left; }
+@media print { math[display="block"] { overflow: visible; font-size: 0.9em; } }
 """
 
 

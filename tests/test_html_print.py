@@ -1,0 +1,93 @@
+"""The report page on paper, without JavaScript and with awkward names.
+
+Checked on the page's text: its print style sheet, its scrolling equations, the
+scope of the free-body pictures' styles, long names, the order of its tables and
+the spelling of its units.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+import assur
+from assur.html import render_report
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+LONG = "the_coupler_of_this_crank_rocker_four_bar_with_a_very_long_name_xyz"
+"""A link name of 67 letters and no space."""
+
+
+@pytest.fixture(scope="module")
+def four_bar() -> str:
+    """The four-bar's report over a few positions."""
+    return render_report(assur.load(EXAMPLES / "four_bar.toml"), [0.0, 90.0, 180.0])
+
+
+def _style(page: str) -> str:
+    """The page's own style sheet (the first style element), comments left out."""
+    css = page.split("<style>")[1].split("</style>")[0]
+    return re.sub(r"/\*.*?\*/", "", css, flags=re.S)
+
+
+def _print_rules(page: str) -> str:
+    """The rules inside the style sheet's ``@media print`` block."""
+    css = _style(page)
+    start = css.index("@media print {") + len("@media print {")
+    depth, end = 1, start
+    while depth:
+        depth += {"{": 1, "}": -1}.get(css[end], 0)
+        end += 1
+    return css[start : end - 1]
+
+
+def _rule(css: str, selector: str) -> str:
+    """The declarations of every rule whose selector list holds ``selector``."""
+    bodies = [
+        body
+        for selectors, body in re.findall(r"([^{}]+)\{([^{}]*)\}", css)
+        if selector in [s.strip() for s in selectors.split(",")]
+    ]
+    assert bodies, selector
+    return " ".join(bodies)
+
+
+def test_tables_print_whole(four_bar: str) -> None:
+    rules = _print_rules(four_bar)
+    body = _rule(rules, ".table-wrap")
+    assert "max-height: none" in body
+    assert "overflow: visible" in body
+
+
+def test_colour_swatches_print(four_bar: str) -> None:
+    body = _rule(_print_rules(four_bar), ".swatch")
+    assert "print-color-adjust: exact" in body
+    assert "-webkit-print-color-adjust: exact" in body
+
+
+def test_controls_do_not_print(four_bar: str) -> None:
+    body = _rule(_print_rules(four_bar), ".controls")
+    assert "display: none" in body
+    assert 'class="controls"' in four_bar
+
+
+def test_display_equations_print_unclipped(four_bar: str) -> None:
+    body = _rule(_print_rules(four_bar), '#note math[display="block"]')
+    assert "overflow: visible" in body
+
+
+def test_display_equations_scroll_on_screen(four_bar: str) -> None:
+    screen = _style(four_bar).split("@media print")[0]
+    body = _rule(screen, '#note math[display="block"]')
+    assert "max-width: 100%" in body
+    assert "overflow-x: auto" in body
+    assert '<math display="block"' in four_bar.split('id="note"')[1]
+
+
+def test_the_note_page_prints_its_equations_unclipped() -> None:
+    from assur.explain import explain
+
+    page = explain(assur.load(EXAMPLES / "four_bar.toml"), 100.0).to_html()
+    assert "overflow: visible" in _rule(_print_rules(page), 'math[display="block"]')
