@@ -8,6 +8,7 @@ the spelling of its units.
 from __future__ import annotations
 
 import re
+import warnings
 from pathlib import Path
 
 import pytest
@@ -84,6 +85,29 @@ def test_display_equations_scroll_on_screen(four_bar: str) -> None:
     assert "max-width: 100%" in body
     assert "overflow-x: auto" in body
     assert '<math display="block"' in four_bar.split('id="note"')[1]
+
+
+def test_free_body_pictures_do_not_style_the_page(four_bar: str) -> None:
+    bodies = four_bar.split('id="free-bodies"')[1].split("</section>")[0]
+    assert bodies.count("<svg") >= 1
+    assert "<style" not in bodies
+    # matplotlib's defaults kept, on each picture's root only
+    roots = re.findall(r"<svg[^>]*>", bodies)
+    assert all('stroke-linejoin="round"' in r for r in roots)
+
+
+def test_long_names_wrap_and_draw_without_warnings() -> None:
+    text = (EXAMPLES / "four_bar.toml").read_text()
+    text = text.replace('"coupler"', f'"{LONG}"').replace(
+        "links.coupler", f"links.{LONG}"
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        page = render_report(assur.loads(text), [0.0, 90.0])
+    assert f'<p class="formula">I(ground, crank) → II({LONG}, rocker)' in page
+    screen = _style(page).split("@media print")[0]
+    for selector in (".formula", "table.groups td", ".legend li", "#note p"):
+        assert "overflow-wrap: anywhere" in _rule(screen, selector)
 
 
 def test_the_note_page_prints_its_equations_unclipped() -> None:

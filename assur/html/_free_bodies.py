@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import io
 import re
+import warnings
 from html import escape
 
 from assur.analysis import Table
@@ -24,13 +25,19 @@ FIGURE_SIZE = (7.5, 5.5)
 def inline_svg(svg: str, prefix: str) -> str:
     """Return matplotlib's SVG document as an element to set into an HTML page.
 
-    The XML prologue, the metadata and the namespace declarations go (HTML knows
-    SVG without them, and the page names no address); every id gets ``prefix``,
-    since several diagrams share one document and matplotlib reuses ids (glyphs).
+    The XML prologue, the metadata, the style element and the namespace
+    declarations go (HTML knows SVG without them, and the page names no address);
+    every id gets ``prefix``, since several diagrams share one document and
+    matplotlib reuses ids (glyphs).
     """
     start = svg.index("<svg")
     svg = svg[start:]
     svg = re.sub(r"<metadata>.*?</metadata>\s*", "", svg, flags=re.S)
+    # matplotlib's <style>*{stroke-linejoin: round; ...}</style> would style the
+    # whole HTML page; the same defaults as attributes of the root only inherit
+    # into this drawing (an element's own style still wins, as under the rule)
+    svg = re.sub(r"\s*<style[^>]*>.*?</style>", "", svg, flags=re.S)
+    svg = svg.replace("<svg", '<svg stroke-linejoin="round" stroke-linecap="butt"', 1)
     svg = re.sub(r'\s+xmlns(:\w+)?="[^"]*"', "", svg)
     svg = re.sub(r'\bid="([^"]+)"', rf'id="{prefix}\1"', svg)
     svg = re.sub(r"url\(#([^)]+)\)", rf"url(#{prefix}\1)", svg)
@@ -47,7 +54,13 @@ def _diagram(table: Table, index: int) -> str:
     from assur.plotting import draw_free_body
 
     # a fixed salt: the same report gives the same clip-path ids, run after run
-    with mpl.rc_context({"svg.hashsalt": "assur", "svg.fonttype": "path"}):
+    with (
+        mpl.rc_context({"svg.hashsalt": "assur", "svg.fonttype": "path"}),
+        warnings.catch_warnings(),
+    ):
+        # labels of very long names leave the constrained layout no room: the
+        # figure is then simply not tightened, nothing the reader must act on
+        warnings.filterwarnings("ignore", "constrained_layout not applied", UserWarning)
         fig = Figure(figsize=FIGURE_SIZE, layout="constrained")
         draw_free_body(table, index, ax=fig.add_subplot())
         buffer = io.StringIO()
