@@ -110,6 +110,14 @@ def test_long_names_wrap_and_draw_without_warnings() -> None:
         assert "overflow-wrap: anywhere" in _rule(screen, selector)
 
 
+def test_without_javascript_the_page_says_what_is_missing(four_bar: str) -> None:
+    found = re.findall(r"<noscript>(.*?)</noscript>", four_bar, re.S)
+    assert len(found) == 1
+    words = " ".join(found[0].split())
+    assert "drawing, the slider and “At this position” need JavaScript" in words
+    assert "the tables below do not" in words
+
+
 def test_the_note_page_prints_its_equations_unclipped() -> None:
     from assur.explain import explain
 
