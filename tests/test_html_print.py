@@ -118,6 +118,19 @@ def test_without_javascript_the_page_says_what_is_missing(four_bar: str) -> None
     assert "the tables below do not" in words
 
 
+def test_inertia_loads_follow_the_order_of_the_other_tables() -> None:
+    page = render_report(
+        assur.load(EXAMPLES / "five_bar_two_cranks.toml"), [[60.0, 120.0]]
+    )
+    order = ["left_crank", "right_crank", "left_rod", "right_rod"]
+    inertia = page.split('id="inertia"')[1].split("</section>")[0]
+    assert re.findall(r'data-link="([^"]+)"', inertia) == order
+    data = page.split('id="assur-data">')[1].split("</script>")[0]
+    # the live table "inertia of": its rows are those with an Fi.x key
+    names = re.findall(r'"name": ?"([^"]+)", ?"keys": ?\["[^"]+\.Fi\.x"', data)
+    assert names == order
+
+
 def test_the_note_page_prints_its_equations_unclipped() -> None:
     from assur.explain import explain
 

@@ -14,6 +14,7 @@ from html import escape
 from assur.analysis import Table
 from assur.html._data import public
 from assur.html._sections import first_position, number, wide_card
+from assur.html._series import massive_links
 
 __all__ = ["inertia_html"]
 
@@ -35,14 +36,17 @@ def inertia_rows(table: Table, row: int = 0) -> list[tuple[str, list[float]]]:
     """Return each massive link's name and its inertia figures at ``row``.
 
     The figures are, in SI units: m, a_G, F_i, the direction of F_i (deg from +x,
-    counter-clockwise), J_G, epsilon, M_i and h (NaN where F_i is zero).
+    counter-clockwise), J_G, epsilon, M_i and h (NaN where F_i is zero). The links
+    come in the order of the page's other tables (:func:`massive_links`).
     """
     out = []
-    for link in table.mechanism.links:
-        if not link.mass or f"{link.name}.Fi.x" not in table.columns:
+    links = {x.name: x for x in table.mechanism.links}
+    for name in massive_links(table):
+        link = links[name]
+        if not link.mass:
             continue
         fx, fy, mi, ax, ay, eps = (
-            float(table[f"{link.name}.{c}"][row])
+            float(table[f"{name}.{c}"][row])
             for c in ("Fi.x", "Fi.y", "Mi", "G.ax", "G.ay", "alpha")
         )
         size = math.hypot(fx, fy)
@@ -50,7 +54,7 @@ def inertia_rows(table: Table, row: int = 0) -> list[tuple[str, list[float]]]:
         direction = math.degrees(math.atan2(fy, fx)) if size > 0 else math.nan
         h = abs(mi) / size if size > 0 else math.nan
         figures = [link.mass, math.hypot(ax, ay), size, direction]
-        out.append((link.name, [*figures, link.inertia or 0.0, eps, mi, h]))
+        out.append((name, [*figures, link.inertia or 0.0, eps, mi, h]))
     return out
 
 

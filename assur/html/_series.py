@@ -86,6 +86,22 @@ def moving_links(plan: Plan, table: Table) -> list[str]:
     return out
 
 
+def massive_links(table: Table) -> list[str]:
+    """Return the links with inertia loads in the table, in the plan's link order.
+
+    The plan's order (input links, then group by group) is that of the other
+    tables of the page; the file's order of links would differ from it.
+    """
+    if table.force_state is None:
+        return []
+    masses = {x.name: x.mass for x in table.mechanism.links}
+    return [
+        x
+        for x in table.plan.bodies[1:]
+        if masses.get(x) and f"{x}.Fi.x" in table.columns
+    ]
+
+
 def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
     """Return the live tables of values at the shown position: head and rows each.
 
@@ -111,9 +127,8 @@ def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
     ]
     # the inertia loads follow the slider too: d'Alembert's loads at that position
     inertia = [
-        {"name": x.name, "keys": [f"{x.name}.Fi.x", f"{x.name}.Fi.y", f"{x.name}.Mi"]}
-        for x in table.mechanism.links
-        if forced and x.mass and f"{x.name}.Fi.x" in table.columns
+        {"name": x, "keys": [f"{x}.Fi.x", f"{x}.Fi.y", f"{x}.Mi"]}
+        for x in massive_links(table)
     ]
     parts = {
         "links": ("link", ("angle", "ω", "α"), links),
