@@ -83,8 +83,9 @@ class Column:
 
 
 def pretty_unit(unit: str) -> str:
-    """Return a unit as pictures write it: ``"rad/s²"``, ``"N·m"``."""
-    return unit.replace("^2", "²").replace("^3", "³").replace("N m", "N·m")
+    """Return a unit as pictures write it: ``"rad/s²"``, ``"N·m"``, ``"kg·m²"``."""
+    out = unit.replace("^2", "²").replace("^3", "³")
+    return out.replace("N m", "N·m").replace("kg m", "kg·m")
 
 
 def schema(plan: Plan, forces: bool) -> tuple[Column, ...]:

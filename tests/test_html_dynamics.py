@@ -42,7 +42,7 @@ def test_a_mechanism_that_runs_without_a_flywheel():
         "Reduced torque of the loads and the motor torque",
         "Crank speed in the steady state",
     ]
-    assert [c["unit"] for c in data["dynamics"]["charts"]] == ["kg m²", "N·m", "rad/s"]
+    assert [c["unit"] for c in data["dynamics"]["charts"]] == ["kg·m²", "N·m", "rad/s"]
     for key in ("reduced.inertia", "reduced.torque", "driver.motor", "driver.omega"):
         np.testing.assert_allclose(
             data["columns"][key], t[key], rtol=ROUNDING, atol=1e-12
@@ -61,7 +61,7 @@ def test_a_light_mechanism_gets_the_flywheel_it_needs():
     part = html.unescape(section(text))
     assert f"holds δ to {SHOWN_DELTA:g}" in part
     inertia = assur.flywheel(mech, SHOWN_DELTA)
-    assert f"{inertia:.5g} kg m²" in part
+    assert f"{inertia:.5g} kg·m²" in part
     assert page_data(text)["dynamics"]["summary"]["delta"] == pytest.approx(SHOWN_DELTA)
 
 

@@ -131,6 +131,14 @@ def test_inertia_loads_follow_the_order_of_the_other_tables() -> None:
     assert names == order
 
 
+def test_one_spelling_of_each_unit(four_bar: str) -> None:
+    assert "N·m" in four_bar
+    assert "kg·m²" in four_bar
+    text = re.sub(r"<math.*?</math>", "", four_bar, flags=re.S)
+    assert not re.search(r"\bN m\b", text)
+    assert not re.search(r"\bkg m", text)
+
+
 def test_the_note_page_prints_its_equations_unclipped() -> None:
     from assur.explain import explain
 

@@ -50,8 +50,9 @@ def driver_blocks(pos: Position) -> list[Block]:
             blocks += _slider(pos, i, loads)
         value = _balancing(pos, i)
         sym = _symbol(d, many)
-        unit = "N m" if d.kind == "R" else "N"
-        blocks.append(Para(f"So ${sym} = {num(value)}$ {unit}." + _ideal(pos, i, sym)))
+        # the unit in the mathematics, as in every other line of the note
+        unit = "\\ \\mathrm{N\\,m}" if d.kind == "R" else "\\ \\mathrm{N}"
+        blocks.append(Para(f"So ${sym} = {num(value)}{unit}$." + _ideal(pos, i, sym)))
     return blocks
 
 

@@ -40,7 +40,7 @@ def system_blocks(pos: Position, rec: Equilibrium) -> list[Block]:
         Para(_meaning(pos, eq.unknowns)),
         Para(
             "Each link's two force sums and its moment equation, with the known loads "
-            "on the right (N, N m):"
+            "on the right ($\\mathrm{N}$, $\\mathrm{N\\,m}$):"
         ),
         Display(tuple(lines)),
         Para("Solved together:"),

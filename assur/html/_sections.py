@@ -16,6 +16,7 @@ from assur._structure import Structure
 from assur._text import roman, row_position
 from assur._troubles import skipped_why
 from assur.analysis import Table
+from assur.columns import pretty_unit
 from assur.html._data import all_groups, public
 from assur.html._series import table_columns
 from assur.plan import Plan
@@ -149,7 +150,7 @@ def summary_html(table: Table) -> str:
     summary.add(table)
     rows = "\n".join(
         f'<tr data-key="{escape(key)}"><th>{escape(key)}</th>'
-        f"<td>{number(value)}</td><td>{escape(summary.units[key])}</td></tr>"
+        f"<td>{number(value)}</td><td>{escape(pretty_unit(summary.units[key]))}</td></tr>"
         for key, value in summary.result().items()
     )
     return wide_card(
