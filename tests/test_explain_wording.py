@@ -293,7 +293,34 @@ def test_a_fixed_pivot_reached_through_its_link_sums_to_zero():
 def test_a_dollar_in_the_name_is_bare_in_the_page_s_title():
     mech = dataclasses.replace(assur.catalog.four_bar(), name="$x$ bar")
     page = explain(mech, 45.0).to_html()
-    assert "<title>$x$ bar: the analysis explained</title>" in page
+    assert (
+        "<title>$x$ bar at crank angle 45 deg: the analysis explained</title>" in page
+    )
+
+
+@pytest.mark.parametrize(
+    ("stem", "angle", "where"),
+    [
+        ("four_bar", 100.0, "crank angle 100 deg"),
+        ("five_bar_two_cranks", [60.0, 120.0], "driver positions left_crank 60 deg, "),
+    ],
+)
+def test_the_title_says_which_position_the_note_is_for(stem, angle, where) -> None:
+    note = explain(assur.load(EXAMPLES / f"{stem}.toml"), angle)
+    assert f"at {where}" in note.title
+    assert str(note).splitlines()[0].startswith("# ")
+    assert f"at {where}" in str(note).splitlines()[0]
+    page = note.to_html()
+    for tag in ("title", "h1"):
+        shown = page.split(f"<{tag}>")[1].split(f"</{tag}>")[0]
+        assert f"at {where}" in shown
+    latex = note.to_latex().split("\\title{")[1].split("}\n")[0]
+    assert f"at {where}" in latex.replace("\\_", "_")
+
+
+def test_a_slider_driven_note_s_title_gives_its_position_in_m() -> None:
+    note = explain(assur.load(DATA / "slider_driven.toml"), 0.03)
+    assert note.title.endswith("at driver position 0.03 m: the analysis explained")
 
 
 CRANK_ONLY = """name = "crank"

@@ -94,9 +94,29 @@ def explain(
         blocks += lever_blocks(pos)
     if answers:
         blocks += answer_blocks(pos, answers, source)
-    title = f"{plain(mechanism.name or 'Mechanism')}: the analysis explained"
+    name = plain(mechanism.name or "Mechanism")
+    title = f"{name} at {_where(pos.table)}: the analysis explained"
     table = pos.table
     values = {
         c: float(v[0]) for c, v in zip(table.columns, table.arrays(), strict=True)
     }
     return Note(title, tuple(blocks), values)
+
+
+def _where(table: Any) -> str:
+    """Return the note's driver positions for its title: "crank angle 100 deg".
+
+    An angle is in deg, a slide in m, as the note gives them; with several
+    drivers each follows its input link's name.
+    """
+    plan = table.plan
+    values = [
+        f"{x:.6g} deg" if d.kind == "R" else f"{x:.6g} m"
+        for d, x in zip(plan.drivers, table.given[0].tolist(), strict=True)
+    ]
+    if len(values) == 1:
+        what = "crank angle" if plan.drivers[0].kind == "R" else "driver position"
+        return f"{what} {values[0]}"
+    names = [plain(plan.bodies[d.body]) for d in plan.drivers]
+    named = [f"{n} {v}" for n, v in zip(names, values, strict=True)]
+    return "driver positions " + ", ".join(named)
