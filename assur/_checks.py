@@ -131,6 +131,19 @@ def _control(name: str) -> str | None:
     return None
 
 
+def _check_title(name: str) -> None:
+    """Check the mechanism's name: one line, no control character."""
+    control = _control(name)
+    if control is not None:
+        # the name heads summaries and titles on a terminal: a line break or an
+        # escape sequence in it would split or recolour them
+        _fail(
+            "name",
+            f"the name {describe(name)} holds the control character "
+            f"{control!a}; expected one line of printable characters",
+        )
+
+
 _GOOD_NAMES: set[str] = set()
 """Names found valid already: the variants of a study repeat their names, and the
 check reads every character's Unicode category."""

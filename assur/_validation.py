@@ -17,9 +17,9 @@ from assur._checks import (
     MOST_FRICTION,
     _check_name,
     _check_number,
+    _check_title,
     _check_vec,
     _coincide,
-    _control,
     _entry,
     _fail,
     _finite,
@@ -201,15 +201,7 @@ def _validate_all(mech: Mechanism) -> None:
     for attr in ("name", "description"):
         if not isinstance(getattr(mech, attr), str):
             _fail(attr, f"expected a text, got {describe(getattr(mech, attr))}")
-    control = _control(mech.name)
-    if control is not None:
-        # the name heads summaries and titles on a terminal: a line break or an
-        # escape sequence in it would split or recolour them
-        _fail(
-            "name",
-            f"the name {describe(mech.name)} holds the control character "
-            f"{control!a}; expected one line of printable characters",
-        )
+    _check_title(mech.name)
     link_names = _validate_links(mech)
     all_links = [GROUND, *link_names]
     joint_names = _validate_joints(mech, all_links)

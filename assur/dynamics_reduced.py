@@ -21,8 +21,9 @@ from typing import Any
 import numpy as np
 
 from assur._change_limits import across_change_points
+from assur._grid_warnings import noise_message, pass_on, unresolved_message
 from assur._loads import compile_loads
-from assur._text import describe, fitting
+from assur._text import describe
 from assur._vec import Array
 from assur.analysis import forces, kinematics
 from assur.errors import (
@@ -48,9 +49,6 @@ between grid points to 1e-8 of their largest magnitude."""
 BETWEEN_RTOL = 1e-8
 """Tolerance of the interpolants of ``J`` and ``M`` between grid points (relative to
 their largest magnitude)."""
-TROUBLE_TEXT = 300
-"""Most characters of the troubles the internal grid met, as one warning names them
-(the first always whole)."""
 
 
 def check_dynamic(mechanism: Mechanism, what: str = "dynamics") -> float:
@@ -229,7 +227,7 @@ def reduce(mechanism: Mechanism) -> Reduced:
             raise type(err)(msg) from err
         plan.memo["dynamics-reduced"] = found
     model, messages = found
-    _pass_on(messages, model.angle.shape[0])
+    pass_on(messages, model.angle.shape[0])
     return model  # type: ignore[no-any-return]
 
 
@@ -253,30 +251,14 @@ def _reduce(mechanism: Mechanism) -> tuple[Reduced, list[str]]:
         if done:
             break
         if _noisy(misses):
-            caught.append(_noise_message(misses[-1], error))
+            caught.append(noise_message(misses[-1], error))
             break
     else:
         if worst[1] > BETWEEN_RTOL:
             # the finest grid still misses J: the speeds are known only so far (a
             # sharp turn of J near a change point, say), which is said, not hidden
-            caught.append(_unresolved_message(count, worst))
+            caught.append(unresolved_message(count, worst))
     return model, caught
-
-
-OWN = ("the reduced torque is not smooth", "the reduced model is not resolved")
-"""How the grid's own warnings begin (see :func:`_pass_on`)."""
-
-
-def _unresolved_message(count: int, worst: tuple[str, float, float]) -> str:
-    """Return the warning of a grid that reached :data:`GRID_MOST` unresolved."""
-    what, miss, at = worst
-    return (
-        f"the reduced model is not resolved on its finest grid ({count} positions "
-        f"a turn): between grid points the interpolant of {what} misses it by "
-        f"{miss:.2g} of its largest value (near {at:.6g} deg: a sharp turn, as "
-        "near a change point?); the steady state's figures may be off by about as "
-        "much, not within 1e-8"
-    )
 
 
 def _noisy(misses: list[float]) -> bool:
@@ -289,16 +271,6 @@ def _noisy(misses: list[float]) -> bool:
     if len(misses) < 3 or not misses[-1] > BETWEEN_RTOL:
         return False
     return misses[-1] > 0.5 * misses[-2] and misses[-2] > 0.5 * misses[-3]
-
-
-def _noise_message(miss: float, error: float) -> str:
-    """Return the warning of a reduced torque that refining the grid does not settle."""
-    return (
-        f"the reduced torque is not smooth: between grid points it misses its "
-        f"interpolant by {miss:.2g} of its largest value however fine the grid "
-        "(the rounding of a load much larger than the work it does?); the work over "
-        f"the turn is known to about {error:.1g} of the work done in the turn"
-    )
 
 
 def _sample(
@@ -403,32 +375,3 @@ def _converged(
         if what == "J":
             worst = (what, relative, math.degrees(float(mids[i])) % 360.0)
     return bool(ok), (gap / scale if scale > 0 else 0.0), misses[1], worst
-
-
-def _pass_on(messages: list[str], count: int) -> None:
-    """Warn once of each distinct trouble the internal grid met.
-
-    The grid's own troubles (a reduced model that is noise, or not resolved) are
-    warned of apart: they say how far the figures can be trusted.
-    """
-    own = [m for m in messages if m.startswith(OWN)]
-    for message in own:
-        warnings.warn(f"dynamics: {message}", AssurWarning, stacklevel=3)
-    messages = [m for m in messages if not m.startswith(OWN)]
-    if not messages:
-        return
-    # each finer grid meets a trouble again at positions a little closer to its
-    # edges: the last (finest) message of each trouble stands for it
-    latest: dict[str, str] = {}
-    for message in messages:
-        latest[message.split(" at driver position")[0]] = message
-    troubles = list(latest.values())
-    fit = max(1, fitting(troubles, TROUBLE_TEXT))
-    shown = "; ".join(troubles[:fit])
-    if fit < len(troubles):
-        shown += f"; and {len(troubles) - fit} more"
-    warnings.warn(
-        f"dynamics, on its internal grid of up to {count} positions a turn: {shown}",
-        AssurWarning,
-        stacklevel=3,
-    )

@@ -496,7 +496,8 @@ def test_a_crank_that_cannot_turn_round():
 
 
 def test_the_grid_names_each_trouble_once_from_its_finest_grid():
-    from assur.dynamics_reduced import TROUBLE_TEXT, _pass_on
+    from assur._grid_warnings import TROUBLE_TEXT
+    from assur._grid_warnings import pass_on as _pass_on
 
     near = "group RRP (rod, ram): near a dead centre at driver positions "
     grids = [near + f"89.{k} deg to 90.{9 - k} deg" for k in range(5)]

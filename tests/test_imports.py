@@ -120,6 +120,7 @@ RANKS = {
     "assur.plotting": 10,
     # the dynamic model and the motion in time: sweeps of the analysis, reduced
     "assur.dynamics_reduced": 10,
+    "assur._grid_warnings": 1,
     "assur.dynamics_steady": 10,
     "assur.dynamics_model": 10,
     "assur.dynamics_flywheel": 10,
