@@ -117,7 +117,9 @@ def zhukovsky_lever(
 
     Every force acts at its point's image; a couple M on a link acts as the pair of
     forces ``M / l`` and ``-M / l`` across the link's two joints farthest apart, at
-    their images (a link without two joints apart has its couple listed only).
+    their images (a link without two joints apart has its couple listed only),
+    drawn to the forces' scale: arrow times arm is each share. A pair shorter than
+    :data:`MARK` at that scale is drawn that long, dotted, the legend saying so.
     Beside the lever every load's moment about the pole divided by the driver's
     speed is listed (``assur.plotting.lever.lever_moments``): the terms add up to
     the balancing load of driver ``driver`` written below them (friction's power
@@ -151,18 +153,19 @@ def zhukovsky_lever(
     apart = _apart(lever, terms)
     arrows = _lever_arrows(lever, terms, apart)
     names += _name_pair_points(ax, lever, apart, found, mu)
-    # a couple's pair is drawn to its own scale: beside the inertia forces it is
-    # often a fraction of a millimetre
-    fmu, cmu = (
-        _scale([f for _, f, _, c in arrows if c == pair]) * 2.0
-        for pair in (False, True)
-    )
+    # one scale for forces and couples' pairs: on a lever arrow length times arm
+    # is the moment, so a couple's pair drawn to a scale of its own would show a
+    # share of 0.1 % as the biggest arrow (the forces set it, being most shares)
+    forces = [f for _, f, _, c in arrows if not c] or [f for _, f, *_ in arrows]
+    fmu = _scale(forces) * 2.0
+    marked = False
     for at, force, label, couple in arrows:
-        color = COUPLE if couple else FORCE
-        tip = at / mu + force / (cmu if couple else fmu)
+        tip, mark = _tip(at / mu, force / fmu, couple)
+        marked |= mark
         # a load of nothing (a crank's inertia force at its centre) gets no arrow
         # and no name: its share, nothing, is listed
-        if _arrow(ax, at / mu, tip, color):
+        color = COUPLE if couple else FORCE
+        if _arrow(ax, at / mu, tip, color, ls=":" if mark else "-"):
             text = ax.annotate(label, tuple(tip), fontsize=7, color=color)
             names.append(Name(text, at / mu, tip))
     # the shares add up to the balancing load: their sum is the one written
@@ -172,7 +175,10 @@ def zhukovsky_lever(
     mu_unit = "(m/s)/mm" if not unit_speed else "m/mm" if d.kind == "R" else "1/mm"
     entries = [(f"force, 1 mm = {fmu:g} N", FORCE)]
     if any(couple for *_, couple in arrows):
-        entries.append((f"couple M as ±M/l at two joints, 1 mm = {cmu:g} N", COUPLE))
+        text = "couple M as ±M/l at two joints, same scale"
+        if marked:
+            text += f";\ndotted: below the scale, drawn {MARK:g} mm long"
+        entries.append((text, COUPLE))
     note = f"lever: μv = {mu:g} {mu_unit}{per},\nturned 90°"
     _legend(ax, entries, note, beside=True)
     # room round the lever for the names; each beside its arrow or image, clear
@@ -187,12 +193,26 @@ FORCE = "#d62728"
 """The colour of a force on the lever."""
 COUPLE = "#9467bd"
 """The colour of a couple's pair of forces on the lever."""
+MARK = 2.0
+"""Length, mm, a couple's force shorter than this at the force scale is drawn."""
 PAIR_GAP = 1e-6
 """Two joints of a link closer than this times the mechanism's size carry no pair."""
 
 
 Ends = tuple[tuple[str, np.ndarray], tuple[str, np.ndarray]]
 """Two joints of a link: each its name and its place (m)."""
+
+
+def _tip(start: np.ndarray, arrow: np.ndarray, couple: bool) -> tuple[Any, bool]:
+    """Return an arrow's tip, mm, and whether it is a couple's marked below scale.
+
+    A couple's force shorter than :data:`MARK` at the force scale is drawn that
+    long, in its direction, so that a small couple is seen yet stays small.
+    """
+    length = float(np.hypot(*arrow))
+    if not couple or length >= MARK or length == 0.0:
+        return start + arrow, False
+    return start + arrow * (MARK / length), True
 
 
 def _apart(lever: Position, terms: list[LeverTerm]) -> dict[int, Ends | None]:
