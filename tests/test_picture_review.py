@@ -9,6 +9,7 @@ from pathlib import Path
 
 import matplotlib
 import numpy as np
+import pytest
 
 import assur
 from assur.plotting import lever
@@ -44,5 +45,25 @@ def test_the_lever_draws_couples_to_the_forces_scale() -> None:
         assert couples
         assert max(couples) <= lever.MARK * (1 + 1e-9)
         assert max(couples) < max(_arrows(ax, lever.FORCE))
+    finally:
+        plt.close(ax.figure)
+
+
+def test_the_torque_diagram_states_the_summary_s_mean() -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import force_diagrams
+
+    # 0:360:5 ends on its first pose: the picture wrote mean 12.85 N·m (that pose
+    # counted twice), the summary 12.82
+    mech = assur.load(EXAMPLES / "slider_crank_friction.toml")
+    table = assur.forces(mech, np.arange(0.0, 361.0, 5.0))
+    ax = force_diagrams.plot_torque(table)
+    try:
+        want = table.summary()["driver.torque.mean"]
+        labels = [t.get_text() for t in ax.get_legend().get_texts()]
+        (label,) = [t for t in labels if t.startswith("mean ")]
+        assert float(label.split()[1]) == pytest.approx(want, abs=0.01)
+        assert label.startswith("mean 12.82 ")
     finally:
         plt.close(ax.figure)

@@ -80,7 +80,9 @@ def _plot_balancing(ax: Any, table: Table, x: np.ndarray, i: int, name: str) -> 
         ms=5,
         label=f"virtual-power check{name}",
     )
-    mean = float(np.mean(balancing))
+    # the summary's mean: a sweep ending a whole turn on from its start (0:360:5)
+    # ends on its first pose, counted once there; np.mean counted it twice
+    mean = table.summary()[f"{key}.mean"]
     if abs(mean) < 1e-9 * float(np.max(np.abs(balancing))):
         mean = 0.0  # a full turn of a conservative system: zero up to rounding
     ax.axhline(mean, color=color, lw=0.9, ls=":", label=f"mean {mean:.4g} {unit}{name}")
