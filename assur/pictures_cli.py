@@ -128,7 +128,8 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         type=whole_number,
         default=72,
         metavar="N",
-        help="at most N frames, evenly spread over the sweep (default 72, "
+        help="at most N frames, evenly spread over the sweep (a whole turn's end "
+        "not repeated; default 72, "
         f"{FRAMES_RANGE[0]} to {FRAMES_RANGE[1]}; at most 2 GiB of frames at --dpi)",
     )
     p.add_argument(

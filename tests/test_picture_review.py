@@ -67,3 +67,30 @@ def test_the_torque_diagram_states_the_summary_s_mean() -> None:
         assert label.startswith("mean 12.82 ")
     finally:
         plt.close(ax.figure)
+
+
+@pytest.mark.parametrize(
+    ("angles", "want"),
+    [
+        (None, 45.0 + 30.0 * np.arange(12)),  # the default 45..404 in steps of 1
+        ("0:360:5", 30.0 * np.arange(12)),  # a turn with its end, the start again
+        ("360:0:-5", 360.0 - 30.0 * np.arange(12)),
+        ("0:180:5", np.linspace(0, 36, 12).round() * 5.0),  # no turn: spread
+    ],
+)
+def test_an_animation_of_a_turn_loops_evenly(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, angles, want
+) -> None:
+    import assur.plotting
+    from assur.cli import main
+
+    # whitworth's 12 frames were 32.6 degrees apart, and 1 degree from the last
+    # (404) back to the first (45): the loop stuttered
+    drawn = []
+    monkeypatch.setattr(
+        assur.plotting, "animate", lambda table, *a, **k: drawn.append(table) or 12
+    )
+    argv = ["animate", str(EXAMPLES / "whitworth.toml"), "--frames", "12", "-q"]
+    argv += ["-o", str(tmp_path / "a.gif")] + (["--angles", angles] if angles else [])
+    assert main(argv) == 0
+    np.testing.assert_allclose(drawn[0]["angle"], want, atol=1e-9)
