@@ -17,6 +17,7 @@ from assur.plotting import lever
 matplotlib.use("Agg")
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
+ANGLES = np.arange(0.0, 360.0, 1.0)
 
 
 def _arrows(ax, color: str) -> list[float]:
@@ -94,3 +95,19 @@ def test_an_animation_of_a_turn_loops_evenly(
     argv += ["-o", str(tmp_path / "a.gif")] + (["--angles", angles] if angles else [])
     assert main(argv) == 0
     np.testing.assert_allclose(drawn[0]["angle"], want, atol=1e-9)
+
+
+def test_the_pictures_write_forces_in_plain_digits() -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import force_diagrams
+
+    # the crank's pin: "max 1.127e+04 N", where an engineer reads "11266 N"
+    table = assur.forces(assur.load(EXAMPLES / "slider_crank_exercise.toml"), ANGLES)
+    fig = force_diagrams.plot_hodographs(table)
+    try:
+        titles = [ax.get_title() for ax in fig.axes]
+        assert any(t.endswith("max 11266 N") for t in titles), titles
+        assert not any("e+" in t for t in titles)
+    finally:
+        plt.close(fig)

@@ -13,6 +13,7 @@ import numpy as np
 
 from assur.plotting._heads import fitted_arrow
 from assur.plotting._loadnames import name_load
+from assur.plotting._numbers import quantity
 
 if TYPE_CHECKING:
     from assur.plotting._context import _Context
@@ -61,7 +62,11 @@ def _draw_force(
     ax.add_patch(fitted_arrow([a.at, tip], 13, color=a.color, lw=1.7, zorder=6))
     if text:
         u = force / mag
-        words = f"{a.label} = {mag:.3g} {a.units[0]}" if text == "values" else a.label
+        words = (
+            f"{a.label} = {quantity(mag, a.units[0], 3)}"
+            if text == "values"
+            else a.label
+        )
         label = ax.text(
             *(tip + 0.5 * ctx.r * u),
             words,
@@ -90,7 +95,7 @@ def _draw_couple(
     if text:
         # the balancing torque always shows its value
         value = text == "values" or a.kind == "balancing"
-        words = f"{a.label} = {couple:.3g} {a.units[1]}" if value else a.label
+        words = f"{a.label} = {quantity(couple, a.units[1], 3)}" if value else a.label
         label = ax.text(
             *(a.point + rad * np.array([0.7, 0.8])),
             words,

@@ -19,6 +19,7 @@ from assur.plotting._context import _unit
 from assur.plotting._friction import shown_point
 from assur.plotting._geometry import _anchor, _nice, _public
 from assur.plotting._mathtext import reaction_symbol
+from assur.plotting._numbers import quantity
 from assur.plotting._style import (
     ARROW_LENGTH,
     BALANCING_COLOR,
@@ -315,7 +316,7 @@ def _scale_text(arrows: Iterable[_Arrow], scale: float) -> str:
     units = dict.fromkeys(a.units[0] for a in arrows if a.force is not None)
     # the drawing is in the mechanism's metres: a centimetre read on its axes,
     # not on the page (whose size the viewer chooses)
-    return f"force scale: 1 cm on the axes = {scale:g} {' or '.join(units)}"
+    return f"force scale: 1 cm on the axes = {quantity(scale, ' or '.join(units), 6)}"
 
 
 def _scale(arrows: Iterable[_Arrow], size: float) -> float:

@@ -16,6 +16,7 @@ import numpy as np
 from assur.columns import pretty_unit
 from assur.errors import UsageError
 from assur.plotting._axes import _new_axes, labelled_legend
+from assur.plotting._numbers import quantity
 from assur.plotting._style import BALANCING_COLOR, PATH_COLORS, titled
 
 if TYPE_CHECKING:
@@ -111,7 +112,7 @@ def plot_reduced_torque(result: Dynamics, ax: Any = None) -> Any:
         color=BALANCING_COLOR,
         lw=1.4,
         ls="--",
-        label=f"motor {result.motor:.4g} {unit}",
+        label=f"motor {quantity(result.motor, unit)}",
     )
     ax.axhline(0.0, color="black", lw=0.6)
     scale = _kinetic(result)  # N m per rad: the torques' own scale

@@ -16,6 +16,7 @@ from assur.errors import ModelError
 from assur.plotting._axes import _broken, _driver_axis, _new_axes, labelled_legend
 from assur.plotting._context import _context, _need_forces, _unit
 from assur.plotting._geometry import _on
+from assur.plotting._numbers import quantity
 from assur.plotting._style import BALANCING_COLOR, literal, titled
 
 if TYPE_CHECKING:
@@ -85,7 +86,9 @@ def _plot_balancing(ax: Any, table: Table, x: np.ndarray, i: int, name: str) -> 
     mean = table.summary()[f"{key}.mean"]
     if abs(mean) < 1e-9 * float(np.max(np.abs(balancing))):
         mean = 0.0  # a full turn of a conservative system: zero up to rounding
-    ax.axhline(mean, color=color, lw=0.9, ls=":", label=f"mean {mean:.4g} {unit}{name}")
+    ax.axhline(
+        mean, color=color, lw=0.9, ls=":", label=f"mean {quantity(mean, unit)}{name}"
+    )
 
 
 def _locus(ax: Any, table: Table, fx: np.ndarray, fy: np.ndarray, color: str) -> None:
@@ -155,7 +158,7 @@ def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
         most = np.nanmax(np.hypot(force[:, 0], force[:, 1]))
         ax.set_title(
             f"{literal(name)}: {literal(_on(ctx.plan, name))}\n"
-            f"max {most:.4g} {_unit(table, f'{name}.F')}",
+            f"max {quantity(most, _unit(table, f'{name}.F'))}",
             fontsize=8.5,
         )
         ax.set_xlabel(f"Fx [{_unit(table, f'{name}.Fx')}]", fontsize=8)

@@ -22,6 +22,7 @@ from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
 from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend
 from assur.plotting._mathtext import _symbol
+from assur.plotting._numbers import quantity
 from assur.plotting._placing import Name, place_names
 from assur.plotting._style import literal
 from assur.plotting.plans import (
@@ -173,13 +174,13 @@ def zhukovsky_lever(
     _list_terms(ax, apart, d.kind, shares, (speed, balancing), unit_speed)
     per = " per unit speed of the driver" if unit_speed else ""
     mu_unit = "(m/s)/mm" if not unit_speed else "m/mm" if d.kind == "R" else "1/mm"
-    entries = [(f"force, 1 mm = {fmu:g} N", FORCE)]
+    entries = [(f"force, 1 mm = {quantity(fmu, 'N', 6)}", FORCE)]
     if any(couple for *_, couple in arrows):
         text = "couple M as ±M/l at two joints, same scale"
         if marked:
             text += f";\ndotted: below the scale, drawn {MARK:g} mm long"
         entries.append((text, COUPLE))
-    note = f"lever: μv = {mu:g} {mu_unit}{per},\nturned 90°"
+    note = f"lever: μv = {quantity(mu, mu_unit, 6)}{per},\nturned 90°"
     _legend(ax, entries, note, beside=True)
     # room round the lever for the names; each beside its arrow or image, clear
     # of the other names, arrows and the images' rays from the pole
@@ -335,7 +336,8 @@ def _list_terms(
         head = "friction" if t is None else _symbol(tex)
         if t is not None and t.couple:
             ratio = t.omega / speed
-            head += f" ({t.load.couple:.6g} N·m, $\\omega_L$/{rate} = {ratio:.6g}"
+            couple = quantity(t.load.couple, "N·m", 6)
+            head += f" ({couple}, $\\omega_L$/{rate} = {ratio:.6g}"
             head += ")" if apart[t.body] else "; listed only)"
         # rounded first: a share that rounds to nothing is written +0, not -0
         lines.append(f"{head}:  {round(share, places + 1) + 0.0:+.{places + 1}f}")

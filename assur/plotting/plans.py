@@ -24,6 +24,7 @@ from assur.plotting._centres import draw_centres, relative_centres
 from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend
 from assur.plotting._geometry import _nice
 from assur.plotting._mathtext import _symbol
+from assur.plotting._numbers import quantity
 from assur.plotting._placing import Name, place_names
 from assur.plotting._style import (
     titled,
@@ -234,7 +235,7 @@ def _plan(table: Table, angle: Any, ax: Any, level: int) -> Any:
     ax = _axes(ax, _title(pos, what))
     IMAGE_NAMES.update(_images_plot(ax, found, mu, "#333333"))
     legend = _chains(ax, pos, level, mu, list(found.values()))
-    _legend(ax, legend, f"scale: {symbol} = {mu:g} {unit}")
+    _legend(ax, legend, f"scale: {symbol} = {quantity(mu, unit, 6)}")
     _name_images(ax)
     return ax
 

@@ -20,6 +20,7 @@ from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
 from assur.plotting._drawing import _arrow, _legend
 from assur.plotting._mathtext import _symbol, reaction_symbol
+from assur.plotting._numbers import quantity
 from assur.plotting._placing import Name, place_names
 from assur.plotting._style import (
     INERTIA_COLOR,
@@ -123,7 +124,7 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> list[Name]:
     ax.set_xlabel("mm of the polygon")
     ax.set_title(
         f"group {literal(rec.label)}: closes within {float(np.hypot(*tip)):.1e} mm\n"
-        f"scale: μF = {mu:g} N/mm",
+        f"scale: μF = {quantity(mu, 'N/mm', 6)}",
         fontsize=9,
     )
     # the colours of the mechanism drawings, so a reaction reads alike in both
@@ -134,7 +135,7 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> list[Name]:
     }
     shown = {c for _, _, c in sequence}
     entries = [(text, c) for c, text in kinds.items() if c in shown]
-    _legend(ax, entries, f"μF = {mu:g} N/mm")
+    _legend(ax, entries, f"μF = {quantity(mu, 'N/mm', 6)}")
     return names
 
 
