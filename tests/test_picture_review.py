@@ -111,3 +111,26 @@ def test_the_pictures_write_forces_in_plain_digits() -> None:
         assert not any("e+" in t for t in titles)
     finally:
         plt.close(fig)
+
+
+def test_force_arrows_lie_above_the_links_with_a_light_outline() -> None:
+    import matplotlib.pyplot as plt
+    from matplotlib.patheffects import Stroke
+
+    from assur import plotting
+
+    # F_i,crank was drawn black on the dark-slate crank, and could not be seen
+    table = assur.forces(assur.load(EXAMPLES / "slider_crank_exercise.toml"), [45.0])
+    bare = plotting.draw(table)
+    top = max(a.get_zorder() for a in [*bare.lines, *bare.patches])
+    plt.close(bare.figure)
+    ax = plotting.draw(table, forces=True)
+    try:
+        arrows = [p for p in ax.patches if hasattr(p, "points")]
+        assert len(arrows) >= 5
+        for arrow in arrows:
+            assert arrow.get_zorder() > top
+            (halo, *_) = arrow.get_path_effects()
+            assert isinstance(halo, Stroke)
+    finally:
+        plt.close(ax.figure)

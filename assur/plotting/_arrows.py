@@ -28,6 +28,19 @@ LABEL_BOX = {
     "alpha": 0.75,
 }
 """Background of a force's label."""
+HALO = 1.0
+"""Width, points, of the light outline round a force arrow beyond its line: a
+black inertia force on the dark crank, or a short reaction over a joint's ring or a
+slider's box, would otherwise not be seen."""
+ARROW_ZORDER = 6
+"""Force arrows lie above the links (<= 3), the joints (4) and the paths (5)."""
+
+
+def _halo(lw: float) -> list[Any]:
+    """Return the path effects of a light outline round a line ``lw`` points wide."""
+    from matplotlib.patheffects import Normal, Stroke
+
+    return [Stroke(linewidth=lw + 2 * HALO, foreground="white", alpha=0.85), Normal()]
 
 
 def _draw_arrows(
@@ -59,7 +72,12 @@ def _draw_force(
     mag = float(np.hypot(*force))
     tip = a.at + force / (scale * 100.0)
     # a short arrow's head shrinks with it: its direction stays readable
-    ax.add_patch(fitted_arrow([a.at, tip], 13, color=a.color, lw=1.7, zorder=6))
+    ax.add_patch(
+        fitted_arrow(
+            [a.at, tip], 13, color=a.color, lw=1.7, zorder=ARROW_ZORDER,
+            path_effects=_halo(1.7),
+        )
+    )  # fmt: skip
     if text:
         u = force / mag
         words = (
@@ -91,7 +109,12 @@ def _draw_couple(
         t = t[::-1]
     arc = a.point + rad * np.column_stack([np.cos(t), np.sin(t)])
     # the name is read as the couple's by its arc's upper right
-    ax.add_patch(fitted_arrow(arc, 11, color=a.color, lw=1.5, zorder=6))
+    ax.add_patch(
+        fitted_arrow(
+            arc, 11, color=a.color, lw=1.5, zorder=ARROW_ZORDER,
+            path_effects=_halo(1.5),
+        )
+    )  # fmt: skip
     if text:
         # the balancing torque always shows its value
         value = text == "values" or a.kind == "balancing"
