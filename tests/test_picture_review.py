@@ -134,3 +134,39 @@ def test_force_arrows_lie_above_the_links_with_a_light_outline() -> None:
             assert isinstance(halo, Stroke)
     finally:
         plt.close(ax.figure)
+
+
+def _overlap(p: np.ndarray, q: np.ndarray) -> float:
+    """Return how long arrows ``p`` and ``q`` (2 by 2, mm) run over each other."""
+    d = p[1] - p[0]
+    u = d / np.hypot(*d)
+    off = max(abs(u[0] * (end - p[0])[1] - u[1] * (end - p[0])[0]) for end in q)
+    if off > 0.2:
+        return 0.0
+    low, high = sorted(float(np.dot(u, end - p[0])) for end in q)
+    return max(0.0, min(high, float(np.hypot(*d))) - max(low, 0.0))
+
+
+def test_no_term_of_a_plan_hides_another() -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import plans
+
+    # whitworth's slot passes through the lever's pivot: the tangential term lay
+    # exactly under the Coriolis one, both perpendicular to the slot
+    table = assur.forces(assur.load(EXAMPLES / "whitworth.toml"), [45.0])
+    ax = plans.acceleration_plan(table)
+    try:
+        from matplotlib.colors import to_hex
+
+        # the tangential (red) and Coriolis (violet) terms of the dyad's sides
+        terms = {"#d62728": [], "#9467bd": []}
+        for p in ax.patches:
+            if hasattr(p, "points") and to_hex(p.get_edgecolor()) in terms:
+                terms[to_hex(p.get_edgecolor())].append(np.asarray(p.points))
+        assert all(terms.values())
+        for p in terms["#d62728"]:
+            for q in terms["#9467bd"]:
+                assert _overlap(p, q) < 1.0, (p, q)
+    finally:
+        plt.close(ax.figure)

@@ -16,6 +16,33 @@ from assur.plotting._style import literal
 
 SAME_PLACE = 0.5
 """Images closer than this (mm of the drawing) are named in one label."""
+ALONG = 0.2
+"""Arrows on one line within this (mm of the drawing) would be drawn over each
+other where their spans overlap by more."""
+BESIDE = 1.2
+"""How far sideways (mm of the drawing) an arrow along one drawn is moved."""
+
+
+def _beside(
+    drawn: list[tuple[np.ndarray, np.ndarray]], start: np.ndarray, end: np.ndarray
+) -> tuple[np.ndarray, np.ndarray]:
+    """Return an arrow's ends (mm), moved :data:`BESIDE` sideways if it lies on one.
+
+    ``drawn`` holds the ends of the arrows drawn before. In an RPR group whose
+    slot passes through the pivot, the tangential and Coriolis terms are both
+    perpendicular to the slot, on one line: the second hid the first.
+    """
+    length = float(np.hypot(*(end - start)))
+    if length <= ALONG:
+        return start, end
+    u = (end - start) / length
+    for a, b in drawn:
+        off = [abs(float(u[0] * q[1] - u[1] * q[0])) for q in (a - start, b - start)]
+        low, high = sorted(float(np.dot(u, q - start)) for q in (a, b))
+        if max(off) <= ALONG and min(high, length) - max(low, 0.0) > ALONG:
+            shift = BESIDE * np.array([-u[1], u[0]])
+            return start + shift, end + shift
+    return start, end
 
 
 def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> bool:

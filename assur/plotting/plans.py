@@ -21,7 +21,7 @@ from assur.explain._rates import _sides
 from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._centres import draw_centres, relative_centres
-from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend
+from assur.plotting._drawing import _arrow, _axes, _beside, _images_plot, _legend
 from assur.plotting._geometry import _nice
 from assur.plotting._mathtext import _symbol
 from assur.plotting._numbers import quantity
@@ -85,6 +85,7 @@ def _chains(
     palette = {"base": "#555555", "n": "#1f77b4", "t": "#d62728", "k": "#9467bd",
                "r": "#2ca02c", "v": "#d62728"}  # fmt: skip
     size = max((float(np.hypot(*v)) for v in shown), default=0.0)
+    drawn: list[tuple[np.ndarray, np.ndarray]] = []
     if k == 2:
         _crank_parts(ax, pos, mu, palette, kinds)
     for s in pos.plan.solvers:
@@ -102,8 +103,10 @@ def _chains(
                 if part != "base":
                     # the legend names the parts drawn: a Coriolis term of nothing
                     # (a slider on a guide that does not turn) is not
-                    if _arrow(ax, tip, end, color, lw=1.8):
+                    ends = _beside(drawn, tip, end)
+                    if _arrow(ax, *ends, color, lw=1.8):
                         kinds[part] = color
+                        drawn.append(ends)
                 elif not any(np.hypot(*(term.value - v)) <= 1e-9 * size for v in shown):
                     _arrow(ax, tip, end, color, lw=1.8)
                     ax.annotate(_symbol(term.tex), end, fontsize=8, color=color)
