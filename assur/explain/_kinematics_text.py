@@ -146,13 +146,15 @@ def _general(pos: Position, solver: object) -> list[Block]:
         done: set[str] = set()
         for b in sorted(bodies, key=lambda b: b not in starts):
             points = body_points(pos, b)
+            if not points:
+                continue
             if b in starts:
                 base_name, offset, known = starts[b]
             else:
                 # a link with no pin outside the group (a triad's base link)
                 # starts from a point found on a link before it
                 base_name, offset = next(
-                    ((p, d) for p, d in points if p in done), points[0]
+                    ((p, d) for p, d in points if p in done), next(iter(points))
                 )
                 known = ""
             label = point_name(base_name)
@@ -176,6 +178,14 @@ def _starts(
     Each is ``(name, offset on the link, the TeX saying where it is known from)``.
     """
     group = set(bodies)
+    # the links known before the group: the frame, the input links and the links of
+    # the groups attached before it (a pin to a later group's link is not known yet)
+    plan = pos.plan
+    known = {0, *(d.body for d in plan.drivers)}
+    for solver in plan.solvers:
+        if group & set(solver.bodies):
+            break
+        known.update(solver.bodies)
     found: dict[int, tuple[str, tuple[float, float], str]] = {}
     for pair in pos.plan.pairs.values():
         if pair.kind != "R":
@@ -184,7 +194,7 @@ def _starts(
             (pair.first, pair.second, pair.d_first),
             (pair.second, pair.first, pair.d_second),
         ):
-            if body in group and other not in group:
+            if body in group and other in known:
                 where = f",\\quad \\text{{known: a point of {plain(pos.link(other))}}}"
                 found.setdefault(body, (pair.name.split("~")[0], d, where))
     return found
