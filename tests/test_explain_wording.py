@@ -459,6 +459,15 @@ def test_a_triad_s_points_start_from_known_pins_each_once() -> None:
         assert all(r"\text{known: a point of " in x for x in bare)
 
 
+def test_a_triad_starts_only_from_pins_to_links_known_before_it() -> None:
+    # H joins left_rocker to a dyad solved after the triad: it is not known yet
+    note = str(explain(assur.load(DATA / "triad_then_dyad.toml"), 30.0))
+    triad = note.split("### Group triad")[1].split("### Group")[0]
+    known = re.findall(r"\\text\{known: a point of (\w+)\}", triad)
+    assert set(known) == {"crank", "ground"}
+    assert r"\vec v_{\mathrm{H}} = \vec v_{\mathrm{F}} + " in triad
+
+
 def test_a_slot_s_two_pairs_are_told_apart() -> None:
     # the sliding pair and the pin were both "(joint B)"; the block was "B\ block"
     note = str(explain(assur.load(EXAMPLES / "slot_mechanism.toml"), 30.0))

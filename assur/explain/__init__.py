@@ -111,7 +111,7 @@ def _where(table: Any) -> str:
     """
     plan = table.plan
     values = [
-        f"{x:.6g} deg" if d.kind == "R" else f"{x:.6g} m"
+        f"{x + 0.0:.6g} deg" if d.kind == "R" else f"{x + 0.0:.6g} m"  # -0: 0
         for d, x in zip(plan.drivers, table.given[0].tolist(), strict=True)
     ]
     if len(values) == 1:

@@ -98,9 +98,10 @@ def _crank(pos: Position, i: int, loads: list[Load]) -> list[Block]:
     symbol = force_symbol(pos, 0, d.body)
     frame = -total(loads)
     line, m = moment_line(loads, pos.pair_point(d.pair), j)
+    big = pos.force_scale()  # round-off of a force is told by it
     reaction = (
-        f"\\vec {symbol} = -\\sum \\vec F = {vec(frame)}\\ \\mathrm{{N}},\\quad "
-        f"{symbol} = {num(math.hypot(*frame))}\\ \\mathrm{{N}}"
+        f"\\vec {symbol} = -\\sum \\vec F = {vec(frame, big)}\\ \\mathrm{{N}},\\quad "
+        f"{symbol} = {num(math.hypot(*frame), big)}\\ \\mathrm{{N}}"
     )
     rubbing = driver_friction(pos, i)
     words = (
@@ -158,7 +159,7 @@ def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
                     f"{sym} = -\\sum \\vec F \\cdot \\vec e = "
                     f"-{components(loads, e)} = "
                     f"{num(-along)}\\ \\mathrm{{N}}",
-                    f"\\vec {symbol} = {vec(rest)}\\ \\mathrm{{N}}",
+                    f"\\vec {symbol} = {vec(rest, pos.force_scale())}\\ \\mathrm{{N}}",
                 )
             ),
             *couple,

@@ -157,7 +157,7 @@ def _revolute_middle(
         labels.append(f"\\vec {symbol}")
         outer.append(
             f"\\vec {symbol} = {vec(f, big)}\\ \\mathrm{{N}},\\quad {symbol} = "
-            f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
+            f"{num(math.hypot(*f), big)}\\ \\mathrm{{N}}"
         )
     first = s.bodies[0]
     inner = -(total(loads[0]) + forces[0])
@@ -175,7 +175,7 @@ def _revolute_middle(
                 f"{vec(total(loads[0]), big)}"
                 f" + {vec(forces[0], big)}\\right) = {vec(inner, big)}\\ "
                 "\\mathrm{N},\\quad "
-                f"{sym} = {num(math.hypot(*inner))}\\ \\mathrm{{N}}",
+                f"{sym} = {num(math.hypot(*inner), big)}\\ \\mathrm{{N}}",
             )
         ),
     ]
@@ -302,7 +302,7 @@ def _sliding_middle(
         sums: tuple[str, ...] = (
             f"\\vec {symbol} = -\\left(\\sum \\vec F_{{known}} {pushed}\\right) = "
             f"{vec(f, big)}\\ \\mathrm{{N}},\\quad {symbol} = "
-            f"{num(math.hypot(*f))}\\ \\mathrm{{N}}",
+            f"{num(math.hypot(*f), big)}\\ \\mathrm{{N}}",
         )
         if pair.kind == "P" and pair.friction > 0.0:
             # the known loads hold the guide's friction: what is left is its normal
@@ -330,7 +330,7 @@ def _totals(pos: Position, rec: Equilibrium) -> list[str]:
         else:
             line = (
                 f"\\vec {symbol} = {vec(f, big)}\\ \\mathrm{{N}},\\quad {symbol} = "
-                f"{num(math.hypot(*f))}\\ \\mathrm{{N}}"
+                f"{num(math.hypot(*f), big)}\\ \\mathrm{{N}}"
             )
         if pair.kind == "P":
             line += (

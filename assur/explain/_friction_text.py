@@ -233,10 +233,11 @@ def sliding_total(
     f = normal + friction
     j = name(pair.name)
     minus = "" if sign > 0 else "-"
+    big = pos.force_scale()  # round-off of a force is told by it
     return (
         f"\\vec {symbol} = {normal_symbol(pair, body)} {minus or '+'} \\vec F_{{f,{j}}}"
-        f" = {vec(normal)} + {vec(friction)} = {vec(f)}\\ \\mathrm{{N}},\\quad "
-        f"{symbol} = {num(math.hypot(*f))}\\ \\mathrm{{N}}"
+        f" = {vec(normal, big)} + {vec(friction, big)} = {vec(f, big)}\\ "
+        f"\\mathrm{{N}},\\quad {symbol} = {num(math.hypot(*f), big)}\\ \\mathrm{{N}}"
     )
 
 

@@ -86,6 +86,29 @@ class Position:
             self.memo["pairs"] = index
         return index.get(body, [])  # type: ignore[no-any-return]
 
+    def points_of(self, body: int) -> list[tuple[str, tuple[float, float]]]:
+        """Return the named points of ``body``, each ``(name, offset)``.
+
+        The pins it carries, then its reported points (see
+        :func:`assur.explain._rates.body_points`).
+        """
+        index = self.memo.get("points")
+        if index is None:
+            # every body's points at once: the note asks for them link by link
+            plan = self.plan
+            every: dict[int, dict[str, tuple[float, float]]] = {}
+            for pair in plan.pairs.values():
+                if pair.kind == "R":
+                    found = every.setdefault(pair.first, {})
+                    found.setdefault(pair.name.split("~")[0], pair.d_first)
+            for point, b, offset in zip(
+                plan.points, plan.point_body, plan.point_offset, strict=True
+            ):
+                every.setdefault(b, {}).setdefault(point, offset)
+            index = {b: list(f.items()) for b, f in every.items()}
+            self.memo["points"] = index
+        return list(index.get(body, []))
+
     def reactions(self) -> dict[str, Any]:
         """Return every pair's reaction the reverse pass solved, by pair name."""
         found = self.memo.get("reactions")
@@ -194,7 +217,7 @@ class Position:
         What a force is told from round-off by: the guide's normal force of an
         in-line slider-crank at its dead centre is 1.4e-14 N beside 3000 N.
         """
-        found = self.scales.get((-1, -1))
+        found = self.memo.get("force_scale")
         if found is None:
             found = 0.0
             if self.applied is not None:
@@ -204,8 +227,8 @@ class Position:
                 for rec in self.result.groups:
                     for r in rec.reactions.values():
                         found = max(found, math.hypot(value(r.fx), value(r.fy)))
-            self.scales[(-1, -1)] = found
-        return found
+            self.memo["force_scale"] = found
+        return found  # type: ignore[no-any-return]
 
     def _clean(self, v: Array, k: int) -> Array:
         """Return ``v`` (level ``k``) with its round-off set to zero."""

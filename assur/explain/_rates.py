@@ -278,21 +278,7 @@ def body_points(pos: Position, body: int) -> list[tuple[str, tuple[float, float]
     Each is ``(name, offset)``; a pin whose reported point moves with its other link
     is named too, since the next group needs its motion.
     """
-    index = pos.memo.get("points")
-    if index is None:
-        # every body's points at once: the note asks for them link by link
-        plan = pos.plan
-        every: dict[int, dict[str, tuple[float, float]]] = {}
-        for pair in plan.pairs.values():
-            if pair.kind == "R":
-                found = every.setdefault(pair.first, {})
-                found.setdefault(pair.name.split("~")[0], pair.d_first)
-        for point, b, offset in zip(
-            plan.points, plan.point_body, plan.point_offset, strict=True
-        ):
-            every.setdefault(b, {}).setdefault(point, offset)
-        index = pos.memo["points"] = {b: list(f.items()) for b, f in every.items()}
-    return list(index.get(body, []))
+    return pos.points_of(body)
 
 
 def point_lines(
