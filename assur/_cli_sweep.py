@@ -80,7 +80,9 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
 @contextlib.contextmanager
 def _bar(args: argparse.Namespace, what: str, total: int) -> Iterator[Any]:
     """Yield a progress bar on a terminal (shown once the sweep runs long), or None."""
-    if not bar_shown(args, bool(args.json), args.csv, args.parquet):
+    # a summary is printed at the end: with --json too, nothing streams meanwhile
+    json_table = bool(args.json) and not getattr(args, "summary", False)
+    if not bar_shown(args, json_table, args.csv, args.parquet):
         yield None
         return
     from assur._progress import progress

@@ -333,7 +333,9 @@ def test_a_bar_on_a_terminal(long_is_short, capsys, monkeypatch, tmp_path, outpu
 
 
 @pytest.mark.parametrize("stdout_tty", [True, False])
-@pytest.mark.parametrize("output", [["--csv", "-"], ["--json"]])
+@pytest.mark.parametrize(
+    "output", [["--csv", "-"], ["--json"], ["--summary", "--json"], ["--summary"]]
+)
 def test_no_bar_over_a_table_streamed_to_the_terminal(
     long_is_short, capsys, monkeypatch, output, stdout_tty
 ):
@@ -345,8 +347,10 @@ def test_no_bar_over_a_table_streamed_to_the_terminal(
     )
     assert status == 0
     assert out
-    # a table piped on (standard output not a terminal) keeps the bar
-    assert ("%|" in err) is not stdout_tty
+    # a table piped on (standard output not a terminal) keeps the bar, and so
+    # does a summary, printed once the sweep is done
+    streams = "--summary" not in output
+    assert ("%|" in err) is not (stdout_tty and streams)
 
 
 def test_no_bar_when_standard_error_is_not_a_terminal(long_is_short, capsys):
