@@ -19,7 +19,7 @@ TROUBLE_TEXT = 300
 (the first always whole)."""
 
 
-OWN = ("the reduced torque is not smooth", "the reduced model is not resolved")
+OWN = ("the reduced torque is not smooth", "the reduced inertia is not resolved")
 """How the grid's own warnings begin (see :func:`pass_on`)."""
 
 
@@ -29,13 +29,13 @@ def unresolved_message(count: int, worst: tuple[str, float, float]) -> str:
     ``worst`` is the interpolant that misses most: its name, the miss relative to
     its largest value, and where (deg).
     """
-    what, miss, at = worst
+    _, miss, at = worst
     return (
-        f"the reduced model is not resolved on its finest grid ({count} positions "
-        f"a turn): between grid points the interpolant of {what} misses it by "
-        f"{miss:.2g} of its largest value (near {at:.6g} deg: a sharp turn, as "
-        "near a change point?); the steady state's figures may be off by about as "
-        "much, not within 1e-8"
+        f"the reduced inertia is not resolved on the model's finest grid ({count} "
+        f"positions a turn): between grid points its interpolant misses it by up "
+        f"to {miss:.2g} of its largest value (near {at:.6g} deg: a sharp turn, as "
+        "near a change point?); the steady state's figures can be off, by up to "
+        "about that much"
     )
 
 

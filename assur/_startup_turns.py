@@ -33,8 +33,10 @@ which damps the noise of single turns' changes near the periodic motion."""
 MULTIPLIER_SAMPLES = 512
 """Samples of a turn the multiplier's integral is taken over (trapezoids)."""
 NOISE_MOST = 1e-6
-"""Changes of either sign larger than this fraction of the speed are not taken for
-the integration's scatter (a relative tolerance of 1e-10 a step)."""
+"""Changes larger than this fraction of the speed are not taken for the integration's
+scatter (a relative tolerance of 1e-10 a step): of either sign, the motion is then
+periodic; smaller ones of one sign that do not shrink steadily are told as likely
+scatter when the start-up stops."""
 TRUST = 0.1
 """The turns still needed are told only while the ratio of successive changes would
 move by less than this fraction of ``1 - r`` over the rest of the approach."""
@@ -189,9 +191,11 @@ def _not_settled(
             # change point held a four-bar at 4e-8 a turn for 2000 turns)
             hint = (
                 "; a change this small that does not shrink at a steady ratio is "
-                "about the integration's own scatter (of a reduced model that turns "
-                "sharply, near a change point, say): the motion is periodic to "
-                "about that"
+                "likely the integration's own scatter (of a reduced model that turns "
+                "sharply, near a change point, say), not a crank still gathering "
+                "speed; expected a mechanism further from a change point, or its "
+                "steady state, which needs no start-up (assur.dynamics; assur "
+                "dynamics without --startup)"
             )
         elif more is None:
             hint = (

@@ -82,7 +82,8 @@ class CsvWriter:
             rows = np.stack([c[start : start + step] for c in columns], axis=-1)
             # a negative zero (the speed of a point at rest, rounded) reads "-0",
             # a sign with no number behind it: adding +0 makes it 0, nothing else
-            rows += 0.0
+            if rows.dtype.kind == "f":
+                rows += 0.0
             self._write(csv_lines(rows))
             if self._advance is not None:
                 self._advance(rows.shape[0])
@@ -133,7 +134,8 @@ class JsonWriter:
         step = _rows(columns)
         for start in range(0, count, step):
             rows = np.stack([c[start : start + step] for c in columns], axis=-1)
-            rows += 0.0  # -0.0 written 0.0, as the CSV writes it 0
+            if rows.dtype.kind == "f":
+                rows += 0.0  # -0.0 written 0.0, as the CSV writes it 0
             texts = [self._row % tuple(map(_json_number, row)) for row in rows.tolist()]
             lead = "" if self._first else ", "
             self._first = False

@@ -223,7 +223,7 @@ def reduce(mechanism: Mechanism) -> Reduced:
         try:
             found = _reduce(mechanism)
         except (AssemblyError, SingularConfigurationError) as err:
-            msg = f"dynamics: the crank cannot make a full turn, {err}"
+            msg = f"dynamics: the crank cannot make a full turn {err}"
             raise type(err)(msg) from err
         plan.memo["dynamics-reduced"] = found
     model, messages = found
@@ -294,7 +294,7 @@ def _sample(
         except (AssemblyError, SingularConfigurationError) as err:
             # its counts ("512 of 1024 positions") are of the model's own grid,
             # which the user never asked for: say what they count
-            msg = f"sampled at {k.size} positions over the turn: {err}"
+            msg = f"(on the model's grid of {k.size} positions a turn): {err}"
             raise type(err)(msg) from err
     for w in caught:
         if not issubclass(w.category, AssurWarning):

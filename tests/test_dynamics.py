@@ -488,8 +488,8 @@ def test_a_crank_that_cannot_turn_round():
     rocker = assur.catalog.four_bar(crank=0.09, coupler=0.06, rocker=0.08)
     with pytest.raises(
         assur.AssemblyError,
-        match=r"^dynamics: the crank cannot make a full turn, sampled at 1024 "
-        r"positions over the turn: group RRR "
+        match=r"^dynamics: the crank cannot make a full turn \(on the model's grid "
+        r"of 1024 positions a turn\): group RRR "
         r"\(coupler, rocker\): cannot be assembled",
     ):
         assur.dynamics(rocker, [60.0])
@@ -555,8 +555,9 @@ def test_a_grid_that_reaches_its_finest_unresolved_says_so():
     said = [str(w.message) for w in caught if "not resolved" in str(w.message)]
     assert len(said) == 1
     assert said[0].startswith(
-        "dynamics: the reduced model is not resolved on its finest grid (65536 "
-        "positions a turn): between grid points the interpolant of J misses it by "
+        "dynamics: the reduced inertia is not resolved on the model's finest grid "
+        "(65536 positions a turn): between grid points its interpolant misses it by "
+        "up to "
     )
 
 

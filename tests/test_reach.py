@@ -146,8 +146,8 @@ def test_the_dynamic_model_of_a_crank_that_cannot_turn_fully_is_an_error(path):
     failures = (assur.AssemblyError, assur.SingularConfigurationError)
     # the counts are of the model's own grid, which the message names
     expected = (
-        r"the crank cannot make a full turn, sampled at \d+ positions over the "
-        r"turn: group PRP \(block, ram\)"
+        r"the crank cannot make a full turn \(on the model's grid of \d+ positions "
+        r"a turn\): group PRP \(block, ram\)"
     )
     with pytest.raises(failures, match=expected):
         assur.flywheel(mech, 0.05)
