@@ -50,6 +50,23 @@ def test_the_lever_draws_couples_to_the_forces_scale() -> None:
         plt.close(ax.figure)
 
 
+def test_a_couple_larger_than_the_forces_sets_the_lever_s_scale() -> None:
+    import matplotlib.pyplot as plt
+
+    # the bearings four-bar's resisting torque on its rocker (4 N m) drew a pair
+    # 125 mm long, the forces setting the scale for a 40 mm lever
+    table = assur.forces(assur.load(EXAMPLES / "four_bar_bearings.toml"), [30.0])
+    ax = lever.zhukovsky_lever(table)
+    try:
+        couples = _arrows(ax, lever.COUPLE)
+        forces = _arrows(ax, lever.FORCE)
+        longest = max(couples + forces)
+        assert max(couples) == pytest.approx(longest)
+        assert longest < 60.0  # mm of the drawing, as a force's longest is
+    finally:
+        plt.close(ax.figure)
+
+
 def test_the_torque_diagram_states_the_summary_s_mean() -> None:
     import matplotlib.pyplot as plt
 

@@ -156,9 +156,9 @@ def zhukovsky_lever(
     names += _name_pair_points(ax, lever, apart, found, mu)
     # one scale for forces and couples' pairs: on a lever arrow length times arm
     # is the moment, so a couple's pair drawn to a scale of its own would show a
-    # share of 0.1 % as the biggest arrow (the forces set it, being most shares)
-    forces = [f for _, f, _, c in arrows if not c] or [f for _, f, *_ in arrows]
-    fmu = _scale(forces) * 2.0
+    # share of 0.1 % as the biggest arrow; every arrow sets it (a resisting
+    # torque's pair, larger than the forces, ran 125 mm off a 40 mm lever)
+    fmu = _scale([f for _, f, *_ in arrows]) * 2.0
     marked = False
     for at, force, label, couple in arrows:
         tip, mark = _tip(at / mu, force / fmu, couple)
