@@ -223,7 +223,13 @@ def reduce(mechanism: Mechanism) -> Reduced:
         try:
             found = _reduce(mechanism)
         except (AssemblyError, SingularConfigurationError) as err:
-            msg = f"dynamics: the crank cannot make a full turn {err}"
+            grid = getattr(err, "grid", None)
+            where = (
+                ""
+                if grid is None
+                else f" (on the model's grid of {grid} positions a turn)"
+            )
+            msg = f"dynamics: the crank cannot make a full turn{where}: {err}"
             raise type(err)(msg) from err
         plan.memo["dynamics-reduced"] = found
     model, messages = found
@@ -293,9 +299,9 @@ def _sample(
             )
         except (AssemblyError, SingularConfigurationError) as err:
             # its counts ("512 of 1024 positions") are of the model's own grid,
-            # which the user never asked for: say what they count
-            msg = f"(on the model's grid of {k.size} positions a turn): {err}"
-            raise type(err)(msg) from err
+            # which the user never asked for: reduce() says what they count
+            setattr(err, "grid", k.size)  # noqa: B010 (an attribute of our own)
+            raise
     for w in caught:
         if not issubclass(w.category, AssurWarning):
             warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)

@@ -147,7 +147,7 @@ def _general(pos: Position, solver: object) -> list[Block]:
         for b in sorted(bodies, key=lambda b: b not in starts):
             points = body_points(pos, b)
             if not points:
-                continue
+                continue  # no named point: its angular motion above is all it has
             if b in starts:
                 base_name, offset, known = starts[b]
             else:

@@ -29,12 +29,14 @@ def number(value: float, digits: int = 4) -> str:
     --------
     >>> number(1928.4, 3), number(12.8199), number(-0.5), number(11268.3)
     ('1928', '12.82', '-0.5', '11268')
-    >>> number(2.5e7, 3), number(0.0)
-    ('2.5e+07', '0')
+    >>> number(2.5e7, 3), number(0.0), number(999999.7)
+    ('2.5e+07', '0', '1e+06')
     """
     size = abs(value)
     if not math.isfinite(value) or size == 0.0:
         return f"{value + 0.0:g}"
+    # the range as the value is written: 999999.7 rounds to a seventh digit
+    size = abs(float(f"{value:.{digits}g}"))
     if not PLAIN_RANGE[0] <= size < PLAIN_RANGE[1]:
         return f"{value:.{digits}g}"
     before = math.floor(math.log10(size)) + 1
@@ -53,8 +55,12 @@ def quantity(value: float, unit: str, digits: int = 4) -> str:
     ('1928 N', '-14500 N·m')
     >>> quantity(2.345e7, "N", 3), quantity(1.5e-8, "N·m"), quantity(2e7, "N/mm")
     ('23.4 MN', '1.5e-08 N·m', '2e+07 N/mm')
+    >>> quantity(999999.7, "N"), quantity(9.9996e8, "N")
+    ('1 MN', '1 GN')
     """
-    size = abs(value)
+    # the range and the prefix as the value is written, rounded: 9.9996e8 N is
+    # "1 GN", not "1000 MN"
+    size = abs(float(f"{value:.{digits}g}")) if math.isfinite(value) else abs(value)
     plain = size == 0.0 or PLAIN_RANGE[0] <= size < PLAIN_RANGE[1]
     if plain or not math.isfinite(value) or unit not in PREFIXED:
         return f"{number(value, digits)} {unit}".rstrip()

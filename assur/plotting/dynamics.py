@@ -16,7 +16,7 @@ import numpy as np
 from assur.columns import pretty_unit
 from assur.errors import UsageError
 from assur.plotting._axes import _new_axes, labelled_legend
-from assur.plotting._numbers import quantity
+from assur.plotting._numbers import number, quantity
 from assur.plotting._style import BALANCING_COLOR, PATH_COLORS, titled
 
 if TYPE_CHECKING:
@@ -168,8 +168,8 @@ def plot_speed(result: Dynamics, ax: Any = None) -> Any:
         )
     ax.set_ylabel(_label(result, "driver.omega", "crank speed ω"))
     ax.set_title(
-        f"Steady state: δ = {result.delta:.4g}, flywheel "
-        f"{result.flywheel:.4g} {pretty_unit('kg m^2')}",
+        f"Steady state: δ = {number(result.delta)}, flywheel "
+        f"{quantity(result.flywheel, pretty_unit('kg m^2'))}",
         fontsize=10,
     )
     labelled_legend(ax, fontsize=8)
@@ -282,12 +282,13 @@ def plot_startup(run: Startup, ax: Any = None) -> Any:
         color=BALANCING_COLOR,
         lw=1.0,
         ls="--",
-        label=f"settled at {run.settle_time:.4g} s",
+        label=f"settled at {quantity(run.settle_time, 's')}",
     )
     ax.set_xlabel("time t [s]")
     ax.set_ylabel("crank speed ω [rad/s]")
     ax.set_title(
-        f"Start-up: periodic after {run.turns} turns, δ = {run.delta:.4g}", fontsize=10
+        f"Start-up: periodic after {run.turns} turns, δ = {number(run.delta)}",
+        fontsize=10,
     )
     ax.grid(True, lw=0.5, alpha=0.5)
     labelled_legend(ax, fontsize=8)

@@ -24,7 +24,7 @@ from assur.plotting._centres import draw_centres, relative_centres
 from assur.plotting._drawing import _arrow, _axes, _beside, _images_plot, _legend
 from assur.plotting._geometry import _nice
 from assur.plotting._mathtext import _symbol
-from assur.plotting._numbers import quantity
+from assur.plotting._numbers import number, quantity
 from assur.plotting._placing import Name, place_names
 from assur.plotting._style import (
     titled,
@@ -190,7 +190,7 @@ def _part(tex: str) -> str:
 
 def _title(pos: Position, what: str) -> str:
     """Return a plan's title: the mechanism, the plan and the driver position."""
-    angle = ", ".join(f"{x:g}" for x in pos.table.given[0])
+    angle = ", ".join(number(float(x), 6) for x in pos.table.given[0])
     unit = "°" if pos.plan.drivers[0].kind == "R" else " m"
     return f"{titled(pos.mechanism)}: {what} at {angle}{unit}"
 
