@@ -187,3 +187,24 @@ def test_no_term_of_a_plan_hides_another() -> None:
                 assert _overlap(p, q) < 1.0, (p, q)
     finally:
         plt.close(ax.figure)
+
+
+@pytest.mark.parametrize(
+    ("stem", "loaded"), [("slider_crank_exercise", False), ("whitworth", True)]
+)
+def test_a_free_body_s_legend_names_only_the_loads_drawn(
+    stem: str, loaded: bool
+) -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import draw_free_body
+
+    # the slider-crank's group has no gravity and no external load, yet its legend
+    # listed "gravity, external load"
+    table = assur.forces(assur.load(EXAMPLES / f"{stem}.toml"), [60.0])
+    ax = draw_free_body(table, 0)
+    try:
+        legend = [t.get_text() for t in ax.get_legend().get_texts()]
+        assert ("gravity, external load" in legend) is loaded
+    finally:
+        plt.close(ax.figure)

@@ -214,6 +214,9 @@ def draw_free_body(
     rubbing = draw_friction_circles(ax, ctx, pose, bodies)
     _frame_axes(ax, ctx, seen, 0.5 * ctx.size, margin=0.12)
     text, color, _ = ctx.legend[len(ctx.plan.drivers) + group_index]
+    # the legend names only the kinds of load drawn (a slider-crank's group has
+    # no gravity and no external load), as the mechanism's picture does
+    applied = any(a.kind in ("gravity", "load") for a in arrows)
     # numbered from 1 as `assur plot --group N` is; the class comes after, in words
     heading = f"Free body of group {group_index + 1} (class {text})"
     ax.set_title(
@@ -226,7 +229,7 @@ def draw_free_body(
             (text, color),
             (REACTION_LEGEND, REACTION_COLOUR),
             ("inertia force and torque", INERTIA_COLOR),
-            ("gravity, external load", LOAD_COLOR),
+            *[("gravity, external load", LOAD_COLOR)] * applied,
             *[(friction_legend(ctx), "")] * bool(rubbing),
             (_scale_text(arrows, scale), ""),
         ],
