@@ -33,10 +33,10 @@ which damps the noise of single turns' changes near the periodic motion."""
 MULTIPLIER_SAMPLES = 512
 """Samples of a turn the multiplier's integral is taken over (trapezoids)."""
 NOISE_MOST = 1e-6
-"""Changes larger than this fraction of the speed are not taken for the integration's
-scatter (a relative tolerance of 1e-10 a step): of either sign, the motion is then
-periodic; smaller ones of one sign that do not shrink steadily are told as likely
-scatter when the start-up stops."""
+"""Changes below this fraction of the speed may be the integration's scatter (a
+relative tolerance of 1e-10 a step): of either sign, the motion is then periodic; of
+one sign, not shrinking steadily, they are told as likely scatter when the start-up
+stops. Larger ones are never taken for scatter."""
 TRUST = 0.1
 """The turns still needed are told only while the ratio of successive changes would
 move by less than this fraction of ``1 - r`` over the rest of the approach."""

@@ -342,7 +342,7 @@ def _totals(pos: Position, rec: Equilibrium) -> list[str]:
 
 
 def _joint(pos: Position, pair: str) -> str:
-    r"""Return which joint a pair is, for ``\\text``: a slot's two pairs told apart."""
+    r"""Return which joint a pair is, for ``\text``: a slot's two pairs told apart."""
     if pair.endswith("~pin"):
         return f"joint {text(pair)}: the pin in the block"
     if f"{pair}~pin" in pos.plan.pairs:

@@ -173,7 +173,7 @@ def _general(pos: Position, solver: object) -> list[Block]:
 def _starts(
     pos: Position, bodies: tuple[int, ...]
 ) -> dict[int, tuple[str, tuple[float, float], str]]:
-    """Return each link's pin to a link outside the group, as a point to start from.
+    """Return each link's pin to a link known before the group: a point to start from.
 
     Each is ``(name, offset on the link, the TeX saying where it is known from)``.
     """
