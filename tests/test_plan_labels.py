@@ -139,13 +139,13 @@ def test_the_instant_centres_names_are_apart_inside_the_frame(stem: str) -> None
             for j in range(i + 1, len(texts)):
                 pair = (text.get_text(), texts[j].get_text())
                 # the drawing's own names are draw()'s: a centre's is not on any
-                if any(n.startswith("I") for n in pair):
+                if any(n.startswith("$I_") for n in pair):
                     assert not _overlap(box, boxes[j]), pair
         # a centre's name lies on no small patch: a joint's circle, the block
         blocks = [p.get_window_extent().extents for p in ax.patches]
         small = [b for b in blocks if (b[2] - b[0]) * (b[3] - b[1]) < 2000]
         for text, box in zip(texts, boxes, strict=True):
-            if text.get_text().startswith("I"):
+            if text.get_text().startswith("$I_"):
                 assert not any(_overlap(box, b) for b in small), text.get_text()
     finally:
         plt.close(fig)
@@ -170,7 +170,8 @@ def test_a_far_centre_is_shown_at_the_edge_with_its_coordinates() -> None:
         (y0, y1), (a0, a1) = ax.get_ylim(), alone.get_ylim()
         assert y1 < far[1]
         assert y1 - y0 < 1.5 * (a1 - a0)
-        (named,) = [t for t in _texts(ax) if t.get_text().startswith("Irod (")]
+        rod = r"$I_{\text{rod}}$ ("
+        (named,) = [t for t in _texts(ax) if t.get_text().startswith(rod)]
         assert f"{far[0]:.3g}, {far[1]:.3g}) m" in named.get_text()
         # the arrow at the edge points at it
         (arrow,) = [p for p in ax.patches if hasattr(p, "_posA_posB")]

@@ -17,8 +17,8 @@ import numpy as np
 from assur.explain._position import perp
 from assur.plotting._drawing import _place
 from assur.plotting._heads import fitted_arrow
+from assur.plotting._mathtext import centre_symbol
 from assur.plotting._placing import Name, place_names
-from assur.plotting._style import literal
 
 if TYPE_CHECKING:
     from assur.explain._position import Position
@@ -34,6 +34,13 @@ turn together: their relative instant centre is at infinity."""
 ABSOLUTE = {"marker": "s", "ms": 6, "color": "#d62728"}
 RELATIVE = {"marker": "o", "ms": 4, "color": "#1f77b4"}
 """How an absolute centre (a link's about the frame) and a relative one are drawn."""
+KENNEDY = {"ls": (0, (4, 3)), "lw": 0.6, "color": "#b3b3b3", "zorder": 0.8,
+           "gid": "kennedy"}  # fmt: skip
+"""How a Kennedy line is drawn: thin, light, under the links and the centres (its
+``gid`` keeps the centres' names from shunning it as they shun the links)."""
+APART = 1e-6
+"""Two centres nearer than this times the mechanism's size are one point: no line
+through them (and two lines whose directions' sine is below it are one line)."""
 
 
 def draw_centres(pos: Position, ax: Any) -> Any:
@@ -48,14 +55,14 @@ def draw_centres(pos: Position, ax: Any) -> Any:
     reach = FAR * 0.5 * float(np.hypot(x1 - x0, y1 - y0))
     centres = {k: p for k, p in relative_centres(pos).items() if p is not None}
     near = {k: p for k, p in centres.items() if np.hypot(*(p - middle)) <= reach}
-    _kennedy_lines(ax, centres)
+    _kennedy_lines(ax, centres, _pins(pos), pos.size())
     places: list[tuple[np.ndarray, list[str]]] = []
     for (i, j), p in near.items():
         ax.plot(*p, ls="none", zorder=9, **(RELATIVE if i else ABSOLUTE))
         _place(places, p, _name(pos, i, j), 0.02 * pos.size())
     _frame(ax, [np.array([[x0, y0], [x1, y1]]), *near.values()])
     names = [
-        Name(ax.annotate(literal(", ".join(labels)), tuple(p), fontsize=7), p, p)
+        Name(ax.annotate(", ".join(labels), tuple(p), fontsize=7), p, p)
         for p, labels in places
     ]
     for (i, j), p in centres.items():
@@ -64,7 +71,9 @@ def draw_centres(pos: Position, ax: Any) -> Any:
     bars = [
         np.column_stack([line.get_xdata(), line.get_ydata()])
         for line in ax.lines
-        if line.get_linestyle() in ("-", "-.", "--") and len(line.get_xdata()) > 1
+        if line.get_linestyle() in ("-", "-.", "--")
+        and len(line.get_xdata()) > 1
+        and line.get_gid() != KENNEDY["gid"]
     ]
     # a plate's edges too (a patch: its corners closed round)
     bars += [np.vstack([p.get_xy(), p.get_xy()[:1]]) for p in ax.patches
@@ -76,18 +85,78 @@ def draw_centres(pos: Position, ax: Any) -> Any:
 
 def _name(pos: Position, i: int, j: int) -> str:
     """Return the name of the centre of bodies ``i`` and ``j`` (0: the frame)."""
-    return f"I{pos.link(i)}-{pos.link(j)}" if i else f"I{pos.link(j)}"
+    return centre_symbol(pos.link(j), pos.link(i) if i else None)
 
 
-def _kennedy_lines(ax: Any, centres: dict[tuple[int, int], np.ndarray]) -> None:
-    """Draw, dotted, the line of the absolute centres each relative centre is on.
+def _pins(pos: Position) -> set[tuple[int, int]]:
+    """Return the pairs of bodies joined by a pin: their centre is a primary one."""
+    return {
+        (min(pair.first, pair.second), max(pair.first, pair.second))
+        for pair in pos.plan.pairs.values()
+        if pair.kind == "R"
+    }
 
-    Drawn whole: the view, set after, cuts those running out of it.
+
+def _kennedy_lines(
+    ax: Any,
+    centres: dict[tuple[int, int], np.ndarray],
+    pins: set[tuple[int, int]],
+    size: float,
+) -> None:
+    """Draw the Kennedy lines of every centre that is not a pin, dashed and light.
+
+    Drawn whole, through the centre and the two it is found from: the view,
+    set after, cuts those running out of it.
     """
-    for i, j in centres:
-        if i and (0, i) in centres and (0, j) in centres:
-            line = np.array([centres[(0, i)], centres[(0, j)]])
-            ax.plot(line[:, 0], line[:, 1], ls=":", lw=0.7, color="#1f77b4")
+    for key in centres:
+        if key not in pins:
+            for line in kennedy_lines(key, centres, pins, size):
+                # from one end of the three points to the other, along the line
+                t = (line - line[0]) @ (line[1] - line[0])
+                ends = line[[int(np.argmin(t)), int(np.argmax(t))]]
+                ax.plot(ends[:, 0], ends[:, 1], **KENNEDY)
+
+
+def kennedy_lines(
+    key: tuple[int, int],
+    centres: dict[tuple[int, int], np.ndarray],
+    pins: set[tuple[int, int]],
+    size: float,
+) -> list[np.ndarray]:
+    """Return the (at most two) lines that find the centre of bodies ``key``, m.
+
+    Kennedy's theorem: the centres of bodies j, k and any third body i are on
+    one line, so I_jk is where the line of I_ij, I_ik meets another such line.
+    Each line is the three points ``[I_ij, I_ik, I_jk]`` (shape (3, 2)); the
+    third bodies whose two centres are pins come first, as a textbook finds
+    them, then the others. A centre at infinity (a sliding pair's) gives no
+    line here.
+    """
+    j, k = key
+    p = centres[key]
+    tried = []
+    for i in {b for pair in centres for b in pair} - {j, k}:
+        ij, ik = (min(i, j), max(i, j)), (min(i, k), max(i, k))
+        a, b = centres.get(ij), centres.get(ik)
+        if a is not None and b is not None and np.hypot(*(b - a)) > APART * size:
+            tried.append((-(ij in pins) - (ik in pins), i, np.array([a, b, p])))
+    lines: list[np.ndarray] = []
+    for *_, line in sorted(tried, key=lambda t: t[:2]):
+        if all(abs(_cross(_unit(line), _unit(other))) > APART for other in lines):
+            lines.append(line)
+        if len(lines) == 2:
+            break
+    return lines
+
+
+def _unit(line: np.ndarray) -> np.ndarray:
+    """Return the unit direction of ``line`` from its first point to its second."""
+    return (line[1] - line[0]) / np.hypot(*(line[1] - line[0]))
+
+
+def _cross(u: np.ndarray, v: np.ndarray) -> float:
+    """Return the z component of ``u`` x ``v``."""
+    return float(u[0] * v[1] - u[1] * v[0])
 
 
 def _frame(ax: Any, points: list[np.ndarray]) -> None:
@@ -118,7 +187,7 @@ def _far_centre(ax: Any, p: np.ndarray, label: str, absolute: bool) -> Name:
                               zorder=9))  # fmt: skip
     ax.plot(*tail, ls="none", zorder=9, mfc="white", **style)
     text = ax.annotate(
-        literal(f"{label} ({p[0]:.3g}, {p[1]:.3g}) m"),
+        f"{label} ({p[0]:.3g}, {p[1]:.3g}) m",
         tuple(tail),
         fontsize=7,
         color=style["color"],

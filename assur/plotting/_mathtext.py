@@ -44,6 +44,22 @@ def reaction_symbol(by: str, on: str) -> str:
     return _symbol(f"\\vec F_{{{tex_name(by)},{tex_name(on)}}}")
 
 
+def centre_symbol(link: str, other: str | None = None) -> str:
+    r"""Return the name of an instant centre: ``link``'s, or of ``other`` and ``link``.
+
+    Written as the forces are (:func:`reaction_symbol`): the links' names in the
+    subscript, :math:`I_{crank}` for a link's absolute centre (about the frame),
+    :math:`I_{crank,coupler}` for the relative one of two links.
+
+    Examples
+    --------
+    >>> centre_symbol("coupler", "crank")
+    '$I_{\\text{crank},\\text{coupler}}$'
+    """
+    names = [tex_name(n) for n in (other, link) if n is not None]
+    return _symbol(f"I_{{{','.join(names)}}}")
+
+
 NAME = "\\mathrm{"
 """How the note's TeX begins a name (see :func:`assur.explain._tex.name`)."""
 UNESCAPED = sorted(

@@ -261,8 +261,11 @@ def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
     """Draw the mechanism with its instant centres: absolute and relative (Kennedy).
 
     The absolute centre of a link is where its velocity is zero; the relative centre
-    of two links is their common point of equal velocity, on the line of their two
-    absolute centres (Kennedy's theorem: the line is drawn dotted). The view
+    of two links is their common point of equal velocity. Each centre not at a pin
+    is on lines through two other centres (Kennedy's theorem: the centres of any
+    three links are on one line); the two lines that find it, from the pins first,
+    are drawn thin and dashed. The names are :math:`I_{crank}` (absolute) and
+    :math:`I_{crank,coupler}` (relative), as the forces are named. The view
     stays on the mechanism: a centre far from it is shown by an arrow at the
     frame's edge pointing toward it, named with its coordinates.
 
