@@ -18,6 +18,7 @@ from assur._progress import progress as shown
 from assur._vec import real
 from assur.errors import UsageError
 from assur.plotting._axes import _handles
+from assur.plotting._bars import label_box
 from assur.plotting._context import _Context, _context, _need_forces
 from assur.plotting._forces import _overview_arrows, _scale
 from assur.plotting._geometry import _extent
@@ -33,10 +34,24 @@ WIDTH = 6.0
 HEIGHTS = (2.0, 6.0)
 """Least and most height of the drawing in a frame, in (it follows the sweep's
 shape between them)."""
-MARGINS = (4.2, 1.1)
-"""A frame's width and height beyond the drawing, in: the axes' numbers, the legend."""
-LARGEST_FRAME = (WIDTH + MARGINS[0], HEIGHTS[1] + MARGINS[1])
+MARGINS = (1.1, 0.95)
+"""A frame's width and height beyond the drawing and its legend, in: the axes'
+numbers and names, the title."""
+BELOW = 0.55
+"""Room below the drawing for the axis' numbers and name, in."""
+LEGEND_FONT = 8.0
+"""Size of the legend's text, points (as the still pictures'): it is read at a
+film's low resolution."""
+LEGEND_COLUMNS = 2
+"""Columns of the legend below the drawing: beside it, it took a third of a frame."""
+LEGEND_ROW = 1.6 * LEGEND_FONT / 72.0
+"""Height of a row of the legend, in (its text and the space between rows)."""
+LEGEND_ROWS = 6
+"""Rows of the legend that the largest frame holds room for (twelve entries)."""
+LARGEST_FRAME = (WIDTH + MARGINS[0], HEIGHTS[1] + MARGINS[1] + LEGEND_ROWS * LEGEND_ROW)
 """Size of the largest frame, in: the most a film's frame takes at a resolution."""
+INSIDE = 2.0
+"""Room kept between a label and the axes' frame, pixels."""
 MOST_FPS = 50.0
 """Fastest frame rate, frames per second: a GIF's delays are whole hundredths of a
 second, and browsers play a delay of 1 or less as 10 (a film at 60 played at 10)."""
@@ -51,7 +66,7 @@ def frame_bytes(dpi: float) -> int:
     Examples
     --------
     >>> frame_bytes(80)
-    1853952
+    1456352
     """
     width, height = (round(side * dpi) for side in LARGEST_FRAME)
     return 4 * width * height
@@ -123,8 +138,11 @@ def animate(
         _need_forces(table, "animate(forces=True)")
     ctx = _context(table)
     corners, scale = _film_limits(ctx, forces)
-    fig, ax, size = _film_figure(ctx, corners)
+    fig, ax = plt.subplots()
     try:
+        # the legend's entries, for its room: drawn again as the first frame
+        entries = _draw_row(ax, ctx, 0, forces, scale, True, True, corners, False)
+        _film_layout(fig, ctx, corners, entries)
         # matplotlib's stubs say int, but the writer only uses 1000 / fps
         writer = PillowWriter(fps=fps)  # type: ignore[arg-type]
         with (
@@ -136,18 +154,8 @@ def animate(
             writer.setup(fig, str(temporary), dpi)
             for r in range(len(table)):
                 ax.clear()
-                entries = _draw_row(
-                    ax, ctx, r, forces, scale, True, True, corners, False
-                )
-                if r == 0:
-                    # one legend for the whole film, outside the axes that are redrawn
-                    fig.legend(
-                        handles=_handles(entries),
-                        loc="upper left",
-                        fontsize=8,
-                        bbox_to_anchor=((1.0 + WIDTH) / size[0], 1.0 - 0.4 / size[1]),
-                        frameon=False,
-                    )
+                _draw_row(ax, ctx, r, forces, scale, True, True, corners, False)
+                keep_inside(ax)
                 writer.grab_frame()
                 bar.advance(1)
             writer.finish()
@@ -180,23 +188,56 @@ def _film_limits(ctx: _Context, forces: bool) -> tuple[list[Any], float | None]:
     return [np.nanmin(limits, axis=0), np.nanmax(limits, axis=0)], scale
 
 
-def _film_figure(
-    ctx: _Context, corners: list[Any]
-) -> tuple[Any, Any, tuple[float, float]]:
-    """Return a figure and axes of fixed layout sized to the drawing, and its size (in).
+def _film_layout(
+    fig: Any, ctx: _Context, corners: list[Any], entries: list[tuple[str, str]]
+) -> None:
+    """Size ``fig`` to the drawing, set its axes and put the legend of ``entries``.
 
-    The axes must not jump between frames, so their place is set by hand.
+    The axes must not jump between frames, so their place is set by hand; the
+    legend, one for the whole film, goes below them, outside the axes redrawn.
     """
-    import matplotlib.pyplot as plt
-
     span = corners[1] - corners[0] + 0.2 * max(ctx.size, *(corners[1] - corners[0]))
     height = float(np.clip(WIDTH * span[1] / span[0], *HEIGHTS))
-    size = (WIDTH + MARGINS[0], height + MARGINS[1])
-    fig, ax = plt.subplots(figsize=size)
+    legend = math.ceil(len(entries) / LEGEND_COLUMNS) * LEGEND_ROW
+    size = (WIDTH + MARGINS[0], height + MARGINS[1] + legend)
+    fig.set_size_inches(size)
     fig.subplots_adjust(
         left=0.8 / size[0],
         right=(0.8 + WIDTH) / size[0],
-        bottom=0.7 / size[1],
+        bottom=(BELOW + legend) / size[1],
         top=1.0 - 0.4 / size[1],
     )
-    return fig, ax, size
+    if entries:
+        fig.legend(
+            handles=_handles(entries),
+            loc="lower center",
+            ncols=LEGEND_COLUMNS,
+            fontsize=LEGEND_FONT,
+            bbox_to_anchor=((0.8 + WIDTH / 2) / size[0], 0.05 / size[1]),
+            frameon=False,
+            borderpad=0.0,
+            columnspacing=1.5,
+            handlelength=1.5,
+        )
+
+
+def keep_inside(ax: Any) -> None:
+    """Move every label of ``ax`` that runs past its frame back inside it.
+
+    A film's limits hold the links and arrows of every frame, not their labels:
+    a label beside an arrow at the edge was cut there. Each is moved, in
+    display units, by just what runs out (and :data:`INSIDE` more).
+    """
+    from assur.plotting._placing import _put
+
+    renderer = ax.figure.canvas.get_renderer()
+    ax.apply_aspect()  # the equal-aspect axes shrink to their place when drawn
+    frame = ax.get_window_extent(renderer).extents + INSIDE * np.array([1, 1, -1, -1])
+    for text in ax.texts:
+        if not (text.get_visible() and text.get_text()):
+            continue
+        box = label_box(text, renderer)
+        shift = np.maximum(frame[:2] - box[:2], 0) - np.maximum(box[2:] - frame[2:], 0)
+        if shift.any():
+            # _put centres the text: from the middle of its box, moved
+            _put(ax, text, (box[:2] + box[2:]) / 2 + shift)
