@@ -508,8 +508,8 @@ def test_animate_refuses_frames_too_large_for_memory_first(
     assert status == 2
     _error_line(
         err,
-        "--frames 1000 --dpi 300: 360 frames of up to 26.1 MB, 9.39 GB in all",
-        "expected at most 2 GiB of frames: at most 82 frames at --dpi 300",
+        "--frames 1000 --dpi 300: 360 frames of up to 20.5 MB, 7.38 GB in all",
+        "expected at most 2 GiB of frames: at most 104 frames at --dpi 300",
     )
     assert not out.exists()
 
@@ -519,9 +519,9 @@ def test_a_film_of_the_most_frames_fits_at_the_default_resolution() -> None:
     from assur.plotting.animation import FILM_BYTES, MOST_FPS
 
     _check_film(FRAMES_RANGE[1], FRAMES_RANGE[1], 80.0)
-    _check_film(82, 82, 300.0)
-    with pytest.raises(UsageError, match="at most 82 frames at --dpi 300"):
-        _check_film(83, 83, 300.0)
+    _check_film(104, 104, 300.0)
+    with pytest.raises(UsageError, match="at most 104 frames at --dpi 300"):
+        _check_film(105, 105, 300.0)
     assert FILM_BYTES == 2 * 1024**3
     assert FPS_RANGE[1] == MOST_FPS
 
