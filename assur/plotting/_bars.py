@@ -8,6 +8,7 @@ that hides more than :data:`HIDDEN_SHARE` of its bar is moved off it, square to 
 
 from __future__ import annotations
 
+import contextlib
 import weakref
 from typing import Any
 
@@ -29,20 +30,35 @@ hide its ends: :func:`clear_bars` moves them."""
 def settled_renderer(ax: Any) -> Any:
     """Return a renderer of ``ax``'s figure once its layout is settled.
 
-    Two draws: a legend beside the axes shrinks them, which moves the labels it
-    made room for; the second draw finds where they are seen. Neither paints a
-    pixel: laying out is all a measure needs, and painting was most of a
-    picture's time (a figure is laid out three times over before it is saved). A
-    figure made without pyplot (the report's SVG) measures its text as Agg.
+    The layout runs twice: a legend beside the axes shrinks them, which moves the
+    labels it made room for; the second run finds where they are seen. Only the
+    layout engine runs, then each axes' aspect is applied, as a draw does first:
+    measures are taken live from the positions these set, so the rest of a draw
+    (walking every artist, even without painting) was most of the time spent
+    here, and a picture is laid out twice more when it is saved. A figure with no
+    layout engine (one the caller made) is drawn twice instead. A figure made
+    without pyplot (the report's SVG) measures its text as Agg.
     """
-    canvas = ax.figure.canvas
+    fig = ax.figure
+    canvas = fig.canvas
     if not hasattr(canvas, "get_renderer"):
         from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-        canvas = FigureCanvasAgg(ax.figure)
-    ax.figure.draw_without_rendering()
-    ax.figure.draw_without_rendering()
-    return canvas.get_renderer()
+        canvas = FigureCanvasAgg(fig)
+    engine = fig.get_layout_engine()
+    if engine is None:
+        fig.draw_without_rendering()
+        fig.draw_without_rendering()
+        return canvas.get_renderer()
+    renderer = canvas.get_renderer()
+    for _ in range(2):
+        # as Figure.draw does: a window too small for the layout is no error
+        with contextlib.suppress(ValueError):
+            engine.execute(fig)
+    for each in fig.axes:
+        locator = each.get_axes_locator()
+        each.apply_aspect(locator(each, renderer) if locator else None)
+    return renderer
 
 
 def hidden_length(box: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
