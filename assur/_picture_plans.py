@@ -23,6 +23,7 @@ from assur._picture_files import (
     _figures,
     _folder,
     _pyplot,
+    _write,
     _wrote,
 )
 from assur._picture_sweeps import _table
@@ -78,7 +79,7 @@ def _cmd_plans(args: argparse.Namespace) -> int:
         for name in makers:
             fig = makers[name]()
             for suffix in (".png", ".svg"):
-                fig.savefig(folder / f"{name}{suffix}", dpi=dpi, bbox_inches="tight")
+                _write(fig, folder / f"{name}{suffix}", dpi, suffix[1:])
                 written.append(f"{name}{suffix}")
             _pyplot().close(fig)
     ours = [f"{name}{suffix}" for name in PLANS for suffix in (".png", ".svg")]

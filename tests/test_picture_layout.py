@@ -2,8 +2,9 @@
 
 :func:`assur.plotting._bars.settled_renderer` used to draw the figure twice (no
 paint, but every artist walked) each time a name was placed: a free-body diagram
-four times over, eight draws before it was saved. Running the layout engine alone
-settles the same positions, so the draws are counted here, not timed.
+four times over, eight draws before it was saved; savefig then drew a PNG twice.
+Running the layout engine alone settles the same positions, so the draws are
+counted here, not timed.
 """
 
 from __future__ import annotations
@@ -96,3 +97,24 @@ def test_a_plan_is_not_drawn_before_it_is_saved(plan: str, draws: list[Figure]) 
     ax = getattr(plotting, plan)(assur.forces(mech, [0.0]))
     assert ax.texts
     assert draws == []
+
+
+def test_a_png_is_drawn_once_and_as_savefig_writes_it(
+    tmp_path: Path, draws: list[Figure]
+) -> None:
+    from matplotlib.image import imread
+
+    from assur._picture_files import _write
+
+    table = assur.forces(assur.load(EXAMPLES / "whitworth.toml"), [0.0])
+    tight = plotting.zhukovsky_lever(table).figure
+    tight.savefig(tmp_path / "tight.png", dpi=150, bbox_inches="tight")
+    fig = plotting.zhukovsky_lever(table).figure
+    engine = fig.get_layout_engine()
+    del draws[:]
+    _write(fig, tmp_path / "once.png", 150, "png")
+    assert draws == [fig]
+    assert fig.get_layout_engine() is engine
+    once, expected = imread(tmp_path / "once.png"), imread(tmp_path / "tight.png")
+    assert once.shape == expected.shape
+    assert (once == expected).all()
