@@ -518,3 +518,11 @@ def test_round_off_of_a_force_or_a_speed_at_a_dead_centre_is_zero() -> None:
     ]
     assert lines
     assert all(r"= (0,\ 0)\ \mathrm{N}" in x for x in lines)
+
+
+def test_the_title_of_a_note_at_minus_zero_reads_zero() -> None:
+    # "--angle -0" titled the note "at crank angle -0 deg"
+    note = explain(assur.load(EXAMPLES / "four_bar.toml"), -0.0)
+    assert str(note).splitlines()[0] == (
+        "# Crank-rocker four-bar at crank angle 0 deg: the analysis explained"
+    )
