@@ -681,7 +681,7 @@ def test_animate_needs_forces_for_arrows(tmp_path: Path, tenbar: assur.Table) ->
 
 
 def test_animate_holds_the_command_s_bounds(tmp_path: Path) -> None:
-    # from Python a film of 10 000 rows at 300 dpi (280 GB of frames) and one at
+    # from Python a film of 10 000 rows at 300 dpi (205 GB of frames) and one at
     # 100 fps (played at 10 in browsers) were begun
     mech = assur.catalog.slider_crank()
     path = tmp_path / "x.gif"
@@ -690,7 +690,7 @@ def test_animate_holds_the_command_s_bounds(tmp_path: Path) -> None:
         plotting.animate(table, path, fps=100)
     many = assur.kinematics(mech, np.linspace(0.0, 360.0, 10_000))
     with pytest.raises(
-        assur.UsageError, match=r"table: 10000 frames of up to 26.1 MB, 261 GB in all"
+        assur.UsageError, match=r"table: 10000 frames of up to 20.5 MB, 205 GB in all"
     ):
         plotting.animate(many, path, dpi=300)
     assert not path.exists()

@@ -57,7 +57,7 @@ MOST_FPS = 50.0
 second, and browsers play a delay of 1 or less as 10 (a film at 60 played at 10)."""
 FILM_BYTES = 2 * 1024**3
 """Most bytes of frames a film may hold: the GIF writer keeps every frame, in RGBA,
-until the last is drawn (1000 frames at 300 dpi would take 28 GB)."""
+until the last is drawn (1000 frames at 300 dpi would take 20 GB)."""
 
 
 def frame_bytes(dpi: float) -> int:
