@@ -44,6 +44,10 @@ LEGEND_FONT = 8.0
 film's low resolution."""
 LEGEND_COLUMNS = 2
 """Columns of the legend below the drawing: beside it, it took a third of a frame."""
+LEGEND_CHARACTERS = 60
+"""Longest entry of a film's legend, characters; a longer one is cut with "…"."""
+LEGEND_SMALLEST = 5.0
+"""Smallest size the legend's text is made to fit a frame's width, points."""
 LEGEND_ROW = 1.6 * LEGEND_FONT / 72.0
 """Height of a row of the legend, in (its text and the space between rows)."""
 LEGEND_ROWS = 6
@@ -196,9 +200,23 @@ def _film_layout(
     The axes must not jump between frames, so their place is set by hand; the
     legend, one for the whole film, goes below them, outside the axes redrawn.
     """
+    # an entry naming a group's long links (171 characters) would not fit a column
+    # at any size: it is cut, the frame showing the links themselves
+    entries = [
+        (
+            text
+            if len(text) <= LEGEND_CHARACTERS
+            else f"{text[: LEGEND_CHARACTERS - 1]}…",
+            c,
+        )
+        for text, c in entries
+    ]
     span = corners[1] - corners[0] + 0.2 * max(ctx.size, *(corners[1] - corners[0]))
     height = float(np.clip(WIDTH * span[1] / span[0], *HEIGHTS))
-    legend = math.ceil(len(entries) / LEGEND_COLUMNS) * LEGEND_ROW
+    # at most LEGEND_ROWS rows, the frame's size bound counts no more (a mechanism
+    # of many groups takes more columns instead)
+    columns = max(LEGEND_COLUMNS, math.ceil(len(entries) / LEGEND_ROWS))
+    legend = math.ceil(len(entries) / columns) * LEGEND_ROW
     size = (WIDTH + MARGINS[0], height + MARGINS[1] + legend)
     fig.set_size_inches(size)
     fig.subplots_adjust(
@@ -207,18 +225,27 @@ def _film_layout(
         bottom=(BELOW + legend) / size[1],
         top=1.0 - 0.4 / size[1],
     )
-    if entries:
-        fig.legend(
+    font = LEGEND_FONT
+    while entries:
+        shown = fig.legend(
             handles=_handles(entries),
             loc="lower center",
-            ncols=LEGEND_COLUMNS,
-            fontsize=LEGEND_FONT,
+            ncols=columns,
+            fontsize=font,
             bbox_to_anchor=((0.8 + WIDTH / 2) / size[0], 0.05 / size[1]),
             frameon=False,
             borderpad=0.0,
             columnspacing=1.5,
             handlelength=1.5,
         )
+        # long names make a legend wider than the frame, which crops it: its
+        # text is made smaller until it fits (down to LEGEND_SMALLEST)
+        wide = shown.get_window_extent(fig.canvas.get_renderer()).width
+        room = size[0] * fig.dpi
+        if wide <= room or font <= LEGEND_SMALLEST:
+            break
+        shown.remove()
+        font = max(LEGEND_SMALLEST, font * room / wide * 0.98)
 
 
 def keep_inside(ax: Any) -> None:
