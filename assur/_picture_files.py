@@ -106,6 +106,8 @@ def _write(fig: Any, path: Any, dpi: float, form: str) -> None:
     """
     import matplotlib as mpl
 
+    from assur.plotting._bars import lay_out
+
     engine = fig.get_layout_engine()
     measured = hasattr(fig.canvas, "get_renderer")  # pyplot's Agg canvas
     if form != "png" or engine is None or not fig.axes or not measured:
@@ -114,12 +116,15 @@ def _write(fig: Any, path: Any, dpi: float, form: str) -> None:
     shown = fig.dpi
     try:
         fig.dpi = dpi
-        # as Figure.draw does: a figure too small for its layout is no error
-        with contextlib.suppress(ValueError):
-            engine.execute(fig)
+        lay_out(fig, engine)
         pad = mpl.rcParams["savefig.pad_inches"]
         box = fig.get_tightbbox(fig.canvas.get_renderer()).padded(pad)
-        fig.set_layout_engine(None)
+        # no engine, whatever the rc says (figure.autolayout would set a fresh one
+        # that lays the figure out again after the box was taken)
+        with mpl.rc_context(
+            {"figure.autolayout": False, "figure.constrained_layout.use": False}
+        ):
+            fig.set_layout_engine(None)
     finally:
         fig.dpi = shown
     try:

@@ -99,9 +99,20 @@ def test_a_plan_is_not_drawn_before_it_is_saved(plan: str, draws: list[Figure]) 
     assert draws == []
 
 
+@pytest.mark.parametrize(
+    "rc", [{}, {"figure.autolayout": True}, {"figure.constrained_layout.use": True}]
+)
 def test_a_png_is_drawn_once_and_as_savefig_writes_it(
-    tmp_path: Path, draws: list[Figure]
+    tmp_path: Path, draws: list[Figure], rc: dict[str, bool]
 ) -> None:
+    # a user's rc asking for a layout engine set a fresh one when the figure's was
+    # taken off to save it: the figure was laid out again after its box was taken
+    with matplotlib.rc_context(rc):
+        _drawn_once(tmp_path, draws)
+
+
+def _drawn_once(tmp_path: Path, draws: list[Figure]) -> None:
+    """Check one PNG of the Whitworth lever: one draw, savefig's pixels."""
     from matplotlib.image import imread
 
     from assur._picture_files import _write

@@ -52,13 +52,20 @@ def settled_renderer(ax: Any) -> Any:
         return canvas.get_renderer()
     renderer = canvas.get_renderer()
     for _ in range(2):
-        # as Figure.draw does: a window too small for the layout is no error
-        with contextlib.suppress(ValueError):
-            engine.execute(fig)
+        lay_out(fig, engine)
     for each in fig.axes:
         locator = each.get_axes_locator()
         each.apply_aspect(locator(each, renderer) if locator else None)
     return renderer
+
+
+def lay_out(fig: Any, engine: Any) -> None:
+    """Run the layout ``engine`` on ``fig`` as ``Figure.draw`` does.
+
+    A figure too small for its layout is no error: it is then not tightened.
+    """
+    with contextlib.suppress(ValueError):
+        engine.execute(fig)
 
 
 def hidden_length(box: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
