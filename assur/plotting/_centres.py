@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur.explain._position import perp
+from assur.explain._position import cross, perp
 from assur.plotting._drawing import _place
 from assur.plotting._heads import fitted_arrow
 from assur.plotting._mathtext import centre_symbol
@@ -142,7 +142,7 @@ def kennedy_lines(
             tried.append((-(ij in pins) - (ik in pins), i, np.array([a, b, p])))
     lines: list[np.ndarray] = []
     for *_, line in sorted(tried, key=lambda t: t[:2]):
-        if all(abs(_cross(_unit(line), _unit(other))) > APART for other in lines):
+        if all(abs(cross(_unit(line), _unit(other))) > APART for other in lines):
             lines.append(line)
         if len(lines) == 2:
             break
@@ -152,11 +152,6 @@ def kennedy_lines(
 def _unit(line: np.ndarray) -> np.ndarray:
     """Return the unit direction of ``line`` from its first point to its second."""
     return (line[1] - line[0]) / np.hypot(*(line[1] - line[0]))
-
-
-def _cross(u: np.ndarray, v: np.ndarray) -> float:
-    """Return the z component of ``u`` x ``v``."""
-    return float(u[0] * v[1] - u[1] * v[0])
 
 
 def _frame(ax: Any, points: list[np.ndarray]) -> None:
