@@ -79,11 +79,7 @@ class CsvWriter:
         count = len(columns[0]) if columns else 0
         step = _rows(columns)
         for start in range(0, count, step):
-            rows = np.stack([c[start : start + step] for c in columns], axis=-1)
-            # a negative zero (the speed of a point at rest, rounded) reads "-0",
-            # a sign with no number behind it: adding +0 makes it 0, nothing else
-            if rows.dtype.kind == "f":
-                rows += 0.0
+            rows = _block(columns, start, step)
             self._write(csv_lines(rows))
             if self._advance is not None:
                 self._advance(rows.shape[0])
@@ -133,9 +129,7 @@ class JsonWriter:
         count = len(columns[0]) if columns else 0
         step = _rows(columns)
         for start in range(0, count, step):
-            rows = np.stack([c[start : start + step] for c in columns], axis=-1)
-            if rows.dtype.kind == "f":
-                rows += 0.0  # -0.0 written 0.0, as the CSV writes it 0
+            rows = _block(columns, start, step)
             texts = [self._row % tuple(map(_json_number, row)) for row in rows.tolist()]
             lead = "" if self._first else ", "
             self._first = False
@@ -146,6 +140,18 @@ class JsonWriter:
     def close(self) -> None:
         """Write the end of the object."""
         self._write(self._encode("]}"))
+
+
+def _block(columns: Sequence[Array], start: int, step: int) -> Array:
+    """Return rows ``start`` to ``start + step`` of ``columns``, one row a position.
+
+    A negative zero (the speed of a point at rest, rounded) would read "-0", a sign
+    with no number behind it: adding +0 makes it 0, and changes nothing else.
+    """
+    rows = np.stack([c[start : start + step] for c in columns], axis=-1)
+    if rows.dtype.kind == "f":
+        rows += 0.0
+    return rows
 
 
 def _rows(columns: Sequence[Array]) -> int:

@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from assur.explain._position import cross
 from assur.plotting._heads import fitted_arrow
 from assur.plotting._style import literal
 
@@ -37,7 +38,7 @@ def _beside(
         return start, end
     u = (end - start) / length
     for a, b in drawn:
-        off = [abs(float(u[0] * q[1] - u[1] * q[0])) for q in (a - start, b - start)]
+        off = [abs(cross(u, q)) for q in (a - start, b - start)]
         low, high = sorted(float(np.dot(u, q - start)) for q in (a, b))
         if max(off) <= ALONG and min(high, length) - max(low, 0.0) > ALONG:
             shift = BESIDE * np.array([-u[1], u[0]])

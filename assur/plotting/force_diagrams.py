@@ -45,9 +45,10 @@ def plot_torque(table: Table, ax: Any = None) -> Any:
     plan = table.plan
     ax = _new_axes(ax, (8.0, 4.5))
     x = _driver_axis(ax, table)
+    summary = table.summary()  # once: every joint's figures, each driver's mean
     for i, d in enumerate(plan.drivers):
         name = literal(f" at {d.pair.name}") if len(plan.drivers) > 1 else ""
-        _plot_balancing(ax, table, x, i, name)
+        _plot_balancing(ax, table, x, (i, summary), name)
     ax.axhline(0.0, color="black", lw=0.6)
     keys = [_driver_key(table, i) for i in range(len(plan.drivers))]
     units = " or ".join(dict.fromkeys(_unit(table, key) for key in keys))
@@ -57,8 +58,18 @@ def plot_torque(table: Table, ax: Any = None) -> Any:
     return ax
 
 
-def _plot_balancing(ax: Any, table: Table, x: np.ndarray, i: int, name: str) -> None:
-    """Plot driver ``i``'s balancing load, its check (dots) and its mean."""
+def _plot_balancing(
+    ax: Any,
+    table: Table,
+    x: np.ndarray,
+    driver: tuple[int, dict[str, float]],
+    name: str,
+) -> None:
+    """Plot a driver's balancing load, its check (dots) and its mean.
+
+    ``driver`` is the driver's index and the table's summary, which gives the mean.
+    """
+    i, summary = driver
     key = _driver_key(table, i)
     what, unit = table.column(key).quantity, _unit(table, key)
     color = BALANCING_COLORS[i % len(BALANCING_COLORS)]
@@ -83,7 +94,7 @@ def _plot_balancing(ax: Any, table: Table, x: np.ndarray, i: int, name: str) -> 
     )
     # the summary's mean: a sweep ending a whole turn on from its start (0:360:5)
     # ends on its first pose, counted once there; np.mean counted it twice
-    mean = table.summary()[f"{key}.mean"]
+    mean = summary[f"{key}.mean"]
     if abs(mean) < 1e-9 * float(np.max(np.abs(balancing))):
         mean = 0.0  # a full turn of a conservative system: zero up to rounding
     ax.axhline(
