@@ -28,8 +28,8 @@ __all__ = [
 
 
 RESEND = 0.5
-"""Seconds after which SIGTERM or SIGHUP is sent again when Python ignored the
-exception it raised."""
+"""Seconds after which Ctrl-C, SIGTERM or SIGHUP is sent again when Python ignored
+the exception it raised."""
 
 
 class _Stopped(BaseException):
@@ -45,8 +45,9 @@ def _stoppable() -> Iterator[None]:
     """Let SIGTERM and SIGHUP end the command as Ctrl-C does, while it runs.
 
     By default they end the process at once, leaving an output's temporary file
-    behind; raised as an exception, they remove it and keep the old file. (Only
-    the main thread can take signals; SIGKILL cannot be taken at all.)
+    behind; raised as an exception, they remove it and keep the old file. A stop
+    (Ctrl-C too) whose exception Python ignored, raised in a ``__del__``, is sent
+    again. (Only the main thread can take signals; SIGKILL cannot be taken at all.)
     """
     if threading.current_thread() is not threading.main_thread():
         yield
@@ -61,13 +62,18 @@ def _stoppable() -> Iterator[None]:
 
     def unraised(unraisable: Any) -> None:
         stopped = unraisable.exc_value
-        if not isinstance(stopped, _Stopped):
+        if isinstance(stopped, _Stopped):
+            signum = stopped.signum
+        elif isinstance(stopped, KeyboardInterrupt):
+            signum = signal.SIGINT
+        else:
             previous(unraisable)
             return
         # raised where Python ignores an exception (a __del__, a weakref callback
-        # of matplotlib's), the stop left the command running: it comes again
+        # of matplotlib's), the stop left the command running (an animation of
+        # a thousand frames went on to its end after Ctrl-C): it comes again
         # shortly, unreported, until one lands where it unwinds the command
-        timer = threading.Timer(RESEND, os.kill, (os.getpid(), stopped.signum))
+        timer = threading.Timer(RESEND, os.kill, (os.getpid(), signum))
         timer.daemon = True
         again.append(timer)
         timer.start()

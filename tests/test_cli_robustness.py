@@ -119,13 +119,18 @@ def test_a_stop_during_an_animation_keeps_the_old_file(
     assert os.listdir(tmp_path) == ["film.gif"]
 
 
-def test_a_stop_that_python_ignores_comes_again(capsys):
-    # SIGTERM handled inside a __del__ (or a weakref callback of matplotlib's):
-    # Python ignores the exception raised there, and the animation went on to its
-    # end; the signal is sent again until it unwinds the command, unreported
+@pytest.mark.parametrize(
+    ("stop", "raised"),
+    [(signal.SIGTERM, _cli_process._Stopped), (signal.SIGINT, KeyboardInterrupt)],
+)
+def test_a_stop_that_python_ignores_comes_again(capsys, stop, raised):
+    # SIGTERM or Ctrl-C handled inside a __del__ (or a weakref callback of
+    # matplotlib's): Python ignores the exception raised there, and the animation
+    # went on to its end; the signal is sent again until it unwinds the command,
+    # unreported
     class Finalized:
         def __del__(self) -> None:
-            os.kill(os.getpid(), signal.SIGTERM)
+            os.kill(os.getpid(), stop)
             time.sleep(0.05)  # the handler runs here, its exception ignored
 
     waited = [0.0]
@@ -138,7 +143,7 @@ def test_a_stop_that_python_ignores_comes_again(capsys):
                 waited[0] = time.monotonic() - started
                 time.sleep(0.01)
 
-    with pytest.raises(_cli_process._Stopped):
+    with pytest.raises(raised):
         command()
     assert waited[0] < 5.0
     assert "Exception ignored" not in capsys.readouterr().err
