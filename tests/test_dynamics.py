@@ -282,6 +282,17 @@ def test_flywheel_sizing_sets_the_classical_estimates_beside_it():
     assert gaps["energy_swing"] > 0
 
 
+def test_the_energy_swing_misses_where_the_links_own_inertia_varies():
+    # the figures of docs/dynamics.rst: heavy links, and loads that do no work
+    six_bar = assur.flywheel_sizing(example("six_bar_lecture"), 0.05)
+    assert six_bar.exact == pytest.approx(0.1460, abs=5e-5)
+    assert six_bar.energy_swing == pytest.approx(0.1214, abs=5e-5)
+    assert six_bar.differences()["energy_swing"] == pytest.approx(-0.17, abs=5e-3)
+    four_bar = assur.flywheel_sizing(example("four_bar"), 0.05)
+    assert four_bar.energy_swing == 0.0
+    assert four_bar.exact == pytest.approx(0.01458, abs=5e-6)
+
+
 # --------------------------------------------------------------- cases checked by hand
 
 
