@@ -69,6 +69,14 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
             continue
         shown = number_text(value, ">14.6g")
         lines.append(f"  {key.ljust(width)}  {shown}  {unit}".rstrip())
+    if summary.clockwise:
+        # torques are counter-clockwise positive: a clockwise crank's driving
+        # torque is negative, and its largest driving torque is the .min
+        lines += [
+            "  (the crank turns clockwise and torques are counter-clockwise positive:",
+            "   a torque that drives it is negative; a positive power is work the",
+            "   drivers supply)",
+        ]
     return "\n".join(lines)
 
 

@@ -1,8 +1,9 @@
 """Summaries of a force table: the few numbers joints, bearings and motors are sized on.
 
-For every joint the largest reaction, where it occurs and its RMS; for the driver the
-largest, smallest, mean and RMS balancing load and its mean power; with friction the
-power lost in each joint, in all, and the cycle's mechanical efficiency. A
+For every joint the largest reaction, where it occurs and its RMS (a sliding pair's
+largest couple too); for the driver the largest, smallest, mean and RMS balancing
+load, its mean and largest power; the largest shaking force and moment; with
+friction the power lost in each joint, in all, and the cycle's mechanical efficiency. A
 :class:`Summary` is built slice by slice, so that a sweep too long for memory is
 summarised as it is analysed; :func:`summarize` does it for one table.
 
@@ -22,51 +23,11 @@ from typing import Any
 import numpy as np
 
 from assur._evaluate import friction_powers
+from assur._running import Running
 from assur._vec import Array, full
 from assur.errors import UsageError
 
 __all__ = ["Summary", "efficiency", "summarize", "undefined"]
-
-
-@dataclass
-class _Running:
-    """Per variant: running maximum (and where), minimum, sum and sum of squares."""
-
-    top: Array
-    at: Array
-    bottom: Array
-    total: Array
-    squares: Array
-    last: Array
-    """The values at the last position added (see :meth:`Summary.results`)."""
-
-    @classmethod
-    def start(cls, variants: int) -> _Running:
-        """Return the running values of ``variants`` variants before any position."""
-        return cls(
-            np.full(variants, -math.inf),
-            np.full(variants, math.nan),
-            np.full(variants, math.inf),
-            np.zeros(variants),
-            np.zeros(variants),
-            np.zeros(variants),
-        )
-
-    def add(self, values: Array, where: Array) -> None:
-        """Add ``values`` (variants, m) found at driver positions ``where`` (same)."""
-        if not values.shape[1]:
-            return
-        rows = np.arange(values.shape[0])
-        k = np.argmax(values, axis=1)
-        best = values[rows, k]
-        # a NaN is never larger: the largest stays the largest number, as max() does
-        better = best > self.top
-        self.top = np.where(better, best, self.top)
-        self.at = np.where(better, where[rows, k], self.at)
-        self.bottom = np.fmin(self.bottom, np.min(values, axis=1))
-        self.total = self.total + np.sum(values, axis=1)
-        self.squares = self.squares + np.einsum("ij,ij->i", values, values)
-        self.last = values[:, -1]
 
 
 @dataclass
@@ -83,8 +44,14 @@ class Summary:
     variants: int = 1
     count: int = 0
     units: dict[str, str] = field(default_factory=dict)
-    _joints: dict[str, _Running] = field(default_factory=dict)
-    _drivers: dict[str, _Running] = field(default_factory=dict)
+    _joints: dict[str, Running] = field(default_factory=dict)
+    _couples: dict[str, Running] = field(default_factory=dict)
+    """A sliding pair's couple, |J.M|, by the pair's name."""
+    _drivers: dict[str, Running] = field(default_factory=dict)
+    _peaks: dict[str, Running] = field(default_factory=dict)
+    """The drivers' power, all together (``driver``) and each one's (several)."""
+    _shaking: dict[str, Running] = field(default_factory=dict)
+    """|shaking force| (``F``) and |shaking moment| (``M``)."""
     _power: Any = 0.0
     _own: dict[str, Any] = field(default_factory=dict)
     """Each driver's own mean power, by its joint's name (several drivers)."""
@@ -93,6 +60,8 @@ class Summary:
     _rubbing: bool = False
     _crank: bool = False
     """One revolute driver: a sweep may end where it began, a turn on."""
+    clockwise: bool = False
+    """The first driver is a crank turning clockwise (its mean speed below 0)."""
     _ends: list[float] = field(default_factory=list)
     """The first and the last driver position added (deg)."""
     _tail: dict[str, Any] = field(default_factory=dict)
@@ -122,24 +91,34 @@ class Summary:
         where = (table.given[:, 0] if n else np.zeros(0)).reshape(shape)
         for name, running in self._joints.items():
             running.add(np.asarray(table[f"{name}.F"]).reshape(shape), where)
+        for name, running in self._couples.items():
+            running.add(np.abs(table[f"{name}.M"]).reshape(shape), where)
         for name, running in self._drivers.items():
             running.add(np.asarray(table[name]).reshape(shape), where)
+        if self._shaking:
+            shaking = np.hypot(table["shaking.Fx"], table["shaking.Fy"])
+            self._shaking["F"].add(shaking.reshape(shape), where)
+            self._shaking["M"].add(np.abs(table["shaking.M"]).reshape(shape), where)
         forces = table.force_state
         state = table.state
         tail: dict[str, Any] = {"power": 0.0, "ideal": 0.0}
+        total: Any = 0.0
         for i, driver in enumerate(table.plan.drivers):
             speed = full(state.speed[i], n)
             power = full(forces.balancing[i], n) * speed
+            total = total + power
             self._power = self._power + _sums(power, shape)
             tail["power"] = tail["power"] + _lasts(power, shape)
             name = driver.pair.name
             if name in self._own:
                 self._own[name] = self._own[name] + _sums(power, shape)
+                self._peaks[name].add(power.reshape(shape), where)
                 tail[name] = _lasts(power, shape)
             if self._rubbing:
                 ideal = full(forces.ideal[i], n) * speed
                 self._ideal = self._ideal + _sums(ideal, shape)
                 tail["ideal"] = tail["ideal"] + _lasts(ideal, shape)
+        self._peaks["driver"].add(full(total, n).reshape(shape), where)
         for name, power in friction_powers(table).items():
             self._losses[name] = self._losses.get(name, 0.0) - _sums(power, shape)
             tail[f"{name}.friction"] = -_lasts(power, shape)
@@ -156,23 +135,39 @@ class Summary:
         units = self.units
         for column in table.schema:
             if column.family == "magnitude":
-                self._joints[column.owner] = _Running.start(self.variants)
+                self._joints[column.owner] = Running.start(self.variants)
                 name = column.owner
                 units[f"{name}.F.max"] = "N"
                 units[f"{name}.F.at"] = unit
                 units[f"{name}.F.rms"] = "N"
+            elif column.family == "reaction" and column.quantity == "M":
+                self._couples[column.owner] = Running.start(self.variants)
+        for name in self._couples:
+            units[f"{name}.M.max"] = "N m"
+            units[f"{name}.M.at"] = unit
         for column in table.schema:
             if column.family == "balancing":
-                self._drivers[column.name] = _Running.start(self.variants)
+                self._drivers[column.name] = Running.start(self.variants)
                 for part in ("max", "min", "mean", "rms"):
                     units[f"{column.name}.{part}"] = column.unit
         units["driver.power.mean"] = "W"
+        units["driver.power.max"] = "W"
+        self._peaks["driver"] = Running.start(self.variants)
         if len(plan.drivers) > 1:
             for driver in plan.drivers:
                 units[f"{driver.pair.name}.power.mean"] = "W"
+                units[f"{driver.pair.name}.power.max"] = "W"
                 self._own[driver.pair.name] = 0.0
+                self._peaks[driver.pair.name] = Running.start(self.variants)
+        if "shaking.M" in table:
+            for part, what in (("F", "N"), ("M", "N m")):
+                self._shaking[part] = Running.start(self.variants)
+                units[f"shaking.{part}.max"] = what
+                units[f"shaking.{part}.at"] = unit
         self._rubbing = any(p.friction > 0.0 for p in plan.pairs.values())
         self._crank = len(plan.drivers) == 1 and plan.drivers[0].kind == "R"
+        if plan.drivers[0].kind == "R" and len(table):
+            self.clockwise = bool(np.mean(table.state.speed[0]) < 0.0)
         if self._rubbing:
             for name, pair in plan.pairs.items():
                 if pair.friction > 0.0 and not pair.virtual:
@@ -218,6 +213,10 @@ class Summary:
             out[f"{name}.F.max"] = r.top
             out[f"{name}.F.at"] = r.at
             out[f"{name}.F.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
+            couple = self._couples.get(name)
+            if couple is not None:
+                out[f"{name}.M.max"] = couple.top
+                out[f"{name}.M.at"] = couple.at
         for name, r in self._drivers.items():
             out[f"{name}.max"] = r.top
             out[f"{name}.min"] = r.bottom
@@ -225,10 +224,15 @@ class Summary:
             out[f"{name}.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
         power = less(self._power, self._tail.get("power"))
         out["driver.power.mean"] = _per_variant(power / n, self.variants)
+        out["driver.power.max"] = self._peaks["driver"].top
         for name, own in self._own.items():
             out[f"{name}.power.mean"] = _per_variant(
                 less(own, self._tail.get(name)) / n, self.variants
             )
+            out[f"{name}.power.max"] = self._peaks[name].top
+        for part, r in self._shaking.items():
+            out[f"shaking.{part}.max"] = r.top
+            out[f"shaking.{part}.at"] = r.at
         if self._rubbing:
             losses = {
                 name: less(loss, self._tail.get(f"{name}.friction"))

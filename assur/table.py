@@ -306,9 +306,15 @@ class Table(Columns):
         as the column ``driver.torque`` is, and every driver's own ``J.torque.*``
         is given too: size each motor on its own);
         ``driver.power.mean``, the mean of the balancing loads times the drivers'
-        speeds (W), all drivers' together (with several, each one's own too:
-        ``J.power.mean``, J its joint). With friction also ``J.friction.loss``, the
-        mean power lost in joint J (W), ``friction.loss`` in all,
+        speeds (W), all drivers' together, and ``driver.power.max``, its largest
+        value (with several, each one's own too: ``J.power.mean``,
+        ``J.power.max``, J its joint); for every sliding pair J also ``J.M.max``,
+        the largest couple of its reaction (N m), and ``J.M.at``; the largest
+        shaking force ``shaking.F.max`` (N, the size of ``shaking.Fx``,
+        ``shaking.Fy``) and moment ``shaking.M.max`` (N m, its size), with
+        ``shaking.F.at`` and ``shaking.M.at``. With friction also
+        ``J.friction.loss``, the mean power lost in joint J (W), ``friction.loss``
+        in all,
         ``driver.power_ideal.mean`` without friction and ``efficiency``,
         ``driver.power_ideal.mean`` over ``driver.power.mean``: the share of the
         driver's work that reaches the loads

@@ -60,8 +60,13 @@ def test_with_several_drivers_each_one_s_power_is_summed_too():
     found = table.summary()
     own = {}
     for name, link in (("A", "left_crank"), ("E", "right_crank")):
-        own[name] = float(np.mean(table[f"{name}.torque"] * table[f"{link}.omega"]))
+        power = table[f"{name}.torque"] * table[f"{link}.omega"]
+        own[name] = float(np.mean(power))
         assert found[f"{name}.power.mean"] == pytest.approx(own[name], rel=1e-12)
+        assert found[f"{name}.power.max"] == pytest.approx(power.max(), rel=1e-12)
+        both = table["A.torque"] * table["left_crank.omega"]
+        both = both + table["E.torque"] * table["right_crank.omega"]
+        assert found["driver.power.max"] == pytest.approx(both.max(), rel=1e-12)
     assert abs(own["A"]) > 1.0  # each crank works; together they do no net work
     assert found["driver.power.mean"] == pytest.approx(
         own["A"] + own["E"], abs=1e-9 * abs(own["A"])

@@ -82,6 +82,7 @@ RANKS = {
     # what every table of results offers: its columns by name, and their export
     "assur._exports": 8,
     "assur.summary": 8,
+    "assur._running": 1,
     "assur._stack": 6,
     # many variants compiled at once against a template plan
     "assur._variants": 6,

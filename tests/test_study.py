@@ -655,7 +655,8 @@ def test_a_value_a_variant_does_not_have_or_was_not_analysed_for_says_so():
         ["D.F.max", "D.F.at", "D.F.rms"], lacks
     )
     assert undefined(summary.loc[1]) == dict.fromkeys(
-        ["guide.F.max", "guide.F.at", "guide.F.rms"], lacks
+        ["guide.F.max", "guide.F.at", "guide.F.rms", "guide.M.max", "guide.M.at"],
+        lacks,
     )
     assert set(undefined(summary.loc[2]).values()) == {
         "the variant was not analysed (see its error)"

@@ -1,0 +1,58 @@
+"""Running figures of a quantity over positions added slice by slice, per variant.
+
+The largest value and where it occurs, the smallest, the sum and the sum of squares:
+what a summary needs of a sweep too long to hold in memory (:mod:`assur.summary`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from assur._vec import Array
+
+__all__ = ["Running"]
+
+
+@dataclass
+class Running:
+    """Per variant: running maximum (and where), minimum, sum and sum of squares."""
+
+    top: Array
+    at: Array
+    bottom: Array
+    total: Array
+    squares: Array
+    last: Array
+    """The values at the last position added (see
+    :meth:`assur.summary.Summary.results`)."""
+
+    @classmethod
+    def start(cls, variants: int) -> Running:
+        """Return the running values of ``variants`` variants before any position."""
+        return cls(
+            np.full(variants, -math.inf),
+            np.full(variants, math.nan),
+            np.full(variants, math.inf),
+            np.zeros(variants),
+            np.zeros(variants),
+            np.zeros(variants),
+        )
+
+    def add(self, values: Array, where: Array) -> None:
+        """Add ``values`` (variants, m) found at driver positions ``where`` (same)."""
+        if not values.shape[1]:
+            return
+        rows = np.arange(values.shape[0])
+        k = np.argmax(values, axis=1)
+        best = values[rows, k]
+        # a NaN is never larger: the largest stays the largest number, as max() does
+        better = best > self.top
+        self.top = np.where(better, best, self.top)
+        self.at = np.where(better, where[rows, k], self.at)
+        self.bottom = np.fmin(self.bottom, np.min(values, axis=1))
+        self.total = self.total + np.sum(values, axis=1)
+        self.squares = self.squares + np.einsum("ij,ij->i", values, values)
+        self.last = values[:, -1]
