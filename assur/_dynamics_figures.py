@@ -56,14 +56,28 @@ def _motor_shown(result: Any) -> float:
     return float(result.motor)
 
 
+def _motor_note(motor: float, result: Any) -> str:
+    """Return what the motor torque's sign means, beside "constant"."""
+    note = "constant"
+    if result.omega < 0:
+        # torques are counter-clockwise positive: a clockwise crank's motor
+        # drives it with a negative torque
+        note += ", counter-clockwise positive"
+    if motor * result.omega < 0:
+        note += "; it brakes: the loads drive the crank"
+    return note
+
+
 def _figures(result: Any, sizing: Any, run: Any) -> str:
     """Return the figures of the steady state (and start-up) as aligned lines."""
     # plain ASCII, as the tables' units rows and the options' messages write units
     kgm2 = "kg m^2"
+    turning = " (clockwise)" if result.omega < 0 else ""
+    motor = _motor_shown(result)
     lines = [
-        ("nominal crank speed", f"{result.omega:.6g} rad/s"),
+        ("nominal crank speed", f"{result.omega:.6g} rad/s{turning}"),
         ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
-        ("motor torque", f"{number_text(_motor_shown(result))} N m (constant)"),
+        ("motor torque", f"{number_text(motor)} N m ({_motor_note(motor, result)})"),
         ("coefficient of speed fluctuation", f"delta = {result.delta:.6g}"),
         (
             "largest speed",

@@ -414,6 +414,30 @@ def test_a_mean_torque_of_round_off_is_printed_as_zero(capsys):
     assert "motor torque                          0 N m (constant)" in out
 
 
+def test_the_motor_torque_s_sign_is_told_for_a_clockwise_crank(capsys, tmp_path):
+    text = WHITWORTH.read_text(encoding="utf-8")
+    assert text.count("omega = 5.0") == 1
+    path = tmp_path / "clockwise.toml"
+    path.write_text(text.replace("omega = 5.0", "omega = -5.0"), encoding="utf-8")
+    t = assur.dynamics(assur.load(path), np.arange(0.0, 360.0, 1.0), flywheel=20.0)
+    # the cutting force, a function of the crank angle, helps a crank turned the
+    # other way round: the motor's power is negative, it brakes
+    power = t["driver.motor"] * t["driver.omega"]
+    assert np.all(power < 0.0)
+    status, out, _ = run(capsys, "dynamics", path, "--flywheel", "20", "--angles", "0")
+    assert status == 0
+    lines = {line[:38].strip(): line[38:].strip() for line in out.splitlines()[1:4]}
+    assert lines["nominal crank speed"] == "-5 rad/s (clockwise)"
+    assert lines["motor torque"] == (
+        f"{t.motor:.6g} N m (constant, counter-clockwise positive; it brakes: the "
+        "loads drive the crank)"
+    )
+    # turning counter-clockwise, the same loads take work: the motor drives
+    status, out, _ = run(capsys, "dynamics", WHITWORTH, "--delta", "0.05")
+    assert "(clockwise)" not in out
+    assert "N m (constant)\n" in out
+
+
 def test_a_long_sweep_is_written_by_slices(capsys, monkeypatch, tmp_path: Path):
     from assur import dynamics_cli
 
