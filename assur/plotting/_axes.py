@@ -123,7 +123,8 @@ def fill_box(ax: Any) -> None:
     from assur.plotting._bars import settled_renderer
 
     settled_renderer(ax)
-    room = ax.get_position(original=True).transformed(ax.figure.transFigure)
+    # the position is a share of the (sub)figure that holds the axes
+    room = ax.get_position(original=True).transformed(ax.figure.transSubfigure)
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     wide, tall = x1 - x0, y1 - y0
     shape = room.width / room.height

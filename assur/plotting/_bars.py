@@ -27,6 +27,19 @@ BAR_LABELS: weakref.WeakKeyDictionary[Any, tuple[np.ndarray, np.ndarray, float]]
 hide its ends: :func:`clear_bars` moves them."""
 
 
+def root_figure(ax: Any) -> Any:
+    """Return the Figure that holds ``ax``, through the SubFigures it may be in.
+
+    A SubFigure has no canvas of its own to draw, lay out or measure with; its
+    root Figure has.
+    """
+    try:
+        return ax.get_figure(root=True)  # matplotlib >= 3.10
+    except TypeError:
+        # before 3.10, a SubFigure's ``figure`` is its root Figure, a Figure's itself
+        return ax.figure.figure
+
+
 def settled_renderer(ax: Any) -> Any:
     """Return a renderer of ``ax``'s figure once its layout is settled.
 
@@ -39,7 +52,7 @@ def settled_renderer(ax: Any) -> Any:
     layout engine (one the caller made) is drawn twice instead. A figure made
     without pyplot (the report's SVG) measures its text as Agg.
     """
-    fig = ax.figure
+    fig = root_figure(ax)
     canvas = fig.canvas
     if not hasattr(canvas, "get_renderer"):
         from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -123,7 +136,7 @@ def clear_bars(ax: Any) -> None:
     if not texts:
         return
     renderer = settled_renderer(ax)
-    pixels = ax.figure.dpi / 72.0
+    pixels = root_figure(ax).dpi / 72.0
     for text in texts:
         a, b = bar_seen(ax, *BAR_LABELS[text])
         box = label_box(text, renderer)

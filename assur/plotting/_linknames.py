@@ -21,6 +21,7 @@ from assur.plotting._bars import (
     bar_seen,
     hidden_length,
     label_box,
+    root_figure,
     settled_renderer,
 )
 from assur.plotting._placing import BARRED, CLASH, _crossed
@@ -60,7 +61,7 @@ def clear_arrows(ax: Any, keep: Any = ()) -> None:
     renderer = settled_renderer(ax)
     # measured once the layout is settled: the display units change with it
     arrows, owner = _arrow_segments(ax)
-    pixels = ax.figure.dpi / 72.0
+    pixels = root_figure(ax).dpi / 72.0
     margin = MARGIN * pixels
     for text in texts:
         box = label_box(text, renderer)

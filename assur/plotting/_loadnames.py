@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from assur.plotting._bars import BAR_WIDTH
+from assur.plotting._bars import BAR_WIDTH, root_figure
 from assur.plotting._placing import Name, place_names
 
 NAMED: weakref.WeakKeyDictionary[Any, tuple[np.ndarray, np.ndarray, np.ndarray]] = (
@@ -67,7 +67,7 @@ def _name(ax: Any, text: Any) -> Name:
     start, end, arc = NAMED[text]
     seen = np.hypot(*np.subtract(*ax.transData.transform([start, end])))
     force = len(arc) == 0 and not np.array_equal(start, end)
-    rival = force and seen >= SEEN * ax.figure.dpi / 72.0
+    rival = force and seen >= SEEN * root_figure(ax).dpi / 72.0
     joint = len(arc) == 0 and not force
     return Name(text, start, end, rival=bool(rival), shuns=not joint, tip=force)
 

@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from assur.plotting._bars import label_box, settled_renderer
+from assur.plotting._bars import label_box, root_figure, settled_renderer
 
 BARRED = 1e6
 """Cost of a place that cuts a name off at the axes' frame."""
@@ -96,7 +96,7 @@ def place_names(
     sizes = np.array([_size(n.text, renderer) for n in names])
     rivals = np.array([n.rival for n in names])
     boxes = np.full((len(names), 4), np.nan)
-    pixels = ax.figure.dpi / 72.0
+    pixels = root_figure(ax).dpi / 72.0
     frame = np.asarray(ax.bbox.extents) + np.array([1.0, 1.0, -1.0, -1.0])
     for _ in range(PASSES):
         for i, name in enumerate(names):
@@ -307,7 +307,7 @@ def _put(ax: Any, text: Any, centre: np.ndarray) -> None:
     text.set_verticalalignment("center")
     if getattr(text, "anncoords", None) == "offset points":
         anchor = ax.transData.transform(text.xy)
-        text.xyann = tuple((centre - anchor) * 72.0 / ax.figure.dpi)
+        text.xyann = tuple((centre - anchor) * 72.0 / root_figure(ax).dpi)
         return
     text.set_position(tuple(ax.transData.inverted().transform(centre)))
 

@@ -18,7 +18,7 @@ from assur._progress import progress as shown
 from assur._vec import real
 from assur.errors import UsageError
 from assur.plotting._axes import _handles
-from assur.plotting._bars import label_box
+from assur.plotting._bars import label_box, root_figure
 from assur.plotting._context import _Context, _context, _need_forces
 from assur.plotting._forces import _overview_arrows, _scale
 from assur.plotting._geometry import _extent
@@ -257,7 +257,7 @@ def keep_inside(ax: Any) -> None:
     """
     from assur.plotting._placing import _put
 
-    renderer = ax.figure.canvas.get_renderer()
+    renderer = root_figure(ax).canvas.get_renderer()
     ax.apply_aspect()  # the equal-aspect axes shrink to their place when drawn
     frame = ax.get_window_extent(renderer).extents + INSIDE * np.array([1, 1, -1, -1])
     for text in ax.texts:
