@@ -11,11 +11,12 @@ import pytest
 import assur
 from assur.explain._solve import position
 from assur.plotting import plans
-from assur.plotting._centres import _pins, kennedy_lines
+from assur.plotting._centres import _pins, centres_at_infinity, kennedy_lines
 
 matplotlib.use("Agg")
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
+TRIAL = Path(__file__).parent / "data" / "plans"
 
 
 def _on_one_line(points: np.ndarray, size: float) -> bool:
@@ -68,5 +69,134 @@ def test_the_picture_draws_kennedy_lines_and_names_with_subscripts() -> None:
         assert r"$I_{\text{crank},\text{coupler}}$" in names
         assert r"$I_{\text{crank}}$" in names
         assert not [t.get_text() for t in ax.texts if "-" in t.get_text()]
+    finally:
+        plt.close(ax.figure)
+
+
+def _sliding(path: Path, angle: float):
+    """The solved mechanism, its finite centres, their pins, the infinite ones."""
+    pos = position(assur.load(path), angle)
+    every = plans.relative_centres(pos)
+    centres = {k: p for k, p in every.items() if p is not None}
+    return pos, centres, _pins(pos), centres_at_infinity(pos, every)
+
+
+def _sine(a: np.ndarray, b: np.ndarray) -> float:
+    """The sine of the angle between directions ``a`` and ``b``."""
+    return float(abs(a[0] * b[1] - a[1] * b[0]) / np.hypot(*a) / np.hypot(*b))
+
+
+@pytest.mark.parametrize("angle", [30.0, 45.0, 120.0, 250.0])
+def test_a_slider_crank_s_rod_centre_is_square_above_its_slider(angle: float) -> None:
+    # Aronhold-Kennedy with the guide's centre at infinity: I_rod is on the line
+    # through C square to the slide, I_crank,slider on the one through A
+    path = EXAMPLES / "slider_crank_exercise.toml"
+    table = assur.kinematics(assur.load(path), [angle])
+    np.testing.assert_allclose(table["rod.ic.x"], table["C.x"], atol=1e-12)
+    assert np.isnan(table["slider.ic.x"]).all()
+    _, centres, _, far = _sliding(path, angle)
+    # ground 0, crank 1, rod 2, slider 3
+    assert set(far) == {(0, 3)}
+    np.testing.assert_allclose(np.abs(far[(0, 3)]), [0.0, 1.0], atol=1e-12)
+    np.testing.assert_allclose(centres[(1, 3)][0], 0.0, atol=1e-12)
+
+
+SLIDING = [
+    (EXAMPLES / "slider_crank_exercise.toml", 45.0),
+    (EXAMPLES / "offset_slider_crank.toml", 70.0),
+    (EXAMPLES / "scotch_yoke.toml", 70.0),
+    (TRIAL / "inclined.toml", 70.0),
+    (TRIAL / "inverted.toml", 70.0),
+    (EXAMPLES / "lever_var9.toml", 70.0),
+]
+"""Mechanisms with a sliding pair, and a position where a centre is found by a
+line through a centre at infinity."""
+
+
+@pytest.mark.parametrize(
+    ("path", "angle"),
+    [*SLIDING, (EXAMPLES / "whitworth.toml", 45.0)],
+    ids=lambda v: getattr(v, "stem", v),
+)
+def test_a_centre_at_infinity_is_on_one_line_with_two_others(
+    path: Path, angle: float
+) -> None:
+    # Aronhold-Kennedy: I_jk, I_im and I_ij at infinity (direction d) are on one
+    # line, so I_jk - I_im is parallel to d
+    pos, centres, _, far = _sliding(path, angle)
+    checked = 0
+    for (j, k), p in centres.items():
+        for f, d in far.items():
+            if len(set(f) & {j, k}) != 1:
+                continue
+            (i,) = set(f) - {j, k}
+            (m,) = {j, k} - set(f)
+            q = centres.get((min(i, m), max(i, m)))
+            if q is not None and np.hypot(*(p - q)) > 1e-6 * pos.size():
+                assert _sine(p - q, d) < 1e-7, ((j, k), f)
+                checked += 1
+    assert checked
+
+
+@pytest.mark.parametrize(
+    ("path", "angle"), SLIDING, ids=lambda v: getattr(v, "stem", v)
+)
+def test_a_kennedy_line_through_a_centre_at_infinity_is_parallel_to_it(
+    path: Path, angle: float
+) -> None:
+    # a sliding pair's centre, at infinity square to the slide, gave no line: the
+    # slider-crank's I_rod and I_crank,slider were each found by one line only
+    pos, centres, pins, far = _sliding(path, angle)
+    size = pos.size()
+    finite = [tuple(c) for c in centres.values()]
+    through = 0
+    for key in set(centres) - pins:
+        lines = kennedy_lines(key, centres, pins, size, far)
+        assert lines, key
+        for line in lines:
+            np.testing.assert_array_equal(line[2], centres[key])
+            assert _on_one_line(line, size), key
+            ends = [p for p in line[:2] if tuple(p) not in finite]
+            if ends:
+                # it stands far off, along the direction of a centre at infinity
+                way = ends[0] - line[2]
+                assert np.hypot(*way) > 100 * size
+                assert min(_sine(way, d) for d in far.values()) < 1e-9, key
+                through += 1
+        # the lines of finite centres alone come first, as they were
+        alone = kennedy_lines(key, centres, pins, size)
+        for old, new in zip(alone, lines, strict=False):
+            np.testing.assert_array_equal(old, new)
+    assert through
+
+
+def test_the_slider_crank_s_picture_draws_the_lines_through_the_slide() -> None:
+    import matplotlib.pyplot as plt
+
+    path = EXAMPLES / "slider_crank_exercise.toml"
+    ax = plans.instant_centres(assur.kinematics(assur.load(path), [45.0]))
+    try:
+        dashed = [ln.get_xydata() for ln in ax.lines if ln.get_gid() == "kennedy"]
+        # I_rod and I_crank,slider, each found by two lines: one of them runs
+        # through the guide's centre, square to the slide (here upright)
+        assert len(dashed) == 4
+        up = np.array([0.0, 1.0])
+        upright = sorted(
+            (d for d in dashed if _sine(d[1] - d[0], up) < 1e-12), key=lambda d: d[0, 0]
+        )
+        # through A and I_crank,slider; through C and I_rod (ground 0, crank 1,
+        # rod 2, slider 3)
+        _, centres, *_ = _sliding(path, 45.0)
+        assert len(upright) == 2
+        for d, keys in zip(upright, [((0, 1), (1, 3)), ((2, 3), (0, 2))], strict=True):
+            for key in keys:
+                np.testing.assert_allclose(d[:, 0], centres[key][0], atol=1e-12)
+                assert d[:, 1].min() <= centres[key][1] <= d[:, 1].max()
+            # from the finite centre through the one it finds, and out of the view
+            assert d[:, 1].max() > ax.get_ylim()[1]
+        # drawn as the other Kennedy lines are: thin, light, dashed, under the rest
+        styles = {(ln.get_linewidth(), ln.get_color(), ln.get_zorder())
+                  for ln in ax.lines if ln.get_gid() == "kennedy"}  # fmt: skip
+        assert len(styles) == 1
     finally:
         plt.close(ax.figure)

@@ -41,6 +41,9 @@ KENNEDY = {"ls": (0, (4, 3)), "lw": 0.6, "color": "#b3b3b3", "zorder": 0.8,
 APART = 1e-6
 """Two centres nearer than this times the mechanism's size are one point: no line
 through them (and two lines whose directions' sine is below it are one line)."""
+AT_INFINITY = 1e3
+"""A centre at infinity stands, on its Kennedy line, at a point this many times the
+mechanism's size from the line's finite centres: far past any view of it."""
 
 
 def draw_centres(pos: Position, ax: Any) -> Any:
@@ -53,9 +56,11 @@ def draw_centres(pos: Position, ax: Any) -> Any:
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     middle = np.array([x0 + x1, y0 + y1]) / 2
     reach = FAR * 0.5 * float(np.hypot(x1 - x0, y1 - y0))
-    centres = {k: p for k, p in relative_centres(pos).items() if p is not None}
+    every = relative_centres(pos)
+    centres = {k: p for k, p in every.items() if p is not None}
     near = {k: p for k, p in centres.items() if np.hypot(*(p - middle)) <= reach}
-    _kennedy_lines(ax, centres, _pins(pos), pos.size())
+    far = centres_at_infinity(pos, every)
+    _kennedy_lines(ax, centres, _pins(pos), pos.size(), far)
     places: list[tuple[np.ndarray, list[str]]] = []
     for (i, j), p in near.items():
         ax.plot(*p, ls="none", zorder=9, **(RELATIVE if i else ABSOLUTE))
@@ -102,15 +107,17 @@ def _kennedy_lines(
     centres: dict[tuple[int, int], np.ndarray],
     pins: set[tuple[int, int]],
     size: float,
+    directions: dict[tuple[int, int], np.ndarray],
 ) -> None:
     """Draw the Kennedy lines of every centre that is not a pin, dashed and light.
 
     Drawn whole, through the centre and the two it is found from: the view,
-    set after, cuts those running out of it.
+    set after, cuts those running out of it (a line through a centre at
+    infinity runs out of it toward that centre).
     """
     for key in centres:
         if key not in pins:
-            for line in kennedy_lines(key, centres, pins, size):
+            for line in kennedy_lines(key, centres, pins, size, directions):
                 # from one end of the three points to the other, along the line
                 t = (line - line[0]) @ (line[1] - line[0])
                 ends = line[[int(np.argmin(t)), int(np.argmax(t))]]
@@ -122,6 +129,7 @@ def kennedy_lines(
     centres: dict[tuple[int, int], np.ndarray],
     pins: set[tuple[int, int]],
     size: float,
+    directions: dict[tuple[int, int], np.ndarray] | None = None,
 ) -> list[np.ndarray]:
     """Return the (at most two) lines that find the centre of bodies ``key``, m.
 
@@ -129,24 +137,47 @@ def kennedy_lines(
     one line, so I_jk is where the line of I_ij, I_ik meets another such line.
     Each line is the three points ``[I_ij, I_ik, I_jk]`` (shape (3, 2)); the
     third bodies whose two centres are pins come first, as a textbook finds
-    them, then the others. A centre at infinity (a sliding pair's) gives no
-    line here.
+    them, then the others. A centre at infinity, with its direction in
+    ``directions`` (a sliding pair's: square to the slide), is on the line
+    through the other centre parallel to that direction: it stands there at
+    :data:`AT_INFINITY` times ``size`` beyond I_jk from that centre. Such a
+    line comes after every line of finite centres.
     """
     j, k = key
     p = centres[key]
+    far = directions or {}
     tried = []
-    for i in {b for pair in centres for b in pair} - {j, k}:
+    for i in {b for pair in (*centres, *far) for b in pair} - {j, k}:
         ij, ik = (min(i, j), max(i, j)), (min(i, k), max(i, k))
         a, b = centres.get(ij), centres.get(ik)
+        infinite = (a is None) != (b is None)
+        if a is None and b is not None and ij in far:
+            a = _beyond(b, p, far[ij], size)
+        elif b is None and a is not None and ik in far:
+            b = _beyond(a, p, far[ik], size)
         if a is not None and b is not None and np.hypot(*(b - a)) > APART * size:
-            tried.append((-(ij in pins) - (ik in pins), i, np.array([a, b, p])))
+            score = -(ij in pins) - (ik in pins)
+            tried.append((infinite, score, i, np.array([a, b, p])))
     lines: list[np.ndarray] = []
-    for *_, line in sorted(tried, key=lambda t: t[:2]):
+    for *_, line in sorted(tried, key=lambda t: t[:3]):
         if all(abs(cross(_unit(line), _unit(other))) > APART for other in lines):
             lines.append(line)
         if len(lines) == 2:
             break
     return lines
+
+
+def _beyond(
+    finite: np.ndarray, p: np.ndarray, direction: np.ndarray, size: float
+) -> np.ndarray:
+    """Return where a centre at infinity along ``direction`` stands on its line, m.
+
+    On the line through ``finite`` along ``direction``, on the side of ``p``
+    (the centre the line finds), so that the line runs from ``finite`` through
+    ``p`` on to the centre at infinity.
+    """
+    sense = -1.0 if float(direction @ (p - finite)) < 0.0 else 1.0
+    return finite + sense * AT_INFINITY * size * direction
 
 
 def _unit(line: np.ndarray) -> np.ndarray:
@@ -203,6 +234,37 @@ def _small_patches(ax: Any) -> list[Any]:
         if box.width * box.height < view / 50:
             small.append(patch)
     return small + [line for line in ax.lines if line.get_zorder() == 9]
+
+
+def centres_at_infinity(
+    pos: Position, centres: dict[tuple[int, int], np.ndarray | None]
+) -> dict[tuple[int, int], np.ndarray]:
+    """Return the direction of each centre at infinity of ``centres``, a unit vector.
+
+    ``centres`` is :func:`relative_centres`'s. A sliding pair's relative centre
+    is at infinity square to its slide; two links turning at the same rate have
+    theirs square to their relative velocity (none where that is round-off
+    too: the two move together, and their centre is anywhere).
+    """
+    slides = {
+        (min(pair.first, pair.second), max(pair.first, pair.second)): perp(
+            pos.turned(pair.first, pair.axis)
+        )
+        for pair in pos.plan.pairs.values()
+        if pair.kind != "R" and pair.axis is not None
+    }
+    out: dict[tuple[int, int], np.ndarray] = {}
+    for (i, j), p in centres.items():
+        if p is not None:
+            continue
+        d = slides.get((i, j))
+        if d is None:
+            o = pos.origin(j)
+            d = perp(pos.coincident(j, o, 1) - pos.coincident(i, o, 1))
+            if not np.hypot(*d) > SAME_RATE * pos.rate_scale(1):
+                continue
+        out[(i, j)] = d / np.hypot(*d)
+    return out
 
 
 def relative_centres(pos: Position) -> dict[tuple[int, int], np.ndarray | None]:

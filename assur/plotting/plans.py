@@ -264,7 +264,10 @@ def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
     of two links is their common point of equal velocity. Each centre not at a pin
     is on lines through two other centres (Kennedy's theorem: the centres of any
     three links are on one line); the two lines that find it, from the pins first,
-    are drawn thin and dashed. The names are :math:`I_{crank}` (absolute) and
+    are drawn thin and dashed. A centre at infinity (a sliding pair's, square to
+    the slide) is on the line through the other centre in its direction: where
+    the finite centres give fewer than two lines, such a line is drawn from that
+    centre on out of the view. The names are :math:`I_{crank}` (absolute) and
     :math:`I_{crank,coupler}` (relative), as the forces are named. The view
     stays on the mechanism: a centre far from it is shown by an arrow at the
     frame's edge pointing toward it, named with its coordinates.
