@@ -355,6 +355,31 @@ def test_columns_computes_only_what_is_asked():
         assur.forces(mech, at, columns=["driver.torqe"])
 
 
+def test_positions_alone_are_given_at_a_dead_centre():
+    # a parallelogram four-bar at 180 deg: every link on one line, the RRR
+    # group's velocity equations singular; its pose is sound
+    mech = assur.load(
+        EXAMPLES.parent / "docs" / "files" / "errors" / "parallelogram.toml"
+    )
+    at = [170.0, 180.0, 190.0]
+    with warnings.catch_warnings(record=True) as told:
+        warnings.simplefilter("always")
+        poses = assur.kinematics(mech, at, columns=["coupler.angle", "B.x", "B.y"])
+        ok = assur.kinematics(mech, [170.0, 190.0])
+    said = [str(w.message) for w in told]
+    assert any("near a dead centre" in s and "180 deg" in s for s in said), said
+    # a parallelogram's coupler stays parallel to the frame
+    np.testing.assert_allclose(poses["coupler.angle"], 0.0, atol=1e-6)
+    np.testing.assert_array_equal(poses["B.x"][[0, 2]], ok["B.x"])
+    # at a double root the pose holds to the square root of the round-off
+    np.testing.assert_allclose(poses["B.y"][1], 0.0, atol=1e-8)
+    # a speed there is what the singular equations cannot give
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)
+        with pytest.raises(assur.SingularConfigurationError, match="180 deg"):
+            assur.kinematics(mech, at, columns=["coupler.omega"])
+
+
 def test_a_short_table_gives_the_numbers_of_a_long_one(example):
     # a short table computes a column's family (or every column needing the links'
     # motions) at once; a long one each column alone, slice by slice
