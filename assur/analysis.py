@@ -94,6 +94,9 @@ def kinematics(
         Compute only these columns (and ``angle``). A table of the drivers' columns
         alone (``["driver.torque"]``, say) keeps none of the links' motions or
         reactions; they are solved again if asked for (see :class:`Table`).
+        Positions alone (``["B.x", "rocker.angle"]``) solve no velocities: a dead
+        centre is then a warning, not an error. Every group is still assembled,
+        since the mechanism must reach the position.
     progress : bool or callable, optional
         Show a progress bar on standard error (True), or call ``progress(done,
         total)`` as slices of positions are solved.
