@@ -46,7 +46,8 @@ class LoadTable:
         ``"driver"`` (the first driver's position, deg or m) or the name of a
         prismatic joint (its slide, m).
     table : tuple of float
-        Strictly increasing positions.
+        Increasing positions; one given twice is a step, where the value jumps
+        from the first of its two values to the second.
     values : tuple of tuple of float
         One sequence per component: ``(x, y)`` for a force (N), ``(torque,)`` for a
         torque (N m).
@@ -82,8 +83,13 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
             _sequence_fault(table.table, "at least two finite positions"),
         )
     xs = np.asarray(table.table, dtype=float)
-    if np.any(np.diff(xs) <= 0):
-        _fail(f"{entry}.table", "expected strictly increasing positions")
+    gaps = np.diff(xs)
+    if np.any(gaps < 0) or np.any((gaps[:-1] == 0) & (gaps[1:] == 0)):
+        _fail(
+            f"{entry}.table",
+            "expected increasing positions, each at most twice (twice: a step, the "
+            "value jumps there)",
+        )
     values = table.values
     if not isinstance(values, tuple) or len(values) != ncomp:
         count = len(values) if isinstance(values, tuple) else describe(values)

@@ -31,12 +31,17 @@ def interpolate(at: Array, xs: Array, ys: Array) -> Array:
     As ``np.interp``, but through the fraction of each step, which stays within
     [0, 1]: ``np.interp`` divides the step in the values by the step in the
     positions first, which overflows where a table jumps (1e15 N within 1e-300 deg
-    gave inf). Each end of a step is given exactly.
+    gave inf). Each end of a step is given exactly. A position given twice is a
+    jump: there and after it the second value holds, before it the first.
     """
     at = np.asarray(at, dtype=float)
+    # the last of equal positions: a jump's second value from its position on
     j = np.clip(np.searchsorted(xs, at, side="right") - 1, 0, len(xs) - 2)
-    with np.errstate(invalid="ignore"):
-        w = np.clip((at - xs[j]) / (xs[j + 1] - xs[j]), 0.0, 1.0)
+    width = xs[j + 1] - xs[j]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        w = np.clip((at - xs[j]) / width, 0.0, 1.0)
+    # a jump at either end of the table: no width to divide, the side of it tells
+    w = np.where(width == 0.0, (at >= xs[j]).astype(float), w)
     return (1.0 - w) * ys[j] + w * ys[j + 1]  # type: ignore[no-any-return]
 
 

@@ -166,3 +166,44 @@ def test_a_table_s_last_value_is_read_exactly():
 
     xs, ys = np.array([0.0, 0.05, 0.1]), np.array([0.0, 1e15, 0.3])
     assert interpolate(np.array([0.1, 0.05, 0.0]), xs, ys).tolist() == [0.3, 1e15, 0.0]
+
+
+def test_a_position_given_twice_is_a_step():
+    # a cutting force that acts from 110 to 250 deg only: a step at each end, the
+    # second value holding from the step's position on, periodic over the turn
+    step = LoadTable("driver", (110.0, 110.0, 250.0, 250.0), ((0.0, -3.0, -3.0, 0.0),))
+    at = np.array([0.0, 109.999, 110.0, 180.0, 249.999, 250.0, 300.0, 470.0, -100.0])
+    t = assur.forces(crank_slider(Load("crank", torque=step)), at)
+    acting = np.array([0, 0, 1, 1, 1, 0, 0, 1, 0], dtype=float)
+    np.testing.assert_allclose(t["driver.torque"], 3.0 * acting, atol=1e-12)
+
+
+@pytest.mark.parametrize(
+    ("xs", "ys", "at", "want"),
+    [
+        # a step inside, and at the start and the end of a table held at its ends
+        (
+            (0.0, 1.0, 1.0, 2.0),
+            (0.0, 1.0, 5.0, 6.0),
+            (0.5, 1.0, 1.5, 3.0),
+            (0.5, 5, 5.5, 6),
+        ),
+        ((0.0, 0.0, 2.0), (7.0, 1.0, 3.0), (-1.0, 0.0, 1.0, 2.0), (7.0, 1.0, 2.0, 3.0)),
+        ((0.0, 2.0, 2.0), (1.0, 3.0, 9.0), (1.0, 2.0, 5.0, -1.0), (2.0, 9.0, 9.0, 1.0)),
+    ],
+)
+def test_a_step_is_read_on_its_side(xs, ys, at, want):
+    from assur._tables import interpolate
+
+    got = interpolate(np.array(at), np.array(xs), np.array(ys))
+    assert got.tolist() == list(want)
+
+
+def test_a_position_given_three_times_is_refused():
+    table = LoadTable("driver", (0.0, 90.0, 90.0, 90.0), ((0.0, 1.0, 2.0, 3.0),))
+    with pytest.raises(assur.ModelError) as caught:
+        crank_slider(Load("crank", torque=table)).validate()
+    assert str(caught.value) == (
+        "loads[0].torque.table: expected increasing positions, each at most twice "
+        "(twice: a step, the value jumps there)"
+    )
