@@ -130,7 +130,10 @@ class JsonWriter:
         step = _rows(columns)
         for start in range(0, count, step):
             rows = _block(columns, start, step)
-            texts = [self._row % tuple(map(_json_number, row)) for row in rows.tolist()]
+            # repr is json.dumps's text of a finite float; mapped without a call of
+            # ours per cell where every value of the block is finite
+            number = repr if np.isfinite(rows).all() else _json_number
+            texts = [self._row % tuple(map(number, row)) for row in rows.tolist()]
             lead = "" if self._first else ", "
             self._first = False
             self._write(self._encode(lead + ", ".join(texts)))
