@@ -124,9 +124,11 @@ def test_json_of_odd_names():
     names = ['a "quoted" %s name', "é"]
     writer = _tableio.JsonWriter(parts.append, "m%d", names)
     writer.write([np.array([1.0, np.inf]), np.array([-0.0, 2.5])])
+    writer.write([np.array([0.1]), np.array([-0.0])])  # a block all finite
     writer.close()
     # a negative zero is written 0.0
     rows = [{names[0]: 1.0, names[1]: 0.0}, {names[0]: None, names[1]: 2.5}]
+    rows.append({names[0]: 0.1, names[1]: 0.0})
     expected = {"name": "m%d", "columns": names, "rows": rows}
     assert b"".join(parts).decode() == json.dumps(expected)
 
