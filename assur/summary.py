@@ -95,9 +95,10 @@ class Summary:
             running.add(np.abs(table[f"{name}.M"]).reshape(shape), where)
         for name, running in self._drivers.items():
             running.add(np.asarray(table[name]).reshape(shape), where)
-        if self._shaking:
+        if "F" in self._shaking:
             shaking = np.hypot(table["shaking.Fx"], table["shaking.Fy"])
             self._shaking["F"].add(shaking.reshape(shape), where)
+        if "M" in self._shaking:
             self._shaking["M"].add(np.abs(table["shaking.M"]).reshape(shape), where)
         forces = table.force_state
         state = table.state
@@ -159,8 +160,10 @@ class Summary:
                 units[f"{driver.pair.name}.power.max"] = "W"
                 self._own[driver.pair.name] = 0.0
                 self._peaks[driver.pair.name] = Running.start(self.variants)
-        if "shaking.M" in table:
-            for part, what in (("F", "N"), ("M", "N m")):
+        # a table made with columns= summarises the shaking loads it holds
+        parts = {"F": ("Fx", "Fy"), "M": ("M",)}
+        for part, what in (("F", "N"), ("M", "N m")):
+            if all(f"shaking.{c}" in table for c in parts[part]):
                 self._shaking[part] = Running.start(self.variants)
                 units[f"shaking.{part}.max"] = what
                 units[f"shaking.{part}.at"] = unit
@@ -209,10 +212,13 @@ class Summary:
             return total - last if closing else total
 
         out: dict[str, Array] = {}
-        for name, r in self._joints.items():
-            out[f"{name}.F.max"] = r.top
-            out[f"{name}.F.at"] = r.at
-            out[f"{name}.F.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
+        # each joint's reaction, then its couple (columns= may hold the couple alone)
+        for name in dict.fromkeys([*self._joints, *self._couples]):
+            r = self._joints.get(name)
+            if r is not None:
+                out[f"{name}.F.max"] = r.top
+                out[f"{name}.F.at"] = r.at
+                out[f"{name}.F.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
             couple = self._couples.get(name)
             if couple is not None:
                 out[f"{name}.M.max"] = couple.top

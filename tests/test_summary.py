@@ -150,6 +150,23 @@ def test_efficiency_by_hand():
     assert math.isnan(efficiency(5.0, -10.0, 15.0))  # loads give work back
 
 
+def test_a_table_of_few_columns_summarises_the_loads_among_them():
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    at = np.arange(0.0, 360.0, 5.0)
+    whole = assur.forces(mech, at).summary()
+    power = ["driver.power.mean", "driver.power.max"]
+    for columns, named in [
+        (["guide.M"], ["guide.M.max", "guide.M.at", *power]),
+        (["shaking.M"], [*power, "shaking.M.max", "shaking.M.at"]),
+        (["shaking.Fx"], power),  # the force's size needs both components
+        (["shaking.Fx", "shaking.Fy"], [*power, "shaking.F.max", "shaking.F.at"]),
+    ]:
+        few = assur.forces(mech, at, columns=columns).summary()
+        assert list(few) == named, columns
+        for key in few:
+            assert few[key] == pytest.approx(whole[key], rel=1e-12, abs=1e-12), key
+
+
 def test_a_clockwise_crank_s_summary_says_which_sign_drives(capsys, tmp_path):
     text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
     path = tmp_path / "clockwise.toml"
