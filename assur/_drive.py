@@ -42,14 +42,10 @@ def _no_driver(plan: Plan) -> ModelError:
     Such a file passes the count of degrees of freedom only when it has none (a
     rigid chain, whose groups stand on the frame): a driver would not help it.
     """
-    from assur._structure import mobility
+    from assur._structure import NO_DRIVER, mobility
 
     if mobility(plan.mechanism) <= 0:
-        msg = (
-            "drivers: the mechanism has no driver, and W = 0: its links cannot move "
-            "(a rigid structure); expected links that can move, with a [[drivers]] "
-            "entry for each degree of freedom"
-        )
+        msg = NO_DRIVER
     else:
         msg = "drivers: the mechanism has no driver; expected a [[drivers]] entry"
     return ModelError(msg)

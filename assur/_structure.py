@@ -257,6 +257,10 @@ def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
             mech = dataclasses.replace(mech, drivers=(Driver(driver, omega),))
         except ModelError as err:
             raise DriverChoiceError(str(err).split(": ", 1)[-1]) from None
+    if not mech.drivers and mobility(mech) <= 0:
+        # a rigid chain on the frame (a truss) decomposes into groups, but it is a
+        # structure, not a mechanism: it has no input and no class
+        raise DecompositionError(NO_DRIVER)
     try:
         drivers, groups, topo = decompose(mech)
     except DecompositionError as err:
@@ -277,6 +281,14 @@ def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
         groups,
         topo.slots,
     )
+
+
+NO_DRIVER = (
+    "drivers: the mechanism has no driver, and W = 0: its links cannot move (a rigid "
+    "structure); expected links that can move, with a [[drivers]] entry for each "
+    "degree of freedom"
+)
+"""The error of a file with no driver whose links cannot move."""
 
 
 def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], Topology]:

@@ -187,6 +187,8 @@ def forces(
     True
     """
     plan = plan_of(mechanism)
+    if not plan.drivers:  # what is wrong first: nothing moves
+        raise _no_driver(plan)
     if compile_loads(plan).empty:
         msg = (
             "forces: no link has a mass and no load is applied; expected 'mass', "

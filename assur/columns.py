@@ -92,7 +92,16 @@ def schema(plan: Plan, forces: bool) -> tuple[Column, ...]:
     """Return every column of a kinematics (or forces) table of ``plan``, in order.
 
     Built once per plan and kept in ``plan.memo``.
+
+    Raises
+    ------
+    ModelError
+        For a mechanism without a driver: no table has columns for it.
     """
+    if not plan.drivers:
+        from assur._drive import _no_driver
+
+        raise _no_driver(plan)
     key = "schema-forces" if forces else "schema-kinematics"
     found = plan.memo.get(key)
     if found is None:

@@ -562,6 +562,13 @@ at = [0.1, 0.0]
         ["plot", "-o", "{tmp}/p.png"],
         ["plans", "-o", "{tmp}/plans"],
         ["report", "-o", "{tmp}/r.html"],
+        # the table's columns were made before any check: an IndexError
+        ["kinematics", "--angles", "0"],
+        ["forces", "--angles", "0:10:5", "--csv", "-"],
+        ["kinematics", "--angles", "0", "--parquet", "{tmp}/k.parquet"],
+        # a class III mechanism, said the structure of a truss
+        ["structure"],
+        ["structure", "--json"],
     ],
 )
 def test_a_structure_without_drivers_is_one_line(tmp_path, capsys, command):
