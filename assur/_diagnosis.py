@@ -12,6 +12,8 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+from assur._checks import _coincide
+from assur._points import resolve_point
 from assur._text import NAME_LIMIT, listing, public_name, shortened
 from assur._topology import Pair, Topology, _component, _Index, _index, _public
 from assur.model import GROUND, Mechanism
@@ -64,7 +66,7 @@ def _loose_text(index: _Index, mech: Mechanism) -> tuple[str, str] | None:
     ]
     hanging = [(x, p) for x, p in hanging if GROUND not in p.links]
     if not hanging:
-        return None
+        return _spinning_text(index, mech, driven)
     expected = "every link held by two joints at least (an input link by its driver)"
     if len(hanging) == 1:
         ((link, pair),) = hanging
@@ -77,6 +79,37 @@ def _loose_text(index: _Index, mech: Mechanism) -> tuple[str, str] | None:
     links = _links_text([x for x, _ in hanging])
     pairs = listing(_public(tuple(p.name for _, p in hanging)))
     return f", as {links} hang on one joint each ({pairs}) and move freely", expected
+
+
+def _spinning_text(
+    index: _Index, mech: Mechanism, driven: set[str]
+) -> tuple[str, str] | None:
+    """Return the links held by two pins at one point: each spins about it freely.
+
+    A passive freedom, as a roller on its pin is: it counts in W, and no driver
+    takes it.
+    """
+    joints = {j.name: j for j in mech.joints}
+    spinning = []
+    for x in index.links:
+        pairs = [index.pairs[i] for i in index.incident[x]]
+        if x in driven or len(pairs) != 2 or any(p.kind != "R" for p in pairs):
+            continue
+        if not all(p.name in joints for p in pairs):
+            continue  # a slot's own pin and block
+        a, b = (resolve_point(mech, joints[p.name].at) for p in pairs)
+        if _coincide(a, b):
+            spinning.append((x, pairs))
+    if not spinning:
+        return None
+    x, pairs = spinning[0]
+    first, second = _public(tuple(p.name for p in pairs))
+    more = "" if len(spinning) == 1 else f" ({len(spinning) - 1} more so)"
+    why = (
+        f", as {_links_text([x])} is held by joints {first} and {second} at one point "
+        f"and spins about it freely{more}, a freedom no driver can take"
+    )
+    return why, "the two joints of a link apart (or the link left out, its joints one)"
 
 
 @dataclass(frozen=True, slots=True)

@@ -533,6 +533,31 @@ def test_a_link_on_one_joint_is_named_when_the_count_goes_wrong(kind, moves):
     )
 
 
+def test_a_link_held_by_two_joints_at_one_point_is_named_as_it_spins():
+    # a four-bar with a link put between coupler and rocker in place of their pin,
+    # both its pins where that pin was: it spins about them, a passive freedom
+    joints = [
+        ("A", ("ground", "crank"), (0.0, 0.0)),
+        ("B", ("crank", "coupler"), (0.0, 0.1)),
+        ("D", ("ground", "rocker"), (0.35, 0.0)),
+        ("X", ("coupler", "idler"), (0.3, 0.2)),
+        ("Y", ("idler", "rocker"), (0.3, 0.2)),
+    ]
+    mech = Mechanism(
+        links=tuple(Link(x) for x in ("crank", "coupler", "rocker", "idler")),
+        joints=tuple(Joint(n, "revolute", links, at) for n, links, at in joints),
+        drivers=(Driver("A", 10.0),),
+    )
+    with pytest.raises(DecompositionError) as caught:
+        assur.structure(mech)
+    assert str(caught.value) == (
+        "drivers: the mechanism has W = 3*4 - 2*5 - 0 = 2 degrees of freedom but 1 "
+        "driver, as link idler is held by joints X and Y at one point and spins "
+        "about it freely, a freedom no driver can take; expected the two joints of a "
+        "link apart (or the link left out, its joints one)"
+    )
+
+
 def test_a_part_not_joined_to_the_frame_is_named_when_the_count_goes_wrong():
     # a triangle p, q, r joined to nothing: W = 1 + 3 with one driver
     triangle = [
