@@ -39,6 +39,13 @@ class Group:
     attached_to : tuple of str
         Known links the group hangs on, each once, in the order of the external
         pairs that join them.
+    base : str
+        Class III and higher: the base link whose internal pairs set the class (a
+        triad's ternary link), or "" when a closed contour of internal pairs sets
+        it.
+    basis : tuple of str
+        Class III and higher: the internal pairs that set the class, those of the
+        base link or those closing the contour, in order round it.
     """
 
     group_class: int
@@ -48,6 +55,8 @@ class Group:
     internal: tuple[str, ...]
     external: tuple[str, ...]
     attached_to: tuple[str, ...]
+    base: str = ""
+    basis: tuple[str, ...] = ()
 
     @property
     def label(self) -> str:
@@ -70,10 +79,19 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
 
     g = nx.Graph()
     g.add_nodes_from(links)
-    g.add_edges_from(p.links for p in internal)
-    longest = max((len(c) for c in nx.simple_cycles(g)), default=0)
-    degree = max(dict(g.degree()).values())
+    for p in internal:
+        g.add_edge(*p.links, name=p.name)
+    # the class: the internal pairs of the most complex link or closed contour
+    contour: list[str] = max(nx.simple_cycles(g), key=len, default=[])
+    base = max(links, key=g.degree)
+    longest, degree = len(contour), g.degree(base)
     group_class = max(longest, degree)
+    if longest > degree:
+        ring = zip(contour, [*contour[1:], contour[0]], strict=True)
+        basis = tuple(g.edges[u, v]["name"] for u, v in ring)
+        base = ""
+    else:
+        basis = tuple(p.name for p in internal if base in p.links)
     if group_class < 3:
         # the search never yields one: such a chain holds a dyad without mobility
         msg = (
@@ -96,6 +114,8 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
         tuple(p.name for p in internal),
         tuple(p.name for p in external),
         attached,
+        base,
+        basis,
     )
 
 

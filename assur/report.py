@@ -34,6 +34,26 @@ def _why(g: Group) -> str:
     )
 
 
+def _class_why(g: Group) -> str:
+    """Return what sets the class of a group of class III or higher."""
+    count = NUMBERS.get(len(g.basis), str(len(g.basis)))
+    pairs = _names(g.basis)
+    if g.base:
+        return (
+            f"its base link {public_name(g.base)} carries {count} internal pairs, "
+            f"{pairs} (the class is the number of internal pairs of its most complex "
+            "link or closed contour)"
+        )
+    return (
+        f"its internal pairs {pairs} close a contour of {count} links (the class is "
+        "the number of internal pairs of its most complex link or closed contour)"
+    )
+
+
+NUMBERS = {3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
+"""Counts of pairs written as words."""
+
+
 def _class_reason(s: Structure) -> str:
     """Return where the class of the mechanism comes from."""
     if s.groups:
@@ -88,6 +108,8 @@ def structure_report(s: Structure) -> str:
             f"{_counted('known link', g.attached_to)}."
         )
         lines.append(f"     Why an Assur group: {_why(g)}.")
+        if g.basis:
+            lines.append(f"     Why class {numeral}: {_class_why(g)}.")
     lines += [
         "",
         f"Structure formula: {s.formula}",

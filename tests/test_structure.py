@@ -841,6 +841,16 @@ def test_report_of_a_triad():
     assert "internal pairs C, D, E; external pairs B, F, G on the known links" in report
     assert WHY.format(k=4, p=6, n=12) in report
     assert "Class of the mechanism: III" in report
+    # what makes it class III: the base link with its three internal pairs
+    (group,) = assur.structure(six_bar()).groups
+    assert group.base == "plate"
+    assert sorted(group.basis) == ["C", "D", "E"]
+    why = [line.strip() for line in report.splitlines() if "Why class" in line]
+    assert why == [
+        f"Why class III: its base link plate carries three internal pairs, "
+        f"{', '.join(group.basis)} (the class is the number of internal pairs of its "
+        "most complex link or closed contour)."
+    ]
 
 
 def test_report_of_a_dyad_counts_its_pairs_and_links():
@@ -860,6 +870,17 @@ def test_report_of_a_general_group():
         report
     )
     assert WHY.format(k=4, p=6, n=12) in report
+    # what makes it class IV: no link carries more than two internal pairs, and
+    # the four close a contour
+    (group,) = assur.structure(class_four()).groups
+    assert group.base == ""
+    assert sorted(group.basis) == ["ab", "bc", "cd", "da"]
+    assert (
+        f"Why class IV: its internal pairs {', '.join(group.basis)} close a contour "
+        "of four links" in report
+    )
+    # a dyad's class needs no reason: two links and one internal pair
+    assert "Why class" not in str(assur.structure(assur.catalog.four_bar()))
 
 
 def test_report_of_a_mechanism_without_groups():
