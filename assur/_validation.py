@@ -348,7 +348,11 @@ def _validate_drivers(mech: Mechanism) -> None:
         if not isinstance(driver.joint, str) or driver.joint not in joints:
             _fail(f"{entry}.joint", _unknown("joint", driver.joint, joints))
         if driver.joint in seen:
-            _fail(f"{entry}.joint", f"joint {describe(driver.joint)} is driven twice")
+            _fail(
+                f"{entry}.joint",
+                f"joint {describe(driver.joint)} is driven twice; expected each "
+                "driver on a joint of its own",
+            )
         seen.add(driver.joint)
         joint = joints[driver.joint]
         if joint.kind not in ("revolute", "prismatic"):

@@ -305,6 +305,13 @@ BAD = {
         r"a driver must act between the frame \('ground'\) and its "
         r"input link$",
     ),
+    "driven-twice": Bad(
+        BASE + '\n[[drivers]]\njoint = "A"\nomega = 1.0\n',
+        "load",
+        ModelError,
+        r"^drivers\[1\]\.joint: joint 'A' is driven twice; expected each driver on "
+        r"a joint of its own$",
+    ),
     "no-driver": Bad(
         edit('[[drivers]]\njoint = "A"\nomega = 200.0\n', ""),
         "structure",
