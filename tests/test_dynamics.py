@@ -282,6 +282,18 @@ def test_flywheel_sizing_sets_the_classical_estimates_beside_it():
     assert gaps["energy_swing"] > 0
 
 
+def test_the_energy_swing_neglects_the_mechanism_s_own_inertia():
+    # a crank of constant inertia J: the estimate is the whole inertia needed, the
+    # flywheel J more than it (docs/dynamics.rst)
+    mech = crank(gravity=(0.0, -9.81))
+    sizing = assur.flywheel_sizing(mech, 0.05)
+    own = 3.0 * 0.2**2 + 0.01
+    assert sizing.energy_swing - sizing.exact == pytest.approx(own, rel=1e-6)
+    whitworth = assur.flywheel_sizing(example("whitworth"), 0.02)
+    assert whitworth.exact == pytest.approx(33.48, abs=5e-3)
+    assert whitworth.differences()["energy_swing"] == pytest.approx(2.7e-4, abs=5e-6)
+
+
 def test_the_energy_swing_misses_where_the_links_own_inertia_varies():
     # the figures of docs/dynamics.rst: heavy links, and loads that do no work
     six_bar = assur.flywheel_sizing(example("six_bar_lecture"), 0.05)
