@@ -68,6 +68,12 @@ class _Parser(argparse.ArgumentParser):
     help); here it reaches :func:`main`, which says so (exit 2).
     """
 
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        # no option shortened: "--angle" taken for "--angles" by one command was
+        # refused by another, and every new option could break a shortening
+        kwargs.setdefault("allow_abbrev", False)
+        super().__init__(*args, **kwargs)
+
     def _print_message(self, message: str, file: Any = None) -> None:
         if message:
             (file or sys.stderr).write(message)
@@ -81,8 +87,21 @@ class _Parser(argparse.ArgumentParser):
         # arguments no command takes are found by the top parser: name the command
         command = self.prog.partition(" ")[2] or self.command
         where, prog = (f"{command}: ", f"assur {command}") if command else ("", "assur")
+        if message.startswith("unrecognized arguments: "):
+            message += self._closest(message.split()[2], command)
         line = f"assur: error: {where}{message} (see '{prog} --help')"
         self.exit(2, " ".join(line.split()) + "\n")
+
+    def _closest(self, option: str, command: str) -> str:
+        """Return a hint for an unknown ``option``: the command's nearest one."""
+        if not option.startswith("--"):
+            return ""
+        parser: argparse.ArgumentParser = self
+        for action in self._actions:
+            if isinstance(action, argparse._SubParsersAction) and command:
+                parser = action.choices.get(command, self)
+        known = [o for o in parser._option_string_actions if o.startswith("--")]
+        return suggest(option.partition("=")[0], known, listing=False)
 
     command = ""
     """The command being parsed, once known (see :func:`_main`)."""
@@ -211,7 +230,12 @@ def _main(argv: list[str]) -> int:
     # the command comes first, or after the options of assur itself (-q forcse)
     first = next((a for a in argv if a not in ("-q", "--quiet")), None)
     if first is not None and not first.startswith("-") and first not in commands:
-        hint = suggest(first, commands)
+        starting = [c for c in commands if c.startswith(first)]
+        hint = (
+            f"; did you mean {describe(starting[0])}?"
+            if len(starting) == 1
+            else suggest(first, commands)
+        )
         print(f"assur: error: unknown command {describe(first)}{hint}", file=sys.stderr)
         return 2
     parser.command = next((a for a in argv if a in commands), "")

@@ -200,6 +200,30 @@ def test_driver_option_off_the_frame(capsys):
             "'assur dynamics --help')",
         ),
         (["forcs", "x.toml"], "unknown command 'forcs'; did you mean 'forces'?"),
+        # the start of one command's name
+        (["kin", "x.toml"], "unknown command 'kin'; did you mean 'kinematics'?"),
+        # an option shortened is no option: "--angle" was "--angles" in kinematics
+        # and refused by plot, whose --angle it is
+        (
+            ["kinematics", "x.toml", "--angle", "10"],
+            "kinematics: unrecognized arguments: --angle 10; did you mean "
+            "'--angles'? (see 'assur kinematics --help')",
+        ),
+        (
+            ["plot", "x.toml", "-o", "p.png", "--angles", "10"],
+            "plot: unrecognized arguments: --angles 10; did you mean '--angle'? (see "
+            "'assur plot --help')",
+        ),
+        (
+            ["plot", "x.toml", "-o", "p.png", "--fo"],
+            "plot: unrecognized arguments: --fo; did you mean '--forces'? (see "
+            "'assur plot --help')",
+        ),
+        (
+            ["forces", "x.toml", "--csvv=t.csv"],
+            "forces: unrecognized arguments: --csvv=t.csv; did you mean '--csv'? (see "
+            "'assur forces --help')",
+        ),
         # after assur's own options too: argparse's "invalid choice" had no hint
         (
             ["-q", "forcse", "x.toml"],
