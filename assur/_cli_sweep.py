@@ -87,5 +87,5 @@ def _bar(args: argparse.Namespace, what: str, total: int) -> Iterator[Any]:
         return
     from assur._progress import progress
 
-    with progress(what, total, show=True, delay=BAR_DELAY) as bar:
+    with progress(what, total, True, BAR_DELAY, " positions") as bar:
         yield bar

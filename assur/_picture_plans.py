@@ -23,10 +23,12 @@ from assur._picture_files import (
     _figures,
     _folder,
     _pyplot,
+    _show,
     _write,
     _wrote,
 )
 from assur._picture_sweeps import _table
+from assur._progress import BAR_DELAY, progress
 
 PLANS = (
     "velocity_plan",
@@ -75,13 +77,15 @@ def _cmd_plans(args: argparse.Namespace) -> int:
         )
     makers["instant_centres"] = lambda: plotting.instant_centres(t).figure
     written = []
-    with _figures(), output_folder(out, any_error=True) as folder:
+    shown = progress("plans", len(makers), _show(args), BAR_DELAY, " pictures")
+    with _figures(), output_folder(out, any_error=True) as folder, shown as bar:
         for name in makers:
             fig = makers[name]()
             for suffix in (".png", ".svg"):
                 _write(fig, folder / f"{name}{suffix}", dpi, suffix[1:])
                 written.append(f"{name}{suffix}")
             _pyplot().close(fig)
+            bar.advance(1)
     ours = [f"{name}{suffix}" for name in PLANS for suffix in (".png", ".svg")]
     levers = [
         p.name for p in out.glob("zhukovsky_lever_*.*") if LEVER.fullmatch(p.name)

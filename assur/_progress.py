@@ -18,6 +18,8 @@ __all__ = ["BAR_DELAY", "Progress", "progress"]
 BAR_DELAY = 1.0
 """Seconds the command line's work runs before its progress bar appears (on a
 terminal): whatever makes it long, its positions or its mechanism's columns."""
+SCALED = 10_000
+"""Totals from which a bar writes its counts with SI prefixes (100k)."""
 Callback = Callable[[int, int], None]
 """A caller's own report: ``callback(done, total)``."""
 
@@ -31,6 +33,7 @@ class Progress:
         total: int,
         show: bool | Callback = False,
         delay: float = 0.0,
+        unit: str = "it",
     ) -> None:
         self.total = total
         self.done = 0
@@ -46,7 +49,9 @@ class Progress:
                 desc=what,
                 file=sys.stderr,
                 leave=False,
-                unit_scale=True,
+                unit=unit,
+                # "100k/1.00M positions", but "1/8 figures", not "1.00/8.00"
+                unit_scale=total >= SCALED,
                 delay=delay,
             )
 
@@ -80,12 +85,16 @@ class Progress:
 
 
 def progress(
-    what: str, total: int, show: bool | Callback = False, delay: float = 0.0
+    what: str,
+    total: int,
+    show: bool | Callback = False,
+    delay: float = 0.0,
+    unit: str = "it",
 ) -> Progress:
     """Return a :class:`Progress` of ``total`` units named ``what``.
 
     ``show``: True for a bar on standard error, a callable ``(done, total)`` to be
     told, False for nothing. ``delay``: seconds before a bar appears (none for work
-    done sooner).
+    done sooner). ``unit``: what is counted, as the bar writes it ("position").
     """
-    return Progress(what, total, show, delay)
+    return Progress(what, total, show, delay, unit)

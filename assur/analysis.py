@@ -228,7 +228,7 @@ def _sweep(
     troubles: list[Any] = []
     passed = _change_points(plan, given, drive)
     what = "forces" if chosen.forces else "kinematics"
-    with progress(what, n, show) as bar:
+    with progress(what, n, show, unit=" positions") as bar:
         tree = _passes(
             plan, given, drive, rates, top, chosen.forces, keep, passed, troubles, bar
         )

@@ -292,7 +292,7 @@ def _stream(rows: _Rows, writer: Any, args: argparse.Namespace) -> None:
     """Write every slice of ``rows`` with ``writer``; a bar on a long sweep."""
     n = len(rows)
     show = bar_shown(args, bool(args.json), args.csv)
-    with progress("dynamics", n, show=show, delay=BAR_DELAY) as bar:
+    with progress("dynamics", n, show, BAR_DELAY, " positions") as bar:
         for start in range(0, n, SLICE):
             part = rows.part(start, min(start + SLICE, n))
             writer.write([np.asarray(part[c], dtype=float) for c in rows.names])

@@ -281,7 +281,7 @@ def _diagrams(
 
     ``show``: a progress bar of the pictures on standard error.
     """
-    from assur._progress import progress
+    from assur._progress import BAR_DELAY, progress
 
     figures = {"motion": lambda: motion_figure(plotting, plt, table)}
     sliding = [j.name for j in table.mechanism.joints if j.kind == "prismatic"]
@@ -301,7 +301,7 @@ def _diagrams(
     if steady is not None:
         figures["dynamics"] = lambda: plotting.plot_dynamics(steady)
     written = []
-    with progress("diagrams", len(figures), show) as bar:
+    with progress("diagrams", len(figures), show, BAR_DELAY, " figures") as bar:
         for name, make in figures.items():
             _draw(make(), out / f"{name}.png", dpi)
             written.append(f"{name}.png")
@@ -341,8 +341,13 @@ def _cmd_report(args: argparse.Namespace) -> int:
         if args.angles is None
         else _drawn(positions(mech, args.angles), "the page holds every position")
     )
-    with _figures():
-        write_report(mech, output, angles=angles)
+    from assur._progress import BAR_DELAY, progress
+
+    n = len(positions(mech, args.angles) if angles is None else angles)
+    shown = progress("report", n, _show(args), BAR_DELAY, " positions")
+    with _figures(), shown as bar:
+        # the sweep's positions (most of the work on a long one), told to the bar
+        write_report(mech, output, angles, lambda done, _: bar.advance(done - bar.done))
     # the page leaves out the positions that cannot be assembled, as
     # --skip-unassembled does elsewhere: said here as there, not on the page alone
     from assur._loads import compile_loads

@@ -21,14 +21,39 @@ def run(capsys, *args) -> tuple[int, str, str]:
 
 @pytest.mark.pictures
 def test_diagrams_show_a_bar_on_a_terminal(tmp_path, capsys, monkeypatch):
+    from assur import _progress
+
     monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    monkeypatch.setattr(_progress, "BAR_DELAY", 0.0)  # shown however quick
     status, out, err = run(
         capsys, "diagrams", FOUR_BAR, "--angles", "0:360:30", "-o", tmp_path / "d"
     )
     assert status == 0
     assert "diagrams:" in err
-    assert "7.00/7.00" in err  # four-bar has masses and a crank: seven pictures
+    # four-bar has masses and a crank: seven pictures, counted whole ("7.00/7.00")
+    assert "7/7" in err
+    assert " figures/s" in err
     assert out.count("wrote ") == 7
+
+
+@pytest.mark.pictures
+def test_plans_and_report_show_a_bar_on_a_terminal(tmp_path, capsys, monkeypatch):
+    from assur import _picture_plans, _progress
+
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    monkeypatch.setattr(_progress, "BAR_DELAY", 0.0)
+    monkeypatch.setattr(_picture_plans, "BAR_DELAY", 0.0)
+    status, out, err = run(capsys, "plans", FOUR_BAR, "-o", tmp_path / "p")
+    assert status == 0
+    # velocity and acceleration plans, force polygons, lever, instant centres
+    assert "plans:" in err
+    assert "5/5" in err
+    status, out, err = run(
+        capsys, "report", FOUR_BAR, "--angles", "0:360:2", "-o", tmp_path / "r.html"
+    )
+    assert status == 0
+    assert "report:" in err
+    assert "181/181" in err  # the stop included
 
 
 @pytest.mark.pictures
@@ -64,7 +89,20 @@ def test_animate_shows_a_bar_per_frame_on_a_terminal(tmp_path, capsys, monkeypat
     )
     assert status == 0
     assert "animate:" in err
-    assert "3.00/3.00" in err
+    assert "3/3" in err
+
+
+def test_the_report_tells_a_callback_of_its_sweep():
+    import assur
+    from assur.html import render_report
+
+    seen = []
+    render_report(
+        assur.load(FOUR_BAR),
+        [0.0, 90.0, 180.0],
+        progress=lambda d, t: seen.append((d, t)),
+    )
+    assert seen[-1] == (3, 3)
 
 
 def test_animate_tells_a_callback_each_frame(tmp_path):

@@ -25,7 +25,9 @@ from assur.plan import plan_of
 __all__ = ["render_report", "write_report"]
 
 
-def render_report(mechanism: Mechanism, angles: Any = None) -> str:
+def render_report(
+    mechanism: Mechanism, angles: Any = None, progress: Any = False
+) -> str:
     """Return the HTML report of ``mechanism`` as one self-contained page.
 
     Parameters
@@ -35,6 +37,9 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
         Driver positions, deg (m for a prismatic driver); shape (n,) or, with several
         drivers, (n, drivers). By default one turn from the reference pose in steps
         of 1 deg (:func:`assur.analysis.default_positions`).
+    progress : bool or callable, optional
+        Show a progress bar of the sweep on standard error (True), or call
+        ``progress(done, total)`` as its positions are solved.
 
     Returns
     -------
@@ -75,7 +80,7 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
     if angles is None:
         angles = default_positions(mechanism)
     sweep = forces if with_forces else kinematics
-    table = sweep(mechanism, angles, skip_unassembled=True)
+    table = sweep(mechanism, angles, skip_unassembled=True, progress=progress)
     if len(table) == 0:
         # the sweep again, not skipping: its error names the group, the first
         # position and why (a pose that cannot be assembled, or friction's lock)
@@ -93,7 +98,10 @@ def render_report(mechanism: Mechanism, angles: Any = None) -> str:
 
 
 def write_report(
-    mechanism: Mechanism, path: str | os.PathLike[str], angles: Any = None
+    mechanism: Mechanism,
+    path: str | os.PathLike[str],
+    angles: Any = None,
+    progress: Any = False,
 ) -> None:
     """Write the HTML report of ``mechanism`` to ``path`` (UTF-8).
 
@@ -115,4 +123,4 @@ def write_report(
     ...     target.read_text(encoding="utf-8").count("<html")
     1
     """
-    write_text(path, render_report(mechanism, angles))
+    write_text(path, render_report(mechanism, angles, progress))
