@@ -45,13 +45,14 @@ def test_plans_and_report_show_a_bar_on_a_terminal(tmp_path, capsys, monkeypatch
     monkeypatch.setattr(_picture_plans, "BAR_DELAY", 0.0)
     status, out, err = run(capsys, "plans", FOUR_BAR, "-o", tmp_path / "p")
     assert status == 0
+    assert out.count("wrote ") == 10  # PNG and SVG each
     # velocity and acceleration plans, force polygons, lever, instant centres
     assert "plans:" in err
     assert "5/5" in err
     status, out, err = run(
         capsys, "report", FOUR_BAR, "--angles", "0:360:2", "-o", tmp_path / "r.html"
     )
-    assert status == 0
+    assert (status, out.count("wrote ")) == (0, 1)
     assert "report:" in err
     assert "181/181" in err  # the stop included
 
