@@ -80,9 +80,15 @@ def _one_range(text: str, option: str) -> np.ndarray:
     if len(values) == 1 and math.isfinite(values[0]):
         return np.array(values)
     if len(values) != 3 or not all(map(math.isfinite, values)):
+        # "inf" is read, and is no position: said so, not "cannot read"
+        fault = (
+            f"{describe(text)} holds a number that is not finite"
+            if len(values) in (1, 3)
+            else f"cannot read {describe(text)}"
+        )
         msg = (
-            f"{option}: cannot read {describe(text)}; expected START:STOP:STEP with a "
-            "step that leads from START to STOP, or a single value"
+            f"{option}: {fault}; expected START:STOP:STEP with a step that leads "
+            "from START to STOP, or a single value"
         )
         raise UsageError(msg)
     start, stop, step = values

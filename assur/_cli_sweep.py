@@ -26,6 +26,7 @@ from assur._output import path_text, write_stdout
 from assur._progress import BAR_DELAY
 from assur._skipped import Skipped
 from assur._sliced import slices
+from assur._text import counted
 
 __all__ = ["_sweep"]
 
@@ -72,7 +73,7 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
     lines = sys.stderr if args.json or is_stdout(args.csv or "") else sys.stdout
     for target in (args.csv, args.parquet):
         if target and not is_stdout(target) and not hushed:
-            size = f"{rows} rows x {len(names)} columns"
+            size = f"{counted(rows, 'row')} x {counted(len(names), 'column')}"
             print(f"wrote {size} to {path_text(target)}", file=lines)
     return 0
 

@@ -17,7 +17,7 @@ from typing import Any
 from assur._diagnosis import _miscount
 from assur._group import Group, _describe
 from assur._group_search import _attach
-from assur._text import counted, roman
+from assur._text import counted, roman, suggest
 from assur._topology import Pair, Topology, _index, _public, topology
 from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, mechanism_of
@@ -250,7 +250,8 @@ def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
     mech = mechanism_of(mechanism)
     if driver is not None:
         if driver not in {j.name for j in mech.joints}:
-            msg = f"unknown joint {driver!r}"
+            known = [j.name for j in mech.joints if GROUND in j.links]
+            msg = f"unknown joint {driver!r}{suggest(driver, known)}"
             raise DriverChoiceError(msg)
         omega = mech.drivers[0].omega if mech.drivers else 1.0
         try:

@@ -55,7 +55,7 @@ from assur._output import (
 )
 from assur._progress import BAR_DELAY, progress
 from assur._tableio import CsvWriter, JsonWriter
-from assur._text import number_text
+from assur._text import counted, number_text
 from assur._vec import Array
 from assur.dynamics_model import result as dynamics_rows
 from assur.dynamics_model import solved
@@ -357,7 +357,8 @@ def _wrote(args: argparse.Namespace, written: list[tuple[Any, int, int]]) -> Non
     # standard output may carry the table or the JSON: the lines go to stderr then
     lines = sys.stderr if (args.json or args.csv == "-") else sys.stdout
     for path, rows, columns in written:
-        print(f"wrote {rows} rows x {columns} columns to {path_text(path)}", file=lines)
+        size = f"{counted(rows, 'row')} x {counted(columns, 'column')}"
+        print(f"wrote {size} to {path_text(path)}", file=lines)
 
 
 def _readable(table: Any, forces: bool, total: int) -> str:

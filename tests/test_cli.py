@@ -94,13 +94,25 @@ def test_file_not_in_utf8(tmp_path, capsys):
     fails(capsys, ["structure", path], path)
 
 
-@pytest.mark.parametrize("spec", ["abc", "0:10", "", "nan", "0:10:5:1", "0:inf:1"])
-def test_bad_angles(spec, capsys):
+@pytest.mark.parametrize(
+    ("spec", "fault"),
+    [
+        ("abc", "cannot read 'abc'"),
+        ("0:10", "cannot read '0:10'"),
+        ("", "cannot read ''"),
+        ("0:10:5:1", "cannot read '0:10:5:1'"),
+        # read, and no position: "cannot read 'inf'" was said
+        ("nan", "'nan' holds a number that is not finite"),
+        ("0:inf:1", "'0:inf:1' holds a number that is not finite"),
+        ("-inf", "'-inf' holds a number that is not finite"),
+    ],
+)
+def test_bad_angles(spec, fault, capsys):
     path = EXAMPLES / "four_bar.toml"
     text = fails(capsys, ["kinematics", path, f"--angles={spec}"], path)
     assert text == (
-        f"--angles: cannot read {spec!r}; expected START:STOP:STEP with a "
-        "step that leads from START to STOP, or a single value"
+        f"--angles: {fault}; expected START:STOP:STEP with a step that leads from "
+        "START to STOP, or a single value"
     )
 
 
@@ -171,7 +183,7 @@ def test_driver_option_unknown_joint(capsys):
     path = EXAMPLES / "class3.toml"
     assert (
         fails(capsys, ["structure", path, "--driver", "Q"], path)
-        == "--driver: unknown joint 'Q'"
+        == "--driver: unknown joint 'Q' (known: F, G, O2)"
     )
 
 
@@ -487,6 +499,11 @@ def test_csv_to_a_path(tmp_path, capsys):
     assert values.shape == (11, len(header))
     assert out == f"wrote 11 rows x {len(header)} columns to {target}\n"
     assert {"9.angle", "M.x", "guide.s", "guide.j"} <= set(header)
+    out, _ = succeeds(
+        capsys,
+        ["kinematics", EXAMPLES / "tenbar.toml", "--angles", "10", "--csv", target],
+    )
+    assert out == f"wrote 1 row x {len(header)} columns to {target}\n"  # not "1 rows"
 
 
 def test_json(capsys):
