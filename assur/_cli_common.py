@@ -142,10 +142,11 @@ def positions(mech: Any, spec: str | None, option: str = "--angles") -> np.ndarr
 
 
 def load_mechanism(path: Path) -> Any:
-    """Read the mechanism file named on the command line."""
+    """Read the mechanism file named on the command line (``-``: standard input)."""
+    from assur._stdin import STDIN, from_stdin
     from assur.io import load
 
-    return load(path)
+    return from_stdin() if str(path) == STDIN else load(path)
 
 
 def check_range(

@@ -95,7 +95,7 @@ ANGLES_HELP = (
     "%% of the mechanism's size)"
 )
 """What ``--help`` says of ``--angles`` (argparse reads ``%%`` as ``%``)."""
-FILE_HELP = "the mechanism file, .toml or .json"
+FILE_HELP = "the mechanism file, .toml or .json ('-': read from stdin)"
 """What ``--help`` says of the FILE every command reads."""
 
 

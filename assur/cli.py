@@ -17,7 +17,7 @@ import sys
 import warnings
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import Any, NoReturn
+from typing import Any
 
 from assur import _start
 from assur._cli_common import (
@@ -29,6 +29,7 @@ from assur._cli_common import (
     quiet,
     skip_hint,
 )
+from assur._cli_parser import _Parser
 from assur._cli_process import (
     _closed_streams,
     _lenient_streams,
@@ -45,6 +46,7 @@ from assur._cli_types import (
     input_file,
 )
 from assur._output import path_text, write_stdout
+from assur._stdin import input_text
 from assur._text import describe, suggest
 from assur._troubles import SKIPPED_WHY, UNREACHED_WHY
 from assur.errors import (
@@ -59,52 +61,6 @@ __all__ = ["main", "parse_angles"]
 
 COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {}
 QUIET = "no progress bars, no 'wrote ...' lines or notes (errors and warnings stay)"
-
-
-class _Parser(argparse.ArgumentParser):
-    """argparse's parser, except that a failed write of its help is not ignored.
-
-    argparse drops the OSError of ``--help`` written to a full disk (exit 0, no
-    help); here it reaches :func:`main`, which says so (exit 2).
-    """
-
-    def __init__(self, *args: Any, **kwargs: Any) -> None:
-        # no option shortened: "--angle" taken for "--angles" by one command was
-        # refused by another, and every new option could break a shortening
-        kwargs.setdefault("allow_abbrev", False)
-        super().__init__(*args, **kwargs)
-
-    def _print_message(self, message: str, file: Any = None) -> None:
-        if message:
-            (file or sys.stderr).write(message)
-
-    def error(self, message: str) -> NoReturn:  # type: ignore[override]
-        """Exit 2 with one line naming the command and the option at fault.
-
-        argparse prints its usage block first (six lines for ``dynamics``): the
-        line that says what is wrong is then the last of many.
-        """
-        # arguments no command takes are found by the top parser: name the command
-        command = self.prog.partition(" ")[2] or self.command
-        where, prog = (f"{command}: ", f"assur {command}") if command else ("", "assur")
-        if message.startswith("unrecognized arguments: "):
-            message += self._closest(message.split()[2], command)
-        line = f"assur: error: {where}{message} (see '{prog} --help')"
-        self.exit(2, " ".join(line.split()) + "\n")
-
-    def _closest(self, option: str, command: str) -> str:
-        """Return a hint for an unknown ``option``: the command's nearest one."""
-        if not option.startswith("--"):
-            return ""
-        parser: argparse.ArgumentParser = self
-        for action in self._actions:
-            if isinstance(action, argparse._SubParsersAction) and command:
-                parser = action.choices.get(command, self)
-        known = [o for o in parser._option_string_actions if o.startswith("--")]
-        return suggest(option.partition("=")[0], known, listing=False)
-
-    command = ""
-    """The command being parsed, once known (see :func:`_main`)."""
 
 
 def _parser() -> tuple[_Parser, list[str]]:
@@ -292,7 +248,7 @@ class _OtherFileError(ModelError):
 
 def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace) -> int:
     """Run one command, turning assur's errors and warnings into one-line messages."""
-    source = path_text(args.file)
+    source = input_text(args.file)
     failure = None
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", AssurWarning)

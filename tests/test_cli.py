@@ -286,7 +286,9 @@ def test_help_says_what_the_file_is(capsys, command):
     # "positional arguments: file" alone left the reader to guess its format
     assert main([command, "--help"]) == 0
     out = capsys.readouterr().out
-    assert re.search(r"^\s+file\s+the mechanism file, \.toml or \.json$", out, re.M)
+    assert re.search(
+        r"^\s+file\s+the mechanism file, \.toml or \.json \('-'", out, re.M
+    )
 
 
 def _options(command: str) -> dict[str, argparse.Action]:
@@ -487,6 +489,36 @@ def test_csv_to_stdout_matches_the_library(capsys):
             values[:, i], table[column], rtol=1e-11, atol=1e-9, err_msg=column
         )
     assert out == table.to_csv()
+
+
+def test_the_mechanism_read_from_standard_input(capsys, monkeypatch):
+    import io
+
+    def piped(data: bytes) -> None:
+        monkeypatch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(data)))
+
+    text = (EXAMPLES / "four_bar.toml").read_bytes()
+    piped(text)
+    out, _ = succeeds(capsys, ["structure", "-"])
+    assert out == str(assur.structure(assur.load(EXAMPLES / "four_bar.toml"))) + "\n"
+    # JSON too, told by its opening brace
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    piped(assur.dumps(mech, json_format=True).encode())
+    out, _ = succeeds(capsys, ["forces", "-", "--angles", "45", "--csv", "-"])
+    assert out == assur.forces(mech, [45.0]).to_csv()
+    # a fault names <stdin>, as it names a file
+    piped(b"format = 1\n[links.a]\n")
+    assert main(["kinematics", "-"]) == 2
+    assert capsys.readouterr().err == (
+        "assur: error: <stdin>: links.a: a link with no joints; expected it in some "
+        "joint's links\n"
+    )
+    monkeypatch.setattr(sys, "stdin", None)  # started closed (<&-)
+    assert main(["structure", "-"]) == 2
+    assert capsys.readouterr().err == (
+        "assur: error: <stdin>: standard input is closed; expected a mechanism file "
+        "piped in\n"
+    )
 
 
 def test_csv_to_a_path(tmp_path, capsys):
