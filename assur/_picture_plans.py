@@ -29,6 +29,7 @@ from assur._picture_files import (
 )
 from assur._picture_sweeps import _table
 from assur._progress import BAR_DELAY, progress
+from assur._stdin import input_text
 
 PLANS = (
     "velocity_plan",
@@ -71,7 +72,7 @@ def _cmd_plans(args: argparse.Namespace) -> int:
             makers[lever] = _lever(plotting, t, i)
     elif not quiet(args):
         print(
-            f"assur: note: {path_text(args.file)}: no force polygons and no lever: "
+            f"assur: note: {input_text(args.file)}: no force polygons and no lever: "
             "no link has a mass and no load is applied",
             file=sys.stderr,
         )

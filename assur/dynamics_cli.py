@@ -54,6 +54,7 @@ from assur._output import (
     write_stdout,
 )
 from assur._progress import BAR_DELAY, progress
+from assur._stdin import input_text
 from assur._tableio import CsvWriter, JsonWriter
 from assur._text import counted, number_text
 from assur._vec import Array
@@ -205,7 +206,7 @@ def _notes(args: argparse.Namespace, mech: Any) -> None:
     """Tell what the dynamic model leaves out of the file, once the work is done."""
     if quiet(args):
         return
-    where = f"assur: note: {path_text(args.file)}: the dynamic model leaves the"
+    where = f"assur: note: {input_text(args.file)}: the dynamic model leaves the"
     if any(j.friction > 0.0 for j in mech.joints):
         shown = (
             "; the force table's driver.torque overcomes it too (its "
