@@ -17,6 +17,7 @@ from assur._cli_common import (
     check_not_input,
     check_range,
     folder_there,
+    is_stdout,
     quiet,
     terminal,
 )
@@ -61,12 +62,12 @@ def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
     path: Path = args.output
     suffix = path.suffix.lower()
     wanted = " or ".join(allowed)
-    if str(path) == "-":
+    if is_stdout(path):
         # "-" is standard output for tables and notes: here it had no suffix
         what = {".gif": "an animation", ".html": "a report"}.get(allowed[0])
         msg = (
-            f"-o -: standard output cannot take {what or 'a picture'}; expected a "
-            f"file name ending in {wanted}"
+            f"-o {path_text(path)}: standard output cannot take "
+            f"{what or 'a picture'}; expected a file name ending in {wanted}"
         )
         raise UsageError(msg)
     if path.is_dir():

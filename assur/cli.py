@@ -23,6 +23,7 @@ from assur import _start
 from assur._cli_common import (
     add_angle_option,
     check_not_input,
+    is_stdout,
     load_mechanism,
     one_position,
     parse_angles,
@@ -327,8 +328,8 @@ NOTE_SUFFIXES = (".md", ".markdown", ".html", ".htm", ".tex")
 def _cmd_explain(args: argparse.Namespace) -> int:
     from assur.explain import explain, read_answers
 
-    if args.output is not None and str(args.output) == "-":
-        args.output = None  # standard output, where the note goes without -o
+    if args.output is not None and is_stdout(args.output):
+        args.output = None  # standard output (- or /dev/stdout): the note's Markdown
     if args.output is not None:
         suffix = Path(args.output).suffix.lower()
         if suffix not in NOTE_SUFFIXES:

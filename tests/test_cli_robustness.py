@@ -289,6 +289,20 @@ def test_csv_to_dev_stdout_in_a_pipe(tmp_path: Path):
     assert "wrote" not in result.stderr
 
 
+def test_a_note_or_a_picture_to_dev_stdout_is_as_to_minus(tmp_path: Path):
+    # "unknown type of note '(none)'" and "unknown file type '(none)'" they said
+    note = shell(tmp_path, f"explain {FOUR_BAR} -o /dev/stdout | cat")
+    assert note.stderr == ""
+    assert note.stdout == shell(tmp_path, f"explain {FOUR_BAR} -o - | cat").stdout
+    assert note.stdout.startswith("# Crank-rocker four-bar at crank angle")
+    picture = shell(tmp_path, f"plot {FOUR_BAR} -o /dev/stdout | cat")
+    assert picture.stderr == (
+        f"assur: error: {FOUR_BAR}: -o /dev/stdout: standard output cannot take a "
+        "picture; expected a file name ending in .png or .svg or .pdf\n"
+    )
+    assert os.listdir(tmp_path) == []
+
+
 def test_dev_stdout_beside_json_is_refused(tmp_path: Path):
     # /dev/stdout is where --json writes too: the two tables came out mixed
     result = piped(tmp_path, "--json --csv /dev/stdout")
