@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import subprocess
 import warnings
@@ -131,12 +132,10 @@ def test_csv_to_standard_output(capsys):
 
 def with_motor(folder: Path) -> Path:
     """The Whitworth mechanism with an electric motor ten times its mean load."""
-    t = assur.dynamics(assur.load(WHITWORTH), [0.0], flywheel=20.0)
+    mech = assur.load(WHITWORTH)
+    t = assur.dynamics(mech, [0.0], flywheel=20.0)
     path = folder / "w.toml"
-    path.write_text(
-        WHITWORTH.read_text()
-        + f"\n[motor]\ntorque = {10 * t.motor}\nno_load_speed = 6.0\n"
-    )
+    assur.save(dataclasses.replace(mech, motor=assur.Motor(10 * t.motor, 6.0)), path)
     return path
 
 

@@ -132,9 +132,21 @@ def test_a_constant_torque_above_the_load_does_not_settle():
     )
 
 
+def test_the_shaper_example_starts_up_near_its_speed():
+    # examples/whitworth.toml's motor: 40 N m at standstill, none at 6 rad/s; the
+    # load's mean torque of 6.19 N m is met at 6 (1 - 6.19 / 40) = 5.07 rad/s
+    mech = example("whitworth")
+    assert mech.motor == Motor(40.0, 6.0)
+    flywheel = assur.flywheel(mech, 0.05)
+    run = assur.startup(mech, flywheel)
+    motor = assur.dynamics(mech, [0.0], flywheel=flywheel).motor
+    assert run.mean_speed == pytest.approx(6.0 * (1.0 - motor / 40.0), rel=2e-3)
+    assert 0.0 < run.settle_time < 20.0
+
+
 def test_a_mechanism_without_motor():
     with pytest.raises(assur.ModelError, match=r"no motor; expected a \[motor\] table"):
-        assur.startup(example("whitworth"), 1.0)
+        assur.startup(dataclasses.replace(example("whitworth"), motor=None), 1.0)
 
 
 def test_a_motor_that_is_not_one():
