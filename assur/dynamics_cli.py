@@ -54,10 +54,12 @@ from assur._output import (
     write_stdout,
 )
 from assur._progress import BAR_DELAY, progress
+from assur._startup_checks import MOST_TURNS
 from assur._stdin import input_text
 from assur._tableio import CsvWriter, JsonWriter
 from assur._text import counted, number_text
 from assur._vec import Array
+from assur.dynamics_flywheel import SMALLEST_DELTA
 from assur.dynamics_model import result as dynamics_rows
 from assur.dynamics_model import solved
 from assur.dynamics_reduced import check_dynamic
@@ -87,13 +89,17 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     )
     size = p.add_mutually_exclusive_group()
     size.add_argument(
-        "--flywheel", type=number, metavar="J", help="flywheel on the crank, kg m^2"
+        "--flywheel",
+        type=number,
+        metavar="J",
+        help="flywheel on the crank, kg m^2 (default 0)",
     )
     size.add_argument(
         "--delta",
         type=number,
         metavar="D",
-        help="find the flywheel for this coefficient of speed fluctuation",
+        help="find the flywheel for this coefficient of speed fluctuation, "
+        f"(max w - min w) / omega, from {SMALLEST_DELTA:g} to below 2",
     )
     p.add_argument(
         "--forces",
@@ -109,8 +115,8 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "--turns",
         type=whole_number,
         metavar="N",
-        help=f"most turns the start-up may take to settle (default {MAX_TURNS}; with "
-        "--startup or --startup-csv)",
+        help=f"most turns the start-up may take to settle (default {MAX_TURNS}, at "
+        f"most {MOST_TURNS}; with --startup or --startup-csv)",
     )
     p.add_argument(
         "--startup-csv",
