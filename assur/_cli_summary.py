@@ -80,8 +80,13 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
     return "\n".join(lines)
 
 
-def _summary(parts: Iterator[Slice], forces: bool) -> tuple[str, tuple[str, ...]]:
-    """Return the readable table of the first rows and the table's column names."""
+def _summary(
+    parts: Iterator[Slice], forces: bool, width: int | None = None
+) -> tuple[str, tuple[str, ...]]:
+    """Return the readable table of the first rows and the table's column names.
+
+    ``width``: a terminal's, in characters, which a wider table is cut to fit.
+    """
     names: tuple[str, ...] = ()
     picked: list[str] = []
     units: list[str] = []
@@ -98,7 +103,7 @@ def _summary(parts: Iterator[Slice], forces: bool) -> tuple[str, tuple[str, ...]
             kept.append([part.column(c)[:room] for c in picked])
         rows += len(table)
     columns = [np.concatenate(k) for k in zip(*kept, strict=True)] if kept else []
-    return format_table(picked, units, columns, rows), names
+    return format_table(picked, units, columns, rows, width=width), names
 
 
 def summary_columns(table: Any, forces: bool) -> list[str]:
@@ -121,17 +126,40 @@ def summary_columns(table: Any, forces: bool) -> list[str]:
     return ["angle", *picked]
 
 
+def _blocks(widths: list[int], width: int | None) -> list[list[int]]:
+    """Return the columns of each block of a table ``width`` characters wide.
+
+    Every block starts with the first column; one column wider than the width
+    alone has a block of its own (a terminal then wraps it).
+    """
+    if width is None or sum(widths) + 2 * (len(widths) - 1) <= width:
+        return [list(range(len(widths)))]
+    blocks = []
+    block, used = [0], widths[0]
+    for i in range(1, len(widths)):
+        if len(block) > 1 and used + 2 + widths[i] > width:
+            blocks.append(block)
+            block, used = [0], widths[0]
+        block.append(i)
+        used += 2 + widths[i]
+    blocks.append(block)
+    return blocks
+
+
 def format_table(
     names: list[str],
     units: list[str],
     columns: list[Array],
     rows: int,
     limit: int = SUMMARY_ROWS,
+    width: int | None = None,
 ) -> str:
     """Return an aligned text table of ``columns`` with a units row.
 
     ``rows`` is the number of rows in all; beyond the ``limit`` shown, a last line
-    says how many were left out.
+    says how many were left out. A table wider than ``width`` characters (a
+    terminal's) is cut into blocks of columns that fit, one under the other, each
+    led by the first column (the driver's position).
     """
     heads = list(names)
     marks = [f"[{u}]" if u else "" for u in units]
@@ -144,13 +172,13 @@ def format_table(
         max(len(h), len(u), *(len(r[i]) for r in cells))
         for i, (h, u) in enumerate(zip(heads, marks, strict=True))
     ]
-    lines = [
-        "  ".join(h.rjust(w) for h, w in zip(heads, widths, strict=True)),
-        "  ".join(u.rjust(w) for u, w in zip(marks, widths, strict=True)),
-    ]
-    lines += [
-        "  ".join(v.rjust(w) for v, w in zip(r, widths, strict=True)) for r in cells
-    ]
+    lines: list[str] = []
+    for block in _blocks(widths, width):
+        if lines:
+            lines.append("")
+        lines.append("  ".join(heads[i].rjust(widths[i]) for i in block))
+        lines.append("  ".join(marks[i].rjust(widths[i]) for i in block))
+        lines += ["  ".join(r[i].rjust(widths[i]) for i in block) for r in cells]
     if rows > limit:
         lines.append(f"... {rows - limit} more rows: --csv PATH or --json for all")
     return "\n".join(lines)

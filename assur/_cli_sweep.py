@@ -31,6 +31,18 @@ from assur._text import counted
 __all__ = ["_sweep"]
 
 
+def _terminal_width() -> int | None:
+    """Return the width of the terminal standard output writes to; None if none."""
+    try:
+        if not sys.stdout.isatty():
+            return None
+    except (AttributeError, OSError, ValueError):
+        return None
+    import shutil
+
+    return shutil.get_terminal_size().columns
+
+
 def _sweep(args: argparse.Namespace, forces: bool) -> int:
     """Analyse the sweep slice by slice; write its table or print its summary."""
     _check_outputs(args)
@@ -55,7 +67,7 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
             for _ in parts:
                 pass
         else:
-            text, names = _summary(parts, forces)
+            text, names = _summary(parts, forces, _terminal_width())
     hushed = quiet(args)
     if skipped.count and not hushed:
         print(skipped.note(args.file), file=sys.stderr)

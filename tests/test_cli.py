@@ -672,6 +672,49 @@ def test_minus_zero_is_shown_as_zero(capsys):
     assert "-0 " not in out
 
 
+@pytest.mark.parametrize("width", [30, 44, 80, 1000])
+def test_a_wide_table_is_cut_to_the_terminal_s_width(width):
+    # six_bar_lecture's 19 columns ran 156 characters wide, each row wrapped
+    from assur._cli_summary import format_table
+
+    names = ["angle"] + [f"link{i}.omega" for i in range(12)]
+    columns = [np.arange(3.0) * 10] + [np.full(3, -1234.5678 * i) for i in range(12)]
+    text = format_table(names, ["deg"] + ["rad/s"] * 12, columns, 3, width=width)
+    blocks = [b.splitlines() for b in text.split("\n\n")]
+    whole = format_table(names, ["deg"] + ["rad/s"] * 12, columns, 3)
+    if max(map(len, whole.splitlines())) <= width:
+        assert blocks == [whole.splitlines()]
+        return
+    assert len(blocks) > 1
+    seen = []
+    for block in blocks:
+        assert len(block) == 2 + 3  # heads, units, rows
+        assert all(len(line) <= width for line in block)
+        heads = block[0].split()
+        assert heads[0] == "angle"  # each block led by the driver's position
+        assert [line.split()[0] for line in block[2:]] == ["0", "10", "20"]
+        seen += heads[1:]
+    assert seen == names[1:]  # every column once, in order
+
+
+def test_the_readable_table_fits_the_terminal(capsys, monkeypatch):
+    import os
+    import shutil
+
+    path = EXAMPLES / "six_bar_lecture.toml"
+    piped, _ = succeeds(capsys, ["kinematics", path, "--angles", "0:30:10"])
+    assert max(map(len, piped.splitlines())) > 80  # in a pipe: one row a line
+    monkeypatch.setattr(sys.stdout, "isatty", lambda: True)
+    size = os.terminal_size((80, 24))
+    monkeypatch.setattr(shutil, "get_terminal_size", lambda *a, **k: size)
+    shown, _ = succeeds(capsys, ["kinematics", path, "--angles", "0:30:10"])
+    assert max(map(len, shown.splitlines())) <= 80
+    heads = [line.split()[0] for line in shown.splitlines() if line.startswith("angle")]
+    assert heads == ["angle"] * 3  # three blocks of columns
+    assert sorted(shown.split()) != sorted(piped.split())  # the angles repeat
+    assert set(shown.split()) == set(piped.split())
+
+
 def test_a_range_near_the_largest_float(recwarn):
     # STEP times the count overflowed (an inf, a RuntimeWarning), the range was sound
     found = parse_angles("-1.7e308:1.7e308:1e308")
