@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import json
 import math
+import shutil
+import sys
 from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
@@ -28,6 +30,7 @@ __all__ = [
     "_summed",
     "format_table",
     "summary_columns",
+    "terminal_width",
 ]
 
 SUMMARY_ROWS = 400
@@ -126,6 +129,17 @@ def summary_columns(table: Any, forces: bool) -> list[str]:
     return ["angle", *picked]
 
 
+def terminal_width() -> int | None:
+    """Return the width of the terminal standard output writes to; None if none."""
+    try:
+        if not sys.stdout.isatty():
+            return None
+    except (AttributeError, OSError, ValueError):
+        return None
+
+    return shutil.get_terminal_size().columns
+
+
 def _blocks(widths: list[int], width: int | None) -> list[list[int]]:
     """Return the columns of each block of a table ``width`` characters wide.
 
@@ -180,5 +194,6 @@ def format_table(
         lines.append("  ".join(marks[i].rjust(widths[i]) for i in block))
         lines += ["  ".join(r[i].rjust(widths[i]) for i in block) for r in cells]
     if rows > limit:
-        lines.append(f"... {rows - limit} more rows: --csv PATH or --json for all")
+        more = counted(rows - limit, "more row")
+        lines.append(f"... {more}: --csv PATH or --json for all")
     return "\n".join(lines)

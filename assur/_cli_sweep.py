@@ -20,7 +20,7 @@ from assur._cli_common import (
     positions,
     quiet,
 )
-from assur._cli_summary import _summary, _summary_text, _summed
+from assur._cli_summary import _summary, _summary_text, _summed, terminal_width
 from assur._cli_tables import _check_outputs, _write_tables
 from assur._output import path_text, write_stdout
 from assur._progress import BAR_DELAY
@@ -29,18 +29,6 @@ from assur._sliced import slices
 from assur._text import counted
 
 __all__ = ["_sweep"]
-
-
-def _terminal_width() -> int | None:
-    """Return the width of the terminal standard output writes to; None if none."""
-    try:
-        if not sys.stdout.isatty():
-            return None
-    except (AttributeError, OSError, ValueError):
-        return None
-    import shutil
-
-    return shutil.get_terminal_size().columns
 
 
 def _sweep(args: argparse.Namespace, forces: bool) -> int:
@@ -67,7 +55,7 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
             for _ in parts:
                 pass
         else:
-            text, names = _summary(parts, forces, _terminal_width())
+            text, names = _summary(parts, forces, terminal_width())
     hushed = quiet(args)
     if skipped.count and not hushed:
         print(skipped.note(args.file), file=sys.stderr)

@@ -30,6 +30,7 @@ from assur._cli_common import (
     quiet,
     terminal,
 )
+from assur._cli_summary import format_table, terminal_width
 from assur._cli_types import (
     add_file_argument,
     given,
@@ -57,7 +58,7 @@ from assur._progress import BAR_DELAY, progress
 from assur._startup_checks import MOST_TURNS
 from assur._stdin import input_text
 from assur._tableio import CsvWriter, JsonWriter
-from assur._text import counted, number_text
+from assur._text import counted
 from assur._vec import Array
 from assur.dynamics_flywheel import SMALLEST_DELTA
 from assur.dynamics_model import result as dynamics_rows
@@ -382,16 +383,4 @@ def _readable(table: Any, forces: bool, total: int) -> str:
         ]
     units = [table.column(c).unit for c in names]
     columns = [np.asarray(table[c])[:ROWS_SHOWN] for c in names]
-    marks = [f"[{u}]" if u else "" for u in units]
-    cells = [[number_text(v) for v in row] for row in zip(*columns, strict=True)]
-    widths = [
-        max(len(n), len(m), *(len(r[i]) for r in cells))
-        for i, (n, m) in enumerate(zip(names, marks, strict=True))
-    ]
-    lines = [
-        "  ".join(x.rjust(w) for x, w in zip(row, widths, strict=True))
-        for row in (names, marks, *cells)
-    ]
-    if total > ROWS_SHOWN:
-        lines.append(f"... {total - ROWS_SHOWN} more rows: --csv PATH or --json")
-    return "\n".join(lines)
+    return format_table(names, units, columns, total, ROWS_SHOWN, terminal_width())

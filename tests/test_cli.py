@@ -667,6 +667,9 @@ def test_minus_zero_is_shown_as_zero(capsys):
 
     text = format_table(["a", "b"], ["N", "m"], [np.array([-0.0]), np.array([-1.5])], 1)
     assert text.splitlines()[2].split() == ["0", "-1.5"]
+    # one row more than shown: "1 more rows" it said
+    text = format_table(["a"], ["N"], [np.array([1.0])], 2, limit=1)
+    assert text.splitlines()[-1] == "... 1 more row: --csv PATH or --json for all"
     out, _ = succeeds(capsys, ["dynamics", EXAMPLES / "four_bar.toml", "--angles", "0"])
     assert "  motor torque " in out
     assert "-0 " not in out
