@@ -10,14 +10,14 @@ passes.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 from assur._diagnosis import _miscount
 from assur._group import Group, _describe
 from assur._group_search import _attach
-from assur._text import counted, roman, suggest
+from assur._text import counted, describe, roman, suggest
 from assur._topology import Pair, Topology, _index, _public, topology
 from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, mechanism_of
@@ -202,31 +202,36 @@ class DriverChoiceError(DecompositionError):
     names the argument as the library spells it (:meth:`spelled` as another does).
     """
 
-    def __init__(self, reason: str, counted: bool = False) -> None:
+    def __init__(self, reason: str, counted: bool = False, inputs: int = 1) -> None:
         self.reason = reason
         self.counted = counted
+        self.inputs = inputs
         super().__init__(self.spelled("driver", "driver="))
 
     def spelled(self, name: str, setting: str) -> str:
         """Return the message with the argument named ``name`` (set as ``setting``)."""
+        sets = "one input" if self.inputs == 1 else f"{self.inputs} inputs"
         note = (
-            f" ({setting} sets one input; without it the file's drivers are used)"
+            f" ({setting} sets {sets}; without it the file's drivers are used)"
             if self.counted
             else ""
         )
         return f"{name}: {self.reason}{note}"
 
 
-def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
+def structure(
+    mechanism: Mechanism, driver: str | Sequence[str] | None = None
+) -> Structure:
     """Analyse the structure of ``mechanism``: mobility and Assur groups.
 
     Parameters
     ----------
     mechanism : Mechanism
         The mechanism to analyse, with one driver per degree of freedom.
-    driver : str, optional
+    driver : str or sequence of str, optional
         Analyse with this joint as the only input instead of the file's drivers (the
-        class of a mechanism depends on its input link).
+        class of a mechanism depends on its input link); with several degrees of
+        freedom, a joint for each (``["A", "E"]``).
 
     Returns
     -------
@@ -248,14 +253,18 @@ def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
     'I(ground, crank) -> II(coupler, rocker)'
     """
     mech = mechanism_of(mechanism)
-    if driver is not None:
-        if driver not in {j.name for j in mech.joints}:
-            known = [j.name for j in mech.joints if GROUND in j.links]
-            msg = f"unknown joint {driver!r}{suggest(driver, known)}"
-            raise DriverChoiceError(msg)
+    chosen = [driver] if isinstance(driver, str) else driver
+    if chosen is not None:
+        joints = {j.name for j in mech.joints}
+        for name in chosen:
+            if name not in joints:
+                known = [j.name for j in mech.joints if GROUND in j.links]
+                msg = f"unknown joint {describe(name)}{suggest(str(name), known)}"
+                raise DriverChoiceError(msg)
         omega = mech.drivers[0].omega if mech.drivers else 1.0
         try:
-            mech = dataclasses.replace(mech, drivers=(Driver(driver, omega),))
+            inputs = tuple(Driver(name, omega) for name in chosen)
+            mech = dataclasses.replace(mech, drivers=inputs)
         except ModelError as err:
             raise DriverChoiceError(str(err).split(": ", 1)[-1]) from None
     if not mech.drivers and mobility(mech) <= 0:
@@ -269,7 +278,7 @@ def structure(mechanism: Mechanism, driver: str | None = None) -> Structure:
             raise
         # the count of inputs is the option's doing, not the file's
         reason = str(err).split(": ", 1)[-1]
-        raise DriverChoiceError(reason, counted=True) from None
+        raise DriverChoiceError(reason, True, len(chosen or ())) from None
     n = len(mech.links)
     p4 = len(topo.slots)
     return Structure(

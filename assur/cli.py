@@ -80,7 +80,12 @@ def _parser() -> tuple[_Parser, list[str]]:
     p.add_argument(
         "--json", action="store_true", help="print JSON instead of the report"
     )
-    p.add_argument("--driver", metavar="JOINT", help="analyse with this joint as input")
+    p.add_argument(
+        "--driver",
+        metavar="JOINT",
+        help="analyse with this joint as input (several degrees of freedom: one "
+        "joint each, separated by commas)",
+    )
     for name, text in (
         ("kinematics", "positions, velocities, accelerations, jerks"),
         ("forces", "inertia loads, joint reactions, balancing torque"),
@@ -313,7 +318,8 @@ def _cmd_structure(args: argparse.Namespace) -> int:
 
     mech = load_mechanism(args.file)
     try:
-        s = structure(mech, driver=args.driver)
+        chosen = args.driver
+        s = structure(mech, chosen.split(",") if chosen and "," in chosen else chosen)
     except DriverChoiceError as err:
         # the option, not the file: named as the command line spells it
         raise UsageError(err.spelled("--driver", "--driver")) from err

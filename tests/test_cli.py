@@ -177,6 +177,22 @@ def test_driver_option_on_two_degrees_of_freedom(capsys):
     assert text.endswith(
         "(--driver sets one input; without it the file's drivers are used)"
     )
+    # one joint for each degree of freedom, separated by commas, in any order
+    out, _ = succeeds(capsys, ["structure", path, "--driver", "E,A"])
+    s = assur.structure(assur.load(path), driver=["E", "A"])
+    assert out == str(s) + "\n"
+    assert [g.internal for g in s.drivers] == [("E",), ("A",)]
+    assert s.formula.count("I(ground") == 2
+    text = fails(capsys, ["structure", path, "--driver", "A,A"], path)
+    assert text == (
+        "--driver: joint 'A' is driven twice; expected each driver on a joint of its "
+        "own"
+    )
+    four = EXAMPLES / "four_bar.toml"
+    text = fails(capsys, ["structure", four, "--driver", "O2,O4"], four)
+    assert text.endswith(
+        "(--driver sets 2 inputs; without it the file's drivers are used)"
+    )
 
 
 def test_driver_option_unknown_joint(capsys):
