@@ -70,21 +70,52 @@ def disagreement(xs: Array, ys: Array) -> tuple[float, float] | None:
     """Return the first entry past the first turn whose value is not the first turn's.
 
     As ``(position, the position a whole number of turns before)``, deg; None
-    when every entry past the first turn repeats it (or there are none).
+    when every entry past the first turn repeats it (or there are none). A step
+    (a position given twice) is compared side by side: the value before it with
+    the value before the first turn's, the value after with the value after. A
+    step where the first turn ends, a turn from its start, must agree so with the
+    start.
     """
     first = _first_turn(xs)
+    head, values = _closed(xs[first], ys[first])
+    slack = AGREE * max(1.0, float(np.max(np.abs(ys))))
+    start, end = head[0], head[0] + TURN
+    if head[-1] >= end and len(head) > 2:
+        # the turn's end is its start again: the value arriving there, and the
+        # value after a step there, are the start's, before and after its step
+        if head[0] == head[1] and abs(_before(end, head, values) - values[0]) > slack:
+            return float(head[-1]), float(start)
+        stepped = head[-2] == head[-1]
+        after = interpolate(np.array([start]), head, values)[0]
+        if stepped and abs(values[-1] - after) > slack:
+            return float(head[-1]), float(start)
     if first.all():
         return None
-    head, values = _closed(xs[first], ys[first])
     later = np.flatnonzero(np.logical_not(first))
-    back = xs[0] + np.remainder(xs[later] - xs[0], TURN)
+    back = start + np.remainder(xs[later] - start, TURN)
     expected = interpolate(back, head, values)
-    slack = AGREE * max(1.0, float(np.max(np.abs(ys))))
+    # the first of two equal positions is a step's value before it
+    steps = later[:-1][xs[later[:-1]] == xs[later[:-1] + 1]]
+    for k in np.flatnonzero(np.isin(later, steps)):
+        expected[k] = _before(float(back[k]), head, values)
     bad = np.flatnonzero(np.abs(expected - ys[later]) > slack)
     if not bad.size:
         return None
     k = int(bad[0])
     return float(xs[later[k]]), float(back[k])
+
+
+def _before(at: float, xs: Array, ys: Array) -> float:
+    """Return a closed turn's value just before position ``at`` (a step's first).
+
+    Just before the turn's start is just before its end, a turn on.
+    """
+    if at <= xs[0]:
+        at += TURN
+    j = int(np.clip(np.searchsorted(xs, at, side="left") - 1, 0, len(xs) - 2))
+    width = xs[j + 1] - xs[j]
+    w = 1.0 if width == 0.0 else min(1.0, max(0.0, (at - xs[j]) / width))
+    return float((1.0 - w) * ys[j] + w * ys[j + 1])
 
 
 def _first_turn(xs: Array) -> Array:
