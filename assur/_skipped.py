@@ -8,8 +8,8 @@ from typing import Any
 
 import numpy as np
 
-from assur._output import path_text
 from assur._runs import telling_apart
+from assur._stdin import input_text
 from assur._text import counted, position_text
 from assur._troubles import skipped_why
 from assur._vec import Array
@@ -85,4 +85,4 @@ class Skipped:
             shown = "; ".join(position_text(self.kinds, v, digits) for v in self.values)
             shown += more.replace(",", ";")
         left = counted(self.count, "position")
-        return f"assur: note: {path_text(source)}: left out {left} {self.why}: {shown}"
+        return f"assur: note: {input_text(source)}: left out {left} {self.why}: {shown}"

@@ -26,14 +26,22 @@ def input_text(path: Any) -> str:
     return WHERE if str(path) == STDIN else path_text(path)
 
 
+def _terminal(stream: Any) -> bool:
+    """Whether ``stream`` is a terminal."""
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, OSError, ValueError):
+        return False
+
+
 def from_stdin() -> Any:
     """Return the mechanism read from standard input, validated.
 
     Raises
     ------
     ModelError
-        With a message naming ``<stdin>``: closed, larger than the cap of a
-        mechanism file, not UTF-8, or a fault of the mechanism.
+        With a message naming ``<stdin>``: closed or a terminal, larger than the
+        cap of a mechanism file, not UTF-8, or a fault of the mechanism.
     """
     from assur._file_syntax import _decoded
     from assur.io import MAX_FILE_BYTES, loads
@@ -41,6 +49,13 @@ def from_stdin() -> Any:
     stream = getattr(sys.stdin, "buffer", None)
     if stream is None:
         msg = f"{WHERE}: standard input is closed; expected a mechanism file piped in"
+        raise ModelError(msg)
+    if _terminal(sys.stdin):
+        # reading would wait, without a word, for a file typed in
+        msg = (
+            f"{WHERE}: standard input is a terminal; expected a mechanism file piped "
+            "in (assur structure - < four_bar.toml)"
+        )
         raise ModelError(msg)
     try:
         # one byte beyond the cap tells a file too large from one just large

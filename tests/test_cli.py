@@ -535,6 +535,14 @@ def test_the_mechanism_read_from_standard_input(capsys, monkeypatch):
         "assur: error: <stdin>: standard input is closed; expected a mechanism file "
         "piped in\n"
     )
+    # a terminal: reading waited, without a word, for a file typed in
+    piped(text)
+    monkeypatch.setattr(sys.stdin, "isatty", lambda: True)
+    assert main(["structure", "-"]) == 2
+    assert capsys.readouterr().err == (
+        "assur: error: <stdin>: standard input is a terminal; expected a mechanism "
+        "file piped in (assur structure - < four_bar.toml)\n"
+    )
 
 
 def test_csv_to_a_path(tmp_path, capsys):
@@ -646,6 +654,15 @@ def test_skip_unassembled(double_rocker, capsys):
         "where a group cannot be assembled, stands at a dead centre or is locked by "
         "friction, or that the mechanism cannot reach from its reference pose: "
     )
+    # read from standard input, the note names it as errors do ("-: left out ...")
+    import io
+
+    data = io.BytesIO(double_rocker.read_bytes())
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(sys, "stdin", io.TextIOWrapper(data))
+        argv = ["kinematics", "-", "--angles", "0:360:30", "--skip-unassembled"]
+        _, err = succeeds(capsys, [*argv, "--csv", "-"])
+    assert err.startswith("assur: note: <stdin>: left out 11 positions ")
     out, err = succeeds(
         capsys,
         [

@@ -144,7 +144,7 @@ RANKS = {
     "assur": 11,
     "assur._cli_common": 12,
     "assur._cli_types": 12,
-    "assur._stdin": 11,
+    "assur._stdin": 10,
     "assur._cli_parser": 11,
     # the command line's parts, apart from its parser and dispatch (the cycle check
     # keeps them apart): signals and standard streams; the sweep commands' tables,
