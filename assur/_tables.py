@@ -96,8 +96,8 @@ def disagreement(xs: Array, ys: Array) -> tuple[float, float] | None:
     expected = interpolate(back, head, values)
     # the first of two equal positions is a step's value before it
     steps = later[:-1][xs[later[:-1]] == xs[later[:-1] + 1]]
-    for k in np.flatnonzero(np.isin(later, steps)):
-        expected[k] = _before(float(back[k]), head, values)
+    for step in np.flatnonzero(np.isin(later, steps)):
+        expected[step] = _before(float(back[step]), head, values)
     bad = np.flatnonzero(np.abs(expected - ys[later]) > slack)
     if not bad.size:
         return None

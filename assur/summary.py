@@ -60,8 +60,10 @@ class Summary:
     _rubbing: bool = False
     _crank: bool = False
     """One revolute driver: a sweep may end where it began, a turn on."""
-    clockwise: bool = False
-    """The first driver is a crank turning clockwise (its mean speed below 0)."""
+    clockwise: tuple[str, ...] = ()
+    """The joints of the cranks turning clockwise (their mean speed below 0)."""
+    drivers: int = 0
+    """The mechanism's number of drivers."""
     _ends: list[float] = field(default_factory=list)
     """The first and the last driver position added (deg)."""
     _tail: dict[str, Any] = field(default_factory=dict)
@@ -169,8 +171,13 @@ class Summary:
                 units[f"shaking.{part}.at"] = unit
         self._rubbing = any(p.friction > 0.0 for p in plan.pairs.values())
         self._crank = len(plan.drivers) == 1 and plan.drivers[0].kind == "R"
-        if plan.drivers[0].kind == "R" and len(table):
-            self.clockwise = bool(np.mean(table.state.speed[0]) < 0.0)
+        self.drivers = len(plan.drivers)
+        if len(table):
+            self.clockwise = tuple(
+                d.pair.name
+                for i, d in enumerate(plan.drivers)
+                if d.kind == "R" and np.mean(table.state.speed[i]) < 0.0
+            )
         if self._rubbing:
             for name, pair in plan.pairs.items():
                 if pair.friction > 0.0 and not pair.virtual:

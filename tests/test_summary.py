@@ -181,11 +181,26 @@ def test_a_clockwise_crank_s_summary_says_which_sign_drives(capsys, tmp_path):
     assert said[0] == (
         "  (the crank turns clockwise and torques are counter-clockwise positive:"
     )
+    assert main(["forces", str(path), "--summary", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["clockwise"] == ["A"]
     # turning counter-clockwise, the summary needs no word on signs
     assert (
         main(["forces", str(EXAMPLES / "slider_crank_exercise.toml"), "--summary"]) == 0
     )
     assert "clockwise" not in capsys.readouterr().out
+    # two cranks, one of them clockwise: that one is named ("the crank" was said)
+    text = (EXAMPLES / "five_bar_two_cranks.toml").read_text(encoding="utf-8")
+    first = text.index("omega = 10.0")
+    five = tmp_path / "five.toml"
+    five.write_text(text[:first] + "omega = -10.0" + text[first + 12 :], "utf-8")
+    assert main(["forces", str(five), "--summary"]) == 0
+    said = capsys.readouterr().out.splitlines()[-3:]
+    assert said[0] == (
+        "  (the crank at A turns clockwise and torques are counter-clockwise positive:"
+    )
+    assert said[1] == (
+        "   a torque that drives it is negative; a positive power is work the"
+    )
 
 
 def test_kinematics_and_empty_tables_have_no_summary():
