@@ -46,13 +46,14 @@ class Running:
         if not values.shape[1]:
             return
         rows = np.arange(values.shape[0])
-        k = np.argmax(values, axis=1)
+        # a NaN is no number to be largest or smallest: argmax took it for the
+        # largest, and the slice's own largest was lost (the sums do carry it)
+        k = np.argmax(np.where(np.isnan(values), -np.inf, values), axis=1)
         best = values[rows, k]
-        # a NaN is never larger: the largest stays the largest number, as max() does
         better = best > self.top
         self.top = np.where(better, best, self.top)
         self.at = np.where(better, where[rows, k], self.at)
-        self.bottom = np.fmin(self.bottom, np.min(values, axis=1))
+        self.bottom = np.fmin(self.bottom, np.fmin.reduce(values, axis=1))
         self.total = self.total + np.sum(values, axis=1)
         self.squares = self.squares + np.einsum("ij,ij->i", values, values)
         self.last = values[:, -1]

@@ -105,6 +105,8 @@ class Structure:
                 "internal_pairs": list(g.internal),
                 "external_pairs": list(g.external),
                 "attached_to": list(g.attached_to),
+                # class III and higher: what sets the class (see Group.basis)
+                **({"base": g.base, "basis": list(g.basis)} if g.basis else {}),
             }
 
         return {
@@ -243,7 +245,9 @@ def structure(
     Raises
     ------
     DecompositionError
-        When the mobility differs from the number of drivers or links are left over.
+        When the mobility differs from the number of drivers, links are left over,
+        or the file has no driver and its links cannot move (a rigid structure,
+        which is no mechanism).
 
     Examples
     --------

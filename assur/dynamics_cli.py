@@ -99,7 +99,7 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "--delta",
         type=number,
         metavar="D",
-        help="find the flywheel for this coefficient of speed fluctuation, "
+        help="find the flywheel for this coefficient of speed fluctuation "
         f"(max w - min w) / omega, from {SMALLEST_DELTA:g} to below 2",
     )
     p.add_argument(

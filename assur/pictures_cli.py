@@ -336,15 +336,13 @@ def _cmd_report(args: argparse.Namespace) -> int:
         )
         raise UsageError(msg) from err
     mech = load_mechanism(args.file)
+    sweep = positions(mech, args.angles)  # the default sweep when none is given
     angles = (
-        None
-        if args.angles is None
-        else _drawn(positions(mech, args.angles), "the page holds every position")
+        None if args.angles is None else _drawn(sweep, "the page holds every position")
     )
     from assur._progress import BAR_DELAY, progress
 
-    n = len(positions(mech, args.angles) if angles is None else angles)
-    shown = progress("report", n, _show(args), BAR_DELAY, " positions")
+    shown = progress("report", len(sweep), _show(args), BAR_DELAY, " positions")
     with _figures(), shown as bar:
         # the sweep's positions (most of the work on a long one), told to the bar
         write_report(mech, output, angles, lambda done, _: bar.advance(done - bar.done))
@@ -354,7 +352,6 @@ def _cmd_report(args: argparse.Namespace) -> int:
     from assur.plan import plan_of
 
     plan = plan_of(mech)
-    sweep = positions(mech, args.angles) if angles is None else angles
     _, skipped = _kept(mech, sweep, not compile_loads(plan).empty, True)
     _say_skipped(args, skipped, plan)
     _wrote(args, path_text(output))

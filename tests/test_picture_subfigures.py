@@ -10,6 +10,7 @@ from __future__ import annotations
 import functools
 import inspect
 import io
+import types
 from collections.abc import Callable
 from typing import Any
 
@@ -119,3 +120,18 @@ def test_the_root_figure_is_found_through_nested_subfigures() -> None:
     ax = inner.subplots()
     assert root_figure(ax) is fig
     assert root_figure(fig.subplots()) is fig
+
+
+def test_the_root_figure_before_matplotlib_3_10() -> None:
+    # get_figure() took no root= before 3.10; a SubFigure's ``figure`` was its
+    # root Figure then, and a Figure's itself
+    class Old:
+        def __init__(self, holder: object) -> None:
+            self.figure = holder
+
+        def get_figure(self) -> object:
+            return self.figure
+
+    root = plt.figure()
+    sub = types.SimpleNamespace(figure=root)
+    assert root_figure(Old(sub)) is root

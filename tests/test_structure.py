@@ -905,6 +905,11 @@ def test_to_dict_is_json():
     assert data["groups"][0]["order"] == 2
     assert data["drivers"][0]["internal_pairs"] == ["O2"]
     assert set(data["groups"][1]["attached_to"]) == {"lever", "ground"}
+    assert "base" not in data["groups"][0]  # a dyad's class needs no reason
+    # a triad's base link and its internal pairs, as the report gives them
+    (triad,) = assur.structure(six_bar()).to_dict()["groups"]
+    assert triad["base"] == "plate"
+    assert sorted(triad["basis"]) == ["C", "D", "E"]
 
 
 def test_the_docs_state_the_search_as_the_code_does():

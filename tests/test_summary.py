@@ -90,6 +90,23 @@ def test_summary_is_numpy_reductions_of_the_table(example):
         assert got[key] == pytest.approx(value, rel=1e-12, abs=1e-12 * n), key
 
 
+def test_a_value_that_is_not_a_number_is_neither_largest_nor_smallest():
+    from assur._running import Running
+
+    running = Running.start(2)
+    where = np.array([[0.0, 10.0, 20.0], [0.0, 10.0, 20.0]])
+    running.add(np.array([[1.0, np.nan, 5.0], [np.nan, np.nan, np.nan]]), where)
+    # argmax took the NaN for the largest and lost 5 at 20 deg; min gave NaN
+    assert running.top[0] == 5.0
+    assert running.at[0] == 20.0
+    assert running.bottom[0] == 1.0
+    assert np.isnan(running.total[0])  # the mean says there was one
+    assert (running.top[1], running.bottom[1]) == (-np.inf, np.inf)  # none yet
+    running.add(np.array([[7.0], [2.0]]), np.array([[30.0], [30.0]]))
+    assert running.top.tolist() == [7.0, 2.0]
+    assert running.at.tolist() == [30.0, 30.0]
+
+
 def test_a_summary_by_slices_is_the_summary_of_the_whole():
     mech = assur.load(EXAMPLES / "slider_crank_friction.toml")
     positions = default_positions(mech, 1.0)
