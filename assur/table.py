@@ -181,7 +181,8 @@ class Table(Columns):
         if found is None:
             from assur._kinematics import extend
 
-            found = self._states[level] = extend(self.plan, self.state)
+            with np.errstate(all="ignore"):  # the sweep's own troubles were told
+                found = self._states[level] = extend(self.plan, self.state)
             freeze((found.motion, found.slide))
         return found
 
@@ -233,7 +234,10 @@ class Table(Columns):
                 c for c in self._families[column.family] if c.name not in cache
             )
         else:
-            self._store(evaluate(self, column))
+            # values that are not finite were named by the sweep (a warning):
+            # the columns built from them say nothing more
+            with np.errstate(all="ignore"):
+                self._store(evaluate(self, column))
         return self._cache[name]
 
     def __repr__(self) -> str:
@@ -263,7 +267,8 @@ class Table(Columns):
 
     def _compute(self, columns: Iterable[Column]) -> None:
         """Compute ``columns`` (and those computed along with them) into the cache."""
-        self._store(materialize(self, columns))
+        with np.errstate(all="ignore"):  # as in __getitem__
+            self._store(materialize(self, columns))
 
     def _store(self, found: dict[str, Array]) -> None:
         """Keep the columns ``found`` together, read-only for good.

@@ -341,7 +341,7 @@ def check_table(table: assur.Table, explained: list[str]) -> Outcome | None:
             continue
         column = table.column(name)
         bad &= ~_documented(column, values, scale, speed, force, table.mechanism)
-        if bad.any() and not _named(column.owner, explained):
+        if bad.any() and not _told(column, table, explained):
             row = int(np.flatnonzero(bad)[0])
             return Outcome(
                 "failure",
@@ -390,6 +390,22 @@ def _documented(
         couple = np.isfinite(m) & (m > 1e11 * scale * normal)
         return np.isnan(v) & np.isfinite(f) & (none | couple)
     return np.zeros(v.shape, dtype=bool)
+
+
+def _told(column: Any, table: assur.Table, explained: list[str]) -> bool:
+    """Whether an AssurWarning names the owner of ``column``, or what it is built on.
+
+    A point (a joint, a centre of mass) moves with the link that carries it: a
+    warning naming that link names it too. A warning whose list of owners ends in
+    "..." names more than it shows.
+    """
+    if _named(column.owner, explained):
+        return True
+    if column.family == "point":
+        body, _ = table.plan.point_of(column.owner)
+        if _named(table.plan.bodies[body], explained):
+            return True
+    return any(", ... are not finite" in m for m in explained)
 
 
 def _named(owner: str, explained: list[str]) -> bool:
