@@ -114,10 +114,12 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
         # a crank's angle is read modulo 360: entries a turn apart are one position
         found = disagreement(xs, np.asarray(seq, dtype=float))
         if found is not None:
+            at, other, which = found
+            how = "before" if other < at else "after"
             _fail(
                 entry,
-                f"the value at {found[0]:g} deg is not the one at {found[1]:g} deg, a "
-                "whole number of turns before; expected values that repeat from turn "
+                f"the value {which}at {at:g} deg is not the one at {other:g} deg, a "
+                f"whole number of turns {how}; expected values that repeat from turn "
                 "to turn (the crank's angle is read modulo 360)",
             )
 

@@ -66,15 +66,15 @@ def periodic(xs: Array, values: Any, at: Array) -> list[Array]:
     ]
 
 
-def disagreement(xs: Array, ys: Array) -> tuple[float, float] | None:
+def disagreement(xs: Array, ys: Array) -> tuple[float, float, str] | None:
     """Return the first entry past the first turn whose value is not the first turn's.
 
-    As ``(position, the position a whole number of turns before)``, deg; None
-    when every entry past the first turn repeats it (or there are none). A step
-    (a position given twice) is compared side by side: the value before it with
-    the value before the first turn's, the value after with the value after. A
-    step where the first turn ends, a turn from its start, must agree so with the
-    start.
+    As ``(position, the position whole turns away, which value)``, deg, the last
+    "" or, for a step, "before the step " or "after the step "; None when every
+    entry past the first turn repeats it (or there are none). A step (a position
+    given twice) is compared side by side: the value before it with the value
+    before the first turn's, the value after with the value after. A step where
+    the first turn ends, a turn from its start, must agree so with the start.
     """
     first = _first_turn(xs)
     head, values = _closed(xs[first], ys[first])
@@ -84,11 +84,11 @@ def disagreement(xs: Array, ys: Array) -> tuple[float, float] | None:
         # the turn's end is its start again: the value arriving there, and the
         # value after a step there, are the start's, before and after its step
         if head[0] == head[1] and abs(_before(end, head, values) - values[0]) > slack:
-            return float(head[-1]), float(start)
+            return float(start), float(head[-1]), "before the step "
         stepped = head[-2] == head[-1]
         after = interpolate(np.array([start]), head, values)[0]
         if stepped and abs(values[-1] - after) > slack:
-            return float(head[-1]), float(start)
+            return float(head[-1]), float(start), "after the step "
     if first.all():
         return None
     later = np.flatnonzero(np.logical_not(first))
@@ -102,7 +102,8 @@ def disagreement(xs: Array, ys: Array) -> tuple[float, float] | None:
     if not bad.size:
         return None
     k = int(bad[0])
-    return float(xs[later[k]]), float(back[k])
+    which = "before the step " if later[k] in steps else ""
+    return float(xs[later[k]]), float(back[k]), which
 
 
 def _before(at: float, xs: Array, ys: Array) -> float:

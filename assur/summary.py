@@ -155,11 +155,13 @@ class Summary:
                     units[f"{column.name}.{part}"] = column.unit
         units["driver.power.mean"] = "W"
         units["driver.power.max"] = "W"
+        units["driver.power.min"] = "W"
         self._peaks["driver"] = Running.start(self.variants)
         if len(plan.drivers) > 1:
             for driver in plan.drivers:
                 units[f"{driver.pair.name}.power.mean"] = "W"
                 units[f"{driver.pair.name}.power.max"] = "W"
+                units[f"{driver.pair.name}.power.min"] = "W"
                 self._own[driver.pair.name] = 0.0
                 self._peaks[driver.pair.name] = Running.start(self.variants)
         # a table made with columns= summarises the shaking loads it holds
@@ -238,11 +240,13 @@ class Summary:
         power = less(self._power, self._tail.get("power"))
         out["driver.power.mean"] = _per_variant(power / n, self.variants)
         out["driver.power.max"] = self._peaks["driver"].top
+        out["driver.power.min"] = self._peaks["driver"].bottom
         for name, own in self._own.items():
             out[f"{name}.power.mean"] = _per_variant(
                 less(own, self._tail.get(name)) / n, self.variants
             )
             out[f"{name}.power.max"] = self._peaks[name].top
+            out[f"{name}.power.min"] = self._peaks[name].bottom
         for part, r in self._shaking.items():
             out[f"shaking.{part}.max"] = r.top
             out[f"shaking.{part}.at"] = r.at

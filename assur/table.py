@@ -311,10 +311,12 @@ class Table(Columns):
         as the column ``driver.torque`` is, and every driver's own ``J.torque.*``
         is given too: size each motor on its own);
         ``driver.power.mean``, the mean of the balancing loads times the drivers'
-        speeds (W), all drivers' together, and ``driver.power.max``, its largest
-        value (with several, each one's own too: ``J.power.mean``,
-        ``J.power.max``, J its joint); for every sliding pair J also ``J.M.max``,
-        the largest couple of its reaction (N m), and ``J.M.at``; the largest
+        speeds (W), all drivers' together, and ``driver.power.max`` and
+        ``driver.power.min``, its largest and smallest values (the most the drivers
+        supply, and, negative, the most they take back; with several, each one's
+        own too: ``J.power.mean``, ``J.power.max``, ``J.power.min``, J its
+        joint); for every sliding pair J also ``J.M.max``, the largest couple of
+        its reaction (N m), and ``J.M.at``; the largest
         shaking force ``shaking.F.max`` (N, the size of ``shaking.Fx``,
         ``shaking.Fy``) and moment ``shaking.M.max`` (N m, its size), with
         ``shaking.F.at`` and ``shaking.M.at``. With friction also

@@ -64,6 +64,7 @@ def test_with_several_drivers_each_one_s_power_is_summed_too():
         own[name] = float(np.mean(power))
         assert found[f"{name}.power.mean"] == pytest.approx(own[name], rel=1e-12)
         assert found[f"{name}.power.max"] == pytest.approx(power.max(), rel=1e-12)
+        assert found[f"{name}.power.min"] == pytest.approx(power.min(), rel=1e-12)
         both = table["A.torque"] * table["left_crank.omega"]
         both = both + table["E.torque"] * table["right_crank.omega"]
         assert found["driver.power.max"] == pytest.approx(both.max(), rel=1e-12)

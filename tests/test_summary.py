@@ -83,6 +83,7 @@ def test_summary_is_numpy_reductions_of_the_table(example):
         powers += table[name] * d.omega
     expected["driver.power.mean"] = power
     expected["driver.power.max"] = float(powers.max())
+    expected["driver.power.min"] = float(powers.min())
     rubbing = any(j.friction for j in example.joints)
     assert set(got) >= set(expected)
     assert ("efficiency" in got) == rubbing
@@ -171,7 +172,7 @@ def test_a_table_of_few_columns_summarises_the_loads_among_them():
     mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
     at = np.arange(0.0, 360.0, 5.0)
     whole = assur.forces(mech, at).summary()
-    power = ["driver.power.mean", "driver.power.max"]
+    power = ["driver.power.mean", "driver.power.max", "driver.power.min"]
     for columns, named in [
         (["guide.M"], ["guide.M.max", "guide.M.at", *power]),
         (["shaking.M"], [*power, "shaking.M.max", "shaking.M.at"]),
