@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._cli_types import plain_number
 from assur._output import path_text, standard_output
 from assur._text import counted, describe
 from assur.errors import UsageError
@@ -74,7 +75,7 @@ def _one_range(text: str, option: str) -> np.ndarray:
     """Return the positions of one ``START:STOP:STEP`` or of a single value."""
     fields = text.split(":")
     try:
-        values = [float(f) for f in fields]
+        values = [plain_number(f) for f in fields]
     except ValueError:
         values = []
     if len(values) == 1 and math.isfinite(values[0]):
@@ -204,7 +205,7 @@ def one_position(mech: Any, spec: str | None) -> Any:
     values = []
     for part in parts:
         try:
-            value = float(part)
+            value = plain_number(part)
         except ValueError:
             value = math.nan
         if not math.isfinite(value):

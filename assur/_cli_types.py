@@ -9,6 +9,7 @@ line.
 from __future__ import annotations
 
 import argparse
+import re
 from pathlib import Path
 from typing import Any
 
@@ -51,6 +52,25 @@ def _named(text: str, what: str) -> str:
     return text
 
 
+NUMBER = re.compile(
+    r"\s*[+-]?((\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?|inf|infinity|nan)\s*",
+    re.I | re.ASCII,
+)
+"""A number as the command line reads one: ``float``'s syntax without the digit
+separators (``1_0``) and the digits of other scripts (``٤٥``) it also takes."""
+
+
+def plain_number(text: str) -> float:
+    """Return ``text`` as a float; ValueError for what :data:`NUMBER` refuses."""
+    if not NUMBER.fullmatch(text):
+        raise ValueError(text)
+    return float(text)
+
+
+WHOLE = re.compile(r"\s*[+-]?\d+\s*", re.ASCII)
+"""A whole number as the command line reads one (``int`` takes ``1_0`` too)."""
+
+
 def number(text: str) -> float:
     """Return the number ``text`` (an argparse type); say what was expected if not.
 
@@ -63,7 +83,7 @@ def number(text: str) -> float:
         For text that is not a number.
     """
     try:
-        return float(text)
+        return plain_number(text)
     except ValueError:
         msg = f"expected a number, got {describe(text)}"
         raise argparse.ArgumentTypeError(msg) from None
@@ -78,6 +98,8 @@ def whole_number(text: str) -> int:
         For text that is not a whole number (``1.5``, ``1e3``).
     """
     try:
+        if not WHOLE.fullmatch(text):
+            raise ValueError(text)
         return int(text)
     except ValueError:
         msg = f"expected a whole number, got {describe(text)}"

@@ -101,6 +101,9 @@ def test_file_not_in_utf8(tmp_path, capsys):
         ("0:10", "cannot read '0:10'"),
         ("", "cannot read ''"),
         ("0:10:5:1", "cannot read '0:10:5:1'"),
+        # float() takes them, a reader would not: digit separators, other digits
+        ("1_0", "cannot read '1_0'"),
+        ("\u0664\u0665", "cannot read '\u0664\u0665'"),
         # read, and no position: "cannot read 'inf'" was said
         ("nan", "'nan' holds a number that is not finite"),
         ("0:inf:1", "'0:inf:1' holds a number that is not finite"),
@@ -276,6 +279,16 @@ def test_driver_option_off_the_frame(capsys):
             ["animate", "x.toml", "-o", "a.gif", "--fps", "fast"],
             "animate: argument --fps: expected a number, got 'fast' (see 'assur "
             "animate --help')",
+        ),
+        (
+            ["animate", "x.toml", "-o", "a.gif", "--frames", "1_0"],
+            "animate: argument --frames: expected a whole number, got "
+            "'1_0' (see 'assur animate --help')",
+        ),
+        (
+            ["plot", "x.toml", "-o", "p.png", "--dpi", "1_50"],
+            "plot: argument --dpi: expected a number, got '1_50' (see 'assur plot "
+            "--help')",
         ),
         (
             ["dynamics", "x.toml", "--turns", "2.5"],
