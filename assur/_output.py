@@ -266,7 +266,10 @@ def _move_all(items: list[Path], target: Path, temporary: Path) -> None:
     for item in items:
         place = target / item.name
         if place.is_dir() and not place.is_symlink():
-            msg = f"{path_text(place)}: cannot write the file (it is a folder)"
+            msg = (
+                f"{path_text(place)}: cannot write the file (it is a folder); "
+                "expected a file, or nothing, of that name"
+            )
             raise OutputError(msg)
     moved: list[tuple[Path, bool, Path | None]] = []
     try:

@@ -92,7 +92,10 @@ def _target(path: Path) -> tuple[Path, bool]:
         msg = f"{path_text(path)}: cannot write the file ({err})"
         raise OutputError(msg) from err
     if mode is not None and stat.S_ISDIR(mode):
-        msg = f"{path_text(path)}: cannot write the file (it is a folder)"
+        msg = (
+            f"{path_text(path)}: cannot write the file (it is a folder); expected "
+            "a file name"
+        )
         raise OutputError(msg)
     if mode is not None and not stat.S_ISREG(mode):
         return path, True

@@ -338,6 +338,12 @@ def _cmd_explain(args: argparse.Namespace) -> int:
         args.output = None  # standard output (- or /dev/stdout): the note's Markdown
     if args.output is not None:
         suffix = Path(args.output).suffix.lower()
+        if Path(args.output).is_dir():
+            msg = (
+                f"-o {path_text(args.output)}: is a folder; expected a file name "
+                "ending in .md, .html or .tex"
+            )
+            raise UsageError(msg)
         if suffix not in NOTE_SUFFIXES:
             msg = (
                 f"-o {path_text(args.output)}: unknown type of note "

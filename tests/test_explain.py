@@ -336,6 +336,21 @@ def test_command_line_writes_the_note_to_standard_output_for_a_dash(
     assert list(tmp_path.iterdir()) == []
 
 
+def test_a_note_to_a_folder_is_refused_as_such(tmp_path: Path, capsys) -> None:
+    # "unknown type of note '(none)'", or "cannot write the file" with no more
+    from assur.cli import main
+
+    for name in ("notes", "note.md"):
+        folder = tmp_path / name
+        folder.mkdir()
+        assert main(["explain", str(EXERCISE), "-o", str(folder)]) == 2
+        err = capsys.readouterr().err
+        assert err.endswith(
+            f"-o {folder}: is a folder; expected a file name ending in .md, .html or "
+            ".tex\n"
+        )
+
+
 def test_command_line_compares_answers(capsys) -> None:
     from assur.cli import main
 

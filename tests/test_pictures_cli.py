@@ -403,7 +403,8 @@ def test_diagrams_over_a_folder_in_a_picture_s_place_replace_none(
     status, _, err = _run(capsys, *argv[:3], "0:360:30", *argv[4:])
     assert status == 2
     assert err == (
-        f"assur: error: {out / 'paths.png'}: cannot write the file (it is a folder)\n"
+        f"assur: error: {out / 'paths.png'}: cannot write the file (it is a folder); "
+        "expected a file, or nothing, of that name\n"
     )
     for name, data in old.items():
         if name != "paths.png":
