@@ -2,7 +2,7 @@
 
 For every joint the largest reaction, where it occurs and its RMS (a sliding pair's
 largest couple too); for the driver the largest, smallest, mean and RMS balancing
-load, its mean and largest power; the largest shaking force and moment; with
+load, its mean, largest and smallest power; the largest shaking force and moment; with
 friction the power lost in each joint, in all, and the cycle's mechanical efficiency. A
 :class:`Summary` is built slice by slice, so that a sweep too long for memory is
 summarised as it is analysed; :func:`summarize` does it for one table.
