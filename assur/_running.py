@@ -8,12 +8,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from assur._vec import Array
 
-__all__ = ["Running"]
+__all__ = ["Running", "lasts", "per_variant", "sums"]
 
 
 @dataclass
@@ -57,3 +58,23 @@ class Running:
         self.total = self.total + np.sum(values, axis=1)
         self.squares = self.squares + np.einsum("ij,ij->i", values, values)
         self.last = values[:, -1]
+
+
+def lasts(values: Array, shape: tuple[int, int]) -> Array:
+    """Return each variant's value at its last position (a table of variants).
+
+    Zeros for a table of no positions.
+    """
+    if not shape[1]:
+        return np.zeros(shape[0])
+    return values.reshape(shape)[:, -1]
+
+
+def sums(values: Array, shape: tuple[int, int]) -> Array:
+    """Return the sum of each variant's values (a table of ``shape[0]`` variants)."""
+    return np.sum(values.reshape(shape), axis=1)
+
+
+def per_variant(value: Any, variants: int) -> Array:
+    """Return a value as one number per variant (a sum of none is the float 0)."""
+    return np.broadcast_to(np.asarray(value, dtype=float), (variants,)).copy()

@@ -23,11 +23,15 @@ from typing import Any
 import numpy as np
 
 from assur._evaluate import friction_powers
-from assur._running import Running
+from assur._running import Running, lasts, per_variant, sums
 from assur._vec import Array, full
 from assur.errors import UsageError
 
 __all__ = ["Summary", "efficiency", "summarize", "undefined"]
+
+ROUND_OFF = 1e-12
+"""A couple or shaking load below this share of the largest reaction (times the
+mechanism's size, for a moment) is round-off: the summary gives 0."""
 
 
 @dataclass
@@ -64,6 +68,8 @@ class Summary:
     """The joints of the cranks turning clockwise (their mean speed below 0)."""
     drivers: int = 0
     """The mechanism's number of drivers."""
+    _size: float = 1.0
+    """The mechanism's size (m): a force times it is a moment of the same scale."""
     _ends: list[float] = field(default_factory=list)
     """The first and the last driver position added (deg)."""
     _tail: dict[str, Any] = field(default_factory=dict)
@@ -110,21 +116,21 @@ class Summary:
             speed = full(state.speed[i], n)
             power = full(forces.balancing[i], n) * speed
             total = total + power
-            self._power = self._power + _sums(power, shape)
-            tail["power"] = tail["power"] + _lasts(power, shape)
+            self._power = self._power + sums(power, shape)
+            tail["power"] = tail["power"] + lasts(power, shape)
             name = driver.pair.name
             if name in self._own:
-                self._own[name] = self._own[name] + _sums(power, shape)
+                self._own[name] = self._own[name] + sums(power, shape)
                 self._peaks[name].add(power.reshape(shape), where)
-                tail[name] = _lasts(power, shape)
+                tail[name] = lasts(power, shape)
             if self._rubbing:
                 ideal = full(forces.ideal[i], n) * speed
-                self._ideal = self._ideal + _sums(ideal, shape)
-                tail["ideal"] = tail["ideal"] + _lasts(ideal, shape)
+                self._ideal = self._ideal + sums(ideal, shape)
+                tail["ideal"] = tail["ideal"] + lasts(ideal, shape)
         self._peaks["driver"].add(full(total, n).reshape(shape), where)
         for name, power in friction_powers(table).items():
-            self._losses[name] = self._losses.get(name, 0.0) - _sums(power, shape)
-            tail[f"{name}.friction"] = -_lasts(power, shape)
+            self._losses[name] = self._losses.get(name, 0.0) - sums(power, shape)
+            tail[f"{name}.friction"] = -lasts(power, shape)
         if shape[1]:
             self._tail = tail
             self._ends[:] = [*self._ends[:1], float(where[0, -1])]
@@ -174,6 +180,8 @@ class Summary:
         self._rubbing = any(p.friction > 0.0 for p in plan.pairs.values())
         self._crank = len(plan.drivers) == 1 and plan.drivers[0].kind == "R"
         self.drivers = len(plan.drivers)
+        # a study's variants each have their size: the largest bounds the noise
+        self._size = float(np.max(plan.scale))
         if len(table):
             self.clockwise = tuple(
                 d.pair.name
@@ -221,6 +229,8 @@ class Summary:
             return total - last if closing else total
 
         out: dict[str, Array] = {}
+        tops = [r.top for r in self._joints.values()]
+        force = np.max(tops, axis=0) if tops else np.zeros(self.variants)
         # each joint's reaction, then its couple (columns= may hold the couple alone)
         for name in dict.fromkeys([*self._joints, *self._couples]):
             r = self._joints.get(name)
@@ -230,36 +240,38 @@ class Summary:
                 out[f"{name}.F.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
             couple = self._couples.get(name)
             if couple is not None:
-                out[f"{name}.M.max"] = couple.top
-                out[f"{name}.M.at"] = couple.at
+                top, at = self._settled(couple, force * self._size)
+                out[f"{name}.M.max"], out[f"{name}.M.at"] = top, at
         for name, r in self._drivers.items():
             out[f"{name}.max"] = r.top
             out[f"{name}.min"] = r.bottom
             out[f"{name}.mean"] = less(r.total, r.last) / n
             out[f"{name}.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
         power = less(self._power, self._tail.get("power"))
-        out["driver.power.mean"] = _per_variant(power / n, self.variants)
+        out["driver.power.mean"] = per_variant(power / n, self.variants)
         out["driver.power.max"] = self._peaks["driver"].top
         out["driver.power.min"] = self._peaks["driver"].bottom
         for name, own in self._own.items():
-            out[f"{name}.power.mean"] = _per_variant(
+            out[f"{name}.power.mean"] = per_variant(
                 less(own, self._tail.get(name)) / n, self.variants
             )
             out[f"{name}.power.max"] = self._peaks[name].top
             out[f"{name}.power.min"] = self._peaks[name].bottom
         for part, r in self._shaking.items():
-            out[f"shaking.{part}.max"] = r.top
-            out[f"shaking.{part}.at"] = r.at
+            size = force * (self._size if part == "M" else 1.0)
+            out[f"shaking.{part}.max"], out[f"shaking.{part}.at"] = self._settled(
+                r, size
+            )
         if self._rubbing:
             losses = {
                 name: less(loss, self._tail.get(f"{name}.friction"))
                 for name, loss in self._losses.items()
             }
             for name, loss in losses.items():
-                out[f"{name}.friction.loss"] = _per_variant(loss / n, self.variants)
-            lost = _per_variant(sum(losses.values()) / n, self.variants)
+                out[f"{name}.friction.loss"] = per_variant(loss / n, self.variants)
+            lost = per_variant(sum(losses.values()) / n, self.variants)
             out["friction.loss"] = lost
-            ideal = _per_variant(
+            ideal = per_variant(
                 less(self._ideal, self._tail.get("ideal")) / n, self.variants
             )
             power = out["driver.power.mean"]
@@ -272,6 +284,17 @@ class Summary:
                 [efficiency(*v) for v in zip(power, ideal, lost, strict=True)]
             )
         return out
+
+    def _settled(self, r: Running, size: Array) -> tuple[Array, Array]:
+        """Return a largest size and where it is; 0 at the first position if noise.
+
+        A couple that is zero but for round-off (an in-line slider's guide,
+        7e-15 N m beside reactions of 1e3 N) had its largest at wherever the
+        round-off peaked: 0 now, at the sweep's first position, as exact zeros are.
+        """
+        noise = r.top <= ROUND_OFF * size
+        first = self._ends[0] if self._ends else math.nan
+        return np.where(noise, 0.0, r.top), np.where(noise, first, r.at)
 
     def closes(self) -> bool:
         """Whether the positions end a whole number of turns on from where they began.
@@ -286,26 +309,6 @@ class Summary:
         return last != first and abs(turns - round(turns)) <= 1e-12 * max(
             1.0, abs(turns)
         )
-
-
-def _lasts(values: Array, shape: tuple[int, int]) -> Array:
-    """Return each variant's value at its last position (a table of variants).
-
-    Zeros for a table of no positions.
-    """
-    if not shape[1]:
-        return np.zeros(shape[0])
-    return values.reshape(shape)[:, -1]
-
-
-def _sums(values: Array, shape: tuple[int, int]) -> Array:
-    """Return the sum of each variant's values (a table of ``shape[0]`` variants)."""
-    return np.sum(values.reshape(shape), axis=1)
-
-
-def _per_variant(value: Any, variants: int) -> Array:
-    """Return a value as one number per variant (a sum of none is the float 0)."""
-    return np.broadcast_to(np.asarray(value, dtype=float), (variants,)).copy()
 
 
 def efficiency(power: float, ideal: float, lost: float) -> float:

@@ -319,7 +319,8 @@ class Table(Columns):
         its reaction (N m), and ``J.M.at``; the largest
         shaking force ``shaking.F.max`` (N, the size of ``shaking.Fx``,
         ``shaking.Fy``) and moment ``shaking.M.max`` (N m, its size), with
-        ``shaking.F.at`` and ``shaking.M.at``. With friction also
+        ``shaking.F.at`` and ``shaking.M.at`` (a couple or shaking load that is
+        zero but for round-off is 0, at the first position). With friction also
         ``J.friction.loss``, the mean power lost in joint J (W), ``friction.loss``
         in all,
         ``driver.power_ideal.mean`` without friction and ``efficiency``,

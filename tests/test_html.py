@@ -153,6 +153,13 @@ def test_force_report_shows_the_summary(pages: dict[str, str]) -> None:
         # spelt as the rest of the page spells it: N·m, not the CLI's N m
         assert unit == pretty_unit(parts.units[key])
     assert 'id="summary"' not in pages["lever_var9"]
+    # turning counter-clockwise, no word on signs; clockwise, the CLI's note
+    assert "turns clockwise" not in text
+    mech = dataclasses.replace(mech, drivers=(assur.Driver("A", -200.0),))
+    clockwise = render_report(mech, angles=[45.0, 90.0])
+    assert "The crank at A turns clockwise and torques are counter-clockwise" in (
+        clockwise
+    )
 
 
 def test_kinematics_only_report(pages: dict[str, str]) -> None:

@@ -153,12 +153,26 @@ def summary_html(table: Table) -> str:
         f"<td>{number(value)}</td><td>{escape(pretty_unit(summary.units[key]))}</td></tr>"
         for key, value in summary.result().items()
     )
+    # as the command line's summary says it: which sign drives a clockwise crank
+    cranks = ", ".join(summary.clockwise)
+    turning = (
+        f'<p class="note">The crank{"s" if len(summary.clockwise) > 1 else ""} '
+        f"at {escape(cranks)} turn{'' if len(summary.clockwise) > 1 else 's'} "
+        "clockwise and torques are counter-clockwise positive: a torque that drives "
+        "a clockwise crank is negative; a positive power is work the drivers "
+        "supply.</p>\n"
+        if summary.clockwise
+        else ""
+    )
     return wide_card(
         "summary",
         "Summary over the sweep",
         '<p class="note">Largest and RMS reaction in every joint and where the '
-        "largest occurs, the balancing load's extremes, mean and RMS, the driver's "
-        "mean power; means are over the positions shown.</p>\n"
+        "largest occurs, a sliding pair's largest couple, the balancing load's "
+        "extremes, mean and RMS, the drivers' mean, largest and smallest power, the "
+        "largest shaking force and moment and where; means are over the positions "
+        "shown.</p>\n"
+        f"{turning}"
         '<div class="table-wrap"><table class="values summary"><tbody>\n'
         f"{rows}\n</tbody></table></div>",
     )
