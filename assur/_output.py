@@ -18,7 +18,7 @@ import sys
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
-from assur._targets import _not_a_folder, _target, path_text
+from assur._targets import _not_a_folder, _target, a_folder, path_text
 from assur.errors import AssurError, OutputError
 
 if TYPE_CHECKING:
@@ -266,11 +266,7 @@ def _move_all(items: list[Path], target: Path, temporary: Path) -> None:
     for item in items:
         place = target / item.name
         if place.is_dir() and not place.is_symlink():
-            msg = (
-                f"{path_text(place)}: cannot write the file (it is a folder); "
-                "expected a file, or nothing, of that name"
-            )
-            raise OutputError(msg)
+            raise OutputError(a_folder(place))
     moved: list[tuple[Path, bool, Path | None]] = []
     try:
         for item in items:

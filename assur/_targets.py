@@ -16,7 +16,7 @@ from assur.errors import OutputError
 if TYPE_CHECKING:
     from pathlib import Path
 
-__all__ = ["folder_name", "missing_folder", "path_text"]
+__all__ = ["a_folder", "folder_name", "missing_folder", "path_text"]
 
 PROCESS_FILES = "/proc/"
 """The folder whose entries name a process's open files (``/dev/stdout`` leads there).
@@ -26,6 +26,11 @@ a file to replace, whatever that stream is (a pipe, a terminal, a shell's file).
 """
 LINKS_FOLLOWED = 40
 """Most symbolic links followed in a path, as the system's own limit (``ELOOP``)."""
+
+
+def a_folder(path: Any) -> str:
+    """Return the message of an output that names a folder."""
+    return f"{path_text(path)}: cannot write the file (it is a folder); expected a file"
 
 
 def path_text(path: Any) -> str:
@@ -92,11 +97,7 @@ def _target(path: Path) -> tuple[Path, bool]:
         msg = f"{path_text(path)}: cannot write the file ({err})"
         raise OutputError(msg) from err
     if mode is not None and stat.S_ISDIR(mode):
-        msg = (
-            f"{path_text(path)}: cannot write the file (it is a folder); expected "
-            "a file name"
-        )
-        raise OutputError(msg)
+        raise OutputError(a_folder(path))
     if mode is not None and not stat.S_ISREG(mode):
         return path, True
     if _through_process_files(path):

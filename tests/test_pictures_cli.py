@@ -404,7 +404,7 @@ def test_diagrams_over_a_folder_in_a_picture_s_place_replace_none(
     assert status == 2
     assert err == (
         f"assur: error: {out / 'paths.png'}: cannot write the file (it is a folder); "
-        "expected a file, or nothing, of that name\n"
+        "expected a file\n"
     )
     for name, data in old.items():
         if name != "paths.png":
