@@ -75,27 +75,10 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
         shown = number_text(value, ">14.6g")
         lines.append(f"  {key.ljust(width)}  {shown}  {unit}".rstrip())
     if summary.clockwise:
-        lines += _clockwise_note(summary.clockwise, summary.drivers)
+        first, *rest = summary.turning()
+        lines += [f"  ({first}", *(f"   {line}" for line in rest)]
+        lines[-1] += ")"
     return "\n".join(lines)
-
-
-def _clockwise_note(joints: tuple[str, ...], drivers: int) -> list[str]:
-    """Return the lines saying which cranks turn clockwise, and what signs mean.
-
-    Torques are counter-clockwise positive: a clockwise crank's driving torque is
-    negative, and its largest driving torque is the ``.min``.
-    """
-    if drivers == 1:
-        which, it = "the crank turns", "it"
-    elif len(joints) == 1:
-        which, it = f"the crank at {joints[0]} turns", "it"
-    else:
-        which, it = f"the cranks at {', '.join(joints)} turn", "them"
-    return [
-        f"  ({which} clockwise and torques are counter-clockwise positive:",
-        f"   a torque that drives {it} is negative; a positive power is work the",
-        "   drivers supply)",
-    ]
 
 
 def _summary(

@@ -24,6 +24,7 @@ import numpy as np
 
 from assur._evaluate import friction_powers
 from assur._running import Running, lasts, per_variant, sums
+from assur._undefined import undefined
 from assur._vec import Array, full
 from assur.errors import UsageError
 
@@ -296,6 +297,28 @@ class Summary:
         first = self._ends[0] if self._ends else math.nan
         return np.where(noise, 0.0, r.top), np.where(noise, first, r.at)
 
+    def turning(self) -> list[str]:
+        """Return the lines saying which cranks turn clockwise, and what signs mean.
+
+        Torques are counter-clockwise positive: a clockwise crank's driving torque
+        is negative, and its largest driving torque is the ``.min``. Empty when no
+        crank turns clockwise.
+        """
+        joints = self.clockwise
+        if not joints:
+            return []
+        if self.drivers == 1:
+            which, it = "the crank turns", "it"
+        elif len(joints) == 1:
+            which, it = f"the crank at {joints[0]} turns", "it"
+        else:
+            which, it = f"the cranks at {', '.join(joints)} turn", "them"
+        return [
+            f"{which} clockwise and torques are counter-clockwise positive:",
+            f"a torque that drives {it} is negative; a positive power is work the",
+            "drivers supply",
+        ]
+
     def closes(self) -> bool:
         """Whether the positions end a whole number of turns on from where they began.
 
@@ -333,47 +356,6 @@ def efficiency(power: float, ideal: float, lost: float) -> float:
     if ideal < 0.0:
         return math.nan
     return ideal / power
-
-
-def undefined(values: dict[str, float]) -> dict[str, str]:
-    """Return why each value of a summary that is not a number is not one, by name.
-
-    Only the efficiency can be undefined (see :func:`efficiency`). In a study's row
-    (:func:`assur.sweep`) a value is NaN also where the variant was not analysed (its
-    ``error`` says why) or has no such value: no friction in its joints (the losses,
-    the power without friction, the efficiency), or no such joint. Values that are
-    not numbers (the text of a study's row) are passed over.
-    """
-    out = {}
-    for name, value in values.items():
-        if not isinstance(value, int | float) or math.isfinite(value):
-            continue
-        out[name] = _why(name, values)
-    return out
-
-
-FRICTION = ("friction.loss", "driver.power_ideal.mean", "efficiency")
-"""The summary's values with friction (and every ``<joint>.friction.loss``)."""
-
-
-def _why(name: str, values: dict[str, Any]) -> str:
-    """Return why the value ``name`` of a summary (or a study's row) is NaN."""
-    error = values.get("error")
-    if isinstance(error, str) and error:
-        return "the variant was not analysed (see its error)"
-    rubbing = math.isfinite(values.get("driver.power_ideal.mean", math.nan))
-    if (name in FRICTION or name.endswith(".friction.loss")) and not rubbing:
-        return "no friction in this variant: no losses, no efficiency"
-    if name == "efficiency" and not values["driver.power.mean"] > 0.0:
-        return "the driver does no net work (mean power <= 0): the loads drive"
-    if name == "efficiency":
-        return (
-            "the loads give back work (mean power without friction < 0) that the "
-            "driver still supplies"
-        )
-    if error == "":
-        return "not a value of this variant (its mechanism has no such part)"
-    return "not defined over these positions"
 
 
 def summarize(table: Any) -> dict[str, float]:

@@ -157,8 +157,10 @@ def test_force_report_shows_the_summary(pages: dict[str, str]) -> None:
     assert "turns clockwise" not in text
     mech = dataclasses.replace(mech, drivers=(assur.Driver("A", -200.0),))
     clockwise = render_report(mech, angles=[45.0, 90.0])
-    assert "The crank at A turns clockwise and torques are counter-clockwise" in (
-        clockwise
+    assert (
+        "The crank turns clockwise and torques are counter-clockwise positive: a "
+        "torque that drives it is negative; a positive power is work the drivers "
+        "supply.</p>" in clockwise
     )
 
 

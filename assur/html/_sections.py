@@ -154,15 +154,9 @@ def summary_html(table: Table) -> str:
         for key, value in summary.result().items()
     )
     # as the command line's summary says it: which sign drives a clockwise crank
-    cranks = ", ".join(summary.clockwise)
+    said = " ".join(summary.turning())
     turning = (
-        f'<p class="note">The crank{"s" if len(summary.clockwise) > 1 else ""} '
-        f"at {escape(cranks)} turn{'' if len(summary.clockwise) > 1 else 's'} "
-        "clockwise and torques are counter-clockwise positive: a torque that drives "
-        "a clockwise crank is negative; a positive power is work the drivers "
-        "supply.</p>\n"
-        if summary.clockwise
-        else ""
+        f'<p class="note">{escape(said[:1].upper() + said[1:])}.</p>\n' if said else ""
     )
     return wide_card(
         "summary",
