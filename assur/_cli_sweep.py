@@ -58,7 +58,7 @@ def _sweep(args: argparse.Namespace, forces: bool) -> int:
             text, names = _summary(parts, forces, terminal_width())
     hushed = quiet(args)
     if skipped.count and not hushed:
-        print(skipped.note(args.file), file=sys.stderr)
+        print(skipped.note(args.file, given), file=sys.stderr)
     if summary is not None:
         write_stdout(_summary_text(mech.name, summary, args.json) + "\n")
     if not writing:

@@ -61,9 +61,11 @@ def _say_skipped(args: argparse.Namespace, skipped: Any, plan: Any) -> None:
     from assur._skipped import Skipped
 
     if len(skipped) and not quiet(args):
+        # the sweep again, as given: the note names the runs of positions left out
+        sweep = positions(plan.mechanism, args.angles)
         found = Skipped()
-        found.add(skipped, plan)
-        print(found.note(args.file), file=sys.stderr)
+        found.add(skipped, plan, sweep)
+        print(found.note(args.file, sweep), file=sys.stderr)
 
 
 def _some_kept(table: Any) -> Any:

@@ -8,11 +8,11 @@ from typing import Any
 
 import numpy as np
 
-from assur._runs import telling_apart
+from assur._runs import runs_text, telling_apart
 from assur._stdin import input_text
 from assur._text import counted, position_text
 from assur._troubles import skipped_why
-from assur._vec import Array
+from assur._vec import Array, Mask
 from assur.errors import AssemblyError
 
 __all__ = ["Skipped"]
@@ -34,20 +34,32 @@ class Skipped:
     why: str = ""
     kinds: tuple[str, ...] = ("R",)
     """Each driver's pair kind: "R" for a crank (deg), "P" for a slider (m)."""
+    marks: list[Mask] | None = field(default_factory=list)
+    """Which positions of each slice were left out, in the sweep's order (None once
+    a slice came without its positions)."""
+    plan: Any = None
 
-    def add(self, positions: Array, plan: Any = None) -> None:
-        """Count the positions left out of one slice (of the mechanism ``plan``)."""
+    def add(self, positions: Array, plan: Any = None, among: Any = None) -> None:
+        """Count the positions left out of one slice (of the mechanism ``plan``).
+
+        ``among`` is the slice's every position, in order: given with each slice,
+        the note names the runs of positions left out ("131 deg to 266 deg")
+        instead of the first twenty one by one.
+        """
         why = skipped_why(plan, positions)
         self.why = why if len(why) > len(self.why) else self.why
         self.count += len(positions)
-        rows = np.asarray(positions, dtype=float)
-        if rows.ndim == 1:  # one driver's positions
-            rows = rows[:, np.newaxis]
+        rows = _rows(positions)
+        if among is None or self.marks is None:
+            self.marks = None
+        else:
+            self.marks.append(_left_out(_rows(among), rows))
         room = SKIPPED_SHOWN - len(self.values)
         self.values += rows[:room].tolist()
         self.more |= len(rows) > room
         if plan is not None:
             self.kinds = tuple(d.kind for d in plan.drivers)
+            self.plan = plan
 
     def none_kept(self, first: str = "") -> AssemblyError:
         """Return the error of a sweep whose every position was left out.
@@ -69,8 +81,22 @@ class Skipped:
             f"{which} of the sweep is left out ({self.why}){why}{expected}"
         )
 
-    def note(self, source: Any) -> str:
-        """Return the note naming the positions left out of ``source``'s sweep."""
+    def note(self, source: Any, sweep: Any = None) -> str:
+        """Return the note naming the positions left out of ``source``'s sweep.
+
+        With ``sweep`` (every position of it, in order, as each slice's ``among``)
+        the note names runs of positions, as the sweep lists them (a run that
+        goes on into a turn's closing pose is not joined to the first); else the
+        first ones, one by one.
+        """
+        left = counted(self.count, "position")
+        lead = f"assur: note: {input_text(source)}: left out {left} {self.why}"
+        marks = self.marks
+        if sweep is not None and marks and self.plan is not None:
+            sweep = _rows(sweep)
+            mask = np.concatenate(marks)
+            if mask.shape[0] == sweep.shape[0]:
+                return f"{lead}: {runs_text(self.plan, sweep, mask)}"
         more = ", ..." if self.more else ""
         # neighbours written with the digits that tell them apart (a step of 1e-5
         # deg gave "197.555" twenty times)
@@ -84,5 +110,28 @@ class Skipped:
             # several: each position as messages write it, "(129 deg, 0.0648 m)"
             shown = "; ".join(position_text(self.kinds, v, digits) for v in self.values)
             shown += more.replace(",", ";")
-        left = counted(self.count, "position")
-        return f"assur: note: {input_text(source)}: left out {left} {self.why}: {shown}"
+        return f"{lead}: {shown}"
+
+
+def _rows(positions: Any) -> Array:
+    """Return driver positions as rows, shape (n, drivers)."""
+    rows = np.asarray(positions, dtype=float)
+    return rows[:, np.newaxis] if rows.ndim == 1 else rows
+
+
+def _left_out(among: Array, left: Array) -> Mask:
+    """Return which rows of ``among`` are among the rows ``left`` (left out).
+
+    The rows left out are copies of some of ``among``'s: compared whole, each row
+    as one value of its bytes.
+    """
+    if not left.shape[0]:
+        return np.zeros(among.shape[0], dtype=bool)
+    if left.shape[0] == among.shape[0]:
+        return np.ones(among.shape[0], dtype=bool)
+
+    def whole(rows: Array) -> Any:
+        rows = np.ascontiguousarray(rows)
+        return rows.view(np.dtype((np.void, rows.itemsize * rows.shape[1])))[:, 0]
+
+    return np.isin(whole(among), whole(left))

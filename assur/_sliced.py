@@ -126,7 +126,7 @@ def slices(
             except FAILURES:
                 near.give_before_error(given[chunk:], chunk)
                 raise
-        skipped.add(table.skipped, table.plan)
+        skipped.add(table.skipped, table.plan, part)
         last = start + chunk >= n
         if n and skipped.count == n and last:
             # a table of no rows was written without a word (exit status 0),

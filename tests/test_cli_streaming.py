@@ -176,12 +176,17 @@ def test_many_runs_near_dead_centres_are_cut_as_one_table_cuts_them(
     lines = err.splitlines()
     assert lines[1] == f"assur: warning: {double_rocker}: {messages[0]}"
     table, _ = whole("kinematics", double_rocker, spec, skip=True)
-    shown = ", ".join(f"{x:g}" for x in np.ravel(table.skipped)[:20])
+    # the runs of positions left out: broken where a kept position lies between
+    left = np.ravel(table.skipped)
+    breaks = np.flatnonzero(np.diff(left) > 0.015) + 1
+    runs = [(run[0], run[-1]) for run in np.split(left, breaks)]
+    assert len(runs) > 6  # some left unnamed
+    shown = "; ".join(f"{a:g} deg to {b:g} deg" for a, b in runs[:6]) + "; ..."
     assert lines[0] == (
         f"assur: note: {double_rocker}: left out {len(table.skipped)} positions "
         "where a group cannot be assembled, stands at a dead centre or is locked by "
         "friction, or that the mechanism cannot reach from its reference pose: "
-        f"{shown}, ... deg"
+        f"{shown}"
     )
     assert len(lines) == 2
 
@@ -711,3 +716,21 @@ def test_the_note_of_positions_left_out_tells_each_driver_s_with_its_unit():
     single.add(np.array([[200.0]]), crank)
     assert ": left out 1 position " in single.note("m.toml")
     assert single.note("m.toml").endswith(": 200 deg")
+    # each slice with its positions: the runs of the sweep, one across the slices'
+    # boundary (103 to 107 deg), and a lone position
+    sweep = np.arange(100.0, 112.0)
+    runs = Skipped()
+    for part in (sweep[:6], sweep[6:]):
+        runs.add(part[(part >= 103) & (part <= 107) | (part == 110)], crank, part)
+    assert runs.note("m.toml", sweep).endswith(": 103 deg to 107 deg; 110 deg")
+    assert ": left out 6 positions " in runs.note("m.toml", sweep)
+    # two drivers: a row is left out whole, not where one driver's value matches
+    rows = np.array([[129.0, 0.1], [130.0, 0.2], [131.0, 0.1], [132.0, 0.3]])
+    pairs = Skipped()
+    pairs.add(rows[[1, 3]], two, rows)
+    assert pairs.marks is not None
+    np.testing.assert_array_equal(pairs.marks[0], [False, True, False, True])
+    # a slice given without its positions: the first positions, one by one
+    runs.add(np.array([111.0]), crank)
+    one_by_one = ": 103, 104, 105, 106, 107, 110, 111 deg"
+    assert runs.note("m.toml", sweep).endswith(one_by_one)

@@ -703,10 +703,8 @@ def test_diagrams_skip_positions_a_crank_cannot_reach(
     assert status == 0, err
     (note,) = (line for line in err.splitlines() if "note" in line)
     assert note.startswith(f"assur: note: {TRIAD_P}: left out 123 positions ")
-    assert note.endswith(
-        ": 115, 116, 117, 118, 119, 120, 121, 122, 123, 124, 125, "
-        "126, 127, 128, 129, 130, 131, 132, 133, 134, ... deg"
-    )
+    # one run of 123 positions, a degree apart
+    assert note.endswith(": 115 deg to 237 deg")
 
 
 @pytest.mark.pictures
