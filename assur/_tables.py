@@ -57,13 +57,31 @@ def periodic(xs: Array, values: Any, at: Array) -> list[Array]:
     """
     first = _first_turn(xs)
     xs = xs[first]
-    turn = xs[0] + np.remainder(np.asarray(at, dtype=float) - xs[0], TURN)
+    at = np.asarray(at, dtype=float)
+    turn = _onto(xs, at, xs[0] + np.remainder(at - xs[0], TURN))
     # a remainder rounded up to a whole turn is the turn's start
     turn[turn >= xs[0] + TURN] = xs[0]
     return [
         interpolate(turn, *_closed(xs, np.asarray(v, dtype=float)[first]))
         for v in values
     ]
+
+
+def _onto(xs: Array, at: Array, turn: Array) -> Array:
+    """Return the angles ``turn`` (``at`` within the table's turn) on the table's grid.
+
+    An angle within round-off of a table's position (or of the turn's end) is put
+    on it. A position given as a step's, 120 deg, comes here through radians and
+    back, np.degrees(np.radians(120.0)) = 119.99999999999999: read as it came, the
+    value before the step, where the step's second value holds at the position.
+    Degrees to radians and back are each rounded once, within an ulp of ``at``.
+    """
+    grid = np.append(xs, xs[0] + TURN)
+    j = np.clip(np.searchsorted(grid, turn), 1, len(grid) - 1)
+    below, above = grid[j - 1], grid[j]
+    near = np.where(turn - below <= above - turn, below, above)
+    tiny = 4.0 * np.spacing(np.maximum(np.abs(at), np.abs(near)))
+    return np.where(np.abs(turn - near) <= tiny, near, turn)  # type: ignore[no-any-return]
 
 
 def disagreement(xs: Array, ys: Array) -> tuple[float, float, str] | None:
