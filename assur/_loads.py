@@ -12,13 +12,13 @@ from typing import Any
 
 import numpy as np
 
-from assur._tables import interpolate, periodic
+from assur._tables import interpolate, periodic, step_before
 from assur._vec import Array
 from assur.errors import AssurWarning, ModelError
 from assur.model import LoadTable, resolve_point
 from assur.plan import Plan
 
-__all__ = ["LoadPlan", "compile_loads", "table_values"]
+__all__ = ["LoadPlan", "compile_loads", "table_step", "table_values"]
 
 WHAT = {
     "center": "centre of mass",
@@ -155,11 +155,38 @@ def table_values(
     ModelError
         When a table over a slide or a prismatic driver does not cover the sweep.
     """
+    xs, at, turning = _reading(table, plan, drive, slides, entry)
+    if turning:
+        return periodic(xs, table.values, at)
+    return [interpolate(at, xs, np.asarray(v, dtype=float)) for v in table.values]
+
+
+def table_step(
+    table: LoadTable, plan: Plan, drive: Array, slides: dict[str, Array], entry: str
+) -> list[float] | None:
+    """Return ``table``'s values just before the one position analysed, at a step.
+
+    None where the table does not step there (see :func:`table_values`).
+    """
+    xs, at, turning = _reading(table, plan, drive, slides, entry)
+    return step_before(xs, table.values, float(at[0]), turning)
+
+
+def _reading(
+    table: LoadTable, plan: Plan, drive: Array, slides: dict[str, Array], entry: str
+) -> tuple[Array, Array, bool]:
+    """Return a table's positions, where it is read, and whether over a crank's turn.
+
+    Raises
+    ------
+    ModelError
+        When a table over a slide or a prismatic driver does not cover the sweep.
+    """
     xs = np.asarray(table.table, dtype=float)
     if table.over == "driver":
         first = plan.drivers[0]
         if first.kind == "R":
-            return periodic(xs, table.values, np.degrees(drive[:, 0]))
+            return xs, np.degrees(drive[:, 0]), True
         at, what = drive[:, 0], "the driver's position"
     else:
         at, what = slides[table.over], f"the slide of joint {table.over!r}"
@@ -172,7 +199,7 @@ def table_values(
             "position"
         )
         raise ModelError(msg)
-    return [interpolate(at, xs, np.asarray(v, dtype=float)) for v in table.values]
+    return xs, at, False
 
 
 def _never_turning(plan: Plan) -> set[int]:

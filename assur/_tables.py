@@ -56,15 +56,43 @@ def periodic(xs: Array, values: Any, at: Array) -> list[Array]:
     finds any that do not); the first turn's are read.
     """
     first = _first_turn(xs)
-    xs = xs[first]
-    at = np.asarray(at, dtype=float)
+    turn = _in_turn(xs[first], np.asarray(at, dtype=float))
+    return [
+        interpolate(turn, *_closed(xs[first], np.asarray(v, dtype=float)[first]))
+        for v in values
+    ]
+
+
+def step_before(xs: Array, values: Any, at: float, turning: bool) -> list[float] | None:
+    """Return a table's values just before position ``at`` where it steps there.
+
+    None where it does not: its values on either side of ``at`` agree. At a step
+    the values read are those after it (:func:`interpolate`, :func:`periodic`).
+    ``turning``: read over a crank's turn (deg), as :func:`periodic` reads it.
+    """
+    ys = [np.asarray(v, dtype=float) for v in values]
+    here = np.array([at], dtype=float)
+    if turning:
+        first = _first_turn(xs)
+        turn = float(_in_turn(xs[first], here)[0])
+        closed = [_closed(xs[first], y[first]) for y in ys]
+        before = [_before(turn, *grid) for grid in closed]
+        after = [float(interpolate(np.array([turn]), *grid)[0]) for grid in closed]
+    else:
+        before = [_before(at, xs, y, turning=False) for y in ys]
+        after = [float(interpolate(here, xs, y)[0]) for y in ys]
+    slack = AGREE * max(1.0, *(float(np.max(np.abs(y))) for y in ys))
+    if all(abs(b - a) <= slack for b, a in zip(before, after, strict=True)):
+        return None
+    return before
+
+
+def _in_turn(xs: Array, at: Array) -> Array:
+    """Return angles ``at`` (deg) within the turn of a table's first turn ``xs``."""
     turn = _onto(xs, at, xs[0] + np.remainder(at - xs[0], TURN))
     # a remainder rounded up to a whole turn is the turn's start
     turn[turn >= xs[0] + TURN] = xs[0]
-    return [
-        interpolate(turn, *_closed(xs, np.asarray(v, dtype=float)[first]))
-        for v in values
-    ]
+    return turn
 
 
 def _onto(xs: Array, at: Array, turn: Array) -> Array:
@@ -124,12 +152,15 @@ def disagreement(xs: Array, ys: Array) -> tuple[float, float, str] | None:
     return float(xs[later[k]]), float(back[k]), which
 
 
-def _before(at: float, xs: Array, ys: Array) -> float:
+def _before(at: float, xs: Array, ys: Array, turning: bool = True) -> float:
     """Return a closed turn's value just before position ``at`` (a step's first).
 
-    Just before the turn's start is just before its end, a turn on.
+    Just before the turn's start is just before its end, a turn on. Not
+    ``turning`` (a table over a slide), the table is held before its start.
     """
     if at <= xs[0]:
+        if not turning:
+            return float(ys[0])
         at += TURN
     j = int(np.clip(np.searchsorted(xs, at, side="left") - 1, 0, len(xs) - 2))
     width = xs[j + 1] - xs[j]

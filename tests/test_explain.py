@@ -236,6 +236,53 @@ def test_every_number_agrees_with_the_table(stem: str, angle) -> None:
         assert balancing >= 2 * len(plan.drivers)
 
 
+# a cut from 120 to 240 deg and a torque stepping down at 240 deg (a backslash at a
+# line's end joins the lines in the string: TOML's inline tables take one line)
+STEPPED = """
+[[loads]]
+link = "slider"
+at = "C"
+force = { x = [0.0, 0.0, -1000.0, -1000.0, 0.0], y = [0.0, 0.0, 0.0, 0.0, 0.0], \
+over = "driver", table = [0.0, 120.0, 120.0, 240.0, 240.0] }
+
+[[loads]]
+link = "crank"
+torque = { values = [5.0, 5.0, 2.0, 2.0], over = "driver", table = [0.0, 240.0, \
+240.0, 360.0] }
+"""
+
+
+@pytest.mark.parametrize(
+    ("angle", "said"),
+    [
+        # 120 and 240 deg come back from radians a unit of the last place low
+        (120.0, ["(-1000,\\ 0)\\ \\mathrm{N}", "before it, }(0,\\ 0)\\ \\mathrm{N}"]),
+        (
+            240.0,
+            [
+                "Q_{\\mathrm{slider},1} = (0,\\ 0)\\ \\mathrm{N}",
+                "before it, }(-1000,\\ 0)\\ \\mathrm{N}",
+                "T_{\\mathrm{crank},1} = 2\\ \\mathrm{N\\,m}",
+                "before it, }5\\ \\mathrm{N\\,m}",
+            ],
+        ),
+        (480.0, ["(-1000,\\ 0)\\ \\mathrm{N}", "before it, }(0,\\ 0)\\ \\mathrm{N}"]),
+        (180.0, []),
+    ],
+)
+def test_a_load_at_its_table_s_step_says_which_side(tmp_path, angle, said) -> None:
+    # the value after the step holds at its position, the table's as the note's
+    path = tmp_path / "stepped.toml"
+    path.write_text(EXERCISE.read_text() + STEPPED)
+    mech = assur.load(path)
+    note = explain(mech, angle)
+    check(note, assur.forces(mech, [angle]))
+    text = str(note)
+    for words in said:
+        assert words in text
+    assert text.count("(after its table's step here") == len(said) // 2
+
+
 def test_the_lecture_exercise_at_45_degrees() -> None:
     note = str(explain(assur.load(EXERCISE), 45.0))
     for text in (

@@ -195,6 +195,28 @@ def test_a_step_holds_its_second_value_at_its_position_as_given(x):
     np.testing.assert_allclose(t["driver.torque"], 3.0 * acting, atol=1e-12)
 
 
+@pytest.mark.parametrize(
+    ("xs", "at", "turning", "before"),
+    [
+        ((0.0, 1.0, 1.0, 2.0), 1.0, False, [1.0]),  # a step inside
+        ((0.0, 1.0, 1.0, 2.0), 0.5, False, None),  # none between
+        ((0.0, 0.0, 2.0, 3.0), 0.0, False, None),  # given twice, one value: no step
+        ((0.0, 1.0, 2.0, 3.0), 2.0, False, None),  # a kink is no step
+        ((0.0, 90.0, 90.0, 360.0), 450.0, True, [1.0]),  # a turn on
+        # a turn from 0 to 360 deg whose ends differ: a step at 0, from the end's
+        ((0.0, 90.0, 90.0, 360.0), 0.0, True, [7.0]),
+        ((0.0, 90.0, 90.0, 360.0), 360.0, True, [7.0]),
+        ((0.0, 90.0, 90.0, 360.0), 89.0, True, None),
+    ],
+)
+def test_the_value_before_a_step(xs, at, turning, before):
+    # what the explanatory note says was there just before a step
+    from assur._tables import step_before
+
+    ys = [np.array([1.0, 1.0, 5.0, 7.0])]
+    assert step_before(np.array(xs), ys, at, turning) == before
+
+
 def test_the_round_trip_of_those_angles_is_inexact():
     # what the test above stands on: these angles miss their step without care
     for x in ROUND_TRIP_LOW:

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from assur._loads import table_values
+from assur._loads import table_step, table_values
 from assur._vec import Array
 from assur.explain._position import ROUND_OFF, Position, at, cross, value
 from assur.explain._tex import name, num, par, point_name, vec
@@ -39,7 +39,9 @@ __all__ = [
 class Load:
     """A force ``force`` (N) at ``point`` (m) and a couple ``couple`` (N m).
 
-    ``tex`` names the load; ``where`` names its point.
+    ``tex`` names the load; ``where`` names its point. ``before`` is a tabulated
+    load's value just before a step of its table at this position (a force's two
+    components, N, or a couple, N m): the value after the step holds here.
     """
 
     tex: str
@@ -47,6 +49,7 @@ class Load:
     point: Array
     force: Array
     couple: float = 0.0
+    before: tuple[float, ...] | None = None
 
 
 def inertia_load(pos: Position, body: int) -> tuple[Array, float] | None:
@@ -94,27 +97,36 @@ def own_loads(pos: Position, body: int) -> list[Load]:
         if b != body:
             continue
         count += 1
+        before = None
         if isinstance(force, LoadTable):
             fx, fy = table_values(force, pos.plan, state.drive, slides, entry)
             vector = at(fx, fy)
+            before = table_step(force, pos.plan, state.drive, slides, entry)
         else:
             vector = np.asarray(force, dtype=float)
         p = pos.point(body, offset)
         # Q, not F: F_{i,j} is the force of link i on link j
-        out.append(
-            Load(f"\\vec Q_{{{link},{count}}}", _spot(pos, entry, count), p, vector)
-        )
+        tex = f"\\vec Q_{{{link},{count}}}"
+        spot = _spot(pos, entry, count)
+        out.append(Load(tex, spot, p, vector, before=_told(before)))
     for b, torque, entry in pos.loads.torques:
         if b != body:
             continue
         count += 1
-        t = torque
+        t, before = torque, None
         if isinstance(torque, LoadTable):
             t = table_values(torque, pos.plan, state.drive, slides, entry)[0]
-        out.append(
-            Load(f"T_{{{link},{count}}}", "", _origin(pos, body), np.zeros(2), value(t))
-        )
+            before = table_step(torque, pos.plan, state.drive, slides, entry)
+        tex, origin = f"T_{{{link},{count}}}", _origin(pos, body)
+        out.append(Load(tex, "", origin, np.zeros(2), value(t), _told(before)))
     return out
+
+
+def _told(before: list[float] | None) -> tuple[float, ...] | None:
+    """Return a load's values just before a step here, round-off told as zero."""
+    if before is None:
+        return None
+    return tuple(0.0 if abs(v) < 1e-300 else float(v) for v in before)
 
 
 def _spot(pos: Position, entry: str, count: int) -> str:
@@ -257,5 +269,14 @@ def force_lines(loads: list[Load]) -> list[str]:
                 "(0,\\ 0)\\ \\mathrm{N}" if "\\vec" in x.tex else "0\\ \\mathrm{N\\,m}"
             )
             text += f" = {zero}"
+        if x.before is not None:
+            # its table steps here: which side of the step the note takes
+            was = (
+                f"{vec(np.array(x.before))}\\ \\mathrm{{N}}"
+                if len(x.before) == 2
+                else f"{num(x.before[0])}\\ \\mathrm{{N\\,m}}"
+            )
+            said = "(after its table's step here; before it, "
+            text += f"\\quad \\text{{{said}}}{was}\\text{{)}}"
         lines.append(text)
     return lines
