@@ -53,6 +53,24 @@ def test_the_pages_have_toml_blocks():
     assert len(BLOCKS) >= 7
 
 
+def test_the_whole_format_on_one_page_is_a_whole_mechanism():
+    # the page's first block, copied into a file, is a mechanism to analyse (its
+    # joints once named links it never declared)
+    import numpy as np
+
+    import assur
+
+    where, text = rst_blocks(ROOT / "docs" / "file_format.rst")[0]
+    assert text.startswith("format = 1"), where
+    mech = assur.io.loads(text)
+    table = assur.forces(mech, [45.0])
+    assert {link.name for link in mech.links} == {"crank", "rod", "slider"}
+    assert np.isfinite(table["driver.torque"]).all()
+    np.testing.assert_allclose(
+        table["driver.torque"], table["driver.torque_check"], rtol=1e-9
+    )
+
+
 @pytest.mark.parametrize(("where", "text"), BLOCKS, ids=[w for w, _ in BLOCKS])
 def test_each_block_is_toml(where, text):
     assert text.strip(), where
