@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._vec import Array
+from assur._vec import Array, integer
 from assur.errors import UsageError
 from assur.model import Mechanism
 
@@ -141,6 +141,17 @@ def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
         )
         raise UsageError(msg)
     return out
+
+
+def _partitions(partitions: Any) -> None:
+    """Refuse ``partitions`` that is not None or a positive whole number.
+
+    Checked with or without a client: a study run first on one machine is then
+    refused the same way as on a cluster, not after its variants were run.
+    """
+    if partitions is not None and (integer(partitions) or 0) < 1:
+        msg = f"partitions: expected a positive number, got {partitions!r}"
+        raise UsageError(msg)
 
 
 def _angles(angles: Any) -> Array:

@@ -25,6 +25,10 @@ def undefined(values: dict[str, float]) -> dict[str, str]:
     for name, value in values.items():
         if not isinstance(value, int | float) or math.isfinite(value):
             continue
+        if "." not in name and name != "efficiency":
+            # a study's parameter (an identifier: no dot, never "efficiency"),
+            # NaN as the user gave it, not a value the summary left undefined
+            continue
         out[name] = _why(name, values)
     return out
 

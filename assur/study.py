@@ -35,6 +35,7 @@ from assur._study_inputs import (
     _built,
     _optional,
     _parameters,
+    _partitions,
     _takes,
     _variant,
 )
@@ -224,6 +225,7 @@ def sweep(
     values = _parameters(parameters)
     _takes(factory, values)
     given = _angles(angles)
+    _partitions(partitions)
     _optional("pandas")
     count = len(next(iter(values.values())))
     with counted("variants", count, progress) as bar:
@@ -270,11 +272,13 @@ def summarise(
     return frame
 
 
-ONE_AT_A_TIME = threading.Lock()
+ONE_AT_A_TIME = threading.RLock()
 """Held by the process while it summarises variants: each variant's warnings are
 recorded with ``warnings.catch_warnings``, which swaps process-wide state (the
 filters, ``showwarning``); two threads recording at once lose each other's warnings
-or file them under the wrong variant."""
+or file them under the wrong variant. Re-entrant: a factory may run a study of its
+own (the best rod for each crank, say), in the same thread, its recordings nested
+in its variant's."""
 GROUPED = 8
 """Batches of variants built and compiled together: the checks of a compilation cost
 about as much for a few hundred variants as for the few dozen of one batch."""

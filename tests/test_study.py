@@ -547,6 +547,40 @@ def test_the_cluster_arguments_are_checked(client, partitions, message):
         )
 
 
+@pytest.mark.parametrize("partitions", [0, -3, "x"])
+def test_partitions_are_checked_without_a_client_too(partitions):
+    # accepted without a word on one machine, refused on a cluster
+    with pytest.raises(assur.UsageError, match="partitions: expected a positive"):
+        assur.sweep(catalog.slider_crank, {"rod": [0.2]}, ANGLES, partitions=partitions)
+
+
+def test_a_factory_may_run_a_study_of_its_own():
+    # the best rod for each crank, by an inner study: the outer one waited for
+    # ever on a lock its own thread held
+    import threading
+
+    def best(crank):
+        rods = [0.18, 0.2, 0.22]
+        inner = assur.sweep(
+            catalog.slider_crank, {"crank": [crank] * 3, "rod": rods}, ANGLES
+        )
+        rod = rods[int(np.argmin(inner.summary["B.F.max"]))]
+        return catalog.slider_crank(crank=crank, rod=rod)
+
+    found = []
+    cranks = {"crank": [0.07, 0.074]}
+    run = threading.Thread(
+        target=lambda: found.append(assur.sweep(best, cranks, ANGLES)), daemon=True
+    )
+    run.start()
+    run.join(120.0)
+    assert not run.is_alive(), "the study waits on itself"
+    (study,) = found
+    assert (study.summary["error"] == "").all()
+    alone = assur.forces(best(0.074), ANGLES).summary()
+    assert study.summary.loc[1, "B.F.max"] == pytest.approx(alone["B.F.max"], rel=1e-12)
+
+
 def test_tables_say_which_variants_and_columns_there_are(slider_study):
     pytest.importorskip("xarray")
     _, study = slider_study
@@ -661,6 +695,13 @@ def test_a_value_a_variant_does_not_have_or_was_not_analysed_for_says_so():
     assert set(undefined(summary.loc[2]).values()) == {
         "the variant was not analysed (see its error)"
     }
+    # a parameter given as NaN is the user's, not a value the summary left out
+    rods = {"rod": [0.2, np.nan]}
+    failed = assur.sweep(catalog.slider_crank, rods, ANGLES).summary
+    assert failed.loc[1, "error"]
+    said = undefined(failed.loc[1])
+    assert "rod" not in said
+    assert "B.F.max" in said
 
 
 def test_progress_counts_the_variants_done():

@@ -91,6 +91,53 @@ def test_a_closed_client_is_refused(partitions):
         )
 
 
+def test_a_factory_that_does_not_pickle_is_refused_by_name():
+    # else dask's own traceback on the log, and a TypeError about its task graph
+    import threading
+
+    lock = threading.Lock()
+
+    def holding(rod, _lock=lock):
+        return catalog.slider_crank(rod=rod)
+
+    with (
+        local_client() as client,
+        pytest.raises(
+            assur.UsageError,
+            match=r"^factory: <function .*holding.* cannot be sent to the cluster's "
+            r"workers \(TypeError: cannot pickle '_thread.lock' object\); expected",
+        ),
+    ):
+        assur.sweep(holding, {"rod": [0.2, 0.25]}, [0.0, 90.0], client)
+
+
+def test_a_study_stopped_leaves_no_partition_running():
+    # Ctrl-C (here from the progress callback) while partitions run: those not
+    # gathered ran on, holding the cluster for the next study while a notebook
+    # kept the traceback
+    def stop(done, total):
+        raise KeyboardInterrupt
+
+    parameters = {"rod": np.linspace(0.2, 0.3, 400)}
+    with local_client() as client:
+        with pytest.raises(KeyboardInterrupt) as caught:
+            assur.sweep(
+                catalog.slider_crank,
+                parameters,
+                np.arange(0.0, 360.0, 1.0),
+                client,
+                partitions=20,
+                progress=stop,
+            )
+
+        def states(dask_scheduler=None):
+            return [str(t.state) for t in dask_scheduler.tasks.values()]
+
+        left = client.run_on_scheduler(states)
+        assert caught.value is not None  # the traceback kept, as a notebook keeps it
+        assert not [s for s in left if s in ("waiting", "queued", "processing")]
+
+
 def test_progress_counts_the_partitions_gathered():
     told = []
     parameters = {"rod": np.linspace(0.2, 0.3, 10)}
