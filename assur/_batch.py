@@ -64,7 +64,7 @@ def summaries(
     drive = _drive(first, batch.references, given)
     rates = driver_rates(first, None, None, k * m)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        bodies, found = _kin.solve(plan, drive, *rates, top=2)
+        bodies, found = _kin.solve(plan, drive, rates[0], rates[1], top=2)
         state = _kin.state_of(plan, bodies, drive, rates, 2)
         forces, result = _kst.solve(plan, loads, bodies, state)
     bad = np.zeros(k * m, dtype=bool)

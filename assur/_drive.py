@@ -22,17 +22,18 @@ EXACT_DEGREES = 1e4
 """Crank angles (deg) below which turning them into radians as they are loses no
 more than reducing them to a turn first would."""
 
-Rates = tuple[tuple[Any, ...], tuple[Any, ...]]
-"""Each driver's speed and acceleration: a float, or an array with one value per
-position."""
+Rates = tuple[tuple[Any, ...], tuple[Any, ...], tuple[Any, ...]]
+"""Each driver's speed, acceleration and jerk: a float, or an array with one value
+per position."""
 
 
 def _at(rates: Rates, rows: Any) -> Rates:
     """Return the rates at ``rows``: floats stay floats."""
-    speed, accel = rates
+    speed, accel, jerk = rates
     return (
         tuple(v if isinstance(v, float) else v[rows] for v in speed),
         tuple(v if isinstance(v, float) else v[rows] for v in accel),
+        tuple(v if isinstance(v, float) else v[rows] for v in jerk),
     )
 
 
@@ -144,17 +145,21 @@ def to_si(plan: Plan, given: Array) -> Array:
     return out
 
 
-def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
-    """Return each driver's speed and acceleration for a sweep of ``n`` positions.
+def driver_rates(
+    plan: Plan, omega: Any, epsilon: Any, n: int, jerk: Any = None
+) -> Rates:
+    """Return each driver's speed, acceleration and jerk for a sweep of ``n`` positions.
 
-    Without ``omega`` (``epsilon``) the file's constants; a number (every driver's),
-    or one value per position (per position and driver with several), otherwise.
+    Without ``omega`` (``epsilon``) the file's constants, without ``jerk`` zero (a
+    driver whose acceleration holds); a number (every driver's), or one value per
+    position (per position and driver with several), otherwise.
     """
     d = len(plan.drivers)
     out: list[tuple[Any, ...]] = []
     for entry, value, default in (
         ("omega", omega, [p.omega for p in plan.drivers]),
         ("epsilon", epsilon, [p.epsilon for p in plan.drivers]),
+        ("jerk", jerk, [0.0] * d),
     ):
         if value is None:
             out.append(tuple(float(v) for v in default))
@@ -166,7 +171,7 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
                 "skip_unassembled=... by name to leave out unassembled positions"
             )
             raise UsageError(msg)
-        arr = _real(value, entry, "rad/s or m/s" if entry == "omega" else "rad/s^2")
+        arr = _real(value, entry, UNITS[entry])
         if not np.all(np.isfinite(arr)):
             msg = f"{entry}: expected finite numbers"
             raise UsageError(msg)
@@ -190,4 +195,8 @@ def driver_rates(plan: Plan, omega: Any, epsilon: Any, n: int) -> Rates:
                 f"{shape} with n = {n}; got shape {arr.shape}"
             )
             raise UsageError(msg)
-    return out[0], out[1]
+    return out[0], out[1], out[2]
+
+
+UNITS = {"omega": "rad/s or m/s", "epsilon": "rad/s^2", "jerk": "rad/s^3"}
+"""What each of a driver's rates is expected in (the message of one that is not)."""

@@ -61,11 +61,16 @@ each group at each of the step's positions (n,) by solver index, or None for the
 reference pose's."""
 
 
-def drivers(plan: Plan, drive: Array, speed: Any, acceleration: Any) -> list[Motion]:
-    """Return every body at rest but the driving links, which move as prescribed."""
+def drivers(
+    plan: Plan, drive: Array, speed: Any, acceleration: Any, jerk: Any = ()
+) -> list[Motion]:
+    """Return every body at rest but the driving links, which move as prescribed.
+
+    ``jerk`` holds each driver's jerk as ``speed`` its speed; none given, zero.
+    """
     bodies: list[Motion] = [frame(plan)] * len(plan.bodies)
     for i, d in enumerate(plan.drivers):
-        m = motion(d, drive[:, i], speed[i], acceleration[i])
+        m = motion(d, drive[:, i], speed[i], acceleration[i], jerk[i] if jerk else 0.0)
         m.finish()
         bodies[d.body] = m
     return bodies

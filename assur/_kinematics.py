@@ -62,18 +62,19 @@ def solve(
     acceleration: Any,
     top: int = 3,
     branch_of: BranchOf | None = None,
+    jerk: Any = (),
 ) -> tuple[list[Motion], list[Trouble]]:
     """Solve the motion of every link at driver positions ``drive`` (n, d), SI units.
 
-    ``speed`` and ``acceleration`` hold each driver's rate: a float per driver (a
-    sequence) or an array (n,) per driver; ``branch_of`` gives the groups' branches
-    past change points. Returns the links' motions (levels 0 to ``top``) and the
-    troubles met; positions that fail hold NaN.
+    ``speed``, ``acceleration`` (and ``jerk``, zero if not given) hold each driver's
+    rate: a float per driver (a sequence) or an array (n,) per driver;
+    ``branch_of`` gives the groups' branches past change points. Returns the links'
+    motions (levels 0 to ``top``) and the troubles met; positions that fail hold NaN.
     """
     n = drive.shape[0]
     guesses, around = _continued(plan, drive, branch_of) if plan.newton else ([], [])
     branch = {} if branch_of is None else branch_of(drive, len(plan.solvers))
-    bodies = drivers(plan, drive, speed, acceleration)
+    bodies = drivers(plan, drive, speed, acceleration, jerk)
     troubles: list[Trouble] = []
     g = 0
     for index, solver in enumerate(plan.solvers):

@@ -22,7 +22,7 @@ from assur._loads import compile_loads
 from assur._paths import PathBranches
 from assur._progress import progress
 from assur._reach import unreached
-from assur._state import CHUNK
+from assur._state import CHUNK, jerks
 from assur._unexplained import _unexplained
 from assur._vec import Array, Mask, gather
 from assur.errors import AssurWarning
@@ -84,7 +84,10 @@ def _solve_slice(
     """Solve one slice of a sweep; return its state, force fields and troubles."""
     # failed or dead-centre positions carry NaN through; _report names them
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        bodies, found = _kin.solve(plan, drive, *rates, top=top, branch_of=branch_of)
+        speed, acceleration, jerk = rates
+        bodies, found = _kin.solve(
+            plan, drive, speed, acceleration, top, branch_of, jerk
+        )
         # a closed-form group assembles where the mechanism cannot go too
         found += unreached(plan, drive, found)
         kin = _kin.state_of(plan, bodies, drive, rates, top)
@@ -103,7 +106,9 @@ def _states(
 ) -> tuple[_kin.KinematicState, _kst.ForceState | None]:
     """Return the kinematic and force states of a sweep's tree (see :func:`_passes`)."""
     motion, slide, fields = tree
-    state = _kin.KinematicState(drive, rates[0], rates[1], motion, slide, top)
+    state = _kin.KinematicState(
+        drive, rates[0], rates[1], motion, slide, top, jerks(rates)
+    )
     return state, None if fields is None else _kst.ForceState(*fields)
 
 

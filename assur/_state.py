@@ -18,7 +18,7 @@ from assur.groups._motion import Motion
 from assur.groups._pairs import slide
 from assur.plan import Plan
 
-__all__ = ["KinematicState", "extend", "motions", "own_slides", "state_of"]
+__all__ = ["KinematicState", "extend", "jerks", "motions", "own_slides", "state_of"]
 
 LEVELS = 4
 """Position, velocity, acceleration and jerk."""
@@ -50,6 +50,9 @@ class KinematicState:
         Slide (m) of every prismatic pair and its derivatives, levels 0 to ``top``.
     top : int
         The highest time derivative solved (2: accelerations; 3: jerks).
+    jerk : tuple of leaves
+        Each driver's jerk (rad/s^3 or m/s^3), for the jerks solved later; empty:
+        zero, a driver whose acceleration holds.
     """
 
     drive: Array
@@ -58,6 +61,7 @@ class KinematicState:
     motion: tuple[tuple[Leaf, ...], ...]
     slide: dict[str, tuple[Leaf, ...]]
     top: int
+    jerk: tuple[Leaf, ...] = ()
 
     def __len__(self) -> int:
         return int(self.drive.shape[0])
@@ -95,6 +99,7 @@ class KinematicState:
             motion,
             slide,
             self.top,
+            take_rows(self.jerk, rows),
         )
 
 
@@ -107,7 +112,7 @@ def state_of(
     plan: Plan,
     bodies: list[Motion],
     drive: Array,
-    rates: tuple[tuple[Leaf, ...], tuple[Leaf, ...]],
+    rates: tuple[tuple[Leaf, ...], ...],
     top: int,
 ) -> KinematicState:
     """Return the state of a batch whose motions the forward pass has solved.
@@ -118,9 +123,16 @@ def state_of(
         (*m.phi[: top + 1], *m.ox[: top + 1], *m.oy[: top + 1], m.c, m.s)
         for m in bodies
     )
-    return KinematicState(
-        drive, rates[0], rates[1], motion, _slides(plan, bodies, top), top
-    )
+    slides = _slides(plan, bodies, top)
+    return KinematicState(drive, rates[0], rates[1], motion, slides, top, jerks(rates))
+
+
+def jerks(rates: tuple[tuple[Leaf, ...], ...]) -> tuple[Leaf, ...]:
+    """Return the drivers' jerks of ``rates``; empty where none is other than zero."""
+    jerk = rates[2] if len(rates) > 2 else ()
+    if all(isinstance(v, float) and v == 0.0 for v in jerk):
+        return ()
+    return jerk
 
 
 def _slides(plan: Plan, bodies: list[Motion], top: int) -> dict[str, tuple[Leaf, ...]]:
@@ -214,7 +226,7 @@ def extend(plan: Plan, state: KinematicState) -> KinematicState:
     )
     slide = {name: (*values, new[1][name]) for name, values in state.slide.items()}
     return KinematicState(
-        state.drive, state.speed, state.acceleration, motion, slide, 3
+        state.drive, state.speed, state.acceleration, motion, slide, 3, state.jerk
     )
 
 
@@ -245,8 +257,9 @@ def _solved(plan: Plan, state: KinematicState, levels: range) -> list[Motion]:
     rates say at every level.
     """
     bodies = motions(plan, state, finished=False)
-    if state.top < 2:
-        # the state holds the drivers' motions up to its top level only
+    if state.top < 2 or state.jerk:
+        # the state holds the drivers' motions up to its top level only (and a
+        # driver's jerk of zero above it): they move as their rates say
         moving = drivers(plan, state.drive, *_rates(state))
         for d in plan.drivers:
             bodies[d.body] = moving[d.body]
@@ -259,9 +272,9 @@ def _solved(plan: Plan, state: KinematicState, levels: range) -> list[Motion]:
     return bodies
 
 
-def _rates(state: KinematicState) -> tuple[tuple[Leaf, ...], tuple[Leaf, ...]]:
-    """Return the drivers' speeds and accelerations of ``state``."""
-    return state.speed, state.acceleration
+def _rates(state: KinematicState) -> tuple[tuple[Leaf, ...], ...]:
+    """Return the drivers' speeds, accelerations and jerks of ``state``."""
+    return state.speed, state.acceleration, state.jerk
 
 
 def _slide_jerks(plan: Plan, bodies: list[Motion]) -> dict[str, Leaf]:

@@ -70,6 +70,7 @@ def kinematics(
     skip_unassembled: bool = False,
     columns: Sequence[str] | None = None,
     progress: bool | Callback = False,
+    jerk: Any = None,
 ) -> Table:
     """Positions, velocities, accelerations and jerks over driver positions.
 
@@ -100,6 +101,12 @@ def kinematics(
     progress : bool or callable, optional
         Show a progress bar on standard error (True), or call ``progress(done,
         total)`` as slices of positions are solved.
+    jerk : float or array_like, optional
+        The driver's jerk (rad/s^3; m/s^3), as ``omega``: zero by default, a driver
+        whose acceleration holds (the file's constants). A driver whose ``epsilon``
+        changes along the sweep has a jerk of its own, ``d epsilon / dt``, which
+        every jerk column carries (the steady motion's ``driver.jerk`` of
+        :func:`assur.dynamics`).
 
     Returns
     -------
@@ -123,7 +130,15 @@ def kinematics(
     [10.0, 10.0]
     """
     return _sweep(
-        mechanism, angles, False, skip_unassembled, omega, epsilon, columns, progress
+        mechanism,
+        angles,
+        False,
+        skip_unassembled,
+        omega,
+        epsilon,
+        columns,
+        progress,
+        jerk,
     )
 
 
@@ -136,6 +151,7 @@ def forces(
     skip_unassembled: bool = False,
     columns: Sequence[str] | None = None,
     progress: bool | Callback = False,
+    jerk: Any = None,
 ) -> Table:
     """Kinematics plus inertia loads, joint reactions and balancing loads.
 
@@ -158,6 +174,9 @@ def forces(
         Compute only these columns (and ``angle``), as in :func:`kinematics`.
     progress : bool or callable, optional
         A progress bar on standard error, or a callback ``progress(done, total)``.
+    jerk : float or array_like, optional
+        The drivers' jerks (rad/s^3; m/s^3), as in :func:`kinematics`: the jerk
+        columns' alone (no force depends on it).
 
     Returns
     -------
@@ -196,7 +215,15 @@ def forces(
         )
         raise ModelError(msg)
     return _sweep(
-        mechanism, angles, True, skip_unassembled, omega, epsilon, columns, progress
+        mechanism,
+        angles,
+        True,
+        skip_unassembled,
+        omega,
+        epsilon,
+        columns,
+        progress,
+        jerk,
     )
 
 
@@ -209,6 +236,7 @@ def _sweep(
     epsilon: Any,
     names: Sequence[str] | None,
     show: bool | Callback = False,
+    jerk: Any = None,
 ) -> Table:
     plan = plan_of(mech)
     if not (
@@ -220,7 +248,7 @@ def _sweep(
     given = positions(plan, angles)
     drive = to_si(plan, given)
     n = drive.shape[0]
-    rates = driver_rates(plan, omega, epsilon, n)
+    rates = driver_rates(plan, omega, epsilon, n, jerk)
     chosen = selection(plan, with_forces, names)
     top = chosen.top if names is not None else min(chosen.top, _up_front(n))
     # the drivers' columns alone need none of the links' motions or reactions kept

@@ -61,8 +61,8 @@ from assur._tableio import CsvWriter, JsonWriter
 from assur._text import counted
 from assur._vec import Array
 from assur.dynamics_flywheel import SMALLEST_DELTA
+from assur.dynamics_model import COLUMNS, solved
 from assur.dynamics_model import result as dynamics_rows
-from assur.dynamics_model import solved
 from assur.dynamics_reduced import check_dynamic
 from assur.dynamics_startup import MAX_TURNS
 from assur.errors import AssurWarning, ModelError
@@ -265,6 +265,7 @@ class _Rows:
                 result["angle"],
                 omega=result["driver.omega"],
                 epsilon=result["driver.epsilon"],
+                jerk=result["driver.jerk"],
             )
         return _Joined(result, motion)
 
@@ -374,11 +375,12 @@ def _readable(table: Any, forces: bool, total: int) -> str:
 
     ``table`` holds those rows, of ``total`` in the sweep.
     """
-    names = list(table.columns[:8])
+    own = len(COLUMNS)  # the dynamics' columns, then the forces'
+    names = list(table.columns[:own])
     if forces:
         names += [
             c
-            for c in table.columns[8:]
+            for c in table.columns[own:]
             if c.endswith((".F", "driver.torque", "driver.torque_check"))
         ]
     units = [table.column(c).unit for c in names]

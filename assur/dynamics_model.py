@@ -49,6 +49,7 @@ COLUMNS = (
     ("driver.motor", "driver", "motor", "N m"),
     ("driver.omega", "driver", "omega", "rad/s"),
     ("driver.epsilon", "driver", "epsilon", "rad/s^2"),
+    ("driver.jerk", "driver", "jerk", "rad/s^3"),
 )
 """The columns of a :class:`Dynamics` table: name, owner, quantity, unit."""
 NONE_SKIPPED = np.zeros(0)
@@ -204,8 +205,8 @@ def dynamics(
         included), ``reduced.inertia_slope`` ``dJ/dphi`` (kg m^2/rad),
         ``reduced.torque`` ``M`` of gravity and the external loads (N m),
         ``reduced.work`` the work of ``M`` and the motor from the reference pose
-        (J), ``driver.motor`` (N m), ``driver.omega`` (rad/s) and
-        ``driver.epsilon`` (rad/s^2) of the steady state.
+        (J), ``driver.motor`` (N m), ``driver.omega`` (rad/s), ``driver.epsilon``
+        (rad/s^2) and ``driver.jerk`` (rad/s^3) of the steady state.
 
     Raises
     ------
@@ -231,7 +232,17 @@ def dynamics(
         \varepsilon = \frac{dw}{dt} = \frac{M + M_d - \tfrac12 J' w^2}{J},
 
     so that the balancing torque of the kinetostatics at that motion is
-    :math:`M_d - J_f \varepsilon`. The work is integrated on an internal grid of
+    :math:`M_d - J_f \varepsilon`. Its derivative in time is the crank's jerk,
+
+    .. math::
+
+        \frac{d\varepsilon}{dt} = w\,\frac{M' - \tfrac12 J'' w^2
+        - 2 J' \varepsilon}{J},
+
+    with :math:`M'` and :math:`J''` the slopes of the interpolants of :math:`M` and
+    :math:`J'` (a step of a load table makes it jump: infinite in theory).
+    ``assur.forces(..., jerk=t["driver.jerk"])`` then gives the links' jerks at
+    that motion too. The work is integrated on an internal grid of
     ``GRID_START`` to
     ``GRID_MOST`` positions a turn, refined until it
     changes by less than :data:`~assur.dynamics_reduced.GRID_RTOL`; the extremes of
@@ -285,9 +296,13 @@ def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dyna
     square = np.maximum(2.0 * (steady.energy + work) / inertia, 0.0)
     omega = math.copysign(1.0, steady.omega) * np.sqrt(square)
     epsilon = (torque + model.motor - 0.5 * slope * omega * omega) / inertia
+    # d(epsilon)/dt = w d(epsilon)/d(phi), J and J' exact, their slopes interpolated
+    curve, rise = model.curvature_at(phi), model.torque_slope_at(phi)
+    jerk = omega * (rise - 0.5 * curve * omega * omega - 2.0 * slope * epsilon)
+    jerk /= inertia
     n = angle.shape[0]
     arrays = (angle, inertia, slope, torque, work, np.full(n, model.motor), omega)
-    values = dict(zip((c[0] for c in COLUMNS), (*arrays, epsilon), strict=True))
+    values = dict(zip((c[0] for c in COLUMNS), (*arrays, epsilon, jerk), strict=True))
     for v in values.values():
         v.flags.writeable = False
     schema = tuple(Column(*c, "dynamics", (), 0) for c in COLUMNS)

@@ -124,7 +124,7 @@ class Table(Columns):
         for state in kept:
             if isinstance(state, KinematicState):
                 motion = (state.drive, state.speed, state.acceleration, state.motion)
-                freeze((*motion, state.slide))
+                freeze((*motion, state.slide, state.jerk))
             elif state is not None:
                 freeze(state.fields())
         self._frozen.append(True)

@@ -277,6 +277,52 @@ def test_velocities_scale_with_the_speed_and_accelerations_split():
             )
 
 
+@pytest.mark.parametrize("count", [36, SHORT + 500])  # jerks at once, jerks later
+def test_jerks_split_with_the_driver_s_jerk(count):
+    """r(phi(t)): the jerk is w^3 d3r + 3 w e d2r + j dr, the derivatives with
+    respect to the crank angle being the motion at unit speed (``jerk=`` the driver's
+    own jerk j; zero before it could be given, wrong for a driver whose acceleration
+    changes, the dynamic model's steady motion say)."""
+    mech = assur.load(EXAMPLES / "tenbar.toml")
+    at = np.linspace(0.0, 360.0, count, endpoint=False)
+    omega, epsilon = speeds(count, 3.0)
+    jerk = np.linspace(-400.0, 250.0, count)
+    table = assur.kinematics(mech, at, omega=omega, epsilon=epsilon, jerk=jerk)
+    unit = assur.kinematics(mech, at, omega=1.0, epsilon=0.0)
+    np.testing.assert_array_equal(table["1.jerk"], jerk)
+    for point in ("C", "E", "S"):
+        for axis in ("x", "y"):
+            v1, a1, j1 = (unit[f"{point}.{k}{axis}"] for k in "vaj")
+            want = omega**3 * j1 + 3.0 * omega * epsilon * a1 + jerk * v1
+            got = table[f"{point}.j{axis}"]
+            tol = 1e-9 * np.abs(want).max()
+            np.testing.assert_allclose(got, want, rtol=1e-9, atol=tol)
+    # a table of the jerk alone solves it so too, and a number is every position's
+    few = assur.kinematics(
+        mech, at, omega=omega, epsilon=epsilon, jerk=jerk, columns=["S.jx"]
+    )
+    np.testing.assert_allclose(few["S.jx"], table["S.jx"], rtol=1e-12, atol=1e-9)
+    same = assur.kinematics(mech, at, jerk=7.0)
+    np.testing.assert_array_equal(same["1.jerk"], 7.0)
+    # the file's constants: a jerk of zero, every number as before
+    plain = assur.kinematics(mech, at)
+    zero = assur.kinematics(mech, at, jerk=0.0)
+    for name in plain.columns:
+        np.testing.assert_array_equal(zero[name], plain[name])
+
+
+def test_a_bad_jerk_is_refused():
+    mech = assur.catalog.slider_crank()
+    with pytest.raises(assur.UsageError, match="jerk: expected a number or one value"):
+        assur.kinematics(mech, [0.0, 10.0, 20.0], jerk=[1.0, 2.0])
+    with pytest.raises(
+        assur.UsageError, match=r"jerk: expected real numbers \(rad/s\^3"
+    ):
+        assur.forces(mech, [0.0], jerk="fast")
+    with pytest.raises(assur.UsageError, match="jerk: expected finite numbers"):
+        assur.kinematics(mech, [0.0], jerk=[np.inf])
+
+
 def test_speeds_are_the_third_and_fourth_arguments_as_format_md_writes_them():
     """``assur.kinematics(mechanism, angles, omega=None, epsilon=None)``: by position
     as by name, the same table; the skipping of unassembled positions goes by name."""

@@ -184,6 +184,53 @@ def test_time_integration_reproduces_the_steady_state(name):
     np.testing.assert_allclose(w, energy["driver.omega"], rtol=1e-7)
 
 
+@pytest.mark.parametrize("name", [n for n in DYNAMIC if n != "whitworth"])
+def test_the_crank_s_jerk_is_the_rate_of_its_acceleration_in_time(name):
+    """The oracle's integration in time: the rate of its crank's acceleration along
+    the steady motion (differences in time of the equation of motion's phi'') is
+    ``driver.jerk``; the forces table at that motion carries it to every link.
+
+    The Whitworth shaper is left out: its cutting force's table has corners, where
+    the jerk jumps."""
+    mech = example(name)
+    model = oracle.crank_model(mech, flywheel_of(name))
+    start = assur.dynamics(mech, [0.0], flywheel=flywheel_of(name))
+    t, phi, w = oracle.integrate_turn(
+        model, 0.0, float(start["driver.omega"][0]), model.motor, steps=6000
+    )
+    motor = model.motor
+    eps = np.array([model.acceleration(*pw, motor) for pw in zip(phi, w, strict=True)])
+    rate = np.gradient(eps, t)[5:-5]
+    table = assur.dynamics(mech, np.degrees(phi[5:-5]), flywheel=flywheel_of(name))
+    scale = float(np.max(np.abs(rate)))
+    np.testing.assert_allclose(table["driver.jerk"], rate, atol=2e-4 * scale)
+    # every link's jerk at that motion: the time derivative of its acceleration
+    rows = slice(0, None, 20)
+    at = table["angle"][rows]
+    motion = assur.forces(
+        mech,
+        at,
+        omega=table["driver.omega"][rows],
+        epsilon=table["driver.epsilon"][rows],
+        jerk=table["driver.jerk"][rows],
+    )
+    pivot = next(j for j in mech.joints if j.name == mech.drivers[0].joint)
+    (crank,) = (name for name in pivot.links if name != "ground")
+    np.testing.assert_array_equal(motion[f"{crank}.jerk"], table["driver.jerk"][rows])
+    for link in (link.name for link in mech.links if link.name != crank):
+        alpha = assur.forces(
+            mech,
+            table["angle"],
+            omega=table["driver.omega"],
+            epsilon=table["driver.epsilon"],
+            columns=[f"{link}.alpha"],
+        )[f"{link}.alpha"]
+        rate = np.gradient(alpha, t[5:-5])[rows]
+        jerk = motion[f"{link}.jerk"]
+        size = max(1.0, float(np.max(np.abs(jerk))))
+        np.testing.assert_allclose(jerk[1:-1], rate[1:-1], atol=1e-3 * size)
+
+
 @pytest.mark.parametrize("name", ["whitworth", "offset_slider_crank", "four_bar"])
 def test_extremes_do_not_depend_on_the_angle_step(name):
     mech = example(name)

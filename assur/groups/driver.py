@@ -64,16 +64,18 @@ class Balance:
     balancing: Any
 
 
-def motion(plan: DriverPlan, position: Array, omega: Any, epsilon: Any) -> Motion:
+def motion(
+    plan: DriverPlan, position: Array, omega: Any, epsilon: Any, jerk: Any = 0.0
+) -> Motion:
     """Return the input link's motion at driver positions ``position`` (rad or m).
 
-    ``omega`` and ``epsilon`` are the speed and acceleration, a float or one value
-    per position.
+    ``omega``, ``epsilon`` and ``jerk`` are the speed, acceleration and jerk (rad/s,
+    rad/s^2, rad/s^3, or m/s... for a slider), a float or one value per position.
     """
     x0, y0 = plan.origin
     if plan.kind == "R":
         return Motion(
-            [position - plan.angle0, omega, epsilon, 0.0],
+            [position - plan.angle0, omega, epsilon, jerk],
             [x0, 0.0, 0.0, 0.0],
             [y0, 0.0, 0.0, 0.0],
         )
@@ -82,8 +84,8 @@ def motion(plan: DriverPlan, position: Array, omega: Any, epsilon: Any) -> Motio
     s = position - plan.reference
     return Motion(
         [0.0, 0.0, 0.0, 0.0],
-        [x0 + s * ex, omega * ex, epsilon * ex, 0.0],
-        [y0 + s * ey, omega * ey, epsilon * ey, 0.0],
+        [x0 + s * ex, omega * ex, epsilon * ex, jerk * ex],
+        [y0 + s * ey, omega * ey, epsilon * ey, jerk * ey],
     )
 
 
