@@ -78,7 +78,7 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
         ("nominal crank speed", f"{result.omega:.6g} rad/s{turning}"),
         ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
         ("motor torque", f"{number_text(motor)} N m ({_motor_note(motor, result)})"),
-        ("coefficient of speed fluctuation", f"delta = {result.delta:.6g}"),
+        ("coefficient of speed fluctuation", f"delta = {_delta(result.delta)}"),
         (
             "largest speed",
             f"{result.speed_max:.6g} rad/s at {result.angle_max:.6g} deg",
@@ -99,7 +99,7 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
         gaps = {k: f"{100 * v:+.3g} %" for k, v in sizing.differences().items()}
         lines[1] = (
             "flywheel",
-            f"{sizing.exact:.6g} {kgm2} (exact, for delta = {sizing.delta:g})",
+            f"{sizing.exact:.6g} {kgm2} (exact, for delta = {_delta(sizing.delta)})",
         )
         # the classical estimates drop terms of the order of the mechanism's own
         # fluctuation: close to it they fail, even below zero
@@ -142,9 +142,24 @@ def _startup_lines(run: Any) -> list[tuple[str, str]]:
         (
             "",
             # the steady state's definition: over the mean of the extreme speeds
-            f"delta = {run.delta:.6g} (max - min over their mean, {middle:.6g} rad/s)",
+            f"delta = {_delta(run.delta)} (max - min over their mean, "
+            f"{middle:.6g} rad/s)",
         ),
     ]
+
+
+def _delta(value: float) -> str:
+    """Return a coefficient of speed fluctuation with 6 significant digits.
+
+    More where those round it up to 2, the crank at rest, which no steady motion
+    reaches and ``--delta`` refuses: ``--delta 1.999999`` was told "delta = 2".
+    """
+    text = f"{value:.6g}"
+    digits = 6
+    while float(text) >= 2.0 > value and digits < 17:
+        digits += 1
+        text = f"{value:.{digits}g}"
+    return text
 
 
 def _header(mechanism: Any, lines: list[tuple[str, str]]) -> str:

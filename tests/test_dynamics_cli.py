@@ -66,6 +66,18 @@ def test_flywheel_for_a_delta(capsys):
     assert "delta = 0.05\n" in out
 
 
+def test_a_delta_near_2_is_not_told_as_2(capsys):
+    # 2 (the crank at rest) is refused as --delta: 1.999999 was echoed as "2"
+    status, out, _ = run(
+        capsys, "dynamics", WHITWORTH, "--delta", "1.999999", "--angles", "0"
+    )
+    assert status == 0
+    assert "(exact, for delta = 1.999999)" in out
+    (said,) = (line for line in out.splitlines() if "fluctuation" in line)
+    shown = float(said.rpartition("delta = ")[2])
+    assert 1.9999 < shown < 2.0
+
+
 def test_json(capsys):
     status, out, _ = run(
         capsys,
