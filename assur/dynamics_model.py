@@ -19,6 +19,7 @@ import numpy as np
 from assur._change_limits import across_change_points
 from assur._checks import LARGEST
 from assur._drive import positions
+from assur._reduced_jerk import crank_jerk, curvature
 from assur._text import suggest
 from assur._vec import Array, real
 from assur.analysis import default_positions
@@ -239,8 +240,9 @@ def dynamics(
         \frac{d\varepsilon}{dt} = w\,\frac{M' - \tfrac12 J'' w^2
         - 2 J' \varepsilon}{J},
 
-    with :math:`M'` and :math:`J''` the slopes of the interpolants of :math:`M` and
-    :math:`J'` (a step of a load table makes it jump: infinite in theory).
+    with :math:`J''` from the jerks at unit crank speed and :math:`M'` the slope of
+    :math:`M`'s interpolant (a corner of a load table makes it jump, a step
+    infinite in theory).
     ``assur.forces(..., jerk=t["driver.jerk"])`` then gives the links' jerks at
     that motion too. The work is integrated on an internal grid of
     ``GRID_START`` to
@@ -296,10 +298,10 @@ def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dyna
     square = np.maximum(2.0 * (steady.energy + work) / inertia, 0.0)
     omega = math.copysign(1.0, steady.omega) * np.sqrt(square)
     epsilon = (torque + model.motor - 0.5 * slope * omega * omega) / inertia
-    # d(epsilon)/dt = w d(epsilon)/d(phi), J and J' exact, their slopes interpolated
-    curve, rise = model.curvature_at(phi), model.torque_slope_at(phi)
-    jerk = omega * (rise - 0.5 * curve * omega * omega - 2.0 * slope * epsilon)
-    jerk /= inertia
+    # d(epsilon)/dt: J, J' and J'' exact, the slope of M from its interpolant
+    (curve,) = across_change_points(plan, angle, lambda a: [curvature(mech, a)])
+    rise = model.torque_slope_at(phi)
+    jerk = crank_jerk(omega, epsilon, inertia, slope, curve, rise)
     n = angle.shape[0]
     arrays = (angle, inertia, slope, torque, work, np.full(n, model.motor), omega)
     values = dict(zip((c[0] for c in COLUMNS), (*arrays, epsilon, jerk), strict=True))

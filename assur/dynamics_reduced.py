@@ -181,15 +181,6 @@ class Reduced:
         """Interpolate ``dJ/dphi`` (kg m^2/rad) at crank angles ``phi`` (rad)."""
         return self.splines[0](phi, 1)
 
-    def curvature_at(self, phi: Any) -> Any:
-        """Interpolate ``d2J/dphi2`` (kg m^2/rad^2) at crank angles ``phi`` (rad).
-
-        The slope of ``J``'s interpolant's slope: that interpolant takes ``J`` and
-        ``dJ/dphi`` at every grid point, so its second derivative is of the
-        grid's step squared (a cubic Hermite interpolant).
-        """
-        return self.splines[0](phi, 2)
-
     def torque_slope_at(self, phi: Any) -> Any:
         """Interpolate ``dM/dphi`` (N m/rad) at crank angles ``phi`` (rad)."""
         return self.splines[1](phi, 1)

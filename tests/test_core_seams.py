@@ -9,6 +9,7 @@ points.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import pickle
 import warnings
@@ -321,6 +322,24 @@ def test_a_bad_jerk_is_refused():
         assur.forces(mech, [0.0], jerk="fast")
     with pytest.raises(assur.UsageError, match="jerk: expected finite numbers"):
         assur.kinematics(mech, [0.0], jerk=[np.inf])
+    refused = r"^jerk: expected real numbers .*got True or False$"
+    with pytest.raises(assur.UsageError, match=refused):
+        assur.kinematics(mech, [0.0], jerk=True)
+    # a jerk grows as the speed cubed: the steady motion of a crank at 1e5 rad/s
+    # has some 1.5e15 rad/s^3, beyond the file's numbers' 1e15
+    fast = dataclasses.replace(mech, drivers=(assur.Driver("A", 1e5),))
+    steady = assur.dynamics(fast, [0.0, 90.0])
+    assert np.max(np.abs(steady["driver.jerk"])) > 1e15
+    table = assur.forces(
+        fast,
+        steady["angle"],
+        omega=steady["driver.omega"],
+        epsilon=steady["driver.epsilon"],
+        jerk=steady["driver.jerk"],
+    )
+    np.testing.assert_array_equal(table["crank.jerk"], steady["driver.jerk"])
+    with pytest.raises(assur.UsageError, match=r"expected magnitudes up to 1e\+30"):
+        assur.kinematics(mech, [0.0], jerk=2e30)
 
 
 def test_speeds_are_the_third_and_fourth_arguments_as_format_md_writes_them():

@@ -231,6 +231,31 @@ def test_the_crank_s_jerk_is_the_rate_of_its_acceleration_in_time(name):
         np.testing.assert_allclose(jerk[1:-1], rate[1:-1], atol=1e-3 * size)
 
 
+@pytest.mark.parametrize("name", ["four_bar", "slider_crank_exercise"])
+def test_the_crank_s_jerk_without_loads_in_closed_form(name):
+    """No loads, no motor: J w^2 is constant, so w = C / sqrt(J),
+    epsilon = -J' w^2 / (2 J) and its rate w (-J'' w^2 / 2 - 2 J' epsilon) / J, with
+    J from the oracle's kinetic energy and its slopes by central differences."""
+    mech = example(name)
+    step = 0.01  # deg
+    fine = np.arange(0.0, 360.0, step)
+    inertia, _ = oracle.crank_reduction(mech, fine)
+    h = math.radians(step)
+    slope = (np.roll(inertia, -1) - np.roll(inertia, 1)) / (2.0 * h)
+    curve = (np.roll(inertia, -1) - 2.0 * inertia + np.roll(inertia, 1)) / h**2
+    omega = mech.drivers[0].omega
+    # the mean of the extreme speeds is the file's
+    c = 2.0 * omega / (1.0 / math.sqrt(inertia.min()) + 1.0 / math.sqrt(inertia.max()))
+    w = c / np.sqrt(inertia)
+    eps = -0.5 * slope * w * w / inertia
+    jerk = w * (-0.5 * curve * w * w - 2.0 * slope * eps) / inertia
+    rows = slice(0, None, 700)
+    table = assur.dynamics(mech, fine[rows])
+    np.testing.assert_allclose(table["driver.omega"], w[rows], rtol=1e-7)
+    scale = float(np.max(np.abs(jerk)))
+    np.testing.assert_allclose(table["driver.jerk"], jerk[rows], atol=1e-6 * scale)
+
+
 @pytest.mark.parametrize("name", ["whitworth", "offset_slider_crank", "four_bar"])
 def test_extremes_do_not_depend_on_the_angle_step(name):
     mech = example(name)

@@ -125,6 +125,7 @@ RANKS = {
     "assur._grid_warnings": 1,
     "assur.dynamics_steady": 10,
     "assur.dynamics_model": 10,
+    "assur._reduced_jerk": 10,
     "assur.dynamics_flywheel": 10,
     "assur.dynamics_startup": 10,
     # the start-up's parts: what it is given, checked; how its run of turns ends;
