@@ -73,6 +73,22 @@ def test_the_picture_draws_kennedy_lines_and_names_with_subscripts() -> None:
         plt.close(ax.figure)
 
 
+def test_centres_merely_near_are_named_each_at_its_own_dot() -> None:
+    import matplotlib.pyplot as plt
+
+    # I_crank,left_rocker 6.7 mm (2 % of the size) from I_crank,rod was named in
+    # the latter's label, its own dot left unnamed
+    pos = position(assur.load(EXAMPLES / "class3.toml"), 40.0)
+    ax = plans.instant_centres(pos.table)
+    try:
+        names = [t.get_text() for t in ax.texts if t.get_text().startswith("$I")]
+        assert r"$I_{\text{crank},\text{rod}}$" in names
+        assert r"$I_{\text{crank},\text{left_rocker}}$" in names
+        assert not [n for n in names if ", $I" in n]
+    finally:
+        plt.close(ax.figure)
+
+
 def _sliding(path: Path, angle: float):
     """The solved mechanism, its finite centres, their pins, the infinite ones."""
     pos = position(assur.load(path), angle)

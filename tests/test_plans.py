@@ -481,6 +481,19 @@ def test_the_terms_written_on_the_lever_add_up_by_hand(
     assert sum(label.startswith(("$M_{i,", "$T_{")) for label in terms) == len(couples)
 
 
+@pytest.mark.parametrize("angle", [0.0, 180.0])
+def test_a_sum_that_rounds_to_nothing_is_written_0(angle: float) -> None:
+    # the slider-crank at a dead centre: the sum was "-0.00000000 N·m"
+    import matplotlib.pyplot as plt
+
+    table = table_at(assur.load(EXAMPLES / "slider_crank_exercise.toml"), angle)
+    ax = lever.zhukovsky_lever(table)
+    _, written = _listed(ax)
+    plt.close(ax.figure)
+    assert float(written) == 0.0
+    assert not written.startswith("-")
+
+
 @pytest.mark.parametrize("stem", LEVERS)
 def test_the_forces_drawn_on_the_lever_give_its_load(stem: str, tmp_path: Path) -> None:
     # the moments about the pole of the arrows drawn (a couple as its pair of forces

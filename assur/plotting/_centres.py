@@ -64,7 +64,9 @@ def draw_centres(pos: Position, ax: Any) -> Any:
     places: list[tuple[np.ndarray, list[str]]] = []
     for (i, j), p in near.items():
         ax.plot(*p, ls="none", zorder=9, **(RELATIVE if i else ABSOLUTE))
-        _place(places, p, _name(pos, i, j), 0.02 * pos.size())
+        # one label for centres whose dots overlap; those merely near get their
+        # own (a centre 2 % of the size off was named at another's dot)
+        _place(places, p, _name(pos, i, j), SAME_DOT * pos.size())
     _frame(ax, [np.array([[x0, y0], [x1, y1]]), *near.values()])
     names = [
         Name(ax.annotate(", ".join(labels), tuple(p), fontsize=7), p, p)
@@ -86,6 +88,11 @@ def draw_centres(pos: Position, ax: Any) -> Any:
     lines = [np.array([a, b]) for bar in bars for a, b in itertools.pairwise(bar)]
     place_names(ax, names, np.array(lines) if lines else None, _small_patches(ax))
     return ax
+
+
+SAME_DOT = 0.003
+"""Distance between centres, as a fraction of the mechanism's size, within which
+their dots fall on one another and one label names them all."""
 
 
 def _name(pos: Position, i: int, j: int) -> str:

@@ -341,6 +341,8 @@ def _list_terms(
             head += ")" if apart[t.body] else "; listed only)"
         # rounded first: a share that rounds to nothing is written +0, not -0
         lines.append(f"{head}:  {round(share, places + 1) + 0.0:+.{places + 1}f}")
-    lines.append(f"sum = balancing load: {balancing:.{places}f} {unit}")
+    # a sum that rounds to nothing is written 0, not -0, as the shares are
+    total = round(balancing, places) + 0.0
+    lines.append(f"sum = balancing load: {total:.{places}f} {unit}")
     ax.text(1.03, 1.0, "\n".join(lines), transform=ax.transAxes, fontsize=8,
             va="top", ha="left", linespacing=1.7)  # fmt: skip
