@@ -36,6 +36,41 @@ def test_plan_images_are_the_table_s_velocities_and_accelerations(stem: str) -> 
             np.testing.assert_allclose(v, want, rtol=1e-12, atol=1e-12)
 
 
+@pytest.mark.parametrize("level", [1, 2])
+def test_a_triad_s_plan_draws_its_links_relative_motions(level: int) -> None:
+    # the class III plans drew the images alone: no triangle to check
+    import matplotlib.pyplot as plt
+
+    from assur.plotting.plans import _rigid_parts
+
+    mech = assur.load(EXAMPLES / "class3.toml")
+    table = assur.kinematics(mech, [40.0])
+    pos = position(mech, 40.0)
+    (triad,) = [s for s in table.plan.solvers if len(s.bodies) == 4]
+    mu = 0.001
+    parts = _rigid_parts(pos, triad.bodies, level, mu)
+    ends = {tuple(np.round(v / mu, 9)) for v in plans.images(pos, level).values()}
+    step = 1 if level == 1 else 2
+    # rod 1, plate 2, each rocker 1 relative motion: from a known pin's image
+    assert len(parts) == 5 * step
+    for i in range(0, len(parts), step):
+        chain = parts[i : i + step]
+        assert tuple(np.round(chain[0][0], 9)) in ends  # from a pin's image
+        assert tuple(np.round(chain[-1][1], 9)) in ends  # to another's
+        if level == 2:
+            normal, tangential = chain
+            assert np.array_equal(normal[1], tangential[0])
+            assert (normal[2], tangential[2]) == ("n", "t")
+            # -w^2 r along the link, eps x r across it: square to each other (a
+            # normal part of the wrong sign leaves the rest oblique)
+            n, t = (part[1] - part[0] for part in chain)
+            assert abs(n @ t) <= 1e-9 * np.hypot(*n) * np.hypot(*t)
+    ax = plans.acceleration_plan(table) if level == 2 else plans.velocity_plan(table)
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    plt.close(ax.figure)
+    assert ("normal" in legend) if level == 2 else ("relative (rotation)" in legend)
+
+
 @pytest.mark.parametrize(
     "stem", ["slider_crank_exercise", "six_bar_lecture", "whitworth"]
 )

@@ -90,6 +90,13 @@ def _chains(
         _crank_parts(ax, pos, mu, palette, kinds)
     for s in pos.plan.solvers:
         if not isinstance(s, DyadSolver):
+            # a triad's equations are solved together: its links' rigid-body
+            # relations are drawn, the triangles a student checks
+            for arrow in _rigid_parts(pos, s.bodies, k, mu):
+                ends = _beside(drawn, arrow[0], arrow[1])
+                if _arrow(ax, *ends, palette[arrow[2]], lw=1.8):
+                    kinds[arrow[2]] = palette[arrow[2]]
+                    drawn.append(ends)
             continue
         for side in _sides(pos, s, k):
             tip = np.zeros(2)
@@ -118,6 +125,44 @@ def _chains(
     for part, color in kinds.items():
         legend.append((names.get(part, part), color))
     return legend
+
+
+def _rigid_parts(
+    pos: Position, bodies: tuple[int, ...], k: int, mu: float
+) -> list[tuple[np.ndarray, np.ndarray, str]]:
+    """Return each link's relative motion of its pins, as arrows (mm) and parts.
+
+    From the image of a link's pin to the group's known links (its first pin
+    else) to that of each other pin: the relative velocity ``omega x PQ`` ("v"),
+    or the relative acceleration's normal part ``-omega^2 PQ`` ("n") then its
+    tangential part ``epsilon x PQ`` ("t"), which ends at the other pin's image.
+    """
+    out: list[tuple[np.ndarray, np.ndarray, str]] = []
+    for b in bodies:
+        pins: dict[str, tuple[float, float]] = {}
+        known: dict[str, tuple[float, float]] = {}
+        for pair in pos.pairs_of(b):
+            if pair.kind == "R":
+                offset = pair.d_first if pair.first == b else pair.d_second
+                other = pair.second if pair.first == b else pair.first
+                pins.setdefault(pair.name.split("~")[0], offset)
+                if other not in bodies:
+                    known.setdefault(pair.name.split("~")[0], offset)
+        offsets = list((known | pins).values())
+        if len(offsets) < 2:
+            continue
+        base = offsets[0]
+        start = pos.point(b, base, k) / mu
+        for offset in offsets[1:]:
+            end = pos.point(b, offset, k) / mu
+            if k == 1:
+                out.append((start, end, "v"))
+                continue
+            # the relative acceleration: -w^2 r along the link, then eps x r
+            r = pos.point(b, offset) - pos.point(b, base)
+            middle = start - pos.omega(b) ** 2 * r / mu
+            out += [(start, middle, "n"), (middle, end, "t")]
+    return out
 
 
 def _crank_parts(
