@@ -89,6 +89,26 @@ def test_centres_merely_near_are_named_each_at_its_own_dot() -> None:
         plt.close(ax.figure)
 
 
+def test_centres_at_infinity_are_named_with_their_direction() -> None:
+    import matplotlib.pyplot as plt
+
+    # the Scotch yoke showed three of its six centres: those at infinity had no
+    # mark, name or note
+    pos = position(assur.load(EXAMPLES / "scotch_yoke.toml"), 30.0)
+    ax = plans.instant_centres(pos.table)
+    try:
+        said = sorted(t.get_text() for t in ax.texts if "at infinity" in t.get_text())
+    finally:
+        plt.close(ax.figure)
+    # the yoke translates along the guide, the block with the crank's pin, and the
+    # block slides in the yoke's upright slot
+    assert said == [
+        r"$I_{\text{block},\text{yoke}}$ at infinity, 0°",
+        r"$I_{\text{block}}$ at infinity, 30°",
+        r"$I_{\text{yoke}}$ at infinity, 90°",
+    ]
+
+
 def _sliding(path: Path, angle: float):
     """The solved mechanism, its finite centres, their pins, the infinite ones."""
     pos = position(assur.load(path), angle)

@@ -10,6 +10,7 @@ functions only.
 from __future__ import annotations
 
 import itertools
+import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -75,6 +76,8 @@ def draw_centres(pos: Position, ax: Any) -> Any:
     for (i, j), p in centres.items():
         if (i, j) not in near:
             names.append(_far_centre(ax, p, _name(pos, i, j), i == 0))
+    for (i, j), d in far.items():
+        names.append(_infinite_centre(ax, d, _name(pos, i, j), i == 0))
     bars = [
         np.column_stack([line.get_xdata(), line.get_ydata()])
         for line in ax.lines
@@ -209,8 +212,28 @@ def _far_centre(ax: Any, p: np.ndarray, label: str, absolute: bool) -> Name:
     """
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     middle = np.array([x0 + x1, y0 + y1]) / 2
-    half = 0.96 * np.array([x1 - x0, y1 - y0]) / 2
     u = (p - middle) / float(np.hypot(*(p - middle)))
+    return _edge_arrow(ax, u, f"{label} ({p[0]:.3g}, {p[1]:.3g}) m", absolute)
+
+
+def _infinite_centre(ax: Any, d: np.ndarray, label: str, absolute: bool) -> Name:
+    """Draw an arrow at the frame's edge toward a centre at infinity; return its name.
+
+    ``d`` is its direction (a slider's centre, a translating link's). The name
+    says it is at infinity, with the direction's angle (deg, within a half turn:
+    the centre is as far one way as the other).
+    """
+    # rounded first: a direction a hair below the axis is 0°, not 180°
+    angle = round(math.degrees(math.atan2(d[1], d[0])), 3) % 180.0 + 0.0
+    u = d if d[1] > 0 or (d[1] == 0 and d[0] > 0) else -d
+    return _edge_arrow(ax, u, f"{label} at infinity, {angle:.3g}°", absolute)
+
+
+def _edge_arrow(ax: Any, u: np.ndarray, text: str, absolute: bool) -> Name:
+    """Draw an arrow at the frame's edge along the unit vector ``u``, named ``text``."""
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    middle = np.array([x0 + x1, y0 + y1]) / 2
+    half = 0.96 * np.array([x1 - x0, y1 - y0]) / 2
     with np.errstate(divide="ignore"):
         reach = float(np.min(half / np.abs(u)))
     tip = middle + reach * u
@@ -219,13 +242,8 @@ def _far_centre(ax: Any, p: np.ndarray, label: str, absolute: bool) -> Name:
     ax.add_patch(fitted_arrow([tail, tip], 9.0, color=style["color"], lw=1.2,
                               zorder=9))  # fmt: skip
     ax.plot(*tail, ls="none", zorder=9, mfc="white", **style)
-    text = ax.annotate(
-        f"{label} ({p[0]:.3g}, {p[1]:.3g}) m",
-        tuple(tail),
-        fontsize=7,
-        color=style["color"],
-    )
-    return Name(text, tail, tail)
+    name = ax.annotate(text, tuple(tail), fontsize=7, color=style["color"])
+    return Name(name, tail, tail)
 
 
 def _small_patches(ax: Any) -> list[Any]:
