@@ -129,17 +129,8 @@ def kinematics(
     >>> t["crank.omega"].tolist()
     [10.0, 10.0]
     """
-    return _sweep(
-        mechanism,
-        angles,
-        False,
-        skip_unassembled,
-        omega,
-        epsilon,
-        columns,
-        progress,
-        jerk,
-    )
+    speeds = (omega, epsilon, jerk)
+    return _sweep(mechanism, angles, False, skip_unassembled, speeds, columns, progress)
 
 
 def forces(
@@ -214,17 +205,8 @@ def forces(
             "'center' and 'inertia' on the links or [[loads]] for a force analysis"
         )
         raise ModelError(msg)
-    return _sweep(
-        mechanism,
-        angles,
-        True,
-        skip_unassembled,
-        omega,
-        epsilon,
-        columns,
-        progress,
-        jerk,
-    )
+    speeds = (omega, epsilon, jerk)
+    return _sweep(mechanism, angles, True, skip_unassembled, speeds, columns, progress)
 
 
 def _sweep(
@@ -232,11 +214,9 @@ def _sweep(
     angles: Any,
     with_forces: bool,
     skip: bool,
-    omega: Any,
-    epsilon: Any,
+    speeds: tuple[Any, Any, Any],
     names: Sequence[str] | None,
     show: bool | Callback = False,
-    jerk: Any = None,
 ) -> Table:
     plan = plan_of(mech)
     if not (
@@ -248,7 +228,7 @@ def _sweep(
     given = positions(plan, angles)
     drive = to_si(plan, given)
     n = drive.shape[0]
-    rates = driver_rates(plan, omega, epsilon, n, jerk)
+    rates = driver_rates(plan, *speeds[:2], n, speeds[2])
     chosen = selection(plan, with_forces, names)
     top = chosen.top if names is not None else min(chosen.top, _up_front(n))
     # the drivers' columns alone need none of the links' motions or reactions kept
