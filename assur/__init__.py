@@ -32,6 +32,7 @@ from assur.errors import (
     OutputError,
     SelfLockingError,
     SingularConfigurationError,
+    UnknownNameError,
     UsageError,
 )
 from assur.explain import Note, explain
@@ -78,6 +79,7 @@ __all__ = [
     "Study",
     "Table",
     "Toward",
+    "UnknownNameError",
     "UsageError",
     "__version__",
     "catalog",

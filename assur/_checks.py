@@ -82,7 +82,8 @@ def _number_fault(value: object) -> str:
     """Return what is wrong with a number that is not :func:`_finite`."""
     if not _number(value):
         return f"expected a number, got {describe(value)}"
-    if not math.isfinite(value):  # type: ignore[arg-type]
+    # an integer is finite, however large (math.isfinite of 10**400 overflows)
+    if isinstance(value, float) and not math.isfinite(value):
         return f"expected a finite number, got {describe(value)}"
     return f"expected a number of magnitude at most {LARGEST:g}, got {describe(value)}"
 

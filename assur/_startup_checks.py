@@ -10,6 +10,7 @@ import warnings
 from typing import TYPE_CHECKING, Any
 
 from assur._motor import validate_motor
+from assur._text import describe
 from assur._vec import integer, real
 from assur.dynamics_reduced import Reduced
 from assur.errors import AssurWarning, ModelError, UsageError
@@ -42,8 +43,8 @@ def _turns(turns: Any) -> int:
     if number > MOST_TURNS:
         # 1e11 turns were taken: decades of work, memory that runs out first
         msg = (
-            f"turns: {number}; expected at most {MOST_TURNS} (each turn's samples "
-            "are kept): a motion that has not settled by then is told so"
+            f"turns: {describe(number)}; expected at most {MOST_TURNS} (each turn's "
+            "samples are kept): a motion that has not settled by then is told so"
         )
         raise UsageError(msg)
     return number

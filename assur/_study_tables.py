@@ -70,6 +70,10 @@ def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:
     """
     if variants is None:
         return list(range(count))
+    if isinstance(variants, str | bytes) or not hasattr(variants, "__iter__"):
+        # a lone number or a name: not walked digit by digit or letter by letter
+        msg = f"variants: expected a sequence of variant numbers, got {variants!r}"
+        raise UsageError(msg)
     out = []
     for given in variants:
         i = integer(given)

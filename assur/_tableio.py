@@ -20,6 +20,7 @@ import numpy as np
 
 from assur._csvtext import csv_lines
 from assur._vec import Array
+from assur.errors import UsageError
 
 __all__ = [
     "PARQUET_ROWS",
@@ -44,7 +45,21 @@ Advance = Callable[[int], None]
 
 
 def table_columns(table: Any) -> list[Array]:
-    """Return the arrays of every column of ``table``, in order."""
+    """Return the arrays of every column of ``table``, in order.
+
+    Raises
+    ------
+    UsageError
+        For anything but a table of columns (None, a dict, a Mechanism).
+    """
+    if isinstance(table, dict) or not (
+        hasattr(table, "columns") and hasattr(table, "__getitem__")
+    ):
+        msg = (
+            "table: expected a table of assur.kinematics, assur.forces or "
+            f"assur.dynamics, got {type(table).__name__}"
+        )
+        raise UsageError(msg)
     arrays = getattr(table, "arrays", None)
     if arrays is not None:  # a Table computes the columns not read yet together
         return arrays()  # type: ignore[no-any-return]

@@ -26,7 +26,7 @@ from assur.analysis import default_positions
 from assur.columns import Column
 from assur.dynamics_reduced import Reduced, check_dynamic, reduce, reduced_at
 from assur.dynamics_steady import Steady, steady_state
-from assur.errors import UsageError
+from assur.errors import UnknownNameError, UsageError
 from assur.model import Mechanism
 from assur.plan import plan_of
 from assur.table import Columns, Table
@@ -125,7 +125,7 @@ class Dynamics(Columns):
             if c.name == name:
                 return c
         msg = f"no column {name!r}{suggest(name, self.columns, listing=False)}"
-        raise KeyError(msg)
+        raise UnknownNameError(msg)
 
     def __getitem__(self, name: str) -> Array:
         if name not in self.values:

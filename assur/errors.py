@@ -18,6 +18,7 @@ __all__ = [
     "OutputError",
     "SelfLockingError",
     "SingularConfigurationError",
+    "UnknownNameError",
     "UsageError",
 ]
 
@@ -52,6 +53,16 @@ class ConvergenceError(AssurError, RuntimeError):
 
 class UsageError(AssurError, ValueError):
     """A command-line option or a library argument that cannot be used as given."""
+
+
+class UnknownNameError(UsageError, KeyError):
+    """A name a table or a mechanism has no column, link or joint of.
+
+    A KeyError too, as a lookup by a name that is not there is in Python.
+    """
+
+    # the message as written: a KeyError's own str() quotes it
+    __str__ = Exception.__str__
 
 
 class OutputError(AssurError, OSError):

@@ -20,7 +20,7 @@ from assur._motor import Motor
 from assur._points import PointSpec, Toward, Vec2, point_links, resolve_point
 from assur._text import describe
 from assur._validation import _validate
-from assur.errors import UsageError
+from assur.errors import UnknownNameError, UsageError
 
 __all__ = [
     "GROUND",
@@ -265,7 +265,7 @@ class Mechanism:
             if link.name == name:
                 return link
         msg = f"unknown link {describe(name)}"
-        raise KeyError(msg)
+        raise UnknownNameError(msg)
 
     def joint(self, name: str) -> Joint:
         """Return the joint called ``name``."""
@@ -273,7 +273,7 @@ class Mechanism:
             if joint.name == name:
                 return joint
         msg = f"unknown joint {describe(name)}"
-        raise KeyError(msg)
+        raise UnknownNameError(msg)
 
 
 _PARTS = {

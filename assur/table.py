@@ -16,10 +16,10 @@ import numpy as np
 from assur._evaluate import CHUNKED, SHORT, evaluate, materialize
 from assur._exports import Columns
 from assur._kinematics import KinematicState
-from assur._text import suggest
+from assur._text import describe, suggest
 from assur._vec import Array, freeze
 from assur.columns import Column, families, schema
-from assur.errors import UsageError
+from assur.errors import UnknownNameError, UsageError
 from assur.kinetostatics import ForceState
 from assur.model import Mechanism
 from assur.plan import Plan
@@ -202,27 +202,39 @@ class Table(Columns):
 
         Raises
         ------
-        KeyError
-            For a name the table has no column of, with the nearest names.
+        UnknownNameError
+            For a name the table has no column of, with the nearest names (a
+            KeyError too).
         """
+        if not isinstance(name, str):
+            msg = (
+                f"no column {describe(name)}; expected a column's name, a str "
+                "(table.columns lists them)"
+            )
+            raise UnknownNameError(msg)
         try:
             return self._index[name]
         except KeyError:
             pass
-        if self.partial and any(
-            c.name == name for c in schema(self.plan, self._kept_forces is not None)
-        ):
+        forces = self._kept_forces is not None
+        if self.partial and any(c.name == name for c in schema(self.plan, forces)):
             msg = (
                 f"no column {name!r}: the table was made with columns= "
                 f"({len(self.schema)} columns); expected {name!r} among them, or "
                 "no columns="
             )
+        elif not forces and any(c.name == name for c in schema(self.plan, True)):
+            msg = f"no column {name!r} in a kinematics table (a force column: use "
+            msg += "assur.forces)"
         else:
             msg = f"no column {name!r}{suggest(name, self._index, listing=False)}"
-        raise KeyError(msg) from None
+        raise UnknownNameError(msg) from None
 
     def __getitem__(self, name: str) -> Array:
-        found = self._cache.get(name)
+        try:
+            found = self._cache.get(name)
+        except TypeError:  # a slice, a list: not a name (told by column())
+            found = self.column(name)  # type: ignore[assignment]
         if found is not None:
             return found
         column = self.column(name)

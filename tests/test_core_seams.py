@@ -411,6 +411,19 @@ def test_columns_computes_only_what_is_asked():
     np.testing.assert_array_equal(few["C.vx"], full["C.vx"])
     with pytest.raises(KeyError, match=r"no column 'B\.Fx'"):
         few["B.Fx"]
+    # a KeyError and one of assur's own (the pictures drawn from such a table
+    # raised it from deep inside), the message as written, not quoted
+    with pytest.raises(assur.UnknownNameError) as caught:
+        few["B.Fx"]
+    assert isinstance(caught.value, assur.AssurError)
+    assert str(caught.value).startswith("no column 'B.Fx': the table was made with")
+    motion = assur.kinematics(mech, at[:2])
+    with pytest.raises(assur.UnknownNameError, match=r"a force column: use assur.f"):
+        motion["driver.torque"]
+    with pytest.raises(assur.UnknownNameError, match=r"expected a column's name, a"):
+        motion[0:2]  # type: ignore[index]
+    with pytest.raises(assur.UnknownNameError, match="unknown link 'piston'"):
+        mech.link("piston")
     only = assur.forces(mech, at, columns=["C.x"])
     assert only.force_state is None
     assert only.state.top == 0

@@ -467,3 +467,14 @@ def test_csv_to_a_binary_stream():
     text = io.StringIO()
     table.to_csv(text)
     assert binary.getvalue().decode("utf-8") == text.getvalue() == table.to_csv()
+
+
+@pytest.mark.parametrize("thing", [None, {"angle": [0.0]}, 3])
+def test_writing_something_that_is_not_a_table_is_refused(thing, tmp_path):
+    # an AttributeError ('NoneType' object has no attribute 'columns') before
+    from assur.io import write_csv, write_parquet
+
+    for write in (write_csv, write_parquet):
+        with pytest.raises(assur.UsageError, match=r"^table: expected a table of"):
+            write(thing, tmp_path / "t.out")
+    assert not list(tmp_path.iterdir())

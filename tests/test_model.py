@@ -643,3 +643,38 @@ def test_a_load_or_point_on_the_frame_says_it_is_the_frame(block, entry, why):
         f"{entry}: 'ground' is the frame: {why}; expected a moving link (crank, "
         "coupler, rocker)"
     )
+
+
+def _huge(field: str) -> assur.Mechanism:
+    """The catalog's four-bar with ``field`` given an integer of 401 digits."""
+    import dataclasses
+
+    from assur.model import Load, LoadTable, Motor, Toward
+
+    m, big, swap = assur.catalog.four_bar(), 10**400, dataclasses.replace
+    crank, pivot = m.links[0], m.joints[0]
+    made = {
+        "mass": lambda: swap(m, links=(swap(crank, mass=big), *m.links[1:])),
+        "distance": lambda: swap(
+            m, links=(swap(crank, center=Toward("A", "B", big)), *m.links[1:])
+        ),
+        "at": lambda: swap(m, joints=(swap(pivot, at=(big, 0)), *m.joints[1:])),
+        "friction": lambda: swap(m, joints=(swap(pivot, friction=big), *m.joints[1:])),
+        "omega": lambda: swap(m, drivers=(swap(m.drivers[0], omega=big),)),
+        "torque": lambda: swap(m, loads=(Load("crank", None, None, big),)),
+        "table": lambda: swap(
+            m, loads=(Load("crank", "A", LoadTable("driver", (0, big), ((0, 1),) * 2)),)
+        ),
+        "no_load_speed": lambda: swap(m, motor=Motor(5.0, big)),
+    }
+    return made[field]()  # type: ignore[no-any-return]
+
+
+@pytest.mark.parametrize(
+    "field",
+    ["mass", "distance", "at", "friction", "omega", "torque", "table", "no_load_speed"],
+)
+def test_an_integer_too_large_for_a_float_is_named_in_code_as_in_a_file(field):
+    # an OverflowError from math.isfinite, where a file's gets one line
+    with pytest.raises(assur.ModelError, match=rf"{field}: .*an integer of 401 digits"):
+        _huge(field)
