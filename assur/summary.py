@@ -277,12 +277,18 @@ class Summary:
             )
             power = out["driver.power.mean"]
             # no load takes work (inertia alone): the mean is round-off of powers
-            # that cancel, -1.6e-13 W beside a driver's 2564 W, and is 0
-            noise = 1e-12 * np.maximum(np.abs(power), np.abs(lost))
+            # that cancel, -1.6e-13 W beside a driver's 2564 W, and is 0. Round-off
+            # of the powers at play, the driver's peaks: beside a friction of 1e-12
+            # the means are all small, and the noise made an efficiency of 1.2e-5
+            peaks = [out["driver.power.max"], out["driver.power.min"], power, lost]
+            noise = 1e-12 * np.max(np.abs(np.stack(peaks)), axis=0)
             ideal = np.where(np.abs(ideal) <= noise, 0.0, ideal)
             out["driver.power_ideal.mean"] = ideal
+            # the power with friction is the power without and friction's, at
+            # every position: where its mean is round-off, their sum tells it
+            driving = np.where(np.abs(power) <= noise, ideal + lost, power)
             out["efficiency"] = np.array(
-                [efficiency(*v) for v in zip(power, ideal, lost, strict=True)]
+                [efficiency(*v) for v in zip(driving, ideal, lost, strict=True)]
             )
         return out
 

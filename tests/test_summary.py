@@ -375,3 +375,21 @@ def test_an_ideal_power_of_round_off_is_zero():
     assert summary["driver.power_ideal.mean"] == 0.0
     assert summary["driver.power.mean"] == pytest.approx(summary["friction.loss"])
     assert summary["efficiency"] == 0.0
+
+
+@pytest.mark.parametrize("friction", [1e-6, 1e-12, 1e-300])
+def test_an_efficiency_of_round_off_is_zero_however_small_the_friction(friction):
+    # beside a friction of 1e-12 every mean was small, and the round-off of the
+    # power without friction (3e-13 W) made an efficiency of 1.2e-5; at 1e-320, 1
+    import dataclasses
+
+    mech = assur.load(EXAMPLES / "slider_crank_friction.toml")
+    joints = tuple(
+        dataclasses.replace(j, friction=friction) if j.friction else j
+        for j in mech.joints
+    )
+    rubbed = dataclasses.replace(mech, joints=joints)
+    summary = assur.forces(rubbed, np.arange(0.0, 360.0, 1.0)).summary()
+    assert summary["driver.power_ideal.mean"] == 0.0
+    assert summary["friction.loss"] > 0.0
+    assert summary["efficiency"] == 0.0
