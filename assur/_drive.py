@@ -52,8 +52,10 @@ def _no_driver(plan: Plan) -> ModelError:
     return ModelError(msg)
 
 
-def positions(plan: Plan, angles: Any) -> Array:
+def positions(plan: Plan, angles: Any, entry: str = "angles") -> Array:
     """Return the driver positions as given (deg, or m), shape (n, drivers).
+
+    ``entry`` names the argument in messages (``angle`` for one position).
 
     Raises
     ------
@@ -63,13 +65,13 @@ def positions(plan: Plan, angles: Any) -> Array:
     d = len(plan.drivers)
     if d == 0:
         raise _no_driver(plan)
-    arr = _real(angles, "angles", "driver positions")
+    arr = _real(angles, entry, "driver positions")
     if arr.ndim == 0:
         arr = arr.reshape(1)
     if arr.ndim == 1 and d > 1:
         if arr.shape[0] != d:
             msg = (
-                f"angles: the mechanism has {d} drivers; expected an array of shape "
+                f"{entry}: the mechanism has {d} drivers; expected an array of shape "
                 f"(n, {d}), got shape {arr.shape}"
             )
             raise UsageError(msg)
@@ -78,12 +80,12 @@ def positions(plan: Plan, angles: Any) -> Array:
         arr = arr[:, None]
     if arr.ndim != 2 or arr.shape[1] != d:
         msg = (
-            f"angles: expected shape (n, {d}) for {counted(d, 'driver')}, got "
+            f"{entry}: expected shape (n, {d}) for {counted(d, 'driver')}, got "
             f"{arr.shape}"
         )
         raise UsageError(msg)
     if not np.all(np.isfinite(arr)):
-        msg = "angles: expected finite driver positions"
+        msg = f"{entry}: expected finite driver positions"
         raise UsageError(msg)
     # the table's own copy: the caller's array may change after the call
     arr = np.array(arr, dtype=float)
@@ -113,6 +115,8 @@ def _real(values: Any, entry: str, what: str) -> Array:
         raise UsageError(msg)
     if arr.dtype.kind not in "iuf":
         kind = "complex numbers" if arr.dtype.kind == "c" else f"{arr.dtype} values"
+        if arr.dtype.kind in "US":
+            kind = f"text {describe(values)}"
         msg = f"{entry}: expected real numbers ({what}), got {kind}"
         raise UsageError(msg)
     return arr.astype(float, copy=False)

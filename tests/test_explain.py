@@ -619,8 +619,18 @@ def test_plot_draws_one_group_s_free_body(tmp_path: Path, capsys) -> None:
 
 @pytest.mark.parametrize("angle", ["x", [10.0, 20.0], float("nan")])
 def test_an_angle_that_is_not_one_position_is_a_usage_error(angle) -> None:
-    with pytest.raises(assur.UsageError, match=r"^angles?: "):
+    # the argument is one angle: named so ("angles:" before)
+    with pytest.raises(assur.UsageError, match=r"^angle: "):
         assur.explain(assur.catalog.four_bar(), angle)
+
+
+def test_text_for_an_angle_and_a_path_that_is_no_file_are_told_so() -> None:
+    with pytest.raises(assur.UsageError, match=r"^angle: .*got text '30'$"):
+        assur.explain(assur.catalog.four_bar(), "30")
+    note = assur.explain(assur.catalog.four_bar(), 30.0)
+    for path in (None, 3):
+        with pytest.raises(assur.UsageError, match=r"^path: expected a file name"):
+            note.write(path)  # type: ignore[arg-type]
 
 
 def test_given_answers_round_off_nan_and_dotted_keys(tmp_path):

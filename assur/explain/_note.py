@@ -85,7 +85,7 @@ class Note:
         """
         from assur._output import write_text
 
-        write_text(path, self.render(os.fspath(path)))
+        write_text(path, self.render(_named(path)))
 
     def render(self, path: str) -> str:
         """Return the text of the note in the format that ``path``'s suffix names.
@@ -95,7 +95,7 @@ class Note:
         path : str
             A file name; only its suffix is read.
         """
-        suffix = os.path.splitext(path)[1].lower()
+        suffix = os.path.splitext(_named(path))[1].lower()
         makers: dict[str, Any] = {
             ".md": self.to_markdown,
             ".markdown": self.to_markdown,
@@ -110,3 +110,14 @@ class Note:
             )
             raise UsageError(msg)
         return str(makers[suffix]())
+
+
+def _named(path: Any) -> str:
+    """Return ``path`` as a file name; a UsageError for what is none (None, 3)."""
+    if not isinstance(path, str | os.PathLike):
+        msg = (
+            "path: expected a file name (.md, .html, .htm or .tex), got "
+            f"{type(path).__name__}"
+        )
+        raise UsageError(msg)
+    return os.fspath(path)  # type: ignore[return-value]

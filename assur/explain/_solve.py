@@ -24,7 +24,7 @@ def table_at(mech: Mechanism, angle: Any) -> Table:
         When ``angle`` is not one driver position (a number per driver).
     """
     plan = plan_of(mech)
-    given = positions(plan, angle)
+    given = positions(plan, angle, "angle")
     if given.shape[0] != 1:
         msg = (
             f"angle: {given.shape[0]} driver positions; expected one (a number per "
