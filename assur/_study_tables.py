@@ -17,31 +17,42 @@ from assur.analysis import forces
 from assur.errors import AssurError, AssurWarning, UsageError
 
 
-def _table(factory: Factory, p: dict[str, Any], angles: Array) -> dict[str, Array]:
-    """Return every column of one variant's force table; empty if it fails."""
+def _table(
+    factory: Factory, p: dict[str, Any], angles: Array, wanted: Sequence[str] | None
+) -> tuple[dict[str, Array], tuple[str, ...]]:
+    """Return one variant's force table's columns ``wanted`` (all by default).
+
+    Also the names of every column it has. Empty if the variant fails. Only the
+    columns wanted are computed and kept: a study's tables hold no more than the
+    Dataset asked for.
+    """
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", AssurWarning)
         try:
             mech = _built(factory, p)
         except Exception:  # the factory's own error: the variant has no table
-            return {}
+            return {}, ()
         try:
             table = forces(mech, angles)
         except AssurError:
-            return {}
-    return dict(zip(table.columns, table.arrays(), strict=True))
+            return {}, ()
+        if wanted is None:
+            return dict(zip(table.columns, table.arrays(), strict=True)), table.columns
+        return {c: table[c] for c in wanted if c in table}, table.columns
 
 
-def _names(tables: list[dict[str, Array] | None]) -> list[str]:
-    """Return the columns of the tables, in the order they are first met."""
+def _names(tables: Sequence[Sequence[str]]) -> list[str]:
+    """Return the columns of the tables' names, in the order they are first met."""
     out: dict[str, None] = {}
-    for table in tables:
-        out.update(dict.fromkeys(table or {}))
+    for names in tables:
+        out.update(dict.fromkeys(names))
     return list(out)
 
 
-def _known(names: list[str], tables: list[dict[str, Array] | None]) -> list[str]:
-    """Return ``names``, checked against the columns of ``tables`` that have any.
+def _known(names: list[str], tables: Sequence[Sequence[str]]) -> list[str]:
+    """Return ``names``, checked against the columns of the tables that have any.
+
+    ``tables`` holds each table's column names.
 
     Raises
     ------

@@ -125,16 +125,19 @@ class Study:
         """
         xr = _optional("xarray")
         chosen = _chosen(variants, len(self))
-        found: list[dict[str, Array] | None] = []
+        wanted = None if columns is None else list(columns)
+        found: list[dict[str, Array]] = []
+        every: list[tuple[str, ...]] = []
         for i in chosen:
-            found.append(
-                _table(self.factory, _variant(self.parameters, i), self.angles)
-            )
-        names = _names(found) if columns is None else _known(list(columns), found)
+            p = _variant(self.parameters, i)
+            table, has = _table(self.factory, p, self.angles, wanted)
+            found.append(table)
+            every.append(has)
+        names = _names(every) if wanted is None else _known(wanted, every)
         data = np.full((len(chosen), self.angles.shape[0], len(names)), np.nan)
         for row, table in enumerate(found):
             for j, name in enumerate(names):
-                if table is not None and name in table:
+                if name in table:
                     data[row, :, j] = table[name]
         angles = self.angles
         along = ("position",) if angles.ndim == 1 else ("position", "driver")
