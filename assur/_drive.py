@@ -70,9 +70,12 @@ def positions(plan: Plan, angles: Any, entry: str = "angles") -> Array:
         arr = arr.reshape(1)
     if arr.ndim == 1 and d > 1:
         if arr.shape[0] != d:
+            wanted = f"an array of shape (n, {d})"
+            if entry == "angle":  # one position: a number per driver
+                wanted = f"one position, {d} numbers (one per driver)"
             msg = (
-                f"{entry}: the mechanism has {d} drivers; expected an array of shape "
-                f"(n, {d}), got shape {arr.shape}"
+                f"{entry}: the mechanism has {d} drivers; expected {wanted}, got "
+                f"shape {arr.shape}"
             )
             raise UsageError(msg)
         arr = arr[None, :]
@@ -116,7 +119,8 @@ def _real(values: Any, entry: str, what: str) -> Array:
     if arr.dtype.kind not in "iuf":
         kind = "complex numbers" if arr.dtype.kind == "c" else f"{arr.dtype} values"
         if arr.dtype.kind in "US":
-            kind = f"text {describe(values)}"
+            # text, an array of it or bytes: told as the strings they are
+            kind = f"text {describe(arr.astype(str).tolist())}"
         msg = f"{entry}: expected real numbers ({what}), got {kind}"
         raise UsageError(msg)
     return arr.astype(float, copy=False)
@@ -147,6 +151,14 @@ def to_si(plan: Plan, given: Array) -> Array:
         else:
             out[:, i] = given[:, i]
     return out
+
+
+UNITS = {"omega": "rad/s or m/s", "epsilon": "rad/s^2", "jerk": "rad/s^3 or m/s^3"}
+"""What each of a driver's rates is expected in (the message of one that is not)."""
+MOST = {"jerk": LARGEST**2}
+"""Largest magnitude of a rate other than the file numbers' ``LARGEST``: a jerk grows
+as the cube of the speed (the dynamic model's steady motion at 1e5 rad/s has 1.5e15
+rad/s^3), and times a length of 1e15 m it is still far from overflowing."""
 
 
 def driver_rates(
@@ -201,11 +213,3 @@ def driver_rates(
             )
             raise UsageError(msg)
     return out[0], out[1], out[2]
-
-
-UNITS = {"omega": "rad/s or m/s", "epsilon": "rad/s^2", "jerk": "rad/s^3 or m/s^3"}
-"""What each of a driver's rates is expected in (the message of one that is not)."""
-MOST = {"jerk": LARGEST**2}
-"""Largest magnitude of a rate other than the file numbers' ``LARGEST``: a jerk grows
-as the cube of the speed (the dynamic model's steady motion at 1e5 rad/s has 1.5e15
-rad/s^3), and times a length of 1e15 m it is still far from overflowing."""

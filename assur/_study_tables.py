@@ -10,6 +10,8 @@ import warnings
 from collections.abc import Sequence
 from typing import Any
 
+import numpy as np
+
 from assur._study_inputs import Factory, _built
 from assur._text import suggest
 from assur._vec import Array, integer
@@ -81,7 +83,7 @@ def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:
     """
     if variants is None:
         return list(range(count))
-    if isinstance(variants, str | bytes) or not hasattr(variants, "__iter__"):
+    if isinstance(variants, str | bytes) or np.ndim(variants) == 0:
         # a lone number or a name: not walked digit by digit or letter by letter
         msg = f"variants: expected a sequence of variant numbers, got {variants!r}"
         raise UsageError(msg)

@@ -228,7 +228,8 @@ def _sweep(
     given = positions(plan, angles)
     drive = to_si(plan, given)
     n = drive.shape[0]
-    rates = driver_rates(plan, *speeds[:2], n, speeds[2])
+    omega, epsilon, jerk = speeds
+    rates = driver_rates(plan, omega, epsilon, n, jerk)
     chosen = selection(plan, with_forces, names)
     top = chosen.top if names is not None else min(chosen.top, _up_front(n))
     # the drivers' columns alone need none of the links' motions or reactions kept

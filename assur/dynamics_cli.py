@@ -37,6 +37,7 @@ from assur._cli_types import (
     number,
     whole_number,
 )
+from assur._dynamic_checks import check_dynamic
 from assur._dynamics_figures import (
     _figures,
     _head,
@@ -63,7 +64,6 @@ from assur._vec import Array
 from assur.dynamics_flywheel import SMALLEST_DELTA
 from assur.dynamics_model import COLUMNS, solved
 from assur.dynamics_model import result as dynamics_rows
-from assur.dynamics_reduced import check_dynamic
 from assur.dynamics_startup import MAX_TURNS
 from assur.errors import AssurWarning, ModelError
 

@@ -15,8 +15,9 @@ from typing import Any
 
 import numpy as np
 
+from assur._dynamic_checks import check_dynamic
 from assur._vec import real
-from assur.dynamics_reduced import Reduced, check_dynamic, reduce
+from assur.dynamics_reduced import Reduced, reduce
 from assur.dynamics_steady import steady_state
 from assur.errors import ConvergenceError, ModelError, UsageError
 from assur.model import Mechanism

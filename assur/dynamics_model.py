@@ -19,12 +19,12 @@ import numpy as np
 from assur._change_limits import across_change_points
 from assur._checks import LARGEST
 from assur._drive import positions
-from assur._reduced_jerk import crank_jerk, curvature
+from assur._dynamic_checks import check_dynamic
 from assur._text import suggest
 from assur._vec import Array, real
 from assur.analysis import default_positions
 from assur.columns import Column
-from assur.dynamics_reduced import Reduced, check_dynamic, reduce, reduced_at
+from assur.dynamics_reduced import Reduced, reduce, reduced_at
 from assur.dynamics_steady import Steady, steady_state
 from assur.errors import UnknownNameError, UsageError
 from assur.model import Mechanism
@@ -287,8 +287,8 @@ def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dyna
     plan = plan_of(mech)
     angle = positions(plan, angles)[:, 0]
     # at a change point the sweep is singular: J, J' and M are its limits there
-    inertia, slope, torque = across_change_points(
-        plan, angle, lambda a: reduced_at(mech, a)[1:]
+    inertia, slope, torque, curve = across_change_points(
+        plan, angle, lambda a: reduced_at(mech, a, curvature=True)[1:]
     )
     inertia = inertia + steady.flywheel
     # the work is periodic: a turn taken off in degrees is exact, in radians of a
@@ -298,10 +298,11 @@ def result(mech: Mechanism, model: Reduced, steady: Steady, angles: Any) -> Dyna
     square = np.maximum(2.0 * (steady.energy + work) / inertia, 0.0)
     omega = math.copysign(1.0, steady.omega) * np.sqrt(square)
     epsilon = (torque + model.motor - 0.5 * slope * omega * omega) / inertia
-    # d(epsilon)/dt: J, J' and J'' exact, the slope of M from its interpolant
-    (curve,) = across_change_points(plan, angle, lambda a: [curvature(mech, a)])
+    # d(epsilon)/dt = w d(epsilon)/d(phi): J, J' and J'' exact, the slope of M
+    # from its interpolant (dw/dphi = epsilon / w)
     rise = model.torque_slope_at(phi)
-    jerk = crank_jerk(omega, epsilon, inertia, slope, curve, rise)
+    jerk = omega * (rise - 0.5 * curve * omega * omega - 2.0 * slope * epsilon)
+    jerk /= inertia
     n = angle.shape[0]
     arrays = (angle, inertia, slope, torque, work, np.full(n, model.motor), omega)
     values = dict(zip((c[0] for c in COLUMNS), (*arrays, epsilon, jerk), strict=True))

@@ -21,21 +21,19 @@ from typing import Any
 import numpy as np
 
 from assur._change_limits import across_change_points
+from assur._dynamic_checks import check_dynamic
 from assur._grid_warnings import noise_message, pass_on, unresolved_message
-from assur._loads import compile_loads
-from assur._text import describe
 from assur._vec import Array
 from assur.analysis import forces, kinematics
 from assur.errors import (
     AssemblyError,
     AssurWarning,
-    ModelError,
     SingularConfigurationError,
 )
 from assur.model import Mechanism
 from assur.plan import plan_of
 
-__all__ = ["GRID_RTOL", "Reduced", "check_dynamic", "reduce", "reduced_at"]
+__all__ = ["GRID_RTOL", "Reduced", "reduce", "reduced_at"]
 
 GRID_START = 1024
 """Positions of the first internal grid over one turn; it is doubled until converged."""
@@ -51,42 +49,13 @@ BETWEEN_RTOL = 1e-8
 their largest magnitude)."""
 
 
-def check_dynamic(mechanism: Mechanism, what: str = "dynamics") -> float:
-    """Check that ``mechanism`` has a dynamic model; return its crank's speed (rad/s).
-
-    One revolute driver and at least one link with a mass are needed.
-
-    Raises
-    ------
-    ModelError
-        For a prismatic driver, several drivers, or no mass at all.
-    """
-    plan = plan_of(mechanism)
-    if len(plan.drivers) != 1:
-        msg = (
-            f"{what}: the mechanism has {len(plan.drivers)} drivers; expected one "
-            "driving crank (a revolute driver) for a model reduced to the crank"
-        )
-        raise ModelError(msg)
-    driver = plan.drivers[0]
-    if driver.kind != "R":
-        msg = (
-            f"{what}: driver joint {describe(driver.pair.name)} is prismatic; "
-            "expected a revolute driver (a crank): the reduced model turns through "
-            "a revolution"
-        )
-        raise ModelError(msg)
-    if not compile_loads(plan).mass.any():
-        msg = (
-            f"{what}: no link has a mass, so the reduced inertia is zero; expected "
-            "'mass', 'center' and 'inertia' on the moving links"
-        )
-        raise ModelError(msg)
-    return float(mechanism.drivers[0].omega)
-
-
-def reduced_at(mechanism: Mechanism, angles: Any) -> tuple[Array, Array, Array, Array]:
+def reduced_at(
+    mechanism: Mechanism, angles: Any, curvature: bool = False
+) -> tuple[Array, ...]:
     r"""Return ``J``, ``dJ/dphi`` and ``M`` at the crank angles ``angles`` (deg).
+
+    With ``curvature``, ``d2J/dphi2`` (kg m^2/rad^2) too, last: from the jerks at
+    unit crank speed, in the same sweep.
 
     Returns
     -------
@@ -101,14 +70,20 @@ def reduced_at(mechanism: Mechanism, angles: Any) -> tuple[Array, Array, Array, 
 
     Notes
     -----
-    At unit crank speed and zero crank acceleration, the velocities are the velocity
-    ratios and the accelerations their derivatives with respect to the crank angle:
+    At unit crank speed and zero crank acceleration and jerk, the velocities are the
+    velocity ratios and the accelerations and jerks their derivatives with respect
+    to the crank angle:
 
     .. math::
 
         J = \sum_L m_L |v_{G_L}|^2 + J_{G_L} \omega_L^2, \qquad
-        \frac{dJ}{d\varphi} = 2 \sum_L m_L\, v_{G_L} \cdot a_{G_L}
-        + J_{G_L} \omega_L \alpha_L .
+        \frac{dJ}{d\varphi} = 2 \sum_L \left(m_L\, v_{G_L} \cdot a_{G_L}
+        + J_{G_L} \omega_L \alpha_L\right),
+
+        \frac{d^2J}{d\varphi^2} = 2 \sum_L \left(m_L (a_{G_L} \cdot a_{G_L}
+        + v_{G_L} \cdot j_{G_L}) + J_{G_L} (\alpha_L^2 + \omega_L \eta_L)\right),
+
+    with :math:`j` a point's jerk and :math:`\eta` a link's angular jerk.
 
     The reduced torque is minus the balancing torque at rest (zero speed and
     acceleration): by virtual work, the power of the loads per unit crank speed.
@@ -116,25 +91,32 @@ def reduced_at(mechanism: Mechanism, angles: Any) -> tuple[Array, Array, Array, 
     mech = mechanism
     links = [link for link in mech.links if link.mass]
     wanted = []
+    levels = "vaj" if curvature else "va"
     for link in links:
         g = f"{link.name}.G"
-        wanted += [f"{g}.vx", f"{g}.vy", f"{g}.ax", f"{g}.ay"]
+        wanted += [f"{g}.{k}{axis}" for k in levels for axis in "xy"]
         wanted += [f"{link.name}.omega", f"{link.name}.alpha"]
+        wanted += [f"{link.name}.jerk"] if curvature else []
     motion = kinematics(mech, angles, omega=1.0, epsilon=0.0, columns=wanted)
     inertia = np.zeros(len(motion))
     slope = np.zeros(len(motion))
+    curve = np.zeros(len(motion))
     for link in links:
         g, m, jg = f"{link.name}.G", float(link.mass or 0.0), float(link.inertia or 0)
         vx, vy = motion[f"{g}.vx"], motion[f"{g}.vy"]
-        w = motion[f"{link.name}.omega"]
+        ax, ay = motion[f"{g}.ax"], motion[f"{g}.ay"]
+        w, alpha = motion[f"{link.name}.omega"], motion[f"{link.name}.alpha"]
         inertia += m * (vx * vx + vy * vy) + jg * w * w
-        slope += 2.0 * (
-            m * (vx * motion[f"{g}.ax"] + vy * motion[f"{g}.ay"])
-            + jg * w * motion[f"{link.name}.alpha"]
-        )
+        slope += 2.0 * (m * (vx * ax + vy * ay) + jg * w * alpha)
+        if curvature:
+            jx, jy = motion[f"{g}.jx"], motion[f"{g}.jy"]
+            spin = motion[f"{link.name}.jerk"]
+            square = ax * ax + ay * ay + vx * jx + vy * jy
+            curve += 2.0 * (m * square + jg * (alpha * alpha + w * spin))
     static = forces(mech, angles, omega=0.0, epsilon=0.0, columns=["driver.torque"])
     torque = -np.asarray(static["driver.torque"])
-    return np.asarray(motion["angle"]), inertia, slope, torque
+    found = (np.asarray(motion["angle"]), inertia, slope, torque)
+    return (*found, curve) if curvature else found
 
 
 @dataclass(frozen=True, eq=False)

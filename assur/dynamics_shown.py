@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from typing import Any
 
+from assur._dynamic_checks import check_dynamic
 from assur.dynamics_flywheel import flywheel
 from assur.dynamics_model import Dynamics, dynamics
-from assur.dynamics_reduced import check_dynamic
 from assur.errors import ModelError
 from assur.model import Mechanism
 

@@ -21,6 +21,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._dynamic_checks import check_dynamic
 from assur._progress import Callback
 from assur._progress import progress as show_progress
 from assur._startup_checks import _against_omega, _motor, _speed, _starts, _turns
@@ -35,7 +36,7 @@ from assur._startup_turns import (
 )
 from assur._vec import Array
 from assur.dynamics_model import checked_flywheel
-from assur.dynamics_reduced import Reduced, check_dynamic, reduce
+from assur.dynamics_reduced import Reduced, reduce
 from assur.dynamics_steady import check_inertia
 from assur.errors import UsageError
 from assur.model import Mechanism, Motor

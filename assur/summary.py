@@ -287,6 +287,7 @@ class Summary:
             # the power with friction is the power without and friction's, at
             # every position: where its mean is round-off, their sum tells it
             driving = np.where(np.abs(power) <= noise, ideal + lost, power)
+            out["driver.power.mean"] = driving
             out["efficiency"] = np.array(
                 [efficiency(*v) for v in zip(driving, ideal, lost, strict=True)]
             )

@@ -16,6 +16,7 @@ import numpy as np
 from assur._evaluate import CHUNKED, SHORT, evaluate, materialize
 from assur._exports import Columns
 from assur._kinematics import KinematicState
+from assur._loads import compile_loads
 from assur._text import describe, suggest
 from assur._vec import Array, freeze
 from assur.columns import Column, families, schema
@@ -223,7 +224,11 @@ class Table(Columns):
                 f"({len(self.schema)} columns); expected {name!r} among them, or "
                 "no columns="
             )
-        elif not forces and any(c.name == name for c in schema(self.plan, True)):
+        elif (
+            not forces
+            and not compile_loads(self.plan).empty
+            and any(c.name == name for c in schema(self.plan, True))
+        ):
             msg = f"no column {name!r} in a kinematics table (a force column: use "
             msg += "assur.forces)"
         else:

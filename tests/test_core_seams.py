@@ -12,6 +12,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import pickle
+import re
 import warnings
 from pathlib import Path
 
@@ -424,6 +425,24 @@ def test_columns_computes_only_what_is_asked():
         motion[0:2]  # type: ignore[index]
     with pytest.raises(assur.UnknownNameError, match="unknown link 'piston'"):
         mech.link("piston")
+    # a mechanism without masses or loads has no force table to point to
+    four = assur.catalog.four_bar()
+    links = tuple(
+        dataclasses.replace(link, mass=None, inertia=None, center=None)
+        for link in four.links
+    )
+    bare = assur.kinematics(dataclasses.replace(four, links=links), [0.0])
+    with pytest.raises(assur.UnknownNameError) as caught:
+        bare["driver.torque"]
+    assert "assur.forces" not in str(caught.value)
+    # text for the positions, an array of it or bytes, told as the text it is
+    for text, shown in (
+        (np.array(["30", "40"]), "['30', '40']"),
+        (b"30", "'30'"),
+        ("30", "'30'"),
+    ):
+        with pytest.raises(assur.UsageError, match=rf"got text {re.escape(shown)}$"):
+            assur.kinematics(mech, text)
     only = assur.forces(mech, at, columns=["C.x"])
     assert only.force_state is None
     assert only.state.top == 0

@@ -256,17 +256,17 @@ torque = { values = [5.0, 5.0, 2.0, 2.0], over = "driver", table = [0.0, 240.0, 
     ("angle", "said"),
     [
         # 120 and 240 deg come back from radians a unit of the last place low
-        (120.0, ["(-1000,\\ 0)\\ \\mathrm{N}", "before it, }(0,\\ 0)\\ \\mathrm{N}"]),
+        (120.0, ["(-1000,\\ 0)\\ \\mathrm{N}", "short of it, }(0,\\ 0)\\ \\mathrm{N}"]),
         (
             240.0,
             [
                 "Q_{\\mathrm{slider},1} = (0,\\ 0)\\ \\mathrm{N}",
-                "before it, }(-1000,\\ 0)\\ \\mathrm{N}",
+                "short of it, }(-1000,\\ 0)\\ \\mathrm{N}",
                 "T_{\\mathrm{crank},1} = 2\\ \\mathrm{N\\,m}",
-                "before it, }5\\ \\mathrm{N\\,m}",
+                "short of it, }5\\ \\mathrm{N\\,m}",
             ],
         ),
-        (480.0, ["(-1000,\\ 0)\\ \\mathrm{N}", "before it, }(0,\\ 0)\\ \\mathrm{N}"]),
+        (480.0, ["(-1000,\\ 0)\\ \\mathrm{N}", "short of it, }(0,\\ 0)\\ \\mathrm{N}"]),
         (180.0, []),
     ],
 )
@@ -280,7 +280,7 @@ def test_a_load_at_its_table_s_step_says_which_side(tmp_path, angle, said) -> No
     text = str(note)
     for words in said:
         assert words in text
-    assert text.count("(after its table's step here") == len(said) // 2
+    assert text.count("(its table steps here: the value past") == len(said) // 2
 
 
 def test_the_lecture_exercise_at_45_degrees() -> None:
@@ -627,6 +627,10 @@ def test_an_angle_that_is_not_one_position_is_a_usage_error(angle) -> None:
 def test_text_for_an_angle_and_a_path_that_is_no_file_are_told_so() -> None:
     with pytest.raises(assur.UsageError, match=r"^angle: .*got text '30'$"):
         assur.explain(assur.catalog.four_bar(), "30")
+    # one position of two drivers: two numbers, not "an array of shape (n, 2)"
+    five = assur.load(EXAMPLES / "five_bar_two_cranks.toml")
+    with pytest.raises(assur.UsageError, match=r"expected one position, 2 numbers"):
+        assur.explain(five, 30.0)
     note = assur.explain(assur.catalog.four_bar(), 30.0)
     for path in (None, 3):
         with pytest.raises(assur.UsageError, match=r"^path: expected a file name"):

@@ -122,10 +122,10 @@ RANKS = {
     "assur.plotting": 10,
     # the dynamic model and the motion in time: sweeps of the analysis, reduced
     "assur.dynamics_reduced": 10,
+    "assur._dynamic_checks": 10,
     "assur._grid_warnings": 1,
     "assur.dynamics_steady": 10,
     "assur.dynamics_model": 10,
-    "assur._reduced_jerk": 10,
     "assur.dynamics_flywheel": 10,
     "assur.dynamics_startup": 10,
     # the start-up's parts: what it is given, checked; how its run of turns ends;

@@ -97,7 +97,19 @@ def test_centres_at_infinity_are_named_with_their_direction() -> None:
     pos = position(assur.load(EXAMPLES / "scotch_yoke.toml"), 30.0)
     ax = plans.instant_centres(pos.table)
     try:
-        said = sorted(t.get_text() for t in ax.texts if "at infinity" in t.get_text())
+        named = [t for t in ax.texts if "at infinity" in t.get_text()]
+        said = sorted(t.get_text() for t in named)
+        # each arrow at the frame's edge along the direction its name gives
+        for text in named:
+            (arrow,) = [
+                p
+                for p in ax.patches
+                if hasattr(p, "_posA_posB") and np.allclose(p._posA_posB[0], text.xy)
+            ]
+            tail, tip = np.array(arrow._posA_posB)
+            angle = float(text.get_text().rpartition(", ")[2].rstrip("°"))
+            way = np.degrees(np.arctan2(*(tip - tail)[::-1]))
+            assert way == pytest.approx(angle, abs=1e-6)
     finally:
         plt.close(ax.figure)
     # the yoke translates along the guide, the block with the crank's pin, and the

@@ -173,8 +173,13 @@ def test_a_far_centre_is_shown_at_the_edge_with_its_coordinates() -> None:
         rod = r"$I_{\text{rod}}$ ("
         (named,) = [t for t in _texts(ax) if t.get_text().startswith(rod)]
         assert f"{far[0]:.3g}, {far[1]:.3g}) m" in named.get_text()
-        # the arrow at the edge points at it
-        (arrow,) = [p for p in ax.patches if hasattr(p, "_posA_posB")]
+        # the arrow at the edge, where its name is, points at it (the centres at
+        # infinity have arrows of their own)
+        (arrow,) = [
+            p
+            for p in ax.patches
+            if hasattr(p, "_posA_posB") and np.allclose(p._posA_posB[0], named.xy)
+        ]
         tail, tip = np.array(arrow._posA_posB)
         way = (tip - tail) / np.hypot(*(tip - tail))
         toward = (far - tip) / np.hypot(*(far - tip))

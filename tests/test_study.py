@@ -587,7 +587,7 @@ def test_tables_say_which_variants_and_columns_there_are(slider_study):
     data = study.tables(variants=[0], columns=["B.F"])
     np.testing.assert_array_equal(data["angle"], ANGLES)
     assert data["angle"].dims == ("position",)
-    for wrong in ([7], [-1], [0.5], [True], 3, "nope"):
+    for wrong in ([7], [-1], [0.5], [True], 3, "nope", np.array(1)):
         with pytest.raises(assur.UsageError, match="variants: "):
             study.tables(variants=wrong)
     with pytest.raises(assur.UsageError, match=r"no column 'driver\.torq'.*torque'"):

@@ -40,8 +40,9 @@ class Load:
     """A force ``force`` (N) at ``point`` (m) and a couple ``couple`` (N m).
 
     ``tex`` names the load; ``where`` names its point. ``before`` is a tabulated
-    load's value just before a step of its table at this position (a force's two
-    components, N, or a couple, N m): the value after the step holds here.
+    load's value just short of a step of its table at this position, in the table's
+    order (a force's two components, N, or a couple, N m): the value past the step
+    holds here.
     """
 
     tex: str
@@ -101,14 +102,14 @@ def own_loads(pos: Position, body: int) -> list[Load]:
         if isinstance(force, LoadTable):
             fx, fy = table_values(force, pos.plan, state.drive, slides, entry)
             vector = at(fx, fy)
-            before = table_step(force, pos.plan, state.drive, slides, entry)
+            before = _short_of(table_step(force, pos.plan, state.drive, slides, entry))
         else:
             vector = np.asarray(force, dtype=float)
         p = pos.point(body, offset)
         # Q, not F: F_{i,j} is the force of link i on link j
         tex = f"\\vec Q_{{{link},{count}}}"
         spot = _spot(pos, entry, count)
-        out.append(Load(tex, spot, p, vector, before=_told(before)))
+        out.append(Load(tex, spot, p, vector, before=before))
     for b, torque, entry in pos.loads.torques:
         if b != body:
             continue
@@ -116,17 +117,15 @@ def own_loads(pos: Position, body: int) -> list[Load]:
         t, before = torque, None
         if isinstance(torque, LoadTable):
             t = table_values(torque, pos.plan, state.drive, slides, entry)[0]
-            before = table_step(torque, pos.plan, state.drive, slides, entry)
+            before = _short_of(table_step(torque, pos.plan, state.drive, slides, entry))
         tex, origin = f"T_{{{link},{count}}}", _origin(pos, body)
-        out.append(Load(tex, "", origin, np.zeros(2), value(t), _told(before)))
+        out.append(Load(tex, "", origin, np.zeros(2), value(t), before))
     return out
 
 
-def _told(before: list[float] | None) -> tuple[float, ...] | None:
-    """Return a load's values just before a step here, round-off told as zero."""
-    if before is None:
-        return None
-    return tuple(0.0 if abs(v) < 1e-300 else float(v) for v in before)
+def _short_of(before: list[float] | None) -> tuple[float, ...] | None:
+    """Return a load's values just short of a step here, as a tuple; None if none."""
+    return None if before is None else tuple(before)
 
 
 def _spot(pos: Position, entry: str, count: int) -> str:
@@ -276,7 +275,9 @@ def force_lines(loads: list[Load]) -> list[str]:
                 if len(x.before) == 2
                 else f"{num(x.before[0])}\\ \\mathrm{{N\\,m}}"
             )
-            said = "(after its table's step here; before it, "
+            # in the table's order, whichever way the driver moves: the value
+            # at the step's position is the one past it
+            said = "(its table steps here: the value past the step holds; short of it, "
             text += f"\\quad \\text{{{said}}}{was}\\text{{)}}"
         lines.append(text)
     return lines

@@ -45,6 +45,9 @@ through them (and two lines whose directions' sine is below it are one line)."""
 AT_INFINITY = 1e3
 """A centre at infinity stands, on its Kennedy line, at a point this many times the
 mechanism's size from the line's finite centres: far past any view of it."""
+SAME_DOT = 0.003
+"""Distance between centres, as a fraction of the mechanism's size, within which
+their dots fall on one another and one label names them all."""
 
 
 def draw_centres(pos: Position, ax: Any) -> Any:
@@ -91,11 +94,6 @@ def draw_centres(pos: Position, ax: Any) -> Any:
     lines = [np.array([a, b]) for bar in bars for a, b in itertools.pairwise(bar)]
     place_names(ax, names, np.array(lines) if lines else None, _small_patches(ax))
     return ax
-
-
-SAME_DOT = 0.003
-"""Distance between centres, as a fraction of the mechanism's size, within which
-their dots fall on one another and one label names them all."""
 
 
 def _name(pos: Position, i: int, j: int) -> str:
@@ -223,10 +221,11 @@ def _infinite_centre(ax: Any, d: np.ndarray, label: str, absolute: bool) -> Name
     says it is at infinity, with the direction's angle (deg, within a half turn:
     the centre is as far one way as the other).
     """
-    # rounded first: a direction a hair below the axis is 0°, not 180°
-    angle = round(math.degrees(math.atan2(d[1], d[0])), 3) % 180.0 + 0.0
-    u = d if d[1] > 0 or (d[1] == 0 and d[0] > 0) else -d
-    return _edge_arrow(ax, u, f"{label} at infinity, {angle:.3g}°", absolute)
+    # rounded first, and the arrow drawn along the angle named: a direction a hair
+    # below the axis is 0°, not 180° (or 180° drawn to the left)
+    angle = round(math.degrees(math.atan2(d[1], d[0])), 1) % 180.0 + 0.0
+    u = np.array([math.cos(math.radians(angle)), math.sin(math.radians(angle))])
+    return _edge_arrow(ax, u, f"{label} at infinity, {angle:g}°", absolute)
 
 
 def _edge_arrow(ax: Any, u: np.ndarray, text: str, absolute: bool) -> Name:
