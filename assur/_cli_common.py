@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import os
+import stat
 import sys
 from pathlib import Path
 from typing import Any
@@ -143,11 +144,37 @@ def positions(mech: Any, spec: str | None, option: str = "--angles") -> np.ndarr
 
 
 def load_mechanism(path: Path) -> Any:
-    """Read the mechanism file named on the command line (``-``: standard input)."""
+    """Read the mechanism file named on the command line (``-``: standard input).
+
+    Raises
+    ------
+    UsageError
+        When standard output is that very file (``>> m.toml``): whatever the
+        command prints, a table or a "wrote" line, would be added to it.
+    """
     from assur._stdin import STDIN, from_stdin
     from assur.io import load
 
-    return from_stdin() if str(path) == STDIN else load(path)
+    if str(path) == STDIN:
+        return from_stdin()
+    if _is_stdout(path):
+        msg = (
+            "standard output is the mechanism file being read (a redirection to "
+            "it); expected another file for the output"
+        )
+        raise UsageError(msg)
+    return load(path)
+
+
+def _is_stdout(path: Path) -> bool:
+    """Whether standard output is the regular file ``path`` (the same inode)."""
+    try:
+        out = os.fstat(sys.stdout.fileno())
+        found = os.stat(path)
+    except (AttributeError, OSError, ValueError):
+        return False  # no standard output, a stream without a file, no such file
+    same = (out.st_dev, out.st_ino) == (found.st_dev, found.st_ino)
+    return same and stat.S_ISREG(out.st_mode)
 
 
 def check_range(

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import contextlib
 import errno
+import logging
 import os
 import signal
 import sys
@@ -121,15 +122,41 @@ class _Closed:
         raise OSError(errno.EBADF, "standard output is closed")
 
 
+class _Sturdy:
+    """Standard error that passes over its own failures to write (a full disk).
+
+    Nowhere to say anything: the exit status speaks, 2 for an error, not the 1 of
+    the OSError that printing the error line raised.
+    """
+
+    def __init__(self, stream: Any) -> None:
+        self._stream = stream
+
+    def write(self, text: str) -> int:
+        try:
+            return int(self._stream.write(text))
+        except OSError:
+            return len(text)
+
+    def flush(self) -> None:
+        with contextlib.suppress(OSError):
+            self._stream.flush()
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._stream, name)
+
+
 @contextlib.contextmanager
 def _closed_streams() -> Iterator[None]:
-    """Stand in for standard output or error when they started closed."""
+    """Stand in for standard output or error when they started closed or fail."""
     saved = sys.stdout, sys.stderr
     with contextlib.ExitStack() as stack:
         if sys.stdout is None:
             sys.stdout = _Closed()  # type: ignore[assignment]
         if sys.stderr is None:  # nowhere to say anything: the exit status speaks
             sys.stderr = stack.enter_context(open(os.devnull, "w"))
+        else:
+            sys.stderr = _Sturdy(sys.stderr)  # type: ignore[assignment]
         try:
             yield
         finally:
@@ -166,3 +193,17 @@ def _quiet_stdout() -> None:
         os.dup2(devnull, descriptor)
     finally:
         os.close(devnull)
+
+
+def _plain_matplotlib() -> None:
+    """Set matplotlib up for the command line, before it is imported.
+
+    The command line draws on Agg whatever the environment names: a backend
+    matplotlib does not know stopped its very import with a traceback. And
+    matplotlib says nothing of its own (an unwritable cache folder was told in its
+    words, even with -q).
+    """
+    if "matplotlib" in sys.modules:  # imported by the caller: its settings stand
+        return
+    os.environ["MPLBACKEND"] = "agg"
+    logging.getLogger("matplotlib").setLevel(logging.ERROR)

@@ -34,6 +34,7 @@ from assur._cli_parser import _Parser
 from assur._cli_process import (
     _closed_streams,
     _lenient_streams,
+    _plain_matplotlib,
     _quiet_stdout,
     _stoppable,
     _Stopped,
@@ -169,6 +170,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     SIGHUP (143, 129). A reader of standard output that has gone (``| head``) ends
     the command quietly with status 0.
     """
+    _plain_matplotlib()
     try:
         _start.release()  # Ctrl-C is a KeyboardInterrupt again, caught below
         with _stoppable(), _closed_streams(), _lenient_streams():

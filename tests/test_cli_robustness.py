@@ -689,3 +689,44 @@ def test_a_note_over_its_answers_file_is_refused(tmp_path: Path, capsys):
         "the output"
     )
     assert answers.read_text() == text
+
+
+def test_standard_output_into_the_mechanism_file_is_refused(tmp_path: Path) -> None:
+    # the table (or a "wrote" line) was added to the very file being read
+    source = tmp_path / "m.toml"
+    source.write_text(FOUR_BAR.read_text())
+    before = source.read_bytes()
+    for options in ("--csv -", "--csv out.csv", "--json"):
+        done = shell(tmp_path, f"kinematics m.toml --angles 0:3:1 {options} >> m.toml")
+        assert done.returncode == 2, options
+        assert done.stderr == (
+            "assur: error: m.toml: standard output is the mechanism file being read "
+            "(a redirection to it); expected another file for the output\n"
+        )
+        assert source.read_bytes() == before
+    # another file, or a pipe, is as before
+    elsewhere = shell(tmp_path, "kinematics m.toml --angles 0 --csv - > t.csv")
+    assert elsewhere.returncode == 0
+
+
+def test_an_unknown_matplotlib_backend_in_the_environment_is_passed_over(
+    tmp_path: Path,
+) -> None:
+    # MPLBACKEND=nonsense stopped matplotlib's import with a traceback
+    done = subprocess.run(
+        [sys.executable, "-m", "assur", "plot", str(FOUR_BAR), "-o", "p.png", "-q"],
+        cwd=tmp_path,
+        env=subprocess_env(MPLBACKEND="nonsense"),
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert (done.returncode, done.stderr) == (0, "")
+    assert (tmp_path / "p.png").stat().st_size > 1000
+
+
+def test_an_error_standard_error_cannot_take_is_still_status_2(tmp_path: Path) -> None:
+    # printing the error line to a full disk raised OSError: status 1
+    done = shell(tmp_path, "structure none.toml 2>/dev/full")
+    assert done.returncode == 2
