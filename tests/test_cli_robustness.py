@@ -247,10 +247,17 @@ def test_a_fifo_whose_reader_stops_early_is_one_error(tmp_path: Path, capsys):
 
 def on_ascii(tmp_path: Path, *argv: str) -> subprocess.CompletedProcess[str]:
     """Run ``assur ARGV`` in ``tmp_path`` with standard streams in ASCII."""
+    return with_env(tmp_path, {"PYTHONIOENCODING": "ascii"}, *argv)
+
+
+def with_env(
+    tmp_path: Path, extra: dict[str, str], *argv: str
+) -> subprocess.CompletedProcess[str]:
+    """Run ``assur ARGV`` in ``tmp_path`` with the environment's ``extra`` values."""
     return subprocess.run(
         [sys.executable, "-m", "assur", *argv],
         cwd=tmp_path,
-        env=subprocess_env(PYTHONIOENCODING="ascii"),
+        env=subprocess_env(**extra),
         capture_output=True,
         text=True,
         timeout=120,
@@ -713,15 +720,8 @@ def test_an_unknown_matplotlib_backend_in_the_environment_is_passed_over(
     tmp_path: Path,
 ) -> None:
     # MPLBACKEND=nonsense stopped matplotlib's import with a traceback
-    done = subprocess.run(
-        [sys.executable, "-m", "assur", "plot", str(FOUR_BAR), "-o", "p.png", "-q"],
-        cwd=tmp_path,
-        env=subprocess_env(MPLBACKEND="nonsense"),
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    argv = ("plot", str(FOUR_BAR), "-o", "p.png", "-q")
+    done = with_env(tmp_path, {"MPLBACKEND": "nonsense"}, *argv)
     assert (done.returncode, done.stderr) == (0, "")
     assert (tmp_path / "p.png").stat().st_size > 1000
 
