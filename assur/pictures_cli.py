@@ -343,9 +343,21 @@ def _cmd_report(args: argparse.Namespace) -> int:
     from assur._progress import BAR_DELAY, progress
 
     shown = progress("report", len(sweep), _show(args), BAR_DELAY, " positions")
-    with _figures(), shown as bar:
+    with _figures(), shown as bar, contextlib.ExitStack() as stack:
+        page: list[Any] = []
+
+        def made(done: int, total: int) -> None:
+            # the page's parts after the sweep (its free-body diagrams take
+            # seconds): a bar of their own, the sweep's gone
+            if not page:
+                bar.close()
+                parts = progress("report page", total, _show(args), BAR_DELAY, " parts")
+                page.append(stack.enter_context(parts))
+            page[0].advance(done - page[0].done)
+
         # the sweep's positions (most of the work on a long one), told to the bar
-        write_report(mech, output, angles, lambda done, _: bar.advance(done - bar.done))
+        told = lambda done, _: bar.advance(done - bar.done)  # noqa: E731
+        write_report(mech, output, angles, told, made)
     # the page leaves out the positions that cannot be assembled, as
     # --skip-unassembled does elsewhere: said here as there, not on the page alone
     from assur._loads import compile_loads

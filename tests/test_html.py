@@ -605,3 +605,18 @@ def test_the_readout_gives_every_driver_s_position(tmp_path: Path) -> None:
     assert shown["errors"] == []
     first, second = default_positions(mech)[0]
     assert shown["readout"].startswith(f"driver angle {first:g}° · E {second:g}° · ")
+
+
+def test_the_page_s_parts_after_the_sweep_are_told():
+    # the free-body diagrams took seconds after the sweep's bar had ended, with no
+    # bar at all: the command line now shows one of the page's parts
+    from assur.html import PAGE_PARTS, render_report
+
+    told = []
+    page = render_report(
+        assur.load(EXAMPLES / "slider_crank_exercise.toml"),
+        angles=[0.0, 90.0],
+        parts=lambda done, total: told.append((done, total)),
+    )
+    assert told == [(k, PAGE_PARTS) for k in range(1, PAGE_PARTS + 1)]
+    assert 'id="free-bodies"' in page

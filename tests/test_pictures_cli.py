@@ -535,10 +535,12 @@ def fake_html(monkeypatch: pytest.MonkeyPatch) -> list[tuple]:
     """Stand in for assur.html and record how write_report is called."""
     calls: list[tuple] = []
 
-    def write_report(mechanism, path, angles=None, progress=False):
+    def write_report(mechanism, path, angles=None, progress=False, parts=None):
         calls.append((mechanism, path, angles))
         if callable(progress):  # the command's bar, told of the sweep
             progress(1, 1)
+        if callable(parts):  # and of the page's parts after it
+            parts(1, 1)
         Path(path).write_text("<html></html>")
 
     module = types.ModuleType("assur.html")

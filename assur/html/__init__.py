@@ -22,11 +22,15 @@ from assur.html._page import assemble_page
 from assur.model import Mechanism
 from assur.plan import plan_of
 
-__all__ = ["render_report", "write_report"]
+__all__ = ["PAGE_PARTS", "render_report", "write_report"]
+
+PAGE_PARTS = 4
+"""The parts of the page made after the sweep, as ``parts`` is told of them: the
+structure and data, the dynamics, the note and the free-body diagrams."""
 
 
 def render_report(
-    mechanism: Mechanism, angles: Any = None, progress: Any = False
+    mechanism: Mechanism, angles: Any = None, progress: Any = False, parts: Any = None
 ) -> str:
     """Return the HTML report of ``mechanism`` as one self-contained page.
 
@@ -40,6 +44,9 @@ def render_report(
     progress : bool or callable, optional
         Show a progress bar of the sweep on standard error (True), or call
         ``progress(done, total)`` as its positions are solved.
+    parts : callable, optional
+        Called ``parts(done, total)`` as each part of the page is made after the
+        sweep (:data:`PAGE_PARTS` of them; the free-body diagrams take the most).
 
     Returns
     -------
@@ -90,11 +97,20 @@ def render_report(
             "the sweep can be assembled; expected at least one"
         )
         raise AssemblyError(msg)
+    made = [0]
+
+    def told() -> None:
+        made[0] += 1
+        if parts is not None:
+            parts(made[0], PAGE_PARTS)
+
     struct = structure(mechanism)
     data = report_data(plan, struct, table)
+    told()
     section, data["dynamics"], columns = dynamics_part(table)
     data["columns"].update(columns)
-    return assemble_page(plan, struct, table, data, section)
+    told()
+    return assemble_page(plan, struct, table, data, section, told)
 
 
 def write_report(
@@ -102,6 +118,7 @@ def write_report(
     path: str | os.PathLike[str],
     angles: Any = None,
     progress: Any = False,
+    parts: Any = None,
 ) -> None:
     """Write the HTML report of ``mechanism`` to ``path`` (UTF-8).
 
@@ -123,4 +140,4 @@ def write_report(
     ...     target.read_text(encoding="utf-8").count("<html")
     1
     """
-    write_text(path, render_report(mechanism, angles, progress))
+    write_text(path, render_report(mechanism, angles, progress, parts))

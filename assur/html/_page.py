@@ -7,6 +7,7 @@ inlined, so that the page stays one file that opens offline.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from html import escape
 from importlib.resources import files
 from string import Template
@@ -39,11 +40,17 @@ def assemble_page(
     table: Table,
     data: dict[str, Any],
     dynamics: str = "",
+    told: Callable[[], None] = lambda: None,
 ) -> str:
     """Return the whole page: the template filled with sections, data and assets.
 
-    ``dynamics`` is the HTML of the dynamics section, or empty.
+    ``dynamics`` is the HTML of the dynamics section, or empty. ``told()`` is
+    called when the note is made, and when the free-body diagrams are.
     """
+    note = note_html(plan, table)
+    told()
+    bodies = free_bodies_html(table)
+    told()
     mech = plan.mechanism
     description = (
         f'<p class="description">{escape(mech.description)}</p>'
@@ -63,9 +70,9 @@ def assemble_page(
         "dynamics": dynamics,
         "table_title": "Reactions and balancing load" if forced else "Kinematics",
         "table": table_html(plan, table),
-        "note": note_html(plan, table),
+        "note": note,
         "inertia": inertia_html(table),
-        "free_bodies": free_bodies_html(table),
+        "free_bodies": bodies,
         "summary": summary_html(table),
         "data": to_json(data),
         "reaction_colour": REACTION_COLOUR,
