@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from assur._dynamic_checks import check_dynamic
-from assur._progress import Callback
+from assur._progress import BAR_DELAY, Callback
 from assur._progress import progress as show_progress
 from assur._startup_checks import _against_omega, _motor, _speed, _starts, _turns
 from assur._startup_curves import Curves
@@ -194,7 +194,10 @@ def startup(
     check_inertia(model, model.inertia + inertia, inertia)
     curves = Curves(model, inertia)
     _starts(model, engine, omega0, curves)
-    with show_progress("startup turns", turns, show=progress) as bar:
+    # the turns are at most so many (most motions settle long before): the bar
+    # only for a start-up that takes a while, as the sweeps' bars
+    shown = show_progress("startup", turns, progress, BAR_DELAY, " turns at most")
+    with shown as bar:
         runs = _integrate(model, engine, curves, omega0, turns, bar.advance)
     return _result(mechanism, engine, inertia, model, runs)
 
