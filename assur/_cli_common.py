@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import math
 import os
-import stat
 import sys
 from pathlib import Path
 from typing import Any
@@ -19,6 +18,7 @@ import numpy as np
 
 from assur._cli_types import plain_number
 from assur._output import path_text, standard_output
+from assur._targets import stdout_is
 from assur._text import counted, describe
 from assur.errors import UsageError
 
@@ -157,24 +157,13 @@ def load_mechanism(path: Path) -> Any:
 
     if str(path) == STDIN:
         return from_stdin()
-    if _is_stdout(path):
+    if stdout_is(path):
         msg = (
             "standard output is the mechanism file being read (a redirection to "
             "it); expected another file for the output"
         )
         raise UsageError(msg)
     return load(path)
-
-
-def _is_stdout(path: Path) -> bool:
-    """Whether standard output is the regular file ``path`` (the same inode)."""
-    try:
-        out = os.fstat(sys.stdout.fileno())
-        found = os.stat(path)
-    except (AttributeError, OSError, ValueError):
-        return False  # no standard output, a stream without a file, no such file
-    same = (out.st_dev, out.st_ino) == (found.st_dev, found.st_ino)
-    return same and stat.S_ISREG(out.st_mode)
 
 
 def check_range(

@@ -16,7 +16,7 @@ from assur.errors import OutputError
 if TYPE_CHECKING:
     from pathlib import Path
 
-__all__ = ["a_folder", "folder_name", "missing_folder", "path_text"]
+__all__ = ["a_folder", "folder_name", "missing_folder", "path_text", "stdout_is"]
 
 PROCESS_FILES = "/proc/"
 """The folder whose entries name a process's open files (``/dev/stdout`` leads there).
@@ -128,3 +128,19 @@ def _through_process_files(path: Path) -> bool:
         else:
             return False
     return False
+
+
+def stdout_is(path: Any) -> bool:
+    """Whether standard output is the regular file ``path`` (the same inode).
+
+    A redirection (``>> m.toml``) to a file the command reads.
+    """
+    import sys
+
+    try:
+        out = os.fstat(sys.stdout.fileno())
+        found = os.stat(path)
+    except (AttributeError, OSError, ValueError):
+        return False  # no standard output, a stream without a file, no such file
+    same = (out.st_dev, out.st_ino) == (found.st_dev, found.st_ino)
+    return same and stat.S_ISREG(out.st_mode)
