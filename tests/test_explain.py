@@ -252,21 +252,25 @@ torque = { values = [5.0, 5.0, 2.0, 2.0], over = "driver", table = [0.0, 240.0, 
 """
 
 
+CUT = "(-1000,\\ 0)\\ \\mathrm{N}"
+"""The cut as the note writes it."""
+
+
 @pytest.mark.parametrize(
     ("angle", "said"),
     [
         # 120 and 240 deg come back from radians a unit of the last place low
-        (120.0, ["(-1000,\\ 0)\\ \\mathrm{N}", "short of it, }(0,\\ 0)\\ \\mathrm{N}"]),
+        (120.0, [CUT, "steps here, from }(0,\\ 0)\\ \\mathrm{N}"]),
         (
             240.0,
             [
                 "Q_{\\mathrm{slider},1} = (0,\\ 0)\\ \\mathrm{N}",
-                "short of it, }(-1000,\\ 0)\\ \\mathrm{N}",
+                "steps here, from }(-1000,\\ 0)\\ \\mathrm{N}",
                 "T_{\\mathrm{crank},1} = 2\\ \\mathrm{N\\,m}",
-                "short of it, }5\\ \\mathrm{N\\,m}",
+                "steps here, from }5\\ \\mathrm{N\\,m}",
             ],
         ),
-        (480.0, ["(-1000,\\ 0)\\ \\mathrm{N}", "short of it, }(0,\\ 0)\\ \\mathrm{N}"]),
+        (480.0, [CUT, "steps here, from }(0,\\ 0)\\ \\mathrm{N}"]),
         (180.0, []),
     ],
 )
@@ -280,7 +284,7 @@ def test_a_load_at_its_table_s_step_says_which_side(tmp_path, angle, said) -> No
     text = str(note)
     for words in said:
         assert words in text
-    assert text.count("(its table steps here: the value past") == len(said) // 2
+    assert text.count("(its table steps here, from ") == len(said) // 2
 
 
 def test_the_lecture_exercise_at_45_degrees() -> None:
@@ -659,3 +663,19 @@ def test_given_answers_round_off_nan_and_dotted_keys(tmp_path):
     path.write_bytes(b'[answers]\n"B.x" = 1 # \xff\n')
     with pytest.raises(assur.ModelError, match="cannot read the answers"):
         read_answers(path)
+
+
+def test_the_note_says_whether_the_balancing_torque_drives_or_brakes() -> None:
+    # its sign alone does not tell: 84.63 N m drives the crank at +200 rad/s and
+    # brakes the same crank turned clockwise (the clockwise one's inertia loads)
+    import dataclasses
+
+    mech = assur.load(EXERCISE)
+    note = str(explain(mech, 45.0))
+    assert "$M_{b} = 84.63\\ \\mathrm{N\\,m}$. It drives the link" in note
+    back = dataclasses.replace(
+        mech, drivers=(dataclasses.replace(mech.drivers[0], omega=-200.0),)
+    )
+    torque = float(assur.forces(back, [45.0])["driver.torque"][0])
+    said = "It brakes the link" if torque > 0 else "It drives the link"
+    assert said in str(explain(back, 45.0))

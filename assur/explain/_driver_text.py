@@ -52,11 +52,26 @@ def driver_blocks(pos: Position) -> list[Block]:
         sym = _symbol(d, many)
         # the unit in the mathematics, as in every other line of the note
         unit = "\\ \\mathrm{N\\,m}" if d.kind == "R" else "\\ \\mathrm{N}"
-        blocks.append(Para(f"So ${sym} = {num(value)}{unit}$." + _ideal(pos, i, sym)))
+        said = f"So ${sym} = {num(value)}{unit}$." + _sense(pos, i, value)
+        blocks.append(Para(said + _ideal(pos, i, sym, unit)))
     return blocks
 
 
-def _ideal(pos: Position, i: int, sym: str) -> str:
+def _sense(pos: Position, i: int, value: float) -> str:
+    """Return whether the balancing load drives the input link or brakes it.
+
+    Its sign alone does not tell: a clockwise crank is driven by a negative torque.
+    """
+    d = pos.plan.drivers[i]
+    speed = _speed(pos, d)
+    if not speed or abs(value) <= ZERO * _size(pos, i):
+        return ""
+    if value * speed > 0:
+        return " It drives the link: it acts the way the link moves."
+    return " It brakes the link: it acts against the way the link moves."
+
+
+def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
     """Return the words comparing the balancing load with the frictionless one."""
     assert pos.result is not None
     if not pos.result.ideal:
@@ -67,9 +82,9 @@ def _ideal(pos: Position, i: int, sym: str) -> str:
     d = pos.plan.drivers[i]
     speed = _speed(pos, d)
     words = (
-        f" Without friction the same motion needs ${sym}^{{ideal}} = {num(ideal)}$ "
-        f"(read off the lever below); friction changes it by ${sym} - "
-        f"{sym}^{{ideal}} = {num(value)} - {par(ideal)} = {num(extra)}$"
+        f" Without friction the same motion needs ${sym}^{{ideal}} = {num(ideal)}"
+        f"{unit}$ (read off the lever below); friction changes it by ${sym} - "
+        f"{sym}^{{ideal}} = {num(value)} - {par(ideal)} = {num(extra)}{unit}$"
     )
     # a frictionless load that is round-off (at a dead centre) has no size to compare
     if abs(ideal) > ZERO * _size(pos, i):
@@ -106,8 +121,8 @@ def _crank(pos: Position, i: int, loads: list[Load]) -> list[Block]:
     rubbing = driver_friction(pos, i)
     words = (
         f"Moments about {plain(d.pair.name)} (the frame's reaction passes through "
-        f"it) give the balancing torque ${sym}$ the frame applies to the link; its "
-        "force sum gives the frame's reaction"
+        f"it) give the balancing torque ${sym}$ on the link (the motor's, through "
+        "its shaft); its force sum gives the frame's reaction"
     )
     if rubbing is None:
         return [

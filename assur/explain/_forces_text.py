@@ -359,7 +359,11 @@ def forces_blocks(pos: Position) -> list[Block]:
         Para(
             "$\\vec F_{i,j}$ is the force of link $i$ on link $j$ ($\\vec F_{j,i} = "
             "-\\vec F_{i,j}$); a sliding pair's couple $M$ is taken about its point "
-            "(moving with its second link). Moments are counter-clockwise positive."
+            "(moving with its second link). Moments are counter-clockwise positive. "
+            "Among the known loads, $\\vec F_{i,L}$ and $M_{i,L}$ are link $L$'s "
+            "inertia force and torque (the $i$ for inertia, not a link), and "
+            "$\\vec Q_{L,k}$ and $T_{L,k}$ the file's $k$-th external force or "
+            "torque on $L$."
         ),
     ]
     solver_of = {s.bodies: s for s in plan.solvers}

@@ -276,8 +276,9 @@ def force_lines(loads: list[Load]) -> list[str]:
                 else f"{num(x.before[0])}\\ \\mathrm{{N\\,m}}"
             )
             # in the table's order, whichever way the driver moves: the value
-            # at the step's position is the one past it
-            said = "(its table steps here: the value past the step holds; short of it, "
-            text += f"\\quad \\text{{{said}}}{was}\\text{{)}}"
+            # at the step's position is the one on the side of larger positions
+            said = "(its table steps here, from "
+            rest = " below this position to the value above it, which holds here)"
+            text += f"\\quad \\text{{{said}}}{was}\\text{{{rest}}}"
         lines.append(text)
     return lines
