@@ -52,7 +52,7 @@ def test_friction_s_share_of_a_zero_ideal_load_is_not_a_percentage(
     """It said 100 14.76/0 = 1.303 10^18 % of its size."""
     note = str(explain(assur.load(EXAMPLES / f"{stem}.toml"), angle))
     (said,) = [line for line in note.splitlines() if "Without friction" in line]
-    assert "M_{b}^{ideal} = 0$" in said
+    assert "M_{b}^{ideal} = 0\\ \\mathrm{N\\,m}$" in said
     assert r"\%" not in said
 
 
