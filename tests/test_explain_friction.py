@@ -212,8 +212,10 @@ def test_every_driver_has_its_lever(rubbing: bool) -> None:
         if rubbing:
             ((ideal, half),) = shown[f"{sym}^{{ideal}}"]
             assert abs(ideal - float(table[f"{joint}.torque_ideal"][0])) <= half
-    # the primed powers: per unit speed, not watts
+    # the primed powers: per unit speed, not watts: in N m, as the torques
     assert "\\sum P' = " in lever
+    assert "power per unit speed (N m)" in lever
+    assert "W" not in next(x for x in lever.splitlines() if "\\sum P' = " in x)
     assert ("\\sum P_{f}' = " in lever) == rubbing
 
 

@@ -108,10 +108,12 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     sym = _symbol(d, len(pos.plan.drivers) > 1)
     tick = "" if actual else "'"
     rate = ("\\omega" if d.kind == "R" else "v") + tick
-    unit = "\\ \\mathrm{W}" if actual else ""
     # the balancing load's own unit: a couple on a crank, a force on a slider
     load_unit = "\\ \\mathrm{N\\,m}" if d.kind == "R" else "\\ \\mathrm{N}"
-    head = "power (W)" if actual else "power per unit speed"
+    # a power per unit speed is in W per rad/s (N m) or W per m/s (N): the load's
+    unit = "\\ \\mathrm{W}" if actual else load_unit
+    per = "N m" if d.kind == "R" else "N"
+    head = "power (W)" if actual else f"power per unit speed ({per})"
     blocks: list[Block] = [
         Para(f"With {note} (driver {plain(d.pair.name)}):"),
         Grid(("load", "force or couple", "velocity", head), tuple(rows)),
