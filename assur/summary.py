@@ -32,7 +32,8 @@ __all__ = ["Summary", "efficiency", "summarize", "undefined"]
 
 ROUND_OFF = 1e-12
 """A couple or shaking load below this share of the largest reaction (times the
-mechanism's size, for a moment) is round-off: the summary gives 0."""
+mechanism's size, for a moment), or a mean power below this share of the driver's
+peak power, is round-off: the summary gives 0."""
 
 
 @dataclass
@@ -281,7 +282,7 @@ class Summary:
             # of the powers at play, the driver's peaks: beside a friction of 1e-12
             # the means are all small, and the noise made an efficiency of 1.2e-5
             peaks = [out["driver.power.max"], out["driver.power.min"], power, lost]
-            noise = 1e-12 * np.max(np.abs(np.stack(peaks)), axis=0)
+            noise = ROUND_OFF * np.max(np.abs(np.stack(peaks)), axis=0)
             ideal = np.where(np.abs(ideal) <= noise, 0.0, ideal)
             out["driver.power_ideal.mean"] = ideal
             # the power with friction is the power without and friction's, at
