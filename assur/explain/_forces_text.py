@@ -209,7 +209,8 @@ def couple_blocks(
         line,
         f"M_{{{j}}} = {minus}\\sum M_{{{j}}} = {num(couple)}\\ \\mathrm{{N\\,m}}",
     ]
-    if abs(across) > 1e-9 * max(1.0, math.hypot(*force)):
+    pressed = abs(across) > 1e-9 * max(1.0, math.hypot(*force))
+    if pressed:
         if normal:
             # the normal force, across the guide (n = k x e), said before it divides
             n = perp(e)
@@ -226,8 +227,14 @@ def couple_blocks(
         Para(
             f"Moments of {plain(pos.link(body))} about the point of "
             f"{plain(pair.name)}: "
-            f"the couple $M_{{{j}}}$ of the guide's reaction (the normal force "
-            f"$N_{{{j}}}$ then acts $x_{{{j}}}$ along the guide from that point)"
+            f"the couple $M_{{{j}}}$ of the guide's reaction "
+            + (
+                f"(the normal force $N_{{{j}}}$ then acts $x_{{{j}}}$ along the guide "
+                "from that point)"
+                if pressed
+                else f"(the normal force $N_{{{j}}}$ is zero here: the guide's "
+                "reaction is that couple alone)"
+            )
             + (
                 ""
                 if sign > 0

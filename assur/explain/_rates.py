@@ -54,6 +54,9 @@ class Term:
     unknown: str | None = None
     column: Array | None = None
     size: str = ""
+    working: str = ""
+    """How a known term follows from a point shown before, ending before its value
+    (``\\vec v_O + ... = (0,\\ 0) + 4 \\cdot ...``); empty when it is given."""
 
 
 def _slide_sign(s: DyadSolver, b: int) -> float:
@@ -71,11 +74,19 @@ def _rotation(s: DyadSolver, b: int, k: int, pos: Position) -> str | None:
     return None  # it turns with a guide already known
 
 
-def _chain(pos: Position, s: DyadSolver, b: int, k: int) -> list[Term]:
-    """Terms of the middle point's motion along link ``b`` from its outer joint."""
+def _chain(
+    pos: Position, s: DyadSolver, b: int, k: int, label: str | None = None
+) -> list[Term]:
+    """Terms of the middle point's motion along link ``b`` from its outer joint.
+
+    ``label`` names the middle point in the terms' symbols when it is not the
+    joint's own name: the guide's point under a sliding middle pair (``B_{rocker}``,
+    the textbook's B3 beside the slider's B2).
+    """
     body, known, pair = s.bodies[b], s.known[b], s.ext[b]
     m = pos.pair_point(s.mid)
-    mid, j = name(s.mid.name), name(pair.name)
+    j = name(pair.name)
+    mid = name(s.mid.name) if label is None else label
     letter = LEVEL[k][0]
     link = name(pos.link(body))
     w, eps = pos.omega(body), pos.epsilon(body)
@@ -144,6 +155,7 @@ def _sliding(
             f"\\vec {letter}_{{{base}}}",
             pos.coincident(guide, m, k),
             f"\\text{{the point of {text(pos.link(guide))} at }} {j}",
+            working=_from_pin(pos, guide, m, base, k),
         )
     ]
     if k == 1:
@@ -171,8 +183,7 @@ def _sliding(
         Term(
             f"\\vec a^{{k}}_{{{j}}}",
             2 * wg * rel * perp(e),
-            f"2\\,\\vec\\omega \\times \\vec v^r,\\ a^k = 2 \\cdot {par(wg)} \\cdot "
-            f"{par(rel)} = {num(2 * wg * rel)}{SPEED[2]}",
+            _coriolis(pos, guide, j, wg, rel),
         ),
         Term(
             f"\\vec a^{{r}}_{{{j}}}",
@@ -184,6 +195,62 @@ def _sliding(
     ]
 
 
+def _coriolis(pos: Position, guide: int, j: str, wg: float, rel: float) -> str:
+    """Return what the Coriolis term of slide ``j`` is: its rule, direction, size.
+
+    Its size is ``2 |omega| |v_r|``; its direction the relative velocity turned by
+    a quarter turn the way the guide turns (no direction when either is zero).
+    """
+    link = name(pos.link(guide))
+    rule = f"2\\,\\omega_{{{link}}}\\,\\vec k \\times \\vec v^{{r}}_{{{j}}}"
+    size = (
+        f"a^k = 2\\,|\\omega_{{{link}}}|\\,v^{{r}}_{{{j}}} = 2 \\cdot {num(abs(wg))} "
+        f"\\cdot {num(abs(rel))} = {num(2 * abs(wg * rel))}{SPEED[2]}"
+    )
+    if num(2 * abs(wg * rel)) == "0":
+        return f"{rule},\\ {size}"
+    sense = "counter-clockwise" if wg > 0 else "clockwise"
+    return (
+        f"{rule}:\\ \\vec v^{{r}}_{{{j}}} \\text{{ turned }} 90^\\circ\\ "
+        f"\\text{{{sense}, as {text(pos.link(guide))} turns}},\\ {size}"
+    )
+
+
+def _from_pin(pos: Position, guide: int, m: Array, label: str, k: int) -> str:
+    """Return how the guide's point at ``m`` moves, from a pin of the guide.
+
+    The note showed the motion of the guide link's pins before (the crank's pivot,
+    the joint of an earlier group); the point of the guide under the slider is
+    found from one of them like any other point of the link. Empty for the frame
+    (its points stand still) and for a guide without a pin.
+    """
+    if guide == 0:
+        return ""
+    pins = [p for p in pos.pairs_of(guide) if p.kind == "R"]
+    if not pins:
+        return ""
+    pin = pins[0]
+    offset = pin.d_first if pin.first == guide else pin.d_second
+    r = m - pos.point(guide, offset)
+    x = point_name(pin.name.split("~")[0])
+    base = pos.point(guide, offset, k)
+    if math.hypot(*r) <= 1e-12 * pos.size():
+        return f"\\vec {LEVEL[k][0]}_{{{x}}}"
+    link = name(pos.link(guide))
+    w = pos.omega(guide)
+    if k == 1:
+        return (
+            f"\\vec v_{{{x}}} + \\omega_{{{link}}}\\,\\vec k \\times \\vec "
+            f"r_{{{x}{label}}} = {vec(base)} + {par(w)} \\cdot \\vec k \\times {vec(r)}"
+        )
+    return (
+        f"\\vec a_{{{x}}} + \\varepsilon_{{{link}}}\\,\\vec k \\times \\vec "
+        f"r_{{{x}{label}}} - \\omega_{{{link}}}^2 \\vec r_{{{x}{label}}} = "
+        f"{vec(base)} + {par(pos.epsilon(guide))} \\cdot \\vec k \\times {vec(r)} - "
+        f"{par(w)}^2 \\cdot {vec(r)}"
+    )
+
+
 def _sides(pos: Position, s: DyadSolver, k: int) -> tuple[list[Term], list[Term]]:
     """Return the two sides of the middle joint's equation at level ``k``."""
     if s.mid.kind == "R":
@@ -193,7 +260,8 @@ def _sides(pos: Position, s: DyadSolver, k: int) -> tuple[list[Term], list[Term]
     e = pos.turned(s.mid.first, s.mid.axis or (1.0, 0.0))
     j = name(s.mid.name)
     rel = _sliding(pos, s.mid.first, s.mid.second, m, e, j, j, k)
-    return _chain(pos, s, 1 - g, k), _chain(pos, s, g, k) + rel[1:]
+    on_guide = f"{j}_{{{name(pos.link(s.mid.first))}}}"
+    return _chain(pos, s, 1 - g, k), _chain(pos, s, g, k, on_guide) + rel[1:]
 
 
 def _solve(left: list[Term], right: list[Term]) -> tuple[list[str], Array, Array]:
@@ -238,7 +306,9 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
         Display((f"{_sum(left)} = {_sum(right)}",)),
         Display(
             tuple(
-                f"{t.tex} = {vec(t.value, scale)}{SPEED[k]}"
+                f"{t.tex} = "
+                + (f"{t.working} = " if t.working else "")
+                + f"{vec(t.value, scale)}{SPEED[k]}"
                 + (f",\\quad {t.note}" if t.note else "")
                 for t in left + right
                 if t.unknown is None
@@ -263,9 +333,12 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
         + (f",\\quad {t.size}" if t.size else "")
         for t in unknown
     ]
-    total = sum((t.value for t in left), np.zeros(2))
+    # the middle point's motion summed along the side that has working to show: a
+    # slider on a pin of a known link has its pin's motion alone on its side
+    side = right if len(left) == 1 else left
+    total = sum((t.value for t in side), np.zeros(2))
     results.append(
-        f"\\vec {letter}_{{{mid}}} = {_sum(left)} = {vec(total, scale)}{SPEED[k]},"
+        f"\\vec {letter}_{{{mid}}} = {_sum(side)} = {vec(total, scale)}{SPEED[k]},"
         f"\\quad {letter}_{{{mid}}} = {num(math.hypot(*total), scale)}{SPEED[k]}"
     )
     blocks.append(Display(tuple(results)))

@@ -1,0 +1,163 @@
+"""The note's working of sliding pairs: guide points, Coriolis terms, pure couples.
+
+A sliding pair is where a student's working goes wrong: the guide's point under the
+slider must come from somewhere, the Coriolis term needs a direction as well as a
+size, the two points at a slot (the slider's and the guide's) need two names, and a
+guide that carries only a couple has no point of action to compute. Every number is
+checked against the forces table, not against the note.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import assur
+from assur.explain import explain
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+DATA = Path(__file__).parent / "data" / "explain"
+NUMBER = r"(-?[0-9.]+(?: \\cdot 10\^\{-?\d+\})?)"
+VECTOR = rf"\({NUMBER},\\ {NUMBER}\)"
+
+
+def _float(text: str) -> float:
+    """Return the value of a number as the note prints it."""
+    mantissa, _, power = text.partition(" \\cdot 10^{")
+    return float(mantissa) * 10.0 ** float(power.rstrip("}") or 0)
+
+
+def _mechanism(tmp_path: Path, path: Path, clockwise: bool) -> assur.Mechanism:
+    """Load ``path``; with ``clockwise``, its driver's speed turned the other way."""
+    if not clockwise:
+        return assur.load(path)
+    text = path.read_text()
+    found = re.search(r"^omega = ([0-9.]+)$", text, flags=re.M)
+    assert found, path
+    copy = tmp_path / path.name
+    copy.write_text(text.replace(found.group(0), f"omega = -{found.group(1)}"))
+    return assur.load(copy)
+
+
+def _rate(table: assur.Table, link: str, rate: str) -> float:
+    """Return a link's rate (``omega`` or ``alpha``) in the table; 0 for the frame."""
+    return 0.0 if link == "ground" else float(table[f"{link}.{rate}"][0])
+
+
+CASES = [
+    (EXAMPLES / "slot_mechanism.toml", 30.0),
+    (EXAMPLES / "slot_mechanism.toml", 250.0),
+    (EXAMPLES / "whitworth.toml", 60.0),
+    (EXAMPLES / "whitworth.toml", 210.0),
+    (DATA / "prp_tangent.toml", 30.0),
+    (DATA / "slot_in_crank.toml", 20.0),
+]
+GUIDES = [
+    (EXAMPLES / "lever_var9.toml", 20.0),
+    (EXAMPLES / "lever_var9.toml", 250.0),
+    (DATA / "prp_tangent.toml", 30.0),
+    (DATA / "slot_in_crank.toml", -20.0),
+]
+"""Mechanisms with a slider on a moving guide (lever_var9's on link 2, whose pin B
+moves)."""
+
+
+@pytest.mark.parametrize("clockwise", [False, True])
+@pytest.mark.parametrize(("path", "angle"), CASES)
+def test_a_coriolis_term_points_along_the_relative_velocity_turned_as_the_guide_turns(
+    tmp_path: Path, path: Path, angle: float, clockwise: bool
+) -> None:
+    # the note gave 2 w v_r as a signed product and no direction: the reader could
+    # not draw the vector of the plan without the table
+    mech = _mechanism(tmp_path, path, clockwise)
+    note = str(explain(mech, angle))
+    table = assur.kinematics(mech, [angle])
+    coriolis = re.findall(
+        rf"\\vec a\^{{k}}_{{(.+?)}} = {VECTOR}\\ \\mathrm{{m/s\^2}},\\quad "
+        rf"2\\,\\omega_{{\\mathrm{{(\w+)}}}}(.*?)\\ a\^k = .* = {NUMBER}\\ "
+        rf"\\mathrm{{m/s\^2}} \$\$",
+        note,
+    )
+    turning = [c for c in coriolis if _rate(table, c[3], "omega") != 0.0]
+    assert turning, "no Coriolis term of a turning guide"
+    for slide, ax, ay, guide, middle, size in coriolis:
+        a = np.array([_float(ax), _float(ay)])
+        omega = _rate(table, guide, "omega")
+        told = re.search(r"90\^\\circ\\ \\text\{([a-z-]+), as \w+ turns", middle)
+        sense = told.group(1) if told else ""
+        found = re.search(rf"\\vec v\^{{r}}_{{{re.escape(slide)}}} = {VECTOR}", note)
+        assert found, slide
+        vr = np.array([_float(found.group(1)), _float(found.group(2))])
+        if omega == 0.0 or np.allclose(vr, 0.0):
+            # no direction to tell: the term is zero
+            assert not sense
+            assert _float(size) == 0.0
+            assert np.allclose(a, 0.0)
+            continue
+        assert sense == ("counter-clockwise" if omega > 0 else "clockwise")
+        assert _float(size) == pytest.approx(2 * abs(omega) * math.hypot(*vr), 2e-3)
+        turn = 1.0 if sense == "counter-clockwise" else -1.0
+        direction = turn * np.array([-vr[1], vr[0]]) / math.hypot(*vr)
+        assert a == pytest.approx(_float(size) * direction, rel=3e-3, abs=2e-3)
+
+
+@pytest.mark.parametrize(("path", "angle"), GUIDES)
+def test_a_moving_guide_s_point_under_the_slider_is_worked_out_from_its_pin(
+    path: Path, angle: float
+) -> None:
+    # it was printed bare ("the point of crank at slot"), used before it was derived
+    mech = assur.load(path)
+    note = str(explain(mech, angle))
+    table = assur.kinematics(mech, [angle])
+    lines = [
+        line
+        for line in note.splitlines()
+        if "\\text{the point of " in line and "\\text{the point of ground" not in line
+    ]
+    assert lines
+    for line in lines:
+        found = re.search(
+            rf"\\vec ([va])_{{.+?}} = \\vec [va]_{{\\mathrm{{(\w+)}}}} \+ "
+            rf"\\(?:omega|varepsilon)_{{\\mathrm{{(\w+)}}}}.*? = {VECTOR} \+ "
+            rf"\(?{NUMBER}\)? \\cdot \\vec k \\times",
+            line,
+        )
+        assert found, line
+        level, pin, link = found.group(1), found.group(2), found.group(3)
+        rate = {"v": ("vx", "vy", "omega"), "a": ("ax", "ay", "alpha")}[level]
+        want = [float(table[f"{pin}.{c}"][0]) for c in rate[:2]]
+        got = [_float(found.group(k)) for k in (4, 5)]
+        slack = 1e-9 + 1e-3 * max(map(abs, want))
+        assert got == pytest.approx(want, rel=1e-3, abs=slack)
+        assert _float(found.group(6)) == pytest.approx(
+            _rate(table, link, rate[2]), rel=1e-3, abs=1e-9
+        )
+
+
+def test_a_slot_s_guide_point_and_slider_point_have_two_names() -> None:
+    # v_B = v_O4 + v_BO4 + v_rB used B for two points, and ended "v_B = v_B"
+    note = str(explain(assur.load(EXAMPLES / "slot_mechanism.toml"), 30.0))
+    assert (
+        "\\vec v_{\\mathrm{B}} = \\vec v_{\\mathrm{O4}} + "
+        "\\vec v_{\\mathrm{B}_{\\mathrm{rocker}}\\mathrm{O4}} + "
+        "\\vec v^{r}_{\\mathrm{B}}"
+    ) in note
+    assert "\\vec v_{\\mathrm{B}} = \\vec v_{\\mathrm{B}} =" not in note
+    assert "\\vec a_{\\mathrm{B}} = \\vec a_{\\mathrm{B}} =" not in note
+
+
+@pytest.mark.parametrize("angle", [30.0, 75.0, 200.0])
+def test_a_guide_that_carries_a_couple_alone_is_said_to(angle: float) -> None:
+    # the note said "N then acts x along the guide" and gave no x: N was zero
+    mech = assur.load(EXAMPLES / "scotch_yoke.toml")
+    note = str(explain(mech, angle))
+    table = assur.forces(mech, [angle])
+    force = math.hypot(float(table["guide.Fx"][0]), float(table["guide.Fy"][0]))
+    alone = "N_{\\mathrm{guide}}$ is zero here" in note
+    assert alone == (force < 1e-9 * float(table["B.F"][0]))
+    assert alone != ("x_{\\mathrm{guide}} = \\frac" in note)
+    assert alone
