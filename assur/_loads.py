@@ -12,13 +12,13 @@ from typing import Any
 
 import numpy as np
 
-from assur._tables import interpolate, periodic, step_before
+from assur._tables import Reading, interpolate, periodic, reading, step_before
 from assur._vec import Array
 from assur.errors import AssurWarning, ModelError
 from assur.model import LoadTable, resolve_point
 from assur.plan import Plan
 
-__all__ = ["LoadPlan", "compile_loads", "table_step", "table_values"]
+__all__ = ["LoadPlan", "compile_loads", "table_reading", "table_step", "table_values"]
 
 WHAT = {
     "center": "centre of mass",
@@ -170,6 +170,14 @@ def table_step(
     """
     xs, at, turning = _reading(table, plan, drive, slides, entry)
     return step_before(xs, table.values, float(at[0]), turning)
+
+
+def table_reading(
+    table: LoadTable, plan: Plan, drive: Array, slides: dict[str, Array], entry: str
+) -> Reading:
+    """Return between which entries ``table`` is read at the one position analysed."""
+    xs, at, turning = _reading(table, plan, drive, slides, entry)
+    return reading(xs, table.values, float(at[0]), turning)
 
 
 def _reading(

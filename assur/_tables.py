@@ -7,13 +7,14 @@ driver is periodic").
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from assur._vec import Array
 
-__all__ = ["TURN", "disagreement", "interpolate", "periodic"]
+__all__ = ["TURN", "Reading", "disagreement", "interpolate", "periodic", "reading"]
 
 TURN = 360.0
 """A crank's turn, deg."""
@@ -61,6 +62,48 @@ def periodic(xs: Array, values: Any, at: Array) -> list[Array]:
         interpolate(turn, *_closed(xs[first], np.asarray(v, dtype=float)[first]))
         for v in values
     ]
+
+
+@dataclass(frozen=True, slots=True)
+class Reading:
+    """Where a table is read at one position: between which two of its entries.
+
+    ``at`` is the position as the table reads it (within its turn, deg, for a
+    table over a crank); ``low`` and ``high`` the positions of the entries either
+    side, ``below`` and ``above`` their values (one per component), ``fraction``
+    how far ``at`` lies from ``low`` toward ``high`` (0 or 1 on an entry).
+    """
+
+    at: float
+    low: float
+    high: float
+    below: tuple[float, ...]
+    above: tuple[float, ...]
+    fraction: float
+
+
+def reading(xs: Array, values: Any, at: float, turning: bool) -> Reading:
+    """Return where a table is read at position ``at``, as :func:`interpolate` reads.
+
+    ``turning``: read over a crank's turn (deg), as :func:`periodic` reads it.
+    """
+    ys = [np.asarray(v, dtype=float) for v in values]
+    here = np.array([at], dtype=float)
+    if turning:
+        first = _first_turn(xs)
+        t = float(_in_turn(xs[first], here)[0])
+        grids = [_closed(xs[first], y[first]) for y in ys]
+    else:
+        t, grids = at, [(xs, y) for y in ys]
+    grid = grids[0][0]
+    # the entries interpolate uses: the last of equal positions, ends held
+    j = int(np.clip(np.searchsorted(grid, t, side="right") - 1, 0, len(grid) - 2))
+    low, high = float(grid[j]), float(grid[j + 1])
+    width = high - low
+    w = float(t >= low) if width == 0.0 else min(1.0, max(0.0, (t - low) / width))
+    below = tuple(float(g[1][j]) for g in grids)
+    above = tuple(float(g[1][j + 1]) for g in grids)
+    return Reading(t, low, high, below, above, w)
 
 
 def step_before(xs: Array, values: Any, at: float, turning: bool) -> list[float] | None:

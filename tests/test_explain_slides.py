@@ -19,6 +19,8 @@ import pytest
 import assur
 from assur.explain import explain
 
+from .notearith import pieces_checked
+
 EXAMPLES = Path(__file__).parent.parent / "examples"
 DATA = Path(__file__).parent / "data" / "explain"
 NUMBER = r"(-?[0-9.]+(?: \\cdot 10\^\{-?\d+\})?)"
@@ -161,3 +163,44 @@ def test_a_guide_that_carries_a_couple_alone_is_said_to(angle: float) -> None:
     assert alone == (force < 1e-9 * float(table["B.F"][0]))
     assert alone != ("x_{\\mathrm{guide}} = \\frac" in note)
     assert alone
+
+
+def test_a_tabulated_load_is_read_from_its_table_step_by_step() -> None:
+    # the note gave a tabulated load's value alone: the reader could not tell it
+    # came from two entries of a table, and which
+    mech = assur.load(DATA / "load_tables.toml")
+    note = str(explain(mech, 30.0))
+    # by hand: -1000 + (30 - 0) / (90 - 0) * (-200 - (-1000)), 0 + 30 / 90 * 50
+    line = (
+        "\\vec Q_{\\mathrm{slider},1} = (-1000,\\ 0) + \\frac{30 - 0}{90 - 0} \\cdot "
+        "\\left((-200,\\ 50) - (-1000,\\ 0)\\right) = (-733.33,\\ 16.67)\\ \\mathrm{N}"
+    )
+    assert line in note
+    assert "linear between its entries at } 0 \\text{ and } 90\\ \\mathrm{deg}" in note
+    slide = float(assur.kinematics(mech, [30.0])["guide.s"][0])
+    torque = -5.0 + (slide + 0.05) / 0.05 * (5.0 - -5.0)
+    assert f"= {torque:.4g}\\ \\mathrm{{N\\,m}}" in note
+    assert "over the slide of guide, read at } " + f"{slide:.4g}" in note
+    count, wrong = pieces_checked(note)
+    assert wrong == []
+    assert count >= 25
+
+
+@pytest.mark.parametrize(
+    ("angle", "said"),
+    [
+        (90.0, "(the entry of its table at } 90\\ \\mathrm{deg}"),
+        # a turn is read from the table's first position: -100 deg is 260 deg
+        (-100.0, "read at } 260\\ \\mathrm{deg}"),
+    ],
+)
+def test_a_tabulated_load_says_where_its_table_is_read(angle: float, said: str) -> None:
+    note = str(explain(assur.load(DATA / "load_tables.toml"), angle))
+    assert said in note
+    assert pieces_checked(note)[1] == []
+
+
+def test_a_flat_stretch_of_a_load_table_is_said_to_hold() -> None:
+    note = str(explain(assur.load(EXAMPLES / "whitworth.toml"), 210.0))
+    assert "(its table holds this value from } 165 \\text{ to } 360" in note
+    assert "\\frac{210 - 165}" not in note

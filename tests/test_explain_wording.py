@@ -145,7 +145,10 @@ class _Nothing:
 def test_a_load_that_is_zero_here_is_written_so() -> None:
     # the ram's load table gives 0 at 50 deg: the line was the bare symbol
     note = str(explain(assur.load(EXAMPLES / "whitworth.toml"), 50.0))
-    assert r"$$ \vec Q_{\mathrm{ram},1} = (0,\ 0)\ \mathrm{N} $$" in note
+    assert (
+        r"$$ \vec Q_{\mathrm{ram},1} = (0,\ 0)\ \mathrm{N},\quad \text{(its table "
+        r"holds this value from } 15 \text{ to } 160\ \mathrm{deg}\text{)} $$"
+    ) in note
     for line in note.splitlines():
         # a load's line (force, reaction, couple) always carries its value
         assert not re.fullmatch(r"\$\$ -?(\\vec [FQN]|[MT])_[^=]* \$\$", line), line

@@ -15,10 +15,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from assur._loads import table_step, table_values
+from assur._loads import table_reading, table_step, table_values
+from assur._tables import Reading
 from assur._vec import Array
 from assur.explain._position import ROUND_OFF, Position, at, cross, value
-from assur.explain._tex import name, num, par, point_name, vec
+from assur.explain._tex import name, num, par, point_name, text, vec
 from assur.groups._pairs import PairPlan
 from assur.model import LoadTable
 
@@ -42,7 +43,9 @@ class Load:
     ``tex`` names the load; ``where`` names its point. ``before`` is a tabulated
     load's value just short of a step of its table at this position, in the table's
     order (a force's two components, N, or a couple, N m): the value past the step
-    holds here.
+    holds here. ``read`` is a tabulated load's reading here: the working of its
+    interpolation between two entries (ending before its value, as
+    ``Q_a + (x - x_a) / (x_b - x_a) (Q_b - Q_a)``, in TeX) and the words that say so.
     """
 
     tex: str
@@ -51,6 +54,7 @@ class Load:
     force: Array
     couple: float = 0.0
     before: tuple[float, ...] | None = None
+    read: tuple[str, str] = ("", "")
 
 
 def inertia_load(pos: Position, body: int) -> tuple[Array, float] | None:
@@ -98,29 +102,86 @@ def own_loads(pos: Position, body: int) -> list[Load]:
         if b != body:
             continue
         count += 1
-        before = None
+        before, read = None, ("", "")
         if isinstance(force, LoadTable):
             fx, fy = table_values(force, pos.plan, state.drive, slides, entry)
             vector = at(fx, fy)
             before = _short_of(table_step(force, pos.plan, state.drive, slides, entry))
+            reading_here = table_reading(force, pos.plan, state.drive, slides, entry)
+            read = _read(reading_here, _over(pos, force), before is not None)
         else:
             vector = np.asarray(force, dtype=float)
         p = pos.point(body, offset)
         # Q, not F: F_{i,j} is the force of link i on link j
         tex = f"\\vec Q_{{{link},{count}}}"
         spot = _spot(pos, entry, count)
-        out.append(Load(tex, spot, p, vector, before=before))
+        out.append(Load(tex, spot, p, vector, before=before, read=read))
     for b, torque, entry in pos.loads.torques:
         if b != body:
             continue
         count += 1
-        t, before = torque, None
+        t, before, read = torque, None, ("", "")
         if isinstance(torque, LoadTable):
             t = table_values(torque, pos.plan, state.drive, slides, entry)[0]
             before = _short_of(table_step(torque, pos.plan, state.drive, slides, entry))
+            reading_here = table_reading(torque, pos.plan, state.drive, slides, entry)
+            read = _read(reading_here, _over(pos, torque), before is not None)
         tex, origin = f"T_{{{link},{count}}}", _origin(pos, body)
-        out.append(Load(tex, "", origin, np.zeros(2), value(t), before))
+        out.append(Load(tex, "", origin, np.zeros(2), value(t), before, read))
     return out
+
+
+def _over(pos: Position, table: LoadTable) -> tuple[str, str]:
+    """Return what a load table runs over, in words, and the unit of its positions.
+
+    Over the driver: no words (the note's position is the driver's), deg over a
+    crank, m over a sliding driver; over a joint's slide: its name, m.
+    """
+    if table.over != "driver":
+        return f" over the slide of {text(table.over)}", "m"
+    return "", "deg" if pos.plan.drivers[0].kind == "R" else "m"
+
+
+def _read(found: Reading, over: tuple[str, str], steps: bool) -> tuple[str, str]:
+    """Return a tabulated load's working here and the words that say where it is read.
+
+    On an entry (or at a step, whose words are said apart) there is no working:
+    the entry's value holds.
+    """
+    words, unit = over
+    u = f"\\ \\mathrm{{{unit}}}"
+    if steps or found.fraction in (0.0, 1.0):
+        if steps:
+            return "", ""
+        x = found.low if found.fraction == 0.0 else found.high
+        return (
+            "",
+            f"\\text{{(the entry of its table{words} at }} {num(x)}{u}\\text{{)}}",
+        )
+
+    if found.below == found.above:
+        # a flat stretch of the table: nothing to interpolate
+        return "", (
+            f"\\text{{(its table{words} holds this value from }} {num(found.low)} "
+            f"\\text{{ to }} {num(found.high)}{u}\\text{{)}}"
+        )
+
+    def value_(v: tuple[float, ...]) -> str:
+        return vec(np.array(v)) if len(v) == 2 else par(v[0])
+
+    first = vec(np.array(found.below)) if len(found.below) == 2 else num(found.below[0])
+    working = (
+        f"{first} + \\frac{{{num(found.at)} - {par(found.low)}}}"
+        f"{{{num(found.high)} - {par(found.low)}}} \\cdot \\left({value_(found.above)}"
+        f" - {value_(found.below)}\\right)"
+    )
+    said = (
+        f"\\text{{(its table{words}, read at }} {num(found.at)}{u}\\text{{: "
+        f"linear between its entries at }} {num(found.low)} \\text{{ and }} "
+        f"{num(found.high)}{u}"
+        "\\text{)}"
+    )
+    return working, said
 
 
 def _short_of(before: list[float] | None) -> tuple[float, ...] | None:
@@ -252,7 +313,8 @@ def force_lines(loads: list[Load]) -> list[str]:
     """Return one line per load: its force (N) and couple (N m) with their points."""
     lines = []
     for x in loads:
-        text = x.tex
+        working, words = x.read
+        text = x.tex + (f" = {working}" if working else "")
         if math.hypot(*x.force) > 0:
             text += f" = {vec(x.force)}\\ \\mathrm{{N}}"
             if x.where:
@@ -280,5 +342,7 @@ def force_lines(loads: list[Load]) -> list[str]:
             said = "(its table steps here, from "
             rest = " below this position to the value above it, which holds here)"
             text += f"\\quad \\text{{{said}}}{was}\\text{{{rest}}}"
+        if words:
+            text += f",\\quad {words}"
         lines.append(text)
     return lines
