@@ -581,7 +581,7 @@ def test_the_documented_couple_numbers_are_the_note_s() -> None:
 
     mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
     note = str(explain(mech, 45.0))
-    row = r"| $M_{i,\mathrm{rod}}$ | $-18.08$ | $\omega = -54.21$ | $980.36$ |"
+    row = r"| $M_{i,\mathrm{rod}}$ | $-18.08$ | $\omega = -54.21$ |  | $980.36$ |"
     assert row in note
     terms = dict(lever.lever_moments(table_at(mech, 45.0)))
     assert round(terms[r"M_{i,\mathrm{rod}}"], 2) == pytest.approx(-4.90)

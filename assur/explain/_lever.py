@@ -77,7 +77,12 @@ def lever_blocks(pos: Position) -> list[Block]:
             "the plan, taken as a lever pivoted at the pole, is in equilibrium. Its "
             "moment equation is the principle of virtual power, $\\sum (\\vec F_k "
             "\\cdot \\vec v_k + M_k \\omega_k) + P_b = 0$, where $P_b$ is the "
-            "balancing load's power. No reaction enters it (they do no work)."
+            "balancing load's power. No reaction enters it (they do no work). A "
+            "force's arm $h = |\\vec F \\cdot \\vec v| / F$ is the distance of its "
+            "line from the pole on the turned plan (in the plan's units, m/s, before "
+            "its scale): its moment about the pole, $F h$, is as large as its power "
+            "and turns the lever clockwise when the power is positive. A couple "
+            "$M$ on link $L$ counts as $M \\omega_L$."
         ),
     ]
     if many:
@@ -114,9 +119,12 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     unit = "\\ \\mathrm{W}" if actual else load_unit
     per = "N m" if d.kind == "R" else "N"
     head = "power (W)" if actual else f"power per unit speed ({per})"
+    # the arm is a length of the plan: a velocity, or a velocity per unit speed
+    per_speed = "m" if d.kind == "R" else "m/s per m/s"
+    arm = "arm h (m/s)" if actual else f"arm h per unit speed ({per_speed})"
     blocks: list[Block] = [
         Para(f"With {note} (driver {plain(d.pair.name)}):"),
-        Grid(("load", "force or couple", "velocity", head), tuple(rows)),
+        Grid(("load", "force or couple", "velocity", arm, head), tuple(rows)),
     ]
     lines = [f"\\sum P{tick} = {num(power)}{unit}"]
     rubbed, lost = power_rows(pos, bodies, actual)
@@ -264,10 +272,13 @@ def lever_terms(
     for t in parts:
         if t.couple:
             given, rate = num(t.load.couple), f"\\omega = {num(t.omega, turning)}"
+            arm = ""  # a couple has no line, and no arm
         else:
             given = vec(t.load.force, pos.force_scale())
             rate = f"\\vec v = {vec(t.velocity, fastest)}"
+            size = math.hypot(*t.load.force)
+            arm = f"${num(abs(t.power) / size, fastest)}$"
         power = num(t.power, powers)
-        rows.append((f"${t.load.tex}$", f"${given}$", f"${rate}$", f"${power}$"))
+        rows.append((f"${t.load.tex}$", f"${given}$", f"${rate}$", arm, f"${power}$"))
         total_power += t.power
     return rows, total_power

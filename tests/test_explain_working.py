@@ -1,10 +1,11 @@
-"""The note's working of sliding pairs: guide points, Coriolis terms, pure couples.
+"""The note's working where a student's own goes wrong, step by step.
 
-A sliding pair is where a student's working goes wrong: the guide's point under the
-slider must come from somewhere, the Coriolis term needs a direction as well as a
-size, the two points at a slot (the slider's and the guide's) need two names, and a
-guide that carries only a couple has no point of action to compute. Every number is
-checked against the forces table, not against the note.
+Sliding pairs: the guide's point under the slider must come from somewhere, the
+Coriolis term needs a direction as well as a size, the two points at a slot (the
+slider's and the guide's) need two names, and a guide that carries only a couple
+has no point of action to compute. A tabulated load is read between two entries of
+its table. A force on Zhukovsky's lever has an arm. Every number is checked against
+the forces table or worked by hand, not against the note.
 """
 
 from __future__ import annotations
@@ -204,3 +205,30 @@ def test_a_flat_stretch_of_a_load_table_is_said_to_hold() -> None:
     note = str(explain(assur.load(EXAMPLES / "whitworth.toml"), 210.0))
     assert "(its table holds this value from } 165 \\text{ to } 360" in note
     assert "\\frac{210 - 165}" not in note
+
+
+@pytest.mark.parametrize(
+    ("stem", "angle"), [("slider_crank_exercise", 45.0), ("four_bar", 120.0)]
+)
+def test_a_force_s_arm_on_the_lever_is_its_line_s_distance_from_the_pole(
+    stem: str, angle: float
+) -> None:
+    # the lever listed powers only; a textbook's lever takes moments, F times arm
+    mech = assur.load(EXAMPLES / f"{stem}.toml")
+    note = str(explain(mech, angle)).split("## 6. Check by Zhukovsky's lever")[1]
+    table = assur.forces(mech, [angle])
+    rows = [line.split(" | ") for line in note.splitlines() if line.startswith("| $")]
+    forces = [r for r in rows if r[0].startswith("| $\\vec F_{i,")]
+    assert forces
+    for cells in forces:
+        link = re.search(r"F_\{i,\\mathrm\{(\w+)\}\}", cells[0])
+        assert link
+        f = np.array([float(table[f"{link.group(1)}.Fi.{c}"][0]) for c in "xy"])
+        v = np.array([float(table[f"{link.group(1)}.G.v{c}"][0]) for c in "xy"])
+        # the force at the image of G on the plan turned by +90 degrees: its line's
+        # distance from the pole
+        image = np.array([-v[1], v[0]])
+        want = abs(image[0] * f[1] - image[1] * f[0]) / math.hypot(*f)
+        assert _float(cells[3].strip("$")) == pytest.approx(want, rel=1e-3, abs=1e-9)
+    couples = [r for r in rows if r[0].startswith("| $M_{i,")]
+    assert all(cells[3] == "" for cells in couples)
