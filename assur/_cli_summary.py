@@ -37,6 +37,10 @@ SUMMARY_ROWS = 400
 """Most rows of the readable table; --csv, --json and --parquet give them all."""
 
 
+ABOUT = "(about the origin of the file's coordinates)"
+"""What the summary's shaking moment is taken about, said beside it."""
+
+
 def _summed(parts: Iterator[Slice], summary: Summary) -> Iterator[Slice]:
     """Yield the slices, each added to ``summary`` on its way."""
     for part in parts:
@@ -46,6 +50,7 @@ def _summed(parts: Iterator[Slice], summary: Summary) -> Iterator[Slice]:
 
 def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
     """Return the summary as aligned lines with units, or as JSON."""
+    from assur._summary_notes import notes, turning
     from assur.summary import undefined
 
     values = summary.result()
@@ -55,6 +60,7 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
             "name": name,
             "positions": summary.count,
             "closes_a_turn": summary.closes(),
+            "means_over": summary.means_over()[0],
             "summary": {k: v if math.isfinite(v) else None for k, v in values.items()},
             "units": {k: summary.units[k] for k in values},
         }
@@ -62,6 +68,9 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
             data["undefined"] = why  # why a value is null
         if summary.clockwise:
             data["clockwise"] = list(summary.clockwise)  # driving torques below 0
+        said = notes(summary)
+        if said:
+            data["notes"] = said
         return json.dumps(data, indent=2)
     width = max(len(k) for k in values)
     # a whole turn's sweep ends on its first pose: the means count that pose once
@@ -73,9 +82,12 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
             lines.append(f"  {key.ljust(width)}  {'undefined':>14}  ({why[key]})")
             continue
         shown = number_text(value, ">14.6g")
-        lines.append(f"  {key.ljust(width)}  {shown}  {unit}".rstrip())
+        # the shaking moment's value depends on the point it is taken about
+        about = f" {ABOUT}" if key == "shaking.M.max" else ""
+        lines.append(f"  {key.ljust(width)}  {shown}  {unit}{about}".rstrip())
+    lines += [f"  ({line})" for line in notes(summary)]
     if summary.clockwise:
-        first, *rest = summary.turning()
+        first, *rest = turning(summary)
         lines += [f"  ({first}", *(f"   {line}" for line in rest)]
         lines[-1] += ")"
     return "\n".join(lines)

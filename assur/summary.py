@@ -7,11 +7,14 @@ friction the power lost in each joint, in all, and the cycle's mechanical effici
 :class:`Summary` is built slice by slice, so that a sweep too long for memory is
 summarised as it is analysed; :func:`summarize` does it for one table.
 
-Means and RMS values are over the table's positions: they are time averages over a
-cycle when the positions are equally spaced over a whole cycle and the driver turns
-at a constant speed (the default sweep of one turn in 1 degree steps is). A crank's
-sweep that ends a whole number of turns on from its first position (``0:360:10``)
-ends on its first pose again, and that pose counts once.
+Means and RMS values are time averages over the sweep, whose positions are taken as
+equally spaced (the default sweep of one turn in 1 degree steps is): at a crank's
+constant speed, plain means over the positions; where its speed varies (``omega=``
+given per position, the dynamic model's real speed), each position weighted by the
+time the crank spends there, ``1 / |omega|``. A prismatic driver, several drivers or
+a crank whose speed passes through zero: means over the positions, as said with the
+summary. A crank's sweep that ends a whole number of turns on from its first position
+(``0:360:10``) ends on its first pose again, and that pose counts once.
 """
 
 from __future__ import annotations
@@ -22,8 +25,9 @@ from typing import Any
 
 import numpy as np
 
+from assur._efficiency import efficiency
 from assur._evaluate import friction_powers
-from assur._running import Running, lasts, per_variant, sums
+from assur._running import Running, lasts, per_variant, sums, time_shares
 from assur._undefined import undefined
 from assur._vec import Array, full
 from assur.errors import UsageError
@@ -76,6 +80,13 @@ class Summary:
     """The first and the last driver position added (deg)."""
     _tail: dict[str, Any] = field(default_factory=dict)
     """The sums' terms of the last position added, by the sum's name."""
+    _weight: Any = 0.0
+    """The positions counted and the time they stand for, stacked (2, variants)."""
+    _first_speed: Any = None
+    """Each variant's crank speed at its first position (rad/s): times are to it."""
+    _varies: bool = False
+    """The crank's speed varies over the sweep: time weights are not all 1."""
+    _stops: bool = False  # it reaches zero (or a sliding or second driver): no time
 
     def add(self, table: Any) -> None:
         """Add the positions of ``table``, a forces table (one slice of a sweep).
@@ -99,45 +110,79 @@ class Summary:
         shape = (self.variants, n // self.variants)
         self.count += shape[1]
         where = (table.given[:, 0] if n else np.zeros(0)).reshape(shape)
+        w = self._shares(table, shape)
         for name, running in self._joints.items():
-            running.add(np.asarray(table[f"{name}.F"]).reshape(shape), where)
+            running.add(np.asarray(table[f"{name}.F"]).reshape(shape), where, w)
         for name, running in self._couples.items():
-            running.add(np.abs(table[f"{name}.M"]).reshape(shape), where)
+            running.add(np.abs(table[f"{name}.M"]).reshape(shape), where, w)
         for name, running in self._drivers.items():
-            running.add(np.asarray(table[name]).reshape(shape), where)
+            running.add(np.asarray(table[name]).reshape(shape), where, w)
         if "F" in self._shaking:
             shaking = np.hypot(table["shaking.Fx"], table["shaking.Fy"])
-            self._shaking["F"].add(shaking.reshape(shape), where)
+            self._shaking["F"].add(shaking.reshape(shape), where, w)
         if "M" in self._shaking:
-            self._shaking["M"].add(np.abs(table["shaking.M"]).reshape(shape), where)
+            shaking = np.abs(table["shaking.M"]).reshape(shape)
+            self._shaking["M"].add(shaking, where, w)
         forces = table.force_state
         state = table.state
-        tail: dict[str, Any] = {"power": 0.0, "ideal": 0.0}
+        ones = np.ones(n)
+        tail: dict[str, Any] = {
+            "power": 0.0,
+            "ideal": 0.0,
+            "weight": lasts(ones, shape, w),
+        }
+        self._weight = self._weight + sums(ones, shape, w)
         total: Any = 0.0
         for i, driver in enumerate(table.plan.drivers):
             speed = full(state.speed[i], n)
             power = full(forces.balancing[i], n) * speed
             total = total + power
-            self._power = self._power + sums(power, shape)
-            tail["power"] = tail["power"] + lasts(power, shape)
+            self._power = self._power + sums(power, shape, w)
+            tail["power"] = tail["power"] + lasts(power, shape, w)
             name = driver.pair.name
             if name in self._own:
-                self._own[name] = self._own[name] + sums(power, shape)
-                self._peaks[name].add(power.reshape(shape), where)
-                tail[name] = lasts(power, shape)
+                self._own[name] = self._own[name] + sums(power, shape, w)
+                self._peaks[name].add(power.reshape(shape), where, w)
+                tail[name] = lasts(power, shape, w)
             if self._rubbing:
                 ideal = full(forces.ideal[i], n) * speed
-                self._ideal = self._ideal + sums(ideal, shape)
-                tail["ideal"] = tail["ideal"] + lasts(ideal, shape)
-        self._peaks["driver"].add(full(total, n).reshape(shape), where)
+                self._ideal = self._ideal + sums(ideal, shape, w)
+                tail["ideal"] = tail["ideal"] + lasts(ideal, shape, w)
+        self._peaks["driver"].add(full(total, n).reshape(shape), where, w)
         for name, power in friction_powers(table).items():
-            self._losses[name] = self._losses.get(name, 0.0) - sums(power, shape)
-            tail[f"{name}.friction"] = -lasts(power, shape)
+            self._losses[name] = self._losses.get(name, 0.0) - sums(power, shape, w)
+            tail[f"{name}.friction"] = -lasts(power, shape, w)
         if shape[1]:
             self._tail = tail
             self._ends[:] = [*self._ends[:1], float(where[0, -1])]
             if len(self._ends) == 1:  # the first slice: its first position too
                 self._ends.insert(0, float(where[0, 0]))
+
+    def _shares(self, table: Any, shape: tuple[int, int]) -> Array:
+        """Return the time each position of ``table`` stands for (variants, m).
+
+        ``|omega_0| / |omega|``: 1 at the crank's first speed, so that a constant
+        speed weighs every position 1, exactly (see :meth:`timed`).
+        """
+        if not self._crank or not shape[1]:
+            self._stops = self._stops or not self._crank
+            return np.ones(shape)
+        speed = full(table.state.speed[0], shape[0] * shape[1]).reshape(shape)
+        if self._first_speed is None:
+            self._first_speed = speed[:, :1].copy()
+        w, stops = time_shares(speed, self._first_speed)
+        self._stops = self._stops or stops
+        self._varies = self._varies or bool(np.any(w != 1.0))
+        return w
+
+    def timed(self) -> bool:
+        """Whether the means are weighted by time: one crank, whose speed varies.
+
+        A constant speed gives every position the same time (plain means); a
+        sliding driver or several drivers have no one speed to time the positions
+        by, a crank whose speed reaches zero no time share: means over positions.
+        """
+        return self._varies and not self._stops
 
     def _start(self, table: Any) -> None:
         """Name the summary's values after the table's columns."""
@@ -217,18 +262,20 @@ class Summary:
         UsageError
             When no position was added (every one left out, or an empty sweep).
         """
-        n = self.count
-        if not n:
+        if not self.count:
             msg = "summary: the table has no positions to summarise"
             raise UsageError(msg)
         # a sweep that ends a whole turn on from where it began (0:360:10) ends on
         # its first pose again: counted twice, it tipped a cycle's mean power
         closing = self.closes()
-        n -= closing
+        row = 1 if self.timed() else 0
 
         def less(total: Any, last: Any) -> Any:
-            # the sum without its last position's term, when that is the first's
-            return total - last if closing else total
+            # the sum without its last position's term, when that is the first's;
+            # over the positions or over time
+            return np.asarray(total - last if closing else total)[row]
+
+        n = less(self._weight, self._tail["weight"])
 
         out: dict[str, Array] = {}
         tops = [r.top for r in self._joints.values()]
@@ -239,7 +286,7 @@ class Summary:
             if r is not None:
                 out[f"{name}.F.max"] = r.top
                 out[f"{name}.F.at"] = r.at
-                out[f"{name}.F.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
+                out[f"{name}.F.rms"] = np.sqrt(less(r.squares, r.last_squares) / n)
             couple = self._couples.get(name)
             if couple is not None:
                 top, at = self._settled(couple, force * self._size)
@@ -248,7 +295,7 @@ class Summary:
             out[f"{name}.max"] = r.top
             out[f"{name}.min"] = r.bottom
             out[f"{name}.mean"] = less(r.total, r.last) / n
-            out[f"{name}.rms"] = np.sqrt(less(r.squares, r.last**2) / n)
+            out[f"{name}.rms"] = np.sqrt(less(r.squares, r.last_squares) / n)
         power = less(self._power, self._tail.get("power"))
         out["driver.power.mean"] = per_variant(power / n, self.variants)
         out["driver.power.max"] = self._peaks["driver"].top
@@ -305,27 +352,30 @@ class Summary:
         first = self._ends[0] if self._ends else math.nan
         return np.where(noise, 0.0, r.top), np.where(noise, first, r.at)
 
-    def turning(self) -> list[str]:
-        """Return the lines saying which cranks turn clockwise, and what signs mean.
+    def means_over(self) -> tuple[str, str]:
+        """Return what the means and RMS values are over, and why where it matters.
 
-        Torques are counter-clockwise positive: a clockwise crank's driving torque
-        is negative, and its largest driving torque is the ``.min``. Empty when no
-        crank turns clockwise.
+        ``("time", why)`` for a crank whose speed varies, ``("positions", why)``
+        for one whose speed reaches zero or turns back, else ``("positions", "")``.
         """
-        joints = self.clockwise
-        if not joints:
-            return []
-        if self.drivers == 1:
-            which, it = "the crank turns", "it"
-        elif len(joints) == 1:
-            which, it = f"the crank at {joints[0]} turns", "it"
-        else:
-            which, it = f"the cranks at {', '.join(joints)} turn", "them"
-        return [
-            f"{which} clockwise and torques are counter-clockwise positive:",
-            f"a torque that drives {it} is negative; a positive power is work the",
-            "drivers supply",
-        ]
+        if self.timed():
+            return "time", "the crank's speed varies: each position weighs 1/|omega|"
+        if self._crank and self._stops:
+            return "positions", "the crank's speed reaches 0 or turns back"
+        return "positions", ""
+
+    def covered(self) -> float | None:
+        """Return the angle a crank's positions stand for, deg; None for no crank.
+
+        Equally spaced: to the last and a step on, or to the last where the sweep
+        closes a turn (0:360:10 covers 360 deg).
+        """
+        if not self._crank or len(self._ends) != 2:
+            return None
+        span = abs(self._ends[1] - self._ends[0])
+        if self.closes() or self.count < 2:
+            return span
+        return span * self.count / (self.count - 1)
 
     def closes(self) -> bool:
         """Whether the positions end a whole number of turns on from where they began.
@@ -340,30 +390,6 @@ class Summary:
         return last != first and abs(turns - round(turns)) <= 1e-12 * max(
             1.0, abs(turns)
         )
-
-
-def efficiency(power: float, ideal: float, lost: float) -> float:
-    """Return the cycle's mechanical efficiency, ``ideal / power``.
-
-    The share of the driver's work over a cycle that reaches the loads.
-
-    ``power`` is the driver's mean power with friction, ``ideal`` the same without
-    friction (the work the loads take from the driver, inertia's work cancelling over
-    a cycle) and ``lost`` the mean power lost to friction (W); over a steady cycle
-    ``power = ideal + lost``. A cycle in which the driver only overcomes friction
-    (``ideal`` zero within rounding) has efficiency 0. NaN where efficiency is not
-    defined: the driver does no net work (``power <= 0``, the loads drive the
-    mechanism), or the loads give back work the driver still has to supply.
-    """
-    if not power > 0.0:
-        return math.nan
-    # ``ideal`` cancels over a cycle of inertia loads alone: rounding then leaves
-    # a few ulps of the powers at play, not a negative efficiency
-    if abs(ideal) <= 1e-9 * (abs(power) + abs(lost)):
-        return 0.0
-    if ideal < 0.0:
-        return math.nan
-    return ideal / power
 
 
 def summarize(table: Any) -> dict[str, float]:

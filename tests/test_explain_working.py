@@ -232,3 +232,22 @@ def test_a_force_s_arm_on_the_lever_is_its_line_s_distance_from_the_pole(
         assert _float(cells[3].strip("$")) == pytest.approx(want, rel=1e-3, abs=1e-9)
     couples = [r for r in rows if r[0].startswith("| $M_{i,")]
     assert all(cells[3] == "" for cells in couples)
+
+
+def test_a_sliding_pair_s_couple_on_the_next_link_carries_its_symbol(
+    tmp_path: Path,
+) -> None:
+    # the crank's known loads ended ", 0.3 N m": a couple without a name or sign
+    path = tmp_path / "prp.toml"
+    torque = '\n[[loads]]\nlink = "block1"\ntorque = 2.0\n'
+    path.write_text((DATA / "prp_tangent.toml").read_text() + torque)
+    mech = assur.load(path)
+    note = str(explain(mech, 30.0)).split("## 5. The input link")[1]
+    # the pair's couple is the crank's on block1: on the crank it is minus that
+    found = re.search(
+        rf",\\ -M_{{\\mathrm{{slot}}}} = {NUMBER}\\ \\mathrm{{N\\,m}}", note
+    )
+    assert found, note[:400]
+    want = -float(assur.forces(mech, [30.0])["slot.M"][0])
+    assert abs(want) > 1.0
+    assert _float(found.group(1)) == pytest.approx(want, rel=1e-3)

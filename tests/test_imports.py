@@ -83,6 +83,8 @@ RANKS = {
     "assur._exports": 8,
     "assur.summary": 8,
     "assur._running": 1,
+    "assur._efficiency": 0,
+    "assur._summary_notes": 9,
     "assur._undefined": 0,
     "assur._stack": 6,
     # many variants compiled at once against a template plan

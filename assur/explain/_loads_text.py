@@ -55,6 +55,8 @@ class Load:
     couple: float = 0.0
     before: tuple[float, ...] | None = None
     read: tuple[str, str] = ("", "")
+    couple_tex: str = ""
+    """The couple's own symbol beside a force (a sliding pair's ``M_{slot}``)."""
 
 
 def inertia_load(pos: Position, body: int) -> tuple[Array, float] | None:
@@ -232,7 +234,9 @@ def link_loads(
             label = f"\\vec N_{{{name(pair_name)}}}"
             if sign < 0:
                 label = "-" + label
-        out.append(Load(label, name(pair_name), p, force, couple))
+        # the pair's couple is its first link's on its second: minus it on the first
+        said = f"{'' if sign > 0 else '-'}M_{{{name(pair_name)}}}" if couple else ""
+        out.append(Load(label, name(pair_name), p, force, couple, couple_tex=said))
     return out + [x for x in rubbing if x is not None]
 
 
@@ -323,7 +327,8 @@ def force_lines(loads: list[Load]) -> list[str]:
             text += (
                 f" = {num(x.couple)}\\ \\mathrm{{N\\,m}}"
                 if not math.hypot(*x.force)
-                else f",\\ {num(x.couple)}\\ \\mathrm{{N\\,m}}"
+                else f",\\ {x.couple_tex + ' = ' if x.couple_tex else ''}"
+                f"{num(x.couple)}\\ \\mathrm{{N\\,m}}"
             )
         elif not math.hypot(*x.force):  # a load that is zero here is written so
             zero = (

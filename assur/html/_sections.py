@@ -144,6 +144,7 @@ def summary_html(table: Table) -> str:
     """
     if table.force_state is None or len(table) == 0:
         return ""
+    from assur._summary_notes import notes, turning
     from assur.summary import Summary
 
     summary = Summary()
@@ -154,9 +155,9 @@ def summary_html(table: Table) -> str:
         for key, value in summary.result().items()
     )
     # as the command line's summary says it: which sign drives a clockwise crank
-    said = " ".join(summary.turning())
-    turning = (
-        f'<p class="note">{escape(said[:1].upper() + said[1:])}.</p>\n' if said else ""
+    said = [" ".join(turning(summary)), *notes(summary)]
+    told = "".join(
+        f'<p class="note">{escape(s[:1].upper() + s[1:])}.</p>\n' for s in said if s
     )
     return wide_card(
         "summary",
@@ -164,9 +165,9 @@ def summary_html(table: Table) -> str:
         '<p class="note">Largest and RMS reaction in every joint and where the '
         "largest occurs, a sliding pair's largest couple, the balancing load's "
         "extremes, mean and RMS, the drivers' mean, largest and smallest power, the "
-        "largest shaking force and moment and where; means are over the positions "
-        "shown.</p>\n"
-        f"{turning}"
+        "largest shaking force and moment (about the origin of the file's "
+        "coordinates) and where; means are over the positions shown.</p>\n"
+        f"{told}"
         '<div class="table-wrap"><table class="values summary"><tbody>\n'
         f"{rows}\n</tbody></table></div>",
     )
