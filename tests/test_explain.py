@@ -485,6 +485,28 @@ def test_mathml_of_the_constructs() -> None:
         mathml(r"\frac{a}{b")
 
 
+def test_a_minus_sign_hugs_its_number_and_a_subtraction_does_not() -> None:
+    # every minus was an infix operator, spaced on both sides: "( - 2960, 0)"
+    from assur.explain._mathml import mathml
+
+    sign, minus = '<mo form="prefix">−</mo>', "<mo>−</mo>"
+    got = mathml(r"(0,\ 0) - 200^2 \cdot (-0.074,\ -1) = -\frac{-3}{2}")
+    assert got.count(minus) == 1
+    assert got.count(sign) == 4
+    assert "-" not in re.sub(r"<[^>]*>", "", got)  # the minus sign, not a hyphen
+
+
+def test_the_report_s_display_equations_keep_their_mathematical_layout() -> None:
+    # display: block made Chromium lay a block equation out as text, one symbol
+    # under another; block math is the display of a block <math>
+    from importlib.resources import files
+
+    css = files("assur.html").joinpath("report.css").read_text(encoding="utf-8")
+    for rule in re.findall(r"math\[display=\"block\"\]\s*\{([^}]*)\}", css):
+        for shown in re.findall(r"(?<![-\w])display:\s*([^;]+);", rule):
+            assert shown.strip() == "block math"
+
+
 NBSP, THIN = "\u00a0", "\u2009"
 
 

@@ -35,6 +35,10 @@ TEXT_SPACES = {
 }  # fmt: skip
 """The spaces of :data:`SPACES` as characters (em, thin and four-per-em spaces), for
 inside ``\\text`` and ``\\mathrm``, where they join the words of one ``<mtext>``."""
+SIGN_AFTER = frozenset("([{=,+−⋅×±∓≈≤≥≠∑")
+"""Operators after which a minus is a number's sign, not a subtraction: set as a
+prefix, with no space between it and the number (MathML spaces an infix minus on
+both sides: ``( - 2960, 0)``)."""
 TOKEN = re.compile(r"\\[A-Za-z]+|\\.|\d+(?:\.\d+)?|[A-Za-z]|\s+|.", re.S)
 EDGE_SPACES = re.compile(r"^ +| +$")
 
@@ -66,9 +70,17 @@ def _skip(tokens: list[str], i: int) -> int:
 
 def _sequence(tokens: list[str], i: int, end: str | None) -> tuple[str, int]:
     """Parse atoms until ``end`` (a closing brace) or the end; return MathML."""
-    out = []
+    out: list[str] = []
     i = _skip(tokens, i)
     while i < len(tokens) and tokens[i] != end:
+        if tokens[i] == "-":
+            # the minus sign, not the hyphen; a sign at the start or after an
+            # operator hugs its number
+            before = [a for a in out if not a.startswith("<mspace")]
+            sign = not before or _operator(before[-1]) in SIGN_AFTER
+            out.append('<mo form="prefix">−</mo>' if sign else "<mo>−</mo>")
+            i = _skip(tokens, i + 1)
+            continue
         atom, i = _atom(tokens, i)
         out.append(atom)
         i = _skip(tokens, i)
@@ -78,6 +90,13 @@ def _sequence(tokens: list[str], i: int, end: str | None) -> tuple[str, int]:
             raise ValueError(msg)
         i += 1
     return "".join(out), i
+
+
+def _operator(atom: str) -> str:
+    """Return the operator an atom is (``<mo>=</mo>`` gives ``=``), else ""."""
+    if atom.startswith("<mo>") and atom.endswith("</mo>"):
+        return atom[4:-5]
+    return ""
 
 
 def _argument(tokens: list[str], i: int) -> tuple[str, int]:
