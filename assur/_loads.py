@@ -12,13 +12,28 @@ from typing import Any
 
 import numpy as np
 
-from assur._tables import Reading, interpolate, periodic, reading, step_before
+from assur._tables import (
+    Reading,
+    in_turn,
+    interpolate,
+    periodic,
+    reading,
+    step_before,
+    steps,
+)
 from assur._vec import Array
 from assur.errors import AssurWarning, ModelError
 from assur.model import LoadTable, resolve_point
 from assur.plan import Plan
 
-__all__ = ["LoadPlan", "compile_loads", "table_reading", "table_step", "table_values"]
+__all__ = [
+    "LoadPlan",
+    "compile_loads",
+    "step_rows",
+    "table_reading",
+    "table_step",
+    "table_values",
+]
 
 WHAT = {
     "center": "centre of mass",
@@ -159,6 +174,32 @@ def table_values(
     if turning:
         return periodic(xs, table.values, at)
     return [interpolate(at, xs, np.asarray(v, dtype=float)) for v in table.values]
+
+
+def step_rows(loads: LoadPlan, plan: Plan, drive: Array) -> Array:
+    """Return the mask of the positions where a load table over the driver steps.
+
+    ``drive`` (n, drivers) holds the driver positions (rad, or m). A table over a
+    joint's slide is left out: a sweep lands on its steps only by chance.
+    """
+    hit = np.zeros(drive.shape[0], dtype=bool)
+    tables = [f[2] for f in loads.forces] + [t[1] for t in loads.torques]
+    for table in tables:
+        if not isinstance(table, LoadTable) or table.over != "driver":
+            continue
+        xs = np.asarray(table.table, dtype=float)
+        turning = plan.drivers[0].kind == "R"
+        jumps = steps(xs, table.values, turning)
+        if not jumps.size:
+            continue
+        if turning:
+            hit |= np.isin(in_turn(xs, np.degrees(drive[:, 0])), jumps)
+        else:
+            # a slider's position given as the table's, through metres unchanged
+            near = 4.0 * np.spacing(np.maximum(np.abs(jumps), 1.0))
+            gap = np.abs(drive[:, :1] - jumps[None, :])
+            hit |= np.any(gap <= near[None, :], axis=1)
+    return hit
 
 
 def table_step(

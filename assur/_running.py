@@ -25,8 +25,8 @@ class Running:
     """Per variant: running maximum (and where), minimum, sums and sums of squares.
 
     ``total`` and ``squares`` are stacked (2, variants): over the positions, then
-    weighted by time; ``last`` and ``last_squares`` are the terms of the last
-    position added, stacked the same way (see
+    weighted by time (see :func:`sums`); ``last`` and ``last_squares`` are the
+    terms of the last position added, stacked the same way (see
     :meth:`assur.summary.Summary.results`).
     """
 
@@ -51,11 +51,12 @@ class Running:
             np.zeros((2, variants)),
         )
 
-    def add(self, values: Array, where: Array, weights: Array) -> None:
+    def add(self, values: Array, where: Array, weights: Array, last: Array) -> None:
         """Add ``values`` (variants, m) found at driver positions ``where`` (same).
 
-        ``weights`` (same shape) is the time each position stands for (1 at the
-        first position's speed).
+        ``weights`` (2, variants, m) is each value's share over the positions and
+        over time (see :func:`sums`); ``last`` (m,) marks the values of the last
+        position added.
         """
         if not values.shape[1]:
             return
@@ -68,32 +69,33 @@ class Running:
         self.top = np.where(better, best, self.top)
         self.at = np.where(better, where[rows, k], self.at)
         self.bottom = np.fmin(self.bottom, np.fmin.reduce(values, axis=1))
-        self.total = self.total + sums(values, values.shape, weights)
+        self.total = self.total + sums(values, weights)
         square = values * values
-        self.squares = self.squares + sums(square, values.shape, weights)
-        self.last = lasts(values, values.shape, weights)
-        self.last_squares = lasts(square, values.shape, weights)
+        self.squares = self.squares + sums(square, weights)
+        self.last = lasts(values, weights, last)
+        self.last_squares = lasts(square, weights, last)
 
 
-def lasts(values: Array, shape: tuple[int, int], weights: Array) -> Array:
-    """Return each variant's term at its last position, stacked (2, variants).
+def lasts(values: Array, weights: Array, last: Array) -> Array:
+    """Return the terms of the last position added, stacked as :func:`sums` gives.
 
-    The value, then the value times its weight; zeros for no positions.
+    ``last`` (m,) marks its values among ``values`` (variants, m): its value, and
+    at a step of a load table its value before the step too.
     """
-    if not shape[1]:
-        return np.zeros((2, shape[0]))
-    last = values.reshape(shape)[:, -1]
-    return np.stack([last, last * weights.reshape(shape)[:, -1]])
+    return sums(values[:, last], weights[:, :, last])
 
 
-def sums(values: Array, shape: tuple[int, int], weights: Array) -> Array:
-    """Return each variant's sum of values, stacked (2, variants): plain, weighted.
+def sums(values: Array, weights: Array) -> Array:
+    """Return each variant's weighted sum of ``values`` (variants, m), stacked (2, v).
 
-    A weight of exactly 1 everywhere (a constant speed) gives the plain sum twice,
-    to the last bit.
+    ``weights`` (2, variants, m): row 0 each value's share of its position (1, or
+    a half each side of a load table's step), row 1 that times the time the
+    position stands for. Weights of exactly 1 (a constant speed, no step) give the
+    plain sum, to the last bit.
     """
-    v = values.reshape(shape)
-    return np.stack([np.sum(v, axis=1), np.sum(v * weights.reshape(shape), axis=1)])
+    return np.stack(
+        [np.sum(values * weights[0], axis=1), np.sum(values * weights[1], axis=1)]
+    )
 
 
 def per_variant(value: Any, variants: int) -> Array:

@@ -14,7 +14,16 @@ import numpy as np
 
 from assur._vec import Array
 
-__all__ = ["TURN", "Reading", "disagreement", "interpolate", "periodic", "reading"]
+__all__ = [
+    "TURN",
+    "Reading",
+    "disagreement",
+    "in_turn",
+    "interpolate",
+    "periodic",
+    "reading",
+    "steps",
+]
 
 TURN = 360.0
 """A crank's turn, deg."""
@@ -128,6 +137,44 @@ def step_before(xs: Array, values: Any, at: float, turning: bool) -> list[float]
     if all(abs(b - a) <= slack for b, a in zip(before, after, strict=True)):
         return None
     return before
+
+
+def steps(xs: Array, values: Any, turning: bool) -> Array:
+    """Return the positions where a table steps: given twice, its values differing.
+
+    ``turning``: a table over a crank's turn (deg), read as :func:`periodic` reads
+    it: a step at the turn's end (a table from 0 to 360 whose ends differ) is at
+    its start, where a sweep's angle is read. The positions are those a reading
+    lands on exactly (:func:`_onto` puts an angle within round-off on them).
+    """
+    ys = [np.asarray(v, dtype=float) for v in values]
+    slack = AGREE * max(1.0, *(float(np.max(np.abs(y))) for y in ys))
+    if turning:
+        first = _first_turn(xs)
+        grids = [_closed(xs[first], y[first]) for y in ys]
+    else:
+        grids = [(xs, y) for y in ys]
+    grid = grids[0][0]
+    twice = np.flatnonzero(grid[:-1] == grid[1:])
+    jumps = [
+        float(grid[k])
+        for k in twice
+        if any(abs(float(g[1][k + 1] - g[1][k])) > slack for g in grids)
+    ]
+    if turning:
+        start = float(grid[0])
+        # the turn's end is its start again: a jump there is read at the start
+        if grid[-1] >= start + TURN and any(
+            abs(float(g[1][-1] - g[1][0])) > slack for g in grids
+        ):
+            jumps.append(start)
+        jumps = [start if x >= start + TURN else x for x in jumps]
+    return np.unique(np.array(jumps, dtype=float))
+
+
+def in_turn(xs: Array, at: Array) -> Array:
+    """Return angles ``at`` (deg) as a table over a crank's turn reads them."""
+    return _in_turn(xs[_first_turn(xs)], np.asarray(at, dtype=float))
 
 
 def _in_turn(xs: Array, at: Array) -> Array:

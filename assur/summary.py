@@ -26,8 +26,8 @@ from typing import Any
 import numpy as np
 
 from assur._efficiency import efficiency
-from assur._evaluate import friction_powers
 from assur._running import Running, lasts, per_variant, sums, time_shares
+from assur._summary_rows import rows_of
 from assur._undefined import undefined
 from assur._vec import Array, full
 from assur.errors import UsageError
@@ -109,49 +109,47 @@ class Summary:
         n = len(table)
         shape = (self.variants, n // self.variants)
         self.count += shape[1]
-        where = (table.given[:, 0] if n else np.zeros(0)).reshape(shape)
-        w = self._shares(table, shape)
+        rows = rows_of(table, self.variants, self._shares(table, shape))
+        where, w, last = rows.where, rows.weights, rows.last
         for name, running in self._joints.items():
-            running.add(np.asarray(table[f"{name}.F"]).reshape(shape), where, w)
+            running.add(rows.column(f"{name}.F"), where, w, last)
         for name, running in self._couples.items():
-            running.add(np.abs(table[f"{name}.M"]).reshape(shape), where, w)
+            running.add(rows.size(f"{name}.M"), where, w, last)
         for name, running in self._drivers.items():
-            running.add(np.asarray(table[name]).reshape(shape), where, w)
+            running.add(rows.column(name), where, w, last)
         if "F" in self._shaking:
-            shaking = np.hypot(table["shaking.Fx"], table["shaking.Fy"])
-            self._shaking["F"].add(shaking.reshape(shape), where, w)
+            shaking = rows.size("shaking.Fx", "shaking.Fy")
+            self._shaking["F"].add(shaking, where, w, last)
         if "M" in self._shaking:
-            shaking = np.abs(table["shaking.M"]).reshape(shape)
-            self._shaking["M"].add(shaking, where, w)
-        forces = table.force_state
-        state = table.state
-        ones = np.ones(n)
+            self._shaking["M"].add(rows.size("shaking.M"), where, w, last)
+        ones = np.ones(w.shape[1:])
         tail: dict[str, Any] = {
             "power": 0.0,
             "ideal": 0.0,
-            "weight": lasts(ones, shape, w),
+            "weight": lasts(ones, w, last),
         }
-        self._weight = self._weight + sums(ones, shape, w)
+        self._weight = self._weight + sums(ones, w)
         total: Any = 0.0
         for i, driver in enumerate(table.plan.drivers):
-            speed = full(state.speed[i], n)
-            power = full(forces.balancing[i], n) * speed
+            speed = rows.speed(i)
+            power = rows.balancing(i) * speed
             total = total + power
-            self._power = self._power + sums(power, shape, w)
-            tail["power"] = tail["power"] + lasts(power, shape, w)
+            self._power = self._power + sums(power, w)
+            tail["power"] = tail["power"] + lasts(power, w, last)
             name = driver.pair.name
             if name in self._own:
-                self._own[name] = self._own[name] + sums(power, shape, w)
-                self._peaks[name].add(power.reshape(shape), where, w)
-                tail[name] = lasts(power, shape, w)
+                self._own[name] = self._own[name] + sums(power, w)
+                self._peaks[name].add(power, where, w, last)
+                tail[name] = lasts(power, w, last)
             if self._rubbing:
-                ideal = full(forces.ideal[i], n) * speed
-                self._ideal = self._ideal + sums(ideal, shape, w)
-                tail["ideal"] = tail["ideal"] + lasts(ideal, shape, w)
-        self._peaks["driver"].add(full(total, n).reshape(shape), where, w)
-        for name, power in friction_powers(table).items():
-            self._losses[name] = self._losses.get(name, 0.0) - sums(power, shape, w)
-            tail[f"{name}.friction"] = -lasts(power, shape, w)
+                ideal = rows.ideal(i) * speed
+                self._ideal = self._ideal + sums(ideal, w)
+                tail["ideal"] = tail["ideal"] + lasts(ideal, w, last)
+        self._peaks["driver"].add(total + np.zeros(w.shape[1:]), where, w, last)
+        for name, power in rows.friction().items():
+            self._losses[name] = self._losses.get(name, 0.0) - sums(power, w)
+            tail[f"{name}.friction"] = -lasts(power, w, last)
+        where = where[:, : shape[1]]  # the table's own positions
         if shape[1]:
             self._tail = tail
             self._ends[:] = [*self._ends[:1], float(where[0, -1])]

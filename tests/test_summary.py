@@ -104,14 +104,15 @@ def test_a_value_that_is_not_a_number_is_neither_largest_nor_smallest():
     running = Running.start(2)
     where = np.array([[0.0, 10.0, 20.0], [0.0, 10.0, 20.0]])
     values = np.array([[1.0, np.nan, 5.0], [np.nan, np.nan, np.nan]])
-    running.add(values, where, np.ones_like(where))
+    running.add(values, where, np.ones((2, 2, 3)), np.array([False, False, True]))
     # argmax took the NaN for the largest and lost 5 at 20 deg; min gave NaN
     assert running.top[0] == 5.0
     assert running.at[0] == 20.0
     assert running.bottom[0] == 1.0
     assert np.isnan(running.total[:, 0]).all()  # the mean says there was one
     assert (running.top[1], running.bottom[1]) == (-np.inf, np.inf)  # none yet
-    running.add(np.array([[7.0], [2.0]]), np.array([[30.0], [30.0]]), np.ones((2, 1)))
+    seven = np.array([[7.0], [2.0]])
+    running.add(seven, np.array([[30.0], [30.0]]), np.ones((2, 2, 1)), np.array([True]))
     assert running.top.tolist() == [7.0, 2.0]
     assert running.at.tolist() == [30.0, 30.0]
 
@@ -484,3 +485,57 @@ def test_the_summary_says_what_its_numbers_are_of(capsys, angles, part):
     data = json.loads(capsys.readouterr().out)
     assert data["means_over"] == "positions"
     assert any("not whole turns" in line for line in data.get("notes", [])) == part
+
+
+CUTTING = Path(__file__).parent / "data" / "edge" / "cutting_steps.toml"
+
+
+def _slider_x(phi_deg: float) -> float:
+    """The cutting file's slider x (m) by hand: crank 0.05, rod 0.2, C at y -0.02."""
+    phi = math.radians(phi_deg)
+    r, rod, c = 0.05, 0.2, -0.02
+    return r * math.cos(phi) + math.sqrt(rod**2 - (c - r * math.sin(phi)) ** 2)
+
+
+@pytest.mark.parametrize("stop", [359.0, 360.0])
+def test_a_load_table_s_step_counts_half_on_each_side(stop):
+    # each step counted whole with the value after it: 428.53 W of a turn's 464.2
+    mech = assur.load(CUTTING)
+    summary = assur.forces(mech, np.arange(0.0, stop + 0.5, 1.0)).summary()
+    # the cut alone takes work over a turn (inertia, gravity and the rod's couple
+    # give theirs back): 3000 N against the slider's travel from 110 to 250 deg,
+    # along +x (the force is along -x)
+    work = 3000.0 * (_slider_x(250.0) - _slider_x(110.0))
+    mean = work * 100.0 / (2.0 * math.pi)
+    assert mean == pytest.approx(464.2, abs=0.05)
+    assert summary["driver.power.mean"] == pytest.approx(mean, rel=1e-4)
+    assert summary["driver.torque.mean"] == pytest.approx(mean / 100.0, rel=1e-4)
+
+
+def test_a_peak_just_before_a_step_is_the_summary_s():
+    mech = assur.load(CUTTING)
+    positions = np.arange(0.0, 360.0, 1.0)
+    table = assur.forces(mech, positions)
+    summary = table.summary()
+    # just before 110 deg the cut is off, just before 250 still on: solved apart
+    before = assur.forces(mech, [110.0 - 1e-6, 250.0 - 1e-6])
+    for joint in ("A", "B", "C", "guide"):
+        largest = max(np.max(table[f"{joint}.F"]), np.max(before[f"{joint}.F"]))
+        assert summary[f"{joint}.F.max"] == pytest.approx(largest, rel=1e-6), joint
+    torque = np.concatenate([table["driver.torque"], before["driver.torque"]])
+    assert summary["driver.torque.max"] == pytest.approx(torque.max(), rel=1e-6)
+    assert summary["driver.torque.min"] == pytest.approx(torque.min(), rel=1e-6)
+    # the cut's last position before the step back is the largest torque
+    assert summary["driver.torque.max"] > np.max(table["driver.torque"])
+
+
+def test_a_summary_by_slices_across_a_step_is_the_summary_of_the_whole():
+    mech = assur.load(CUTTING)
+    positions = np.arange(0.0, 360.0, 1.0)
+    whole = assur.forces(mech, positions).summary()
+    parts = Summary()
+    # a slice ends on the step at 110 deg, another starts on the one at 250
+    for chunk in np.array_split(positions, [111, 250]):
+        parts.add(assur.forces(mech, chunk))
+    for key, value in whole.items():
+        assert parts.result()[key] == pytest.approx(value, rel=1e-12, abs=1e-9), key

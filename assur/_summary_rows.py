@@ -1,0 +1,110 @@
+"""The rows a summary adds for one slice of a sweep, each value with its weight.
+
+The table's own rows, and at a position on a load table's step a second row with
+the loads before the step (:mod:`assur._steps`): the position then counts half with
+each, the trapezoid rule across the step. Every value carries two weights: its share
+of its position, and that times the time the position stands for (see
+:meth:`assur.summary.Summary.timed`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from assur._evaluate import friction_powers
+from assur._steps import before_steps
+from assur._vec import Array, full
+
+__all__ = ["Rows", "rows_of"]
+
+
+@dataclass(frozen=True)
+class Rows:
+    """A slice's values to summarise, one row per variant.
+
+    ``parts`` are the table and, at load tables' steps, the table of the rows
+    before them; ``where`` (variants, m) is each value's driver position,
+    ``weights`` (2, variants, m) its share of its position and of time, ``last``
+    (m,) marks the values of the slice's last position.
+    """
+
+    parts: tuple[Any, ...]
+    variants: int
+    where: Array
+    weights: Array
+    last: Array
+
+    def _joined(self, got: list[Any]) -> Array:
+        """Return the parts' values side by side, one row per variant."""
+        arrays = [np.asarray(g, dtype=float).reshape(self.variants, -1) for g in got]
+        return np.concatenate(arrays, axis=1)
+
+    def column(self, name: str) -> Array:
+        """Return a column of every part."""
+        return self._joined([t[name] for t in self.parts])
+
+    def size(self, *names: str) -> Array:
+        """Return the length of a vector of columns (one column: its size)."""
+        got = [[np.asarray(t[c], dtype=float) for c in names] for t in self.parts]
+        return self._joined(
+            [np.abs(c[0]) if len(c) == 1 else np.hypot(*c) for c in got]
+        )
+
+    def speed(self, i: int) -> Array:
+        """Return driver ``i``'s speed (rad/s or m/s)."""
+        return self._joined([full(t.state.speed[i], len(t)) for t in self.parts])
+
+    def balancing(self, i: int) -> Array:
+        """Return driver ``i``'s balancing load (N m or N)."""
+        return self._joined(
+            [full(t.force_state.balancing[i], len(t)) for t in self.parts]
+        )
+
+    def ideal(self, i: int) -> Array:
+        """Return driver ``i``'s balancing load without friction (N m or N)."""
+        return self._joined([full(t.force_state.ideal[i], len(t)) for t in self.parts])
+
+    def friction(self) -> dict[str, Array]:
+        """Return each pair's friction power (W), by the pair's name."""
+        every = [friction_powers(t) for t in self.parts]
+        return {name: self._joined([p[name] for p in every]) for name in every[0]}
+
+
+def rows_of(table: Any, variants: int, shares: Array) -> Rows:
+    """Return the rows to summarise of ``table``, ``shares`` the positions' times."""
+    n = len(table)
+    shape = (variants, n // variants)
+    where = (table.given[:, 0] if n else np.zeros(0)).reshape(shape)
+    weights = np.stack([np.ones(shape), shares])
+    last = np.arange(shape[1]) == shape[1] - 1
+    found = _before(table) if variants == 1 else None
+    if found is None:
+        return Rows((table,), variants, where, weights, last)
+    rows, before = found
+    weights[:, :, rows] *= 0.5
+    return Rows(
+        (table, before),
+        variants,
+        np.concatenate([where, where[:, rows]], axis=1),
+        np.concatenate([weights, weights[:, :, rows]], axis=2),
+        np.concatenate([last, rows == shape[1] - 1]),
+    )
+
+
+def _before(table: Any) -> tuple[Any, Any] | None:
+    """Return a table's rows on a load table's step, and their table before it.
+
+    A full table only: one of a few columns (``columns=``) keeps too little of the
+    motion to solve the forces again, and is summarised on its rows as they are.
+    """
+    if not len(table) or table.partial:
+        return None
+    found = before_steps(table.plan, table.state)
+    if found is None:
+        return None
+    rows, forces = found
+    state = table.state.rows(rows)
+    return rows, type(table)(table.plan, table.schema, table.given[rows], state, forces)
