@@ -9,6 +9,7 @@ and 10^18 percent; the lever picture wrote its shares to 300 decimals.
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 import matplotlib
 import numpy as np
@@ -98,3 +99,17 @@ def test_the_lever_writes_a_link_s_speed_as_mathtext() -> None:
     plt.close(ax.figure)
     assert "ω_L" not in text
     assert r"$\omega_L$" in text
+
+
+def test_a_link_at_rest_in_its_turning_has_a_speed_ratio_of_zero() -> None:
+    # the Whitworth rod at 90 deg: "omega_L/omega = 2.6986e-16" stood in the list
+    import matplotlib.pyplot as plt
+
+    mech = assur.load(Path(__file__).parent.parent / "examples" / "whitworth.toml")
+    table = table_at(mech, 90.0)
+    assert abs(float(table["rod.omega"][0])) < 1e-12
+    ax = lever.zhukovsky_lever(table)
+    (text,) = [t.get_text() for t in ax.texts if "balancing load" in t.get_text()]
+    plt.close(ax.figure)
+    assert r"$\omega_L$/ω = 0)" in text or r"$\omega_L$/ω = 0;" in text
+    assert "e-1" not in text

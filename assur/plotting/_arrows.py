@@ -19,7 +19,7 @@ if TYPE_CHECKING:
     from assur.plotting._context import _Context
     from assur.plotting._forces import _Arrow
 
-__all__ = ["LABEL_BOX", "_draw_arrows"]
+__all__ = ["INTERNAL_DASH", "LABEL_BOX", "_draw_arrows"]
 
 LABEL_BOX = {
     "boxstyle": "round,pad=0.1",
@@ -32,6 +32,8 @@ HALO = 1.0
 """Width, points, of the light outline round a force arrow beyond its line: a
 black inertia force on the dark crank, or a short reaction over a joint's ring or a
 slider's box, would otherwise not be seen."""
+INTERNAL_DASH = (0, (3.0, 1.6))
+"""The dash of a reaction inside a group, drawn on both of its pair's links."""
 ARROW_ZORDER = 6
 """Force arrows lie above the links (<= 3), the joints (4) and the paths (5)."""
 
@@ -52,8 +54,12 @@ def _draw_arrows(
     """
     seen = []
     tiny = 1e-9 * max([abs(a.couple or 0) for a in arrows] + [1.0])
+    # a force of round-off (a guide's at a dead centre, 1.6e-14 N beside 3266 N)
+    # is none: not an arrow with "1.63e-14 N" on it
+    sizes = [float(np.hypot(*a.force)) for a in arrows if a.force is not None]
+    least = 1e-9 * max([*sizes, 0.0])
     for a in arrows:
-        if a.force is not None and float(np.hypot(*a.force)) > 0:
+        if a.force is not None and float(np.hypot(*a.force)) > least:
             seen.append(_draw_force(ax, ctx, a, a.force, scale, text))
         if a.couple is not None and abs(a.couple) > tiny:
             seen += _draw_couple(ax, ctx, a, a.couple, text)
@@ -72,13 +78,14 @@ def _draw_force(
     mag = float(np.hypot(*force))
     tip = a.at + force / (scale * 100.0)
     # a short arrow's head shrinks with it: its direction stays readable
+    dash = INTERNAL_DASH if a.kind in ("internal", "opposite") else "solid"
     ax.add_patch(
         fitted_arrow(
             [a.at, tip], 13, color=a.color, lw=1.7, zorder=ARROW_ZORDER,
-            path_effects=_halo(1.7),
+            path_effects=_halo(1.7), linestyle=dash,
         )
     )  # fmt: skip
-    if text:
+    if text and a.kind != "opposite":
         u = force / mag
         words = (
             f"{a.label} = {quantity(mag, a.units[0], 3)}"

@@ -40,7 +40,8 @@ class _Arrow:
     ``units`` are those of the force and of the couple, as the schema gives them for
     the columns of such loads ("" for a part the load has not); ``kind`` is one of
     "inertia", "gravity", "load", "reaction" (on the body or group drawn),
-    "internal" (between two links of a group) and "balancing".
+    "internal" (between two links of a group, on the pair's second link),
+    "opposite" (the same on its first link, drawn without a name) and "balancing".
     """
 
     label: str

@@ -16,6 +16,8 @@ REACTION_LEGEND = (
 )
 """The legend's entry for the reactions, the same in every picture that draws them
 (plain text: a legend's entries are drawn as written, see :func:`literal`)."""
+INTERNAL_LEGEND = "dashed: inside the group, on both links"
+"""The legend's entry for a group's internal reactions, drawn in pairs that cancel."""
 INERTIA_COLOR = "#111111"
 LOAD_COLOR = "#00838f"
 PATH_COLORS = (

@@ -43,6 +43,7 @@ from assur.plotting._linknames import clear_arrows
 from assur.plotting._loadnames import NAMED, place_loads
 from assur.plotting._style import (
     INERTIA_COLOR,
+    INTERNAL_LEGEND,
     LOAD_COLOR,
     REACTION_LEGEND,
     literal,
@@ -166,8 +167,9 @@ def draw_free_body(
 
     The group is cut free from the links it hangs on; the arrows are its inertia
     loads, gravity and external loads, the reactions of the known links at its
-    external pairs (acting on the group) and those at its internal pairs (by the
-    pair's first link on its second), each labelled with its value.
+    external pairs (acting on the group) and, dashed, those at its internal pairs:
+    equal and opposite, one on each of the pair's links. Each is labelled with its
+    value; the arrows drawn balance.
 
     Parameters
     ----------
@@ -217,6 +219,7 @@ def draw_free_body(
     # the legend names only the kinds of load drawn (a slider-crank's group has
     # no gravity and no external load), as the mechanism's picture does
     applied = any(a.kind in ("gravity", "load") for a in arrows)
+    inner = any(a.kind == "internal" for a in arrows)
     # numbered from 1 as `assur plot --group N` is; the class comes after, in words
     heading = f"Free body of group {group_index + 1} (class {text})"
     ax.set_title(
@@ -228,6 +231,7 @@ def draw_free_body(
         [
             (text, color),
             (REACTION_LEGEND, REACTION_COLOUR),
+            *[(INTERNAL_LEGEND, REACTION_COLOUR)] * inner,
             ("inertia force and torque", INERTIA_COLOR),
             *[("gravity, external load", LOAD_COLOR)] * applied,
             *[(friction_legend(ctx), "")] * bool(rubbing),
@@ -279,15 +283,24 @@ def _free_body_arrows(table: Table, group_index: int, row: int) -> list[_Arrow]:
 def _pair_arrows(
     ctx: _Context, pose: _Pose, row: int, bodies: set[int]
 ) -> list[_Arrow]:
-    """Return the reactions at the pairs of ``bodies``: on the group, or inside it."""
+    """Return the reactions at the pairs of ``bodies``: on the group, or inside it.
+
+    A pair inside the group gives two arrows, equal and opposite, one on each of
+    its links (the second named, see :class:`_Arrow`): drawn on one link alone it
+    left the group's arrows out of balance.
+    """
     plan = ctx.plan
     arrows = []
     for name, pair in plan.pairs.items():
         inside = (pair.first in bodies, pair.second in bodies)
         if not any(inside):
             continue
-        # the force on the group (outside pairs), or of the first link on the second
-        kind = "internal" if all(inside) else "reaction"
+        if all(inside):
+            # named once, on the pair's second link: its other side is that force
+            arrows.append(_reaction_arrow(ctx, pose, row, name, 1.0, "internal"))
+            arrows.append(_reaction_arrow(ctx, pose, row, name, -1.0, "opposite"))
+            continue
+        # the force on the group of the link outside it
         sign = 1.0 if inside[1] else -1.0
-        arrows.append(_reaction_arrow(ctx, pose, row, name, sign, kind))
+        arrows.append(_reaction_arrow(ctx, pose, row, name, sign, "reaction"))
     return arrows

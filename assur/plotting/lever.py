@@ -336,6 +336,9 @@ def _list_terms(
         head = "friction" if t is None else _symbol(tex)
         if t is not None and t.couple:
             ratio = t.omega / speed
+            # a link at rest in its turning (a rocker at its dead centre) has a
+            # speed of round-off: 2.7e-16 of the driver's is 0
+            ratio = 0.0 if abs(ratio) < 1e-12 else ratio
             couple = quantity(t.load.couple, "N·m", 6)
             head += f" ({couple}, $\\omega_L$/{rate} = {ratio:.6g}"
             head += ")" if apart[t.body] else "; listed only)"
