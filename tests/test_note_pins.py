@@ -26,7 +26,12 @@ def test_a_block_pinned_at_its_sliding_point_has_no_arm_to_its_pin() -> None:
     assert r"l_{\mathrm{B}\mathrm{slot}}" not in note
     # the joint moves as the pin does
     assert r"$$ \vec v_{\mathrm{B}} = \vec v_{\mathrm{O4}} + " in note
-    assert r"\vec v_{\mathrm{slot}} = \vec v_{\mathrm{B}} = " in note
+    # the slot's point summed along the lever's side, named as the lever's point
+    assert (
+        r"\vec v_{\mathrm{slot}} = \vec v_{\mathrm{O4}} + "
+        r"\vec v_{\mathrm{slot}_{\mathrm{lever}}\mathrm{O4}} + "
+        r"\vec v^{r}_{\mathrm{slot}} = "
+    ) in note
     # the lever's arm is kept: O4 is not at the slot's point
     assert r"l_{\mathrm{O4}\mathrm{slot}}" in note
 

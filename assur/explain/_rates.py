@@ -86,7 +86,9 @@ def _chain(
     body, known, pair = s.bodies[b], s.known[b], s.ext[b]
     m = pos.pair_point(s.mid)
     j = name(pair.name)
-    mid = name(s.mid.name) if label is None else label
+    # the point's own name for lengths and directions, the label for vectors
+    point = name(s.mid.name)
+    mid = point if label is None else label
     letter = LEVEL[k][0]
     link = name(pos.link(body))
     w, eps = pos.omega(body), pos.epsilon(body)
@@ -104,10 +106,10 @@ def _chain(
                 Term(
                     f"\\vec v_{{{mid}{j}}}",
                     w * perp(r),
-                    f"\\perp {j}{mid}",
+                    f"\\perp {j}{point}",
                     _rotation(s, b, 1, pos),
                     perp(r),
-                    f"v_{{{mid}{j}}} = |\\omega_{{{link}}}| \\cdot l_{{{j}{mid}}} = "
+                    f"v_{{{mid}{j}}} = |\\omega_{{{link}}}| \\cdot l_{{{j}{point}}} = "
                     f"{num(abs(w))} \\cdot {num(length)} = "
                     f"{num(abs(w) * length)}{SPEED[1]}",
                 ),
@@ -117,18 +119,18 @@ def _chain(
             Term(
                 f"\\vec a^{{n}}_{{{mid}{j}}}",
                 -w * w * r,
-                f"\\text{{from }} {mid} \\text{{ to }} {j},\\ a^n = \\omega_{{{link}}}"
-                f"^2 l_{{{j}{mid}}} = {par(w)}^2 \\cdot {num(length)} = "
-                f"{num(w * w * length)}{SPEED[2]}",
+                f"\\text{{from }} {point} \\text{{ to }} {j},\\ a^n = "
+                f"\\omega_{{{link}}}^2 l_{{{j}{point}}} = {par(w)}^2 \\cdot "
+                f"{num(length)} = {num(w * w * length)}{SPEED[2]}",
             ),
             Term(
                 f"\\vec a^{{t}}_{{{mid}{j}}}",
                 eps * perp(r),
-                f"\\perp {j}{mid}",
+                f"\\perp {j}{point}",
                 _rotation(s, b, 2, pos),
                 perp(r),
-                f"a^t_{{{mid}{j}}} = |\\varepsilon_{{{link}}}| \\cdot l_{{{j}{mid}}} = "
-                f"{num(abs(eps))} \\cdot {num(length)} = "
+                f"a^t_{{{mid}{j}}} = |\\varepsilon_{{{link}}}| \\cdot "
+                f"l_{{{j}{point}}} = {num(abs(eps))} \\cdot {num(length)} = "
                 f"{num(abs(eps) * length)}{SPEED[2]}",
             ),
         ]
