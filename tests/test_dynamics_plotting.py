@@ -111,3 +111,22 @@ def test_a_mechanism_with_loads_draws_its_curves():
     for draw in (pictures.plot_energy_mass, pictures.plot_reduced_torque):
         ax = draw(result)
         assert not any("no loads" in t for t in _texts(ax))
+
+
+def test_the_reduced_inertia_says_the_flywheel_is_in_it():
+    # 13.39 to 13.42 kg m^2 was drawn as 0 to 0.03 over an offset: a spike
+    result = assur.dynamics(example("whitworth"), flywheel=10.0)
+    ax = plotting.plot_reduced_inertia(result)
+    try:
+        ax.figure.canvas.draw()
+        assert "the flywheel's 10 kg·m² included" in ax.get_title()
+        assert ax.yaxis.get_offset_text().get_text() == ""
+        ticks = [float(t.get_text().replace("−", "-")) for t in ax.get_yticklabels()]
+        assert min(ticks) >= 9.0
+    finally:
+        plt.close(ax.figure)
+    bare = plotting.plot_reduced_inertia(assur.dynamics(example("four_bar")))
+    try:
+        assert bare.get_title() == "Reduced inertia"
+    finally:
+        plt.close(bare.figure)

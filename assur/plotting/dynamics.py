@@ -93,7 +93,14 @@ def plot_reduced_inertia(result: Dynamics, ax: Any = None) -> Any:
     x = _angle_axis(ax, result)
     ax.plot(x, result["reduced.inertia"], color=INERTIA_COLOR, lw=1.8)
     ax.set_ylabel(_label(result, "reduced.inertia", "reduced inertia J"))
-    ax.set_title("Reduced inertia", fontsize=10)
+    # a flywheel lifts the curve: its share said, and the values written whole,
+    # not as small numbers over an offset that read as a spike
+    ax.ticklabel_format(axis="y", useOffset=False)
+    title = "Reduced inertia"
+    if result.flywheel > 0:
+        flywheel = quantity(result.flywheel, pretty_unit("kg m^2"))
+        title += f" (the flywheel's {flywheel} included)"
+    ax.set_title(title, fontsize=10)
     return ax
 
 
@@ -160,7 +167,7 @@ def plot_speed(result: Dynamics, ax: Any = None) -> Any:
     for speed, name in ((result.speed_max, "max"), (result.speed_min, "min")):
         ax.axhline(sign * speed, color=SPEED_COLOR, lw=0.6, ls="--")
         ax.annotate(
-            f"{name} {speed:.5g}",
+            f"{name} {speed:.5g} rad/s",
             (x[0], sign * speed),
             fontsize=7,
             xytext=(2, 2),
