@@ -1099,3 +1099,27 @@ def test_a_force_of_round_off_is_not_drawn_with_its_round_off_on_it():
         assert not any("e-1" in t for t in texts), texts
     finally:
         plt.close(ax.figure)
+
+
+def test_a_couple_s_arc_grows_with_it():
+    # M_i,crank = -0.0005 N m was drawn as large as M_i,coupler = 0.16 N m
+    from matplotlib.patches import FancyArrowPatch
+
+    table = assur.forces(_load("four_bar"), [270.0])
+    ax = plotting.draw(table, forces=True)
+    try:
+        radii = []
+        for p in ax.patches:
+            if not isinstance(p, FancyArrowPatch) or p._posA_posB is not None:
+                continue
+            v = np.asarray(p._path_original.vertices, dtype=float)
+            gaps = np.hypot(*(v[:, None, :] - v[None, :, :]).transpose(2, 0, 1))
+            radii.append(float(gaps.max()) / 2.0)
+    finally:
+        plt.close(ax.figure)
+    crank, coupler = abs(table["crank.Mi"][0]), abs(table["coupler.Mi"][0])
+    assert crank < 0.01 * coupler
+    # the balancing torque's arc, then the two inertia couples' (and the rocker's)
+    assert len(radii) >= 3
+    inertia = sorted(radii)[:-1]
+    assert inertia[0] < 0.7 * inertia[-1]

@@ -58,11 +58,17 @@ def _draw_arrows(
     # is none: not an arrow with "1.63e-14 N" on it
     sizes = [float(np.hypot(*a.force)) for a in arrows if a.force is not None]
     least = 1e-9 * max([*sizes, 0.0])
+    # a couple's arc grows with it: one of 0.0005 N m beside 0.16 N m was drawn
+    # as large (no scale gives a couple a length; the size tells which matter)
+    largest = max(
+        [abs(a.couple or 0.0) for a in arrows if a.kind != "balancing"] + [0.0]
+    )
     for a in arrows:
         if a.force is not None and float(np.hypot(*a.force)) > least:
             seen.append(_draw_force(ax, ctx, a, a.force, scale, text))
         if a.couple is not None and abs(a.couple) > tiny:
-            seen += _draw_couple(ax, ctx, a, a.couple, text)
+            share = 1.0 if a.kind == "balancing" else abs(a.couple) / largest
+            seen += _draw_couple(ax, ctx, a, a.couple, text, share)
     return seen
 
 
@@ -107,10 +113,15 @@ def _draw_force(
 
 
 def _draw_couple(
-    ax: Any, ctx: _Context, a: _Arrow, couple: float, text: str | None
+    ax: Any, ctx: _Context, a: _Arrow, couple: float, text: str | None, share: float
 ) -> list[np.ndarray]:
-    """Draw the couple of ``a`` (``couple``) as a curved arrow; return its box."""
-    rad = (3.4 if a.kind == "balancing" else 2.3) * ctx.r
+    """Draw the couple of ``a`` (``couple``) as a curved arrow; return its box.
+
+    ``share`` is its size against the largest couple drawn (1 for the balancing
+    torque, drawn largest): the arc's radius runs from 1.4 to 2.3 joint radii.
+    """
+    size = 1.4 + 0.9 * math.sqrt(min(1.0, share))
+    rad = (3.4 if a.kind == "balancing" else size) * ctx.r
     t = np.linspace(math.radians(-100), math.radians(150), 40)
     if couple < 0:
         t = t[::-1]
