@@ -190,6 +190,13 @@ def parse(data: dict[str, Any]) -> Mechanism:
     ModelError
         With a one-line message naming the entry and what is wrong.
     """
+    if not data:
+        # an empty file (or {}): "no moving links" named one of many things missing
+        _fail(
+            "",
+            "the file has no entries; expected a mechanism: format = 1, "
+            "[links.NAME], [joints.NAME] and [[drivers]] (see the file format)",
+        )
     _check_keys("", data, KEYS[""])
     version = _get(data, "format", FORMAT_VERSION)
     if type(version) is float and version == FORMAT_VERSION:

@@ -478,3 +478,20 @@ def test_writing_something_that_is_not_a_table_is_refused(thing, tmp_path):
         with pytest.raises(assur.UsageError, match=r"^table: expected a table of"):
             write(thing, tmp_path / "t.out")
     assert not list(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize(
+    ("name", "text"), [("e.toml", ""), ("b.toml", "\n \n"), ("e.json", "{}")]
+)
+def test_an_empty_file_is_said_to_be_empty(tmp_path, capsys, name, text):
+    # "links: no moving links" named one of the many things an empty file lacks
+    from assur.cli import main
+
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(assur.ModelError, match="the file has no entries; expected a"):
+        assur.load(path)
+    assert main(["structure", str(path)]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1
+    assert err[0].startswith(f"assur: error: {path}: the file has no entries")
