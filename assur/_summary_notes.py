@@ -12,6 +12,9 @@ __all__ = ["notes", "turning"]
 
 WHOLE = 1e-9
 """Relative slack by which a crank's positions may fall short of whole turns."""
+COARSE = 2.0
+"""A crank's positions further apart than this (deg) may miss a peak between them:
+the four-bar's shaking force at 30 deg steps read 10 % below its largest."""
 
 
 def turning(summary: Summary) -> list[str]:
@@ -41,8 +44,8 @@ def notes(summary: Summary) -> list[str]:
     """Return what a reader of the summary's numbers must know, one line each.
 
     What the means are over where it is not plain (a varying crank speed: over
-    time) and a crank's sweep short of a whole turn (means and efficiency are not
-    a cycle's).
+    time), a crank's sweep short of a whole turn (means and efficiency are not
+    a cycle's) and one too coarse to be sure of its peaks.
     """
     out = []
     over, why = summary.means_over()
@@ -55,5 +58,13 @@ def notes(summary: Summary) -> list[str]:
             out.append(
                 f"the positions cover {covered:.6g} deg, not whole turns: means, RMS "
                 "and efficiency are of these positions, not of a cycle"
+            )
+        step = covered / summary.count if not summary.closes() else None
+        if step is None:
+            step = covered / (summary.count - 1)
+        if step > COARSE:
+            out.append(
+                f"positions {step:.3g} deg apart: the largest values are those at "
+                "these positions, and a finer sweep may find larger ones between them"
             )
     return out
