@@ -759,3 +759,20 @@ def test_an_accelerating_crank_s_pin_is_drawn_in_two_parts(monkeypatch) -> None:
     t = [c for s, e, c in drawn if np.allclose(s, normal) and np.allclose(e, tip)]
     assert len(n) == len(t) == 1
     assert n != t  # two colours: normal and tangential
+
+
+def test_the_instant_centres_legend_says_what_squares_dots_and_lines_are():
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import instant_centres
+
+    table = table_at(assur.load(EXAMPLES / "four_bar.toml"), 60.0)
+    ax = instant_centres(table)
+    try:
+        said = [t.get_text() for t in ax.get_legend().get_texts()]
+    finally:
+        plt.close(ax.figure)
+    assert "absolute centre: a link about the frame" in said
+    assert "relative centre of two links" in said
+    assert "Kennedy: three centres on a line" in said
+    assert said[0].startswith("I, driver")  # the groups' entries are kept

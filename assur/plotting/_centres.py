@@ -93,7 +93,30 @@ def draw_centres(pos: Position, ax: Any) -> Any:
              if isinstance(p, Polygon) and p.get_fill()]  # fmt: skip
     lines = [np.array([a, b]) for bar in bars for a, b in itertools.pairwise(bar)]
     place_names(ax, names, np.array(lines) if lines else None, _small_patches(ax))
+    _key(ax, bool(near), bool(centres) or bool(far))
     return ax
+
+
+def _key(ax: Any, centres: bool, lines: bool) -> None:
+    """Add to the legend what the squares, dots and dashed lines are."""
+    from matplotlib import lines as mlines
+
+    # the markers' styles are plain dicts of keywords, as ax.plot takes them
+    Line2D: Any = mlines.Line2D
+    legend = ax.get_legend()
+    handles = list(legend.legend_handles) if legend is not None else []
+    handles += [
+        Line2D([], [], ls="none", label="absolute centre: a link about the frame",
+               **ABSOLUTE),
+        Line2D([], [], ls="none", label="relative centre of two links", **RELATIVE),
+    ] * centres  # fmt: skip
+    if lines:
+        style = {k: v for k, v in KENNEDY.items() if k not in ("zorder", "gid")}
+        handles.append(
+            Line2D([], [], label="Kennedy: three centres on a line", **style)
+        )
+    ax.legend(handles=handles, fontsize=8, frameon=False, loc="upper left",
+              bbox_to_anchor=(1.02, 1.0))  # fmt: skip
 
 
 def _name(pos: Position, i: int, j: int) -> str:
