@@ -51,12 +51,14 @@ class Running:
             np.zeros((2, variants)),
         )
 
-    def add(self, values: Array, where: Array, weights: Array, last: Array) -> None:
+    def add(
+        self, values: Array, where: Array, weights: Array | None, last: Array
+    ) -> None:
         """Add ``values`` (variants, m) found at driver positions ``where`` (same).
 
         ``weights`` (2, variants, m) is each value's share over the positions and
-        over time (see :func:`sums`); ``last`` (m,) marks the values of the last
-        position added.
+        over time (see :func:`sums`); ``last`` holds the indices of the values of
+        the last position added.
         """
         if not values.shape[1]:
             return
@@ -76,26 +78,27 @@ class Running:
         self.last_squares = lasts(square, weights, last)
 
 
-def lasts(values: Array, weights: Array, last: Array) -> Array:
+def lasts(values: Array, weights: Array | None, last: Array) -> Array:
     """Return the terms of the last position added, stacked as :func:`sums` gives.
 
-    ``last`` (m,) marks its values among ``values`` (variants, m): its value, and
-    at a step of a load table its value before the step too.
+    ``last`` holds the indices of its values among ``values`` (variants, m): its
+    value, and at a step of a load table its value before the step too.
     """
-    return sums(values[:, last], weights[:, :, last])
+    return sums(values[:, last], None if weights is None else weights[:, :, last])
 
 
-def sums(values: Array, weights: Array) -> Array:
+def sums(values: Array, weights: Array | None) -> Array:
     """Return each variant's weighted sum of ``values`` (variants, m), stacked (2, v).
 
     ``weights`` (2, variants, m): row 0 each value's share of its position (1, or
     a half each side of a load table's step), row 1 that times the time the
-    position stands for. Weights of exactly 1 (a constant speed, no step) give the
-    plain sum, to the last bit.
+    position stands for; None where every weight is 1 (a constant speed, no
+    step): the plain sum, twice.
     """
-    return np.stack(
-        [np.sum(values * weights[0], axis=1), np.sum(values * weights[1], axis=1)]
-    )
+    if weights is None:
+        total = values.sum(axis=1)
+        return np.array((total, total))
+    return np.einsum("vm,wvm->wv", values, weights)
 
 
 def per_variant(value: Any, variants: int) -> Array:

@@ -27,20 +27,21 @@ class Rows:
 
     ``parts`` are the table and, at load tables' steps, the table of the rows
     before them; ``where`` (variants, m) is each value's driver position,
-    ``weights`` (2, variants, m) its share of its position and of time, ``last``
-    (m,) marks the values of the slice's last position.
+    ``weights`` (2, variants, m) its share of its position and of time (None where
+    every one is 1), ``last`` the indices of the values of the slice's last
+    position.
     """
 
     parts: tuple[Any, ...]
     variants: int
     where: Array
-    weights: Array
-    last: Array
+    weights: Array | None
+    last: Any
 
     def _joined(self, got: list[Any]) -> Array:
         """Return the parts' values side by side, one row per variant."""
         arrays = [np.asarray(g, dtype=float).reshape(self.variants, -1) for g in got]
-        return np.concatenate(arrays, axis=1)
+        return arrays[0] if len(arrays) == 1 else np.concatenate(arrays, axis=1)
 
     def column(self, name: str) -> Array:
         """Return a column of every part."""
@@ -78,19 +79,23 @@ def rows_of(table: Any, variants: int, shares: Array) -> Rows:
     n = len(table)
     shape = (variants, n // variants)
     where = (table.given[:, 0] if n else np.zeros(0)).reshape(shape)
-    weights = np.stack([np.ones(shape), shares])
-    last = np.arange(shape[1]) == shape[1] - 1
+    last = np.arange(shape[1] - 1, shape[1]) if shape[1] else np.zeros(0, int)
     found = _before(table) if variants == 1 else None
     if found is None:
+        uniform = bool(np.all(shares == 1.0))
+        weights = None if uniform else np.stack([np.ones(shape), shares])
         return Rows((table,), variants, where, weights, last)
     rows, before = found
+    weights = np.stack([np.ones(shape), shares])
     weights[:, :, rows] *= 0.5
+    # the before rows follow the table's: the last position's own is among them
+    again = shape[1] + np.flatnonzero(rows == shape[1] - 1)
     return Rows(
         (table, before),
         variants,
         np.concatenate([where, where[:, rows]], axis=1),
         np.concatenate([weights, weights[:, :, rows]], axis=2),
-        np.concatenate([last, rows == shape[1] - 1]),
+        np.concatenate([last, again]),
     )
 
 

@@ -122,7 +122,7 @@ class Summary:
             self._shaking["F"].add(shaking, where, w, last)
         if "M" in self._shaking:
             self._shaking["M"].add(rows.size("shaking.M"), where, w, last)
-        ones = np.ones(w.shape[1:])
+        ones = np.ones(where.shape)
         tail: dict[str, Any] = {
             "power": 0.0,
             "ideal": 0.0,
@@ -145,7 +145,7 @@ class Summary:
                 ideal = rows.ideal(i) * speed
                 self._ideal = self._ideal + sums(ideal, w)
                 tail["ideal"] = tail["ideal"] + lasts(ideal, w, last)
-        self._peaks["driver"].add(total + np.zeros(w.shape[1:]), where, w, last)
+        self._peaks["driver"].add(total + np.zeros(where.shape), where, w, last)
         for name, power in rows.friction().items():
             self._losses[name] = self._losses.get(name, 0.0) - sums(power, w)
             tail[f"{name}.friction"] = -lasts(power, w, last)
