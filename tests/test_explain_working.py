@@ -251,3 +251,31 @@ def test_a_sliding_pair_s_couple_on_the_next_link_carries_its_symbol(
     want = -float(assur.forces(mech, [30.0])["slot.M"][0])
     assert abs(want) > 1.0
     assert _float(found.group(1)) == pytest.approx(want, rel=1e-3)
+
+
+def test_the_guide_s_point_under_a_sliding_middle_pair_is_derived() -> None:
+    # the yoke's other points started from v_{slot_yoke}, used before it was found
+    mech = assur.load(EXAMPLES / "scotch_yoke.toml")
+    note = str(explain(mech, 30.0))
+    found = re.search(
+        r"\\vec v_{\\mathrm{slot}_{\\mathrm{yoke}}} = \\vec v_{\\mathrm{slot}_"
+        rf"{{\\mathrm{{ground}}}}}} \+ \\vec v\^{{r}}_{{\\mathrm{{guide}}}} = {VECTOR}",
+        note,
+    )
+    assert found
+    table = assur.kinematics(mech, [30.0])
+    # the yoke slides without turning: its every point moves as its guide's point
+    want = [float(table["guide.vx"][0]), float(table["guide.vy"][0])]
+    got = [_float(found.group(1)), _float(found.group(2))]
+    assert got == pytest.approx(want, rel=1e-3, abs=1e-9)
+
+
+@pytest.mark.parametrize("stem", sorted(p.stem for p in EXAMPLES.glob("*.toml")))
+def test_no_symbol_has_two_subscripts(stem: str) -> None:
+    # slot_{yoke}_{ground}: a guide's point named twice over, which TeX refuses
+    mech = assur.load(EXAMPLES / f"{stem}.toml")
+    try:
+        note = str(explain(mech, 30.0))
+    except assur.AssurError:
+        pytest.skip("not at 30 deg")
+    assert re.search(r"_\{\\mathrm\{[^{}]*\}\}_\{", note) is None

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TypeAlias
 
 import numpy as np
 
@@ -135,7 +136,7 @@ def _chain(
             ),
         ]
     e = _slide_sign(s, b) * pos.turned(known, pair.axis or (1.0, 0.0))
-    base_name = f"{mid}_{{{name(pos.link(known))}}}"
+    base_name = f"{point}_{{{name(pos.link(known))}}}"
     return _sliding(pos, known, body, m, e, j, base_name, k)
 
 
@@ -253,17 +254,28 @@ def _from_pin(pos: Position, guide: int, m: Array, label: str, k: int) -> str:
     )
 
 
-def _sides(pos: Position, s: DyadSolver, k: int) -> tuple[list[Term], list[Term]]:
-    """Return the two sides of the middle joint's equation at level ``k``."""
+Guide: TypeAlias = tuple[str, list[Term]] | None
+"""The guide's point under a sliding middle pair, named, and the terms it sums."""
+
+
+def _sides(
+    pos: Position, s: DyadSolver, k: int
+) -> tuple[list[Term], list[Term], Guide]:
+    """Return the two sides of the middle joint's equation at level ``k``.
+
+    With a sliding middle pair, also the guide link's point under it and its terms
+    (the textbook's B3, whose motion the guide's other points start from).
+    """
     if s.mid.kind == "R":
-        return _chain(pos, s, 0, k), _chain(pos, s, 1, k)
+        return _chain(pos, s, 0, k), _chain(pos, s, 1, k), None
     g = 0 if s.bodies[0] == s.mid.first else 1
     m = pos.pair_point(s.mid)
     e = pos.turned(s.mid.first, s.mid.axis or (1.0, 0.0))
     j = name(s.mid.name)
     rel = _sliding(pos, s.mid.first, s.mid.second, m, e, j, j, k)
     on_guide = f"{j}_{{{name(pos.link(s.mid.first))}}}"
-    return _chain(pos, s, 1 - g, k), _chain(pos, s, g, k, on_guide) + rel[1:]
+    chain = _chain(pos, s, g, k, on_guide)
+    return _chain(pos, s, 1 - g, k), chain + rel[1:], (on_guide, chain)
 
 
 def _solve(left: list[Term], right: list[Term]) -> tuple[list[str], Array, Array]:
@@ -291,7 +303,7 @@ def _sum(terms: list[Term]) -> str:
 
 def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
     """Return the velocity (k = 1) or acceleration (k = 2) analysis of dyad ``s``."""
-    left, right = _sides(pos, s, k)
+    left, right, guide = _sides(pos, s, k)
     letter = LEVEL[k][0]
     mid = name(s.mid.name)
     names, a, rhs = _solve(left, right)
@@ -335,6 +347,12 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
         + (f",\\quad {t.size}" if t.size else "")
         for t in unknown
     ]
+    if guide is not None and len(guide[1]) > 1:
+        # the guide's point under the slider, which its other points start from
+        point, chain = guide
+        under = sum((t.value for t in chain), np.zeros(2))
+        shown = f"{vec(under, scale)}{SPEED[k]}"
+        results.append(f"\\vec {letter}_{{{point}}} = {_sum(chain)} = {shown}")
     # the middle point's motion summed along the side that has working to show: a
     # slider on a pin of a known link has its pin's motion alone on its side
     side = right if len(left) == 1 else left

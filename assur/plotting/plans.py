@@ -98,7 +98,7 @@ def _chains(
                     kinds[arrow[2]] = palette[arrow[2]]
                     drawn.append(ends)
             continue
-        for side in _sides(pos, s, k):
+        for side in _sides(pos, s, k)[:2]:
             tip = np.zeros(2)
             for i, term in enumerate(side):
                 part = "base" if i == 0 and term.unknown is None else _part(term.tex)
