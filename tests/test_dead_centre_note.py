@@ -36,13 +36,13 @@ def test_the_lever_check_at_a_dead_centre_is_the_difference(angle: float) -> Non
     assert abs(table["driver.torque"][0]) < 1e-12
     assert abs(table["driver.torque_check"][0]) < 1e-12
     note = str(explain(assur.load(EXERCISE), angle))
-    assert r"|M_{b}^{lever} - M_{b}| = 0\ \mathrm{N\,m} $$" in note
+    assert r"|M_{b}^{\mathrm{lever}} - M_{b}| = 0\ \mathrm{N\,m} $$" in note
     assert r"{|M_{b}|}" not in note
 
 
 def test_the_lever_check_away_from_a_dead_centre_is_a_percentage() -> None:
     note = str(explain(assur.load(EXERCISE), 45.0))
-    assert r"\frac{|M_{b}^{lever} - M_{b}|}{|M_{b}|} = " in note
+    assert r"\frac{|M_{b}^{\mathrm{lever}} - M_{b}|}{|M_{b}|} = " in note
 
 
 @pytest.mark.parametrize("stem", ["slider_crank_friction", "slider_crank_locking"])
@@ -53,7 +53,7 @@ def test_friction_s_share_of_a_zero_ideal_load_is_not_a_percentage(
     """It said 100 14.76/0 = 1.303 10^18 % of its size."""
     note = str(explain(assur.load(EXAMPLES / f"{stem}.toml"), angle))
     (said,) = [line for line in note.splitlines() if "Without friction" in line]
-    assert "M_{b}^{ideal} = 0\\ \\mathrm{N\\,m}$" in said
+    assert "M_{b}^{\\mathrm{ideal}} = 0\\ \\mathrm{N\\,m}$" in said
     assert r"\%" not in said
 
 

@@ -131,18 +131,18 @@ def expected(table: assur.Table) -> dict[str, tuple[float, ...]]:
             out[f"M_{{{tex(name)}}}"] = (row[f"{name}.M"],)
     out.update(_friction_expected(table, row))
     if "driver.torque" in row:
-        out["M_{b}"] = out["M_{b}^{lever}"] = (row["driver.torque"],)
+        out["M_{b}"] = out["M_{b}^{\\mathrm{lever}}"] = (row["driver.torque"],)
     if "driver.force" in row:
-        out["F_{b}"] = out["F_{b}^{lever}"] = (row["driver.force"],)
+        out["F_{b}"] = out["F_{b}^{\\mathrm{lever}}"] = (row["driver.force"],)
     for d in plan.drivers:
         what = "torque" if d.kind == "R" else "force"
         letter = "M" if d.kind == "R" else "F"
         key = f"{d.pair.name}.{what}"
         if key in row:
             sym = f"{letter}_{{b,{tex(d.pair.name)}}}"
-            out[sym] = out[f"{sym}^{{lever}}"] = (row[key],)
+            out[sym] = out[f"{sym}^{{\\mathrm{{lever}}}}"] = (row[key],)
             if f"{key}_ideal" in row:
-                out[f"{sym}^{{ideal}}"] = (row[f"{key}_ideal"],)
+                out[f"{sym}^{{\\mathrm{{ideal}}}}"] = (row[f"{key}_ideal"],)
     return out
 
 
@@ -164,9 +164,9 @@ def _friction_expected(
             )  # fmt: skip
             out[f"|N_{{{t}}}|"] = out[f"\\vert N_{{{t}}}\\vert"] = (size,)
     if "driver.torque_ideal" in row:
-        out["M_{b}^{ideal}"] = (row["driver.torque_ideal"],)
+        out["M_{b}^{\\mathrm{ideal}}"] = (row["driver.torque_ideal"],)
     if "driver.force_ideal" in row:
-        out["F_{b}^{ideal}"] = (row["driver.force_ideal"],)
+        out["F_{b}^{\\mathrm{ideal}}"] = (row["driver.force_ideal"],)
     if "friction.power" in row and len(table.plan.drivers) == 1:
         out["\\sum P_{f}"] = (row["friction.power"],)
     return out
@@ -297,7 +297,8 @@ def test_the_lecture_exercise_at_45_degrees() -> None:
         r"-0.0018 \cdot 10046.13 = -18.08\ \mathrm{N\,m}",
         r"= 0.4 \cdot 2134.73 = 853.89\ \mathrm{N}",
         r"M_{b} = -\sum M_{\mathrm{A}} = 84.63\ \mathrm{N\,m}",
-        r"M_{b}^{lever} = -\frac{\sum P}{\omega} = -\frac{-16925}{200} = 84.63",
+        r"M_{b}^{\mathrm{lever}} = -\frac{\sum P}{\omega} = -\frac{-16925}{200} "
+        r"= 84.63",
     ):
         assert text in note, text
     # the RRP group's reactions: the crank's on the rod, the guide's on the slider

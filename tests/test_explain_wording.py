@@ -70,7 +70,8 @@ def test_the_force_sum_of_a_sliding_middle_pair_s_links(angle: float) -> None:
             x
             for x in note.splitlines()
             if x.startswith("$$ \\vec F_")
-            and f",\\mathrm{{{link}}}}} = -\\left(\\sum \\vec F_{{known}}" in x
+            and f",\\mathrm{{{link}}}}} = -\\left(\\sum \\vec F_{{\\mathrm{{known}}}}"
+            in x
         )
         assert f"{sign} N_{{\\mathrm{{slot}}}}\\vec n\\right)" in line, line
     # the first link's printed sum is minus the table's reaction in its outer pair
@@ -401,7 +402,7 @@ def test_round_off_is_told_as_zero() -> None:
     assert r"a_{G_{\mathrm{yoke}}} = 0\ \mathrm{m/s^2}" in note
     # no power of ten below 1e-9 but the lever's relative check
     tiny = [x for x in note.splitlines() if re.search(r"10\^\{-(1\d|9)\}", x)]
-    assert all("M_{b}^{lever} - M_{b}" in x for x in tiny), tiny
+    assert all("M_{b}^{\\mathrm{lever}} - M_{b}" in x for x in tiny), tiny
 
 
 def test_a_small_rate_the_user_gave_is_kept() -> None:

@@ -26,14 +26,15 @@ def test_a_block_pinned_at_its_sliding_point_has_no_arm_to_its_pin() -> None:
     assert r"l_{\mathrm{B}\mathrm{slot}}" not in note
     # the joint moves as the pin does
     assert r"$$ \vec v_{\mathrm{B}} = \vec v_{\mathrm{O4}} + " in note
-    # the slot's point summed along the lever's side, named as the lever's point
+    # the slot's point is the block's pin B, summed along the lever's side from
+    # the lever's point under it, B_lever
     assert (
-        r"\vec v_{\mathrm{slot}} = \vec v_{\mathrm{O4}} + "
-        r"\vec v_{\mathrm{slot}_{\mathrm{lever}}\mathrm{O4}} + "
+        r"\vec v_{\mathrm{B}} = \vec v_{\mathrm{O4}} + "
+        r"\vec v_{\mathrm{B}_{\mathrm{lever}}\mathrm{O4}} + "
         r"\vec v^{r}_{\mathrm{slot}} = "
     ) in note
-    # the lever's arm is kept: O4 is not at the slot's point
-    assert r"l_{\mathrm{O4}\mathrm{slot}}" in note
+    # the lever's arm is kept: O4 is not at the slot's point, B
+    assert r"l_{\mathrm{O4}\mathrm{B}}" in note
 
 
 def test_the_rpr_position_says_the_pins_stay_apart_across_the_slide() -> None:

@@ -28,6 +28,9 @@ from assur.explain._tex import ZERO, name, num, par, plain, vec
 
 __all__ = ["driver_blocks"]
 
+IDEAL = "^{\\mathrm{ideal}}"
+"""The superscript of a balancing load without friction (upright: a word)."""
+
 
 def driver_blocks(pos: Position) -> list[Block]:
     """Return each input link's equilibrium: the frame's reaction, balancing load."""
@@ -82,9 +85,9 @@ def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
     d = pos.plan.drivers[i]
     speed = _speed(pos, d)
     words = (
-        f" Without friction the same motion needs ${sym}^{{ideal}} = {num(ideal)}"
+        f" Without friction the same motion needs ${sym}{IDEAL} = {num(ideal)}"
         f"{unit}$ (read off the lever below); friction changes it by ${sym} - "
-        f"{sym}^{{ideal}} = {num(value)} - {par(ideal)} = {num(extra)}{unit}$"
+        f"{sym}{IDEAL} = {num(value)} - {par(ideal)} = {num(extra)}{unit}$"
     )
     # a frictionless load that is round-off (at a dead centre) has no size to compare
     if abs(ideal) > ZERO * _size(pos, i):
@@ -99,7 +102,7 @@ def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
     rate = "\\omega" if d.kind == "R" else "v"
     whose = "" if len(pos.plan.drivers) == 1 else " this driver's share of"
     return (
-        words + f", and the driver supplies $({sym} - {sym}^{{ideal}})\\,{rate} = "
+        words + f", and the driver supplies $({sym} - {sym}{IDEAL})\\,{rate} = "
         f"{num(extra)} \\cdot {par(speed)} = {num(extra * speed)}$ W more:{whose} "
         "the power friction takes."
     )

@@ -42,6 +42,9 @@ from assur.groups._protocol import Equilibrium
 
 __all__ = ["couple_blocks", "force_symbol", "forces_blocks"]
 
+KNOWN = "\\sum \\vec F_{\\mathrm{known}}"
+"""The sum of the known forces on a link or group (upright: a word)."""
+
 
 def force_symbol(pos: Position, by: int, on: int) -> str:
     """Return the symbol of the force of link ``by`` on link ``on``: F_{by,on}."""
@@ -135,7 +138,7 @@ def _revolute_middle(
         ),
         Display(
             (
-                "\\sum \\vec F_{known}"
+                KNOWN
                 + (" + \\sum \\vec F^{t}" if turning else "")
                 + f" = {vec(-rhs, big)}\\ \\mathrm{{N}}",
                 *lines,
@@ -170,7 +173,7 @@ def _revolute_middle(
         ),
         Display(
             (
-                f"\\vec {sym} = -\\left(\\sum \\vec F_{{known}} + {labels[0]}"
+                f"\\vec {sym} = -\\left({KNOWN} + {labels[0]}"
                 "\\right) = -\\left("
                 f"{vec(total(loads[0]), big)}"
                 f" + {vec(forces[0], big)}\\right) = {vec(inner, big)}\\ "
@@ -307,14 +310,14 @@ def _sliding_middle(
         # the middle pair pushes its first link with -N n
         pushed = f"{'+' if sgn > 0.0 else '-'} N_{{{j}}}\\vec n"
         sums: tuple[str, ...] = (
-            f"\\vec {symbol} = -\\left(\\sum \\vec F_{{known}} {pushed}\\right) = "
+            f"\\vec {symbol} = -\\left({KNOWN} {pushed}\\right) = "
             f"{vec(f, big)}\\ \\mathrm{{N}},\\quad {symbol} = "
             f"{num(math.hypot(*f), big)}\\ \\mathrm{{N}}",
         )
         if pair.kind == "P" and pair.friction > 0.0:
             # the known loads hold the guide's friction: what is left is its normal
             sums = (
-                f"{normal_symbol(pair, body)} = -\\left(\\sum \\vec F_{{known}} "
+                f"{normal_symbol(pair, body)} = -\\left({KNOWN} "
                 f"{pushed}\\right) = {vec(f, big)}\\ \\mathrm{{N}}",
                 sliding_total(pos, pair, body, f, symbol),
             )

@@ -21,7 +21,8 @@ STYLE = """
 body { font: 16px/1.5 system-ui, sans-serif; max-width: 60rem; margin: 2rem auto;
   padding: 0 1rem; color: #1f2937; }
 h1 { font-size: 1.6rem; } h2 { margin-top: 2rem; border-bottom: 1px solid #d1d5db; }
-math[display="block"] { margin: 0.4rem 0; overflow-x: auto; text-align: left; }
+math[display="block"] { margin: 0.4rem 0; padding-block: 0.25em; overflow-x: auto;
+  overflow-y: hidden; text-align: left; }
 .note-eq { margin: 0.6rem 0 0.6rem 1rem; }
 table { border-collapse: collapse; margin: 0.6rem 0; }
 td, th { border: 1px solid #d1d5db; padding: 0.2rem 0.5rem; text-align: left; }

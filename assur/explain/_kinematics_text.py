@@ -11,7 +11,14 @@ import math
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position
 from assur.explain._positions import dyad_positions
-from assur.explain._rates import SPEED, TURN, body_points, dyad_rates, point_lines
+from assur.explain._rates import (
+    SPEED,
+    TURN,
+    body_points,
+    dyad_rates,
+    mid_name,
+    point_lines,
+)
 from assur.explain._tex import LENGTH, deg, name, num, plain, point_name, unit, vec
 from assur.groups._dyad import DyadSolver
 
@@ -95,7 +102,8 @@ def _points(pos: Position, s: DyadSolver, k: int) -> list[Block]:
             base, label = pos.point(s.known[b], s.d_known[b]), name(pair.name)
             skip = {pair.name, s.mid.name}
         else:
-            base, label = m, name(s.mid.name)
+            # the guide's point under the slider, named as the rates named it
+            base, label = m, mid_name(pos, s)
             skip = {s.mid.name}
             if s.mid.kind == "P" and body == s.mid.first:
                 label = f"{label}_{{{name(pos.link(body))}}}"

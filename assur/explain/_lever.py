@@ -31,6 +31,11 @@ __all__ = [
     "lever_terms",
 ]
 
+LEVER = "^{\\mathrm{lever}}"
+"""The superscript of a balancing load read off the lever (upright: a word)."""
+IDEAL = "^{\\mathrm{ideal}}"
+"""The superscript of a balancing load without friction."""
+
 
 def _balancing(pos: Position, i: int) -> float:
     """Return driver ``i``'s balancing load from the reverse pass (N m or N)."""
@@ -73,7 +78,8 @@ def lever_blocks(pos: Position) -> list[Block]:
     blocks: list[Block] = [
         Heading(2, "6. Check by Zhukovsky's lever"),
         Para(
-            "Turn the velocity plan by 90° and apply every load at its point's image: "
+            "Turn the velocity plan by 90° counter-clockwise and apply every load at "
+            "its point's image: "
             "the plan, taken as a lever pivoted at the pole, is in equilibrium. Its "
             "moment equation is the principle of virtual power, $\\sum (\\vec F_k "
             "\\cdot \\vec v_k + M_k \\omega_k) + P_b = 0$, where $P_b$ is the "
@@ -124,7 +130,7 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     arm = "arm h (m/s)" if actual else f"arm h per unit speed ({per_speed})"
     blocks: list[Block] = [
         Para(f"With {note} (driver {plain(d.pair.name)}):"),
-        Grid(("load", "force or couple", "velocity", arm, head), tuple(rows)),
+        Grid(("load", "force (N) or couple (N·m)", "velocity", arm, head), tuple(rows)),
     ]
     lines = [f"\\sum P{tick} = {num(power)}{unit}"]
     rubbed, lost = power_rows(pos, bodies, actual)
@@ -144,7 +150,7 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
             Grid(("pair", "friction load", "relative motion", head), tuple(rubbed)),
         ]
         lines += [
-            f"{sym}^{{ideal}} = -\\frac{{\\sum P{tick}}}{{{rate}}} = -\\frac{{"
+            f"{sym}{IDEAL} = -\\frac{{\\sum P{tick}}}{{{rate}}} = -\\frac{{"
             f"{num(power)}}}{{{num(speed)}}} = {num(-power / speed)}{load_unit}",
             f"\\sum P_{{f}}{tick} = {num(lost)}{unit}",
         ]
@@ -154,20 +160,20 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     lever = -power / speed
     value = _balancing(pos, i)
     lines.append(
-        f"{sym}^{{lever}} = -\\frac{{{top}}}{{{rate}}} = -\\frac{{{shown}}}"
+        f"{sym}{LEVER} = -\\frac{{{top}}}{{{rate}}} = -\\frac{{{shown}}}"
         f"{{{num(speed)}}} = {num(lever)}{load_unit}"
     )
     size = _size(pos, i)
     if abs(value) > ZERO * size:
         diff = 100.0 * abs(lever - value) / abs(value)
         lines.append(
-            f"\\frac{{|{sym}^{{lever}} - {sym}|}}{{|{sym}|}} = {_percent(diff)}\\,\\%"
+            f"\\frac{{|{sym}{LEVER} - {sym}|}}{{|{sym}|}} = {_percent(diff)}\\,\\%"
         )
     else:
         # a balancing load that is round-off (a dead centre) has no size to compare
         # with: the difference itself is told, against the loads' shares
         lines.append(
-            f"|{sym}^{{lever}} - {sym}| = {num(abs(lever - value), size)}{load_unit}"
+            f"|{sym}{LEVER} - {sym}| = {num(abs(lever - value), size)}{load_unit}"
         )
     return [*blocks, Display(tuple(lines))]
 

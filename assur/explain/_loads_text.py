@@ -133,25 +133,38 @@ def own_loads(pos: Position, body: int) -> list[Load]:
     return out
 
 
-def _over(pos: Position, table: LoadTable) -> tuple[str, str]:
-    """Return what a load table runs over, in words, and the unit of its positions.
+def _over(pos: Position, table: LoadTable) -> tuple[str, str, str]:
+    """Return what a load table runs over: words, the unit, the coordinate read.
 
     Over the driver: no words (the note's position is the driver's), deg over a
-    crank, m over a sliding driver; over a joint's slide: its name, m.
+    crank (the coordinate: where the driver is, when a turn away from the table's
+    turn), m over a sliding driver; over a joint's slide: its name, m, its ``s``.
     """
     if table.over != "driver":
-        return f" over the slide of {text(table.over)}", "m"
-    return "", "deg" if pos.plan.drivers[0].kind == "R" else "m"
+        return (
+            f" over the slide of {text(table.over)}",
+            "m",
+            f"s_{{{name(table.over)}}}",
+        )
+    if pos.plan.drivers[0].kind != "R":
+        return "", "m", ""
+    return "", "deg", num(float(pos.table.given[0, 0]))
 
 
-def _read(found: Reading, over: tuple[str, str], steps: bool) -> tuple[str, str]:
+def _read(found: Reading, over: tuple[str, str, str], steps: bool) -> tuple[str, str]:
     """Return a tabulated load's working here and the words that say where it is read.
 
     On an entry (or at a step, whose words are said apart) there is no working:
     the entry's value holds.
     """
-    words, unit = over
+    words, unit, coordinate = over
     u = f"\\ \\mathrm{{{unit}}}"
+    if unit == "deg":
+        # a crank's angle is read within the table's turn: -100 deg at 260
+        at = num(found.at)
+        coordinate = "" if coordinate == at else f"{coordinate}{u} \\to "
+    elif coordinate:
+        coordinate += " = "
     if steps or found.fraction in (0.0, 1.0):
         if steps:
             return "", ""
@@ -178,7 +191,8 @@ def _read(found: Reading, over: tuple[str, str], steps: bool) -> tuple[str, str]
         f" - {value_(found.below)}\\right)"
     )
     said = (
-        f"\\text{{(its table{words}, read at }} {num(found.at)}{u}\\text{{: "
+        f"\\text{{(its table{words}, read at }} {coordinate}{num(found.at)}{u}"
+        "\\text{: "
         f"linear between its entries at }} {num(found.low)} \\text{{ and }} "
         f"{num(found.high)}{u}"
         "\\text{)}"

@@ -35,7 +35,7 @@ TEXT_SPACES = {
 }  # fmt: skip
 """The spaces of :data:`SPACES` as characters (em, thin and four-per-em spaces), for
 inside ``\\text`` and ``\\mathrm``, where they join the words of one ``<mtext>``."""
-SIGN_AFTER = frozenset("([{=,+−⋅×±∓≈≤≥≠∑")
+SIGN_AFTER = frozenset("([{=,:;+−⋅×±∓≈≤≥≠∑")
 """Operators after which a minus is a number's sign, not a subtraction: set as a
 prefix, with no space between it and the number (MathML spaces an infix minus on
 both sides: ``( - 2960, 0)``)."""
@@ -77,7 +77,12 @@ def _sequence(tokens: list[str], i: int, end: str | None) -> tuple[str, int]:
             # the minus sign, not the hyphen; a sign at the start or after an
             # operator hugs its number
             before = [a for a in out if not a.startswith("<mspace")]
-            sign = not before or _operator(before[-1]) in SIGN_AFTER
+            # after words (\text{read at } -0.01 m) a minus is a sign too
+            sign = (
+                not before
+                or _operator(before[-1]) in SIGN_AFTER
+                or before[-1].startswith("<mtext>")
+            )
             out.append('<mo form="prefix">−</mo>' if sign else "<mo>−</mo>")
             i = _skip(tokens, i + 1)
             continue
@@ -265,7 +270,10 @@ def _command(name: str, tokens: list[str], i: int) -> tuple[str, int]:
     if name in ("vec", "dot", "ddot", "hat"):
         arg, i = _argument(tokens, i)
         mark = {"vec": "→", "dot": "˙", "ddot": "¨", "hat": "^"}[name]
-        return f'<mover accent="true">{arg}<mo>{mark}</mo></mover>', i
+        # a dot set as an accent is drawn too small to see over an s at text
+        # size in Chromium: as an over-script it shows
+        accent = "" if name in ("dot", "ddot") else ' accent="true"'
+        return f"<mover{accent}>{arg}<mo>{mark}</mo></mover>", i
     if name in ("left", "right"):
         return _base(tokens, i)
     msg = f"the note's MathML knows no \\{name}"

@@ -101,6 +101,11 @@ class Position:
                 if pair.kind == "R":
                     found = every.setdefault(pair.first, {})
                     found.setdefault(pair.name.split("~")[0], pair.d_first)
+                    if pair.name.endswith("~pin"):
+                        # a slot's pin belongs to its link too (the crank's B,
+                        # which the slot's group starts from)
+                        found = every.setdefault(pair.second, {})
+                        found.setdefault(pair.name.split("~")[0], pair.d_second)
             for point, b, offset in zip(
                 plan.points, plan.point_body, plan.point_offset, strict=True
             ):

@@ -32,7 +32,7 @@ from assur.explain._tex import (
 )
 from assur.groups._dyad import DyadSolver
 
-__all__ = ["Term", "body_points", "dyad_rates", "point_lines"]
+__all__ = ["Term", "body_points", "dyad_rates", "mid_name", "point_lines"]
 
 LEVEL = {1: ("v", "velocities"), 2: ("a", "accelerations")}
 SPEED = {k: unit(LENGTH[k]) for k in (1, 2)}
@@ -76,7 +76,12 @@ def _rotation(s: DyadSolver, b: int, k: int, pos: Position) -> str | None:
 
 
 def _chain(
-    pos: Position, s: DyadSolver, b: int, k: int, label: str | None = None
+    pos: Position,
+    s: DyadSolver,
+    b: int,
+    k: int,
+    label: str | None = None,
+    point: str | None = None,
 ) -> list[Term]:
     """Terms of the middle point's motion along link ``b`` from its outer joint.
 
@@ -88,7 +93,7 @@ def _chain(
     m = pos.pair_point(s.mid)
     j = name(pair.name)
     # the point's own name for lengths and directions, the label for vectors
-    point = name(s.mid.name)
+    point = name(s.mid.name) if point is None else point
     mid = point if label is None else label
     letter = LEVEL[k][0]
     link = name(pos.link(body))
@@ -181,13 +186,21 @@ def _sliding(
             e,
         )
     )
+    # the frame never turns: no Coriolis term to write (2 * 0 * v_r = 0 was noise)
+    coriolis = (
+        []
+        if guide == 0
+        else [
+            Term(
+                f"\\vec a^{{k}}_{{{j}}}",
+                2 * wg * rel * perp(e),
+                _coriolis(pos, guide, j, wg, rel),
+            )
+        ]
+    )
     return [
         *terms,
-        Term(
-            f"\\vec a^{{k}}_{{{j}}}",
-            2 * wg * rel * perp(e),
-            _coriolis(pos, guide, j, wg, rel),
-        ),
+        *coriolis,
         Term(
             f"\\vec a^{{r}}_{{{j}}}",
             acc * e,
@@ -273,9 +286,27 @@ def _sides(
     e = pos.turned(s.mid.first, s.mid.axis or (1.0, 0.0))
     j = name(s.mid.name)
     rel = _sliding(pos, s.mid.first, s.mid.second, m, e, j, j, k)
-    on_guide = f"{j}_{{{name(pos.link(s.mid.first))}}}"
-    chain = _chain(pos, s, g, k, on_guide)
+    point = mid_name(pos, s)
+    on_guide = f"{point}_{{{name(pos.link(s.mid.first))}}}"
+    chain = _chain(pos, s, g, k, on_guide, point)
     return _chain(pos, s, 1 - g, k), chain + rel[1:], (on_guide, chain)
+
+
+def mid_name(pos: Position, s: DyadSolver) -> str:
+    """Return the middle point's name, the slider's pin's where it is at the slot.
+
+    A block pinned at the slot's point (the Whitworth block's B in the lever's
+    slot) is that pin: the point is B, the lever's point under it B_lever, not
+    the sliding joint's name beside the pin's.
+    """
+    if s.mid.kind == "P":
+        b = 1 if s.bodies[0] == s.mid.first else 0
+        pair = s.ext[b]
+        if pair.kind == "R":
+            gap = pos.pair_point(s.mid) - pos.point(s.known[b], s.d_known[b])
+            if math.hypot(*gap) <= 1e-12 * pos.size():
+                return name(pair.name)
+    return name(s.mid.name)
 
 
 def _solve(left: list[Term], right: list[Term]) -> tuple[list[str], Array, Array]:
@@ -305,7 +336,7 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
     """Return the velocity (k = 1) or acceleration (k = 2) analysis of dyad ``s``."""
     left, right, guide = _sides(pos, s, k)
     letter = LEVEL[k][0]
-    mid = name(s.mid.name)
+    mid = mid_name(pos, s)
     names, a, rhs = _solve(left, right)
     units = tuple(
         TURN[k] if n.startswith(("\\omega", "\\varepsilon")) else SPEED[k]
@@ -337,7 +368,7 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
             Para(
                 "The unknowns are "
                 + " and ".join(f"${n}$" for n in names)
-                + "; in components:"
+                + "; in components, the known terms moved to the right:"
             ),
             Display(tuple(lines)),
         ]
