@@ -69,6 +69,8 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
         if summary.clockwise:
             data["clockwise"] = list(summary.clockwise)  # driving torques below 0
         said = notes(summary)
+        if "shaking.M.max" in summary.units:
+            said.append(f"shaking.M is taken {ABOUT[1:-1]}")
         if said:
             data["notes"] = said
         return json.dumps(data, indent=2)

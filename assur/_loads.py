@@ -29,6 +29,8 @@ from assur.plan import Plan
 __all__ = [
     "LoadPlan",
     "compile_loads",
+    "driver_steps",
+    "step_hits",
     "step_rows",
     "table_reading",
     "table_step",
@@ -176,30 +178,52 @@ def table_values(
     return [interpolate(at, xs, np.asarray(v, dtype=float)) for v in table.values]
 
 
-def step_rows(loads: LoadPlan, plan: Plan, drive: Array) -> Array:
-    """Return the mask of the positions where a load table over the driver steps.
+def driver_steps(loads: LoadPlan, plan: Plan) -> list[tuple[str, Array, Array]]:
+    """Return every load table over the driver that steps: entry, positions, steps.
 
-    ``drive`` (n, drivers) holds the driver positions (rad, or m). A table over a
-    joint's slide is left out: a sweep lands on its steps only by chance.
+    The table's positions (deg over a crank, m over a sliding driver) and the
+    positions where it steps, as :func:`assur._tables.steps` finds them. A table
+    over a joint's slide is left out: a sweep lands on its steps only by chance.
+    """
+    out = []
+    entries = [(f[2], f[3]) for f in loads.forces] + [
+        (t[1], t[2]) for t in loads.torques
+    ]
+    turning = plan.drivers[0].kind == "R"
+    for table, entry in entries:
+        if isinstance(table, LoadTable) and table.over == "driver":
+            xs = np.asarray(table.table, dtype=float)
+            jumps = steps(xs, table.values, turning)
+            if jumps.size:
+                out.append((entry, xs, jumps))
+    return out
+
+
+def step_hits(loads: LoadPlan, plan: Plan, drive: Array) -> tuple[Array, set[Any]]:
+    """Return the positions on a step of a load table over the driver, and the steps.
+
+    ``drive`` (n, drivers) holds the driver positions (rad, or m). Returned: the
+    mask of the positions on a step, and the steps landed on, as ``(entry, step)``.
     """
     hit = np.zeros(drive.shape[0], dtype=bool)
-    tables = [f[2] for f in loads.forces] + [t[1] for t in loads.torques]
-    for table in tables:
-        if not isinstance(table, LoadTable) or table.over != "driver":
-            continue
-        xs = np.asarray(table.table, dtype=float)
-        turning = plan.drivers[0].kind == "R"
-        jumps = steps(xs, table.values, turning)
-        if not jumps.size:
-            continue
+    landed: set[Any] = set()
+    turning = plan.drivers[0].kind == "R"
+    for entry, xs, jumps in driver_steps(loads, plan):
         if turning:
-            hit |= np.isin(in_turn(xs, np.degrees(drive[:, 0])), jumps)
+            at = in_turn(xs, np.degrees(drive[:, 0]))
+            on = at[:, None] == jumps[None, :]
         else:
             # a slider's position given as the table's, through metres unchanged
             near = 4.0 * np.spacing(np.maximum(np.abs(jumps), 1.0))
-            gap = np.abs(drive[:, :1] - jumps[None, :])
-            hit |= np.any(gap <= near[None, :], axis=1)
-    return hit
+            on = np.abs(drive[:, :1] - jumps[None, :]) <= near[None, :]
+        hit |= on.any(axis=1)
+        landed |= {(entry, float(s)) for s in jumps[on.any(axis=0)].tolist()}
+    return hit, landed
+
+
+def step_rows(loads: LoadPlan, plan: Plan, drive: Array) -> Array:
+    """Return the mask of the positions on a step of a load table over the driver."""
+    return step_hits(loads, plan, drive)[0]
 
 
 def table_step(

@@ -104,18 +104,3 @@ def sums(values: Array, weights: Array | None) -> Array:
 def per_variant(value: Any, variants: int) -> Array:
     """Return a value as one number per variant (a sum of none is the float 0)."""
     return np.broadcast_to(np.asarray(value, dtype=float), (variants,)).copy()
-
-
-def time_shares(speed: Array, first: Array) -> tuple[Array, bool]:
-    """Return each position's time share and whether the crank stops or turns back.
-
-    ``speed`` (variants, m) is the crank's speed at each position (rad/s),
-    ``first`` (variants, 1) its speed at the sweep's first position: the share is
-    ``|first| / |speed|``, the time per unit angle relative to the first position's
-    (exactly 1 at a constant speed). A speed of zero, not finite, or turning the
-    other way from the first has no share: the weights are then 1 there.
-    """
-    with np.errstate(divide="ignore", invalid="ignore"):
-        w = np.abs(first) / np.abs(speed)
-    usable = np.isfinite(w) & (w > 0.0) & (np.sign(speed) == np.sign(first))
-    return np.where(usable, w, 1.0), not bool(np.all(usable))

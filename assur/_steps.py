@@ -18,7 +18,7 @@ import numpy as np
 import numpy.typing as npt
 
 from assur import kinetostatics as _kst
-from assur._loads import compile_loads, step_rows
+from assur._loads import compile_loads
 from assur._state import KinematicState, motions
 from assur.plan import Plan
 
@@ -31,18 +31,15 @@ of the motion."""
 
 
 def before_steps(
-    plan: Plan, state: KinematicState
-) -> tuple[npt.NDArray[np.intp], _kst.ForceState] | None:
-    """Return the rows on a load table's step and their forces just before it.
+    plan: Plan, state: KinematicState, rows: npt.NDArray[np.intp]
+) -> _kst.ForceState:
+    """Return the forces at ``rows``, positions on load tables' steps, before them.
 
     ``state`` is a sweep's frozen kinematic state (every body's motion kept). The
     forces are those of the same motion with every load table over the driver read
-    just short of the row's position; None where no row is on a step.
+    just short of the row's position (:func:`assur._loads.step_hits` finds them).
     """
     loads = compile_loads(plan)
-    rows = np.flatnonzero(step_rows(loads, plan, state.drive))
-    if not rows.size:
-        return None
     kin = state.rows(rows)
     drive = np.array(kin.drive, dtype=float)
     size = np.maximum(np.abs(drive[:, 0]), np.radians(1.0) if _turns(plan) else 1.0)
@@ -51,7 +48,7 @@ def before_steps(
     nudged = dataclasses.replace(kin, drive=drive)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         forces, _ = _kst.solve(plan, loads, motions(plan, kin), nudged)
-    return rows, _kst.ForceState(*forces.fields())
+    return _kst.ForceState(*forces.fields())
 
 
 def _turns(plan: Plan) -> bool:

@@ -6,6 +6,9 @@ beside them (:mod:`assur._cli_summary`, :mod:`assur.html._sections`).
 
 from __future__ import annotations
 
+import math
+
+from assur._loads import compile_loads, driver_steps
 from assur.summary import Summary
 
 __all__ = ["notes", "turning"]
@@ -56,8 +59,8 @@ def notes(summary: Summary) -> list[str]:
         turns = covered / 360.0
         if turns < 1.0 - WHOLE or abs(turns - round(turns)) > WHOLE * turns:
             out.append(
-                f"the positions cover {covered:.6g} deg, not whole turns: means, RMS "
-                "and efficiency are of these positions, not of a cycle"
+                f"{summary.count} positions cover {covered:.6g} deg, not whole turns: "
+                "means, RMS and efficiency are of these positions, not of a cycle"
             )
         step = covered / summary.count if not summary.closes() else None
         if step is None:
@@ -67,4 +70,41 @@ def notes(summary: Summary) -> list[str]:
                 f"positions {step:.3g} deg apart: the largest values are those at "
                 "these positions, and a finer sweep may find larger ones between them"
             )
+    return out + _steps(summary)
+
+
+def _steps(summary: Summary) -> list[str]:
+    """Return what is to be said of the load tables' steps the sweep crossed.
+
+    A step a position landed on counts half on each side (the trapezoid rule); one
+    between two positions is counted by the positions around it, as any value is,
+    and a table of a few columns counts the one it landed on on one side.
+    """
+    span = summary.span()
+    if summary.plan is None or span is None or summary.variants != 1:
+        return []
+    turning = summary.plan.drivers[0].kind == "R"
+    unit = "deg" if turning else "m"
+    lo, hi = min(span), max(span)
+    missed: dict[str, list[float]] = {}
+    for entry, _, jumps in driver_steps(compile_loads(summary.plan), summary.plan):
+        for s in jumps.tolist():
+            if turning:
+                # the step is met where the sweep passes it, a whole turn apart
+                crossed = s + 360.0 * math.ceil((lo - s) / 360.0) <= hi
+            else:
+                crossed = lo <= s <= hi
+            if crossed and (entry, s) not in summary.landed:
+                missed.setdefault(entry, []).append(s)
+    out = [
+        f"{entry} steps at {', '.join(f'{s:g}' for s in steps)} {unit}, between the "
+        "positions analysed: a mean there is first-order in their spacing (a "
+        "position on each step counts it half on each side)"
+        for entry, steps in missed.items()
+    ]
+    if summary.one_sided:
+        out.append(
+            "a table of a few columns (columns=) counts a load table's step on the "
+            "side after it: a full table counts it half on each side"
+        )
     return out

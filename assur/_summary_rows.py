@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from assur._evaluate import friction_powers
+from assur._loads import compile_loads, step_hits
 from assur._steps import before_steps
 from assur._vec import Array, full
 
@@ -37,6 +38,10 @@ class Rows:
     where: Array
     weights: Array | None
     last: Any
+    landed: frozenset[Any] = frozenset()
+    """The steps of load tables a position landed on, as ``(entry, step)``."""
+    one_sided: bool = False
+    """Positions on steps counted on one side only (a table of a few columns)."""
 
     def _joined(self, got: list[Any]) -> Array:
         """Return the parts' values side by side, one row per variant."""
@@ -80,12 +85,18 @@ def rows_of(table: Any, variants: int, shares: Array) -> Rows:
     shape = (variants, n // variants)
     where = (table.given[:, 0] if n else np.zeros(0)).reshape(shape)
     last = np.arange(shape[1] - 1, shape[1]) if shape[1] else np.zeros(0, int)
-    found = _before(table) if variants == 1 else None
-    if found is None:
+    hits, landed = np.zeros(n, dtype=bool), frozenset[Any]()
+    if variants == 1 and n:
+        found = step_hits(compile_loads(table.plan), table.plan, table.state.drive)
+        hits, landed = found[0], frozenset(found[1])
+    if not hits.any() or table.partial:
         uniform = bool(np.all(shares == 1.0))
         weights = None if uniform else np.stack([np.ones(shape), shares])
-        return Rows((table,), variants, where, weights, last)
-    rows, before = found
+        # a table of a few columns keeps too little of the motion to solve the
+        # forces again before its steps: summarised on its rows as they are
+        return Rows((table,), variants, where, weights, last, landed, bool(hits.any()))
+    rows = np.flatnonzero(hits)
+    before = _before(table, rows)
     weights = np.stack([np.ones(shape), shares])
     weights[:, :, rows] *= 0.5
     # the before rows follow the table's: the last position's own is among them
@@ -96,20 +107,12 @@ def rows_of(table: Any, variants: int, shares: Array) -> Rows:
         np.concatenate([where, where[:, rows]], axis=1),
         np.concatenate([weights, weights[:, :, rows]], axis=2),
         np.concatenate([last, again]),
+        landed,
     )
 
 
-def _before(table: Any) -> tuple[Any, Any] | None:
-    """Return a table's rows on a load table's step, and their table before it.
-
-    A full table only: one of a few columns (``columns=``) keeps too little of the
-    motion to solve the forces again, and is summarised on its rows as they are.
-    """
-    if not len(table) or table.partial:
-        return None
-    found = before_steps(table.plan, table.state)
-    if found is None:
-        return None
-    rows, forces = found
+def _before(table: Any, rows: Any) -> Any:
+    """Return the table of ``rows``, on load tables' steps, with the loads before."""
+    forces = before_steps(table.plan, table.state, rows)
     state = table.state.rows(rows)
-    return rows, type(table)(table.plan, table.schema, table.given[rows], state, forces)
+    return type(table)(table.plan, table.schema, table.given[rows], state, forces)

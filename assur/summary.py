@@ -26,10 +26,11 @@ from typing import Any
 import numpy as np
 
 from assur._efficiency import efficiency
-from assur._running import Running, lasts, per_variant, sums, time_shares
+from assur._running import Running, lasts, per_variant, sums
 from assur._summary_rows import rows_of
+from assur._timing import Clock
 from assur._undefined import undefined
-from assur._vec import Array, full
+from assur._vec import Array
 from assur.errors import UsageError
 
 __all__ = ["Summary", "efficiency", "summarize", "undefined"]
@@ -82,11 +83,13 @@ class Summary:
     """The sums' terms of the last position added, by the sum's name."""
     _weight: Any = 0.0
     """The positions counted and the time they stand for, stacked (2, variants)."""
-    _first_speed: Any = None
-    """Each variant's crank speed at its first position (rad/s): times are to it."""
-    _varies: bool = False
-    """The crank's speed varies over the sweep: time weights are not all 1."""
-    _stops: bool = False  # it reaches zero (or a sliding or second driver): no time
+    _clock: Clock = field(default_factory=Clock)
+    plan: Any = None
+    """The mechanism summarised (its first slice's plan)."""
+    landed: set[Any] = field(default_factory=set)
+    """The steps of load tables a position landed on, as ``(entry, step)``."""
+    one_sided: bool = False
+    """Positions on steps were counted on one side (a table of a few columns)."""
 
     def add(self, table: Any) -> None:
         """Add the positions of ``table``, a forces table (one slice of a sweep).
@@ -109,7 +112,9 @@ class Summary:
         n = len(table)
         shape = (self.variants, n // self.variants)
         self.count += shape[1]
-        rows = rows_of(table, self.variants, self._shares(table, shape))
+        rows = rows_of(table, self.variants, self._clock.shares(table, shape))
+        self.landed |= rows.landed
+        self.one_sided = self.one_sided or rows.one_sided
         where, w, last = rows.where, rows.weights, rows.last
         for name, running in self._joints.items():
             running.add(rows.column(f"{name}.F"), where, w, last)
@@ -156,31 +161,9 @@ class Summary:
             if len(self._ends) == 1:  # the first slice: its first position too
                 self._ends.insert(0, float(where[0, 0]))
 
-    def _shares(self, table: Any, shape: tuple[int, int]) -> Array:
-        """Return the time each position of ``table`` stands for (variants, m).
-
-        ``|omega_0| / |omega|``: 1 at the crank's first speed, so that a constant
-        speed weighs every position 1, exactly (see :meth:`timed`).
-        """
-        if not self._crank or not shape[1]:
-            self._stops = self._stops or not self._crank
-            return np.ones(shape)
-        speed = full(table.state.speed[0], shape[0] * shape[1]).reshape(shape)
-        if self._first_speed is None:
-            self._first_speed = speed[:, :1].copy()
-        w, stops = time_shares(speed, self._first_speed)
-        self._stops = self._stops or stops
-        self._varies = self._varies or bool(np.any(w != 1.0))
-        return w
-
     def timed(self) -> bool:
-        """Whether the means are weighted by time: one crank, whose speed varies.
-
-        A constant speed gives every position the same time (plain means); a
-        sliding driver or several drivers have no one speed to time the positions
-        by, a crank whose speed reaches zero no time share: means over positions.
-        """
-        return self._varies and not self._stops
+        """Whether the means are weighted by time (see :class:`assur._timing.Clock`)."""
+        return self._clock.timed()
 
     def _start(self, table: Any) -> None:
         """Name the summary's values after the table's columns."""
@@ -224,6 +207,9 @@ class Summary:
                 units[f"shaking.{part}.at"] = unit
         self._rubbing = any(p.friction > 0.0 for p in plan.pairs.values())
         self._crank = len(plan.drivers) == 1 and plan.drivers[0].kind == "R"
+        self.plan = plan
+        self._clock.one = len(plan.drivers) == 1
+        self._clock.rate = "omega" if plan.drivers[0].kind == "R" else "v"
         self.drivers = len(plan.drivers)
         # a study's variants each have their size: the largest bounds the noise
         self._size = float(np.max(plan.scale))
@@ -351,16 +337,12 @@ class Summary:
         return np.where(noise, 0.0, r.top), np.where(noise, first, r.at)
 
     def means_over(self) -> tuple[str, str]:
-        """Return what the means and RMS values are over, and why where it matters.
+        """Return what the means and RMS values are over, and why where it matters."""
+        return self._clock.over()
 
-        ``("time", why)`` for a crank whose speed varies, ``("positions", why)``
-        for one whose speed reaches zero or turns back, else ``("positions", "")``.
-        """
-        if self.timed():
-            return "time", "the crank's speed varies: each position weighs 1/|omega|"
-        if self._crank and self._stops:
-            return "positions", "the crank's speed reaches 0 or turns back"
-        return "positions", ""
+    def span(self) -> tuple[float, float] | None:
+        """Return the first and the last driver position added (deg or m), if any."""
+        return (self._ends[0], self._ends[-1]) if self._ends else None
 
     def covered(self) -> float | None:
         """Return the angle a crank's positions stand for, deg; None for no crank.

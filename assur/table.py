@@ -347,12 +347,23 @@ class Table(Columns):
         supplies).
 
         A table made with ``columns=`` summarises the joints and drivers among its
-        columns only (``columns=["driver.torque"]`` gives the driver's figures).
+        columns only (``columns=["driver.torque"]`` gives the driver's figures,
+        but counts a load table's step on the side after it: see below).
 
-        Means are over the table's positions: time averages over a cycle when the
-        positions are equally spaced over a whole cycle at a constant driver speed.
-        A crank's sweep that ends a whole number of turns on from its first position
-        (``0:360:10``) ends on its first pose again, and that pose counts once.
+        Means and RMS values are time averages, the positions taken as equally
+        spaced: at a constant driver speed, plain means over the positions; where
+        one driver's speed varies (``omega=`` arrays, the dynamic model's real
+        speed), each position weighs ``1 / |speed|``. Several drivers, or a speed
+        that reaches zero, turns back or falls below 1/1000 of its fastest: means
+        over the positions. A position on a step of a load table over the driver
+        counts half with the loads before the step, half after it, and the peaks
+        are sought on both sides (the forces before it are solved on the same
+        motion: with the dynamic model's speed, whose acceleration steps there
+        too, the half before keeps the acceleration after, a first-order error);
+        a step between two positions is counted by the positions around it. A
+        crank's sweep that ends a whole number of turns on from its first
+        position (``0:360:10``) ends on its first pose again, and that pose counts
+        once. :func:`assur._summary_notes.notes` says which of these apply.
 
         Returns
         -------

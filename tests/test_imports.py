@@ -84,6 +84,7 @@ RANKS = {
     "assur.summary": 8,
     "assur._running": 1,
     "assur._efficiency": 0,
+    "assur._timing": 1,
     "assur._steps": 7,
     "assur._summary_rows": 7,
     "assur._summary_notes": 9,

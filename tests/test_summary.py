@@ -461,10 +461,9 @@ def test_a_crank_that_stops_is_summarised_over_its_positions(capsys, tmp_path):
     table = _speeding(mech, positions, 20.0, mean=20.0)
     summary = Summary()
     summary.add(table)
-    assert summary.means_over() == (
-        "positions",
-        "the crank's speed reaches 0 or turns back",
-    )
+    over, why = summary.means_over()
+    assert over == "positions"
+    assert why.startswith("the driver's speed reaches 0, turns back or nearly stops")
     power = np.asarray(table["driver.torque"]) * np.asarray(table["crank.omega"])
     assert summary.result()["driver.power.mean"] == pytest.approx(np.mean(power))
 
@@ -551,3 +550,80 @@ def test_a_coarse_sweep_says_its_peaks_may_be_missed(capsys, angles, coarse):
     out = capsys.readouterr().out
     said = "(positions 30 deg apart: the largest values are those at these positions"
     assert (said in out) == coarse
+
+
+def test_a_sliding_driver_s_varying_speed_gives_means_over_time():
+    # the means were over the positions: 27 % above the time average for a slider
+    # pushed from 0.5 to 2.5 m/s
+    mech = assur.load(Path(__file__).parent / "data" / "explain" / "slider_driven.toml")
+    lo, hi = -0.06, 0.02
+
+    def speeding(s):
+        v = 0.5 + 2.0 * (s - lo) / (hi - lo)
+        # a = dv/dt = dv/ds * v
+        return assur.forces(mech, s, omega=v, epsilon=2.0 / (hi - lo) * v)
+
+    summary = speeding(np.linspace(lo, hi, 2001)).summary()
+    fine = np.linspace(lo, hi, 40001)
+    table = speeding(fine)
+    force = np.asarray(table["driver.force"])
+    speed = 0.5 + 2.0 * (fine - lo) / (hi - lo)
+    # by hand: the work over the stroke, over the time it takes
+    time = np.trapezoid(1.0 / speed, fine)
+    assert summary["driver.power.mean"] == pytest.approx(
+        np.trapezoid(force, fine) / time, rel=2e-3
+    )
+    assert summary["driver.force.rms"] == pytest.approx(
+        np.sqrt(np.trapezoid(force**2 / speed, fine) / time), rel=2e-3
+    )
+    plain = np.mean(force * speed)
+    assert abs(summary["driver.power.mean"] - plain) > 0.05 * abs(plain)
+
+
+def test_two_drivers_whose_speeds_vary_say_their_means_are_over_positions(capsys):
+    mech = assur.load(EXAMPLES / "five_bar_two_cranks.toml")
+    first = np.arange(0.0, 360.0, 10.0)
+    given = np.stack([first, np.full(36, 120.0)], axis=1)
+    omega = np.stack([10.0 + np.sin(np.radians(first)), np.full(36, 1.0)], axis=1)
+    summary = Summary()
+    summary.add(assur.forces(mech, given, omega=omega, epsilon=np.zeros((36, 2))))
+    over, why = summary.means_over()
+    assert over == "positions"
+    assert "several drivers" in why
+
+
+@pytest.mark.parametrize("offset", [0.5, 0.1])
+def test_a_crank_that_nearly_stops_is_summarised_over_its_positions(offset):
+    # 100 (1 + sin) rad/s stops at 270 deg: a grid missing it by 0.5 or 0.1 deg gave
+    # RMS reactions set by the one position nearest the stop
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    positions = np.arange(offset, 360.0, 1.0)
+    table = _speeding(mech, positions, 100.0, mean=100.0)
+    summary = Summary()
+    summary.add(table)
+    assert summary.means_over()[0] == "positions"
+    force = np.asarray(table["B.F"])
+    assert summary.result()["B.F.rms"] == pytest.approx(np.sqrt(np.mean(force**2)))
+
+
+def test_a_step_between_positions_is_said_to_be(capsys):
+    # a step at 110.5 deg is counted by the positions around it: said, not silent
+    path = CUTTING
+    assert main(["forces", str(path), "--summary", "--angles", "0.25:360:1"]) == 0
+    out = capsys.readouterr().out
+    said = "(loads[0].force steps at 110, 250 deg, between the positions analysed:"
+    assert said in out
+    assert main(["forces", str(path), "--summary", "--angles", "0:360:1"]) == 0
+    assert "between the positions analysed" not in capsys.readouterr().out
+
+
+def test_a_table_of_few_columns_says_it_counts_a_step_on_one_side():
+    mech = assur.load(CUTTING)
+    positions = np.arange(0.0, 360.0, 1.0)
+    summary = Summary()
+    summary.add(assur.forces(mech, positions, columns=["driver.torque"]))
+    from assur._summary_notes import notes
+
+    assert any(
+        "counts a load table's step on the side after it" in n for n in notes(summary)
+    )
