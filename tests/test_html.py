@@ -620,3 +620,15 @@ def test_the_page_s_parts_after_the_sweep_are_told():
     )
     assert told == [(k, PAGE_PARTS) for k in range(1, PAGE_PARTS + 1)]
     assert 'id="free-bodies"' in page
+
+
+def test_the_note_s_headings_sit_below_its_card_s():
+    # "1. Structure" was an h2 under the card's h2 "The analysis at the first ..."
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    page = render_report(mech, angles=np.arange(0.0, 360.0, 30.0))
+    start = page.index('id="note"')
+    note = page[start : page.index("</section>", start)]
+    levels = [int(x) for x in re.findall(r"<h(\d)>", note)]
+    assert levels[0] == 2
+    assert all(level >= 3 for level in levels[1:])
+    assert re.search(r"<h3>1\. Structure</h3>", note)

@@ -39,10 +39,10 @@ def inline(text: str) -> str:
     )
 
 
-def _block(block: Block) -> str:
-    """Return one block as HTML."""
+def _block(block: Block, deeper: int = 0) -> str:
+    """Return one block as HTML, its heading ``deeper`` levels down."""
     if isinstance(block, Heading):
-        level = min(block.level, 6)
+        level = min(block.level + deeper, 6)
         return f"<h{level}>{inline(block.text)}</h{level}>"
     if isinstance(block, Para):
         return f"<p>{inline(block.text)}</p>"
@@ -60,9 +60,14 @@ def _block(block: Block) -> str:
     return "<ul>" + "".join(f"<li>{inline(x)}</li>" for x in block.items) + "</ul>"
 
 
-def html_body(note: Note) -> str:
-    """Return the note's blocks as HTML (no page around them)."""
-    return "\n".join(_block(b) for b in note.blocks)
+def html_body(note: Note, below: int = 1) -> str:
+    """Return the note's blocks as HTML (no page around them).
+
+    ``below`` is the level of the heading the note sits under: its own headings
+    go one level further down (the report's card is an h2: the note's "1.
+    Structure" an h3 under it).
+    """
+    return "\n".join(_block(b, below - 1) for b in note.blocks)
 
 
 def html_page(note: Note) -> str:

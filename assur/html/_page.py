@@ -97,7 +97,7 @@ def note_html(plan: Plan, table: Table) -> str:
     return wide_card(
         "note",
         f"The analysis at the first position ({first_position(table)}), step by step",
-        html_body(note),
+        html_body(note, below=2),
     )
 
 
