@@ -80,7 +80,7 @@ def test_a_coriolis_term_points_along_the_relative_velocity_turned_as_the_guide_
     note = str(explain(mech, angle))
     table = assur.kinematics(mech, [angle])
     coriolis = re.findall(
-        rf"\\vec a\^{{k}}_{{(.+?)}} = {VECTOR}\\ \\mathrm{{m/s\^2}},\\quad "
+        rf"\\vec a\^{{k}}_{{(.+?)}} = {VECTOR}\\ \\mathrm{{m/s\^2}} \$\$\n\$\$ \\qquad "
         rf"2\\,\\omega_{{\\mathrm{{(\w+)}}}}(.*?)\\ a\^k = .* = {NUMBER}\\ "
         rf"\\mathrm{{m/s\^2}} \$\$",
         note,

@@ -327,6 +327,24 @@ def _solve(left: list[Term], right: list[Term]) -> tuple[list[str], Array, Array
     return names, a, rhs
 
 
+def _known_lines(t: Term, scale: float, k: int) -> list[str]:
+    """Return the line of a known term: its working, value and what it is.
+
+    A Coriolis term says its rule, direction and size on a line of its own, under
+    its value: beside it, the line ran past the page's width.
+    """
+    line = (
+        f"{t.tex} = "
+        + (f"{t.working} = " if t.working else "")
+        + f"{vec(t.value, scale)}{SPEED[k]}"
+    )
+    if not t.note:
+        return [line]
+    if t.tex.startswith("\\vec a^{k}"):
+        return [line, f"\\qquad {t.note}"]
+    return [f"{line},\\quad {t.note}"]
+
+
 def _sum(terms: list[Term]) -> str:
     """Return the symbols of the terms joined by plus signs."""
     return " + ".join(t.tex for t in terms)
@@ -351,12 +369,10 @@ def dyad_rates(pos: Position, s: DyadSolver, k: int) -> list[Block]:
         Display((f"{_sum(left)} = {_sum(right)}",)),
         Display(
             tuple(
-                f"{t.tex} = "
-                + (f"{t.working} = " if t.working else "")
-                + f"{vec(t.value, scale)}{SPEED[k]}"
-                + (f",\\quad {t.note}" if t.note else "")
+                line
                 for t in left + right
                 if t.unknown is None
+                for line in _known_lines(t, scale, k)
             )
             + tuple(
                 f"{t.tex}:\\ {t.note}" for t in left + right if t.unknown is not None
