@@ -37,7 +37,7 @@ SUMMARY_ROWS = 400
 """Most rows of the readable table; --csv, --json and --parquet give them all."""
 
 
-ABOUT = "(about the origin of the file's coordinates)"
+ABOUT = "about the origin of the file's coordinates"
 """What the summary's shaking moment is taken about, said beside it."""
 
 
@@ -70,7 +70,7 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
             data["clockwise"] = list(summary.clockwise)  # driving torques below 0
         said = notes(summary)
         if "shaking.M.max" in summary.units:
-            said.append(f"shaking.M is taken {ABOUT[1:-1]}")
+            said.append(f"shaking.M is taken {ABOUT}")
         if said:
             data["notes"] = said
         return json.dumps(data, indent=2)
@@ -85,7 +85,7 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
             continue
         shown = number_text(value, ">14.6g")
         # the shaking moment's value depends on the point it is taken about
-        about = f" {ABOUT}" if key == "shaking.M.max" else ""
+        about = f" ({ABOUT})" if key == "shaking.M.max" else ""
         lines.append(f"  {key.ljust(width)}  {shown}  {unit}{about}".rstrip())
     lines += [f"  ({line})" for line in notes(summary)]
     if summary.clockwise:

@@ -31,7 +31,6 @@ __all__ = [
     "compile_loads",
     "driver_steps",
     "step_hits",
-    "step_rows",
     "table_reading",
     "table_step",
     "table_values",
@@ -185,6 +184,9 @@ def driver_steps(loads: LoadPlan, plan: Plan) -> list[tuple[str, Array, Array]]:
     positions where it steps, as :func:`assur._tables.steps` finds them. A table
     over a joint's slide is left out: a sweep lands on its steps only by chance.
     """
+    found = plan.memo.get("driver_steps")
+    if found is not None:  # once per plan: a summary asks for them every slice
+        return found  # type: ignore[no-any-return]
     out = []
     entries = [(f[2], f[3]) for f in loads.forces] + [
         (t[1], t[2]) for t in loads.torques
@@ -196,6 +198,7 @@ def driver_steps(loads: LoadPlan, plan: Plan) -> list[tuple[str, Array, Array]]:
             jumps = steps(xs, table.values, turning)
             if jumps.size:
                 out.append((entry, xs, jumps))
+    plan.memo["driver_steps"] = out
     return out
 
 
@@ -213,17 +216,12 @@ def step_hits(loads: LoadPlan, plan: Plan, drive: Array) -> tuple[Array, set[Any
             at = in_turn(xs, np.degrees(drive[:, 0]))
             on = at[:, None] == jumps[None, :]
         else:
-            # a slider's position given as the table's, through metres unchanged
-            near = 4.0 * np.spacing(np.maximum(np.abs(jumps), 1.0))
-            on = np.abs(drive[:, :1] - jumps[None, :]) <= near[None, :]
+            # exactly, as the table reads a slider's position: a hair before the
+            # step is read before it
+            on = drive[:, :1] == jumps[None, :]
         hit |= on.any(axis=1)
         landed |= {(entry, float(s)) for s in jumps[on.any(axis=0)].tolist()}
     return hit, landed
-
-
-def step_rows(loads: LoadPlan, plan: Plan, drive: Array) -> Array:
-    """Return the mask of the positions on a step of a load table over the driver."""
-    return step_hits(loads, plan, drive)[0]
 
 
 def table_step(

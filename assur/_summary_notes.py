@@ -53,7 +53,7 @@ def notes(summary: Summary) -> list[str]:
     out = []
     over, why = summary.means_over()
     if why:
-        out.append(f"means and RMS values are over {over}: {why}")
+        out.append(f"means and RMS values are over {over} ({why})")
     covered = summary.covered()
     if covered is not None and summary.count > 1:
         turns = covered / 360.0
@@ -62,9 +62,7 @@ def notes(summary: Summary) -> list[str]:
                 f"{summary.count} positions cover {covered:.6g} deg, not whole turns: "
                 "means, RMS and efficiency are of these positions, not of a cycle"
             )
-        step = covered / summary.count if not summary.closes() else None
-        if step is None:
-            step = covered / (summary.count - 1)
+        step = summary.spacing
         if step > COARSE:
             out.append(
                 f"positions {step:.3g} deg apart: the largest values are those at "
@@ -85,21 +83,24 @@ def _steps(summary: Summary) -> list[str]:
         return []
     turning = summary.plan.drivers[0].kind == "R"
     unit = "deg" if turning else "m"
-    lo, hi = min(span), max(span)
+    lo = min(span)
+    # the sweep's reach: a step on a turn's end is met a step past the last
+    reach = summary.covered() if turning else None
+    hi = lo + reach if reach is not None else max(span)
     missed: dict[str, list[float]] = {}
     for entry, _, jumps in driver_steps(compile_loads(summary.plan), summary.plan):
         for s in jumps.tolist():
             if turning:
                 # the step is met where the sweep passes it, a whole turn apart
-                crossed = s + 360.0 * math.ceil((lo - s) / 360.0) <= hi
+                crossed = s + 360.0 * math.ceil((lo - s) / 360.0) < hi
             else:
                 crossed = lo <= s <= hi
             if crossed and (entry, s) not in summary.landed:
                 missed.setdefault(entry, []).append(s)
     out = [
         f"{entry} steps at {', '.join(f'{s:g}' for s in steps)} {unit}, between the "
-        "positions analysed: a mean there is first-order in their spacing (a "
-        "position on each step counts it half on each side)"
+        "positions analysed: means there are right only to first order in their "
+        "spacing; a position on each step counts it half on each side"
         for entry, steps in missed.items()
     ]
     if summary.one_sided:

@@ -8,12 +8,12 @@ friction the power lost in each joint, in all, and the cycle's mechanical effici
 summarised as it is analysed; :func:`summarize` does it for one table.
 
 Means and RMS values are time averages over the sweep, whose positions are taken as
-equally spaced (the default sweep of one turn in 1 degree steps is): at a crank's
-constant speed, plain means over the positions; where its speed varies (``omega=``
-given per position, the dynamic model's real speed), each position weighted by the
-time the crank spends there, ``1 / |omega|``. A prismatic driver, several drivers or
-a crank whose speed passes through zero: means over the positions, as said with the
-summary. A crank's sweep that ends a whole number of turns on from its first position
+equally spaced (the default sweep of one turn in 1 degree steps is): at a constant
+driver speed, plain means over the positions; where one driver's speed varies
+(``omega=`` given per position, the dynamic model's real speed), each position
+weighted by the time the driver spends there, ``1 / |speed|`` (:mod:`assur._timing`).
+A position on a load table's step counts half on each side (:mod:`assur._steps`). A
+crank's sweep that ends a whole number of turns on from its first position
 (``0:360:10``) ends on its first pose again, and that pose counts once.
 """
 
@@ -90,6 +90,9 @@ class Summary:
     """The steps of load tables a position landed on, as ``(entry, step)``."""
     one_sided: bool = False
     """Positions on steps were counted on one side (a table of a few columns)."""
+    spacing: float = math.inf
+    """The least distance between two positions added (deg or m): their spacing, however
+    many were left out (``--skip-unassembled``)."""
 
     def add(self, table: Any) -> None:
         """Add the positions of ``table``, a forces table (one slice of a sweep).
@@ -112,7 +115,7 @@ class Summary:
         n = len(table)
         shape = (self.variants, n // self.variants)
         self.count += shape[1]
-        rows = rows_of(table, self.variants, self._clock.shares(table, shape))
+        rows = rows_of(table, self.variants, self._clock.record(table, shape))
         self.landed |= rows.landed
         self.one_sided = self.one_sided or rows.one_sided
         where, w, last = rows.where, rows.weights, rows.last
@@ -157,6 +160,11 @@ class Summary:
         where = where[:, : shape[1]]  # the table's own positions
         if shape[1]:
             self._tail = tail
+            # the positions' spacing: the least step between two, across slices too
+            given = np.concatenate([self._ends[-1:], where[0]])
+            steps = np.abs(np.diff(given))
+            if np.any(steps > 0):
+                self.spacing = min(self.spacing, float(np.min(steps[steps > 0])))
             self._ends[:] = [*self._ends[:1], float(where[0, -1])]
             if len(self._ends) == 1:  # the first slice: its first position too
                 self._ends.insert(0, float(where[0, 0]))
@@ -353,9 +361,9 @@ class Summary:
         if not self._crank or len(self._ends) != 2:
             return None
         span = abs(self._ends[1] - self._ends[0])
-        if self.closes() or self.count < 2:
+        if self.closes() or not math.isfinite(self.spacing):
             return span
-        return span * self.count / (self.count - 1)
+        return span + self.spacing
 
     def closes(self) -> bool:
         """Whether the positions end a whole number of turns on from where they began.

@@ -166,7 +166,8 @@ def summary_html(table: Table) -> str:
         "largest occurs, a sliding pair's largest couple, the balancing load's "
         "extremes, mean and RMS, the drivers' mean, largest and smallest power, the "
         "largest shaking force and moment (about the origin of the file's "
-        "coordinates) and where; means are over the positions shown.</p>\n"
+        "coordinates) and where; means over the positions shown, or over time as "
+        "said below.</p>\n"
         f"{told}"
         '<div class="table-wrap"><table class="values summary"><tbody>\n'
         f"{rows}\n</tbody></table></div>",
