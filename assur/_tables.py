@@ -44,15 +44,31 @@ def interpolate(at: Array, xs: Array, ys: Array) -> Array:
     gave inf). Each end of a step is given exactly. A position given twice is a
     jump: there and after it the second value holds, before it the first.
     """
-    at = np.asarray(at, dtype=float)
-    # the last of equal positions: a jump's second value from its position on
+    j, w = _segment(xs, np.asarray(at, dtype=float))
+    return (1.0 - w) * ys[j] + w * ys[j + 1]  # type: ignore[no-any-return]
+
+
+def _segment(xs: Array, at: Array) -> tuple[Any, Array]:
+    """Return the entry each of ``at`` is read after, and how far toward the next.
+
+    The last of equal positions (a jump's second value holds from its position
+    on), ends held; the fraction stays within [0, 1] (see :func:`interpolate`).
+    """
     j = np.clip(np.searchsorted(xs, at, side="right") - 1, 0, len(xs) - 2)
     width = xs[j + 1] - xs[j]
     with np.errstate(invalid="ignore", divide="ignore"):
         w = np.clip((at - xs[j]) / width, 0.0, 1.0)
     # a jump at either end of the table: no width to divide, the side of it tells
-    w = np.where(width == 0.0, (at >= xs[j]).astype(float), w)
-    return (1.0 - w) * ys[j] + w * ys[j + 1]  # type: ignore[no-any-return]
+    return j, np.where(width == 0.0, (at >= xs[j]).astype(float), w)
+
+
+def _grids(xs: Array, values: Any, turning: bool) -> list[tuple[Array, Array]]:
+    """Return each component's grid as a reading uses it: one closed turn, or all."""
+    ys = [np.asarray(v, dtype=float) for v in values]
+    if not turning:
+        return [(xs, y) for y in ys]
+    first = _first_turn(xs)
+    return [_closed(xs[first], y[first]) for y in ys]
 
 
 def periodic(xs: Array, values: Any, at: Array) -> list[Array]:
@@ -96,23 +112,15 @@ def reading(xs: Array, values: Any, at: float, turning: bool) -> Reading:
 
     ``turning``: read over a crank's turn (deg), as :func:`periodic` reads it.
     """
-    ys = [np.asarray(v, dtype=float) for v in values]
-    here = np.array([at], dtype=float)
-    if turning:
-        first = _first_turn(xs)
-        t = float(_in_turn(xs[first], here)[0])
-        grids = [_closed(xs[first], y[first]) for y in ys]
-    else:
-        t, grids = at, [(xs, y) for y in ys]
+    grids = _grids(xs, values, turning)
+    t = float(in_turn(xs, np.array([at]))[0]) if turning else at
     grid = grids[0][0]
-    # the entries interpolate uses: the last of equal positions, ends held
-    j = int(np.clip(np.searchsorted(grid, t, side="right") - 1, 0, len(grid) - 2))
-    low, high = float(grid[j]), float(grid[j + 1])
-    width = high - low
-    w = float(t >= low) if width == 0.0 else min(1.0, max(0.0, (t - low) / width))
+    # the entries interpolate uses
+    found, fraction = _segment(grid, np.array([t]))
+    j, w = int(found[0]), float(fraction[0])
     below = tuple(float(g[1][j]) for g in grids)
     above = tuple(float(g[1][j + 1]) for g in grids)
-    return Reading(t, low, high, below, above, w)
+    return Reading(t, float(grid[j]), float(grid[j + 1]), below, above, w)
 
 
 def step_before(xs: Array, values: Any, at: float, turning: bool) -> list[float] | None:
@@ -149,11 +157,7 @@ def steps(xs: Array, values: Any, turning: bool) -> Array:
     """
     ys = [np.asarray(v, dtype=float) for v in values]
     slack = AGREE * max(1.0, *(float(np.max(np.abs(y))) for y in ys))
-    if turning:
-        first = _first_turn(xs)
-        grids = [_closed(xs[first], y[first]) for y in ys]
-    else:
-        grids = [(xs, y) for y in ys]
+    grids = _grids(xs, values, turning)
     grid = grids[0][0]
     twice = np.flatnonzero(grid[:-1] == grid[1:])
     jumps = [
