@@ -59,19 +59,25 @@ class Rows:
             [np.abs(c[0]) if len(c) == 1 else np.hypot(*c) for c in got]
         )
 
+    def _driver(self, field: str, i: int) -> Array:
+        """Return driver ``i``'s leaf ``field`` of the parts' states, one per row."""
+        got = []
+        for t in self.parts:
+            state = t.state if field == "speed" else t.force_state
+            got.append(full(getattr(state, field)[i], len(t)))
+        return self._joined(got)
+
     def speed(self, i: int) -> Array:
         """Return driver ``i``'s speed (rad/s or m/s)."""
-        return self._joined([full(t.state.speed[i], len(t)) for t in self.parts])
+        return self._driver("speed", i)
 
     def balancing(self, i: int) -> Array:
         """Return driver ``i``'s balancing load (N m or N)."""
-        return self._joined(
-            [full(t.force_state.balancing[i], len(t)) for t in self.parts]
-        )
+        return self._driver("balancing", i)
 
     def ideal(self, i: int) -> Array:
         """Return driver ``i``'s balancing load without friction (N m or N)."""
-        return self._joined([full(t.force_state.ideal[i], len(t)) for t in self.parts])
+        return self._driver("ideal", i)
 
     def friction(self) -> dict[str, Array]:
         """Return each pair's friction power (W), by the pair's name."""
