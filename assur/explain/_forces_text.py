@@ -236,7 +236,8 @@ def couple_blocks(
                 "from that point)"
                 if pressed
                 else f"(the normal force $N_{{{j}}}$ is zero here: the guide's "
-                "reaction is that couple alone)"
+                "reaction is that couple alone, borne as two equal and opposite "
+                "normal forces at the slider's ends)"
             )
             + (
                 ""
