@@ -148,6 +148,9 @@ FIXED = {
     "tiny_link_far_apart.toml": "ModelError",
     "tiny_link_overflow.toml": "AssemblyError",  # at 75 deg; 45 deg is NaN, told
     "triad_small_prismatic.toml": "table",
+    # the class III example 1e13 m across: its reactions, solved unscaled, were 3e-4
+    # out of balance at 270 deg, the balancing torque 8e-4 from its check
+    "triad_huge_solve.toml": "table",
     # its rod stands square to the guide at 45 and 225 deg, a root of -1.3e-15 of
     # its size: a dead centre, where it was said not to assemble
     "unexplained_inf_sum.toml": "SingularConfigurationError",

@@ -279,9 +279,12 @@ def equilibrium(
         if pair.kind == "P":
             # a couple in units of force times the group's size, as moments are
             cols[2 * j + 1] = plan.scale
-    bad |= 1.0 / np.linalg.cond(mat * rows[:, None] * cols[None, :]) < SINGULAR_FORCES
-    mat[bad] = np.eye(size)
-    lam = np.linalg.solve(mat, rhs[..., None])[..., 0]
+    scaled = mat * rows[:, None] * cols[None, :]
+    bad |= 1.0 / np.linalg.cond(scaled) < SINGULAR_FORCES
+    scaled[bad] = np.eye(size)
+    # solved as measured: unscaled, a group 1e13 m across mixed forces of 1 with
+    # arms of 1e13 in one elimination and lost three digits of its reactions
+    lam = np.linalg.solve(scaled, (rhs * rows)[..., None])[..., 0] * cols
     lam[bad] = np.nan
     reactions: dict[str, Reaction] = {}
     passed = []
