@@ -46,9 +46,10 @@ def turning(summary: Summary) -> list[str]:
 def notes(summary: Summary) -> list[str]:
     """Return what a reader of the summary's numbers must know, one line each.
 
-    What the means are over where it is not plain (a varying crank speed: over
+    What the means are over where it is not plain (a varying driver speed: over
     time), a crank's sweep short of a whole turn (means and efficiency are not
-    a cycle's) and one too coarse to be sure of its peaks.
+    a cycle's), one too coarse to be sure of its peaks, and the load tables'
+    steps it did not count half on each side.
     """
     out = []
     over, why = summary.means_over()
