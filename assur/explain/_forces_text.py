@@ -282,7 +282,8 @@ def _sliding_middle(
             rhs.append(-along)
             lines.append(
                 f"\\sum F \\cdot \\vec e = {num(along)},\\quad "
-                f"{par(sgn * float(np.dot(nm, eb)))}\\,N_{{{j}}} = {num(-along)}"
+                f"{par(sgn * float(np.dot(nm, eb)))}\\,N_{{{j}}} + 0\\,M_{{{j}}} = "
+                f"{num(-along)}"
             )
     solved_lines, (normal, couple) = cramer(
         [f"N_{{{j}}}", f"M_{{{j}}}"],
