@@ -296,3 +296,11 @@ def test_a_fixed_guide_has_no_coriolis_term() -> None:
     note = str(explain(assur.load(EXAMPLES / "slider_crank_exercise.toml"), 45.0))
     assert "a^{k}_{\\mathrm{guide}}" not in note
     assert "\\omega_{\\mathrm{ground}}" not in note
+
+
+def test_a_line_through_points_of_long_names_is_told_apart() -> None:
+    # "along Dslot (pin)" read as one name; "along BC" is as a textbook writes it
+    note = str(explain(assur.load(DATA / "slot_in_crank.toml"), 20.0))
+    assert "(along D–slot (pin))" in note
+    note = str(explain(assur.load(EXAMPLES / "slider_crank_exercise.toml"), 45.0))
+    assert "(along BC)" in note

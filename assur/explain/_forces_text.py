@@ -33,7 +33,7 @@ from assur.explain._loads_text import (
 )
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position, cross, perp, unit
-from assur.explain._tex import cramer, name, num, par, plain, text, vec
+from assur.explain._tex import cramer, name, num, par, plain, segment, text, vec
 from assur.explain._tex import unit as unit_text
 from assur.explain._triad_text import system_blocks
 from assur.groups._dyad import DyadSolver
@@ -93,8 +93,9 @@ def _revolute_middle(
                 Para(
                     f"Moments of {plain(pos.link(body))} about {plain(s.mid.name)}: "
                     "the "
-                    f"normal part $\\vec {symbol}^{{n}}$ (along {plain(pair.name)}"
-                    f"{plain(s.mid.name)}) and the reaction in {plain(s.mid.name)} "
+                    f"normal part $\\vec {symbol}^{{n}}$ (along "
+                    f"{segment(plain(pair.name), plain(s.mid.name))}) and the "
+                    f"reaction in {plain(s.mid.name)} "
                     f"pass through {plain(s.mid.name)}; the tangential part "
                     f"$\\vec {symbol}^{{t}} = {symbol}^{{t}}\\,\\vec t$, "
                     f"$\\vec t = {vec(t)}$ (the link's direction $\\vec u = {vec(u)}$ "

@@ -23,6 +23,7 @@ __all__ = [
     "par",
     "plain",
     "point_name",
+    "segment",
     "text",
     "times",
     "unit",
@@ -141,6 +142,15 @@ def point_name(point: str) -> str:
     if point.endswith(".G") and point.count(".") == 1:
         return f"G_{{{name(point[:-2])}}}"
     return name(point)
+
+
+def segment(a: str, b: str) -> str:
+    """Return the name of the line through two points, as a paragraph writes it.
+
+    One letter each: run together, as a textbook writes BC. Longer names are
+    joined by a dash ("D–slot (pin)"): run together they read as one name.
+    """
+    return f"{a}{b}" if len(a) == 1 and len(b) == 1 else f"{a}–{b}"
 
 
 def plain(text: str) -> str:
