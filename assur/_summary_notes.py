@@ -59,9 +59,10 @@ def notes(summary: Summary) -> list[str]:
     if covered is not None and summary.count > 1:
         turns = covered / 360.0
         if turns < 1.0 - WHOLE or abs(turns - round(turns)) > WHOLE * turns:
+            first, last = summary.span() or (0.0, 0.0)
             out.append(
-                f"{summary.count} positions cover {covered:.6g} deg, not whole turns: "
-                "means, RMS and efficiency are of these positions, not of a cycle"
+                f"positions from {first:g} to {last:g} deg, not whole turns: means, "
+                "RMS and efficiency are of these positions, not of a cycle"
             )
         step = summary.spacing
         if step > COARSE:

@@ -1119,7 +1119,23 @@ def test_a_couple_s_arc_grows_with_it():
         plt.close(ax.figure)
     crank, coupler = abs(table["crank.Mi"][0]), abs(table["coupler.Mi"][0])
     assert crank < 0.01 * coupler
-    # the balancing torque's arc, then the two inertia couples' (and the rocker's)
+    # the inertia couples' arcs and the balancing torque's: the crank's, 300 times
+    # smaller than the coupler's, is drawn the smallest
     assert len(radii) >= 3
-    inertia = sorted(radii)[:-1]
-    assert inertia[0] < 0.7 * inertia[-1]
+    assert min(radii) < 0.7 * sorted(radii)[-2]
+
+
+def test_the_legend_shows_an_internal_reaction_dashed():
+    from assur.plotting._style import INTERNAL_LEGEND
+
+    table = assur.forces(_load("slider_crank_exercise"), [45.0])
+    ax = plotting.draw_free_body(table, 0)
+    try:
+        legend = ax.get_legend()
+        styles = {
+            t.get_text(): h.get_linestyle()
+            for h, t in zip(legend.legend_handles, legend.get_texts(), strict=True)
+        }
+    finally:
+        plt.close(ax.figure)
+    assert styles[INTERNAL_LEGEND] not in ("-", "solid")

@@ -239,6 +239,9 @@ def couple_blocks(
                 else f"(the normal force $N_{{{j}}}$ is zero here: the guide's "
                 "reaction is that couple alone, borne as two equal and opposite "
                 "normal forces at the slider's ends)"
+                if num(couple, pos.force_scale() * pos.size()) != "0"
+                else f"(the normal force $N_{{{j}}}$ is zero here, and so is the "
+                "couple: the guide carries no load)"
             )
             + (
                 ""

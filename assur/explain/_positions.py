@@ -115,10 +115,11 @@ def _rrp(pos: Position, s: DyadSolver) -> list[Block]:
         Display(
             (
                 f"\\vec w = \\vec r_{{{c}_0}} - \\vec r_{{{b}}} = {vec(w)}{M},\\quad "
-                f"\\vec w \\cdot \\vec e = {num(we)}{M},\\quad |\\vec w|^2 = "
+                f"\\vec w \\cdot \\vec e = {num(we)}{M},\\quad {{|\\vec w|}}^2 = "
                 f"{num(ww)}{unit('m^2')}",
-                f"s = -\\vec w \\cdot \\vec e {sign} \\sqrt{{(\\vec w \\cdot \\vec e)^2"
-                f" - |\\vec w|^2 + l_{{{b}{c}}}^2}} = -{par(we)} {sign} \\sqrt{{"
+                f"s = -\\vec w \\cdot \\vec e {sign} \\sqrt{{"
+                f"{{(\\vec w \\cdot \\vec e)}}^2 - {{|\\vec w|}}^2 + "
+                f"l_{{{b}{c}}}^2}} = -{par(we)} {sign} \\sqrt{{"
                 f"{_sq(we)} - {num(ww)} + {_sq(length)}}} = {num(slide)}{M}",
                 f"\\vec r_{{{c}}} = \\vec r_{{{c}_0}} + s\\,\\vec e = {vec(c0)} + "
                 f"{par(slide)} \\cdot {vec(e)} = {vec(pc)}{M}",

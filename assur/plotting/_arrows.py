@@ -60,14 +60,12 @@ def _draw_arrows(
     least = 1e-9 * max([*sizes, 0.0])
     # a couple's arc grows with it: one of 0.0005 N m beside 0.16 N m was drawn
     # as large (no scale gives a couple a length; the size tells which matter)
-    largest = max(
-        [abs(a.couple or 0.0) for a in arrows if a.kind != "balancing"] + [0.0]
-    )
+    largest = max([abs(a.couple or 0.0) for a in arrows] + [0.0])
     for a in arrows:
         if a.force is not None and float(np.hypot(*a.force)) > least:
             seen.append(_draw_force(ax, ctx, a, a.force, scale, text))
         if a.couple is not None and abs(a.couple) > tiny:
-            share = 1.0 if a.kind == "balancing" else abs(a.couple) / largest
+            share = abs(a.couple) / largest
             seen += _draw_couple(ax, ctx, a, a.couple, text, share)
     return seen
 
@@ -117,11 +115,13 @@ def _draw_couple(
 ) -> list[np.ndarray]:
     """Draw the couple of ``a`` (``couple``) as a curved arrow; return its box.
 
-    ``share`` is its size against the largest couple drawn (1 for the balancing
-    torque, drawn largest): the arc's radius runs from 1.4 to 2.3 joint radii.
+    ``share`` is its size against the largest couple drawn, the balancing torque's
+    among them: the arc's radius runs from 1.2 to 2.3 joint radii (the balancing
+    torque's, round the driver's pivot and its other arcs, from 2.6 to 3.4).
     """
-    size = 1.4 + 0.9 * math.sqrt(min(1.0, share))
-    rad = (3.4 if a.kind == "balancing" else size) * ctx.r
+    grow = math.sqrt(min(1.0, share))
+    size = 2.6 + 0.8 * grow if a.kind == "balancing" else 1.2 + 1.1 * grow
+    rad = size * ctx.r
     t = np.linspace(math.radians(-100), math.radians(150), 40)
     if couple < 0:
         t = t[::-1]

@@ -17,7 +17,7 @@ from assur._style import REACTION_COLOUR
 from assur._vec import integer
 from assur.errors import ModelError, UsageError
 from assur.model import GROUND
-from assur.plotting._arrows import _draw_arrows
+from assur.plotting._arrows import INTERNAL_DASH, _draw_arrows
 from assur.plotting._axes import _frame_axes, _legend, _new_axes, fill_box
 from assur.plotting._bars import clear_bars
 from assur.plotting._context import (
@@ -238,6 +238,11 @@ def draw_free_body(
             (_scale_text(arrows, scale), ""),
         ],
     )
+    for handle, words in zip(
+        ax.get_legend().legend_handles, ax.get_legend().get_texts(), strict=True
+    ):
+        if words.get_text() == INTERNAL_LEGEND:
+            handle.set_linestyle(INTERNAL_DASH)  # the entry shows its dash
     # the loads' names, with their values, need the room beside a tall group
     fill_box(ax)
     if labels:
