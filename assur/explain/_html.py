@@ -21,6 +21,7 @@ STYLE = """
 body { font: 16px/1.5 system-ui, sans-serif; max-width: 60rem; margin: 2rem auto;
   padding: 0 1rem; color: #1f2937; }
 h1 { font-size: 1.6rem; } h2 { margin-top: 2rem; border-bottom: 1px solid #d1d5db; }
+math { font-family: "STIX Two Math", "Latin Modern Math", "Cambria Math", math; }
 math[display="block"] { margin: 0.4rem 0; padding-block: 0.25em; overflow-x: auto;
   overflow-y: hidden; text-align: left; }
 .note-eq { margin: 0.6rem 0 0.6rem 1rem; }
