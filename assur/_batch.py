@@ -27,7 +27,6 @@ from assur._vec import Array, Mask, is_array, leaves
 from assur.analysis import CHUNK
 from assur.columns import selection
 from assur.plan import Plan
-from assur.summary import Summary
 from assur.table import Table
 
 __all__ = ["CHUNK", "near_change_points", "stacked", "summaries"]
@@ -88,6 +87,9 @@ def summaries(
         _index=chosen.index,
         _families=chosen.families,
     )
+    # the summary's modules load with the first study, not with ``import assur``
+    from assur.summary import Summary
+
     summary = Summary(variants=k)
     with np.errstate(invalid="ignore"):
         summary.add(table)
