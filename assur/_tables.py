@@ -131,16 +131,12 @@ def step_before(xs: Array, values: Any, at: float, turning: bool) -> list[float]
     ``turning``: read over a crank's turn (deg), as :func:`periodic` reads it.
     """
     ys = [np.asarray(v, dtype=float) for v in values]
-    here = np.array([at], dtype=float)
+    t = np.array([at], dtype=float)
     if turning:
-        first = _first_turn(xs)
-        turn = float(_in_turn(xs[first], here)[0])
-        closed = [_closed(xs[first], y[first]) for y in ys]
-        before = [_before(turn, *grid) for grid in closed]
-        after = [float(interpolate(np.array([turn]), *grid)[0]) for grid in closed]
-    else:
-        before = [_before(at, xs, y, turning=False) for y in ys]
-        after = [float(interpolate(here, xs, y)[0]) for y in ys]
+        t = in_turn(xs, t)
+    grids = _grids(xs, values, turning)
+    before = [_before(float(t[0]), *grid, turning=turning) for grid in grids]
+    after = [float(interpolate(t, *grid)[0]) for grid in grids]
     slack = AGREE * max(1.0, *(float(np.max(np.abs(y))) for y in ys))
     if all(abs(b - a) <= slack for b, a in zip(before, after, strict=True)):
         return None
