@@ -157,23 +157,16 @@ def _read(found: Reading, over: tuple[str, str, str], steps: bool) -> tuple[str,
     On an entry (or at a step, whose words are said apart) there is no working:
     the entry's value holds.
     """
+    if steps:
+        return "", ""
     words, unit, coordinate = over
     u = f"\\ \\mathrm{{{unit}}}"
-    if unit == "deg":
-        # a crank's angle is read within the table's turn: -100 deg at 260
-        at = num(found.at)
-        coordinate = "" if coordinate == at else f"{coordinate}{u} \\to "
-    elif coordinate:
-        coordinate += " = "
-    if steps or found.fraction in (0.0, 1.0):
-        if steps:
-            return "", ""
+    if found.fraction in (0.0, 1.0):
         x = found.low if found.fraction == 0.0 else found.high
         return (
             "",
             f"\\text{{(the entry of its table{words} at }} {num(x)}{u}\\text{{)}}",
         )
-
     if found.below == found.above:
         # a flat stretch of the table: nothing to interpolate
         return "", (
@@ -181,12 +174,19 @@ def _read(found: Reading, over: tuple[str, str, str], steps: bool) -> tuple[str,
             f"\\text{{ to }} {num(found.high)}{u}\\text{{)}}"
         )
 
-    def value_(v: tuple[float, ...]) -> str:
-        return vec(np.array(v)) if len(v) == 2 else par(v[0])
+    def value_(v: tuple[float, ...], lead: bool = False) -> str:
+        # a couple leading the sum is written bare, in a difference in brackets
+        return vec(np.array(v)) if len(v) == 2 else (num if lead else par)(v[0])
 
-    first = vec(np.array(found.below)) if len(found.below) == 2 else num(found.below[0])
+    if unit == "deg":
+        # a crank's angle is read within the table's turn: -100 deg at 260
+        at = num(found.at)
+        coordinate = "" if coordinate == at else f"{coordinate}{u} \\to "
+    elif coordinate:
+        coordinate += " = "
     working = (
-        f"{first} + \\frac{{{num(found.at)} - {par(found.low)}}}"
+        f"{value_(found.below, lead=True)} + "
+        f"\\frac{{{num(found.at)} - {par(found.low)}}}"
         f"{{{num(found.high)} - {par(found.low)}}} \\cdot \\left({value_(found.above)}"
         f" - {value_(found.below)}\\right)"
     )
