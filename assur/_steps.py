@@ -42,15 +42,12 @@ def before_steps(
     loads = compile_loads(plan)
     kin = state.rows(rows)
     drive = np.array(kin.drive, dtype=float)
-    size = np.maximum(np.abs(drive[:, 0]), np.radians(1.0) if _turns(plan) else 1.0)
+    # at least 1 deg (a crank's positions are in radians) or 1 m
+    least = np.radians(1.0) if plan.drivers[0].kind == "R" else 1.0
+    size = np.maximum(np.abs(drive[:, 0]), least)
     # the tables read the drive alone: the motion stays the position's own
     drive[:, 0] -= BEFORE * size
     nudged = dataclasses.replace(kin, drive=drive)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         forces, _ = _kst.solve(plan, loads, motions(plan, kin), nudged)
     return _kst.ForceState(*forces.fields())
-
-
-def _turns(plan: Plan) -> bool:
-    """Whether the first driver is a crank (its positions in radians)."""
-    return plan.drivers[0].kind == "R"
