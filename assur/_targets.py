@@ -9,6 +9,7 @@ from __future__ import annotations
 import errno
 import os
 import stat
+import sys
 from typing import TYPE_CHECKING, Any
 
 from assur.errors import OutputError
@@ -135,8 +136,6 @@ def stdout_is(path: Any) -> bool:
 
     A redirection (``>> m.toml``) to a file the command reads.
     """
-    import sys
-
     try:
         out = os.fstat(sys.stdout.fileno())
         found = os.stat(path)
