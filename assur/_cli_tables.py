@@ -30,7 +30,7 @@ from assur._output import (
 from assur._sliced import Slice
 from assur.errors import UsageError
 
-__all__ = ["_check_outputs", "_write_tables"]
+__all__ = ["_check_outputs", "_write_tables", "check_parquet"]
 
 
 def _check_outputs(args: argparse.Namespace) -> None:
@@ -66,16 +66,21 @@ def _check_outputs(args: argparse.Namespace) -> None:
                 f"{on_stdout} writes; expected a file of its own"
             )
             raise UsageError(msg)
-    if args.parquet == "-":
+    check_parquet(args.parquet)
+
+
+def check_parquet(target: Any) -> None:
+    """Refuse ``--parquet TARGET`` when it is standard output or pyarrow is missing."""
+    if target == "-":
         msg = "--parquet -: a Parquet file is not text; expected a file name"
         raise UsageError(msg)
-    if args.parquet:
+    if target:
         from assur._tableio import import_pyarrow
 
         try:
             import_pyarrow()
         except ImportError as err:
-            msg = f"--parquet {path_text(args.parquet)}: {err}"
+            msg = f"--parquet {path_text(target)}: {err}"
             raise UsageError(msg) from err
 
 

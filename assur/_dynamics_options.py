@@ -1,7 +1,8 @@
 """The options of ``assur dynamics``, checked before anything is computed.
 
 A flywheel, a number of turns, a coefficient of speed fluctuation out of range, or
-output files that clash, are refused as a :class:`~assur.errors.UsageError`.
+output files that clash or cannot be written (Parquet without pyarrow), are refused
+as a :class:`~assur.errors.UsageError`.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ from assur._cli_common import (
     check_table_suffix,
     is_stdout,
 )
+from assur._cli_tables import check_parquet
 from assur._output import path_text
 from assur._startup_checks import MOST_TURNS
 from assur.dynamics_flywheel import SMALLEST_DELTA, delta_in_range
@@ -59,6 +61,18 @@ def _check_options(args: argparse.Namespace) -> None:
     if args.csv:
         check_not_input("--csv", args.csv, args.file)
         check_table_suffix("--csv", args.csv, "CSV")
+    if args.parquet:
+        on_stdout = "--json" if args.json else "--csv -" if args.csv == "-" else None
+        if on_stdout and args.parquet != "-" and is_stdout(args.parquet):
+            # /dev/stdout and its kin: two tables mixed in one stream
+            msg = (
+                f"--parquet {path_text(args.parquet)}: is standard output, where "
+                f"{on_stdout} writes; expected a file of its own"
+            )
+            raise UsageError(msg)
+        check_parquet(args.parquet)
+        check_not_input("--parquet", args.parquet, args.file)
+        check_table_suffix("--parquet", args.parquet, "Parquet")
     if args.startup_csv is not None:
         if is_stdout(args.startup_csv):
             msg = (
@@ -68,4 +82,10 @@ def _check_options(args: argparse.Namespace) -> None:
             raise UsageError(msg)
         check_not_input("--startup-csv", args.startup_csv, args.file)
         check_table_suffix("--startup-csv", args.startup_csv, "CSV")
-        check_distinct([("--csv", args.csv), ("--startup-csv", args.startup_csv)])
+    check_distinct(
+        [
+            ("--csv", args.csv),
+            ("--parquet", args.parquet),
+            ("--startup-csv", args.startup_csv),
+        ]
+    )

@@ -13,7 +13,6 @@ Its parts: the options checked (``assur._dynamics_options``), the figures given
 from __future__ import annotations
 
 import argparse
-import contextlib
 import json
 import sys
 import warnings
@@ -23,7 +22,6 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import (
-    bar_shown,
     check_structure,
     load_mechanism,
     parse_angles,
@@ -46,20 +44,16 @@ from assur._dynamics_figures import (
     _startup_lines,
     startup_csv,
 )
+from assur._dynamics_files import SLICE, stream, write_files
 from assur._dynamics_options import _check_options
 from assur._output import (
     StdoutError,
-    output_path,
-    path_text,
     stdout_writer,
-    write_all,
     write_stdout,
 )
-from assur._progress import BAR_DELAY, progress
 from assur._startup_checks import MOST_TURNS
 from assur._stdin import input_text
 from assur._tableio import CsvWriter, JsonWriter
-from assur._text import counted
 from assur._vec import Array
 from assur.dynamics_flywheel import SMALLEST_DELTA
 from assur.dynamics_model import COLUMNS, solved
@@ -69,8 +63,6 @@ from assur.errors import AssurWarning, ModelError
 
 __all__ = ["register"]
 
-SLICE = 65536
-"""Rows computed and written at once (the table is never held whole)."""
 ROWS_SHOWN = 400
 """Most rows of the readable tables; --csv and --json give them all."""
 
@@ -129,6 +121,12 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
     p.add_argument(
         "--csv", type=given, metavar="PATH", help="write the table as CSV ('-': stdout)"
     )
+    p.add_argument(
+        "--parquet",
+        type=given,
+        metavar="PATH",
+        help="write the table as Parquet (needs pyarrow)",
+    )
     p.add_argument("--json", action="store_true", help="print everything as JSON")
     return {"dynamics": _cmd_dynamics}
 
@@ -158,7 +156,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
     try:
         state = solved(mech, inertia)
     except ModelError as err:
-        if run is None or args.csv or args.forces:
+        if run is None or args.csv or args.parquet or args.forces:
             raise
         # a motor may carry the crank round where no steady state at the file's
         # omega (under a constant torque) exists: the start-up is still shown
@@ -169,7 +167,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         startup_file.append((args.startup_csv, startup_csv(run), len(run.time), 3))
     if state is None:
         _notes(args, mech)
-        _write_files(args, startup_file, None)
+        write_files(args, startup_file, None)
         if args.json:
             document = {"name": mech.name, "startup": _startup_data(run)}
             write_stdout(json.dumps(document) + "\n")
@@ -183,7 +181,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         stdout_writer()[1](",".join(rows.names))
     _notes(args, mech)
     # the files first, as a set: standard output read by a pipe may go away
-    _write_files(args, startup_file, rows)
+    write_files(args, startup_file, rows)
     if args.json or args.csv == "-":
         write, encode = stdout_writer()
         try:
@@ -195,13 +193,13 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
                 if args.json
                 else CsvWriter(write, rows.names, encode)
             )
-            _stream(rows, out, args)
+            stream(rows, [out], args)
             out.close()
             if args.json:
                 write(encode("\n"))
         except StdoutError as err:
             raise err.error from None
-    elif not args.csv:
+    elif not (args.csv or args.parquet):
         shown = rows.part(0, ROWS_SHOWN)
         figures = _figures(rows.first, sizing, run)
         text = _readable(shown, args.forces, len(angles))
@@ -297,18 +295,6 @@ class _Rows:
         self.checked = True
 
 
-def _stream(rows: _Rows, writer: Any, args: argparse.Namespace) -> None:
-    """Write every slice of ``rows`` with ``writer``; a bar on a long sweep."""
-    n = len(rows)
-    show = bar_shown(args, bool(args.json), args.csv)
-    with progress("dynamics", n, show, BAR_DELAY, " positions") as bar:
-        for start in range(0, n, SLICE):
-            part = rows.part(start, min(start + SLICE, n))
-            writer.write([np.asarray(part[c], dtype=float) for c in rows.names])
-            bar.advance(len(part))
-            del part  # one slice in memory at a time
-
-
 class _Joined:
     """The dynamics table and the force table at its motion, side by side."""
 
@@ -333,41 +319,6 @@ class _Joined:
         from assur.io import write_csv
 
         return write_csv(self, path)
-
-
-def _write_files(
-    args: argparse.Namespace, files: list[tuple[Any, str, int, int]], rows: Any
-) -> None:
-    """Write the files asked for, whole or none of them; say so.
-
-    ``files`` holds ``(path, text, rows, columns)`` (the start-up's samples); with
-    ``rows`` (a :class:`_Rows`) the table goes to ``--csv PATH`` slice by slice.
-    """
-    written = []
-    with contextlib.ExitStack() as stack:
-        for path, text, count, columns in files:
-            temporary = stack.enter_context(output_path(path))
-            with open(temporary, "wb") as stream:
-                write_all(stream, text.encode("utf-8"))
-            written.append((path, count, columns))
-        if rows is not None and args.csv and args.csv != "-":
-            temporary = stack.enter_context(output_path(args.csv))
-            with open(temporary, "wb") as stream:
-                writer = CsvWriter(lambda data: write_all(stream, data), rows.names)
-                _stream(rows, writer, args)
-            written.append((args.csv, len(rows), len(rows.names)))
-    _wrote(args, written)
-
-
-def _wrote(args: argparse.Namespace, written: list[tuple[Any, int, int]]) -> None:
-    """Say which files were written (``(path, rows, columns)``), unless --quiet."""
-    if quiet(args):
-        return
-    # standard output may carry the table or the JSON: the lines go to stderr then
-    lines = sys.stderr if (args.json or args.csv == "-") else sys.stdout
-    for path, rows, columns in written:
-        size = f"{counted(rows, 'row')} x {counted(columns, 'column')}"
-        print(f"wrote {size} to {path_text(path)}", file=lines)
 
 
 def _readable(table: Any, forces: bool, total: int) -> str:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import subprocess
+import sys
 import warnings
 from pathlib import Path
 
@@ -130,6 +131,62 @@ def test_csv_with_the_forces_at_the_motion(capsys, tmp_path: Path):
     inertia = assur.flywheel(assur.load(WHITWORTH), 0.05)
     want = rows["drivermotor"] - inertia * rows["driverepsilon"]
     np.testing.assert_allclose(rows["drivertorque"], want, rtol=1e-9, atol=1e-9)
+
+
+def test_parquet_and_csv_from_one_pass(capsys, tmp_path: Path, monkeypatch):
+    pq = pytest.importorskip("pyarrow.parquet", reason="pyarrow is not installed")
+    from assur import _dynamics_files
+
+    monkeypatch.setattr(_dynamics_files, "SLICE", 100)  # four slices of the sweep
+    csv, parquet = tmp_path / "d.csv", tmp_path / "d.parquet"
+    argv = ["dynamics", WHITWORTH, "--delta", "0.05", "--forces"]
+    status, out, _ = run(capsys, *argv, "--csv", csv, "--parquet", parquet)
+    assert status == 0
+    read = pq.read_table(parquet)
+    assert pq.ParquetFile(parquet).num_row_groups == 4
+    names = csv.read_text().splitlines()[0].split(",")
+    assert read.column_names == names
+    values = np.loadtxt(csv, delimiter=",", skiprows=1)
+    for i, name in enumerate(names):  # the CSV's 12 significant digits
+        np.testing.assert_allclose(read.column(name).to_numpy(), values[:, i], 1e-11)
+    assert read.schema.field("reduced.inertia").metadata == {b"unit": b"kg m^2"}
+    assert read.schema.field("O2.Fx").metadata == {b"unit": b"N"}
+    size = f"360 rows x {len(names)} columns"
+    assert out == f"wrote {size} to {csv}\nwrote {size} to {parquet}\n"
+
+
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        (["--parquet", "-"], "--parquet -: a Parquet file is not text"),
+        (["--parquet", "d.csv"], "--parquet d.csv: a .csv name for Parquet"),
+        (
+            ["--csv", "t", "--parquet", "./t"],
+            "--parquet ./t: is the file of --csv too",
+        ),
+        (
+            ["--parquet", "s", "--startup-csv", "./s"],
+            "--startup-csv ./s: is the file of --parquet too",
+        ),
+    ],
+)
+def test_parquet_options_refused(capsys, options, message, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    line = one_error(capsys, "dynamics", FOUR_BAR, *options)
+    assert message in line
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_parquet_without_pyarrow_before_any_work(capsys, tmp_path, monkeypatch):
+    monkeypatch.setitem(sys.modules, "pyarrow", None)
+    monkeypatch.setitem(sys.modules, "pyarrow.parquet", None)
+    target = tmp_path / "d.parquet"
+    line = one_error(capsys, "dynamics", FOUR_BAR, "--parquet", target)
+    assert line.endswith(
+        f"--parquet {target}: writing Parquet needs pyarrow, which is not installed; "
+        "expected 'pip install pyarrow' (or 'pip install assur[parquet]')"
+    )
+    assert not target.exists()
 
 
 def test_csv_to_standard_output(capsys):
@@ -320,6 +377,10 @@ def _shell(tmp_path: Path, options: str) -> subprocess.CompletedProcess[str]:
         (
             "--csv /dev/stdout --json",
             "--csv /dev/stdout and --json: both write to standard output",
+        ),
+        (
+            "--parquet /dev/stdout --json",
+            "--parquet /dev/stdout: is standard output, where --json writes",
         ),
     ],
 )

@@ -161,9 +161,11 @@ RANKS = {
     "assur._cli_tables": 12,
     "assur._cli_sweep": 12,
     "assur.cli": 12,
-    # the dynamics command's parts: its options checked, the figures it gives
+    # the dynamics command's parts: its options checked, the figures it gives, its
+    # tables and files written
     "assur._dynamics_options": 12,
     "assur._dynamics_figures": 12,
+    "assur._dynamics_files": 12,
     "assur.dynamics_cli": 12,
     # the picture commands' parts (the cycle check keeps them apart): the files ->
     # the sweeps drawn -> assur plans
