@@ -145,8 +145,15 @@ class Columns(metaclass=ABCMeta):
 
         Its ``attrs["units"]`` gives each column's unit by name (``"N"``,
         ``"rad/s"``; angles in ``"deg"``), as the Parquet file's metadata does.
+
+        Raises
+        ------
+        ImportError
+            When pandas is not installed (or fails to import), saying what to do.
         """
-        import pandas as pd
+        from assur._optional import optional
+
+        pd = optional("pandas", "Table.to_pandas()", "study")
 
         frame = pd.DataFrame(dict(zip(self.columns, self.arrays(), strict=True)))
         frame.attrs["units"] = {name: self.column(name).unit for name in self.columns}

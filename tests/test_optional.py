@@ -1,0 +1,81 @@
+"""The optional dependencies: missing or broken, one message that says what to do."""
+
+from __future__ import annotations
+
+import sys
+
+import pytest
+
+import assur
+from assur._optional import optional
+from assur.cli import main
+
+from .conftest import EXAMPLES
+
+
+@pytest.fixture
+def broken(tmp_path, monkeypatch):
+    """A package ``brokenpkg`` whose import raises RuntimeError over two lines."""
+    folder = tmp_path / "brokenpkg"
+    folder.mkdir()
+    (folder / "__init__.py").write_text(
+        "raise RuntimeError('built for another numpy\\nsecond line')\n"
+    )
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.delitem(sys.modules, "brokenpkg", raising=False)
+    return "brokenpkg"
+
+
+def test_a_missing_package_names_the_extra(monkeypatch):
+    monkeypatch.setitem(sys.modules, "pandas", None)
+    with pytest.raises(ImportError) as info:
+        optional("pandas", "a study", "study")
+    assert str(info.value) == (
+        "a study needs pandas, which is not installed; expected 'pip install pandas' "
+        "(or 'pip install assur[study]')"
+    )
+
+
+def test_a_broken_package_says_what_it_raised(broken):
+    with pytest.raises(ImportError) as info:
+        optional(f"{broken}.sub", "writing Parquet", "parquet")
+    assert str(info.value) == (
+        "writing Parquet needs brokenpkg, which is installed but fails to import "
+        "(RuntimeError: built for another numpy); expected a working install, "
+        "'pip install --force-reinstall brokenpkg'"
+    )
+    assert isinstance(info.value.__cause__, RuntimeError)
+
+
+def test_to_pandas_without_pandas(monkeypatch):
+    monkeypatch.setitem(sys.modules, "pandas", None)
+    table = assur.kinematics(assur.catalog.four_bar(), [0.0])
+    with pytest.raises(ImportError, match=r"Table.to_pandas\(\) needs pandas, which"):
+        table.to_pandas()
+
+
+def test_broken_pyarrow_is_one_line_on_the_command_line(
+    broken, tmp_path, monkeypatch, capsys
+):
+    import importlib
+
+    real = importlib.import_module
+
+    def imported(name, *args):
+        # pyarrow, as a build for another numpy would fail
+        return real(name.replace("pyarrow", broken), *args)
+
+    monkeypatch.setattr(importlib, "import_module", imported)
+    target = tmp_path / "t.parquet"
+    path = EXAMPLES / "slider_crank_exercise.toml"
+    status = main(["forces", str(path), "--parquet", str(target)])
+    out, err = capsys.readouterr()
+    assert status == 2
+    assert out == ""
+    assert err == (
+        f"assur: error: {path}: --parquet {target}: writing Parquet needs pyarrow, "
+        "which is installed but fails to import (RuntimeError: built for another "
+        "numpy); expected a working install, 'pip install --force-reinstall "
+        "pyarrow'\n"
+    )
+    assert not target.exists()
