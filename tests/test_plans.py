@@ -776,3 +776,51 @@ def test_the_instant_centres_legend_says_what_squares_dots_and_lines_are():
     assert "relative centre of two links" in said
     assert "Kennedy: three centres on a line" in said
     assert said[0].startswith("I, driver")  # the groups' entries are kept
+
+
+def _segments(ax) -> list[np.ndarray]:
+    """Return the ends (2, 2) of every straight arrow on ``ax``, data coordinates."""
+    from matplotlib.patches import FancyArrowPatch
+
+    found = []
+    for p in ax.patches:
+        if isinstance(p, FancyArrowPatch) and p._posA_posB is not None:
+            found.append(np.asarray(p._posA_posB, dtype=float))
+    return found
+
+
+def _on_each_other(a: np.ndarray, b: np.ndarray, near: float) -> bool:
+    """Whether segments ``a`` and ``b`` lie on one line and share more than ``near``."""
+    u = (a[1] - a[0]) / np.hypot(*(a[1] - a[0]))
+    off = [abs(u[0] * (q - a[0])[1] - u[1] * (q - a[0])[0]) for q in b]
+    low, high = sorted(float(np.dot(u, q - a[0])) for q in b)
+    return max(off) <= near and min(high, np.hypot(*(a[1] - a[0]))) - max(low, 0) > near
+
+
+@pytest.mark.parametrize("angle", [0.0, 180.0])
+def test_a_dead_centre_s_polygon_draws_its_sides_apart(angle: float) -> None:
+    import matplotlib.pyplot as plt
+
+    # at a dead centre every side lies on the rod's line: the reaction was drawn
+    # over both inertia forces, and could be neither seen nor told apart
+    table = assur.forces(assur.load(EXAMPLES / "slider_crank_exercise.toml"), [angle])
+    fig = polygons.force_polygons(table)
+    try:
+        (ax,) = fig.axes
+        sides = _segments(ax)
+        assert len(sides) == 3
+        assert all(abs(s[1, 1] - s[0, 1]) < 1e-9 for s in sides)  # on one line
+        for i, a in enumerate(sides):
+            for b in sides[i + 1 :]:
+                assert not _on_each_other(a, b, 0.2), (a, b)
+        # the side moved aside is joined to the chain's corners by dotted lines
+        dotted = [ln.get_xydata() for ln in ax.lines if ln.get_linestyle() == ":"]
+        moved = [s for s in sides if abs(s[0, 1]) > 1e-9]
+        assert len(moved) == 1
+        assert len(dotted) == 2
+        tips = np.cumsum([[0.0, 0.0]] + [s[1] - s[0] for s in sides], axis=0)
+        ends = {tuple(np.round(d[0], 9)) for d in dotted}
+        assert ends <= {tuple(np.round(t, 9)) for t in tips}
+        np.testing.assert_allclose(tips[-1], 0.0, atol=1e-9)  # the polygon closes
+    finally:
+        plt.close(fig)

@@ -46,6 +46,19 @@ def _beside(
     return start, end
 
 
+def _joined(
+    ax: Any, start: np.ndarray, end: np.ndarray, ends: tuple[np.ndarray, np.ndarray]
+) -> None:
+    """Join an arrow moved aside (``ends``) to where it belongs (``start``, ``end``).
+
+    Two short dotted lines: the chain of arrows still reads tip to tail across the
+    step (:data:`BESIDE`) the move made. Nothing when it was not moved.
+    """
+    for at, moved in zip((start, end), ends, strict=True):
+        if float(np.hypot(*(moved - at))) > 0.0:
+            ax.plot(*np.transpose([at, moved]), ":", color="#555555", lw=0.8)
+
+
 def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> bool:
     """Draw an arrow from ``start`` to ``end`` (mm); return whether it was drawn.
 

@@ -21,7 +21,14 @@ from assur.explain._rates import _sides
 from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
 from assur.plotting._centres import draw_centres, relative_centres
-from assur.plotting._drawing import _arrow, _axes, _beside, _images_plot, _legend
+from assur.plotting._drawing import (
+    _arrow,
+    _axes,
+    _beside,
+    _images_plot,
+    _joined,
+    _legend,
+)
 from assur.plotting._geometry import _nice
 from assur.plotting._mathtext import _symbol
 from assur.plotting._numbers import number, quantity
@@ -97,6 +104,7 @@ def _chains(
                 if _arrow(ax, *ends, palette[arrow[2]], lw=1.8):
                     kinds[arrow[2]] = palette[arrow[2]]
                     drawn.append(ends)
+                    _joined(ax, arrow[0], arrow[1], ends)
             continue
         for side in _sides(pos, s, k)[:2]:
             tip = np.zeros(2)
@@ -114,6 +122,7 @@ def _chains(
                     if _arrow(ax, *ends, color, lw=1.8):
                         kinds[part] = color
                         drawn.append(ends)
+                        _joined(ax, tip, end, ends)
                 elif not any(np.hypot(*(term.value - v)) <= 1e-9 * size for v in shown):
                     _arrow(ax, tip, end, color, lw=1.8)
                     ax.annotate(_symbol(term.tex), end, fontsize=8, color=color)

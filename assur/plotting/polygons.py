@@ -18,7 +18,7 @@ from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
 from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
-from assur.plotting._drawing import _arrow, _legend
+from assur.plotting._drawing import _arrow, _beside, _joined, _legend
 from assur.plotting._mathtext import _symbol, reaction_symbol
 from assur.plotting._numbers import quantity
 from assur.plotting._placing import Name, place_names
@@ -107,14 +107,21 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> list[Name]:
     # the names go outside the polygon, away from its middle
     middle = tips[:-1].mean(axis=0)
     names = []
+    drawn: list[tuple[np.ndarray, np.ndarray]] = []
     for (label, _, color), tip, end in zip(sequence, tips[:-1], tips[1:], strict=True):
         # a side of round-off (a slider's inertia force at mid-stroke) is nothing:
         # neither drawn nor named, though the next side starts at its tip
         if float(np.hypot(*(end - tip))) <= TINY_SIDE * longest:
             continue
-        _arrow(ax, tip, end, color)
-        text = ax.annotate(label, tuple(0.5 * (tip + end)), color=color, fontsize=7)
-        names.append(Name(text, tip, end, middle))
+        # at a dead centre the sides lie on one line, each over the one before:
+        # moved aside, each can be seen and named
+        ends = _beside(drawn, tip, end)
+        _arrow(ax, *ends, color)
+        _joined(ax, tip, end, ends)
+        drawn.append(ends)
+        text = ax.annotate(label, tuple(0.5 * (ends[0] + ends[1])), color=color,
+                           fontsize=7)  # fmt: skip
+        names.append(Name(text, *ends, middle))
     tip = tips[-1]
     ax.plot([0], [0], "ko", ms=4)
     # room round the polygon for the names outside it
