@@ -287,7 +287,8 @@ def _balancing(table: Table, columns: list[Column]) -> dict[str, Array]:
 
 def _friction(table: Table, columns: list[Column]) -> dict[str, Array]:
     friction, n = _forces(table).friction, len(table)
-    return {c.name: full(friction.get(c.owner, 0.0), n) for c in columns}
+    # a joint at rest has no friction: 0, where the law's sign gave -0 ("-0.0")
+    return {c.name: full(friction.get(c.owner, 0.0), n) + 0.0 for c in columns}
 
 
 def _ideal(table: Table, columns: list[Column]) -> dict[str, Array]:

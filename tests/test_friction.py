@@ -493,6 +493,19 @@ def test_self_locking_on_the_command_line(tmp_path, capsys):
     assert "left out 9 positions" in capsys.readouterr().err
 
 
+def test_a_joint_at_rest_has_a_friction_of_plus_zero():
+    # the law's sign of a speed of 0 made "-0.0" in JSON for a crank at rest
+    m = assur.load(EXAMPLES / "slider_crank_friction.toml")
+    t = assur.forces(m, [60.0, 0.0], omega=[0.0, 5.0], epsilon=[10.0, 0.0])
+    names = [c for c in t.columns if c.endswith((".Mf", ".Ff"))]
+    assert len(names) == 4
+    for name in names:
+        assert t[name][0] == 0.0 and not np.signbit(t[name][0]), name
+    assert t["guide.Ff"][1] == 0.0 and not np.signbit(t["guide.Ff"][1])  # dead centre
+    written = t.to_dict()["rows"][0]
+    assert all(repr(written[name]) == "0.0" for name in names)
+
+
 def test_a_journal_of_radius_zero_has_no_friction_couple():
     # the file format allows radius >= 0: a pin of radius 0 has a friction circle of
     # radius 0, so the joint carries no couple, as if it had no friction (a radius
