@@ -499,9 +499,11 @@ def test_a_joint_at_rest_has_a_friction_of_plus_zero():
     t = assur.forces(m, [60.0, 0.0], omega=[0.0, 5.0], epsilon=[10.0, 0.0])
     names = [c for c in t.columns if c.endswith((".Mf", ".Ff"))]
     assert len(names) == 4
-    for name in names:
-        assert t[name][0] == 0.0 and not np.signbit(t[name][0]), name
-    assert t["guide.Ff"][1] == 0.0 and not np.signbit(t["guide.Ff"][1])  # dead centre
+    at_rest = np.array([t[name][0] for name in names])
+    assert (at_rest == 0.0).all()
+    assert not np.signbit(at_rest).any()
+    assert t["guide.Ff"][1] == 0.0  # at the dead centre the slider is at rest
+    assert not np.signbit(t["guide.Ff"][1])
     written = t.to_dict()["rows"][0]
     assert all(repr(written[name]) == "0.0" for name in names)
 
