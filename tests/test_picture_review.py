@@ -31,6 +31,13 @@ def _arrows(ax, color: str) -> list[float]:
     ]
 
 
+def _forces(ax) -> list[float]:
+    """Return the lengths of the lever's forces: inertia forces, gravity and loads."""
+    from assur.plotting._style import INERTIA_COLOR, LOAD_COLOR
+
+    return _arrows(ax, INERTIA_COLOR) + _arrows(ax, LOAD_COLOR)
+
+
 def test_the_lever_draws_couples_to_the_forces_scale() -> None:
     import matplotlib.pyplot as plt
 
@@ -45,7 +52,7 @@ def test_the_lever_draws_couples_to_the_forces_scale() -> None:
         couples = _arrows(ax, lever.COUPLE)
         assert couples
         assert max(couples) <= lever.MARK * (1 + 1e-9)
-        assert max(couples) < max(_arrows(ax, lever.FORCE))
+        assert max(couples) < max(_forces(ax))
     finally:
         plt.close(ax.figure)
 
@@ -59,7 +66,7 @@ def test_a_couple_larger_than_the_forces_sets_the_lever_s_scale() -> None:
     ax = lever.zhukovsky_lever(table)
     try:
         couples = _arrows(ax, lever.COUPLE)
-        forces = _arrows(ax, lever.FORCE)
+        forces = _forces(ax)
         longest = max(couples + forces)
         assert max(couples) == pytest.approx(longest)
         assert longest < 60.0  # mm of the drawing, as a force's longest is
@@ -206,5 +213,53 @@ def test_a_free_body_s_legend_names_only_the_loads_drawn(
     try:
         legend = [t.get_text() for t in ax.get_legend().get_texts()]
         assert ("gravity, external load" in legend) is loaded
+    finally:
+        plt.close(ax.figure)
+
+
+def test_the_lever_s_loads_in_the_colours_of_the_other_pictures() -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting._style import INERTIA_COLOR, LOAD_COLOR
+
+    # every load on the lever was red, the colour of reactions everywhere else
+    table = assur.forces(assur.load(EXAMPLES / "six_bar_lecture.toml"), [60.0])
+    ax = lever.zhukovsky_lever(table)
+    try:
+        from matplotlib.colors import to_hex
+
+        drawn = [p for p in ax.patches if hasattr(p, "points")]
+        colours = {to_hex(p.get_edgecolor()) for p in drawn}
+        # the weights in the loads' colour, the inertia forces in theirs, the
+        # couples' pairs in violet, the images' rays in grey
+        assert {INERTIA_COLOR, LOAD_COLOR, lever.COUPLE} <= colours
+        assert "#d62728" not in colours  # the reactions' red
+        legend = [t.get_text() for t in ax.get_legend().get_texts()]
+        assert legend[:2] == ["inertia force", "gravity, external load"]
+        names = {t.get_text(): to_hex(t.get_color()) for t in ax.texts}
+        weights = {c for text, c in names.items() if text.startswith("$m_")}
+        inertia = {c for text, c in names.items() if text.startswith("$\\vec F_{i,")}
+        assert weights == {LOAD_COLOR}
+        assert inertia == {INERTIA_COLOR}
+    finally:
+        plt.close(ax.figure)
+
+
+@pytest.mark.parametrize("angle", [0.0, 180.0])
+def test_a_dead_centre_s_lever_lists_its_shares_to_the_loads_decimals(
+    angle: float,
+) -> None:
+    import matplotlib.pyplot as plt
+
+    # at a dead centre every share is round-off (1e-13 N m): they were written
+    # "+0.000000000", eight decimals where the loads give three
+    table = assur.forces(assur.load(EXAMPLES / "slider_crank_exercise.toml"), [angle])
+    ax = lever.zhukovsky_lever(table)
+    try:
+        (listed,) = [t.get_text() for t in ax.texts if "balancing load" in t.get_text()]
+        lines = listed.splitlines()
+        shares = [line.rsplit(":", 1)[1].strip() for line in lines[2:-1]]
+        assert shares == ["+0.000"] * 3, lines
+        assert lines[-1] == "sum = balancing load: 0.00 N·m"
     finally:
         plt.close(ax.figure)

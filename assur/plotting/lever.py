@@ -24,7 +24,7 @@ from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend
 from assur.plotting._mathtext import _symbol
 from assur.plotting._numbers import quantity
 from assur.plotting._placing import Name, place_names
-from assur.plotting._style import literal
+from assur.plotting._style import INERTIA_COLOR, LOAD_COLOR, literal, load_colour
 from assur.plotting.plans import (
     _perp,
     _pos,
@@ -159,28 +159,36 @@ def zhukovsky_lever(
     # share of 0.1 % as the biggest arrow; every arrow sets it (a resisting
     # torque's pair, larger than the forces, ran 125 mm off a 40 mm lever)
     fmu = _scale([f for _, f, *_ in arrows]) * 2.0
+    # each force in its colour of the other pictures (inertia, gravity or load)
+    colours = {_symbol(t.load.tex): load_colour(t.load.tex) for t in terms}
     marked = False
+    used: dict[str, None] = {}
     for at, force, label, couple in arrows:
         tip, mark = _tip(at / mu, force / fmu, couple)
         marked |= mark
         # a load of nothing (a crank's inertia force at its centre) gets no arrow
         # and no name: its share, nothing, is listed
-        color = COUPLE if couple else FORCE
+        color = COUPLE if couple else colours.get(label, LOAD_COLOR)
         if _arrow(ax, at / mu, tip, color, ls=":" if mark else "-"):
             text = ax.annotate(label, tuple(tip), fontsize=7, color=color)
             names.append(Name(text, at / mu, tip))
+            used[color] = None
     # the shares add up to the balancing load: their sum is the one written
     balancing = math.fsum(share for _, share, _ in shares)
     _list_terms(ax, apart, d.kind, shares, (speed, balancing), unit_speed)
     per = " per unit speed of the driver" if unit_speed else ""
     mu_unit = "(m/s)/mm" if not unit_speed else "m/mm" if d.kind == "R" else "1/mm"
-    entries = [(f"force, 1 mm = {quantity(fmu, 'N', 6)}", FORCE)]
-    if any(couple for *_, couple in arrows):
+    kinds = {INERTIA_COLOR: "inertia force", LOAD_COLOR: "gravity, external load"}
+    entries = [(text, c) for c, text in kinds.items() if c in used]
+    if COUPLE in used:
         text = "couple M as ±M/l at two joints, same scale"
         if marked:
             text += f";\ndotted: below the scale, drawn {MARK:g} mm long"
         entries.append((text, COUPLE))
-    note = f"lever: μv = {quantity(mu, mu_unit, 6)}{per},\nturned 90°"
+    note = (
+        f"forces: 1 mm = {quantity(fmu, 'N', 6)}\n"
+        f"lever: μv = {quantity(mu, mu_unit, 6)}{per},\nturned 90°"
+    )
     _legend(ax, entries, note, beside=True)
     # room round the lever for the names; each beside its arrow or image, clear
     # of the other names, arrows and the images' rays from the pole
@@ -190,10 +198,10 @@ def zhukovsky_lever(
     return ax
 
 
-FORCE = "#d62728"
-"""The colour of a force on the lever."""
 COUPLE = "#9467bd"
 """The colour of a couple's pair of forces on the lever."""
+ROUND_OFF = 1e-9
+"""Shares all below this times the largest a load could have are round-off."""
 MARK = 2.0
 """Length, mm, a couple's force shorter than this at the force scale is drawn."""
 PAIR_GAP = 1e-6
@@ -326,8 +334,16 @@ def _list_terms(
     unit, rate, speed_unit = ("N·m", "ω", "rad/s") if kind == "R" else ("N", "v", "m/s")
     given = "per unit speed" if unit_speed else f"{rate} = {speed:g} {speed_unit}"
     big = max([abs(balancing)] + [abs(x) for _, x, _ in shares])
-    # four decimals where every share is nothing (a dead centre), not hundreds
-    places = 4 if big == 0 else min(8, max(0, 4 - math.floor(math.log10(big))))
+    # what a share could be, its load along its point's velocity: at a dead centre
+    # every share is round-off of it (1e-13 N m), written to the decimals of the
+    # loads, not to eight
+    reach = max([abs(x) for _, x, t in shares if t is None] + [
+        (abs(t.load.couple) * abs(t.omega) if t.couple
+         else math.hypot(*t.load.force) * math.hypot(*t.velocity)) / abs(speed)
+        for _, _, t in shares if t is not None
+    ])  # fmt: skip
+    size = big if big > ROUND_OFF * reach else reach
+    places = 4 if size == 0 else min(8, max(0, 4 - math.floor(math.log10(size))))
     lines = [
         f"each load's moment about the pole / {rate}",
         f"({given}; a couple: -M·$\\omega_L$/{rate}), {unit}:",
