@@ -263,3 +263,32 @@ def test_a_dead_centre_s_lever_lists_its_shares_to_the_loads_decimals(
         assert lines[-1] == "sum = balancing load: 0.00 N·m"
     finally:
         plt.close(ax.figure)
+
+
+@pytest.mark.parametrize("angle", [0.0, 180.0])
+def test_forces_on_one_line_at_one_joint_are_drawn_apart(angle: float) -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import draw_free_body
+    from assur.plotting._arrows import APART, _on
+    from assur.plotting._context import _context
+
+    from .test_plans import _segments
+
+    # at a dead centre the slider's inertia force lay under the rod's reaction on
+    # the slider's other side (dashed, on the rod): one black arrow not seen
+    table = assur.forces(assur.load(EXAMPLES / "slider_crank_exercise.toml"), [angle])
+    ax = draw_free_body(table, 0)
+    try:
+        r = _context(table).r
+        arrows = _segments(ax)
+        assert len(arrows) == 5  # at B, the inertia forces, the reaction at C twice
+        for i, a in enumerate(arrows):
+            u = (a[1] - a[0]) / np.hypot(*(a[1] - a[0]))
+            length = float(np.hypot(*(a[1] - a[0])))
+            for b in arrows[i + 1 :]:
+                assert not _on(u, a[0], length, b[0], b[1], 0.1 * r), (a, b)
+        # each moved no farther than a step from its load's line
+        assert max(abs(a[0, 1]) for a in arrows) == pytest.approx(APART * r)
+    finally:
+        plt.close(ax.figure)

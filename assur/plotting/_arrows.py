@@ -36,6 +36,10 @@ INTERNAL_DASH = (0, (3.0, 1.6))
 """The dash of a reaction inside a group, drawn on both of its pair's links."""
 ARROW_ZORDER = 6
 """Force arrows lie above the links (<= 3), the joints (4) and the paths (5)."""
+APART = 0.7
+"""How far apart, in joint radii, forces on one line at one place are drawn: at a
+dead centre a slider's inertia force and the rod's reaction on it lie on each other
+(and the reaction's other side, on the rod)."""
 
 
 def _halo(lw: float) -> list[Any]:
@@ -61,13 +65,56 @@ def _draw_arrows(
     # a couple's arc grows with it: one of 0.0005 N m beside 0.16 N m was drawn
     # as large (no scale gives a couple a length; the size tells which matter)
     largest = max([abs(a.couple or 0.0) for a in arrows] + [0.0])
+    drawn: list[tuple[np.ndarray, np.ndarray]] = []
     for a in arrows:
         if a.force is not None and float(np.hypot(*a.force)) > least:
-            seen.append(_draw_force(ax, ctx, a, a.force, scale, text))
+            tip = a.at + a.force / (scale * 100.0)
+            start = _apart(drawn, a.at, tip, APART * ctx.r)
+            drawn.append((start, start + tip - a.at))
+            seen.append(_draw_force(ax, ctx, a, a.force, scale, text, start))
         if a.couple is not None and abs(a.couple) > tiny:
             share = abs(a.couple) / largest
             seen += _draw_couple(ax, ctx, a, a.couple, text, share)
     return seen
+
+
+def _apart(
+    drawn: list[tuple[np.ndarray, np.ndarray]],
+    start: np.ndarray,
+    tip: np.ndarray,
+    step: float,
+) -> np.ndarray:
+    """Return where to start an arrow ``start``-``tip`` (m) clear of those ``drawn``.
+
+    An arrow that lies on one drawn (on its line within a fifth of ``step``, along
+    more than that) is moved sideways by ``step``, to one side then the other,
+    farther each time, until it lies on none.
+    """
+    length = float(np.hypot(*(tip - start)))
+    if length == 0.0:
+        return start
+    u = (tip - start) / length
+    side = np.array([-u[1], u[0]])
+    near = 0.2 * step
+    for k in (0, 1, -1, 2, -2, 3, -3):
+        at = start + k * step * side
+        if not any(_on(u, at, length, a, b, near) for a, b in drawn):
+            return at
+    return start
+
+
+def _on(
+    u: np.ndarray,
+    at: np.ndarray,
+    length: float,
+    a: np.ndarray,
+    b: np.ndarray,
+    near: float,
+) -> bool:
+    """Whether the segment ``a``-``b`` lies on the arrow from ``at`` along ``u``."""
+    off = [abs(float(u[0] * (q - at)[1] - u[1] * (q - at)[0])) for q in (a, b)]
+    low, high = sorted(float(np.dot(u, q - at)) for q in (a, b))
+    return max(off) <= near and min(high, length) - max(low, 0.0) > near
 
 
 def _draw_force(
@@ -77,15 +124,21 @@ def _draw_force(
     force: np.ndarray,
     scale: float,
     text: str | None,
+    start: np.ndarray | None = None,
 ) -> np.ndarray:
-    """Draw the force of ``a`` (``force``) as a straight arrow; return its tip."""
+    """Draw the force of ``a`` (``force``) as a straight arrow; return its tip.
+
+    ``start`` is where the arrow starts, if not at the load's point (moved
+    sideways off another, :func:`_apart`).
+    """
     mag = float(np.hypot(*force))
-    tip = a.at + force / (scale * 100.0)
+    at = a.at if start is None else start
+    tip = at + force / (scale * 100.0)
     # a short arrow's head shrinks with it: its direction stays readable
     dash = INTERNAL_DASH if a.kind in ("internal", "opposite") else "solid"
     ax.add_patch(
         fitted_arrow(
-            [a.at, tip], 13, color=a.color, lw=1.7, zorder=ARROW_ZORDER,
+            [at, tip], 13, color=a.color, lw=1.7, zorder=ARROW_ZORDER,
             path_effects=_halo(1.7), linestyle=dash,
         )
     )  # fmt: skip
@@ -106,7 +159,7 @@ def _draw_force(
             zorder=7,
             bbox=LABEL_BOX,
         )
-        name_load(label, a.at, tip)
+        name_load(label, at, tip)
     return tip
 
 
