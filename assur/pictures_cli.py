@@ -213,16 +213,12 @@ def _cmd_plot(args: argparse.Namespace) -> int:
             )
             raise UsageError(msg)
         table = _table(mech, position, True)
-        with _figures() as plt, _scale_option(args.scale):
-            fig, ax = plt.subplots(figsize=(9.0, 6.5), layout="constrained")
-            draw_free_body(
-                table,
-                args.group - 1,
-                ax=ax,
-                scale=args.scale,
-                labels=not args.no_labels,
+        with _figures(), _scale_option(args.scale):
+            # its own figure: a flat group's is made lower (plotting._axes.fit_height)
+            ax = draw_free_body(
+                table, args.group - 1, scale=args.scale, labels=not args.no_labels
             )
-            _save(fig, output, dpi)
+            _save(ax.figure, output, dpi)
         _wrote(args, path_text(output))
         return 0
     table = _table(mech, position, args.forces)

@@ -292,3 +292,30 @@ def test_forces_on_one_line_at_one_joint_are_drawn_apart(angle: float) -> None:
         assert max(abs(a[0, 1]) for a in arrows) == pytest.approx(APART * r)
     finally:
         plt.close(ax.figure)
+
+
+def test_a_flat_group_s_free_body_is_drawn_lower() -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import draw_free_body
+
+    # the slider-crank's group lies along the guide at 0 deg: its free body was a
+    # 9 x 6.5 in picture, two thirds of it empty above and below the rod
+    flat = assur.forces(assur.load(EXAMPLES / "slider_crank_exercise.toml"), [0.0])
+    tall = assur.forces(assur.load(EXAMPLES / "six_bar_lecture.toml"), [30.0])
+    sizes = []
+    for table in (flat, tall):
+        ax = draw_free_body(table, 0)
+        sizes.append(tuple(ax.figure.get_size_inches()))
+        # the view still fills the axes, the group inside it
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        box = ax.get_window_extent()
+        assert (x1 - x0) / (y1 - y0) == pytest.approx(box.width / box.height, 0.02)
+        plt.close(ax.figure)
+    assert sizes[0] == (9.0, 3.6)
+    assert sizes[1] == (9.0, 6.5)
+    # a figure of the caller's keeps its size
+    fig, ax = plt.subplots(figsize=(8.0, 6.0), layout="constrained")
+    draw_free_body(flat, 0, ax=ax)
+    assert tuple(fig.get_size_inches()) == (8.0, 6.0)
+    plt.close(fig)

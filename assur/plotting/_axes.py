@@ -113,6 +113,27 @@ def labelled_legend(ax: Any, **kwargs: Any) -> None:
         ax.legend(**kwargs)
 
 
+def fit_height(ax: Any, least: float = 3.6) -> None:
+    """Make the figure of a flat equal-aspect view (a group lying along a line) lower.
+
+    The axes keep their width; the figure loses the height the view would have
+    filled with nothing, down to ``least`` inches (room for a legend beside and
+    the loads' names above and below). For a figure made for ``ax`` alone: a
+    caller's figure keeps its size.
+    """
+    from assur.plotting._bars import settled_renderer
+
+    settled_renderer(ax)
+    fig = ax.figure
+    room = ax.get_position(original=True).transformed(fig.transSubfigure)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    wanted = room.width * (y1 - y0) / (x1 - x0)  # pixels
+    spare = (room.height - wanted) / fig.dpi  # inches
+    width, height = fig.get_size_inches()
+    if spare > 0.0 and height > least:
+        fig.set_size_inches(width, max(least, height - spare), forward=False)
+
+
 def fill_box(ax: Any) -> None:
     """Widen (or heighten) the view of equal-aspect ``ax`` to fill the room laid out.
 

@@ -18,7 +18,7 @@ from assur._vec import integer
 from assur.errors import ModelError, UsageError
 from assur.model import GROUND
 from assur.plotting._arrows import INTERNAL_DASH, _draw_arrows
-from assur.plotting._axes import _frame_axes, _legend, _new_axes, fill_box
+from assur.plotting._axes import _frame_axes, _legend, _new_axes, fill_box, fit_height
 from assur.plotting._bars import clear_bars
 from assur.plotting._context import (
     _Context,
@@ -204,6 +204,7 @@ def draw_free_body(
     pose = ctx.pose(row)
     group = ctx.plan.groups[group_index]
     bodies = {ctx.plan.body(x) for x in group.links}
+    own = ax is None
     ax = _new_axes(ax, (9.0, 6.5))
     seen = _draw_mechanism(ax, ctx, pose, bodies, labels=labels, frame=False)
     arrows = _free_body_arrows(table, group_index, row)
@@ -243,6 +244,8 @@ def draw_free_body(
     ):
         if words.get_text() == INTERNAL_LEGEND:
             handle.set_linestyle(INTERNAL_DASH)  # the entry shows its dash
+    if own:
+        fit_height(ax)
     # the loads' names, with their values, need the room beside a tall group
     fill_box(ax)
     if labels:
