@@ -19,6 +19,7 @@ from assur._cli_common import (
     check_table_suffix,
     is_stdout,
 )
+from assur._landing import together
 from assur._output import (
     StdoutError,
     finishing,
@@ -91,7 +92,8 @@ def _write_tables(
     rows = 0
     names: tuple[str, ...] = ()
     try:
-        with contextlib.ExitStack() as stack:
+        # the files land together at the end, --csv's and --parquet's
+        with together(), contextlib.ExitStack() as stack:
             writers: list[Any] = []
             for part in parts:
                 table = part.table

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import bar_shown, quiet
+from assur._landing import together
 from assur._output import finishing, output_path, path_text, write_all
 from assur._progress import BAR_DELAY, progress
 from assur._tableio import CsvWriter, ParquetWriter
@@ -56,7 +57,7 @@ def write_files(
     ``--parquet PATH``, both from one pass over the sweep.
     """
     written = []
-    with contextlib.ExitStack() as stack:
+    with together(), contextlib.ExitStack() as stack:
         for path, text, count, columns in files:
             temporary = stack.enter_context(output_path(path))
             with open(temporary, "wb") as stream_:

@@ -14,11 +14,18 @@ import contextlib
 import errno
 import os
 import stat
-import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
-from assur._targets import _not_a_folder, _target, a_folder, path_text
+from assur._landing import defer
+from assur._stdout import StdoutError, stdout_writer, write_all, write_stdout
+from assur._targets import (
+    _not_a_folder,
+    _target,
+    a_folder,
+    path_text,
+    standard_output,
+)
 from assur.errors import AssurError, OutputError
 
 if TYPE_CHECKING:
@@ -73,86 +80,6 @@ def write_bytes(path: str | os.PathLike[str], data: bytes) -> None:
         write_all(stream, data)
 
 
-def write_all(stream: Any, data: bytes) -> None:
-    """Write every byte of ``data`` to a binary stream, or raise its OSError.
-
-    A buffered stream may write part of a large block and drop the rest when the
-    disk fills up; writing again what is left makes the fault show.
-    """
-    view = memoryview(data)
-    while view:
-        count = stream.write(view)
-        if not count:
-            msg = "the stream took no data"
-            raise OSError(errno.EIO, msg)
-        view = view[count:]
-    stream.flush()
-
-
-def write_stdout(text: str) -> None:
-    """Write ``text`` to standard output, all of it or an OSError.
-
-    Characters that its encoding cannot show are written as backslash escapes.
-    """
-    stream = sys.stdout
-    buffer = getattr(stream, "buffer", None)
-    if buffer is None:  # a notebook's stream: no bytes below
-        stream.write(text)
-        return
-    stream.flush()
-    write_all(buffer, text.encode(stream.encoding or "utf-8", "backslashreplace"))
-
-
-class StdoutError(Exception):
-    """A write to standard output failed (``error``, an OSError).
-
-    Not an OSError itself, so that :func:`output_path` around it does not take the
-    fault for its own file's; the caller raises ``error`` once the files are cleaned
-    up.
-    """
-
-    def __init__(self, error: OSError) -> None:
-        super().__init__(str(error))
-        self.error = error
-
-
-def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
-    """Return ``write(bytes)`` to standard output and the ``encode(text)`` it needs.
-
-    Text that the output's encoding cannot show (a column's name in Cyrillic on an
-    ASCII output) raises :class:`~assur.errors.OutputError`: escaped, the names in
-    the table would change without a word. A failed write raises
-    :class:`StdoutError`.
-    """
-    stream = sys.stdout
-    encoding = stream.encoding or "utf-8"
-    buffer = getattr(stream, "buffer", None)
-
-    def encode(text: str) -> bytes:
-        try:
-            return text.encode(encoding)
-        except UnicodeEncodeError as err:
-            bad = err.object[err.start : err.end]
-            msg = (
-                f"standard output: its encoding ({encoding}) cannot write {bad!r} "
-                "of the table; expected a file (written in UTF-8) or standard "
-                "output in UTF-8 (PYTHONIOENCODING=utf-8)"
-            )
-            raise OutputError(msg) from None
-
-    def write(data: bytes) -> None:
-        try:
-            if buffer is None:  # a notebook's stream: no bytes below
-                stream.write(data.decode(encoding))
-            else:
-                write_all(buffer, data)
-        except OSError as err:
-            raise StdoutError(err) from err
-
-    stream.flush()
-    return write, encode
-
-
 @contextlib.contextmanager
 def finishing(writer: Any) -> Iterator[Any]:
     """Close ``writer`` when the block succeeds; abort it (if it can) when not."""
@@ -176,9 +103,10 @@ def output_path(
     For a regular file (or a new one) the path is a temporary file beside ``path``
     with the same suffix, so writers that choose the format by the suffix
     (matplotlib's ``savefig``, GIF writers) still do; when the block ends without
-    an exception the temporary file replaces ``path``, otherwise it is removed and
-    ``path`` is left as it was. A FIFO, a device or another target that is not a
-    regular file is yielded as it is and written in place.
+    an exception the temporary file replaces ``path`` (inside
+    :func:`assur._landing.together`, with the other files of its set), otherwise it
+    is removed and ``path`` is left as it was. A FIFO, a device or another target
+    that is not a regular file is yielded as it is and written in place.
 
     Parameters
     ----------
@@ -209,7 +137,8 @@ def output_path(
         with _reported(where, any_error):
             yield temporary
             _sync(temporary)
-            os.replace(temporary, target)
+            if not defer(temporary, target, where):  # else it lands with its set
+                os.replace(temporary, target)
     except BaseException:
         _remove(temporary)
         raise
@@ -343,15 +272,6 @@ def _remove(path: Path) -> None:
     """Remove a temporary file, if it is still there."""
     with contextlib.suppress(OSError):
         os.unlink(path)
-
-
-def standard_output(target: str | os.PathLike[str]) -> bool:
-    """Whether ``target`` is the file standard output writes to (``/dev/stdout``)."""
-    try:
-        here, there = os.fstat(sys.stdout.fileno()), os.stat(target)
-    except (AttributeError, OSError, ValueError):
-        return False
-    return (here.st_dev, here.st_ino) == (there.st_dev, there.st_ino)
 
 
 @contextlib.contextmanager

@@ -36,10 +36,17 @@ GIF_DPI_RANGE = (10.0, 300.0)
 
 
 def _pyplot() -> Any:
-    """Return pyplot on the Agg backend: the command line never opens a window."""
+    """Return pyplot on the Agg backend: the command line never opens a window.
+
+    Its text is set without LaTeX, whatever the user's matplotlibrc says.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
+    # the pictures' text is matplotlib's own mathtext: a matplotlibrc asking for
+    # LaTeX (text.usetex) needs a LaTeX the machine may not have, and failed with
+    # a traceback from deep inside a drawing
+    matplotlib.rcParams["text.usetex"] = False
     import matplotlib.pyplot as plt
 
     return plt

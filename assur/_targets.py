@@ -17,7 +17,14 @@ from assur.errors import OutputError
 if TYPE_CHECKING:
     from pathlib import Path
 
-__all__ = ["a_folder", "folder_name", "missing_folder", "path_text", "stdout_is"]
+__all__ = [
+    "a_folder",
+    "folder_name",
+    "missing_folder",
+    "path_text",
+    "standard_output",
+    "stdout_is",
+]
 
 PROCESS_FILES = "/proc/"
 """The folder whose entries name a process's open files (``/dev/stdout`` leads there).
@@ -143,3 +150,12 @@ def stdout_is(path: Any) -> bool:
         return False  # no standard output, a stream without a file, no such file
     same = (out.st_dev, out.st_ino) == (found.st_dev, found.st_ino)
     return same and stat.S_ISREG(out.st_mode)
+
+
+def standard_output(target: str | os.PathLike[str]) -> bool:
+    """Whether ``target`` is the file standard output writes to (``/dev/stdout``)."""
+    try:
+        here, there = os.fstat(sys.stdout.fileno()), os.stat(target)
+    except (AttributeError, OSError, ValueError):
+        return False
+    return (here.st_dev, here.st_ino) == (there.st_dev, there.st_ino)

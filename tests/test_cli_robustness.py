@@ -661,6 +661,27 @@ def test_an_empty_mechanism_file_name_is_refused(capsys):
     )
 
 
+@pytest.mark.parametrize("option", ["--csv", "--json"])
+def test_standard_output_in_utf16_is_refused(tmp_path: Path, option: str) -> None:
+    # the header came out in UTF-16 (with its mark), the rows' numbers in ASCII:
+    # a stream that reads as neither
+    argv = ["forces", str(EXAMPLES / "four_bar.toml"), "--angles", "0:10:5", option]
+    result = subprocess.run(
+        [sys.executable, "-m", "assur", *argv, *(["-"] if option == "--csv" else [])],
+        cwd=tmp_path,
+        env=subprocess_env(PYTHONIOENCODING="utf-16"),
+        capture_output=True,
+        timeout=120,
+        check=False,
+    )
+    assert (result.returncode, result.stdout) == (2, b"")
+    assert result.stderr.decode("utf-16") == (
+        "assur: error: standard output: its encoding (utf-16) does not write numbers "
+        "as ASCII; expected a file (written in UTF-8) or standard output in UTF-8 "
+        "(PYTHONIOENCODING=utf-8)\n"
+    )
+
+
 def test_a_name_standard_output_cannot_write_is_one_error(tmp_path: Path) -> None:
     # on an ASCII output the CSV's names came out as \u0448..., changed silently
     text = (EXAMPLES / "four_bar.toml").read_text()

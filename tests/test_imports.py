@@ -119,6 +119,8 @@ RANKS = {
     "assur._output": 10,
     # where an output goes: the path named, the file it leads to
     "assur._targets": 10,
+    "assur._landing": 10,
+    "assur._stdout": 10,
     # long sweeps a slice at a time: the command line's tables, long studies
     "assur._sliced": 10,
     "assur._skipped": 10,

@@ -77,6 +77,21 @@ def test_plot_png(
 
 
 @pytest.mark.pictures
+def test_a_matplotlibrc_asking_for_latex_is_not_followed(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    # text.usetex in a matplotlibrc made every picture command fail with a
+    # traceback where no LaTeX is installed (and drew in another style where it is)
+    out = tmp_path / "m.png"
+    with matplotlib.rc_context({"text.usetex": True}):
+        status, _, err = _run(capsys, "plot", SLIDER, "--forces", "-o", str(out))
+        assert status == 0, err
+        assert err == ""
+        assert matplotlib.rcParams["text.usetex"] is False
+    assert _png(out)[0] > 600
+
+
+@pytest.mark.pictures
 def test_plot_forces_at_an_angle(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:

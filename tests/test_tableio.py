@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import assur
-from assur import _output, _tableio
+from assur import _output, _stdout, _tableio
 from assur.errors import OutputError
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
@@ -200,7 +200,7 @@ def test_outputs_name_their_own_file(tmp_path, monkeypatch):
     def broken(stream, data):
         raise BrokenPipeError(errno.EPIPE, "Broken pipe")
 
-    monkeypatch.setattr(_output, "write_all", broken)
+    monkeypatch.setattr(_stdout, "write_all", broken)
     write, _ = _output.stdout_writer()
     with pytest.raises(_output.StdoutError) as caught:
         write(b"x")
