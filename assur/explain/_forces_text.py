@@ -27,13 +27,14 @@ from assur.explain._loads_text import (
     Load,
     components,
     force_lines,
+    joint_text,
     link_loads,
     moment_line,
     total,
 )
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position, cross, perp, unit
-from assur.explain._tex import cramer, name, num, par, plain, segment, text, vec
+from assur.explain._tex import cramer, name, num, par, plain, segment, vec
 from assur.explain._tex import unit as unit_text
 from assur.explain._triad_text import system_blocks
 from assur.groups._dyad import DyadSolver
@@ -353,17 +354,8 @@ def _totals(pos: Position, rec: Equilibrium) -> list[str]:
                 f",\\quad M_{{{name(pair.name)}}} = "
                 f"{num(float(np.ravel(r.couple)[0]))}\\ \\mathrm{{N\\,m}}"
             )
-        lines.append(line + f"\\quad \\text{{({_joint(pos, pair.name)})}}")
+        lines.append(line + f"\\quad \\text{{({joint_text(pos, pair.name)})}}")
     return lines
-
-
-def _joint(pos: Position, pair: str) -> str:
-    r"""Return which joint a pair is, for ``\text``: a slot's two pairs told apart."""
-    if pair.endswith("~pin"):
-        return f"joint {text(pair)}: the pin in the block"
-    if f"{pair}~pin" in pos.plan.pairs:
-        return f"joint {text(pair)}: the block in the slot"
-    return f"joint {text(pair)}"
 
 
 def forces_blocks(pos: Position) -> list[Block]:

@@ -28,6 +28,7 @@ __all__ = [
     "force_lines",
     "friction_load",
     "inertia_load",
+    "joint_text",
     "link_loads",
     "moment",
     "moment_line",
@@ -365,3 +366,12 @@ def force_lines(loads: list[Load]) -> list[str]:
             text += f",\\quad {words}"
         lines.append(text)
     return lines
+
+
+def joint_text(pos: Position, pair: str) -> str:
+    r"""Return which joint a pair is, for ``\text``: a slot's two pairs told apart."""
+    if pair.endswith("~pin"):
+        return f"joint {text(pair)}: the pin in the block"
+    if f"{pair}~pin" in pos.plan.pairs:
+        return f"joint {text(pair)}: the block in the slot"
+    return f"joint {text(pair)}"
