@@ -47,15 +47,20 @@ def file_data(text: str, json_format: bool) -> Any:
     return data
 
 
-def _decoded(data: bytes) -> str:
-    """Return a mechanism file's bytes as text (UTF-8, a byte-order mark welcome)."""
+def _decoded(data: bytes, expected: str = "a TOML or JSON file saved as UTF-8") -> str:
+    """Return a file's bytes as text (UTF-8, a byte-order mark welcome).
+
+    ``expected`` says what the file should be, in the message of a fault.
+    """
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as err:
-        msg = (
-            f"not UTF-8 text (byte {err.start} cannot be decoded); expected a TOML or "
-            "JSON file saved as UTF-8"
-        )
+        if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
+            # an editor's "Unicode" is UTF-16: its mark says so at once
+            found = "UTF-16 text (it starts with UTF-16's byte-order mark)"
+        else:
+            found = f"not UTF-8 text (byte {err.start} cannot be decoded)"
+        msg = f"{found}; expected {expected}"
         raise ModelError(msg) from err
 
 

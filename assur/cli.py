@@ -336,6 +336,9 @@ NOTE_SUFFIXES = (".md", ".markdown", ".html", ".htm", ".tex")
 def _cmd_explain(args: argparse.Namespace) -> int:
     from assur.explain import explain, read_answers
 
+    if args.answers is not None and str(args.answers) == "-":
+        msg = "--answers -: standard input is not read for answers; expected a file"
+        raise UsageError(msg)
     if args.output is not None and is_stdout(args.output):
         args.output = None  # standard output (- or /dev/stdout): the note's Markdown
     if args.output is not None:

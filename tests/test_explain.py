@@ -684,8 +684,30 @@ def test_given_answers_round_off_nan_and_dotted_keys(tmp_path):
         with pytest.raises(assur.ModelError, match="expected a finite number"):
             read_answers(path)
     path.write_bytes(b'[answers]\n"B.x" = 1 # \xff\n')
-    with pytest.raises(assur.ModelError, match="cannot read the answers"):
+    with pytest.raises(assur.ModelError) as caught:
         read_answers(path)
+    # as the mechanism file's fault is told, not in the codec's words
+    assert str(caught.value) == (
+        f"{path}: not UTF-8 text (byte 22 cannot be decoded); expected a TOML file "
+        "of given answers saved as UTF-8"
+    )
+    path.write_bytes('[answers]\n"B.x" = 1\n'.encode("utf-16"))
+    with pytest.raises(assur.ModelError, match=r"UTF-16 text \(it starts with"):
+        read_answers(path)
+    path.write_text("[answers]\n")
+    with pytest.raises(assur.ModelError, match=r"\[answers\] is empty; expected"):
+        read_answers(path)
+
+
+def test_answers_from_standard_input_are_refused(capsys) -> None:
+    from assur.cli import main
+
+    status = main(["explain", str(EXERCISE), "--angle", "45", "--answers", "-"])
+    assert status == 2
+    assert capsys.readouterr().err == (
+        f"assur: error: {EXERCISE}: --answers -: standard input is not read for "
+        "answers; expected a file\n"
+    )
 
 
 def test_the_note_says_whether_the_balancing_torque_drives_or_brakes() -> None:

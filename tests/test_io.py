@@ -495,3 +495,26 @@ def test_an_empty_file_is_said_to_be_empty(tmp_path, capsys, name, text):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1
     assert err[0].startswith(f"assur: error: {path}: the file has no entries")
+
+
+def test_a_mechanism_file_in_utf16_is_named_so(tmp_path):
+    # "byte 0 cannot be decoded" left the user to guess that their editor had
+    # saved the file as "Unicode"
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    for encoding in ("utf-16", "utf-16-be"):
+        path = tmp_path / f"{encoding}.toml"
+        data = text.encode(encoding)
+        path.write_bytes(data if data[:2] in (b"\xff\xfe", b"\xfe\xff") else
+                         b"\xfe\xff" + data)  # fmt: skip
+        with pytest.raises(assur.ModelError) as caught:
+            assur.load(path)
+        assert str(caught.value) == (
+            f"{path}: UTF-16 text (it starts with UTF-16's byte-order mark); "
+            "expected a TOML or JSON file saved as UTF-8"
+        )
+    # UTF-8 with its mark is read
+    (tmp_path / "bom.toml").write_bytes(text.encode("utf-8-sig"))
+    assert (
+        assur.load(tmp_path / "bom.toml").name
+        == assur.load(EXAMPLES / "four_bar.toml").name
+    )

@@ -45,6 +45,7 @@ def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
     """
     import tomllib
 
+    from assur._file_syntax import _decoded
     from assur.io import read_capped
 
     where = os.fspath(path)
@@ -56,13 +57,21 @@ def read_answers(path: str | os.PathLike[str]) -> tuple[dict[str, float], str]:
         "a file of given answers (a few lines of TOML)",
     )
     try:
-        data = tomllib.loads(raw.decode("utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as err:
+        text = _decoded(raw, "a TOML file of given answers saved as UTF-8")
+    except ModelError as err:
+        msg = f"{where}: {err}"
+        raise ModelError(msg) from err
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as err:
         msg = f"{where}: cannot read the answers ({err})"
         raise ModelError(msg) from err
     table = data.get("answers")
-    if not isinstance(table, dict) or not table:
+    if not isinstance(table, dict):
         msg = f"{where}: expected a table [answers] of quantity = value"
+        raise ModelError(msg)
+    if not table:
+        msg = f"{where}: [answers] is empty; expected lines of quantity = value"
         raise ModelError(msg)
     answers = {}
     for key, value in _flat(table).items():
