@@ -8,8 +8,6 @@ from __future__ import annotations
 
 from typing import Any
 
-from assur.plotting._style import titled
-
 __all__ = ["motion_figure", "slides_figure"]
 
 
@@ -40,6 +38,10 @@ def _panels(
 
 def motion_figure(plotting: Any, plt: Any, table: Any) -> Any:
     """Return the figure of the links' angles, angular speeds and accelerations."""
+    # imported here: assur.plotting is loaded with the picture commands, not with
+    # every command line (kinematics's start was 50 ms the slower)
+    from assur.plotting._style import titled
+
     fig = _panels(plotting, plt, table, None, ("angle", "omega", "alpha"))
     title = f"{titled(table.mechanism)}: motion of the links"
     fig.axes[0].set_title(title, fontsize=10)
@@ -52,6 +54,8 @@ def slides_figure(plotting: Any, plt: Any, table: Any, joints: list[str]) -> Any
     For a slider-crank the slider's stroke is the motion that matters, and the
     links' angles leave it out.
     """
+    from assur.plotting._style import titled
+
     fig = _panels(plotting, plt, table, joints, ("s", "v", "a"))
     title = f"{titled(table.mechanism)}: slides of the prismatic pairs"
     fig.axes[0].set_title(title, fontsize=10)

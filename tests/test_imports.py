@@ -363,3 +363,25 @@ def test_known_cycles_are_still_cycles(entry):
     assert nx.has_path(graph, imported, importer), (
         f"{entry} closes no cycle any more: remove it from KNOWN_CYCLES"
     )
+
+
+def test_a_table_command_loads_no_picture_module(tmp_path: Path) -> None:
+    import subprocess
+    import sys
+
+    # the picture commands' parser loaded assur.plotting whole (50 ms) for every
+    # command, ``assur kinematics`` among them
+    example = Path(__file__).parent.parent / "examples" / "four_bar.toml"
+    code = (
+        "import sys\n"
+        "from assur.cli import main\n"
+        f"main(['kinematics', {str(example)!r}, '--angles', '0', '-q', '--csv', "
+        f"{str(tmp_path / 'k.csv')!r}])\n"
+        "print(sorted(m for m in ('assur.plotting', 'matplotlib', 'scipy', "
+        "'pandas') if m in sys.modules))\n"
+    )
+    result = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    )
+    assert result.stdout.strip() == "[]"
+    assert (tmp_path / "k.csv").exists()
