@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._cli_common import bar_shown, quiet
+from assur._cli_common import bar_shown, is_stdout, quiet
 from assur._landing import together
 from assur._output import finishing, output_path, path_text, write_all
 from assur._progress import BAR_DELAY, progress
@@ -67,12 +67,13 @@ def write_files(
         if rows is not None and args.csv and args.csv != "-":
             temporary = stack.enter_context(output_path(args.csv))
             out = stack.enter_context(open(temporary, "wb"))
-            writers.append(CsvWriter(lambda data: write_all(out, data), rows.names))
+            table = CsvWriter(lambda data: write_all(out, data), rows.names)
+            writers.append(stack.enter_context(finishing(table)))
             written.append((args.csv, len(rows), len(rows.names)))
         if rows is not None and args.parquet:
             temporary = stack.enter_context(output_path(args.parquet))
-            table = ParquetWriter(temporary, rows.mech.name, rows.names, rows.units)
-            writers.append(stack.enter_context(finishing(table)))
+            binary = ParquetWriter(temporary, rows.mech.name, rows.names, rows.units)
+            writers.append(stack.enter_context(finishing(binary)))
             written.append((args.parquet, len(rows), len(rows.names)))
         if writers:
             stream(rows, writers, args)
@@ -83,8 +84,10 @@ def _wrote(args: argparse.Namespace, written: list[tuple[Any, int, int]]) -> Non
     """Say which files were written (``(path, rows, columns)``), unless --quiet."""
     if quiet(args):
         return
-    # standard output may carry the table or the JSON: the lines go to stderr then
-    lines = sys.stderr if (args.json or args.csv == "-") else sys.stdout
+    # standard output may carry the table, the JSON or the Parquet file (a pipe as
+    # /dev/stdout): the lines go to stderr then
+    binary = bool(args.parquet) and is_stdout(args.parquet)
+    lines = sys.stderr if (args.json or args.csv == "-" or binary) else sys.stdout
     for path, rows, columns in written:
         size = f"{counted(rows, 'row')} x {counted(columns, 'column')}"
         print(f"wrote {size} to {path_text(path)}", file=lines)

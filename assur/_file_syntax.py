@@ -55,7 +55,9 @@ def _decoded(data: bytes, expected: str = "a TOML or JSON file saved as UTF-8") 
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as err:
-        if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
+        if data[:4] in (b"\xff\xfe\x00\x00", b"\x00\x00\xfe\xff"):
+            found = "UTF-32 text (it starts with UTF-32's byte-order mark)"
+        elif data[:2] in (b"\xff\xfe", b"\xfe\xff"):
             # an editor's "Unicode" is UTF-16: its mark says so at once
             found = "UTF-16 text (it starts with UTF-16's byte-order mark)"
         else:

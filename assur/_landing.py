@@ -48,25 +48,26 @@ def together() -> Iterator[None]:
     Raises
     ------
     OutputError
-        When a file cannot replace its old one (those after it do not land).
+        When a file cannot replace its old one: those after it do not land, those
+        before it have (a rename refused once the others went through, rare).
     """
     pending: list[tuple[Path, Path, str]] = []
     token = _PENDING.set(pending)
     try:
         yield
+        with _held():
+            for temporary, target, where in pending:
+                try:
+                    os.replace(temporary, target)
+                except OSError as err:
+                    msg = f"{where}: cannot write the file ({err.strerror or err})"
+                    raise OutputError(msg) from err
     except BaseException:
+        # those landed are gone from their temporary names already
         _remove(pending)
         raise
     finally:
         _PENDING.reset(token)
-    with _held():
-        for i, (temporary, target, where) in enumerate(pending):
-            try:
-                os.replace(temporary, target)
-            except OSError as err:
-                _remove(pending[i:])
-                msg = f"{where}: cannot write the file ({err.strerror or err})"
-                raise OutputError(msg) from err
 
 
 def _remove(pending: list[tuple[Path, Path, str]]) -> None:
@@ -90,8 +91,12 @@ def _held() -> Iterator[None]:
         return
     came: list[int] = []
     names = ("SIGINT", "SIGTERM", "SIGHUP")
-    held = [getattr(signal, n) for n in names if hasattr(signal, n)]
-    before = {s: signal.signal(s, lambda number, _: came.append(number)) for s in held}
+    before = {}
+    for number in [getattr(signal, n) for n in names if hasattr(signal, n)]:
+        handler = signal.getsignal(number)
+        if handler is not None:  # None: set outside Python, which cannot put it back
+            before[number] = handler
+            signal.signal(number, lambda n, _: came.append(n))
     try:
         yield
     finally:

@@ -35,20 +35,39 @@ def optional(module: str, needed_for: str, extra: str) -> Any:
     package = module.split(".")[0]
     try:
         return importlib.import_module(module)
-    except ImportError as err:
+    except ModuleNotFoundError as err:
+        if not _missing(err, module):
+            raise _broken(needed_for, package, err) from err
         msg = (
             f"{needed_for} needs {package}, which is not installed; expected "
             f"'pip install {package}' (or 'pip install assur[{extra}]')"
         )
         raise ImportError(msg) from err
-    except Exception as err:  # any fault of a broken install
-        # the package is there but broken: its traceback would hide the one line
-        # that says what to do
-        said = str(err).strip().splitlines()
-        what = f"{type(err).__name__}: {said[0]}" if said else type(err).__name__
-        msg = (
-            f"{needed_for} needs {package}, which is installed but fails to import "
-            f"({what}); expected a working install, 'pip install --force-reinstall "
-            f"{package}'"
-        )
-        raise ImportError(msg) from err
+    except Exception as err:  # any fault of a broken install (an ImportError too)
+        raise _broken(needed_for, package, err) from err
+
+
+def _missing(err: ModuleNotFoundError, module: str) -> bool:
+    """Whether ``err`` says ``module`` itself (or a package above it) is not there.
+
+    A module it needs that is not there (pandas without its pytz) is a broken
+    install, not a missing one.
+    """
+    name = err.name or ""
+    return module == name or module.startswith(f"{name}.")
+
+
+def _broken(needed_for: str, package: str, err: BaseException) -> ImportError:
+    """Return the error that says ``package`` is installed but fails to import.
+
+    Its traceback would hide the one line that says what to do: what it raised
+    is named instead (its first line).
+    """
+    said = str(err).strip().splitlines()
+    what = f"{type(err).__name__}: {said[0]}" if said else type(err).__name__
+    msg = (
+        f"{needed_for} needs {package}, which is installed but fails to import "
+        f"({what}); expected a working install, 'pip install --force-reinstall "
+        f"{package}'"
+    )
+    return ImportError(msg)

@@ -36,17 +36,10 @@ GIF_DPI_RANGE = (10.0, 300.0)
 
 
 def _pyplot() -> Any:
-    """Return pyplot on the Agg backend: the command line never opens a window.
-
-    Its text is set without LaTeX, whatever the user's matplotlibrc says.
-    """
+    """Return pyplot on the Agg backend: the command line never opens a window."""
     import matplotlib
 
     matplotlib.use("Agg")
-    # the pictures' text is matplotlib's own mathtext: a matplotlibrc asking for
-    # LaTeX (text.usetex) needs a LaTeX the machine may not have, and failed with
-    # a traceback from deep inside a drawing
-    matplotlib.rcParams["text.usetex"] = False
     import matplotlib.pyplot as plt
 
     return plt
@@ -54,11 +47,19 @@ def _pyplot() -> Any:
 
 @contextlib.contextmanager
 def _figures() -> Iterator[Any]:
-    """Yield pyplot on Agg; close every figure opened inside on the way out."""
+    """Yield pyplot on Agg; close every figure opened inside on the way out.
+
+    Inside, text is set without LaTeX whatever the user's matplotlibrc says: the
+    pictures' text is matplotlib's own mathtext, and ``text.usetex`` needs a LaTeX
+    the machine may not have (it failed with a traceback from inside a drawing).
+    """
+    import matplotlib
+
     plt = _pyplot()
     before = set(plt.get_fignums())
     try:
-        yield plt
+        with matplotlib.rc_context({"text.usetex": False}):
+            yield plt
     finally:
         for number in set(plt.get_fignums()) - before:
             plt.close(number)

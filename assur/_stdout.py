@@ -8,6 +8,7 @@ output is a :class:`StdoutError` (or its OSError), told apart from a file's.
 
 from __future__ import annotations
 
+import codecs
 import errno
 import sys
 from collections.abc import Callable
@@ -49,7 +50,10 @@ def write_stdout(text: str) -> None:
         stream.write(text)
         return
     stream.flush()
-    write_all(buffer, text.encode(stream.encoding or "utf-8", "backslashreplace"))
+    encoding = stream.encoding or "utf-8"
+    if codecs.lookup(encoding).name == "utf-8-sig":
+        encoding = "utf-8"  # a mark at each write would fall inside the text
+    write_all(buffer, text.encode(encoding, "backslashreplace"))
 
 
 class StdoutError(Exception):
@@ -85,9 +89,12 @@ def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
         )
         raise OutputError(msg)
 
+    # UTF-8 with a byte-order mark (for a spreadsheet) puts one at the start
+    marked = [codecs.lookup(encoding).name == "utf-8-sig"]
+
     def encode(text: str) -> bytes:
         try:
-            return text.encode(encoding)
+            data = text.encode(encoding)
         except UnicodeEncodeError as err:
             bad = err.object[err.start : err.end]
             msg = (
@@ -96,6 +103,11 @@ def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
                 "output in UTF-8 (PYTHONIOENCODING=utf-8)"
             )
             raise OutputError(msg) from None
+        if marked[0]:
+            marked[0] = False
+        elif data.startswith(codecs.BOM_UTF8):
+            data = data[len(codecs.BOM_UTF8) :]
+        return data
 
     def write(data: bytes) -> None:
         try:
@@ -111,8 +123,12 @@ def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
 
 
 def _ascii_numbers(encoding: str) -> bool:
-    """Whether ``encoding`` writes the rows' characters as ASCII does."""
+    """Whether ``encoding`` writes the rows' characters as ASCII does.
+
+    A UTF-8 byte-order mark before them is let through.
+    """
     try:
-        return _ASCII.encode(encoding) == _ASCII.encode("ascii")
+        data = _ASCII.encode(encoding).removeprefix(codecs.BOM_UTF8)
+        return data == _ASCII.encode("ascii")
     except (LookupError, UnicodeError):
         return False

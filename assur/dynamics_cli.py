@@ -176,9 +176,12 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
         return 0
     rows = _Rows(mech, state, angles, args.forces)
     rows.check()
-    if args.csv == "-":
-        # a name standard output cannot write stops the command before any file
-        stdout_writer()[1](",".join(rows.names))
+    if args.json or args.csv == "-":
+        # standard output that cannot take the table (a name its encoding cannot
+        # write, UTF-16) stops the command before any file lands
+        encode = stdout_writer()[1]
+        if args.csv == "-":
+            encode(",".join(rows.names))
     _notes(args, mech)
     # the files first, as a set: standard output read by a pipe may go away
     write_files(args, startup_file, rows)

@@ -682,6 +682,31 @@ def test_standard_output_in_utf16_is_refused(tmp_path: Path, option: str) -> Non
     )
 
 
+@pytest.mark.parametrize("option", ["--csv", "--json"])
+def test_standard_output_in_utf8_with_its_mark_has_one(
+    tmp_path: Path, option: str
+) -> None:
+    # a spreadsheet's UTF-8 (with a byte-order mark) is ASCII's numbers too: the
+    # table was refused, and its JSON would have had a mark inside its text
+    argv = ["forces", str(EXAMPLES / "four_bar.toml"), "--angles", "0:10:5", option]
+    result = subprocess.run(
+        [sys.executable, "-m", "assur", *argv, *(["-"] if option == "--csv" else [])],
+        cwd=tmp_path,
+        env=subprocess_env(PYTHONIOENCODING="utf-8-sig"),
+        capture_output=True,
+        timeout=120,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith(b"\xef\xbb\xbf")
+    assert result.stdout.count(b"\xef\xbb\xbf") == 1
+    text = result.stdout.decode("utf-8-sig")
+    if option == "--json":
+        assert len(json.loads(text)["rows"]) == 3
+    else:
+        assert text.splitlines()[0].startswith("angle,crank.angle,")
+
+
 def test_a_name_standard_output_cannot_write_is_one_error(tmp_path: Path) -> None:
     # on an ASCII output the CSV's names came out as \u0448..., changed silently
     text = (EXAMPLES / "four_bar.toml").read_text()

@@ -724,3 +724,26 @@ def test_the_note_says_whether_the_balancing_torque_drives_or_brakes() -> None:
     torque = float(assur.forces(back, [45.0])["driver.torque"][0])
     said = "It brakes the link" if torque > 0 else "It drives the link"
     assert said in str(explain(back, 45.0))
+
+
+def test_a_motion_that_is_not_finite_is_refused_by_name(tmp_path, capsys) -> None:
+    from assur.cli import main
+
+    # the slider of this file turns at 1e161 rad/s: the note's scale of the
+    # motion overflowed (a traceback), and the plans blamed their folder
+    path = Path(__file__).parent / "data" / "fuzz" / "tiny_link_overflow.toml"
+    with (
+        pytest.warns(assur.AssurWarning, match="not finite"),
+        pytest.raises(assur.ModelError) as caught,
+    ):
+        explain(assur.load(path), 45.0)
+    assert str(caught.value) == (
+        "the motion of rod, slider is not finite at driver position 45 deg: the "
+        "inputs are out of the range the arithmetic can follow; expected a position "
+        "(or inputs) where it is"
+    )
+    for argv in (["explain", str(path)], ["plans", str(path), "-o", str(tmp_path)]):
+        assert main(argv) == 2
+        err = capsys.readouterr().err.splitlines()
+        assert err[-1] == f"assur: error: {path}: {caught.value}"
+        assert all(line.startswith("assur: ") for line in err)  # no numpy's words

@@ -512,6 +512,10 @@ def test_a_mechanism_file_in_utf16_is_named_so(tmp_path):
             f"{path}: UTF-16 text (it starts with UTF-16's byte-order mark); "
             "expected a TOML or JSON file saved as UTF-8"
         )
+    path = tmp_path / "utf32.toml"
+    path.write_bytes(text.encode("utf-32"))  # its mark starts as UTF-16's does
+    with pytest.raises(assur.ModelError, match=r"UTF-32 text \(it starts with UTF-32"):
+        assur.load(path)
     # UTF-8 with its mark is read
     (tmp_path / "bom.toml").write_bytes(text.encode("utf-8-sig"))
     assert (

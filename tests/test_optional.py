@@ -47,6 +47,39 @@ def test_a_broken_package_says_what_it_raised(broken):
     assert isinstance(info.value.__cause__, RuntimeError)
 
 
+@pytest.mark.parametrize(
+    ("raised", "what"),
+    [
+        (
+            "ImportError('libarrow.so.2600: cannot open shared object file')",
+            "ImportError: libarrow.so.2600: cannot open shared object file",
+        ),
+        (
+            "import no_tz",
+            "ModuleNotFoundError: No module named 'no_tz'",
+        ),
+    ],
+)
+def test_an_import_error_inside_the_package_is_a_broken_install(
+    tmp_path, monkeypatch, raised, what
+):
+    # a library that cannot be loaded, or a dependency of the package missing, was
+    # told as the package "not installed"
+    folder = tmp_path / "halfpkg"
+    folder.mkdir()
+    statement = raised if raised.startswith("import") else f"raise {raised}"
+    (folder / "__init__.py").write_text(statement + "\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    monkeypatch.delitem(sys.modules, "halfpkg", raising=False)
+    with pytest.raises(ImportError) as info:
+        optional("halfpkg", "writing Parquet", "parquet")
+    assert str(info.value) == (
+        f"writing Parquet needs halfpkg, which is installed but fails to import "
+        f"({what}); expected a working install, 'pip install --force-reinstall "
+        "halfpkg'"
+    )
+
+
 def test_to_pandas_without_pandas(monkeypatch):
     monkeypatch.setitem(sys.modules, "pandas", None)
     table = assur.kinematics(assur.catalog.four_bar(), [0.0])
@@ -58,14 +91,16 @@ def test_broken_pyarrow_is_one_line_on_the_command_line(
     broken, tmp_path, monkeypatch, capsys
 ):
     import importlib
+    import types
 
-    real = importlib.import_module
+    from assur import _optional
 
     def imported(name, *args):
         # pyarrow, as a build for another numpy would fail
-        return real(name.replace("pyarrow", broken), *args)
+        return importlib.import_module(name.replace("pyarrow", broken), *args)
 
-    monkeypatch.setattr(importlib, "import_module", imported)
+    shim = types.SimpleNamespace(import_module=imported)
+    monkeypatch.setattr(_optional, "importlib", shim)
     target = tmp_path / "t.parquet"
     path = EXAMPLES / "slider_crank_exercise.toml"
     status = main(["forces", str(path), "--parquet", str(target)])

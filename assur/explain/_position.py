@@ -15,7 +15,9 @@ import numpy as np
 
 from assur._kinematics import motions
 from assur._loads import LoadPlan, compile_loads
+from assur._runs import positions_where
 from assur._vec import Array
+from assur.errors import ModelError
 from assur.groups._motion import Motion, point, rotated
 from assur.groups._pairs import PairPlan
 from assur.kinetostatics import Applied, Reverse, applied_loads, reverse
@@ -258,8 +260,16 @@ def unit(v: Array) -> Array:
 
 
 def from_table(table: Table, row: int = 0) -> Position:
-    """Return the solved mechanism at ``row`` of a kinematics or forces table."""
+    """Return the solved mechanism at ``row`` of a kinematics or forces table.
+
+    Raises
+    ------
+    ModelError
+        When the links' motion there is not finite (an overflow the sweep warned
+        of): a note or a plan written from it would be made of inf and NaN.
+    """
     table_row = table if len(table) == 1 else _one_row(table, row)
+    _check_finite(table_row)
     plan = table_row.plan
     bodies = motions(plan, table_row.state)
     loads = compile_loads(plan)
@@ -267,6 +277,24 @@ def from_table(table: Table, row: int = 0) -> Position:
         return Position(table_row, bodies, None, None, loads)
     applied = applied_loads(plan, loads, bodies, table_row.state)
     return Position(table_row, bodies, applied, reverse(plan, bodies, applied), loads)
+
+
+def _check_finite(table: Table) -> None:
+    """Refuse a one-row table whose links' motion is not finite, naming the links."""
+    state, plan = table.state, table.plan
+    bad = [
+        plan.bodies[b]
+        for b in range(1, len(plan.bodies))
+        if not all(np.isfinite(x).all() for x in state.motion[b])
+    ]
+    if bad:
+        where = positions_where(plan, table.given, np.ones(1, dtype=bool))
+        msg = (
+            f"the motion of {', '.join(bad[:6])}{', ...' if len(bad) > 6 else ''} "
+            f"is not finite at {where}: the inputs are out of the range the "
+            "arithmetic can follow; expected a position (or inputs) where it is"
+        )
+        raise ModelError(msg)
 
 
 def _one_row(table: Table, row: int) -> Table:

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur.plotting._apart import moved
 from assur.plotting._heads import fitted_arrow
 from assur.plotting._loadnames import name_load
 from assur.plotting._numbers import quantity
@@ -69,52 +70,15 @@ def _draw_arrows(
     for a in arrows:
         if a.force is not None and float(np.hypot(*a.force)) > least:
             tip = a.at + a.force / (scale * 100.0)
-            start = _apart(drawn, a.at, tip, APART * ctx.r)
-            drawn.append((start, start + tip - a.at))
+            start, moved_tip = moved(
+                drawn, a.at, tip, APART * ctx.r, 0.2 * APART * ctx.r
+            )
+            drawn.append((start, moved_tip))
             seen.append(_draw_force(ax, ctx, a, a.force, scale, text, start))
         if a.couple is not None and abs(a.couple) > tiny:
             share = abs(a.couple) / largest
             seen += _draw_couple(ax, ctx, a, a.couple, text, share)
     return seen
-
-
-def _apart(
-    drawn: list[tuple[np.ndarray, np.ndarray]],
-    start: np.ndarray,
-    tip: np.ndarray,
-    step: float,
-) -> np.ndarray:
-    """Return where to start an arrow ``start``-``tip`` (m) clear of those ``drawn``.
-
-    An arrow that lies on one drawn (on its line within a fifth of ``step``, along
-    more than that) is moved sideways by ``step``, to one side then the other,
-    farther each time, until it lies on none.
-    """
-    length = float(np.hypot(*(tip - start)))
-    if length == 0.0:
-        return start
-    u = (tip - start) / length
-    side = np.array([-u[1], u[0]])
-    near = 0.2 * step
-    for k in (0, 1, -1, 2, -2, 3, -3):
-        at = start + k * step * side
-        if not any(_on(u, at, length, a, b, near) for a, b in drawn):
-            return at
-    return start
-
-
-def _on(
-    u: np.ndarray,
-    at: np.ndarray,
-    length: float,
-    a: np.ndarray,
-    b: np.ndarray,
-    near: float,
-) -> bool:
-    """Whether the segment ``a``-``b`` lies on the arrow from ``at`` along ``u``."""
-    off = [abs(float(u[0] * (q - at)[1] - u[1] * (q - at)[0])) for q in (a, b)]
-    low, high = sorted(float(np.dot(u, q - at)) for q in (a, b))
-    return max(off) <= near and min(high, length) - max(low, 0.0) > near
 
 
 def _draw_force(
@@ -129,7 +93,7 @@ def _draw_force(
     """Draw the force of ``a`` (``force``) as a straight arrow; return its tip.
 
     ``start`` is where the arrow starts, if not at the load's point (moved
-    sideways off another, :func:`_apart`).
+    sideways off another, :func:`assur.plotting._apart.moved`).
     """
     mag = float(np.hypot(*force))
     at = a.at if start is None else start

@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from assur.explain._position import cross
+from assur.plotting._apart import moved
 from assur.plotting._heads import fitted_arrow
 from assur.plotting._style import literal
 
@@ -27,23 +27,13 @@ BESIDE = 1.2
 def _beside(
     drawn: list[tuple[np.ndarray, np.ndarray]], start: np.ndarray, end: np.ndarray
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Return an arrow's ends (mm), moved :data:`BESIDE` sideways if it lies on one.
+    """Return an arrow's ends (mm), moved by steps of :data:`BESIDE` off those drawn.
 
     ``drawn`` holds the ends of the arrows drawn before. In an RPR group whose
     slot passes through the pivot, the tangential and Coriolis terms are both
     perpendicular to the slot, on one line: the second hid the first.
     """
-    length = float(np.hypot(*(end - start)))
-    if length <= ALONG:
-        return start, end
-    u = (end - start) / length
-    for a, b in drawn:
-        off = [abs(cross(u, q)) for q in (a - start, b - start)]
-        low, high = sorted(float(np.dot(u, q - start)) for q in (a, b))
-        if max(off) <= ALONG and min(high, length) - max(low, 0.0) > ALONG:
-            shift = BESIDE * np.array([-u[1], u[0]])
-            return start + shift, end + shift
-    return start, end
+    return moved(drawn, start, end, BESIDE, ALONG)
 
 
 def _joined(
@@ -54,9 +44,9 @@ def _joined(
     Two short dotted lines: the chain of arrows still reads tip to tail across the
     step (:data:`BESIDE`) the move made. Nothing when it was not moved.
     """
-    for at, moved in zip((start, end), ends, strict=True):
-        if float(np.hypot(*(moved - at))) > 0.0:
-            ax.plot(*np.transpose([at, moved]), ":", color="#555555", lw=0.8)
+    for at, there in zip((start, end), ends, strict=True):
+        if float(np.hypot(*(there - at))) > 0.0:
+            ax.plot(*np.transpose([at, there]), ":", color="#555555", lw=0.8)
 
 
 def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> bool:

@@ -20,7 +20,14 @@ from assur.explain._friction_text import power_rows
 from assur.explain._lever import LeverTerm, lever_load, lever_parts, lever_rates
 from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
-from assur.plotting._drawing import _arrow, _axes, _images_plot, _legend
+from assur.plotting._drawing import (
+    _arrow,
+    _axes,
+    _beside,
+    _images_plot,
+    _joined,
+    _legend,
+)
 from assur.plotting._mathtext import _symbol
 from assur.plotting._numbers import quantity
 from assur.plotting._placing import Name, place_names
@@ -119,8 +126,10 @@ def zhukovsky_lever(
     Every force acts at its point's image; a couple M on a link acts as the pair of
     forces ``M / l`` and ``-M / l`` across the link's two joints farthest apart, at
     their images (a link without two joints apart has its couple listed only),
-    drawn to the forces' scale: arrow times arm is each share. A pair shorter than
-    :data:`MARK` at that scale is drawn that long, dotted, the legend saying so.
+    drawn to the forces' scale: arrow times arm is each share. An arrow shorter
+    than :data:`MARK` at that scale is drawn that long, dotted, the legend saying
+    so; one that lies on another or on a ray of the plan is drawn a step aside,
+    joined to its point by dotted lines.
     Beside the lever every load's moment about the pole divided by the driver's
     speed is listed (``assur.plotting.lever.lever_moments``): the terms add up to
     the balancing load of driver ``driver`` written below them (friction's power
@@ -163,16 +172,22 @@ def zhukovsky_lever(
     colours = {_symbol(t.load.tex): load_colour(t.load.tex) for t in terms}
     marked = False
     used: dict[str, None] = {}
+    # at a dead centre the loads lie on the plan's rays and on each other: each is
+    # moved a step aside, dotted lines joining it to its point
+    drawn = [(np.zeros(2), v / mu) for v in found.values()]
     for at, force, label, couple in arrows:
-        tip, mark = _tip(at / mu, force / fmu, couple)
-        marked |= mark
+        tip, mark = _tip(at / mu, force / fmu)
         # a load of nothing (a crank's inertia force at its centre) gets no arrow
         # and no name: its share, nothing, is listed
         color = COUPLE if couple else colours.get(label, LOAD_COLOR)
-        if _arrow(ax, at / mu, tip, color, ls=":" if mark else "-"):
-            text = ax.annotate(label, tuple(tip), fontsize=7, color=color)
-            names.append(Name(text, at / mu, tip))
+        ends = _beside(drawn, at / mu, tip)
+        if _arrow(ax, *ends, color, ls=":" if mark else "-"):
+            _joined(ax, at / mu, tip, ends)
+            drawn.append(ends)
+            text = ax.annotate(label, tuple(ends[1]), fontsize=7, color=color)
+            names.append(Name(text, *ends))
             used[color] = None
+            marked |= mark
     # the shares add up to the balancing load: their sum is the one written
     balancing = math.fsum(share for _, share, _ in shares)
     _list_terms(ax, apart, d.kind, shares, (speed, balancing), unit_speed)
@@ -181,12 +196,10 @@ def zhukovsky_lever(
     kinds = {INERTIA_COLOR: "inertia force", LOAD_COLOR: "gravity, external load"}
     entries = [(text, c) for c, text in kinds.items() if c in used]
     if COUPLE in used:
-        text = "couple M as ±M/l at two joints, same scale"
-        if marked:
-            text += f";\ndotted: below the scale, drawn {MARK:g} mm long"
-        entries.append((text, COUPLE))
+        entries.append(("couple M as ±M/l at two joints, same scale", COUPLE))
+    below = f"dotted: below the scale, drawn {MARK:g} mm long\n" if marked else ""
     note = (
-        f"forces: 1 mm = {quantity(fmu, 'N', 6)}\n"
+        f"forces: 1 mm = {quantity(fmu, 'N', 6)}\n{below}"
         f"lever: μv = {quantity(mu, mu_unit, 6)}{per},\nturned 90°"
     )
     _legend(ax, entries, note, beside=True)
@@ -202,8 +215,8 @@ COUPLE = "#9467bd"
 """The colour of a couple's pair of forces on the lever."""
 ROUND_OFF = 1e-9
 """Shares all below this times the largest a load could have are round-off."""
-MARK = 2.0
-"""Length, mm, a couple's force shorter than this at the force scale is drawn."""
+MARK = 3.0
+"""Length, mm, a force shorter than this at the force scale is drawn (dotted)."""
 PAIR_GAP = 1e-6
 """Two joints of a link closer than this times the mechanism's size carry no pair."""
 
@@ -212,14 +225,15 @@ Ends = tuple[tuple[str, np.ndarray], tuple[str, np.ndarray]]
 """Two joints of a link: each its name and its place (m)."""
 
 
-def _tip(start: np.ndarray, arrow: np.ndarray, couple: bool) -> tuple[Any, bool]:
-    """Return an arrow's tip, mm, and whether it is a couple's marked below scale.
+def _tip(start: np.ndarray, arrow: np.ndarray) -> tuple[Any, bool]:
+    """Return an arrow's tip, mm, and whether it is marked below the scale.
 
-    A couple's force shorter than :data:`MARK` at the force scale is drawn that
-    long, in its direction, so that a small couple is seen yet stays small.
+    A force (or a couple's) shorter than :data:`MARK` at the force scale is drawn
+    that long, in its direction, so that a small load is seen yet stays small: a
+    slider's inertia force of 0.3 mm was a name beside nothing.
     """
     length = float(np.hypot(*arrow))
-    if not couple or length >= MARK or length == 0.0:
+    if length >= MARK or length == 0.0:
         return start + arrow, False
     return start + arrow * (MARK / length), True
 
@@ -358,10 +372,13 @@ def _list_terms(
             couple = quantity(t.load.couple, "N·m", 6)
             head += f" ({couple}, $\\omega_L$/{rate} = {ratio:.6g}"
             head += ")" if apart[t.body] else "; listed only)"
-        # rounded first: a share that rounds to nothing is written +0, not -0
-        lines.append(f"{head}:  {round(share, places + 1) + 0.0:+.{places + 1}f}")
-    # a sum that rounds to nothing is written 0, not -0, as the shares are
+        # a share that rounds to nothing is written 0 (a dead centre's round-off),
+        # not +0.000 or -0.000
+        rounded = round(share, places + 1) + 0.0
+        lines.append(f"{head}:  {f'{rounded:+.{places + 1}f}' if rounded else '0'}")
     total = round(balancing, places) + 0.0
-    lines.append(f"sum = balancing load: {total:.{places}f} {unit}")
+    lines.append(
+        f"sum = balancing load: {f'{total:.{places}f}' if total else '0'} {unit}"
+    )
     ax.text(1.03, 1.0, "\n".join(lines), transform=ax.transAxes, fontsize=8,
             va="top", ha="left", linespacing=1.7)  # fmt: skip
