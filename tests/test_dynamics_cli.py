@@ -16,7 +16,7 @@ import assur
 from assur.cli import main
 
 from .conftest import EXAMPLES
-from .test_cli_robustness import shell
+from .test_cli_robustness import shell, subprocess_env
 
 WHITWORTH = EXAMPLES / "whitworth.toml"
 FOUR_BAR = EXAMPLES / "four_bar.toml"
@@ -632,3 +632,39 @@ def test_loads_that_do_no_work_need_no_motor() -> None:
 
     model = reduce(mech)
     assert abs(np.mean(model.torque)) < 1e-13 * np.max(np.abs(model.torque))
+
+
+def test_parquet_on_standard_output_keeps_the_lines_off_it(tmp_path: Path):
+    pq = pytest.importorskip("pyarrow.parquet", reason="pyarrow is not installed")
+    # "wrote ... to /dev/stdout" was written after the file's footer: no Parquet
+    result = subprocess.run(
+        f"{sys.executable} -m assur dynamics {FOUR_BAR} --angles 0:10:5 "
+        "--parquet /dev/stdout > out.parquet",
+        shell=True,
+        cwd=tmp_path,
+        env=subprocess_env(),
+        capture_output=True,
+        text=True,
+        timeout=120,
+        check=False,
+    )
+    assert result.returncode == 0, result.stderr
+    assert pq.read_table(tmp_path / "out.parquet").num_rows == 3
+    assert "wrote 3 rows x" in result.stderr
+
+
+def test_standard_output_that_cannot_take_the_json_lands_no_file(tmp_path: Path):
+    pytest.importorskip("pyarrow.parquet", reason="pyarrow is not installed")
+    # the refusal of UTF-16 came after the Parquet file had landed
+    result = subprocess.run(
+        [sys.executable, "-m", "assur", "dynamics", str(FOUR_BAR), "--angles",
+         "0:10:5", "--json", "--parquet", "u.parquet", "--csv", "u.csv"],
+        cwd=tmp_path,
+        env=subprocess_env(PYTHONIOENCODING="utf-16"),
+        capture_output=True,
+        timeout=120,
+        check=False,
+    )  # fmt: skip
+    assert (result.returncode, result.stdout) == (2, b"")
+    assert "its encoding (utf-16)" in result.stderr.decode("utf-16")
+    assert list(tmp_path.iterdir()) == []
