@@ -223,10 +223,12 @@ def one_position(mech: Any, spec: str | None) -> Any:
         try:
             value = plain_number(part)
         except ValueError:
-            value = math.nan
-        if not math.isfinite(value):
+            value = None
+        if value is None or not math.isfinite(value):
+            # "1e400" and "inf" are read, and are no position: said so
+            fault = "cannot read" if value is None else "not a finite number:"
             msg = (
-                f"--angle: cannot read {describe(part)}; expected a number, one per "
+                f"--angle: {fault} {describe(part)}; expected a number, one per "
                 "driver separated by commas"
             )
             raise UsageError(msg)

@@ -92,9 +92,11 @@ def steady_state(model: Reduced, omega: float, flywheel: float = 0.0) -> Steady:
 
     target = abs(omega)
     if not target * target > 0:  # a speed whose square underflows is zero too
+        what = "is zero" if target == 0 else "is too small: its square underflows"
         msg = (
-            f"drivers[0].omega: {omega:g} rad/s; expected the crank's nominal speed "
-            "(the steady state's mean of its largest and smallest speed)"
+            f"drivers[0].omega: {omega:g} rad/s {what}; expected the crank's nominal "
+            "speed (the steady state's mean of its largest and smallest speed), at "
+            "least 1e-160 rad/s"
         )
         raise ModelError(msg)
     inertia = model.inertia + flywheel

@@ -402,6 +402,12 @@ def test_plot_names_its_own_option(capsys, tmp_path: Path):
         f"assur: error: {FOUR_BAR}: --angle: cannot read 'abc'; expected a number, "
         "one per driver separated by commas"
     )
+    # a number out of range is read, and said to be no position
+    line = one_error(capsys, "explain", FOUR_BAR, "--angle", "1e400")
+    assert line == (
+        f"assur: error: {FOUR_BAR}: --angle: not a finite number: '1e400'; expected "
+        "a number, one per driver separated by commas"
+    )
 
 
 @pytest.mark.parametrize(
