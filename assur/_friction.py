@@ -45,6 +45,7 @@ __all__ = [
     "rate",
     "solve_group",
     "still",
+    "substituted",
 ]
 
 STILL = 1e-11
@@ -166,6 +167,27 @@ def _unit(pair: PairPlan, bodies: list[Motion], speed: Leaf) -> Wrench:
     fx, fy = mul(force, ex), mul(force, ey)
     qx, qy = point(bodies[pair.second], pair.d_second, 0)
     return [fx, fy, cross(qx, qy, fx, fy)]
+
+
+def substituted(
+    solver: GroupSolver,
+    bodies: list[Motion],
+    loads: list[Wrench],
+    sizes: dict[str, float],
+    rest: Still,
+) -> Equilibrium:
+    """Return a group's equilibrium with its pairs' friction taken from ``sizes``.
+
+    One step of repeated substitution, the hand method the note shows: each pair's
+    friction load is its size (N, by pair name) times its law's factor, a known
+    load, and the group is solved as without friction. ``loads`` are the links'
+    loads without the group's own friction (one position).
+    """
+    base = solver.equilibrium(bodies, loads)
+    pairs = [p for p in base.pairs if p.name in sizes]
+    units = {p.name: _unit(p, bodies, rate(p, bodies, rest)) for p in pairs}
+    friction = {p.name: [mul(sizes[p.name], w) for w in units[p.name]] for p in pairs}
+    return solver.equilibrium(bodies, _with(loads, pairs, friction, set(base.bodies)))
 
 
 def _reaction(pair: PairPlan, bodies: list[Motion], record: Equilibrium, n: int) -> Any:

@@ -48,7 +48,7 @@ def test_every_friction_number_agrees_with_the_table(path, angle: float) -> None
     for symbol in ("M_{b}", lever, ideal, "\\sum P_{f}"):
         assert symbol in shown, symbol
     # every group with friction says how it was solved
-    assert note.count("Newton's method on the sizes") == _rubbing_groups(path, angle)
+    assert note.count("found by repeated substitution") == _rubbing_groups(path, angle)
 
 
 def _rubbing_groups(path, angle: float) -> int:
@@ -79,18 +79,27 @@ def test_the_friction_loads_are_written_out() -> None:
     assert "19.14" in note.split("Without friction")[1].split("\n")[0]
 
 
-def test_newton_starts_from_the_frictionless_reactions() -> None:
-    # the slider-crank has one group: its start is the frictionless solution
-    note, _ = _note_and_table(FRICTION, 45.0)
+def test_the_substitution_starts_frictionless_and_settles_on_the_table() -> None:
+    # the slider-crank has one group: its start is the frictionless solution, its
+    # rows the hand method's steps, its last the table's sizes
+    note, table = _note_and_table(FRICTION, 45.0)
     ideal = assur.forces(assur.load(EXAMPLES / "slider_crank_exercise.toml"), [45.0])
-    grid = note.split("| joint | without its friction | converged |")[1]
-    for joint in ("B", "C"):
-        start = re.search(rf"\| {joint} \| \$(-?[\d.]+)\$", grid)
-        assert start, joint
-        assert float(start.group(1)) == pytest.approx(
-            float(ideal[f"{joint}.F"][0]), abs=0.01
-        )
-    assert re.search(r"(\d+) steps? brought each size", note)
+    head = (
+        r"| step | $F_{\mathrm{rod},\mathrm{slider}}$ | "
+        r"$F_{\mathrm{crank},\mathrm{rod}}$ |"
+    )
+    rows = note.split(head)[1].split("\n\n")[0].strip().splitlines()[2:]
+    sizes = [[float(x) for x in re.findall(r"\$(-?[\d.]+)\$", r)] for r in rows]
+    assert rows[0].startswith("| 0 (frictionless) |")
+    np.testing.assert_allclose(
+        sizes[0][:2], [ideal["C.F"][0], ideal["B.F"][0]], atol=0.01
+    )
+    np.testing.assert_allclose(
+        sizes[-1][:2], [table["C.F"][0], table["B.F"][0]], atol=0.01
+    )
+    assert 3 <= len(rows) <= 13
+    assert sizes[-1] == sizes[-2]  # settled, to the digits written
+    assert re.search(r"The sizes settle; .* finds the same in 3 steps", note)
 
 
 def test_a_pair_at_rest_has_no_friction_in_the_note() -> None:
@@ -98,6 +107,8 @@ def test_a_pair_at_rest_has_no_friction_in_the_note() -> None:
     note, table = _note_and_table(FRICTION, 0.0)
     assert float(table["guide.Ff"][0]) == 0.0
     assert r"\dot s_{\mathrm{guide}} = 0\ \mathrm{m/s}" in note
+    # and the law's 0 is said why, not left as a bare product
+    assert note.count(r"\text{(no relative motion: no kinetic friction)}") == 1
     # its normal force is there, the sense of its slide is not
     assert r"-0.15 \cdot 17.93 \cdot 0 = 0\ \mathrm{N}" in note
     assert "| guide | $F_{f,\\mathrm{guide}} = 0$ |" in note
@@ -183,7 +194,9 @@ def test_every_example_with_friction_agrees_with_the_table(stem: str, angle) -> 
         many = len(table.plan.drivers) > 1
         sym = f"{letter}_{{b,{tex(d.pair.name)}}}" if many else f"{letter}_{{b}}"
         assert f"{sym}^{{\\mathrm{{lever}}}}" in shown, sym
-    assert note.count("Newton's method on the sizes") == _rubbing_groups_of(mech, angle)
+    assert note.count("found by repeated substitution") == _rubbing_groups_of(
+        mech, angle
+    )
 
 
 def _rubbing_groups_of(mech: assur.Mechanism, angle) -> int:
@@ -227,9 +240,10 @@ def test_the_documented_friction_numbers_are_the_note_s() -> None:
     for text in (
         r"-0.0008 \cdot 1994.59 \cdot (-1) = 1.596\ \mathrm{N\,m}",
         r"-0.15 \cdot 473.94 \cdot (-1) = 71.09\ \mathrm{N}",
-        r"| C | $962.04$ |",
-        r"| B | $1928.5$ |",
-        "3 steps brought each size",
+        r"| 0 (frictionless) | $962.04$ | $1928.5$ | $443.17$ |",
+        r"| 1 | $1034.42$ | $1990.24$ | $472.17$ |",
+        r"| 4 | $1039.33$ | $1994.59$ | $473.94$ |",
+        "finds the same in 3 steps",
         r"(0,\ -473.94) + (71.09,\ 0) = (71.09,\ -473.94)",
         r"-0.00096 \cdot 9658.16 \cdot 1 = -9.272",
         r"91.55 - (-9.272) = 100.82\ \mathrm{N\,m}",
@@ -256,3 +270,24 @@ def test_a_group_rubbing_in_its_guide_alone_states_the_sliding_law_alone() -> No
     both = str(explain(mech, 45.0))
     assert "a revolute pair's couple" in both
     assert "a sliding pair's force" in both
+
+
+def test_near_self_locking_the_substitution_is_said_to_settle_slowly() -> None:
+    import dataclasses
+
+    # the locking example with friction 1.3 in its guide, at 240 deg: each step of
+    # the hand method grows the sizes by 0.92 of the step before (f tan(beta))
+    mech = assur.load(EXAMPLES / "slider_crank_locking.toml")
+    joints = tuple(
+        dataclasses.replace(j, friction=1.3) if j.name == "guide" else j
+        for j in mech.joints
+    )
+    mech = dataclasses.replace(mech, joints=joints)
+    table = assur.forces(mech, [240.0])
+    note = str(explain(mech, 240.0))
+    assert "The substitution settles slowly here" in note
+    assert "about 0.92 times the step before" in note
+    found = re.search(r"\| found \| \$([\d.]+)\$ \| \$([\d.]+)\$", note)
+    assert found is not None
+    assert float(found.group(2)) == pytest.approx(float(table["B.F"][0]), abs=0.01)
+    assert len(re.findall(r"^\| \d+ \|", note, flags=re.MULTILINE)) == 12

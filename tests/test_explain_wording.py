@@ -178,10 +178,34 @@ def test_friction_s_share_of_the_balancing_torque(tmp_path: Path, omega: float) 
     mech = assur.load(path)
     note = str(explain(mech, 45.0))
     sentence = next(x for x in note.splitlines() if "friction changes it by" in x)
-    power = float(re.search(r"= (-?[0-9.]+)\$ W more", sentence).group(1))  # type: ignore[union-attr]
+    # clockwise the driver brakes here: it takes that power less back
+    said = "W more" if omega > 0 else "W less back"
+    power = float(re.search(rf"= (-?[0-9.]+)\$ {said}", sentence).group(1))  # type: ignore[union-attr]
     lost = -float(assur.forces(mech, [45.0])["friction.power"][0])
     assert lost > 0.0
     assert power == pytest.approx(lost, rel=1e-3)
+
+
+@pytest.mark.parametrize(
+    ("stem", "angle", "said"),
+    [
+        ("slider_crank_friction", 45.0, "W more"),
+        ("slider_crank_locking", 90.0, "W less back"),
+    ],
+)
+def test_friction_s_power_is_said_as_the_driver_sees_it(
+    stem: str, angle: float, said: str
+) -> None:
+    # a braking driver "supplies 472 W more" read as if it drove; and 16.2 * 200
+    # was written 3239.46, a product no hand gives
+    note = str(explain(assur.load(EXAMPLES / f"{stem}.toml"), angle))
+    sentence = next(x for x in note.splitlines() if "friction changes it by" in x)
+    product = re.search(
+        r"= (-?[0-9.]+) \\cdot \(?(-?[0-9.]+)\)? = (-?[0-9.]+)\$ " + said, sentence
+    )
+    assert product is not None, sentence
+    a, b, c = (float(x) for x in product.groups())
+    assert a * b == pytest.approx(c, abs=0.01)  # to the last digit written
 
 
 def test_friction_rows_per_unit_speed_are_not_called_losses(tmp_path: Path) -> None:

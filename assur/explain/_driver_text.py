@@ -101,11 +101,20 @@ def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
     # whatever the signs of the load and the speed
     rate = "\\omega" if d.kind == "R" else "v"
     whose = "" if len(pos.plan.drivers) == 1 else " this driver's share of"
+    # a driver that brakes (its power negative) takes that much less back: "supplies
+    # more" read as if it drove
+    how = "takes" if value * speed < 0 else "supplies"
+    less = "less back" if value * speed < 0 else "more"
     return (
-        words + f", and the driver supplies $({sym} - {sym}{IDEAL})\\,{rate} = "
-        f"{num(extra)} \\cdot {par(speed)} = {num(extra * speed)}$ W more:{whose} "
-        "the power friction takes."
+        words + f", and the driver {how} $({sym} - {sym}{IDEAL})\\,{rate} = "
+        f"{num(extra, more=_digits(speed))} \\cdot {par(speed)} = "
+        f"{num(extra * speed)}$ W {less}:{whose} the power friction takes."
     )
+
+
+def _digits(times: float) -> int:
+    """Return the decimals more a factor of ``times`` needs for its product by hand."""
+    return max(0, math.ceil(math.log10(abs(times)))) if times else 0
 
 
 def _crank(pos: Position, i: int, loads: list[Load]) -> list[Block]:

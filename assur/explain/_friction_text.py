@@ -5,9 +5,11 @@ A revolute pair resists the relative rotation of its links with the couple
 radius of its friction circle; a sliding pair resists the slide with the force
 :math:`F_f = -f\,|N|\,\mathrm{sgn}\,\dot s` along its slide line. Both depend on the
 reactions being found, so :mod:`assur._friction` solves a group with friction by
-Newton's method on its reactions' sizes. The note says so, gives the sizes it started
-from and the number of steps, and writes the friction loads of the converged sizes:
-the group's equations then hold with those loads as known ones.
+Newton's method on its reactions' sizes. The note shows the hand method instead,
+repeated substitution from the frictionless sizes, a row a step (and, where that
+settles slowly, near self-locking, the sizes Newton's method found), then writes the
+friction loads of the sizes found: the group's equations hold with those loads as
+known ones.
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ import math
 
 import numpy as np
 
-from assur._friction import Still, rate, solve_group, still
+from assur._friction import Still, rate, solve_group, still, substituted
 from assur._vec import Array
 from assur.explain._note import Block, Display, Grid, Para
 from assur.explain._position import Position, at, perp, value
@@ -25,6 +27,12 @@ from assur.groups._motion import Motion
 from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium, GroupSolver, Reaction, Wrench
 from assur.kinetostatics import Applied, with_friction
+
+SETTLED = 1e-6
+"""A step of repeated substitution that changes no size by more than this share of
+the largest has settled (the note writes four or five digits)."""
+MOST_STEPS = 12
+"""Most steps of repeated substitution the note writes."""
 
 __all__ = [
     "at_rest",
@@ -96,6 +104,10 @@ def friction_lines(pos: Position, pair: PairPlan, size: str, known: float) -> li
     sense = float(np.sign(_rate(pos, pair)))
     found = value(pos.result.friction.get(pair.name, 0.0))
     f = num(pair.friction)
+    # a pair whose links do not move on each other: the law gives 0, said why
+    still = (
+        r"\quad \text{(no relative motion: no kinetic friction)}" if not sense else ""
+    )
     if pair.kind == "R":
         rho = pair.friction * pair.radius
         second, first = (name(pos.link(b)) for b in (pair.second, pair.first))
@@ -105,13 +117,14 @@ def friction_lines(pos: Position, pair: PairPlan, size: str, known: float) -> li
             rate_line(pos, pair),
             f"M_{{f,{j}}} = -\\rho_{{{j}}}\\,{size}\\,\\mathrm{{sgn}}"
             f"(\\omega_{{{second}}} - \\omega_{{{first}}}) = -{num(rho)} \\cdot "
-            f"{num(known)} \\cdot {par(sense)} = {num(found)}\\ \\mathrm{{N\\,m}}",
+            f"{num(known)} \\cdot {par(sense)} = {num(found)}\\ \\mathrm{{N\\,m}}"
+            + still,
         ]
     return [
         rate_line(pos, pair),
         f"F_{{f,{j}}} = -f_{{{j}}}\\,{size}\\,\\mathrm{{sgn}}\\,\\dot s_{{{j}}} = "
         f"-{f} \\cdot {num(known)} \\cdot {par(sense)} = {num(found)}"
-        "\\ \\mathrm{N}",
+        "\\ \\mathrm{N}" + still,
     ]
 
 
@@ -131,6 +144,18 @@ def newton_start(
     the groups solved before passed on is kept): ``rec.loads`` less those pairs'
     friction. The iteration is run again from there, as the reverse pass ran it.
     """
+    loads = _without_own(pos, rec)
+    base = solver.equilibrium(pos.bodies, loads)
+    found = solve_group(solver, pos.bodies, loads, 1, at_rest(pos))
+    sizes = {
+        p.name: float(np.hypot(*normal_force(pos, p, base.reactions[p.name])))
+        for p in rubbing(rec.pairs)
+    }
+    return sizes, 0 if found is None else found.iterations
+
+
+def _without_own(pos: Position, rec: Equilibrium) -> list[Wrench]:
+    """Return the loads on every link, the group's own pairs' friction taken off."""
     assert pos.result is not None
     count = len(pos.plan.bodies)
     loads: list[Wrench] = [[0.0, 0.0, 0.0] for _ in range(count)]
@@ -143,14 +168,33 @@ def newton_start(
     }
     # the friction of the group's own pairs taken off its links' loads
     start = with_friction(pos.plan, pos.bodies, Applied(tuple(loads), ()), own)
-    loads = list(start.wrenches)
-    base = solver.equilibrium(pos.bodies, loads)
-    found = solve_group(solver, pos.bodies, loads, 1, at_rest(pos))
-    sizes = {
-        p.name: float(np.hypot(*normal_force(pos, p, base.reactions[p.name])))
-        for p in rubbing(rec.pairs)
-    }
-    return sizes, 0 if found is None else found.iterations
+    return list(start.wrenches)
+
+
+def substitution(
+    pos: Position, rec: Equilibrium, solver: GroupSolver, start: dict[str, float]
+) -> list[dict[str, float]]:
+    """Return the sizes (N) of repeated substitution from ``start``, step by step.
+
+    Each step takes the friction loads of the sizes before, solves the group with
+    them known and takes the sizes of the reactions it gives; it stops once a step
+    changes no size by more than :data:`SETTLED` of the largest, or after
+    :data:`MOST_STEPS` steps (near self-locking it settles slowly or not at all).
+    """
+    loads, rest = _without_own(pos, rec), at_rest(pos)
+    pairs = rubbing(rec.pairs)
+    steps = [start]
+    for _ in range(MOST_STEPS):
+        found = substituted(solver, pos.bodies, loads, steps[-1], rest)
+        sizes = {
+            p.name: float(np.hypot(*normal_force(pos, p, found.reactions[p.name])))
+            for p in pairs
+        }
+        steps.append(sizes)
+        change = max(abs(sizes[k] - steps[-2][k]) for k in sizes)
+        if not change > SETTLED * max(max(sizes.values()), 1e-300):
+            break
+    return steps
 
 
 def group_friction_blocks(
@@ -162,42 +206,75 @@ def group_friction_blocks(
         return []
     start, steps = newton_start(pos, rec, solver)
     listed = ", ".join(plain(p.name) for p in pairs)
-    rows = []
     lines: list[str] = []
+    final = {}
     for p in pairs:
         symbol = size_symbol(pos, p)
-        final = float(np.hypot(*normal_force(pos, p, rec.reactions[p.name])))
-        rows.append(
-            (plain(p.name), f"${num(start[p.name])}$", f"${symbol} = {num(final)}$")
-        )
-        lines += friction_lines(pos, p, symbol, final)
+        final[p.name] = float(np.hypot(*normal_force(pos, p, rec.reactions[p.name])))
+        lines += friction_lines(pos, p, symbol, final[p.name])
+    tried = substitution(pos, rec, solver, start)
+    gap = max(abs(tried[-1][k] - final[k]) for k in final)
+    settled = gap <= 1e-4 * max(max(final.values()), 1e-300)
     # each law the group's pairs have: a group rubbing in guides alone has no couple
     laws = []
     if any(p.kind == "R" for p in pairs):
         laws.append(
-            "a revolute pair's couple $M_f = -\\rho\\,|R|\\,"
-            "\\mathrm{sgn}(\\omega_2 - \\omega_1)$ ($\\rho = f r$, the radius of its "
-            "friction circle; $\\omega_2 - \\omega_1$ the rotation of its second link "
+            "a revolute pair's couple of its first link on its second $M_f = "
+            "-\\rho\\,|R|\\,\\mathrm{sgn}(\\omega_2 - \\omega_1)$ ($\\rho = f r$, "
+            "the radius of its friction circle, to which the reaction's line is "
+            "then tangent; $\\omega_2 - \\omega_1$ the rotation of its second link "
             "relative to its first)"
         )
     if any(p.kind == "P" for p in pairs):
         laws.append(
-            "a sliding pair's force $F_f = -f\\,|N|\\,\\mathrm{sgn}\\,\\dot s$ "
-            "along its slide line"
+            "a sliding pair's force of its first link on its second $F_f = "
+            "-f\\,|N|\\,\\mathrm{sgn}\\,\\dot s$ along its slide line (its "
+            "couple $M$ makes none in this model)"
         )
+    head = ("step", *(f"${size_symbol(pos, p)}$" for p in pairs))
+    rows = [
+        (
+            "0 (frictionless)" if i == 0 else str(i),
+            *(f"${num(sizes[p.name])}$" for p in pairs),
+        )
+        for i, sizes in enumerate(tried)
+    ]
+    if settled:
+        how = (
+            "The sizes settle; Newton's method on them, which the analysis uses, "
+            f"finds the same in {steps} step{'s' if steps != 1 else ''}."
+        )
+    else:
+        # near self-locking each step shrinks the change little, or not at all
+        rows.append(("found", *(f"${num(final[p.name])}$" for p in pairs)))
+        how = (
+            f"The substitution settles slowly here (or not at all): the sizes "
+            f"found (last row) are those of Newton's method on them, "
+            f"{steps} step{'s' if steps != 1 else ''}, which the analysis uses."
+        )
+        last, before = (
+            max(abs(tried[i][k] - tried[i - 1][k]) for k in final) for i in (-1, -2)
+        )
+        if before > 0:
+            # the ratio of the steps is the loop's gain: 1 is self-locking
+            how += (
+                f" Each step changes the sizes by about {last / before:.2f} times "
+                "the step before: near 1, the group is near self-locking."
+            )
     return [
         Para(
             f"Friction in {listed}: {', '.join(laws)} (kinetic friction only: a "
-            "pair at rest, its relative speed below $10^{-11}$ of the mechanism's "
-            "fastest motion, has none). Each depends on the size of a reaction not "
-            "yet known. With the senses of the relative motions known, "
-            "the reactions are linear in those sizes, and the group was solved by "
-            "Newton's method on the sizes: starting from the reactions without this "
-            f"group's friction, {steps} step{'s' if steps != 1 else ''} brought each "
-            "size to the size of the reaction it gives (N):"
+            "pair at rest has none). Each depends on the size of a reaction not "
+            "yet known. With the senses of the relative motions known, each "
+            "friction load is its size times a known factor, and the group's "
+            "reactions are linear in the sizes, but the sizes of the reactions are "
+            "not: they are found by repeated substitution. Start from the sizes "
+            "without this group's friction, take the friction loads of those "
+            "sizes as known loads, solve the group as without friction, take the "
+            "sizes of the reactions it gives, and repeat (N):"
         ),
-        Grid(("joint", "without its friction", "converged"), tuple(rows)),
-        Para("The friction loads of the converged sizes:"),
+        Grid(head, tuple(rows)),
+        Para(how + " The friction loads of these sizes:"),
         Display(tuple(lines)),
         Para(
             "They are known loads of the group's links below (a couple on each link "
