@@ -84,11 +84,7 @@ def _problems(ax, arrows, scale: float, nearest: bool = True) -> list[str]:
             if _overlap(box, seen)
         ]
     to_display = ax.transData.transform
-    forces = {
-        a.label: to_display([a.at, a.at + a.force / (scale * 100.0)])
-        for a in arrows
-        if a.force is not None and np.hypot(*a.force) > 0
-    }
+    forces = {a.label: to_display(ends) for a, ends in _drawn(ax, arrows, scale)}
     for text, box in boxes.items() if nearest else ():
         label = text.get_text().split(" = ")[0]
         if label not in forces or _short(ax, *forces[label]):
@@ -110,6 +106,39 @@ def _problems(ax, arrows, scale: float, nearest: bool = True) -> list[str]:
             if _distance(box, c, d) < mine:
                 wrong.append(f"{label} nearer {other}'s arrow")
     return wrong + _joint_problems(ax, boxes, forces)
+
+
+def _drawn(ax, arrows, scale: float) -> list:
+    """Return each force of ``arrows`` with the ends (data) of the arrow drawn for it.
+
+    An arrow that lay on another was drawn a little aside: it is found among the
+    straight arrows on ``ax`` by its length and direction, the nearest its point.
+    """
+    from matplotlib.patches import FancyArrowPatch
+
+    pool = [
+        np.asarray(p._posA_posB, dtype=float)
+        for p in ax.patches
+        if isinstance(p, FancyArrowPatch) and p._posA_posB is not None
+    ]
+    out = []
+    for a in arrows:
+        if a.force is None or not np.hypot(*a.force) > 0:
+            continue
+        vector = a.force / (scale * 100.0)
+        size = float(np.hypot(*vector))
+        same = [
+            i for i, e in enumerate(pool)
+            if np.hypot(*(e[1] - e[0] - vector)) <= 1e-9 * max(size, 1e-300)
+        ]  # fmt: skip
+        if not same:  # a force of round-off, not drawn
+            continue
+        i = min(same, key=lambda k: float(np.hypot(*(pool[k][0] - a.at))))
+        out.append((a, pool.pop(i)))
+    sizes = [np.hypot(*a.force) for a in arrows if a.force is not None]
+    seen = [s for s in sizes if s > 1e-6 * max(sizes, default=0.0)]
+    assert len(out) >= len(seen)  # every force that is more than round-off
+    return out
 
 
 def _joint_problems(ax, boxes: dict, forces: dict) -> list[str]:
