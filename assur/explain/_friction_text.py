@@ -14,11 +14,13 @@ known ones.
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
 
 from assur._friction import Still, rate, solve_group, still, substituted
+from assur._newton import QUICK
 from assur._vec import Array
 from assur.explain._note import Block, Display, Grid, Para
 from assur.explain._position import Position, at, perp, value
@@ -242,25 +244,11 @@ def group_friction_blocks(
     if settled:
         how = (
             "The sizes settle; Newton's method on them, which the analysis uses, "
-            f"finds the same in {steps} step{'s' if steps != 1 else ''}."
+            f"finds the same in {_newton_steps(steps)}."
         )
     else:
-        # near self-locking each step shrinks the change little, or not at all
         rows.append(("found", *(f"${num(final[p.name])}$" for p in pairs)))
-        how = (
-            f"The substitution settles slowly here (or not at all): the sizes "
-            f"found (last row) are those of Newton's method on them, "
-            f"{steps} step{'s' if steps != 1 else ''}, which the analysis uses."
-        )
-        last, before = (
-            max(abs(tried[i][k] - tried[i - 1][k]) for k in final) for i in (-1, -2)
-        )
-        if before > 0:
-            # the ratio of the steps is the loop's gain: 1 is self-locking
-            how += (
-                f" Each step changes the sizes by about {last / before:.2f} times "
-                "the step before: near 1, the group is near self-locking."
-            )
+        how = _unsettled(tried, steps)
     return [
         Para(
             f"Friction in {listed}: {', '.join(laws)} (kinetic friction only: a "
@@ -283,6 +271,36 @@ def group_friction_blocks(
             "them: the reactions found have the sizes the friction was taken from."
         ),
     ]
+
+
+def _newton_steps(steps: int) -> str:
+    """Return how many steps Newton's method took, and how, in words."""
+    if steps > QUICK:
+        # from the frictionless sizes it did not settle: the friction was raised
+        return f"{steps} steps, the friction raised from zero by degrees"
+    return f"{steps} step{'s' if steps != 1 else ''}"
+
+
+def _unsettled(tried: list[dict[str, float]], steps: int) -> str:
+    """Return what the note says where repeated substitution has not settled."""
+    how = (
+        "The substitution settles slowly here, or not at all: the sizes found (last "
+        f"row) are those of Newton's method on them ({_newton_steps(steps)}), which "
+        "the analysis uses: of the solutions Coulomb's law allows (a slider may jam "
+        "in its guide too) the one that grows from the frictionless sizes."
+    )
+    changes = [
+        max(abs(tried[i][k] - tried[i - 1][k]) for k in tried[i])
+        for i in range(max(1, len(tried) - 4), len(tried))
+    ]
+    ratios = [b / a for a, b in itertools.pairwise(changes) if a > 0]
+    if len(ratios) >= 3 and max(ratios) - min(ratios) < 0.05:
+        # a steady ratio of the steps is the loop's gain: 1 is self-locking
+        how += (
+            f" Each step changes the sizes by about {ratios[-1]:.2f} times the step "
+            "before: near 1, the group is near self-locking."
+        )
+    return how
 
 
 def normal_symbol(pair: PairPlan, body: int) -> str:
