@@ -304,3 +304,18 @@ def test_a_substitution_that_jumps_about_gives_no_ratio() -> None:
     assert "times the step before" not in note
     assert "(151 steps, the friction raised from zero by degrees)" in note
     assert "a slider may jam in its guide too" in note
+
+
+def test_an_input_slider_s_guide_is_written_in_the_order_it_is_found() -> None:
+    # the whole reaction N + F_f was written before N and F_f were found
+    path = Path(__file__).parent / "data" / "friction" / "ram_up_a_steep_guide.toml"
+    note = str(explain(assur.load(path), 0.0))
+    driver = note.split("## 5. The input link")[1].split("## 6.")[0]
+    order = [
+        driver.index(r"N_{\mathrm{guide}} = -\sum \vec F \cdot \vec n"),
+        driver.index(r"F_{f,\mathrm{guide}} = -f_{\mathrm{guide}}"),
+        driver.index(r"F_{b} = -\sum \vec F \cdot \vec e"),
+        driver.index(r"\vec F_{\mathrm{ground},\mathrm{slider}} = \vec N_{"),
+    ]
+    assert order == sorted(order)
+    assert "an efficiency means little there" in driver

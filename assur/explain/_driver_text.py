@@ -108,7 +108,9 @@ def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
     return (
         words + f", and the driver {how} $({sym} - {sym}{IDEAL})\\,{rate} = "
         f"{num(extra, more=_digits(speed))} \\cdot {par(speed)} = "
-        f"{num(extra * speed)}$ W {less}:{whose} the power friction takes."
+        f"{num(extra * speed)}$ W {less}:{whose} the power friction takes. (At one "
+        "position the power may flow either way, so an efficiency means little "
+        "there: the cycle's is given by the summary, assur forces FILE --summary.)"
     )
 
 
@@ -192,20 +194,24 @@ def _slider(pos: Position, i: int, loads: list[Load]) -> list[Block]:
             *couple,
         ]
     lines, force, term = rubbing
+    # the normal reaction first (with the guide's couple), then the friction its
+    # size sets, the balancing force and the whole reaction: each from the ones
+    # before
     return [
+        *couple,
         Para(
-            "Forces across the guide give the frame's normal reaction, whose size "
-            f"sets the friction in {plain(d.pair.name)}; forces along it the "
-            f"balancing force ${sym}$, which overcomes the friction too:"
+            f"The size of the normal reaction sets the friction in "
+            f"{plain(d.pair.name)}; forces along the guide give the balancing force "
+            f"${sym}$, which overcomes the friction too, and the frame's reaction is "
+            "the normal one and the friction together:"
         ),
         Display(
             (
-                sliding_total(pos, d.pair, d.body, rest, symbol),
                 *lines,
                 f"{sym} = -\\sum \\vec F \\cdot \\vec e {term} = "
                 f"-{components(loads, e)} - "
                 f"{par(force)} = {num(-along - force)}\\ \\mathrm{{N}}",
+                sliding_total(pos, d.pair, d.body, rest, symbol),
             )
         ),
-        *couple,
     ]
