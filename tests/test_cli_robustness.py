@@ -667,19 +667,27 @@ def test_an_empty_mechanism_file_name_is_refused(capsys):
     )
 
 
-@pytest.mark.parametrize("option", ["--csv", "--json"])
-def test_standard_output_in_utf16_is_refused(tmp_path: Path, option: str) -> None:
-    # the header came out in UTF-16 (with its mark), the rows' numbers in ASCII:
-    # a stream that reads as neither
+def _table_in(
+    tmp_path: Path, encoding: str, option: str
+) -> subprocess.CompletedProcess[bytes]:
+    """Run ``assur forces`` with its table (``--csv -`` or ``--json``) on standard
+    output in ``encoding``; return what came out, as bytes."""
     argv = ["forces", str(EXAMPLES / "four_bar.toml"), "--angles", "0:10:5", option]
-    result = subprocess.run(
+    return subprocess.run(
         [sys.executable, "-m", "assur", *argv, *(["-"] if option == "--csv" else [])],
         cwd=tmp_path,
-        env=subprocess_env(PYTHONIOENCODING="utf-16"),
+        env=subprocess_env(PYTHONIOENCODING=encoding),
         capture_output=True,
         timeout=120,
         check=False,
     )
+
+
+@pytest.mark.parametrize("option", ["--csv", "--json"])
+def test_standard_output_in_utf16_is_refused(tmp_path: Path, option: str) -> None:
+    # the header came out in UTF-16 (with its mark), the rows' numbers in ASCII:
+    # a stream that reads as neither
+    result = _table_in(tmp_path, "utf-16", option)
     assert (result.returncode, result.stdout) == (2, b"")
     assert result.stderr.decode("utf-16") == (
         "assur: error: standard output: its encoding (utf-16) does not write numbers "
@@ -694,15 +702,7 @@ def test_standard_output_in_utf8_with_its_mark_has_one(
 ) -> None:
     # a spreadsheet's UTF-8 (with a byte-order mark) is ASCII's numbers too: the
     # table was refused, and its JSON would have had a mark inside its text
-    argv = ["forces", str(EXAMPLES / "four_bar.toml"), "--angles", "0:10:5", option]
-    result = subprocess.run(
-        [sys.executable, "-m", "assur", *argv, *(["-"] if option == "--csv" else [])],
-        cwd=tmp_path,
-        env=subprocess_env(PYTHONIOENCODING="utf-8-sig"),
-        capture_output=True,
-        timeout=120,
-        check=False,
-    )
+    result = _table_in(tmp_path, "utf-8-sig", option)
     assert result.returncode == 0, result.stderr
     assert result.stdout.startswith(b"\xef\xbb\xbf")
     assert result.stdout.count(b"\xef\xbb\xbf") == 1

@@ -637,17 +637,7 @@ def test_loads_that_do_no_work_need_no_motor() -> None:
 def test_parquet_on_standard_output_keeps_the_lines_off_it(tmp_path: Path):
     pq = pytest.importorskip("pyarrow.parquet", reason="pyarrow is not installed")
     # "wrote ... to /dev/stdout" was written after the file's footer: no Parquet
-    result = subprocess.run(
-        f"{sys.executable} -m assur dynamics {FOUR_BAR} --angles 0:10:5 "
-        "--parquet /dev/stdout > out.parquet",
-        shell=True,
-        cwd=tmp_path,
-        env=subprocess_env(),
-        capture_output=True,
-        text=True,
-        timeout=120,
-        check=False,
-    )
+    result = _shell(tmp_path, "--angles 0:10:5 --parquet /dev/stdout > out.parquet")
     assert result.returncode == 0, result.stderr
     assert pq.read_table(tmp_path / "out.parquet").num_rows == 3
     assert "wrote 3 rows x" in result.stderr
