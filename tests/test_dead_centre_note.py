@@ -60,7 +60,7 @@ def test_friction_s_share_of_a_load_is_a_percentage() -> None:
     note = str(explain(assur.load(EXAMPLES / "slider_crank_friction.toml"), 100.0))
     (said,) = [line for line in note.splitlines() if "Without friction" in line]
     # M_b = -51.26, ideal -62.8 (a reviewer's own fixed-point solution)
-    share = re.search(r"= ([0-9.]+)\\,\\%\$ of its size", said)
+    share = re.search(r"= ([0-9.]+)\\,\\%\$ of \$\|M_\{b\}\^", said)
     assert share is not None, said
     assert float(share.group(1)) == pytest.approx(100 * 11.54 / 62.8, rel=2e-3)
 

@@ -93,7 +93,7 @@ def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
     if abs(ideal) > ZERO * _size(pos, i):
         words += (
             f" ($100 \\cdot \\frac{{{num(abs(extra))}}}{{{num(abs(ideal))}}} = "
-            f"{num(100.0 * abs(extra) / abs(ideal))}\\,\\%$ of its size)"
+            f"{num(100.0 * abs(extra) / abs(ideal))}\\,\\%$ of $|{sym}{IDEAL}|$)"
         )
     if not speed:
         return words + "."

@@ -230,8 +230,9 @@ def group_friction_blocks(
     if any(p.kind == "P" for p in pairs):
         laws.append(
             "a sliding pair's force of its first link on its second $F_f = "
-            "-f\\,|N|\\,\\mathrm{sgn}\\,\\dot s$ along its slide line (its "
-            "couple $M$ makes none in this model)"
+            "-f\\,|N|\\,\\mathrm{sgn}\\,\\dot s$ along its slide line ($\\dot s$ "
+            "the slide of its second link relative to its first; its couple $M$ "
+            "makes none in this model)"
         )
     head = ("step", *(f"${size_symbol(pos, p)}$" for p in pairs))
     rows = [
@@ -254,12 +255,13 @@ def group_friction_blocks(
             f"Friction in {listed}: {', '.join(laws)} (kinetic friction only: a "
             "pair at rest has none). Each depends on the size of a reaction not "
             "yet known. With the senses of the relative motions known, each "
-            "friction load is its size times a known factor, and the group's "
-            "reactions are linear in the sizes, but the sizes of the reactions are "
-            "not: they are found by repeated substitution. Start from the sizes "
-            "without this group's friction, take the friction loads of those "
-            "sizes as known loads, solve the group as without friction, take the "
-            "sizes of the reactions it gives, and repeat (N):"
+            "friction load is its size times a known factor, and the reactions "
+            "are linear in the friction loads; but a reaction's size is not linear "
+            "in its components, so the sizes are found by repeated substitution. "
+            "Start from the sizes without this group's friction, take the friction "
+            "loads of those sizes as known loads, solve the group as without "
+            "friction, take the sizes of the reactions it gives, and repeat (sizes "
+            "in N):"
         ),
         Grid(head, tuple(rows)),
         Para(how + " The friction loads of these sizes:"),
@@ -277,30 +279,50 @@ def _newton_steps(steps: int) -> str:
     """Return how many steps Newton's method took, and how, in words."""
     if steps > QUICK:
         # from the frictionless sizes it did not settle: the friction was raised
-        return f"{steps} steps, the friction raised from zero by degrees"
+        return f"{steps} steps, the friction raised by degrees"
     return f"{steps} step{'s' if steps != 1 else ''}"
 
 
 def _unsettled(tried: list[dict[str, float]], steps: int) -> str:
-    """Return what the note says where repeated substitution has not settled."""
-    how = (
-        "The substitution settles slowly here, or not at all: the sizes found (last "
-        f"row) are those of Newton's method on them ({_newton_steps(steps)}), which "
-        "the analysis uses: of the solutions Coulomb's law allows (a slider may jam "
-        "in its guide too) the one that grows from the frictionless sizes."
+    """Return what the note says where repeated substitution has not settled.
+
+    The ratio of its last steps (of the size that moves most) tells the case: near
+    +1 the steps shrink slowly the same way (near self-locking, with the steps
+    still needed); below 0 they overshoot and swing back, which says nothing of
+    locking; not steady, they jump about.
+    """
+    key = max(tried[-1], key=lambda k: abs(tried[-1][k] - tried[-2][k]))
+    moves = [tried[i][key] - tried[i - 1][key] for i in range(1, len(tried))][-4:]
+    ratios = [b / a for a, b in itertools.pairwise(moves) if a != 0]
+    steady = len(ratios) >= 3 and max(ratios) - min(ratios) < 0.05
+    r = ratios[-1] if ratios else math.nan
+    found = (
+        f" The sizes found (last row) are those of Newton's method on them "
+        f"({_newton_steps(steps)}), which the analysis uses: of the solutions "
+        "Coulomb's law allows (a slider may jam in its guide too), the one reached "
+        "from the frictionless solution as the friction is raised from zero."
     )
-    changes = [
-        max(abs(tried[i][k] - tried[i - 1][k]) for k in tried[i])
-        for i in range(max(1, len(tried) - 4), len(tried))
-    ]
-    ratios = [b / a for a, b in itertools.pairwise(changes) if a > 0]
-    if len(ratios) >= 3 and max(ratios) - min(ratios) < 0.05:
-        # a steady ratio of the steps is the loop's gain: 1 is self-locking
-        how += (
-            f" Each step changes the sizes by about {ratios[-1]:.2f} times the step "
-            "before: near 1, the group is near self-locking."
+    if steady and 0 < r < 1:
+        more = math.ceil(
+            math.log(SETTLED * max(tried[-1].values()) / abs(moves[-1])) / math.log(r)
         )
-    return how
+        return (
+            f"The substitution settles slowly here: each step moves the sizes the "
+            f"same way by about {r:.2f} times the step before (near 1, the group is "
+            f"near self-locking), about {more} steps more." + found
+        )
+    if steady and -1 < r < 0:
+        return (
+            "The substitution settles slowly here: each step overshoots and swings "
+            f"back, by about {abs(r):.2f} times the step before (ratio {r:.2f}; a "
+            "swing says nothing of self-locking)." + found
+        )
+    if steady:
+        return (
+            f"The substitution does not settle here: each step is about {r:.2f} "
+            "times the step before, and the steps grow." + found
+        )
+    return "The substitution does not settle here: its steps jump about." + found
 
 
 def normal_symbol(pair: PairPlan, body: int) -> str:

@@ -23,7 +23,7 @@ def markdown(note: Note) -> str:
         elif isinstance(block, Display):
             out += [f"$$ {line} $$" for line in block.lines] + [""]
         elif isinstance(block, Grid):
-            out.append("| " + " | ".join(block.head) + " |")
+            out.append("| " + " | ".join(_cell(c) for c in block.head) + " |")
             out.append("|" + "---|" * len(block.head))
             out += [
                 "| " + " | ".join(_cell(c) for c in row) + " |" for row in block.rows
