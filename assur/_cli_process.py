@@ -165,8 +165,18 @@ def _closed_streams() -> Iterator[None]:
 
 @contextlib.contextmanager
 def _lenient_streams() -> Iterator[None]:
-    """Write what a terminal's encoding cannot show as backslash escapes."""
+    """Write what a terminal's encoding cannot show as backslash escapes.
+
+    Standard output in UTF-8 with a byte-order mark is written as UTF-8: the
+    table's bytes and print()'s text would each put a mark of their own in it.
+    """
     saved = []
+    marked = getattr(sys.stdout, "encoding", None) or ""
+    if marked.replace("_", "-").lower() not in ("utf-8-sig", "utf8-sig"):
+        marked = ""
+    if marked and hasattr(sys.stdout, "reconfigure"):
+        with contextlib.suppress(OSError, ValueError):
+            sys.stdout.reconfigure(encoding="utf-8")
     for stream in (sys.stdout, sys.stderr):
         errors = getattr(stream, "errors", None)
         if errors in (None, "backslashreplace") or not hasattr(stream, "reconfigure"):
@@ -180,6 +190,9 @@ def _lenient_streams() -> Iterator[None]:
         for stream, errors in saved:
             with contextlib.suppress(OSError, ValueError):
                 stream.reconfigure(errors=errors)
+        if marked and hasattr(sys.stdout, "reconfigure"):
+            with contextlib.suppress(OSError, ValueError):
+                sys.stdout.reconfigure(encoding=marked)
 
 
 def _quiet_stdout() -> None:

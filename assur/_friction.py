@@ -62,7 +62,8 @@ class GroupFriction:
     N m on a revolute pair's second link, force N along a prismatic pair's slide
     line); ``wrenches`` the friction wrench on each such pair's second link;
     ``locked`` the positions where the group locks; ``iterations`` how many Newton
-    steps it took.
+    steps it took; ``raised`` whether some position needed the friction raised from
+    zero by degrees (Newton from the frictionless sizes did not settle there).
     """
 
     record: Equilibrium
@@ -70,6 +71,7 @@ class GroupFriction:
     wrenches: dict[str, Wrench]
     locked: Mask | None
     iterations: int
+    raised: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -266,7 +268,8 @@ def solve_group(
         sizes[doubtful], settled[doubtful] = found, kept
         count += more
         doubtful = doubtful[~kept]
-    if doubtful.size:
+    raised = bool(doubtful.size)
+    if raised:
         found, kept, more = _raised(
             [a[doubtful] for a in start],
             [[a[doubtful] for a in r] for r in response],
@@ -294,7 +297,7 @@ def solve_group(
         for k, p in enumerate(pairs)
     }
     return GroupFriction(
-        record, values, friction, locked if locked.any() else None, count
+        record, values, friction, locked if locked.any() else None, count, raised
     )
 
 

@@ -50,10 +50,7 @@ def write_stdout(text: str) -> None:
         stream.write(text)
         return
     stream.flush()
-    encoding = stream.encoding or "utf-8"
-    if codecs.lookup(encoding).name == "utf-8-sig":
-        encoding = "utf-8"  # a mark at each write would fall inside the text
-    write_all(buffer, text.encode(encoding, "backslashreplace"))
+    write_all(buffer, text.encode(_encoding(stream), "backslashreplace"))
 
 
 class StdoutError(Exception):
@@ -78,7 +75,7 @@ def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
     :class:`StdoutError`.
     """
     stream = sys.stdout
-    encoding = stream.encoding or "utf-8"
+    encoding = _encoding(stream)
     buffer = getattr(stream, "buffer", None)
     if buffer is not None and not _ascii_numbers(encoding):
         # the rows' numbers go out as ASCII bytes: under UTF-16 the names would not
@@ -88,9 +85,6 @@ def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
             "(PYTHONIOENCODING=utf-8)"
         )
         raise OutputError(msg)
-
-    # UTF-8 with a byte-order mark (for a spreadsheet) puts one at the start
-    marked = [codecs.lookup(encoding).name == "utf-8-sig"]
 
     def encode(text: str) -> bytes:
         try:
@@ -103,10 +97,6 @@ def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
                 "output in UTF-8 (PYTHONIOENCODING=utf-8)"
             )
             raise OutputError(msg) from None
-        if marked[0]:
-            marked[0] = False
-        elif data.startswith(codecs.BOM_UTF8):
-            data = data[len(codecs.BOM_UTF8) :]
         return data
 
     def write(data: bytes) -> None:
@@ -122,13 +112,22 @@ def stdout_writer() -> tuple[Callable[[bytes], None], Callable[[str], bytes]]:
     return write, encode
 
 
-def _ascii_numbers(encoding: str) -> bool:
-    """Whether ``encoding`` writes the rows' characters as ASCII does.
+def _encoding(stream: Any) -> str:
+    """Return the encoding text is written to ``stream`` in, bytes below it.
 
-    A UTF-8 byte-order mark before them is let through.
+    UTF-8 with a byte-order mark is UTF-8: each write of its own would put a mark
+    inside the text (the command line sets standard output so, print() included).
     """
+    encoding = stream.encoding or "utf-8"
     try:
-        data = _ASCII.encode(encoding).removeprefix(codecs.BOM_UTF8)
-        return data == _ASCII.encode("ascii")
+        return "utf-8" if codecs.lookup(encoding).name == "utf-8-sig" else encoding
+    except LookupError:
+        return encoding
+
+
+def _ascii_numbers(encoding: str) -> bool:
+    """Whether ``encoding`` writes the rows' characters as ASCII does."""
+    try:
+        return _ASCII.encode(encoding) == _ASCII.encode("ascii")
     except (LookupError, UnicodeError):
         return False

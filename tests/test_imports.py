@@ -381,7 +381,11 @@ def test_a_table_command_loads_no_picture_module(tmp_path: Path) -> None:
         "'pandas') if m in sys.modules))\n"
     )
     result = subprocess.run(
-        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+        [sys.executable, "-c", code],
+        capture_output=True,
+        text=True,
+        check=True,
+        timeout=120,
     )
     assert result.stdout.strip() == "[]"
     assert (tmp_path / "k.csv").exists()

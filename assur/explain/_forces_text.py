@@ -18,11 +18,8 @@ import math
 import numpy as np
 
 from assur._vec import Array
-from assur.explain._friction_text import (
-    group_friction_blocks,
-    normal_symbol,
-    sliding_total,
-)
+from assur.explain._friction_text import normal_symbol, sliding_total
+from assur.explain._group_friction_text import group_friction_blocks
 from assur.explain._loads_text import (
     Load,
     components,

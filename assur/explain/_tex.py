@@ -50,13 +50,11 @@ def unit(symbol: str) -> str:
     return f"\\ \\mathrm{{{symbol}}}"
 
 
-def num(x: float, scale: float = 1.0, more: int = 0) -> str:
+def num(x: float, scale: float = 1.0) -> str:
     """Return ``x`` rounded as the note rounds (TeX).
 
-    At least :data:`DECIMALS` decimals and :data:`SIGNIFICANT` significant digits,
-    and ``more`` decimals still (a factor the next product multiplies by a large
-    number: the product written must follow from it by hand); trailing zeros
-    dropped; below ``ZERO * scale`` the value is 0.
+    At least :data:`DECIMALS` decimals and :data:`SIGNIFICANT` significant digits;
+    trailing zeros dropped; below ``ZERO * scale`` the value is 0.
 
     Examples
     --------
@@ -72,7 +70,7 @@ def num(x: float, scale: float = 1.0, more: int = 0) -> str:
     if not SCIENTIFIC[0] <= size < SCIENTIFIC[1]:
         mantissa, exponent = f"{x:.{SIGNIFICANT - 1}e}".split("e")
         return f"{_trim(mantissa)} \\cdot 10^{{{int(exponent)}}}"
-    decimals = max(DECIMALS, SIGNIFICANT - 1 - math.floor(math.log10(size))) + more
+    decimals = max(DECIMALS, SIGNIFICANT - 1 - math.floor(math.log10(size)))
     text = _trim(f"{x:.{decimals}f}")
     return "0" if text in ("-0", "0") else text
 

@@ -175,7 +175,10 @@ def zhukovsky_lever(
     # at a dead centre the loads lie on the plan's rays and on each other: each is
     # moved a step aside, dotted lines joining it to its point
     drawn = [(np.zeros(2), v / mu) for v in found.values()]
+    largest = max((float(np.hypot(*f)) for _, f, *_ in arrows), default=0.0)
     for at, force, label, couple in arrows:
+        if not float(np.hypot(*force)) > ROUND_OFF * largest:
+            continue  # round-off (a dead centre's): not drawn 3 mm long either way
         tip, mark = _tip(at / mu, force / fmu)
         # a load of nothing (a crank's inertia force at its centre) gets no arrow
         # and no name: its share, nothing, is listed
