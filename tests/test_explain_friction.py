@@ -1,7 +1,8 @@
 """Friction in the explanatory note: every number it prints against the table.
 
 The note of a mechanism with friction adds, for each group, the friction load of
-each pair with its numbers, how Newton's method found the reactions' sizes, and the
+each pair with its numbers, how repeated substitution finds the reactions' sizes
+(step by step, and Newton's where it does not settle), and the
 friction terms of the balancing load and of Zhukovsky's lever. The parser of
 :mod:`tests.test_explain` reads them; here they are checked at many positions.
 """
