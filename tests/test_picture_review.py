@@ -5,6 +5,7 @@ Each test names the picture as it was wrong and checks it as drawn (Agg).
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import matplotlib
@@ -49,7 +50,7 @@ def test_the_lever_draws_couples_to_the_forces_scale() -> None:
         legend = [t.get_text() for t in ax.get_legend().get_texts()]
         assert sum("1 mm =" in t for t in legend) == 1, legend
         assert any("couple" in t and "same scale" in t for t in legend)
-        assert any("dotted: below the scale, drawn 3 mm long" in t for t in legend)
+        assert any("*: below the scale, drawn 3 mm long" in t for t in legend)
         couples = _arrows(ax, lever.COUPLE)
         assert couples
         assert max(couples) <= lever.MARK * (1 + 1e-9)
@@ -341,5 +342,54 @@ def test_the_lever_s_small_loads_are_drawn_long_enough_to_be_seen() -> None:
         assert min(forces) == pytest.approx(lever.MARK)
         named = [t.get_text() for t in ax.texts if t.get_text().startswith("$\\vec")]
         assert len(named) == 4  # the three inertia forces and the load
+    finally:
+        plt.close(ax.figure)
+
+
+@pytest.mark.parametrize(("stem", "angle"), [("slider_crank_exercise", 0.0),
+                                             ("scotch_yoke", 0.0),
+                                             ("slot_mechanism", 180.0)])  # fmt: skip
+def test_the_lever_s_loads_kept_apart_keep_their_moments(
+    stem: str, angle: float
+) -> None:
+    import matplotlib.pyplot as plt
+
+    from assur.plotting.plans import _perp, _scale, images
+
+    from .test_plans import _segments
+
+    def _cross(a, b) -> float:
+        return float(a[0] * b[1] - a[1] * b[0])
+
+    # stepped sideways off one another, loads on the lever showed arms they do not
+    # have (Q_ram at 20.4 mm for 19.2, a dead centre's loads a moment for 0): slid
+    # along their own lines, each keeps its moment about the pole
+    table = assur.forces(assur.load(EXAMPLES / f"{stem}.toml"), [angle])
+    ax = lever.zhukovsky_lever(table)
+    try:
+        drawn = _segments(ax)
+        pos = lever._lever_position(table, None, 0, "test")
+        bodies, _, _ = lever.lever_rates(pos, 0)
+        turned = dataclasses.replace(pos, bodies=bodies)
+        terms = lever.lever_parts(pos, bodies)
+        arrows = lever._lever_arrows(turned, terms, lever._apart(turned, terms))
+        found = [_perp(v) for v in images(turned, 1).values()]
+        mu = _scale(found)
+        largest = max(np.hypot(*f) for _, f, _, _ in arrows)
+        fmu = _scale([f for _, f, _, _ in arrows]) * 2.0
+        for at, force, _, _ in arrows:
+            if not np.hypot(*force) > 1e-9 * largest:
+                continue  # round-off: not drawn
+            u = force / np.hypot(*force)
+            length = max(np.hypot(*force) / fmu, lever.MARK)
+            # an arrow of its length drawn on this load's line of action, its way
+            on_line = [
+                d for d in drawn
+                if abs(_cross(u, (d[1] - d[0]) / np.hypot(*(d[1] - d[0])))) < 1e-9
+                and np.dot(u, d[1] - d[0]) > 0
+                and abs(_cross(u, d[0] - at / mu)) < 1e-6
+                and abs(np.hypot(*(d[1] - d[0])) - length) < 1e-6
+            ]  # fmt: skip
+            assert on_line, (at, force)
     finally:
         plt.close(ax.figure)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["lies_on", "moved"]
+__all__ = ["lies_on", "moved", "slid"]
 
 Ends = tuple[np.ndarray, np.ndarray]
 """An arrow's tail and tip."""
@@ -63,4 +63,28 @@ def moved(drawn: list[Ends], start: np.ndarray, end: np.ndarray, step: float,
             lies_on(ends, other, near) or lies_on(other, ends, near) for other in drawn
         ):
             return ends
+    return start, end
+
+
+def slid(drawn: list[Ends], start: np.ndarray, end: np.ndarray, step: float,
+         near: float, most: int = 60) -> Ends:  # fmt: skip
+    """Return an arrow's ends, slid along its own line by steps of ``step``.
+
+    As :func:`moved`, but along the arrow's line of action: on Zhukovsky's lever a
+    load's moment about the pole stays what it is wherever on that line it is
+    drawn, where a step sideways would show an arm it does not have. Forward, then
+    back, farther each time, up to ``most`` steps each way.
+    """
+    length = float(np.hypot(*(end - start)))
+    if length <= near:
+        return start, end
+    u = step * (end - start) / length
+    for k in range(most + 1):
+        for sign in (1, -1) if k else (1,):
+            ends = (start + sign * k * u, end + sign * k * u)
+            if not any(
+                lies_on(ends, other, near) or lies_on(other, ends, near)
+                for other in drawn
+            ):
+                return ends
     return start, end

@@ -37,7 +37,7 @@ INTERNAL_DASH = (0, (3.0, 1.6))
 """The dash of a reaction inside a group, drawn on both of its pair's links."""
 ARROW_ZORDER = 6
 """Force arrows lie above the links (<= 3), the joints (4) and the paths (5)."""
-APART = 0.7
+APART = 1.0
 """How far apart, in joint radii, forces on one line at one place are drawn: at a
 dead centre a slider's inertia force and the rod's reaction on it lie on each other
 (and the reaction's other side, on the rod)."""

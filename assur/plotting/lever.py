@@ -20,12 +20,13 @@ from assur.explain._friction_text import power_rows
 from assur.explain._lever import LeverTerm, lever_load, lever_parts, lever_rates
 from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
+from assur.plotting._apart import slid
 from assur.plotting._drawing import (
+    ALONG,
+    BESIDE,
     _arrow,
     _axes,
-    _beside,
     _images_plot,
-    _joined,
     _legend,
 )
 from assur.plotting._mathtext import _symbol
@@ -127,9 +128,9 @@ def zhukovsky_lever(
     forces ``M / l`` and ``-M / l`` across the link's two joints farthest apart, at
     their images (a link without two joints apart has its couple listed only),
     drawn to the forces' scale: arrow times arm is each share. An arrow shorter
-    than :data:`MARK` at that scale is drawn that long, dotted, the legend saying
-    so; one that lies on another or on a ray of the plan is drawn a step aside,
-    joined to its point by dotted lines.
+    than :data:`MARK` at that scale is drawn that long, its name starred, the legend
+    saying so; one that lies on another is slid along its own line (its moment
+    stays), a dotted line back to its point.
     Beside the lever every load's moment about the pole divided by the driver's
     speed is listed (``assur.plotting.lever.lever_moments``): the terms add up to
     the balancing load of driver ``driver`` written below them (friction's power
@@ -172,9 +173,9 @@ def zhukovsky_lever(
     colours = {_symbol(t.load.tex): load_colour(t.load.tex) for t in terms}
     marked = False
     used: dict[str, None] = {}
-    # at a dead centre the loads lie on the plan's rays and on each other: each is
-    # moved a step aside, dotted lines joining it to its point
-    drawn = [(np.zeros(2), v / mu) for v in found.values()]
+    # at a dead centre the loads lie on each other: each is slid along its own
+    # line (its moment about the pole stays), a dotted line back to its point
+    drawn: list[tuple[np.ndarray, np.ndarray]] = []
     largest = max((float(np.hypot(*f)) for _, f, *_ in arrows), default=0.0)
     for at, force, label, couple in arrows:
         if not float(np.hypot(*force)) > ROUND_OFF * largest:
@@ -183,11 +184,16 @@ def zhukovsky_lever(
         # a load of nothing (a crank's inertia force at its centre) gets no arrow
         # and no name: its share, nothing, is listed
         color = COUPLE if couple else colours.get(label, LOAD_COLOR)
-        ends = _beside(drawn, at / mu, tip)
-        if _arrow(ax, *ends, color, ls=":" if mark else "-"):
-            _joined(ax, at / mu, tip, ends)
+        ends = slid(drawn, at / mu, tip, BESIDE, ALONG)
+        if _arrow(ax, *ends, color):
+            if float(np.hypot(*(ends[0] - at / mu))) > 0.0:
+                ax.plot(*np.transpose([at / mu, ends[0]]), ":", color="#555555",
+                        lw=0.8)  # fmt: skip
             drawn.append(ends)
-            text = ax.annotate(label, tuple(ends[1]), fontsize=7, color=color)
+            # a load drawn longer than its scale is starred, its arrow solid (a
+            # dotted one read as the dotted line to a slid load's point)
+            shown = f"{label}*" if mark else label
+            text = ax.annotate(shown, tuple(ends[1]), fontsize=7, color=color)
             names.append(Name(text, *ends))
             used[color] = None
             marked |= mark
@@ -200,7 +206,7 @@ def zhukovsky_lever(
     entries = [(text, c) for c, text in kinds.items() if c in used]
     if COUPLE in used:
         entries.append(("couple M as ±M/l at two joints, same scale", COUPLE))
-    below = f"dotted: below the scale, drawn {MARK:g} mm long\n" if marked else ""
+    below = f"*: below the scale, drawn {MARK:g} mm long\n" if marked else ""
     note = (
         f"forces: 1 mm = {quantity(fmu, 'N', 6)}\n{below}"
         f"lever: μv = {quantity(mu, mu_unit, 6)}{per},\nturned 90°"
