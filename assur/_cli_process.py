@@ -18,6 +18,8 @@ import threading
 from collections.abc import Iterator
 from typing import Any
 
+from assur._stdout import unmarked
+
 __all__ = [
     "RESEND",
     "_Stopped",
@@ -172,7 +174,7 @@ def _lenient_streams() -> Iterator[None]:
     """
     saved = []
     marked = getattr(sys.stdout, "encoding", None) or ""
-    if marked.replace("_", "-").lower() not in ("utf-8-sig", "utf8-sig"):
+    if unmarked(marked) == marked:
         marked = ""
     if marked and hasattr(sys.stdout, "reconfigure"):
         with contextlib.suppress(OSError, ValueError):

@@ -31,7 +31,13 @@ from assur._output import (
 from assur._sliced import Slice
 from assur.errors import UsageError
 
-__all__ = ["_check_outputs", "_write_tables", "check_parquet"]
+__all__ = [
+    "_check_outputs",
+    "_write_tables",
+    "check_off_stdout",
+    "check_parquet",
+    "open_output",
+]
 
 
 def _check_outputs(args: argparse.Namespace) -> None:
@@ -57,17 +63,25 @@ def _check_outputs(args: argparse.Namespace) -> None:
             "of them (or --csv PATH)"
         )
         raise UsageError(msg)
-    on_stdout = "--json" if args.json else "--csv -" if args.csv == "-" else None
     for option in ("--csv", "--parquet"):
-        target = getattr(args, option[2:])
-        if on_stdout and target and target != "-" and is_stdout(target):
-            # /dev/stdout and its kin: two tables mixed in one stream
-            msg = (
-                f"{option} {path_text(target)}: is standard output, where "
-                f"{on_stdout} writes; expected a file of its own"
-            )
-            raise UsageError(msg)
+        check_off_stdout(args, option)
     check_parquet(args.parquet)
+
+
+def check_off_stdout(args: argparse.Namespace, option: str) -> None:
+    """Refuse ``option``'s file when it is standard output and a table goes there.
+
+    /dev/stdout and its kin beside ``--json`` or ``--csv -``: two tables mixed in
+    one stream.
+    """
+    on_stdout = "--json" if args.json else "--csv -" if args.csv == "-" else None
+    target = getattr(args, option[2:])
+    if on_stdout and target and target != "-" and is_stdout(target):
+        msg = (
+            f"{option} {path_text(target)}: is standard output, where {on_stdout} "
+            "writes; expected a file of its own"
+        )
+        raise UsageError(msg)
 
 
 def check_parquet(target: Any) -> None:
@@ -169,7 +183,7 @@ def _writers(
         return found
 
     if args.csv:
-        write, encode = _open(stack, args.csv)
+        write, encode = open_output(stack, args.csv)
         writers.append(CsvWriter(write, names, encode, told()))
     if args.parquet:
         path = stack.enter_context(output_path(args.parquet))
@@ -177,7 +191,7 @@ def _writers(
         writers.append(ParquetWriter(path, name, names, units, told()))
     json_table = _json_table(args)
     if json_table:
-        write, encode = _open(stack, "-")
+        write, encode = open_output(stack, "-")
         units = [table.column(c).unit for c in names]
         writers.append(JsonWriter(write, name, names, encode, told(), units=units))
     if len(writers) > 1 and (json_table or args.csv == "-"):
@@ -189,7 +203,7 @@ def _writers(
     return writers
 
 
-def _open(stack: contextlib.ExitStack, target: str) -> tuple[Any, Any]:
+def open_output(stack: contextlib.ExitStack, target: str) -> tuple[Any, Any]:
     """Return the ``write(bytes)`` and ``encode(text)`` of an output (``-``: stdout)."""
     if target == "-":
         return stdout_writer()

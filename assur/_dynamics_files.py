@@ -17,8 +17,9 @@ from typing import Any
 import numpy as np
 
 from assur._cli_common import bar_shown, is_stdout, quiet
+from assur._cli_tables import open_output
 from assur._landing import together
-from assur._output import finishing, output_path, path_text, write_all
+from assur._output import finishing, output_path, path_text, write_bytes
 from assur._progress import BAR_DELAY, progress
 from assur._tableio import CsvWriter, ParquetWriter
 from assur._text import counted
@@ -59,15 +60,12 @@ def write_files(
     written = []
     with together(), contextlib.ExitStack() as stack:
         for path, text, count, columns in files:
-            temporary = stack.enter_context(output_path(path))
-            with open(temporary, "wb") as stream_:
-                write_all(stream_, text.encode("utf-8"))
+            write_bytes(path, text.encode("utf-8"))  # lands with the others
             written.append((path, count, columns))
         writers: list[Any] = []
         if rows is not None and args.csv and args.csv != "-":
-            temporary = stack.enter_context(output_path(args.csv))
-            out = stack.enter_context(open(temporary, "wb"))
-            table = CsvWriter(lambda data: write_all(out, data), rows.names)
+            write, _ = open_output(stack, args.csv)
+            table = CsvWriter(write, rows.names)
             writers.append(stack.enter_context(finishing(table)))
             written.append((args.csv, len(rows), len(rows.names)))
         if rows is not None and args.parquet:

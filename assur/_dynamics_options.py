@@ -16,7 +16,7 @@ from assur._cli_common import (
     check_table_suffix,
     is_stdout,
 )
-from assur._cli_tables import check_parquet
+from assur._cli_tables import check_off_stdout, check_parquet
 from assur._output import path_text
 from assur._startup_checks import MOST_TURNS
 from assur.dynamics_flywheel import SMALLEST_DELTA, delta_in_range
@@ -62,14 +62,7 @@ def _check_options(args: argparse.Namespace) -> None:
         check_not_input("--csv", args.csv, args.file)
         check_table_suffix("--csv", args.csv, "CSV")
     if args.parquet:
-        on_stdout = "--json" if args.json else "--csv -" if args.csv == "-" else None
-        if on_stdout and args.parquet != "-" and is_stdout(args.parquet):
-            # /dev/stdout and its kin: two tables mixed in one stream
-            msg = (
-                f"--parquet {path_text(args.parquet)}: is standard output, where "
-                f"{on_stdout} writes; expected a file of its own"
-            )
-            raise UsageError(msg)
+        check_off_stdout(args, "--parquet")
         check_parquet(args.parquet)
         check_not_input("--parquet", args.parquet, args.file)
         check_table_suffix("--parquet", args.parquet, "Parquet")

@@ -16,7 +16,7 @@ from typing import Any
 
 from assur.errors import OutputError
 
-__all__ = ["StdoutError", "stdout_writer", "write_all", "write_stdout"]
+__all__ = ["StdoutError", "stdout_writer", "unmarked", "write_all", "write_stdout"]
 
 _ASCII = "".join(map(chr, range(32, 127))) + "\n"
 """The characters of a table's rows and JSON: written as ASCII bytes, whatever the
@@ -118,7 +118,11 @@ def _encoding(stream: Any) -> str:
     UTF-8 with a byte-order mark is UTF-8: each write of its own would put a mark
     inside the text (the command line sets standard output so, print() included).
     """
-    encoding = stream.encoding or "utf-8"
+    return unmarked(stream.encoding or "utf-8")
+
+
+def unmarked(encoding: str) -> str:
+    """Return ``encoding``, UTF-8 for UTF-8 with a byte-order mark (``utf-8-sig``)."""
     try:
         return "utf-8" if codecs.lookup(encoding).name == "utf-8-sig" else encoding
     except LookupError:

@@ -25,8 +25,6 @@ from assur.explain._loads_text import (
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position
 from assur.explain._tex import (
-    DECIMALS,
-    SIGNIFICANT,
     ZERO,
     name,
     num,
@@ -116,29 +114,22 @@ def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
     less = "less back" if value * speed < 0 else "more"
     return (
         words + f", and the driver {how} $({sym} - {sym}{IDEAL})\\,{rate} = "
-        f"{_factor(extra, speed)} \\cdot {_factor(speed, extra, paren=True)} = "
+        f"{num(extra, least=_decimals(speed))} \\cdot "
+        f"{par(speed, least=_decimals(extra))} = "
         f"{num(extra * speed)}$ W {less}:{whose} the power friction takes. (At one "
         "position the power may flow either way, so an efficiency means little "
         "there: the cycle's is given by the summary, assur forces FILE --summary.)"
     )
 
 
-def _factor(x: float, other: float, paren: bool = False) -> str:
-    """Return ``x`` written to the decimals its product by ``other`` needs by hand.
+def _decimals(other: float) -> int:
+    """Return the decimals a factor of ``other`` needs for their product by hand.
 
-    Each factor's rounding times the other stays under a quarter of the product's
-    last written digit (0.01): 16.2 written for 16.19731 made 16.2 * 200 read
-    3240 beside 3239.46 written.
+    Its rounding times ``other`` stays under a quarter of the product's last
+    written digit (0.01): 16.2 written for 16.19731 made 16.2 * 200 read 3240
+    beside 3239.46 written.
     """
-    decimals = max(0, math.ceil(math.log10(400.0 * abs(other)))) if other else 0
-    if x:  # and the significant digits every number of the note has
-        decimals = max(
-            decimals, DECIMALS, SIGNIFICANT - 1 - math.floor(math.log10(abs(x)))
-        )
-    text = f"{x:.{decimals}f}"
-    if "." in text:
-        text = text.rstrip("0").rstrip(".")
-    return f"({text})" if paren and x < 0 else text
+    return max(0, math.ceil(math.log10(400.0 * abs(other)))) if other else 0
 
 
 def _crank(pos: Position, i: int, loads: list[Load]) -> list[Block]:

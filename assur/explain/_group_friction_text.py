@@ -29,7 +29,7 @@ from assur.explain._tex import num, plain
 from assur.groups._protocol import Equilibrium, GroupSolver, Wrench
 from assur.kinetostatics import Applied, with_friction
 
-__all__ = ["group_friction_blocks", "newton_start", "substitution"]
+__all__ = ["group_friction_blocks", "newton_start", "substitution", "without_own"]
 
 SETTLED = 1e-6
 """A step of repeated substitution that changes no size by more than this share of
@@ -39,29 +39,32 @@ MOST_STEPS = 12
 
 
 def newton_start(
-    pos: Position, rec: Equilibrium, solver: GroupSolver
+    pos: Position, rec: Equilibrium, solver: GroupSolver, loads: list[Wrench]
 ) -> tuple[dict[str, float], int, bool]:
     """Return Newton's start (sizes, N), its steps, and whether it raised friction.
 
     Friction is raised from zero by degrees where Newton from the frictionless
     sizes does not settle. The start is the group solved without its own pairs'
     friction (the friction the groups solved before passed on is kept):
-    ``rec.loads`` less those pairs' friction. The iteration is run again from
-    there, as the reverse pass ran it.
+    ``loads`` (:func:`without_own`). The iteration is run again from there, as the
+    reverse pass ran it.
     """
-    loads = _without_own(pos, rec)
-    base = solver.equilibrium(pos.bodies, loads)
+    sizes = _sizes(pos, rec, solver.equilibrium(pos.bodies, loads))
     found = solve_group(solver, pos.bodies, loads, 1, at_rest(pos))
-    sizes = {
-        p.name: float(np.hypot(*normal_force(pos, p, base.reactions[p.name])))
-        for p in rubbing(rec.pairs)
-    }
     if found is None:
         return sizes, 0, False
     return sizes, found.iterations, found.raised
 
 
-def _without_own(pos: Position, rec: Equilibrium) -> list[Wrench]:
+def _sizes(pos: Position, rec: Equilibrium, record: Equilibrium) -> dict[str, float]:
+    """Return the sizes (N) friction is taken from, of ``rec``'s pairs in ``record``."""
+    return {
+        p.name: float(np.hypot(*normal_force(pos, p, record.reactions[p.name])))
+        for p in rubbing(rec.pairs)
+    }
+
+
+def without_own(pos: Position, rec: Equilibrium) -> list[Wrench]:
     """Return the loads on every link, the group's own pairs' friction taken off."""
     assert pos.result is not None
     count = len(pos.plan.bodies)
@@ -79,7 +82,11 @@ def _without_own(pos: Position, rec: Equilibrium) -> list[Wrench]:
 
 
 def substitution(
-    pos: Position, rec: Equilibrium, solver: GroupSolver, start: dict[str, float]
+    pos: Position,
+    rec: Equilibrium,
+    solver: GroupSolver,
+    loads: list[Wrench],
+    start: dict[str, float],
 ) -> list[dict[str, float]]:
     """Return the sizes (N) of repeated substitution from ``start``, step by step.
 
@@ -88,15 +95,12 @@ def substitution(
     changes no size by more than :data:`SETTLED` of the largest, or after
     :data:`MOST_STEPS` steps (near self-locking it settles slowly or not at all).
     """
-    loads, rest = _without_own(pos, rec), at_rest(pos)
-    pairs = rubbing(rec.pairs)
+    rest = at_rest(pos)
     steps = [start]
     for _ in range(MOST_STEPS):
-        found = substituted(solver, pos.bodies, loads, steps[-1], rest)
-        sizes = {
-            p.name: float(np.hypot(*normal_force(pos, p, found.reactions[p.name])))
-            for p in pairs
-        }
+        sizes = _sizes(
+            pos, rec, substituted(solver, pos.bodies, loads, steps[-1], rest)
+        )
         steps.append(sizes)
         change = max(abs(sizes[k] - steps[-2][k]) for k in sizes)
         if not change > SETTLED * max(max(sizes.values()), 1e-300):
@@ -111,15 +115,16 @@ def group_friction_blocks(
     pairs = rubbing(rec.pairs)
     if not pairs:
         return []
-    start, steps, raised = newton_start(pos, rec, solver)
+    loads = without_own(pos, rec)
+    start, steps, raised = newton_start(pos, rec, solver, loads)
     listed = ", ".join(plain(p.name) for p in pairs)
-    lines: list[str] = []
-    final = {}
-    for p in pairs:
-        symbol = size_symbol(pos, p)
-        final[p.name] = float(np.hypot(*normal_force(pos, p, rec.reactions[p.name])))
-        lines += friction_lines(pos, p, symbol, final[p.name])
-    tried = substitution(pos, rec, solver, start)
+    final = _sizes(pos, rec, rec)
+    lines = [
+        line
+        for p in pairs
+        for line in friction_lines(pos, p, size_symbol(pos, p), final[p.name])
+    ]
+    tried = substitution(pos, rec, solver, loads, start)
     # settled where the last row reads as the sizes the friction loads below are
     # written from, each to its own digits (a small |N| beside a large journal's)
     settled = all(num(tried[-1][k]) == num(final[k]) for k in final)

@@ -50,11 +50,12 @@ def unit(symbol: str) -> str:
     return f"\\ \\mathrm{{{symbol}}}"
 
 
-def num(x: float, scale: float = 1.0) -> str:
+def num(x: float, scale: float = 1.0, least: int = 0) -> str:
     """Return ``x`` rounded as the note rounds (TeX).
 
-    At least :data:`DECIMALS` decimals and :data:`SIGNIFICANT` significant digits;
-    trailing zeros dropped; below ``ZERO * scale`` the value is 0.
+    At least :data:`DECIMALS` decimals, :data:`SIGNIFICANT` significant digits and
+    ``least`` decimals; trailing zeros dropped; below ``ZERO * scale`` the value
+    is 0.
 
     Examples
     --------
@@ -70,7 +71,7 @@ def num(x: float, scale: float = 1.0) -> str:
     if not SCIENTIFIC[0] <= size < SCIENTIFIC[1]:
         mantissa, exponent = f"{x:.{SIGNIFICANT - 1}e}".split("e")
         return f"{_trim(mantissa)} \\cdot 10^{{{int(exponent)}}}"
-    decimals = max(DECIMALS, SIGNIFICANT - 1 - math.floor(math.log10(size)))
+    decimals = max(DECIMALS, SIGNIFICANT - 1 - math.floor(math.log10(size)), least)
     text = _trim(f"{x:.{decimals}f}")
     return "0" if text in ("-0", "0") else text
 
@@ -82,9 +83,9 @@ def _trim(text: str) -> str:
     return text
 
 
-def par(x: float, scale: float = 1.0) -> str:
+def par(x: float, scale: float = 1.0, least: int = 0) -> str:
     """Return :func:`num` of ``x``, in parentheses when negative (for products)."""
-    text = num(x, scale)
+    text = num(x, scale, least)
     return f"({text})" if text.startswith("-") else text
 
 

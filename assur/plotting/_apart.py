@@ -8,6 +8,8 @@ to one side, then the other, then farther.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
 
 __all__ = ["lies_on", "moved", "slid"]
@@ -50,20 +52,10 @@ def moved(drawn: list[Ends], start: np.ndarray, end: np.ndarray, step: float,
 
     ``drawn`` holds the arrows drawn before (their ends, as moved); an arrow no
     longer than ``near`` stays where it is, as does one that lies on some arrow
-    at every place tried.
+    at every place tried (:data:`TRIES` steps).
     """
-    length = float(np.hypot(*(end - start)))
-    if length <= near:
-        return start, end
-    u = (end - start) / length
-    side = step * np.array([-u[1], u[0]])
-    for k in TRIES:
-        ends = (start + k * side, end + k * side)
-        if not any(
-            lies_on(ends, other, near) or lies_on(other, ends, near) for other in drawn
-        ):
-            return ends
-    return start, end
+    return _clear(drawn, start, end, near, np.array([[0.0, -1.0], [1.0, 0.0]]),
+                  step, TRIES)  # fmt: skip
 
 
 def slid(drawn: list[Ends], start: np.ndarray, end: np.ndarray, step: float,
@@ -75,16 +67,25 @@ def slid(drawn: list[Ends], start: np.ndarray, end: np.ndarray, step: float,
     drawn, where a step sideways would show an arm it does not have. Forward, then
     back, farther each time, up to ``most`` steps each way.
     """
+    tries = [0] + [sign * k for k in range(1, most + 1) for sign in (1, -1)]
+    return _clear(drawn, start, end, near, np.eye(2), step, tries)
+
+
+def _clear(drawn: list[Ends], start: np.ndarray, end: np.ndarray, near: float,
+           turn: np.ndarray, step: float, tries: Sequence[int]) -> Ends:  # fmt: skip
+    """Return the arrow's ends at the first of ``tries`` clear of those ``drawn``.
+
+    Each try shifts it by that many steps of ``step`` along its direction turned
+    by ``turn`` (the identity: along its line; a quarter turn: sideways).
+    """
     length = float(np.hypot(*(end - start)))
     if length <= near:
         return start, end
-    u = step * (end - start) / length
-    for k in range(most + 1):
-        for sign in (1, -1) if k else (1,):
-            ends = (start + sign * k * u, end + sign * k * u)
-            if not any(
-                lies_on(ends, other, near) or lies_on(other, ends, near)
-                for other in drawn
-            ):
-                return ends
+    shift = step * (turn @ (end - start)) / length
+    for k in tries:
+        ends = (start + k * shift, end + k * shift)
+        if not any(
+            lies_on(ends, other, near) or lies_on(other, ends, near) for other in drawn
+        ):
+            return ends
     return start, end

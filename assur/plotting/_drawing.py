@@ -49,6 +49,27 @@ def _joined(
             ax.plot(*np.transpose([at, there]), ":", color="#555555", lw=0.8)
 
 
+def _arrow_apart(
+    ax: Any,
+    drawn: list[tuple[np.ndarray, np.ndarray]],
+    start: np.ndarray,
+    end: np.ndarray,
+    color: str,
+    **kw: Any,
+) -> tuple[np.ndarray, np.ndarray] | None:
+    """Draw an arrow off those ``drawn`` (:func:`_beside`), joined to its place.
+
+    Returns its ends as drawn (added to ``drawn``), or None when it is nothing
+    (:func:`_arrow`).
+    """
+    ends = _beside(drawn, start, end)
+    if not _arrow(ax, *ends, color, **kw):
+        return None
+    _joined(ax, start, end, ends)
+    drawn.append(ends)
+    return ends
+
+
 def _arrow(ax: Any, start: np.ndarray, end: np.ndarray, color: str, **kw: Any) -> bool:
     """Draw an arrow from ``start`` to ``end`` (mm); return whether it was drawn.
 

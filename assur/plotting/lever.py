@@ -27,6 +27,7 @@ from assur.plotting._drawing import (
     _arrow,
     _axes,
     _images_plot,
+    _joined,
     _legend,
 )
 from assur.plotting._mathtext import _symbol
@@ -186,9 +187,7 @@ def zhukovsky_lever(
         color = COUPLE if couple else colours.get(label, LOAD_COLOR)
         ends = slid(drawn, at / mu, tip, BESIDE, ALONG)
         if _arrow(ax, *ends, color):
-            if float(np.hypot(*(ends[0] - at / mu))) > 0.0:
-                ax.plot(*np.transpose([at / mu, ends[0]]), ":", color="#555555",
-                        lw=0.8)  # fmt: skip
+            _joined(ax, at / mu, tip, ends)
             drawn.append(ends)
             # a load drawn longer than its scale is starred, its arrow solid (a
             # dotted one read as the dotted line to a slid load's point)

@@ -23,10 +23,9 @@ from assur.groups._dyad import DyadSolver
 from assur.plotting._centres import draw_centres, relative_centres
 from assur.plotting._drawing import (
     _arrow,
+    _arrow_apart,
     _axes,
-    _beside,
     _images_plot,
-    _joined,
     _legend,
 )
 from assur.plotting._geometry import _nice
@@ -99,12 +98,9 @@ def _chains(
         if not isinstance(s, DyadSolver):
             # a triad's equations are solved together: its links' rigid-body
             # relations are drawn, the triangles a student checks
-            for arrow in _rigid_parts(pos, s.bodies, k, mu):
-                ends = _beside(drawn, arrow[0], arrow[1])
-                if _arrow(ax, *ends, palette[arrow[2]], lw=1.8):
-                    kinds[arrow[2]] = palette[arrow[2]]
-                    drawn.append(ends)
-                    _joined(ax, arrow[0], arrow[1], ends)
+            for a, b, part in _rigid_parts(pos, s.bodies, k, mu):
+                if _arrow_apart(ax, drawn, a, b, palette[part], lw=1.8):
+                    kinds[part] = palette[part]
             continue
         for side in _sides(pos, s, k)[:2]:
             tip = np.zeros(2)
@@ -118,11 +114,8 @@ def _chains(
                 if part != "base":
                     # the legend names the parts drawn: a Coriolis term of nothing
                     # (a slider on a guide that does not turn) is not
-                    ends = _beside(drawn, tip, end)
-                    if _arrow(ax, *ends, color, lw=1.8):
+                    if _arrow_apart(ax, drawn, tip, end, color, lw=1.8):
                         kinds[part] = color
-                        drawn.append(ends)
-                        _joined(ax, tip, end, ends)
                 elif not any(np.hypot(*(term.value - v)) <= 1e-9 * size for v in shown):
                     _arrow(ax, tip, end, color, lw=1.8)
                     ax.annotate(_symbol(term.tex), end, fontsize=8, color=color)

@@ -18,7 +18,7 @@ from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
 from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
-from assur.plotting._drawing import _arrow, _beside, _joined, _legend
+from assur.plotting._drawing import _arrow_apart, _legend
 from assur.plotting._mathtext import _symbol, reaction_symbol
 from assur.plotting._numbers import quantity
 from assur.plotting._placing import Name, place_names
@@ -115,10 +115,9 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> list[Name]:
             continue
         # at a dead centre the sides lie on one line, each over the one before:
         # moved aside, each can be seen and named
-        ends = _beside(drawn, tip, end)
-        _arrow(ax, *ends, color)
-        _joined(ax, tip, end, ends)
-        drawn.append(ends)
+        ends = _arrow_apart(ax, drawn, tip, end, color)
+        if ends is None:
+            continue
         text = ax.annotate(label, tuple(0.5 * (ends[0] + ends[1])), color=color,
                            fontsize=7)  # fmt: skip
         names.append(Name(text, *ends, middle))
