@@ -14,7 +14,7 @@ import contextlib
 import errno
 import os
 import stat
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
 from assur._landing import defer
@@ -291,6 +291,11 @@ def _reported(where: str, any_error: bool, stdout: bool = False) -> Iterator[Non
         msg = f"{where}: cannot write the file ({err.strerror or err})"
         raise OutputError(msg) from err
     except Exception as err:
+        # a writer that failed as Ctrl-C or SIGHUP unwound it (matplotlib's
+        # "Invalid bounding box" from a drawing cut short): the stop, not a fault
+        stop = _behind(err, lambda e: not isinstance(e, Exception))
+        if stop is not None:
+            raise stop from None
         if not any_error:
             raise
         cause = _os_error(err)
@@ -308,10 +313,18 @@ def _reported(where: str, any_error: bool, stdout: bool = False) -> Iterator[Non
 
 def _os_error(err: BaseException) -> OSError | None:
     """Return the OSError behind ``err`` (its cause or context), if any."""
+    found = _behind(err, lambda e: isinstance(e, OSError))
+    return found if isinstance(found, OSError) else None
+
+
+def _behind(
+    err: BaseException, wanted: Callable[[BaseException], bool]
+) -> BaseException | None:
+    """Return the first of ``err``, its cause or context, ... that is ``wanted``."""
     seen: set[int] = set()
     cause: BaseException | None = err
     while cause is not None and id(cause) not in seen:
-        if isinstance(cause, OSError):
+        if wanted(cause):
             return cause
         seen.add(id(cause))
         cause = cause.__cause__ or cause.__context__

@@ -464,3 +464,24 @@ def test_standard_output_on_a_full_disk_is_one_error(tmp_path: Path):
     assert run.stderr == (
         "assur: error: standard output: cannot write (File too large)\n"
     )
+
+
+@pytest.mark.parametrize("any_error", [True, False])
+def test_a_fault_raised_as_a_stop_unwinds_is_the_stop(old: Path, any_error: bool):
+    # SIGHUP in the middle of a GIF's drawing: matplotlib, cleaning up, raised
+    # "Invalid bounding box", which was told as the file's fault (exit 2, not 129)
+    from assur._output import output_path
+
+    def writing() -> None:
+        with output_path(old, any_error=any_error) as temporary:
+            temporary.write_text("half")
+            try:
+                raise KeyboardInterrupt
+            finally:
+                msg = "Invalid bounding box"
+                raise ValueError(msg)  # a cleanup that fails, on purpose
+
+    with pytest.raises(KeyboardInterrupt):
+        writing()
+    assert old.read_text(encoding="utf-8") == OLD
+    assert names(old.parent) == {"table.csv"}
