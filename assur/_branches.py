@@ -29,7 +29,15 @@ from assur._vec import Array
 from assur._walk import flipped
 from assur.plan import Plan
 
-__all__ = ["ChangePoints", "branches", "change_points", "closed", "gaps", "lowest"]
+__all__ = [
+    "ChangePoints",
+    "at_change_point",
+    "branches",
+    "change_points",
+    "closed",
+    "gaps",
+    "lowest",
+]
 
 STEP = math.radians(0.5)
 """Grid step of the scan of a crank, rad."""
@@ -289,3 +297,18 @@ def branches(
             if (ref - tol <= c < hi - tol) or (lo + tol < c <= ref + tol)
         ]
     return out, passed
+
+
+def at_change_point(plan: Plan, g: int, x: float) -> bool:
+    """Return whether driver position ``x`` (rad, or m) is a change point of ``g``.
+
+    ``g`` is a solver's index; a change point is found to within 1e-6 (rad, or of
+    the mechanism's size), and a crank's whole turns from one count too.
+    """
+    found = change_points(plan)
+    if found is None or not found.points[g].size:
+        return False
+    if found.period is not None:
+        x = found.low + float(np.remainder(x - found.low, found.period))
+    tol = 1e-6 * (1.0 if plan.drivers[0].kind == "R" else plan.scale)
+    return bool(np.any(np.abs(found.points[g] - x) <= tol))

@@ -12,7 +12,8 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-from assur._branches import branches
+from assur._branches import at_change_point, branches
+from assur._drive import to_si
 from assur._paths import path_changes
 from assur._reach import beyond, reach
 from assur._runs import (
@@ -278,12 +279,33 @@ def _fail(plan: Plan, given: Array, troubles: list[Any], trouble: Any) -> NoRetu
             "expected less friction, or positions where it can be driven"
         )
         raise SelfLockingError(msg)
+    if _change_point(plan, given[first], trouble.group):
+        # the warning before it said the motion is carried through this point:
+        # the positions beyond it are, the point itself has no velocities
+        msg = (
+            f"group {trouble.group}: change point at driver position {where} (its "
+            "two assembly branches meet there, and its velocity equations are "
+            "singular); expected positions away from change points"
+        )
+        raise SingularConfigurationError(msg)
     msg = (
         f"group {trouble.group}: dead centre at driver position {where} "
         "(its velocity equations are singular there); expected positions "
         "away from dead centres"
     )
     raise SingularConfigurationError(msg)
+
+
+def _change_point(plan: Plan, position: Array, group: str) -> bool:
+    """Return whether ``position`` (as given) is a change point of ``group``."""
+    if len(plan.drivers) > 1:
+        return False
+    x = float(to_si(plan, position[None, :])[0, 0])
+    return any(
+        at_change_point(plan, g, x)
+        for g, s in enumerate(plan.solvers)
+        if s.label == group
+    )
 
 
 def _all_failures(

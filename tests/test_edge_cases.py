@@ -291,30 +291,41 @@ def test_an_empty_sweep_gives_an_empty_table(example):
 
 
 @pytest.mark.parametrize(
-    ("mech", "angle", "group"),
+    ("mech", "angle", "group", "what"),
     [
         # coupler and rocker stretched out exactly: the pin's height computes as the
-        # root of -8e-17, and the pose was said not to assemble
+        # root of -8e-17, and the pose was said not to assemble; crank + frame =
+        # coupler + rocker, so the branches meet there (a change point)
         (assur.catalog.four_bar(crank=0.04, coupler=0.06, rocker=0.06, frame=0.08),
-         180.0, "RRR (coupler, rocker)"),
-        # the rod square to the slide line, its length the crank's
-        (assur.catalog.slider_crank(rod=0.074), 90.0, "RRP (rod, slider)"),
+         180.0, "RRR (coupler, rocker)", "change point"),
+        # the rod square to the slide line, its length the crank's: the pin of the
+        # slider comes back over the crank's pivot, the branches meet there too
+        (assur.catalog.slider_crank(rod=0.074), 90.0, "RRP (rod, slider)",
+         "change point"),
+        # coupler and rocker stretched out at the end of the crank's swing: the
+        # branches meet there and the crank turns back (a limit, not a change point)
+        (assur.catalog.four_bar(crank=0.03, coupler=0.025, rocker=0.025, frame=0.04),
+         90.0, "RRR (coupler, rocker)", "dead centre"),
     ],
 )  # fmt: skip
-def test_a_group_stretched_out_exactly_stands_at_a_dead_centre(mech, angle, group):
+def test_a_group_stretched_out_exactly_stands_at_a_dead_centre(
+    mech, angle, group, what
+):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", assur.AssurWarning)
         with pytest.raises(assur.SingularConfigurationError) as caught:
             assur.kinematics(mech, [angle])
         assert str(caught.value).startswith(
-            f"group {group}: dead centre at driver position {angle:g} deg"
+            f"group {group}: {what} at driver position {angle:g} deg"
         )
         # a sweep that skips it keeps its neighbours
         table = assur.kinematics(
             mech, [angle - 10.0, angle, angle + 10.0], skip_unassembled=True
         )
-    assert table.skipped.tolist() == [angle]
-    assert len(table) == 2
+    # past the end of a swing nothing assembles
+    left_out = [angle] if what == "change point" else [angle, angle + 10.0]
+    assert table.skipped.tolist() == left_out
+    assert len(table) == 3 - len(left_out)
 
 
 # ------------------------------------------------------------------------------------
