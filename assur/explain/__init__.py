@@ -11,18 +11,20 @@ it returns is Markdown (``str()``), HTML with MathML or LaTeX.
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Mapping
 from typing import Any
 
 from assur._structure import structure
+from assur.errors import AssurWarning, SelfLockingError
 from assur.explain._answers import answer_blocks, checked_answers, read_answers
 from assur.explain._driver_text import driver_blocks
 from assur.explain._forces_text import forces_blocks
 from assur.explain._inertia_text import inertia_blocks
 from assur.explain._kinematics_text import kinematics_blocks
 from assur.explain._lever import lever_blocks
-from assur.explain._note import Block, Note, Para
-from assur.explain._solve import position
+from assur.explain._note import Block, Heading, Note, Para
+from assur.explain._solve import locked_position, position
 from assur.explain._structure_text import structure_blocks
 from assur.explain._tex import plain
 from assur.model import Mechanism
@@ -56,7 +58,15 @@ def explain(
     -------
     Note
         ``str(note)`` is Markdown; ``note.to_html()`` and ``note.to_latex()`` the same
-        note as a self-contained page and as a LaTeX report.
+        note as a self-contained page and as a LaTeX report. Where friction locks a
+        group at ``angle``, the note goes as far as that group and shows why it
+        locks; its ``values`` are then the kinematics table's.
+
+    Warns
+    -----
+    AssurWarning
+        Where friction locks a group at ``angle`` (the note has no balancing load
+        and no lever there), naming the group.
 
     Raises
     ------
@@ -76,7 +86,17 @@ def explain(
     """
     if answers is not None:
         answers = checked_answers(answers)
-    pos = position(mechanism, angle)
+    try:
+        pos = position(mechanism, angle)
+    except SelfLockingError as err:
+        pos = locked_position(mechanism, angle, err)
+        warnings.warn(
+            f"group {pos.locked}: its friction locks it at {_where(pos.table)}: the "
+            "note shows the analysis as far as that group, and why it locks (no "
+            "balancing load, no lever)",
+            AssurWarning,
+            stacklevel=2,
+        )
     blocks: list[Block] = []
     blocks += structure_blocks(structure(mechanism))
     blocks += kinematics_blocks(pos)
@@ -90,10 +110,12 @@ def explain(
     else:
         blocks += inertia_blocks(pos)
         blocks += forces_blocks(pos)
-        blocks += driver_blocks(pos)
-        blocks += lever_blocks(pos)
+        if pos.locked is None:
+            blocks += driver_blocks(pos)
+            blocks += lever_blocks(pos)
     if answers:
         blocks += answer_blocks(pos, answers, source)
+    blocks = _numbered(blocks)
     name = plain(mechanism.name or "Mechanism")
     title = f"{name} at {_where(pos.table)}: the analysis explained"
     table = pos.table
@@ -101,6 +123,22 @@ def explain(
         c: float(v[0]) for c, v in zip(table.columns, table.arrays(), strict=True)
     }
     return Note(title, tuple(blocks), values)
+
+
+def _numbered(blocks: list[Block]) -> list[Block]:
+    """Return ``blocks`` with their sections numbered in order.
+
+    A note without forces, or one that stops where friction locks a group, leaves
+    sections out; the answers' section follows on from the last one written.
+    """
+    out: list[Block] = []
+    count = 0
+    for block in blocks:
+        if isinstance(block, Heading) and block.level == 2:
+            count += 1
+            block = Heading(2, f"{count}. {block.text.partition('. ')[2]}")
+        out.append(block)
+    return out
 
 
 def _where(table: Any) -> str:

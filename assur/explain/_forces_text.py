@@ -29,6 +29,7 @@ from assur.explain._loads_text import (
     moment_line,
     total,
 )
+from assur.explain._locked_text import locked_blocks
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position, cross, perp, unit
 from assur.explain._tex import cramer, name, num, par, plain, segment, vec
@@ -376,6 +377,11 @@ def forces_blocks(pos: Position) -> list[Block]:
     for rec in pos.result.groups:
         solver = solver_of[rec.bodies]
         blocks.append(Heading(3, f"Group {plain(solver.label)}"))
+        if rec.label == pos.locked:
+            # its own friction has no size: the known loads without it
+            loads = [link_loads(pos, b, solved) for b in rec.bodies]
+            blocks += _known(pos, rec.bodies, loads) + locked_blocks(pos, rec, solver)
+            break
         blocks += group_friction_blocks(pos, rec, solver)
         names = {p.name for p in rec.pairs}
         loads = [link_loads(pos, b, solved, names) for b in rec.bodies]

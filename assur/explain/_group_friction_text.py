@@ -26,10 +26,19 @@ from assur.explain._friction_text import (
 from assur.explain._note import Block, Display, Grid, Para
 from assur.explain._position import Position
 from assur.explain._tex import num, plain
+from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium, GroupSolver, Wrench
 from assur.kinetostatics import Applied, with_friction
 
-__all__ = ["group_friction_blocks", "newton_start", "substitution", "without_own"]
+__all__ = [
+    "group_friction_blocks",
+    "method",
+    "newton_start",
+    "steps_ratio",
+    "substitution",
+    "substitution_grid",
+    "without_own",
+]
 
 SETTLED = 1e-6
 """A step of repeated substitution that changes no size by more than this share of
@@ -117,7 +126,6 @@ def group_friction_blocks(
         return []
     loads = without_own(pos, rec)
     start, steps, raised = newton_start(pos, rec, solver, loads)
-    listed = ", ".join(plain(p.name) for p in pairs)
     final = _sizes(pos, rec, rec)
     lines = [
         line
@@ -128,6 +136,32 @@ def group_friction_blocks(
     # settled where the last row reads as the sizes the friction loads below are
     # written from, each to its own digits (a small |N| beside a large journal's)
     settled = all(num(tried[-1][k]) == num(final[k]) for k in final)
+    head, rows = substitution_grid(pos, pairs, tried)
+    if settled:
+        how = (
+            "The sizes settle; Newton's method on them, which the analysis uses, "
+            f"finds the same in {_newton_steps(steps, raised)}."
+        )
+    else:
+        rows.append(("found", *(f"${num(final[p.name])}$" for p in pairs)))
+        how = _unsettled(tried, _newton_steps(steps, raised))
+    return [
+        method(pairs),
+        Grid(head, tuple(rows)),
+        Para(how + " The friction loads of these sizes:"),
+        Display(tuple(lines)),
+        Para(
+            "They are known loads of the group's links below (a couple on each link "
+            "of a revolute pair, a force along the slide on each link of a sliding "
+            "pair, opposite on the pair's first link), and the equations hold with "
+            "them: the reactions found have the sizes the friction was taken from."
+        ),
+    ]
+
+
+def method(pairs: list[PairPlan]) -> Para:
+    """Return the friction laws of ``pairs`` and the hand method that sizes them."""
+    listed = ", ".join(plain(p.name) for p in pairs)
     # each law the group's pairs have: a group rubbing in guides alone has no couple
     laws = []
     if any(p.kind == "R" for p in pairs):
@@ -145,6 +179,24 @@ def group_friction_blocks(
             "the slide of its second link relative to its first; its couple $M$ "
             "makes none in this model)"
         )
+    return Para(
+        f"Friction in {listed}: {', '.join(laws)} (kinetic friction only: a "
+        "pair at rest has none). Each depends on the size of a reaction not "
+        "yet known. With the senses of the relative motions known, each "
+        "friction load is its size times a known factor, and the reactions "
+        "are linear in the friction loads; but a reaction's size is not linear "
+        "in its components, so the sizes are found by repeated substitution. "
+        "Start from the sizes without this group's friction, take the friction "
+        "loads of those sizes as known loads, solve the group as without "
+        "friction, take the sizes of the reactions it gives, and repeat (sizes "
+        "in N):"
+    )
+
+
+def substitution_grid(
+    pos: Position, pairs: list[PairPlan], tried: list[dict[str, float]]
+) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
+    """Return the head and rows of the table of repeated substitution's steps."""
     head = ("step", *(f"${size_symbol(pos, p)}$" for p in pairs))
     rows = [
         (
@@ -153,37 +205,7 @@ def group_friction_blocks(
         )
         for i, sizes in enumerate(tried)
     ]
-    if settled:
-        how = (
-            "The sizes settle; Newton's method on them, which the analysis uses, "
-            f"finds the same in {_newton_steps(steps, raised)}."
-        )
-    else:
-        rows.append(("found", *(f"${num(final[p.name])}$" for p in pairs)))
-        how = _unsettled(tried, _newton_steps(steps, raised))
-    return [
-        Para(
-            f"Friction in {listed}: {', '.join(laws)} (kinetic friction only: a "
-            "pair at rest has none). Each depends on the size of a reaction not "
-            "yet known. With the senses of the relative motions known, each "
-            "friction load is its size times a known factor, and the reactions "
-            "are linear in the friction loads; but a reaction's size is not linear "
-            "in its components, so the sizes are found by repeated substitution. "
-            "Start from the sizes without this group's friction, take the friction "
-            "loads of those sizes as known loads, solve the group as without "
-            "friction, take the sizes of the reactions it gives, and repeat (sizes "
-            "in N):"
-        ),
-        Grid(head, tuple(rows)),
-        Para(how + " The friction loads of these sizes:"),
-        Display(tuple(lines)),
-        Para(
-            "They are known loads of the group's links below (a couple on each link "
-            "of a revolute pair, a force along the slide on each link of a sliding "
-            "pair, opposite on the pair's first link), and the equations hold with "
-            "them: the reactions found have the sizes the friction was taken from."
-        ),
-    ]
+    return head, rows
 
 
 def _newton_steps(steps: int, raised: bool = False) -> str:
@@ -194,6 +216,19 @@ def _newton_steps(steps: int, raised: bool = False) -> str:
     return f"{steps} step{'s' if steps != 1 else ''}"
 
 
+def steps_ratio(tried: list[dict[str, float]]) -> tuple[float, bool, list[float]]:
+    """Return the ratio of the last steps, whether it is steady, and the last moves.
+
+    The steps are those of the size that moves most in the last step; steady: the
+    last three ratios lie within 0.05 of one another.
+    """
+    key = max(tried[-1], key=lambda k: abs(tried[-1][k] - tried[-2][k]))
+    moves = [tried[i][key] - tried[i - 1][key] for i in range(1, len(tried))][-4:]
+    ratios = [b / a for a, b in itertools.pairwise(moves) if a != 0]
+    steady = len(ratios) >= 3 and max(ratios) - min(ratios) < 0.05
+    return (ratios[-1] if ratios else math.nan), steady, moves
+
+
 def _unsettled(tried: list[dict[str, float]], newton: str) -> str:
     """Return what the note says where repeated substitution has not settled.
 
@@ -202,11 +237,7 @@ def _unsettled(tried: list[dict[str, float]], newton: str) -> str:
     still needed); below 0 they overshoot and swing back, which says nothing of
     locking; not steady, they jump about.
     """
-    key = max(tried[-1], key=lambda k: abs(tried[-1][k] - tried[-2][k]))
-    moves = [tried[i][key] - tried[i - 1][key] for i in range(1, len(tried))][-4:]
-    ratios = [b / a for a, b in itertools.pairwise(moves) if a != 0]
-    steady = len(ratios) >= 3 and max(ratios) - min(ratios) < 0.05
-    r = ratios[-1] if ratios else math.nan
+    r, steady, moves = steps_ratio(tried)
     found = (
         f" The sizes found (last row) are those of Newton's method on them "
         f"({newton}), which the analysis uses: of the solutions "

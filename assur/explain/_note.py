@@ -44,7 +44,8 @@ class Note:
         Headings, paragraphs, equations, tables and lists in reading order.
     values : dict of str to float
         The analysis at the note's position, by table column name (the forces
-        table's columns, or the kinematics table's for a mechanism with no loads).
+        table's columns, or the kinematics table's for a mechanism with no loads
+        and where friction locks a group).
     """
 
     title: str

@@ -52,7 +52,8 @@ class Position:
     Attributes
     ----------
     table : Table
-        The forces table of that one position.
+        The forces table of that one position (its kinematics table where friction
+        locks a group: see ``locked``).
     bodies : list of Motion
         Every body's motion, rebuilt from the table's state.
     applied : Applied or None
@@ -62,6 +63,10 @@ class Position:
         The reverse pass's records, groups in the order solved (or None).
     loads : LoadPlan
         Masses, centres, inertias and loads, compiled.
+    locked : str or None
+        The label of the first group of the reverse pass that friction locks here
+        (None: none does). Its record, and those of the groups solved after it,
+        hold sizes that did not settle: the note stops at it.
     """
 
     table: Table
@@ -69,6 +74,7 @@ class Position:
     applied: Applied | None
     result: Reverse | None
     loads: LoadPlan
+    locked: str | None = None
     scales: dict[tuple[int, int], float] = field(
         default_factory=dict, compare=False, repr=False
     )
@@ -259,8 +265,11 @@ def unit(v: Array) -> Array:
     return v / length if length > 0 else v
 
 
-def from_table(table: Table, row: int = 0) -> Position:
+def from_table(table: Table, row: int = 0, *, reverse_pass: bool = False) -> Position:
     """Return the solved mechanism at ``row`` of a kinematics or forces table.
+
+    With ``reverse_pass``, the reverse pass is run on a kinematics table too (where
+    friction locks a group, the forces table cannot be had).
 
     Raises
     ------
@@ -273,7 +282,7 @@ def from_table(table: Table, row: int = 0) -> Position:
     plan = table_row.plan
     bodies = motions(plan, table_row.state)
     loads = compile_loads(plan)
-    if table_row.force_state is None or loads.empty:
+    if (table_row.force_state is None and not reverse_pass) or loads.empty:
         return Position(table_row, bodies, None, None, loads)
     applied = applied_loads(plan, loads, bodies, table_row.state)
     return Position(table_row, bodies, applied, reverse(plan, bodies, applied), loads)
