@@ -63,6 +63,18 @@ class Columns(metaclass=ABCMeta):
         )
         raise TypeError(msg)
 
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        """Take ``state`` unpickled or deep-copied, its arrays read-only again.
+
+        numpy gives an array back writeable, whatever it was: a column read before
+        pickling, once written to, changed ``summary()`` of the copy.
+        """
+        self.__dict__.update(state)
+        for value in state.values():
+            for x in value.values() if isinstance(value, dict) else (value,):
+                if isinstance(x, np.ndarray):
+                    x.flags.writeable = False
+
     def arrays(self) -> list[Array]:
         """Return every column, in order."""
         return [self[name] for name in self.columns]

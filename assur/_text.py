@@ -98,7 +98,9 @@ def suggest(name: str, known: Iterable[str], listing: bool = True) -> str:
     ' (known: a, b)'
     """
     names = sorted(str(k) for k in known)
-    close = difflib.get_close_matches(str(name), names, n=1)
+    # the same name but for its case first ("B.fx": 'B.Fx', not the nearer 'B.x')
+    close = [k for k in names if k.lower() == str(name).lower()][:1]
+    close = close or difflib.get_close_matches(str(name), names, n=1)
     if close:
         return f"; did you mean {describe(close[0])}?"
     if not listing:

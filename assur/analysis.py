@@ -80,7 +80,8 @@ def kinematics(
         The mechanism, as :func:`assur.load` or :mod:`assur.catalog` give it.
     angles : array_like
         Driver positions, deg (m for a prismatic driver); shape (n,) or, with several
-        drivers, (n, drivers).
+        drivers, (n, drivers): there a flat sequence of one value per driver is one
+        position (``[90, 100]`` of two cranks), not two.
     omega, epsilon : float or array_like, optional
         The driver's speed (rad/s; m/s for a prismatic driver) and acceleration
         (rad/s^2; m/s^2) at every position, replacing the file's constants: a number
@@ -153,7 +154,8 @@ def forces(
         With masses (and centres of mass and inertias) or loads.
     angles : array_like
         Driver positions, deg (m for a prismatic driver); shape (n,) or, with several
-        drivers, (n, drivers).
+        drivers, (n, drivers) (a flat sequence of one value per driver is one
+        position).
     omega, epsilon : float or array_like, optional
         The drivers' speeds (rad/s; m/s) and accelerations (rad/s^2; m/s^2) at every
         position, replacing the file's constants, as in :func:`kinematics`.

@@ -14,10 +14,11 @@ reactions of a force analysis.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from assur._text import describe, suggest
+from assur._text import describe, shortened, suggest
 from assur.errors import UsageError
 from assur.plan import Plan
 
@@ -302,10 +303,22 @@ def selection(plan: Plan, forces: bool, names: Any = None) -> Selection:
         return found  # type: ignore[no-any-return]
     if isinstance(names, str):
         names = [names]
+    if not isinstance(names, Iterable) or isinstance(names, bytes | bytearray):
+        msg = (
+            "columns: expected a list of column names, got "
+            f"{type(names).__name__} {shortened(repr(names), 40)}"
+        )
+        raise UsageError(msg)
     index = {c.name: c for c in full}
     wanted = {"angle"}
     for name in names:
-        if not isinstance(name, str) or name not in index:
+        if not isinstance(name, str):
+            msg = (
+                "columns: expected column names (str), got "
+                f"{type(name).__name__} {shortened(repr(name), 40)}"
+            )
+            raise UsageError(msg)
+        if name not in index:
             extra = ""
             if not forces and name in {c.name for c in schema(plan, True)}:
                 extra = " (a force column: use assur.forces)"

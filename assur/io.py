@@ -25,6 +25,7 @@ from assur._output import (
     stdout_writer,
     write_text,
 )
+from assur._text import shortened
 from assur.errors import AssurError, ModelError, UsageError
 from assur.model import Mechanism, mechanism_of
 
@@ -144,6 +145,7 @@ def loads(text: str, json_format: bool = False) -> Mechanism:
         When ``text`` is not text, or is a file's path (a ``Path``, or one line
         ending in ``.toml`` or ``.json``): read a file with :func:`load`.
     """
+    _check_flag(json_format)
     if isinstance(text, bytes | bytearray):
         text = _decoded(bytes(text))
     if not isinstance(text, str):
@@ -181,6 +183,7 @@ def dumps(mechanism: Mechanism, json_format: bool = False) -> str:
     UsageError
         When ``mechanism`` is not a :class:`~assur.model.Mechanism`.
     """
+    _check_flag(json_format)
     if json_format:
         import tomllib
 
@@ -310,3 +313,14 @@ def write_parquet(table: Any, path: Any) -> None:
         with finishing(writer):
             for start in range(0, len(table), PARQUET_ROWS):
                 writer.write([c[start : start + PARQUET_ROWS] for c in columns])
+
+
+def _check_flag(json_format: object) -> None:
+    """Refuse a ``json_format`` that is not True or False.
+
+    ``loads(text, "toml")`` read TOML as JSON: any non-empty string is true.
+    """
+    if not isinstance(json_format, bool):
+        got = shortened(repr(json_format), 40)
+        msg = f"json_format: expected True or False, got {got}"
+        raise UsageError(msg)

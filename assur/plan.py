@@ -27,7 +27,7 @@ from assur.groups._protocol import CompileContext, GroupSolver
 from assur.groups.driver import DriverPlan
 from assur.model import GROUND, Mechanism, mechanism_of, resolve_point
 
-__all__ = ["Plan", "compile_plan", "plan_of"]
+__all__ = ["Plan", "cached_plan", "compile_plan", "plan_of"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -102,7 +102,6 @@ class Plan:
         return self.point_body[i], self.point_offset[i]
 
 
-@functools.lru_cache(maxsize=64)
 def plan_of(mech: Mechanism) -> Plan:
     """Return the plan of ``mech``, compiled once per mechanism value.
 
@@ -114,7 +113,14 @@ def plan_of(mech: Mechanism) -> Plan:
     UsageError
         When ``mech`` is not a Mechanism (a file's path, say).
     """
-    return compile_plan(mechanism_of(mech))
+    # checked before the cache hashes it: a dict gave "unhashable type: 'dict'"
+    return cached_plan(mechanism_of(mech))
+
+
+@functools.lru_cache(maxsize=64)
+def cached_plan(mech: Mechanism) -> Plan:
+    """Return :func:`compile_plan` of ``mech``, kept for the last 64 mechanisms."""
+    return compile_plan(mech)
 
 
 def compile_plan(mech: Mechanism) -> Plan:

@@ -96,6 +96,12 @@ class Table(Columns):
         if not self._families:
             self._families.update(families(self.schema))
 
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        """Take ``state`` unpickled or deep-copied: its arrays read-only again."""
+        super().__setstate__(state)
+        if self._frozen:  # states already handed out: read-only as they were
+            self._freeze()
+
     @property
     def state(self) -> KinematicState:
         """The links' motions (see :class:`~assur._kinematics.KinematicState`).

@@ -103,7 +103,7 @@ def median_time(
 
 def first_sweep(mech: Mechanism) -> object:
     """Compile the plan afresh and sweep 30 positions: the first call's whole cost."""
-    assur.plan.plan_of.cache_clear()
+    assur.plan.cached_plan.cache_clear()
     return assur.kinematics(mech, [float(a) for a in range(30)])
 
 

@@ -478,3 +478,73 @@ def test_a_picture_of_a_table_with_no_rows_is_one_usage_error() -> None:
             "at least one to draw",
         ):
             draw(empty)
+
+
+@pytest.mark.parametrize("copy_of", ["pickle", "deepcopy"])
+def test_a_copied_table_keeps_its_arrays_read_only(copy_of):
+    # numpy unpickles an array writeable: a column read before pickling, once
+    # written to in the copy, changed its summary (84.6 N m read 0)
+    import copy
+    import pickle
+
+    def copied(x):
+        if copy_of == "pickle":
+            return pickle.loads(pickle.dumps(x))
+        return copy.deepcopy(x)
+
+    mech = assur.catalog.slider_crank()
+    table = assur.forces(mech, [45.0, 90.0])
+    torque, _ = table["driver.torque"], table.state
+    again = copied(table)
+    for values in (
+        again["driver.torque"],
+        again["B.Fx"],
+        again.given,
+        again.skipped,
+        again.state.drive,
+    ):
+        with pytest.raises(ValueError, match="read-only"):
+            values[...] = 0.0
+    np.testing.assert_array_equal(again["driver.torque"], torque)
+    dynamics = copied(assur.dynamics(mech, [0.0, 90.0]))
+    with pytest.raises(ValueError, match="read-only"):
+        dynamics["driver.omega"][0] = 0.0
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        # the plan's cache hashed it first: "unhashable type: 'dict'"
+        (lambda m: assur.forces({}, [0.0]), "mechanism: expected an assur.Mechanism"),
+        (lambda m: assur.kinematics([], [0.0]), "got list"),
+        # TypeError: 'int' object is not iterable
+        (lambda m: assur.forces(m, [0.0], columns=5), "expected a list of column"),
+        (lambda m: assur.forces(m, [0.0], columns=[None]), r"\(str\), got NoneType"),
+        (lambda m: assur.forces(m, [0.0], columns=[b"B.Fx"]), "got bytes b'B.Fx'"),
+        # the name but for its case, not the nearer 'B.x'
+        (lambda m: assur.forces(m, [0.0], columns=["B.fx"]), "did you mean 'B.Fx'"),
+        # AttributeError: 'str' object has no attribute 'plot'
+        (lambda m: _drawn(m, "x"), "ax: expected matplotlib axes.*got str"),
+        # "toml" is true: the text was read as JSON
+        (lambda m: assur.loads(assur.dumps(m), "toml"), "json_format: expected True"),
+        (lambda m: assur.dumps(m, "json"), "json_format: expected True or False"),
+    ],
+)
+def test_arguments_out_of_place_are_usage_errors(call, message):
+    with pytest.raises(assur.UsageError, match=message):
+        call(assur.catalog.slider_crank())
+
+
+def _drawn(mech: assur.Mechanism, ax: object) -> None:
+    import assur.plotting
+
+    assur.plotting.draw(assur.forces(mech, [0.0]), ax=ax)
+
+
+def test_a_note_s_repr_is_short():
+    # it printed every block of the note: some 21 000 characters
+    note = assur.explain(assur.catalog.slider_crank(), 45.0)
+    shown = repr(note)
+    assert shown.startswith("Note('Slider-crank exercise at crank angle 45 deg")
+    assert shown.endswith(f"{len(note.blocks)} blocks, {len(note.values)} values)")
+    assert len(shown) < 200

@@ -25,7 +25,7 @@ from assur._evaluate import SHORT
 from assur._loads import compile_loads
 from assur._vec import leaves
 from assur.groups import FAMILIES
-from assur.plan import compile_plan, plan_of
+from assur.plan import cached_plan, compile_plan, plan_of
 
 from . import oracle
 from .groups import dense_rrr
@@ -69,11 +69,11 @@ def test_a_new_family_from_one_registry_line(monkeypatch, name):
     assert any(isinstance(s, dense_rrr.DenseRRR) for s in plan.solvers) == (
         name != "class3"
     )
-    plan_of.cache_clear()
+    cached_plan.cache_clear()
     try:
         got = run(mech, at)
     finally:
-        plan_of.cache_clear()
+        cached_plan.cache_clear()
     for column in expected.columns:
         scale = magnitude(expected[column])
         np.testing.assert_allclose(

@@ -523,7 +523,7 @@ def test_random_triads_follow_one_branch_whatever_the_step(monkeypatch, seed, re
     if "slow" not in (request.config.getoption("markexpr") or ""):
         pytest.skip("sixty random triads: run with -m slow")
     from assur import _kinematics
-    from assur.plan import plan_of
+    from assur.plan import cached_plan
 
     from .mechanisms import LinkDecor, triad
 
@@ -537,7 +537,7 @@ def test_random_triads_follow_one_branch_whatever_the_step(monkeypatch, seed, re
         tables = []
         for step in (5.0, 0.5):
             monkeypatch.setattr(_kinematics, "CONTINUATION_STEP", math.radians(step))
-            plan_of.cache_clear()  # the anchors belong to the step
+            cached_plan.cache_clear()  # the anchors belong to the step
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", assur.AssurWarning)
                 tables.append(

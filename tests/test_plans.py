@@ -250,7 +250,7 @@ def test_the_lever_needs_a_forces_table() -> None:
         assur.load(EXAMPLES / "slider_crank_exercise.toml"), [30.0]
     )
     for draw in (lever.lever_balance, lever.zhukovsky_lever):
-        with pytest.raises(assur.ModelError, match="needs a forces table"):
+        with pytest.raises(assur.UsageError, match="needs a forces table"):
             draw(table)
 
 

@@ -55,6 +55,13 @@ class Note:
     def __str__(self) -> str:
         return self.to_markdown()
 
+    def __repr__(self) -> str:
+        # the blocks are the whole note (some 20 000 characters): counted, not shown
+        return (
+            f"Note({self.title!r}, {len(self.blocks)} blocks, "
+            f"{len(self.values)} values)"
+        )
+
     def to_markdown(self) -> str:
         """Return the note as Markdown with TeX mathematics."""
         return markdown(self)

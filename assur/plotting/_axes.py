@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._gaps import broken, gaps
+from assur.errors import UsageError
 from assur.plotting._context import _revolute, _unit
 from assur.plotting._style import literal
 
@@ -22,10 +23,29 @@ if TYPE_CHECKING:
 def _new_axes(ax: Any, figsize: tuple[float, float] = (9.0, 6.0)) -> Any:
     """Return ``ax``, or new axes on a new figure of ``figsize`` (in)."""
     if ax is not None:
-        return ax
+        return given_axes(ax)
     import matplotlib.pyplot as plt
 
     _, ax = plt.subplots(figsize=figsize, layout="constrained")
+    return ax
+
+
+def given_axes(ax: Any) -> Any:
+    """Return ``ax``, checked to be matplotlib axes.
+
+    Raises
+    ------
+    UsageError
+        For anything else (a string, a figure): it failed deep in the drawing.
+    """
+    from matplotlib.axes import Axes
+
+    if not isinstance(ax, Axes):
+        kind = type(ax).__name__
+        if hasattr(ax, "add_subplot"):
+            kind = "a Figure (expected one of its axes)"
+        msg = f"ax: expected matplotlib axes, or None for a new figure; got {kind}"
+        raise UsageError(msg)
     return ax
 
 

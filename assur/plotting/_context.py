@@ -17,7 +17,7 @@ from assur._style import link_colours
 from assur._text import roman, row_position
 from assur._vec import real
 from assur.columns import pretty_unit, schema
-from assur.errors import ModelError, UsageError
+from assur.errors import UsageError
 from assur.plotting._style import ARROW_LENGTH, GROUND_COLOR, PLAIN_COLOR
 
 if TYPE_CHECKING:
@@ -133,7 +133,7 @@ def _row(table: Table, angle: Any) -> int:
     """Index of the row nearest to driver position ``angle`` (deg, or m)."""
     if len(table) == 0:
         msg = "table: no rows to draw; expected at least one driver position"
-        raise ModelError(msg)
+        raise UsageError(msg)
     if angle is None:
         return 0
     plan = table.plan
@@ -253,7 +253,7 @@ def _need_forces(table: Table, what: str) -> ForceState:
             f"{what}: needs a forces table (assur.forces); this table holds "
             "kinematics only"
         )
-        raise ModelError(msg)
+        raise UsageError(msg)
     return table.force_state
 
 

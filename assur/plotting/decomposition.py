@@ -15,7 +15,7 @@ import numpy as np
 from assur._structure import Group, Structure
 from assur._style import REACTION_COLOUR
 from assur._vec import integer
-from assur.errors import ModelError, UsageError
+from assur.errors import UsageError
 from assur.model import GROUND
 from assur.plotting._arrows import INTERNAL_DASH, _draw_arrows
 from assur.plotting._axes import _frame_axes, _legend, _new_axes, fill_box, fit_height
@@ -194,7 +194,7 @@ def draw_free_body(
 
     Raises
     ------
-    ModelError
+    UsageError
         For a kinematics table or a group index out of range.
     """
     _need_forces(table, "draw_free_body")
@@ -267,7 +267,7 @@ def _group(ctx: _Context, group_index: int) -> int:
             f"group_index: {group_index} is out of range; the mechanism has {count} "
             f"Assur group(s), expected 0 to {count - 1}"
         )
-        raise ModelError(msg)
+        raise UsageError(msg)
     return group_index % count
 
 

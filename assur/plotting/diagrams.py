@@ -13,7 +13,7 @@ import numpy as np
 
 from assur._gaps import broken, gaps
 from assur.columns import LINK_PARTS, POINT_PARTS
-from assur.errors import ModelError
+from assur.errors import UnknownNameError
 from assur.plotting._axes import (
     _broken,
     _driver_axis,
@@ -65,8 +65,9 @@ def plot_motion(
 
     Raises
     ------
-    ModelError
-        When the table has no such column for one of ``names``.
+    UnknownNameError
+        When the table has no such column for one of ``names`` (a
+        :class:`~assur.errors.UsageError` and a :class:`KeyError`).
 
     Examples
     --------
@@ -146,7 +147,7 @@ def _plot_quantity(
         )
         return [f"{name}.{cx}", f"{name}.{cy}"]
     msg = _no_quantity(table, name, quantity)
-    raise ModelError(msg)
+    raise UnknownNameError(msg)
 
 
 def _link_style(ctx: _Context, name: str) -> tuple[str | None, str]:
@@ -228,7 +229,7 @@ def plot_paths(
     for k, name in enumerate(names):
         if f"{name}.x" not in table:
             msg = f"plot_paths: no point {name!r}; expected a joint or an extra point"
-            raise ModelError(msg)
+            raise UnknownNameError(msg)
         xy = np.column_stack([table[f"{name}.x"], table[f"{name}.y"]])
         color = PATH_COLORS[k % len(PATH_COLORS)]
         coupler = name in extra

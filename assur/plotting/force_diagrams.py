@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur.errors import ModelError
+from assur.errors import UnknownNameError
 from assur.plotting._axes import _broken, _driver_axis, _new_axes, labelled_legend
 from assur.plotting._context import _context, _need_forces, _unit
 from assur.plotting._geometry import _on
@@ -197,7 +197,7 @@ def _joints(pairs: dict[str, Any], joints: Sequence[str] | None) -> list[str]:
             msg = (
                 f"plot_hodographs: no joint {name!r}; expected one of the file's joints"
             )
-            raise ModelError(msg)
+            raise UnknownNameError(msg)
     return names
 
 

@@ -61,10 +61,8 @@ def lever_balance(table: Table, angle: Any = None, driver: int = 0) -> float:
 
     Raises
     ------
-    ModelError
-        For a kinematics table.
     UsageError
-        For a driver index out of range.
+        For a kinematics table, or a driver index out of range.
     """
     pos = _lever_position(table, angle, driver, "lever_balance")
     return lever_load(pos, driver)
@@ -98,7 +96,7 @@ def lever_moments(
 
     Raises
     ------
-    ModelError, UsageError
+    UsageError
         As :func:`lever_balance`.
     """
     pos = _lever_position(table, angle, driver, "lever_moments")
@@ -144,7 +142,7 @@ def zhukovsky_lever(
 
     Raises
     ------
-    ModelError, UsageError
+    UsageError
         As ``lever_balance``.
     """
     pos = _lever_position(table, angle, driver, "zhukovsky_lever")

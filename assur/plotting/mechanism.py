@@ -99,12 +99,10 @@ def draw(
 
     Raises
     ------
-    ModelError
-        When ``forces`` is asked of a kinematics table.
     UsageError
-        When ``angle`` is not a driver position, or has the wrong number of values,
-        or for a ``scale`` that is not a number above 0 or draws the forces far too
-        long.
+        When ``forces`` is asked of a kinematics table; when ``angle`` is not a
+        driver position, or has the wrong number of values, or for a ``scale``
+        that is not a number above 0 or draws the forces far too long.
 
     Examples
     --------
