@@ -193,6 +193,9 @@ def key_text(name: object, limit: int = 40) -> str:
     """
     if isinstance(name, str) and name.isprintable() and 0 < len(name) <= limit:
         return name
+    if not isinstance(name, str | int | float):
+        # a Python-built entry's name=None read "joints.a value of type NoneType"
+        return f"({describe(name, limit)})"
     return describe(name, limit)
 
 

@@ -350,9 +350,10 @@ def _cmd_explain(args: argparse.Namespace) -> int:
             )
             raise UsageError(msg)
         if suffix not in NOTE_SUFFIXES:
+            what = f"unknown type of note {describe(suffix)}" if suffix else "no suffix"
             msg = (
-                f"-o {path_text(args.output)}: unknown type of note "
-                f"{describe(suffix or '(none)')}; expected .md, .html or .tex"
+                f"-o {path_text(args.output)}: {what}; expected a name ending in .md, "
+                ".html or .tex"
             )
             raise UsageError(msg)
         check_not_input("-o", args.output, args.file)

@@ -548,3 +548,27 @@ def test_a_note_s_repr_is_short():
     assert shown.startswith("Note('Slider-crank exercise at crank angle 45 deg")
     assert shown.endswith(f"{len(note.blocks)} blocks, {len(note.values)} values)")
     assert len(shown) < 200
+
+
+def test_messages_of_python_built_entries_and_notes_read_plainly():
+    import assur.plotting
+
+    mech = assur.catalog.slider_crank()
+    joint = dataclasses.replace(mech.joints[0], name=None)
+    # it read "joints.a value of type NoneType: ..."
+    with pytest.raises(
+        assur.ModelError,
+        match=r"^joints\.\(a value of type NoneType\): expected a non-empty name",
+    ):
+        dataclasses.replace(mech, joints=(joint, *mech.joints[1:]))
+    note = assur.explain(mech, 45.0)
+    # "unknown type of note '(none)'"
+    with pytest.raises(assur.UsageError, match=r"^docx: no suffix; expected a name"):
+        note.render("docx")
+    # the point's 'x' was listed twice, as a column and as a quantity
+    table = assur.forces(mech, [0.0, 45.0])
+    with pytest.raises(assur.UnknownNameError) as caught:
+        assur.plotting.plot_motion(table, ["B"], "speed")
+    listed = str(caught.value).split("expected one of ")[1].strip("'\"").split(", ")
+    assert sorted(listed) == sorted(set(listed))
+    assert {"x", "v", "vx"} <= set(listed)

@@ -112,10 +112,9 @@ class Note:
             ".tex": self.to_latex,
         }
         if suffix not in makers:
-            msg = (
-                f"{path}: unknown type of note {suffix or '(none)'!r}; expected .md, "
-                ".html or .tex"
-            )
+            # render("docx") said "unknown type of note '(none)'"
+            what = f"unknown type of note {suffix!r}" if suffix else "no suffix"
+            msg = f"{path}: {what}; expected a name ending in .md, .html or .tex"
             raise UsageError(msg)
         return str(makers[suffix]())
 

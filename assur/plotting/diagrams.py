@@ -166,7 +166,7 @@ def _no_quantity(table: Table, name: str, quantity: str) -> str:
     have = sorted(
         {c.rsplit(".", 1)[1] for c in table.columns if c.rsplit(".", 1)[0] == name}
     )
-    have += [q for q in VECTORS if f"{name}.x" in table]
+    have += [q for q in VECTORS if f"{name}.x" in table and q not in have]
     if not have:
         return f"plot_motion: no link or point {name!r} in the table"
     return (
