@@ -13,6 +13,11 @@ from collections.abc import Callable
 from types import TracebackType
 from typing import Any
 
+import numpy as np
+
+from assur._text import shortened
+from assur.errors import UsageError
+
 __all__ = ["BAR_DELAY", "Progress", "progress"]
 
 BAR_DELAY = 1.0
@@ -35,6 +40,18 @@ class Progress:
         delay: float = 0.0,
         unit: str = "it",
     ) -> None:
+        if not callable(show):
+            # "yes" showed nothing, where skip_unassembled="no" is refused
+            if not (
+                isinstance(show, bool | np.bool_)
+                or (type(show) is int and show in (0, 1))
+            ):
+                msg = (
+                    "progress: expected True, False or a callable (done, total), got "
+                    f"{type(show).__name__} {shortened(repr(show), 40)}"
+                )
+                raise UsageError(msg)
+            show = bool(show)
         self.total = total
         self.done = 0
         self._callback: Callback | None = show if callable(show) else None

@@ -528,6 +528,12 @@ def test_a_copied_table_keeps_its_arrays_read_only(copy_of):
         # "toml" is true: the text was read as JSON
         (lambda m: assur.loads(assur.dumps(m), "toml"), "json_format: expected True"),
         (lambda m: assur.dumps(m, "json"), "json_format: expected True or False"),
+        # nothing shown, and no word: skip_unassembled="no" is refused
+        (lambda m: assur.forces(m, [0.0], progress="yes"), "progress: expected True"),
+        (
+            lambda m: assur.startup(m, motor=assur.Motor(50.0), progress=None),
+            "progress: expected True",
+        ),
     ],
 )
 def test_arguments_out_of_place_are_usage_errors(call, message):
