@@ -13,9 +13,8 @@ from collections.abc import Callable
 from types import TracebackType
 from typing import Any
 
-import numpy as np
-
 from assur._text import shortened
+from assur._vec import is_flag
 from assur.errors import UsageError
 
 __all__ = ["BAR_DELAY", "Progress", "progress"]
@@ -42,10 +41,7 @@ class Progress:
     ) -> None:
         if not callable(show):
             # "yes" showed nothing, where skip_unassembled="no" is refused
-            if not (
-                isinstance(show, bool | np.bool_)
-                or (type(show) is int and show in (0, 1))
-            ):
+            if not is_flag(show):
                 msg = (
                     "progress: expected True, False or a callable (done, total), got "
                     f"{type(show).__name__} {shortened(repr(show), 40)}"

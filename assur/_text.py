@@ -94,12 +94,18 @@ def suggest(name: str, known: Iterable[str], listing: bool = True) -> str:
     --------
     >>> suggest("rodd", ["crank", "rod"])
     "; did you mean 'rod'?"
+    >>> suggest("B.fx", ["B.Fx", "B.x"])  # the same name in another case first
+    "; did you mean 'B.Fx'?"
+    >>> suggest("c2.X", ["C2.x", "c2.x"])  # the nearest such
+    "; did you mean 'c2.x'?"
     >>> suggest("zz", ["a", "b"])
     ' (known: a, b)'
     """
     names = sorted(str(k) for k in known)
-    # the same name but for its case first ("B.fx": 'B.Fx', not the nearer 'B.x')
-    close = [k for k in names if k.lower() == str(name).lower()][:1]
+    # the same name but for its case first ("B.fx": 'B.Fx', not the nearer 'B.x'),
+    # the nearest of several such
+    cased = [k for k in names if k.lower() == str(name).lower()]
+    close = difflib.get_close_matches(str(name), cased, n=1, cutoff=0.0)
     close = close or difflib.get_close_matches(str(name), names, n=1)
     if close:
         return f"; did you mean {describe(close[0])}?"

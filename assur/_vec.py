@@ -30,6 +30,13 @@ Leaf = Any
 change over the batch."""
 
 
+def is_flag(value: Any) -> bool:
+    """Return whether ``value`` is a yes or no: True, False, numpy's, 0 or 1."""
+    if isinstance(value, bool | np.bool_):
+        return True
+    return type(value) is int and value in (0, 1)
+
+
 def real(value: Any) -> float | None:
     """Return an argument given as a number as a float; None if it is not one.
 

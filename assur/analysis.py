@@ -30,7 +30,7 @@ from assur._passes import (
 )
 from assur._progress import Callback, progress
 from assur._troubles import NOTICES, _change_points, _report
-from assur._vec import Array
+from assur._vec import Array, is_flag
 from assur.columns import balancing_columns, selection
 from assur.errors import AssurWarning, ModelError, UsageError
 from assur.model import Mechanism
@@ -221,9 +221,7 @@ def _sweep(
     show: bool | Callback = False,
 ) -> Table:
     plan = plan_of(mech)
-    if not (
-        isinstance(skip, bool | np.bool_) or (type(skip) is int and skip in (0, 1))
-    ):
+    if not is_flag(skip):
         # a speed given third, say, would else switch skipping on without a word
         msg = f"skip_unassembled: expected True or False, got {skip!r}"
         raise UsageError(msg)

@@ -26,6 +26,7 @@ from assur._output import (
     write_text,
 )
 from assur._text import shortened
+from assur._vec import is_flag
 from assur.errors import AssurError, ModelError, UsageError
 from assur.model import Mechanism, mechanism_of
 
@@ -320,7 +321,7 @@ def _check_flag(json_format: object) -> None:
 
     ``loads(text, "toml")`` read TOML as JSON: any non-empty string is true.
     """
-    if not isinstance(json_format, bool):
+    if not is_flag(json_format):
         got = shortened(repr(json_format), 40)
         msg = f"json_format: expected True or False, got {got}"
         raise UsageError(msg)

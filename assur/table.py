@@ -100,6 +100,8 @@ class Table(Columns):
         """Take ``state`` unpickled or deep-copied: its arrays read-only again."""
         super().__setstate__(state)
         if self._frozen:  # states already handed out: read-only as they were
+            # a list of its own (a shallow copy shares the original's)
+            object.__setattr__(self, "_frozen", [])
             self._freeze()
 
     @property

@@ -79,10 +79,17 @@ def test_the_note_goes_as_far_as_the_locked_group():
     # no balancing load, no reaction of the group, no lever
     for absent in ("M_{b}", "The group's reactions", "Zhukovsky's lever\n"):
         assert absent not in reverse
-    # the values are the kinematics table's, and every number printed agrees
+    # the values: the kinematics and the inertia loads, the rest not reached (NaN)
     kin = assur.kinematics(mech, [ANGLE])
-    assert list(note.values) == list(kin.columns)
-    np.testing.assert_array_equal(list(note.values.values()), kin.to_array()[0])
+    free = assur.forces(_guide_only(0.0), [ANGLE])  # inertia loads need no friction
+    assert list(note.values) == list(assur.forces(mech, [60.0]).columns)
+    for name in kin.columns:
+        np.testing.assert_array_equal(note.values[name], kin[name][0], err_msg=name)
+    for name in ("rod.Fi.x", "rod.Fi.y", "rod.Mi", "slider.Fi.x"):
+        np.testing.assert_allclose(note.values[name], free[name][0], rtol=1e-12)
+    for name in ("B.F", "C.Fx", "guide.F", "A.F", "driver.torque", "shaking.Fx"):
+        assert math.isnan(note.values[name]), name
+    # every number printed agrees with the kinematics
     assert check(note, kin)
 
 
@@ -105,7 +112,7 @@ def test_substitution_starts_frictionless_and_grows_by_f_tan_beta():
     assert said in str(note)
 
 
-@pytest.mark.parametrize("share", [0.97, 1.03])
+@pytest.mark.parametrize("share", [0.97, 1.0, 1.03])
 def test_the_lock_sets_in_where_f_tan_beta_reaches_one(share):
     """Hand-checkable: below f = 1 / tan(beta) a note with its balancing torque,
     above it the locked note."""
@@ -120,8 +127,69 @@ def test_the_lock_sets_in_where_f_tan_beta_reaches_one(share):
         assert f"by about {share:.2f} times the step before (near 1" in text
     else:
         assert len(said) == 1
+        # at the threshold itself the steps keep their size
+        grows = "so the steps grow" if share > 1.0 else "so the steps do not shrink"
+        assert grows in text
         assert "## 5." not in text
         assert "friction locks the group here" in text
+
+
+SIX_BAR = """
+[links.l5]
+axis = ["E", "F"]
+mass = 0.3
+center = { from = "E", toward = "F", distance = 0.1 }
+inertia = 0.0005
+
+[links.l6]
+axis = ["G", "F"]
+mass = 0.3
+center = { from = "G", toward = "F", distance = 0.1 }
+inertia = 0.0005
+
+[joints.E]
+kind = "revolute"
+links = ["rod", "l5"]
+at = [0.11123724356957945, 0.04330127018922193]
+
+[joints.F]
+kind = "revolute"
+links = ["l5", "l6"]
+at = [0.19438938252741778, 0.24698171055288654]
+
+[joints.G]
+kind = "revolute"
+links = ["ground", "l6"]
+at = [0.0, 0.35]
+
+"""
+"""A dyad hung from the rod, without friction: solved before the locked group."""
+
+
+def test_a_group_solved_before_the_locked_one_is_shown_and_compared():
+    text = LOCKING.read_text(encoding="utf-8").replace(
+        "[[drivers]]", SIX_BAR + "[[drivers]]"
+    )
+    mech = assur.loads(text)
+    # its reactions do not depend on the guide's friction (solved before it)
+    free = assur.forces(assur.loads(text.replace("friction = 1.3", "")), [ANGLE])
+    given = {j: float(free[j][0]) for j in ("E.F", "F.F", "G.F", "B.F")}
+    note, said = _locked_note(mech, answers=given)
+    assert len(said) == 1
+    assert "group RRP (rod, slider)" in said[0]
+    reverse = str(note).split("## 4.")[1]
+    assert re.findall(r"^### (.*)$", reverse, re.M) == [
+        "Group RRR (l5, l6)",
+        "Group RRP (rod, slider)",
+    ]
+    part = str(note).split("## 5. The given answers")[1]
+    verdicts = dict(re.findall(r"^\| ([\w.]+) \|.*\| (\w[\w ]*) \|$", part, re.M))
+    assert verdicts == {
+        "E.F": "agrees",
+        "F.F": "agrees",
+        "G.F": "agrees",
+        "B.F": "undefined here",
+    }
 
 
 def test_answers_at_a_locked_position():

@@ -60,7 +60,8 @@ def explain(
         ``str(note)`` is Markdown; ``note.to_html()`` and ``note.to_latex()`` the same
         note as a self-contained page and as a LaTeX report. Where friction locks a
         group at ``angle``, the note goes as far as that group and shows why it
-        locks; its ``values`` are then the kinematics table's.
+        locks; its ``values`` are then NaN for the forces not reached (that group's
+        reactions and those after it, the balancing loads).
 
     Warns
     -----

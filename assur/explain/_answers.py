@@ -15,11 +15,9 @@ from collections.abc import Mapping
 
 from assur._text import describe, suggest
 from assur._vec import real
-from assur.columns import schema
 from assur.errors import ModelError, UsageError
 from assur.explain._note import Block, Display, Grid, Heading, Para
 from assur.explain._position import Position
-from assur.explain._position import value as one_value
 from assur.explain._tex import ZERO, name, num, plain
 
 __all__ = ["AGREE", "answer_blocks", "computed", "read_answers"]
@@ -148,10 +146,6 @@ def computed(pos: Position, key: str) -> float:
     for part, (first, _) in pairs.items():
         ending = f".{first}"
         known += [c[: -len(first)] + part for c in table.columns if c.endswith(ending)]
-    if pos.locked is not None:
-        found = _locked(pos, key)
-        if found is not None:
-            return found
     hint = suggest(key, known, listing=False).removeprefix("; ")
     msg = (
         f"answers.{key}: no such quantity{f' ({hint})' if hint else ''}; expected a "
@@ -161,37 +155,13 @@ def computed(pos: Position, key: str) -> float:
     raise ModelError(msg)
 
 
-def _locked(pos: Position, key: str) -> float | None:
-    """Return a forces table's quantity ``key`` where friction locks a group.
-
-    The links' inertia loads are known before any reaction; every other force has
-    no value there (NaN). None: ``key`` names no quantity of a forces table.
-    """
-    columns = {c.name for c in schema(pos.plan, True)}
-    owner, _, what = key.rpartition(".")
-    if key not in columns and f"{owner}.{PARTS.get(what, ('',))[0]}" not in columns:
-        return None
-    link, _, quantity = key.partition(".")
-    assert pos.applied is not None
-    if quantity not in ("Fi", "Fi.x", "Fi.y", "Mi"):
-        return math.nan
-    found = pos.applied.inertia[pos.plan.body(link)]
-    if found is None:  # a link without a mass
-        return 0.0
-    fx, fy, torque = (one_value(x) for x in found)
-    return {"Fi": math.hypot(fx, fy), "Fi.x": fx, "Fi.y": fy, "Mi": torque}[quantity]
-
-
 def _unit(pos: Position, key: str) -> str:
     """Return the unit of quantity ``key`` (TeX): its column's, or its parts'."""
-    # where friction locks a group the table is the kinematics': a force's unit
-    # is a forces table's
-    columns = {c.name: c for c in schema(pos.plan, pos.locked is not None)}
-    columns.update((c, pos.table.column(c)) for c in pos.table.columns)
+    columns = pos.table.columns
     if key not in columns:
         owner, _, what = key.rpartition(".")
         key = f"{owner}.{PARTS[what][0]}"
-    thin = columns[key].unit.replace(" ", "\\,")
+    thin = pos.table.column(key).unit.replace(" ", "\\,")
     return f"$\\mathrm{{{thin}}}$"
 
 

@@ -65,11 +65,13 @@ def _steps(tried: list[dict[str, float]]) -> str:
         return f"{newton}: the group is at self-locking or too near it."
     r, steady, _ = steps_ratio(tried)
     if steady and r >= 1.0:
+        # at the lock's threshold the steps keep their size: they do not grow
+        grow = "grow" if f"{r:.2f}" != "1.00" else "do not shrink"
         return (
             f"The sizes do not settle: each step moves them the same way by about "
-            f"{r:.2f} times the step before, so the steps grow and the sizes run "
-            "away. The friction that a size brings asks for a larger size than "
-            f"itself: no sizes satisfy the friction laws. {newton} either."
+            f"{r:.2f} times the step before, so the steps {grow} and the sizes run "
+            "away. The friction that a rise of the sizes brings asks for a rise at "
+            f"least as large: no sizes satisfy the friction laws. {newton} either."
         )
     if steady and 0.0 < r < 1.0:
         return (

@@ -44,8 +44,9 @@ class Note:
         Headings, paragraphs, equations, tables and lists in reading order.
     values : dict of str to float
         The analysis at the note's position, by table column name (the forces
-        table's columns, or the kinematics table's for a mechanism with no loads
-        and where friction locks a group).
+        table's columns, NaN for the forces the reverse pass has not reached where
+        friction locks a group; the kinematics table's for a mechanism with no
+        loads).
     """
 
     title: str

@@ -52,8 +52,8 @@ class Position:
     Attributes
     ----------
     table : Table
-        The forces table of that one position (its kinematics table where friction
-        locks a group: see ``locked``).
+        The forces table of that one position (where friction locks a group, with
+        NaN for the forces the reverse pass has not reached: see ``locked``).
     bodies : list of Motion
         Every body's motion, rebuilt from the table's state.
     applied : Applied or None
@@ -265,11 +265,8 @@ def unit(v: Array) -> Array:
     return v / length if length > 0 else v
 
 
-def from_table(table: Table, row: int = 0, *, reverse_pass: bool = False) -> Position:
+def from_table(table: Table, row: int = 0) -> Position:
     """Return the solved mechanism at ``row`` of a kinematics or forces table.
-
-    With ``reverse_pass``, the reverse pass is run on a kinematics table too (where
-    friction locks a group, the forces table cannot be had).
 
     Raises
     ------
@@ -282,7 +279,7 @@ def from_table(table: Table, row: int = 0, *, reverse_pass: bool = False) -> Pos
     plan = table_row.plan
     bodies = motions(plan, table_row.state)
     loads = compile_loads(plan)
-    if (table_row.force_state is None and not reverse_pass) or loads.empty:
+    if table_row.force_state is None or loads.empty:
         return Position(table_row, bodies, None, None, loads)
     applied = applied_loads(plan, loads, bodies, table_row.state)
     return Position(table_row, bodies, applied, reverse(plan, bodies, applied), loads)

@@ -2,14 +2,18 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 from typing import Any
 
 from assur._drive import positions
+from assur._kinematics import motions
 from assur._loads import compile_loads
 from assur.analysis import Table, forces, kinematics
+from assur.columns import schema
 from assur.errors import SelfLockingError, UsageError
 from assur.explain._position import Position, from_table
+from assur.kinetostatics import solve
 from assur.model import Mechanism
 from assur.plan import plan_of
 
@@ -54,21 +58,43 @@ def position(mech: Mechanism, angle: Any) -> Position:
 
 
 def locked_position(mech: Mechanism, angle: Any, error: SelfLockingError) -> Position:
-    """Solve ``mech`` where friction locks a group: the kinematics, the reverse pass.
+    """Solve ``mech`` where friction locks a group, as far as the reverse pass goes.
 
-    The reverse pass runs on the kinematics as far as it goes; ``locked`` names the
-    first group it solves that friction locks (the records from it on hold sizes
-    that did not settle).
+    The position's forces table holds the kinematics, the inertia loads and the
+    reactions of the groups solved before the first one friction locks; the rest
+    (that group's reactions and those after it, the balancing loads, the frame's
+    shaking load) are NaN: they have no value there. ``locked`` names that group.
 
     Raises
     ------
     SelfLockingError
         ``error``, when the reverse pass alone finds no group locked.
     """
-    pos = from_table(table_at(mech, angle, motion_only=True), reverse_pass=True)
-    assert pos.result is not None
-    locked = {label for label, mask in pos.result.locked if mask.any()}
-    first = next((r.label for r in pos.result.groups if r.label in locked), None)
+    kin = table_at(mech, angle, motion_only=True)
+    plan = kin.plan
+    found, result = solve(
+        plan, compile_loads(plan), motions(plan, kin.state), kin.state
+    )
+    locked = {label for label, mask in result.locked if mask.any()}
+    first = next((r.label for r in result.groups if r.label in locked), None)
     if first is None:
         raise error
-    return replace(pos, locked=first)
+    unknown = {d.pair.name for d in plan.drivers}
+    reached = True
+    for record in result.groups:
+        reached = reached and record.label != first
+        if not reached:
+            unknown.update(record.reactions)
+    nan = math.nan
+    known = replace(
+        found,
+        reactions={
+            k: (nan, nan, nan) if k in unknown else v
+            for k, v in found.reactions.items()
+        },
+        balancing=tuple(nan for _ in found.balancing),
+        shaking=(nan, nan, nan),
+        friction={k: nan if k in unknown else v for k, v in found.friction.items()},
+    )
+    table = Table(plan, schema(plan, True), kin.given, kin.state, known)
+    return replace(from_table(table), locked=first)
