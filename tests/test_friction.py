@@ -261,6 +261,25 @@ def test_a_block_pushed_up_an_incline_as_in_the_textbook():
             )
 
 
+def test_a_block_lifted_off_its_guide_rubs_on_the_guide_s_other_face():
+    """An upward pull P above the block's weight W: the guide holds it down with
+    N = W - P < 0, and the friction is f |W - P| against the motion all the same
+    (a mutation that dropped the size's absolute value went unseen)."""
+    weight, pull, mu = 100.0, 250.0, 0.2
+    text = (
+        assur.dumps(incline(weight, mu, 0.0, 0.5))
+        + f'\n[[loads]]\nlink = "block"\nat = [0.0, 0.0]\nforce = [0.0, {pull!r}]\n'
+    )
+    for speed in (0.5, -0.5):
+        mech = assur.loads(text.replace("omega = 0.5", f"omega = {speed!r}"))
+        table = assur.forces(mech, [0.0, 0.1])
+        drag = mu * abs(weight - pull) * math.copysign(1.0, speed)
+        np.testing.assert_allclose(table["slope.Ff"], -drag, rtol=1e-12)
+        np.testing.assert_allclose(table["driver.force"], drag, rtol=1e-12)
+        # the guide's reaction: the friction along it and N = W - P across it
+        np.testing.assert_allclose(table["slope.Fy"], weight - pull, rtol=1e-12)
+
+
 def crank_alone(mass: float, offset: float, omega: float, f: float, r: float, g: float):
     return assur.loads(
         f"""

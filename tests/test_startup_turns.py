@@ -232,3 +232,23 @@ def test_a_tiny_change_that_does_not_shrink_is_not_a_crank_gathering_speed():
     runs = SimpleNamespace(crossings=[40.0 + 4e-3 * k for k in range(20)])
     with pytest.raises(assur.ModelError, match="still gathering speed"):
         _not_settled(runs, MOTOR, model, 2000, 0.0)  # type: ignore[arg-type]
+
+
+def test_the_fast_curves_are_the_model_s_splines():
+    """Their inertia and torque are the splines' (with the flywheel added) and their
+    slope is the inertia's derivative: a central difference of their own inertia,
+    within the cubic's accuracy. A slope off by a factor took minutes of a start-up
+    to show."""
+    from assur._startup_curves import Curves
+    from assur.dynamics_reduced import reduce
+
+    model = reduce(assur.catalog.slider_crank())
+    j, m, _ = model.splines
+    curves = Curves(model, 0.25)
+    h = 1e-6
+    for phi in model.start + np.linspace(0.013, 2.0 * np.pi - 0.013, 97):
+        inertia, slope, torque = curves(float(phi))
+        assert inertia == pytest.approx(float(j(phi)) + 0.25, rel=1e-12)
+        assert torque == pytest.approx(float(m(phi)), rel=1e-12, abs=1e-12)
+        ahead, behind = curves(float(phi) + h)[0], curves(float(phi) - h)[0]
+        assert slope == pytest.approx((ahead - behind) / (2.0 * h), rel=1e-5, abs=1e-9)
