@@ -233,3 +233,18 @@ def test_the_command_writes_the_note_and_warns(tmp_path, capsys):
     done = capsys.readouterr()
     assert done.err == ""
     assert "## 6. Check by Zhukovsky's lever" in done.out
+
+
+def test_what_the_reverse_pass_had_left_is_named():
+    from types import SimpleNamespace
+
+    from assur.explain._locked_text import _left
+
+    def pos(drivers: int) -> SimpleNamespace:
+        return SimpleNamespace(plan=SimpleNamespace(drivers=[None] * drivers))
+
+    assert _left(pos(1), 0) == "The input link"
+    assert _left(pos(1), 1) == "The group left and the input link"
+    assert _left(pos(2), 3) == "The 3 groups left and the input links"
+    text = str(_locked_note(assur.load(LOCKING))[0])
+    assert "The input link would take this group's reactions" in text

@@ -374,13 +374,15 @@ def forces_blocks(pos: Position) -> list[Block]:
     ]
     solver_of = {s.bodies: s for s in plan.solvers}
     solved: set[int] = set()
-    for rec in pos.result.groups:
+    for k, rec in enumerate(pos.result.groups):
         solver = solver_of[rec.bodies]
         blocks.append(Heading(3, f"Group {plain(solver.label)}"))
         if rec.label == pos.locked:
             # its own friction has no size: the known loads without it
             loads = [link_loads(pos, b, solved) for b in rec.bodies]
-            blocks += _known(pos, rec.bodies, loads) + locked_blocks(pos, rec, solver)
+            later = len(pos.result.groups) - k - 1
+            blocks += _known(pos, rec.bodies, loads)
+            blocks += locked_blocks(pos, rec, solver, later)
             break
         blocks += group_friction_blocks(pos, rec, solver)
         names = {p.name for p in rec.pairs}

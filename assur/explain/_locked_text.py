@@ -26,8 +26,13 @@ from assur.groups._protocol import Equilibrium, GroupSolver
 __all__ = ["locked_blocks"]
 
 
-def locked_blocks(pos: Position, rec: Equilibrium, solver: GroupSolver) -> list[Block]:
-    """Return repeated substitution in a group friction locks, and what it means."""
+def locked_blocks(
+    pos: Position, rec: Equilibrium, solver: GroupSolver, later: int
+) -> list[Block]:
+    """Return repeated substitution in a group friction locks, and what it means.
+
+    ``later`` counts the groups the reverse pass would have solved after it.
+    """
     pairs = rubbing(rec.pairs)
     loads = without_own(pos, rec)
     start, _, _ = newton_start(pos, rec, solver, loads)
@@ -40,13 +45,25 @@ def locked_blocks(pos: Position, rec: Equilibrium, solver: GroupSolver) -> list[
         Para(
             "So friction locks the group here (self-locking): no driving load, "
             "however large, moves its links the way the motion asks, and the "
-            "analysis finds no reactions for it. The groups left and the input "
-            "link take this group's reactions, so the reverse pass stops here: at "
-            "this position there is no balancing load and no check by Zhukovsky's "
+            f"analysis finds no reactions for it. {_left(pos, later)} would take "
+            "this group's reactions, so the reverse pass stops here: at this "
+            "position there is no balancing load and no check by Zhukovsky's "
             "lever. With less friction, or at positions away from this one, the "
             "group can be driven (a sweep names the positions where it locks)."
         ),
     ]
+
+
+def _left(pos: Position, later: int) -> str:
+    """Name what the reverse pass had still to solve, starting a sentence.
+
+    The groups left after the locked one (``later``), and the input links.
+    """
+    inputs = "the input links" if len(pos.plan.drivers) > 1 else "the input link"
+    if later:
+        left = "the group left" if later == 1 else f"the {later} groups left"
+        inputs = f"{left} and {inputs}"
+    return inputs[0].upper() + inputs[1:]
 
 
 def _steps(tried: list[dict[str, float]]) -> str:
