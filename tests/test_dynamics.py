@@ -697,3 +697,19 @@ def test_a_huge_crank_angle_is_its_angle_within_a_turn():
     b = assur.dynamics(mech, within, flywheel=1.0)
     for name in ("reduced.work", "driver.omega", "driver.epsilon", "reduced.inertia"):
         np.testing.assert_allclose(a[name], b[name], rtol=1e-12, atol=1e-12)
+
+
+def test_the_extreme_between_grid_points_is_the_parabola_s_vertex():
+    """By hand: y = (x - 0.3)^2 + 2 at x = -1, 0, 1 is 3.69, 2.09, 2.49; its
+    vertex is 2 at x = 0.3. The grid closes on itself: the neighbours of the first
+    point are the last and the second. (A vertex off by its curvature's factor of
+    two went unseen: the grid is fine, so the refinement is small.)"""
+    from assur.dynamics_steady import _vertex
+
+    values = np.array([3.69, 2.09, 2.49])
+    assert _vertex(values, 1) == pytest.approx((2.0, 0.3), rel=1e-12)
+    assert _vertex(np.roll(values, -1), 0) == pytest.approx((2.0, 0.3), rel=1e-12)
+    # a maximum alike: y = 5 - 2 (x + 0.25)^2
+    top = np.array([5.0 - 2.0 * (x + 0.25) ** 2 for x in (-1.0, 0.0, 1.0)])
+    assert _vertex(top, 1) == pytest.approx((5.0, -0.25), rel=1e-12)
+    assert _vertex(np.array([1.0, 2.0, 3.0]), 1) == (2.0, 0.0)  # a straight line
