@@ -599,6 +599,29 @@ def test_instant_centres_are_where_the_link_does_not_move(example):
                 assert np.allclose(np.abs(omega[translating]) * size, 0.0, atol=1e-9)
 
 
+def test_the_instant_centre_of_numbers_is_that_of_arrays():
+    """A link whose motion is a constant (a crank's, with its origin on its pivot)
+    takes the arithmetic on numbers; a moving origin checks its terms by hand:
+    omega = 2 rad/s, the origin at (0.1, 0) moving at (1, 0.4) m/s has its centre
+    at (0.1 - 0.4 / 2, 0 + 1 / 2) = (-0.1, 0.5) m. (On the crank's pivot the
+    origin's velocity is zero: a sign in those terms went unseen.)"""
+    from types import SimpleNamespace
+
+    from assur._evaluate import _centre, _fixed_centre
+
+    plan = SimpleNamespace(scale=0.1, shift=(0.0, 0.0))
+    assert _fixed_centre(plan, [2.0, 0.1, 0.0, 1.0, 0.4]) == pytest.approx((-0.1, 0.5))
+    x, y = np.empty(2), np.empty(2)
+    rows = [np.array([2.0, -3.0]), np.array([0.1, 0.2]), np.zeros(2)]
+    rows += [np.array([1.0, 0.3]), np.array([0.4, -0.6])]
+    _centre(plan, rows, x, y)
+    for k in range(2):
+        leaves = [float(r[k]) for r in rows]
+        assert (x[k], y[k]) == pytest.approx(_fixed_centre(plan, leaves), rel=1e-15)
+    # translating: no centre
+    assert np.isnan(_fixed_centre(plan, [0.0, 0.1, 0.0, 1.0, 0.4])).all()
+
+
 def test_instant_centre_of_a_crank_is_its_pivot_and_a_slider_has_none():
     table = assur.kinematics(assur.catalog.slider_crank(), [10.0, 70.0])
     np.testing.assert_allclose(table["crank.ic.x"], table["A.x"])

@@ -457,6 +457,26 @@ def test_triad_far_from_the_origin():
     oracle.assert_columns(far, assur.kinematics(far, positions), expected)
 
 
+@pytest.mark.parametrize("scale", [1e-3, 1e3])
+def test_a_triad_s_dead_centre_warnings_do_not_depend_on_its_units(scale):
+    """Its conditioning is measured with the origins in units of the group's size,
+    and its reactions solved with moments so (a measure left in metres warned of
+    a dead centre in millimetres' and kilometres' copies only)."""
+    from .conftest import DATA
+
+    mech = assur.load(DATA / "edge" / "triad_locks_ahead.toml")
+    angles = np.arange(0.0, 360.0, 2.0)
+
+    def said(m: assur.Mechanism) -> tuple[int, list[str]]:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            table = assur.forces(m, angles, skip_unassembled=True)
+        told = [str(w.message) for w in caught if "across" not in str(w.message)]
+        return len(table), told
+
+    assert said(moved(mech, 0.0, (0.0, 0.0), scale)) == said(mech)
+
+
 def test_sub_millimetre_mechanism():
     from .conftest import EXAMPLES
 
