@@ -76,6 +76,22 @@ def test_the_note_goes_as_far_as_the_locked_group():
     reverse = text.split("## 4.")[1]
     assert re.findall(r"^### (.*)$", reverse, re.M) == ["Group RRP (rod, slider)"]
     assert "friction locks the group here (self-locking)" in reverse
+    assert text.startswith(
+        "# Slider-crank with a self-locking guide at crank angle 250 deg: the "
+        "analysis explained\n\nAt this position friction locks group RRP (rod, "
+        "slider): the note stops at that group, in section 4, and shows why."
+    )
+    # the textbook's condition, by hand: the rod's lean to the guide (the x axis)
+    lean = math.degrees(math.atan(_tan_beta(mech)))
+    shown = (
+        f"at $\\beta = {lean:.2f}^\\circ$ to the slide line of guide",
+        f"$f\\tan\\beta = 1.3 \\cdot \\tan {lean:.2f}^\\circ = "
+        f"{1.3 * _tan_beta(mech):.3f} \\ge 1$",
+        f"$\\varphi = \\arctan f = {math.degrees(math.atan(1.3)):.2f}^\\circ$",
+        f"$\\cot\\beta = {1.0 / _tan_beta(mech):.3f}$",
+    )
+    for said_ in shown:
+        assert said_ in reverse, said_
     # no balancing load, no reaction of the group, no lever
     for absent in ("M_{b}", "The group's reactions", "Zhukovsky's lever\n"):
         assert absent not in reverse
@@ -108,7 +124,7 @@ def test_substitution_starts_frictionless_and_grows_by_f_tan_beta():
     # each step of |N| is f tan(beta) times the one before (to its printed digits)
     steps = np.diff(rows[:, 0])
     np.testing.assert_allclose(steps[1:] / steps[:-1], f * _tan_beta(mech), rtol=2e-4)
-    said = f"by about {f * _tan_beta(mech):.2f} times the step before"
+    said = f"by about {f * _tan_beta(mech):.3f} times the step before"
     assert said in str(note)
 
 

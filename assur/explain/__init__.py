@@ -99,6 +99,13 @@ def explain(
             stacklevel=2,
         )
     blocks: list[Block] = []
+    if pos.locked is not None:
+        blocks.append(
+            Para(
+                f"At this position friction locks group {plain(pos.locked)}: the note "
+                "stops at that group, in section 4, and shows why."
+            )
+        )
     blocks += structure_blocks(structure(mechanism))
     blocks += kinematics_blocks(pos)
     if pos.result is None:

@@ -212,7 +212,7 @@ def _newton_steps(steps: int, raised: bool = False) -> str:
     """Return how many steps Newton's method took, and how, in words."""
     if raised:
         # from the frictionless sizes it did not settle: the friction was raised
-        return f"{steps} steps, the friction raised by degrees"
+        return f"{steps} steps, the friction raised step by step"
     return f"{steps} step{'s' if steps != 1 else ''}"
 
 
@@ -241,7 +241,7 @@ def _unsettled(tried: list[dict[str, float]], newton: str) -> str:
     found = (
         f" The sizes found (last row) are those of Newton's method on them "
         f"({newton}), which the analysis uses: of the solutions "
-        "Coulomb's law allows (a slider may jam in its guide too), the one reached "
+        "Coulomb's law allows (with large friction it can allow two), the one reached "
         "from the frictionless solution as the friction is raised from zero."
     )
     if steady and 0 < r < 1:

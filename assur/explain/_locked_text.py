@@ -10,6 +10,8 @@ group's reactions, which have no value.
 
 from __future__ import annotations
 
+import math
+
 from assur.explain._friction_text import rubbing
 from assur.explain._group_friction_text import (
     method,
@@ -20,7 +22,9 @@ from assur.explain._group_friction_text import (
     without_own,
 )
 from assur.explain._note import Block, Grid, Para
-from assur.explain._position import Position
+from assur.explain._position import Position, unit
+from assur.explain._tex import num, plain
+from assur.groups._dyad import DyadSolver
 from assur.groups._protocol import Equilibrium, GroupSolver
 
 __all__ = ["locked_blocks"]
@@ -42,15 +46,69 @@ def locked_blocks(
         method(pairs),
         Grid(head, tuple(rows)),
         Para(_steps(tried)),
+        *_cone(pos, solver),
         Para(
             "So friction locks the group here (self-locking): no driving load, "
-            "however large, moves its links the way the motion asks, and the "
-            f"analysis finds no reactions for it. {_left(pos, later)} would take "
+            "however large, moves its links the way the motion asks, for the harder "
+            "it drives them, the harder it presses the pairs that rub; the analysis "
+            "finds no reactions for the group. A real machine would jam on coming "
+            "to this position: the motion taken in sections 2 and 3 cannot happen "
+            f"this way. {_left(pos, later)} would take "
             "this group's reactions, so the reverse pass stops here: at this "
             "position there is no balancing load and no check by Zhukovsky's "
             "lever. With less friction, or at positions away from this one, the "
             "group can be driven (a sweep names the positions where it locks)."
         ),
+    ]
+
+
+def _cone(pos: Position, solver: GroupSolver) -> list[Block]:
+    """Return the textbook's condition where a rod pushes a slider in a guide.
+
+    An RRP dyad whose guide rubs: the rod's push P along BC, at beta to the guide,
+    moves the slider with P cos(beta) against the friction f P sin(beta) of the
+    normal force it makes. Other groups lock as their own geometry says: the
+    steps' ratio alone is written for them.
+    """
+    if not isinstance(solver, DyadSolver) or solver.kind != "RRP":
+        return []
+    guide = solver.ext[1]
+    if guide.kind != "P" or not guide.friction > 0.0:
+        return []
+    rod = unit(pos.pair_point(solver.mid) - pos.pair_point(solver.ext[0]))
+    along = unit(pos.turned(guide.first, guide.axis or (1.0, 0.0)))
+    beta = math.acos(min(1.0, abs(float(rod @ along))))
+    f = guide.friction
+    lean, phi = math.degrees(beta), math.degrees(math.atan(f))
+    gain = f * math.tan(beta)
+    product = f"$f\\tan\\beta = {num(f)} \\cdot \\tan {num(lean)}^\\circ = {num(gain)}"
+    if gain >= 1.0:
+        here = (
+            f"Here {product} \\ge 1$: the rod's line lies inside the guide's "
+            f"friction cone ($\\beta = {num(lean)}^\\circ \\ge 90^\\circ - \\varphi "
+            f"= {num(90.0 - phi)}^\\circ$); the pins' friction moves the steps' "
+            "ratio a little from it."
+        )
+    else:
+        here = (
+            f"Here {product} < 1$: the guide alone would let the push move the "
+            "slider; the pins' friction tips the group over."
+        )
+    ends = [plain(p.name) for p in (solver.ext[0], solver.mid)]
+    return [
+        Para(
+            f"Why: the rod pushes the slider along {ends[0]}{ends[1]}, at $\\beta = "
+            f"{num(lean)}^\\circ$ to the slide line of {plain(guide.name)}. A "
+            "push $P$ drives the slider along the guide with $P\\cos\\beta$ and "
+            "presses it on the guide with $P\\sin\\beta$, whose friction is "
+            "$f P\\sin\\beta$; so the push can move the slider only while "
+            "$P\\cos\\beta > f P\\sin\\beta$, that is while $f\\tan\\beta < 1$, or "
+            "$\\beta < 90^\\circ - \\varphi$, with $\\varphi = \\arctan f = "
+            f"{num(phi)}^\\circ$ the guide's angle of friction. {here} A guide "
+            f"friction below $\\cot\\beta = {num(1.0 / math.tan(beta))}$ would let "
+            "the push move the slider here (a little less, with the pins' "
+            "friction)."
+        )
     ]
 
 
@@ -76,19 +134,19 @@ def _steps(tried: list[dict[str, float]]) -> str:
     """
     newton = (
         "Newton's method on the sizes, from the frictionless ones and with the "
-        "friction raised from zero by degrees, finds none that hold"
+        "friction raised from zero step by step, finds none that hold"
     )
     if len(tried) < 3:
         return f"{newton}: the group is at self-locking or too near it."
     r, steady, _ = steps_ratio(tried)
     if steady and r >= 1.0:
         # at the lock's threshold the steps keep their size: they do not grow
-        grow = "grow" if f"{r:.2f}" != "1.00" else "do not shrink"
+        grow = "grow" if f"{r:.3f}" != "1.000" else "do not shrink"
         return (
             f"The sizes do not settle: each step moves them the same way by about "
-            f"{r:.2f} times the step before, so the steps {grow} and the sizes run "
+            f"{r:.3f} times the step before, so the steps {grow} and the sizes run "
             "away. The friction that a rise of the sizes brings asks for a rise at "
-            f"least as large: no sizes satisfy the friction laws. {newton} either."
+            f"least as large, so the substitution cannot settle. {newton} either."
         )
     if steady and 0.0 < r < 1.0:
         return (

@@ -28,7 +28,7 @@ SYMBOLS = {
     "circ": "°", "sim": "∼", "backslash": "\\", "vert": "|", "%": "%", "_": "_",
     "{": "{", "}": "}", "$": "$", "&": "&", "#": "#",
 }  # fmt: skip
-FUNCTIONS = ("arccos", "arcsin", "arctan", "cos", "sin", "tan", "ln", "exp")
+FUNCTIONS = ("arccos", "arcsin", "arctan", "cos", "cot", "sin", "tan", "ln", "exp")
 SPACES = {"quad": "1em", "qquad": "2em", ",": "0.17em", ";": "0.28em", " ": "0.25em"}
 TEXT_SPACES = {
     "quad": "\u2003", "qquad": "\u2003\u2003", ",": "\u2009", ";": "\u2005", " ": " ",
