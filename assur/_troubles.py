@@ -284,8 +284,9 @@ def _fail(plan: Plan, given: Array, troubles: list[Any], trouble: Any) -> NoRetu
         # the positions beyond it are, the point itself has no velocities
         msg = (
             f"group {trouble.group}: change point at driver position {where} (its "
-            "two assembly branches meet there, and its velocity equations are "
-            "singular); expected positions away from change points"
+            "two assembly branches meet there: its velocity equations are "
+            "singular, with no branch to choose); expected positions away from "
+            "change points"
         )
         raise SingularConfigurationError(msg)
     msg = (
