@@ -264,3 +264,20 @@ def test_what_the_reverse_pass_had_left_is_named():
     assert _left(pos(2), 3) == "The 3 groups left and the input links"
     text = str(_locked_note(assur.load(LOCKING))[0])
     assert "The input link would take this group's reactions" in text
+
+
+def test_where_the_pins_friction_tips_the_guide_over():
+    """At 295 deg the rod leans 37.17 deg, below 90 - arctan 1.3 = 37.57: the guide
+    alone would let the slider move (f tan beta = 0.986), the pins' friction makes
+    the group lock all the same; no guide friction is then proposed."""
+    note, said = _locked_note(assur.load(LOCKING), 295.0)
+    assert len(said) == 1
+    text = str(note)
+    lean = math.degrees(math.atan(_tan_beta(assur.load(LOCKING), 295.0)))
+    assert lean < 90.0 - math.degrees(math.atan(1.3))
+    assert (
+        f"\\tan {lean:.2f}^\\circ = {1.3 * math.tan(math.radians(lean)):.4f} < 1$: "
+        "the guide alone would let the push move the slider; the pins' friction "
+        "tips the group over."
+    ) in text
+    assert "\\cot\\beta" not in text

@@ -87,7 +87,9 @@ def _cone(pos: Position, solver: GroupSolver) -> list[Block]:
             f"Here {product} \\ge 1$: the rod's line lies inside the guide's "
             f"friction cone ($\\beta = {num(lean)}^\\circ \\ge 90^\\circ - \\varphi "
             f"= {num(90.0 - phi)}^\\circ$); the pins' friction moves the steps' "
-            "ratio a little from it."
+            "ratio a little from it. A guide friction below $\\cot\\beta = "
+            f"{num(1.0 / math.tan(beta))}$ would let the push move the slider here "
+            "(a little less, with the pins' friction)."
         )
     else:
         here = (
@@ -104,10 +106,7 @@ def _cone(pos: Position, solver: GroupSolver) -> list[Block]:
             "$f P\\sin\\beta$; so the push can move the slider only while "
             "$P\\cos\\beta > f P\\sin\\beta$, that is while $f\\tan\\beta < 1$, or "
             "$\\beta < 90^\\circ - \\varphi$, with $\\varphi = \\arctan f = "
-            f"{num(phi)}^\\circ$ the guide's angle of friction. {here} A guide "
-            f"friction below $\\cot\\beta = {num(1.0 / math.tan(beta))}$ would let "
-            "the push move the slider here (a little less, with the pins' "
-            "friction)."
+            f"{num(phi)}^\\circ$ the guide's angle of friction. {here}"
         )
     ]
 
@@ -151,7 +150,7 @@ def _steps(tried: list[dict[str, float]]) -> str:
     if steady and 0.0 < r < 1.0:
         return (
             "The substitution settles slowly here: each step moves the sizes the "
-            f"same way by about {r:.2f} times the step before (near 1, near "
+            f"same way by about {r:.3f} times the step before (near 1, near "
             f"self-locking). {newton} within its steps: the group is at "
             "self-locking or too near it for its sizes to be found."
         )
