@@ -477,6 +477,22 @@ def test_a_triad_s_dead_centre_warnings_do_not_depend_on_its_units(scale):
     assert said(moved(mech, 0.0, (0.0, 0.0), scale)) == said(mech)
 
 
+@pytest.mark.parametrize("scale", [1e-3, 0.1, 10.0, 1e3])
+def test_a_triad_scaled_moves_alike(scale):
+    """The triad's continuation weighs its unknowns by the group's reach, so that
+    its steps do not depend on the units: scaled by up to a thousand either way it
+    follows the same motion, its lengths and speeds scaled (weighed in metres, the
+    millimetre copy's steps went astray)."""
+    from .conftest import EXAMPLES
+
+    mech = assur.load(EXAMPLES / "class3.toml")
+    positions = 30.0 + np.arange(0.0, 360.0, 5.0)
+    table = assur.kinematics(mech, positions)
+    other = moved(mech, 0.0, (0.0, 0.0), scale)
+    expected = oracle.moved_columns(mech, table, 0.0, (0.0, 0.0), scale)
+    oracle.assert_columns(other, assur.kinematics(other, positions), expected)
+
+
 def test_sub_millimetre_mechanism():
     from .conftest import EXAMPLES
 

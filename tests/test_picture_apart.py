@@ -64,3 +64,18 @@ def test_arrows_apart_or_short_stay_where_they_are() -> None:
         got = moved([a], s, e, 1.2, 0.24)
         assert np.allclose(got[0], s)
         assert np.allclose(got[1], e)
+
+
+def test_arrows_on_a_slanted_line():
+    """By hand, off the axes (where a sign of the cross product cannot show): a
+    short arrow on the diagonal lies on a long one; one 0.15 off at its start and
+    on the line at its end does not, within 0.11."""
+    from assur.plotting._apart import lies_on
+
+    diagonal = (np.array([0.0, 0.0]), np.array([1.0, 1.0]))
+    on = (np.array([0.2, 0.2]), np.array([0.8, 0.8]))
+    assert lies_on(diagonal, on, 0.01)
+    level = (np.array([0.0, 0.0]), np.array([10.0, 0.0]))
+    leaning = (np.array([2.0, 0.15]), np.array([8.0, 0.0]))
+    assert not lies_on(level, leaning, 0.11)
+    assert lies_on(level, leaning, 0.16)

@@ -245,3 +245,14 @@ def test_a_gap_narrower_than_the_scan_s_step_is_a_barrier(reference):
         np.testing.assert_array_equal(table["angle"], [reference, 10.0, 1.0])
         with pytest.raises(assur.AssemblyError, match="is on another circuit"):
             assur.kinematics(mech, [reference, -10.0])
+
+
+@pytest.mark.parametrize("beyond", [185.5, -100.0])
+def test_the_range_a_prp_reaches_is_from_dead_centre_to_dead_centre(beyond):
+    """Its dead centres are at 0 and 180 deg: positions past either are refused
+    naming the whole range (its first end read 0.5 deg, a grid step in)."""
+    with pytest.raises(assur.AssemblyError) as caught:
+        assur.kinematics(assur.load(PRP), [60.0, beyond])
+    assert str(caught.value).endswith(
+        "expected positions from about 0 deg to 180 deg (or whole turns from them)"
+    )

@@ -24,6 +24,7 @@ from . import oracle
 from .test_kinetostatics import needs_forces, steady
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
+DATA = Path(__file__).parent / "data"
 
 
 def forces_over_a_turn(mech: assur.Mechanism) -> assur.Table:
@@ -675,3 +676,28 @@ def test_a_sliding_driver_a_hair_before_a_step_is_not_on_it(tmp_path):
         summary = Summary()
         summary.add(assur.forces(mech, given))
         assert bool(summary.landed) == landed, given
+
+
+def test_a_sweep_out_and_back_is_no_closed_turn():
+    """0, 90, 0 deg starts and ends at one pose but makes no turn: its means are the
+    rows' plain means (taken for a turn, the last row was dropped: -2298.69 W for
+    -548.74)."""
+    mech = assur.load(EXAMPLES / "slider_crank_friction.toml")
+    table = assur.forces(mech, [0.0, 90.0, 0.0])
+    power = table["driver.torque"] * table["crank.omega"]
+    summary = table.summary()
+    assert summary["driver.power.mean"] == pytest.approx(np.mean(power), rel=1e-12)
+    assert summary["driver.power.mean"] == pytest.approx(-548.738, abs=1e-3)
+
+
+@pytest.mark.parametrize("start", [110.0, 250.0])
+def test_a_turn_started_anywhere_has_the_same_means(start):
+    """A turn of the cutting-load example started where its load steps (110 deg,
+    250 deg) has the means of 0:360: 464.18518 W. A step's row counts half on each
+    side; off by one column, the start's half was lost (456.92 W, 486.96 W)."""
+    mech = assur.load(DATA / "edge" / "cutting_steps.toml")
+    whole = assur.forces(mech, np.arange(0.0, 360.5, 1.0)).summary()
+    moved = assur.forces(mech, np.arange(start, start + 360.5, 1.0)).summary()
+    assert whole["driver.power.mean"] == pytest.approx(464.18518, abs=1e-5)
+    for key in ("driver.power.mean", "driver.torque.mean", "driver.torque.rms"):
+        assert moved[key] == pytest.approx(whole[key], rel=1e-12), key
