@@ -224,6 +224,12 @@ def assert_prismatic_columns(mech: assur.Mechanism, table: assur.Table) -> None:
             table[f"{joint.name}.M"][big] / normal[big],
             rtol=1e-9,
         )
+        # no normal force beside the largest reaction (round-off: 1e-12 of it), no
+        # point it acts at; a normal force clear of that, a point
+        largest = np.max([table[f"{j.name}.F"] for j in mech.joints], axis=0)
+        offset = table[f"{joint.name}.offset"]
+        assert np.isnan(offset[np.abs(normal) < 1e-14 * largest]).all(), joint.name
+        assert np.isfinite(offset[np.abs(normal) > 1e-10 * largest]).all(), joint.name
         if joint.kind == "slot":  # a pin: no couple about it
             np.testing.assert_allclose(
                 table[f"{joint.name}.M"],
