@@ -256,3 +256,21 @@ def test_the_range_a_prp_reaches_is_from_dead_centre_to_dead_centre(beyond):
     assert str(caught.value).endswith(
         "expected positions from about 0 deg to 180 deg (or whole turns from them)"
     )
+
+
+def test_a_dead_centre_between_the_scan_s_grid_points_is_found_where_it_is():
+    """The PRP's guide turned by 0.3 deg: its dead centres (the crank's slide line
+    parallel to the guide) move to 0.3 and 180.3 deg, between the scan's points
+    of 0.5 deg, and are found there by the sign change of the determinant."""
+    text = PRP.read_text(encoding="utf-8")
+    t = math.radians(0.3)
+    turned = f"axis = [{math.cos(t)!r}, {math.sin(t)!r}]"
+    text = text.replace("at = [0.0, 0.1]\naxis = [1, 0]", f"at = [0.0, 0.1]\n{turned}")
+    mech = assur.loads(text)
+    found = reach(plan_of(mech))
+    assert found is not None
+    assert math.degrees(found.low) == pytest.approx(0.3, abs=1e-9)
+    assert math.degrees(found.high) == pytest.approx(180.3, abs=1e-9)
+    with pytest.raises(assur.AssemblyError) as caught:
+        assur.kinematics(mech, [60.0, 185.5])
+    assert "the group is at a dead centre at about 180.3 deg" in str(caught.value)
