@@ -118,3 +118,19 @@ def test_a_balanced_crank_settles_at_tau_ln_50(stall, free):
     # the periodic speed is w0 to 1e-8 (periodic to 1e-8 a turn): the band's edge
     # moves by that much, the time by 1e-8 / 0.02 * tau / ln 50 of itself
     assert run.settle_time == pytest.approx(tau * math.log(50.0), rel=1e-6)
+
+
+@pytest.mark.parametrize("sense", [1.0, -1.0])
+def test_the_periodic_speed_is_read_at_the_angle_either_way_round(sense):
+    """A turn sampled evenly from 1 rad, counter-clockwise or clockwise, of a speed
+    5 + cos(phi) that depends on the angle alone: the spline gives it back at any
+    angle, whole turns from the sampled one too. (Read without the sense, a
+    clockwise crank's speed came from the mirror angle; every clockwise test's
+    speed was even, so the angle's direction never showed.)"""
+    from assur._startup_settle import periodic_speed
+
+    phi0 = 1.0
+    angles = phi0 + sense * np.linspace(0.0, 2.0 * np.pi, 401)
+    speed = periodic_speed((angles, 5.0 + np.cos(angles)), sense)
+    for phi in (0.3, 1.0, 2.5, -2.0, 0.3 + 4.0 * np.pi):
+        assert float(speed(phi)) == pytest.approx(5.0 + math.cos(phi), abs=1e-8)
