@@ -782,3 +782,33 @@ def test_variants_with_a_stepped_load_table_agree_with_separate_calls(cuts):
     angles = np.arange(0.0, 360.0, 1.0)
     study = assur.sweep(cutting, parameters, angles)
     assert_agrees(study.summary, separate(cutting, parameters, angles))
+
+
+@pytest.mark.parametrize(
+    ("reference", "angles"),
+    [
+        # the change point (180 deg) ahead of the reference pose only
+        (60.0, np.arange(60.0, 240.0, 4.0)),
+        # behind it only, the reference pose far from 0
+        (300.0, np.arange(300.0, 150.0, -4.0)),
+        # more than two turns back: beyond the screen's window
+        (60.0, np.arange(60.0, -800.0, -10.0)),
+    ],
+)
+def test_a_variant_with_one_change_point_a_turn_is_solved_as_alone(reference, angles):
+    """crank + frame = coupler + rocker: one change point a turn, at 180 deg (a
+    parallelogram has one every half turn). Ahead of the reference pose, behind it
+    from far off 0, or more than two turns back, the variant's row is that of a call
+    of its own, and only it is told of the change point."""
+    parameters = {
+        "crank": [0.04, 0.04, 0.04],
+        "coupler": [0.06, 0.065, 0.06],
+        "rocker": [0.06, 0.06, 0.06],
+        "frame": [0.08, 0.08, 0.08],
+        "angle": [reference, reference, reference + 1.0],
+    }
+    study = assur.sweep(catalog.four_bar, parameters, angles)
+    assert_agrees(study.summary, separate(catalog.four_bar, parameters, angles))
+    warned = study.summary["warning"].tolist()
+    assert "(a change point)" in warned[0]
+    assert not warned[1]
