@@ -493,6 +493,26 @@ def test_a_triad_scaled_moves_alike(scale):
     oracle.assert_columns(other, assur.kinematics(other, positions), expected)
 
 
+def test_angles_stay_continuous_beside_a_prismatic_driver_s_body():
+    """A drag-link four-bar beside a ram, two drivers: the ram's body is among the
+    links whose angle is not given, and only the others are made continuous
+    (unwrapping the ram's instead left the follower's whole turns jumping back by
+    360 deg), read together or alone."""
+    from .conftest import DATA
+
+    mech = assur.load(DATA / "edge" / "drag_link_beside_a_ram.toml")
+    crank = np.linspace(0.0, 720.0, 361)
+    given = np.column_stack([crank, np.zeros_like(crank)])
+    table = assur.kinematics(mech, given)
+    follower = table["follower.angle"]
+    assert follower[0] == pytest.approx(79.7534, abs=1e-4)
+    assert follower[-1] == pytest.approx(follower[0] + 720.0, abs=1e-9)
+    assert np.abs(np.diff(follower)).max() < 4.0
+    alone = assur.kinematics(mech, given, columns=["follower.angle"])
+    np.testing.assert_array_equal(alone["follower.angle"], follower)
+    np.testing.assert_array_equal(table["ram.angle"], 0.0)
+
+
 def test_sub_millimetre_mechanism():
     from .conftest import EXAMPLES
 
