@@ -555,8 +555,11 @@ FIVE_PARALLELOGRAM = EDGE / "five_bar_parallelogram.toml"
         np.stack(np.meshgrid(np.arange(-300.0, 400.0, 41.0), [-90.0, 120.0, 500.0]))
         .reshape(2, -1)
         .T,
+        # the right crank held at its reference pose: the path is sampled by the
+        # crank that moves (by the one that does not, two samples missed 180 deg)
+        np.column_stack([np.arange(60.0, 421.0, 45.0), np.full(9, 120.0)]),
     ],
-    ids=["together", "apart", "grid"],
+    ids=["together", "apart", "grid", "one-held"],
 )
 def test_a_dyad_on_two_cranks_stays_a_parallelogram(angles):
     """With two drivers the change points were not looked for: the sweep switched
