@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import contextlib
+import signal
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -13,6 +14,12 @@ import assur
 
 DATA = Path(__file__).parent / "data"
 EXAMPLES = Path(__file__).parent.parent / "examples"
+
+if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+    # started in the background by a shell without job control (`cmd &`), the
+    # tests inherit Ctrl-C ignored, and so would every command they start: the
+    # tests of Ctrl-C need Python's own handler, which a child then gets too
+    signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def example_files() -> list[Path]:
