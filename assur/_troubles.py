@@ -33,8 +33,8 @@ from assur.errors import (
 from assur.plan import Plan
 
 SKIPPED_WHY = (
-    "where a group cannot be assembled, stands at a dead centre or is locked by "
-    "friction"
+    "where a group cannot be assembled, stands at a dead centre or a change point, "
+    "or is locked by friction"
 )
 """What the positions ``skip_unassembled`` leaves out have in common."""
 UNREACHED_WHY = "or that the mechanism cannot reach from its reference pose"

@@ -89,9 +89,9 @@ def kinematics(
         several drivers).
     skip_unassembled : bool
         Leave out the positions where a group cannot be assembled, stands at a dead
-        centre or is locked by friction, or that the mechanism cannot reach from its
-        reference pose (one driver: see :mod:`assur._reach`), instead of raising;
-        ``Table.skipped`` lists them.
+        centre or a change point, or is locked by friction, or that the mechanism
+        cannot reach from its reference pose (one driver: see :mod:`assur._reach`),
+        instead of raising; ``Table.skipped`` lists them.
     columns : sequence of str, optional
         Compute only these columns (and ``angle``). A table of the drivers' columns
         alone (``["driver.torque"]``, say) keeps none of the links' motions or
@@ -161,8 +161,8 @@ def forces(
         position, replacing the file's constants, as in :func:`kinematics`.
     skip_unassembled : bool
         Leave out the positions where a group cannot be assembled, stands at a dead
-        centre or is locked by friction, or that the mechanism cannot reach from its
-        reference pose, instead of raising.
+        centre or a change point, or is locked by friction, or that the mechanism
+        cannot reach from its reference pose, instead of raising.
     columns : sequence of str, optional
         Compute only these columns (and ``angle``), as in :func:`kinematics`.
     progress : bool or callable, optional

@@ -664,8 +664,9 @@ def test_skip_unassembled(double_rocker, capsys):
     assert len(lines) == 1
     assert lines[0].startswith(
         f"assur: note: {double_rocker}: left out 11 positions "
-        "where a group cannot be assembled, stands at a dead centre or is locked by "
-        "friction, or that the mechanism cannot reach from its reference pose: "
+        "where a group cannot be assembled, stands at a dead centre or a change "
+        "point, or is locked by friction, or that the mechanism cannot reach from "
+        "its reference pose: "
     )
     # read from standard input, the note names it as errors do ("-: left out ...")
     import io

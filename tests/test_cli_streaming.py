@@ -184,8 +184,9 @@ def test_many_runs_near_dead_centres_are_cut_as_one_table_cuts_them(
     shown = "; ".join(f"{a:g} deg to {b:g} deg" for a, b in runs[:6]) + "; ..."
     assert lines[0] == (
         f"assur: note: {double_rocker}: left out {len(table.skipped)} positions "
-        "where a group cannot be assembled, stands at a dead centre or is locked by "
-        "friction, or that the mechanism cannot reach from its reference pose: "
+        "where a group cannot be assembled, stands at a dead centre or a change "
+        "point, or is locked by friction, or that the mechanism cannot reach from "
+        "its reference pose: "
         f"{shown}"
     )
     assert len(lines) == 2
