@@ -480,6 +480,8 @@ def test_mathml_of_the_constructs() -> None:
     assert "<msqrt>" in mathml(r"\sqrt{2}")
     assert '<mover accent="true"><mi>v</mi><mo>→</mo></mover>' in mathml(r"\vec v")
     assert "<mtext>left_crank</mtext>" in mathml(r"\mathrm{left\_crank}")
+    # a function's name set apart from its argument: "tan38.79" ran together
+    assert '<mi>tan</mi><mspace width="0.17em"/><mn>38.79</mn>' in mathml(r"\tan 38.79")
     with pytest.raises(ValueError, match="knows no"):
         mathml(r"\unknowncommand")
     with pytest.raises(ValueError, match="not closed"):

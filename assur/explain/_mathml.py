@@ -255,7 +255,8 @@ def _command(name: str, tokens: list[str], i: int) -> tuple[str, int]:
     if name in SYMBOLS:
         return f"<mo>{escape(SYMBOLS[name])}</mo>", i
     if name in FUNCTIONS:
-        return f"<mi>{name}</mi>", i
+        # a thin space after the name, as TeX sets it: "tan 38.79", not "tan38.79"
+        return f'<mi>{name}</mi><mspace width="{SPACES[","]}"/>', i
     if name == "text":
         return _text(tokens, i)
     if name == "mathrm":
