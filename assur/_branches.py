@@ -76,6 +76,24 @@ class ChangePoints:
         """Whether some group has a change point."""
         return any(p.size for p in self.points)
 
+    def within(self, x: Any) -> Any:
+        """Return driver positions ``x`` (rad or m) moved into the scanned window.
+
+        A crank's position a whole number of turns outside it is the one inside;
+        a slider's stays as it is.
+        """
+        if self.period is None:
+            return x
+        return self.low + np.remainder(x - self.low, self.period)
+
+
+def _found_to(plan: Plan) -> float:
+    """Return the distance (rad, or m) within which a position is a change point.
+
+    A change point is found to about 1e-8 of a radian, or of the mechanism's size.
+    """
+    return 1e-6 * (1.0 if plan.drivers[0].kind == "R" else plan.scale)
+
 
 def change_points(plan: Plan) -> ChangePoints | None:
     """Return the change points of ``plan`` (scanned once and kept), or None.
@@ -274,10 +292,8 @@ def branches(
     if found is None or not found.any:
         return {}, []
     ref = plan.drivers[0].reference
-    x = drive[:, :1]
-    if found.period is not None:
-        # positions beyond the window repeat it
-        x = ref + np.remainder(x - found.low, found.period) + (found.low - ref)
+    x = found.within(drive[:, :1])  # positions beyond the window repeat it
+    tol = _found_to(plan)
     out, passed = {}, []
     lo, hi = float(np.min(x, initial=ref)), float(np.max(x, initial=ref))
     for g, points in enumerate(found.points):
@@ -289,8 +305,6 @@ def branches(
         # passed: a position lies beyond it from the reference pose (a sweep that
         # ends on a change point, or one position there, was told the motion is
         # carried through it, then stopped at its dead centre)
-        # a change point is found to about 1e-8 (rad, or of the mechanism's size)
-        tol = 1e-6 * (1.0 if plan.drivers[0].kind == "R" else plan.scale)
         passed += [
             (g, float(c))
             for c in points
@@ -308,7 +322,4 @@ def at_change_point(plan: Plan, g: int, x: float) -> bool:
     found = change_points(plan)
     if found is None or not found.points[g].size:
         return False
-    if found.period is not None:
-        x = found.low + float(np.remainder(x - found.low, found.period))
-    tol = 1e-6 * (1.0 if plan.drivers[0].kind == "R" else plan.scale)
-    return bool(np.any(np.abs(found.points[g] - x) <= tol))
+    return bool(np.any(np.abs(found.points[g] - found.within(x)) <= _found_to(plan)))
