@@ -31,6 +31,7 @@ from assur.groups._protocol import Equilibrium, GroupSolver, Wrench
 from assur.kinetostatics import Applied, with_friction
 
 __all__ = [
+    "frictionless",
     "group_friction_blocks",
     "method",
     "newton_start",
@@ -52,17 +53,26 @@ def newton_start(
 ) -> tuple[dict[str, float], int, bool]:
     """Return Newton's start (sizes, N), its steps, and whether it raised friction.
 
-    Friction is raised from zero by degrees where Newton from the frictionless
-    sizes does not settle. The start is the group solved without its own pairs'
-    friction (the friction the groups solved before passed on is kept):
-    ``loads`` (:func:`without_own`). The iteration is run again from there, as the
-    reverse pass ran it.
+    Friction is raised from zero step by step where Newton from the frictionless
+    sizes does not settle. The start is :func:`frictionless`; the iteration is run
+    again from there, as the reverse pass ran it.
     """
-    sizes = _sizes(pos, rec, solver.equilibrium(pos.bodies, loads))
+    sizes = frictionless(pos, rec, solver, loads)
     found = solve_group(solver, pos.bodies, loads, 1, at_rest(pos))
     if found is None:
         return sizes, 0, False
     return sizes, found.iterations, found.raised
+
+
+def frictionless(
+    pos: Position, rec: Equilibrium, solver: GroupSolver, loads: list[Wrench]
+) -> dict[str, float]:
+    """Return the sizes (N) of the group solved without its own pairs' friction.
+
+    ``loads`` are :func:`without_own`'s: the friction the groups solved before
+    passed on is kept.
+    """
+    return _sizes(pos, rec, solver.equilibrium(pos.bodies, loads))
 
 
 def _sizes(pos: Position, rec: Equilibrium, record: Equilibrium) -> dict[str, float]:

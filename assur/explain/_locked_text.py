@@ -14,8 +14,8 @@ import math
 
 from assur.explain._friction_text import rubbing
 from assur.explain._group_friction_text import (
+    frictionless,
     method,
-    newton_start,
     steps_ratio,
     substitution,
     substitution_grid,
@@ -39,8 +39,8 @@ def locked_blocks(
     """
     pairs = rubbing(rec.pairs)
     loads = without_own(pos, rec)
-    start, _, _ = newton_start(pos, rec, solver, loads)
-    tried = substitution(pos, rec, solver, loads, start)
+    # from the frictionless sizes (Newton's method, which runs away here, not run)
+    tried = substitution(pos, rec, solver, loads, frictionless(pos, rec, solver, loads))
     head, rows = substitution_grid(pos, pairs, tried)
     return [
         method(pairs),

@@ -79,12 +79,11 @@ def locked_position(mech: Mechanism, angle: Any, error: SelfLockingError) -> Pos
     first = next((r.label for r in result.groups if r.label in locked), None)
     if first is None:
         raise error
+    # the locked group's reactions, the groups' after it and the drivers'
+    labels = [record.label for record in result.groups]
     unknown = {d.pair.name for d in plan.drivers}
-    reached = True
-    for record in result.groups:
-        reached = reached and record.label != first
-        if not reached:
-            unknown.update(record.reactions)
+    for record in result.groups[labels.index(first) :]:
+        unknown.update(record.reactions)
     nan = math.nan
     known = replace(
         found,
