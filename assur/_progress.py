@@ -13,7 +13,7 @@ from collections.abc import Callable
 from types import TracebackType
 from typing import Any
 
-from assur._text import shortened
+from assur._text import python_value
 from assur._vec import is_flag
 from assur.errors import UsageError
 
@@ -44,7 +44,7 @@ class Progress:
             if not is_flag(show):
                 msg = (
                     "progress: expected True, False or a callable (done, total), got "
-                    f"{type(show).__name__} {shortened(repr(show), 40)}"
+                    f"{python_value(show)}"
                 )
                 raise UsageError(msg)
             show = bool(show)

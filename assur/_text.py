@@ -119,6 +119,17 @@ def suggest(name: str, known: Iterable[str], listing: bool = True) -> str:
     return f" (known: {', '.join(shown) or 'none'})"
 
 
+def python_value(value: object) -> str:
+    """Return a library argument as a message echoes it: its type and a short repr.
+
+    Examples
+    --------
+    >>> python_value(b"B.Fx")
+    "bytes b'B.Fx'"
+    """
+    return f"{type(value).__name__} {shortened(repr(value), 40)}"
+
+
 def shortened(text: str, limit: int) -> str:
     """Return ``text`` cut to ``limit`` characters, ``...`` marking a cut."""
     return text if len(text) <= limit else text[: limit - 3] + "..."

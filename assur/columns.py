@@ -18,7 +18,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from assur._text import describe, shortened, suggest
+from assur._text import describe, python_value, suggest
 from assur.errors import UsageError
 from assur.plan import Plan
 
@@ -304,19 +304,13 @@ def selection(plan: Plan, forces: bool, names: Any = None) -> Selection:
     if isinstance(names, str):
         names = [names]
     if not isinstance(names, Iterable) or isinstance(names, bytes | bytearray):
-        msg = (
-            "columns: expected a list of column names, got "
-            f"{type(names).__name__} {shortened(repr(names), 40)}"
-        )
+        msg = f"columns: expected a list of column names, got {python_value(names)}"
         raise UsageError(msg)
     index = {c.name: c for c in full}
     wanted = {"angle"}
     for name in names:
         if not isinstance(name, str):
-            msg = (
-                "columns: expected column names (str), got "
-                f"{type(name).__name__} {shortened(repr(name), 40)}"
-            )
+            msg = f"columns: expected column names (str), got {python_value(name)}"
             raise UsageError(msg)
         if name not in index:
             extra = ""

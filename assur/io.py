@@ -25,7 +25,7 @@ from assur._output import (
     stdout_writer,
     write_text,
 )
-from assur._text import shortened
+from assur._text import python_value
 from assur._vec import is_flag
 from assur.errors import AssurError, ModelError, UsageError
 from assur.model import Mechanism, mechanism_of
@@ -322,6 +322,5 @@ def _check_flag(json_format: object) -> None:
     ``loads(text, "toml")`` read TOML as JSON: any non-empty string is true.
     """
     if not is_flag(json_format):
-        got = shortened(repr(json_format), 40)
-        msg = f"json_format: expected True or False, got {got}"
+        msg = f"json_format: expected True or False, got {python_value(json_format)}"
         raise UsageError(msg)

@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from assur.plotting._apart import moved
-from assur.plotting._axes import given_axes
+from assur.plotting._axes import _new_axes
 from assur.plotting._heads import fitted_arrow
 from assur.plotting._style import literal
 
@@ -96,11 +96,7 @@ def _axes(ax: Any, title: str, size: tuple[float, float] = (7.5, 6.5)) -> Any:
 
     ``size`` is a new figure's, inches.
     """
-    import matplotlib.pyplot as plt
-
-    if ax is None:
-        _, ax = plt.subplots(figsize=size, layout="constrained")
-    ax = given_axes(ax)
+    ax = _new_axes(ax, size)
     ax.set_title(title, fontsize=10)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("mm of the plan")
