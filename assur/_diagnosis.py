@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from assur._checks import _coincide
+from assur._freedom import none_text
 from assur._points import resolve_point
 from assur._text import NAME_LIMIT, listing, public_name, shortened
 from assur._topology import Pair, Topology, _component, _Index, _index, _public
@@ -34,11 +35,11 @@ def _miscount(topo: Topology, w: int, mech: Mechanism) -> tuple[str, str]:
     if parallel is not None:
         return f", as {parallel}", PER_FREEDOM
     if w <= 0:
-        why = (
-            " (none: a rigid chain, or a link repeating a constraint, such as a "
-            "third parallel crank of a parallelogram, which the count cannot see)"
-        )
-        return why, f"links that can move (W >= 1), {PER_FREEDOM}"
+        moving = none_text(topo, w)
+        if moving is not None:
+            why, expected = moving
+            return f", {why}", f"{expected}, then {PER_FREEDOM}"
+        return ": the chain is rigid", f"links that can move (W >= 1), {PER_FREEDOM}"
     if w > len(mech.drivers):
         loose = _loose_text(index, mech)
         if loose is not None:
@@ -207,6 +208,9 @@ def _leftover(
             f"{listing(_public(r.links))} rigid (k = {k}, p = {p}: 2p >= 3(k - 1)); "
             "expected one link in their place, or fewer joints between them"
         )
+    misdriven = _misdriven_text(index, left)
+    if misdriven is not None:
+        return f"{head}, because {misdriven}"
     misheld = _misheld_text(index, left, known)
     if misheld is not None:
         return f"{head}, because {misheld}"
@@ -220,6 +224,50 @@ def _leftover(
             f"not solve; expected groups of at most {largest} links"
         )
     return f"{head}; expected a chain made of Assur groups"
+
+
+def _misdriven_text(index: _Index, left: tuple[str, ...]) -> str | None:
+    """Return a part left over that moves with no driver beside one held too much.
+
+    The count W matched the drivers, so a part of the links left over with freedom
+    on the known links (3k - 2p > 0) beside one with less than none says that the
+    drivers sit on the wrong part: two on one loop, none on another.
+    """
+    unknown = set(left)
+    parts: list[tuple[list[str], int]] = []
+    for name in left:
+        if any(name in part for part, _ in parts):
+            continue
+        part = _component(index, name, unknown)
+        pairs = {i for x in part for i in index.incident[x]}
+        ordered = sorted(part, key=index.rank.__getitem__)
+        parts.append((ordered, 3 * len(part) - 2 * len(pairs)))
+    # a part that a driver can move: a joint to the frame, no link on one joint
+    free = [
+        (part, w)
+        for part, w in parts
+        if w > 0
+        and all(len(index.incident[x]) >= 2 for x in part)
+        and any(GROUND in index.pairs[i].links for x in part for i in index.incident[x])
+    ]
+    held = [(part, w) for part, w in parts if w < 0]
+    if not free or not held:
+        return None
+    (loose, w), (fixed, less) = free[0], held[0]
+    frame = [
+        index.pairs[i].name
+        for x in loose
+        for i in index.incident[x]
+        if GROUND in index.pairs[i].links
+    ]
+    move = " or ".join(_public(tuple(frame)))
+    return (
+        f"{_links_text(loose)} can move on the known links (3k - 2p = {w}) with no "
+        f"driver, while {_links_text(fixed)} {'is' if len(fixed) == 1 else 'are'} "
+        f"held too much (3k - 2p = {less}): the drivers are on the wrong parts; "
+        f"expected one driver for each degree of freedom of each part: a driver "
+        f"moved to joint {move}"
+    )
 
 
 def _misheld_text(index: _Index, left: tuple[str, ...], known: set[str]) -> str | None:

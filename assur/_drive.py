@@ -43,10 +43,10 @@ def _no_driver(plan: Plan) -> ModelError:
     Such a file passes the count of degrees of freedom only when it has none (a
     rigid chain, whose groups stand on the frame): a driver would not help it.
     """
-    from assur._structure import NO_DRIVER, mobility
+    from assur._structure import mobility, no_driver
 
     if mobility(plan.mechanism) <= 0:
-        msg = NO_DRIVER
+        msg = no_driver(plan.mechanism)
     else:
         msg = "drivers: the mechanism has no driver; expected a [[drivers]] entry"
     return ModelError(msg)

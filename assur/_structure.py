@@ -15,9 +15,10 @@ from dataclasses import dataclass
 from typing import Any
 
 from assur._diagnosis import _miscount
+from assur._freedom import none_text
 from assur._group import Group, _describe
 from assur._group_search import _attach
-from assur._text import counted, describe, roman, suggest
+from assur._text import counted, describe, noun_for, roman, suggest
 from assur._topology import Pair, Topology, _index, _public, topology
 from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, mechanism_of
@@ -263,7 +264,8 @@ def structure(
         for name in chosen:
             if name not in joints:
                 known = [j.name for j in mech.joints if GROUND in j.links]
-                msg = f"unknown joint {describe(name)}{suggest(str(name), known)}"
+                hint = suggest(str(name), known, label="joints with the frame")
+                msg = f"unknown joint {describe(name)}{hint}"
                 raise DriverChoiceError(msg)
         omega = mech.drivers[0].omega if mech.drivers else 1.0
         try:
@@ -274,7 +276,7 @@ def structure(
     if not mech.drivers and mobility(mech) <= 0:
         # a rigid chain on the frame (a truss) decomposes into groups, but it is a
         # structure, not a mechanism: it has no input and no class
-        raise DecompositionError(NO_DRIVER)
+        raise DecompositionError(no_driver(mech))
     try:
         drivers, groups, topo = decompose(mech)
     except DecompositionError as err:
@@ -297,12 +299,28 @@ def structure(
     )
 
 
-NO_DRIVER = (
-    "drivers: the mechanism has no driver, and W = 0: its links cannot move (a rigid "
-    "structure); expected links that can move, with a [[drivers]] entry for each "
-    "degree of freedom"
-)
-"""The error of a file with no driver whose links cannot move."""
+def no_driver(mech: Mechanism) -> str:
+    """Return the error of a file with no driver whose count W is 0 or less.
+
+    Its links cannot move (a rigid structure), or a constraint repeats another,
+    which the count cannot see.
+    """
+    w = mobility(mech)
+    head = f"drivers: the mechanism has no driver, and W = {_count_text(mech, w)}"
+    each = "a [[drivers]] entry for each degree of freedom"
+    moving = none_text(topology(mech), w)
+    if moving is not None:
+        return f"{head}, {moving[0]}; expected {moving[1]}, then {each}"
+    return (
+        f"{head}: its links cannot move (a rigid structure); expected links that can "
+        f"move, with {each}"
+    )
+
+
+def _count_text(mech: Mechanism, w: int) -> str:
+    """Return the count of degrees of freedom worked out: ``3*n - 2*p5 - p4 = W``."""
+    p4 = sum(j.kind == "slot" for j in mech.joints)
+    return f"3*{len(mech.links)} - 2*{len(mech.joints) - p4} - {p4} = {w}"
 
 
 def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], Topology]:
@@ -344,12 +362,10 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     w = mobility(mech)
     topo = topology(mech)
     if w != len(mech.drivers):
-        n = len(mech.links)
-        p4 = sum(j.kind == "slot" for j in mech.joints)
         why, expected = _miscount(topo, w, mech)
         msg = (
-            f"drivers: the mechanism has W = 3*{n} - 2*{len(mech.joints) - p4} - {p4}"
-            f" = {counted(w, 'degree', 'degrees')} of freedom but "
+            f"drivers: the mechanism has W = {_count_text(mech, w)} "
+            f"{noun_for(w, 'degree', 'degrees')} of freedom but "
             f"{counted(len(mech.drivers), 'driver')}{why}; expected {expected}"
         )
         raise DecompositionError(msg)

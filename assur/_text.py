@@ -87,8 +87,12 @@ def roman(number: int) -> str:
     return ROMAN.get(number, str(number))
 
 
-def suggest(name: str, known: Iterable[str], listing: bool = True) -> str:
+def suggest(
+    name: str, known: Iterable[str], listing: bool = True, label: str = "known"
+) -> str:
     """Return a hint for an unknown ``name``: the closest of ``known``, or all of them.
+
+    ``label`` heads the list of them all.
 
     Examples
     --------
@@ -116,7 +120,7 @@ def suggest(name: str, known: Iterable[str], listing: bool = True) -> str:
     shown = shown[: fitting(shown, LISTING_LIMIT)]
     if len(shown) < len(names):
         shown.append("...")
-    return f" (known: {', '.join(shown) or 'none'})"
+    return f" ({label}: {', '.join(shown) or 'none'})"
 
 
 def python_value(value: object) -> str:

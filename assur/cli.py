@@ -321,7 +321,10 @@ def _cmd_structure(args: argparse.Namespace) -> int:
     mech = load_mechanism(args.file)
     try:
         chosen = args.driver
-        s = structure(mech, chosen.split(",") if chosen and "," in chosen else chosen)
+        if chosen and "," in chosen:
+            # "A, E" as a reader writes a list: the names without the spaces
+            chosen = [name.strip() for name in chosen.split(",")]
+        s = structure(mech, chosen)
     except DriverChoiceError as err:
         # the option, not the file: named as the command line spells it
         raise UsageError(err.spelled("--driver", "--driver")) from err

@@ -115,8 +115,14 @@ def structure_report(s: Structure) -> str:
         f"Structure formula: {s.formula}",
         f"Class of the mechanism: {roman(s.mechanism_class)} ({_class_reason(s)})",
     ]
-    lines.append(
-        "Kinematics runs through the groups in this order; the force analysis in "
-        "the reverse order."
-    )
+    if s.groups:
+        lines.append(
+            "Kinematics runs through the groups in this order; the force analysis "
+            "in the reverse order."
+        )
+    else:
+        inputs = "link" if len(s.drivers) == 1 else "links"
+        lines.append(
+            f"Kinematics and the force analysis take the input {inputs} alone."
+        )
     return "\n".join(lines)

@@ -606,7 +606,8 @@ def test_a_structure_without_drivers_is_one_line(tmp_path, capsys, command):
     argv = [c.format(tmp=tmp_path) for c in command]
     line = one_error(capsys, argv[0], path, *argv[1:])
     assert line == (
-        f"assur: error: {path}: drivers: the mechanism has no driver, and W = 0: "
+        f"assur: error: {path}: drivers: the mechanism has no driver, and W = 3*2 - "
+        "2*3 - 0 = 0: "
         "its links cannot move (a rigid structure); expected links that can move, "
         "with a [[drivers]] entry for each degree of freedom"
     )

@@ -336,7 +336,11 @@ def test_a_dollar_in_the_name_is_bare_in_the_page_s_title():
     ("stem", "angle", "where"),
     [
         ("four_bar", 100.0, "crank angle 100 deg"),
-        ("five_bar_two_cranks", [60.0, 120.0], "driver positions left_crank 60 deg, "),
+        (
+            "five_bar_two_cranks",
+            [60.0, 120.0],
+            "driver positions left_crank at 60 deg, ",
+        ),
     ],
 )
 def test_the_title_says_which_position_the_note_is_for(stem, angle, where) -> None:

@@ -164,5 +164,6 @@ def _where(table: Any) -> str:
         what = "crank angle" if plan.drivers[0].kind == "R" else "driver position"
         return f"{what} {values[0]}"
     names = [plain(plan.bodies[d.body]) for d in plan.drivers]
-    named = [f"{n} {v}" for n, v in zip(names, values, strict=True)]
+    # "2 at 0 deg": a link named by a number would else read as part of the value
+    named = [f"{n} at {v}" for n, v in zip(names, values, strict=True)]
     return "driver positions " + ", ".join(named)

@@ -10,7 +10,7 @@ from assur._structure import Structure
 from assur._text import counted, noun_for, roman
 from assur.explain._note import Block, Display, Heading, Items, Para
 from assur.explain._tex import plain
-from assur.report import _why
+from assur.report import _class_why, _counted, _names, _why
 
 __all__ = ["structure_blocks"]
 
@@ -49,12 +49,21 @@ def structure_blocks(s: Structure) -> list[Block]:
         for g in s.drivers
     ]
     for g in s.groups:
-        links = ", ".join(plain(x) for x in g.links)
-        items.append(
-            f"Class {roman(g.group_class)}, order {g.order}, {_kind(g.kind)} "
-            f"({links}), on {', '.join(plain(x) for x in g.attached_to)} through "
-            f"{', '.join(plain(x) for x in g.external)}: {plain(_why(g))}."
+        # the words of the structure report: which pairs are inside the group and
+        # which hang it on the known links, why it is a group, why of its class
+        numeral = roman(g.group_class)
+        pairs = (
+            f"{_counted('internal pair', g.internal)}; "
+            f"{_counted('external pair', g.external)} on the "
+            f"{_counted('known link', g.attached_to)}"
         )
+        text = (
+            f"Class {numeral}, order {g.order}, {_kind(g.kind)} "
+            f"({_names(g.links)}): {pairs}. Why an Assur group: {_why(g)}."
+        )
+        if g.basis:
+            text += f" Why class {numeral}: {_class_why(g)}."
+        items.append(plain(text))
     blocks += [
         Para(
             f"{counted(len(s.drivers), 'driver')} for $W = {s.dof}$. The input "
@@ -64,10 +73,16 @@ def structure_blocks(s: Structure) -> list[Block]:
         Items(tuple(items)),
         Para(
             f"Structure formula: {plain(s.formula.replace(' -> ', ' → '))}; a class "
-            f"{roman(s.mechanism_class)} mechanism. The kinematic analysis goes "
-            "through the groups in this order, the force analysis in the reverse "
-            "order, ending with the input "
-            + ("link." if len(s.drivers) == 1 else "links.")
+            f"{roman(s.mechanism_class)} mechanism. "
+            + (
+                "The kinematic analysis goes through the groups in this order, the "
+                "force analysis in the reverse order, ending with the input "
+                + ("link." if len(s.drivers) == 1 else "links.")
+                if s.groups
+                else "With no Assur group, the kinematic and the force analysis "
+                "take the input "
+                + ("link alone." if len(s.drivers) == 1 else "links alone.")
+            )
         ),
     ]
     return blocks

@@ -1,0 +1,192 @@
+"""What the structural analysis says where a count misleads, or a teacher reads it.
+
+The freedom a chain has at its pose (the rank of its joints' velocity equations),
+seen against the count W: a passive constraint (a third parallel crank), a rigid
+triangle, three pins in line; drivers put on the wrong parts of a chain; the words of
+the structure report and of the note's first part.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+import assur
+from assur import DecompositionError
+from assur._freedom import pose_freedom
+from assur._topology import topology
+from assur.cli import main
+
+from .conftest import EXAMPLES
+from .test_structure import build
+
+PARALLELOGRAM = [
+    ("A", "R", ("ground", "2"), (0.0, 0.0)),
+    ("B", "R", ("2", "3"), (0.0, 0.1)),
+    ("C", "R", ("3", "4"), (0.2, 0.1)),
+    ("D", "R", ("ground", "4"), (0.2, 0.0)),
+]
+THIRD_CRANK = [
+    ("E", "R", ("3", "5"), (0.1, 0.1)),
+    ("F", "R", ("ground", "5"), (0.1, 0.0)),
+]
+
+
+def test_a_third_parallel_crank_moves_though_the_count_says_rigid() -> None:
+    # W = 3*4 - 2*6 = 0, yet the parallelogram still turns: q = 1 repeated constraint
+    mech = build(PARALLELOGRAM + THIRD_CRANK, ["A"])
+    assert assur.mobility(mech) == 0
+    assert pose_freedom(topology(mech)) == 1
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(mech)
+    text = str(err.value)
+    assert (
+        "W = 3*4 - 2*6 - 0 = 0 degrees of freedom but 1 driver, yet the chain " in text
+    )
+    assert "moves at its pose (1 degree of freedom)" in text
+    assert "W = 3n - 2p5 - p4 + q with q = 1" in text
+    assert text.endswith(
+        "expected no constraint repeated: remove the redundant link or joint, then "
+        "one driver per degree of freedom"
+    )
+    # the same crank off parallel (F moved) locks the chain: rigid, as counted
+    skew = build(
+        [*PARALLELOGRAM, THIRD_CRANK[0], ("F", "R", ("ground", "5"), (0.13, 0.0))],
+        ["A"],
+    )
+    assert pose_freedom(topology(skew)) == 0
+    with pytest.raises(DecompositionError, match="1 driver: the chain is rigid; exp"):
+        assur.structure(skew)
+
+
+@pytest.mark.parametrize(
+    ("joints", "free"),
+    [
+        # a triangle on the frame: rigid
+        (
+            [
+                ("O", "R", ("ground", "a"), (0, 0)),
+                ("P", "R", ("a", "b"), (0.05, 0.05)),
+                ("Q", "R", ("b", "ground"), (0.1, 0)),
+            ],
+            0,
+        ),
+        # the same with its three pins in line: it moves at that pose (a toggle)
+        (
+            [
+                ("O", "R", ("ground", "a"), (0, 0)),
+                ("P", "R", ("a", "b"), (0.05, 0.0)),
+                ("Q", "R", ("b", "ground"), (0.1, 0)),
+            ],
+            1,
+        ),
+        # a slider-crank: 1, whatever the slide line's slant
+        (
+            [
+                ("A", "R", ("ground", "c"), (0, 0)),
+                ("B", "R", ("c", "r"), (0.03, 0.04)),
+                ("C", "R", ("r", "s"), (0.15, 0.02)),
+                ("G", "P", ("ground", "s"), (0.15, 0.02), (0.98, 0.2)),
+            ],
+            1,
+        ),
+        # a block on a guide with two slide lines: one sliding pair counted twice
+        (
+            [
+                ("G", "P", ("ground", "s"), (0, 0), (1.0, 0.0)),
+                ("H", "P", ("ground", "s"), (0, 0.1), (1.0, 0.0)),
+            ],
+            1,
+        ),
+        # a crank and a link hanging on it: two turns
+        ([("A", "R", ("ground", "c"), (0, 0)), ("B", "R", ("c", "r"), (1.0, 0))], 2),
+    ],
+)
+def test_the_freedom_at_the_pose_counts_what_moves(joints, free) -> None:
+    assert pose_freedom(topology(build(joints, []))) == free
+
+
+def test_a_truss_without_driver_gives_its_count_worked_out() -> None:
+    # W = 3*3 - 2*6 = -3: said as it is, not as 0
+    joints = [
+        ("A", "R", ("ground", "2"), (0, 0)),
+        ("B", "R", ("2", "3"), (0.1, 0.1)),
+        ("C", "R", ("ground", "3"), (0.2, 0)),
+        ("D", "R", ("ground", "4"), (0.3, 0)),
+        ("E", "R", ("4", "3"), (0.25, 0.15)),
+        ("F", "R", ("4", "2"), (0.15, 0.2)),
+    ]
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(build(joints, []))
+    assert str(err.value).startswith(
+        "drivers: the mechanism has no driver, and W = 3*3 - 2*6 - 0 = -3: its links "
+        "cannot move (a rigid structure)"
+    )
+    # a parallelogram with a third crank and no driver moves: not called rigid
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(build(PARALLELOGRAM + THIRD_CRANK, []))
+    assert "= 0, yet the chain moves at its pose" in str(err.value)
+    assert "rigid structure" not in str(err.value)
+
+
+def test_two_drivers_on_one_loop_and_none_on_another_are_named() -> None:
+    # two four-bars side by side (W = 2), both drivers on the first
+    first = [
+        *PARALLELOGRAM[:2],
+        ("C", "R", ("3", "4"), (0.16, 0.12)),
+        ("D", "R", ("ground", "4"), (0.14, 0)),
+    ]
+    second = [
+        (
+            j + "2",
+            kind,
+            tuple(x if x == "ground" else str(int(x) + 3) for x in links),
+            (at[0] + 1.0, at[1]),
+        )
+        for j, kind, links, at in first
+    ]
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(build(first + second, ["A", "D"]))
+    assert str(err.value).endswith(
+        "because links 5, 6, 7 can move on the known links (3k - 2p = 1) with no "
+        "driver, while link 3 is held too much (3k - 2p = -1): the drivers are on "
+        "the wrong parts; expected one driver for each degree of freedom of each "
+        "part: a driver moved to joint A2 or D2"
+    )
+    assert assur.structure(build(first + second, ["A", "D2"])).formula.count("II") == 2
+
+
+def test_the_driver_option_takes_a_list_with_spaces(capsys) -> None:
+    path = EXAMPLES / "five_bar_two_cranks.toml"
+    drivers = [d.joint for d in assur.load(path).drivers]
+    assert main(["structure", "--driver", ", ".join(drivers), str(path)]) == 0
+    assert "Structure of" in capsys.readouterr().out
+
+
+def test_an_unknown_driver_lists_the_joints_with_the_frame(capsys) -> None:
+    path = EXAMPLES / "four_bar.toml"
+    assert main(["structure", "--driver", "Zq9", str(path)]) == 2
+    err = capsys.readouterr().err
+    frame = sorted(j.name for j in assur.load(path).joints if "ground" in j.links)
+    assert f"unknown joint 'Zq9' (joints with the frame: {', '.join(frame)})" in err
+
+
+def test_the_note_says_why_a_group_is_of_its_class() -> None:
+    note = str(assur.explain(assur.load(EXAMPLES / "class3.toml"), 30.0))
+    assert (
+        "triad (rod, plate, left_rocker, right_rocker): internal pairs C, D, E; "
+        "external pairs B, F, G on the known links crank, ground. Why an Assur "
+        "group: k = 4 links, p = 6 lower pairs" in note
+    )
+    assert "Why class III: its base link plate carries three internal pairs" in note
+
+
+def test_a_crank_alone_is_said_to_have_no_group() -> None:
+    crank = build([("A", "R", ("ground", "c"), (0, 0))], ["A"])
+    s = assur.structure(crank)
+    assert str(s).splitlines()[-1] == (
+        "Kinematics and the force analysis take the input link alone."
+    )
+    assert "groups in this order" not in str(s)
+    note = str(assur.explain(crank, 30.0))
+    assert "With no Assur group, the kinematic and the force analysis take the " in note
+    assert "the groups in this order" not in note
