@@ -100,7 +100,7 @@ def _compile(plan: Plan) -> LoadPlan:
     analysed = bool(mech.loads) or any(link.mass for link in mech.links)
     for link in mech.links:
         if link.inertia and not link.mass and analysed:
-            # a link without a mass is massless (FORMAT.md): its inertia was left
+            # a link without a mass is massless (the file format): its inertia was left
             # out of the analysis without a word
             warnings.warn(
                 f"links.{link.name}.inertia: {link.inertia:g} kg m^2 on a link with "

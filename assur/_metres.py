@@ -19,7 +19,7 @@ figures copied into the file as they are."""
 def metres(size: float) -> None:
     """Warn of a mechanism whose size suggests lengths in millimetres, not metres.
 
-    Every length of a file is in metres (FORMAT.md): a slider-crank drawn with a
+    Every length of a file is in metres (the file format): a slider-crank drawn with a
     74 mm crank and written with a crank of 74 has speeds in km/s at 200 rad/s, and
     inertia forces a thousand times too large, without a word otherwise.
     """

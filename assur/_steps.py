@@ -1,7 +1,7 @@
 """The loads just before a step of a load table, at the positions a sweep lands on one.
 
 A load table that gives a position twice steps there, and at that position the value
-after the step holds (FORMAT.md). A sweep that lands on the step then has only that
+after the step holds (the format). A sweep that lands on the step then has only that
 value there: a mean over the positions gives the whole position to one side of the
 step, which a shaper's cutting force, on for a stroke and off for the return, makes
 8 % of the mean power at 1 degree steps. The summary counts such a position half

@@ -1,8 +1,8 @@
 """Load tables: values given at positions, read in between by straight lines.
 
 A table over a crank is periodic: an angle is read modulo 360 within the turn that
-starts at the table's first position (FORMAT.md, "A load table over a revolute
-driver is periodic").
+starts at the table's first position (docs/file_format.rst: a load table over a
+revolute driver is periodic).
 """
 
 from __future__ import annotations

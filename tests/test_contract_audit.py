@@ -1,4 +1,6 @@
-"""Gaps between the format and the package, found by an audit against FORMAT.md.
+"""Gaps between the format and the package, found by an audit of the file format.
+
+The format is docs/file_format.rst.
 
 Each test holds one: the reference pose's angle in (-180, 180] whatever the sign of
 a zero, the dynamic model's table a Table, every driver's power with several, a

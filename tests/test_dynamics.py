@@ -295,7 +295,7 @@ def test_the_table_reads_like_a_table(tmp_path: Path):
 
 
 def test_the_table_has_every_column_method_of_a_sweep_s_table(tmp_path: Path):
-    """FORMAT.md: ``assur.dynamics(...) -> Table``; what a Table's columns give."""
+    """The format: ``assur.dynamics(...) -> Table``; what a Table's columns give."""
     t = steady("four_bar")
     sweep = assur.kinematics(example("four_bar"), [0.0, 1.0])
     for name in dir(sweep):

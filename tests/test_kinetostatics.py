@@ -450,7 +450,7 @@ def test_rigid_motion_and_similarity(case, angle, shift, scale):
 
 
 def test_a_slider_on_the_frame_needs_no_inertia():
-    # FORMAT.md's own sample gives its slider a mass and a centre, no inertia: a
+    # the file format's own sample gives its slider a mass and a centre, no inertia: a
     # link that slides on the frame never turns, so its inertia never enters
     mech = assur.catalog.slider_crank()
     links = tuple(

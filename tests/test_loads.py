@@ -136,7 +136,7 @@ def test_a_table_short_of_a_turn_runs_back_to_its_first_value():
 
 
 def test_a_table_over_more_turns_is_read_as_its_first_when_they_repeat():
-    # FORMAT.md sets no limit on the span: a table over two turns that repeats
+    # the file format sets no limit on the span: a table over two turns that repeats
     # itself reads as its first turn (it was refused for a while)
     two = LoadTable(
         "driver", tuple(np.arange(0.0, 721.0, 90.0)), ((-1e3, 0.0) * 4 + (-1e3,),)

@@ -635,7 +635,7 @@ def test_a_known_skeleton_gives_the_full_checks_message(fault, monkeypatch):
     ],
 )
 def test_a_load_or_point_on_the_frame_says_it_is_the_frame(block, entry, why):
-    # it was "unknown link 'ground'", of the name FORMAT.md gives the frame
+    # it was "unknown link 'ground'", of the name the file format gives the frame
     text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
     with pytest.raises(assur.ModelError) as caught:
         assur.loads(text + "\n" + block)
