@@ -23,13 +23,14 @@ from assur._tables import (
 )
 from assur._vec import Array
 from assur.errors import AssurWarning, ModelError
-from assur.model import LoadTable, resolve_point
+from assur.model import LoadTable, Mechanism, resolve_point
 from assur.plan import Plan
 
 __all__ = [
     "LoadPlan",
     "compile_loads",
     "driver_steps",
+    "massless_texts",
     "step_hits",
     "table_reading",
     "table_step",
@@ -90,25 +91,33 @@ def compile_loads(plan: Plan) -> LoadPlan:
     return found  # type: ignore[no-any-return]
 
 
+def massless_texts(mech: Mechanism) -> list[str]:
+    """Return the warnings of links given an inertia but no mass, which is left out.
+
+    A link without a mass is massless (the file format): its inertia would be left
+    out of the analysis without a word. None without a mass or a load anywhere:
+    there is no force analysis to warn of.
+    """
+    if not (mech.loads or any(link.mass for link in mech.links)):
+        return []
+    return [
+        f"links.{link.name}.inertia: {link.inertia:g} kg m^2 on a link with "
+        f"{'no mass' if link.mass is None else 'a mass of 0'} is left out: the link "
+        "is massless; give it a mass > 0 for its inertia to count"
+        for link in mech.links
+        if link.inertia and not link.mass
+    ]
+
+
 def _compile(plan: Plan) -> LoadPlan:
     """Body of :func:`compile_loads`."""
     mech = plan.mechanism
     count = len(plan.bodies)
     mass, inertia, center = np.zeros(count), np.zeros(count), np.zeros((count, 2))
     still = _never_turning(plan)
-    # without a mass or load anywhere there is no force analysis to warn of
-    analysed = bool(mech.loads) or any(link.mass for link in mech.links)
+    for msg in massless_texts(mech):
+        warnings.warn(msg, AssurWarning, stacklevel=2)
     for link in mech.links:
-        if link.inertia and not link.mass and analysed:
-            # a link without a mass is massless (the file format): its inertia was left
-            # out of the analysis without a word
-            warnings.warn(
-                f"links.{link.name}.inertia: {link.inertia:g} kg m^2 on a link with "
-                f"{'no mass' if link.mass is None else 'a mass of 0'} is left out: "
-                "the link is massless; give it a mass > 0 for its inertia to count",
-                AssurWarning,
-                stacklevel=2,
-            )
         if not link.mass:
             continue
         for key in ("center", "inertia"):

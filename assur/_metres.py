@@ -9,7 +9,7 @@ from typing import Any
 
 from assur.errors import AssurWarning
 
-__all__ = ["LARGE", "metres"]
+__all__ = ["LARGE", "metres", "metres_text"]
 
 LARGE = 50.0
 """Size of a mechanism (m) above which its lengths are likely millimetres: a drawing's
@@ -23,12 +23,19 @@ def metres(size: float) -> None:
     74 mm crank and written with a crank of 74 has speeds in km/s at 200 rad/s, and
     inertia forces a thousand times too large, without a word otherwise.
     """
-    if size > LARGE:
-        msg = (
-            f"joints: the mechanism is {size:.4g} m across; lengths are in metres "
-            "(SI units): if they are millimetres, divide them by 1000"
-        )
+    msg = metres_text(size)
+    if msg is not None:
         warnings.warn(msg, AssurWarning, stacklevel=_outside())
+
+
+def metres_text(size: float) -> str | None:
+    """Return the warning :func:`metres` gives of a size (m), or None."""
+    if not size > LARGE:
+        return None
+    return (
+        f"joints: the mechanism is {size:.4g} m across; lengths are in metres "
+        "(SI units): if they are millimetres, divide them by 1000"
+    )
 
 
 def _outside() -> int:

@@ -1,25 +1,29 @@
-"""A study's variants solved together in stacks, once built.
+"""A study's variants solved together in stacks, once built, or each alone.
 
 The template of a form, compiled once; the variants it does not serve, compiled one
 by one and stacked by signature (``assur._stack``); their summaries put in their
-rows. The C heap kept between batches.
+rows, with the warnings a separate call gives; the variants left, analysed alone.
+The C heap kept between batches.
 """
 
 from __future__ import annotations
 
+import warnings
 from typing import Any
 
 import numpy as np
 
 from assur._batch import stacked, summaries
 from assur._drive import positions
-from assur._loads import compile_loads
+from assur._loads import compile_loads, massless_texts
+from assur._metres import metres_text
 from assur._stack import Unstackable, signature
 from assur._variants import Template, template
 from assur._vec import Array
-from assur.errors import AssurError
+from assur.analysis import forces
+from assur.errors import AssurError, AssurWarning
 from assur.model import Mechanism
-from assur.plan import Plan, compile_plan
+from assur.plan import Plan, compile_plan, drawn_size
 
 
 def _template(
@@ -130,3 +134,71 @@ def _keep_the_heap() -> None:
     """
     block = np.empty(HEAP)
     del block
+
+
+def told(
+    rows: list[dict[str, Any]],
+    start: int,
+    built: list[tuple[int, Mechanism]],
+    batched: set[int],
+) -> None:
+    """Put in each row the warnings compiling its variant gives a separate call.
+
+    A plan is compiled once per mechanism (cached) and a template once per form:
+    their warnings reached the first call alone, or none of the variants batched
+    against it. Said again here, first in each row, as a separate call says them.
+    A variant batched against a template is not large enough to be warned of its
+    size (``compile_many`` compiles those on their own).
+    """
+    for i, mech in built:
+        notes = massless_texts(mech)
+        if i not in batched:
+            try:
+                size = metres_text(drawn_size(mech))
+            except AssurError:  # its error is in the row
+                size = None
+            notes = ([size] if size else []) + notes
+        row = rows[i - start]
+        said = [s for s in row["warning"].split(" | ") if s]
+        notes = [" ".join(s.split()) for s in notes]
+        row["warning"] = " | ".join(notes + [s for s in said if s not in notes])
+
+
+def _alone(mech: Mechanism, angles: Array, long: bool) -> dict[str, Any]:
+    """Return one variant's summary from a call of its own, or why it failed.
+
+    A ``long`` sweep (longer than a batch) is summarised slice by slice, as the
+    command line does: in bounded memory, with the numbers, errors and warnings of
+    one call.
+    """
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            if long:
+                out: dict[str, Any] = _summed(mech, angles)
+            else:
+                out = dict(forces(mech, angles).summary())
+        except AssurError as err:
+            out = {"error": _line(err)}
+    said = [str(w.message) for w in caught if issubclass(w.category, AssurWarning)]
+    if said:
+        out["warning"] = " | ".join(" ".join(s.split()) for s in said)
+    return out
+
+
+def _summed(mech: Mechanism, angles: Array) -> dict[str, Any]:
+    """Return the summary of a long sweep, computed a slice of positions at a time."""
+    from assur._skipped import Skipped
+    from assur._sliced import slices
+    from assur.summary import Summary
+
+    summary = Summary()
+    for part in slices(mech, angles, True, False, Skipped()):
+        summary.add(part.table)
+    return dict(summary.result())
+
+
+def _line(err: BaseException) -> str:
+    """Return an error as one line: its class and its message."""
+    said = " ".join(str(err).split())
+    return f"{type(err).__name__}: {said}" if said else type(err).__name__

@@ -34,6 +34,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from assur._loads import LoadPlan, compile_loads
+from assur._metres import LARGE
 from assur._points import PointSpec
 from assur._stack import repeat, signature
 from assur._variant_checks import MARGIN, _branch, _diameters, _small_links
@@ -311,6 +312,10 @@ def compile_many(model: Template, rows: Array) -> tuple[Compiled, Mask]:
     far = np.max(np.abs(np.stack(list(file_at.values()), axis=1)), axis=(1, 2))
     doubtful |= ~(far * MARGIN <= FAR * scale)
     doubtful |= _small_links(t, core, scale)
+    # a variant whose size may be warned of (lengths in millimetres) is compiled on
+    # its own, so that the study says so in its row as a separate call does
+    drawn = [two(key) for key in col if key[0] in ("joint", "point", "center")]
+    doubtful |= ~(_diameters(np.stack(drawn, axis=1)) * MARGIN <= LARGE)
     offsets = {
         p.name: (
             core[p.name] - origins[:, t.index[p.links[0]]],

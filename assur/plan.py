@@ -18,6 +18,7 @@ import numpy as np
 
 from assur._metres import metres
 from assur._structure import Group, Topology, decompose
+from assur._topology import topology
 from assur._vec import Array
 from assur.errors import ModelError
 from assur.groups import compile_group
@@ -27,7 +28,7 @@ from assur.groups._protocol import CompileContext, GroupSolver
 from assur.groups.driver import DriverPlan
 from assur.model import GROUND, Mechanism, mechanism_of, resolve_point
 
-__all__ = ["Plan", "cached_plan", "compile_plan", "plan_of"]
+__all__ = ["Plan", "cached_plan", "compile_plan", "drawn_size", "plan_of"]
 
 
 @dataclass(frozen=True, slots=True, eq=False)
@@ -205,6 +206,14 @@ def compile_plan(mech: Mechanism) -> Plan:
 FAR = 1e7
 """Farthest a mechanism may lie from the file's origin, in mechanism sizes: its
 coordinates then keep nine significant digits of its shape."""
+
+
+def drawn_size(mech: Mechanism) -> float:
+    """Return the size of ``mech`` as its file draws it (m): the diameter of its points.
+
+    The size :func:`compile_plan` reads for its warning of lengths in millimetres.
+    """
+    return _diameter(np.array(_drawn(mech, topology(mech))))
 
 
 def _drawn(mech: Mechanism, topo: Topology) -> list[Array]:

@@ -39,11 +39,18 @@ from assur._study_inputs import (
     _takes,
     _variant,
 )
-from assur._study_stacks import _compiled, _fill, _keep_the_heap, _template
+from assur._study_stacks import (
+    _alone,
+    _compiled,
+    _fill,
+    _keep_the_heap,
+    _line,
+    _template,
+    told,
+)
 from assur._study_tables import _chosen, _known, _names, _table, ordered
 from assur._variants import Template, compile_many, form, numbers
 from assur._vec import Array
-from assur.analysis import forces
 from assur.errors import AssurError, AssurWarning
 from assur.model import Mechanism
 
@@ -306,6 +313,8 @@ def _block(
     """
     rows: list[dict[str, Any]] = []
     forms: dict[Any, list[tuple[int, Mechanism]]] = {}
+    built: list[tuple[int, Mechanism]] = []
+    batched: set[int] = set()
     for i in block:
         p = _variant(parameters, i)
         rows.append({**p, "error": "", "warning": ""})
@@ -315,11 +324,36 @@ def _block(
             rows[-1]["error"] = _line(err)
             continue
         forms.setdefault(form(mech), []).append((i, mech))
-    alone: list[tuple[int, Mechanism]] = []
-    rest: list[tuple[int, Mechanism]] = []
+        built.append((i, mech))
     if angles.shape[0] > CHUNK:
         # a sweep longer than a batch: each variant summarised slice by slice
         forms = {None: [x for members in forms.values() for x in members]}
+    # compilations' warnings are said in each row they concern (told), not here
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", AssurWarning)
+        alone = _batched(rows, block.start, forms, templates, angles, size, batched)
+    for i, mech in alone:
+        rows[i - block.start].update(_alone(mech, angles, angles.shape[0] > CHUNK))
+    told(rows, block.start, built, batched)
+    return rows
+
+
+def _batched(
+    rows: list[dict[str, Any]],
+    offset: int,
+    forms: dict[Any, list[tuple[int, Mechanism]]],
+    templates: dict[Any, Template | None],
+    angles: Array,
+    size: int,
+    batched: set[int],
+) -> list[tuple[int, Mechanism]]:
+    """Solve the variants ``forms`` in batches; return those to be analysed alone.
+
+    ``rows`` holds the variants from number ``offset`` on; those summarised against
+    a template are added to ``batched``.
+    """
+    alone: list[tuple[int, Mechanism]] = []
+    rest: list[tuple[int, Mechanism]] = []
     for key, members in forms.items():
         if key is None or (key not in templates and len(members) == 1):
             # a form of one variant (one crank speed of a study over speeds, say)
@@ -345,52 +379,13 @@ def _block(
             continue
         # the change-point screen of every batch at once (its cost is mostly per call)
         near = near_change_points(compiled.screen(good), model.plan, given)
-        for start in range(0, good.size, size):
-            chosen = good[start : start + size]
-            many = compiled.batch(chosen, angles.shape[0])
-            part = near[start : start + size]
+        for first in range(0, good.size, size):
+            chosen = [members[i] for i in good[first : first + size]]
+            many = compiled.batch(good[first : first + size], angles.shape[0])
+            part = near[first : first + size]
             found = summaries(many, model.plan, given, part)
-            alone += _fill(rows, block.start, [members[i] for i in chosen], found)
-    alone += _compiled(rows, block.start, rest, angles, size)
-    for i, mech in alone:
-        rows[i - block.start].update(_alone(mech, angles))
-    return rows
-
-
-def _alone(mech: Mechanism, angles: Array) -> dict[str, Any]:
-    """Return one variant's summary from a call of its own, or why it failed.
-
-    A sweep longer than a batch is summarised slice by slice, as the command line
-    does: in bounded memory, with the numbers, errors and warnings of one call.
-    """
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        try:
-            if angles.shape[0] > CHUNK:
-                out: dict[str, Any] = _summed(mech, angles)
-            else:
-                out = dict(forces(mech, angles).summary())
-        except AssurError as err:
-            out = {"error": _line(err)}
-    said = [str(w.message) for w in caught if issubclass(w.category, AssurWarning)]
-    if said:
-        out["warning"] = " | ".join(" ".join(s.split()) for s in said)
-    return out
-
-
-def _summed(mech: Mechanism, angles: Array) -> dict[str, Any]:
-    """Return the summary of a long sweep, computed a slice of positions at a time."""
-    from assur._skipped import Skipped
-    from assur._sliced import slices
-    from assur.summary import Summary
-
-    summary = Summary()
-    for part in slices(mech, angles, True, False, Skipped()):
-        summary.add(part.table)
-    return dict(summary.result())
-
-
-def _line(err: BaseException) -> str:
-    """Return an error as one line: its class and its message."""
-    said = " ".join(str(err).split())
-    return f"{type(err).__name__}: {said}" if said else type(err).__name__
+            left = _fill(rows, offset, chosen, found)
+            batched.update(i for i, _ in chosen)
+            batched.difference_update(i for i, _ in left)
+            alone += left
+    return alone + _compiled(rows, offset, rest, angles, size)

@@ -206,7 +206,7 @@ def test_angles_are_checked():
 def test_a_sweep_longer_than_a_batch_is_summarised_slice_by_slice(monkeypatch):
     # each variant's sweep was solved whole, every variant of a batch at once:
     # memory grew with the positions (530 MB per million per variant)
-    from assur import _sliced, analysis, study
+    from assur import _sliced, _study_stacks, analysis, study
 
     monkeypatch.setattr(study, "CHUNK", 500)
     monkeypatch.setattr(_sliced, "CHUNK", 400)
@@ -218,7 +218,7 @@ def test_a_sweep_longer_than_a_batch_is_summarised_slice_by_slice(monkeypatch):
         return forces(mech, angles, *args, **kwargs)
 
     monkeypatch.setattr(analysis, "forces", counted)
-    monkeypatch.setattr(study, "forces", counted)
+    monkeypatch.setattr(_study_stacks, "forces", counted)
     angles = np.linspace(0.0, 360.0, 1000, endpoint=False)
     parameters = {"crank": CRANKS, "rod": RODS}
     found = assur.sweep(catalog.slider_crank, parameters, angles).summary
@@ -812,3 +812,54 @@ def test_a_variant_with_one_change_point_a_turn_is_solved_as_alone(reference, an
     warned = study.summary["warning"].tolist()
     assert "(a change point)" in warned[0]
     assert not warned[1]
+
+
+def said_alone(mech: assur.Mechanism, angles) -> str:
+    """The warnings a separate call gives in a fresh process (no plan cached)."""
+    from assur.plan import cached_plan
+
+    cached_plan.cache_clear()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assur.forces(mech, angles)
+    return " | ".join(" ".join(str(w.message).split()) for w in caught)
+
+
+def massless_rod(crank: float) -> assur.Mechanism:
+    """A slider-crank whose rod keeps its inertia but has a mass of 0 (a warning)."""
+    mech = catalog.slider_crank(crank=crank)
+    links = tuple(
+        dataclasses.replace(x, mass=0.0) if x.name == "rod" else x for x in mech.links
+    )
+    return dataclasses.replace(mech, links=links)
+
+
+@pytest.mark.parametrize(
+    ("factory", "parameters"),
+    [
+        # in millimetres: 245 m across, then 0.25 m, then 259 m
+        (
+            lambda crank, rod: catalog.slider_crank(crank=crank, rod=rod, omega=2.0),
+            {"crank": [74.0, 0.05, 80.0], "rod": [200.0, 0.2, 210.0]},
+        ),
+        # a batch of one form against its template, every row warned
+        (massless_rod, {"crank": [0.05, 0.06, 0.07, 0.065]}),
+    ],
+)
+def test_a_compilation_s_warnings_are_in_every_row_they_concern(factory, parameters):
+    # they reached the first variant's call alone (the plan and the template are
+    # compiled once): run twice, the second run's rows were empty, and a batch's
+    # template printed its warning to the console, in no row
+    angles = np.arange(0.0, 360.0, 10.0)
+    names = list(parameters)
+    expected = [
+        said_alone(factory(**dict(zip(names, values, strict=True))), angles)
+        for values in zip(*parameters.values(), strict=True)
+    ]
+    assert any(expected)
+    for _ in range(2):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            found = assur.sweep(factory, parameters, angles).summary
+        assert found["warning"].tolist() == expected
+        assert not caught  # said in the rows, not on the console
