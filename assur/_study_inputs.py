@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._text import counted
 from assur._vec import Array, integer
 from assur.errors import UsageError
 from assur.model import Mechanism
@@ -100,8 +101,15 @@ RESERVED = (
 """Names of the summary's and the tables' own columns and dimensions."""
 
 
-def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
-    """Check the parameters; return them as read-only float arrays."""
+def _parameters(parameters: Any) -> dict[str, Array]:
+    """Check the parameters; return them as read-only float arrays.
+
+    A pandas DataFrame gives its columns (a table of samples, one row a variant);
+    pandas Series must share one index, for their values are paired by position.
+    """
+    if _pandas(parameters, "DataFrame"):
+        frame: Any = parameters
+        parameters = {str(name): frame[name] for name in frame.columns}
     if not isinstance(parameters, Mapping) or not parameters:
         msg = (
             "parameters: expected a mapping of names to 1-D arrays (one value per "
@@ -125,7 +133,10 @@ def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
         except (TypeError, ValueError) as err:
             msg = f"parameters.{name}: expected a 1-D array of real numbers"
             raise UsageError(msg) from err
-        if arr.dtype.kind not in "biuf" or arr.ndim != 1 or not arr.size:
+        if arr.dtype.kind in "biuf" and arr.shape == (0,):
+            msg = f"parameters.{name}: no values; expected one value per variant"
+            raise UsageError(msg)
+        if arr.dtype.kind not in "biuf" or arr.ndim != 1:
             what = f"shape {arr.shape}" if arr.dtype.kind in "biuf" else str(arr.dtype)
             msg = f"parameters.{name}: expected a 1-D array of real numbers, got {what}"
             raise UsageError(msg)
@@ -140,7 +151,33 @@ def _parameters(parameters: Mapping[str, Any]) -> dict[str, Array]:
             f"got {told}"
         )
         raise UsageError(msg)
+    _one_index(parameters)
     return out
+
+
+def _pandas(value: Any, kind: str) -> bool:
+    """Whether ``value`` is a pandas object of class ``kind`` (pandas not imported)."""
+    return type(value).__name__ == kind and type(value).__module__.startswith("pandas")
+
+
+def _one_index(parameters: Mapping[str, Any]) -> None:
+    """Refuse pandas Series of different indexes: a study pairs values by position.
+
+    Two Series of one sample, one of them sorted, would pair the wrong values
+    without a word.
+    """
+    indexed = {n: v.index for n, v in parameters.items() if _pandas(v, "Series")}
+    if len(indexed) < 2:
+        return
+    first, *rest = indexed.items()
+    odd = [name for name, index in rest if not index.equals(first[1])]
+    if odd:
+        msg = (
+            f"parameters: pandas Series {first[0]!r} and {odd[0]!r} have different "
+            "indexes, and a study pairs their values by position, not by label; "
+            "expected one index (pandas.DataFrame({...}) aligns them) or arrays"
+        )
+        raise UsageError(msg)
 
 
 def _partitions(partitions: Any) -> None:
@@ -152,6 +189,30 @@ def _partitions(partitions: Any) -> None:
     if partitions is not None and (integer(partitions) or 0) < 1:
         msg = f"partitions: expected a positive number, got {partitions!r}"
         raise UsageError(msg)
+
+
+def _fitting(factory: Factory, parameters: dict[str, Array], angles: Array) -> None:
+    """Refuse driver positions whose shape does not fit the first variant's drivers.
+
+    The positions are every variant's: a shape that does not fit made each variant
+    fail alone, thousands of rows of one error after a study's whole run. A first
+    variant that cannot be built is left to the study, which records why.
+    """
+    p = _variant(parameters, 0)
+    try:
+        drivers = len(_built(factory, p).drivers)
+    except Exception:  # the factory's own error: the study's row says it
+        return
+    if drivers == 1 and (angles.ndim == 1 or angles.shape[1] == 1):
+        return
+    if angles.ndim == 2 and angles.shape[1] == drivers:
+        return
+    shape = "(n,) or (n, 1)" if drivers == 1 else f"(n, {drivers})"
+    msg = (
+        f"angles: shape {angles.shape} for variants of {counted(drivers, 'driver')} "
+        f"(the first: {_shown(p)}); expected {shape}, the same for every variant"
+    )
+    raise UsageError(msg)
 
 
 def _angles(angles: Any) -> Array:

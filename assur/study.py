@@ -33,6 +33,7 @@ from assur._study_inputs import (
     Factory,
     _angles,
     _built,
+    _fitting,
     _optional,
     _parameters,
     _partitions,
@@ -181,8 +182,10 @@ def sweep(
         name (the workers must import that module), one defined in a script or a
         notebook (a lambda too) by value; whatever it calls must be importable on
         the workers.
-    parameters : mapping of str to array_like
-        Each parameter's values, 1-D arrays of equal length: one variant per index.
+    parameters : mapping of str to array_like, or pandas.DataFrame
+        Each parameter's values, 1-D arrays of equal length: one variant per index
+        (paired by position: pandas Series of different indexes are refused). A
+        DataFrame gives its columns, one row a variant.
     angles : array_like
         Driver positions of every variant's sweep, deg (m for a slider); shape (n,)
         or (n, drivers).
@@ -236,6 +239,7 @@ def sweep(
     _takes(factory, values)
     given = _angles(angles)
     _partitions(partitions)
+    _fitting(factory, values, given)
     _optional("pandas")
     count = len(next(iter(values.values())))
     with counted("variants", count, progress) as bar:

@@ -9,6 +9,7 @@ error a separate call raises. The same through a dask LocalCluster of two proces
 from __future__ import annotations
 
 import dataclasses
+import re
 import warnings
 from pathlib import Path
 
@@ -18,7 +19,7 @@ import pytest
 import assur
 from assur import catalog
 
-from .conftest import local_client
+from .conftest import EXAMPLES, local_client
 
 pytest.importorskip("pandas")
 
@@ -162,7 +163,8 @@ def test_tables_give_every_column_of_chosen_variants(slider_study):
         ([0.2], "parameters: expected a mapping of names to 1-D arrays"),
         ({"rod": [[0.2]]}, r"parameters.rod: expected a 1-D array .* shape \(1, 1\)"),
         ({"rod": ["a"]}, "parameters.rod: expected a 1-D array of real numbers, got"),
-        ({"rod": []}, r"parameters.rod: expected a 1-D array .* shape \(0,\)"),
+        # an empty array is 1-D: what it lacks is a variant
+        ({"rod": []}, r"^parameters.rod: no values; expected one value per variant$"),
         (
             {"rod": [0.2, 0.3], "crank": [0.07]},
             "parameters: expected arrays of one length .* got rod 2, crank 1",
@@ -179,6 +181,21 @@ def test_tables_give_every_column_of_chosen_variants(slider_study):
 def test_parameters_are_checked(parameters, message):
     with pytest.raises(assur.UsageError, match=message):
         assur.sweep(catalog.slider_crank, parameters, ANGLES)
+
+
+def test_pandas_samples_are_paired_by_position_or_refused():
+    pd = pytest.importorskip("pandas")
+    samples = pd.DataFrame({"crank": [0.07, 0.075], "rod": [0.2, 0.21]}, index=[10, 11])
+    angles = np.arange(0.0, 360.0, 30.0)
+    # a DataFrame of samples: its columns, one row a variant
+    found = assur.sweep(catalog.slider_crank, samples, angles).summary
+    assert found[["crank", "rod"]].to_numpy().tolist() == [[0.07, 0.2], [0.075, 0.21]]
+    alike = assur.sweep(catalog.slider_crank, dict(samples.items()), angles).summary
+    assert alike.equals(found)
+    # one Series reordered: crank 0.075 went with rod 0.2, without a word
+    reordered = {"crank": samples["crank"].iloc[::-1], "rod": samples["rod"]}
+    with pytest.raises(assur.UsageError, match=r"^parameters: pandas Series 'crank' "):
+        assur.sweep(catalog.slider_crank, reordered, angles)
 
 
 def test_the_refused_names_are_documented():
@@ -863,3 +880,29 @@ def test_a_compilation_s_warnings_are_in_every_row_they_concern(factory, paramet
             found = assur.sweep(factory, parameters, angles).summary
         assert found["warning"].tolist() == expected
         assert not caught  # said in the rows, not on the console
+
+
+@pytest.mark.parametrize(
+    ("factory", "angles", "expected"),
+    [
+        (catalog.slider_crank, np.zeros((36, 2)), "(36, 2) for variants of 1 driver"),
+        (
+            lambda crank: assur.load(EXAMPLES / "five_bar_two_cranks.toml"),
+            np.arange(36.0),
+            "(36,) for variants of 2 drivers",
+        ),
+    ],
+)
+def test_positions_that_fit_no_variant_are_refused_before_the_run(
+    factory, angles, expected
+):
+    # each of the 2000 variants failed alone with one error, after the whole run
+    built = []
+
+    def counting(crank: float) -> assur.Mechanism:
+        built.append(crank)
+        return factory(crank=crank)
+
+    with pytest.raises(assur.UsageError, match=re.escape(expected)):
+        assur.sweep(counting, {"crank": np.full(2000, 0.074)}, angles)
+    assert len(built) == 1
