@@ -11,7 +11,8 @@ from typing import Any
 
 import numpy as np
 
-from assur._text import number_text
+from assur._startup_turns import PERIODIC_RTOL
+from assur._text import crank_angle_text, number_text
 
 
 def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
@@ -23,6 +24,7 @@ def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
             "exact": sizing.exact,
             "wittenbauer": sizing.wittenbauer,
             "energy_swing": sizing.energy_swing,
+            "merzalov": sizing.merzalov,
         }
     if run is not None:
         data["startup"] = _startup_data(run)
@@ -65,6 +67,12 @@ def _motor_note(motor: float, result: Any) -> str:
         note += ", counter-clockwise positive"
     if motor * result.omega < 0:
         note += "; it brakes: the loads drive the crank"
+    found = result.mechanism.motor
+    if found is not None and found.no_load_speed is not None:
+        # the steady state is the contract's: a constant torque at the nominal
+        # speed; the file's motor, whose torque falls with speed, runs the start-up
+        note += "; the steady state's, at the nominal speed; the file's [motor] "
+        note += "drives the start-up"
     return note
 
 
@@ -74,18 +82,18 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
     kgm2 = "kg m^2"
     turning = " (clockwise)" if result.omega < 0 else ""
     motor = _motor_shown(result)
-    lines = [
+    lines: list[tuple[str, str]] = [
         ("nominal crank speed", f"{result.omega:.6g} rad/s{turning}"),
         ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
         ("motor torque", f"{number_text(motor)} N m ({_motor_note(motor, result)})"),
         ("coefficient of speed fluctuation", f"delta = {_delta(result.delta)}"),
         (
             "largest speed",
-            f"{result.speed_max:.6g} rad/s at {result.angle_max:.6g} deg",
+            f"{result.speed_max:.6g} rad/s at {crank_angle_text(result.angle_max)}",
         ),
         (
             "smallest speed",
-            f"{result.speed_min:.6g} rad/s at {result.angle_min:.6g} deg",
+            f"{result.speed_min:.6g} rad/s at {crank_angle_text(result.angle_min)}",
         ),
         ("energy swing", f"{result.energy_swing:.6g} J"),
         ("kinetic energy at the reference pose", f"{result.energy:.6g} J"),
@@ -95,6 +103,9 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
             f"{result.tolerance:.1g})",
         ),
     ]
+    if not result.speed_max > result.speed_min:
+        # nothing varies over the turn: no place of the largest or smallest speed
+        lines[4:6] = [("crank speed", f"constant, {abs(result.omega):.6g} rad/s")]
     if sizing is not None:
         gaps = {k: f"{100 * v:+.3g} %" for k, v in sizing.differences().items()}
         lines[1] = (
@@ -103,7 +114,11 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
         )
         # the classical estimates drop terms of the order of the mechanism's own
         # fluctuation: close to it they fail, even below zero
-        names = {"wittenbauer": "Wittenbauer", "energy_swing": "energy swing"}
+        names = {
+            "wittenbauer": "Wittenbauer",
+            "merzalov": "Merzalov",
+            "energy_swing": "energy swing",
+        }
         good = [
             f"{label} {getattr(sizing, k):.6g} ({gaps[k]})"
             for k, label in names.items()
@@ -117,16 +132,20 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
             )
         lines.insert(2, ("classical estimates", ", ".join(good)))
     if run is not None:
-        lines += _startup_lines(run)
+        lines += _startup_lines(run, result)
     return _header(result.mechanism, lines)
 
 
-def _startup_lines(run: Any) -> list[tuple[str, str]]:
-    """Return the figures of a start-up, as (label, value) lines."""
+def _startup_lines(run: Any, result: Any = None) -> list[tuple[str, str]]:
+    """Return the figures of a start-up, as (label, value) lines.
+
+    A periodic motion whose mean speed is not the steady state's nominal one (a
+    motor whose torque falls with speed) is set against it.
+    """
     # the crank's turns until it settles, not those integrated to tell it has
     turned = abs(float(np.interp(run.settle_time, run.time, run.angle)) - run.angle[0])
     middle = 0.5 * (run.speed_max + run.speed_min)
-    return [
+    lines = [
         (
             "start-up",
             f"settles in {run.settle_time:.6g} s ({turned / 360.0:.3g} turns; "
@@ -142,10 +161,34 @@ def _startup_lines(run: Any) -> list[tuple[str, str]]:
         (
             "",
             # the steady state's definition: over the mean of the extreme speeds
-            f"delta = {_delta(run.delta)} (max - min over their mean, "
+            f"delta = {_run_delta(run.delta)} (max - min over their mean, "
             f"{middle:.6g} rad/s)",
         ),
     ]
+    if result is None:  # the start-up alone: no steady state to set it against
+        return lines
+    gap = abs(run.mean_speed) / abs(result.omega) - 1.0
+    if abs(gap) > 0.005:
+        lines.append(
+            (
+                "",
+                f"the mean speed is {100.0 * gap:+.3g} % from the nominal "
+                f"{abs(result.omega):.6g} rad/s, at which the steady state above "
+                "and its delta hold",
+            )
+        )
+    return lines
+
+
+def _run_delta(value: float) -> str:
+    """Return a periodic motion's delta: none where the integration cannot tell it.
+
+    The periodic speed is found to ``PERIODIC_RTOL`` of itself: a fluctuation ten
+    times smaller than that is the integration's, not the machine's.
+    """
+    if value < 10.0 * PERIODIC_RTOL:
+        return f"{value:.2g}, none within the periodic speed's tolerance"
+    return _delta(value)
 
 
 def _delta(value: float) -> str:

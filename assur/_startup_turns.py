@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._startup_checks import MOST_TURNS
-from assur._text import counted
+from assur._text import counted, crank_angle_text
 from assur._vec import Array
 from assur.dynamics_reduced import Reduced
 from assur.errors import ModelError
@@ -53,16 +53,16 @@ def _check_turned(sol: Any, model: Reduced, curves: Curves, motor: Motor) -> Non
         phi, w, when = float(sol.y[0, -1]), float(sol.y[1, -1]), float(sol.t[-1])
         msg = (
             f"startup: the crank creeps: {when - float(sol.t[0]):.6g} s after its "
-            f"last turn it has not made another (at crank angle "
-            f"{math.degrees(phi):.6g} deg, {w:.6g} rad/s); expected a motor or "
-            "flywheel that turns it at a pace"
+            "last turn it has not made another (at crank angle "
+            f"{crank_angle_text(math.degrees(phi))}, {w:.6g} rad/s); expected a "
+            "motor or flywheel that turns it at a pace"
         )
         raise ModelError(msg)
     phi, when = float(sol.y_events[1][0][0]), float(sol.t_events[1][0])
     _, _, load = curves(phi)
     where = math.degrees(phi)
     msg = (
-        f"startup: the crank stalls at crank angle {where:.6g} deg (at t = "
+        f"startup: the crank stalls at crank angle {crank_angle_text(where)} (at t = "
         f"{when:.6g} s): the motor cannot carry it past its peak load (load torque "
         f"{load:.6g} N m there, motor torque at standstill {motor.torque:.6g} N m)"
     )

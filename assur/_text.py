@@ -10,11 +10,12 @@ from __future__ import annotations
 import datetime
 import difflib
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
 __all__ = [
     "ROMAN",
+    "crank_angle_text",
     "describe",
     "fitting",
     "key_text",
@@ -50,6 +51,27 @@ def number_text(value: float, spec: str = ".6g") -> str:
     ('0', '-1.5', '     2')
     """
     return format(value + 0.0, spec)  # -0.0 + 0.0 is +0.0
+
+
+def crank_angle_text(
+    deg: float, unit: str = " deg", shown: Callable[[float], str] = number_text
+) -> str:
+    """Return a crank angle (deg), one past a turn with its place on the dial.
+
+    The dynamic model counts angles within the turn from the reference pose: 364.72
+    deg is 4.72 deg on the crank's dial, which is said beside it.
+
+    Examples
+    --------
+    >>> crank_angle_text(364.72), crank_angle_text(-30.0), crank_angle_text(45.0)
+    ('364.72 deg (= 4.72 deg)', '-30 deg (= 330 deg)', '45 deg')
+
+    ``unit`` follows each number, written by ``shown`` (the HTML report's "°").
+    """
+    text = f"{shown(deg)}{unit}"
+    if 0.0 <= deg < 360.0 or not math.isfinite(deg):
+        return text
+    return f"{text} (= {shown(deg % 360.0)}{unit})"
 
 
 def counted(count: int, noun: str, plural: str | None = None) -> str:

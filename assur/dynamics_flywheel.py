@@ -2,8 +2,9 @@
 
 :func:`flywheel` solves the steady state of :mod:`assur.dynamics_steady` for the
 inertia that gives the asked ``delta`` exactly (Brent's method). :func:`flywheel_sizing`
-sets it beside the two classical estimates: Wittenbauer's energy-mass diagram with its
-usual tangent slopes ``w^2 (1 +- delta) / 2``, and the maximum energy swing
+sets it beside three classical estimates: Wittenbauer's energy-mass diagram with its
+usual tangent slopes ``w^2 (1 +- delta) / 2``, Merzalov's method (the links' kinetic
+energy at the mean speed taken from the work), and the maximum energy swing
 ``dE_max / (w^2 delta)`` that neglects the mechanism's own inertia.
 """
 
@@ -16,17 +17,20 @@ from typing import Any
 import numpy as np
 
 from assur._dynamic_checks import check_dynamic
+from assur._loads import compile_loads
 from assur._vec import real
 from assur.dynamics_reduced import Reduced, reduce
 from assur.dynamics_steady import steady_state
 from assur.errors import ConvergenceError, ModelError, UsageError
 from assur.model import Mechanism
+from assur.plan import plan_of
 
 __all__ = [
     "FlywheelSizing",
     "delta_in_range",
     "flywheel",
     "flywheel_sizing",
+    "merzalov",
     "wittenbauer",
 ]
 
@@ -43,7 +47,7 @@ DELTA_CHECK = 1e-6
 
 @dataclass(frozen=True, slots=True)
 class FlywheelSizing:
-    """A flywheel for a coefficient of speed fluctuation, three ways.
+    """A flywheel for a coefficient of speed fluctuation, four ways.
 
     Attributes
     ----------
@@ -59,6 +63,10 @@ class FlywheelSizing:
     energy_swing : float
         The estimate ``dE_max / (w^2 delta)`` from the largest swing of the work of
         the loads and the motor, the mechanism's own inertia neglected, kg m^2.
+    merzalov : float
+        Merzalov's estimate: the swing of the work less the links' kinetic energy
+        at the nominal speed, over ``w^2 delta``, less the crank's own inertia,
+        kg m^2 (see :func:`merzalov`).
     """
 
     delta: float
@@ -66,12 +74,14 @@ class FlywheelSizing:
     exact: float
     wittenbauer: float
     energy_swing: float
+    merzalov: float
 
     def differences(self) -> dict[str, float]:
         """Return how far each estimate is from the exact inertia, relative."""
         return {
             "wittenbauer": (self.wittenbauer - self.exact) / self.exact,
             "energy_swing": (self.energy_swing - self.exact) / self.exact,
+            "merzalov": (self.merzalov - self.exact) / self.exact,
         }
 
 
@@ -117,7 +127,7 @@ def flywheel(mechanism: Mechanism, delta: float) -> float:
 
 
 def flywheel_sizing(mechanism: Mechanism, delta: float) -> FlywheelSizing:
-    r"""Return the exact flywheel and the two classical estimates beside it.
+    r"""Return the exact flywheel and the three classical estimates beside it.
 
     Parameters
     ----------
@@ -130,8 +140,8 @@ def flywheel_sizing(mechanism: Mechanism, delta: float) -> FlywheelSizing:
     Returns
     -------
     FlywheelSizing
-        The inertia :func:`flywheel` returns (``exact``), Wittenbauer's estimate
-        and the energy-swing estimate, kg m^2 each.
+        The inertia :func:`flywheel` returns (``exact``), Wittenbauer's estimate,
+        the energy-swing estimate and Merzalov's, kg m^2 each.
 
     Raises
     ------
@@ -164,7 +174,40 @@ def flywheel_sizing(mechanism: Mechanism, delta: float) -> FlywheelSizing:
         exact,
         wittenbauer(model, w2 * (1.0 + delta) / 2.0, w2 * (1.0 - delta) / 2.0),
         swing / (w2 * delta),
+        merzalov(model, omega, delta, crank_inertia(mechanism)),
     )
+
+
+def merzalov(model: Reduced, omega: float, delta: float, own: float) -> float:
+    r"""Return Merzalov's flywheel (kg m^2): the links' energy at the mean speed.
+
+    The kinetic energy of the links whose reduced inertia varies is taken at the
+    nominal speed, :math:`T_{II} = (J - J_c)\,\omega^2/2`, and the rest of the work
+    goes to the parts of constant inertia :math:`J_I`, the flywheel and the crank's
+    own ``own`` = :math:`J_c`:
+    :math:`J_I = \max(W - T_{II}) - \min(W - T_{II})` over :math:`\omega^2\delta`,
+    and the flywheel is :math:`J_I - J_c`. The speed in :math:`T_{II}` is the
+    nominal one, not the real: the estimate is off by terms of order
+    :math:`\delta` times the links' share of the energy's swing.
+    """
+    w2 = omega * omega
+    # the constant part's own energy shifts every value alike: the swing keeps it out
+    kept = model.work - 0.5 * w2 * model.inertia
+    return float(np.max(kept) - np.min(kept)) / (w2 * delta) - own
+
+
+def crank_inertia(mechanism: Mechanism) -> float:
+    """Return the driving link's own inertia about its pivot, kg m^2.
+
+    ``J_G + m |OG|^2`` of the crank, constant over the turn: the part of the
+    reduced inertia that a flywheel on the crank adds to.
+    """
+    plan = plan_of(mechanism)
+    loads = compile_loads(plan)
+    b = plan.drivers[0].body
+    # the crank's origin is its pivot (the driver's pair)
+    ox, oy = loads.center[b]
+    return float(loads.inertia[b] + loads.mass[b] * (ox * ox + oy * oy))
 
 
 def wittenbauer(model: Reduced, upper: float, lower: float) -> float:

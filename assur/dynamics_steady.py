@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._text import crank_angle_text
 from assur._vec import Array
 from assur.dynamics_reduced import Reduced
 from assur.errors import ModelError
@@ -136,7 +137,8 @@ def check_inertia(model: Reduced, inertia: Array, flywheel: float) -> None:
         return
     where = math.degrees(where)
     msg = (
-        f"dynamics: the reduced inertia is zero at crank angle {where:.6g} deg (no "
+        f"dynamics: the reduced inertia is zero at crank angle "
+        f"{crank_angle_text(where)} (no "
         f"mass moves there, flywheel {flywheel:g} kg m^2); expected a flywheel "
         "(flywheel > 0)"
     )
@@ -265,8 +267,9 @@ def _comes_to_rest(
     faster = "a larger 'omega'" if omega > 0 else "a faster 'omega' (more negative)"
     msg = (
         f"dynamics: at a mean speed of {abs(omega):.6g} rad/s the crank would come to "
-        f"rest at crank angle {where:.6g} deg: the loads' energy swing ({swing:.6g} "
-        f"J) needs a speed of at least {0.5 * top:.6g} rad/s; expected {faster} or a "
-        "flywheel (--flywheel or --delta on the command line)"
+        f"rest at crank angle {crank_angle_text(where)}: the energy swing of the loads "
+        f"and the motor ({swing:.6g} J) needs a speed of at least {0.5 * top:.6g} "
+        f"rad/s; expected {faster} or a flywheel (--flywheel or --delta on the "
+        "command line)"
     )
     raise ModelError(msg)

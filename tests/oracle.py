@@ -1144,3 +1144,25 @@ def wittenbauer_flywheel(
     top = np.max(work - upper * inertia)
     bottom = np.min(work - lower * inertia)
     return float((top - bottom) / (upper - lower))
+
+
+def merzalov_flywheel(mech: assur.Mechanism, delta: float, count: int = 7200) -> float:
+    """The flywheel (kg m^2) for ``delta`` by Merzalov's method, as a textbook works
+    it: the links' kinetic energy at the nominal speed, ``(J - J_c) w^2 / 2`` with
+    ``J_c`` the crank's own inertia about its pivot (``J_G + m OG^2``, from the file),
+    taken from the work; the swing of what is left over ``w^2 delta`` is the
+    constant inertia ``J_I``, the flywheel ``J_I - J_c``."""
+    deg = np.arange(count + 1) * 360.0 / count
+    inertia, torque = crank_reduction(mech, deg)
+    net = torque - np.mean(torque[:-1])
+    step = math.radians(360.0 / count)
+    work = np.concatenate([[0.0], np.cumsum(0.5 * (net[1:] + net[:-1]) * step)])
+    w = abs(mech.drivers[0].omega)
+    joint = next(j for j in mech.joints if j.name == mech.drivers[0].joint)
+    crank = next(x for x in mech.links if x.name in joint.links)
+    own = 0.0
+    if crank.mass:
+        arm = resolve(mech, crank.center) - resolve(mech, joint.at)
+        own = (crank.inertia or 0.0) + crank.mass * float(arm @ arm)
+    left = work - 0.5 * (inertia - own) * w * w
+    return float((np.max(left) - np.min(left)) / (w * w * delta)) - own

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import re
 import subprocess
 import sys
 import warnings
@@ -502,12 +503,14 @@ def test_the_motor_torque_s_sign_is_told_for_a_clockwise_crank(capsys, tmp_path)
     assert lines["nominal crank speed"] == "-5 rad/s (clockwise)"
     assert lines["motor torque"] == (
         f"{t.motor:.6g} N m (constant, counter-clockwise positive; it brakes: the "
-        "loads drive the crank)"
+        "loads drive the crank; the steady state's, at the nominal speed; the "
+        "file's [motor] drives the start-up)"
     )
     # turning counter-clockwise, the same loads take work: the motor drives
     status, out, _ = run(capsys, "dynamics", WHITWORTH, "--delta", "0.05")
     assert "(clockwise)" not in out
-    assert "N m (constant)\n" in out
+    assert "N m (constant; the steady state's" in out
+    assert "brakes" not in out
 
 
 def test_a_long_sweep_is_written_by_slices(capsys, monkeypatch, tmp_path: Path):
@@ -658,3 +661,78 @@ def test_standard_output_that_cannot_take_the_json_lands_no_file(tmp_path: Path)
     assert (result.returncode, result.stdout) == (2, b"")
     assert "its encoding (utf-16)" in result.stderr.decode("utf-16")
     assert list(tmp_path.iterdir()) == []
+
+
+CRANK_ALONE = """format = 1
+name = "crank alone"
+[links.crank]
+mass = 2.0
+center = "A"
+inertia = 0.01
+[joints.A]
+kind = "revolute"
+links = ["ground", "crank"]
+at = [0.0, 0.0]
+[[drivers]]
+joint = "A"
+omega = 50.0
+[[loads]]
+link = "crank"
+torque = -2.0
+[motor]
+torque = 10.0
+no_load_speed = 60.0
+"""
+
+
+def figures(out: str) -> dict[str, str]:
+    """The summary's lines by label (continuation lines under the label before)."""
+    found: dict[str, str] = {}
+    label = ""
+    for line in out.split("\n\n")[0].splitlines()[1:]:
+        label = line[:38].strip() or label
+        found[label] = (found.get(label, "") + " " + line[38:].strip()).strip()
+    return found
+
+
+def test_a_constant_speed_and_a_motor_s_own_speed_are_said(capsys, tmp_path):
+    # a crank of constant inertia under a constant load: "largest speed 50 rad/s at
+    # 0.175781 deg" and the same smallest, a delta of integration noise, and no word
+    # that the motor (10 N m falling to 0 at 60 rad/s) runs it at 48, not 50
+    path = tmp_path / "crank.toml"
+    path.write_text(CRANK_ALONE, encoding="utf-8")
+    status, out, _ = run(
+        capsys, "dynamics", path, "--flywheel", "0.04", "--startup", "--angles", "0"
+    )
+    assert status == 0
+    lines = figures(out)
+    assert lines["crank speed"] == "constant, 50 rad/s"
+    assert "largest speed" not in lines
+    assert lines["motor torque"].endswith(
+        "(constant; the steady state's, at the nominal speed; the file's [motor] "
+        "drives the start-up)"
+    )
+    periodic = lines["periodic motion"]
+    assert re.search(r"delta = [0-9.e-]+, none within the periodic speed's", periodic)
+    # M (1 - w / 60) = 2 at w = 48: 4 % below the nominal speed
+    assert periodic.endswith(
+        "the mean speed is -4 % from the nominal 50 rad/s, at which the steady "
+        "state above and its delta hold"
+    )
+
+
+def test_an_angle_past_a_turn_is_said_on_the_dial_too(capsys):
+    # angles count on from the reference pose (60 deg): 364.72 deg is 4.72 deg
+    status, _, err = run(capsys, "dynamics", EXAMPLES / "offset_slider_crank.toml")
+    assert status == 2
+    found = re.search(
+        r"come to rest at crank angle ([0-9.]+) deg \(= ([0-9.]+) deg\)", err
+    )
+    assert found is not None
+    assert float(found[1]) - 360.0 == pytest.approx(float(found[2]), abs=1e-3)
+    status, out, _ = run(
+        capsys, "dynamics", EXAMPLES / "whitworth.toml", "--delta", "0.05"
+    )
+    estimates = figures(out)["classical estimates"]
+    sizing = assur.flywheel_sizing(assur.load(EXAMPLES / "whitworth.toml"), 0.05)
+    assert f"Merzalov {sizing.merzalov:.6g} (+0.0167 %)" in estimates

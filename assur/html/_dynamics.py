@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._text import crank_angle_text
 from assur.analysis import Table
 from assur.columns import pretty_unit
 from assur.dynamics_shown import SHOWN_DELTA, has_dynamics, shown
@@ -81,17 +82,20 @@ def _section(body: str) -> str:
 def _figures_html(result: Any) -> str:
     """Return the figures of the steady state as a small table, and a note."""
     kgm2 = pretty_unit("kg m^2")
+    top, low = (
+        crank_angle_text(a, "°", number) for a in (result.angle_max, result.angle_min)
+    )
     rows = [
         ("coefficient of speed fluctuation δ", number(result.delta)),
         ("flywheel on the crank", f"{number(result.flywheel)} {kgm2}"),
         ("motor torque (constant)", f"{number(result.motor)} N·m"),
         (
             "largest speed",
-            f"{number(result.speed_max)} rad/s at {number(result.angle_max)}°",
+            f"{number(result.speed_max)} rad/s at {top}",
         ),
         (
             "smallest speed",
-            f"{number(result.speed_min)} rad/s at {number(result.angle_min)}°",
+            f"{number(result.speed_min)} rad/s at {low}",
         ),
         ("energy swing", f"{number(result.energy_swing)} J"),
     ]
