@@ -54,6 +54,25 @@ NUMBERS = {3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
 """Counts of pairs written as words."""
 
 
+def _apart(s: Structure) -> list[str]:
+    """Return lines for the groups that do not hang on the group before them.
+
+    The formula's arrows give the order of attachment; a group that hangs only on
+    links known before the group ahead of it could come first as well.
+    """
+    lines = []
+    for before, g in zip(s.groups, s.groups[1:], strict=False):
+        if set(g.attached_to).isdisjoint(before.links):
+            lines.append(
+                f"  {roman(g.group_class)}({_names(g.links)}) hangs on "
+                f"{_names(g.attached_to)}, not on {roman(before.group_class)}"
+                f"({_names(before.links)}) before it: either could be attached "
+                "first (the search takes the smaller group, then the links listed "
+                "first in the file)."
+            )
+    return lines
+
+
 def _class_reason(s: Structure) -> str:
     """Return where the class of the mechanism comes from."""
     if s.groups:
@@ -113,6 +132,7 @@ def structure_report(s: Structure) -> str:
     lines += [
         "",
         f"Structure formula: {s.formula}",
+        *_apart(s),
         f"Class of the mechanism: {roman(s.mechanism_class)} ({_class_reason(s)})",
     ]
     if s.groups:

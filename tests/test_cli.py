@@ -202,7 +202,7 @@ def test_driver_option_unknown_joint(capsys):
     path = EXAMPLES / "class3.toml"
     assert (
         fails(capsys, ["structure", path, "--driver", "Q"], path)
-        == "--driver: unknown joint 'Q' (known: F, G, O2)"
+        == "--driver: unknown joint 'Q' (joints with the frame: F, G, O2)"
     )
 
 

@@ -190,3 +190,17 @@ def test_a_crank_alone_is_said_to_have_no_group() -> None:
     note = str(assur.explain(crank, 30.0))
     assert "With no Assur group, the kinematic and the force analysis take the " in note
     assert "the groups in this order" not in note
+
+
+def test_groups_that_do_not_hang_on_each_other_are_said_to() -> None:
+    # the ten-bar's RRP dyad (6, 7) hangs on link 2 and the frame, not on the dyad
+    # (4, 5) the arrow of the formula puts before it
+    text = str(assur.structure(assur.load(EXAMPLES / "tenbar.toml")))
+    said = [line.strip() for line in text.splitlines() if "before it" in line]
+    assert said == [
+        "II(6, 7) hangs on 2, ground, not on II(4, 5) before it: either could be "
+        "attached first (the search takes the smaller group, then the links listed "
+        "first in the file)."
+    ]
+    # a chain where each group hangs on the one before: nothing to say
+    assert "before it" not in str(assur.structure(assur.load(EXAMPLES / "class3.toml")))
