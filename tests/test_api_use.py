@@ -376,7 +376,7 @@ def _with_table(table):  # type: ignore[no-untyped-def]
         (
             lambda: assur.structure(assur.catalog.four_bar(), driver="Z"),
             assur.DecompositionError,
-            "driver: unknown joint 'Z' (known: A, D)",
+            "driver: unknown joint 'Z' (joints with the frame: A, D)",
         ),
     ],
 )
