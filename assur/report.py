@@ -6,6 +6,7 @@ student's eyes.
 
 from __future__ import annotations
 
+import itertools
 from typing import TYPE_CHECKING
 
 from assur._text import counted, public_name, roman
@@ -61,7 +62,7 @@ def _apart(s: Structure) -> list[str]:
     links known before the group ahead of it could come first as well.
     """
     lines = []
-    for before, g in zip(s.groups, s.groups[1:], strict=False):
+    for before, g in itertools.pairwise(s.groups):
         if set(g.attached_to).isdisjoint(before.links):
             lines.append(
                 f"  {roman(g.group_class)}({_names(g.links)}) hangs on "

@@ -378,6 +378,42 @@ def _with_table(table):  # type: ignore[no-untyped-def]
             assur.DecompositionError,
             "driver: unknown joint 'Z' (joints with the frame: A, D)",
         ),
+        # paths a caller reaches that no test had taken (a coverage audit)
+        (
+            lambda: assur.load("a\0b.toml"),
+            assur.ModelError,
+            "a\\x00b.toml: cannot read the file (embedded null byte)",
+        ),
+        (
+            lambda: assur.forces(
+                assur.catalog.slider_crank(), [45.0], skip_unassembled="yes"
+            ),
+            assur.UsageError,
+            "skip_unassembled: expected True or False, got 'yes'",
+        ),
+        (
+            lambda: dataclasses.replace(assur.catalog.slider_crank(), links="crank"),
+            assur.ModelError,
+            "links: expected a sequence of Link, got 'crank'",
+        ),
+        (
+            lambda: dataclasses.replace(
+                assur.catalog.slider_crank(),
+                links=(assur.catalog.slider_crank().links[0], "x"),
+            ),
+            assur.ModelError,
+            "links[1]: expected a Link, got 'x'",
+        ),
+        (
+            lambda: assur.forces(assur.catalog.slider_crank(), [[1, 2], [3]]),
+            assur.UsageError,
+            "angles: expected real numbers (driver positions), got list",
+        ),
+        (
+            lambda: assur.forces(assur.catalog.slider_crank(), object()),
+            assur.UsageError,
+            "angles: expected real numbers (driver positions), got object values",
+        ),
     ],
 )
 def test_the_library_says_what_is_wrong_in_one_line(call, kind, message):

@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
 from assur._vec import Array, Mask
 from assur.groups._equations import Equations, equations
-from assur.groups._motion import Motion, point
+from assur.groups._motion import Motion
 
 if TYPE_CHECKING:
     from assur._structure import Group
@@ -249,8 +249,3 @@ class GroupSolver(Protocol):
         relates the two (the slide's derivatives are then read, not recomputed).
         """
         ...
-
-
-def pair_point(pair: PairPlan, bodies: list[Motion]) -> tuple[Any, Any]:
-    """Return a pair's point (m), the one moving with its second link."""
-    return point(bodies[pair.second], pair.d_second, 0)
