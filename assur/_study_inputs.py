@@ -133,7 +133,7 @@ def _parameters(parameters: Any) -> dict[str, Array]:
         except (TypeError, ValueError) as err:
             msg = f"parameters.{name}: expected a 1-D array of real numbers"
             raise UsageError(msg) from err
-        if arr.dtype.kind in "biuf" and arr.shape == (0,):
+        if arr.dtype.kind in "biuf" and arr.shape == (0,):  # 1-D, without a variant
             msg = f"parameters.{name}: no values; expected one value per variant"
             raise UsageError(msg)
         if arr.dtype.kind not in "biuf" or arr.ndim != 1:

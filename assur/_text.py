@@ -65,13 +65,17 @@ def crank_angle_text(
     --------
     >>> crank_angle_text(364.72), crank_angle_text(-30.0), crank_angle_text(45.0)
     ('364.72 deg (= 4.72 deg)', '-30 deg (= 330 deg)', '45 deg')
+    >>> crank_angle_text(360.0 + 4e-9), crank_angle_text(0.0)
+    ('360 deg (= 0 deg)', '0 deg')
 
     ``unit`` follows each number, written by ``shown`` (the HTML report's "°").
     """
     text = f"{shown(deg)}{unit}"
-    if 0.0 <= deg < 360.0 or not math.isfinite(deg):
+    # to a millionth of a degree: 360 deg and its round-off are a turn, not 4e-09 deg
+    near = round(deg, 6)
+    if 0.0 <= near < 360.0 or not math.isfinite(deg):
         return text
-    return f"{text} (= {shown(deg % 360.0)}{unit})"
+    return f"{text} (= {shown(near % 360.0)}{unit})"
 
 
 def counted(count: int, noun: str, plural: str | None = None) -> str:

@@ -375,6 +375,8 @@ def test_merzalov_s_estimate_against_the_textbook_s_working(name, delta, within)
     assert abs(sizing.differences()["merzalov"]) < abs(
         sizing.differences()["energy_swing"]
     )
+    gaps = sizing.differences()
+    assert gaps["merzalov"] == (sizing.merzalov - sizing.exact) / sizing.exact
     # a crank of constant inertia: no varying energy, the exact flywheel
     alone = assur.flywheel_sizing(crank(gravity=(0.0, -9.81)), 0.05)
     assert alone.merzalov == pytest.approx(alone.exact, rel=1e-6)

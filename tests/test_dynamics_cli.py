@@ -708,6 +708,7 @@ def test_a_constant_speed_and_a_motor_s_own_speed_are_said(capsys, tmp_path):
     lines = figures(out)
     assert lines["crank speed"] == "constant, 50 rad/s"
     assert "largest speed" not in lines
+    assert "smallest speed" not in lines
     assert lines["motor torque"].endswith(
         "(constant; the steady state's, at the nominal speed; the file's [motor] "
         "drives the start-up)"
@@ -719,6 +720,50 @@ def test_a_constant_speed_and_a_motor_s_own_speed_are_said(capsys, tmp_path):
         "the mean speed is -4 % from the nominal 50 rad/s, at which the steady "
         "state above and its delta hold"
     )
+
+
+def test_a_constant_speed_turning_clockwise_is_its_size(capsys, tmp_path):
+    clockwise = (
+        CRANK_ALONE.replace("omega = 50.0", "omega = -50.0")
+        .replace("torque = 10.0", "torque = -10.0")
+        .replace("no_load_speed = 60.0", "no_load_speed = -60.0")
+        .replace("torque = -2.0", "torque = 2.0")
+    )
+    path = tmp_path / "clockwise.toml"
+    path.write_text(clockwise, encoding="utf-8")
+    status, out, _ = run(
+        capsys, "dynamics", path, "--flywheel", "0.04", "--angles", "0"
+    )
+    assert status == 0
+    assert figures(out)["crank speed"] == "constant, 50 rad/s"
+    # a motor of constant torque: nothing to set the steady state's torque apart
+    constant = CRANK_ALONE.replace("no_load_speed = 60.0\n", "")
+    path.write_text(constant, encoding="utf-8")
+    status, out, _ = run(
+        capsys, "dynamics", path, "--flywheel", "0.04", "--angles", "0"
+    )
+    assert status == 0
+    assert figures(out)["motor torque"] == "2 N m (constant)"
+
+
+def test_a_periodic_delta_is_none_only_below_ten_times_the_tolerance():
+    from assur._dynamics_figures import _run_delta
+    from assur._startup_turns import PERIODIC_RTOL
+
+    assert _run_delta(5.0 * PERIODIC_RTOL).endswith(
+        ", none within the periodic speed's tolerance"
+    )
+    assert _run_delta(20.0 * PERIODIC_RTOL) == f"{20.0 * PERIODIC_RTOL:.6g}"
+
+
+def test_a_crank_angle_is_said_on_the_dial_where_it_is_past_a_turn():
+    from assur._text import crank_angle_text as dial
+
+    assert dial(0.0) == "0 deg"
+    assert dial(359.5) == "359.5 deg"
+    assert dial(360.0) == "360 deg (= 0 deg)"
+    assert dial(float("nan")) == "nan deg"
+    assert dial(-30.0, "°") == "-30° (= 330°)"
 
 
 def test_an_angle_past_a_turn_is_said_on_the_dial_too(capsys):
@@ -736,3 +781,12 @@ def test_an_angle_past_a_turn_is_said_on_the_dial_too(capsys):
     estimates = figures(out)["classical estimates"]
     sizing = assur.flywheel_sizing(assur.load(EXAMPLES / "whitworth.toml"), 0.05)
     assert f"Merzalov {sizing.merzalov:.6g} (+0.0167 %)" in estimates
+    status, out, _ = run(
+        capsys, "dynamics", EXAMPLES / "whitworth.toml", "--delta", "0.05", "--json"
+    )
+    assert json.loads(out)["flywheel"]["merzalov"] == sizing.merzalov
+    # the smallest speed at the end of the scotch yoke's turn: 360 deg, not 4e-09
+    status, out, _ = run(
+        capsys, "dynamics", EXAMPLES / "scotch_yoke.toml", "--delta", "0.05"
+    )
+    assert figures(out)["smallest speed"].endswith("at 360 deg (= 0 deg)")

@@ -8,6 +8,8 @@ the structure report and of the note's first part.
 
 from __future__ import annotations
 
+import dataclasses
+
 import pytest
 
 import assur
@@ -97,6 +99,24 @@ def test_a_third_parallel_crank_moves_though_the_count_says_rigid() -> None:
             ],
             1,
         ),
+        # a block whose slide line is the crank pin's tangent: a toggle, it moves
+        (
+            [
+                ("O", "R", ("ground", "c"), (0, 0)),
+                ("B", "R", ("c", "s"), (0.6, 0.8)),
+                ("G", "P", ("ground", "s"), (0.6, 0.8), (-0.8, 0.6)),
+            ],
+            1,
+        ),
+        # the same slide line along the crank: rigid
+        (
+            [
+                ("O", "R", ("ground", "c"), (0, 0)),
+                ("B", "R", ("c", "s"), (0.6, 0.8)),
+                ("G", "P", ("ground", "s"), (0.6, 0.8), (0.6, 0.8)),
+            ],
+            0,
+        ),
         # a crank and a link hanging on it: two turns
         ([("A", "R", ("ground", "c"), (0, 0)), ("B", "R", ("c", "r"), (1.0, 0))], 2),
     ],
@@ -126,6 +146,24 @@ def test_a_truss_without_driver_gives_its_count_worked_out() -> None:
         assur.structure(build(PARALLELOGRAM + THIRD_CRANK, []))
     assert "= 0, yet the chain moves at its pose" in str(err.value)
     assert "rigid structure" not in str(err.value)
+    assert str(err.value).endswith(
+        "expected no constraint repeated: remove the redundant link or joint, then "
+        "a [[drivers]] entry for each degree of freedom"
+    )
+    # two cranks more than a parallelogram needs: W = -1, two constraints repeated
+    fourth = [
+        ("E2", "R", ("3", "6"), (0.05, 0.1)),
+        ("F2", "R", ("ground", "6"), (0.05, 0.0)),
+    ]
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(build(PARALLELOGRAM + THIRD_CRANK + fourth, []))
+    assert "2 of its constraints repeat others, which the count" in str(err.value)
+    assert "W = 3n - 2p5 - p4 + q with q = 2" in str(err.value)
+    # a slot counted as p4 in the count worked out
+    slot = dataclasses.replace(assur.load(EXAMPLES / "slot_mechanism.toml"), drivers=())
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(slot)
+    assert "W = 3*4 - 2*5 - 1 = 1 degree of freedom but 0 drivers" in str(err.value)
 
 
 def test_two_drivers_on_one_loop_and_none_on_another_are_named() -> None:
@@ -153,6 +191,24 @@ def test_two_drivers_on_one_loop_and_none_on_another_are_named() -> None:
         "part: a driver moved to joint A2 or D2"
     )
     assert assur.structure(build(first + second, ["A", "D2"])).formula.count("II") == 2
+    # a part that moves but has no joint to the frame takes no driver: the link
+    # held too much is what is named
+    between = [
+        ("P", "R", ("2", "5"), (0.02, 0.1)),
+        ("Q", "R", ("5", "6"), (0.06, 0.2)),
+        ("S", "R", ("6", "7"), (0.12, 0.2)),
+        ("U", "R", ("7", "4"), (0.15, 0.08)),
+    ]
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(build(first + between, ["A", "D"]))
+    assert "wrong parts" not in str(err.value)
+    assert "link 3 is held to the known links by joints B, C" in str(err.value)
+    # nor a link that hangs on one joint to the frame: it is named as such
+    hanging = [("P", "R", ("ground", "5"), (0.3, 0.3))]
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(build(first + hanging, ["A", "D"]))
+    assert "wrong parts" not in str(err.value)
+    assert "link 5 hangs on joint P alone" in str(err.value)
 
 
 def test_the_driver_option_takes_a_list_with_spaces(capsys) -> None:
@@ -178,6 +234,9 @@ def test_the_note_says_why_a_group_is_of_its_class() -> None:
         "group: k = 4 links, p = 6 lower pairs" in note
     )
     assert "Why class III: its base link plate carries three internal pairs" in note
+    assert (
+        "the force analysis in the reverse order, ending with the input link." in note
+    )
 
 
 def test_a_crank_alone_is_said_to_have_no_group() -> None:
@@ -188,7 +247,10 @@ def test_a_crank_alone_is_said_to_have_no_group() -> None:
     )
     assert "groups in this order" not in str(s)
     note = str(assur.explain(crank, 30.0))
-    assert "With no Assur group, the kinematic and the force analysis take the " in note
+    assert (
+        "With no Assur group, the kinematic and the force analysis take the input "
+        "link alone." in note
+    )
     assert "the groups in this order" not in note
 
 

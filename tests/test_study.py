@@ -165,6 +165,11 @@ def test_tables_give_every_column_of_chosen_variants(slider_study):
         ({"rod": ["a"]}, "parameters.rod: expected a 1-D array of real numbers, got"),
         # an empty array is 1-D: what it lacks is a variant
         ({"rod": []}, r"^parameters.rod: no values; expected one value per variant$"),
+        # empty, but not 1-D: the shape is what is wrong
+        (
+            {"rod": np.zeros((0, 2))},
+            r"parameters.rod: expected a 1-D array .* shape \(0, 2\)",
+        ),
         (
             {"rod": [0.2, 0.3], "crank": [0.07]},
             "parameters: expected arrays of one length .* got rod 2, crank 1",
@@ -196,6 +201,13 @@ def test_pandas_samples_are_paired_by_position_or_refused():
     reordered = {"crank": samples["crank"].iloc[::-1], "rod": samples["rod"]}
     with pytest.raises(assur.UsageError, match=r"^parameters: pandas Series 'crank' "):
         assur.sweep(catalog.slider_crank, reordered, angles)
+    # shuffled alike neither way: compared label by label, not by their order
+    shuffled = {
+        "crank": pd.Series([0.07, 0.075, 0.08], index=[0, 2, 1]),
+        "rod": pd.Series([0.2, 0.21, 0.22], index=[1, 2, 0]),
+    }
+    with pytest.raises(assur.UsageError, match="have different indexes"):
+        assur.sweep(catalog.slider_crank, shuffled, angles)
 
 
 def test_the_refused_names_are_documented():
@@ -842,9 +854,9 @@ def said_alone(mech: assur.Mechanism, angles) -> str:
     return " | ".join(" ".join(str(w.message).split()) for w in caught)
 
 
-def massless_rod(crank: float) -> assur.Mechanism:
+def massless_rod(crank: float, rod: float = 0.2) -> assur.Mechanism:
     """A slider-crank whose rod keeps its inertia but has a mass of 0 (a warning)."""
-    mech = catalog.slider_crank(crank=crank)
+    mech = catalog.slider_crank(crank=crank, rod=rod)
     links = tuple(
         dataclasses.replace(x, mass=0.0) if x.name == "rod" else x for x in mech.links
     )
@@ -861,6 +873,13 @@ def massless_rod(crank: float) -> assur.Mechanism:
         ),
         # a batch of one form against its template, every row warned
         (massless_rod, {"crank": [0.05, 0.06, 0.07, 0.065]}),
+        # 93 m across, among variants of metres: batched alone, so it is told
+        (
+            lambda crank, rod: catalog.slider_crank(crank=crank, rod=rod, omega=2.0),
+            {"crank": [0.05, 30.0, 0.06, 0.07], "rod": [0.2, 75.0, 0.21, 0.22]},
+        ),
+        # both warnings, in the order of a separate call: the size first
+        (massless_rod, {"crank": [74.0, 80.0], "rod": [200.0, 210.0]}),
     ],
 )
 def test_a_compilation_s_warnings_are_in_every_row_they_concern(factory, parameters):
@@ -906,3 +925,12 @@ def test_positions_that_fit_no_variant_are_refused_before_the_run(
     with pytest.raises(assur.UsageError, match=re.escape(expected)):
         assur.sweep(counting, {"crank": np.full(2000, 0.074)}, angles)
     assert len(built) == 1
+
+
+def test_the_refused_positions_name_the_first_variant_and_the_shapes_expected():
+    with pytest.raises(assur.UsageError) as err:
+        assur.sweep(catalog.slider_crank, {"crank": [0.07, 0.08]}, np.zeros((12, 2)))
+    assert str(err.value) == (
+        "angles: shape (12, 2) for variants of 1 driver (the first: crank=0.07); "
+        "expected (n,) or (n, 1), the same for every variant"
+    )
