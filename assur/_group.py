@@ -46,6 +46,9 @@ class Group:
     basis : tuple of str
         Class III and higher: the internal pairs that set the class, those of the
         base link or those closing the contour, in order round it.
+    sliding : tuple of str
+        Class III and higher: the group's prismatic pairs, internal and external
+        (a dyad's kind names its own).
     """
 
     group_class: int
@@ -57,6 +60,7 @@ class Group:
     attached_to: tuple[str, ...]
     base: str = ""
     basis: tuple[str, ...] = ()
+    sliding: tuple[str, ...] = ()
 
     @property
     def label(self) -> str:
@@ -116,6 +120,7 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
         attached,
         base,
         basis,
+        tuple(p.name for p in counted if p.kind == "P"),
     )
 
 

@@ -108,6 +108,7 @@ class Structure:
                 "attached_to": list(g.attached_to),
                 # class III and higher: what sets the class (see Group.basis)
                 **({"base": g.base, "basis": list(g.basis)} if g.basis else {}),
+                **({"sliding_pairs": list(g.sliding)} if g.sliding else {}),
             }
 
         return {

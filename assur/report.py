@@ -26,6 +26,21 @@ def _counted(noun: str, items: tuple[str, ...]) -> str:
     return f"{noun}{'' if len(items) == 1 else 's'} {_names(items)}"
 
 
+def _pairs_text(g: Group) -> str:
+    """Return a group's internal and external pairs, and its sliding ones by name.
+
+    A dyad's kind names its prismatic pairs; a larger group's are listed.
+    """
+    text = (
+        f"{_counted('internal pair', g.internal)}; "
+        f"{_counted('external pair', g.external)} on the "
+        f"{_counted('known link', g.attached_to)}"
+    )
+    if g.sliding:
+        text += f"; {_counted('prismatic pair', g.sliding)}, the others revolute"
+    return text
+
+
 def _why(g: Group) -> str:
     k = len(g.links)
     p = len(g.internal) + len(g.external)
@@ -122,11 +137,7 @@ def structure_report(s: Structure) -> str:
             f"  {step}. Class {numeral}, order {g.order}, {kind}: "
             f"links {_names(g.links)}"
         )
-        lines.append(
-            f"     {_counted('internal pair', g.internal)}; "
-            f"{_counted('external pair', g.external)} on the "
-            f"{_counted('known link', g.attached_to)}."
-        )
+        lines.append(f"     {_pairs_text(g)}.")
         lines.append(f"     Why an Assur group: {_why(g)}.")
         if g.basis:
             lines.append(f"     Why class {numeral}: {_class_why(g)}.")

@@ -266,3 +266,33 @@ def test_groups_that_do_not_hang_on_each_other_are_said_to() -> None:
     ]
     # a chain where each group hangs on the one before: nothing to say
     assert "before it" not in str(assur.structure(assur.load(EXAMPLES / "class3.toml")))
+
+
+def test_a_triad_names_its_prismatic_pairs() -> None:
+    # a dyad's kind (RRP, ...) names its sliding pairs; a triad said nothing of its
+    triad = build(
+        [
+            ("A", "R", ("ground", "crank"), (0.0, 0.0)),
+            ("B", "R", ("crank", "rod"), (0.035, 0.02)),
+            ("C", "P", ("rod", "plate"), (0.24, -0.03), (1.0, -0.2)),
+            ("D", "R", ("plate", "lr"), (0.2, 0.02)),
+            ("E", "R", ("plate", "rr"), (0.3, 0.03)),
+            ("F", "R", ("ground", "lr"), (0.2, 0.2)),
+            ("G", "R", ("ground", "rr"), (0.31, 0.21)),
+        ],
+        ["A"],
+    )
+    s = assur.structure(triad)
+    (group,) = s.groups
+    assert (group.kind, group.sliding) == ("triad", ("C",))
+    assert "; prismatic pair C, the others revolute." in str(s)
+    assert s.to_dict()["groups"][0]["sliding_pairs"] == ["C"]
+    note = str(assur.explain(triad, 0.0))
+    assert "on the known links crank, ground; prismatic pair C, the others" in note
+    # an all-revolute triad and a dyad: no such words
+    assert "prismatic pair" not in str(
+        assur.structure(assur.load(EXAMPLES / "class3.toml"))
+    )
+    assert "sliding_pairs" not in str(
+        assur.structure(assur.catalog.slider_crank()).to_dict()
+    )

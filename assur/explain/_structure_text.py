@@ -10,7 +10,7 @@ from assur._structure import Structure
 from assur._text import counted, noun_for, roman
 from assur.explain._note import Block, Display, Heading, Items, Para
 from assur.explain._tex import plain
-from assur.report import _class_why, _counted, _names, _why
+from assur.report import _class_why, _names, _pairs_text, _why
 
 __all__ = ["structure_blocks"]
 
@@ -52,14 +52,9 @@ def structure_blocks(s: Structure) -> list[Block]:
         # the words of the structure report: which pairs are inside the group and
         # which hang it on the known links, why it is a group, why of its class
         numeral = roman(g.group_class)
-        pairs = (
-            f"{_counted('internal pair', g.internal)}; "
-            f"{_counted('external pair', g.external)} on the "
-            f"{_counted('known link', g.attached_to)}"
-        )
         text = (
             f"Class {numeral}, order {g.order}, {_kind(g.kind)} "
-            f"({_names(g.links)}): {pairs}. Why an Assur group: {_why(g)}."
+            f"({_names(g.links)}): {_pairs_text(g)}. Why an Assur group: {_why(g)}."
         )
         if g.basis:
             text += f" Why class {numeral}: {_class_why(g)}."
