@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from assur._checks import _coincide
-from assur._freedom import none_text
+from assur._freedom import none_text, structure_text
 from assur._points import resolve_point
 from assur._text import NAME_LIMIT, listing, public_name, shortened
 from assur._topology import Pair, Topology, _component, _Index, _index, _public
@@ -39,7 +39,7 @@ def _miscount(topo: Topology, w: int, mech: Mechanism) -> tuple[str, str]:
         if moving is not None:
             why, expected = moving
             return f", {why}", f"{expected}, then {PER_FREEDOM}"
-        return ": the chain is rigid", f"links that can move (W >= 1), {PER_FREEDOM}"
+        return f": {structure_text(w)}", f"links that can move (W >= 1), {PER_FREEDOM}"
     if w > len(mech.drivers):
         loose = _loose_text(index, mech)
         if loose is not None:
@@ -184,7 +184,7 @@ def _leftover(
     left = tuple(name for name in index.links if name in unknown)
     head = (
         f"links {listing(_public(left))} are left over: they form no Assur group "
-        "(3k = 2p, every part movable) on the known links "
+        "(3k = 2p, every smaller part with 3k' - 2p' > 0) on the known links "
         f"{listing(sorted(known))}"
     )
     # two joints between known links (the frame and an input link) do not stop a
@@ -263,10 +263,10 @@ def _misdriven_text(index: _Index, left: tuple[str, ...]) -> str | None:
     move = " or ".join(_public(tuple(frame)))
     return (
         f"{_links_text(loose)} can move on the known links (3k - 2p = {w}) with no "
-        f"driver, while {_links_text(fixed)} {'is' if len(fixed) == 1 else 'are'} "
-        f"held too much (3k - 2p = {less}): the drivers are on the wrong parts; "
-        f"expected one driver for each degree of freedom of each part: a driver "
-        f"moved to joint {move}"
+        f"input, while {_links_text(fixed)} {'is' if len(fixed) == 1 else 'are'} "
+        f"over-constrained (3k - 2p = {less}): W matches the number of drivers, but "
+        "they are placed on the wrong part; expected one driver for each degree of "
+        f"freedom of each part: a driver moved to joint {move}"
     )
 
 

@@ -24,7 +24,7 @@ def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
             "exact": sizing.exact,
             "wittenbauer": sizing.wittenbauer,
             "energy_swing": sizing.energy_swing,
-            "merzalov": sizing.merzalov,
+            "mertsalov": sizing.mertsalov,
         }
     if run is not None:
         data["startup"] = _startup_data(run)
@@ -71,8 +71,12 @@ def _motor_note(motor: float, result: Any) -> str:
     if found is not None and found.no_load_speed is not None:
         # the steady state is the contract's: a constant torque at the nominal
         # speed; the file's motor, whose torque falls with speed, runs the start-up
-        note += "; the steady state's, at the nominal speed; the file's [motor] "
-        note += "drives the start-up"
+        w = abs(result.omega)
+        note += (
+            f"; it balances the loads' work over a turn at the nominal {w:.6g} "
+            f"rad/s; the file's [motor], {number_text(found.at(result.omega))} N m at "
+            "that speed, drives the start-up alone"
+        )
     return note
 
 
@@ -116,7 +120,7 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
         # fluctuation: close to it they fail, even below zero
         names = {
             "wittenbauer": "Wittenbauer",
-            "merzalov": "Merzalov",
+            "mertsalov": "Mertsalov",
             "energy_swing": "energy swing",
         }
         good = [
@@ -154,15 +158,15 @@ def _startup_lines(run: Any, result: Any = None) -> list[tuple[str, str]]:
         (
             "periodic motion",
             # magnitudes, as the steady state's extremes are
-            f"speed {run.speed_min:.6g} to {run.speed_max:.6g} rad/s, mean "
+            f"speed {run.speed_min:.6g} to {run.speed_max:.6g} rad/s, time-mean "
             f"{abs(run.mean_speed):.6g} rad/s (2 pi / period {run.period:.6g} s)"
             + (", clockwise" if run.mean_speed < 0 else ""),
         ),
         (
             "",
             # the steady state's definition: over the mean of the extreme speeds
-            f"delta = {_run_delta(run.delta)} (max - min over their mean, "
-            f"{middle:.6g} rad/s)",
+            f"delta = {_run_delta(run.delta)} (max - min over w_m = (max + min) / 2 "
+            f"= {middle:.6g} rad/s)",
         ),
     ]
     if result is None:  # the start-up alone: no steady state to set it against
@@ -172,7 +176,7 @@ def _startup_lines(run: Any, result: Any = None) -> list[tuple[str, str]]:
         lines.append(
             (
                 "",
-                f"the mean speed is {100.0 * gap:+.3g} % from the nominal "
+                f"the time-mean speed is {100.0 * gap:+.3g} % from the nominal "
                 f"{abs(result.omega):.6g} rad/s, at which the steady state above "
                 "and its delta hold",
             )

@@ -14,7 +14,7 @@ import numpy as np
 from assur._text import counted
 from assur._topology import Topology
 
-__all__ = ["none_text", "pose_freedom"]
+__all__ = ["none_text", "pose_freedom", "structure_text"]
 
 
 def pose_freedom(topo: Topology) -> int:
@@ -66,6 +66,19 @@ def pose_freedom(topo: Topology) -> int:
                     row[column[link] + 2] += sign
             rows.append(row)
     return 3 * len(column) - int(np.linalg.matrix_rank(np.array(rows)))
+
+
+def structure_text(w: int) -> str:
+    """Return what a chain rigid at its pose is, by its count ``w`` <= 0."""
+    if w == 0:
+        return (
+            "the chain is a statically determinate structure (a truss), not a mechanism"
+        )
+    redundant = counted(-w, "redundant constraint")
+    return (
+        f"the chain is a statically indeterminate structure ({redundant}), not a "
+        "mechanism"
+    )
 
 
 def none_text(topo: Topology, w: int) -> tuple[str, str] | None:

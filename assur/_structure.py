@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from assur._diagnosis import _miscount
-from assur._freedom import none_text
+from assur._freedom import none_text, structure_text
 from assur._group import Group, _describe
 from assur._group_search import _attach
 from assur._text import counted, describe, noun_for, roman, suggest
@@ -312,10 +312,7 @@ def no_driver(mech: Mechanism) -> str:
     moving = none_text(topology(mech), w)
     if moving is not None:
         return f"{head}, {moving[0]}; expected {moving[1]}, then {each}"
-    return (
-        f"{head}: its links cannot move (a rigid structure); expected links that can "
-        f"move, with {each}"
-    )
+    return f"{head}: {structure_text(w)}; expected links that can move, with {each}"
 
 
 def _count_text(mech: Mechanism, w: int) -> str:

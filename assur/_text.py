@@ -64,18 +64,35 @@ def crank_angle_text(
     Examples
     --------
     >>> crank_angle_text(364.72), crank_angle_text(-30.0), crank_angle_text(45.0)
-    ('364.72 deg (= 4.72 deg)', '-30 deg (= 330 deg)', '45 deg')
-    >>> crank_angle_text(360.0 + 4e-9), crank_angle_text(0.0)
-    ('360 deg (= 0 deg)', '0 deg')
+    ('364.72 deg (that is, 4.72 deg)', '-30 deg (that is, 330 deg)', '45 deg')
+    >>> crank_angle_text(365.316664), crank_angle_text(360.0 + 4e-9)
+    ('365.317 deg (that is, 5.317 deg)', '360 deg (that is, 0 deg)')
 
-    ``unit`` follows each number, written by ``shown`` (the HTML report's "°").
+    ``unit`` follows each number, written by ``shown`` (the HTML report's "°"). The
+    dial's angle has the decimals of the angle written before it.
     """
-    text = f"{shown(deg)}{unit}"
+    written = shown(deg)
+    text = f"{written}{unit}"
     # to a millionth of a degree: 360 deg and its round-off are a turn, not 4e-09 deg
     near = round(deg, 6)
     if 0.0 <= near < 360.0 or not math.isfinite(deg):
         return text
-    return f"{text} (= {shown(near % 360.0)}{unit})"
+    return f"{text} (that is, {_dial(near % 360.0, written, shown)}{unit})"
+
+
+def _dial(angle: float, written: str, shown: Callable[[float], str]) -> str:
+    """Return ``angle`` (deg, in [0, 360)) with as many decimals as ``written``."""
+    try:
+        float(written)
+    except ValueError:  # a form of its own (a typographic minus): as it writes it
+        return shown(angle)
+    if "e" in written.lower():
+        return shown(angle)
+    places = len(written.partition(".")[2])
+    dial = f"{angle:.{places}f}"
+    if float(dial) >= 360.0:  # 359.9996 to three places is a whole turn
+        return "0"
+    return dial.rstrip("0").rstrip(".") if "." in dial else dial
 
 
 def counted(count: int, noun: str, plural: str | None = None) -> str:

@@ -3,7 +3,7 @@
 :func:`flywheel` solves the steady state of :mod:`assur.dynamics_steady` for the
 inertia that gives the asked ``delta`` exactly (Brent's method). :func:`flywheel_sizing`
 sets it beside three classical estimates: Wittenbauer's energy-mass diagram with its
-usual tangent slopes ``w^2 (1 +- delta) / 2``, Merzalov's method (the links' kinetic
+usual tangent slopes ``w^2 (1 +- delta) / 2``, Mertsalov's method (the links' kinetic
 energy at the mean speed taken from the work), and the maximum energy swing
 ``dE_max / (w^2 delta)`` that neglects the mechanism's own inertia.
 """
@@ -30,7 +30,7 @@ __all__ = [
     "delta_in_range",
     "flywheel",
     "flywheel_sizing",
-    "merzalov",
+    "mertsalov",
     "wittenbauer",
 ]
 
@@ -63,10 +63,10 @@ class FlywheelSizing:
     energy_swing : float
         The estimate ``dE_max / (w^2 delta)`` from the largest swing of the work of
         the loads and the motor, the mechanism's own inertia neglected, kg m^2.
-    merzalov : float
-        Merzalov's estimate: the swing of the work less the links' kinetic energy
+    mertsalov : float
+        Mertsalov's estimate: the swing of the work less the links' kinetic energy
         at the nominal speed, over ``w^2 delta``, less the crank's own inertia,
-        kg m^2 (see :func:`merzalov`).
+        kg m^2 (see :func:`mertsalov`).
     """
 
     delta: float
@@ -74,14 +74,14 @@ class FlywheelSizing:
     exact: float
     wittenbauer: float
     energy_swing: float
-    merzalov: float
+    mertsalov: float
 
     def differences(self) -> dict[str, float]:
         """Return how far each estimate is from the exact inertia, relative."""
         return {
             "wittenbauer": (self.wittenbauer - self.exact) / self.exact,
             "energy_swing": (self.energy_swing - self.exact) / self.exact,
-            "merzalov": (self.merzalov - self.exact) / self.exact,
+            "mertsalov": (self.mertsalov - self.exact) / self.exact,
         }
 
 
@@ -141,7 +141,7 @@ def flywheel_sizing(mechanism: Mechanism, delta: float) -> FlywheelSizing:
     -------
     FlywheelSizing
         The inertia :func:`flywheel` returns (``exact``), Wittenbauer's estimate,
-        the energy-swing estimate and Merzalov's, kg m^2 each.
+        the energy-swing estimate and Mertsalov's, kg m^2 each.
 
     Raises
     ------
@@ -174,12 +174,12 @@ def flywheel_sizing(mechanism: Mechanism, delta: float) -> FlywheelSizing:
         exact,
         wittenbauer(model, w2 * (1.0 + delta) / 2.0, w2 * (1.0 - delta) / 2.0),
         swing / (w2 * delta),
-        merzalov(model, omega, delta, crank_inertia(mechanism)),
+        mertsalov(model, omega, delta, crank_inertia(mechanism)),
     )
 
 
-def merzalov(model: Reduced, omega: float, delta: float, own: float) -> float:
-    r"""Return Merzalov's flywheel (kg m^2): the links' energy at the mean speed.
+def mertsalov(model: Reduced, omega: float, delta: float, own: float) -> float:
+    r"""Return Mertsalov's flywheel (kg m^2): the links' energy at the mean speed.
 
     The kinetic energy of the links whose reduced inertia varies is taken at the
     nominal speed, :math:`T_{II} = (J - J_c)\,\omega^2/2`, and the rest of the work

@@ -26,13 +26,23 @@ def _counted(noun: str, items: tuple[str, ...]) -> str:
     return f"{noun}{'' if len(items) == 1 else 's'} {_names(items)}"
 
 
+def _links_text(links: tuple[str, ...]) -> str:
+    """Return known links as a sentence names them: "links 2 and ground"."""
+    names = [public_name(x) for x in links]
+    if len(names) == 1:
+        return f"link {names[0]}"
+    return f"links {', '.join(names[:-1])} and {names[-1]}"
+
+
 def _pairs_text(g: Group) -> str:
     """Return a group's internal and external pairs, and its sliding ones by name.
 
     A dyad's kind names its prismatic pairs; a larger group's are listed.
     """
+    # the pairs that set the class first, in order round their contour
+    internal = (*g.basis, *(x for x in g.internal if x not in g.basis))
     text = (
-        f"{_counted('internal pair', g.internal)}; "
+        f"{_counted('internal pair', internal)}; "
         f"{_counted('external pair', g.external)} on the "
         f"{_counted('known link', g.attached_to)}"
     )
@@ -45,8 +55,9 @@ def _why(g: Group) -> str:
     k = len(g.links)
     p = len(g.internal) + len(g.external)
     return (
-        f"k = {k} links, p = {p} lower pairs: 3k = 2p = {3 * k}, so the "
-        "chain has zero mobility on the known links, and no smaller part of it does"
+        f"k = {k} links, p = {p} lower pairs: with its external pairs on the known "
+        f"links, W = 3k - 2p = {3 * k} - {2 * p} = 0, and every smaller part of it "
+        "keeps W > 0 (it cannot be split into simpler groups)"
     )
 
 
@@ -57,13 +68,17 @@ def _class_why(g: Group) -> str:
     if g.base:
         return (
             f"its base link {public_name(g.base)} carries {count} internal pairs, "
-            f"{pairs} (the class is the number of internal pairs of its most complex "
-            "link or closed contour)"
+            f"{pairs} ({CLASS_RULE})"
         )
-    return (
-        f"its internal pairs {pairs} close a contour of {count} links (the class is "
-        "the number of internal pairs of its most complex link or closed contour)"
-    )
+    return f"its internal pairs {pairs} close a contour of {count} links ({CLASS_RULE})"
+
+
+CLASS_RULE = (
+    "above class II, the class is the number of internal pairs of the most complex "
+    "closed contour they form; a base link carrying three internal pairs counts as a "
+    "contour of three"
+)
+"""What sets the class of a group of class III or higher, in the words said."""
 
 
 NUMBERS = {3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
@@ -80,11 +95,10 @@ def _apart(s: Structure) -> list[str]:
     for before, g in itertools.pairwise(s.groups):
         if set(g.attached_to).isdisjoint(before.links):
             lines.append(
-                f"  {roman(g.group_class)}({_names(g.links)}) hangs on "
-                f"{_names(g.attached_to)}, not on {roman(before.group_class)}"
-                f"({_names(before.links)}) before it: either could be attached "
-                "first (the search takes the smaller group, then the links listed "
-                "first in the file)."
+                f"  {roman(g.group_class)}({_names(g.links)}) is attached to "
+                f"{_links_text(g.attached_to)}, not to {roman(before.group_class)}"
+                f"({_names(before.links)}): the two groups could be attached in "
+                "either order."
             )
     return lines
 

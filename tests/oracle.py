@@ -1146,8 +1146,8 @@ def wittenbauer_flywheel(
     return float((top - bottom) / (upper - lower))
 
 
-def merzalov_flywheel(mech: assur.Mechanism, delta: float, count: int = 7200) -> float:
-    """The flywheel (kg m^2) for ``delta`` by Merzalov's method, as a textbook works
+def mertsalov_flywheel(mech: assur.Mechanism, delta: float, count: int = 7200) -> float:
+    """The flywheel (kg m^2) for ``delta`` by Mertsalov's method, as a textbook works
     it: the links' kinetic energy at the nominal speed, ``(J - J_c) w^2 / 2`` with
     ``J_c`` the crank's own inertia about its pivot (``J_G + m OG^2``, from the file),
     taken from the work; the swing of what is left over ``w^2 delta`` is the

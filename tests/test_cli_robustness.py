@@ -608,7 +608,8 @@ def test_a_structure_without_drivers_is_one_line(tmp_path, capsys, command):
     assert line == (
         f"assur: error: {path}: drivers: the mechanism has no driver, and W = 3*2 - "
         "2*3 - 0 = 0: "
-        "its links cannot move (a rigid structure); expected links that can move, "
+        "the chain is a statically determinate structure (a truss), not a mechanism; "
+        "expected links that can move, "
         "with a [[drivers]] entry for each degree of freedom"
     )
     assert sorted(p.name for p in tmp_path.iterdir()) == ["truss.toml"]

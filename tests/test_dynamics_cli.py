@@ -220,11 +220,12 @@ def test_startup_from_the_file_motor(capsys, tmp_path: Path):
     turned = np.interp(run_.settle_time, run_.time, run_.angle) - run_.angle[0]
     settles = f"settles in {run_.settle_time:.6g} s ({abs(turned) / 360:.3g} turns; "
     assert settles + f"{run_.turns} turns integrated)" in out
-    assert f"mean {abs(run_.mean_speed):.6g} rad/s (2 pi / period" in out
+    assert f"time-mean {abs(run_.mean_speed):.6g} rad/s (2 pi / period" in out
     # delta is over the mean of the extremes (the steady state's), which is printed
     middle = (run_.speed_max + run_.speed_min) / 2
     delta = (run_.speed_max - run_.speed_min) / middle
-    assert f"delta = {delta:.6g} (max - min over their mean, {middle:.6g} rad/s)" in out
+    over = f"(max - min over w_m = (max + min) / 2 = {middle:.6g} rad/s)"
+    assert f"delta = {delta:.6g} {over}" in out
 
 
 def test_startup_samples_to_csv_and_json(capsys, tmp_path: Path):
@@ -501,15 +502,17 @@ def test_the_motor_torque_s_sign_is_told_for_a_clockwise_crank(capsys, tmp_path)
     assert status == 0
     lines = {line[:38].strip(): line[38:].strip() for line in out.splitlines()[1:4]}
     assert lines["nominal crank speed"] == "-5 rad/s (clockwise)"
+    motor = assur.load(path).motor
     assert lines["motor torque"] == (
         f"{t.motor:.6g} N m (constant, counter-clockwise positive; it brakes: the "
-        "loads drive the crank; the steady state's, at the nominal speed; the "
-        "file's [motor] drives the start-up)"
+        "loads drive the crank; it balances the loads' work over a turn at the "
+        f"nominal 5 rad/s; the file's [motor], {motor.at(-5.0):.6g} N m at that "
+        "speed, drives the start-up alone)"
     )
     # turning counter-clockwise, the same loads take work: the motor drives
     status, out, _ = run(capsys, "dynamics", WHITWORTH, "--delta", "0.05")
     assert "(clockwise)" not in out
-    assert "N m (constant; the steady state's" in out
+    assert "N m (constant; it balances the loads' work over a turn" in out
     assert "brakes" not in out
 
 
@@ -709,15 +712,16 @@ def test_a_constant_speed_and_a_motor_s_own_speed_are_said(capsys, tmp_path):
     assert lines["crank speed"] == "constant, 50 rad/s"
     assert "largest speed" not in lines
     assert "smallest speed" not in lines
+    # the file's motor: 10 (1 - 50 / 60) N m at the nominal speed
     assert lines["motor torque"].endswith(
-        "(constant; the steady state's, at the nominal speed; the file's [motor] "
-        "drives the start-up)"
+        "(constant; it balances the loads' work over a turn at the nominal 50 rad/s; "
+        "the file's [motor], 1.66667 N m at that speed, drives the start-up alone)"
     )
     periodic = lines["periodic motion"]
     assert re.search(r"delta = [0-9.e-]+, none within the periodic speed's", periodic)
     # M (1 - w / 60) = 2 at w = 48: 4 % below the nominal speed
     assert periodic.endswith(
-        "the mean speed is -4 % from the nominal 50 rad/s, at which the steady "
+        "the time-mean speed is -4 % from the nominal 50 rad/s, at which the steady "
         "state above and its delta hold"
     )
 
@@ -761,9 +765,9 @@ def test_a_crank_angle_is_said_on_the_dial_where_it_is_past_a_turn():
 
     assert dial(0.0) == "0 deg"
     assert dial(359.5) == "359.5 deg"
-    assert dial(360.0) == "360 deg (= 0 deg)"
+    assert dial(360.0) == "360 deg (that is, 0 deg)"
     assert dial(float("nan")) == "nan deg"
-    assert dial(-30.0, "°") == "-30° (= 330°)"
+    assert dial(-30.0, "°") == "-30° (that is, 330°)"
 
 
 def test_an_angle_past_a_turn_is_said_on_the_dial_too(capsys):
@@ -771,7 +775,7 @@ def test_an_angle_past_a_turn_is_said_on_the_dial_too(capsys):
     status, _, err = run(capsys, "dynamics", EXAMPLES / "offset_slider_crank.toml")
     assert status == 2
     found = re.search(
-        r"come to rest at crank angle ([0-9.]+) deg \(= ([0-9.]+) deg\)", err
+        r"come to rest at crank angle ([0-9.]+) deg \(that is, ([0-9.]+) deg\)", err
     )
     assert found is not None
     assert float(found[1]) - 360.0 == pytest.approx(float(found[2]), abs=1e-3)
@@ -780,13 +784,13 @@ def test_an_angle_past_a_turn_is_said_on_the_dial_too(capsys):
     )
     estimates = figures(out)["classical estimates"]
     sizing = assur.flywheel_sizing(assur.load(EXAMPLES / "whitworth.toml"), 0.05)
-    assert f"Merzalov {sizing.merzalov:.6g} (+0.0167 %)" in estimates
+    assert f"Mertsalov {sizing.mertsalov:.6g} (+0.0167 %)" in estimates
     status, out, _ = run(
         capsys, "dynamics", EXAMPLES / "whitworth.toml", "--delta", "0.05", "--json"
     )
-    assert json.loads(out)["flywheel"]["merzalov"] == sizing.merzalov
+    assert json.loads(out)["flywheel"]["mertsalov"] == sizing.mertsalov
     # the smallest speed at the end of the scotch yoke's turn: 360 deg, not 4e-09
     status, out, _ = run(
         capsys, "dynamics", EXAMPLES / "scotch_yoke.toml", "--delta", "0.05"
     )
-    assert figures(out)["smallest speed"].endswith("at 360 deg (= 0 deg)")
+    assert figures(out)["smallest speed"].endswith("at 360 deg (that is, 0 deg)")

@@ -594,7 +594,8 @@ def test_leftover_links_are_named():
     assert assur.mobility(mech) == 1
     match = (
         r"^links 2, 3, 4, 5 are left over: they form no Assur group \(3k = 2p, every "
-        r"part movable\) on the known links 1, ground, because link 2 is held to the "
+        r"smaller part with 3k' - 2p' > 0\) on the known links 1, ground, because "
+        r"link 2 is held to the "
         r"known links by joints g1, j12, which fix it, and link 5 hangs on joint j45 "
         r"alone; expected every link of a group held by two joints at least, at most "
         r"one of them to a known link$"
@@ -829,8 +830,9 @@ def test_report_names_every_step():
 
 
 WHY = (
-    "Why an Assur group: k = {k} links, p = {p} lower pairs: 3k = 2p = {n}, so "
-    "the chain has zero mobility on the known links, and no smaller part of it does."
+    "Why an Assur group: k = {k} links, p = {p} lower pairs: with its external pairs "
+    "on the known links, W = 3k - 2p = {n} - {n} = 0, and every smaller part of it "
+    "keeps W > 0 (it cannot be split into simpler groups)."
 )
 
 
@@ -848,8 +850,9 @@ def test_report_of_a_triad():
     why = [line.strip() for line in report.splitlines() if "Why class" in line]
     assert why == [
         f"Why class III: its base link plate carries three internal pairs, "
-        f"{', '.join(group.basis)} (the class is the number of internal pairs of its "
-        "most complex link or closed contour)."
+        f"{', '.join(group.basis)} (above class II, the class is the number of "
+        "internal pairs of the most complex closed contour they form; a base link "
+        "carrying three internal pairs counts as a contour of three)."
     ]
 
 

@@ -2,7 +2,7 @@
 
 The freedom a chain has at its pose (the rank of its joints' velocity equations),
 seen against the count W: a passive constraint (a third parallel crank), a rigid
-triangle, three pins in line; drivers put on the wrong parts of a chain; the words of
+triangle, three pins in line; drivers put on the wrong part of a chain; the words of
 the structure report and of the note's first part.
 """
 
@@ -56,7 +56,11 @@ def test_a_third_parallel_crank_moves_though_the_count_says_rigid() -> None:
         ["A"],
     )
     assert pose_freedom(topology(skew)) == 0
-    with pytest.raises(DecompositionError, match="1 driver: the chain is rigid; exp"):
+    with pytest.raises(
+        DecompositionError,
+        match=r"1 driver: the chain is a statically determinate structure \(a truss\), "
+        "not a mechanism; exp",
+    ):
         assur.structure(skew)
 
 
@@ -138,14 +142,15 @@ def test_a_truss_without_driver_gives_its_count_worked_out() -> None:
     with pytest.raises(DecompositionError) as err:
         assur.structure(build(joints, []))
     assert str(err.value).startswith(
-        "drivers: the mechanism has no driver, and W = 3*3 - 2*6 - 0 = -3: its links "
-        "cannot move (a rigid structure)"
+        "drivers: the mechanism has no driver, and W = 3*3 - 2*6 - 0 = -3: the chain "
+        "is a statically indeterminate structure (3 redundant constraints), not a "
+        "mechanism"
     )
     # a parallelogram with a third crank and no driver moves: not called rigid
     with pytest.raises(DecompositionError) as err:
         assur.structure(build(PARALLELOGRAM + THIRD_CRANK, []))
     assert "= 0, yet the chain moves at its pose" in str(err.value)
-    assert "rigid structure" not in str(err.value)
+    assert "structure (" not in str(err.value)
     assert str(err.value).endswith(
         "expected no constraint repeated: remove the redundant link or joint, then "
         "a [[drivers]] entry for each degree of freedom"
@@ -186,13 +191,14 @@ def test_two_drivers_on_one_loop_and_none_on_another_are_named() -> None:
         assur.structure(build(first + second, ["A", "D"]))
     assert str(err.value).endswith(
         "because links 5, 6, 7 can move on the known links (3k - 2p = 1) with no "
-        "driver, while link 3 is held too much (3k - 2p = -1): the drivers are on "
-        "the wrong parts; expected one driver for each degree of freedom of each "
+        "input, while link 3 is over-constrained (3k - 2p = -1): W matches the "
+        "number of drivers, but they are placed on the wrong part; expected one "
+        "driver for each degree of freedom of each "
         "part: a driver moved to joint A2 or D2"
     )
     assert assur.structure(build(first + second, ["A", "D2"])).formula.count("II") == 2
     # a part that moves but has no joint to the frame takes no driver: the link
-    # held too much is what is named
+    # over-constrained is what is named
     between = [
         ("P", "R", ("2", "5"), (0.02, 0.1)),
         ("Q", "R", ("5", "6"), (0.06, 0.2)),
@@ -201,13 +207,13 @@ def test_two_drivers_on_one_loop_and_none_on_another_are_named() -> None:
     ]
     with pytest.raises(DecompositionError) as err:
         assur.structure(build(first + between, ["A", "D"]))
-    assert "wrong parts" not in str(err.value)
+    assert "wrong part" not in str(err.value)
     assert "link 3 is held to the known links by joints B, C" in str(err.value)
     # nor a link that hangs on one joint to the frame: it is named as such
     hanging = [("P", "R", ("ground", "5"), (0.3, 0.3))]
     with pytest.raises(DecompositionError) as err:
         assur.structure(build(first + hanging, ["A", "D"]))
-    assert "wrong parts" not in str(err.value)
+    assert "wrong part" not in str(err.value)
     assert "link 5 hangs on joint P alone" in str(err.value)
 
 
@@ -258,14 +264,17 @@ def test_groups_that_do_not_hang_on_each_other_are_said_to() -> None:
     # the ten-bar's RRP dyad (6, 7) hangs on link 2 and the frame, not on the dyad
     # (4, 5) the arrow of the formula puts before it
     text = str(assur.structure(assur.load(EXAMPLES / "tenbar.toml")))
-    said = [line.strip() for line in text.splitlines() if "before it" in line]
+    said = [line.strip() for line in text.splitlines() if "either order" in line]
     assert said == [
-        "II(6, 7) hangs on 2, ground, not on II(4, 5) before it: either could be "
-        "attached first (the search takes the smaller group, then the links listed "
-        "first in the file)."
+        "II(6, 7) is attached to links 2 and ground, not to II(4, 5): the two "
+        "groups could be attached in either order."
     ]
+    note = str(assur.explain(assur.load(EXAMPLES / "tenbar.toml"), 30.0))
+    assert "mechanism. II(6, 7) is attached to links 2 and ground, not to" in note
     # a chain where each group hangs on the one before: nothing to say
-    assert "before it" not in str(assur.structure(assur.load(EXAMPLES / "class3.toml")))
+    assert "either order" not in str(
+        assur.structure(assur.load(EXAMPLES / "class3.toml"))
+    )
 
 
 def test_a_triad_names_its_prismatic_pairs() -> None:

@@ -10,7 +10,7 @@ from assur._structure import Structure
 from assur._text import counted, noun_for, roman
 from assur.explain._note import Block, Display, Heading, Items, Para
 from assur.explain._tex import plain
-from assur.report import _class_why, _names, _pairs_text, _why
+from assur.report import _apart, _class_why, _names, _pairs_text, _why
 
 __all__ = ["structure_blocks"]
 
@@ -59,6 +59,7 @@ def structure_blocks(s: Structure) -> list[Block]:
         if g.basis:
             text += f" Why class {numeral}: {_class_why(g)}."
         items.append(plain(text))
+    apart = " ".join(plain(line.strip()) for line in _apart(s))
     blocks += [
         Para(
             f"{counted(len(s.drivers), 'driver')} for $W = {s.dof}$. The input "
@@ -69,6 +70,7 @@ def structure_blocks(s: Structure) -> list[Block]:
         Para(
             f"Structure formula: {plain(s.formula.replace(' -> ', ' → '))}; a class "
             f"{roman(s.mechanism_class)} mechanism. "
+            + (f"{apart} " if apart else "")
             + (
                 "The kinematic analysis goes through the groups in this order, the "
                 "force analysis in the reverse order, ending with the input "
