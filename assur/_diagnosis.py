@@ -260,13 +260,13 @@ def _misdriven_text(index: _Index, left: tuple[str, ...]) -> str | None:
         for i in index.incident[x]
         if GROUND in index.pairs[i].links
     ]
-    move = " or ".join(_public(tuple(frame)))
+    # a few of the joints, names cut short: the message stays one readable line
+    move = " or ".join(shortened(x, NAME_LIMIT) for x in _public(tuple(frame[:3])))
     return (
-        f"{_links_text(loose)} can move on the known links (3k - 2p = {w}) with no "
-        f"input, while {_links_text(fixed)} {'is' if len(fixed) == 1 else 'are'} "
-        f"over-constrained (3k - 2p = {less}): W matches the number of drivers, but "
-        "they are placed on the wrong part; expected one driver for each degree of "
-        f"freedom of each part: a driver moved to joint {move}"
+        f"{_links_text(loose)} can move (3k - 2p = {w}) with no input, while "
+        f"{_links_text(fixed)} {'is' if len(fixed) == 1 else 'are'} over-constrained "
+        f"(3k - 2p = {less}): the drivers are on the wrong part; expected a driver "
+        f"moved to joint {move}"
     )
 
 

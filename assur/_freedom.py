@@ -90,12 +90,11 @@ def none_text(topo: Topology, w: int) -> tuple[str, str] | None:
     if free <= 0:
         return None
     q = free - w
+    # within a line a reader takes in (the error's whole message under 400 characters)
     why = (
         f"yet the chain moves at its pose ({counted(free, 'degree', 'degrees')} of "
-        f"freedom): {q} of its constraints {'repeats' if q == 1 else 'repeat'} "
-        f"{'another' if q == 1 else 'others'}, which the count cannot see (a "
-        "passive constraint, such as a third parallel crank of a parallelogram: "
-        f"W = 3n - 2p5 - p4 + q with q = {q}), or its joints line up at this pose"
+        f"freedom): {counted(q, 'passive constraint')} (W = 3n - 2p5 - p4 + q, q = "
+        f"{q}), as a third parallel crank of a parallelogram makes, or joints in line"
     )
-    expected = "no constraint repeated: remove the redundant link or joint"
+    expected = "no repeated constraint: remove the redundant link or joint"
     return why, expected

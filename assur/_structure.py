@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from assur._diagnosis import _miscount
+from assur._diagnosis import _miscount, _parallel_text
 from assur._freedom import none_text, structure_text
 from assur._group import Group, _describe
 from assur._group_search import _attach
@@ -309,7 +309,13 @@ def no_driver(mech: Mechanism) -> str:
     w = mobility(mech)
     head = f"drivers: the mechanism has no driver, and W = {_count_text(mech, w)}"
     each = "a [[drivers]] entry for each degree of freedom"
-    moving = none_text(topology(mech), w)
+    topo = topology(mech)
+    index = _index(topo)
+    # a joint entered twice is named, as where there are drivers
+    parallel = _parallel_text(index, set(index.links))
+    if parallel is not None:
+        return f"{head}, as {parallel}; expected one joint between two links"
+    moving = none_text(topo, w)
     if moving is not None:
         return f"{head}, {moving[0]}; expected {moving[1]}, then {each}"
     return f"{head}: {structure_text(w)}; expected links that can move, with {each}"

@@ -44,12 +44,13 @@ def test_a_third_parallel_crank_moves_though_the_count_says_rigid() -> None:
     assert (
         "W = 3*4 - 2*6 - 0 = 0 degrees of freedom but 1 driver, yet the chain " in text
     )
-    assert "moves at its pose (1 degree of freedom)" in text
-    assert "W = 3n - 2p5 - p4 + q with q = 1" in text
+    assert "moves at its pose (1 degree of freedom): 1 passive constraint (W = " in text
+    assert "W = 3n - 2p5 - p4 + q, q = 1), as a third parallel crank" in text
     assert text.endswith(
-        "expected no constraint repeated: remove the redundant link or joint, then "
+        "expected no repeated constraint: remove the redundant link or joint, then "
         "one driver per degree of freedom"
     )
+    assert len(text) < 400
     # the same crank off parallel (F moved) locks the chain: rigid, as counted
     skew = build(
         [*PARALLELOGRAM, THIRD_CRANK[0], ("F", "R", ("ground", "5"), (0.13, 0.0))],
@@ -152,7 +153,7 @@ def test_a_truss_without_driver_gives_its_count_worked_out() -> None:
     assert "= 0, yet the chain moves at its pose" in str(err.value)
     assert "structure (" not in str(err.value)
     assert str(err.value).endswith(
-        "expected no constraint repeated: remove the redundant link or joint, then "
+        "expected no repeated constraint: remove the redundant link or joint, then "
         "a [[drivers]] entry for each degree of freedom"
     )
     # two cranks more than a parallelogram needs: W = -1, two constraints repeated
@@ -162,8 +163,10 @@ def test_a_truss_without_driver_gives_its_count_worked_out() -> None:
     ]
     with pytest.raises(DecompositionError) as err:
         assur.structure(build(PARALLELOGRAM + THIRD_CRANK + fourth, []))
-    assert "2 of its constraints repeat others, which the count" in str(err.value)
-    assert "W = 3n - 2p5 - p4 + q with q = 2" in str(err.value)
+    assert (
+        "(1 degree of freedom): 2 passive constraints (W = 3n - 2p5 - p4 + q, q = 2)"
+        in str(err.value)
+    )
     # a slot counted as p4 in the count worked out
     slot = dataclasses.replace(assur.load(EXAMPLES / "slot_mechanism.toml"), drivers=())
     with pytest.raises(DecompositionError) as err:
@@ -190,11 +193,9 @@ def test_two_drivers_on_one_loop_and_none_on_another_are_named() -> None:
     with pytest.raises(DecompositionError) as err:
         assur.structure(build(first + second, ["A", "D"]))
     assert str(err.value).endswith(
-        "because links 5, 6, 7 can move on the known links (3k - 2p = 1) with no "
-        "input, while link 3 is over-constrained (3k - 2p = -1): W matches the "
-        "number of drivers, but they are placed on the wrong part; expected one "
-        "driver for each degree of freedom of each "
-        "part: a driver moved to joint A2 or D2"
+        "because links 5, 6, 7 can move (3k - 2p = 1) with no input, while link 3 "
+        "is over-constrained (3k - 2p = -1): the drivers are on the wrong part; "
+        "expected a driver moved to joint A2 or D2"
     )
     assert assur.structure(build(first + second, ["A", "D2"])).formula.count("II") == 2
     # a part that moves but has no joint to the frame takes no driver: the link
