@@ -22,6 +22,7 @@ import gc
 import statistics
 import sys
 import time
+import warnings
 from collections.abc import Callable
 from pathlib import Path
 
@@ -127,6 +128,9 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="fewer repeats")
     args = parser.parse_args()
+    # chains of 500 dyads are hundreds of metres across: the size's warning (lengths
+    # in millimetres?) would break the table's rows, and says nothing of speed
+    warnings.simplefilter("ignore", assur.AssurWarning)
     repeats = 3 if args.quick else 9
     print(f"assur {assur.__version__}, Python {sys.version.split()[0]}")
     print(

@@ -110,16 +110,25 @@ def time_loop(count: int, subset: int) -> tuple[float, list[dict[str, float]]]:
 
 
 def agreement(study: object, separate: list[dict[str, float]]) -> float:
-    """Largest difference relative to the quantity's size (a mean against its RMS)."""
+    """Largest difference relative to the quantity's size (a mean against its RMS).
+
+    Values that are both NaN (an efficiency undefined in both) agree; one NaN
+    against a number, or a difference where the size is 0, is infinitely far.
+    """
     frame = study.summary  # type: ignore[attr-defined]
     worst = 0.0
     for i, want in enumerate(separate):
         for name, value in want.items():
+            got = float(frame[name].iloc[i])
+            if (math.isnan(got) and math.isnan(value)) or got == value:
+                continue
             size = abs(value)
             if name.endswith(".mean"):
                 rms = want.get(name[: -len("mean")] + "rms")
                 size = rms if rms is not None else want["driver.torque.rms"] * 200.0
-            worst = max(worst, abs(frame[name].iloc[i] - value) / size)
+            gap = abs(got - value)
+            # NaN and a number, or any gap on a size of 0: no agreement at all
+            worst = max(worst, gap / size if size > 0 and gap == gap else math.inf)
     return worst
 
 
