@@ -1124,6 +1124,20 @@ def integrate_turn(
     return np.array(t), np.array(phi), np.array(w)
 
 
+def energy_over_turn(
+    mech: assur.Mechanism, count: int
+) -> tuple[np.ndarray, np.ndarray]:
+    """The reduced inertia (kg m^2) and the work (J) from 0 deg at
+    ``count + 1`` crank angles to 360 deg: the work is the trapezoidal integral of
+    the oracle's reduced torque less its mean (a steady state's constant motor)."""
+    deg = np.arange(count + 1) * 360.0 / count
+    inertia, torque = crank_reduction(mech, deg)
+    net = torque - np.mean(torque[:-1])
+    step = math.radians(360.0 / count)
+    work = np.concatenate([[0.0], np.cumsum(0.5 * (net[1:] + net[:-1]) * step)])
+    return inertia, work
+
+
 def wittenbauer_flywheel(
     mech: assur.Mechanism, delta: float, count: int = 7200
 ) -> float:
@@ -1131,13 +1145,8 @@ def wittenbauer_flywheel(
     energy-mass diagram with the exact tangent slopes ``w_max^2 / 2`` and
     ``w_min^2 / 2``, where ``w_max, w_min = w (1 +- delta / 2)``.
 
-    The work is the trapezoidal integral of the oracle's reduced torque less its
-    mean; the tangent points are the grid's."""
-    deg = np.arange(count + 1) * 360.0 / count
-    inertia, torque = crank_reduction(mech, deg)
-    net = torque - np.mean(torque[:-1])
-    step = math.radians(360.0 / count)
-    work = np.concatenate([[0.0], np.cumsum(0.5 * (net[1:] + net[:-1]) * step)])
+    The tangent points are the grid's."""
+    inertia, work = energy_over_turn(mech, count)
     w = abs(mech.drivers[0].omega)
     upper = 0.5 * (w * (1.0 + 0.5 * delta)) ** 2
     lower = 0.5 * (w * (1.0 - 0.5 * delta)) ** 2
@@ -1152,11 +1161,7 @@ def mertsalov_flywheel(mech: assur.Mechanism, delta: float, count: int = 7200) -
     ``J_c`` the crank's own inertia about its pivot (``J_G + m OG^2``, from the file),
     taken from the work; the swing of what is left over ``w^2 delta`` is the
     constant inertia ``J_I``, the flywheel ``J_I - J_c``."""
-    deg = np.arange(count + 1) * 360.0 / count
-    inertia, torque = crank_reduction(mech, deg)
-    net = torque - np.mean(torque[:-1])
-    step = math.radians(360.0 / count)
-    work = np.concatenate([[0.0], np.cumsum(0.5 * (net[1:] + net[:-1]) * step)])
+    inertia, work = energy_over_turn(mech, count)
     w = abs(mech.drivers[0].omega)
     joint = next(j for j in mech.joints if j.name == mech.drivers[0].joint)
     crank = next(x for x in mech.links if x.name in joint.links)
