@@ -6,17 +6,58 @@ the order of the summary's columns, one process's or many partitions'.
 
 from __future__ import annotations
 
+import os
 import warnings
 from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
-from assur._study_inputs import Factory, _built
+from assur._study_inputs import Factory, _built, _variant
 from assur._text import suggest
 from assur._vec import Array, integer
 from assur.analysis import forces
 from assur.errors import AssurError, AssurWarning, UsageError
+
+
+def _tables(
+    factory: Factory,
+    parameters: dict[str, Array],
+    angles: Array,
+    chosen: Sequence[int],
+    wanted: Sequence[str] | None,
+) -> tuple[list[dict[str, Array]], list[tuple[str, ...]]]:
+    """Return the tables of the variants ``chosen`` and the columns each has.
+
+    Refused once the first table's columns are known, if all of them would not fit
+    in half the machine's memory (they are kept, then copied into one array).
+    """
+    found: list[dict[str, Array]] = []
+    every: list[tuple[str, ...]] = []
+    for i in chosen:
+        table, has = _table(factory, _variant(parameters, i), angles, wanted)
+        if has and not any(every):
+            _fits(len(chosen), angles.shape[0], len(has if wanted is None else wanted))
+        found.append(table)
+        every.append(has)
+    return found, every
+
+
+def _fits(variants: int, positions: int, columns: int) -> None:
+    """Refuse tables whose values would take more than half the machine's memory."""
+    need = 2.0 * variants * positions * columns * 8.0
+    try:
+        have = float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
+    except (AttributeError, ValueError, OSError):  # no such count here: not checked
+        return
+    if need > 0.5 * have:
+        msg = (
+            f"variants: {variants} tables of {positions} positions x {columns} "
+            f"columns would take {need / 1e9:.3g} GB, more than half this machine's "
+            f"{have / 1e9:.3g} GB; expected fewer variants (variants=[...]) or "
+            "columns (columns=[...])"
+        )
+        raise UsageError(msg)
 
 
 def _table(

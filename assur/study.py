@@ -49,7 +49,7 @@ from assur._study_stacks import (
     _template,
     told,
 )
-from assur._study_tables import _chosen, _known, _names, _table, ordered
+from assur._study_tables import _chosen, _known, _names, _tables, ordered
 from assur._variants import Template, compile_many, form, numbers
 from assur._vec import Array
 from assur.errors import AssurError, AssurWarning
@@ -126,21 +126,18 @@ class Study:
         Raises
         ------
         UsageError
-            For a variant number that is not one of the study's, or a column that
-            none of the variants analysed has.
+            For a variant number that is not one of the study's, a column that
+            none of the variants analysed has, or tables that would take more than
+            half the machine's memory.
         ImportError
             When xarray is not installed.
         """
         xr = _optional("xarray")
         chosen = _chosen(variants, len(self))
         wanted = None if columns is None else list(columns)
-        found: list[dict[str, Array]] = []
-        every: list[tuple[str, ...]] = []
-        for i in chosen:
-            p = _variant(self.parameters, i)
-            table, has = _table(self.factory, p, self.angles, wanted)
-            found.append(table)
-            every.append(has)
+        found, every = _tables(
+            self.factory, self.parameters, self.angles, chosen, wanted
+        )
         names = _names(every) if wanted is None else _known(wanted, every)
         data = np.full((len(chosen), self.angles.shape[0], len(names)), np.nan)
         for row, table in enumerate(found):

@@ -934,3 +934,30 @@ def test_the_refused_positions_name_the_first_variant_and_the_shapes_expected():
         "angles: shape (12, 2) for variants of 1 driver (the first: crank=0.07); "
         "expected (n,) or (n, 1), the same for every variant"
     )
+
+
+def test_tables_that_would_not_fit_in_memory_are_refused(monkeypatch):
+    pytest.importorskip("xarray")
+    from assur import _study_tables
+
+    # a machine of 1 MB: the tables of 20 variants (360 positions, 109 columns,
+    # twice over: 12.6 MB) are refused after the first variant, not built
+    monkeypatch.setattr(
+        _study_tables.os, "sysconf", lambda key: 256 if "PHYS" in key else 4096
+    )
+    built = []
+
+    def counting(rod: float) -> assur.Mechanism:
+        built.append(rod)
+        return catalog.slider_crank(rod=rod)
+
+    study = assur.sweep(counting, {"rod": np.full(20, 0.2)}, np.arange(360.0))
+    built.clear()
+    with pytest.raises(
+        assur.UsageError, match=r"^variants: 20 tables of 360 positions"
+    ):
+        study.tables()
+    assert len(built) == 1
+    # two variants, two columns: they fit
+    found = study.tables([0, 1], columns=["driver.torque", "B.F"])
+    assert found["values"].shape == (2, 360, 2)
