@@ -20,6 +20,8 @@ from assur._topology import Pair, Topology, _component, _Index, _index, _public
 from assur.model import GROUND, Mechanism
 
 PER_FREEDOM = "one driver per degree of freedom"
+LINE = 400
+"""Most characters of an error's message: one line a reader takes in."""
 
 
 def _miscount(topo: Topology, w: int, mech: Mechanism) -> tuple[str, str]:
@@ -35,6 +37,10 @@ def _miscount(topo: Topology, w: int, mech: Mechanism) -> tuple[str, str]:
     if parallel is not None:
         return f", as {parallel}", PER_FREEDOM
     if w <= 0:
+        # a part apart from the frame moves as a whole, whatever the count says
+        unjoined = unjoined_text(index)
+        if unjoined is not None:
+            return unjoined
         moving = none_text(topo, w)
         if moving is not None:
             why, expected = moving
@@ -47,16 +53,24 @@ def _miscount(topo: Topology, w: int, mech: Mechanism) -> tuple[str, str]:
     return "", PER_FREEDOM
 
 
-def _loose_text(index: _Index, mech: Mechanism) -> tuple[str, str] | None:
-    """Return the links not joined to the frame, or else those on one joint alone."""
+def unjoined_text(index: _Index) -> tuple[str, str] | None:
+    """Return the links no chain of joints joins to the frame; what was expected."""
     joined = _component(index, GROUND)
     apart = [x for x in index.links if x not in joined]
-    if apart:
-        return (
-            f", as {_links_text(apart)} {'is' if len(apart) == 1 else 'are'} joined "
-            "to the frame by no chain of joints",
-            "every link joined to the frame through joints",
-        )
+    if not apart:
+        return None
+    return (
+        f", as {_links_text(apart)} {'is' if len(apart) == 1 else 'are'} joined "
+        "to the frame by no chain of joints",
+        "every link joined to the frame through joints",
+    )
+
+
+def _loose_text(index: _Index, mech: Mechanism) -> tuple[str, str] | None:
+    """Return the links not joined to the frame, or else those on one joint alone."""
+    unjoined = unjoined_text(index)
+    if unjoined is not None:
+        return unjoined
     drivers = {d.joint for d in mech.drivers}
     driven = {x for p in index.pairs if p.name in drivers for x in p.links}
     # a link on one joint to the frame is a crank that a driver may take: not named
@@ -182,10 +196,12 @@ def _leftover(
     ``largest`` is the most links the search gives a group.
     """
     left = tuple(name for name in index.links if name in unknown)
+    # a few names of each, cut short: the reason that follows must fit the line too
+    shown = [shortened(x, NAME_LIMIT) for x in _public(left)]
     head = (
-        f"links {listing(_public(left))} are left over: they form no Assur group "
+        f"links {listing(shown)} are left over: they form no Assur group "
         "(3k = 2p, every smaller part with 3k' - 2p' > 0) on the known links "
-        f"{listing(sorted(known))}"
+        f"{listing([shortened(x, NAME_LIMIT) for x in sorted(known)])}"
     )
     # two joints between known links (the frame and an input link) do not stop a
     # group by themselves, but the joint entered twice is missing from the chain
@@ -210,7 +226,13 @@ def _leftover(
         )
     misdriven = _misdriven_text(index, left)
     if misdriven is not None:
-        return f"{head}, because {misdriven}"
+        if len(head) + len(misdriven) < LINE - 10:
+            return f"{head}, because {misdriven}"
+        # long names: the parts counted, not named, so the line stays one to read
+        return (
+            f"{len(left)} links are left over, in no Assur group on the "
+            f"{len(known)} known links, because {_misdriven_text(index, left, True)}"
+        )
     misheld = _misheld_text(index, left, known)
     if misheld is not None:
         return f"{head}, because {misheld}"
@@ -226,12 +248,15 @@ def _leftover(
     return f"{head}; expected a chain made of Assur groups"
 
 
-def _misdriven_text(index: _Index, left: tuple[str, ...]) -> str | None:
+def _misdriven_text(
+    index: _Index, left: tuple[str, ...], brief: bool = False
+) -> str | None:
     """Return a part left over that moves with no driver beside one held too much.
 
     The count W matched the drivers, so a part of the links left over with freedom
     on the known links (3k - 2p > 0) beside one with less than none says that the
-    drivers sit on the wrong part: two on one loop, none on another.
+    drivers sit on the wrong part: two on one loop, none on another. ``brief``:
+    the parts' links counted, not named.
     """
     unknown = set(left)
     parts: list[tuple[list[str], int]] = []
@@ -254,19 +279,31 @@ def _misdriven_text(index: _Index, left: tuple[str, ...]) -> str | None:
     if not free or not held:
         return None
     (loose, w), (fixed, less) = free[0], held[0]
+    # joints a driver may take: to the frame, neither a slot's nor its pin's
     frame = [
-        index.pairs[i].name
+        p.name
         for x in loose
-        for i in index.incident[x]
-        if GROUND in index.pairs[i].links
+        for p in (index.pairs[i] for i in index.incident[x])
+        if GROUND in p.links
+        and not p.virtual
+        and not any(y.endswith("~block") for y in p.links)
     ]
+    if not frame:
+        return None
     # a few of the joints, names cut short: the message stays one readable line
     move = " or ".join(shortened(x, NAME_LIMIT) for x in _public(tuple(frame[:3])))
+    if brief:
+        return (
+            f"{len(loose)} of them can move (3k - 2p = {w}) with no input, while "
+            f"{len(fixed)} {'is' if len(fixed) == 1 else 'are'} over-constrained "
+            f"(3k - 2p = {less}): the drivers are on the wrong part; expected a "
+            f"driver moved to joint {move}"
+        )
     return (
-        f"{_links_text(loose)} can move (3k - 2p = {w}) with no input, while "
-        f"{_links_text(fixed)} {'is' if len(fixed) == 1 else 'are'} over-constrained "
-        f"(3k - 2p = {less}): the drivers are on the wrong part; expected a driver "
-        f"moved to joint {move}"
+        f"{_links_text(loose, limit=3)} can move (3k - 2p = {w}) with no input, while "
+        f"{_links_text(fixed, limit=3)} {'is' if len(fixed) == 1 else 'are'} "
+        f"over-constrained (3k - 2p = {less}): the drivers are on the wrong part; "
+        f"expected a driver moved to joint {move}"
     )
 
 
@@ -322,10 +359,14 @@ def _sliding_text(loop: list[Pair], known: set[str]) -> str:
     )
 
 
-def _links_text(names: Sequence[str], adjective: str = "") -> str:
-    """Return "link a" or "links a, b" (as a reader sees them)."""
+def _links_text(names: Sequence[str], adjective: str = "", limit: int = 6) -> str:
+    """Return "link a" or "links a, b" (as a reader sees them).
+
+    At most ``limit`` names, each cut short: the message stays one readable line.
+    """
     noun = "link" if len(names) == 1 else "links"
-    return f"{adjective}{noun} {listing(_public(tuple(names)))}"
+    shown = [shortened(x, NAME_LIMIT) for x in _public(tuple(names))]
+    return f"{adjective}{noun} {listing(shown, limit)}"
 
 
 def _parallel_text(index: _Index, unknown: set[str]) -> str | None:

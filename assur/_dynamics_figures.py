@@ -131,7 +131,8 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
         failed = [label for k, label in names.items() if not getattr(sizing, k) >= 0]
         if failed:
             good.append(
-                f"{' and '.join(failed)} none (below zero this close to the "
+                f"{', '.join(failed[:-1]) + ' and ' if failed[1:] else ''}{failed[-1]} "
+                "none (below zero this close to the "
                 "mechanism's own delta)"
             )
         lines.insert(2, ("classical estimates", ", ".join(good)))
@@ -187,8 +188,8 @@ def _startup_lines(run: Any, result: Any = None) -> list[tuple[str, str]]:
 def _run_delta(value: float) -> str:
     """Return a periodic motion's delta: none where the integration cannot tell it.
 
-    The periodic speed is found to ``PERIODIC_RTOL`` of itself: a fluctuation ten
-    times smaller than that is the integration's, not the machine's.
+    The periodic speed is found to ``PERIODIC_RTOL`` of itself: a fluctuation below
+    ten times that is the integration's, not the machine's.
     """
     if value < 10.0 * PERIODIC_RTOL:
         return f"{value:.2g}, none within the periodic speed's tolerance"

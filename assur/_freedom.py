@@ -94,7 +94,10 @@ def none_text(topo: Topology, w: int) -> tuple[str, str] | None:
     why = (
         f"yet the chain moves at its pose ({counted(free, 'degree', 'degrees')} of "
         f"freedom): {counted(q, 'passive constraint')} (W = 3n - 2p5 - p4 + q, q = "
-        f"{q}), as a third parallel crank of a parallelogram makes, or joints in line"
+        f"{q}), such as a third parallel crank, or joints in line"
     )
-    expected = "no repeated constraint: remove the redundant link or joint"
+    expected = (
+        "no repeated constraint: remove the redundant link or joint (or move a joint "
+        "off the line)"
+    )
     return why, expected

@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._metres import QUIET
 from assur._tables import (
     Reading,
     in_turn,
@@ -115,7 +116,7 @@ def _compile(plan: Plan) -> LoadPlan:
     count = len(plan.bodies)
     mass, inertia, center = np.zeros(count), np.zeros(count), np.zeros((count, 2))
     still = _never_turning(plan)
-    for msg in massless_texts(mech):
+    for msg in [] if QUIET.get() else massless_texts(mech):
         warnings.warn(msg, AssurWarning, stacklevel=2)
     for link in mech.links:
         if not link.mass:

@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from assur._diagnosis import _miscount, _parallel_text
+from assur._diagnosis import _miscount, _parallel_text, unjoined_text
 from assur._freedom import none_text, structure_text
 from assur._group import Group, _describe
 from assur._group_search import _attach
@@ -315,6 +315,9 @@ def no_driver(mech: Mechanism) -> str:
     parallel = _parallel_text(index, set(index.links))
     if parallel is not None:
         return f"{head}, as {parallel}; expected one joint between two links"
+    unjoined = unjoined_text(index)
+    if unjoined is not None:
+        return f"{head}{unjoined[0]}; expected {unjoined[1]}"
     moving = none_text(topo, w)
     if moving is not None:
         return f"{head}, {moving[0]}; expected {moving[1]}, then {each}"

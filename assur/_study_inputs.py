@@ -109,6 +109,13 @@ def _parameters(parameters: Any) -> dict[str, Array]:
     """
     if _pandas(parameters, "DataFrame"):
         frame: Any = parameters
+        if not frame.columns.is_unique:
+            twice = next(str(c) for c in frame.columns[frame.columns.duplicated()])
+            msg = f"parameters: column {twice!r} twice in the DataFrame; expected once"
+            raise UsageError(msg)
+        if frame.empty:
+            msg = "parameters: an empty DataFrame; expected one row per variant"
+            raise UsageError(msg)
         parameters = {str(name): frame[name] for name in frame.columns}
     if not isinstance(parameters, Mapping) or not parameters:
         msg = (
@@ -195,13 +202,20 @@ def _fitting(factory: Factory, parameters: dict[str, Array], angles: Array) -> N
     """Refuse driver positions whose shape does not fit the first variant's drivers.
 
     The positions are every variant's: a shape that does not fit made each variant
-    fail alone, thousands of rows of one error after a study's whole run. A first
-    variant that cannot be built is left to the study, which records why.
+    fail alone, thousands of rows of one error after a study's whole run. The first
+    of the first three variants that builds is asked; those that cannot be built
+    are left to the study, which records why.
     """
-    p = _variant(parameters, 0)
-    try:
-        drivers = len(_built(factory, p).drivers)
-    except Exception:  # the factory's own error: the study's row says it
+    for i in range(min(3, len(next(iter(parameters.values()))))):
+        p = _variant(parameters, i)
+        try:
+            drivers = len(_built(factory, p).drivers)
+        except Exception:  # the factory's own error: the study's row says it
+            continue
+        break
+    else:  # none of the first few built: their rows say why
+        return
+    if not drivers:  # each variant fails for want of a driver, as a call does
         return
     if drivers == 1 and (angles.ndim == 1 or angles.shape[1] == 1):
         return
@@ -210,7 +224,7 @@ def _fitting(factory: Factory, parameters: dict[str, Array], angles: Array) -> N
     shape = "(n,) or (n, 1)" if drivers == 1 else f"(n, {drivers})"
     msg = (
         f"angles: shape {angles.shape} for variants of {counted(drivers, 'driver')} "
-        f"(the first: {_shown(p)}); expected {shape}, the same for every variant"
+        f"({_shown(p)}); expected {shape}, the same for every variant"
     )
     raise UsageError(msg)
 

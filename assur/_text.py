@@ -82,6 +82,8 @@ def crank_angle_text(
 
 def _dial(angle: float, written: str, shown: Callable[[float], str]) -> str:
     """Return ``angle`` (deg, in [0, 360)) with as many decimals as ``written``."""
+    if 360.0 - angle < 1.5e-6:  # a millionth below a turn: the turn itself
+        angle = 0.0
     try:
         float(written)
     except ValueError:  # a form of its own (a typographic minus): as it writes it

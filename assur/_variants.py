@@ -314,8 +314,12 @@ def compile_many(model: Template, rows: Array) -> tuple[Compiled, Mask]:
     doubtful |= _small_links(t, core, scale)
     # a variant whose size may be warned of (lengths in millimetres) is compiled on
     # its own, so that the study says so in its row as a separate call does
-    drawn = [two(key) for key in col if key[0] in ("joint", "point", "center")]
-    doubtful |= ~(_diameters(np.stack(drawn, axis=1)) * MARGIN <= LARGE)
+    # the diagonal of the points' box: never below their diameter, and O(k P) where
+    # the diameter's every pair of a long chain's points costs seconds a block
+    drawn = np.stack(
+        [two(key) for key in col if key[0] in ("joint", "point", "center")], axis=1
+    )
+    doubtful |= ~(np.hypot(*np.ptp(drawn, axis=1).T) * MARGIN <= LARGE)
     offsets = {
         p.name: (
             core[p.name] - origins[:, t.index[p.links[0]]],

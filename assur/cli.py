@@ -321,9 +321,11 @@ def _cmd_structure(args: argparse.Namespace) -> int:
     mech = load_mechanism(args.file)
     try:
         chosen = args.driver
-        if chosen and "," in chosen:
-            # "A, E" as a reader writes a list: the names without the spaces
-            chosen = [name.strip() for name in chosen.split(",")]
+        if chosen is not None:
+            # "A, E" as a reader writes a list: the names without the spaces, and
+            # no empty name of a trailing comma
+            names = [name.strip() for name in chosen.split(",") if name.strip()]
+            chosen = names if len(names) != 1 else names[0]
         s = structure(mech, chosen)
     except DriverChoiceError as err:
         # the option, not the file: named as the command line spells it

@@ -768,6 +768,8 @@ def test_a_crank_angle_is_said_on_the_dial_where_it_is_past_a_turn():
     assert dial(360.0) == "360 deg (that is, 0 deg)"
     assert dial(float("nan")) == "nan deg"
     assert dial(-30.0, "°") == "-30° (that is, 330°)"
+    # a millionth below a turn, written with an exponent: the turn, 0 on the dial
+    assert dial(-6e-7) == "-6e-07 deg (that is, 0 deg)"
 
 
 def test_an_angle_past_a_turn_is_said_on_the_dial_too(capsys):

@@ -45,10 +45,10 @@ def test_a_third_parallel_crank_moves_though_the_count_says_rigid() -> None:
         "W = 3*4 - 2*6 - 0 = 0 degrees of freedom but 1 driver, yet the chain " in text
     )
     assert "moves at its pose (1 degree of freedom): 1 passive constraint (W = " in text
-    assert "W = 3n - 2p5 - p4 + q, q = 1), as a third parallel crank" in text
+    assert "W = 3n - 2p5 - p4 + q, q = 1), such as a third parallel crank" in text
     assert text.endswith(
-        "expected no repeated constraint: remove the redundant link or joint, then "
-        "one driver per degree of freedom"
+        "expected no repeated constraint: remove the redundant link or joint (or "
+        "move a joint off the line), then one driver per degree of freedom"
     )
     assert len(text) < 400
     # the same crank off parallel (F moved) locks the chain: rigid, as counted
@@ -153,8 +153,9 @@ def test_a_truss_without_driver_gives_its_count_worked_out() -> None:
     assert "= 0, yet the chain moves at its pose" in str(err.value)
     assert "structure (" not in str(err.value)
     assert str(err.value).endswith(
-        "expected no repeated constraint: remove the redundant link or joint, then "
-        "a [[drivers]] entry for each degree of freedom"
+        "expected no repeated constraint: remove the redundant link or joint (or "
+        "move a joint off the line), then a [[drivers]] entry for each degree of "
+        "freedom"
     )
     # two cranks more than a parallelogram needs: W = -1, two constraints repeated
     fourth = [
@@ -223,6 +224,11 @@ def test_the_driver_option_takes_a_list_with_spaces(capsys) -> None:
     drivers = [d.joint for d in assur.load(path).drivers]
     assert main(["structure", "--driver", ", ".join(drivers), str(path)]) == 0
     assert "Structure of" in capsys.readouterr().out
+    # a trailing comma or a space around one name: the name alone
+    four_bar = str(EXAMPLES / "four_bar.toml")
+    for given in ("O2,", " O2 "):
+        assert main(["structure", "--driver", given, four_bar]) == 0
+        assert "driven through pair O2" in capsys.readouterr().out
 
 
 def test_an_unknown_driver_lists_the_joints_with_the_frame(capsys) -> None:
@@ -306,3 +312,73 @@ def test_a_triad_names_its_prismatic_pairs() -> None:
     assert "sliding_pairs" not in str(
         assur.structure(assur.catalog.slider_crank()).to_dict()
     )
+
+
+LOOP_WITH_SLOT = [
+    ("G5", "R", ("ground", "5"), (1.0, 0.0)),
+    ("H", "R", ("5", "6"), (1.0, 0.1)),
+    ("S", "S", ("ground", "6"), (1.2, 0.1), (1.0, 0.0)),
+]
+
+
+def test_drivers_on_the_wrong_part_name_no_slot_as_a_driver() -> None:
+    # a slot (or its pin) to the frame cannot take a driver: the pin joint G5 can
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(build(PARALLELOGRAM + LOOP_WITH_SLOT, ["A", "D"]))
+    assert str(err.value).endswith("expected a driver moved to joint G5")
+    # names of 60 characters: the parts are counted, and the line stays short
+    long = "x" * 60
+
+    def named(joints):
+        return [
+            (
+                j + long,
+                kind,
+                tuple(x if x == "ground" else x + long for x in links),
+                *rest,
+            )
+            for j, kind, links, *rest in joints
+        ]
+
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(
+            build(named(PARALLELOGRAM + LOOP_WITH_SLOT), ["A" + long, "D" + long])
+        )
+    text = str(err.value)
+    assert len(text) < 400
+    assert text.startswith("4 links are left over, in no Assur group on the 3 known")
+    assert "3 of them can move (3k - 2p = 1) with no input, while 1 is over-" in text
+
+
+def test_a_part_apart_from_the_frame_is_named_before_a_passive_constraint() -> None:
+    # a triangle on the frame and four links braced to each other but to nothing
+    # else: W = 0 by the count; it was "3 passive constraints, remove a link"
+    apart = [
+        ("A", "R", ("ground", "2"), (0.0, 0.0)),
+        ("B", "R", ("2", "3"), (0.1, 0.1)),
+        ("C", "R", ("ground", "3"), (0.2, 0.0)),
+        ("P", "R", ("4", "5"), (1.0, 0.0)),
+        ("Q", "R", ("5", "6"), (1.1, 0.1)),
+        ("U", "R", ("6", "7"), (1.2, 0.0)),
+        ("V", "R", ("7", "4"), (1.1, -0.1)),
+        ("X", "R", ("4", "6"), (1.05, 0.05)),
+        ("Y", "R", ("5", "7"), (1.15, 0.05)),
+    ]
+    mech = build(apart, [])
+    assert assur.mobility(mech) == 0
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(mech)
+    assert str(err.value).endswith(
+        ", as links 4, 5, 6, 7 are joined to the frame by no chain of joints; "
+        "expected every link joined to the frame through joints"
+    )
+    # three pins in line: moving a joint off the line is said as the remedy too
+    in_line = [
+        ("A", "R", ("ground", "2"), (0.0, 0.0)),
+        ("B", "R", ("2", "3"), (0.1, 0.0)),
+        ("C", "R", ("ground", "3"), (0.2, 0.0)),
+    ]
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(build(in_line, []))
+    assert "or joints in line; expected no repeated constraint" in str(err.value)
+    assert "(or move a joint off the line)" in str(err.value)

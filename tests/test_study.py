@@ -208,6 +208,12 @@ def test_pandas_samples_are_paired_by_position_or_refused():
     }
     with pytest.raises(assur.UsageError, match="have different indexes"):
         assur.sweep(catalog.slider_crank, shuffled, angles)
+    # a DataFrame without rows, or with a column twice, is said to be one
+    with pytest.raises(assur.UsageError, match=r"^parameters: an empty DataFrame"):
+        assur.sweep(catalog.slider_crank, samples.iloc[:0], angles)
+    twice = pd.concat([samples, samples[["rod"]]], axis=1)
+    with pytest.raises(assur.UsageError, match=r"^parameters: column 'rod' twice"):
+        assur.sweep(catalog.slider_crank, twice, angles)
 
 
 def test_the_refused_names_are_documented():
@@ -927,11 +933,23 @@ def test_positions_that_fit_no_variant_are_refused_before_the_run(
     assert len(built) == 1
 
 
+def test_positions_are_checked_against_a_variant_that_builds():
+    # the first variant's factory fails: the second is asked instead of none
+    def factory(crank: float) -> assur.Mechanism:
+        if crank < 0:
+            msg = "no such crank"
+            raise ValueError(msg)
+        return catalog.slider_crank(crank=crank)
+
+    with pytest.raises(assur.UsageError, match=r"1 driver \(crank=0.07\)"):
+        assur.sweep(factory, {"crank": [-1.0, 0.07, 0.08]}, np.zeros((12, 2)))
+
+
 def test_the_refused_positions_name_the_first_variant_and_the_shapes_expected():
     with pytest.raises(assur.UsageError) as err:
         assur.sweep(catalog.slider_crank, {"crank": [0.07, 0.08]}, np.zeros((12, 2)))
     assert str(err.value) == (
-        "angles: shape (12, 2) for variants of 1 driver (the first: crank=0.07); "
+        "angles: shape (12, 2) for variants of 1 driver (crank=0.07); "
         "expected (n,) or (n, 1), the same for every variant"
     )
 
@@ -961,3 +979,36 @@ def test_tables_that_would_not_fit_in_memory_are_refused(monkeypatch):
     # two variants, two columns: they fit
     found = study.tables([0, 1], columns=["driver.torque", "B.F"])
     assert found["values"].shape == (2, 360, 2)
+
+
+def test_a_study_leaves_other_threads_warnings_alone():
+    # the compilations' warnings were silenced by a warnings filter, the whole
+    # process's: another thread's warnings were lost while a study ran (94 of 257)
+    import threading
+
+    sent: list[int] = []
+    shown: list[str] = []
+    stop = threading.Event()
+
+    def warner() -> None:
+        while not stop.is_set():
+            warnings.warn("from another thread", assur.AssurWarning, stacklevel=1)
+            sent.append(1)
+            stop.wait(0.001)
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("always")
+        warnings.showwarning = lambda message, *args, **kwargs: shown.append(
+            str(message)
+        )
+        thread = threading.Thread(target=warner)
+        thread.start()
+        try:
+            cranks = np.linspace(0.05, 0.07, 2000)
+            angles = np.arange(0.0, 360.0, 10.0)
+            assur.sweep(catalog.slider_crank, {"crank": cranks}, angles)
+        finally:
+            stop.set()
+            thread.join()
+    assert sent
+    assert len(shown) == len(sent)

@@ -99,6 +99,9 @@ def _figures_html(result: Any) -> str:
         ),
         ("energy swing", f"{number(result.energy_swing)} J"),
     ]
+    if not result.speed_max > result.speed_min:
+        # nothing varies over the turn: no place of the largest or smallest speed
+        rows[3:5] = [("crank speed", f"constant, {number(abs(result.omega))} rad/s")]
     cells = "".join(
         f"<tr><th>{escape(k)}</th><td>{escape(v)}</td></tr>" for k, v in rows
     )
