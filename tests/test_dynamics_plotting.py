@@ -59,6 +59,9 @@ def test_the_tangents_touch_the_energy_mass_curve(which):
     assert np.max(gap) <= 1e-9 * t.energy_swing
     assert np.max(gap) >= -2e-4 * t.energy_swing  # touches, on a 0.25 deg grid
     assert len(ax.lines) == 4
+    # the legend gives the tangent's speed with its unit
+    name = "max" if which == 2 else "min"
+    assert ax.lines[which].get_label() == f"tangent ω {name} = {speed:.5g} rad/s"
 
 
 def test_the_start_up_picture():

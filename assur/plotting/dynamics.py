@@ -213,7 +213,7 @@ def plot_energy_mass(result: Dynamics, ax: Any = None) -> Any:
             color=color,
             lw=1.0,
             ls="--",
-            label=f"tangent ω {name} = {speed:.5g}",
+            label=f"tangent ω {name} = {speed:.5g} rad/s",
         )
     low, high = float(work.min()), float(work.max())
     pad = 0.2 * max(high - low, 1e-12 * max(abs(high), 1.0))
