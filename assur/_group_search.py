@@ -11,7 +11,8 @@ import functools
 import heapq
 from collections.abc import Iterator
 
-from assur._diagnosis import _leftover, _Rigid, _sliding_loop
+from assur._diagnosis import _Rigid, _sliding_loop
+from assur._leftover import _leftover
 from assur._topology import Pair, _component, _Index
 from assur.errors import DecompositionError
 

@@ -43,6 +43,7 @@ RANKS = {
     # _group_search, _group -> _structure (the cycle check keeps them apart)
     "assur._topology": 2,
     "assur._diagnosis": 2,
+    "assur._leftover": 2,
     "assur._freedom": 2,
     "assur._group_search": 2,
     # one group found by the search, classified
