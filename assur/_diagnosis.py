@@ -17,7 +17,15 @@ from assur._checks import _coincide
 from assur._freedom import none_text, structure_text
 from assur._points import resolve_point
 from assur._text import NAME_LIMIT, listing, public_name, shortened
-from assur._topology import Pair, Topology, _component, _Index, _index, _public
+from assur._topology import (
+    Pair,
+    Topology,
+    _component,
+    _Index,
+    _index,
+    _public,
+    topology,
+)
 from assur.model import GROUND, Mechanism
 
 PER_FREEDOM = "one driver per degree of freedom"
@@ -248,3 +256,32 @@ def _parallel_reason(index: _Index, first: Pair, second: Pair) -> str:
             "rigid body"
         )
     return "a revolute and a prismatic pair together weld the links into one rigid body"
+
+
+def no_driver(mech: Mechanism, w: int) -> str:
+    """Return the error of a file with no driver whose count ``w`` is 0 or less.
+
+    Its links cannot move (a rigid structure), or a constraint repeats another,
+    which the count cannot see.
+    """
+    head = f"drivers: the mechanism has no driver, and W = {count_text(mech, w)}"
+    each = "a [[drivers]] entry for each degree of freedom"
+    topo = topology(mech)
+    index = _index(topo)
+    # a joint entered twice is named, as where there are drivers
+    parallel = _parallel_text(index, set(index.links))
+    if parallel is not None:
+        return f"{head}, as {parallel}; expected one joint between two links"
+    unjoined = unjoined_text(index)
+    if unjoined is not None:
+        return f"{head}{unjoined[0]}; expected {unjoined[1]}"
+    moving = none_text(topo, w)
+    if moving is not None:
+        return f"{head}, {moving[0]}; expected {moving[1]}, then {each}"
+    return f"{head}: {structure_text(w)}; expected links that can move, with {each}"
+
+
+def count_text(mech: Mechanism, w: int) -> str:
+    """Return the count of degrees of freedom worked out: ``3*n - 2*p5 - p4 = W``."""
+    p4 = sum(j.kind == "slot" for j in mech.joints)
+    return f"3*{len(mech.links)} - 2*{len(mech.joints) - p4} - {p4} = {w}"

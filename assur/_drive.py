@@ -43,10 +43,12 @@ def _no_driver(plan: Plan) -> ModelError:
     Such a file passes the count of degrees of freedom only when it has none (a
     rigid chain, whose groups stand on the frame): a driver would not help it.
     """
-    from assur._structure import mobility, no_driver
+    from assur._diagnosis import no_driver
+    from assur._structure import mobility
 
-    if mobility(plan.mechanism) <= 0:
-        msg = no_driver(plan.mechanism)
+    w = mobility(plan.mechanism)
+    if w <= 0:
+        msg = no_driver(plan.mechanism, w)
     else:
         msg = "drivers: the mechanism has no driver; expected a [[drivers]] entry"
     return ModelError(msg)

@@ -14,8 +14,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from assur._diagnosis import _miscount, _parallel_text, unjoined_text
-from assur._freedom import none_text, structure_text
+from assur._diagnosis import _miscount, count_text, no_driver
 from assur._group import Group, _describe
 from assur._group_search import _attach
 from assur._text import counted, describe, noun_for, roman, suggest
@@ -277,7 +276,7 @@ def structure(
     if not mech.drivers and mobility(mech) <= 0:
         # a rigid chain on the frame (a truss) decomposes into groups, but it is a
         # structure, not a mechanism: it has no input and no class
-        raise DecompositionError(no_driver(mech))
+        raise DecompositionError(no_driver(mech, mobility(mech)))
     try:
         drivers, groups, topo = decompose(mech)
     except DecompositionError as err:
@@ -298,36 +297,6 @@ def structure(
         groups,
         topo.slots,
     )
-
-
-def no_driver(mech: Mechanism) -> str:
-    """Return the error of a file with no driver whose count W is 0 or less.
-
-    Its links cannot move (a rigid structure), or a constraint repeats another,
-    which the count cannot see.
-    """
-    w = mobility(mech)
-    head = f"drivers: the mechanism has no driver, and W = {_count_text(mech, w)}"
-    each = "a [[drivers]] entry for each degree of freedom"
-    topo = topology(mech)
-    index = _index(topo)
-    # a joint entered twice is named, as where there are drivers
-    parallel = _parallel_text(index, set(index.links))
-    if parallel is not None:
-        return f"{head}, as {parallel}; expected one joint between two links"
-    unjoined = unjoined_text(index)
-    if unjoined is not None:
-        return f"{head}{unjoined[0]}; expected {unjoined[1]}"
-    moving = none_text(topo, w)
-    if moving is not None:
-        return f"{head}, {moving[0]}; expected {moving[1]}, then {each}"
-    return f"{head}: {structure_text(w)}; expected links that can move, with {each}"
-
-
-def _count_text(mech: Mechanism, w: int) -> str:
-    """Return the count of degrees of freedom worked out: ``3*n - 2*p5 - p4 = W``."""
-    p4 = sum(j.kind == "slot" for j in mech.joints)
-    return f"3*{len(mech.links)} - 2*{len(mech.joints) - p4} - {p4} = {w}"
 
 
 def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], Topology]:
@@ -371,7 +340,7 @@ def decompose(mech: Mechanism) -> tuple[tuple[Group, ...], tuple[Group, ...], To
     if w != len(mech.drivers):
         why, expected = _miscount(topo, w, mech)
         msg = (
-            f"drivers: the mechanism has W = {_count_text(mech, w)} "
+            f"drivers: the mechanism has W = {count_text(mech, w)} "
             f"{noun_for(w, 'degree', 'degrees')} of freedom but "
             f"{counted(len(mech.drivers), 'driver')}{why}; expected {expected}"
         )

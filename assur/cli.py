@@ -286,9 +286,7 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
     for w in caught:
         if issubclass(w.category, AssurWarning):
             line = _one_line(w.message)
-            if line in told:
-                # the same notice from another of the command's sweeps (the
-                # dynamic model, its table and the forces at its motion)
+            if line in told:  # from another sweep (the dynamic model's, say)
                 continue
             told.add(line)
             print(f"assur: warning: {source}: {line}", file=sys.stderr)
@@ -321,9 +319,7 @@ def _cmd_structure(args: argparse.Namespace) -> int:
     mech = load_mechanism(args.file)
     try:
         chosen = args.driver
-        if chosen is not None:
-            # "A, E" as a reader writes a list: the names without the spaces, and
-            # no empty name of a trailing comma
+        if chosen is not None:  # "A, E" as a reader writes it; no name of a comma
             names = [name.strip() for name in chosen.split(",") if name.strip()]
             chosen = names if len(names) != 1 else names[0]
         s = structure(mech, chosen)

@@ -341,18 +341,16 @@ class Table(Columns):
         supply, and, negative, the most they take back; with several, each one's
         own too: ``J.power.mean``, ``J.power.max``, ``J.power.min``, J its
         joint); for every sliding pair J also ``J.M.max``, the largest couple of
-        its reaction (N m), and ``J.M.at``; the largest
-        shaking force ``shaking.F.max`` (N, the size of ``shaking.Fx``,
-        ``shaking.Fy``) and moment ``shaking.M.max`` (N m, its size), with
-        ``shaking.F.at`` and ``shaking.M.at`` (a couple or shaking load that is
-        zero but for round-off is 0, at the first position). With friction also
-        ``J.friction.loss``, the mean power lost in joint J (W), ``friction.loss``
-        in all,
+        its reaction (N m), and ``J.M.at``; the largest shaking force
+        ``shaking.F.max`` (N, the size of ``shaking.Fx``, ``shaking.Fy``) and
+        moment ``shaking.M.max`` (N m, its size), with ``shaking.F.at`` and
+        ``shaking.M.at`` (a couple or shaking load that is zero but for round-off
+        is 0, at the first position). With friction also ``J.friction.loss``, the
+        mean power lost in joint J (W), ``friction.loss`` in all,
         ``driver.power_ideal.mean`` without friction and ``efficiency``,
         ``driver.power_ideal.mean`` over ``driver.power.mean``: the share of the
-        driver's work that reaches the loads
-        (NaN where the driver does no net work, or the loads give back work it still
-        supplies).
+        driver's work that reaches the loads (NaN where the driver does no net
+        work, or the loads give back work it still supplies).
 
         A table made with ``columns=`` summarises the joints and drivers among its
         columns only (``columns=["driver.torque"]`` gives the driver's figures,
