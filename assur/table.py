@@ -125,12 +125,8 @@ class Table(Columns):
 
     def _freeze(self) -> None:
         """Make the states' arrays read-only, once (when first handed out)."""
-        kept = [
-            self._kept,
-            self._kept_forces,
-            *(s for pair in self._whole for s in pair),
-        ]
-        for state in kept:
+        whole = (s for pair in self._whole for s in pair)
+        for state in (self._kept, self._kept_forces, *whole):
             if isinstance(state, KinematicState):
                 motion = (state.drive, state.speed, state.acceleration, state.motion)
                 freeze((*motion, state.slide, state.jerk))
@@ -266,8 +262,7 @@ class Table(Columns):
         return self._cache[name]
 
     def __repr__(self) -> str:
-        # the dataclass's repr spelt out every state array: 20 000 characters for
-        # two rows, in a notebook's cell
+        # the dataclass's repr spelt out every state array (20 000 characters)
         kind = "forces" if self.force_state is not None else "kinematics"
         name = self.plan.mechanism.name or "mechanism"
         rows = "1 row" if len(self) == 1 else f"{len(self)} rows"
