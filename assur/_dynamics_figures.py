@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from assur._startup_turns import PERIODIC_RTOL
-from assur._text import crank_angle_text, number_text
+from assur._text import crank_angle_text, number_text, spoken
 
 
 def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
@@ -131,8 +131,7 @@ def _figures(result: Any, sizing: Any, run: Any) -> str:
         failed = [label for k, label in names.items() if not getattr(sizing, k) >= 0]
         if failed:
             good.append(
-                f"{', '.join(failed[:-1]) + ' and ' if failed[1:] else ''}{failed[-1]} "
-                "none (below zero this close to the "
+                f"{spoken(failed)} none (below zero this close to the "
                 "mechanism's own delta)"
             )
         lines.insert(2, ("classical estimates", ", ".join(good)))

@@ -25,6 +25,7 @@ __all__ = [
     "position_title",
     "roman",
     "shortened",
+    "spoken",
     "suggest",
 ]
 
@@ -95,6 +96,19 @@ def _dial(angle: float, written: str, shown: Callable[[float], str]) -> str:
     if float(dial) >= 360.0:  # 359.9996 to three places is a whole turn
         return "0"
     return dial.rstrip("0").rstrip(".") if "." in dial else dial
+
+
+def spoken(items: Sequence[str]) -> str:
+    """Return items as a sentence lists them: the last after "and".
+
+    Examples
+    --------
+    >>> spoken(["a"]), spoken(["a", "b"]), spoken(["a", "b", "c"])
+    ('a', 'a and b', 'a, b and c')
+    """
+    if len(items) < 2:
+        return "".join(items)
+    return f"{', '.join(items[:-1])} and {items[-1]}"
 
 
 def counted(count: int, noun: str, plural: str | None = None) -> str:

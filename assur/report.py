@@ -9,7 +9,7 @@ from __future__ import annotations
 import itertools
 from typing import TYPE_CHECKING
 
-from assur._text import counted, public_name, roman
+from assur._text import counted, public_name, roman, spoken
 
 if TYPE_CHECKING:
     from assur._structure import Group, Structure
@@ -28,10 +28,8 @@ def _counted(noun: str, items: tuple[str, ...]) -> str:
 
 def _links_text(links: tuple[str, ...]) -> str:
     """Return known links as a sentence names them: "links 2 and ground"."""
-    names = [public_name(x) for x in links]
-    if len(names) == 1:
-        return f"link {names[0]}"
-    return f"links {', '.join(names[:-1])} and {names[-1]}"
+    noun = "link" if len(links) == 1 else "links"
+    return f"{noun} {spoken([public_name(x) for x in links])}"
 
 
 def _pairs_text(g: Group) -> str:
