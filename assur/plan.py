@@ -166,7 +166,7 @@ def compile_plan(mech: Mechanism) -> Plan:
             float(p.radius),
         )
     scale = _diameter(np.array(list(pair_at.values())))
-    drawn = _diameter(np.array(_drawn(mech, topo)))
+    drawn = drawn_size(mech, topo)
     _near_enough(topo, drawn)
     _big_enough(topo, pair_at, scale)
     metres(drawn)
@@ -208,12 +208,14 @@ FAR = 1e7
 coordinates then keep nine significant digits of its shape."""
 
 
-def drawn_size(mech: Mechanism) -> float:
+def drawn_size(mech: Mechanism, topo: Topology | None = None) -> float:
     """Return the size of ``mech`` as its file draws it (m): the diameter of its points.
 
-    The size :func:`compile_plan` reads for its warning of lengths in millimetres.
+    The size :func:`compile_plan` reads for its warning of lengths in millimetres;
+    ``topo``, the mechanism's topology where it is at hand.
     """
-    return _diameter(np.array(_drawn(mech, topology(mech))))
+    at = _drawn(mech, topology(mech) if topo is None else topo)
+    return _diameter(np.array(at))
 
 
 def _drawn(mech: Mechanism, topo: Topology) -> list[Array]:
