@@ -59,27 +59,24 @@ def structure_blocks(s: Structure) -> list[Block]:
         if g.basis:
             text += f" Why class {numeral}: {_class_why(g)}."
         items.append(plain(text))
-    apart = " ".join(plain(line.strip()) for line in _apart(s))
+    inputs = "input link" if len(s.drivers) == 1 else "input links"
+    order = (
+        "The kinematic analysis goes through the groups in this order, the force "
+        f"analysis in the reverse order, ending with the {inputs}."
+        if s.groups
+        else f"With no Assur group, the kinematic and the force analysis take the "
+        f"{inputs} alone."
+    )
+    apart = "".join(f"{plain(line.strip())} " for line in _apart(s))
     blocks += [
         Para(
-            f"{counted(len(s.drivers), 'driver')} for $W = {s.dof}$. The input "
-            f"{'link' if len(s.drivers) == 1 else 'links'} and the Assur groups, in "
-            "order of attachment:"
+            f"{counted(len(s.drivers), 'driver')} for $W = {s.dof}$. The {inputs} "
+            "and the Assur groups, in order of attachment:"
         ),
         Items(tuple(items)),
         Para(
             f"Structure formula: {plain(s.formula.replace(' -> ', ' → '))}; a class "
-            f"{roman(s.mechanism_class)} mechanism. "
-            + (f"{apart} " if apart else "")
-            + (
-                "The kinematic analysis goes through the groups in this order, the "
-                "force analysis in the reverse order, ending with the input "
-                + ("link." if len(s.drivers) == 1 else "links.")
-                if s.groups
-                else "With no Assur group, the kinematic and the force analysis "
-                "take the input "
-                + ("link alone." if len(s.drivers) == 1 else "links alone.")
-            )
+            f"{roman(s.mechanism_class)} mechanism. {apart}{order}"
         ),
     ]
     return blocks
