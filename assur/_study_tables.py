@@ -30,7 +30,7 @@ def _tables(
     """Return the tables of the variants ``chosen`` and the columns each has.
 
     Refused once the first table's columns are known, if all of them would not fit
-    in half the machine's memory (they are kept, then copied into one array).
+    in half the memory to be had (they are kept, then copied into one array).
     """
     found: list[dict[str, Array]] = []
     every: list[tuple[str, ...]] = []
@@ -44,20 +44,59 @@ def _tables(
 
 
 def _fits(variants: int, positions: int, columns: int) -> None:
-    """Refuse tables whose values would take more than half the machine's memory."""
+    """Refuse tables whose values would take more than half the memory to be had."""
     need = 2.0 * variants * positions * columns * 8.0
-    try:
-        have = float(os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"))
-    except (AttributeError, ValueError, OSError):  # no such count here: not checked
+    found = _memory()
+    if found is None:  # no such count here: not checked
         return
+    have, whose = found
     if need > 0.5 * have:
         msg = (
             f"variants: {variants} tables of {positions} positions x {columns} "
-            f"columns would take {need / 1e9:.3g} GB, more than half this machine's "
+            f"columns would take {need / 1e9:.3g} GB, more than half {whose} "
             f"{have / 1e9:.3g} GB; expected fewer variants (variants=[...]) or "
             "columns (columns=[...])"
         )
         raise UsageError(msg)
+
+
+LIMITS = (
+    "/sys/fs/cgroup/memory.max",
+    "/sys/fs/cgroup/memory/memory.limit_in_bytes",
+)
+"""Where a container's memory limit is read (cgroup v2, then v1), bytes."""
+
+
+def _memory() -> tuple[float, str] | None:
+    """Return the memory this process may take (bytes) and whose it is, in words.
+
+    The machine's physical memory, or less: a container's limit (a cgroup's), or
+    the process's own address-space limit (``ulimit -v``), which a process meets
+    long before the machine runs out. None where none of these can be read.
+    """
+    found: list[tuple[float, str]] = []
+    try:
+        pages = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES")
+        found.append((float(pages), "this machine's"))
+    except (AttributeError, ValueError, OSError):
+        pass
+    for path in LIMITS:
+        try:
+            with open(path, encoding="ascii") as file:
+                text = file.read().strip()
+        except (OSError, ValueError):  # no such limit here
+            continue
+        if text.isdigit():  # "max" where there is none
+            found.append((float(text), "the limit of this container's"))
+    try:
+        import resource
+
+        soft = resource.getrlimit(resource.RLIMIT_AS)[0]
+        if soft != resource.RLIM_INFINITY and soft > 0:
+            found.append((float(soft), "this process's limit of"))
+    except (ImportError, AttributeError, ValueError, OSError):  # not on Windows
+        pass
+    return min(found, key=lambda pair: pair[0]) if found else None
 
 
 def _table(

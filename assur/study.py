@@ -128,7 +128,8 @@ class Study:
         UsageError
             For a variant number that is not one of the study's, a column that
             none of the variants analysed has, or tables that would take more than
-            half the machine's memory.
+            half the memory to be had (the machine's, or less: a container's
+            limit, ``ulimit -v``).
         ImportError
             When xarray is not installed.
         """

@@ -980,6 +980,38 @@ def test_tables_that_would_not_fit_in_memory_are_refused(monkeypatch):
     assert found["values"].shape == (2, 360, 2)
 
 
+def test_the_memory_to_be_had_is_the_least_of_machine_container_and_ulimit(
+    monkeypatch, tmp_path
+):
+    from assur import _study_tables
+
+    resource = pytest.importorskip("resource")  # not on Windows
+    monkeypatch.setattr(_study_tables.os, "sysconf", lambda key: 4096)
+    machine = (4096.0 * 4096.0, "this machine's")
+    unlimited = (resource.RLIM_INFINITY, resource.RLIM_INFINITY)
+    monkeypatch.setattr(resource, "getrlimit", lambda kind: unlimited)
+    v2, v1 = tmp_path / "memory.max", tmp_path / "limit_in_bytes"
+    monkeypatch.setattr(_study_tables, "LIMITS", (str(v2), str(v1)))
+    assert _study_tables._memory() == machine  # neither file: the machine's
+    v2.write_text("max\n")
+    v1.write_text("9223372036854771712\n")  # cgroup v1's "no limit"
+    assert _study_tables._memory() == machine
+    v2.write_text("1000000\n")
+    container = (1e6, "the limit of this container's")
+    assert _study_tables._memory() == container
+    monkeypatch.setattr(resource, "getrlimit", lambda kind: (500_000, 10**9))
+    assert _study_tables._memory() == (5e5, "this process's limit of")
+    # the refusal names the limit met: 2 x 10 x 360 x 10 x 8 bytes > half of 500 kB
+    with pytest.raises(assur.UsageError) as err:
+        _study_tables._fits(10, 360, 10)
+    assert str(err.value) == (
+        "variants: 10 tables of 360 positions x 10 columns would take 0.000576 "
+        "GB, more than half this process's limit of 0.0005 GB; expected fewer "
+        "variants (variants=[...]) or columns (columns=[...])"
+    )
+    _study_tables._fits(10, 360, 4)  # 230 kB fit
+
+
 def test_a_study_leaves_other_threads_warnings_alone():
     # the compilations' warnings were silenced by a warnings filter, the whole
     # process's: another thread's warnings were lost while a study ran (94 of 257)
