@@ -33,6 +33,19 @@ __all__ = [
 RESEND = 0.5
 """Seconds after which Ctrl-C, SIGTERM or SIGHUP is sent again when Python ignored
 the exception it raised."""
+POSIX = os.name == "posix"
+
+
+def _resend(signum: int) -> None:
+    """Send the signal ``signum`` to this process again, from another thread."""
+    if POSIX:
+        os.kill(os.getpid(), signum)  # a real signal: it cuts a blocking call short
+    else:
+        import _thread
+
+        # os.kill on Windows ends the process at once, its exit status the
+        # signal's number: the main thread is interrupted as a signal would
+        _thread.interrupt_main(signal.Signals(signum))
 
 
 class _Stopped(BaseException):
@@ -76,7 +89,7 @@ def _stoppable() -> Iterator[None]:
         # of matplotlib's), the stop left the command running (an animation of
         # a thousand frames went on to its end after Ctrl-C): it comes again
         # shortly, unreported, until one lands where it unwinds the command
-        timer = threading.Timer(RESEND, os.kill, (os.getpid(), signum))
+        timer = threading.Timer(RESEND, _resend, (signum,))
         timer.daemon = True
         again.append(timer)
         timer.start()

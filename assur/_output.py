@@ -230,7 +230,7 @@ def _keep_old(place: Path, temporary: Path) -> tuple[bool, Path | None]:
         os.link(place, kept, follow_symlinks=False)
     except FileNotFoundError:
         return os.path.lexists(place), None
-    except OSError:
+    except (OSError, NotImplementedError):  # no hard links here (or no linkat)
         return True, None
     return True, kept
 
@@ -261,7 +261,11 @@ def _reserve(target: Path) -> Path:
 
 def _sync(path: Path) -> None:
     """Flush ``path`` to the disk, so a crash after the rename finds it whole."""
-    descriptor = os.open(path, os.O_RDONLY)
+    # Windows flushes a file only through a handle open for writing (a read-only
+    # one fails, "Bad file descriptor"); elsewhere reading is enough, and works for
+    # a file given a read-only mode (the old file's it replaces)
+    flags = os.O_RDWR if os.name == "nt" else os.O_RDONLY
+    descriptor = os.open(path, flags)
     try:
         os.fsync(descriptor)
     finally:

@@ -225,9 +225,9 @@ def main(argv: list[str] | None = None) -> int:
     print(f"  memory: {before:.0f} MB before, {peak:.0f} MB peak")
     name = "results-quick.json" if args.quick else "results.json"
     path = HERE / name
-    whole = json.loads(path.read_text()) if path.exists() else {}
+    whole = json.loads(path.read_text(encoding="utf-8")) if path.exists() else {}
     whole["study"] = res
-    path.write_text(json.dumps(whole, indent=1) + "\n")
+    path.write_text(json.dumps(whole, indent=1) + "\n", encoding="utf-8")
     print(f"wrote the key 'study' of {path}")
     return 0
 

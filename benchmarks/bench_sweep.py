@@ -639,7 +639,7 @@ def _git() -> dict:
 
 def _cpu() -> str:
     try:
-        text = Path("/proc/cpuinfo").read_text()
+        text = Path("/proc/cpuinfo").read_text(encoding="utf-8")
         m = re.search(r"model name\s*:\s*(.+)", text)
         if m:
             return m[1].strip()
@@ -950,10 +950,10 @@ def main(argv: list[str] | None = None) -> int:
     res["report"] = text.splitlines()
     if output.exists():
         # bench_study.py keeps its figures in the same file, under "study"
-        kept = json.loads(output.read_text()).get("study")
+        kept = json.loads(output.read_text(encoding="utf-8")).get("study")
         if kept is not None:
             res["study"] = kept
-    output.write_text(json.dumps(res, indent=1, default=_json) + "\n")
+    output.write_text(json.dumps(res, indent=1, default=_json) + "\n", encoding="utf-8")
     print(f"\nwrote {output}")
     return 0
 

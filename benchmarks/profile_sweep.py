@@ -150,7 +150,7 @@ def main(argv: list[str] | None = None) -> int:
     text = "\n".join(parts)
     print(text)
     if args.output:
-        args.output.write_text(text)
+        args.output.write_text(text, encoding="utf-8")
     return 0
 
 

@@ -447,7 +447,9 @@ def test_a_file_s_name_given_as_its_text_is_told() -> None:
     with pytest.raises(assur.UsageError, match=r"is a file's name"):
         assur.loads("m.JSON\n")
     # the text of a file is read, whatever it ends with
-    text = (EXAMPLES / "four_bar.toml").read_text() + "\n# see four_bar.toml"
+    text = (EXAMPLES / "four_bar.toml").read_text(
+        encoding="utf-8"
+    ) + "\n# see four_bar.toml"
     assert assur.loads(text).name == "Crank-rocker four-bar"
 
 

@@ -158,7 +158,9 @@ def test_a_wrong_structure_is_named_before_the_count_of_angles(tmp_path, capsys)
     # the drivers nor the freedom; the error is the structure's
     path = tmp_path / "two_drivers.toml"
     text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
-    path.write_text(text + '\n[[drivers]]\njoint = "O4"\nomega = 1.0\n')
+    path.write_text(
+        text + '\n[[drivers]]\njoint = "O4"\nomega = 1.0\n', encoding="utf-8"
+    )
     picture = ["--angle", "0", "-o", tmp_path / "p.png"]
     for command in ("kinematics", "forces", "plot", "dynamics"):
         options = picture if command == "plot" else ["--angles", "0"]

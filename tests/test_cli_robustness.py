@@ -119,15 +119,21 @@ def test_a_stop_during_an_animation_keeps_the_old_file(
     assert os.listdir(tmp_path) == ["film.gif"]
 
 
+@pytest.mark.parametrize("posix", [True, False], ids=["kill", "interrupt_main"])
 @pytest.mark.parametrize(
     ("stop", "raised"),
     [(signal.SIGTERM, _cli_process._Stopped), (signal.SIGINT, KeyboardInterrupt)],
 )
-def test_a_stop_that_python_ignores_comes_again(capsys, stop, raised):
+def test_a_stop_that_python_ignores_comes_again(
+    capsys, monkeypatch, stop, raised, posix
+):
     # SIGTERM or Ctrl-C handled inside a __del__ (or a weakref callback of
     # matplotlib's): Python ignores the exception raised there, and the animation
     # went on to its end; the signal is sent again until it unwinds the command,
-    # unreported
+    # unreported (on Windows, where os.kill would end the process, through the
+    # main thread's interruption)
+    monkeypatch.setattr(_cli_process, "POSIX", posix)
+
     class Finalized:
         def __del__(self) -> None:
             os.kill(os.getpid(), stop)
@@ -543,7 +549,7 @@ def test_a_closed_standard_output(tmp_path: Path):
     # Python leaves sys.stdout None: every command ended in an AttributeError
     result = _closed(tmp_path, f"-q forces {FOUR_BAR} --angles 0:10:5 --csv t.csv")
     assert (result.returncode, result.stderr) == (0, "")
-    assert len((tmp_path / "t.csv").read_text().splitlines()) == 1 + 3
+    assert len((tmp_path / "t.csv").read_text(encoding="utf-8").splitlines()) == 1 + 3
     for command in (f"explain {FOUR_BAR}", f"forces {FOUR_BAR} --angles 0"):
         result = _closed(tmp_path, command)
         assert result.returncode == 2
@@ -720,9 +726,11 @@ def test_standard_output_in_utf8_with_its_mark_is_written_as_utf8(
 
 def test_a_name_standard_output_cannot_write_is_one_error(tmp_path: Path) -> None:
     # on an ASCII output the CSV's names came out as \u0448..., changed silently
-    text = (EXAMPLES / "four_bar.toml").read_text()
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
     text = text.replace("[links.rocker]", '[links."шатун"]')
-    (tmp_path / "cyr.toml").write_text(text.replace('"rocker"', '"шатун"'))
+    (tmp_path / "cyr.toml").write_text(
+        text.replace('"rocker"', '"шатун"'), encoding="utf-8"
+    )
 
     def ascii_run(*options: str) -> subprocess.CompletedProcess[str]:
         return on_ascii(tmp_path, "forces", "cyr.toml", *options, "--angles", "0:10:5")
@@ -744,7 +752,7 @@ def test_a_note_over_its_answers_file_is_refused(tmp_path: Path, capsys):
     # the note replaced the answers it was to be checked against
     answers = tmp_path / "answers.md"
     text = '[answers]\n"rod.omega" = -54.2\n'
-    answers.write_text(text)
+    answers.write_text(text, encoding="utf-8")
     line = one_error(
         capsys, "explain", SLIDER, "--angle", "45", "--answers", answers, "-o", answers
     )
@@ -752,13 +760,13 @@ def test_a_note_over_its_answers_file_is_refused(tmp_path: Path, capsys):
         f"-o {answers}: is the answers file being read; expected another file for "
         "the output"
     )
-    assert answers.read_text() == text
+    assert answers.read_text(encoding="utf-8") == text
 
 
 def test_standard_output_into_the_mechanism_file_is_refused(tmp_path: Path) -> None:
     # the table (or a "wrote" line) was added to the very file being read
     source = tmp_path / "m.toml"
-    source.write_text(FOUR_BAR.read_text())
+    source.write_text(FOUR_BAR.read_text(encoding="utf-8"), encoding="utf-8")
     before = source.read_bytes()
     for options in ("--csv -", "--csv out.csv", "--json"):
         done = shell(tmp_path, f"kinematics m.toml --angles 0:3:1 {options} >> m.toml")

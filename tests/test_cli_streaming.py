@@ -239,9 +239,11 @@ def test_a_failure_over_several_slices_is_counted_as_the_whole_sweep(
         path = tmp_path / "four_bar.toml"
         assur.save(mech, path)
     else:
-        text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+        text = (EXAMPLES / "slider_crank_locking.toml").read_text(encoding="utf-8")
         path = tmp_path / "locks.toml"
-        path.write_text(text.replace("friction = 0.8", f"friction = {friction}"))
+        path.write_text(
+            text.replace("friction = 0.8", f"friction = {friction}"), encoding="utf-8"
+        )
     mech = assur.load(path)
     given = parse_angles(spec)
     analyse = assur.forces if command == "forces" else assur.kinematics
@@ -539,7 +541,7 @@ def test_a_reader_that_goes_away_leaves_the_files_whole(tmp_path: Path, stdout, 
     if "--parquet" in files:
         pytest.importorskip("pyarrow")
     target = tmp_path / files[-1]
-    target.write_text("old\n")
+    target.write_text("old\n", encoding="utf-8")
     command = [
         sys.executable, "-m", "assur", "kinematics", str(SLIDER_CRANK),
         "--angles", "0:36000:1", stdout, *files[:-1], str(target),
@@ -558,7 +560,7 @@ def test_a_reader_that_goes_away_leaves_the_files_whole(tmp_path: Path, stdout, 
     assert "Traceback" not in errors
     rows = len(parse_angles("0:36000:1"))
     if target.suffix == ".csv":
-        lines = target.read_text().splitlines()
+        lines = target.read_text(encoding="utf-8").splitlines()
         assert lines[0].startswith("angle,")
         assert len(lines) == rows + 1
     else:
@@ -572,9 +574,9 @@ def test_friction_that_locks_is_counted_over_the_whole_sweep(
     small_slices, tmp_path: Path, capsys
 ):
     # the slice where the group locked gave its own counts ("of 8192 positions")
-    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text(encoding="utf-8")
     path = tmp_path / "locks.toml"
-    path.write_text(text.replace("friction = 0.8", "friction = 1.5"))
+    path.write_text(text.replace("friction = 0.8", "friction = 1.5"), encoding="utf-8")
     mech = assur.load(path)
     given = parse_angles("150:240:0.005")
     with pytest.raises(assur.SelfLockingError) as whole:
@@ -597,9 +599,9 @@ def test_friction_locking_in_a_later_slice_writes_nothing(
     # the check of the whole sweep solved positions only: the slices before the
     # lock went to standard output (206 MB of a JSON never closed), then the error
     monkeypatch.setattr(_sliced, "CHUNK", 8)  # 31 positions: four slices
-    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text(encoding="utf-8")
     path = tmp_path / "lock.toml"
-    path.write_text(text.replace("friction = 0.8", "friction = 1.3"))
+    path.write_text(text.replace("friction = 0.8", "friction = 1.3"), encoding="utf-8")
     status = cli.main(["forces", str(path), "--angles", "200:260:2", *output])
     out, err = capsys.readouterr()
     assert (status, out) == (2, "")
@@ -681,7 +683,7 @@ def test_a_csv_file_of_any_other_name_is_written(capsys, monkeypatch, tmp_path, 
         capsys, "forces", SLIDER_CRANK, "--angles", "0:10:5", "--csv", name
     )
     assert status == 0
-    assert (tmp_path / name).read_text().startswith("angle,")
+    assert (tmp_path / name).read_text(encoding="utf-8").startswith("angle,")
 
 
 def test_the_note_of_positions_left_out_tells_each_driver_s_with_its_unit():

@@ -291,7 +291,7 @@ def test_the_table_reads_like_a_table(tmp_path: Path):
     assert data["dynamics"]["delta"] == t.delta
     assert len(data["rows"]) == 360
     t.to_csv(tmp_path / "d.csv")
-    assert (tmp_path / "d.csv").read_text() == text
+    assert (tmp_path / "d.csv").read_text(encoding="utf-8") == text
 
 
 def test_the_table_has_every_column_method_of_a_sweep_s_table(tmp_path: Path):

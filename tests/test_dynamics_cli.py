@@ -145,7 +145,7 @@ def test_parquet_and_csv_from_one_pass(capsys, tmp_path: Path, monkeypatch):
     assert status == 0
     read = pq.read_table(parquet)
     assert pq.ParquetFile(parquet).num_row_groups == 4
-    names = csv.read_text().splitlines()[0].split(",")
+    names = csv.read_text(encoding="utf-8").splitlines()[0].split(",")
     assert read.column_names == names
     values = np.loadtxt(csv, delimiter=",", skiprows=1)
     for i, name in enumerate(names):  # the CSV's 12 significant digits
@@ -237,7 +237,7 @@ def test_startup_samples_to_csv_and_json(capsys, tmp_path: Path):
     run_ = assur.startup(assur.load(path), 20.0)
     assert f"wrote {len(run_.time)} rows x 3 columns to {target}" in out
     assert "settles in" in out  # --startup-csv implies --startup
-    lines = target.read_text().splitlines()
+    lines = target.read_text(encoding="utf-8").splitlines()
     assert lines[0] == "time,angle,omega"
     got = np.array([[float(x) for x in line.split(",")] for line in lines[1:]])
     # the file gives back the very samples of the library's start-up
@@ -303,10 +303,10 @@ def test_mechanisms_without_a_dynamic_model(capsys, name, message):
 
 def test_the_table_is_not_written_over_the_input(capsys, tmp_path: Path):
     copy = tmp_path / "m.toml"
-    copy.write_text(FOUR_BAR.read_text())
+    copy.write_text(FOUR_BAR.read_text(encoding="utf-8"), encoding="utf-8")
     line = one_error(capsys, "dynamics", copy, "--csv", copy)
     assert "is the mechanism file being read" in line
-    assert copy.read_text() == FOUR_BAR.read_text()
+    assert copy.read_text(encoding="utf-8") == FOUR_BAR.read_text(encoding="utf-8")
 
 
 def test_startup_where_the_file_speed_has_no_steady_state(capsys, tmp_path: Path):
@@ -346,7 +346,7 @@ def test_json_and_a_csv_file_are_both_written(capsys, tmp_path: Path):
     assert status == 0, err
     data = json.loads(out)
     t = assur.dynamics(assur.load(FOUR_BAR), [0.0, 30.0, 60.0, 90.0])
-    lines = target.read_text().splitlines()
+    lines = target.read_text(encoding="utf-8").splitlines()
     assert lines[0].split(",") == list(t.columns) == data["columns"]
     assert len(lines) == 1 + 4
     # the line saying so goes to standard error, beside the JSON
@@ -358,13 +358,13 @@ def test_the_files_are_written_as_a_set(capsys, tmp_path: Path):
     # the start-up's file landed, then --csv failed: now neither lands
     path = with_motor(tmp_path)
     start = tmp_path / "start.csv"
-    start.write_text("old\n")
+    start.write_text("old\n", encoding="utf-8")
     line = one_error(
         capsys, "dynamics", path, "--flywheel", "20", "--angles", "0",
         "--startup-csv", start, "--csv", "/dev/full",
     )  # fmt: skip
     assert "/dev/full" in line
-    assert start.read_text() == "old\n"
+    assert start.read_text(encoding="utf-8") == "old\n"
 
 
 def _shell(tmp_path: Path, options: str) -> subprocess.CompletedProcess[str]:
@@ -535,7 +535,7 @@ def test_a_long_sweep_is_written_by_slices(capsys, monkeypatch, tmp_path: Path):
         epsilon=whole["driver.epsilon"],
     )
     assert len(data["rows"]) == len(whole) == 21
-    header, *lines = target.read_text().splitlines()
+    header, *lines = target.read_text(encoding="utf-8").splitlines()
     assert header.split(",") == data["columns"]
     for name in ("driver.omega", "reduced.work", "B.F", "driver.torque"):
         table = whole if name in whole.columns else motion
@@ -555,9 +555,9 @@ def test_a_lock_in_a_later_slice_writes_nothing(capsys, monkeypatch, tmp_path, o
     # the readable table showed 400 rows and said nothing of the lock beyond them
     monkeypatch.setattr(dynamics_cli, "SLICE", 7)
     monkeypatch.setattr(dynamics_cli, "ROWS_SHOWN", 5)
-    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text(encoding="utf-8")
     path = tmp_path / "lock.toml"
-    path.write_text(text.replace("friction = 0.8", "friction = 1.3"))
+    path.write_text(text.replace("friction = 0.8", "friction = 1.3"), encoding="utf-8")
     argv = ["dynamics", path, "--forces", "--flywheel", "1", "--angles", "200:260:2"]
     line = one_error(capsys, *argv, *output, "-q")
     # counted over the whole sweep of 31 positions, not a slice of 7
@@ -580,9 +580,11 @@ def test_a_clockwise_start_up_prints_its_speeds_as_magnitudes(capsys) -> None:
 def test_a_motor_against_omega_is_told(capsys, tmp_path: Path) -> None:
     # the four-bar turns clockwise (omega -25); this motor turns it the other way
     path = Path(__file__).parent / "data" / "edge" / "four_bar_motor_clockwise.toml"
-    text = path.read_text().replace("torque = -8.0", "torque = 8.0")
+    text = path.read_text(encoding="utf-8").replace("torque = -8.0", "torque = 8.0")
     target = tmp_path / "against.toml"
-    target.write_text(text.replace("no_load_speed = -30.0", "no_load_speed = 30.0"))
+    target.write_text(
+        text.replace("no_load_speed = -30.0", "no_load_speed = 30.0"), encoding="utf-8"
+    )
     with pytest.warns(assur.AssurWarning, match="against the driver's omega = -25"):
         run_ = assur.startup(assur.load(target), 0.01)
     assert run_.mean_speed > 0
@@ -596,10 +598,10 @@ def test_a_motor_against_omega_is_told(capsys, tmp_path: Path) -> None:
 
 
 def test_the_file_s_epsilon_is_said_to_be_left_out(capsys, tmp_path: Path) -> None:
-    text = WHITWORTH.read_text()
+    text = WHITWORTH.read_text(encoding="utf-8")
     assert "epsilon = 0.0" in text
     path = tmp_path / "accelerating.toml"
-    path.write_text(text.replace("epsilon = 0.0", "epsilon = 5.0"))
+    path.write_text(text.replace("epsilon = 0.0", "epsilon = 5.0"), encoding="utf-8")
     status, out, err = run(capsys, "dynamics", path, "--flywheel", "20")
     assert status == 0
     assert err == (
@@ -617,8 +619,10 @@ def test_a_name_standard_output_cannot_write_stops_before_any_file(tmp_path: Pat
     from .test_cli_robustness import on_ascii
 
     path = Path(__file__).parent / "data" / "edge" / "four_bar_motor_clockwise.toml"
-    text = path.read_text().replace("[links.rocker]", '[links."ракер"]')
-    (tmp_path / "m.toml").write_text(text.replace('"rocker"', '"ракер"'))
+    text = path.read_text(encoding="utf-8").replace("[links.rocker]", '[links."ракер"]')
+    (tmp_path / "m.toml").write_text(
+        text.replace('"rocker"', '"ракер"'), encoding="utf-8"
+    )
     argv = ["dynamics", "m.toml", "--flywheel", "0.01", "--startup-csv", "s.csv"]
     result = on_ascii(tmp_path, *argv, "--forces", "--csv", "-")
     assert (result.returncode, result.stdout) == (2, "")

@@ -176,7 +176,9 @@ def test_the_motor_goes_round_the_file(tmp_path):
     mech = dataclasses.replace(assur.catalog.four_bar(), motor=Motor(12.0, 150.0))
     path = tmp_path / "m.toml"
     assur.save(mech, path)
-    assert "[motor]\ntorque = 12.0\nno_load_speed = 150.0\n" in path.read_text()
+    assert "[motor]\ntorque = 12.0\nno_load_speed = 150.0\n" in path.read_text(
+        encoding="utf-8"
+    )
     assert assur.load(path) == mech
     constant = dataclasses.replace(mech, motor=Motor(-4.0))
     assert assur.loads(assur.dumps(constant)).motor == Motor(-4.0)

@@ -39,9 +39,9 @@ def test_every_command_writes_a_valid_file(path, tmp_path, capsys):
     csv = tmp_path / "table.csv"
     command = "forces" if forces else "kinematics"
     assert main([command, str(path), "--csv", str(csv)]) == 0
-    header = csv.read_text().splitlines()[0].split(",")
+    header = csv.read_text(encoding="utf-8").splitlines()[0].split(",")
     assert header[0] == "angle"
-    assert len(csv.read_text().splitlines()) == 361
+    assert len(csv.read_text(encoding="utf-8").splitlines()) == 361
     png = tmp_path / "pose.png"
     extra = ["--forces"] if forces else []
     assert main(["plot", str(path), "-o", str(png), "--dpi", "60", *extra]) == 0

@@ -28,12 +28,12 @@ DATA = Path(__file__).parent / "data" / "explain"
 
 def _variant(tmp_path: Path, stem: str, *edits: tuple[str, str]) -> Path:
     """Write an example with text replaced; return its path."""
-    text = (EXAMPLES / f"{stem}.toml").read_text()
+    text = (EXAMPLES / f"{stem}.toml").read_text(encoding="utf-8")
     for old, new in edits:
         assert old in text
         text = text.replace(old, new)
     path = tmp_path / f"{stem}.toml"
-    path.write_text(text)
+    path.write_text(text, encoding="utf-8")
     return path
 
 
@@ -216,10 +216,10 @@ def test_friction_s_power_is_said_as_the_driver_sees_it(
 
 def test_friction_rows_per_unit_speed_are_not_called_losses(tmp_path: Path) -> None:
     # per unit speed of one driver, a pair's friction power may be positive
-    text = (EXAMPLES / "five_bar_two_cranks.toml").read_text()
+    text = (EXAMPLES / "five_bar_two_cranks.toml").read_text(encoding="utf-8")
     text = re.sub(r'(kind = "revolute"\n)', r"\1friction = 0.1\nradius = 0.006\n", text)
     path = tmp_path / "rubbed.toml"
-    path.write_text(text)
+    path.write_text(text, encoding="utf-8")
     note = str(explain(assur.load(path), [60.0, 120.0]))
     assert "(a loss, so negative)" not in note
     assert note.count("of either sign") == 2  # one lever per driver

@@ -38,11 +38,13 @@ def _mechanism(tmp_path: Path, path: Path, clockwise: bool) -> assur.Mechanism:
     """Load ``path``; with ``clockwise``, its driver's speed turned the other way."""
     if not clockwise:
         return assur.load(path)
-    text = path.read_text()
+    text = path.read_text(encoding="utf-8")
     found = re.search(r"^omega = ([0-9.]+)$", text, flags=re.M)
     assert found, path
     copy = tmp_path / path.name
-    copy.write_text(text.replace(found.group(0), f"omega = -{found.group(1)}"))
+    copy.write_text(
+        text.replace(found.group(0), f"omega = -{found.group(1)}"), encoding="utf-8"
+    )
     return assur.load(copy)
 
 
@@ -241,7 +243,10 @@ def test_a_sliding_pair_s_couple_on_the_next_link_carries_its_symbol(
     # the crank's known loads ended ", 0.3 N m": a couple without a name or sign
     path = tmp_path / "prp.toml"
     torque = '\n[[loads]]\nlink = "block1"\ntorque = 2.0\n'
-    path.write_text((DATA / "prp_tangent.toml").read_text() + torque)
+    path.write_text(
+        (DATA / "prp_tangent.toml").read_text(encoding="utf-8") + torque,
+        encoding="utf-8",
+    )
     mech = assur.load(path)
     note = str(explain(mech, 30.0)).split("## 5. The input link")[1]
     # the pair's couple is the crank's on block1: on the crank it is minus that

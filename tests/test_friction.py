@@ -557,7 +557,7 @@ def test_a_lock_is_counted_over_every_slice():
     # the message counted the positions of the first slice the group locked in
     import re
 
-    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text(encoding="utf-8")
     mech = assur.loads(text.replace("friction = 0.8", "friction = 1.3"))
     # 36000 positions: slices of 8192 (81.92 deg), one of them ending at 270 deg
     angles = 24.24 + np.arange(36000) * 0.01
@@ -576,7 +576,7 @@ FRICTION_DATA = Path(__file__).parent / "data" / "friction"
 
 def _locking(coefficient: float) -> assur.Mechanism:
     """The example near self-locking, its guide's friction set to ``coefficient``."""
-    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text(encoding="utf-8")
     return assur.loads(text.replace("friction = 0.8", f"friction = {coefficient}"))
 
 
@@ -621,7 +621,7 @@ def test_a_huge_coefficient_locks_only_where_the_global_solve_finds_no_motion():
     latter, and every position was said to lock; the global solve, raising the
     friction from zero, finds the motion at the positions kept and none where the
     group is said to lock."""
-    text = (EXAMPLES / "slider_crank_exercise.toml").read_text()
+    text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
     start = text.index("[joints.guide]")
     end = text.index("\n\n", start)
     mech = assur.loads(text[:end] + "\nfriction = 1e6" + text[end:])

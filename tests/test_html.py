@@ -221,9 +221,9 @@ def test_positions_that_do_not_assemble() -> None:
 
 def test_a_sweep_locked_by_friction_is_said_to_be(tmp_path: Path) -> None:
     # "cannot be assembled" was said of positions that assemble but lock
-    text = (EXAMPLES / "slider_crank_locking.toml").read_text()
+    text = (EXAMPLES / "slider_crank_locking.toml").read_text(encoding="utf-8")
     path = tmp_path / "locked.toml"
-    path.write_text(text.replace("friction = 0.8", "friction = 1.5"))
+    path.write_text(text.replace("friction = 0.8", "friction = 1.5"), encoding="utf-8")
     with pytest.raises(assur.SelfLockingError, match="240 deg"):
         render_report(assur.load(path), angles=[240.0, 245.0, 250.0])
 

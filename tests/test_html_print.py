@@ -97,7 +97,7 @@ def test_free_body_pictures_do_not_style_the_page(four_bar: str) -> None:
 
 
 def test_long_names_wrap_and_draw_without_warnings() -> None:
-    text = (EXAMPLES / "four_bar.toml").read_text()
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
     text = text.replace('"coupler"', f'"{LONG}"').replace(
         "links.coupler", f"links.{LONG}"
     )

@@ -19,7 +19,8 @@ def broken(tmp_path, monkeypatch):
     folder = tmp_path / "brokenpkg"
     folder.mkdir()
     (folder / "__init__.py").write_text(
-        "raise RuntimeError('built for another numpy\\nsecond line')\n"
+        "raise RuntimeError('built for another numpy\\nsecond line')\n",
+        encoding="utf-8",
     )
     monkeypatch.syspath_prepend(str(tmp_path))
     monkeypatch.delitem(sys.modules, "brokenpkg", raising=False)
@@ -68,7 +69,7 @@ def test_an_import_error_inside_the_package_is_a_broken_install(
     folder = tmp_path / "halfpkg"
     folder.mkdir()
     statement = raised if raised.startswith("import") else f"raise {raised}"
-    (folder / "__init__.py").write_text(statement + "\n")
+    (folder / "__init__.py").write_text(statement + "\n", encoding="utf-8")
     monkeypatch.syspath_prepend(str(tmp_path))
     monkeypatch.delitem(sys.modules, "halfpkg", raising=False)
     with pytest.raises(ImportError) as info:

@@ -383,6 +383,45 @@ def test_a_move_that_fails_midway_puts_the_old_files_back(monkeypatch, tmp_path:
     assert names(tmp_path) == {"diagrams"}
 
 
+def test_without_hard_links_a_set_of_files_still_lands(monkeypatch, tmp_path: Path):
+    # os.link raises NotImplementedError where the platform has no linkat: the
+    # old files are then not kept, as on a file system without hard links
+    target = tmp_path / "diagrams"
+    target.mkdir()
+    (target / "a.png").write_bytes(b"old a")
+
+    def no_link(*args, **kwargs):
+        msg = "link: follow_symlinks unavailable"
+        raise NotImplementedError(msg)
+
+    monkeypatch.setattr(_output.os, "link", no_link)
+    fill_three(target)
+    assert names(target) == {"a.png", "b.png", "c.png"}
+    assert names(tmp_path) == {"diagrams"}
+
+
+@pytest.mark.parametrize(
+    ("system", "flags"), [("posix", os.O_RDONLY), ("nt", os.O_RDWR)]
+)
+def test_a_file_is_flushed_through_a_handle_its_system_can_flush(
+    monkeypatch, tmp_path: Path, system: str, flags: int
+):
+    # Windows flushes a file only through a handle open for writing
+    written = tmp_path / "t.csv"
+    written.write_bytes(b"a\n")
+    opened = []
+    real = os.open
+
+    def recording(path, how, *args):
+        opened.append(how)
+        return real(path, how, *args)
+
+    monkeypatch.setattr(_output.os, "open", recording)
+    monkeypatch.setattr(_output.os, "name", system)
+    _output._sync(written)
+    assert opened == [flags]
+
+
 def test_a_set_of_files_into_a_new_folder(tmp_path: Path):
     # only the last folder is made (see above): its parent must be there
     target = tmp_path / "x" / "y"
@@ -474,7 +513,7 @@ def test_a_fault_raised_as_a_stop_unwinds_is_the_stop(old: Path, any_error: bool
 
     def writing() -> None:
         with output_path(old, any_error=any_error) as temporary:
-            temporary.write_text("half")
+            temporary.write_text("half", encoding="utf-8")
             try:
                 raise KeyboardInterrupt
             finally:

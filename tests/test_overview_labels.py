@@ -259,7 +259,9 @@ def test_the_loads_are_named_as_the_note_names_them() -> None:
     # then its couples); the mechanism's picture wrote Q_{slider} for each of them
     from assur.explain import explain
 
-    text = (HERE.parent / "examples" / "slider_crank_exercise.toml").read_text()
+    text = (HERE.parent / "examples" / "slider_crank_exercise.toml").read_text(
+        encoding="utf-8"
+    )
     text += """
 [[loads]]
 link = "slider"

@@ -90,14 +90,14 @@ def test_a_label_past_the_frame_is_moved_inside() -> None:
 def test_a_legend_of_long_names_fits_the_frame(tmp_path, frames) -> None:
     # the class III example with links named at length: its two-column legend ran
     # past both sides of the frame, which crops it
-    text = (EXAMPLES / "class3.toml").read_text()
+    text = (EXAMPLES / "class3.toml").read_text(encoding="utf-8")
     for short in ("left_rocker", "right_rocker", "plate", "rod", "crank"):
         text = text.replace(f'"{short}"', f'"{short}_of_the_triad_in_the_example"')
         text = text.replace(
             f"links.{short}]", f"links.{short}_of_the_triad_in_the_example]"
         )
     path = tmp_path / "long.toml"
-    path.write_text(text)
+    path.write_text(text, encoding="utf-8")
     table = assur.forces(assur.load(path), [30.0, 90.0])
     assert animate(table, tmp_path / "a.gif", forces=True, dpi=80) == 2
     for frame in frames:

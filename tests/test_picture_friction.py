@@ -60,9 +60,9 @@ def test_friction_circles_are_seen(group: int | None) -> None:
 
 def test_a_large_friction_circle_is_drawn_to_scale(tmp_path: Path) -> None:
     # a circle already large enough is not enlarged, nor said to be
-    text = (EXAMPLES / "slider_crank_friction.toml").read_text()
+    text = (EXAMPLES / "slider_crank_friction.toml").read_text(encoding="utf-8")
     path = tmp_path / "big.toml"
-    path.write_text(re.sub(r"radius = [0-9.]+", "radius = 0.1", text))
+    path.write_text(re.sub(r"radius = [0-9.]+", "radius = 0.1", text), encoding="utf-8")
     mech = assur.load(path)
     table = assur.forces(mech, [45.0])
     ax = plotting.draw(table, forces=True)

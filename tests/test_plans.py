@@ -227,7 +227,7 @@ def test_force_polygons_close_with_friction(path: Path, angle: float) -> None:
 
 def test_the_lever_of_a_driver_at_rest_is_per_unit_speed(tmp_path: Path) -> None:
     # omega = 0: the lever divided by the driver's speed (ZeroDivisionError)
-    text = (EXAMPLES / "slider_crank_exercise.toml").read_text()
+    text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
     text = text.replace("omega = 200.0", "omega = 0.0")
     assert "omega = 0.0" in text
     mech = assur.loads(text)
@@ -284,12 +284,12 @@ def test_a_name_is_drawn_whole_in_the_force_polygons(tmp_path: Path) -> None:
     import matplotlib.pyplot as plt
 
     # the note's TeX of "a^b" (\hat{}) drew a hat over nothing: the "^" was lost
-    text = (EXAMPLES / "four_bar.toml").read_text()
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
     odd = "c^o{u}p_l%e&r \\ $x"
     text = text.replace("[links.coupler]", f"[links.{_toml_key(odd)}]")
     text = text.replace('"coupler"', _toml_key(odd))
     path = tmp_path / "odd.toml"
-    path.write_text(text)
+    path.write_text(text, encoding="utf-8")
     table = assur.forces(assur.load(path), [30.0])
     fig = polygons.force_polygons(table)
     try:
@@ -332,7 +332,7 @@ def test_a_crank_alone_has_plans_and_a_lever_but_no_polygon(
 
     # no Assur group: the command blamed its output folder (a matplotlib error)
     path = tmp_path / "rotor.toml"
-    path.write_text(ROTOR)
+    path.write_text(ROTOR, encoding="utf-8")
     out = tmp_path / "plans"
     assert main(["plans", str(path), "--angle", "30", "-o", str(out), "-q"]) == 0
     assert capsys.readouterr().err == ""
@@ -357,7 +357,7 @@ def test_a_folder_written_again_holds_one_mechanism_s_plans(tmp_path: Path) -> N
     # the five-bar's levers stayed beside the lever of the next mechanism
     out = tmp_path / "plans"
     out.mkdir()
-    (out / "notes.txt").write_text("mine")
+    (out / "notes.txt").write_text("mine", encoding="utf-8")
     five = str(EXAMPLES / "five_bar_two_cranks.toml")
     assert main(["plans", five, "--angle", "30,60", "-o", str(out), "-q"]) == 0
     assert (out / "zhukovsky_lever_2.svg").exists()

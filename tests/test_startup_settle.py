@@ -29,7 +29,7 @@ BAND = 0.02
 def loaded_slider_crank() -> assur.Mechanism:
     """The slider-crank exercise at 150 rad/s, under gravity, a 300 N force on the
     slider and a 4 N m torque against the crank."""
-    text = (EXAMPLES / "slider_crank_exercise.toml").read_text()
+    text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
     text = text.replace("omega = 200.0", "omega = 150.0")
     text += (
         '\n[gravity]\ng = [0.0, -9.81]\n\n[[loads]]\nlink = "slider"\nat = "C"\n'

@@ -1013,7 +1013,7 @@ def test_links_held_twice_or_on_one_joint_are_no_larger_group():
 def test_a_pin_entered_twice_is_named_when_the_count_goes_wrong():
     # W = -1 with one driver: the count was given with no reason, as if a driver
     # were missing
-    text = (EXAMPLES / "four_bar.toml").read_text()
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
     start = text.index("[joints.B]")
     block = text[start : text.index("[joints.", start + 1)]
     mech = assur.loads(text + "\n" + block.replace("[joints.B]", "[joints.B2]"))

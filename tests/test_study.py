@@ -993,10 +993,10 @@ def test_the_memory_to_be_had_is_the_least_of_machine_container_and_ulimit(
     v2, v1 = tmp_path / "memory.max", tmp_path / "limit_in_bytes"
     monkeypatch.setattr(_study_tables, "LIMITS", (str(v2), str(v1)))
     assert _study_tables._memory() == machine  # neither file: the machine's
-    v2.write_text("max\n")
-    v1.write_text("9223372036854771712\n")  # cgroup v1's "no limit"
+    v2.write_text("max\n", encoding="utf-8")
+    v1.write_text("9223372036854771712\n", encoding="utf-8")  # cgroup v1's "no limit"
     assert _study_tables._memory() == machine
-    v2.write_text("1000000\n")
+    v2.write_text("1000000\n", encoding="utf-8")
     container = (1e6, "the limit of this container's")
     assert _study_tables._memory() == container
     monkeypatch.setattr(resource, "getrlimit", lambda kind: (500_000, 10**9))

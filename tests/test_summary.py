@@ -285,7 +285,7 @@ def test_cli_summary_text_and_json(capsys, tmp_path):
     assert main(["forces", str(path), "--summary", "--csv", str(csv)]) == 0
     out = capsys.readouterr().out
     assert "Summary over 360 positions" in out
-    assert len(csv.read_text().splitlines()) == 361
+    assert len(csv.read_text(encoding="utf-8").splitlines()) == 361
 
     # --json with a file: the summary alone on standard output (the table was
     # printed before it as a second JSON document)
@@ -294,7 +294,7 @@ def test_cli_summary_text_and_json(capsys, tmp_path):
     assert main(argv) == 0
     captured = capsys.readouterr()
     assert json.loads(captured.out)["summary"] == pytest.approx(summary, rel=1e-15)
-    assert len(csv.read_text().splitlines()) == 361
+    assert len(csv.read_text(encoding="utf-8").splitlines()) == 361
     assert captured.err == f"wrote 360 rows x {len(table.columns)} columns to {csv}\n"
 
 
@@ -665,11 +665,13 @@ def test_a_sliding_driver_a_hair_before_a_step_is_not_on_it(tmp_path):
     # table reads it before the step: both halves before, and no word
     text = (
         Path(__file__).parent / "data" / "explain" / "slider_driven.toml"
-    ).read_text()
+    ).read_text(encoding="utf-8")
     step = "force = { x = [0.0, 0.0, -50.0, -50.0], y = [0.0, 0.0, 0.0, 0.0], "
     step += 'over = "driver", table = [-0.07, -0.02, -0.02, 0.03] }'
     path = tmp_path / "stepped.toml"
-    path.write_text(text + f'\n[[loads]]\nlink = "slider"\nat = "guide"\n{step}\n')
+    path.write_text(
+        text + f'\n[[loads]]\nlink = "slider"\nat = "guide"\n{step}\n', encoding="utf-8"
+    )
     mech = assur.load(path)
     on, hair = -0.02, float(np.nextafter(-0.02, -1.0))
     for given, landed in (([on], True), ([hair], False)):
