@@ -27,6 +27,9 @@ from assur._text import describe
 from assur.errors import OutputError, UsageError
 
 PICTURE_SUFFIXES = (".png", ".svg", ".pdf")
+TIMELESS = {"svg": {"Date": None}, "pdf": {"CreationDate": None}}
+"""Metadata left out of a vector file: the time it was written, by which the same
+picture would differ from run to run."""
 DPI = 150
 """Resolution of the PNG pictures, dots per inch."""
 DPI_RANGE = (10.0, 1200.0)
@@ -120,7 +123,7 @@ def _write(fig: Any, path: Any, dpi: float, form: str) -> None:
     engine = fig.get_layout_engine()
     measured = hasattr(fig.canvas, "get_renderer")  # pyplot's Agg canvas
     if form != "png" or engine is None or not fig.axes or not measured:
-        fig.savefig(path, dpi=dpi, bbox_inches="tight", format=form)
+        _saved(fig, path, dpi, "tight", form)
         return
     shown = fig.dpi
     try:
@@ -137,9 +140,19 @@ def _write(fig: Any, path: Any, dpi: float, form: str) -> None:
     finally:
         fig.dpi = shown
     try:
-        fig.savefig(path, dpi=dpi, bbox_inches=box, format=form)
+        _saved(fig, path, dpi, box, form)
     finally:
         fig.set_layout_engine(engine)
+
+
+def _saved(fig: Any, path: Any, dpi: float, box: Any, form: str) -> None:
+    """Write ``fig`` to ``path``: the same bytes for the same picture, every run."""
+    import matplotlib as mpl
+
+    # an SVG's clip paths are named from a salt, random unless set
+    with mpl.rc_context({"svg.hashsalt": "assur"}):
+        metadata = TIMELESS.get(form)
+        fig.savefig(path, dpi=dpi, bbox_inches=box, format=form, metadata=metadata)
 
 
 def _save(fig: Any, path: Path, dpi: float) -> None:

@@ -117,12 +117,15 @@ def test_plot_forces_at_an_angle(
 def test_plot_svg_and_pdf(
     suffix: str, magic: bytes, tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    out = tmp_path / f"m{suffix.upper()}"
-    status, _, err = _run(
-        capsys, "plot", SLOT, "--angle", "100", "--no-labels", "-o", str(out)
-    )
-    assert status == 0, err
+    out, again = tmp_path / f"m{suffix.upper()}", tmp_path / f"again{suffix}"
+    for path in (out, again):
+        status, _, err = _run(
+            capsys, "plot", SLOT, "--angle", "100", "--no-labels", "-o", str(path)
+        )
+        assert status == 0, err
     assert out.read_bytes().startswith(magic)
+    # the same picture, the same bytes: no time of writing, no random clip names
+    assert again.read_bytes() == out.read_bytes()
 
 
 @pytest.mark.pictures
@@ -384,7 +387,7 @@ def test_diagrams_into_a_file(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     target = tmp_path / "taken.png"
-    target.write_text("x")
+    target.write_text("x", encoding="utf-8")
     status, _, err = _run(capsys, "diagrams", TENBAR, "-o", str(target))
     assert status == 2
     _error_line(err, "is a file; expected a folder")
@@ -556,7 +559,7 @@ def fake_html(monkeypatch: pytest.MonkeyPatch) -> list[tuple]:
             progress(1, 1)
         if callable(parts):  # and of the page's parts after it
             parts(1, 1)
-        Path(path).write_text("<html></html>")
+        Path(path).write_text("<html></html>", encoding="utf-8")
 
     module = types.ModuleType("assur.html")
     module.write_report = write_report
@@ -643,13 +646,13 @@ def test_report_real(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None
 @pytest.fixture
 def dollar_names(tmp_path: Path) -> Path:
     """The four-bar with names that matplotlib would read as mathtext."""
-    text = (EXAMPLES / "four_bar.toml").read_text()
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
     text = text.replace('name = "Crank-rocker four-bar"', 'name = "Four-bar $\\\\foo$"')
     text = text.replace("[links.coupler]", '[links."$^$"]').replace("coupler", "$^$")
     text = text.replace('"B"', '"$B_$"').replace("[joints.B]", '[joints."$B_$"]')
     text = text.replace("P = {", '"$P$" = {')
     path = tmp_path / "dollars.toml"
-    path.write_text(text)
+    path.write_text(text, encoding="utf-8")
     return path
 
 
