@@ -277,7 +277,7 @@ CUT = "(-1000,\\ 0)\\ \\mathrm{N}"
 def test_a_load_at_its_table_s_step_says_which_side(tmp_path, angle, said) -> None:
     # the value after the step holds at its position, the table's as the note's
     path = tmp_path / "stepped.toml"
-    path.write_text(EXERCISE.read_text() + STEPPED)
+    path.write_text(EXERCISE.read_text(encoding="utf-8") + STEPPED, encoding="utf-8")
     mech = assur.load(path)
     note = explain(mech, angle)
     check(note, assur.forces(mech, [angle]))
@@ -339,7 +339,7 @@ def test_an_answer_that_names_nothing_is_an_error(tmp_path: Path) -> None:
     with pytest.raises(assur.ModelError, match=r"answers\.rod\.zz: no such quantity"):
         explain(assur.load(EXERCISE), 45.0, {"rod.zz": 1.0})
     bad = tmp_path / "bad.toml"
-    bad.write_text('[answers]\n"rod.Fi" = "many"\n')
+    bad.write_text('[answers]\n"rod.Fi" = "many"\n', encoding="utf-8")
     from assur.explain import read_answers
 
     with pytest.raises(assur.ModelError, match=r"answers\.rod\.Fi: expected a finite"):
@@ -673,7 +673,7 @@ def test_given_answers_round_off_nan_and_dotted_keys(tmp_path):
     from assur.explain._answers import _verdict
 
     path = tmp_path / "a.toml"
-    path.write_text('[answers]\nB.F = 1928.5\n"rod.G.a" = 2565.13\n')
+    path.write_text('[answers]\nB.F = 1928.5\n"rod.G.a" = 2565.13\n', encoding="utf-8")
     assert read_answers(path)[0] == {"B.F": 1928.5, "rod.G.a": 2565.13}
     assert _verdict(0.0, 1.4e-17) == ("", "agrees")
     assert _verdict(1.0, 1.4e-17) == ("", "differs")
@@ -682,7 +682,7 @@ def test_given_answers_round_off_nan_and_dotted_keys(tmp_path):
     assert _verdict(1e308, 2.0)[0] == "$+5.00e+309$ %"  # not 300 digits, not inf
     assert _verdict(2e4, 1.0)[0] == "$+2.00e+06$ %"
     for bad in ("nan", "inf", "1" + "0" * 400):
-        path.write_text(f'[answers]\n"B.x" = {bad}\n')
+        path.write_text(f'[answers]\n"B.x" = {bad}\n', encoding="utf-8")
         with pytest.raises(assur.ModelError, match="expected a finite number"):
             read_answers(path)
     path.write_bytes(b'[answers]\n"B.x" = 1 # \xff\n')
@@ -696,7 +696,7 @@ def test_given_answers_round_off_nan_and_dotted_keys(tmp_path):
     path.write_bytes('[answers]\n"B.x" = 1\n'.encode("utf-16"))
     with pytest.raises(assur.ModelError, match=r"UTF-16 text \(it starts with"):
         read_answers(path)
-    path.write_text("[answers]\n")
+    path.write_text("[answers]\n", encoding="utf-8")
     with pytest.raises(assur.ModelError, match=r"\[answers\] is empty; expected"):
         read_answers(path)
 
@@ -749,3 +749,19 @@ def test_a_motion_that_is_not_finite_is_refused_by_name(tmp_path, capsys) -> Non
         err = capsys.readouterr().err.splitlines()
         assert err[-1] == f"assur: error: {path}: {caught.value}"
         assert all(line.startswith("assur: ") for line in err)  # no numpy's words
+
+
+def test_a_small_link_s_inertia_loads_are_its_own_not_round_off():
+    # a crank of 5.16e-13 kg m^2 beside links of 1e-3: the note wrote its
+    # inertia torque "-0 * 10 = 0", and listed it so among the group's loads
+    four_bar = Path(__file__).parent.parent / "examples" / "four_bar.toml"
+    text = four_bar.read_text(encoding="utf-8")
+    mech = assur.loads(text.replace("inertia = 5.16e-05", "inertia = 5.16e-13"))
+    note = str(explain(mech, 0.0))
+    assert (
+        "M_{i,\\mathrm{crank}} = -J_{G_{\\mathrm{crank}}} "
+        "\\varepsilon_{\\mathrm{crank}} = -5.16 \\cdot 10^{-13} \\cdot 10 = "
+        "-5.16 \\cdot 10^{-12}\\ \\mathrm{N\\,m}"
+    ) in note
+    assert "M_{i,\\mathrm{crank}} = -5.16 \\cdot 10^{-12}\\ \\mathrm{N\\,m}" in note
+    assert "M_{i,\\mathrm{crank}} = 0\\ " not in note

@@ -194,3 +194,17 @@ def test_a_prismatic_pair_s_couple_is_shown_with_its_slide() -> None:
     assert slides["head"][-1] == "M (N·m)"
     assert [row["keys"][-1] for row in slides["rows"]] == ["slot.M", "guide.M"]
     np.testing.assert_allclose(data["columns"]["slot.M"], table["slot.M"], rtol=1e-5)
+
+
+def test_a_small_link_s_inertia_loads_are_its_own_not_round_off() -> None:
+    # a crank of 5.16e-13 kg m^2 (a watch's, say) beside links of 1e-3: its
+    # moment of inertia and inertia torque were shown as 0 (an absolute cut-off
+    # at 1e-9), its offset h as 5e-8 m beside them
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    small = text.replace("inertia = 5.16e-05", "inertia = 5.16e-13")
+    mech = assur.loads(small)
+    page = render_report(mech, [0.0, 90.0])
+    rows = dict(re.findall(r'<tr data-link="([^"]+)"><th>[^<]*</th>(.*?)</tr>', page))
+    cells = re.findall(r"<td>([^<]*)</td>", rows["crank"])
+    # J_G, epsilon (the driver's 10 rad/s^2), M_i = -J_G epsilon
+    assert cells[4:7] == ["5.16e-13", "10", "-5.16e-12"]

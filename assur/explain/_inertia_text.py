@@ -13,7 +13,7 @@ import numpy as np
 from assur.explain._loads_text import inertia_load
 from assur.explain._note import Block, Display, Heading, Para
 from assur.explain._position import Position
-from assur.explain._tex import deg, name, num, par, plain, point_name, vec
+from assur.explain._tex import deg, kept, name, par, plain, point_name, vec
 
 __all__ = ["inertia_blocks"]
 
@@ -30,11 +30,13 @@ def _link(pos: Position, body: int) -> list[str]:
     a = pos.point(body, pos.loads.center[body], 2)
     size = math.hypot(*a)
     eps = pos.epsilon(body)
+    # every value here is a datum or cleaned of its round-off relative to the
+    # mechanism's motion: a small link's are shown however small
     lines = [
         f"\\vec a_{{{g}}} = {vec(a)}\\ \\mathrm{{m/s^2}},\\quad a_{{{g}}} = "
-        f"{num(size)}\\ \\mathrm{{m/s^2}}",
-        f"F_{{i,{link}}} = m_{{{link}}} a_{{{g}}} = {num(mass)} \\cdot {num(size)} = "
-        f"{num(mass * size)}\\ \\mathrm{{N}}",
+        f"{kept(size)}\\ \\mathrm{{m/s^2}}",
+        f"F_{{i,{link}}} = m_{{{link}}} a_{{{g}}} = {kept(mass)} \\cdot {kept(size)} = "
+        f"{kept(mass * size)}\\ \\mathrm{{N}}",
     ]
     if size > 0:
         lines.append(
@@ -43,14 +45,14 @@ def _link(pos: Position, body: int) -> list[str]:
             " \\text{ (against } \\vec a_G\\text{)}"
         )
     lines.append(
-        f"M_{{i,{link}}} = -J_{{{g}}} \\varepsilon_{{{link}}} = -{num(inertia)} "
-        f"\\cdot {par(eps)} = {num(torque)}\\ \\mathrm{{N\\,m}}"
+        f"M_{{i,{link}}} = -J_{{{g}}} \\varepsilon_{{{link}}} = -{kept(inertia)} "
+        f"\\cdot {par(eps, abs(eps))} = {kept(torque)}\\ \\mathrm{{N\\,m}}"
     )
     if mass * size > 0 and torque:
         lines.append(
             f"h_{{{link}}} = \\frac{{|M_{{i,{link}}}|}}{{F_{{i,{link}}}}} = "
-            f"\\frac{{{num(abs(torque))}}}{{{num(mass * size)}}} = "
-            f"{num(abs(torque) / (mass * size))}\\ \\mathrm{{m}}"
+            f"\\frac{{{kept(abs(torque))}}}{{{kept(mass * size)}}} = "
+            f"{kept(abs(torque) / (mass * size))}\\ \\mathrm{{m}}"
         )
     return lines
 

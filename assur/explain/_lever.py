@@ -18,7 +18,7 @@ from assur.explain._friction_text import power_rows
 from assur.explain._loads_text import Load, own_loads
 from assur.explain._note import Block, Display, Grid, Heading, Para
 from assur.explain._position import Position, at
-from assur.explain._tex import ZERO, name, num, par, plain, vec
+from assur.explain._tex import ZERO, kept, name, num, par, plain, vec
 from assur.groups._motion import Motion
 from assur.groups.driver import DriverPlan
 
@@ -277,7 +277,7 @@ def lever_terms(
     powers = pos.force_scale() * fastest
     for t in parts:
         if t.couple:
-            given, rate = num(t.load.couple), f"\\omega = {num(t.omega, turning)}"
+            given, rate = kept(t.load.couple), f"\\omega = {num(t.omega, turning)}"
             arm = ""  # a couple has no line, and no arm
         else:
             given = vec(t.load.force, pos.force_scale())

@@ -19,7 +19,7 @@ from assur._loads import table_reading, table_step, table_values
 from assur._tables import Reading
 from assur._vec import Array
 from assur.explain._position import ROUND_OFF, Position, at, cross, value
-from assur.explain._tex import name, num, par, point_name, text, vec
+from assur.explain._tex import kept, name, num, par, point_name, text, vec
 from assur.groups._pairs import PairPlan
 from assur.model import LoadTable
 
@@ -308,9 +308,13 @@ def moment_line(loads: list[Load], about: Array, label: str) -> tuple[str, float
     """
     parts = []
     total_moment = 0.0
+    # what the sum is told from round-off by: the size of its terms
+    scale = 0.0
     for x in loads:
         m = moment(x, about)
         total_moment += m
+        scale = max(scale, math.hypot(*(x.point - about)) * math.hypot(*x.force))
+        scale = max(scale, abs(x.couple))
         pieces = []
         if math.hypot(*x.force) > 0:
             r = x.point - about
@@ -318,14 +322,14 @@ def moment_line(loads: list[Load], about: Array, label: str) -> tuple[str, float
                 f"{par(r[0])} \\cdot {par(x.force[1])} - {par(r[1])} \\cdot "
                 f"{par(x.force[0])}"
             )
-        if x.couple:
-            pieces.append(par(x.couple))
+        if x.couple:  # a load's own couple, however small
+            pieces.append(par(x.couple, abs(x.couple)))
         if pieces:
             parts.append(" + ".join(pieces))
     if not parts:  # no load on the link: nothing to sum ("= 0 = 0")
         return f"\\sum M_{{{label}}} = 0", total_moment
     body = " + ".join(f"[{p}]" for p in parts)
-    return f"\\sum M_{{{label}}} = {body} = {num(total_moment)}", total_moment
+    return f"\\sum M_{{{label}}} = {body} = {num(total_moment, scale)}", total_moment
 
 
 def force_lines(loads: list[Load]) -> list[str]:
@@ -338,12 +342,12 @@ def force_lines(loads: list[Load]) -> list[str]:
             text += f" = {vec(x.force)}\\ \\mathrm{{N}}"
             if x.where:
                 text += f",\\quad \\text{{at}}\\ {x.where} = {vec(x.point)}"
-        if x.couple:
+        if x.couple:  # a load's own couple (cleaned, or a datum), however small
             text += (
-                f" = {num(x.couple)}\\ \\mathrm{{N\\,m}}"
+                f" = {kept(x.couple)}\\ \\mathrm{{N\\,m}}"
                 if not math.hypot(*x.force)
                 else f",\\ {x.couple_tex + ' = ' if x.couple_tex else ''}"
-                f"{num(x.couple)}\\ \\mathrm{{N\\,m}}"
+                f"{kept(x.couple)}\\ \\mathrm{{N\\,m}}"
             )
         elif not math.hypot(*x.force):  # a load that is zero here is written so
             zero = (
@@ -355,7 +359,7 @@ def force_lines(loads: list[Load]) -> list[str]:
             was = (
                 f"{vec(np.array(x.before))}\\ \\mathrm{{N}}"
                 if len(x.before) == 2
-                else f"{num(x.before[0])}\\ \\mathrm{{N\\,m}}"
+                else f"{kept(x.before[0])}\\ \\mathrm{{N\\,m}}"
             )
             # in the table's order, whichever way the driver moves: the value
             # at the step's position is the one on the side of larger positions

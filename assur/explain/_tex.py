@@ -18,6 +18,7 @@ __all__ = [
     "ZERO",
     "cramer",
     "deg",
+    "kept",
     "name",
     "num",
     "par",
@@ -81,6 +82,20 @@ def _trim(text: str) -> str:
     if "." in text:
         text = text.rstrip("0").rstrip(".")
     return text
+
+
+def kept(x: float) -> str:
+    r"""Return :func:`num` of ``x``, however small: a datum, or a value cleaned already.
+
+    A mass, a moment of inertia, a rate the note cleaned of its round-off (relative
+    to the mechanism's motion): 5e-13 kg m^2 is a small link's own, not round-off.
+
+    Examples
+    --------
+    >>> kept(5.16e-13), num(5.16e-13)
+    ('5.16 \\cdot 10^{-13}', '0')
+    """
+    return num(x, abs(x))
 
 
 def par(x: float, scale: float = 1.0, least: int = 0) -> str:

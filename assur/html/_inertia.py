@@ -13,7 +13,7 @@ from html import escape
 
 from assur.analysis import Table
 from assur.html._data import public
-from assur.html._sections import first_position, number, wide_card
+from assur.html._sections import first_position, largest, number, wide_card
 from assur.html._series import massive_links
 
 __all__ = ["inertia_html"]
@@ -58,6 +58,30 @@ def inertia_rows(table: Table, row: int = 0) -> list[tuple[str, list[float]]]:
     return out
 
 
+def _sizes(
+    rows: list[tuple[str, list[float]]], values: list[float]
+) -> list[float | None]:
+    """Return what each of a row's ``values`` is told from round-off by.
+
+    Accelerations by the largest of the links' (a yoke at mid-stroke has 1e-11
+    m/s^2 where a crank's pin has 20), the inertia loads by the link's own mass or
+    moment of inertia times that; the masses and moments of inertia are the file's
+    own, shown however small.
+    """
+    columns = [largest(c) for c in zip(*(v for _, v in rows), strict=True)]
+    mass, inertia = values[0], values[4]
+    return [
+        None,
+        columns[1],
+        mass * columns[1],
+        columns[3],
+        None,
+        columns[5],
+        inertia * columns[5],
+        columns[7],
+    ]
+
+
 def inertia_html(table: Table) -> str:
     """Return the inertia section of a forces table at its first row (or nothing)."""
     if table.force_state is None or len(table) == 0:
@@ -71,7 +95,10 @@ def inertia_html(table: Table) -> str:
     )
     body = "\n".join(
         f'<tr data-link="{escape(name)}"><th>{escape(public(name))}</th>'
-        + "".join(f"<td>{number(v)}</td>" for v in values)
+        + "".join(
+            f"<td>{number(v, s)}</td>"
+            for v, s in zip(values, _sizes(rows, values), strict=True)
+        )
         + "</tr>"
         for name, values in rows
     )

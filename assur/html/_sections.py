@@ -22,7 +22,8 @@ from assur.html._series import table_columns
 from assur.plan import Plan
 
 ROUND_OFF = 1e-9
-"""Values below this (N, N m, m, rad/s) are round-off and show as 0."""
+"""Values below this fraction of the largest of their kind in the same table are
+round-off and show as 0."""
 LONG_TABLE = 60
 """Tables with more rows than this show every 10th row."""
 GROUP_HEADINGS = (
@@ -49,11 +50,23 @@ def first_position(table: Table) -> str:
     return escape(row_position(table, 0))
 
 
-def number(v: float) -> str:
-    """Format a table value; round-off below ROUND_OFF shows as 0."""
+def number(v: float, scale: float | None = None) -> str:
+    """Format a value; below ``ROUND_OFF * scale`` it is round-off and shows as 0.
+
+    Without a scale (a datum, or a result cleaned of its round-off already) only
+    zero shows as 0: a small mechanism's values are its own, however small.
+    """
     if not math.isfinite(v):
         return "–"
-    return "0" if abs(v) < ROUND_OFF else f"{v:.5g}"
+    if v == 0.0 or (scale is not None and abs(v) < ROUND_OFF * scale):
+        return "0"
+    return f"{v:.5g}"
+
+
+def largest(values: Any) -> float:
+    """Return the largest finite magnitude among ``values`` (0 for none)."""
+    found = np.abs(np.asarray(values, dtype=float))
+    return float(np.max(found, where=np.isfinite(found), initial=0.0))
 
 
 def meta_html(struct: Structure, table: Table, data: dict[str, Any]) -> str:
@@ -149,10 +162,17 @@ def summary_html(table: Table) -> str:
 
     summary = Summary()
     summary.add(table)
+    found, units = summary.result(), summary.units
+    # round-off told by the largest value of its unit: a mean torque of 1e-16 N m
+    # beside peaks of 0.2 (a turn of a mechanism that does no net work)
+    sizes: dict[str, float] = {}
+    for key, value in found.items():
+        sizes[units[key]] = max(sizes.get(units[key], 0.0), largest(value))
     rows = "\n".join(
         f'<tr data-key="{escape(key)}"><th>{escape(key)}</th>'
-        f"<td>{number(value)}</td><td>{escape(pretty_unit(summary.units[key]))}</td></tr>"
-        for key, value in summary.result().items()
+        f"<td>{number(value, sizes[units[key]])}</td>"
+        f"<td>{escape(pretty_unit(units[key]))}</td></tr>"
+        for key, value in found.items()
     )
     # as the command line's summary says it: which sign drives a clockwise crank
     said = [" ".join(turning(summary)), *notes(summary)]
@@ -183,12 +203,21 @@ def table_html(plan: Plan, table: Table) -> str:
     columns = table_columns(plan, table)
     step = 10 if len(table) > LONG_TABLE else 1
     values = [np.asarray(table[key]) for key, _ in columns]
+    # round-off is told by the largest value of its unit: a joint's reaction that
+    # is 1e-14 N beside others' 3000 N, not a small mechanism's 1e-10 N
+    units = [table.column(key).unit for key, _ in columns]
+    sizes: dict[str, float] = {}
+    for u, v in zip(units, values, strict=True):
+        sizes[u] = max(sizes.get(u, 0.0), largest(v))
     head = "".join(
         f'<th data-key="{escape(key)}">{escape(title)}</th>' for key, title in columns
     )
     rows = [
         f'<tr data-row="{i}">'
-        + "".join(f"<td>{number(float(v[i]))}</td>" for v in values)
+        + "".join(
+            f"<td>{number(float(v[i]), sizes[u])}</td>"
+            for u, v in zip(units, values, strict=True)
+        )
         + "</tr>"
         for i in range(0, len(table), step)
     ]
