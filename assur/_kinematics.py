@@ -264,7 +264,8 @@ def _anchor_poses(
     sides = []
     for sign in (1.0, -1.0):
         far = max((m * sign for m in wanted), default=0.0)
-        last = max((m * sign for m in kept), default=0.0)
+        # a snapshot of the marks: another thread sharing the plan may add some
+        last = max((m * sign for m in list(kept)), default=0.0)
         if far > last:
             sides.append([sign, last, far])
     while sides:

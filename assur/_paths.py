@@ -93,7 +93,8 @@ def path_changes(plan: Plan, drive: Array, upto: int | None = None) -> PathChang
     if found is None:
         found = _changes(plan, groups, drive)
         if len(kept) >= KEPT:
-            kept.pop(next(iter(kept)))
+            # another thread may drop the same oldest batch at once: no KeyError
+            kept.pop(next(iter(list(kept))), None)
         kept[key] = found
     return found
 

@@ -187,8 +187,10 @@ class Table(Columns):
             from assur._kinematics import extend
 
             with np.errstate(all="ignore"):  # the sweep's own troubles were told
-                found = self._states[level] = extend(self.plan, self.state)
+                found = extend(self.plan, self.state)
+            # read-only before it is kept: another thread may read it at once
             freeze((found.motion, found.slide))
+            self._states[level] = found
         return found
 
     def column(self, name: str) -> Column:
