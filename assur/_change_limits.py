@@ -10,14 +10,13 @@ torque, has there the value it tends to from either side.
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Callable, Sequence
 
 import numpy as np
 
 from assur._branches import change_points
 from assur._vec import Array
-from assur.errors import AssurWarning
+from assur._warn import held
 from assur.plan import Plan
 
 __all__ = ["across_change_points"]
@@ -57,8 +56,7 @@ def across_change_points(
     # the positions around each change point met, node by node: their warnings
     # (near a dead centre) are of positions nobody asked for
     around = (at[on][None, :] + step * NODES[:, None]).ravel()
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", AssurWarning)
+    with held():
         found = [np.asarray(v).reshape(NODES.shape[0], -1) for v in evaluate(around)]
     kept = [np.full(angles.shape, np.nan) for _ in found]
     rest = ~on

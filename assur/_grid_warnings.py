@@ -7,9 +7,8 @@ inertia that the finest grid does not resolve.
 
 from __future__ import annotations
 
-import warnings
-
 from assur._text import fitting
+from assur._warn import warn
 from assur.errors import AssurWarning
 
 __all__ = ["OWN", "TROUBLE_TEXT", "noise_message", "pass_on", "unresolved_message"]
@@ -57,7 +56,7 @@ def pass_on(messages: list[str], count: int) -> None:
     """
     own = [m for m in messages if m.startswith(OWN)]
     for message in own:
-        warnings.warn(f"dynamics: {message}", AssurWarning, stacklevel=3)
+        warn(f"dynamics: {message}", AssurWarning, stacklevel=3)
     messages = [m for m in messages if not m.startswith(OWN)]
     if not messages:
         return
@@ -71,7 +70,7 @@ def pass_on(messages: list[str], count: int) -> None:
     shown = "; ".join(troubles[:fit])
     if fit < len(troubles):
         shown += f"; and {len(troubles) - fit} more"
-    warnings.warn(
+    warn(
         f"dynamics, on its internal grid of up to {count} positions a turn: {shown}",
         AssurWarning,
         stacklevel=3,

@@ -6,7 +6,6 @@ crank, or a prismatic joint's slide) and interpolated linearly over the batch.
 
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass
 from typing import Any
 
@@ -23,6 +22,7 @@ from assur._tables import (
     steps,
 )
 from assur._vec import Array
+from assur._warn import warn
 from assur.errors import AssurWarning, ModelError
 from assur.model import LoadTable, Mechanism, resolve_point
 from assur.plan import Plan
@@ -118,7 +118,7 @@ def _compile(plan: Plan) -> LoadPlan:
     still = _never_turning(plan)
     if not QUIET.get():  # a study compiling its variants says them in their rows
         for msg in massless_texts(mech):
-            warnings.warn(msg, AssurWarning, stacklevel=2)
+            warn(msg, AssurWarning, stacklevel=2)
     for link in mech.links:
         if not link.mass:
             continue

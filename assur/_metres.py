@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import os
 import sys
-import warnings
 from contextvars import ContextVar
 from typing import Any
 
+from assur._warn import warn
 from assur.errors import AssurWarning
 
 __all__ = ["LARGE", "QUIET", "metres", "metres_text"]
@@ -31,7 +31,7 @@ def metres(size: float) -> None:
     """
     msg = metres_text(size)
     if msg is not None and not QUIET.get():
-        warnings.warn(msg, AssurWarning, stacklevel=_outside())
+        warn(msg, AssurWarning, stacklevel=_outside())
 
 
 def metres_text(size: float) -> str | None:

@@ -6,7 +6,6 @@ states; :class:`Again` solves a sweep again for a table that kept few of them.
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
@@ -25,7 +24,7 @@ from assur._reach import unreached
 from assur._state import CHUNK, jerks
 from assur._unexplained import _unexplained
 from assur._vec import Array, Mask, gather
-from assur.errors import AssurWarning
+from assur._warn import held
 from assur.plan import Plan
 
 __all__ = ["CHUNK", "Again"]
@@ -150,8 +149,7 @@ class Again:
     def solve(self) -> tuple[_kin.KinematicState, _kst.ForceState | None]:
         """Return the kinematic and force states of every kept position."""
         n = self.drive.shape[0]
-        with warnings.catch_warnings(), progress("", n, False) as bar:
-            warnings.simplefilter("ignore", AssurWarning)
+        with held(), progress("", n, False) as bar:  # told by the first solve
             tree = _passes(
                 self.plan,
                 self.given,

@@ -12,7 +12,6 @@ and a position that cannot be assembled is reported as the whole sweep reports i
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import Any, NoReturn
@@ -24,6 +23,7 @@ from assur._skipped import Skipped
 from assur._state import CHUNK as SWEEP_SLICE
 from assur._troubles import _change_points
 from assur._vec import Array, full
+from assur._warn import held, warn
 from assur.columns import balancing_columns
 from assur.errors import (
     AssemblyError,
@@ -101,8 +101,7 @@ def slices(
     near = _Warnings(mech, skip)
     for start in range(0, max(n, 1), chunk):
         part = given[start : start + chunk]
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always")
+        with held() as caught:
             try:
                 table = analyse(
                     mech, part, skip_unassembled=skip, progress=_told(advance)
@@ -143,8 +142,7 @@ def slices(
 
 def _first_failure(analyse: Any, mech: Any, first: Array) -> str:
     """Return the error of the position ``first`` (one row), as the sweep gives it."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", AssurWarning)  # said by the sweep already
+    with held():  # said by the sweep already
         try:
             analyse(mech, first)
         except FAILURES as err:
@@ -200,8 +198,7 @@ def _check(
     loads = balancing_columns(plan_of(mech)) if rubbing else []
     for start in range(0, len(rest), chunk):
         part = rest[start : start + chunk]
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # given once, by the analysis itself
+        with held():  # given once, by the analysis itself
             try:
                 if rubbing:
                     force_table(mech, part, columns=loads)
@@ -348,8 +345,7 @@ class _Warnings:
         """Whether the warning ``key`` holds at one position (solved on its own)."""
         from assur.analysis import kinematics
 
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always")
+        with held() as caught:
             kinematics(
                 self.mech, position, skip_unassembled=self.skip, columns=["angle"]
             )
@@ -365,15 +361,14 @@ class _Warnings:
         that fails does not list.
         """
         plan = plan_of(self.mech)
-        with warnings.catch_warnings(record=True) as caught:
-            warnings.simplefilter("always")
+        with held() as caught:
             for start in range(0, len(rest), chunk):
                 part = positions(plan, rest[start : start + chunk])
                 _change_points(plan, part, to_si(plan, part))
         for w in caught:
             self.order.setdefault((w.category, str(w.message)))
         for category, other in self.order:
-            warnings.warn(other, category, stacklevel=3)
+            warn(other, category, stacklevel=3)
 
     def give(self) -> None:
         """Issue the warnings of the whole sweep, in a whole sweep's order.
@@ -383,7 +378,7 @@ class _Warnings:
         first met.
         """
         for category, other in self.order:
-            warnings.warn(other, category, stacklevel=3)
+            warn(other, category, stacklevel=3)
         for key, found in self.near.items():
             runs = [r[0] if r[0] == r[-1] else f"{r[0]} to {r[-1]}" for r in found.runs]
             more = found.cut or len(runs) > RUNS_SHOWN
@@ -391,4 +386,4 @@ class _Warnings:
             one = len(found.runs) == 1 and found.runs[0][0] == found.runs[0][-1]
             if one and not found.cut:
                 key = key.replace(POSITIONS, ONE_POSITION)
-            warnings.warn(key + text, AssurWarning, stacklevel=3)
+            warn(key + text, AssurWarning, stacklevel=3)

@@ -6,12 +6,12 @@ And a start from rest refused where the motor's torque does not beat the load's.
 from __future__ import annotations
 
 import math
-import warnings
 from typing import TYPE_CHECKING, Any
 
 from assur._motor import validate_motor
 from assur._text import describe
 from assur._vec import integer, real
+from assur._warn import warn
 from assur.dynamics_reduced import Reduced
 from assur.errors import AssurWarning, ModelError, UsageError
 from assur.model import Mechanism, Motor
@@ -87,7 +87,7 @@ def _against_omega(mechanism: Mechanism, motor: Motor) -> None:
         f"against the driver's omega = {omega:g} rad/s: the start-up runs the other "
         "way than every analysis at omega; expected a motor of omega's sign"
     )
-    warnings.warn(msg, AssurWarning, stacklevel=3)
+    warn(msg, AssurWarning, stacklevel=3)
 
 
 def _starts(model: Reduced, motor: Motor, omega0: float, curves: Curves) -> None:

@@ -8,7 +8,6 @@ The C heap kept between batches.
 
 from __future__ import annotations
 
-import warnings
 from typing import Any
 
 import numpy as np
@@ -20,6 +19,7 @@ from assur._metres import metres_text
 from assur._stack import Unstackable, signature
 from assur._variants import Template, template
 from assur._vec import Array
+from assur._warn import held
 from assur.analysis import forces
 from assur.errors import AssurError, AssurWarning
 from assur.model import Mechanism
@@ -171,8 +171,7 @@ def _alone(mech: Mechanism, angles: Array, long: bool) -> dict[str, Any]:
     command line does: in bounded memory, with the numbers, errors and warnings of
     one call.
     """
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
+    with held() as caught:
         try:
             if long:
                 out: dict[str, Any] = _summed(mech, angles)

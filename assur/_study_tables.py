@@ -7,7 +7,6 @@ the order of the summary's columns, one process's or many partitions'.
 from __future__ import annotations
 
 import os
-import warnings
 from collections.abc import Sequence
 from typing import Any
 
@@ -16,8 +15,9 @@ import numpy as np
 from assur._study_inputs import Factory, _built, _variant
 from assur._text import suggest
 from assur._vec import Array, integer
+from assur._warn import held
 from assur.analysis import forces
-from assur.errors import AssurError, AssurWarning, UsageError
+from assur.errors import AssurError, UsageError
 
 
 def _tables(
@@ -108,8 +108,7 @@ def _table(
     columns wanted are computed and kept: a study's tables hold no more than the
     Dataset asked for.
     """
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", AssurWarning)
+    with held():  # the study's summary told them, variant by variant
         try:
             mech = _built(factory, p)
         except Exception:  # the factory's own error: the variant has no table

@@ -7,7 +7,6 @@ messages name the whole sweep's counts and ranges of driver positions (as given)
 from __future__ import annotations
 
 import math
-import warnings
 from typing import Any, NoReturn
 
 import numpy as np
@@ -24,6 +23,7 @@ from assur._runs import (
     runs_text,
 )
 from assur._vec import Array, Mask
+from assur._warn import warn
 from assur.errors import (
     AssemblyError,
     AssurWarning,
@@ -96,7 +96,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
                 if group.split(" ")[0] in DYADS
                 else "its position equations nearly singular"
             )
-            warnings.warn(
+            warn(
                 f"group {group}: near a dead centre ({how}) at "
                 f"{positions_where(plan, given, mask)}",
                 AssurWarning,
@@ -105,7 +105,7 @@ def _report(plan: Plan, given: Array, troubles: list[Any], skip: bool) -> Mask |
         elif what == "other way":
             mask &= _short_way(plan, given)
             if mask.any():
-                warnings.warn(_around(plan, given, group, mask, ok), AssurWarning, 4)
+                warn(_around(plan, given, group, mask, ok), AssurWarning, stacklevel=4)
     return None if ok.all() else ok
 
 
@@ -333,7 +333,7 @@ def _change_points(plan: Plan, given: Array, drive: Array) -> bool:
     for g, position in passed:
         d = plan.drivers[0]
         value = math.degrees(position) if d.kind == "R" else position
-        warnings.warn(
+        warn(
             f"group {plan.solvers[g].label}: its two assembly branches meet at driver "
             f"position {position_where(plan, np.array([value]))} (a change point); "
             "the motion is carried through onto the branch whose velocities are "
@@ -348,7 +348,7 @@ def _path_change_points(plan: Plan, given: Array, drive: Array) -> bool:
     """Warn of the change points on the positions' paths (several drivers)."""
     count = path_changes(plan, drive).count
     for g, c in count.items():
-        warnings.warn(
+        warn(
             f"group {plan.solvers[g].label}: its two assembly branches meet on the "
             "straight path from the reference pose to driver positions "
             f"{runs_text(plan, given, c > 0)} (a change point); the motion is carried "

@@ -7,7 +7,6 @@ the positions.
 
 from __future__ import annotations
 
-import warnings
 from typing import Any
 
 import numpy as np
@@ -15,6 +14,7 @@ import numpy as np
 from assur._runs import positions_where
 from assur._troubles import NOTICES
 from assur._vec import Array, is_array
+from assur._warn import warn
 from assur.errors import AssurWarning
 from assur.plan import Plan
 
@@ -54,7 +54,7 @@ def _unexplained(
                 if owner not in named:
                     named.append(owner)
     if bad.any():
-        warnings.warn(
+        warn(
             f"values of {', '.join(named[:6])}{', ...' if len(named) > 6 else ''} are "
             f"not finite at {positions_where(plan, given, bad)}, where no "
             "group fails: the inputs are out of the range the arithmetic can follow",

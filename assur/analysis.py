@@ -9,7 +9,6 @@ columns are the mechanism file contract's.
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Sequence
 from dataclasses import replace
 from typing import Any
@@ -31,8 +30,9 @@ from assur._passes import (
 from assur._progress import Callback, progress
 from assur._troubles import NOTICES, _change_points, _report
 from assur._vec import Array, is_flag
+from assur._warn import held
 from assur.columns import balancing_columns, selection
-from assur.errors import AssurWarning, ModelError, UsageError
+from assur.errors import ModelError, UsageError
 from assur.model import Mechanism
 from assur.plan import plan_of
 from assur.table import Columns, Table
@@ -296,8 +296,7 @@ def report_troubles(
     loads = compile_loads(plan) if chosen.forces else None
     starts = range(0, n, CHUNK)
     troubles: list[Any] = []
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", AssurWarning)
+    with held():  # the sweep's own warnings, told by it
         # a sweep passes a change point where one of its slices does (each slice's
         # range takes in the reference pose); each position's branch is its own
         passed = any(

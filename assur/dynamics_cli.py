@@ -13,9 +13,9 @@ Its parts: the options checked (``assur._dynamics_options``), the figures given
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import sys
-import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -55,6 +55,7 @@ from assur._startup_checks import MOST_TURNS
 from assur._stdin import input_text
 from assur._tableio import CsvWriter, JsonWriter
 from assur._vec import Array
+from assur._warn import held, warn
 from assur.dynamics_flywheel import SMALLEST_DELTA
 from assur.dynamics_model import COLUMNS, solved
 from assur.dynamics_model import result as dynamics_rows
@@ -160,7 +161,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
             raise
         # a motor may carry the crank round where no steady state at the file's
         # omega (under a constant torque) exists: the start-up is still shown
-        warnings.warn(f"{err}; shown: the start-up alone", AssurWarning, stacklevel=2)
+        warn(f"{err}; shown: the start-up alone", AssurWarning, stacklevel=2)
         state = None
     startup_file = []
     if run is not None and args.startup_csv is not None:
@@ -258,9 +259,8 @@ class _Rows:
         result = dynamics_rows(self.mech, model, steady, self.angles[start:stop])
         if not self.forces:
             return result
-        with warnings.catch_warnings():
-            if self.checked:  # said once by the check of the whole sweep
-                warnings.simplefilter("ignore", AssurWarning)
+        # said once by the check of the whole sweep
+        with held() if self.checked else contextlib.nullcontext():
             motion = assur.forces(
                 self.mech,
                 result["angle"],

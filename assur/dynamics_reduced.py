@@ -13,7 +13,6 @@ state (:mod:`assur.dynamics_model`) and the start-up in time
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Any
@@ -24,6 +23,7 @@ from assur._change_limits import across_change_points
 from assur._dynamic_checks import check_dynamic
 from assur._grid_warnings import noise_message, pass_on, unresolved_message
 from assur._vec import Array
+from assur._warn import held
 from assur.analysis import forces, kinematics
 from assur.errors import (
     AssemblyError,
@@ -274,8 +274,7 @@ def _sample(
     """
     k = np.arange(first, count, every)
     angles = math.degrees(start) + 360.0 * k / count
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", AssurWarning)
+    with held() as caught:
         try:
             # at a change point the sweep is singular: J, J' and M are its limits
             values = tuple(
@@ -288,9 +287,6 @@ def _sample(
             # which the user never asked for: reduce() says what they count
             setattr(err, "grid", k.size)  # noqa: B010 (an attribute of our own)
             raise
-    for w in caught:
-        if not issubclass(w.category, AssurWarning):
-            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     return values, [str(w.message) for w in caught if w.category is AssurWarning]
 
 

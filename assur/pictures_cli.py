@@ -15,7 +15,6 @@ from __future__ import annotations
 import argparse
 import contextlib
 import math
-import warnings
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any
@@ -66,6 +65,7 @@ from assur._picture_sweeps import (
     _table,
 )
 from assur._text import counted
+from assur._warn import warn
 from assur.errors import AssurError, AssurWarning, UsageError
 
 __all__ = ["register"]
@@ -318,7 +318,7 @@ def _steady(table: Any) -> Any:
     try:
         return shown(mech, table["angle"])
     except AssurError as err:
-        warnings.warn(f"no dynamics.png: {err}", AssurWarning, stacklevel=2)
+        warn(f"no dynamics.png: {err}", AssurWarning, stacklevel=2)
         return None
 
 

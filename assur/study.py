@@ -13,7 +13,6 @@ workers run. pandas, xarray and dask are imported only when a study needs them.
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -269,28 +268,20 @@ def summarise(
     frames = []
     size = max(1, min(CHUNK // max(1, angles.shape[0]), BLOCK // GROUPED))
     templates: dict[Any, Template | None] = {}
-    with ONE_AT_A_TIME:
-        _keep_the_heap()
-        for first in range(0, count, GROUPED * size):
-            block = range(first, min(first + GROUPED * size, count))
-            rows = _block(factory, parameters, angles, block, templates, size)
-            # a block's rows as columns: a dict per variant costs ten times as much
-            index = pd.RangeIndex(block.start, block.stop)
-            frames.append(pd.DataFrame(rows, index=index))
-            if bar is not None:
-                bar.advance(len(block))
+    _keep_the_heap()
+    for first in range(0, count, GROUPED * size):
+        block = range(first, min(first + GROUPED * size, count))
+        rows = _block(factory, parameters, angles, block, templates, size)
+        # a block's rows as columns: a dict per variant costs ten times as much
+        index = pd.RangeIndex(block.start, block.stop)
+        frames.append(pd.DataFrame(rows, index=index))
+        if bar is not None:
+            bar.advance(len(block))
     frame = ordered(pd.concat(frames), list(parameters))
     frame.index = pd.RangeIndex(start, start + count, name="variant")
     return frame
 
 
-ONE_AT_A_TIME = threading.RLock()
-"""Held by the process while it summarises variants: each variant's warnings are
-recorded with ``warnings.catch_warnings``, which swaps process-wide state (the
-filters, ``showwarning``); two threads recording at once lose each other's warnings
-or file them under the wrong variant. Re-entrant: a factory may run a study of its
-own (the best rod for each crank, say), in the same thread, its recordings nested
-in its variant's."""
 GROUPED = 8
 """Batches of variants built and compiled together: the checks of a compilation cost
 about as much for a few hundred variants as for the few dozen of one batch."""

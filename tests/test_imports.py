@@ -27,6 +27,8 @@ RANKS = {
     "assur._text": 0,
     "assur._optional": 0,
     "assur._progress": 0,
+    # the library's own warnings, given or held (a context variable)
+    "assur._warn": 0,
     "assur._style": 0,
     # the command line's Ctrl-C guard, run first by the package: the standard library
     "assur._start": 0,

@@ -11,11 +11,11 @@ it returns is Markdown (``str()``), HTML with MathML or LaTeX.
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Mapping
 from typing import Any
 
 from assur._structure import structure
+from assur._warn import warn
 from assur.errors import AssurWarning, SelfLockingError
 from assur.explain._answers import answer_blocks, checked_answers, read_answers
 from assur.explain._driver_text import driver_blocks
@@ -91,7 +91,7 @@ def explain(
         pos = position(mechanism, angle)
     except SelfLockingError as err:
         pos = locked_position(mechanism, angle, err)
-        warnings.warn(
+        warn(
             f"group {pos.locked}: its friction locks it at {_where(pos.table)}: the "
             "note shows the analysis as far as that group, and why it locks (no "
             "balancing load, no lever)",
