@@ -59,14 +59,26 @@ def _pair_plans(
     return out
 
 
-def _dyad(solver: DyadSolver, pairs: dict[str, PairPlan], scale: Any) -> DyadSolver:
-    """Return ``solver`` with the pairs ``pairs``, chosen as ``compile_dyad`` does."""
+def _dyad(
+    solver: DyadSolver, pairs: dict[str, PairPlan], scale: Any, size: Any
+) -> DyadSolver:
+    """Return ``solver`` with the pairs ``pairs``, chosen as ``compile_dyad`` does.
+
+    ``scale`` is the mechanisms' size and ``size`` the group's (m).
+    """
     ext = (pairs[solver.ext[0].name], pairs[solver.ext[1].name])
     mid = pairs[solver.mid.name]
     bodies, known = solver.bodies, solver.known
     d_known, d_mid = offsets(ext, mid, bodies, known)
     return dataclasses.replace(
-        solver, ext=ext, mid=mid, d_known=d_known, d_mid=d_mid, scale=scale, branch=1.0
+        solver,
+        ext=ext,
+        mid=mid,
+        d_known=d_known,
+        d_mid=d_mid,
+        scale=scale,
+        size=size,
+        branch=1.0,
     )
 
 
@@ -78,11 +90,13 @@ def _plan(
     origins: Array,
     scale: Array,
     branches: list[Array],
+    sizes: list[Array],
     points: bool = True,
 ) -> tuple[Plan, Array]:
     """Return the stacked plan, and every variant's reference driver position.
 
-    Without ``points``, the reported points' offsets are the template's.
+    ``branches`` and ``sizes`` (m) are each dyad's, one value per variant. Without
+    ``points``, the reported points' offsets are the template's.
     """
     t = model.plan
     col = model.columns
@@ -90,9 +104,9 @@ def _plan(
     pairs = _pair_plans(t, offsets, leaf)
     size = leaf(scale)
     solvers = []
-    for solver, branch in zip(t.solvers, branches, strict=True):
+    for solver, branch, own in zip(t.solvers, branches, sizes, strict=True):
         assert isinstance(solver, DyadSolver)
-        dyad = _dyad(solver, pairs, size)
+        dyad = _dyad(solver, pairs, size, leaf(own))
         solvers.append(dataclasses.replace(dyad, branch=leaf(branch)))
     drivers = []
     references = np.zeros(rows.shape[0])

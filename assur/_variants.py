@@ -42,6 +42,7 @@ from assur._variant_plans import Leaf, _as_is, _dyad, _loads, _pair_plans, _plan
 from assur._vec import Array, Mask
 from assur.groups._dyad import DyadSolver
 from assur.groups._motion import Motion
+from assur.groups._protocol import group_sizes
 from assur.model import LoadTable, Mechanism, Toward
 from assur.plan import FAR, Plan, compile_plan
 
@@ -223,8 +224,9 @@ class Compiled:
     """Variants compiled against a template: their numbers, ready to be batched.
 
     ``offsets`` are each pair's offsets on its two bodies, ``origins`` (k, B, 2) the
-    bodies' origins, ``scale`` (k,) the mechanisms' sizes and ``branches`` each
-    dyad's assembly branch (k,), all in core coordinates, one value per variant.
+    bodies' origins, ``scale`` (k,) the mechanisms' sizes, ``branches`` each
+    dyad's assembly branch (k,) and ``sizes`` each dyad's own size (k,), all in core
+    coordinates, one value per variant.
     """
 
     model: Template
@@ -233,6 +235,7 @@ class Compiled:
     origins: Array
     scale: Array
     branches: list[Array]
+    sizes: list[Array]
 
     def batch(self, chosen: Index, repeats: int) -> Many:
         """Return the stacked plan of the variants ``chosen`` (indices into rows)."""
@@ -280,6 +283,7 @@ class Compiled:
             self.origins,
             self.scale,
             self.branches,
+            self.sizes,
             points,
         )
 
@@ -328,6 +332,7 @@ def compile_many(model: Template, rows: Array) -> tuple[Compiled, Mask]:
         for p in pairs
     }
     branches: list[Array] = []
+    sizes: list[Array] = []
     if t.solvers:
         motions = tuple(
             # each variant's origin: the kernels take arrays wherever numbers go
@@ -337,8 +342,11 @@ def compile_many(model: Template, rows: Array) -> tuple[Compiled, Mask]:
         plain = _pair_plans(t, offsets, _as_is)
         for solver in t.solvers:
             assert isinstance(solver, DyadSolver)
-            dyad = _dyad(solver, plain, scale)
+            names = solver.group.internal + solver.group.external
+            own = group_sizes(np.stack([core[n] for n in names], axis=1), scale)
+            dyad = _dyad(solver, plain, scale, own)
             branch, bad = _branch(dyad, motions, scale)
             branches.append(branch)
+            sizes.append(own)
             doubtful |= bad
-    return Compiled(model, rows, offsets, origins, scale, branches), doubtful
+    return Compiled(model, rows, offsets, origins, scale, branches, sizes), doubtful

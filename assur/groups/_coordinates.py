@@ -113,16 +113,19 @@ def signed_conditioning(plan: DyadSolver, jac: Jacobian) -> Any:
     where the branch changes): :mod:`assur._reach` finds the dead centres a sweep
     would pass between two grid points. The sine does not change when a column is
     scaled, so the units of the links' coordinates (rad or m) do not matter; a
-    prismatic pair's normal equation is divided by the mechanism's size ``scale`` (m)
-    to weigh like its rotation equation. For an RRR dyad the measure is the sine of
-    the transmission angle.
+    prismatic pair's normal equation (m) is divided by the group's own size ``size``
+    (m) to weigh like its rotation equation (rad). For an RRR dyad the measure is the
+    sine of the transmission angle. It is dimensionless and does not change when the
+    whole mechanism is scaled, nor when the group is one of a larger machine.
     """
     j00, j01, j10, j11 = jac
     # a pose that does not close (parallel slide lines, say) has infinite entries:
     # its conditioning is NaN, below every threshold, and no warning is due
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         if plan.mid.kind == "P":
-            j10, j11 = j10 / plan.scale, j11 / plan.scale
+            # the group's lever arms, not the machine's: a slider 0.3 m across in a
+            # chain 12 m long is no nearer its dead centre than on its own
+            j10, j11 = j10 / plan.size, j11 / plan.size
         det = j00 * j11 - j01 * j10
         return det / np.sqrt((j00 * j00 + j10 * j10) * (j01 * j01 + j11 * j11))
 

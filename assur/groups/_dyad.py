@@ -83,7 +83,8 @@ def closing_root(square: Any, size: Any) -> Any:
 
 
 DEAD_CENTRE = 1e-6
-"""Smallest sine of a dyad's transmission angle accepted in the reference pose."""
+"""Smallest sine of a dyad's transmission angle accepted in the reference pose (the
+conditioning of :func:`~assur.groups._coordinates.conditioning`)."""
 APART = 1e-9
 """Outer joints of a dyad closer than this, times the mechanism's size, are one
 point."""
@@ -100,8 +101,10 @@ class DyadSolver:
     pairs, ``mid`` the middle pair, ``known`` the known links the external pairs join,
     ``d_known`` the external pairs' offsets on those links, ``d_mid`` the middle pair's
     offsets on the two links, ``closure`` the kind's closed-form assembly, ``branch``
-    the assembly branch of the reference pose (+1 or -1) and ``scale`` the
-    mechanism's size (m).
+    the assembly branch of the reference pose (+1 or -1), ``scale`` the mechanism's
+    size (m), against which rounding of its coordinates is told, and ``size`` the
+    group's own (m, the diameter of its pairs in the reference pose), against which
+    its closeness to a dead centre is told.
     """
 
     group: Group
@@ -113,12 +116,14 @@ class DyadSolver:
     d_mid: tuple[tuple[float, float], tuple[float, float]]
     closure: Closure
     scale: float
+    size: float
     branch: float = 1.0
     gap: Discriminant | None = None
 
     newton: ClassVar[bool] = False
     singular: ClassVar[float] = 1e-6
-    """Sine of the angle between the Jacobian's columns below which a pose is a dead
+    """Sine of the angle between the Jacobian's columns (a prismatic middle pair's
+    normal equation in units of the group's size) below which a pose is a dead
     centre, where velocities are undefined. A closed form's square root leaves about
     the root of the rounding error (1e-8) at an exact dead centre: no smaller sine
     can be told from zero."""
@@ -310,6 +315,7 @@ def compile_dyad(
         d_mid,
         closure,
         context.scale,
+        context.size(group),
         gap=discriminant,
     )
     _apart(context, group, dyad)

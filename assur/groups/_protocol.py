@@ -19,6 +19,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
+import numpy as np
+
 from assur._vec import Array, Mask
 from assur.groups._equations import Equations, equations
 from assur.groups._motion import Motion
@@ -36,6 +38,7 @@ __all__ = [
     "Linearization",
     "Reaction",
     "Wrench",
+    "group_sizes",
 ]
 
 Wrench = list[Any]
@@ -57,7 +60,9 @@ class CompileContext:
     origins : ndarray (B, 2)
         Each body's origin in the reference pose, m, in the core's coordinates.
     scale : float
-        Size of the mechanism, m (largest distance between two pairs).
+        Size of the mechanism, m (largest distance between two pairs): the size its
+        coordinates' rounding is told against. A group's own size, against which its
+        closeness to a dead centre is told, is :meth:`size`.
     motions : tuple of Motion
         Every body at rest in the reference pose.
     """
@@ -72,6 +77,32 @@ class CompileContext:
     def reference(self) -> list[Motion]:
         """Return every body at rest in the reference pose (a list to assemble in)."""
         return list(self.motions)
+
+    def size(self, group: Group) -> float:
+        """Return ``group``'s own size (m): see :func:`group_sizes`."""
+        at = [
+            self.origins[p.first] + np.asarray(p.d_first)
+            for p in (self.pairs[n] for n in group.internal + group.external)
+        ]
+        return float(group_sizes(np.array(at)[None], np.array([self.scale]))[0])
+
+
+SMALLEST_GROUP = 1e-9
+"""Smallest size of a group, as a fraction of the mechanism's (that of the smallest
+link ``compile_plan`` accepts): a group whose pairs all meet has no size of its own."""
+
+
+def group_sizes(points: Array, scale: Array) -> Array:
+    """Return each variant's group size (k,), m: the diameter of its pairs' points.
+
+    ``points`` (k, P, 2) are the group's pairs in the reference pose and ``scale``
+    (k,) the mechanism's size (m). A group's conditioning weighs its equations in
+    metres against those in radians by this length: the mechanism's size made a
+    small group in a large machine look near its dead centre at every position.
+    """
+    gap = points[:, :, None, :] - points[:, None, :, :]
+    span = np.sqrt((gap * gap).sum(axis=-1)).max(axis=(1, 2))
+    return np.maximum(span, SMALLEST_GROUP * scale)
 
 
 @dataclass(frozen=True, slots=True)

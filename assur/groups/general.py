@@ -39,7 +39,8 @@ singular."""
 TOLERANCE = 1e-13
 """Newton's stopping tolerance, relative to the size of the coordinates."""
 DEAD_CENTRE = 1e-6
-"""Smallest reciprocal condition number accepted in the reference pose."""
+"""Smallest reciprocal condition number accepted in the reference pose (that of
+:func:`conditioning`)."""
 
 Pose = tuple[Any, Any, Any]
 """A link's ``(rotation, origin x, origin y)`` over a batch."""
@@ -50,8 +51,10 @@ class GeneralSolver:
     """A group solved by Newton's method; answers the group-solver protocol.
 
     ``bodies`` are the group's links, ``origins`` their reference origins (m),
-    ``pairs`` every pair of the group (internal, then external) and ``scale`` the
-    mechanism's size (m).
+    ``pairs`` every pair of the group (internal, then external), ``scale`` the
+    mechanism's size (m), against which rounding of its coordinates is told, and
+    ``size`` the group's own (m, the diameter of its pairs in the reference pose),
+    against which its conditioning is measured.
     """
 
     group: Group
@@ -59,11 +62,12 @@ class GeneralSolver:
     origins: tuple[tuple[float, float], ...]
     pairs: tuple[PairPlan, ...]
     scale: float
+    size: float
 
     newton: ClassVar[bool] = True
     singular: ClassVar[float] = 1e-9
-    """Reciprocal condition number of the Jacobian below which a pose is a dead
-    centre."""
+    """Reciprocal condition number of the Jacobian (see :func:`conditioning`: lengths
+    in units of the group's size) below which a pose is a dead centre."""
     near: ClassVar[float] = 1e-3
     """The same, below which a pose is near a dead centre (a warning)."""
 
@@ -86,7 +90,8 @@ class GeneralSolver:
     def reach(self) -> float:
         """Size of the numbers Newton works with, m (it bounds their rounding).
 
-        The group's size or its distance from the core's origin, whichever is larger.
+        The mechanism's size or the group's distance from the core's origin,
+        whichever is larger.
         """
         far = max(abs(v) for o in self.origins for v in o)
         return max(self.scale, far)
@@ -171,14 +176,17 @@ def conditioning(plan: GeneralSolver, jac: Array) -> Array:
     """Reciprocal condition number of the Jacobian made dimensionless.
 
     Origins are measured in units of the group's size and a prismatic pair's rotation
-    equation multiplied by it, so that the measure does not depend on the units.
+    equation multiplied by it, so that the measure depends neither on the units nor
+    on the size of the machine the group is part of.
     """
+    # the group's size, not the machine's: a triad 0.3 m across in a chain 12 m long
+    # weighed its rotations 40 times too little and looked near a dead centre
     cols = np.ones(jac.shape[-1])
-    cols[2::3] = 1.0 / plan.scale
+    cols[2::3] = 1.0 / plan.size
     rows = np.ones(jac.shape[-2])
     for j, pair in enumerate(plan.pairs):
         if pair.kind == "P":
-            rows[2 * j] = plan.scale
+            rows[2 * j] = plan.size
     return 1.0 / np.linalg.cond(jac * rows[:, None] * cols[None, :])
 
 
@@ -323,6 +331,7 @@ def compile_group(context: CompileContext, group: Group) -> GeneralSolver:
         tuple((float(x), float(y)) for x, y in context.origins[list(bodies)]),
         tuple(context.pairs[p] for p in group.internal + group.external),
         context.scale,
+        context.size(group),
     )
     jac = jacobian(solver, context.reference(), 1)
     if not conditioning(solver, jac)[0] >= DEAD_CENTRE:
