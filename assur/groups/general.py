@@ -35,7 +35,7 @@ __all__ = ["GeneralSolver", "compile_group"]
 MAX_ITERATIONS = 30
 SINGULAR_FORCES = 1e-12
 """Reciprocal condition number below which a group's equilibrium equations count as
-singular."""
+singular (moments in units of force times the mechanism's size)."""
 TOLERANCE = 1e-13
 """Newton's stopping tolerance, relative to the size of the coordinates."""
 DEAD_CENTRE = 1e-6
@@ -279,13 +279,15 @@ def equilibrium(
             rhs[:, r + i] = -loads[body][i]
     bad = ~np.isfinite(mat).all(axis=(1, 2))
     mat[bad] = np.eye(size)
-    # moments and couples in units of the group's size: a measure free of units
+    # moments and couples in units of the mechanism's size: a measure free of units;
+    # not the group's own (as its conditioning is), which would move the reactions by
+    # round-off, and a sound triad a billionth of its machine still measures 5e-11
     rows = np.ones(size)
     rows[2::3] = 1.0 / plan.scale
     cols = np.ones(size)
     for j, pair in enumerate(plan.pairs):
         if pair.kind == "P":
-            # a couple in units of force times the group's size, as moments are
+            # a couple in units of force times the mechanism's size, as moments are
             cols[2 * j + 1] = plan.scale
     scaled = mat * rows[:, None] * cols[None, :]
     bad |= 1.0 / np.linalg.cond(scaled) < SINGULAR_FORCES
