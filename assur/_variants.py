@@ -343,7 +343,9 @@ def compile_many(model: Template, rows: Array) -> tuple[Compiled, Mask]:
         for solver in t.solvers:
             assert isinstance(solver, DyadSolver)
             names = solver.group.internal + solver.group.external
-            own = group_sizes(np.stack([core[n] for n in names], axis=1), scale)
+            # each pair found as compile_plan finds it: the sizes agree to the bit
+            at = [origins[:, plain[n].first] + offsets[n][0] for n in names]
+            own = group_sizes(np.stack(at, axis=1), scale)
             dyad = _dyad(solver, plain, scale, own)
             branch, bad = _branch(dyad, motions, scale)
             branches.append(branch)
