@@ -101,7 +101,7 @@ def test_the_builder_s_groups_are_well_conditioned_alone() -> None:
 
 
 def truss(far: float) -> tuple[list[Link], list[Joint]]:
-    """A rigid dyad on the frame, ``far`` m away and as large: a machine that size."""
+    """A rigid dyad on the frame from ``far`` / 2 to ``far`` m along x (far, m)."""
     return [Link("t1"), Link("t2")], [
         Joint("T1", "revolute", ("ground", "t1"), (far, 0.0)),
         Joint("T2", "revolute", ("t1", "t2"), (0.75 * far, 0.25 * far)),
