@@ -93,6 +93,7 @@ def place_names(
     if legend is not None:
         fixed.append(np.asarray(legend.get_window_extent(renderer).extents))
     fixed += [np.asarray(a.get_window_extent(renderer).extents) for a in avoid or ()]
+    kept = np.array(fixed, float).reshape(-1, 4)
     sizes = np.array([_size(n.text, renderer) for n in names])
     rivals = np.array([n.rival for n in names])
     boxes = np.full((len(names), 4), np.nan)
@@ -102,7 +103,7 @@ def place_names(
         for i, name in enumerate(names):
             away = None if name.away is None else to_display(name.away)
             centres = _candidates(own[i], sizes[i], away, GAP * pixels, name.tip)
-            others_boxes = np.array([*fixed, *np.delete(boxes, i, axis=0)])
+            others_boxes = np.concatenate([kept, np.delete(boxes, i, axis=0)])
             others_boxes += SPACE * pixels * np.array([-1.0, -1.0, 1.0, 1.0])
             shunned = rivals.copy() if name.shuns else np.zeros(len(names), bool)
             shunned[i] = True
@@ -225,7 +226,7 @@ def _costs(
         cost += CLASH * (area > 0).sum(axis=1) + area.sum(axis=1)
     cost += CLASH * _crossed(low - half, high + half, segments).sum(axis=1)
     # how far each place's box is from each named side or point
-    apart = np.array([_box_distance(low, high, s) for s in named])
+    apart = _box_distances(low, high, named)
     mine = apart[own]
     if len(named) > 1:
         rival = np.delete(apart, own, axis=0).min(axis=0)
@@ -238,20 +239,40 @@ def _costs(
 def _crossed(low: np.ndarray, high: np.ndarray, segments: np.ndarray) -> np.ndarray:
     """Return whether each box (``low``, ``high``) meets each segment: (boxes, k).
 
+    Only the pairs whose bounds come within a display unit of each other are
+    clipped (:func:`_clipped`): the others are apart, rounding and all, and a
+    large mechanism's many lines are each near few of the places a name tries.
+    """
+    ends = segments.reshape(-1, 2, 2)
+    first, last = ends.min(axis=1), ends.max(axis=1)
+    lo, hi = low - 1.0, high + 1.0
+    # those near the span of all the boxes first, then those near each box
+    span = np.flatnonzero(((last >= lo.min(axis=0)) & (first <= hi.max(axis=0))).all(1))
+    first, last = first[span].T, last[span].T
+    near = (last[0] >= lo[:, 0, None]) & (first[0] <= hi[:, 0, None])
+    near &= (last[1] >= lo[:, 1, None]) & (first[1] <= hi[:, 1, None])
+    boxes, lines = np.nonzero(near)
+    met = np.zeros((len(low), len(ends)), bool)
+    met[boxes, span[lines]] = _clipped(low[boxes], high[boxes], ends[span[lines]])
+    return met
+
+
+def _clipped(low: np.ndarray, high: np.ndarray, ends: np.ndarray) -> np.ndarray:
+    """Return whether each box (``low``, ``high``) meets its segment of ``ends``.
+
     Liang and Barsky's clipping: the segment's parameters inside every slab.
     """
-    a = segments[None, :, 0, :]
-    d = segments[None, :, 1, :] - a
-    lo, hi = low[:, None, :], high[:, None, :]
+    a = ends[:, 0, :]
+    d = ends[:, 1, :] - a
     with np.errstate(divide="ignore", invalid="ignore"):
-        t1 = (lo - a) / d
-        t2 = (hi - a) / d
+        t1 = (low - a) / d
+        t2 = (high - a) / d
     flat = np.abs(d) < 1e-9
-    inside = (a >= lo) & (a <= hi)
+    inside = (a >= low) & (a <= high)
     enter = np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(t1, t2))
     leave = np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(t1, t2))
-    start = np.maximum(enter.max(axis=2), 0.0)
-    stop = np.minimum(leave.min(axis=2), 1.0)
+    start = np.maximum(enter.max(axis=1), 0.0)
+    stop = np.minimum(leave.min(axis=1), 1.0)
     return start <= stop
 
 
@@ -265,11 +286,16 @@ def _distance(points: np.ndarray, ends: np.ndarray) -> np.ndarray:
     return np.hypot(*(points - foot).T)
 
 
-def _box_distance(low: np.ndarray, high: np.ndarray, ends: np.ndarray) -> np.ndarray:
-    """Return the distance of each box (``low``, ``high``) from the segment ``ends``.
+def _box_distances(
+    low: np.ndarray, high: np.ndarray, segments: np.ndarray
+) -> np.ndarray:
+    """Return each box's (``low``, ``high``) distance from each segment: (k, boxes).
 
     Nothing for a box the segment meets; else the least of its corners' distances
-    from the segment and the segment's ends' from the box.
+    from the segment and the segment's ends' from the box. All at once, in the
+    very operations one segment's alone would take (the products of two by a
+    batched ``matmul``, as ``@`` and ``np.dot`` take them), so that a place's
+    cost, and the place chosen, are those of one segment at a time to the bit.
     """
     corners = np.stack(
         [
@@ -279,12 +305,21 @@ def _box_distance(low: np.ndarray, high: np.ndarray, ends: np.ndarray) -> np.nda
             np.stack([high[:, 0], low[:, 1]], 1),
         ],
         axis=1,
-    )
-    near = _distance(corners.reshape(-1, 2), ends).reshape(-1, 4).min(axis=1)
-    for end in ends:
-        near = np.minimum(near, np.hypot(*(end - np.clip(end, low, high)).T))
-    crossed = _crossed(low, high, ends[None, :, :])[:, 0]
-    return np.where(crossed, 0.0, near)
+    ).reshape(-1, 2)
+    a = segments[:, 0, :]
+    d = segments[:, 1, :] - a
+    square = np.matmul(d[:, None, :], d[:, :, None])[:, 0, 0]
+    reach = np.matmul(corners[None, :, :] - a[:, None, :], d[:, :, None])[..., 0]
+    point = square == 0
+    t = np.where(point[:, None], 0.0, reach / np.where(point, 1.0, square)[:, None])
+    foot = a[:, None, :] + np.clip(t, 0.0, 1.0)[..., None] * d[:, None, :]
+    gap = corners[None, :, :] - foot
+    near = np.hypot(gap[..., 0], gap[..., 1]).reshape(len(segments), -1, 4).min(axis=2)
+    for k in range(2):  # the two ends, each against every box
+        end = segments[:, k, None, :]
+        off = end - np.clip(end, low[None], high[None])
+        near = np.minimum(near, np.hypot(off[..., 0], off[..., 1]))
+    return np.where(_crossed(low, high, segments).T, 0.0, near)
 
 
 def _nearest(point: np.ndarray, ends: np.ndarray) -> np.ndarray:
