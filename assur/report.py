@@ -49,9 +49,21 @@ def _pairs_text(g: Group) -> str:
     return text
 
 
-def _why(g: Group) -> str:
+def _why(g: Group, said: dict[tuple[int, int], Group] | None = None) -> str:
+    """Return why ``g`` is an Assur group, its count worked out.
+
+    ``said`` holds the groups already explained, by their counts (k, p): a group
+    counted as one of them refers to it, where the whole reason came again (a
+    ten-bar's four dyads said it four times over).
+    """
     k = len(g.links)
     p = len(g.internal) + len(g.external)
+    first = None if said is None else said.setdefault((k, p), g)
+    if first is not None and first is not g:
+        return (
+            f"as for links {_names(first.links)} above, k = {k}, p = {p}: W = "
+            f"{3 * k} - {2 * p} = 0, with no smaller part of W = 0"
+        )
     return (
         f"k = {k} links, p = {p} lower pairs: with its external pairs on the known "
         f"links, W = 3k - 2p = {3 * k} - {2 * p} = 0, and every smaller part of it "
@@ -141,6 +153,7 @@ def structure_report(s: Structure) -> str:
             f"  {step}. Class I: the frame and the input link {g.links[1]} "
             f"(driven through pair {g.internal[0]})."
         )
+    said: dict[tuple[int, int], Group] = {}
     for g in s.groups:
         step += 1
         numeral = roman(g.group_class)
@@ -150,7 +163,7 @@ def structure_report(s: Structure) -> str:
             f"links {_names(g.links)}"
         )
         lines.append(f"     {_pairs_text(g)}.")
-        lines.append(f"     Why an Assur group: {_why(g)}.")
+        lines.append(f"     Why an Assur group: {_why(g, said)}.")
         if g.basis:
             lines.append(f"     Why class {numeral}: {_class_why(g)}.")
     lines += [

@@ -1133,3 +1133,33 @@ def test_the_json_formula_names_links_as_the_json_does():
     ]
     assert data["formula"] == " -> ".join(steps)
     assert "~block" in data["formula"]
+
+
+def test_a_group_counted_as_one_before_refers_to_it():
+    # a ten-bar's four dyads said the whole reason four times over
+    report = str(assur.structure(assur.load(EXAMPLES / "tenbar.toml")))
+    why = [line.strip() for line in report.splitlines() if "Why an Assur" in line]
+    assert why[0] == WHY.format(k=2, p=3, n=6)
+    assert why[1:] == 3 * [
+        "Why an Assur group: as for links 2, 3 above, k = 2, p = 3: W = 6 - 6 = 0, "
+        "with no smaller part of W = 0."
+    ]
+
+
+def test_the_getting_started_page_shows_the_structure_command_s_own_output(capsys):
+    # the page had kept the words of an older report ("3k = 2p = 6, so ...")
+    from assur.cli import main
+
+    page = (DOCS / "getting_started.rst").read_text(encoding="utf-8")
+    command = "   $ assur structure docs/files/first_four_bar.toml\n"
+    start = page.index(command) + len(command)
+    shown = []
+    for line in page[start:].splitlines():
+        if line and not line.startswith("   "):  # the block's end
+            break
+        shown.append(line)
+    assert main(["structure", str(DOCS / "files" / "first_four_bar.toml")]) == 0
+    printed = capsys.readouterr().out.rstrip("\n")
+    assert [line.strip() for line in shown[:-1]] == [
+        line.strip() for line in printed.splitlines()
+    ]

@@ -6,7 +6,7 @@ formula with its numbers and the order of the two passes.
 
 from __future__ import annotations
 
-from assur._structure import Structure
+from assur._structure import Group, Structure
 from assur._text import counted, noun_for, roman
 from assur.explain._note import Block, Display, Heading, Items, Para
 from assur.explain._tex import plain
@@ -48,13 +48,15 @@ def structure_blocks(s: Structure) -> list[Block]:
         f"the pair {plain(g.internal[0])}."
         for g in s.drivers
     ]
+    said: dict[tuple[int, int], Group] = {}
     for g in s.groups:
         # the words of the structure report: which pairs are inside the group and
         # which hang it on the known links, why it is a group, why of its class
         numeral = roman(g.group_class)
         text = (
             f"Class {numeral}, order {g.order}, {_kind(g.kind)} "
-            f"({_names(g.links)}): {_pairs_text(g)}. Why an Assur group: {_why(g)}."
+            f"({_names(g.links)}): {_pairs_text(g)}. "
+            f"Why an Assur group: {_why(g, said)}."
         )
         if g.basis:
             text += f" Why class {numeral}: {_class_why(g)}."
