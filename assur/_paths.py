@@ -94,7 +94,9 @@ def path_changes(plan: Plan, drive: Array, upto: int | None = None) -> PathChang
         found = _changes(plan, groups, drive)
         if len(kept) >= KEPT:
             # another thread may drop the same oldest batch at once: no KeyError
-            kept.pop(next(iter(list(kept))), None)
+            oldest = next(iter(list(kept)), None)
+            if oldest is not None:
+                kept.pop(oldest, None)
         kept[key] = found
     return found
 

@@ -60,11 +60,38 @@ def _fits(variants: int, positions: int, columns: int) -> None:
         raise UsageError(msg)
 
 
-LIMITS = (
-    "/sys/fs/cgroup/memory.max",
-    "/sys/fs/cgroup/memory/memory.limit_in_bytes",
-)
-"""Where a container's memory limit is read (cgroup v2, then v1), bytes."""
+CGROUPS = "/sys/fs/cgroup"
+"""Where the control groups are mounted."""
+OWN_GROUPS = "/proc/self/cgroup"
+"""This process's control groups, one line each: ``0::/path`` (v2) or
+``N:memory:/path`` (v1)."""
+
+
+def _limits() -> list[str]:
+    """Return the files that may hold a memory limit on this process (cgroups).
+
+    Its own group's and every group above it (a limit on a parent holds for all
+    below), v2's ``memory.max`` and v1's ``memory.limit_in_bytes``; the mount's
+    root too, which is the process's own group in a container.
+    """
+    paths = [f"{CGROUPS}/memory.max", f"{CGROUPS}/memory/memory.limit_in_bytes"]
+    try:
+        with open(OWN_GROUPS, encoding="utf-8") as file:
+            lines = file.read().splitlines()
+    except (OSError, ValueError):  # not Linux
+        return paths
+    for line in lines:
+        _, controllers, path = [*line.split(":", 2), "", ""][:3]
+        if controllers == "":
+            base, name = CGROUPS, "memory.max"
+        elif "memory" in controllers.split(","):
+            base, name = f"{CGROUPS}/memory", "memory.limit_in_bytes"
+        else:
+            continue
+        parts = [p for p in path.split("/") if p]
+        for depth in range(len(parts), 0, -1):
+            paths.append("/".join([base, *parts[:depth], name]))
+    return paths
 
 
 def _memory() -> tuple[float, str] | None:
@@ -80,14 +107,14 @@ def _memory() -> tuple[float, str] | None:
         found.append((float(pages), "this machine's"))
     except (AttributeError, ValueError, OSError):
         pass
-    for path in LIMITS:
+    for path in _limits():
         try:
             with open(path, encoding="ascii") as file:
                 text = file.read().strip()
         except (OSError, ValueError):  # no such limit here
             continue
         if text.isdigit():  # "max" where there is none
-            found.append((float(text), "the limit of this container's"))
+            found.append((float(text), "its control group's limit of"))
     try:
         import resource
 

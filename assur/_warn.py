@@ -52,7 +52,9 @@ def held() -> Iterator[list[warnings.WarningMessage]]:
 
     Every one is held, in the order given (as the filter ``"always"`` would keep
     them); a caller that wants none drops the list. Other warnings (numpy's, the
-    user's own) pass as they would.
+    user's own) pass as they would, and so do those of a thread started inside
+    (a new thread begins with no context of its own: the library starts none that
+    warns).
 
     Examples
     --------

@@ -990,15 +990,31 @@ def test_the_memory_to_be_had_is_the_least_of_machine_container_and_ulimit(
     machine = (4096.0 * 4096.0, "this machine's")
     unlimited = (resource.RLIM_INFINITY, resource.RLIM_INFINITY)
     monkeypatch.setattr(resource, "getrlimit", lambda kind: unlimited)
-    v2, v1 = tmp_path / "memory.max", tmp_path / "limit_in_bytes"
-    monkeypatch.setattr(_study_tables, "LIMITS", (str(v2), str(v1)))
-    assert _study_tables._memory() == machine  # neither file: the machine's
-    v2.write_text("max\n", encoding="utf-8")
-    v1.write_text("9223372036854771712\n", encoding="utf-8")  # cgroup v1's "no limit"
+    # a control group tree of one's own: the process in /user.slice/job (v2),
+    # and in /docker/abc of the v1 memory controller
+    own = tmp_path / "cgroup"
+    own.write_text("0::/user.slice/job\n", encoding="utf-8")
+    monkeypatch.setattr(_study_tables, "CGROUPS", str(tmp_path))
+    monkeypatch.setattr(_study_tables, "OWN_GROUPS", str(own))
+    assert _study_tables._memory() == machine  # no limit file: the machine's
+    job = tmp_path / "user.slice" / "job"
+    job.mkdir(parents=True)
+    (tmp_path / "user.slice" / "memory.max").write_text("max\n", encoding="utf-8")
+    (job / "memory.max").write_text("2000000\n", encoding="utf-8")
+    limited = "its control group's limit of"
+    assert _study_tables._memory() == (2e6, limited)  # its own group's
+    (tmp_path / "user.slice" / "memory.max").write_text("1500000\n", encoding="utf-8")
+    assert _study_tables._memory() == (1.5e6, limited)  # a parent's holds too
+    own.write_text("4:cpu,memory:/docker/abc\n1:name=systemd:/\n", encoding="utf-8")
+    abc = tmp_path / "memory" / "docker" / "abc"
+    abc.mkdir(parents=True)
+    no_limit = "9223372036854771712\n"  # cgroup v1's "no limit"
+    (abc.parent / "memory.limit_in_bytes").write_text(no_limit, encoding="utf-8")
     assert _study_tables._memory() == machine
-    v2.write_text("1000000\n", encoding="utf-8")
-    container = (1e6, "the limit of this container's")
-    assert _study_tables._memory() == container
+    (abc / "memory.limit_in_bytes").write_text("1000000\n", encoding="utf-8")
+    assert _study_tables._memory() == (1e6, limited)
+    (tmp_path / "memory.max").write_text("900000\n", encoding="utf-8")
+    assert _study_tables._memory() == (9e5, limited)  # the mount's root: a container
     monkeypatch.setattr(resource, "getrlimit", lambda kind: (500_000, 10**9))
     assert _study_tables._memory() == (5e5, "this process's limit of")
     # the refusal names the limit met: 2 x 10 x 360 x 10 x 8 bytes > half of 500 kB
