@@ -765,3 +765,27 @@ def test_a_small_link_s_inertia_loads_are_its_own_not_round_off():
     ) in note
     assert "M_{i,\\mathrm{crank}} = -5.16 \\cdot 10^{-12}\\ \\mathrm{N\\,m}" in note
     assert "M_{i,\\mathrm{crank}} = 0\\ " not in note
+
+
+SCIENTIFIC = re.compile(r"(-?\d+(?:\.\d+)?) \\cdot 10\^\{(-?\d+)\}")
+FIGURE = re.compile(r"(?<![\w.^])-?\d+(?:\.\d+)?(?:e-?\d+)?")
+
+
+def _zeros(note: str) -> list[list[bool]]:
+    """Which numbers of each line of a note are written 0."""
+    lines = (SCIENTIFIC.sub(r"\1e\2", line) for line in note.splitlines())
+    return [[float(x) == 0.0 for x in FIGURE.findall(line)] for line in lines]
+
+
+@pytest.mark.parametrize("small", [1e-3, 1e-5])
+def test_a_small_mechanism_s_note_writes_0_where_a_full_size_one_does(small):
+    # a four-bar a thousand times smaller (a watch's): its balancing torque, the
+    # sums of moments and the powers of the lever were written 0 (below an absolute
+    # 1e-9), where its full-size twin writes 0.02432 N m
+    sizes = {"crank": 0.04, "coupler": 0.12, "rocker": 0.08, "frame": 0.10}
+    for angle in (30.0, 135.0):
+        full = str(explain(assur.catalog.four_bar(), angle))
+        less = {name: value * small for name, value in sizes.items()}
+        note = str(explain(assur.catalog.four_bar(**less), angle))
+        assert _zeros(note) == _zeros(full)
+        assert "M_{b} = -\\sum M_{\\mathrm{A}} = 0\\ " not in note

@@ -208,3 +208,38 @@ def test_a_small_link_s_inertia_loads_are_its_own_not_round_off() -> None:
     cells = re.findall(r"<td>([^<]*)</td>", rows["crank"])
     # J_G, epsilon (the driver's 10 rad/s^2), M_i = -J_G epsilon
     assert cells[4:7] == ["5.16e-13", "10", "-5.16e-12"]
+
+
+def _cells(page: str, link: str) -> list[str]:
+    rows = dict(re.findall(r'<tr data-link="([^"]+)"><th>[^<]*</th>(.*?)</tr>', page))
+    return re.findall(r"<td>([^<]*)</td>", rows[link])
+
+
+def test_round_off_is_told_by_the_motion_s_own_scale() -> None:
+    # a parallelogram turning steadily: every angular acceleration is round-off
+    # (1e-13 rad/s^2), the largest of them too; the motion's own scale (the fastest
+    # link's speed squared) tells them 0, and the coupler's torque and offset with
+    # them
+    mech = assur.catalog.four_bar(crank=0.04, coupler=0.10, rocker=0.04)
+    with pytest.warns(assur.AssurWarning, match="change point"):
+        page = render_report(mech, [30.0, 60.0])
+    assert _cells(page, "coupler")[5:] == ["0", "0", "0"]
+    assert _cells(page, "coupler")[:3] == ["0.2", "4", "0.8"]
+
+
+def test_a_table_s_round_off_is_told_by_the_largest_value_of_its_unit() -> None:
+    # at the dead centre the guide carries 2.8e-14 N and the crank 1.2e-14 N m,
+    # round-off beside the 443 N and 84.6 N m at 45 deg: 0 in the page's tables
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    page = render_report(mech, [180.0, 45.0])
+    part = section(page, "table")
+    keys = re.findall(r'<th data-key="([^"]+)">', part)
+    first = re.findall(r"<td>([^<]*)</td>", part.split('data-row="0">')[1])
+    shown = dict(zip(keys, first, strict=False))
+    assert shown["guide.F"] == "0"
+    assert shown["driver.torque"] == "0"
+    # and a summary's mean torque of a turn that does no net work: 1.5e-16 N m
+    page = render_report(assur.load(EXAMPLES / "class3.toml"))
+    mean = re.search(r'data-key="driver.torque.mean"><th>[^<]*</th><td>([^<]*)', page)
+    assert mean is not None
+    assert mean[1] == "0"

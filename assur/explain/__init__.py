@@ -24,9 +24,10 @@ from assur.explain._inertia_text import inertia_blocks
 from assur.explain._kinematics_text import kinematics_blocks
 from assur.explain._lever import lever_blocks
 from assur.explain._note import Block, Heading, Note, Para
+from assur.explain._position import Position
 from assur.explain._solve import locked_position, position
 from assur.explain._structure_text import structure_blocks
-from assur.explain._tex import plain
+from assur.explain._tex import FLOOR, plain
 from assur.model import Mechanism
 
 __all__ = ["Note", "explain", "read_answers"]
@@ -98,6 +99,43 @@ def explain(
             AssurWarning,
             stacklevel=2,
         )
+    # the note's numbers told from round-off at its mechanism's own scale
+    token = FLOOR.set(_floor(pos))
+    try:
+        blocks = _blocks(mechanism, pos, answers, source)
+    finally:
+        FLOOR.reset(token)
+    name = plain(mechanism.name or "Mechanism")
+    title = f"{name} at {_where(pos.table)}: the analysis explained"
+    table = pos.table
+    values = {
+        c: float(v[0]) for c, v in zip(table.columns, table.arrays(), strict=True)
+    }
+    return Note(title, tuple(blocks), values)
+
+
+def _floor(pos: Position) -> float:
+    """Return what a number is told from round-off by where its line gives no scale.
+
+    1 for a mechanism of ordinary size, as in SI; for a small one the least of its
+    size (m), its speeds (m/s), its loads (N), their moments (N m) and powers (W): a
+    watch's 1e-11 N m is its balancing torque, not round-off.
+    """
+    size, speed = pos.size(), pos.rate_scale(1)
+    found = [1.0, size, speed]
+    if pos.applied is not None:
+        force = pos.force_scale()
+        found += [force, force * size, force * speed]
+    return min(v for v in found if v > 0.0)
+
+
+def _blocks(
+    mechanism: Mechanism,
+    pos: Position,
+    answers: Any,
+    source: str,
+) -> list[Block]:
+    """Return the note's blocks, its sections numbered."""
     blocks: list[Block] = []
     if pos.locked is not None:
         blocks.append(
@@ -123,14 +161,7 @@ def explain(
             blocks += lever_blocks(pos)
     if answers:
         blocks += answer_blocks(pos, answers, source)
-    blocks = _numbered(blocks)
-    name = plain(mechanism.name or "Mechanism")
-    title = f"{name} at {_where(pos.table)}: the analysis explained"
-    table = pos.table
-    values = {
-        c: float(v[0]) for c, v in zip(table.columns, table.arrays(), strict=True)
-    }
-    return Note(title, tuple(blocks), values)
+    return _numbered(blocks)
 
 
 def _numbered(blocks: list[Block]) -> list[Block]:

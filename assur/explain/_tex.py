@@ -8,6 +8,7 @@ digits, trailing zeros left out. Names from the mechanism file are set upright.
 from __future__ import annotations
 
 import math
+from contextvars import ContextVar
 from typing import Any
 
 import numpy as np
@@ -51,12 +52,18 @@ def unit(symbol: str) -> str:
     return f"\\ \\mathrm{{{symbol}}}"
 
 
-def num(x: float, scale: float = 1.0, least: int = 0) -> str:
+FLOOR: ContextVar[float] = ContextVar("assur_note_floor", default=1.0)
+"""The scale a value is told from round-off by where its line gives none: 1 in SI
+for a mechanism of ordinary size, less for a small one (its forces, moments and
+powers are small, not round-off); set by the note for its mechanism."""
+
+
+def num(x: float, scale: float | None = None, least: int = 0) -> str:
     """Return ``x`` rounded as the note rounds (TeX).
 
     At least :data:`DECIMALS` decimals, :data:`SIGNIFICANT` significant digits and
     ``least`` decimals; trailing zeros dropped; below ``ZERO * scale`` the value
-    is 0.
+    is 0 (``scale`` :data:`FLOOR` by default).
 
     Examples
     --------
@@ -66,6 +73,8 @@ def num(x: float, scale: float = 1.0, least: int = 0) -> str:
     x = float(x)
     if not math.isfinite(x):
         return r"\text{undefined}"
+    if scale is None:
+        scale = FLOOR.get()
     if abs(x) < ZERO * max(abs(scale), 1e-300) or x == 0.0:
         return "0"
     size = abs(x)
@@ -98,7 +107,7 @@ def kept(x: float) -> str:
     return num(x, abs(x))
 
 
-def par(x: float, scale: float = 1.0, least: int = 0) -> str:
+def par(x: float, scale: float | None = None, least: int = 0) -> str:
     """Return :func:`num` of ``x``, in parentheses when negative (for products)."""
     text = num(x, scale, least)
     return f"({text})" if text.startswith("-") else text

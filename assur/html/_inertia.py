@@ -59,26 +59,31 @@ def inertia_rows(table: Table, row: int = 0) -> list[tuple[str, list[float]]]:
 
 
 def _sizes(
-    rows: list[tuple[str, list[float]]], values: list[float]
+    rows: list[tuple[str, list[float]]], values: list[float], turn: float, size: float
 ) -> list[float | None]:
     """Return what each of a row's ``values`` is told from round-off by.
 
-    Accelerations by the largest of the links' (a yoke at mid-stroke has 1e-11
-    m/s^2 where a crank's pin has 20), the inertia loads by the link's own mass or
-    moment of inertia times that; the masses and moments of inertia are the file's
-    own, shown however small.
+    Accelerations by the largest of the links' or the motion's own, the square of
+    the fastest link's angular speed ``turn`` (rad/s), times the mechanism's
+    ``size`` (m) for a point's (a yoke at mid-stroke has 1e-11 m/s^2 where a
+    crank's pin has 20; every link of a parallelogram turning steadily has
+    1e-13 rad/s^2); the inertia loads by the link's own mass or moment of
+    inertia times those, the offsets h by the mechanism's size; the masses and
+    moments of inertia are the file's own, shown however small.
     """
     columns = [largest(c) for c in zip(*(v for _, v in rows), strict=True)]
+    point = max(columns[1], turn * turn * size)
+    angular = max(columns[5], turn * turn)
     mass, inertia = values[0], values[4]
     return [
         None,
-        columns[1],
-        mass * columns[1],
+        point,
+        mass * point,
         columns[3],
         None,
-        columns[5],
-        inertia * columns[5],
-        columns[7],
+        angular,
+        inertia * angular,
+        max(columns[7], size),  # an offset beside the mechanism's size
     ]
 
 
@@ -93,11 +98,13 @@ def inertia_html(table: Table) -> str:
         f"<th>{escape(title)}{f' ({unit})' if unit else ''}</th>"
         for title, unit in HEADINGS
     )
+    turn = largest([table[f"{x.name}.omega"][0] for x in table.mechanism.links])
+    size = float(table.plan.scale)
     body = "\n".join(
         f'<tr data-link="{escape(name)}"><th>{escape(public(name))}</th>'
         + "".join(
             f"<td>{number(v, s)}</td>"
-            for v, s in zip(values, _sizes(rows, values), strict=True)
+            for v, s in zip(values, _sizes(rows, values, turn, size), strict=True)
         )
         + "</tr>"
         for name, values in rows
