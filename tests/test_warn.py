@@ -93,3 +93,27 @@ def test_the_library_never_swaps_the_warnings_filters():
     assert len(said) == 3
     assert sum("(a change point)" in s for s in said) == 2
     assert study.summary["warning"].iloc[0].count("(a change point)") == 2
+
+
+def test_analyses_in_threads_give_a_call_alone_s_numbers_and_warnings():
+    # what docs/conventions.rst says of threads: four threads at once, each its
+    # sweep's numbers bit for bit and its warnings, none lost or doubled
+    from concurrent.futures import ThreadPoolExecutor
+
+    parallelogram = catalog.four_bar(crank=0.04, coupler=0.10, rocker=0.04)
+    angles = np.arange(0.0, 360.0, 3.0) + 46.0
+    jobs = [parallelogram, catalog.slider_crank(), parallelogram, catalog.four_bar()]
+    with warnings.catch_warnings(record=True) as alone:
+        warnings.simplefilter("always")
+        want = [assur.forces(m, angles).arrays() for m in jobs]
+    with warnings.catch_warnings(record=True) as shown:
+        warnings.simplefilter("always")
+        with ThreadPoolExecutor(4) as pool:
+            found = list(pool.map(lambda m: assur.forces(m, angles).arrays(), jobs))
+    for got, expected in zip(found, want, strict=True):
+        for a, b in zip(got, expected, strict=True):
+            np.testing.assert_array_equal(a, b)
+    assert len(alone) == 6  # the parallelogram's two change points and dead centre
+    assert sorted(str(w.message) for w in shown) == sorted(
+        str(w.message) for w in alone
+    )
