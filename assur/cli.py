@@ -260,6 +260,8 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
     failure = None
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always", AssurWarning)
+        # matplotlib's advice on a crowded picture: none a user here can take
+        warnings.filterwarnings("ignore", "constrained_layout not applied", UserWarning)
         try:
             status = handler(args)
         except (OutputError, _OtherFileError) as err:  # not about the mechanism file

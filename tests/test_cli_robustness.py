@@ -795,3 +795,24 @@ def test_an_error_standard_error_cannot_take_is_still_status_2(tmp_path: Path) -
     # printing the error line to a full disk raised OSError: status 1
     done = shell(tmp_path, "structure none.toml 2>/dev/full")
     assert done.returncode == 2
+
+
+def test_matplotlib_s_layout_advice_is_not_passed_on(capsys, monkeypatch):
+    # a picture of 80 links' panels: "constrained_layout not applied because axes
+    # sizes collapsed to zero. Try making figure larger", a traceback-like line
+    import argparse
+    import warnings
+
+    from assur import cli
+
+    def drawing(args: argparse.Namespace) -> int:
+        warnings.warn("constrained_layout not applied: ...", UserWarning, stacklevel=1)
+        warnings.warn("another of matplotlib's", UserWarning, stacklevel=1)
+        return 0
+
+    shown: list[str] = []
+    with warnings.catch_warnings():
+        warnings.simplefilter("default")  # as a command line's process has them
+        monkeypatch.setattr(warnings, "showwarning", lambda m, *a: shown.append(str(m)))
+        assert cli._run(drawing, argparse.Namespace(file="m.toml")) == 0
+    assert shown == ["another of matplotlib's"]
