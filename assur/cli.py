@@ -5,8 +5,7 @@ analysis and writes text, CSV or JSON. Any error of the input, of an option or o
 output becomes one line on standard error and exit status 2; Ctrl-C exits with 130.
 
 This module holds :func:`main`, the parser and the dispatch to the commands; the
-signals and standard streams are :mod:`assur._cli_process`'s, the sweeps of
-``kinematics`` and ``forces`` :mod:`assur._cli_sweep`'s.
+signals and streams are :mod:`assur._cli_process`'s, sweeps :mod:`assur._cli_sweep`'s.
 """
 
 from __future__ import annotations
