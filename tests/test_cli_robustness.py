@@ -816,3 +816,16 @@ def test_matplotlib_s_layout_advice_is_not_passed_on(capsys, monkeypatch):
         monkeypatch.setattr(warnings, "showwarning", lambda m, *a: shown.append(str(m)))
         assert cli._run(drawing, argparse.Namespace(file="m.toml")) == 0
     assert shown == ["another of matplotlib's"]
+
+
+def test_off_posix_a_stop_is_sent_again_without_os_kill(monkeypatch):
+    # os.kill on Windows ends the process at once (its status the signal's number)
+    import _thread
+
+    killed, interrupted = [], []
+    monkeypatch.setattr(_cli_process, "POSIX", False)
+    monkeypatch.setattr(_cli_process.os, "kill", lambda *a: killed.append(a))
+    monkeypatch.setattr(_thread, "interrupt_main", interrupted.append)
+    _cli_process._resend(signal.SIGTERM)
+    assert killed == []
+    assert interrupted == [signal.SIGTERM]

@@ -789,3 +789,20 @@ def test_a_small_mechanism_s_note_writes_0_where_a_full_size_one_does(small):
         note = str(explain(assur.catalog.four_bar(**less), angle))
         assert _zeros(note) == _zeros(full)
         assert "M_{b} = -\\sum M_{\\mathrm{A}} = 0\\ " not in note
+
+
+def test_a_small_load_couple_is_written_as_it_is():
+    # a torque of -4e-12 N m on a link: its own, not round-off, in the sum of
+    # moments and on the lever
+    bearings = EXAMPLES / "four_bar_bearings.toml"
+    text = bearings.read_text(encoding="utf-8").replace(
+        "torque = -4.0", "torque = -4e-12"
+    )
+    note = str(explain(assur.loads(text), 30.0))
+    assert "[(-4 \\cdot 10^{-12})]" in note
+    assert "| $-4 \\cdot 10^{-12}$ |" in note
+
+
+def test_the_note_s_structure_section_refers_to_a_group_explained_before():
+    note = str(explain(assur.load(EXAMPLES / "tenbar.toml"), 30.0))
+    assert note.count("as for links 2, 3 above") == 3

@@ -243,3 +243,12 @@ def test_a_table_s_round_off_is_told_by_the_largest_value_of_its_unit() -> None:
     mean = re.search(r'data-key="driver.torque.mean"><th>[^<]*</th><td>([^<]*)', page)
     assert mean is not None
     assert mean[1] == "0"
+
+
+def test_the_largest_value_of_a_column_is_its_largest_finite_one() -> None:
+    from assur.html._sections import largest, number
+
+    assert largest([1.0, math.inf, math.nan, -3.0]) == 3.0
+    assert largest([]) == 0.0
+    # an infinite value does not make every other of its unit 0
+    assert number(1e-3, largest([1.0, math.inf])) == "0.001"

@@ -1059,3 +1059,15 @@ def test_a_study_leaves_other_threads_warnings_alone():
             thread.join()
     assert sent
     assert len(shown) == len(sent)
+
+
+def test_a_study_s_tables_repeat_no_warning_its_summary_gave():
+    # the variants' warnings are in the summary's rows: the tables, solved again,
+    # hold theirs (variant 3 runs near a dead centre)
+    pytest.importorskip("xarray")
+    study = assur.sweep(catalog.slider_crank, {"crank": CRANKS, "rod": RODS}, ANGLES)
+    assert "dead centre" in study.summary["warning"].iloc[3]
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        study.tables([3], columns=["driver.torque"])
+    assert not [w for w in caught if issubclass(w.category, assur.AssurWarning)]
