@@ -806,3 +806,23 @@ def test_a_small_load_couple_is_written_as_it_is():
 def test_the_note_s_structure_section_refers_to_a_group_explained_before():
     note = str(explain(assur.load(EXAMPLES / "tenbar.toml"), 30.0))
     assert note.count("as for links 2, 3 above") == 3
+
+
+def test_a_slow_small_mechanism_s_kinematics_are_its_own_not_round_off():
+    # without masses the note is kinematics alone: a slow crank (1e-4 rad/s) of a
+    # four-bar a thousand times smaller has speeds of 1e-9 m/s, told against its own
+    import dataclasses
+
+    def bare(mech: assur.Mechanism) -> assur.Mechanism:
+        links = tuple(
+            dataclasses.replace(link, mass=0.0, center=None, inertia=0.0)
+            for link in mech.links
+        )
+        return dataclasses.replace(mech, links=links)
+
+    sizes = {"crank": 0.04, "coupler": 0.12, "rocker": 0.08, "frame": 0.10}
+    small = {name: value * 1e-3 for name, value in sizes.items()}
+    full = str(explain(bare(assur.catalog.four_bar(omega=1e-4)), 30.0))
+    note = str(explain(bare(assur.catalog.four_bar(omega=1e-4, **small)), 30.0))
+    assert "No link has a mass" in note
+    assert _zeros(note) == _zeros(full)
