@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import warnings
+from pathlib import Path
 
 import numpy as np
 
@@ -166,3 +167,17 @@ def test_a_group_near_its_dead_centre_in_a_large_machine_is_still_warned_of() ->
         found.append(near(mech))
     assert list(found[0]) == ["RPR (block, guide)"]
     assert found[1] == found[0]
+
+
+def test_a_triad_with_a_sliding_pair_in_a_large_machine_warns_as_alone() -> None:
+    """A prismatic pair's rotation equation is weighed by the group's own size too."""
+    alone = assur.load(Path(__file__).parent / "data" / "edge" / "triadP.toml")
+    links, joints = truss(40.0)
+    big = Mechanism(
+        links=alone.links + tuple(links),
+        joints=alone.joints + tuple(joints),
+        drivers=alone.drivers,
+    )
+    assert compile_plan(big).scale > 100.0 * compile_plan(alone).scale
+    positions = np.arange(0.0, 110.0, 1.0)
+    assert near(big, positions) == near(alone, positions) == {}
