@@ -117,9 +117,10 @@ def explain(
 def _floor(pos: Position) -> float:
     """Return what a number is told from round-off by where its line gives no scale.
 
-    1 for a mechanism of ordinary size, as in SI; for a small one the least of its
-    size (m), its speeds (m/s), its loads (N), their moments (N m) and powers (W): a
-    watch's 1e-11 N m is its balancing torque, not round-off.
+    The least of 1 (the cut of SI before: no more than it), the mechanism's size
+    (m), its speeds (m/s), its loads (N), their moments (N m) and powers (W): a
+    watch's 1e-11 N m is its balancing torque, not round-off. For the bundled
+    examples, a few tenths: their notes the same as with 1.
     """
     size, speed = pos.size(), pos.rate_scale(1)
     found = [1.0, size, speed]
