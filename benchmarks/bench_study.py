@@ -139,7 +139,7 @@ import bench_study as b
 b.time_study(20)
 def status(key):
     try:
-        for line in open("/proc/self/status"):
+        for line in open("/proc/self/status", encoding="utf-8"):
             if line.startswith(key + ":"):
                 return int(line.split()[1]) * 1024
     except OSError:

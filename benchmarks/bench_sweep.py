@@ -531,7 +531,7 @@ unit = 1.0 if sys.platform == "darwin" else 1024.0  # ru_maxrss: bytes or KiB
 
 def status(field):  # a memory figure of this process from /proc (Linux), bytes
     try:
-        with open("/proc/self/status") as f:
+        with open("/proc/self/status", encoding="utf-8") as f:
             for line in f:
                 if line.startswith(field + ":"):
                     return int(line.split()[1]) * 1024

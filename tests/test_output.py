@@ -490,7 +490,7 @@ def test_pictures_on_a_full_disk_are_one_error(tmp_path: Path):
 
 
 def test_standard_output_on_a_full_disk_is_one_error(tmp_path: Path):
-    with open(tmp_path / "out.csv", "w") as out:
+    with open(tmp_path / "out.csv", "w", encoding="utf-8") as out:
         run = run_limited(
             "kinematics",
             str(EXAMPLES / "four_bar.toml"),

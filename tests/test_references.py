@@ -32,7 +32,7 @@ CASES = [
 
 
 def read_table(name: str) -> dict[str, np.ndarray]:
-    with open(DATA / name, newline="") as handle:
+    with open(DATA / name, newline="", encoding="utf-8") as handle:
         rows = list(csv.reader(handle))
     values = np.array(rows[1:], dtype=float)
     return {column: values[:, i] for i, column in enumerate(rows[0])}
