@@ -14,7 +14,7 @@ import numpy as np
 from assur._vec import Array
 from assur.explain._note import Block, Display, Para
 from assur.explain._position import Position, cross, perp
-from assur.explain._tex import LENGTH, deg, name, num, par, plain, unit, vec
+from assur.explain._tex import LENGTH, deg, name, num, par, plain, squared, unit, vec
 from assur.groups._dyad import DyadSolver
 
 __all__ = ["dyad_positions"]
@@ -24,8 +24,8 @@ M = unit(LENGTH[0])
 
 
 def _sq(x: float) -> str:
-    """Return ``x`` squared as TeX, in parentheses when negative."""
-    return f"{par(x)}^2"
+    """Return ``x`` squared as TeX (see :func:`~assur.explain._tex.squared`)."""
+    return squared(x)
 
 
 def _called(kind: str, name: str) -> str:

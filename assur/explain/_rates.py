@@ -24,6 +24,7 @@ from assur.explain._tex import (
     num,
     par,
     point_name,
+    squared,
     text,
     vec,
 )
@@ -106,7 +107,7 @@ def _chain(
                 f"\\vec a^{{n}}_{{{mid}{j}}}",
                 -w * w * r,
                 f"\\text{{from }} {point} \\text{{ to }} {j},\\ a^n = "
-                f"\\omega_{{{link}}}^2 l_{{{j}{point}}} = {par(w)}^2 \\cdot "
+                f"\\omega_{{{link}}}^2 l_{{{j}{point}}} = {squared(w)} \\cdot "
                 f"{num(length)} = {num(w * w * length)}{SPEED[2]}",
             ),
             Term(
@@ -315,7 +316,7 @@ def point_lines(
                 f"\\vec a_{{{x}}} = \\vec a_{{{label}}} + \\varepsilon_{{{link}}}\\,"
                 f"\\vec k \\times \\vec r_{{{label}{x}}} - \\omega_{{{link}}}^2 "
                 f"\\vec r_{{{label}{x}}} = {vec(here)} + {par(eps)} \\cdot \\vec k "
-                f"\\times {vec(r)} - {par(w)}^2 "
+                f"\\times {vec(r)} - {squared(w)} "
                 f"\\cdot {vec(r)} = {vec(value, scale)}{SPEED[2]},\\quad a_{{{x}}} = "
                 f"{num(math.hypot(*value), scale)}{SPEED[2]}"
             )

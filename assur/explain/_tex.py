@@ -26,6 +26,7 @@ __all__ = [
     "plain",
     "point_name",
     "segment",
+    "squared",
     "text",
     "times",
     "unit",
@@ -111,6 +112,18 @@ def par(x: float, scale: float | None = None, least: int = 0) -> str:
     """Return :func:`num` of ``x``, in parentheses when negative (for products)."""
     text = num(x, scale, least)
     return f"({text})" if text.startswith("-") else text
+
+
+def squared(x: float, scale: float | None = None) -> str:
+    r"""Return ``x`` squared as TeX: in parentheses when negative or a power of ten.
+
+    Examples
+    --------
+    >>> squared(0.12), squared(-0.2), squared(6.536e-5)
+    ('0.12^2', '(-0.2)^2', '(6.536 \\cdot 10^{-5})^2')
+    """
+    text = num(x, scale)
+    return f"({text})^2" if text.startswith("-") or "\\cdot" in text else f"{text}^2"
 
 
 def times(*factors: str) -> str:
