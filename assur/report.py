@@ -65,7 +65,7 @@ def _why(g: Group, said: dict[tuple[int, int], Group] | None = None) -> str:
             f"W = 3k - 2p = {3 * k} - {2 * p} = 0, and every smaller part keeps W > 0"
         )
     return (
-        f"k = {k} links, p = {p} lower pairs: with its external pairs on the known "
+        f"k = {k} links, p = {p} lower pairs; with its external pairs on the known "
         f"links, W = 3k - 2p = {3 * k} - {2 * p} = 0, and every smaller part of it "
         "keeps W > 0 (it cannot be split into simpler groups)"
     )

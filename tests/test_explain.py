@@ -835,3 +835,10 @@ def test_a_power_of_ten_is_squared_in_parentheses():
     note = str(explain(assur.catalog.four_bar(**small), 30.0))
     assert "(6.536 \\cdot 10^{-5})^2" in note
     assert not re.search(r"10\^\{-?\d+\}\^", note)
+
+
+def test_the_note_says_how_many_drivers_move_the_mechanism():
+    one = str(explain(assur.load(EXAMPLES / "tenbar.toml"), 30.0))
+    assert "As $W = 1$, one driver moves the mechanism. The input link and" in one
+    two = str(explain(assur.load(EXAMPLES / "five_bar_two_cranks.toml"), [30.0, 60.0]))
+    assert "As $W = 2$, two drivers move the mechanism. The input links and" in two

@@ -829,7 +829,7 @@ def test_report_names_every_step():
 
 
 WHY = (
-    "Why an Assur group: k = {k} links, p = {p} lower pairs: with its external pairs "
+    "Why an Assur group: k = {k} links, p = {p} lower pairs; with its external pairs "
     "on the known links, W = 3k - 2p = {n} - {n} = 0, and every smaller part of it "
     "keeps W > 0 (it cannot be split into simpler groups)."
 )

@@ -7,7 +7,7 @@ formula with its numbers and the order of the two passes.
 from __future__ import annotations
 
 from assur._structure import Group, Structure
-from assur._text import counted, noun_for, roman
+from assur._text import noun_for, roman
 from assur.explain._note import Block, Display, Heading, Items, Para
 from assur.explain._tex import plain
 from assur.report import _apart, _class_why, _names, _pairs_text, _why
@@ -72,8 +72,8 @@ def structure_blocks(s: Structure) -> list[Block]:
     apart = "".join(f"{plain(line.strip())} " for line in _apart(s))
     blocks += [
         Para(
-            f"{counted(len(s.drivers), 'driver')} for $W = {s.dof}$. The {inputs} "
-            "and the Assur groups, in order of attachment:"
+            f"As $W = {s.dof}$, {_driving(len(s.drivers))} the mechanism. The "
+            f"{inputs} and the Assur groups, in order of attachment:"
         ),
         Items(tuple(items)),
         Para(
@@ -82,3 +82,9 @@ def structure_blocks(s: Structure) -> list[Block]:
         ),
     ]
     return blocks
+
+
+def _driving(count: int) -> str:
+    """Return how many drivers move the mechanism, in words: 'one driver moves'."""
+    spelt = {1: "one", 2: "two", 3: "three", 4: "four"}.get(count, str(count))
+    return f"{spelt} driver moves" if count == 1 else f"{spelt} drivers move"
