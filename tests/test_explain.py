@@ -842,3 +842,9 @@ def test_the_note_says_how_many_drivers_move_the_mechanism():
     assert "As $W = 1$, one driver moves the mechanism. The input link and" in one
     two = str(explain(assur.load(EXAMPLES / "five_bar_two_cranks.toml"), [30.0, 60.0]))
     assert "As $W = 2$, two drivers move the mechanism. The input links and" in two
+
+
+def test_a_vector_s_small_components_are_written_in_one_form():
+    # "(0.0001894, -1.658 \cdot 10^{-5})": a decimal beside a power of ten
+    note = str(explain(assur.load(EXAMPLES / "six_bar_lecture.toml"), 30.0))
+    assert "(1.894 \\cdot 10^{-4},\\ -1.658 \\cdot 10^{-5})" in note

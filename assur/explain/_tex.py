@@ -42,6 +42,8 @@ DECIMALS = 2
 """Fewest decimals a number keeps."""
 SCIENTIFIC = (1e-4, 1e8)
 """Magnitudes outside this range are written with a power of ten."""
+SMALL = 1e-2
+"""Magnitudes below this are written with a power of ten beside one so written."""
 LENGTH = ("m", "m/s", "m/s^2")
 """Units of a position, a velocity and an acceleration (by level 0, 1, 2)."""
 ROTATION = ("rad", "rad/s", "rad/s^2")
@@ -80,11 +82,16 @@ def num(x: float, scale: float | None = None, least: int = 0) -> str:
         return "0"
     size = abs(x)
     if not SCIENTIFIC[0] <= size < SCIENTIFIC[1]:
-        mantissa, exponent = f"{x:.{SIGNIFICANT - 1}e}".split("e")
-        return f"{_trim(mantissa)} \\cdot 10^{{{int(exponent)}}}"
+        return _powered(x)
     decimals = max(DECIMALS, SIGNIFICANT - 1 - math.floor(math.log10(size)), least)
     text = _trim(f"{x:.{decimals}f}")
     return "0" if text in ("-0", "0") else text
+
+
+def _powered(x: float) -> str:
+    """Return ``x`` (not 0) with a power of ten, :data:`SIGNIFICANT` digits (TeX)."""
+    mantissa, exponent = f"{x:.{SIGNIFICANT - 1}e}".split("e")
+    return f"{_trim(mantissa)} \\cdot 10^{{{int(exponent)}}}"
 
 
 def _trim(text: str) -> str:
@@ -132,9 +139,24 @@ def times(*factors: str) -> str:
 
 
 def vec(v: Any, scale: float | None = None) -> str:
-    """Return a vector's components in parentheses."""
+    r"""Return a vector's components in parentheses.
+
+    A small component is written as its neighbour is, with a power of ten, where
+    that one has one: one form within a vector.
+
+    Examples
+    --------
+    >>> vec((0.0001456, 6.575e-5)), vec((0.2665, 3e-5))
+    ('(1.456 \\cdot 10^{-4},\\ 6.575 \\cdot 10^{-5})', '(0.2665,\\ 3 \\cdot 10^{-5})')
+    """
     ref = max(abs(float(v[0])), abs(float(v[1]))) if scale is None else scale
-    return f"({num(v[0], ref)},\\ {num(v[1], ref)})"
+    texts = [num(v[0], ref), num(v[1], ref)]
+    if any("\\cdot" in s for s in texts):
+        texts = [
+            _powered(float(x)) if s != "0" and abs(float(x)) < SMALL else s
+            for s, x in zip(texts, v, strict=False)
+        ]
+    return f"({texts[0]},\\ {texts[1]})"
 
 
 def deg(radians: float) -> str:
