@@ -15,6 +15,7 @@ from typing import Any
 
 __all__ = [
     "ROMAN",
+    "WORDS",
     "crank_angle_text",
     "describe",
     "fitting",
@@ -25,6 +26,7 @@ __all__ = [
     "position_title",
     "roman",
     "shortened",
+    "spelt",
     "spoken",
     "suggest",
 ]
@@ -109,6 +111,30 @@ def spoken(items: Sequence[str]) -> str:
     if len(items) < 2:
         return "".join(items)
     return f"{', '.join(items[:-1])} and {items[-1]}"
+
+
+WORDS = {
+    1: "one",
+    2: "two",
+    3: "three",
+    4: "four",
+    5: "five",
+    6: "six",
+    7: "seven",
+    8: "eight",
+}
+"""Small counts written as words."""
+
+
+def spelt(count: int) -> str:
+    """Return ``count`` in words up to eight, in digits above.
+
+    Examples
+    --------
+    >>> spelt(3), spelt(12)
+    ('three', '12')
+    """
+    return WORDS.get(count, str(count))
 
 
 def counted(count: int, noun: str, plural: str | None = None) -> str:

@@ -9,7 +9,7 @@ from __future__ import annotations
 import itertools
 from typing import TYPE_CHECKING
 
-from assur._text import counted, public_name, roman, spoken
+from assur._text import counted, public_name, roman, spelt, spoken
 
 if TYPE_CHECKING:
     from assur._structure import Group, Structure
@@ -73,7 +73,7 @@ def _why(g: Group, said: dict[tuple[int, int], Group] | None = None) -> str:
 
 def _class_why(g: Group) -> str:
     """Return what sets the class of a group of class III or higher."""
-    count = NUMBERS.get(len(g.basis), str(len(g.basis)))
+    count = spelt(len(g.basis))
     pairs = _names(g.basis)
     if g.base:
         return (
@@ -89,10 +89,6 @@ CLASS_RULE = (
     "contour of three"
 )
 """What sets the class of a group of class III or higher, in the words said."""
-
-
-NUMBERS = {3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight"}
-"""Counts of pairs written as words."""
 
 
 def _apart(s: Structure) -> list[str]:

@@ -7,7 +7,7 @@ formula with its numbers and the order of the two passes.
 from __future__ import annotations
 
 from assur._structure import Group, Structure
-from assur._text import noun_for, roman
+from assur._text import noun_for, roman, spelt
 from assur.explain._note import Block, Display, Heading, Items, Para
 from assur.explain._tex import plain
 from assur.report import _apart, _class_why, _names, _pairs_text, _why
@@ -86,5 +86,4 @@ def structure_blocks(s: Structure) -> list[Block]:
 
 def _driving(count: int) -> str:
     """Return how many drivers move the mechanism, in words: 'one driver moves'."""
-    spelt = {1: "one", 2: "two", 3: "three", 4: "four"}.get(count, str(count))
-    return f"{spelt} driver moves" if count == 1 else f"{spelt} drivers move"
+    return "one driver moves" if count == 1 else f"{spelt(count)} drivers move"
