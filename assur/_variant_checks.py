@@ -11,7 +11,7 @@ import dataclasses
 
 import numpy as np
 
-from assur._vec import Array, Mask, wrap
+from assur._vec import Array, Mask, diameters, wrap
 from assur.groups._dyad import (
     APART,
     BRANCH_TOLERANCE,
@@ -32,12 +32,6 @@ UNDECIDED = 1e3 * BRANCH_TOLERANCE
 """A variant whose other branch also closes within this is compiled on its own."""
 
 
-def _diameters(points: Array) -> Array:
-    """Largest distance between two of the points (k, P, 2) of each variant, m."""
-    gap = points[:, :, None, :] - points[:, None, :, :]
-    return np.sqrt((gap * gap).sum(axis=-1)).max(axis=(1, 2))
-
-
 def _small_links(t: Plan, core: dict[str, Array], scale: Array) -> Mask:
     """Mark variants with a link near the smallest size ``compile_plan`` accepts."""
     pins: dict[str, list[Array]] = {}
@@ -49,7 +43,7 @@ def _small_links(t: Plan, core: dict[str, Array], scale: Array) -> Mask:
     for link, at in pins.items():
         if link == t.bodies[0] or len(at) < 2:
             continue
-        size = _diameters(np.stack(at, axis=1))
+        size = diameters(np.stack(at, axis=1))
         near |= (size * MARGIN > 1e-12) & ~(size > MARGIN * SMALL * scale)
     return near
 

@@ -37,9 +37,9 @@ from assur._loads import LoadPlan, compile_loads
 from assur._metres import LARGE
 from assur._points import PointSpec
 from assur._stack import repeat, signature
-from assur._variant_checks import MARGIN, _branch, _diameters, _small_links
+from assur._variant_checks import MARGIN, _branch, _small_links
 from assur._variant_plans import Leaf, _as_is, _dyad, _loads, _pair_plans, _plan
-from assur._vec import Array, Mask
+from assur._vec import Array, Mask, diameters
 from assur.groups._dyad import DyadSolver
 from assur.groups._motion import Motion
 from assur.groups._protocol import group_sizes
@@ -312,7 +312,7 @@ def compile_many(model: Template, rows: Array) -> tuple[Compiled, Mask]:
     for b, name in enumerate(model.origin_pair):
         if name is not None:
             origins[:, b] = core[name]
-    scale = np.maximum(1e-12, _diameters(np.stack(list(core.values()), axis=1)))
+    scale = np.maximum(1e-12, diameters(np.stack(list(core.values()), axis=1)))
     far = np.max(np.abs(np.stack(list(file_at.values()), axis=1)), axis=(1, 2))
     doubtful |= ~(far * MARGIN <= FAR * scale)
     doubtful |= _small_links(t, core, scale)

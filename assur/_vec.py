@@ -104,6 +104,15 @@ SQUARE_RANGE = (1e-280, 1e280)
 back to ``np.hypot`` (a square underflows below about 1e-308, overflows above 1e308)."""
 
 
+def diameters(points: Array) -> Array:
+    """Return the largest distance between two of the points (k, P, 2) of each row.
+
+    Every pair compared: for the few points of a group or a link (m, as given).
+    """
+    gap = points[:, :, None, :] - points[:, None, :, :]
+    return np.sqrt((gap * gap).sum(axis=-1)).max(axis=(1, 2))  # type: ignore[no-any-return]
+
+
 def norm(x: Array, y: Array, out: Array | None = None) -> Array:
     """Return ``sqrt(x**2 + y**2)`` per element, as ``np.hypot`` does.
 

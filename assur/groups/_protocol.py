@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any, ClassVar, Protocol
 
 import numpy as np
 
-from assur._vec import Array, Mask
+from assur._vec import Array, Mask, diameters
 from assur.groups._equations import Equations, equations
 from assur.groups._motion import Motion
 
@@ -100,9 +100,7 @@ def group_sizes(points: Array, scale: Array) -> Array:
     metres against those in radians by this length: the mechanism's size made a
     small group in a large machine look near its dead centre at every position.
     """
-    gap = points[:, :, None, :] - points[:, None, :, :]
-    span = np.sqrt((gap * gap).sum(axis=-1)).max(axis=(1, 2))
-    return np.maximum(span, SMALLEST_GROUP * scale)
+    return np.maximum(diameters(points), SMALLEST_GROUP * scale)
 
 
 @dataclass(frozen=True, slots=True)
