@@ -58,10 +58,10 @@ def inertia_rows(table: Table, row: int = 0) -> list[tuple[str, list[float]]]:
     return out
 
 
-def _sizes(
-    rows: list[tuple[str, list[float]]], values: list[float], turn: float, size: float
+def _scales(
+    rows: list[tuple[str, list[float]]], turn: float, size: float
 ) -> list[float | None]:
-    """Return what each of a row's ``values`` is told from round-off by.
+    """Return what each column of the inertia table is told from round-off by.
 
     Accelerations by the largest of the links' or the motion's own, the square of
     the fastest link's angular speed ``turn`` (rad/s), times the mechanism's
@@ -69,22 +69,36 @@ def _sizes(
     crank's pin has 20; every link of a parallelogram turning steadily has
     1e-13 rad/s^2); the inertia loads by the link's own mass or moment of
     inertia times those, the offsets h by the mechanism's size; the masses and
-    moments of inertia are the file's own, shown however small.
+    moments of inertia are the file's own, shown however small (None). The
+    inertia loads' scales are their accelerations', to be multiplied by each
+    row's mass or moment of inertia (:func:`_sizes`).
     """
     columns = [largest(c) for c in zip(*(v for _, v in rows), strict=True)]
     point = max(columns[1], turn * turn * size)
     angular = max(columns[5], turn * turn)
-    mass, inertia = values[0], values[4]
     return [
         None,
         point,
-        mass * point,
+        point,
         columns[3],
         None,
         angular,
-        inertia * angular,
+        angular,
         max(columns[7], size),  # an offset beside the mechanism's size
     ]
+
+
+def _sizes(scales: list[float | None], values: list[float]) -> list[float | None]:
+    """Return what each of a row's ``values`` is told from round-off by.
+
+    The columns' ``scales``, the inertia force's times the link's mass and the
+    inertia torque's times its moment of inertia.
+    """
+    out = list(scales)
+    for load, datum in ((2, 0), (6, 4)):
+        scale = scales[load]
+        out[load] = None if scale is None else values[datum] * scale
+    return out
 
 
 def inertia_html(table: Table) -> str:
@@ -99,12 +113,12 @@ def inertia_html(table: Table) -> str:
         for title, unit in HEADINGS
     )
     turn = largest([table[f"{x.name}.omega"][0] for x in table.mechanism.links])
-    size = float(table.plan.scale)
+    scales = _scales(rows, turn, float(table.plan.scale))
     body = "\n".join(
         f'<tr data-link="{escape(name)}"><th>{escape(public(name))}</th>'
         + "".join(
             f"<td>{number(v, s)}</td>"
-            for v, s in zip(values, _sizes(rows, values, turn, size), strict=True)
+            for v, s in zip(values, _sizes(scales, values), strict=True)
         )
         + "</tr>"
         for name, values in rows
