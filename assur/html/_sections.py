@@ -69,6 +69,18 @@ def largest(values: Any) -> float:
     return float(np.max(found, where=np.isfinite(found), initial=0.0))
 
 
+def by_unit(units: list[str], values: list[Any]) -> list[float]:
+    """Return, for each of ``values``, the largest magnitude among those of its unit.
+
+    What a value is told from round-off by: a joint's reaction of 1e-14 N beside
+    others' 3000 N, not a small mechanism's 1e-10 N.
+    """
+    most: dict[str, float] = {}
+    for unit, value in zip(units, values, strict=True):
+        most[unit] = max(most.get(unit, 0.0), largest(value))
+    return [most[unit] for unit in units]
+
+
 def meta_html(struct: Structure, table: Table, data: dict[str, Any]) -> str:
     """Return the summary under the title: mobility, class, sweep and analysis."""
     driver = data["driver"]
@@ -163,16 +175,14 @@ def summary_html(table: Table) -> str:
     summary = Summary()
     summary.add(table)
     found, units = summary.result(), summary.units
-    # round-off told by the largest value of its unit: a mean torque of 1e-16 N m
-    # beside peaks of 0.2 (a turn of a mechanism that does no net work)
-    sizes: dict[str, float] = {}
-    for key, value in found.items():
-        sizes[units[key]] = max(sizes.get(units[key], 0.0), largest(value))
+    # a mean torque of 1e-16 N m beside peaks of 0.2 (a turn of a mechanism that
+    # does no net work) is round-off
+    sizes = by_unit([units[key] for key in found], list(found.values()))
     rows = "\n".join(
         f'<tr data-key="{escape(key)}"><th>{escape(key)}</th>'
-        f"<td>{number(value, sizes[units[key]])}</td>"
+        f"<td>{number(value, size)}</td>"
         f"<td>{escape(pretty_unit(units[key]))}</td></tr>"
-        for key, value in found.items()
+        for (key, value), size in zip(found.items(), sizes, strict=True)
     )
     # as the command line's summary says it: which sign drives a clockwise crank
     said = [" ".join(turning(summary)), *notes(summary)]
@@ -203,20 +213,15 @@ def table_html(plan: Plan, table: Table) -> str:
     columns = table_columns(plan, table)
     step = 10 if len(table) > LONG_TABLE else 1
     values = [np.asarray(table[key]) for key, _ in columns]
-    # round-off is told by the largest value of its unit: a joint's reaction that
-    # is 1e-14 N beside others' 3000 N, not a small mechanism's 1e-10 N
-    units = [table.column(key).unit for key, _ in columns]
-    sizes: dict[str, float] = {}
-    for u, v in zip(units, values, strict=True):
-        sizes[u] = max(sizes.get(u, 0.0), largest(v))
+    sizes = by_unit([table.column(key).unit for key, _ in columns], values)
     head = "".join(
         f'<th data-key="{escape(key)}">{escape(title)}</th>' for key, title in columns
     )
     rows = [
         f'<tr data-row="{i}">'
         + "".join(
-            f"<td>{number(float(v[i]), sizes[u])}</td>"
-            for u, v in zip(units, values, strict=True)
+            f"<td>{number(float(v[i]), size)}</td>"
+            for v, size in zip(values, sizes, strict=True)
         )
         + "</tr>"
         for i in range(0, len(table), step)
