@@ -11,7 +11,6 @@ from typing import Any
 
 import numpy as np
 
-from assur._metres import QUIET
 from assur._tables import (
     Reading,
     in_turn,
@@ -116,9 +115,8 @@ def _compile(plan: Plan) -> LoadPlan:
     count = len(plan.bodies)
     mass, inertia, center = np.zeros(count), np.zeros(count), np.zeros((count, 2))
     still = _never_turning(plan)
-    if not QUIET.get():  # a study compiling its variants says them in their rows
-        for msg in massless_texts(mech):
-            warn(msg, AssurWarning, stacklevel=2)
+    for msg in massless_texts(mech):
+        warn(msg, AssurWarning, stacklevel=2)
     for link in mech.links:
         if not link.mass:
             continue

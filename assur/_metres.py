@@ -4,18 +4,12 @@ from __future__ import annotations
 
 import os
 import sys
-from contextvars import ContextVar
 from typing import Any
 
 from assur._warn import warn
 from assur.errors import AssurWarning
 
-__all__ = ["LARGE", "QUIET", "metres", "metres_text"]
-
-QUIET: ContextVar[bool] = ContextVar("assur_compile_quiet", default=False)
-"""True while a study compiles its variants: the warnings of a compilation are then
-not raised but said in each variant's row. A context variable, not a warnings
-filter: a filter is the whole process's, and hid other threads' warnings."""
+__all__ = ["LARGE", "metres", "metres_text"]
 
 LARGE = 50.0
 """Size of a mechanism (m) above which its lengths are likely millimetres: a drawing's
@@ -30,7 +24,7 @@ def metres(size: float) -> None:
     inertia forces a thousand times too large, without a word otherwise.
     """
     msg = metres_text(size)
-    if msg is not None and not QUIET.get():
+    if msg is not None:
         warn(msg, AssurWarning, stacklevel=_outside())
 
 

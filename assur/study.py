@@ -22,7 +22,6 @@ import numpy as np
 from assur import _text
 from assur._batch import CHUNK, near_change_points, summaries
 from assur._drive import positions
-from assur._metres import QUIET
 from assur._progress import Callback, Progress
 from assur._progress import progress as counted
 from assur._study_inputs import (
@@ -51,6 +50,7 @@ from assur._study_stacks import (
 from assur._study_tables import _chosen, _known, _names, _tables, ordered
 from assur._variants import Template, compile_many, form, numbers
 from assur._vec import Array
+from assur._warn import held
 from assur.errors import AssurError
 from assur.model import Mechanism
 
@@ -322,11 +322,8 @@ def _block(
         # a sweep longer than a batch: each variant summarised slice by slice
         forms = {None: [x for members in forms.values() for x in members]}
     # compilations' warnings are said in each row they concern (told), not here
-    quiet = QUIET.set(True)
-    try:
+    with held():
         alone = _batched(rows, block.start, forms, templates, angles, size, batched)
-    finally:
-        QUIET.reset(quiet)
     for i, mech in alone:
         rows[i - block.start].update(_alone(mech, angles, angles.shape[0] > CHUNK))
     told(rows, block.start, built, batched)
