@@ -189,7 +189,8 @@ def _unknown(kind: str, name: object, known: Iterable[str]) -> str:
 
 def _on_the_frame(why: str, links: list[str]) -> str:
     """Return the message of a point or load on the frame (``why``: what it does)."""
-    return f"{GROUND!r} is the frame: {why}; expected a moving link ({listing(links)})"
+    choices = listing(links, last="or")
+    return f"{GROUND!r} is the frame: {why}; expected a moving link ({choices})"
 
 
 def _entry(kind: str, name: object, suffix: str) -> str:

@@ -100,17 +100,17 @@ def _dial(angle: float, written: str, shown: Callable[[float], str]) -> str:
     return dial.rstrip("0").rstrip(".") if "." in dial else dial
 
 
-def spoken(items: Sequence[str]) -> str:
-    """Return items as a sentence lists them: the last after "and".
+def spoken(items: Sequence[str], last: str = "and") -> str:
+    """Return items as a sentence lists them: the last after ``last``.
 
     Examples
     --------
-    >>> spoken(["a"]), spoken(["a", "b"]), spoken(["a", "b", "c"])
-    ('a', 'a and b', 'a, b and c')
+    >>> spoken(["a"]), spoken(["a", "b"]), spoken(["a", "b", "c"], "or")
+    ('a', 'a and b', 'a, b or c')
     """
     if len(items) < 2:
         return "".join(items)
-    return f"{', '.join(items[:-1])} and {items[-1]}"
+    return f"{', '.join(items[:-1])} {last} {items[-1]}"
 
 
 WORDS = {
@@ -310,16 +310,22 @@ def _digits(value: int) -> int:
     return max(1, math.floor(value.bit_length() * math.log10(2)) + 1)
 
 
-def listing(names: Sequence[str], limit: int = 6) -> str:
-    """Return names separated by commas, the first ``limit`` and a count of the rest.
+def listing(names: Sequence[str], limit: int = 6, last: str = "and") -> str:
+    """Return names as a sentence lists them; beyond ``limit``, a count of the rest.
+
+    All shown, the last follows ``last`` ("and", or "or" for a choice); some left
+    out, the shown ones are followed by the count.
 
     Examples
     --------
+    >>> listing(["a", "b", "c"]), listing(["a", "b", "c"], last="or")
+    ('a, b and c', 'a, b or c')
     >>> listing(["a", "b", "c"], limit=2)
     'a, b, ... (3 in all)'
     """
-    shown = ", ".join(names[:limit])
-    return shown if len(names) <= limit else f"{shown}, ... ({len(names)} in all)"
+    if len(names) <= limit:
+        return spoken(names, last)
+    return f"{', '.join(names[:limit])}, ... ({len(names)} in all)"
 
 
 def position_text(

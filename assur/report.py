@@ -18,6 +18,12 @@ __all__ = ["structure_report"]
 
 
 def _names(items: tuple[str, ...]) -> str:
+    """Return names as a sentence lists them: "links 3 and 4", "pairs B, D and E"."""
+    return spoken([public_name(x) for x in items])
+
+
+def _members(items: tuple[str, ...]) -> str:
+    """Return a group's links as its formula writes them: "II(3, 4)"."""
     return ", ".join(public_name(x) for x in items)
 
 
@@ -101,9 +107,9 @@ def _apart(s: Structure) -> list[str]:
     for before, g in itertools.pairwise(s.groups):
         if set(g.attached_to).isdisjoint(before.links):
             lines.append(
-                f"  {roman(g.group_class)}({_names(g.links)}) is attached to "
+                f"  {roman(g.group_class)}({_members(g.links)}) is attached to "
                 f"{_links_text(g.attached_to)}, not to {roman(before.group_class)}"
-                f"({_names(before.links)}): the two groups could be attached in "
+                f"({_members(before.links)}): the two groups could be attached in "
                 "either order."
             )
     return lines

@@ -368,7 +368,7 @@ def test_structure_report(capsys):
     assert err == ""
     assert out.startswith("Structure of Ten-bar advance-and-grip mechanism")
     assert "W = 3n - 2p5 - p4 = 3*9 - 2*13 - 0 = 1" in out
-    assert "Class II, order 2, dyad RRP: links 6, 7" in out
+    assert "Class II, order 2, dyad RRP: links 6 and 7" in out
     assert "Structure formula: I(ground, 1) -> II(2, 3) -> " in out
     assert out.rstrip().endswith("the force analysis in the reverse order.")
 

@@ -330,7 +330,7 @@ BAD = {
         LEFTOVER,
         "structure",
         DecompositionError,
-        r"^links 2, 3, 4, 5 are left over: they form no Assur group",
+        r"^links 2, 3, 4 and 5 are left over: they form no Assur group",
     ),
     "load-on-unknown-link": Bad(
         BASE + '\n[[loads]]\nlink = "rdo"\nat = "C"\nforce = [1.0, 0.0]\n',
@@ -641,7 +641,7 @@ def test_a_load_or_point_on_the_frame_says_it_is_the_frame(block, entry, why):
         assur.loads(text + "\n" + block)
     assert str(caught.value) == (
         f"{entry}: 'ground' is the frame: {why}; expected a moving link (crank, "
-        "coupler, rocker)"
+        "coupler or rocker)"
     )
 
 

@@ -200,11 +200,11 @@ def test_only_sliding_pairs_is_no_group():
     # the reason was missing: "they form no Assur group (3k = 2p, every part
     # movable)" read as if the dyad were one
     match = (
-        r"^links x, y are left over: .* on the known links crank, ground, because "
-        r"joints B, C, D are three sliding pairs, which cannot fix the rotation of "
-        r"the dyad x, y \(they tie it twice over, to the known links crank, ground, "
-        r"and leave it free to slide\); expected a revolute pair in place of one of "
-        r"them$"
+        r"^links x and y are left over: .* on the known links crank and ground, "
+        r"because joints B, C and D are three sliding pairs, which cannot fix the "
+        r"rotation of the dyad x and y \(they tie it twice over, to the known links "
+        r"crank and ground, and leave it free to slide\); expected a revolute pair in "
+        r"place of one of them$"
     )
     with pytest.raises(DecompositionError, match=match):
         assur.structure(dyad("PPP"))
@@ -404,9 +404,9 @@ def test_a_group_spoiled_by_the_group_before_it():
     )
     assert assur.mobility(mech) == 1
     match = (
-        r"^links x, y, w, v are left over: .* on the known links crank, ground, p, "
-        r"q, because link x is held to the known links by joints E, H, which fix it, "
-        r"and link v hangs on joint L alone;"
+        r"^links x, y, w and v are left over: .* on the known links crank, ground, p "
+        r"and q, because link x is held to the known links by joints E and H, which "
+        r"fix it, and link v hangs on joint L alone;"
     )
     with pytest.raises(DecompositionError, match=match):
         assur.structure(mech)
@@ -570,7 +570,7 @@ def test_a_part_not_joined_to_the_frame_is_named_when_the_count_goes_wrong():
         assur.structure(mech)
     assert str(caught.value) == (
         "drivers: the mechanism has W = 3*6 - 2*7 - 0 = 4 degrees of freedom but 1 "
-        "driver, as links p, q, r are joined to the frame by no chain of joints; "
+        "driver, as links p, q and r are joined to the frame by no chain of joints; "
         "expected every link joined to the frame through joints"
     )
 
@@ -593,11 +593,11 @@ def test_leftover_links_are_named():
     )
     assert assur.mobility(mech) == 1
     match = (
-        r"^links 2, 3, 4, 5 are left over: they form no Assur group \(3k = 2p, no "
-        r"smaller group\) on the known links 1, ground, because link 2 is held to the "
-        r"known links by joints g1, j12, which fix it, and link 5 hangs on joint j45 "
-        r"alone; expected every link of a group held by two joints at least, at most "
-        r"one of them to a known link$"
+        r"^links 2, 3, 4 and 5 are left over: they form no Assur group \(3k = 2p, no "
+        r"smaller group\) on the known links 1 and ground, because link 2 is held to "
+        r"the known links by joints g1 and j12, which fix it, and link 5 hangs on "
+        r"joint j45 alone; expected every link of a group held by two joints at least, "
+        r"at most one of them to a known link$"
     )
     with pytest.raises(DecompositionError, match=match):
         assur.structure(mech)
@@ -618,8 +618,8 @@ def test_leftover_names_two_joints_between_two_links():
         ["A"],
     )
     match = (
-        r"^links 2, 3, 4, 5 are left over: they form no Assur group .* on the known "
-        r"links 1, ground, because joints g1 and g2 both join ground and 2: two "
+        r"^links 2, 3, 4 and 5 are left over: they form no Assur group .* on the known "
+        r"links 1 and ground, because joints g1 and g2 both join ground and 2: two "
         r"revolute pairs at two points weld the links into one rigid body; expected "
         r"one joint between two links \(or one link in place of two welded ones\)$"
     )
@@ -655,8 +655,8 @@ def test_two_joints_between_two_links(kinds, at, axis, reason):
     )
     assert assur.mobility(mech) == 1
     match = (
-        r"^links x, y are left over: .* on the known links crank, ground, because "
-        rf"joints D and E both join y and x: {reason}"
+        r"^links x and y are left over: .* on the known links crank and ground, "
+        rf"because joints D and E both join y and x: {reason}"
     )
     with pytest.raises(DecompositionError, match=match):
         assur.structure(mech)
@@ -688,10 +688,10 @@ def test_four_bar_with_its_rocker_s_pivot_on_the_crank():
     # O4 typed as ["ground", "crank"]: the frame and the crank, both known, were
     # not looked at, and the rocker was left over without a reason
     match = (
-        r"^links coupler, rocker are left over: .* on the known links crank, ground, "
-        r"because joints O2 and O4 both join ground and crank: two revolute pairs at "
-        r"two points weld the links into one rigid body; expected one joint between "
-        r"two links \(or one link in place of two welded ones\)$"
+        r"^links coupler and rocker are left over: .* on the known links crank and "
+        r"ground, because joints O2 and O4 both join ground and crank: two revolute "
+        r"pairs at two points weld the links into one rigid body; expected one joint "
+        r"between two links \(or one link in place of two welded ones\)$"
     )
     for links in [("ground", "crank"), ("crank", "ground")]:
         with pytest.raises(DecompositionError, match=match):
@@ -709,8 +709,8 @@ def test_whitworth_with_a_rigid_triangle():
     # lever, rod and ram pinned to one another in a triangle: a truss, not links
     # of an Assur group (the chain was reported as a class III group before)
     match = (
-        r"^links block, lever, rod, ram are left over: .* because joints O4, E, F "
-        r"make links lever, rod, ram rigid \(k = 3, p = 3: 2p >= 3\(k - 1\)\); "
+        r"^links block, lever, rod and ram are left over: .* because joints O4, E and "
+        r"F make links lever, rod and ram rigid \(k = 3, p = 3: 2p >= 3\(k - 1\)\); "
         r"expected one link in their place, or fewer joints between them$"
     )
     with pytest.raises(DecompositionError, match=match):
@@ -728,7 +728,7 @@ def test_whitworth_with_two_joints_between_lever_and_rod():
 def test_group_of_order_one_is_refused():
     # links 6..9 hang on one external pair H (this was a class IV group of order 1):
     # the guide between 6 and 9 closes the rigid triangle 6, 7, 9
-    match = r"because joints L, S, guide make links 6, 7, 9 rigid"
+    match = r"because joints L, S and guide make links 6, 7 and 9 rigid"
     with pytest.raises(DecompositionError, match=match):
         assur.structure(relinked("tenbar.toml", "guide", ("6", "9")))
 
@@ -750,22 +750,31 @@ def test_open_chain_with_a_sliding_dyad_is_no_group():
         ["A"],
     )
     assert assur.mobility(mech) == 1
-    with pytest.raises(DecompositionError, match=r"^links a, b, c, d are left over"):
+    with pytest.raises(DecompositionError, match=r"^links a, b, c and d are left over"):
         assur.structure(mech)
 
 
+NAMED = r"links d, x, y and z are left over: .* on the known links crank and ground"
+"""The head of a message naming the links left over and the known links."""
+COUNTED = r"4 links are left over, in no Assur group on the 2 known links"
+"""The same counted, where the names would run the message past 400 characters."""
+
+
 @pytest.mark.parametrize(
-    ("name", "through"),
-    [("sliding_loop", "link ground"), ("sliding_lock", "links crank, ground")],
+    ("name", "through", "head"),
+    [
+        ("sliding_loop", "link ground", NAMED),
+        ("sliding_lock", "links crank and ground", COUNTED),
+    ],
 )
-def test_a_loop_of_sliding_pairs_alone_is_no_group(name, through):
+def test_a_loop_of_sliding_pairs_alone_is_no_group(name, through, head):
     # yg, xy, xz, zg slide in a loop through the frame (or from the frame to the
     # crank): one rotation is tied twice, and d, x, y, z were a class III triad
     match = (
-        r"^links d, x, y, z are left over: .* on the known links crank, ground, "
-        r"because joints yg, xy, xz, zg close a loop of sliding pairs alone through "
+        rf"^{head}, "
+        r"because joints yg, xy, xz and zg close a loop of sliding pairs alone through "
         rf"the known {through}: each ties its two links' rotations; those of links "
-        r"y, x, z are tied once too often, which W = 3n - 2p5 - p4 miscounts; "
+        r"y, x and z are tied once too often, which W = 3n - 2p5 - p4 miscounts; "
         r"expected a revolute pair in place of one of them$"
     )
     with pytest.raises(DecompositionError, match=match):
@@ -822,7 +831,8 @@ def test_report_names_every_step():
         "1. Class I: the frame and the input link 1 (driven through pair A)" in report
     )
     for step, g in enumerate(s.groups, start=2):
-        line = f"{step}. Class II, order 2, dyad {g.kind}: links {', '.join(g.links)}"
+        first, second = g.links
+        line = f"{step}. Class II, order 2, dyad {g.kind}: links {first} and {second}"
         assert line in report
     assert f"Structure formula: {s.formula}" in report
     assert "Class of the mechanism: II" in report
@@ -839,7 +849,10 @@ def test_report_of_a_triad():
     report = str(assur.structure(six_bar()))
     assert "Structure of six-bar" in report
     assert "2. Class III, order 3, triad: links" in report
-    assert "internal pairs C, D, E; external pairs B, F, G on the known links" in report
+    assert (
+        "internal pairs C, D and E; external pairs B, F and G on the known links"
+        in report
+    )
     assert WHY.format(k=4, p=6, n=12) in report
     assert "Class of the mechanism: III" in report
     # what makes it class III: the base link with its three internal pairs
@@ -848,8 +861,8 @@ def test_report_of_a_triad():
     assert sorted(group.basis) == ["C", "D", "E"]
     why = [line.strip() for line in report.splitlines() if "Why class" in line]
     assert why == [
-        f"Why class III: its base link plate carries three internal pairs, "
-        f"{', '.join(group.basis)} (above class II, the class is the number of "
+        "Why class III: its base link plate carries three internal pairs, "
+        "C, D and E (above class II, the class is the number of "
         "internal pairs of the most complex closed contour they form; a base link "
         "carrying three internal pairs counts as a contour of three)."
     ]
@@ -857,19 +870,21 @@ def test_report_of_a_triad():
 
 def test_report_of_a_dyad_counts_its_pairs_and_links():
     report = str(assur.structure(assur.catalog.four_bar()))
-    assert "internal pair C; external pairs B, D on the known links crank, ground." in (
-        report
+    assert (
+        "internal pair C; external pairs B and D on the known links crank and ground."
+        in (report)
     )
     assert WHY.format(k=2, p=3, n=6) in report
     pinned = str(assur.structure(relinked("four_bar.toml", "O4", ("crank", "rocker"))))
-    assert "external pairs A, O4 on the known link crank." in pinned
+    assert "external pairs A and O4 on the known link crank." in pinned
 
 
 def test_report_of_a_general_group():
     report = str(assur.structure(class_four()))
-    assert "2. Class IV, order 2, group: links a, b, c, d" in report
-    assert "internal pairs ab, bc, cd, da; external pairs B, Oc on the known links" in (
-        report
+    assert "2. Class IV, order 2, group: links a, b, c and d" in report
+    assert (
+        "internal pairs ab, bc, cd and da; external pairs B and Oc on the known links"
+        in (report)
     )
     assert WHY.format(k=4, p=6, n=12) in report
     # what makes it class IV: no link carries more than two internal pairs, and
@@ -878,8 +893,8 @@ def test_report_of_a_general_group():
     assert group.base == ""
     assert sorted(group.basis) == ["ab", "bc", "cd", "da"]
     assert (
-        f"Why class IV: its internal pairs {', '.join(group.basis)} close a contour "
-        "of four links" in report
+        "Why class IV: its internal pairs ab, bc, cd and da close a contour of four "
+        "links" in report
     )
     # a dyad's class needs no reason: two links and one internal pair
     assert "Why class" not in str(assur.structure(assur.catalog.four_bar()))
@@ -1001,8 +1016,8 @@ def test_links_held_twice_or_on_one_joint_are_no_larger_group():
     # is held to the crank and the frame (B0, X) and v4 hangs on C4: no group at all
     match = (
         r"^links u0, v0, u1, v1, u2, v2, \.\.\. \(10 in all\) are left over: .* on the "
-        r"known links c0, ground, because link u0 is held to the known links by "
-        r"joints B0, X, which fix it, and link v4 hangs on joint C4 alone; expected "
+        r"known links c0 and ground, because link u0 is held to the known links by "
+        r"joints B0 and X, which fix it, and link v4 hangs on joint C4 alone; expected "
         r"every link of a group held by two joints at least, at most one of them to "
         r"a known link$"
     )
@@ -1032,8 +1047,8 @@ def test_a_slot_s_block_and_pin_read_as_such():
     s = assur.structure(assur.load(EXAMPLES / "slot_mechanism.toml"))
     text = str(s)
     assert "~" not in text.replace("B~block and B~pin", "")
-    assert "links rocker, B (block)" in text
-    assert "external pairs O4, B (pin)" in text
+    assert "links rocker and B (block)" in text
+    assert "external pairs O4 and B (pin)" in text
     data = s.to_dict()  # the names the JSON gives: those of the columns
     assert data["groups"][0]["links"] == ["rocker", "B~block"]
 
@@ -1141,7 +1156,7 @@ def test_a_group_counted_as_one_before_refers_to_it():
     why = [line.strip() for line in report.splitlines() if "Why an Assur" in line]
     assert why[0] == WHY.format(k=2, p=3, n=6)
     assert why[1:] == 3 * [
-        "Why an Assur group: the same counts as links 2, 3 above: k = 2, p = 3, "
+        "Why an Assur group: the same counts as links 2 and 3 above: k = 2, p = 3, "
         "W = 3k - 2p = 6 - 6 = 0, and every smaller part keeps W > 0."
     ]
 
@@ -1163,3 +1178,35 @@ def test_the_getting_started_page_shows_the_structure_command_s_own_output(capsy
     assert [line.strip() for line in shown[:-1]] == [
         line.strip() for line in printed.splitlines()
     ]
+
+
+@pytest.mark.parametrize(
+    "command",
+    [
+        "assur structure examples/tenbar.toml",
+        "assur structure examples/six_bar_lecture.toml",
+        "assur structure examples/six_bar_lecture.toml --driver G",
+    ],
+)
+def test_the_concepts_page_shows_the_structure_command_s_own_lines(capsys, command):
+    # the page showed a ten-bar's "II(6, 7) hangs on 2, ground, not on II(4, 5)
+    # before it", words the report had long stopped printing
+    from assur.cli import main
+
+    page = (DOCS / "concepts.rst").read_text(encoding="utf-8")
+    start = page.index(f"   $ {command}\n") + len(command) + 6
+    shown = []
+    for line in page[start:].splitlines():
+        if line.startswith("   $") or (line and not line.startswith("   ")):
+            break  # the next command, or the block's end
+        if line.strip() not in ("", "..."):  # "..." stands for lines left out
+            shown.append(line.strip())
+    args = command.split()[1:]
+    args[1] = str(EXAMPLES.parent / args[1])
+    assert main(args) == 0
+    printed = [line.strip() for line in capsys.readouterr().out.splitlines()]
+    # every line shown is printed, in the order shown
+    found = iter(printed)
+    missing = [line for line in shown if line not in found]
+    assert shown
+    assert not missing

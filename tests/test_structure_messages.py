@@ -194,7 +194,7 @@ def test_two_drivers_on_one_loop_and_none_on_another_are_named() -> None:
     with pytest.raises(DecompositionError) as err:
         assur.structure(build(first + second, ["A", "D"]))
     assert str(err.value).endswith(
-        "because links 5, 6, 7 can move (3k - 2p = 1) with no input, while link 3 "
+        "because links 5, 6 and 7 can move (3k - 2p = 1) with no input, while link 3 "
         "is over-constrained (3k - 2p = -1): the drivers are on the wrong part; "
         "expected a driver moved to joint A2 or D2"
     )
@@ -210,7 +210,7 @@ def test_two_drivers_on_one_loop_and_none_on_another_are_named() -> None:
     with pytest.raises(DecompositionError) as err:
         assur.structure(build(first + between, ["A", "D"]))
     assert "wrong part" not in str(err.value)
-    assert "link 3 is held to the known links by joints B, C" in str(err.value)
+    assert "link 3 is held to the known links by joints B and C" in str(err.value)
     # nor a link that hangs on one joint to the frame: it is named as such
     hanging = [("P", "R", ("ground", "5"), (0.3, 0.3))]
     with pytest.raises(DecompositionError) as err:
@@ -242,8 +242,8 @@ def test_an_unknown_driver_lists_the_joints_with_the_frame(capsys) -> None:
 def test_the_note_says_why_a_group_is_of_its_class() -> None:
     note = str(assur.explain(assur.load(EXAMPLES / "class3.toml"), 30.0))
     assert (
-        "triad (rod, plate, left_rocker, right_rocker): internal pairs C, D, E; "
-        "external pairs B, F, G on the known links crank, ground. Why an Assur "
+        "triad (rod, plate, left_rocker, right_rocker): internal pairs C, D and E; "
+        "external pairs B, F and G on the known links crank and ground. Why an Assur "
         "group: k = 4 links, p = 6 lower pairs" in note
     )
     assert "Why class III: its base link plate carries three internal pairs" in note
@@ -304,7 +304,7 @@ def test_a_triad_names_its_prismatic_pairs() -> None:
     assert "; prismatic pair C, the others revolute." in str(s)
     assert s.to_dict()["groups"][0]["sliding_pairs"] == ["C"]
     note = str(assur.explain(triad, 0.0))
-    assert "on the known links crank, ground; prismatic pair C, the others" in note
+    assert "on the known links crank and ground; prismatic pair C, the others" in note
     # an all-revolute triad and a dyad: no such words
     assert "prismatic pair" not in str(
         assur.structure(assur.load(EXAMPLES / "class3.toml"))
@@ -369,7 +369,7 @@ def test_a_part_apart_from_the_frame_is_named_before_a_passive_constraint() -> N
         with pytest.raises(DecompositionError) as err:
             assur.structure(build(apart, drivers))
         assert str(err.value).endswith(
-            ", as links 4, 5, 6, 7 are joined to the frame by no chain of joints; "
+            ", as links 4, 5, 6 and 7 are joined to the frame by no chain of joints; "
             "expected every link joined to the frame through joints"
         )
     # three pins in line: moving a joint off the line is said as the remedy too

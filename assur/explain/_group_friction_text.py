@@ -16,6 +16,7 @@ import math
 import numpy as np
 
 from assur._friction import solve_group, substituted
+from assur._text import spoken
 from assur.explain._friction_text import (
     at_rest,
     friction_lines,
@@ -171,7 +172,7 @@ def group_friction_blocks(
 
 def method(pairs: list[PairPlan]) -> Para:
     """Return the friction laws of ``pairs`` and the hand method that sizes them."""
-    listed = ", ".join(plain(p.name) for p in pairs)
+    listed = spoken([plain(p.name) for p in pairs])
     # each law the group's pairs have: a group rubbing in guides alone has no couple
     laws = []
     if any(p.kind == "R" for p in pairs):

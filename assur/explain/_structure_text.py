@@ -10,7 +10,7 @@ from assur._structure import Group, Structure
 from assur._text import noun_for, roman, spelt
 from assur.explain._note import Block, Display, Heading, Items, Para
 from assur.explain._tex import plain
-from assur.report import _apart, _class_why, _names, _pairs_text, _why
+from assur.report import _apart, _class_why, _members, _pairs_text, _why
 
 __all__ = ["structure_blocks"]
 
@@ -55,7 +55,7 @@ def structure_blocks(s: Structure) -> list[Block]:
         numeral = roman(g.group_class)
         text = (
             f"Class {numeral}, order {g.order}, {_kind(g.kind)} "
-            f"({_names(g.links)}): {_pairs_text(g)}. "
+            f"({_members(g.links)}): {_pairs_text(g)}. "
             f"Why an Assur group: {_why(g, said)}."
         )
         if g.basis:
