@@ -167,6 +167,15 @@ def test_error_tree():
     assert issubclass(assur.AssurWarning, UserWarning)
 
 
+def test_the_package_says_it_is_typed():
+    # without the PEP 561 marker a user's mypy takes every name of the installed
+    # package for Any ("missing library stubs or py.typed marker"); hatchling's
+    # wheel takes every file of the package, the marker with them
+    assert (ROOT / "assur" / "py.typed").is_file()
+    text = (ROOT / "pyproject.toml").read_text(encoding="utf-8")
+    assert '"Typing :: Typed"' in text
+
+
 def test_version_is_a_string():
     assert isinstance(assur.__version__, str)
     assert assur.__version__
