@@ -14,6 +14,7 @@ from dataclasses import replace
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from assur._drive import _at, _no_driver, driver_rates, positions, to_si
 from assur._loads import compile_loads
@@ -63,14 +64,14 @@ def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
 
 def kinematics(
     mechanism: Mechanism,
-    angles: Sequence[float] | Array,
-    omega: Any = None,
-    epsilon: Any = None,
+    angles: ArrayLike,
+    omega: ArrayLike | None = None,
+    epsilon: ArrayLike | None = None,
     *,
     skip_unassembled: bool = False,
     columns: Sequence[str] | None = None,
     progress: bool | Callback = False,
-    jerk: Any = None,
+    jerk: ArrayLike | None = None,
 ) -> Table:
     """Positions, velocities, accelerations and jerks over driver positions.
 
@@ -136,14 +137,14 @@ def kinematics(
 
 def forces(
     mechanism: Mechanism,
-    angles: Sequence[float] | Array,
-    omega: Any = None,
-    epsilon: Any = None,
+    angles: ArrayLike,
+    omega: ArrayLike | None = None,
+    epsilon: ArrayLike | None = None,
     *,
     skip_unassembled: bool = False,
     columns: Sequence[str] | None = None,
     progress: bool | Callback = False,
-    jerk: Any = None,
+    jerk: ArrayLike | None = None,
 ) -> Table:
     """Kinematics plus inertia loads, joint reactions and balancing loads.
 

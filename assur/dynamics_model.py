@@ -10,11 +10,11 @@ coefficient of speed fluctuation and the other figures of the steady state.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from assur._change_limits import across_change_points
 from assur._checks import LARGEST
@@ -184,7 +184,7 @@ Table.register(Dynamics)
 
 def dynamics(
     mechanism: Mechanism,
-    angles: Sequence[float] | Array | None = None,
+    angles: ArrayLike | None = None,
     flywheel: float = 0.0,
 ) -> Dynamics:
     r"""Reduce the mechanism to its crank and find its steady motion.

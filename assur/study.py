@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from assur import _text
 from assur._batch import CHUNK, near_change_points, summaries
@@ -163,7 +164,7 @@ class Study:
 def sweep(
     factory: Factory,
     parameters: Mapping[str, Any],
-    angles: Any,
+    angles: ArrayLike,
     client: Any = None,
     *,
     partitions: int | None = None,

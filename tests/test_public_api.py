@@ -167,6 +167,29 @@ def test_error_tree():
     assert issubclass(assur.AssurWarning, UserWarning)
 
 
+def test_array_like_parameters_are_annotated_so():
+    # angles: Sequence[float] | Array refused what the docstrings call array_like
+    # (np.arange(0, 360, 10), the (n, drivers) nested list of several drivers) in a
+    # typed script: mypy said "incompatible type", though the call works
+    documented = re.compile(
+        r"^(\w+(?:, \w+)*) : (?:float or )?array_like(?:, optional)?$", re.M
+    )
+    checked = []
+    for name in assur.__all__:
+        value = getattr(assur, name)
+        if not inspect.isfunction(value):
+            continue
+        signature = inspect.signature(value)
+        doc = inspect.getdoc(value) or ""
+        for names in documented.findall(doc):
+            for parameter in names.split(", "):
+                annotation = signature.parameters[parameter].annotation
+                assert "ArrayLike" in str(annotation), (name, parameter, annotation)
+                checked.append(f"{name}({parameter})")
+    assert "forces(angles)" in checked
+    assert "kinematics(omega)" in checked
+
+
 def test_the_package_says_it_is_typed():
     # without the PEP 561 marker a user's mypy takes every name of the installed
     # package for Any ("missing library stubs or py.typed marker"); hatchling's

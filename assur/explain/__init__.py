@@ -14,6 +14,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from numpy.typing import ArrayLike
+
 from assur._structure import structure
 from assur._warn import warn
 from assur.errors import AssurWarning, SelfLockingError
@@ -35,7 +37,7 @@ __all__ = ["Note", "explain", "read_answers"]
 
 def explain(
     mechanism: Mechanism,
-    angle: Any,
+    angle: ArrayLike,
     answers: Mapping[str, float] | None = None,
     source: str = "",
 ) -> Note:
