@@ -159,6 +159,16 @@ def test_the_api_index_lists_every_name():
         assert getattr(home, name) is value, f"{name} is not {listed[name]}.{name}"
 
 
+def test_the_api_index_lists_top_level_names_only():
+    # it listed assur.analysis.Columns among the names "importable from the package
+    # itself", and assur.Columns was an AttributeError
+    text = (ROOT / "docs" / "api" / "index.rst").read_text(encoding="utf-8")
+    top = text.split("Top-level names", 1)[1].split("\nModules\n", 1)[0]
+    listed = re.findall(r"~assur[\w.]*\.(\w+)$", top, re.M)
+    assert len(listed) > 30
+    assert [name for name in listed if name not in assur.__all__] == []
+
+
 def test_error_tree():
     assert issubclass(assur.ModelError, assur.AssurError)
     assert issubclass(assur.ModelError, ValueError)
