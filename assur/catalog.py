@@ -115,6 +115,23 @@ def slider_crank(
     Masses 10, 0.5 and 0.4 kg; crank centre of mass 0.020 m from A, rod's 0.060 m
     from B, rod inertia 0.0018 kg m^2; the slide line is ``y = offset``.
 
+    Parameters
+    ----------
+    crank, rod : float
+        Link lengths, m: the crank A-B from the pivot A = (0, 0), the rod B-C to the
+        slider's pin C.
+    offset : float
+        Height of the slide line above the pivot A, m.
+    angle : float
+        Crank angle of the reference pose, deg.
+    omega : float
+        Crank speed, rad/s.
+
+    Returns
+    -------
+    Mechanism
+        Links crank, rod and slider; joints A, B, C and the horizontal guide.
+
     Raises
     ------
     ModelError

@@ -200,6 +200,39 @@ def test_array_like_parameters_are_annotated_so():
     assert "kinematics(omega)" in checked
 
 
+def _documented_parameters(function: object) -> dict[str, str]:
+    """Return each parameter of a numpydoc Parameters section with its text."""
+    doc = inspect.getdoc(function) or ""
+    part = re.split(r"^Parameters\n-+\n", doc, flags=re.M)
+    if len(part) == 1:
+        return {}
+    body = re.split(r"^\w[\w ]*\n-+\n", part[1], maxsplit=1, flags=re.M)[0]
+    found: dict[str, str] = {}
+    for names, text in re.findall(
+        r"^(\S[^:\n]*?)(?: : .*)?\n((?: .*\n?)*)", body, re.M
+    ):
+        for name in names.split(", "):
+            found[name.lstrip("*")] = " ".join(text.split())
+    return found
+
+
+def test_docstrings_describe_every_parameter():
+    # catalog.slider_crank, the factory of the README's study, had no Parameters
+    # section: its lengths' and angle's units were nowhere
+    functions = [getattr(assur, n) for n in assur.__all__]
+    functions += [getattr(assur.catalog, n) for n in assur.catalog.__all__]
+    for function in functions:
+        if not inspect.isfunction(function):
+            continue
+        documented = _documented_parameters(function)
+        named = list(inspect.signature(function).parameters)
+        assert list(documented) == named, function.__qualname__
+    for name in assur.catalog.__all__:
+        texts = _documented_parameters(getattr(assur.catalog, name)).values()
+        units = [re.search(r", (m|deg|rad/s)[.:]", text) for text in texts]
+        assert all(units), name
+
+
 def test_the_package_says_it_is_typed():
     # without the PEP 561 marker a user's mypy takes every name of the installed
     # package for Any ("missing library stubs or py.typed marker"); hatchling's
