@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -54,6 +54,9 @@ from assur._vec import Array
 from assur._warn import held
 from assur.errors import AssurError
 from assur.model import Mechanism
+
+if TYPE_CHECKING:
+    from pandas import DataFrame
 
 __all__ = ["Study", "sweep"]
 
@@ -163,7 +166,7 @@ class Study:
 
 def sweep(
     factory: Factory,
-    parameters: Mapping[str, Any],
+    parameters: Mapping[str, ArrayLike] | DataFrame,
     angles: ArrayLike,
     client: Any = None,
     *,

@@ -198,21 +198,26 @@ def test_array_like_parameters_are_annotated_so():
                 checked.append(f"{name}({parameter})")
     assert "forces(angles)" in checked
     assert "kinematics(omega)" in checked
+    # a DataFrame is no Mapping to a typed script (pandas-stubs), yet sweep takes one
+    parameters = inspect.signature(assur.sweep).parameters["parameters"]
+    assert "pandas.DataFrame" in _documented_parameters(assur.sweep)["parameters"]
+    assert "DataFrame" in str(parameters.annotation)
+    assert "ArrayLike" in str(parameters.annotation)
 
 
 def _documented_parameters(function: object) -> dict[str, str]:
-    """Return each parameter of a numpydoc Parameters section with its text."""
+    """Return each parameter of a numpydoc Parameters section: its type, its text."""
     doc = inspect.getdoc(function) or ""
     part = re.split(r"^Parameters\n-+\n", doc, flags=re.M)
     if len(part) == 1:
         return {}
     body = re.split(r"^\w[\w ]*\n-+\n", part[1], maxsplit=1, flags=re.M)[0]
     found: dict[str, str] = {}
-    for names, text in re.findall(
-        r"^(\S[^:\n]*?)(?: : .*)?\n((?: .*\n?)*)", body, re.M
+    for names, kind, text in re.findall(
+        r"^(\S[^:\n]*?)(?: : (.*))?\n((?: .*\n?)*)", body, re.M
     ):
         for name in names.split(", "):
-            found[name.lstrip("*")] = " ".join(text.split())
+            found[name.lstrip("*")] = " ".join(f"{kind}\n{text}".split())
     return found
 
 
