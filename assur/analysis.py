@@ -78,7 +78,8 @@ def kinematics(
     Parameters
     ----------
     mechanism : Mechanism
-        The mechanism, as :func:`assur.load` or :mod:`assur.catalog` give it.
+        The mechanism, as :func:`assur.load <assur.io.load>` or
+        :mod:`assur.catalog` give it.
     angles : array_like
         Driver positions, deg (m for a prismatic driver); shape (n,) or, with several
         drivers, (n, drivers): there a flat sequence of one value per driver is one
@@ -108,7 +109,7 @@ def kinematics(
         whose acceleration holds (the file's constants). A driver whose ``epsilon``
         changes along the sweep has a jerk of its own, ``d epsilon / dt``, which
         every jerk column carries (the steady motion's ``driver.jerk`` of
-        :func:`assur.dynamics`).
+        :func:`assur.dynamics <assur.dynamics_model.dynamics>`).
 
     Returns
     -------
@@ -151,7 +152,8 @@ def forces(
     Parameters
     ----------
     mechanism : Mechanism
-        The mechanism, as :func:`assur.load` or :mod:`assur.catalog` give it.
+        The mechanism, as :func:`assur.load <assur.io.load>` or
+        :mod:`assur.catalog` give it.
         With masses (and centres of mass and inertias) or loads.
     angles : array_like
         Driver positions, deg (m for a prismatic driver); shape (n,) or, with several

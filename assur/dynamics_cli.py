@@ -238,7 +238,8 @@ class _Rows:
     """The dynamics table (and the forces at its motion) over a sweep, by slices.
 
     A long sweep is never held whole: each slice's rows are computed from the one
-    steady state, as :func:`assur.dynamics` computes them all at once.
+    steady state, as :func:`assur.dynamics <assur.dynamics_model.dynamics>`
+    computes them all at once.
     """
 
     def __init__(self, mech: Any, state: Any, angles: Array, forces: bool) -> None:

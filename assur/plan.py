@@ -106,7 +106,8 @@ class Plan:
 def plan_of(mech: Mechanism) -> Plan:
     """Return the plan of ``mech``, compiled once per mechanism value.
 
-    The entry points (:func:`assur.kinematics`, :func:`assur.forces`, ...) call this;
+    The entry points (:func:`assur.kinematics <assur.analysis.kinematics>`,
+    :func:`assur.forces <assur.analysis.forces>`, ...) call this;
     everything downstream receives the plan itself.
 
     Raises

@@ -46,7 +46,8 @@ def explain(
     Parameters
     ----------
     mechanism : Mechanism
-        The mechanism, as :func:`assur.load` or :mod:`assur.catalog` give it.
+        The mechanism, as :func:`assur.load <assur.io.load>` or
+        :mod:`assur.catalog` give it.
     angle : float or sequence of float
         Driver position, deg (m for a prismatic driver); one value per driver.
     answers : mapping of str to float, optional
