@@ -47,7 +47,8 @@ class Summary:
 
     ``add(table)`` takes each slice (a forces table); ``result()`` returns the values
     by name and ``units`` gives each name's unit. The names and their definitions are
-    those of :meth:`assur.Table.summary`. With ``variants`` > 1 a table holds that
+    those of :meth:`assur.Table.summary <assur.analysis.Table.summary>`. With
+    ``variants`` > 1 a table holds that
     many variants of one mechanism one after the other, each over the same number of
     positions: ``results()`` then gives every value per variant.
     """
@@ -237,7 +238,7 @@ class Summary:
             units["efficiency"] = ""
 
     def result(self) -> dict[str, float]:
-        """Return the summary's values by name (see :meth:`assur.Table.summary`).
+        """Return the summary's values by name (as ``Table.summary()`` names them).
 
         Raises
         ------
@@ -381,7 +382,7 @@ class Summary:
 
 
 def summarize(table: Any) -> dict[str, float]:
-    """Return the summary of one forces table (see :meth:`assur.Table.summary`)."""
+    """Return the summary of one forces table, as ``Table.summary()`` gives it."""
     summary = Summary()
     summary.add(table)
     return summary.result()

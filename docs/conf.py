@@ -118,6 +118,7 @@ API_MODULES = [
     "assur.kinetostatics",
     "assur.analysis",
     "assur.study",
+    "assur.summary",
     "assur.dynamics_reduced",
     "assur.dynamics_steady",
     "assur.dynamics_model",

@@ -164,8 +164,9 @@ def _report_html(text: str) -> str:
 def summary_html(table: Table) -> str:
     """Return the summary section of a forces table (empty for kinematics).
 
-    The few numbers joints and motors are sized on (:meth:`assur.Table.summary`),
-    one row each with its unit.
+    The few numbers joints and motors are sized on
+    (:meth:`assur.Table.summary <assur.analysis.Table.summary>`), one row each with
+    its unit.
     """
     if table.force_state is None or len(table) == 0:
         return ""
