@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from assur._evaluate import CHUNKED, SHORT, evaluate, materialize
 from assur._exports import Columns
@@ -383,7 +384,7 @@ class Table(Columns):
 
         return summarize(self)
 
-    def plot(self, angle: float | None = None, **kwargs: Any) -> Any:
+    def plot(self, angle: ArrayLike | None = None, **kwargs: Any) -> Any:
         """Draw the mechanism at a driver position (see :func:`assur.plotting.draw`).
 
         Parameters

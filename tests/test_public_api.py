@@ -271,6 +271,14 @@ def test_docstrings_describe_every_parameter():
         assert all(units), name
 
 
+def test_a_table_is_drawn_at_the_positions_its_docstring_allows():
+    # Table.plot(angle: float | None) refused the one value per driver its
+    # docstring allows ("float or sequence of float") in a typed script
+    assert "sequence of float" in _documented_parameters(assur.Table.plot)["angle"]
+    annotation = inspect.signature(assur.Table.plot).parameters["angle"].annotation
+    assert "ArrayLike" in str(annotation)
+
+
 def test_the_package_says_it_is_typed():
     # without the PEP 561 marker a user's mypy takes every name of the installed
     # package for Any ("missing library stubs or py.typed marker"); hatchling's
