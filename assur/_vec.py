@@ -13,6 +13,7 @@ from collections.abc import Iterable, Iterator
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike as ArrayLike  # the public signatures' inputs
 from numpy.typing import NDArray
 
 Array = NDArray[np.float64]

@@ -12,14 +12,13 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike
 
 from assur._evaluate import CHUNKED, SHORT, evaluate, materialize
 from assur._exports import Columns
 from assur._kinematics import KinematicState
 from assur._loads import compile_loads
 from assur._text import describe, suggest
-from assur._vec import Array, freeze
+from assur._vec import Array, ArrayLike, freeze
 from assur.columns import Column, families, schema
 from assur.errors import UnknownNameError, UsageError
 from assur.kinetostatics import ForceState
