@@ -3,11 +3,11 @@
 The variants' plan comes stacked (compiled at once by :mod:`assur._variants`, or one
 plan per variant stacked by :mod:`assur._stack`) and their positions are solved at
 once by the same kernels as :func:`assur.forces <assur.analysis.forces>`; the force
-table of the batch is then
-reduced to one summary per variant (:class:`assur.summary.Summary`). A variant that
-meets any trouble (a group that does not close or comes near a dead centre, values
-that are not finite, a change point near its path) is left to be analysed on its own,
-so that it fails or warns exactly as a separate call does.
+table of the batch is then reduced to one summary per variant
+(:class:`assur.summary.Summary`). A variant that meets any trouble (a group that does
+not close or comes near a dead centre, values that are not finite, a change point
+near its path) is left to be analysed on its own, so that it fails or warns exactly
+as a separate call does.
 """
 
 from __future__ import annotations

@@ -17,10 +17,9 @@ def undefined(values: dict[str, float]) -> dict[str, str]:
 
     Only the efficiency can be undefined (see :func:`efficiency`). In a study's row
     (:func:`assur.sweep <assur.study.sweep>`) a value is NaN also where the variant
-    was not analysed (its
-    ``error`` says why) or has no such value: no friction in its joints (the losses,
-    the power without friction, the efficiency), or no such joint. Values that are
-    not numbers (the text of a study's row) are passed over.
+    was not analysed (its ``error`` says why) or has no such value: no friction in
+    its joints (the losses, the power without friction, the efficiency), or no such
+    joint. Values that are not numbers (the text of a study's row) are passed over.
     """
     out = {}
     for name, value in values.items():

@@ -56,12 +56,10 @@ def render_report(
         masses and one crank, its steady state (``id="dynamics"``, see
         :func:`assur.dynamics <assur.dynamics_model.dynamics>`); with forces, the
         note of the first position (``id="note"``,
-        :func:`assur.explain <assur.explain.explain>`), the
-        links' inertia loads there
+        :func:`assur.explain <assur.explain.explain>`), the links' inertia loads there
         (``id="inertia"``) and each Assur group's free-body diagram as inline SVG
         (``id="free-bodies"``, :func:`assur.plotting.draw_free_body`); the data as
-        JSON in
-        ``<script type="application/json" id="assur-data">``.
+        JSON in ``<script type="application/json" id="assur-data">``.
 
     Raises
     ------
