@@ -283,17 +283,20 @@ def check_table_suffix(option: str, target: Any, kind: str) -> None:
 
 
 def folder_there(path: Any) -> None:
-    """Refuse, before the work, a file whose folder is missing.
+    """Refuse, before the work, a file whose folder is missing, or that is a folder.
 
     Raises
     ------
     OutputError
         As the write would, after the analysis: "cannot write the file (No such
-        file or directory)".
+        file or directory)", or "(it is a folder)".
     """
-    from assur._targets import missing_folder
+    from assur._targets import a_folder, missing_folder
     from assur.errors import OutputError
 
+    if Path(path).is_dir():
+        # assur dynamics wrote its tables after the model and the start-up
+        raise OutputError(a_folder(path))
     fault = missing_folder(path)
     if fault is not None:
         msg = f"{path_text(path)}: cannot write the file ({fault})"

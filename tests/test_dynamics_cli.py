@@ -800,3 +800,18 @@ def test_an_angle_past_a_turn_is_said_on_the_dial_too(capsys):
         capsys, "dynamics", EXAMPLES / "scotch_yoke.toml", "--delta", "0.05"
     )
     assert figures(out)["smallest speed"].endswith("at 360 deg (that is, 0 deg)")
+
+
+@pytest.mark.parametrize("option", ["--csv", "--startup-csv", "--parquet"])
+def test_a_table_named_as_a_folder_is_refused_before_the_model(
+    capsys, monkeypatch, tmp_path: Path, option: str
+):
+    # the model, then the start-up, were computed before the folder was found
+    def unread(*_args):
+        msg = "the mechanism was read"
+        raise AssertionError(msg)
+
+    monkeypatch.setattr("assur.dynamics_cli.load_mechanism", unread)
+    line = one_error(capsys, "dynamics", WHITWORTH, "--delta", "0.05", option, tmp_path)
+    fault = "cannot write the file (it is a folder); expected a file"
+    assert line == f"assur: error: {tmp_path}: {fault}"
