@@ -23,6 +23,7 @@ __all__ = [
     "folder",
     "given",
     "input_file",
+    "joints",
     "number",
     "whole_number",
 ]
@@ -104,6 +105,24 @@ def whole_number(text: str) -> int:
     except ValueError:
         msg = f"expected a whole number, got {describe(text)}"
         raise argparse.ArgumentTypeError(msg) from None
+
+
+def joints(text: str) -> str | list[str]:
+    """Return the joint of ``--driver``, or a list of several (an argparse type).
+
+    Names are separated by commas, with spaces around them as a reader writes
+    them; an empty piece (a trailing comma) is passed over.
+
+    Raises
+    ------
+    argparse.ArgumentTypeError
+        For text that names no joint ("", ","): it was taken for no driver.
+    """
+    names = [name.strip() for name in text.split(",") if name.strip()]
+    if not names:
+        msg = f"no joint named in {describe(text)}; expected a joint name"
+        raise argparse.ArgumentTypeError(msg)
+    return names if len(names) != 1 else names[0]
 
 
 def input_file(text: str) -> Path:

@@ -45,6 +45,7 @@ from assur._cli_types import (
     file_name,
     given,
     input_file,
+    joints,
 )
 from assur._output import path_text, write_stdout
 from assur._stdin import input_text
@@ -82,6 +83,7 @@ def _parser() -> tuple[_Parser, list[str]]:
     )
     p.add_argument(
         "--driver",
+        type=joints,
         metavar="JOINT",
         help="analyse with this joint as input (several degrees of freedom: one "
         "joint each, separated by commas)",
@@ -319,11 +321,7 @@ def _cmd_structure(args: argparse.Namespace) -> int:
 
     mech = load_mechanism(args.file)
     try:
-        chosen = args.driver
-        if chosen is not None:  # "A, E" as a reader writes it; no name of a comma
-            names = [name.strip() for name in chosen.split(",") if name.strip()]
-            chosen = names if len(names) != 1 else names[0]
-        s = structure(mech, chosen)
+        s = structure(mech, args.driver)  # "A, E" read by _cli_types.joints
     except DriverChoiceError as err:
         # the option, not the file: named as the command line spells it
         raise UsageError(err.spelled("--driver", "--driver")) from err

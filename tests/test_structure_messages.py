@@ -231,6 +231,17 @@ def test_the_driver_option_takes_a_list_with_spaces(capsys) -> None:
         assert "driven through pair O2" in capsys.readouterr().out
 
 
+@pytest.mark.parametrize("given", ["", " ", ","])
+def test_a_driver_option_naming_no_joint_says_so(capsys, given: str) -> None:
+    # it was taken for no driver at all: "the mechanism has ... 0 drivers"
+    path = str(EXAMPLES / "four_bar.toml")
+    assert main(["structure", "--driver", given, path]) == 2
+    assert capsys.readouterr().err == (
+        f"assur: error: structure: argument --driver: no joint named in {given!r}; "
+        "expected a joint name (see 'assur structure --help')\n"
+    )
+
+
 def test_an_unknown_driver_lists_the_joints_with_the_frame(capsys) -> None:
     path = EXAMPLES / "four_bar.toml"
     assert main(["structure", "--driver", "Zq9", str(path)]) == 2
