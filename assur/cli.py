@@ -146,6 +146,8 @@ def _parser() -> tuple[_Parser, list[str]]:
 
     COMMANDS.update(dynamics_cli.register(sub))
     _add_picture_commands(sub)
+    for told in sub._choices_actions:  # else COMMAND --help lists options alone
+        sub.choices[told.dest].description = told.help
     for p in sub.choices.values():
         # after the command too; SUPPRESS keeps an earlier --quiet
         p.add_argument(

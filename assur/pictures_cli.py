@@ -95,7 +95,9 @@ def register(sub: Any) -> dict[str, Callable[[argparse.Namespace], int]]:
         "--scale",
         type=number,
         metavar="NPERCM",
-        help="force scale, newtons per cm on the axes (with --forces or --group)",
+        help="force scale, newtons per cm on the axes (with --forces or --group; "
+        "default: a round one, the largest force about a quarter of the "
+        "mechanism's size)",
     )
     p.add_argument(
         "--group",

@@ -358,6 +358,23 @@ def test_the_options_shared_by_commands_are_told_alike():
     # not N, the unit of force
     assert _options("plot")["--scale"].metavar == "NPERCM"
     assert "newtons per cm" in _options("plot")["--scale"].help
+    # the default scale, and the ranges of several drivers, went unsaid
+    assert "default: a round one" in _options("plot")["--scale"].help
+    assert "several drivers: one range each" in _options("forces")["--angles"].help
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_help_says_what_the_command_does(capsys, command):
+    # "assur dynamics --help" listed the options alone: what the command does was
+    # said only by "assur --help"
+    from assur.cli import _parser
+
+    parser, _ = _parser()
+    sub = next(a for a in parser._actions if a.dest == "command")
+    told = next(a.help for a in sub._choices_actions if a.dest == command)
+    assert main([command, "--help"]) == 0
+    out = capsys.readouterr().out
+    assert f"\n\n{told}\n\n" in out
 
 
 # --- structure ---------------------------------------------------------------------
