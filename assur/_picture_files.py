@@ -88,10 +88,9 @@ def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
         )
         raise UsageError(msg)
     if suffix not in allowed:
-        msg = (
-            f"-o {path_text(path)}: unknown file type {describe(suffix or '(none)')}; "
-            f"expected {wanted}"
-        )
+        # "-o film" (or "-o .gif", a hidden name) said "unknown file type '(none)'"
+        what = f"unknown file type {describe(suffix)}" if suffix else "no suffix"
+        msg = f"-o {path_text(path)}: {what}; expected {wanted}"
         raise UsageError(msg)
     check_not_input("-o", path, args.file)
     folder_there(path)

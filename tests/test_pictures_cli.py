@@ -241,6 +241,25 @@ def test_a_picture_into_a_folder_is_refused_as_such(
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize(
+    ("command", "name", "wanted"),
+    [("plot", "picture", ".png or .svg or .pdf"), ("animate", ".gif", ".gif")],
+)
+def test_a_picture_named_without_a_suffix_is_said_so(
+    command: str,
+    name: str,
+    wanted: str,
+    tmp_path: Path,
+    capsys: pytest.CaptureFixture[str],
+) -> None:
+    # "unknown file type '(none)'", as if "(none)" were the suffix
+    target = tmp_path / name
+    status, _, err = _run(capsys, command, SLIDER, "-o", str(target))
+    assert status == 2
+    _error_line(err, f"-o {target}: no suffix; expected {wanted}")
+    assert list(tmp_path.iterdir()) == []
+
+
 @pytest.mark.parametrize("command", ["diagrams", "plans"])
 def test_a_set_of_pictures_to_standard_output_is_refused(
     command: str,
