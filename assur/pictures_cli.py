@@ -206,6 +206,8 @@ def _cmd_plot(args: argparse.Namespace) -> int:
         if not 1 <= args.group <= count:
             expected = (
                 f"expected 1 to {count}"
+                if count > 1
+                else "expected --group 1"  # not "1 to 1"
                 if count
                 else "expected no --group: only its input link moves"
             )

@@ -644,6 +644,12 @@ def test_plot_draws_one_group_s_free_body(tmp_path: Path, capsys) -> None:
     assert out.stat().st_size > 10_000
     assert main(["plot", str(six), "--group", "3", "-o", str(out)]) == 2
     assert "expected 1 to 2" in capsys.readouterr().err
+    # one group: "expected 1 to 1" it said
+    slider = EXAMPLES / "slider_crank_exercise.toml"
+    assert main(["plot", str(slider), "--group", "0", "-o", str(out)]) == 2
+    assert capsys.readouterr().err.endswith(
+        ": --group 0: the mechanism has 1 Assur group; expected --group 1\n"
+    )
 
 
 @pytest.mark.parametrize("angle", ["x", [10.0, 20.0], float("nan")])
