@@ -75,10 +75,15 @@ def free_bodies_html(table: Table) -> str:
     figures = []
     for index, group in enumerate(table.plan.groups):
         links = ", ".join(x.replace("~block", " (block)") for x in group.links)
+        caption = f"Group {index + 1}: {escape(group.kind)} ({escape(links)})"
+        # the picture's words are drawn as outlines: a screen reader finds no text
+        # in it, so the picture is one image named by its caption
+        svg = _diagram(table, index).replace(
+            "<svg", f'<svg role="img" aria-label="Free-body diagram of {caption}"', 1
+        )
         figures.append(
-            f'<figure id="free-body-{index + 1}"><figcaption>Group {index + 1}: '
-            f"{escape(group.kind)} ({escape(links)})</figcaption>\n"
-            f"{_diagram(table, index)}\n</figure>"
+            f'<figure id="free-body-{index + 1}"><figcaption>{caption}</figcaption>\n'
+            f"{svg}\n</figure>"
         )
     return wide_card(
         "free-bodies",
