@@ -536,7 +536,7 @@ def test_slider_moves_the_drawing(browser: Any, tmp_path: Path) -> None:
     assert sorted(j.get_attribute("data-joint") for j in joints) == ["A", "B", "C"]
     assert len(svg.find_elements("css selector", "g[data-block]")) == 1
     assert len(svg.find_elements("css selector", "line[data-force]")) == 4
-    assert len(browser.find_elements("css selector", "#charts figure svg")) == 3
+    assert len(browser.find_elements("css selector", "#charts figure > svg")) == 3
     a0, b0 = _joint(browser, "A"), _joint(browser, "B")
     readout = browser.find_element("id", "readout").text
     assert readout.startswith("driver angle 45°")

@@ -1,17 +1,49 @@
 """The report for readers who do not see its colours: screen readers, grey paper.
 
-Every picture of the page is named for a screen reader.
+Every picture of the page is named for a screen reader, and the series of one
+diagram differ by more than their hue (the page's script is run under node on the
+fake DOM of :mod:`tests.test_html`).
 """
 
 from __future__ import annotations
 
+import json
 import re
+import subprocess
 from pathlib import Path
 
+import pytest
+
 import assur
-from assur.html import render_report
+from assur.html import render_report, write_report
+
+from .test_html import FAKE_DOM, _executable
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
+
+CHART_LINES = r"""
+const charts = [];
+function walk(n, out) {
+  if (n.tag === "path" || n.tag === "line") out.push(n);
+  n.children.forEach((c) => walk(c, out));
+}
+for (const figure of byId.charts.children) {
+  const [caption, svg, legend] = figure.children;
+  const lines = [];
+  walk(svg, lines);
+  const keys = legend.children.map((span) => {
+    const found = [];
+    walk(span, found);
+    return found.map((n) => [n.attrs.stroke, n.attrs["stroke-dasharray"]]);
+  });
+  charts.push({title: caption.textContent,
+    series: lines.filter((n) => n.tag === "path")
+      .map((n) => [n.attrs.stroke, n.attrs["stroke-dasharray"]]),
+    keys: keys});
+}
+console.log(JSON.stringify(charts));
+"""
+"""Each diagram's series and legend keys as [colour, dash pattern] pairs."""
 
 
 def test_every_picture_of_the_page_is_named() -> None:
@@ -29,3 +61,28 @@ def test_every_picture_of_the_page_is_named() -> None:
         assert label is not None
     named = re.findall(r'<svg[^>]*aria-label="Free-body diagram of ([^"]+)"', body)
     assert named == ["Group 1: RRR (3, 4)", "Group 2: RRR (5, 6)"]
+
+
+def test_a_diagram_s_series_differ_by_more_than_their_hue(tmp_path: Path) -> None:
+    # the joint reactions (7 series) and the angular velocities (5) were told by
+    # hue alone, six of which print as one grey: each series now has a pattern
+    # of its own among its first four, and its legend key shows it
+    node = _executable("node", "nodejs")
+    if node is None:
+        pytest.skip("node not found")
+    path = tmp_path / "six_bar.html"
+    write_report(assur.load(EXAMPLES / "six_bar_lecture.toml"), path)
+    script = FAKE_DOM.split("const heads = [];")[0] + CHART_LINES
+    out = subprocess.run(
+        [node, "-e", script, str(path)], capture_output=True, text=True, check=True
+    )
+    charts = {c["title"]: c for c in json.loads(out.stdout)}
+    reactions = charts["Joint reactions |F|"]["series"]
+    assert len(reactions) == 7
+    patterns = [dash for _, dash in reactions]
+    assert len(set(patterns[:4])) == 4
+    for chart in charts.values():
+        series = [tuple(s) for s in chart["series"]]
+        assert len(set(series)) == len(series)
+        # the key of each series is drawn as its line is
+        assert [tuple(k[0]) for k in chart["keys"]] == series

@@ -11,6 +11,10 @@
   const n = data.angle.length;
   const SERIES = ["#2563eb", "#dc2626", "#059669", "#d97706", "#7c3aed", "#db2777",
     "#0891b2", "#65a30d", "#4b5563", "#9333ea", "#ea580c", "#0d9488", "#be123c"];
+  // a series' line pattern, so that series differ on grey paper and for readers who
+  // tell the hues apart poorly (the first six hues are nearly one grey, and blue and
+  // violet one hue under deuteranopia): four patterns, coprime with the 13 hues
+  const DASHES = ["none", "8 3", "2 3", "9 3 2 3"];
 
   function el(name, attrs, parent) {
     const node = document.createElementNS(NS, name);
@@ -295,7 +299,8 @@
     const xs = data.angle;
     const series = spec.series.map((item, j) => Object.assign({
       values: data.columns[item.key],
-      colour: item.dashed ? "#111827" : SERIES[j % SERIES.length]}, item));
+      colour: item.dashed ? "#111827" : SERIES[j % SERIES.length],
+      pattern: item.dashed ? "5 4" : DASHES[j % DASHES.length]}, item));
     let [lo, hi] = extent(series.map((item) => item.values));
     if (!(hi - lo > 1e-12 * Math.max(1, Math.abs(hi)))) {
       const half = Math.abs(hi) * 0.1 || 1;
@@ -345,15 +350,14 @@
         pen = "L";
       });
       el("path", {d: d, fill: "none", stroke: item.colour, "stroke-width": item.dashed
-        ? 1.6 : 2, "stroke-dasharray": item.dashed ? "5 4" : "none",
-        "stroke-linejoin": "round"}, s);
+        ? 1.6 : 2, "stroke-dasharray": item.pattern, "stroke-linejoin": "round"}, s);
       dots.push(el("circle", {r: 3.5, fill: item.colour, stroke: "#fff",
         "stroke-width": 1.2}, s));
+      // the key shows the line as drawn, its colour and its pattern
       const key = document.createElement("span");
-      const swatch = document.createElement("i");
-      swatch.style.borderColor = item.colour;
-      if (item.dashed) swatch.className = "dashed";
-      key.appendChild(swatch);
+      const swatch = el("svg", {viewBox: "0 0 22 8", "aria-hidden": "true"}, key);
+      el("line", {x1: 0, y1: 4, x2: 22, y2: 4, stroke: item.colour, "stroke-width":
+        item.dashed ? 1.6 : 2, "stroke-dasharray": item.pattern}, swatch);
       key.appendChild(document.createTextNode(item.name));
       legend.appendChild(key);
     }
