@@ -33,6 +33,14 @@ PATH_COLORS = (
     "#7f7f7f",
 )
 """Colours of the paths of points (cycled)."""
+PATH_MARKERS = ("", "s", "^", "D")
+"""Marks along the paths of points (cycled with the colours): the first four colours
+are close to one grey, and red and green, blue and purple look alike to a
+deuteranope, so neighbouring paths differ in their marks too. Marks, not dashes: a
+rocking point goes back over its own path, and the dashes of the way back fill
+the gaps of the way out."""
+PATH_MARK_SPACING = 0.09
+"""Distance between two marks along a path, relative to the axes' diagonal."""
 FAINT = 0.22
 """Opacity of the links drawn only for orientation."""
 ARROW_LENGTH = 0.28

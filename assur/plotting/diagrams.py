@@ -22,7 +22,13 @@ from assur.plotting._axes import (
     labelled_legend,
 )
 from assur.plotting._context import _Context, _context, _row, _unit, whole
-from assur.plotting._style import PATH_COLORS, literal, titled
+from assur.plotting._style import (
+    PATH_COLORS,
+    PATH_MARK_SPACING,
+    PATH_MARKERS,
+    literal,
+    titled,
+)
 from assur.plotting.mechanism import _draw_mechanism
 
 if TYPE_CHECKING:
@@ -238,6 +244,9 @@ def plot_paths(
             line[:, 0],
             line[:, 1],
             color=color,
+            marker=PATH_MARKERS[k % len(PATH_MARKERS)],
+            markersize=4.5,
+            markevery=PATH_MARK_SPACING,
             lw=2.4 if coupler else 1.4,
             zorder=5,
             label=literal(f"{name} (coupler curve)" if coupler else name),
