@@ -1,7 +1,8 @@
 """The report for readers who do not see its colours: screen readers, grey paper.
 
-Every picture of the page is named for a screen reader, and the series of one
-diagram differ by more than their hue (the page's script is run under node on the
+Every picture of the page is named for a screen reader, the series of one
+diagram differ by more than their hue, and the row of the position shown is
+marked by more than a tint (the page's script is run under node on the
 fake DOM of :mod:`tests.test_html`).
 """
 
@@ -11,13 +12,21 @@ import json
 import re
 import subprocess
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 import assur
 from assur.html import render_report, write_report
 
-from .test_html import FAKE_DOM, _executable
+from .test_html import (
+    FAKE_DOM,
+    _executable,
+    _move_slider,
+    _open,
+    browser,  # noqa: F401 (the headless Chromium fixture)
+)
+from .test_html_print import _rule, _style
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 
@@ -86,3 +95,28 @@ def test_a_diagram_s_series_differ_by_more_than_their_hue(tmp_path: Path) -> Non
         assert len(set(series)) == len(series)
         # the key of each series is drawn as its line is
         assert [tuple(k[0]) for k in chart["keys"]] == series
+
+
+def test_the_row_shown_is_marked_by_more_than_its_tint() -> None:
+    # a light blue (1.2:1 against white) was all that marked it: gone on grey
+    # paper, and nothing at all for a screen reader
+    page = render_report(assur.load(EXAMPLES / "four_bar.toml"), [0.0, 90.0])
+    css = _style(page)
+    assert "font-weight: 600" in _rule(css, "table.values tr.shown td")
+    assert "box-shadow" in _rule(css, "table.values tr.shown td:first-child")
+
+
+@pytest.mark.browser
+def test_the_row_shown_is_current_for_a_screen_reader(
+    browser: Any,  # noqa: F811
+    tmp_path: Path,
+) -> None:
+    path = tmp_path / "four_bar.html"
+    write_report(assur.load(EXAMPLES / "four_bar.toml"), path)
+    _open(browser, path)
+    for row in ("0", "90"):
+        _move_slider(browser, int(row))
+        marked = browser.find_elements(
+            "css selector", '#values tr[aria-current="true"]'
+        )
+        assert [m.get_attribute("data-row") for m in marked] == [row]

@@ -425,9 +425,16 @@
       }
     }
     readout.textContent = text;
-    if (current) current.classList.remove("shown");
+    // the row shown is marked for a screen reader too, not only by its tint
+    if (current) {
+      current.classList.remove("shown");
+      current.removeAttribute("aria-current");
+    }
     current = rows[i] || null;
-    if (current) current.classList.add("shown");
+    if (current) {
+      current.classList.add("shown");
+      current.setAttribute("aria-current", "true");
+    }
   }
   slider.addEventListener("input", () => update(Number(slider.value)));
 
