@@ -149,3 +149,24 @@ def test_the_readme_s_error_is_the_one_printed(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     assert main(["forces", "m.toml"]) == 2
     assert capsys.readouterr().err.strip() == quoted.group(1)
+
+
+def _plain(markdown: str) -> str:
+    """A line of the note's Markdown as the page writes it in plain text."""
+    text = re.sub(r"\\mathrm\{([^}]*)\}", r"\1", markdown.replace("$", ""))
+    text = text.replace("\\cdot", "·").replace("\\ ", " ").replace("^2", "²")
+    return " ".join(re.sub(r"_\{([^}]*)\}", r"_\1", text).split())
+
+
+def test_the_explain_page_quotes_the_note_s_verdict_on_the_given_answers(capsys):
+    # the page quoted "...= 1282.566 N; the acceleration agrees, the difference",
+    # where the note prints "... = 1282.566 N. The acceleration agrees; the difference"
+    page = (ROOT / "docs" / "explain.rst").read_text("utf-8")
+    quoted = re.search(r"says: \*([Tt]he given .*?)\*", page, re.S)
+    assert quoted
+    answers = ROOT / "docs" / "files" / "slider_crank_exercise_answers.toml"
+    argv = ["explain", str(EXERCISE), "--angle", "45", "--answers", str(answers)]
+    assert main(argv) == 0
+    note = capsys.readouterr().out
+    said = [_plain(line) for line in note.splitlines() if line.startswith("The given ")]
+    assert said == [" ".join(quoted.group(1).split())]
