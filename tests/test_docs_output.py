@@ -24,6 +24,7 @@ from assur.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
 PAGES = [p for p in sorted((ROOT / "docs").glob("*.rst")) if p.name != "errors.rst"]
+README = (ROOT / "README.md").read_text("utf-8")
 PICTURES = {"plot", "plans", "diagrams", "animate", "report"}
 EXERCISE = ROOT / "examples" / "slider_crank_exercise.toml"
 RODS = 'links = ["crank", "rod"]'
@@ -170,3 +171,42 @@ def test_the_explain_page_quotes_the_note_s_verdict_on_the_given_answers(capsys)
     note = capsys.readouterr().out
     said = [_plain(line) for line in note.splitlines() if line.startswith("The given ")]
     assert said == [" ".join(quoted.group(1).split())]
+
+
+def test_the_readme_s_quick_start_states_the_printed_torque(capsys):
+    # "balancing torque 84.625 N m at 45 degrees": the first command's row at 45
+    readme = (ROOT / "README.md").read_text("utf-8")
+    stated = re.search(r"balancing torque ([-\d.]+) N m at ([\d.]+) degrees", readme)
+    command = re.search(r"assur (forces examples/\S+ --angles \S+)\n", readme)
+    assert stated
+    assert command
+    argv = [_argument(word) for word in command.group(1).split()]
+    assert main(argv) == 0
+    rows = [line.split() for line in capsys.readouterr().out.splitlines()]
+    column = rows[0].index("driver.torque")
+    row = next(r for r in rows[2:] if float(r[0]) == float(stated.group(2)))
+    assert row[column] == stated.group(1)
+
+
+def test_the_readme_s_code_comments_state_the_values_computed():
+    # a line ``expression   # 0.075, -0.0225 N m`` states the expression's values
+    import numpy as np
+
+    stated = re.compile(r"^(\S.*?)\s+# (-?[\d.]+(?:, -?[\d.]+)*) \S.*$")
+    checked = 0
+    for block in re.findall(r"^```python\n(.*?)^```", README, re.M | re.S):
+        lines = block.splitlines()
+        for number, line in enumerate(lines):
+            found = stated.match(line)
+            if not found:
+                continue
+            scope: dict = {}
+            exec("\n".join(lines[:number]), scope)  # the README's own code
+            values = np.atleast_1d(eval(found.group(1), scope))
+            shown = found.group(2).split(", ")
+            assert len(values) == len(shown), line
+            for value, text in zip(values, shown, strict=True):
+                places = len(text.partition(".")[2])
+                assert round(float(value), places) == float(text), line
+            checked += 1
+    assert checked
