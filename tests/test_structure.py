@@ -1178,35 +1178,3 @@ def test_the_getting_started_page_shows_the_structure_command_s_own_output(capsy
     assert [line.strip() for line in shown[:-1]] == [
         line.strip() for line in printed.splitlines()
     ]
-
-
-@pytest.mark.parametrize(
-    "command",
-    [
-        "assur structure examples/tenbar.toml",
-        "assur structure examples/six_bar_lecture.toml",
-        "assur structure examples/six_bar_lecture.toml --driver G",
-    ],
-)
-def test_the_concepts_page_shows_the_structure_command_s_own_lines(capsys, command):
-    # the page showed a ten-bar's "II(6, 7) hangs on 2, ground, not on II(4, 5)
-    # before it", words the report had long stopped printing
-    from assur.cli import main
-
-    page = (DOCS / "concepts.rst").read_text(encoding="utf-8")
-    start = page.index(f"   $ {command}\n") + len(command) + 6
-    shown = []
-    for line in page[start:].splitlines():
-        if line.startswith("   $") or (line and not line.startswith("   ")):
-            break  # the next command, or the block's end
-        if line.strip() not in ("", "..."):  # "..." stands for lines left out
-            shown.append(line.strip())
-    args = command.split()[1:]
-    args[1] = str(EXAMPLES.parent / args[1])
-    assert main(args) == 0
-    printed = [line.strip() for line in capsys.readouterr().out.splitlines()]
-    # every line shown is printed, in the order shown
-    found = iter(printed)
-    missing = [line for line in shown if line not in found]
-    assert shown
-    assert not missing
