@@ -6,6 +6,7 @@ rendered by the browser itself (MathML Core).
 
 from __future__ import annotations
 
+from html import escape
 from typing import TYPE_CHECKING
 
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
@@ -31,12 +32,20 @@ td, th { border: 1px solid #d1d5db; padding: 0.2rem 0.5rem; text-align: left; }
 """
 
 
+def math(tex: str, display: bool = False) -> str:
+    """Return ``tex`` as MathML with its TeX as the element's alternative text.
+
+    A screen reader that does not read MathML reads the TeX, and so does one who
+    copies an equation.
+    """
+    alt = escape(" ".join(tex.split()), quote=True)
+    return mathml(tex, display).replace(">", f' alttext="{alt}">', 1)
+
+
 def inline(text: str) -> str:
     """Return text with its inline mathematics as MathML, the rest escaped."""
-    from html import escape
-
     return "".join(
-        mathml(part) if is_math else escape(part) for is_math, part in segments(text)
+        math(part) if is_math else escape(part) for is_math, part in segments(text)
     )
 
 
@@ -48,7 +57,7 @@ def _block(block: Block, deeper: int = 0) -> str:
     if isinstance(block, Para):
         return f"<p>{inline(block.text)}</p>"
     if isinstance(block, Display):
-        lines = "\n".join(mathml(line, display=True) for line in block.lines)
+        lines = "\n".join(math(line, display=True) for line in block.lines)
         return f'<div class="note-eq">\n{lines}\n</div>'
     if isinstance(block, Grid):
         head = "".join(f"<th>{inline(c)}</th>" for c in block.head)
