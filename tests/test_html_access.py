@@ -120,3 +120,31 @@ def test_the_row_shown_is_current_for_a_screen_reader(
             "css selector", '#values tr[aria-current="true"]'
         )
         assert [m.get_attribute("data-row") for m in marked] == [row]
+
+
+def test_the_colour_column_of_the_groups_has_a_heading() -> None:
+    # its heading was an empty cell: a screen reader named the column by nothing
+    page = render_report(assur.load(EXAMPLES / "four_bar.toml"), [0.0, 90.0])
+    table = page.split('<table class="groups"')[1].split("</thead>")[0]
+    first = re.findall(r"<th>(.*?)</th>", table)[0]
+    assert re.sub(r"<[^>]+>", "", first) == "Colour in the drawing"
+    assert "position: absolute" in _rule(_style(page), ".unseen")
+
+
+@pytest.mark.browser
+def test_the_position_is_said_by_the_slider_and_not_announced_at_each_frame(
+    browser: Any,  # noqa: F811
+    tmp_path: Path,
+) -> None:
+    # the readout, an <output> and so a live region, was announced at each of
+    # Play's 25 frames a second; the slider said only its row number
+    path = tmp_path / "four_bar.html"
+    write_report(assur.load(EXAMPLES / "four_bar.toml"), path)
+    _open(browser, path)
+    readout = browser.find_element("id", "readout")
+    assert readout.get_attribute("aria-live") == "off"
+    slider = browser.find_element("id", "angle")
+    first = slider.get_attribute("aria-valuetext")
+    assert first == readout.text
+    _move_slider(browser, 90)
+    assert slider.get_attribute("aria-valuetext") == readout.text != first

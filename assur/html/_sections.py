@@ -27,7 +27,7 @@ round-off and show as 0."""
 LONG_TABLE = 60
 """Tables with more rows than this show every 10th row."""
 GROUP_HEADINGS = (
-    "",
+    '<span class="unseen">Colour in the drawing</span>',
     "Step",
     "Class",
     "Order",
@@ -36,7 +36,8 @@ GROUP_HEADINGS = (
     "Internal pairs",
     "External pairs",
 )
-"""Column headings of the table of groups; the first column holds the colour."""
+"""Column headings of the table of groups (HTML); the first column holds the colour,
+its heading read by a screen reader alone."""
 
 
 def wide_card(ident: str, title: str, body: str) -> str:

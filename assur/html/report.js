@@ -425,6 +425,9 @@
       }
     }
     readout.textContent = text;
+    // a screen reader hears the position where the slider is, once per move: the
+    // readout is an output, a live region, which Play changed 25 times a second
+    slider.setAttribute("aria-valuetext", text);
     // the row shown is marked for a screen reader too, not only by its tint
     if (current) {
       current.classList.remove("shown");
