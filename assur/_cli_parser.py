@@ -48,15 +48,23 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, " ".join(line.split()) + "\n")
 
     def _closest(self, option: str, command: str) -> str:
-        """Return a hint for an unknown ``option``: the command's nearest one."""
-        if not option.startswith("--"):
-            return ""
+        """Return a hint for an unknown ``option``: the command's nearest one.
+
+        ``-o`` (the pictures' output) given to a table's command names the options
+        a table is written with.
+        """
         parser: argparse.ArgumentParser = self
         for action in self._actions:
             if isinstance(action, argparse._SubParsersAction) and command:
                 parser = action.choices.get(command, self)
         known = [o for o in parser._option_string_actions if o.startswith("--")]
-        return suggest(option.partition("=")[0], known, listing=False)
+        name = option.partition("=")[0]
+        if name in ("-o", "--output") and "--csv" in known:
+            tables = [f"{o} PATH" for o in ("--csv", "--parquet") if o in known]
+            return f"; a table is written to a file with {' or '.join(tables)}"
+        if not option.startswith("--"):
+            return ""
+        return suggest(name, known, listing=False)
 
     command = ""
     """The command being parsed, once known (see :func:`_main`)."""

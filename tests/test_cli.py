@@ -252,6 +252,12 @@ def test_driver_option_off_the_frame(capsys):
             "plot: unrecognized arguments: --fo; did you mean '--forces'? (see "
             "'assur plot --help')",
         ),
+        # a picture's -o given to a table's command: it named nothing to use
+        (
+            ["kinematics", "x.toml", "-o", "t.csv"],
+            "kinematics: unrecognized arguments: -o t.csv; a table is written to a "
+            "file with --csv PATH or --parquet PATH (see 'assur kinematics --help')",
+        ),
         (
             ["forces", "x.toml", "--csvv=t.csv"],
             "forces: unrecognized arguments: --csvv=t.csv; did you mean '--csv'? (see "
