@@ -11,7 +11,7 @@ import argparse
 import sys
 from typing import Any, NoReturn
 
-from assur._text import suggest
+from assur._text import spoken, suggest
 
 __all__ = ["_Parser"]
 
@@ -44,8 +44,20 @@ class _Parser(argparse.ArgumentParser):
         where, prog = (f"{command}: ", f"assur {command}") if command else ("", "assur")
         if message.startswith("unrecognized arguments: "):
             message += self._closest(message.split()[2], command)
+        if message.endswith("required: COMMAND"):  # "assur" alone: which there are
+            message = f"expected a command: {spoken(self._commands(), 'or')}"
         line = f"assur: error: {where}{message} (see '{prog} --help')"
         self.exit(2, " ".join(line.split()) + "\n")
+
+    def _commands(self) -> list[str]:
+        """Return the names of the commands, in alphabetical order."""
+        found = [
+            name
+            for action in self._actions
+            if isinstance(action, argparse._SubParsersAction)
+            for name in action.choices
+        ]
+        return sorted(found)
 
     def _closest(self, option: str, command: str) -> str:
         """Return a hint for an unknown ``option``: the command's nearest one.

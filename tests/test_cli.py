@@ -222,6 +222,12 @@ def test_driver_option_off_the_frame(capsys):
             "structure: the following arguments are required: file (see 'assur "
             "structure --help')",
         ),
+        # "assur" alone said "required: COMMAND" and named none
+        (
+            ["-q"],
+            "expected a command: animate, diagrams, dynamics, explain, forces, "
+            "kinematics, plans, plot, report or structure (see 'assur --help')",
+        ),
         (
             ["-q", "kinematics", "x.toml", "--nope"],
             "kinematics: unrecognized arguments: --nope (see 'assur kinematics "
