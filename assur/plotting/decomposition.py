@@ -52,13 +52,16 @@ from assur.plotting._style import (
 from assur.plotting.mechanism import _draw_mechanism
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
     from assur.analysis import Table
     from assur.plan import Plan
 
 __all__ = ["draw_decomposition", "draw_free_body"]
 
 
-def draw_decomposition(table: Table, angle: Any = None) -> Any:
+def draw_decomposition(table: Table, angle: Any = None) -> Figure:
     """Draw the decomposition into Assur groups, one panel per step.
 
     The driving links come first, then each Assur group in order of attachment,
@@ -159,10 +162,10 @@ def draw_free_body(
     table: Table,
     group_index: int,
     angle: Any = None,
-    ax: Any = None,
+    ax: Axes | None = None,
     scale: float | None = None,
     labels: bool = True,
-) -> Any:
+) -> Axes:
     """Draw the free-body diagram of one Assur group at one driver position.
 
     The group is cut free from the links it hangs on; the arrows are its inertia
@@ -239,9 +242,9 @@ def draw_free_body(
             (_scale_text(arrows, scale), ""),
         ],
     )
-    for handle, words in zip(
-        ax.get_legend().legend_handles, ax.get_legend().get_texts(), strict=True
-    ):
+    legend = ax.get_legend()
+    assert legend is not None  # drawn by _legend just above
+    for handle, words in zip(legend.legend_handles, legend.get_texts(), strict=True):
         if words.get_text() == INTERNAL_LEGEND:
             handle.set_linestyle(INTERNAL_DASH)  # the entry shows its dash
     if own:

@@ -32,6 +32,8 @@ from assur.plotting._style import (
 from assur.plotting.mechanism import _draw_mechanism
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
     from assur.analysis import Table
     from assur.plan import Plan
 
@@ -48,8 +50,8 @@ def plot_motion(
     table: Table,
     names: Sequence[str] | str | None = None,
     quantity: str = "omega",
-    ax: Any = None,
-) -> Any:
+    ax: Axes | None = None,
+) -> Axes:
     """Plot one quantity of links or points against the driver position.
 
     Parameters
@@ -205,8 +207,11 @@ def _moving_points(table: Table, extra_first: bool = True) -> list[str]:
 
 
 def plot_paths(
-    table: Table, points: Sequence[str] | None = None, angle: Any = None, ax: Any = None
-) -> Any:
+    table: Table,
+    points: Sequence[str] | None = None,
+    angle: Any = None,
+    ax: Axes | None = None,
+) -> Axes:
     """Plot the paths of points over the sweep, over the mechanism drawn faintly.
 
     Parameters

@@ -20,6 +20,9 @@ from assur.plotting._numbers import number, quantity
 from assur.plotting._style import BALANCING_COLOR, PATH_COLORS, titled
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
     from assur.dynamics_model import Dynamics
     from assur.dynamics_startup import Startup
 
@@ -75,7 +78,7 @@ def _label(result: Dynamics, name: str, text: str) -> str:
     return f"{text} [{pretty_unit(result.column(name).unit)}]"
 
 
-def plot_reduced_inertia(result: Dynamics, ax: Any = None) -> Any:
+def plot_reduced_inertia(result: Dynamics, ax: Axes | None = None) -> Axes:
     """Plot the reduced inertia ``J(phi)`` (flywheel included) against the crank angle.
 
     Parameters
@@ -104,7 +107,7 @@ def plot_reduced_inertia(result: Dynamics, ax: Any = None) -> Any:
     return ax
 
 
-def plot_reduced_torque(result: Dynamics, ax: Any = None) -> Any:
+def plot_reduced_torque(result: Dynamics, ax: Axes | None = None) -> Axes:
     """Plot the reduced torque of the loads and the constant motor torque.
 
     Parameters are those of :func:`plot_reduced_inertia`.
@@ -153,7 +156,7 @@ def _say_nothing(ax: Any, text: str) -> None:
             color="#555555")  # fmt: skip
 
 
-def plot_speed(result: Dynamics, ax: Any = None) -> Any:
+def plot_speed(result: Dynamics, ax: Axes | None = None) -> Axes:
     """Plot the crank speed of the steady state, its mean and its extremes.
 
     Parameters are those of :func:`plot_reduced_inertia`.
@@ -183,7 +186,7 @@ def plot_speed(result: Dynamics, ax: Any = None) -> Any:
     return ax
 
 
-def plot_energy_mass(result: Dynamics, ax: Any = None) -> Any:
+def plot_energy_mass(result: Dynamics, ax: Axes | None = None) -> Axes:
     """Draw the energy-mass (Wittenbauer) diagram and its two tangents.
 
     The work done since the reference pose, ``reduced.work``, against the
@@ -232,7 +235,7 @@ def plot_energy_mass(result: Dynamics, ax: Any = None) -> Any:
     return ax
 
 
-def plot_dynamics(result: Dynamics) -> Any:
+def plot_dynamics(result: Dynamics) -> Figure:
     """Draw the four pictures of the steady state on one figure.
 
     ``J(phi)``, the torques, the speed and the energy-mass diagram.
@@ -267,7 +270,7 @@ def plot_dynamics(result: Dynamics) -> Any:
     return fig
 
 
-def plot_startup(run: Startup, ax: Any = None) -> Any:
+def plot_startup(run: Startup, ax: Axes | None = None) -> Axes:
     """Plot the crank speed against time at start-up, and the time to settle.
 
     Parameters

@@ -20,6 +20,9 @@ from assur.plotting._numbers import quantity
 from assur.plotting._style import BALANCING_COLOR, literal, titled
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
     from assur.analysis import Table
 
 __all__ = ["plot_hodographs", "plot_shaking", "plot_torque"]
@@ -28,7 +31,7 @@ BALANCING_COLORS = (BALANCING_COLOR, "#e6550d", "#31a354")
 """Colours of the balancing loads, one per driver (cycled)."""
 
 
-def plot_torque(table: Table, ax: Any = None) -> Any:
+def plot_torque(table: Table, ax: Axes | None = None) -> Axes:
     """Plot the balancing torque (or force) and its virtual-power check.
 
     Parameters
@@ -130,7 +133,7 @@ def _locus(ax: Any, table: Table, fx: np.ndarray, fy: np.ndarray, color: str) ->
     ax.grid(True, lw=0.4, alpha=0.5)
 
 
-def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Any:
+def plot_hodographs(table: Table, joints: Sequence[str] | None = None) -> Figure:
     """Plot the hodograph (polar diagram) of every joint reaction: Fy against Fx.
 
     Each panel traces the tip of the reaction vector (by the joint's first link on
@@ -201,7 +204,7 @@ def _joints(pairs: dict[str, Any], joints: Sequence[str] | None) -> list[str]:
     return names
 
 
-def plot_shaking(table: Table) -> Any:
+def plot_shaking(table: Table) -> Figure:
     """Plot the shaking force (its hodograph and components) and shaking moment.
 
     The shaking force and moment are the resultant of every load the moving links

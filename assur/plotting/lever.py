@@ -43,6 +43,8 @@ from assur.plotting.plans import (
 )
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
     from assur.groups._motion import Motion
     from assur.table import Table
 
@@ -119,8 +121,8 @@ def _shares(
 
 
 def zhukovsky_lever(
-    table: Table, angle: Any = None, ax: Any = None, driver: int = 0
-) -> Any:
+    table: Table, angle: Any = None, ax: Axes | None = None, driver: int = 0
+) -> Axes:
     """Draw Zhukovsky's lever: the velocity plan turned by 90 degrees, the loads on it.
 
     Every force acts at its point's image; a couple M on a link acts as the pair of

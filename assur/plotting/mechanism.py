@@ -48,6 +48,8 @@ from assur.plotting._style import (
 )
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
     from assur.analysis import Table
 
 __all__ = ["draw"]
@@ -59,12 +61,12 @@ Joints = dict[str, tuple[np.ndarray, float]]
 def draw(
     table: Table,
     angle: Any = None,
-    ax: Any = None,
+    ax: Axes | None = None,
     forces: bool = False,
     scale: float | None = None,
     labels: bool = True,
     groups: bool = True,
-) -> Any:
+) -> Axes:
     """Draw the mechanism at one driver position of ``table``.
 
     Binary links are bars, links with three or more points translucent polygons,

@@ -37,6 +37,8 @@ from assur.plotting._style import (
 )
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+
     from assur.table import Table
 
 __all__ = [
@@ -242,7 +244,7 @@ def _title(pos: Position, what: str) -> str:
     return f"{titled(pos.mechanism)}: {what} at {angle}{unit}"
 
 
-def velocity_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
+def velocity_plan(table: Table, angle: Any = None, ax: Axes | None = None) -> Axes:
     """Draw the velocity plan at one driver position.
 
     Parameters
@@ -261,7 +263,7 @@ def velocity_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
     return _plan(table, angle, ax, 1)
 
 
-def acceleration_plan(table: Table, angle: Any = None, ax: Any = None) -> Any:
+def acceleration_plan(table: Table, angle: Any = None, ax: Axes | None = None) -> Axes:
     """Draw the acceleration plan: images, and each dyad's parts as arrows.
 
     Parameters and Returns are those of :func:`velocity_plan`.
@@ -304,7 +306,7 @@ def _name_images(ax: Any) -> None:
     place_names(ax, names, np.array(arrows) if arrows else None, dots)
 
 
-def instant_centres(table: Table, angle: Any = None, ax: Any = None) -> Any:
+def instant_centres(table: Table, angle: Any = None, ax: Axes | None = None) -> Axes:
     """Draw the mechanism with its instant centres: absolute and relative (Kennedy).
 
     The absolute centre of a link is where its velocity is zero; the relative centre

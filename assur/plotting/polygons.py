@@ -32,6 +32,8 @@ from assur.plotting._style import (
 from assur.plotting.plans import _pos, _scale, _title
 
 if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
     from assur.table import Table
 
 __all__ = ["force_polygons"]
@@ -40,7 +42,7 @@ TINY_SIDE = 1e-9
 """A side shorter than this times the polygon's longest is round-off: not drawn."""
 
 
-def force_polygons(table: Table, angle: Any = None) -> Any:
+def force_polygons(table: Table, angle: Any = None) -> Figure:
     """Draw the force polygon of every Assur group (reverse order), closed.
 
     Each polygon runs through the known loads on the group's first link and its
