@@ -13,8 +13,9 @@
     "#0891b2", "#65a30d", "#4b5563", "#9333ea", "#ea580c", "#0d9488", "#be123c"];
   // a series' line pattern, so that series differ on grey paper and for readers who
   // tell the hues apart poorly (the first six hues are nearly one grey, and blue and
-  // violet one hue under deuteranopia): four patterns, coprime with the 13 hues
-  const DASHES = ["none", "8 3", "2 3", "9 3 2 3"];
+  // violet one hue under deuteranopia): five patterns, coprime with the 13 hues,
+  // so that a diagram of up to five series (most of them) repeats none
+  const DASHES = ["none", "8 3", "2 3", "9 3 2 3", "9 3 2 3 2 3"];
 
   function el(name, attrs, parent) {
     const node = document.createElementNS(NS, name);
