@@ -106,14 +106,19 @@ def test_the_row_shown_is_marked_by_more_than_its_tint() -> None:
     assert "box-shadow" in _rule(css, "table.values tr.shown td:first-child")
 
 
+def _four_bar_page(driver: Any, folder: Path) -> None:
+    """Open the four-bar's report, of its default sweep, in ``driver``."""
+    path = folder / "four_bar.html"
+    write_report(assur.load(EXAMPLES / "four_bar.toml"), path)
+    _open(driver, path)
+
+
 @pytest.mark.browser
 def test_the_row_shown_is_current_for_a_screen_reader(
     browser: Any,  # noqa: F811
     tmp_path: Path,
 ) -> None:
-    path = tmp_path / "four_bar.html"
-    write_report(assur.load(EXAMPLES / "four_bar.toml"), path)
-    _open(browser, path)
+    _four_bar_page(browser, tmp_path)
     for row in ("0", "90"):
         _move_slider(browser, int(row))
         marked = browser.find_elements(
@@ -138,9 +143,7 @@ def test_the_position_is_said_by_the_slider_and_not_announced_at_each_frame(
 ) -> None:
     # the readout, an <output> and so a live region, was announced at each of
     # Play's 25 frames a second; the slider said only its row number
-    path = tmp_path / "four_bar.html"
-    write_report(assur.load(EXAMPLES / "four_bar.toml"), path)
-    _open(browser, path)
+    _four_bar_page(browser, tmp_path)
     readout = browser.find_element("id", "readout")
     assert readout.get_attribute("aria-live") == "off"
     slider = browser.find_element("id", "angle")
