@@ -24,7 +24,7 @@ from assur._checks import (
 )
 from assur._points import _check_point
 from assur._tables import disagreement
-from assur._text import describe, suggest
+from assur._text import counted, describe, suggest
 
 if TYPE_CHECKING:
     from assur.model import Load, Mechanism
@@ -93,7 +93,7 @@ def _validate_table(entry: str, table: LoadTable, ncomp: int, mech: Mechanism) -
     values = table.values
     if not isinstance(values, tuple) or len(values) != ncomp:
         count = len(values) if isinstance(values, tuple) else describe(values)
-        _fail(entry, f"expected {ncomp} value sequence(s), got {count}")
+        _fail(entry, f"expected {counted(ncomp, 'value sequence')}, got {count}")
     for seq in values:
         if (
             not isinstance(seq, tuple)

@@ -24,7 +24,7 @@ def _speed(omega0: Any) -> float:
     """Return the starting speed as a float (rad/s); a UsageError if not a number."""
     number = real(omega0)
     if number is None:
-        msg = f"omega0: expected a crank speed in rad/s, got {omega0!r}"
+        msg = f"omega0: expected a crank speed in rad/s, got {describe(omega0)}"
         raise UsageError(msg)
     return number
 
@@ -38,7 +38,7 @@ def _turns(turns: Any) -> int:
     """Return the most turns to integrate, checked: a whole number, 1 to 100 000."""
     number = integer(turns)
     if number is None or number < 1:
-        msg = f"turns: expected a whole number of turns from 1, got {turns!r}"
+        msg = f"turns: expected a whole number of turns from 1, got {describe(turns)}"
         raise UsageError(msg)
     if number > MOST_TURNS:
         # 1e11 turns were taken: decades of work, memory that runs out first

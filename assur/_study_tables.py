@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from assur._study_inputs import Factory, _built, _variant
-from assur._text import suggest
+from assur._text import describe, suggest
 from assur._vec import Array, integer
 from assur._warn import held
 from assur.analysis import forces
@@ -191,13 +191,16 @@ def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:
         return list(range(count))
     if isinstance(variants, str | bytes) or np.ndim(variants) == 0:
         # a lone number or a name: not walked digit by digit or letter by letter
-        msg = f"variants: expected a sequence of variant numbers, got {variants!r}"
+        msg = (
+            f"variants: expected a sequence of variant numbers, got "
+            f"{describe(variants)}"
+        )
         raise UsageError(msg)
     out = []
     for given in variants:
         i = integer(given)
         if i is None:
-            msg = f"variants: expected variant numbers, got {given!r}"
+            msg = f"variants: expected variant numbers, got {describe(given)}"
             raise UsageError(msg)
         if not 0 <= i < count:
             msg = f"variants: no variant {i}; expected numbers from 0 to {count - 1}"

@@ -10,6 +10,7 @@ from __future__ import annotations
 import datetime
 import difflib
 import math
+import numbers
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
@@ -254,6 +255,9 @@ def describe(value: object, limit: int = ECHO_LIMIT) -> str:
     '[0, 1, 2, 3, ... (10000 items)]'
     >>> describe(datetime.date(2020, 1, 1))
     'the date 2020-01-01'
+    >>> import numpy as np
+    >>> describe(np.float64(-1.5)), describe(np.int64(3)), describe(np.float32("nan"))
+    ('-1.5', '3', 'nan')
     """
     return shortened(_describe(value, limit), limit)
 
@@ -265,6 +269,10 @@ def _describe(value: object, limit: int) -> str:
     if isinstance(value, str):
         shown = value if len(value) <= limit else value[: limit - 5] + "..."
         return repr(shown)
+    if isinstance(value, numbers.Integral) and not isinstance(value, int):
+        value = int(value)  # a numpy integer reads as the number it holds
+    elif isinstance(value, numbers.Real) and not isinstance(value, int):
+        value = float(value)  # np.float64(2.5) reads 2.5, not its repr
     if isinstance(value, int):
         digits = len(str(abs(value))) if abs(value) < 10**50 else None
         if digits is None:

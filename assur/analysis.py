@@ -29,6 +29,7 @@ from assur._passes import (
     _up_front,
 )
 from assur._progress import Callback, progress
+from assur._text import describe
 from assur._troubles import NOTICES, _change_points, _report
 from assur._vec import Array, is_flag
 from assur._warn import held
@@ -226,7 +227,7 @@ def _sweep(
     plan = plan_of(mech)
     if not is_flag(skip):
         # a speed given third, say, would else switch skipping on without a word
-        msg = f"skip_unassembled: expected True or False, got {skip!r}"
+        msg = f"skip_unassembled: expected True or False, got {describe(skip)}"
         raise UsageError(msg)
     given = positions(plan, angles)
     drive = to_si(plan, given)

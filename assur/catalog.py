@@ -9,6 +9,7 @@ import math
 from typing import Any
 
 from assur._checks import LARGEST
+from assur._text import describe
 from assur._vec import real
 from assur.errors import ModelError
 from assur.model import Driver, Joint, Link, Mechanism, Point, Toward
@@ -177,12 +178,13 @@ def _number(name: str, value: Any) -> float:
     """Return ``value`` as a finite float; a ModelError naming ``name`` if not."""
     number = real(value)
     if number is None or not math.isfinite(number):
-        msg = f"{name}: expected a finite number, got {value!r}"
+        msg = f"{name}: expected a finite number, got {describe(value)}"
         raise ModelError(msg)
     if abs(number) > LARGEST:
         # the model refuses such numbers too; the geometry's squares overflowed first
         msg = (
-            f"{name}: expected a number of magnitude at most {LARGEST:g}, got {value!r}"
+            f"{name}: expected a number of magnitude at most {LARGEST:g}, got "
+            f"{describe(value)}"
         )
         raise ModelError(msg)
     return number
@@ -192,6 +194,6 @@ def _length(name: str, value: Any) -> float:
     """Return ``value`` as a length above 0 (m); a ModelError naming ``name`` if not."""
     number = _number(name, value)
     if not number > 0.0:
-        msg = f"{name}: expected a length above 0 (m), got {value!r}"
+        msg = f"{name}: expected a length above 0 (m), got {describe(value)}"
         raise ModelError(msg)
     return number

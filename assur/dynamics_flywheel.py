@@ -18,6 +18,7 @@ import numpy as np
 
 from assur._dynamic_checks import check_dynamic
 from assur._loads import compile_loads
+from assur._text import describe
 from assur._vec import real
 from assur.dynamics_reduced import Reduced, reduce
 from assur.dynamics_steady import steady_state
@@ -225,7 +226,9 @@ def _prepared(mechanism: Mechanism, delta: Any) -> tuple[Reduced, float]:
     """Check ``delta`` and the mechanism; return its reduced model and its speed."""
     value = real(delta)
     if value is None:
-        msg = f"delta: expected a coefficient of speed fluctuation, got {delta!r}"
+        msg = (
+            f"delta: expected a coefficient of speed fluctuation, got {describe(delta)}"
+        )
         raise UsageError(msg)
     if not delta_in_range(value):
         msg = (

@@ -20,7 +20,7 @@ from assur._change_limits import across_change_points
 from assur._checks import LARGEST
 from assur._drive import positions
 from assur._dynamic_checks import check_dynamic
-from assur._text import suggest
+from assur._text import describe, suggest
 from assur._vec import Array, real
 from assur.analysis import default_positions
 from assur.columns import Column
@@ -332,7 +332,7 @@ def checked_flywheel(value: Any) -> float:
     """Return the flywheel inertia, checked: a finite number >= 0 (kg m^2)."""
     number = real(value)
     if number is None:
-        msg = f"flywheel: expected an inertia in kg m^2, got {value!r}"
+        msg = f"flywheel: expected an inertia in kg m^2, got {describe(value)}"
         raise UsageError(msg)
     if not flywheel_in_range(number):
         msg = (

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._style import link_colours
-from assur._text import roman, row_position
+from assur._text import counted, describe, roman, row_position
 from assur._vec import real
 from assur.columns import pretty_unit, schema
 from assur.errors import UsageError
@@ -140,20 +140,20 @@ def _row(table: Table, angle: Any) -> int:
     try:
         want = np.atleast_1d(np.asarray(angle, dtype=float))
     except (TypeError, ValueError) as err:
-        msg = f"angle: expected a driver position (deg, or m), got {angle!r}"
+        msg = f"angle: expected a driver position (deg, or m), got {describe(angle)}"
         raise UsageError(msg) from err
     drive = table.given
     if want.size == drive.shape[1]:
         want = want.ravel()  # one row of positions, (1, drivers), say
     if want.ndim != 1 or want.shape[0] not in (1, drive.shape[1]):
         msg = (
-            f"angle: {want.size} values for {drive.shape[1]} driver(s); expected "
-            "one position per driver"
+            f"angle: {counted(want.size, 'value')} for "
+            f"{counted(drive.shape[1], 'driver')}; expected one position per driver"
         )
         raise UsageError(msg)
     if not np.all(np.isfinite(want)):
         # the nearest row to NaN was row 0, drawn without a word
-        msg = f"angle: expected a finite driver position, got {angle!r}"
+        msg = f"angle: expected a finite driver position, got {describe(angle)}"
         raise UsageError(msg)
     gap = np.zeros(drive.shape[0])
     for i in range(want.shape[0]):
@@ -178,10 +178,10 @@ def checked_scale(scale: Any) -> float | None:
         return None
     value = real(scale)
     if value is None:
-        msg = f"scale: expected a force scale in N per cm, got {scale!r}"
+        msg = f"scale: expected a force scale in N per cm, got {describe(scale)}"
         raise UsageError(msg)
     if not (math.isfinite(value) and value > 0.0):
-        msg = f"scale: {scale!r}; expected a force scale in N per cm, above 0"
+        msg = f"scale: {describe(scale)}; expected a force scale in N per cm, above 0"
         raise UsageError(msg)
     return value
 
@@ -213,7 +213,7 @@ def fitted_scale(scale: Any, arrows: Iterable[Any], size: float) -> float | None
             f"draws the largest force ({big:.3g} N) {drawn}, on a drawing {size:.3g} "
             f"m across; expected a force scale of at least {least:.3g} N per cm"
         )
-        msg = f"scale: {scale!r} {reason}"
+        msg = f"scale: {describe(scale)} {reason}"
         raise ScaleError(msg, reason)
     return value
 

@@ -15,6 +15,7 @@ import numpy as np
 from assur._output import output_path
 from assur._progress import Callback
 from assur._progress import progress as shown
+from assur._text import describe
 from assur._vec import real
 from assur.errors import UsageError
 from assur.plotting._axes import _handles
@@ -172,7 +173,7 @@ def _above_zero(name: str, value: Any) -> float:
     """Return ``value`` as a finite number above 0; a UsageError naming it if not."""
     number = real(value)
     if number is None or not (math.isfinite(number) and number > 0.0):
-        msg = f"{name}: expected a number above 0, got {value!r}"
+        msg = f"{name}: expected a number above 0, got {describe(value)}"
         raise UsageError(msg)
     return number
 

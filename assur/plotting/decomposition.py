@@ -14,6 +14,7 @@ import numpy as np
 
 from assur._structure import Group, Structure
 from assur._style import REACTION_COLOUR
+from assur._text import counted, describe
 from assur._vec import integer
 from assur.errors import UsageError
 from assur.model import GROUND
@@ -263,12 +264,12 @@ def _group(ctx: _Context, group_index: int) -> int:
     """Check ``group_index`` (negative counts from the end); return it from 0."""
     count = len(ctx.plan.groups)
     if integer(group_index) is None:
-        msg = f"group_index: expected a group's number, got {group_index!r}"
+        msg = f"group_index: expected a group's number, got {describe(group_index)}"
         raise UsageError(msg)
     if not -count <= group_index < count:
         msg = (
-            f"group_index: {group_index} is out of range; the mechanism has {count} "
-            f"Assur group(s), expected 0 to {count - 1}"
+            f"group_index: {group_index} is out of range; the mechanism has "
+            f"{counted(count, 'Assur group')}; expected 0 to {count - 1}"
         )
         raise UsageError(msg)
     return group_index % count

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._text import describe
 from assur._vec import integer
 from assur.errors import UsageError
 from assur.explain._friction_text import power_rows
@@ -78,7 +79,7 @@ def _lever_position(table: Table, angle: Any, driver: int, what: str) -> Positio
     count = len(table.plan.drivers)
     index = integer(driver)
     if index is None or not 0 <= index < count:
-        msg = f"{what}: no driver {driver!r}; expected 0 to {count - 1}"
+        msg = f"{what}: no driver {describe(driver)}; expected 0 to {count - 1}"
         raise UsageError(msg)
     return _pos(table, angle)
 
