@@ -14,7 +14,7 @@ from typing import Any, NoReturn
 
 import numpy as np
 
-from assur._text import describe, key_text, listing, suggest
+from assur._text import describe, key_text, listing, spoken, suggest
 from assur.errors import ModelError
 
 GROUND = "ground"
@@ -177,7 +177,7 @@ def _check_new_name(entry: str, name: object) -> None:
         _fail(
             entry,
             f"the name {describe(name)} is taken by the result tables; expected "
-            f"another name (not {', '.join(RESERVED_NAMES)})",
+            f"another name (not {spoken(RESERVED_NAMES, 'or')})",
         )
 
 

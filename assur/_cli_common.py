@@ -19,7 +19,7 @@ import numpy as np
 from assur._cli_types import plain_number
 from assur._output import path_text, standard_output
 from assur._targets import stdout_is
-from assur._text import counted, describe
+from assur._text import counted, describe, spoken
 from assur.errors import UsageError
 
 __all__ = [
@@ -276,7 +276,7 @@ def check_table_suffix(option: str, target: Any, kind: str) -> None:
     if suffix in OTHER_SUFFIXES and suffix not in allowed:
         msg = (
             f"{option} {path_text(target)}: a {suffix} name for {kind}; expected a "
-            f"name ending in {' or '.join(allowed)}"
+            f"name ending in {spoken(allowed, 'or')}"
         )
         raise UsageError(msg)
     folder_there(target)

@@ -23,7 +23,7 @@ from assur._cli_common import (
 )
 from assur._output import output_path, path_text
 from assur._targets import missing_folder
-from assur._text import describe
+from assur._text import describe, spoken
 from assur.errors import OutputError, UsageError
 
 PICTURE_SUFFIXES = (".png", ".svg", ".pdf")
@@ -72,7 +72,7 @@ def _output(args: argparse.Namespace, allowed: tuple[str, ...]) -> Path:
     """Return ``-o``, checked: a known suffix and not the mechanism file."""
     path: Path = args.output
     suffix = path.suffix.lower()
-    wanted = " or ".join(allowed)
+    wanted = spoken(allowed, "or")
     if is_stdout(path):
         # "-" is standard output for tables and notes: here it had no suffix
         what = {".gif": "an animation", ".html": "a report"}.get(allowed[0])

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._text import counted
+from assur._text import counted, describe, spoken
 from assur._vec import Array, integer
 from assur.errors import UsageError
 from assur.model import Mechanism
@@ -71,7 +71,7 @@ def _takes(factory: Factory, parameters: dict[str, Array]) -> None:
         takes = [p.name for p in signature.parameters.values() if p.kind in by_name]
         msg = (
             f"parameters: the factory {name} {err}; expected its parameters "
-            f"({', '.join(takes) or 'none by name'})"
+            f"({spoken(takes) or 'none by name'})"
         )
         raise UsageError(msg) from None
 
@@ -132,7 +132,7 @@ def _parameters(parameters: Any) -> dict[str, Array]:
         if name in RESERVED:
             msg = (
                 f"parameters: {name!r} names a column of the study's results; "
-                f"expected another name (not {', '.join(RESERVED)})"
+                f"expected another name (not {spoken(RESERVED, 'or')})"
             )
             raise UsageError(msg)
         try:
@@ -194,7 +194,7 @@ def _partitions(partitions: Any) -> None:
     refused the same way as on a cluster, not after its variants were run.
     """
     if partitions is not None and (integer(partitions) or 0) < 1:
-        msg = f"partitions: expected a positive number, got {partitions!r}"
+        msg = f"partitions: expected a positive number, got {describe(partitions)}"
         raise UsageError(msg)
 
 
@@ -247,7 +247,9 @@ def _angles(angles: Any) -> Array:
         raise UsageError(msg)
     if not np.all(np.isfinite(arr)):
         bad = float(arr[~np.isfinite(arr)].flat[0])
-        msg = f"angles: expected finite driver positions, got {bad!r} among them"
+        msg = (
+            f"angles: expected finite driver positions, got {describe(bad)} among them"
+        )
         raise UsageError(msg)
     arr.flags.writeable = False
     return arr

@@ -12,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from assur._runs import positions_where
+from assur._text import listing
 from assur._troubles import NOTICES
 from assur._vec import Array, is_array
 from assur._warn import warn
@@ -55,7 +56,7 @@ def _unexplained(
                     named.append(owner)
     if bad.any():
         warn(
-            f"values of {', '.join(named[:6])}{', ...' if len(named) > 6 else ''} are "
+            f"values of {listing(named)} are "
             f"not finite at {positions_where(plan, given, bad)}, where no "
             "group fails: the inputs are out of the range the arithmetic can follow",
             AssurWarning,

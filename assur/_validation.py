@@ -37,7 +37,7 @@ from assur._points import (
     _check_resolvable,
     _resolver,
 )
-from assur._text import describe, key_text
+from assur._text import describe, key_text, listing, noun_for, spoken
 from assur.errors import ModelError
 
 if TYPE_CHECKING:
@@ -274,8 +274,8 @@ def _validate_joints(mech: Mechanism, all_links: list[str]) -> list[str]:
         if not isinstance(joint.kind, str) or joint.kind not in JOINT_KINDS:
             _fail(
                 f"{entry}.kind",
-                f"unknown kind {describe(joint.kind)}; expected one of "
-                + ", ".join(JOINT_KINDS),
+                f"unknown kind {describe(joint.kind)}; expected "
+                + spoken(JOINT_KINDS, "or"),
             )
         links = joint.links
         if not isinstance(links, tuple) or len(links) != 2:
@@ -389,10 +389,11 @@ def _check_cranks(mech: Mechanism, resolve: Any = None) -> None:
             if j.kind != "revolute" or not _coincide(pivot, resolve(j.at))
         ]
         if others and not moving:
-            names = ", ".join(describe(j.name) for j in others[:4])
+            names = listing([describe(j.name) for j in others], 4)
             _fail(
                 f"drivers[{index}].joint",
-                f"the input link {describe(link)} has its joints {names} at the "
+                f"the input link {describe(link)} has its "
+                f"{noun_for(len(others), 'joint')} {names} at the "
                 f"pivot of {describe(joint.name)} (a crank of zero length), so the "
                 "driver moves nothing; expected a joint of the input link away from "
                 "its pivot",

@@ -613,6 +613,7 @@ def test_messages_of_python_built_entries_and_notes_read_plainly():
     table = assur.forces(mech, [0.0, 45.0])
     with pytest.raises(assur.UnknownNameError) as caught:
         assur.plotting.plot_motion(table, ["B"], "speed")
-    listed = str(caught.value).split("expected one of ")[1].strip("'\"").split(", ")
+    said = str(caught.value).split("; expected ")[1].strip("'\"")
+    listed = said.replace(" or ", ", ").split(", ")
     assert sorted(listed) == sorted(set(listed))
     assert {"x", "v", "vx"} <= set(listed)

@@ -311,7 +311,7 @@ def test_a_note_or_a_picture_to_dev_stdout_is_as_to_minus(tmp_path: Path):
     picture = shell(tmp_path, f"plot {FOUR_BAR} -o /dev/stdout | cat")
     assert picture.stderr == (
         f"assur: error: {FOUR_BAR}: -o /dev/stdout: standard output cannot take a "
-        "picture; expected a file name ending in .png or .svg or .pdf\n"
+        "picture; expected a file name ending in .png, .svg or .pdf\n"
     )
     assert os.listdir(tmp_path) == []
 

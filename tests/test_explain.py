@@ -759,7 +759,7 @@ def test_a_motion_that_is_not_finite_is_refused_by_name(tmp_path, capsys) -> Non
     ):
         explain(assur.load(path), 45.0)
     assert str(caught.value) == (
-        "the motion of rod, slider is not finite at driver position 45 deg: the "
+        "the motion of rod and slider is not finite at driver position 45 deg: the "
         "inputs are out of the range the arithmetic can follow; expected a position "
         "(or inputs) where it is"
     )

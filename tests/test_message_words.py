@@ -60,3 +60,13 @@ def test_a_group_index_out_of_range_counts_the_groups_in_words(four_bar_forces):
     )
     with pytest.raises(assur.UsageError, match=r"got 0\.5$"):
         draw_free_body(four_bar_forces, group_index=np.float64(0.5))
+
+
+def test_a_reserved_name_lists_the_others_as_a_choice():
+    source = assur.dumps(catalog.four_bar()).replace("links.rocker]", "links.angle]")
+    with pytest.raises(assur.ModelError) as caught:
+        assur.io.loads(source.replace('"rocker"', '"angle"'))
+    assert str(caught.value).endswith(
+        "is taken by the result tables; expected another name (not angle, driver, "
+        "shaking or residual)"
+    )

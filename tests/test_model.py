@@ -269,7 +269,7 @@ BAD = {
         "load",
         ModelError,
         r"^joints\.A\.kind: unknown kind 'revolut'; "
-        r"expected one of revolute, prismatic, slot$",
+        r"expected revolute, prismatic or slot$",
     ),
     "missing-joint-key": Bad(
         edit("at = [0.052326, 0.052326]\n", ""),

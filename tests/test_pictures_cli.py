@@ -199,13 +199,13 @@ def test_plot_unknown_suffix(
 ) -> None:
     status, _, err = _run(capsys, "plot", TENBAR, "-o", str(tmp_path / "m.bmp"))
     assert status == 2
-    _error_line(err, "unknown file type '.bmp'; expected .png or .svg or .pdf")
+    _error_line(err, "unknown file type '.bmp'; expected .png, .svg or .pdf")
 
 
 @pytest.mark.parametrize(
     ("command", "what", "wanted"),
     [
-        ("plot", "a picture", ".png or .svg or .pdf"),
+        ("plot", "a picture", ".png, .svg or .pdf"),
         ("animate", "an animation", ".gif"),
         ("report", "a report", ".html or .htm"),
     ],

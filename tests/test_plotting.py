@@ -517,7 +517,7 @@ def test_plot_motion_defaults_and_points(tenbar: assur.Table) -> None:
 def test_plot_motion_unknown_quantity(tenbar: assur.Table) -> None:
     with pytest.raises(
         assur.UnknownNameError,
-        match="no quantity 'speed' for '2'; expected one of alpha, angle, jerk, omega",
+        match="no quantity 'speed' for '2'; expected alpha, angle, jerk or omega",
     ):
         plotting.plot_motion(tenbar, ["2"], "speed")
 

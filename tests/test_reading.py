@@ -389,7 +389,7 @@ def zero_crank() -> str:
 def test_a_crank_of_zero_length_is_refused(tmp_path, capsys):
     path = write(tmp_path, "m.toml", zero_crank())
     expected = (
-        "drivers[0].joint: the input link 'crank' has its joints 'A' at the pivot of "
+        "drivers[0].joint: the input link 'crank' has its joint 'A' at the pivot of "
         "'O2' (a crank of zero length), so the driver moves nothing; expected a joint "
         "of the input link away from its pivot"
     )

@@ -176,6 +176,9 @@ def test_tables_give_every_column_of_chosen_variants(slider_study):
         ),
         ({"not a name": [0.2]}, "parameters: expected names that are identifiers"),
         ({"error": [0.2]}, "parameters: 'error' names a column of the study's results"),
+        # the other names as a sentence lists a choice
+        ({"error": [0.2]}, r"\(not error, warning, .*, driver or efficiency\)$"),
+        ({"length": [0.2]}, r"its parameters \(crank, rod, offset, angle and omega\)$"),
         ({"variant": [0.2]}, "parameters: 'variant' names a column"),
         ({"position": [0.2]}, "parameters: 'position' names a column"),
         # a summary value's own name: its column held the efficiency, not the

@@ -16,6 +16,7 @@ import numpy as np
 from assur._kinematics import motions
 from assur._loads import LoadPlan, compile_loads
 from assur._runs import positions_where
+from assur._text import listing
 from assur._vec import Array
 from assur.errors import ModelError
 from assur.groups._motion import Motion, point, rotated
@@ -296,7 +297,7 @@ def _check_finite(table: Table) -> None:
     if bad:
         where = positions_where(plan, table.given, np.ones(1, dtype=bool))
         msg = (
-            f"the motion of {', '.join(bad[:6])}{', ...' if len(bad) > 6 else ''} "
+            f"the motion of {listing(bad)} "
             f"is not finite at {where}: the inputs are out of the range the "
             "arithmetic can follow; expected a position (or inputs) where it is"
         )

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._gaps import broken, gaps
+from assur._text import spoken
 from assur.columns import LINK_PARTS, POINT_PARTS
 from assur.errors import UnknownNameError
 from assur.plotting._axes import (
@@ -178,8 +179,8 @@ def _no_quantity(table: Table, name: str, quantity: str) -> str:
     if not have:
         return f"plot_motion: no link or point {name!r} in the table"
     return (
-        f"plot_motion: no quantity {quantity!r} for {name!r}; expected one of "
-        f"{', '.join(have)}"
+        f"plot_motion: no quantity {quantity!r} for {name!r}; expected "
+        f"{spoken(have, 'or')}"
     )
 
 
