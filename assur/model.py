@@ -18,7 +18,7 @@ from assur._checks import _fail, _tuples
 from assur._load_checks import LoadTable
 from assur._motor import Motor
 from assur._points import PointSpec, Toward, Vec2, point_links, resolve_point
-from assur._text import describe
+from assur._text import describe, suggest
 from assur._validation import _validate
 from assur.errors import UnknownNameError, UsageError
 
@@ -264,7 +264,8 @@ class Mechanism:
         for link in self.links:
             if link.name == name:
                 return link
-        msg = f"unknown link {describe(name)}"
+        known = [link.name for link in self.links]
+        msg = f"unknown link {describe(name)}{suggest(str(name), known)}"
         raise UnknownNameError(msg)
 
     def joint(self, name: str) -> Joint:
@@ -272,7 +273,8 @@ class Mechanism:
         for joint in self.joints:
             if joint.name == name:
                 return joint
-        msg = f"unknown joint {describe(name)}"
+        known = [joint.name for joint in self.joints]
+        msg = f"unknown joint {describe(name)}{suggest(str(name), known)}"
         raise UnknownNameError(msg)
 
 

@@ -544,6 +544,11 @@ def test_lookup_by_name():
         mech.link("piston")
     with pytest.raises(KeyError, match="unknown joint 'D'"):
         mech.joint("D")
+    # a near miss is named, or the names there are, as the file reader does
+    with pytest.raises(KeyError, match=r"unknown link 'rdo'; did you mean 'rod'\?"):
+        mech.link("rdo")
+    with pytest.raises(KeyError, match=r"unknown joint 'zz' \(known: "):
+        mech.joint("zz")
 
 
 def test_mechanism_is_frozen_and_hashable():
