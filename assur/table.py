@@ -178,10 +178,8 @@ class Table(Columns):
             For a level that is not 0, 1, 2 or 3.
         """
         if isinstance(level, bool) or level not in (0, 1, 2, 3):
-            msg = (
-                f"level: expected 0, 1, 2 or 3 (positions to jerks), got "
-                f"{describe(level)}"
-            )
+            got = describe(level)
+            msg = f"level: expected 0, 1, 2 or 3 (positions to jerks), got {got}"
             raise UsageError(msg)
         if self.state.top >= level:
             return self.state

@@ -70,3 +70,12 @@ def test_a_reserved_name_lists_the_others_as_a_choice():
         "is taken by the result tables; expected another name (not angle, driver, "
         "shaking or residual)"
     )
+
+
+def test_a_table_level_echoes_a_numpy_integer_as_a_number():
+    table = assur.kinematics(catalog.four_bar(), [0.0])
+    with pytest.raises(assur.UsageError) as caught:
+        table.motion(np.int64(7))
+    assert str(caught.value) == (
+        "level: expected 0, 1, 2 or 3 (positions to jerks), got 7"
+    )
