@@ -163,9 +163,8 @@ class Table(Columns):
     def motion(self, level: int = 2) -> KinematicState:
         """Return the kinematic state solved up to time derivative ``level`` at least.
 
-        A long sweep solves up to accelerations, its jerks solved group by group when
-        first asked for; a short one (up to 2048 positions asked for, with no
-        ``columns=``) solves them in the call.
+        A long sweep solves up to accelerations, its jerks when first asked for; a
+        short one (up to 2048 positions, with no ``columns=``) solves them in the call.
 
         Parameters
         ----------
