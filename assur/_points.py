@@ -116,8 +116,16 @@ def _check_axis(entry: str, axis: object, points: set[str]) -> None:
         _check_point(f"{entry}[{index}]", spec, points)
 
 
+DEEPEST = 64
+"""Most names a point's specification may lead through before its coordinates."""
+
+
 def resolve_point(
-    mech: Mechanism, spec: PointSpec, entry: str = "point", _depth: int = 0
+    mech: Mechanism,
+    spec: PointSpec,
+    entry: str = "point",
+    _path: tuple[str, ...] = (),
+    _known: dict[str, np.ndarray] | None = None,
 ) -> np.ndarray:
     """Return the reference-pose coordinates (m) of a point specification.
 
@@ -135,19 +143,33 @@ def resolve_point(
     -------
     numpy.ndarray of shape (2,)
     """
-    if _depth > 32:
-        _fail(entry, "points refer to each other in a circle")
+    # each name resolved once: points toward the two before them each would
+    # resolve those twice, and a chain of forty such 10^8 times
+    known = {} if _known is None else _known
+    if isinstance(spec, str) and spec in known:
+        return known[spec]
     if isinstance(spec, str):
-        for joint in mech.joints:
-            if joint.name == spec:
-                return resolve_point(mech, joint.at, entry, _depth + 1)
-        for point in mech.points:
-            if point.name == spec:
-                return resolve_point(mech, point.at, entry, _depth + 1)
-        _fail(entry, f"unknown point {describe(spec)}")
+        if spec in _path:
+            # the names met on the way, from the first of the circle back to it
+            circle = (*_path[_path.index(spec) :], spec)
+            _fail(
+                entry,
+                f"points refer to each other in a circle ({' -> '.join(circle)}); "
+                "expected names that lead to coordinates [x, y]",
+            )
+        if len(_path) > DEEPEST:
+            msg = f"points refer to each other more than {DEEPEST} deep"
+            _fail(entry, f"{msg}; expected a shorter chain of names")
+        named = [j.at for j in mech.joints if j.name == spec] or [
+            p.at for p in mech.points if p.name == spec
+        ]
+        if not named:
+            _fail(entry, f"unknown point {describe(spec)}")
+        known[spec] = resolve_point(mech, named[0], entry, (*_path, spec), known)
+        return known[spec]
     if isinstance(spec, Toward):
-        a = resolve_point(mech, spec.start, entry, _depth + 1)
-        b = resolve_point(mech, spec.toward, entry, _depth + 1)
+        a = resolve_point(mech, spec.start, entry, _path, known)
+        b = resolve_point(mech, spec.toward, entry, _path, known)
         return _toward(spec, a, b, entry)
     return np.asarray(spec, dtype=float)
 

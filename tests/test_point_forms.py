@@ -318,3 +318,45 @@ def test_bad_axis_in_code():
         links = (crank.__class__(crank.name, axis), *mech.links[1:])
         with pytest.raises(ModelError, match=message):
             assur.Mechanism(links, mech.joints, mech.drivers)
+
+
+def _with_points(entries: list[str]) -> str:
+    """Return the four-bar's file with ``entries`` as points of its coupler."""
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    return text + "".join(
+        f'\n[points.{name}]\nlink = "coupler"\nat = {at}\n'
+        for name, at in (e.split(" = ", 1) for e in entries)
+    )
+
+
+def test_points_in_a_circle_are_named_in_its_order():
+    # "points refer to each other in a circle" named neither the points nor what
+    # was expected
+    text = _with_points(['X = "Y"', 'Y = { from = "Z", toward = "B", distance = 0.01 }',
+                         'Z = "X"'])  # fmt: skip
+    with pytest.raises(ModelError) as caught:
+        assur.loads(text)
+    assert str(caught.value) == (
+        "points.X.at: points refer to each other in a circle (Y -> Z -> X -> Y); "
+        "expected names that lead to coordinates [x, y]"
+    )
+
+
+def test_a_long_chain_of_points_is_no_circle_and_is_read_at_once():
+    # each point toward the two before it: read as "in a circle" past 16 of them
+    # (the depth counted both ways of each point), and each name was read again
+    # on every way to it (2^40 reads for 40 points)
+    entries = ["P0 = [0.0, 0.0]", "P1 = [0.01, 0.0]"] + [
+        f'P{i} = {{ from = "P{i - 1}", toward = "P{i - 2}", distance = 0.001 }}'
+        for i in range(2, 41)
+    ]
+    mech = assur.loads(_with_points(entries))
+    at = {p.name: resolve_point(mech, p.at) for p in mech.points}
+    for i in range(2, 41):
+        # 1 mm from the point before toward the one before that
+        step = at[f"P{i - 2}"] - at[f"P{i - 1}"]
+        expected = at[f"P{i - 1}"] + step / np.hypot(*step) * 0.001
+        np.testing.assert_allclose(at[f"P{i}"], expected, atol=1e-15)
+    chain = ["P0 = [0.0, 0.0]"] + [f'P{i} = "P{i - 1}"' for i in range(1, 70)]
+    with pytest.raises(ModelError, match=r"more than 64 deep; expected a shorter"):
+        assur.loads(_with_points(chain))
