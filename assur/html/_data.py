@@ -17,7 +17,7 @@ import numpy as np
 from assur._gaps import gaps
 from assur._structure import Group, Structure
 from assur._style import DRIVER_COLOUR, REACTION_COLOUR, group_colour, link_colours
-from assur._text import roman
+from assur._text import public_name, roman
 from assur._vec import Array, full
 from assur.analysis import Table
 from assur.groups._pairs import PairPlan
@@ -91,8 +91,11 @@ def floats(values: Array) -> list[float | None]:
 
 
 def public(name: str) -> str:
-    """Return a body's name as the reader knows it (a slot's block spelled out)."""
-    return name.replace("~block", " (block)")
+    """Return a link's or pair's name as the reader knows it: "B (block)", "B (pin)".
+
+    :func:`assur._text.public_name`, which the text reports use: one spelling.
+    """
+    return public_name(name)
 
 
 def all_groups(struct: Structure) -> tuple[Group, ...]:

@@ -14,6 +14,7 @@ import warnings
 from html import escape
 
 from assur.analysis import Table
+from assur.html._data import public
 from assur.html._sections import first_position, wide_card
 
 __all__ = ["free_bodies_html", "inline_svg"]
@@ -74,7 +75,7 @@ def free_bodies_html(table: Table) -> str:
         return ""
     figures = []
     for index, group in enumerate(table.plan.groups):
-        links = ", ".join(x.replace("~block", " (block)") for x in group.links)
+        links = ", ".join(public(x) for x in group.links)
         caption = f"Group {index + 1}: {escape(group.kind)} ({escape(links)})"
         # the picture's words are drawn as outlines: a screen reader finds no text
         # in it, so the picture is one image named by its caption
