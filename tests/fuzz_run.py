@@ -405,7 +405,8 @@ def _told(column: Any, table: assur.Table, explained: list[str]) -> bool:
         body, _ = table.plan.point_of(column.owner)
         if _named(table.plan.bodies[body], explained):
             return True
-    return any(", ... are not finite" in m for m in explained)
+    # "values of link rod, ..., joint guide, ... (8 in all) are not finite ..."
+    return any(", ... (" in m and " are not finite" in m for m in explained)
 
 
 def _named(owner: str, explained: list[str]) -> bool:

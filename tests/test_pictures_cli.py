@@ -243,7 +243,7 @@ def test_a_picture_into_a_folder_is_refused_as_such(
 
 @pytest.mark.parametrize(
     ("command", "name", "wanted"),
-    [("plot", "picture", ".png or .svg or .pdf"), ("animate", ".gif", ".gif")],
+    [("plot", "picture", ".png, .svg or .pdf"), ("animate", ".gif", ".gif")],
 )
 def test_a_picture_named_without_a_suffix_is_said_so(
     command: str,
