@@ -28,7 +28,13 @@ math[display="block"] { margin: 0.4rem 0; padding-block: 0.25em; overflow-x: aut
 .note-eq { margin: 0.6rem 0 0.6rem 1rem; }
 table { border-collapse: collapse; margin: 0.6rem 0; }
 td, th { border: 1px solid #d1d5db; padding: 0.2rem 0.5rem; text-align: left; }
-@media print { math[display="block"] { overflow: visible; font-size: 0.9em; } }
+/* a phone: a table wider than the screen scrolls inside the page's width */
+@media screen and (max-width: 560px) {
+  table { display: block; max-width: 100%; overflow-x: auto; } }
+/* on paper a heading stays with what follows it, a table row and an equation whole */
+@media print { math[display="block"] { overflow: visible; font-size: 0.9em; }
+  h1, h2, h3, h4, h5, h6 { break-after: avoid; }
+  tr, math[display="block"] { break-inside: avoid; } }
 """
 
 
@@ -89,6 +95,8 @@ def html_page(note: Note) -> str:
     bare = escape(note.title.replace("\\$", "$"))
     return (
         '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">\n'
+        # a phone lays the page out at its own width, not at a desktop's 980 pixels
+        '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
         f"<title>{bare}</title>\n<style>{STYLE}</style>\n</head>\n"
         f'<body>\n<article class="note">\n<h1>{title}</h1>\n{html_body(note)}\n'
         "</article>\n</body>\n</html>\n"

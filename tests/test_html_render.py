@@ -1,0 +1,88 @@
+"""The note and the report as a teacher hands them out: on a phone and on paper.
+
+A phone lays both pages out at its own width, nothing wider than the screen but
+inside a scrolling box; on paper a heading or a chart's caption is not left at
+the foot of a page, away from what it heads.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import assur
+from assur.explain import explain
+from assur.explain._html import html_page
+from assur.html import render_report, write_report
+
+from .test_html import _open, browser  # noqa: F401 (the headless Chromium fixture)
+from .test_html_print import _print_rules, _rule, _style
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+HEADINGS = ("h1", "h2", "h3", "h4", "h5", "h6")
+
+
+def _note_page(stem: str = "six_bar_lecture") -> str:
+    return html_page(explain(assur.load(EXAMPLES / f"{stem}.toml"), 45.0))
+
+
+def test_the_note_page_is_laid_out_at_a_phone_s_width() -> None:
+    # without it a phone drew the note 980 pixels wide and shrank it to fit
+    head = _note_page().split("</head>")[0]
+    assert '<meta name="viewport" content="width=device-width, initial-scale=1">' in (
+        head
+    )
+
+
+def test_a_heading_stays_with_what_follows_on_paper() -> None:
+    report = render_report(assur.load(EXAMPLES / "four_bar.toml"), [0.0, 90.0])
+    for page in (_note_page(), report):
+        rules = _print_rules(page)
+        for heading in HEADINGS:
+            assert "break-after: avoid" in _rule(rules, heading)
+        assert "break-inside: avoid" in _rule(rules, "tr")
+    # a chart's caption was printed at a page's foot, its chart on the next
+    rules = _print_rules(report)
+    assert "break-after: avoid" in _rule(rules, "figcaption")
+    assert "break-inside: avoid" in _rule(rules, "figure")
+
+
+def test_tables_scroll_only_on_a_screen() -> None:
+    # on paper a scrolling box would clip the table's right-hand columns
+    css = _style(_note_page())
+    narrow = css.split("@media screen and (max-width: 560px) {")[1].split("}")[0]
+    assert "overflow-x: auto" in narrow
+    assert "overflow-x: auto" not in _print_rules(_note_page())
+
+
+def _phone(driver: Any) -> None:
+    driver.execute_cdp_cmd(
+        "Emulation.setDeviceMetricsOverride",
+        {"width": 400, "height": 900, "deviceScaleFactor": 1, "mobile": True},
+    )
+
+
+@pytest.mark.browser
+def test_neither_page_is_wider_than_a_phone(browser: Any, tmp_path: Path) -> None:  # noqa: F811
+    # the note was 980 pixels wide, the report 519 (its readout, the table of
+    # groups and the note's tables): the reader scrolled the whole page sideways
+    note = tmp_path / "note.html"
+    explain(assur.load(EXAMPLES / "six_bar_lecture.toml"), 45.0).write(note)
+    report = tmp_path / "report.html"
+    write_report(assur.load(EXAMPLES / "six_bar_lecture.toml"), report)
+    _phone(browser)
+    try:
+        widths = {}
+        for path in (note, report):
+            if path is note:
+                browser.get(path.as_uri())
+            else:
+                _open(browser, path)
+            widths[path.name] = browser.execute_script(
+                "return document.documentElement.scrollWidth"
+            )
+    finally:
+        browser.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+    assert widths == {"note.html": 400, "report.html": 400}
