@@ -2,7 +2,8 @@
 
 A phone lays both pages out at its own width, nothing wider than the screen but
 inside a scrolling box; on paper a heading or a chart's caption is not left at
-the foot of a page, away from what it heads.
+the foot of a page, away from what it heads; a diagram's unit does not overprint
+its numbers.
 """
 
 from __future__ import annotations
@@ -86,3 +87,29 @@ def test_neither_page_is_wider_than_a_phone(browser: Any, tmp_path: Path) -> Non
     finally:
         browser.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
     assert widths == {"note.html": 400, "report.html": 400}
+
+
+@pytest.mark.browser
+def test_a_diagram_s_unit_clears_its_numbers(browser: Any, tmp_path: Path) -> None:  # noqa: F811
+    # "kg·m²" of the reduced inertia was written over its tick label "0.0015"
+    path = tmp_path / "four_bar.html"
+    write_report(assur.load(EXAMPLES / "four_bar.toml"), path)
+    _open(browser, path)
+    clashes = browser.execute_script(
+        """
+        const out = [];
+        for (const axis of document.querySelectorAll('figure svg g.axis')) {
+          const texts = Array.from(axis.querySelectorAll('text'));
+          const unit = texts.find(t => t.hasAttribute('transform'));
+          const u = unit.getBoundingClientRect();
+          for (const t of texts) {
+            if (t === unit) continue;
+            const r = t.getBoundingClientRect();
+            if (r.left < u.right && u.left < r.right && r.top < u.bottom
+                && u.top < r.bottom) out.push([unit.textContent, t.textContent]);
+          }
+        }
+        return out;
+        """
+    )
+    assert clashes == []

@@ -309,6 +309,14 @@
     }
     const ystep = ticks(lo, hi, 5, false);
     lo = Math.floor(lo / ystep) * ystep; hi = Math.ceil(hi / ystep) * ystep;
+    // the left margin fits the longest tick label (0.0015) beside the unit's, so
+    // that the two do not overlap (about 6.7 px a character at 11 px)
+    let longest = 0;
+    for (let j = 0; lo + j * ystep <= hi + ystep * 1e-6 && j < 60; j++) {
+      const y = lo + j * ystep;
+      longest = Math.max(longest, fmt(Math.abs(y) < ystep * 1e-6 ? 0 : y).length);
+    }
+    m.l = Math.max(m.l, 28 + Math.ceil(6.7 * longest));
     const x0 = xs[0], x1 = xs[xs.length - 1] === x0 ? x0 + 1 : xs[xs.length - 1];
     const xa = Math.min(x0, x1), xb = Math.max(x0, x1);
     const px = (x) => m.l + (x - xa) / (xb - xa) * (CW - m.l - m.r);
