@@ -19,7 +19,7 @@ from assur.explain._html import html_page
 from assur.html import render_report, write_report
 
 from .test_html import _open, browser  # noqa: F401 (the headless Chromium fixture)
-from .test_html_print import _print_rules, _rule, _style
+from .test_html_print import LONG, _print_rules, _rule, _style
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 HEADINGS = ("h1", "h2", "h3", "h4", "h5", "h6")
@@ -113,3 +113,46 @@ def test_a_diagram_s_unit_clears_its_numbers(browser: Any, tmp_path: Path) -> No
         """
     )
     assert clashes == []
+
+
+@pytest.mark.browser
+def test_the_table_of_groups_keeps_its_words_whole(
+    browser: Any,  # noqa: F811
+    tmp_path: Path,
+) -> None:
+    # in the Whitworth's narrow Structure card "input link" read "inpu t link"
+    # and "block, lever" put its comma on a line of its own
+    path = tmp_path / "whitworth.html"
+    write_report(assur.load(EXAMPLES / "whitworth.toml"), path)
+    browser.set_window_size(1280, 900)
+    _open(browser, path)
+    split = browser.execute_script(
+        """
+        const out = [], walk = document.createTreeWalker(
+          document.querySelector('table.groups'), NodeFilter.SHOW_TEXT);
+        for (let node = walk.nextNode(); node; node = walk.nextNode()) {
+          const text = node.textContent;
+          for (const m of text.matchAll(/\\S+/g)) {
+            const range = document.createRange();
+            range.setStart(node, m.index);
+            range.setEnd(node, m.index + m[0].length);
+            const tops = new Set(Array.from(range.getClientRects(),
+                                            r => Math.round(r.top)));
+            if (tops.size > 1) out.push(m[0]);
+          }
+        }
+        return out;
+        """
+    )
+    assert split == []
+    # a name of 67 letters scrolls inside the card rather than widening the page
+    text = (EXAMPLES / "four_bar.toml").read_text(encoding="utf-8")
+    text = text.replace('"coupler"', f'"{LONG}"').replace(
+        "links.coupler", f"links.{LONG}"
+    )
+    path.write_text(render_report(assur.loads(text), [0.0, 90.0]), encoding="utf-8")
+    _open(browser, path)
+    widths = browser.execute_script(
+        "const e = document.documentElement; return [e.scrollWidth, e.clientWidth]"
+    )
+    assert widths[0] == widths[1]
