@@ -156,3 +156,21 @@ def test_the_table_of_groups_keeps_its_words_whole(
         "const e = document.documentElement; return [e.scrollWidth, e.clientWidth]"
     )
     assert widths[0] == widths[1]
+
+
+def test_brackets_keep_their_size_and_bars_hug_what_they_enclose() -> None:
+    from assur.explain._mathml import mathml
+
+    # a ")" under a square was a stretchy operator alone in its <msup>: Chromium
+    # drew it larger and below its line; "|w|" was two infix bars, spaced apart
+    got = mathml(r"(-54.21)^2 = |\omega| \cdot l")
+    assert '<msup><mo stretchy="false">)</mo><mn>2</mn></msup>' in got
+    assert '<mo form="prefix" stretchy="false">|</mo><mi>ω</mi>' in got
+    assert '<mi>ω</mi><mo form="postfix" stretchy="false">|</mo>' in got
+    assert got.count('<mo form="prefix">−</mo>') == 1  # still a sign after "("
+    # |a|^2: the bar under a square is a fence too; \left( still stretches
+    squared = mathml(r"|\vec w|^2 = -\left(a + b\right)")
+    assert '<mo form="prefix" stretchy="false">|</mo><mover' in squared
+    assert '<msup><mo form="postfix" stretchy="false">|</mo>' in squared
+    assert "<mo>(</mo>" in squared
+    assert "<mo>)</mo>" in squared

@@ -35,6 +35,9 @@ TEXT_SPACES = {
 }  # fmt: skip
 """The spaces of :data:`SPACES` as characters (em, thin and four-per-em spaces), for
 inside ``\\text`` and ``\\mathrm``, where they join the words of one ``<mtext>``."""
+FENCES = frozenset("()[]|")
+"""Brackets and bars: set at their own size unless after ``\\left`` or ``\\right``."""
+BAR = '<mo stretchy="false">|</mo>'
 SIGN_AFTER = frozenset("([{=,:;+−⋅×±∓≈≤≥≠∑")
 """Operators after which a minus is a number's sign, not a subtraction: set as a
 prefix, with no space between it and the number (MathML spaces an infix minus on
@@ -71,6 +74,7 @@ def _skip(tokens: list[str], i: int) -> int:
 def _sequence(tokens: list[str], i: int, end: str | None) -> tuple[str, int]:
     """Parse atoms until ``end`` (a closing brace) or the end; return MathML."""
     out: list[str] = []
+    bars = 0
     i = _skip(tokens, i)
     while i < len(tokens) and tokens[i] != end:
         if tokens[i] == "-":
@@ -87,6 +91,11 @@ def _sequence(tokens: list[str], i: int, end: str | None) -> tuple[str, int]:
             i = _skip(tokens, i + 1)
             continue
         atom, i = _atom(tokens, i)
+        if atom.startswith(BAR) or atom[atom.find(">") + 1 :].startswith(BAR):
+            # |x| is a pair of fences, not two infix bars spaced on both sides
+            form = "postfix" if bars % 2 else "prefix"
+            atom = atom.replace(BAR, BAR.replace("<mo", f'<mo form="{form}"'), 1)
+            bars += 1
         out.append(atom)
         i = _skip(tokens, i)
     if end is not None:
@@ -99,9 +108,8 @@ def _sequence(tokens: list[str], i: int, end: str | None) -> tuple[str, int]:
 
 def _operator(atom: str) -> str:
     """Return the operator an atom is (``<mo>=</mo>`` gives ``=``), else ""."""
-    if atom.startswith("<mo>") and atom.endswith("</mo>"):
-        return atom[4:-5]
-    return ""
+    found = re.fullmatch(r"<mo(?: [^>]*)?>([^<]*)</mo>", atom)
+    return found.group(1) if found else ""
 
 
 def _argument(tokens: list[str], i: int) -> tuple[str, int]:
@@ -243,6 +251,10 @@ def _base(tokens: list[str], i: int) -> tuple[str, int]:
         return f"<mi>{t}</mi>", i + 1
     if t.startswith("\\"):
         return _command(t[1:], tokens, i + 1)
+    if t in FENCES:
+        # TeX grows a bracket only after \left or \right: a plain one keeps its
+        # size (a stretched ")" under a square drooped below its line)
+        return f'<mo stretchy="false">{t}</mo>', i + 1
     return f"<mo>{escape(t)}</mo>", i + 1
 
 
@@ -252,6 +264,8 @@ def _command(name: str, tokens: list[str], i: int) -> tuple[str, int]:
         return f"<mi>{GREEK[name]}</mi>", i
     if name in SPACES:
         return f'<mspace width="{SPACES[name]}"/>', i
+    if name in SYMBOLS and SYMBOLS[name] in FENCES:
+        return f'<mo stretchy="false">{SYMBOLS[name]}</mo>', i
     if name in SYMBOLS:
         return f"<mo>{escape(SYMBOLS[name])}</mo>", i
     if name in FUNCTIONS:
@@ -276,6 +290,7 @@ def _command(name: str, tokens: list[str], i: int) -> tuple[str, int]:
         accent = "" if name in ("dot", "ddot") else ' accent="true"'
         return f"<mover{accent}>{arg}<mo>{mark}</mo></mover>", i
     if name in ("left", "right"):
-        return _base(tokens, i)
+        fence, i = _base(tokens, i)
+        return fence.replace(' stretchy="false"', ""), i
     msg = f"the note's MathML knows no \\{name}"
     raise ValueError(msg)
