@@ -174,3 +174,38 @@ def test_brackets_keep_their_size_and_bars_hug_what_they_enclose() -> None:
     assert '<msup><mo form="postfix" stretchy="false">|</mo>' in squared
     assert "<mo>(</mo>" in squared
     assert "<mo>)</mo>" in squared
+
+
+@pytest.mark.browser
+@pytest.mark.parametrize("stem", ["class3", "six_bar_lecture", "five_bar_two_cranks"])
+def test_a_long_equation_fits_a_printed_column(
+    browser: Any,  # noqa: F811
+    tmp_path: Path,
+    stem: str,
+) -> None:
+    # MathML breaks no line: 6 to 19 equations of a note were wider than an A4
+    # column (655 px) and lost their ends on paper, the longest 1237 px
+    mech = assur.load(EXAMPLES / f"{stem}.toml")
+    angle = [40.0, 100.0] if len(mech.drivers) > 1 else 45.0
+    note = tmp_path / "note.html"
+    explain(mech, angle).write(note)
+    size = browser.get_window_size()
+    browser.set_window_size(760, 900)
+    browser.execute_cdp_cmd("Emulation.setEmulatedMedia", {"media": "print"})
+    try:
+        browser.get(note.as_uri())
+        # the page's column, 655 px as on A4 paper, its type as printed
+        browser.execute_script("document.body.style.maxWidth = '655px'")
+        wide = browser.execute_script(
+            "return [...document.querySelectorAll('math[display=\"block\"]')]"
+            ".filter((m) => m.scrollWidth > document.body.clientWidth)"
+            ".map((m) => m.getAttribute('alttext'))"
+        )
+        rows = browser.execute_script(
+            "return document.querySelectorAll('mtable').length"
+        )
+    finally:
+        browser.execute_cdp_cmd("Emulation.setEmulatedMedia", {"media": ""})
+        browser.set_window_size(size["width"], size["height"])
+    assert wide == []
+    assert rows > 0

@@ -10,6 +10,7 @@ from html import escape
 from typing import TYPE_CHECKING
 
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
+from assur.explain._breaks import rows, shown_width
 from assur.explain._mathml import mathml
 
 if TYPE_CHECKING:
@@ -18,6 +19,8 @@ if TYPE_CHECKING:
 
 __all__ = ["html_body", "html_page"]
 
+INDENT = '<mspace width="2em"/>'
+"""Set before each row of a broken equation after the first (its ``=`` leads)."""
 STYLE = """
 body { font: 16px/1.5 system-ui, sans-serif; max-width: 60rem; margin: 2rem auto;
   padding: 0 1rem; color: #1f2937; }
@@ -26,6 +29,7 @@ math { font-family: "STIX Two Math", "Latin Modern Math", "Cambria Math", math; 
 math[display="block"] { margin: 0.4rem 0; padding-block: 0.25em; overflow-x: auto;
   overflow-y: hidden; text-align: left; }
 .note-eq { margin: 0.6rem 0 0.6rem 1rem; }
+.note-eq mtd { text-align: left; padding-inline: 0; }
 table { border-collapse: collapse; margin: 0.6rem 0; }
 td, th { border: 1px solid #d1d5db; padding: 0.2rem 0.5rem; text-align: left; }
 /* a phone: a table wider than the screen scrolls inside the page's width */
@@ -48,6 +52,24 @@ def math(tex: str, display: bool = False) -> str:
     return mathml(tex, display).replace(">", f' alttext="{alt}">', 1)
 
 
+def display(tex: str) -> str:
+    """Return a display equation as block MathML, a long one in rows.
+
+    A chain too wide for a printed column is set one step a row
+    (:mod:`assur.explain._breaks`), the rows after the first indented; the whole
+    equation's TeX stays its alternative text.
+    """
+    parts = rows(tex, lambda piece: shown_width(mathml(piece)))
+    if len(parts) == 1:
+        return math(tex, display=True)
+    cells = "".join(
+        f"<mtr><mtd>{INDENT if k else ''}{mathml(row)[6:-7]}</mtd></mtr>"
+        for k, row in enumerate(parts)
+    )
+    alt = escape(" ".join(tex.split()), quote=True)
+    return f'<math display="block" alttext="{alt}"><mtable>{cells}</mtable></math>'
+
+
 def inline(text: str) -> str:
     """Return text with its inline mathematics as MathML, the rest escaped."""
     return "".join(
@@ -63,7 +85,7 @@ def _block(block: Block, deeper: int = 0) -> str:
     if isinstance(block, Para):
         return f"<p>{inline(block.text)}</p>"
     if isinstance(block, Display):
-        lines = "\n".join(math(line, display=True) for line in block.lines)
+        lines = "\n".join(display(line) for line in block.lines)
         return f'<div class="note-eq">\n{lines}\n</div>'
     if isinstance(block, Grid):
         head = "".join(f"<th>{inline(c)}</th>" for c in block.head)

@@ -1,0 +1,100 @@
+"""Long display equations of the note's HTML set in rows (assur.explain._breaks).
+
+MathML breaks no line, so the note breaks its long chains itself: at ``=`` first,
+at the ``+`` and ``-`` between terms where a step is still too wide. Nothing is
+lost or added, and each row fits :data:`WIDEST` characters when it can.
+"""
+
+from __future__ import annotations
+
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+import assur
+from assur.explain import explain
+from assur.explain._blocks import Display
+from assur.explain._breaks import WIDEST, pieces, rows, shown_width, terms
+from assur.explain._html import display
+from assur.explain._mathml import mathml
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+
+
+def width(tex: str) -> int:
+    return shown_width(mathml(tex))
+
+
+def _lines(stem: str) -> list[str]:
+    mech = assur.load(EXAMPLES / f"{stem}.toml")
+    angle = [40.0, 100.0] if len(mech.drivers) > 1 else 45.0
+    note = explain(mech, angle)
+    return [line for b in note.blocks if isinstance(b, Display) for line in b.lines]
+
+
+def _bare(tex: str) -> str:
+    """``tex`` without its spaces and the quads a break may drop."""
+    return re.sub(r"\\q?quad|\s", "", tex)
+
+
+@pytest.mark.parametrize(
+    "stem",
+    ["class3", "six_bar_lecture", "five_bar_two_cranks", "slider_crank_friction"],
+)
+def test_rows_hold_the_whole_equation_and_fit_where_they_can(stem: str) -> None:
+    broken = 0
+    for tex in _lines(stem):
+        assert "".join(pieces(tex)) == tex
+        assert "".join(terms(tex)) == tex
+        got = rows(tex, width)
+        assert _bare("".join(got)) == _bare(tex)
+        if width(tex) <= WIDEST:
+            assert got == [tex]  # a line that fits is left as it is
+            continue
+        broken += len(got) > 1
+        for row in got:
+            # wider only when it is one term that cannot be broken
+            assert width(row) <= WIDEST or len(terms(row)) == 1, row
+        for row in got[1:]:
+            # a row goes on from the one before: a step, a term or a statement
+            assert row.startswith(("=", "+", "-")) or not row.startswith("\\quad")
+    assert broken > 0
+
+
+def test_a_chain_is_broken_at_its_equals_signs_first() -> None:
+    tex = (
+        r"\vec a_{\mathrm{C}} = \vec a_{\mathrm{B}} + \varepsilon\,\vec k \times "
+        r"\vec r_{\mathrm{BC}} - \omega^2 \vec r_{\mathrm{BC}} = (1.25,\ -2.5) + "
+        r"17.95 \cdot \vec k \times (0.1016,\ -0.02894) - 1.5^2 \cdot "
+        r"(0.1016,\ -0.02894) = (-2.828,\ -2.828)\ \mathrm{m/s^2},\quad a_C = 4"
+    )
+    got = rows(tex, width)
+    assert got[0].startswith(r"\vec a_{\mathrm{C}} = \vec a_{\mathrm{B}} +")
+    assert got[0].rstrip().endswith(r"\vec r_{\mathrm{BC}}")
+    assert [row[:9] for row in got[1:]] == ["= (1.25,\\", "= (-2.828"]
+    # a statement after \quad stays on the row it fits on
+    assert got[-1].endswith(r"\quad a_C = 4")
+
+
+def test_a_broken_equation_is_one_block_of_rows_named_by_its_whole_tex() -> None:
+    tex = " = ".join(["x"] + [f"{k}.125 + {k}.5" for k in range(1, 12)])
+    element = ET.fromstring(display(tex))
+    assert element.get("display") == "block"
+    assert element.get("alttext") == tex
+    (table,) = list(element)
+    assert table.tag == "mtable"
+    cells = [row[0] for row in table]
+    assert len(cells) > 1
+    # the rows after the first set in from the left, their "=" leading
+    assert all(cell[0].tag == "mspace" for cell in cells[1:])
+    assert cells[0][0].tag != "mspace"
+    assert ET.fromstring(display("x = 1")).find("mtable") is None
+
+
+def test_a_statement_after_a_quad_starts_its_own_row_without_the_quad() -> None:
+    first = " + ".join(f"{k}.125" for k in range(1, 10))
+    tex = rf"x = {first},\quad y = {first}"
+    got = rows(tex, width)
+    assert got == [f"x = {first},", f"y = {first}"]
