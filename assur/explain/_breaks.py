@@ -13,9 +13,9 @@ import html
 import re
 from collections.abc import Callable
 
-from assur.explain._mathml import TOKEN
+from assur.explain._mathml import TOKEN, mathml
 
-__all__ = ["WIDEST", "pieces", "rows", "terms"]
+__all__ = ["WIDEST", "broken", "pieces", "rows", "terms"]
 
 WIDEST = 72
 """Most characters a row holds. An A4 column is 655 px; printed at 0.9 em of 16 px
@@ -101,6 +101,11 @@ def rows(tex: str, width: Callable[[str], int]) -> list[str]:
     for row in _packed(pieces(tex), width):
         out += _packed(terms(row), width) if width(row) > WIDEST else [row]
     return out
+
+
+def broken(tex: str) -> list[str]:
+    """Return the rows of a display equation, its width that of its MathML text."""
+    return rows(tex, lambda piece: shown_width(mathml(piece)))
 
 
 def _packed(parts: list[str], width: Callable[[str], int]) -> list[str]:

@@ -10,7 +10,7 @@ from html import escape
 from typing import TYPE_CHECKING
 
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
-from assur.explain._breaks import rows, shown_width
+from assur.explain._breaks import broken
 from assur.explain._mathml import mathml
 
 if TYPE_CHECKING:
@@ -59,7 +59,7 @@ def display(tex: str) -> str:
     (:mod:`assur.explain._breaks`), the rows after the first indented; the whole
     equation's TeX stays its alternative text.
     """
-    parts = rows(tex, lambda piece: shown_width(mathml(piece)))
+    parts = broken(tex)
     if len(parts) == 1:
         return math(tex, display=True)
     cells = "".join(

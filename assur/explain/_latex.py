@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
+from assur.explain._breaks import broken
 
 if TYPE_CHECKING:
     from assur.explain._blocks import Block
@@ -52,6 +53,11 @@ def _text(text: str) -> str:
     )
 
 
+def _rows(tex: str) -> str:
+    """Return a display equation's rows joined by LaTeX's line breaks."""
+    return " \\\\\n".join(broken(tex))
+
+
 def _block(block: Block) -> str:
     """Return one block as LaTeX."""
     if isinstance(block, Heading):
@@ -59,9 +65,10 @@ def _block(block: Block) -> str:
     if isinstance(block, Para):
         return _text(block.text)
     if isinstance(block, Display):
-        # long equations may run past the margin: a small size keeps most in
+        # a long chain in rows, as in HTML (assur.explain._breaks): multline sets
+        # the first to the left, the last to the right
         return "\n".join(
-            f"{{\\small\\begin{{multline*}}{line}\\end{{multline*}}}}"
+            f"{{\\small\\begin{{multline*}}{_rows(line)}\\end{{multline*}}}}"
             for line in block.lines
         )
     if isinstance(block, Grid):
