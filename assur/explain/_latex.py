@@ -53,9 +53,17 @@ def _text(text: str) -> str:
     )
 
 
-def _rows(tex: str) -> str:
-    """Return a display equation's rows joined by LaTeX's line breaks."""
-    return " \\\\\n".join(broken(tex))
+def _display(tex: str) -> str:
+    """Return a display equation as LaTeX: one row centred, several a multline.
+
+    A single row in a multline was stretched to the page's width at its spaces
+    ("v_F      =      (0,      0)").
+    """
+    parts = broken(tex)
+    if len(parts) == 1:
+        return f"{{\\small\\begin{{equation*}}{tex}\\end{{equation*}}}}"
+    rows = " \\\\\n".join(parts)
+    return f"{{\\small\\begin{{multline*}}{rows}\\end{{multline*}}}}"
 
 
 def _block(block: Block) -> str:
@@ -67,10 +75,7 @@ def _block(block: Block) -> str:
     if isinstance(block, Display):
         # a long chain in rows, as in HTML (assur.explain._breaks): multline sets
         # the first to the left, the last to the right
-        return "\n".join(
-            f"{{\\small\\begin{{multline*}}{_rows(line)}\\end{{multline*}}}}"
-            for line in block.lines
-        )
+        return "\n".join(_display(line) for line in block.lines)
     if isinstance(block, Grid):
         columns = "l" * len(block.head)
         head = " & ".join(_text(c) for c in block.head)
