@@ -255,7 +255,12 @@ def test_the_note_says_why_a_group_is_of_its_class() -> None:
     assert (
         "triad (rod, plate, left_rocker, right_rocker): internal pairs C, D and E; "
         "external pairs B, F and G on the known links crank and ground. Why an Assur "
-        "group: k = 4 links, p = 6 lower pairs" in note
+        "group: $k = 4$ links, $p = 6$ lower pairs" in note
+    )
+    # the counts typeset as the note's other formulas, minus signs and all
+    assert (
+        "$W = 3k - 2p = 12 - 12 = 0$, and every smaller part of it keeps $W > 0$"
+        in (note)
     )
     assert "Why class III: its base link plate carries three internal pairs" in note
     assert (

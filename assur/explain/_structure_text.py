@@ -6,6 +6,8 @@ formula with its numbers and the order of the two passes.
 
 from __future__ import annotations
 
+import re
+
 from assur._structure import Group, Structure
 from assur._text import noun_for, roman, spelt
 from assur.explain._note import Block, Display, Heading, Items, Para
@@ -13,6 +15,9 @@ from assur.explain._tex import plain
 from assur.report import _apart, _class_why, _members, _pairs_text, _why
 
 __all__ = ["structure_blocks"]
+
+COUNTS = re.compile(r"\b(?:k = \d+|p = \d+|W = 3k - 2p = \d+ - \d+ = 0|W > 0)")
+"""The counts of the structure report's words on a group, set as mathematics."""
 
 
 def _kind(kind: str) -> str:
@@ -60,7 +65,7 @@ def structure_blocks(s: Structure) -> list[Block]:
         )
         if g.basis:
             text += f" Why class {numeral}: {_class_why(g)}."
-        items.append(plain(text))
+        items.append(_typeset(plain(text)))
     inputs = "input link" if len(s.drivers) == 1 else "input links"
     order = (
         "The kinematic analysis goes through the groups in this order, the force "
@@ -87,3 +92,17 @@ def structure_blocks(s: Structure) -> list[Block]:
 def _driving(count: int) -> str:
     """Return how many drivers move the mechanism, in words: 'one driver moves'."""
     return "one driver moves" if count == 1 else f"{spelt(count)} drivers move"
+
+
+def _typeset(text: str) -> str:
+    """Return a group's words with their counts as inline mathematics.
+
+    The structure report's words are plain text ("W = 3k - 2p = 6 - 6 = 0", with
+    hyphens for minus signs); the note sets them as its other formulas.
+
+    Examples
+    --------
+    >>> _typeset("k = 2 links; W = 3k - 2p = 6 - 6 = 0, and W > 0")
+    '$k = 2$ links; $W = 3k - 2p = 6 - 6 = 0$, and $W > 0$'
+    """
+    return COUNTS.sub(lambda found: f"${found.group(0)}$", text)
