@@ -151,3 +151,31 @@ def test_the_position_is_said_by_the_slider_and_not_announced_at_each_frame(
     assert first == readout.text
     _move_slider(browser, 90)
     assert slider.get_attribute("aria-valuetext") == readout.text != first
+
+
+TICK_TEXTS = r"""
+const texts = [];
+function walk(n) {
+  if (n.tag === "text") texts.push(n.textContent);
+  n.children.forEach(walk);
+}
+walk(byId.charts);
+console.log(JSON.stringify(texts));
+"""
+"""Every text drawn in the diagrams: tick labels, units, captions of the axes."""
+
+
+def test_a_diagram_s_negative_numbers_carry_a_minus_sign(tmp_path: Path) -> None:
+    # they were written with a hyphen ("-0.5"), a dash shorter than the plus
+    node = _executable("node", "nodejs")
+    if node is None:
+        pytest.skip("node not found")
+    path = tmp_path / "six_bar.html"
+    write_report(assur.load(EXAMPLES / "six_bar_lecture.toml"), path)
+    script = FAKE_DOM.split("const heads = [];")[0] + TICK_TEXTS
+    out = subprocess.run(
+        [node, "-e", script, str(path)], capture_output=True, text=True, check=True
+    )
+    numbers = [t for t in json.loads(out.stdout) if re.fullmatch(r"\S?[\d.]+", t)]
+    assert any(t.startswith("\u2212") for t in numbers)
+    assert not any(t.startswith("-") for t in numbers)

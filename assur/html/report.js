@@ -31,6 +31,9 @@
     // round-off (a frictionless guide's 1e-14 N) reads as the zero it is
     return Math.abs(v) < 1e-9 ? "0" : String(Number(v.toPrecision(4)));
   }
+  // a diagram's numbers are read, not copied: a minus sign, where the tables keep
+  // the hyphen a spreadsheet reads
+  const tick = (v) => fmt(v).replace("-", "\u2212");
 
   // model (m, y up) to drawing (px, y down), one scale for the whole sweep
   const [bx0, bx1, by0, by1] = data.bounds;
@@ -327,7 +330,7 @@
       el("line", {x1: m.l, x2: CW - m.r, y1: py(y), y2: py(y), stroke: zero ? "#9ca3af"
         : "#eef0f3", "stroke-width": 1}, axis);
       el("text", {x: m.l - 6, y: py(y) + 4, "text-anchor": "end"}, axis).textContent =
-        fmt(zero ? 0 : y);
+        tick(zero ? 0 : y);
     }
     const degrees = data.driver.unit === "deg";
     const xstep = ticks(xa, xb, 6, degrees);
@@ -336,7 +339,7 @@
       el("line", {x1: px(x), x2: px(x), y1: m.t, y2: CH - m.b, stroke: "#eef0f3"},
         axis);
       el("text", {x: px(x), y: CH - m.b + 15, "text-anchor": "middle"}, axis)
-        .textContent = fmt(x);
+        .textContent = tick(x);
     }
     el("rect", {x: m.l, y: m.t, width: CW - m.l - m.r, height: CH - m.t - m.b,
       fill: "none", stroke: "#d1d5db"}, axis);
