@@ -12,10 +12,11 @@ from __future__ import annotations
 import html
 import re
 from collections.abc import Callable
+from typing import Any
 
 from assur.explain._mathml import TOKEN, mathml
 
-__all__ = ["WIDEST", "broken", "pieces", "rows", "terms"]
+__all__ = ["WIDEST", "broken", "clauses", "pieces", "rows", "terms"]
 
 WIDEST = 72
 """Most characters a row holds. An A4 column is 655 px; printed at 0.9 em of 16 px
@@ -23,8 +24,8 @@ type a note's equations take 6.7 px a character shown (the median of 458 of them
 8.9 px at most: 72 fit in the column."""
 QUADS = ("\\quad", "\\qquad")
 """Spaces that separate two statements on one line."""
-OPENING = frozenset(("{", "\\left", "(", "["))
-CLOSING = frozenset(("}", "\\right", ")", "]"))
+LEADING = re.compile(r"^(?:\\q?quad|\\[ ,;]|\s)+")
+"""The spaces a row after the first does without: its start sets it apart."""
 SIGNED_AFTER = frozenset(("=", "(", "[", "{", ",", "+", "-", "\\cdot", "\\times"))
 """Tokens after which a ``+`` or a ``-`` is a sign, not one between two terms."""
 
@@ -60,27 +61,66 @@ def pieces(tex: str) -> list[str]:
     return out
 
 
-def terms(tex: str) -> list[str]:
-    r"""Split ``tex`` before each ``+`` and ``-`` between two terms, outside brackets.
+def terms(tex: str, inside: int = 0) -> list[str]:
+    r"""Split ``tex`` before each ``+`` and ``-`` between two terms.
 
-    Joined, the pieces are ``tex``.
+    Only outside braces and ``\left``/``\right``, and within at most ``inside``
+    brackets: ``inside=1`` breaks a sum in brackets (``-[a + b + c]``). Joined, the
+    pieces are ``tex``.
 
     Examples
     --------
     >>> terms(r"M = [a \cdot (-b) - c] + [-d] - e")
     ['M = [a \\cdot (-b) - c] ', '+ [-d] ', '- e']
+    >>> terms(r"= -[a + b \cdot (c - d)]", inside=1)
+    ['= -[a ', '+ b \\cdot (c - d)]']
+    """
+
+    def where(token: str, before: str, braces: int, brackets: int) -> bool:
+        binary = before != "" and before not in SIGNED_AFTER
+        return token in ("+", "-") and binary and not braces and brackets <= inside
+
+    return _split(tex, where)
+
+
+def clauses(tex: str) -> list[str]:
+    r"""Split ``tex`` after each comma and before each ``\text`` outside brackets.
+
+    The last resort for a row of words and formulas ("turned 90 deg, as 2
+    turns, a = ..."). Joined, the pieces are ``tex``.
+
+    Examples
+    --------
+    >>> clauses(r"x,\ y = (1, 2) \text{ at } B")
+    ['x,', '\\ y = (1, 2) ', '\\text{ at } B']
+    """
+
+    def where(token: str, before: str, braces: int, brackets: int) -> bool:
+        after_comma = before == "," and not token.isspace()
+        return (after_comma or token == "\\text") and not braces and not brackets
+
+    return _split(tex, where)
+
+
+def _split(tex: str, where: Callable[[str, str, int, int], bool]) -> list[str]:
+    """Split ``tex`` before each token ``where`` says is a place to break.
+
+    ``where`` is given the token, the one before it (spaces passed over) and the
+    numbers of braces and of brackets open there.
     """
     out: list[str] = []
-    start = depth = at = 0
+    start = braces = brackets = at = 0
     before = ""
     for token in TOKEN.findall(tex):
-        if token in OPENING:
-            depth += 1
-        elif token in CLOSING:
-            depth -= 1
-        elif (
-            depth == 0 and token in ("+", "-") and before and before not in SIGNED_AFTER
-        ):
+        if token in ("{", "\\left"):
+            braces += 1
+        elif token in ("}", "\\right"):
+            braces -= 1
+        elif token in ("(", "["):
+            brackets += 1
+        elif token in (")", "]"):
+            brackets -= 1
+        elif at > start and where(token, before, braces, brackets):
             out.append(tex[start:at])
             start = at
         if not token.isspace():
@@ -99,8 +139,25 @@ def rows(tex: str, width: Callable[[str], int]) -> list[str]:
     """
     out: list[str] = []
     for row in _packed(pieces(tex), width):
-        out += _packed(terms(row), width) if width(row) > WIDEST else [row]
+        out += _finer(row, width, FINER)
     return out
+
+
+FINER: tuple[Callable[[str], list[str]], ...] = (
+    terms,
+    lambda tex: terms(tex, inside=1),
+    clauses,
+)
+"""How a row still too wide is split, in turn: its terms, the terms of a sum in
+brackets, its clauses."""
+
+
+def _finer(row: str, width: Callable[[str], int], ways: tuple[Any, ...]) -> list[str]:
+    """Return ``row``, or its rows split the first of ``ways`` that makes it fit."""
+    if width(row) <= WIDEST or not ways:
+        return [row]
+    parts = _packed(ways[0](row), width)
+    return [part for p in parts for part in _finer(p, width, ways[1:])]
 
 
 def broken(tex: str) -> list[str]:
@@ -111,8 +168,8 @@ def broken(tex: str) -> list[str]:
 def _packed(parts: list[str], width: Callable[[str], int]) -> list[str]:
     r"""Return ``parts`` joined into rows of at most :data:`WIDEST` characters shown.
 
-    A part wider than that is a row alone. A ``\quad`` that starts a row is
-    dropped: the row's start sets the statements apart.
+    A part wider than that is a row alone. The spaces a row after the first starts with
+    (``\quad``, ``\ ``) are dropped: its start sets it apart.
     """
     out: list[str] = []
     shown = 0
@@ -131,11 +188,8 @@ def _packed(parts: list[str], width: Callable[[str], int]) -> list[str]:
 
 
 def _unquaded(piece: str) -> str:
-    r"""Return ``piece`` without the ``\quad`` it starts with."""
-    for quad in sorted(QUADS, key=len, reverse=True):
-        if piece.startswith(quad):
-            return piece[len(quad) :]
-    return piece
+    r"""Return ``piece`` without the spaces it starts with (``\quad``, ``\ ``)."""
+    return LEADING.sub("", piece)
 
 
 def shown_width(mathml: str) -> int:
