@@ -360,3 +360,12 @@ def test_a_long_chain_of_points_is_no_circle_and_is_read_at_once():
     chain = ["P0 = [0.0, 0.0]"] + [f'P{i} = "P{i - 1}"' for i in range(1, 70)]
     with pytest.raises(ModelError, match=r"more than 64 deep; expected a shorter"):
         assur.loads(_with_points(chain))
+
+
+def test_a_circle_met_at_the_end_of_a_chain_is_named_from_its_first_point():
+    # V and W lead into the circle and are no part of it: the names before the
+    # circle are left out of it
+    text = _with_points(['V = "W"', 'W = "X"', 'X = "Y"', 'Y = "Z"', 'Z = "X"'])
+    with pytest.raises(ModelError) as caught:
+        assur.loads(text)
+    assert "in a circle (X -> Y -> Z -> X);" in str(caught.value)
