@@ -157,7 +157,7 @@ def resolve_point(
                 f"points refer to each other in a circle ({' -> '.join(circle)}); "
                 "expected names that lead to coordinates [x, y]",
             )
-        if len(_path) > DEEPEST:
+        if len(_path) >= DEEPEST:
             msg = f"points refer to each other more than {DEEPEST} deep"
             _fail(entry, f"{msg}; expected a shorter chain of names")
         named = [j.at for j in mech.joints if j.name == spec] or [

@@ -369,3 +369,13 @@ def test_a_circle_met_at_the_end_of_a_chain_is_named_from_its_first_point():
     with pytest.raises(ModelError) as caught:
         assur.loads(text)
     assert "in a circle (X -> Y -> Z -> X);" in str(caught.value)
+
+
+def test_a_chain_of_as_many_names_as_allowed_is_read_and_one_more_refused():
+    # DEEPEST names: P64's "P63" leads through P63, ..., P0; one more was let by
+    # while the message said "more than 64 deep"
+    chain = ["P0 = [0.0, 0.0]"] + [f'P{i} = "P{i - 1}"' for i in range(1, 65)]
+    mech = assur.loads(_with_points(chain))
+    assert resolve_point(mech, mech.points[-1].at).tolist() == [0.0, 0.0]
+    with pytest.raises(ModelError, match=r"^points\.P65\.at: .* more than 64 deep"):
+        assur.loads(_with_points([*chain, 'P65 = "P64"']))
