@@ -265,6 +265,11 @@ def test_driver_option_off_the_frame(capsys):
             "file with --csv PATH or --parquet PATH (see 'assur kinematics --help')",
         ),
         (
+            ["dynamics", "x.toml", "--output", "t.csv"],
+            "dynamics: unrecognized arguments: --output t.csv; a table is written to a "
+            "file with --csv PATH or --parquet PATH (see 'assur dynamics --help')",
+        ),
+        (
             ["forces", "x.toml", "--csvv=t.csv"],
             "forces: unrecognized arguments: --csvv=t.csv; did you mean '--csv'? (see "
             "'assur forces --help')",
