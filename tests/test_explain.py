@@ -462,6 +462,17 @@ def test_every_equation_of_the_html_note_carries_its_tex_as_alternative_text() -
     assert alts == [" ".join(p.split()) for p in pieces]
 
 
+def test_an_equation_s_alternative_text_is_its_tex_in_one_line_and_well_quoted():
+    # the slider-crank's note above has no quote and no run of spaces in its TeX:
+    # the helper itself is held to both
+    import xml.etree.ElementTree as ET
+
+    from assur.explain._html import math
+
+    element = math('x_{1}  +\n  \\text{"a" & b} < 2', display=True)
+    assert ET.fromstring(element).get("alttext") == 'x_{1} + \\text{"a" & b} < 2'
+
+
 @pytest.mark.parametrize("stem", ["slider_crank_exercise", "class3", "whitworth"])
 def test_html_note_is_offline_and_its_mathml_well_formed(stem: str) -> None:
     import xml.etree.ElementTree as ET
