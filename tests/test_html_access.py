@@ -179,3 +179,12 @@ def test_a_diagram_s_negative_numbers_carry_a_minus_sign(tmp_path: Path) -> None
     numbers = [t for t in json.loads(out.stdout) if re.fullmatch(r"\S?[\d.]+", t)]
     assert any(t.startswith("\u2212") for t in numbers)
     assert not any(t.startswith("-") for t in numbers)
+
+
+def test_the_block_and_pin_of_a_slot_read_as_words_in_the_page() -> None:
+    # the groups' pairs and the free bodies' captions: "B~pin" and "B~block" are
+    # the names of the JSON output, "B (pin)" and "B (block)" the reader's
+    page = render_report(assur.load(EXAMPLES / "slot_mechanism.toml"), [30.0])
+    body = page.split('<script type="application/json"')[0]
+    assert "<td>O4, B (pin)</td>" in body
+    assert "<figcaption>Group 1: RPR (rocker, B (block))</figcaption>" in body
