@@ -90,6 +90,9 @@ def test_a_diagram_s_series_differ_by_more_than_their_hue(tmp_path: Path) -> Non
     assert len(reactions) == 7
     patterns = [dash for _, dash in reactions]
     assert len(set(patterns[:5])) == 5
+    # the check by virtual power stays the dashed black line over its load
+    check = charts["Balancing load and its check"]["series"]
+    assert check == [["#2563eb", "none"], ["#111827", "5 4"]]
     for chart in charts.values():
         series = [tuple(s) for s in chart["series"]]
         assert len(set(series)) == len(series)
