@@ -14,7 +14,7 @@ from assur._diagnosis import (
     _Rigid,
     _sliding_loop,
 )
-from assur._text import NAME_LIMIT, listing, public_name, shortened
+from assur._text import NAME_LIMIT, listing, public_name, shortened, spoken
 from assur._topology import Pair, _component, _Index, _public
 from assur.model import GROUND
 
@@ -158,7 +158,7 @@ def _misdriven_text(
     if not frame:
         return None
     # a few of the joints, names cut short: the message stays one readable line
-    move = " or ".join(shortened(x, NAME_LIMIT) for x in _public(tuple(frame[:3])))
+    move = spoken([shortened(x, NAME_LIMIT) for x in _public(tuple(frame[:3]))], "or")
     if brief:
         return (
             f"{len(loose)} of them can move (3k - 2p = {w}) with no input, while "

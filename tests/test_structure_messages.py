@@ -398,3 +398,34 @@ def test_a_part_apart_from_the_frame_is_named_before_a_passive_constraint() -> N
         assur.structure(build(in_line, []))
     assert "or joints in line; expected no repeated constraint" in str(err.value)
     assert "(or move a joint off the line)" in str(err.value)
+
+
+def test_drivers_on_the_wrong_part_of_five_links_name_three_and_a_choice() -> None:
+    # the four-bar of two drivers beside the lecture's six-bar of none: the five
+    # links that can move are named three and counted, and the joints a driver
+    # may take read as a choice, where "A2 or D2 or G2" was written
+    from assur.model import resolve_point
+
+    six = assur.load(EXAMPLES / "six_bar_lecture.toml")
+    second = [
+        (
+            j.name + "2",
+            "R",
+            tuple(x if x == "ground" else "s" + x for x in j.links),
+            (at[0] + 1.0, at[1]),
+        )
+        for j in six.joints
+        for at in [resolve_point(six, j.at)]
+    ]
+    first = [
+        *PARALLELOGRAM[:2],
+        ("C", "R", ("3", "4"), (0.16, 0.12)),
+        ("D", "R", ("ground", "4"), (0.14, 0)),
+    ]
+    with pytest.raises(DecompositionError) as err:
+        assur.structure(build(first + second, ["A", "D"]))
+    assert str(err.value).endswith(
+        "because links s2, s3, s4, ... (5 in all) can move (3k - 2p = 1) with no "
+        "input, while link 3 is over-constrained (3k - 2p = -1): the drivers are on "
+        "the wrong part; expected a driver moved to joint A2, D2 or G2"
+    )
