@@ -397,6 +397,20 @@ def test_a_crank_of_zero_length_is_refused(tmp_path, capsys):
     assert cli_line(capsys, path) == f"assur: error: {path}: {expected}"
 
 
+def test_a_crank_of_zero_length_with_many_joints_names_four_and_counts_them():
+    # the joints at the pivot past four are counted, not dropped without a word
+    text = zero_crank() + "".join(
+        f'\n[links.c{i}]\n\n[joints.A{i}]\nkind = "revolute"\n'
+        f'links = ["crank", "c{i}"]\nat = [0.0, 0.0]\n'
+        for i in range(1, 5)
+    )
+    with pytest.raises(assur.ModelError) as caught:
+        assur.loads(text)
+    assert "has its joints 'A', 'A1', 'A2', 'A3', ... (5 in all) at the pivot" in str(
+        caught.value
+    )
+
+
 def test_a_crank_with_a_slide_through_its_pivot_drives():
     # a slide line through the pivot still turns with the crank
     text = (EXAMPLES / "scotch_yoke.toml").read_text(encoding="utf-8")
