@@ -13,6 +13,7 @@ import pytest
 
 import assur
 from assur import plotting
+from assur.plotting._style import PATH_MARK_SPACING
 
 mpl.use("Agg")
 
@@ -39,6 +40,8 @@ def test_the_paths_of_points_differ_by_their_marks(six_bar: assur.Table) -> None
         assert [ln.get_label() for ln in paths] == ["B", "C", "E", "F"]
         marks = [ln.get_marker() for ln in paths]
         assert len(set(marks)) == 4
+        # spaced along the path, not one on each of the sweep's positions
+        assert {ln.get_markevery() for ln in paths} == {PATH_MARK_SPACING}
         # the legend draws each key as its path, with its mark
         keys = [ln.get_marker() for ln in ax.get_legend().get_lines()]
         assert keys == marks
