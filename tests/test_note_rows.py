@@ -129,3 +129,27 @@ def test_the_latex_note_breaks_the_same_rows() -> None:
         for part in parts:  # each row's braces closed within it
             assert part.count("{") == part.count("}")
     assert sum(kind == "multline" for kind, _ in shown) > 10
+
+
+@pytest.mark.parametrize(
+    "tex",
+    [
+        r"= (0.1016,\ -0.02894)",  # a vector's second component and its sign
+        r"a \approx -b",  # a sign after a relation
+        r"a \le -b",
+        r"x^-1",  # a row may not end with "^"
+    ],
+)
+def test_a_sign_is_not_taken_for_a_difference(tex: str) -> None:
+    # "(0.1016,\ -0.02894)" was split between its two components (the control
+    # space was taken for a term), "a \approx" ended a row, and so did "x^", whose
+    # MathML could not be made
+    assert terms(tex, inside=1) == [tex]
+
+
+def test_a_row_never_ends_with_a_script_or_a_relation_before_a_sign() -> None:
+    long = " + ".join(f"{k}.125" for k in range(1, 9))
+    for tex in (f"x^-1 - {long} - {long}", rf"a \approx -{long} \approx -{long}"):
+        for row in rows(tex, width):
+            mathml(row)  # each row is whole TeX: "x^" raised ValueError
+            assert not row.rstrip().endswith(("^", "\\approx"))

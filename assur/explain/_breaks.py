@@ -14,7 +14,7 @@ import re
 from collections.abc import Callable
 from typing import Any
 
-from assur.explain._mathml import TOKEN, mathml
+from assur.explain._mathml import SIGN_AFTER, SYMBOLS, TOKEN, mathml
 
 __all__ = ["WIDEST", "broken", "clauses", "pieces", "rows", "terms"]
 
@@ -26,8 +26,21 @@ QUADS = ("\\quad", "\\qquad")
 """Spaces that separate two statements on one line."""
 LEADING = re.compile(r"^(?:\\q?quad|\\[ ,;]|\s)+")
 """The spaces a row after the first does without: its start sets it apart."""
-SIGNED_AFTER = frozenset(("=", "(", "[", "{", ",", "+", "-", "\\cdot", "\\times"))
-"""Tokens after which a ``+`` or a ``-`` is a sign, not one between two terms."""
+SIGNED_AFTER = frozenset(
+    (
+        "^",
+        "_",
+        "-",
+        *SIGN_AFTER,
+        *(f"\\{n}" for n, s in SYMBOLS.items() if s in SIGN_AFTER),
+    )
+)
+"""Tokens after which a ``+`` or a ``-`` is a sign, not one between two terms: those
+the note's MathML sets a sign after (``=``, ``,``, ``\\cdot``, ``\\approx``, ...),
+and a script's ``^`` or ``_``, which a row may not end with."""
+BLANKS = frozenset(("\\ ", "\\,", "\\;", "\\:", "\\quad", "\\qquad"))
+"""TeX's spaces, passed over as white space is in telling what a sign follows:
+``(0.1,\\ -0.2)`` is a vector, not a difference."""
 
 
 def pieces(tex: str) -> list[str]:
@@ -84,19 +97,19 @@ def terms(tex: str, inside: int = 0) -> list[str]:
 
 
 def clauses(tex: str) -> list[str]:
-    r"""Split ``tex`` after each comma and before each ``\text`` outside brackets.
+    r"""Split ``tex`` after each comma (and its spaces) and before each ``\text``.
 
-    The last resort for a row of words and formulas ("turned 90 deg, as 2
-    turns, a = ..."). Joined, the pieces are ``tex``.
+    Only outside braces and brackets. The last resort for a row of words and
+    formulas ("turned 90 deg, as 2 turns, a = ..."). Joined, the pieces are ``tex``.
 
     Examples
     --------
     >>> clauses(r"x,\ y = (1, 2) \text{ at } B")
-    ['x,', '\\ y = (1, 2) ', '\\text{ at } B']
+    ['x,\\ ', 'y = (1, 2) ', '\\text{ at } B']
     """
 
     def where(token: str, before: str, braces: int, brackets: int) -> bool:
-        after_comma = before == "," and not token.isspace()
+        after_comma = before == "," and not _blank(token)
         return (after_comma or token == "\\text") and not braces and not brackets
 
     return _split(tex, where)
@@ -105,8 +118,8 @@ def clauses(tex: str) -> list[str]:
 def _split(tex: str, where: Callable[[str, str, int, int], bool]) -> list[str]:
     """Split ``tex`` before each token ``where`` says is a place to break.
 
-    ``where`` is given the token, the one before it (spaces passed over) and the
-    numbers of braces and of brackets open there.
+    ``where`` is given the token, the one before it (spaces, TeX's too, passed
+    over) and the numbers of braces and of brackets open there.
     """
     out: list[str] = []
     start = braces = brackets = at = 0
@@ -123,11 +136,16 @@ def _split(tex: str, where: Callable[[str, str, int, int], bool]) -> list[str]:
         elif at > start and where(token, before, braces, brackets):
             out.append(tex[start:at])
             start = at
-        if not token.isspace():
+        if not _blank(token):
             before = token
         at += len(token)
     out.append(tex[start:])
     return out
+
+
+def _blank(token: str) -> bool:
+    r"""Return whether ``token`` is a space: TeX's (``\ ``, ``\quad``) or white."""
+    return token.isspace() or token in BLANKS
 
 
 def rows(tex: str, width: Callable[[str], int]) -> list[str]:
