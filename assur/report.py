@@ -67,8 +67,9 @@ def _why(g: Group, said: dict[tuple[int, int], Group] | None = None) -> str:
     first = None if said is None else said.setdefault((k, p), g)
     if first is not None and first is not g:
         return (
-            f"the same counts as links {_names(first.links)} above: k = {k}, p = {p}, "
-            f"W = 3k - 2p = {3 * k} - {2 * p} = 0, and every smaller part keeps W > 0"
+            f"the same counts as for links {_names(first.links)} above: "
+            f"k = {k}, p = {p}, W = 3k - 2p = {3 * k} - {2 * p} = 0, "
+            "and every smaller part keeps W > 0"
         )
     return (
         f"k = {k} links, p = {p} lower pairs; with its external pairs on the known "

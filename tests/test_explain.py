@@ -835,7 +835,7 @@ def test_a_small_load_couple_is_written_as_it_is():
 
 def test_the_note_s_structure_section_refers_to_a_group_explained_before():
     note = str(explain(assur.load(EXAMPLES / "tenbar.toml"), 30.0))
-    assert note.count("the same counts as links 2 and 3 above") == 3
+    assert note.count("the same counts as for links 2 and 3 above") == 3
 
 
 def test_a_slow_small_mechanism_s_kinematics_are_its_own_not_round_off():

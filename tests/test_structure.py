@@ -1156,7 +1156,7 @@ def test_a_group_counted_as_one_before_refers_to_it():
     why = [line.strip() for line in report.splitlines() if "Why an Assur" in line]
     assert why[0] == WHY.format(k=2, p=3, n=6)
     assert why[1:] == 3 * [
-        "Why an Assur group: the same counts as links 2 and 3 above: k = 2, p = 3, "
+        "Why an Assur group: the same counts as for links 2 and 3 above: k = 2, p = 3, "
         "W = 3k - 2p = 6 - 6 = 0, and every smaller part keeps W > 0."
     ]
 
