@@ -92,7 +92,7 @@ def test_a_coriolis_term_points_along_the_relative_velocity_turned_as_the_guide_
     for slide, ax, ay, guide, middle, size in coriolis:
         a = np.array([_float(ax), _float(ay)])
         omega = _rate(table, guide, "omega")
-        told = re.search(r"90\^\\circ\\ \\text\{([a-z-]+), as \w+ turns", middle)
+        told = re.search(r"90\^\\circ\\ \\text\{([a-z-]+), as link \w+ turns", middle)
         sense = told.group(1) if told else ""
         found = re.search(rf"\\vec v\^{{r}}_{{{re.escape(slide)}}} = {VECTOR}", note)
         assert found, slide
@@ -309,3 +309,9 @@ def test_a_line_through_points_of_long_names_is_told_apart() -> None:
     assert "(along D–slot (pin))" in note
     note = str(explain(assur.load(EXAMPLES / "slider_crank_exercise.toml"), 45.0))
     assert "(along BC)" in note
+
+
+def test_a_coriolis_term_names_its_guide_as_a_link():
+    # a link's name may be a number: "as 3 turns" read as a count, not a link
+    note = str(explain(assur.load(EXAMPLES / "whitworth.toml"), 30.0))
+    assert "\\text{counter-clockwise, as link lever turns}" in note

@@ -141,7 +141,7 @@ def _coriolis(pos: Position, guide: int, j: str, wg: float, rel: float) -> str:
     sense = "counter-clockwise" if wg > 0 else "clockwise"
     return (
         f"{rule}:\\ \\vec v^{{r}}_{{{j}}} \\text{{ turned }} 90^\\circ\\ "
-        f"\\text{{{sense}, as {text(pos.link(guide))} turns}},\\ {size}"
+        f"\\text{{{sense}, as link {text(pos.link(guide))} turns}},\\ {size}"
     )
 
 
