@@ -7,6 +7,7 @@ lost or added, and each row fits :data:`WIDEST` characters when it can.
 
 from __future__ import annotations
 
+import itertools
 import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -24,7 +25,7 @@ EXAMPLES = Path(__file__).parent.parent / "examples"
 DATA = Path(__file__).parent / "data"
 
 
-def width(tex: str) -> int:
+def width(tex: str) -> float:
     return shown_width(mathml(tex))
 
 
@@ -153,3 +154,16 @@ def test_a_row_never_ends_with_a_script_or_a_relation_before_a_sign() -> None:
         for row in rows(tex, width):
             mathml(row)  # each row is whole TeX: "x^" raised ValueError
             assert not row.rstrip().endswith(("^", "\\approx"))
+
+
+@pytest.mark.parametrize("stem", ["class3", "whitworth", "six_bar_lecture"])
+def test_no_row_is_a_left_side_alone_and_a_split_equation_goes_on(stem: str) -> None:
+    # "a_G_left_rocker" stood alone on its row before "= a_F + ..."; the Coriolis
+    # line "a^k = 2|omega| v_r" and its "= 2 * 5.954 * 0.144 = ..." took two rows
+    # where one held both
+    for tex in _lines(stem):
+        got = rows(tex, width)
+        assert not (len(got) > 1 and len(pieces(got[0])) == 1 and got[1][0] == "="), got
+        for before, row in itertools.pairwise(got):
+            if row.startswith("=") and any(p.startswith("=") for p in pieces(before)):
+                assert width(before + " " + row) > WIDEST, (before, row)

@@ -9,8 +9,8 @@ a student writes it, one step a row, each row after the first starting with its
 
 from __future__ import annotations
 
-import html
 import re
+import xml.etree.ElementTree as ET
 from collections.abc import Callable
 from typing import Any
 
@@ -18,10 +18,10 @@ from assur.explain._mathml import SIGN_AFTER, SYMBOLS, TOKEN, mathml
 
 __all__ = ["WIDEST", "broken", "clauses", "pieces", "rows", "terms"]
 
-WIDEST = 72
-"""Most characters a row holds. An A4 column is 655 px; printed at 0.9 em of 16 px
-type a note's equations take 6.7 px a character shown (the median of 458 of them),
-8.9 px at most: 72 fit in the column."""
+WIDEST = 66
+"""Most characters a row holds (as :func:`shown_width` counts them). An A4 column is
+655 px; printed at 0.9 em of 16 px type, a note's equations take 7.4 px a character
+(the median of 539 of them), 9.8 px at most: 66 fit in the column."""
 QUADS = ("\\quad", "\\qquad")
 """Spaces that separate two statements on one line."""
 LEADING = re.compile(r"^(?:\\q?quad|\\[ ,;]|\s)+")
@@ -148,17 +148,33 @@ def _blank(token: str) -> bool:
     return token.isspace() or token in BLANKS
 
 
-def rows(tex: str, width: Callable[[str], int]) -> list[str]:
+def rows(tex: str, width: Callable[[str], float]) -> list[str]:
     r"""Return the rows ``tex`` is set in: its pieces, as many to a row as fit.
 
     ``width`` gives the characters a piece of TeX shows; a row holds at most
-    :data:`WIDEST` of them. Steps (:func:`pieces`) are packed first; a row still
-    wider is packed again from its terms (:func:`terms`).
+    :data:`WIDEST` of them. Steps (:func:`pieces`) are packed first, the left side
+    never alone on the first row; a row still wider is packed again from finer
+    pieces (:data:`FINER`). An equation that ends a row so split goes on with the
+    next step where that fits. The spaces a row after the first starts with
+    (``\quad``, ``\ ``) are dropped: its start sets it apart.
     """
+    steps = _packed(pieces(tex), width)
+    if len(steps) > 1 and len(pieces(steps[0])) == 1 and steps[1].startswith("="):
+        # "a_G" alone, then "= a_F + ...": the two go on one row, split finer
+        steps[:2] = [steps[0] + steps[1]]
     out: list[str] = []
-    for row in _packed(pieces(tex), width):
-        out += _finer(row, width, FINER)
-    return out
+    for row in (part for step in steps for part in _finer(step, width, FINER)):
+        goes_on = row.lstrip().startswith("=") and out and _equation(out[-1])
+        if goes_on and width(out[-1] + row) <= WIDEST:
+            out[-1] += row
+        else:
+            out.append(row)
+    return [out[0].lstrip(), *(LEADING.sub("", row) for row in out[1:])]
+
+
+def _equation(row: str) -> bool:
+    """Whether ``row`` holds an ``=`` of its own: a step may follow it on its row."""
+    return any(piece.lstrip().startswith("=") for piece in pieces(row))
 
 
 FINER: tuple[Callable[[str], list[str]], ...] = (
@@ -170,7 +186,7 @@ FINER: tuple[Callable[[str], list[str]], ...] = (
 brackets, its clauses."""
 
 
-def _finer(row: str, width: Callable[[str], int], ways: tuple[Any, ...]) -> list[str]:
+def _finer(row: str, width: Callable[[str], float], ways: tuple[Any, ...]) -> list[str]:
     """Return ``row``, or its rows split the first of ``ways`` that makes it fit."""
     if width(row) <= WIDEST or not ways:
         return [row]
@@ -183,33 +199,50 @@ def broken(tex: str) -> list[str]:
     return rows(tex, lambda piece: shown_width(mathml(piece)))
 
 
-def _packed(parts: list[str], width: Callable[[str], int]) -> list[str]:
+def _packed(parts: list[str], width: Callable[[str], float]) -> list[str]:
     r"""Return ``parts`` joined into rows of at most :data:`WIDEST` characters shown.
 
-    A part wider than that is a row alone. The spaces a row after the first starts with
-    (``\quad``, ``\ ``) are dropped: its start sets it apart.
+    A part wider than that is a row alone. Rows keep their spaces: a row's end may
+    be TeX's control space ("0.2\ "), and its start is cut where it is set.
     """
     out: list[str] = []
-    shown = 0
+    shown = 0.0
     for piece in parts:
         size = width(piece)
         if out and shown + size <= WIDEST:
             out[-1] += piece
             shown += size
-            continue
-        if out:
-            piece = _unquaded(piece)
-        out.append(piece)
-        shown = width(piece)
-    # a row's end keeps its spaces: "0.2\ " ends in TeX's control space
-    return [row.lstrip() for row in out]
+        else:
+            out.append(piece)
+            shown = size
+    return out
 
 
-def _unquaded(piece: str) -> str:
-    r"""Return ``piece`` without the spaces it starts with (``\quad``, ``\ ``)."""
-    return LEADING.sub("", piece)
+def shown_width(mathml: str) -> float:
+    """Return the width a MathML element shows, in characters of its text's size.
+
+    A script counts :data:`SCRIPT` of its characters, a fraction its wider part,
+    an accent nothing: a long subscript (``G_{left_rocker}``) is narrower than its
+    letters.
+    """
+    return _width(ET.fromstring(mathml))
 
 
-def shown_width(mathml: str) -> int:
-    """Return the characters a MathML element shows: its text, entities read."""
-    return len(html.unescape(re.sub(r"<[^>]+>", "", mathml)))
+SCRIPT = 0.7
+"""Size of a sub- or superscript relative to its base's characters."""
+EM = 2.0
+"""Characters of text in one em (a character is about half an em wide)."""
+
+
+def _width(node: ET.Element) -> float:
+    """Return the width of a MathML node in characters (see :func:`shown_width`)."""
+    parts = [_width(child) for child in node]
+    if node.tag in ("msub", "msup"):
+        return parts[0] + SCRIPT * parts[1]
+    if node.tag == "msubsup":
+        return parts[0] + SCRIPT * max(parts[1], parts[2])
+    if node.tag in ("mfrac", "mover", "munder"):
+        return max(parts)
+    if node.tag == "mspace":
+        return EM * float(node.get("width", "0em").removesuffix("em"))
+    return len(node.text or "") + sum(parts)
