@@ -108,8 +108,11 @@ def test_long_names_wrap_and_draw_without_warnings() -> None:
     screen = _style(page).split("@media print")[0]
     for selector in (".formula", ".legend li", "#note p"):
         assert "overflow-wrap: anywhere" in _rule(screen, selector)
-    # the table of groups keeps its words whole and scrolls in its card instead
-    assert "overflow-x: auto" in _rule(screen, "table.groups")
+    # the table of groups keeps its words whole and scrolls in its card instead,
+    # in a box around it: a table set display: block is no table to some readers
+    assert "overflow-x: auto" in _rule(screen, ".scroll")
+    assert '<div class="scroll"><table class="groups">' in page
+    assert not re.search(r"table[^{},]*\{[^}]*display: block", _style(page))
 
 
 def test_without_javascript_the_page_says_what_is_missing(four_bar: str) -> None:

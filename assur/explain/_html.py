@@ -32,11 +32,11 @@ math[display="block"] { margin: 0.4rem 0; padding-block: 0.25em; overflow-x: aut
 .note-eq mtd { text-align: left; padding-inline: 0; }
 table { border-collapse: collapse; margin: 0.6rem 0; }
 td, th { border: 1px solid #d1d5db; padding: 0.2rem 0.5rem; text-align: left; }
-/* a phone: a table wider than the screen scrolls inside the page's width */
-@media screen and (max-width: 560px) {
-  table { display: block; max-width: 100%; overflow-x: auto; } }
+/* a table wider than the screen scrolls in its box, a table still */
+.grid { max-width: 100%; overflow-x: auto; }
 /* on paper a heading stays with what follows it, a table row and an equation whole */
 @media print { math[display="block"] { overflow: visible; font-size: 0.9em; }
+  .grid { overflow: visible; }
   h1, h2, h3, h4, h5, h6 { break-after: avoid; }
   tr, math[display="block"] { break-inside: avoid; } }
 """
@@ -93,7 +93,8 @@ def _block(block: Block, deeper: int = 0) -> str:
             "<tr>" + "".join(f"<td>{inline(c)}</td>" for c in row) + "</tr>"
             for row in block.rows
         )
-        return f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>"
+        table = f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>"
+        return f'<div class="grid">{table}</div>'
     assert isinstance(block, Items)
     return "<ul>" + "".join(f"<li>{inline(x)}</li>" for x in block.items) + "</ul>"
 

@@ -140,9 +140,10 @@ def structure_html(struct: Structure, data: dict[str, Any]) -> str:
     formula = escape(struct.formula.replace(" -> ", " → "))
     return (
         f'<p class="formula">{formula}</p>\n'
-        f'<table class="groups"><thead><tr>{head}</tr></thead>\n<tbody>'
+        f'<div class="scroll"><table class="groups"><thead><tr>{head}</tr></thead>\n'
+        "<tbody>"
         + "\n".join(rows)
-        + "</tbody></table>\n"
+        + "</tbody></table></div>\n"
         + _report_html(str(struct))
     )
 
