@@ -163,12 +163,17 @@ def rows(tex: str, width: Callable[[str], float]) -> list[str]:
         # "a_G" alone, then "= a_F + ...": the two go on one row, split finer
         steps[:2] = [steps[0] + steps[1]]
     out: list[str] = []
-    for row in (part for step in steps for part in _finer(step, width, FINER)):
-        goes_on = row.lstrip().startswith("=") and out and _equation(out[-1])
-        if goes_on and width(out[-1] + row) <= WIDEST:
-            out[-1] += row
-        else:
-            out.append(row)
+    split = False  # whether the last row is the end of a step split finer
+    for step in steps:
+        parts = _finer(step, width, FINER)
+        # a whole step goes on from an equation that ends a split one, if it fits:
+        # "... as link lever turns," / "a^k = 2|w| v_r = 2 * 5.95 * 0.144 = ..."
+        whole = split and len(parts) == 1 and _equation(out[-1])
+        if whole and width(out[-1] + step) <= WIDEST:
+            out[-1] += step
+            continue
+        out += parts
+        split = len(parts) > 1
     return [out[0].lstrip(), *(LEADING.sub("", row) for row in out[1:])]
 
 

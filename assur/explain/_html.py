@@ -48,8 +48,12 @@ def math(tex: str, display: bool = False) -> str:
     A screen reader that does not read MathML reads the TeX, and so does one who
     copies an equation.
     """
-    alt = escape(" ".join(tex.split()), quote=True)
-    return mathml(tex, display).replace(">", f' alttext="{alt}">', 1)
+    return mathml(tex, display).replace(">", f" {_alt(tex)}>", 1)
+
+
+def _alt(tex: str) -> str:
+    """Return the ``alttext`` attribute of an equation: its TeX on one line."""
+    return f'alttext="{escape(" ".join(tex.split()), quote=True)}"'
 
 
 def display(tex: str) -> str:
@@ -63,11 +67,11 @@ def display(tex: str) -> str:
     if len(parts) == 1:
         return math(tex, display=True)
     cells = "".join(
-        f"<mtr><mtd>{INDENT if k else ''}{mathml(row)[6:-7]}</mtd></mtr>"
+        f"<mtr><mtd>{INDENT if k else ''}"
+        f"{mathml(row).removeprefix('<math>').removesuffix('</math>')}</mtd></mtr>"
         for k, row in enumerate(parts)
     )
-    alt = escape(" ".join(tex.split()), quote=True)
-    return f'<math display="block" alttext="{alt}"><mtable>{cells}</mtable></math>'
+    return f'<math display="block" {_alt(tex)}><mtable>{cells}</mtable></math>'
 
 
 def inline(text: str) -> str:

@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
-from assur.explain._breaks import broken
+from assur.explain._breaks import broken, pieces
 
 if TYPE_CHECKING:
     from assur.explain._blocks import Block
@@ -28,7 +28,6 @@ PREAMBLE = r"""\documentclass[a4paper,10pt]{article}
 \DeclareUnicodeCharacter{2192}{$\rightarrow$}
 \setlength{\parindent}{0pt}
 \setlength{\parskip}{0.5em}
-\allowdisplaybreaks
 """
 SECTIONS = {1: "section*", 2: "section*", 3: "subsection*", 4: "subsubsection*"}
 TEXT_SPECIAL = {
@@ -54,16 +53,35 @@ def _text(text: str) -> str:
 
 
 def _display(tex: str) -> str:
-    """Return a display equation as LaTeX: one row centred, several a multline.
+    """Return a display equation as LaTeX, centred; several rows aligned.
 
-    A single row in a multline was stretched to the page's width at its spaces
-    ("v_F      =      (0,      0)").
+    The rows of a long one (:func:`assur.explain._breaks.broken`) are set in a
+    ``split``, their ``=`` under the first row's, a row of terms or words set in
+    from them: a multline zigzagged (first row left, middle centred, last right),
+    and one of a single row stretched its spaces across the page.
     """
     parts = broken(tex)
-    if len(parts) == 1:
-        return f"{{\\small\\begin{{equation*}}{tex}\\end{{equation*}}}}"
-    rows = " \\\\\n".join(parts)
-    return f"{{\\small\\begin{{multline*}}{rows}\\end{{multline*}}}}"
+    if len(parts) > 1:
+        tex = "\\begin{split}" + " \\\\\n".join(_aligned(parts)) + "\\end{split}"
+    return f"{{\\small\\begin{{equation*}}{tex}\\end{{equation*}}}}"
+
+
+def _aligned(parts: list[str]) -> list[str]:
+    """Return the rows of an equation with their alignment points (``&``).
+
+    The first row aligns at its first ``=`` (at its start if it has none); a row
+    that starts with ``=`` at that ``=``; any other a quad in from it, a leading
+    sign as a binary one (``{}+``).
+    """
+    first, *rest = pieces(parts[0])
+    head = f"{first}&{''.join(rest)}" if rest else f"&{first}"
+    rows = [head]
+    for row in parts[1:]:
+        if row.startswith("="):
+            rows.append(f"&{row}")
+        else:
+            rows.append(f"&\\quad {'{}' if row[:1] in '+-' else ''}{row}")
+    return rows
 
 
 def _block(block: Block) -> str:

@@ -33,7 +33,7 @@
   }
   // a diagram's numbers are read, not copied: a minus sign, where the tables keep
   // the hyphen a spreadsheet reads
-  const tick = (v) => fmt(v).replace("-", "\u2212");
+  const tick = (v) => fmt(v).replace(/-/g, "\u2212");
 
   // model (m, y up) to drawing (px, y down), one scale for the whole sweep
   const [bx0, bx1, by0, by1] = data.bounds;
