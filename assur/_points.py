@@ -126,6 +126,7 @@ def resolve_point(
     entry: str = "point",
     _path: tuple[str, ...] = (),
     _known: dict[str, np.ndarray] | None = None,
+    _own: str = "",
 ) -> np.ndarray:
     """Return the reference-pose coordinates (m) of a point specification.
 
@@ -150,8 +151,11 @@ def resolve_point(
         return known[spec]
     if isinstance(spec, str):
         if spec in _path:
-            # the names met on the way, from the first of the circle back to it
-            circle = (*_path[_path.index(spec) :], spec)
+            # the names met on the way, from the first of the circle back to it;
+            # told from the entry's own point where the circle passes it
+            ring = list(_path[_path.index(spec) :])
+            start = ring.index(_own) if _own in ring else 0
+            circle = (*ring[start:], *ring[:start], ring[start])
             _fail(
                 entry,
                 f"points refer to each other in a circle ({' -> '.join(circle)}); "
@@ -165,11 +169,12 @@ def resolve_point(
         ]
         if not named:
             _fail(entry, f"unknown point {describe(spec)}")
-        known[spec] = resolve_point(mech, named[0], entry, (*_path, spec), known)
+        path = (*_path, spec)
+        known[spec] = resolve_point(mech, named[0], entry, path, known, _own)
         return known[spec]
     if isinstance(spec, Toward):
-        a = resolve_point(mech, spec.start, entry, _path, known)
-        b = resolve_point(mech, spec.toward, entry, _path, known)
+        a = resolve_point(mech, spec.start, entry, _path, known, _own)
+        b = resolve_point(mech, spec.toward, entry, _path, known, _own)
         return _toward(spec, a, b, entry)
     return np.asarray(spec, dtype=float)
 
@@ -201,7 +206,7 @@ def _resolver(mech: Mechanism) -> Any:
         if at.__class__ is tuple and name not in plain:
             plain[name] = np.asarray(at, dtype=float)
 
-    def resolve(spec: PointSpec, entry: str = "point") -> np.ndarray:
+    def resolve(spec: PointSpec, entry: str = "point", own: str = "") -> np.ndarray:
         if spec.__class__ is tuple:
             return np.asarray(spec, dtype=float)  # as resolve_point does
         # names are unique by now: ``plain`` holds the one point of each name
@@ -209,7 +214,7 @@ def _resolver(mech: Mechanism) -> Any:
             return plain[spec]  # type: ignore[index]
         if isinstance(spec, Toward) and spec.start in plain and spec.toward in plain:
             return _toward(spec, plain[spec.start], plain[spec.toward], entry)
-        return resolve_point(mech, spec, entry)
+        return resolve_point(mech, spec, entry, _own=own)
 
     return resolve
 
@@ -226,9 +231,9 @@ def _check_resolvable(
     resolve = resolve or _resolver(mech)
     where = _entry if entries else _no_entry
     for joint in mech.joints:
-        resolve(joint.at, where("joints", joint.name, ".at"))
+        resolve(joint.at, where("joints", joint.name, ".at"), joint.name)
     for point in mech.points:
-        resolve(point.at, where("points", point.name, ".at"))
+        resolve(point.at, where("points", point.name, ".at"), point.name)
     for link in mech.links:
         if link.center is not None:
             resolve(link.center, where("links", link.name, ".center"))

@@ -337,7 +337,7 @@ def test_points_in_a_circle_are_named_in_its_order():
     with pytest.raises(ModelError) as caught:
         assur.loads(text)
     assert str(caught.value) == (
-        "points.X.at: points refer to each other in a circle (Y -> Z -> X -> Y); "
+        "points.X.at: points refer to each other in a circle (X -> Y -> Z -> X); "
         "expected names that lead to coordinates [x, y]"
     )
 
