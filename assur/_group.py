@@ -49,6 +49,8 @@ class Group:
     sliding : tuple of str
         Class III and higher: the group's prismatic pairs, internal and external
         (a dyad's kind names its own).
+    carriers : tuple of str
+        The known link each external pair joins, in the order of ``external``.
     """
 
     group_class: int
@@ -61,6 +63,7 @@ class Group:
     base: str = ""
     basis: tuple[str, ...] = ()
     sliding: tuple[str, ...] = ()
+    carriers: tuple[str, ...] = ()
 
     @property
     def label(self) -> str:
@@ -121,6 +124,7 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
         base,
         basis,
         tuple(p.name for p in counted if p.kind == "P"),
+        _carriers(external, known),
     )
 
 
@@ -137,8 +141,20 @@ def _describe_dyad(
     kind = max(forward, forward[::-1])
     attached = _known_links([e1, e2], known)
     return Group(
-        2, 2, kind, (first, second), (middle.name,), (e1.name, e2.name), attached
+        2,
+        2,
+        kind,
+        (first, second),
+        (middle.name,),
+        (e1.name, e2.name),
+        attached,
+        carriers=_carriers([e1, e2], known),
     )
+
+
+def _carriers(external: list[Pair], known: set[str]) -> tuple[str, ...]:
+    """Return the known link each of the ``external`` pairs joins, in their order."""
+    return tuple(next(x for x in p.links if x in known) for p in external)
 
 
 def _known_links(external: list[Pair], known: set[str]) -> tuple[str, ...]:

@@ -45,14 +45,23 @@ def _pairs_text(g: Group) -> str:
     """
     # the pairs that set the class first, in order round their contour
     internal = (*g.basis, *(x for x in g.internal if x not in g.basis))
+    known = _counted("known link", g.attached_to)
+    if len(g.external) > len(g.attached_to) > 1:
+        # three pairs on two links do not pair off in order: each link's are named
+        known = _counted("known link", tuple(_carried(g, x) for x in g.attached_to))
     text = (
         f"{_counted('internal pair', internal)}; "
-        f"{_counted('external pair', g.external)} on the "
-        f"{_counted('known link', g.attached_to)}"
+        f"{_counted('external pair', g.external)} on the {known}"
     )
     if g.sliding:
         text += f"; {_counted('prismatic pair', g.sliding)}, the others revolute"
     return text
+
+
+def _carried(g: Group, link: str) -> str:
+    """Return a known link and the group's external pairs on it: "ground (F and G)"."""
+    on = tuple(p for p, x in zip(g.external, g.carriers, strict=True) if x == link)
+    return f"{link} ({_names(on)})"
 
 
 def _why(g: Group, said: dict[tuple[int, int], Group] | None = None) -> str:

@@ -853,6 +853,8 @@ def test_report_of_a_triad():
         "internal pairs C, D and E; external pairs B, F and G on the known links"
         in report
     )
+    # three pairs on two links do not pair off in order: each link's are named
+    assert "on the known links crank (B) and ground (F and G)." in report
     assert WHY.format(k=4, p=6, n=12) in report
     assert "Class of the mechanism: III" in report
     # what makes it class III: the base link with its three internal pairs

@@ -254,7 +254,8 @@ def test_the_note_says_why_a_group_is_of_its_class() -> None:
     note = str(assur.explain(assur.load(EXAMPLES / "class3.toml"), 30.0))
     assert (
         "triad (rod, plate, left_rocker, right_rocker): internal pairs C, D and E; "
-        "external pairs B, F and G on the known links crank and ground. Why an Assur "
+        "external pairs B, F and G on the known links crank (B) and ground (F and G). "
+        "Why an Assur "
         "group: $k = 4$ links, $p = 6$ lower pairs" in note
     )
     # the counts typeset as the note's other formulas, minus signs and all
@@ -320,7 +321,7 @@ def test_a_triad_names_its_prismatic_pairs() -> None:
     assert "; prismatic pair C, the others revolute." in str(s)
     assert s.to_dict()["groups"][0]["sliding_pairs"] == ["C"]
     note = str(assur.explain(triad, 0.0))
-    assert "on the known links crank and ground; prismatic pair C, the others" in note
+    assert "on the known links crank (B) and ground (F and G); prismatic pair C" in note
     # an all-revolute triad and a dyad: no such words
     assert "prismatic pair" not in str(
         assur.structure(assur.load(EXAMPLES / "class3.toml"))
