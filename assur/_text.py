@@ -258,12 +258,17 @@ def describe(value: object, limit: int = ECHO_LIMIT) -> str:
     >>> import numpy as np
     >>> describe(np.float64(-1.5)), describe(np.int64(3)), describe(np.float32("nan"))
     ('-1.5', '3', 'nan')
+    >>> describe(np.bool_(True)) == describe(True)
+    True
     """
     return shortened(_describe(value, limit), limit)
 
 
 def _describe(value: object, limit: int) -> str:
     """Body of :func:`describe`, before the final cut."""
+    if hasattr(value, "dtype") and getattr(value, "shape", None) == ():
+        # a numpy scalar reads as the Python one it holds (no import of numpy)
+        value = value.item()  # type: ignore[attr-defined]
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, str):
