@@ -20,7 +20,7 @@ from assur.model import GROUND
 
 __all__ = ["LINE", "_leftover"]
 
-LINE = 400
+LINE = 420
 """Most characters of an error's message: one line a reader takes in."""
 
 
@@ -49,8 +49,9 @@ def _leftover(
         )
     else:
         head = (
-            f"links {listing(shown)} are left over: they form no Assur group "
-            f"(3k = 2p, no smaller group) on the known links {named}"
+            f"links {listing(shown)} are left over: they form no Assur group (a "
+            "group needs 3k = 2p and no smaller group inside) on the known links "
+            f"{named}"
         )
     if len(head) + len(rest) < LINE:
         return head + rest
