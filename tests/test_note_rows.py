@@ -16,8 +16,17 @@ import pytest
 import assur
 from assur.explain import explain
 from assur.explain._blocks import Display
-from assur.explain._breaks import WIDEST, clauses, pieces, rows, shown_width, terms
+from assur.explain._breaks import (
+    WIDEST,
+    broken,
+    clauses,
+    pieces,
+    rows,
+    shown_width,
+    terms,
+)
 from assur.explain._html import display
+from assur.explain._latex import _aligned
 from assur.explain._mathml import mathml
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
@@ -175,3 +184,17 @@ def test_no_row_is_a_left_side_alone_and_a_split_equation_goes_on(stem: str) -> 
         if "counter-clockwise" in tex:
             (coriolis,) = [row for row in got if row.startswith("a^k")]
             assert "= 2 \\cdot" in coriolis  # its value on its row
+
+
+def test_the_rows_of_a_line_set_in_go_on_further_in_than_it() -> None:
+    # a Coriolis term's note ("\qquad 2 omega k x v_r: ... turned 90 deg") broke
+    # into rows set a quad from the alignment point, a quad left of its first row
+    (coriolis,) = [
+        tex
+        for tex in _lines("whitworth")
+        if tex.startswith("\\qquad") and "turns" in tex
+    ]
+    first, *rest = _aligned(broken(coriolis))
+    assert first.startswith("&\\qquad ")
+    assert rest
+    assert all(row.startswith("&\\qquad \\quad ") for row in rest)

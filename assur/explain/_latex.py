@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
-from assur.explain._breaks import broken, pieces
+from assur.explain._breaks import LEADING, broken, pieces
 
 if TYPE_CHECKING:
     from assur.explain._blocks import Block
@@ -67,20 +67,29 @@ def _display(tex: str) -> str:
 
 
 def _aligned(parts: list[str]) -> list[str]:
-    """Return the rows of an equation with their alignment points (``&``).
+    r"""Return the rows of an equation with their alignment points (``&``).
 
     The first row aligns at its first ``=`` (at its start if it has none); a row
     that starts with ``=`` at that ``=``; any other a quad in from it, a leading
-    sign as a binary one (``{}+``).
+    sign as a binary one (``{}+``), and as far in as the first row's own spaces
+    (``\qquad``) where that row has no ``=``.
     """
     first, *rest = pieces(parts[0])
-    head = f"{first}&{''.join(rest)}" if rest else f"&{first}"
+    indent = "\\quad "
+    if rest:
+        head = f"{first}&{''.join(rest)}"
+    else:
+        # a line set in (the "\qquad" of a Coriolis term's note) keeps its rows in
+        # further than its first: they went on a quad to the left of it
+        lead = LEADING.match(first)
+        indent = (lead.group() if lead else "") + indent
+        head = f"&{first}"
     rows = [head]
     for row in parts[1:]:
         if row.startswith("="):
             rows.append(f"&{row}")
         else:
-            rows.append(f"&\\quad {'{}' if row[:1] in '+-' else ''}{row}")
+            rows.append(f"&{indent}{'{}' if row[:1] in '+-' else ''}{row}")
     return rows
 
 
