@@ -46,7 +46,8 @@ def _pairs_text(g: Group) -> str:
     # the pairs that set the class first, in order round their contour
     internal = (*g.basis, *(x for x in g.internal if x not in g.basis))
     known = _counted("known link", g.attached_to)
-    if len(g.external) > len(g.attached_to) > 1:
+    carried = len(g.carriers) == len(g.external)  # a Group made by hand may lack them
+    if carried and len(g.external) > len(g.attached_to) > 1:
         # three pairs on two links do not pair off in order: each link's are named
         known = _counted("known link", tuple(_carried(g, x) for x in g.attached_to))
     text = (

@@ -1182,3 +1182,17 @@ def test_the_getting_started_page_shows_the_structure_command_s_own_output(capsy
     assert [line.strip() for line in shown[:-1]] == [
         line.strip() for line in printed.splitlines()
     ]
+
+
+def test_report_of_a_group_made_without_its_carriers():
+    # Group is public and its carriers default to (): the report's naming of each
+    # known link's external pairs raised "zip() argument 2 is shorter than argument 1"
+    from assur.report import _pairs_text
+
+    g = assur.Group(
+        3, 6, "RRR", ("a", "b", "c", "d"), ("C", "D", "E"), ("B", "F", "G"),
+        ("crank", "ground"),
+    )  # fmt: skip
+    assert _pairs_text(g).endswith(
+        "external pairs B, F and G on the known links crank and ground"
+    )
