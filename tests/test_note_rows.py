@@ -198,3 +198,14 @@ def test_the_rows_of_a_line_set_in_go_on_further_in_than_it() -> None:
     assert first.startswith("&\\qquad ")
     assert rest
     assert all(row.startswith("&\\qquad \\quad ") for row in rest)
+
+
+def test_an_equals_sign_in_brackets_is_no_step_and_an_empty_row_no_sign() -> None:
+    # "v = (x_0 = 0.1, ...)" was broken before the "=" inside its parentheses,
+    # which LaTeX then aligned under the "=" of v
+    inner = ", ".join(f"x_{k} = {k}.1234" for k in range(10))
+    assert pieces(f"v = ({inner})") == ["v ", f"= ({inner})"]
+    from assur.explain._latex import _aligned
+
+    # a row of nothing but spaces takes no sign's braces
+    assert _aligned(["a = 1", ""]) == ["a &= 1", "&\\quad "]

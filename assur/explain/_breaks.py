@@ -44,7 +44,7 @@ BLANKS = frozenset(("\\ ", "\\,", "\\;", "\\:", "\\quad", "\\qquad"))
 
 
 def pieces(tex: str) -> list[str]:
-    r"""Split ``tex`` before each ``=`` and ``\quad`` outside braces and fences.
+    r"""Split ``tex`` before each ``=`` and ``\quad`` outside braces and brackets.
 
     A statement after a ``\quad`` keeps its first ``=``: a row never ends with the
     name an equation is of. Joined, the pieces are ``tex``.
@@ -58,9 +58,9 @@ def pieces(tex: str) -> list[str]:
     start = depth = 0
     at = 0
     for token in TOKEN.findall(tex):
-        if token in ("{", "\\left"):
+        if token in ("{", "\\left", "(", "["):
             depth += 1
-        elif token in ("}", "\\right"):
+        elif token in ("}", "\\right", ")", "]"):
             depth -= 1
         elif depth == 0 and at > start and (token == "=" or token in QUADS):
             named = (

@@ -89,7 +89,7 @@ def _aligned(parts: list[str]) -> list[str]:
         if row.startswith("="):
             rows.append(f"&{row}")
         else:
-            rows.append(f"&{indent}{'{}' if row[:1] in '+-' else ''}{row}")
+            rows.append(f"&{indent}{'{}' if row[:1] in ('+', '-') else ''}{row}")
     return rows
 
 
