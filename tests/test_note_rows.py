@@ -205,7 +205,16 @@ def test_an_equals_sign_in_brackets_is_no_step_and_an_empty_row_no_sign() -> Non
     # which LaTeX then aligned under the "=" of v
     inner = ", ".join(f"x_{k} = {k}.1234" for k in range(10))
     assert pieces(f"v = ({inner})") == ["v ", f"= ({inner})"]
-    from assur.explain._latex import _aligned
-
     # a row of nothing but spaces takes no sign's braces
     assert _aligned(["a = 1", ""]) == ["a &= 1", "&\\quad "]
+
+
+def test_a_sign_after_words_keeps_its_number_and_rows_align_at_the_equals() -> None:
+    # a minus after \text{...} began a row as a subtraction, where the MathML
+    # sets it as the number's sign
+    words = r"x = 1,\ \text{read at the point where the long link meets the ground } "
+    got = broken(words + r"-0.01\ \mathrm{m} \text{ and then more words}")
+    assert not any(row.startswith("-") for row in got)
+    # a first row whose "=" comes after a statement's words aligns at that "="
+    first = r"\text{at } B \quad a = 1 + 2"
+    assert _aligned([first, "= 3"]) == [r"\text{at } B \quad a &= 1 + 2", "&= 3"]

@@ -16,7 +16,7 @@ from typing import Any
 
 from assur.explain._mathml import SIGN_AFTER, SYMBOLS, TOKEN, mathml
 
-__all__ = ["WIDEST", "broken", "clauses", "pieces", "rows", "terms"]
+__all__ = ["WIDEST", "broken", "clauses", "first_equals", "pieces", "rows", "terms"]
 
 WIDEST = 66
 """Most characters a row holds (as :func:`shown_width` counts them). An A4 column is
@@ -26,11 +26,16 @@ QUADS = ("\\quad", "\\qquad")
 """Spaces that separate two statements on one line."""
 LEADING = re.compile(r"^(?:\\q?quad|\\[ ,;]|\s)+")
 """The spaces a row after the first does without: its start sets it apart."""
+WORDS = frozenset(("\\text",))
+"""Commands whose braces hold words: a sign after them is a number's, as in MathML."""
+WORDS_END = "\\text}"
+"""What :func:`_split` takes the token before to be just after such braces."""
 SIGNED_AFTER = frozenset(
     (
         "^",
         "_",
         "-",
+        WORDS_END,
         *SIGN_AFTER,
         *(f"\\{n}" for n, s in SYMBOLS.items() if s in SIGN_AFTER),
     )
@@ -72,6 +77,26 @@ def pieces(tex: str) -> list[str]:
         at += len(token)
     out.append(tex[start:])
     return out
+
+
+def first_equals(tex: str) -> int:
+    r"""Return where the first ``=`` outside braces and brackets is in ``tex``, or -1.
+
+    Examples
+    --------
+    >>> first_equals(r"\text{at } B \quad a_{x=1} = (b = c) = d")
+    27
+    """
+    depth = at = 0
+    for token in TOKEN.findall(tex):
+        if token in ("{", "\\left", "(", "["):
+            depth += 1
+        elif token in ("}", "\\right", ")", "]"):
+            depth -= 1
+        elif token == "=" and depth == 0:
+            return at
+        at += len(token)
+    return -1
 
 
 def terms(tex: str, inside: int = 0) -> list[str]:
@@ -124,11 +149,18 @@ def _split(tex: str, where: Callable[[str, str, int, int], bool]) -> list[str]:
     out: list[str] = []
     start = braces = brackets = at = 0
     before = ""
+    words: list[bool] = []  # for each brace open, whether it holds words (\text)
     for token in TOKEN.findall(tex):
         if token in ("{", "\\left"):
             braces += 1
+            words.append(token == "{" and before in WORDS)
         elif token in ("}", "\\right"):
             braces -= 1
+            if words and words.pop():
+                # after words a minus is a sign, as the MathML sets it
+                before = WORDS_END
+                at += len(token)
+                continue
         elif token in ("(", "["):
             brackets += 1
         elif token in (")", "]"):

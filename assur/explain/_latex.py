@@ -9,7 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
-from assur.explain._breaks import LEADING, broken, pieces
+from assur.explain._breaks import LEADING, broken, first_equals
 
 if TYPE_CHECKING:
     from assur.explain._blocks import Block
@@ -74,10 +74,12 @@ def _aligned(parts: list[str]) -> list[str]:
     sign as a binary one (``{}+``), and as far in as the first row's own spaces
     (``\qquad``) where that row has no ``=``.
     """
-    first, *rest = pieces(parts[0])
+    first = parts[0]
     indent = "\\quad "
-    if rest:
-        head = f"{first}&{''.join(rest)}"
+    at = first_equals(first)
+    if at >= 0:
+        # its first "=" outside braces and brackets, a later statement's too
+        head = f"{first[:at]}&{first[at:]}"
     else:
         # a line set in (the "\qquad" of a Coriolis term's note) keeps its rows in
         # further than its first: they went on a quad to the left of it
