@@ -72,20 +72,28 @@ def test_every_picture_of_the_page_is_named() -> None:
     assert named == ["Group 1: RRR (3, 4)", "Group 2: RRR (5, 6)"]
 
 
+def _six_bar_script(folder: Path, tail: str) -> Any:
+    """Run the six-bar's report script under node on the fake DOM, then ``tail``.
+
+    Returns what ``tail`` printed, read as JSON; skips without node.
+    """
+    node = _executable("node", "nodejs")
+    if node is None:
+        pytest.skip("node not found")
+    path = folder / "six_bar.html"
+    write_report(assur.load(EXAMPLES / "six_bar_lecture.toml"), path)
+    script = FAKE_DOM.split("const heads = [];")[0] + tail
+    out = subprocess.run(
+        [node, "-e", script, str(path)], capture_output=True, text=True, check=True
+    )
+    return json.loads(out.stdout)
+
+
 def test_a_diagram_s_series_differ_by_more_than_their_hue(tmp_path: Path) -> None:
     # the joint reactions (7 series) and the angular velocities (5) were told by
     # hue alone, six of which print as one grey: each series now has a pattern
     # of its own among its first five, and its legend key shows it
-    node = _executable("node", "nodejs")
-    if node is None:
-        pytest.skip("node not found")
-    path = tmp_path / "six_bar.html"
-    write_report(assur.load(EXAMPLES / "six_bar_lecture.toml"), path)
-    script = FAKE_DOM.split("const heads = [];")[0] + CHART_LINES
-    out = subprocess.run(
-        [node, "-e", script, str(path)], capture_output=True, text=True, check=True
-    )
-    charts = {c["title"]: c for c in json.loads(out.stdout)}
+    charts = {c["title"]: c for c in _six_bar_script(tmp_path, CHART_LINES)}
     reactions = charts["Joint reactions |F|"]["series"]
     assert len(reactions) == 7
     patterns = [dash for _, dash in reactions]
@@ -170,16 +178,8 @@ console.log(JSON.stringify(texts));
 
 def test_a_diagram_s_negative_numbers_carry_a_minus_sign(tmp_path: Path) -> None:
     # they were written with a hyphen ("-0.5"), a dash shorter than the plus
-    node = _executable("node", "nodejs")
-    if node is None:
-        pytest.skip("node not found")
-    path = tmp_path / "six_bar.html"
-    write_report(assur.load(EXAMPLES / "six_bar_lecture.toml"), path)
-    script = FAKE_DOM.split("const heads = [];")[0] + TICK_TEXTS
-    out = subprocess.run(
-        [node, "-e", script, str(path)], capture_output=True, text=True, check=True
-    )
-    numbers = [t for t in json.loads(out.stdout) if re.fullmatch(r"\S?[\d.]+", t)]
+    texts = _six_bar_script(tmp_path, TICK_TEXTS)
+    numbers = [t for t in texts if re.fullmatch(r"\S?[\d.]+", t)]
     assert any(t.startswith("\u2212") for t in numbers)
     assert not any(t.startswith("-") for t in numbers)
 
