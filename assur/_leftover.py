@@ -20,7 +20,7 @@ from assur.model import GROUND
 
 __all__ = ["LINE", "_leftover"]
 
-LINE = 420
+LINE = 400
 """Most characters of an error's message: one line a reader takes in."""
 
 
@@ -49,9 +49,8 @@ def _leftover(
         )
     else:
         head = (
-            f"links {listing(shown)} are left over: they form no Assur group (a "
-            "group needs 3k = 2p and no smaller group inside) on the known links "
-            f"{named}"
+            f"links {listing(shown)} are left over: they form no Assur group (one "
+            f"needs 3k = 2p, no smaller group) on the known links {named}"
         )
     if len(head) + len(rest) < LINE:
         return head + rest
