@@ -218,3 +218,14 @@ def test_a_sign_after_words_keeps_its_number_and_rows_align_at_the_equals() -> N
     # a first row whose "=" comes after a statement's words aligns at that "="
     first = r"\text{at } B \quad a = 1 + 2"
     assert _aligned([first, "= 3"]) == [r"\text{at } B \quad a &= 1 + 2", "&= 3"]
+
+
+def test_a_bracket_in_words_does_not_hold_a_row_together() -> None:
+    # "\text{(its table, read at } 250 ... \text{)}": the "(" in the words was
+    # counted open for the rest of the row, which then could not be broken
+    note = explain(assur.load(DATA / "explain" / "load_tables.toml"), 250.0)
+    lines = [line for b in note.blocks if isinstance(b, Display) for line in b.lines]
+    tables = [line for line in lines if "its table" in line]
+    assert tables
+    for tex in tables:
+        assert all(width(row) <= WIDEST for row in rows(tex, width)), tex

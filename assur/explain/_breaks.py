@@ -161,9 +161,9 @@ def _split(tex: str, where: Callable[[str, str, int, int], bool]) -> list[str]:
                 before = WORDS_END
                 at += len(token)
                 continue
-        elif token in ("(", "["):
-            brackets += 1
-        elif token in (")", "]"):
+        elif token in ("(", "[") and not braces:
+            brackets += 1  # a bracket in braces (words, a script) is theirs alone
+        elif token in (")", "]") and not braces:
             brackets -= 1
         elif at > start and where(token, before, braces, brackets):
             out.append(tex[start:at])
