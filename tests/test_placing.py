@@ -32,30 +32,20 @@ matplotlib.use("Agg")
 
 
 def _old_crossed(low: np.ndarray, high: np.ndarray, segments: np.ndarray) -> np.ndarray:
-    """Every box (``low``, ``high``) against every segment, as it was: (boxes, k)."""
-    a = segments[None, :, 0, :]
-    d = segments[None, :, 1, :] - a
-    lo, hi = low[:, None, :], high[:, None, :]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t1 = (lo - a) / d
-        t2 = (hi - a) / d
-    flat = np.abs(d) < 1e-9
-    inside = (a >= lo) & (a <= hi)
-    enter = np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(t1, t2))
-    leave = np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(t1, t2))
-    start = np.maximum(enter.max(axis=2), 0.0)
-    stop = np.minimum(leave.min(axis=2), 1.0)
-    return start <= stop
+    """Every box (``low``, ``high``) against every segment, as it was: (boxes, k).
+
+    Each pair clipped, none passed over: the clipping is the one the new measure
+    uses (:func:`_placing._clipped`), which the spatial pruning must not change.
+    """
+    n, k = len(low), len(segments)
+    boxes, lines = np.repeat(np.arange(n), k), np.tile(np.arange(k), n)
+    met = _placing._clipped(low[boxes], high[boxes], segments[lines])
+    return met.reshape(n, k)
 
 
-def _old_distance(points: np.ndarray, ends: np.ndarray) -> np.ndarray:
-    """Each point's distance from the segment ``ends``, as it was."""
-    a, b = ends
-    d = b - a
-    square = float(np.dot(d, d))
-    t = np.zeros(len(points)) if square == 0 else (points - a) @ d / square
-    foot = a + np.clip(t, 0.0, 1.0)[:, None] * d
-    return np.hypot(*(points - foot).T)
+_old_distance = _placing._distance
+"""Each point's distance from a segment: the measure the vectorisation left as it
+was."""
 
 
 def _old_box_distance(
