@@ -229,3 +229,19 @@ def test_a_bracket_in_words_does_not_hold_a_row_together() -> None:
     assert tables
     for tex in tables:
         assert all(width(row) <= WIDEST for row in rows(tex, width)), tex
+
+
+def test_a_fence_of_left_and_right_closes_as_it_opens() -> None:
+    # the ")" of \right) was taken for a bracket closing none: no term after it
+    # could start a row
+    assert terms(r"x = \left(a - b\right) + c - d") == [
+        r"x = \left(a - b\right) ",
+        "+ c ",
+        "- d",
+    ]
+    # an "=" in words or in brackets is no step; one after them is
+    assert pieces(r"\text{(at } s = 1\text{)} = 2") == [
+        r"\text{(at } s ",
+        r"= 1\text{)} ",
+        "= 2",
+    ]

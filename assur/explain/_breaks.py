@@ -59,24 +59,15 @@ def pieces(tex: str) -> list[str]:
     >>> pieces(r"a = \frac{b}{c=d} = 2,\quad e = \left(f = g\right) = 3")
     ['a ', '= \\frac{b}{c=d} ', '= 2,', '\\quad e = \\left(f = g\\right) ', '= 3']
     """
-    out: list[str] = []
-    start = depth = 0
-    at = 0
-    for token in TOKEN.findall(tex):
-        if token in ("{", "\\left", "(", "["):
-            depth += 1
-        elif token in ("}", "\\right", ")", "]"):
-            depth -= 1
-        elif depth == 0 and at > start and (token == "=" or token in QUADS):
-            named = (
-                tex[start:at].lstrip().startswith(QUADS) and "=" not in tex[start:at]
-            )
-            if token in QUADS or not named:
-                out.append(tex[start:at])
-                start = at
-        at += len(token)
-    out.append(tex[start:])
-    return out
+
+    def where(token: str, before: str, braces: int, brackets: int, piece: str) -> bool:
+        if braces or brackets or not (token == "=" or token in QUADS):
+            return False
+        # a statement's first "=" stays with the name it follows
+        named = piece.lstrip().startswith(QUADS) and "=" not in piece
+        return token in QUADS or not named
+
+    return _split(tex, where)
 
 
 def first_equals(tex: str) -> int:
@@ -87,16 +78,12 @@ def first_equals(tex: str) -> int:
     >>> first_equals(r"\text{at } B \quad a_{x=1} = (b = c) = d")
     27
     """
-    depth = at = 0
-    for token in TOKEN.findall(tex):
-        if token in ("{", "\\left", "(", "["):
-            depth += 1
-        elif token in ("}", "\\right", ")", "]"):
-            depth -= 1
-        elif token == "=" and depth == 0:
-            return at
-        at += len(token)
-    return -1
+
+    def where(token: str, before: str, braces: int, brackets: int, piece: str) -> bool:
+        return token == "=" and not braces and not brackets
+
+    first, *rest = _split(tex, where)
+    return len(first) if rest else -1
 
 
 def terms(tex: str, inside: int = 0) -> list[str]:
@@ -114,7 +101,7 @@ def terms(tex: str, inside: int = 0) -> list[str]:
     ['= -[a ', '+ b \\cdot (c - d)]']
     """
 
-    def where(token: str, before: str, braces: int, brackets: int) -> bool:
+    def where(token: str, before: str, braces: int, brackets: int, piece: str) -> bool:
         binary = before != "" and before not in SIGNED_AFTER
         return token in ("+", "-") and binary and not braces and brackets <= inside
 
@@ -133,18 +120,18 @@ def clauses(tex: str) -> list[str]:
     ['x,\\ ', 'y = (1, 2) ', '\\text{ at } B']
     """
 
-    def where(token: str, before: str, braces: int, brackets: int) -> bool:
+    def where(token: str, before: str, braces: int, brackets: int, piece: str) -> bool:
         after_comma = before == "," and not _blank(token)
         return (after_comma or token == "\\text") and not braces and not brackets
 
     return _split(tex, where)
 
 
-def _split(tex: str, where: Callable[[str, str, int, int], bool]) -> list[str]:
+def _split(tex: str, where: Callable[[str, str, int, int, str], bool]) -> list[str]:
     """Split ``tex`` before each token ``where`` says is a place to break.
 
     ``where`` is given the token, the one before it (spaces, TeX's too, passed
-    over) and the numbers of braces and of brackets open there.
+    over), the numbers of braces and of brackets open there, and the piece so far.
     """
     out: list[str] = []
     start = braces = brackets = at = 0
@@ -161,11 +148,13 @@ def _split(tex: str, where: Callable[[str, str, int, int], bool]) -> list[str]:
                 before = WORDS_END
                 at += len(token)
                 continue
+        elif token in ("(", "[", ")", "]") and before in ("\\left", "\\right"):
+            pass  # the fence of \left or \right, counted with it as a brace
         elif token in ("(", "[") and not braces:
             brackets += 1  # a bracket in braces (words, a script) is theirs alone
         elif token in (")", "]") and not braces:
             brackets -= 1
-        elif at > start and where(token, before, braces, brackets):
+        elif at > start and where(token, before, braces, brackets, tex[start:at]):
             out.append(tex[start:at])
             start = at
         if not _blank(token):
