@@ -17,7 +17,6 @@ import pytest
 
 from assur.plotting import _placing
 from assur.plotting._placing import (
-    BARRED,
     CLASH,
     PASSES,
     RIVAL,
@@ -71,19 +70,9 @@ def _old_box_distance(
 def _old_costs(centres, size, frame, boxes, segments, own, named, clear, half=0.0):
     """A name's cost at each place, one named side at a time, as it was."""
     low, high = centres - size / 2, centres + size / 2
-    cost = np.zeros(len(centres))
-    out = (low < frame[:2]).any(axis=1) | (high > frame[2:]).any(axis=1)
-    cost += BARRED * out
-    boxes = boxes[~np.isnan(boxes).any(axis=1)] if len(boxes) else boxes.reshape(0, 4)
-    if len(boxes):
-        wide = np.minimum(high[:, None, 0], boxes[None, :, 2]) - np.maximum(
-            low[:, None, 0], boxes[None, :, 0]
-        )
-        tall = np.minimum(high[:, None, 1], boxes[None, :, 3]) - np.maximum(
-            low[:, None, 1], boxes[None, :, 1]
-        )
-        area = np.clip(wide, 0, None) * np.clip(tall, 0, None)
-        cost += CLASH * (area > 0).sum(axis=1) + area.sum(axis=1)
+    # the frame and the boxes are measured as they were (the vectorisation left
+    # that part alone)
+    cost = _placing._framed(low, high, frame, boxes)
     cost += CLASH * _old_crossed(low - half, high + half, segments).sum(axis=1)
     apart = np.array([_old_box_distance(low, high, s) for s in named])
     mine = apart[own]

@@ -192,6 +192,30 @@ def _candidates(
     return np.concatenate(rings)
 
 
+def _framed(
+    low: np.ndarray, high: np.ndarray, frame: np.ndarray, boxes: np.ndarray
+) -> np.ndarray:
+    """Return the cost of each box (``low``, ``high``) out of ``frame`` or on ``boxes``.
+
+    :data:`BARRED` for a box out of the frame, and :data:`CLASH` for each of the
+    boxes (x0, y0, x1, y1; NaN ones passed over) it overlaps, plus the area shared.
+    """
+    out = (low < frame[:2]).any(axis=1) | (high > frame[2:]).any(axis=1)
+    cost = np.zeros(len(low))
+    cost += BARRED * out
+    boxes = boxes[~np.isnan(boxes).any(axis=1)] if len(boxes) else boxes.reshape(0, 4)
+    if len(boxes):
+        wide = np.minimum(high[:, None, 0], boxes[None, :, 2]) - np.maximum(
+            low[:, None, 0], boxes[None, :, 0]
+        )
+        tall = np.minimum(high[:, None, 1], boxes[None, :, 3]) - np.maximum(
+            low[:, None, 1], boxes[None, :, 1]
+        )
+        area = np.clip(wide, 0, None) * np.clip(tall, 0, None)
+        cost += CLASH * (area > 0).sum(axis=1) + area.sum(axis=1)
+    return cost
+
+
 def _costs(
     centres: np.ndarray,
     size: np.ndarray,
@@ -211,19 +235,7 @@ def _costs(
     within ``half`` of it.
     """
     low, high = centres - size / 2, centres + size / 2
-    cost = np.zeros(len(centres))
-    out = (low < frame[:2]).any(axis=1) | (high > frame[2:]).any(axis=1)
-    cost += BARRED * out
-    boxes = boxes[~np.isnan(boxes).any(axis=1)] if len(boxes) else boxes.reshape(0, 4)
-    if len(boxes):
-        wide = np.minimum(high[:, None, 0], boxes[None, :, 2]) - np.maximum(
-            low[:, None, 0], boxes[None, :, 0]
-        )
-        tall = np.minimum(high[:, None, 1], boxes[None, :, 3]) - np.maximum(
-            low[:, None, 1], boxes[None, :, 1]
-        )
-        area = np.clip(wide, 0, None) * np.clip(tall, 0, None)
-        cost += CLASH * (area > 0).sum(axis=1) + area.sum(axis=1)
+    cost = _framed(low, high, frame, boxes)
     cost += CLASH * _crossed(low - half, high + half, segments).sum(axis=1)
     # how far each place's box is from each named side or point
     apart = _box_distances(low, high, named)
