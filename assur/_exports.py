@@ -17,6 +17,9 @@ from assur._vec import Array
 from assur.columns import Column
 from assur.model import Mechanism
 
+if TYPE_CHECKING:  # pandas is an optional extra, imported when asked for
+    import pandas as pd
+
 __all__ = ["Columns"]
 
 
@@ -152,11 +155,16 @@ class Columns(metaclass=ABCMeta):
             ],
         }
 
-    def to_pandas(self) -> Any:
+    def to_pandas(self) -> pd.DataFrame:
         """Return a pandas DataFrame (pandas must be installed).
 
         Its ``attrs["units"]`` gives each column's unit by name (``"N"``,
         ``"rad/s"``; angles in ``"deg"``), as the Parquet file's metadata does.
+
+        Returns
+        -------
+        pandas.DataFrame
+            One column per column of the table, one row per row.
 
         Raises
         ------
@@ -165,9 +173,9 @@ class Columns(metaclass=ABCMeta):
         """
         from assur._optional import optional
 
-        pd = optional("pandas", "Table.to_pandas()", "study")
+        pandas = optional("pandas", "Table.to_pandas()", "study")
 
-        frame = pd.DataFrame(dict(zip(self.columns, self.arrays(), strict=True)))
+        frame = pandas.DataFrame(dict(zip(self.columns, self.arrays(), strict=True)))
         frame.attrs["units"] = {name: self.column(name).unit for name in self.columns}
         return frame
 

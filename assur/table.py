@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -24,6 +24,9 @@ from assur.errors import UnknownNameError, UsageError
 from assur.kinetostatics import ForceState
 from assur.model import Mechanism
 from assur.plan import Plan
+
+if TYPE_CHECKING:  # matplotlib is imported only when a picture is drawn
+    from matplotlib.axes import Axes
 
 __all__ = ["Columns", "Table"]
 
@@ -383,7 +386,7 @@ class Table(Columns):
 
         return summarize(self)
 
-    def plot(self, angle: ArrayLike | None = None, **kwargs: Any) -> Any:
+    def plot(self, angle: ArrayLike | None = None, **kwargs: Any) -> Axes:
         """Draw the mechanism at a driver position (see :func:`assur.plotting.draw`).
 
         Parameters
@@ -393,6 +396,11 @@ class Table(Columns):
             the nearest row is drawn. Default: the first row.
         **kwargs
             Passed to :func:`assur.plotting.draw` (``forces``, ``ax``, ...).
+
+        Returns
+        -------
+        matplotlib.axes.Axes
+            The axes drawn on.
         """
         from assur.plotting import draw
 
