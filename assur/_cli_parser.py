@@ -1,8 +1,9 @@
 """The command line's argument parser: one line for each usage error, no shortening.
 
 argparse's own prints its usage block before the line that says what is wrong, takes
-the start of an option's name for the option, and lets a failed write of its help
-pass: :class:`_Parser` does none of these.
+the start of an option's name for the option, keeps the last of an option's values
+given twice, and lets a failed write of its help pass: :class:`_Parser` does none of
+these.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ import argparse
 import sys
 from typing import Any, NoReturn
 
-from assur._text import spoken, suggest
+from assur._text import describe, spoken, suggest
 
 __all__ = ["_Parser"]
 
@@ -28,6 +29,37 @@ class _Parser(argparse.ArgumentParser):
         # refused by another, and every new option could break a shortening
         kwargs.setdefault("allow_abbrev", False)
         super().__init__(*args, **kwargs)
+        self._given: dict[argparse.Action, tuple[str, Any]] = {}
+
+    def parse_known_args(self, args: Any = None, namespace: Any = None) -> Any:
+        """Parse as argparse does, no option given yet (see :meth:`_get_values`)."""
+        self._given = {}
+        return super().parse_known_args(args, namespace)
+
+    def _get_values(self, action: argparse.Action, arg_strings: list[str]) -> Any:
+        """Return an option's value; refuse a second, different value of it.
+
+        argparse keeps the last value: ``--angles 0:360:10 --angles 5`` analysed one
+        position, ``--csv a.csv --csv b.csv`` wrote b.csv alone. A flag given twice
+        (``--json``) and the same value again ask for the same result and pass; an
+        option meant to repeat (an ``append`` action) is not a store and passes too.
+        """
+        values = super()._get_values(action, arg_strings)
+        if type(action) is not argparse._StoreAction or not action.option_strings:
+            return values
+        if len(arg_strings) != 1:  # a store of several values (nargs): none here
+            return values
+        written = arg_strings[0]
+        if action in self._given:
+            first, earlier = self._given[action]
+            if earlier != values:
+                msg = (
+                    f"given twice, {describe(first)} and {describe(written)}; "
+                    "expected one value"
+                )
+                raise argparse.ArgumentError(action, msg)
+        self._given[action] = (written, values)
+        return values
 
     def _print_message(self, message: str, file: Any = None) -> None:
         if message:
