@@ -260,6 +260,8 @@ def describe(value: object, limit: int = ECHO_LIMIT) -> str:
     ('-1.5', '3', 'nan')
     >>> describe(np.bool_(True)) == describe(True)
     True
+    >>> describe(np.float32(0.1)), describe(np.float16(-2.5))  # in their own precision
+    ('0.1', '-2.5')
     """
     return shortened(_describe(value, limit), limit)
 
@@ -267,6 +269,11 @@ def describe(value: object, limit: int = ECHO_LIMIT) -> str:
 def _describe(value: object, limit: int) -> str:
     """Body of :func:`describe`, before the final cut."""
     if hasattr(value, "dtype") and getattr(value, "shape", None) == ():
+        kind, size = value.dtype.kind, value.dtype.itemsize  # type: ignore[attr-defined]
+        if kind == "f" and size != 8:
+            # float32's 0.1 as the user gave it, the shortest text of its own
+            # precision: as a Python float (.item()) it read 0.10000000149011612
+            return str(value)
         # a numpy scalar reads as the Python one it holds (no import of numpy)
         value = value.item()  # type: ignore[attr-defined]
     if isinstance(value, bool):

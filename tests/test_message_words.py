@@ -14,6 +14,7 @@ import pytest
 
 import assur
 from assur import catalog
+from assur._text import describe
 from assur.plotting.decomposition import draw_decomposition, draw_free_body
 
 FOREIGN = re.compile(r"np\.\w+\(|object at 0x|<\w+ ")
@@ -34,6 +35,28 @@ def test_a_catalog_length_echoes_a_numpy_number_as_a_number(value, shown):
         catalog.four_bar(crank=value)
     assert str(caught.value).endswith(shown)
     assert not FOREIGN.search(str(caught.value))
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float16])
+@pytest.mark.parametrize("written", ["-0.1", "-0.3", "-1e-05", "-1.5"])
+def test_a_narrow_float_is_echoed_as_given_not_widened(dtype, written):
+    # np.float32(-0.1) read -0.10000000149011612, the float64 nearest to it
+    value = dtype(written)
+    with pytest.raises(assur.ModelError) as caught:
+        catalog.four_bar(crank=value)
+    shown = str(caught.value).rpartition("got ")[2]
+    assert dtype(shown) == value  # the same number in its own precision...
+    # ...in no more digits than that precision needs
+    assert len(shown) <= len(np.format_float_positional(value, unique=True))
+    assert not FOREIGN.search(str(caught.value))
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float16])
+def test_describe_writes_a_narrow_float_in_its_own_precision(dtype):
+    value = dtype(0.1)
+    assert float(value) != 0.1  # widened, it is another number's text
+    assert describe(value) == np.format_float_positional(value, unique=True)
+    assert describe([value, dtype("nan")]) == f"[{describe(value)}, nan]"
 
 
 @pytest.mark.parametrize(
