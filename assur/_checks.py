@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 import unicodedata
-from collections.abc import Iterable
+from collections.abc import Collection, Iterable
 from typing import Any, NoReturn
 
 import numpy as np
@@ -64,6 +64,12 @@ def _tuples(obj: Any, *names: str) -> None:
 def _fail(entry: str, message: str) -> NoReturn:
     msg = f"{entry}: {message}"
     raise ModelError(msg)
+
+
+def _check_unique(entry: str, name: str, taken: Collection[str], fault: str) -> None:
+    """Fail with ``fault`` when ``name`` is ``taken`` already (by a link, say)."""
+    if name in taken:
+        _fail(entry, f"{fault}; expected a name for each")
 
 
 def _number(value: object) -> bool:

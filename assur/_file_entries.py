@@ -9,9 +9,9 @@ from __future__ import annotations
 
 from typing import Any, NoReturn
 
-from assur._checks import LARGEST
+from assur._checks import JOINT_KINDS, LARGEST
 from assur._points import PointSpec
-from assur._text import describe, key_text, suggest
+from assur._text import describe, key_text, spoken, suggest
 from assur.errors import ModelError
 from assur.model import (
     Driver,
@@ -87,11 +87,28 @@ def _check_keys(entry: str, data: Any, allowed: tuple[str, ...]) -> dict[str, An
     return data
 
 
+NEEDED = {
+    "kind": f"the joint's kind: {spoken(JOINT_KINDS, 'or')}",
+    "links": "the two links it joins, [first, second]",
+    "at": "where it is in the reference pose: [x, y], a joint's name or "
+    "{from, toward, distance}",
+    "joint": "the name of the joint it drives",
+    "omega": "the driver's speed, rad/s (m/s for a prismatic joint)",
+    "link": "the name of a moving link",
+}
+"""What a required key holds, said when it is missing (keys of several entries)."""
+
+
 def _require(entry: str, data: dict[str, Any], *keys: str, what: str = "") -> None:
-    """Fail on the first of ``keys`` missing from ``data``."""
+    """Fail on the first of ``keys`` missing from ``data``.
+
+    ``what`` follows the key's name; a key of :data:`NEEDED` is then said what it
+    holds (a user who left out ``at`` learns its forms, not only its name).
+    """
     for key in keys:
         if key not in data:
-            _fail(entry, f"missing key {key!r}{what}")
+            needed = f"; expected {NEEDED[key]}" if key in NEEDED and not what else ""
+            _fail(entry, f"missing key {key!r}{what}{needed}")
 
 
 def _vec(entry: str, value: Any) -> tuple[float, float]:

@@ -18,6 +18,7 @@ from assur._checks import (
     _check_name,
     _check_number,
     _check_title,
+    _check_unique,
     _check_vec,
     _coincide,
     _entry,
@@ -209,8 +210,7 @@ def _validate_all(mech: Mechanism) -> None:
     for point in mech.points:
         entry = f"points.{key_text(point.name)}"
         _check_name(entry, point.name)
-        if point.name in point_names:
-            _fail(entry, "a point or joint with this name exists already")
+        _check_unique(entry, point.name, point_names, "a joint or point has the name")
         if point.link == GROUND:
             _fail(
                 f"{entry}.link", _on_the_frame("a point on it never moves", link_names)
@@ -251,9 +251,9 @@ def _validate_links(mech: Mechanism) -> list[str]:
         entry = f"links.{key_text(link.name)}"
         _check_name(entry, link.name)
         if link.name == GROUND:
-            _fail(entry, "'ground' is the frame and takes no entry")
-        if link.name in link_names:
-            _fail(entry, "two links with one name")
+            msg = f"{GROUND!r} is the frame and takes no entry; expected another name"
+            _fail(entry, msg)
+        _check_unique(entry, link.name, link_names, "two links with one name")
         link_names.append(link.name)
         for key in ("mass", "inertia"):
             value = getattr(link, key)
@@ -268,8 +268,7 @@ def _validate_joints(mech: Mechanism, all_links: list[str]) -> list[str]:
     for joint in mech.joints:
         entry = f"joints.{key_text(joint.name)}"
         _check_name(entry, joint.name)
-        if joint.name in joint_names:
-            _fail(entry, "two joints with one name")
+        _check_unique(entry, joint.name, joint_names, "two joints with one name")
         joint_names.append(joint.name)
         if not isinstance(joint.kind, str) or joint.kind not in JOINT_KINDS:
             _fail(

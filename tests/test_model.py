@@ -275,7 +275,8 @@ BAD = {
         edit("at = [0.052326, 0.052326]\n", ""),
         "load",
         ModelError,
-        r"^joints\.B: missing key 'at'$",
+        r"^joints\.B: missing key 'at'; expected where it is in the reference pose: "
+        r"\[x, y\], a joint's name or \{from, toward, distance\}$",
     ),
     "bad-vector": Bad(
         edit("at = [0.052326, 0.052326]", "at = [0.05, 0.05, 0.0]"),
@@ -462,12 +463,18 @@ def json_with_duplicate_joint() -> str:
 def test_duplicate_joint_in_code():
     mech = assur.loads(BASE)
     twice = (*mech.joints, Joint("B", "revolute", ("crank", "rod"), (0.0, 0.0)))
-    with pytest.raises(ModelError, match=r"^joints\.B: two joints with one name$"):
+    with pytest.raises(
+        ModelError,
+        match=r"^joints\.B: two joints with one name; expected a name for each$",
+    ):
         Mechanism(mech.links, twice, mech.drivers)
 
 
 def test_duplicate_link_in_code():
-    with pytest.raises(ModelError, match=r"^links\.a: two links with one name$"):
+    with pytest.raises(
+        ModelError,
+        match=r"^links\.a: two links with one name; expected a name for each$",
+    ):
         Mechanism(
             (Link("a"), Link("a")),
             (Joint("A", "revolute", ("ground", "a"), (0.0, 0.0)),),
