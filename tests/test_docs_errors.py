@@ -17,6 +17,7 @@ from assur.cli import main
 
 DOCS = Path(__file__).parent.parent / "docs"
 PAGE = DOCS / "errors.rst"
+FOLDER = "docs/files/errors"  # where the page tells the reader to run its commands
 
 
 def commands() -> list[tuple[list[str], list[str]]]:
@@ -48,6 +49,12 @@ def test_the_page_shows_every_error_kind():
         assert f"~assur.errors.{name}`" in text, name
 
 
+def test_the_page_says_where_its_commands_run():
+    # its commands name the files bare: a reader at the root got "cannot read the file"
+    assert f"``cd {FOLDER}``" in PAGE.read_text("utf-8")
+    assert all((DOCS.parent / FOLDER / argv[1]).is_file() for argv, _ in CASES[:3])
+
+
 def test_the_conventions_table_lists_every_error_kind():
     text = (DOCS / "conventions.rst").read_text("utf-8")
     import assur.errors
@@ -59,7 +66,7 @@ def test_the_conventions_table_lists_every_error_kind():
 
 @pytest.mark.parametrize(("argv", "lines"), CASES, ids=[" ".join(a) for a, _ in CASES])
 def test_each_message_is_printed_as_shown(argv, lines, monkeypatch, capsys):
-    monkeypatch.chdir(DOCS / "files" / "errors")
+    monkeypatch.chdir(DOCS.parent / FOLDER)
     status = main(argv)
     err = capsys.readouterr().err.strip().splitlines()
     assert err == lines
