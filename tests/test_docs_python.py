@@ -8,7 +8,8 @@ them one after the other into a session, from a scratch directory where the page
 with an ``assur`` command shown before it (``tenbar.csv``) is made by that command.
 A block that needs a machine the reader names (a cluster's scheduler at
 ``tcp://...``) cannot run here: every name it uses must then be defined by the
-page's earlier blocks, by the block itself or by Python.
+page's earlier blocks, by the block itself or by Python. The numbers the
+conventions page reads off a table in prose are the table's.
 """
 
 from __future__ import annotations
@@ -123,3 +124,22 @@ def test_python_blocks_run_in_order(page, tmp_path, monkeypatch, capsys):
             exec(compile(code, where, "exec"), scope)
     finally:
         plt.close("all")
+
+
+def test_the_conventions_worked_reading_quotes_the_table():
+    # "``A.Fx, A.Fy`` = (−7563.5, −5946.2) N": the signs a reader learns from
+    import assur
+
+    page = (ROOT / "docs" / "conventions.rst").read_text("utf-8")
+    section = page.split("A worked reading")[1].split(".. _errors:")[0]
+    at = float(re.search(r"At (\d+)°", section).group(1))
+    table = assur.forces(assur.load(ROOT / "examples/slider_crank_exercise.toml"), [at])
+    quoted = re.findall(
+        r"``([\w., ]+)`` = \(?([−\d., ]+?)\)? (?:N|is|because)", section
+    )
+    assert len(quoted) >= 5
+    for names, values in quoted:
+        for name, text in zip(names.split(", "), values.split(", "), strict=True):
+            places = len(text.partition(".")[2])
+            got = round(float(table[name][0]), places)
+            assert got == float(text.replace("−", "-")), f"{name}: {got}, not {text}"
