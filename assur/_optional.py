@@ -38,9 +38,11 @@ def optional(module: str, needed_for: str, extra: str) -> Any:
     except ModuleNotFoundError as err:
         if not _missing(err, module):
             raise _broken(needed_for, package, err) from err
+        # the extra quoted, as the docs write it: zsh (macOS's shell) reads a bare
+        # assur[study] as a pattern and refuses it ("no matches found")
         msg = (
             f"{needed_for} needs {package}, which is not installed; expected "
-            f"'pip install {package}' (or 'pip install assur[{extra}]')"
+            f"'pip install {package}' (or 'pip install \"assur[{extra}]\"')"
         )
         raise ImportError(msg) from err
     except Exception as err:  # any fault of a broken install (an ImportError too)

@@ -298,7 +298,7 @@ def test_parquet_without_pyarrow_is_one_error(tmp_path, capsys, monkeypatch):
     assert err == (
         f"assur: error: {SLIDER_CRANK}: --parquet {target}: writing Parquet needs "
         "pyarrow, which is not installed; expected 'pip install pyarrow' (or 'pip "
-        "install assur[parquet]')\n"
+        'install "assur[parquet]"\')\n'
     )
     assert not target.exists()
 

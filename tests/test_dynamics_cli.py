@@ -185,7 +185,7 @@ def test_parquet_without_pyarrow_before_any_work(capsys, tmp_path, monkeypatch):
     line = one_error(capsys, "dynamics", FOUR_BAR, "--parquet", target)
     assert line.endswith(
         f"--parquet {target}: writing Parquet needs pyarrow, which is not installed; "
-        "expected 'pip install pyarrow' (or 'pip install assur[parquet]')"
+        "expected 'pip install pyarrow' (or 'pip install \"assur[parquet]\"')"
     )
     assert not target.exists()
 

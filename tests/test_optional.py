@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+import shlex
 import sys
 
 import pytest
@@ -33,8 +35,18 @@ def test_a_missing_package_names_the_extra(monkeypatch):
         optional("pandas", "a study", "study")
     assert str(info.value) == (
         "a study needs pandas, which is not installed; expected 'pip install pandas' "
-        "(or 'pip install assur[study]')"
+        "(or 'pip install \"assur[study]\"')"
     )
+
+
+def test_the_extra_s_install_command_is_quoted_for_any_shell(monkeypatch):
+    # zsh refused the bare assur[study] of the message: "no matches found"
+    monkeypatch.setitem(sys.modules, "pandas", None)
+    with pytest.raises(ImportError) as info:
+        optional("pandas", "a study", "study")
+    command = re.search(r"\(or '(.*)'\)$", str(info.value)).group(1)
+    assert shlex.split(command) == ["pip", "install", "assur[study]"]
+    assert not re.search(r"(^| )[^\"' ]*\[", command)  # no bracket outside quotes
 
 
 def test_a_broken_package_says_what_it_raised(broken):
