@@ -9,7 +9,8 @@ with an ``assur`` command shown before it (``tenbar.csv``) is made by that comma
 A block that needs a machine the reader names (a cluster's scheduler at
 ``tcp://...``) cannot run here: every name it uses must then be defined by the
 page's earlier blocks, by the block itself or by Python. The numbers the
-conventions page reads off a table in prose are the table's.
+conventions page reads off a table in prose, and the reactions the walk-throughs of
+the explanatory note quote, are the table's.
 """
 
 from __future__ import annotations
@@ -143,3 +144,32 @@ def test_the_conventions_worked_reading_quotes_the_table():
             places = len(text.partition(".")[2])
             got = round(float(table[name][0]), places)
             assert got == float(text.replace("−", "-")), f"{name}: {got}, not {text}"
+
+
+def _quoted_forces(text: str) -> list[tuple[str, str, str, str]]:
+    """Each ``\\vec F_{i,j} = (x, y)`` a page writes: (i, j, x, y), i's force on j."""
+    name = r"\\mathrm\{(\w+)\}"
+    number = r"(-?[\d.]+)"
+    return re.findall(rf"\\vec F_\{{{name},{name}\}} = \({number}, {number}\)", text)
+
+
+@pytest.mark.parametrize("page", ["explain.rst", "explain_six_bar.rst"])
+def test_the_reactions_a_page_quotes_are_the_table_s(page):
+    # the walk-throughs quote the note's reactions: link i's force on link j
+    import assur
+
+    text = " ".join((ROOT / "docs" / page).read_text("utf-8").split())
+    file, angle = re.search(r"\$ assur explain (\S+) --angle (\S+)", text).groups()
+    mech = assur.load(ROOT / file)
+    table = assur.forces(mech, [float(angle)])
+    quoted = _quoted_forces(text)
+    assert len(quoted) >= 2
+    for first, second, *shown in quoted:
+        (joint,) = [j for j in mech.joints if set(j.links) == {first, second}]
+        sign = 1.0 if joint.links[0] == first else -1.0  # J.F is links[0] on links[1]
+        for axis, value in zip("xy", shown, strict=True):
+            got = sign * float(table[f"{joint.name}.F{axis}"][0])
+            places = len(value.partition(".")[2])
+            assert abs(got - float(value)) <= 0.5 * 10.0**-places + 1e-9, (
+                f"{page}: F_{first},{second} {axis} is {got}, not {value}"
+            )
