@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 from assur._loads import compile_loads, driver_steps
+from assur._text import spoken
 from assur.summary import Summary
 
 __all__ = ["notes", "turning"]
@@ -35,7 +36,7 @@ def turning(summary: Summary) -> list[str]:
     elif len(joints) == 1:
         which, it = f"the crank at {joints[0]} turns", "it"
     else:
-        which, it = f"the cranks at {', '.join(joints)} turn", "them"
+        which, it = f"the cranks at {spoken(joints)} turn", "them"
     return [
         f"{which} clockwise and torques are counter-clockwise positive:",
         f"a torque that drives {it} is negative; a positive power is work the",
@@ -70,7 +71,25 @@ def notes(summary: Summary) -> list[str]:
                 f"positions {step:.3g} deg apart: the largest values are those at "
                 "these positions, and a finer sweep may find larger ones between them"
             )
-    return out + _steps(summary)
+    return out + _idle(summary) + _steps(summary)
+
+
+def _idle(summary: Summary) -> list[str]:
+    """Return why the efficiency is 0 where it is: no load takes work over the cycle.
+
+    A mechanism loaded by its inertia alone gives back over a cycle all the work
+    its inertia takes: the driver's work goes to friction, and a bare 0 read as a
+    fault.
+    """
+    if summary.variants != 1 or not summary.count:
+        return []
+    values = summary.result()
+    if values.get("efficiency") != 0.0:
+        return []
+    return [
+        "efficiency 0: the loads take no work over the cycle "
+        "(driver.power_ideal.mean is 0), so all the driver's work goes to friction"
+    ]
 
 
 def _steps(summary: Summary) -> list[str]:
@@ -100,7 +119,7 @@ def _steps(summary: Summary) -> list[str]:
             if crossed and (entry, s) not in summary.landed:
                 missed.setdefault(entry, []).append(s)
     out = [
-        f"{entry} steps at {', '.join(f'{s:g}' for s in steps)} {unit}, between the "
+        f"{entry} steps at {spoken([f'{s:g}' for s in steps])} {unit}, between the "
         "positions analysed: means there are right only to first order in their "
         "spacing; a position on each step counts it half on each side"
         for entry, steps in missed.items()

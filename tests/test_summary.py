@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -266,6 +267,8 @@ def test_cli_summary_text_and_json(capsys, tmp_path):
     lines = text.splitlines()
     assert lines[0].startswith("Summary over 360 positions")
     shown = {line.split()[0]: line.split()[1:] for line in lines[1:]}
+    # the values, then what is said of them (no load takes work: efficiency 0)
+    assert shown.pop("(efficiency")[0] == "0:"
     assert list(shown) == list(summary)
     for key, (value, *_) in shown.items():
         assert float(value) == pytest.approx(summary[key], rel=1e-5, abs=1e-9), key
@@ -280,6 +283,7 @@ def test_cli_summary_text_and_json(capsys, tmp_path):
     assert data["positions"] == 360
     assert data["summary"] == pytest.approx(summary, rel=1e-15)
     assert data["units"]["A.F.at"] == "deg"
+    assert data["notes"][0].startswith("efficiency 0: the loads take no work")
 
     csv = tmp_path / "t.csv"
     assert main(["forces", str(path), "--summary", "--csv", str(csv)]) == 0
@@ -613,7 +617,7 @@ def test_a_step_between_positions_is_said_to_be(capsys):
     path = CUTTING
     assert main(["forces", str(path), "--summary", "--angles", "0.25:360:1"]) == 0
     out = capsys.readouterr().out
-    said = "(loads[0].force steps at 110, 250 deg, between the positions analysed:"
+    said = "(loads[0].force steps at 110 and 250 deg, between the positions analysed:"
     assert said in out
     assert main(["forces", str(path), "--summary", "--angles", "0:360:1"]) == 0
     assert "between the positions analysed" not in capsys.readouterr().out
@@ -703,3 +707,28 @@ def test_a_turn_started_anywhere_has_the_same_means(start):
     assert whole["driver.power.mean"] == pytest.approx(464.18518, abs=1e-5)
     for key in ("driver.power.mean", "driver.torque.mean", "driver.torque.rms"):
         assert moved[key] == pytest.approx(whole[key], rel=1e-12), key
+
+
+def test_an_efficiency_of_0_says_the_loads_take_no_work(capsys):
+    # the slider-crank with friction and no working load: all the driver's work
+    # goes to friction, and a bare "efficiency 0" read as a fault
+    path = str(EXAMPLES / "slider_crank_friction.toml")
+    assert main(["forces", path, "--summary", "--angles", "0:360:2"]) == 0
+    out = capsys.readouterr().out
+    assert re.search(r"efficiency\s+0\n", out)
+    assert "(efficiency 0: the loads take no work over the cycle" in out
+    # a working load takes work: an efficiency below 1 and nothing said
+    path = str(EXAMPLES / "four_bar_bearings.toml")
+    assert main(["forces", path, "--summary", "--angles", "0:360:2"]) == 0
+    out = capsys.readouterr().out
+    assert re.search(r"efficiency\s+0\.\d+", out)
+    assert "the loads take no work" not in out
+
+
+def test_the_cranks_turning_clockwise_are_listed_as_a_sentence():
+    from types import SimpleNamespace
+
+    from assur._summary_notes import turning
+
+    three = SimpleNamespace(clockwise=("A", "E", "F"), drivers=3)
+    assert turning(three)[0].startswith("the cranks at A, E and F turn clockwise")
