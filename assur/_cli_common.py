@@ -66,7 +66,7 @@ def parse_angles(spec: str, drivers: int = 1, option: str = "--angles") -> np.nd
         raise UsageError(msg)
     ranges = [_one_range(part, option) for part in parts]
     if len({len(r) for r in ranges}) != 1:
-        counts = ", ".join(str(len(r)) for r in ranges)
+        counts = spoken([str(len(r)) for r in ranges])
         msg = f"{option}: the ranges have {counts} positions; expected equal counts"
         raise UsageError(msg)
     return ranges[0] if drivers == 1 else np.stack(ranges, axis=-1)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from assur._text import roman
+from assur._text import roman, spoken
 from assur._topology import Pair, _public
 from assur.errors import DecompositionError
 
@@ -102,7 +102,7 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
     if group_class < 3:
         # the search never yields one: such a chain holds a dyad without mobility
         msg = (
-            f"links {', '.join(_public(tuple(links)))}: a chain of {len(links)} links "
+            f"links {spoken(_public(tuple(links)))}: a chain of {len(links)} links "
             "whose joints among them form an open path is no minimal Assur group (a "
             "class II group is a dyad); expected a dyad or a group of class III or "
             "higher"

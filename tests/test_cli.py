@@ -150,7 +150,7 @@ def test_angles_for_two_drivers(capsys):
         "START:STOP:STEP per driver, separated by commas"
     )
     text = fails(capsys, ["forces", path, "--angles", "0:20:10,100:130:10"], path)
-    assert text == "--angles: the ranges have 3, 4 positions; expected equal counts"
+    assert text == "--angles: the ranges have 3 and 4 positions; expected equal counts"
 
 
 def test_a_wrong_structure_is_named_before_the_count_of_angles(tmp_path, capsys):

@@ -271,7 +271,8 @@ def test_a_group_rubbing_in_its_guide_alone_states_the_sliding_law_alone() -> No
     assert "revolute pair's couple" not in note
     both = str(explain(mech, 45.0))
     assert "a revolute pair's couple" in both
-    assert "a sliding pair's force" in both
+    # each law has commas of its own: a semicolon stands between the two
+    assert "relative to its first); a sliding pair's force" in both
 
 
 def test_near_self_locking_the_substitution_is_said_to_settle_slowly() -> None:

@@ -339,7 +339,7 @@ def test_a_dollar_in_the_name_is_bare_in_the_page_s_title():
         (
             "five_bar_two_cranks",
             [60.0, 120.0],
-            "driver positions left_crank at 60 deg, ",
+            "driver positions left_crank at 60 deg and right_crank at 120 deg",
         ),
     ],
 )

@@ -814,7 +814,7 @@ def test_open_path_of_four_links_is_never_described_as_a_group():
         pair("G", "d", "ground"),
     ]
     match = (
-        r"^links a, b, c, d: a chain of 4 links whose joints among them form an "
+        r"^links a, b, c and d: a chain of 4 links whose joints among them form an "
         r"open path is no minimal Assur group"
     )
     with pytest.raises(DecompositionError, match=match):

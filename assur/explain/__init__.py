@@ -17,6 +17,7 @@ from typing import Any
 from numpy.typing import ArrayLike
 
 from assur._structure import structure
+from assur._text import spoken
 from assur._warn import warn
 from assur.errors import AssurWarning, SelfLockingError
 from assur.explain._answers import answer_blocks, checked_answers, read_answers
@@ -201,4 +202,4 @@ def _where(table: Any) -> str:
     names = [plain(plan.bodies[d.body]) for d in plan.drivers]
     # "2 at 0 deg": a link named by a number would else read as part of the value
     named = [f"{n} at {v}" for n, v in zip(names, values, strict=True)]
-    return "driver positions " + ", ".join(named)
+    return "driver positions " + spoken(named)

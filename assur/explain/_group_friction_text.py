@@ -191,7 +191,8 @@ def method(pairs: list[PairPlan]) -> Para:
             "makes none in this model)"
         )
     return Para(
-        f"Friction in {listed}: {', '.join(laws)} (kinetic friction only: a "
+        # each law holds commas of its own: the laws are apart by a semicolon
+        f"Friction in {listed}: {'; '.join(laws)} (kinetic friction only: a "
         "pair at rest has none). Each depends on the size of a reaction not "
         "yet known. With the senses of the relative motions known, each "
         "friction load is its size times a known factor, and the reactions "
