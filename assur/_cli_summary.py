@@ -19,6 +19,7 @@ import numpy as np
 from assur._sliced import Slice
 from assur._text import counted, number_text
 from assur._vec import Array
+from assur._width import ljust, rjust, shown_width
 
 if TYPE_CHECKING:
     from assur.summary import Summary
@@ -74,19 +75,19 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
         if said:
             data["notes"] = said
         return json.dumps(data, indent=2)
-    width = max(len(k) for k in values)
+    width = max(map(shown_width, values))
     # a whole turn's sweep ends on its first pose: the means count that pose once
     once = ", the closing pose counted once" if summary.closes() else ""
     lines = [f"Summary over {counted(summary.count, 'position')}{once} ({name})"]
     for key, value in values.items():
         unit = summary.units[key]
         if key in why:
-            lines.append(f"  {key.ljust(width)}  {'undefined':>14}  ({why[key]})")
+            lines.append(f"  {ljust(key, width)}  {'undefined':>14}  ({why[key]})")
             continue
         shown = number_text(value, ">14.6g")
         # the shaking moment's value depends on the point it is taken about
         about = f" ({ABOUT})" if key == "shaking.M.max" else ""
-        lines.append(f"  {key.ljust(width)}  {shown}  {unit}{about}".rstrip())
+        lines.append(f"  {ljust(key, width)}  {shown}  {unit}{about}".rstrip())
     lines += [f"  ({line})" for line in notes(summary)]
     if summary.clockwise:
         first, *rest = turning(summary)
@@ -195,14 +196,14 @@ def format_table(
         else []
     )
     widths = [
-        max(len(h), len(u), *(len(r[i]) for r in cells))
+        max(shown_width(h), len(u), *(len(r[i]) for r in cells))
         for i, (h, u) in enumerate(zip(heads, marks, strict=True))
     ]
     lines: list[str] = []
     for block in _blocks(widths, width):
         if lines:
             lines.append("")
-        lines.append("  ".join(heads[i].rjust(widths[i]) for i in block))
+        lines.append("  ".join(rjust(heads[i], widths[i]) for i in block))
         lines.append("  ".join(marks[i].rjust(widths[i]) for i in block))
         lines += ["  ".join(r[i].rjust(widths[i]) for i in block) for r in cells]
     if rows > limit:

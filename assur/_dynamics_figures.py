@@ -13,6 +13,7 @@ import numpy as np
 
 from assur._startup_turns import PERIODIC_RTOL
 from assur._text import crank_angle_text, number_text, spoken
+from assur._width import ljust, shown_width
 
 
 def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
@@ -212,8 +213,8 @@ def _delta(value: float) -> str:
 def _header(mechanism: Any, lines: list[tuple[str, str]]) -> str:
     """Return the mechanism's name over the figures' ``lines``, aligned."""
     name = mechanism.name or "Mechanism"
-    width = max(len(k) for k, _ in lines)
-    body = "\n".join(f"  {k.ljust(width)}  {v}" for k, v in lines)
+    width = max(shown_width(k) for k, _ in lines)
+    body = "\n".join(f"  {ljust(k, width)}  {v}" for k, v in lines)
     return f"{name}: dynamic model reduced to the crank\n{body}"
 
 
