@@ -55,13 +55,17 @@ def _figures() -> Iterator[Any]:
     Inside, text is set without LaTeX whatever the user's matplotlibrc says: the
     pictures' text is matplotlib's own mathtext, and ``text.usetex`` needs a LaTeX
     the machine may not have (it failed with a traceback from inside a drawing).
+    The fonts installed for names in CJK scripts follow the user's own
+    (:func:`assur._fonts.fallback_fonts`).
     """
     import matplotlib
+
+    from assur._fonts import fallback_fonts
 
     plt = _pyplot()
     before = set(plt.get_fignums())
     try:
-        with matplotlib.rc_context({"text.usetex": False}):
+        with matplotlib.rc_context({"text.usetex": False, **fallback_fonts()}):
             yield plt
     finally:
         for number in set(plt.get_fignums()) - before:

@@ -47,6 +47,7 @@ from assur._cli_types import (
     input_file,
     joints,
 )
+from assur._fonts import GLYPH_MISSING, glyphs_logged, missing_glyphs
 from assur._output import path_text, write_stdout
 from assur._stdin import input_text
 from assur._text import describe, suggest
@@ -261,7 +262,7 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
     """Run one command, turning assur's errors and warnings into one-line messages."""
     source = input_text(args.file)
     failure = None
-    with warnings.catch_warnings(record=True) as caught:
+    with warnings.catch_warnings(record=True) as caught, glyphs_logged() as logged:
         warnings.simplefilter("always", AssurWarning)
         # matplotlib's advice on a crowded picture: none a user here can take
         warnings.filterwarnings("ignore", "constrained_layout not applied", UserWarning)
@@ -288,7 +289,12 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
     # shown only once the recording has stopped, so showing cannot record again;
     # the warnings met on the way come before the error that stopped the command
     told = set()
+    glyphs = missing_glyphs([str(w.message) for w in caught] + logged)
+    if glyphs is not None:  # one line, not one per character and drawing
+        print(f"assur: warning: {source}: {glyphs}", file=sys.stderr)
     for w in caught:
+        if GLYPH_MISSING.fullmatch(str(w.message)):
+            continue
         if issubclass(w.category, AssurWarning):
             line = _one_line(w.message)
             if line in told:  # from another sweep (the dynamic model's, say)

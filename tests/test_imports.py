@@ -26,6 +26,7 @@ RANKS = {
     "assur._vec": 0,
     "assur._text": 0,
     "assur._width": 0,
+    "assur._fonts": 0,
     "assur._optional": 0,
     "assur._progress": 0,
     # the library's own warnings, given or held (a context variable)

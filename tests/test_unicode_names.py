@@ -7,6 +7,7 @@ check what each output does with such names.
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import pytest
@@ -59,3 +60,57 @@ def test_a_summary_of_wide_names_stays_aligned(renamed, capsys):
     ends = {shown_width(r.split("  N")[0]) for r in rows if r.endswith("  N")}
     assert any("e\u0301" in r for r in rows)
     assert len(ends) == 1
+
+
+@pytest.mark.filterwarnings("default::UserWarning")  # as python runs the command
+def test_glyphs_no_font_has_are_one_warning_line(renamed, capsys):
+    # a CJK name was one matplotlib UserWarning per character and per drawing,
+    # each with the package's file and line; its subscripts' boxes went unsaid
+    text = renamed.read_text(encoding="utf-8").replace("滑块", "滑块\u0c85")
+    renamed.write_text(text, encoding="utf-8")
+    out = renamed.parent / "рисунок 图.png"
+    assert main(["plot", str(renamed), "-o", str(out), "--forces"]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert out.stat().st_size > 0
+    assert len(err) == 1, err
+    assert err[0].startswith(f"assur: warning: {renamed}: the pictures' fonts ")
+    assert "'\u0c85' (U+0C85)" in err[0]  # Kannada: in no font of this machine
+
+
+def test_missing_glyphs_are_told_once_each():
+    from assur._fonts import missing_glyphs
+
+    said = missing_glyphs(
+        [
+            "Glyph 22359 (\\N{CJK UNIFIED IDEOGRAPH-5757}) missing from font(s) "
+            "DejaVu Sans.",
+            "Font 'rm' does not have a glyph for '\\u5757' [U+5757], substituting "
+            "with a dummy symbol.",
+            "Font 'rm' does not have a glyph for '\\u6ed1' [U+6ed1], substituting "
+            "with a dummy symbol.",
+            "constrained_layout not applied",
+        ]
+    )
+    assert said is not None
+    assert said.count("U+5757") == 1
+    assert "'滑' (U+6ED1)" in said
+    assert missing_glyphs(["something else"]) is None
+
+
+def test_installed_fonts_draw_a_cjk_name():
+    # DejaVu Sans has no CJK: a font installed for it follows the user's own
+    import matplotlib as mpl
+    from matplotlib.figure import Figure
+
+    from assur._fonts import fallback_fonts
+
+    settings = fallback_fonts()
+    if not settings:
+        pytest.skip("no font with CJK glyphs installed")
+    before = mpl.rcParams["font.family"]
+    with mpl.rc_context(settings), warnings.catch_warnings():
+        warnings.simplefilter("error")  # a glyph missing would raise here
+        fig = Figure()
+        fig.text(0.5, 0.5, "ползун 滑块")
+        fig.canvas.draw()
+    assert mpl.rcParams["font.family"] == before

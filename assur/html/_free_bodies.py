@@ -52,11 +52,14 @@ def _diagram(table: Table, index: int) -> str:
     import matplotlib as mpl
     from matplotlib.figure import Figure
 
+    from assur._fonts import fallback_fonts
     from assur.plotting import draw_free_body
 
-    # a fixed salt: the same report gives the same clip-path ids, run after run
+    # a fixed salt: the same report gives the same clip-path ids, run after run;
+    # the fonts for names in CJK scripts after the user's own
+    settings = {"svg.hashsalt": "assur", "svg.fonttype": "path", **fallback_fonts()}
     with (
-        mpl.rc_context({"svg.hashsalt": "assur", "svg.fonttype": "path"}),
+        mpl.rc_context(settings),
         warnings.catch_warnings(),
     ):
         # labels of very long names leave the constrained layout no room: the
