@@ -14,6 +14,8 @@ import numbers
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
+from assur._lookalike import lookalike, spelled_apart
+
 __all__ = [
     "ROMAN",
     "WORDS",
@@ -192,6 +194,9 @@ def suggest(
     ' (known: a, b)'
     """
     names = sorted(str(k) for k in known)
+    twin = lookalike(str(name), names)
+    if twin is not None:  # Latin O for a Cyrillic one, say: told apart
+        return f"; did you mean {describe(twin)}? ({spelled_apart(str(name), twin)})"
     # the same name but for its case first ("B.fx": 'B.Fx', not the nearer 'B.x'),
     # the nearest of several such
     cased = [k for k in names if k.lower() == str(name).lower()]

@@ -114,3 +114,43 @@ def test_installed_fonts_draw_a_cjk_name():
         fig.text(0.5, 0.5, "ползун 滑块")
         fig.canvas.draw()
     assert mpl.rcParams["font.family"] == before
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "told"),
+    [
+        # the joint named in Cyrillic (А), referred to in Latin (A)
+        (
+            "[joints.A]",
+            '[joints."\u0410"]',
+            "U+0410 CYRILLIC CAPITAL LETTER A where this one has U+0041 LATIN",
+        ),
+        # the link named with é as one character, referred to as e and an accent
+        (
+            'links."шатун_φ"]',
+            'links."шатун_\u00e9"]',
+            "U+00E9 LATIN SMALL LETTER E WITH ACUTE where this one has U+0065 LATIN "
+            "SMALL LETTER E, U+0301 COMBINING ACUTE ACCENT",
+        ),
+        # a zero-width space pasted with the name from a web page
+        (
+            'links."шатун_φ"]',
+            'links."шатун_φ\u200b"]',
+            "U+200B ZERO WIDTH SPACE where this one has nothing",
+        ),
+    ],
+)
+def test_a_name_that_only_looks_like_a_known_one_is_told_apart(
+    renamed, capsys, old, new, told
+):
+    # "unknown joint 'A' (known: А, B, C)", or "did you mean 'шатун_é'?" for an
+    # 'шатун_é': no difference the reader could see on the screen
+    text = renamed.read_text(encoding="utf-8").replace(old, new)
+    if "\u00e9" in new:
+        text = text.replace('"шатун_φ"', '"шатун_e\u0301"')
+    renamed.write_text(text, encoding="utf-8")
+    assert main(["structure", str(renamed)]) == 2
+    err = capsys.readouterr().err
+    assert len(err.splitlines()) == 1
+    assert "did you mean" in err
+    assert f"(they look alike, but the known name has {told}" in err
