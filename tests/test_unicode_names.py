@@ -154,3 +154,50 @@ def test_a_name_that_only_looks_like_a_known_one_is_told_apart(
     assert len(err.splitlines()) == 1
     assert "did you mean" in err
     assert f"(they look alike, but the known name has {told}" in err
+
+
+def test_a_latex_note_of_cyrillic_names_says_pdflatex_cannot_set_them(renamed):
+    # pdflatex stopped at the first Cyrillic letter ("Unicode character к
+    # (U+043A) not set up for use with LaTeX"), and nothing had said so
+    import assur
+    from assur.errors import AssurWarning
+
+    note = assur.explain(assur.load(renamed), 45.0)
+    with pytest.warns(AssurWarning, match=r"pdflatex cannot set .*\(U\+043A\)"):
+        text = note.to_latex()
+    first = text.splitlines()[0]
+    assert first.startswith("% pdflatex cannot set these characters: U+043A, ")
+    assert first.isascii()  # code points only, whatever TeX makes of a comment
+
+
+def test_a_latex_note_of_accented_latin_names_compiles(tmp_path, capsys):
+    # Latin letters with accents are in the note's T1 fonts: no warning, and
+    # pdflatex sets them (the warning is no false alarm)
+    import shutil
+    import subprocess
+
+    text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
+    text = text.replace("links.crank]", 'links."manivelle_é"]')
+    text = text.replace('"crank"', '"manivelle_é"').replace(
+        "Slider-crank exercise", "Système bielle–manivelle"
+    )
+    path = tmp_path / "bielle.toml"
+    path.write_text(text, encoding="utf-8")
+    assert (
+        main(["explain", str(path), "--angle", "30", "-o", str(tmp_path / "n.tex")])
+        == 0
+    )
+    assert capsys.readouterr().err == ""
+    pdflatex = shutil.which("pdflatex")
+    if pdflatex is None:
+        pytest.skip("pdflatex not found")
+    result = subprocess.run(
+        [pdflatex, "-interaction=nonstopmode", "-halt-on-error", "n.tex"],
+        cwd=tmp_path,
+        capture_output=True,
+        encoding="utf-8",
+        errors="replace",  # TeX's log echoes the file's bytes as it reads them
+        timeout=180,
+        check=False,
+    )
+    assert result.returncode == 0, result.stdout[-2000:]

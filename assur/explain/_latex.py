@@ -8,8 +8,10 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from assur._warn import warn
 from assur.explain._blocks import Display, Grid, Heading, Items, Para, segments
 from assur.explain._breaks import LEADING, broken, first_equals
+from assur.explain._latex_chars import unset
 
 if TYPE_CHECKING:
     from assur.explain._blocks import Block
@@ -119,9 +121,25 @@ def _block(block: Block) -> str:
 
 
 def latex_document(note: Note) -> str:
-    """Return the note as a whole LaTeX document."""
+    """Return the note as a whole LaTeX document.
+
+    A name in a script the preamble's fonts lack (Cyrillic, Greek, CJK) is said in
+    the document's first line and in a warning: pdflatex stops at it.
+    """
     body = "\n\n".join(_block(b) for b in note.blocks)
-    return (
+    text = (
         f"{PREAMBLE}\\title{{{_text(note.title)}}}\n\\date{{}}\n"
         f"\\begin{{document}}\n\\maketitle\n\n{body}\n\n\\end{{document}}\n"
     )
+    missing = unset(text)
+    if not missing:
+        return text
+    more = ", ..." if len(missing) > 6 else ""
+    points = ", ".join(f"U+{ord(c):04X}" for c in missing[:6]) + more
+    shown = ", ".join(f"{c} (U+{ord(c):04X})" for c in missing[:6]) + more
+    warn(
+        f"the LaTeX note holds characters pdflatex cannot set with the note's T1 "
+        f"fonts ({shown}), at which it stops; expected the note as HTML or "
+        "Markdown, or names in Latin letters"
+    )
+    return f"% pdflatex cannot set these characters: {points}\n{text}"

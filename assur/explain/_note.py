@@ -72,7 +72,11 @@ class Note:
         return html_page(self)
 
     def to_latex(self) -> str:
-        """Return the note as a LaTeX document that compiles with pdflatex."""
+        """Return the note as a LaTeX document that compiles with pdflatex.
+
+        Names in Cyrillic, Greek or CJK letters are beyond its T1 fonts: an
+        :class:`~assur.errors.AssurWarning` and the document's first line say so.
+        """
         return latex_document(self)
 
     def write(self, path: str | os.PathLike[str]) -> None:
