@@ -61,9 +61,21 @@ def _decoded(data: bytes, expected: str = "a TOML or JSON file saved as UTF-8") 
             # an editor's "Unicode" is UTF-16: its mark says so at once
             found = "UTF-16 text (it starts with UTF-16's byte-order mark)"
         else:
-            found = f"not UTF-8 text (byte {err.start} cannot be decoded)"
+            found = f"not UTF-8 text ({_where(data, err.start)} cannot be decoded)"
         msg = f"{found}; expected {expected}"
         raise ModelError(msg) from err
+
+
+def _where(data: bytes, at: int) -> str:
+    """Return the byte at offset ``at`` and where an editor shows it (line, column).
+
+    A file saved in a code page (an editor's "ANSI": Windows-1251 for Russian) has
+    its first non-ASCII letter there; a byte's offset alone left it to be counted.
+    """
+    start = data.rfind(b"\n", 0, at) + 1
+    line = data.count(b"\n", 0, at) + 1
+    column = len(data[start:at].decode("utf-8", "replace")) + 1
+    return f"byte 0x{data[at]:02X} at line {line}, column {column}"
 
 
 def _one_line(text: str) -> str:

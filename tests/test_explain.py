@@ -720,8 +720,8 @@ def test_given_answers_round_off_nan_and_dotted_keys(tmp_path):
         read_answers(path)
     # as the mechanism file's fault is told, not in the codec's words
     assert str(caught.value) == (
-        f"{path}: not UTF-8 text (byte 22 cannot be decoded); expected a TOML file "
-        "of given answers saved as UTF-8"
+        f"{path}: not UTF-8 text (byte 0xFF at line 2, column 13 cannot be decoded); "
+        "expected a TOML file of given answers saved as UTF-8"
     )
     path.write_bytes('[answers]\n"B.x" = 1\n'.encode("utf-16"))
     with pytest.raises(assur.ModelError, match=r"UTF-16 text \(it starts with"):

@@ -201,3 +201,16 @@ def test_a_latex_note_of_accented_latin_names_compiles(tmp_path, capsys):
         check=False,
     )
     assert result.returncode == 0, result.stdout[-2000:]
+
+
+@pytest.mark.parametrize(("encoding", "byte"), [("cp1251", "0xCA"), ("koi8-r", "0xEB")])
+def test_a_file_saved_in_a_code_page_is_told_where(tmp_path, capsys, encoding, byte):
+    # an editor's "ANSI" (Windows-1251 for Russian): "byte 19 cannot be decoded"
+    # left the reader to count bytes to find the first Russian letter
+    path = tmp_path / "ansi.toml"
+    path.write_bytes('format = 1\nname = "Кривошип"\n'.encode(encoding))
+    assert main(["structure", str(path)]) == 2
+    assert capsys.readouterr().err.splitlines() == [
+        f"assur: error: {path}: not UTF-8 text (byte {byte} at line 2, column 9 "
+        "cannot be decoded); expected a TOML or JSON file saved as UTF-8"
+    ]
