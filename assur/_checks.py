@@ -130,10 +130,17 @@ def _vec_ok(value: object) -> bool:
     )
 
 
+BIDI_CONTROLS = frozenset("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
+"""Unicode's explicit embeddings, overrides and isolates: one in a name turns the
+rest of the line around it (a table's header, a message) on a terminal or in an
+editor, as an escape sequence would recolour it. The marks U+200E and U+200F,
+which right-to-left scripts need and which reorder nothing beyond them, stay."""
+
+
 def _control(name: str) -> str | None:
     """Return the first control character of ``name`` (or a line separator)."""
     for c in name:
-        if unicodedata.category(c) in ("Cc", "Zl", "Zp"):
+        if unicodedata.category(c) in ("Cc", "Zl", "Zp") or c in BIDI_CONTROLS:
             return c
     return None
 

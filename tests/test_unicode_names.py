@@ -214,3 +214,23 @@ def test_a_file_saved_in_a_code_page_is_told_where(tmp_path, capsys, encoding, b
         f"assur: error: {path}: not UTF-8 text (byte {byte} at line 2, column 9 "
         "cannot be decoded); expected a TOML or JSON file saved as UTF-8"
     ]
+
+
+@pytest.mark.parametrize("mark", ["\u202e", "\u2067"])
+def test_a_name_with_a_bidirectional_override_is_refused(renamed, capsys, mark):
+    # U+202E in a link's name turned the rest of every header line around it
+    # ("rod\u202e.angle" shows as "rodelgna.") and of every message naming it
+    text = renamed.read_text(encoding="utf-8").replace("шатун_φ", f"шатун{mark}_φ")
+    renamed.write_text(text, encoding="utf-8")
+    assert main(["kinematics", str(renamed), "--angles", "0"]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1
+    assert f"holds the control character {mark!a}; expected printable" in err[0]
+
+
+def test_right_to_left_marks_stay_welcome(renamed, capsys):
+    # Hebrew and Arabic names need U+200F and U+200E, which reorder nothing beyond
+    text = renamed.read_text(encoding="utf-8").replace("шатун_φ", "מוט\u200f_φ")
+    renamed.write_text(text, encoding="utf-8")
+    assert main(["kinematics", str(renamed), "--angles", "0"]) == 0
+    assert "מוט\u200f_φ.omega" in capsys.readouterr().out
