@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._sliced import Slice
+from assur._stdout import as_written
 from assur._text import counted, number_text
 from assur._vec import Array
 from assur._width import ljust, rjust, shown_width
@@ -75,19 +76,22 @@ def _summary_text(name: str, summary: Summary, as_json: bool) -> str:
         if said:
             data["notes"] = said
         return json.dumps(data, indent=2)
-    width = max(map(shown_width, values))
+    # aligned as standard output shows the names (escaped where it cannot write them)
+    keys = {key: as_written(key) for key in values}
+    width = max(map(shown_width, keys.values()))
     # a whole turn's sweep ends on its first pose: the means count that pose once
     once = ", the closing pose counted once" if summary.closes() else ""
     lines = [f"Summary over {counted(summary.count, 'position')}{once} ({name})"]
     for key, value in values.items():
         unit = summary.units[key]
+        head = ljust(keys[key], width)
         if key in why:
-            lines.append(f"  {ljust(key, width)}  {'undefined':>14}  ({why[key]})")
+            lines.append(f"  {head}  {'undefined':>14}  ({why[key]})")
             continue
         shown = number_text(value, ">14.6g")
         # the shaking moment's value depends on the point it is taken about
         about = f" ({ABOUT})" if key == "shaking.M.max" else ""
-        lines.append(f"  {ljust(key, width)}  {shown}  {unit}{about}".rstrip())
+        lines.append(f"  {head}  {shown}  {unit}{about}".rstrip())
     lines += [f"  ({line})" for line in notes(summary)]
     if summary.clockwise:
         first, *rest = turning(summary)
@@ -188,7 +192,7 @@ def format_table(
     terminal's) is cut into blocks of columns that fit, one under the other, each
     led by the first column (the driver's position).
     """
-    heads = list(names)
+    heads = [as_written(name) for name in names]  # as standard output shows them
     marks = [f"[{u}]" if u else "" for u in units]
     cells = (
         [[number_text(v) for v in values] for values in zip(*columns, strict=True)]

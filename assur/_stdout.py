@@ -53,6 +53,23 @@ def write_stdout(text: str) -> None:
     write_all(buffer, text.encode(_encoding(stream), "backslashreplace"))
 
 
+def as_written(text: str) -> str:
+    """Return ``text`` as :func:`write_stdout` shows it, escapes included.
+
+    What standard output's encoding cannot write (a Greek name on a Windows-1251
+    output) is written as backslash escapes: a table aligned on the text before
+    its escapes was out of line after them.
+    """
+    stream = sys.stdout
+    if getattr(stream, "buffer", None) is None:  # a notebook's stream: as it is
+        return text
+    encoding = _encoding(stream)
+    try:
+        return text.encode(encoding, "backslashreplace").decode(encoding)
+    except LookupError:
+        return text
+
+
 class StdoutError(Exception):
     """A write to standard output failed (``error``, an OSError).
 

@@ -234,3 +234,26 @@ def test_right_to_left_marks_stay_welcome(renamed, capsys):
     renamed.write_text(text, encoding="utf-8")
     assert main(["kinematics", str(renamed), "--angles", "0"]) == 0
     assert "מוט\u200f_φ.omega" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("encoding", ["cp1251", "ascii"])
+@pytest.mark.parametrize("summary", [[], ["--summary"]])
+def test_a_table_stays_aligned_where_standard_output_escapes_names(
+    renamed, monkeypatch, encoding, summary
+):
+    # Windows-1251 writes Cyrillic but not φ or é, ASCII none of them: the names
+    # go out as escapes (\u0301), six columns where the table had counted none
+    import io
+    import sys
+
+    out = io.TextIOWrapper(io.BytesIO(), encoding=encoding)
+    monkeypatch.setattr(sys, "stdout", out)
+    assert main(["forces", str(renamed), "--angles", "0:90:45", *summary]) == 0
+    out.flush()
+    lines = out.buffer.getvalue().decode(encoding).splitlines()
+    assert any("\\u0301" in line for line in lines)  # the guide's accent
+    if summary:
+        rows = [r for r in lines if r.endswith("  N")]
+        assert len({shown_width(r) for r in rows}) == 1
+    else:
+        assert len({shown_width(line) for line in lines[:5]}) == 1
