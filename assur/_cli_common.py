@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from assur._cli_types import plain_number
+from assur._decimal_comma import HINT, has_decimal_comma, range_hint
 from assur._output import path_text, standard_output
 from assur._targets import stdout_is
 from assur._text import counted, describe, spoken
@@ -62,7 +63,7 @@ def parse_angles(spec: str, drivers: int = 1, option: str = "--angles") -> np.nd
             f"{option}: {counted(len(parts), 'range')} given for "
             f"{counted(drivers, 'driver')}; expected one START:STOP:STEP per driver, "
             "separated by commas"
-        )
+        ) + range_hint(parts)
         raise UsageError(msg)
     ranges = [_one_range(part, option) for part in parts]
     if len({len(r) for r in ranges}) != 1:
@@ -238,7 +239,7 @@ def one_position(mech: Any, spec: str | None) -> Any:
             f"--angle {describe(spec)[1:-1]}: {counted(len(values), 'value')} for "
             f"{counted(drivers, 'driver')}; expected one value per driver, separated "
             "by commas"
-        )
+        ) + (HINT if has_decimal_comma(spec) else "")
         raise UsageError(msg)
     return np.array(values)
 

@@ -12,6 +12,7 @@ import re
 import sys
 from typing import Any
 
+from assur._decimal_comma import HINT, comma_at
 from assur._file_entries import _fail
 from assur._text import key_text
 from assur.errors import ModelError
@@ -30,6 +31,8 @@ def file_data(text: str, json_format: bool) -> Any:
         )
     except (tomllib.TOMLDecodeError, json.JSONDecodeError) as err:
         msg = f"not valid {kind}: {_one_line(str(err))}"
+        if not json_format and comma_at(text, str(err)):
+            msg += HINT  # "mass = 0,5": a half, to a Russian or a German reader
         raise ModelError(msg) from err
     except RecursionError as err:
         msg = (

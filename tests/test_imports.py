@@ -27,6 +27,7 @@ RANKS = {
     "assur._lookalike": 0,
     "assur._text": 0,
     "assur._width": 0,
+    "assur._decimal_comma": 0,
     "assur._fonts": 0,
     "assur._optional": 0,
     "assur._progress": 0,

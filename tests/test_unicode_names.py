@@ -257,3 +257,37 @@ def test_a_table_stays_aligned_where_standard_output_escapes_names(
         assert len({shown_width(r) for r in rows}) == 1
     else:
         assert len({shown_width(line) for line in lines[:5]}) == 1
+
+
+@pytest.mark.parametrize(
+    ("old", "new"),
+    [("mass = 0.5", "mass = 0,5"), ("omega = 200.0", "omega = 200,5")],
+)
+def test_a_decimal_comma_in_the_file_is_asked_about(tmp_path, capsys, old, new):
+    # "0,5" is a half in Russian and most of Europe; TOML said only "Expected
+    # newline or end of document after a statement"
+    text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
+    path = tmp_path / "comma.toml"
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    assert main(["structure", str(path)]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1
+    assert err[0].endswith("; a decimal comma? decimals are written with a point "
+                           "(0.5, not 0,5)")  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("argv", "asked"),
+    [
+        (["kinematics", "--angles", "0:90:22,5"], True),
+        (["explain", "--angle", "22,5"], True),
+        (["kinematics", "--angles", "0:90:10,0:90:10"], False),  # two ranges
+        (["kinematics", "--angles", "0:90:10,5:90:10"], False),
+    ],
+)
+def test_a_decimal_comma_in_an_angle_is_asked_about(capsys, argv, asked):
+    path = str(EXAMPLES / "slider_crank_exercise.toml")
+    assert main([argv[0], path, *argv[1:]]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1
+    assert ("a decimal comma?" in err[0]) is asked

@@ -1,0 +1,73 @@
+"""A decimal comma where a point is meant: the hint of a message that meets one.
+
+In Russian, German, French and most of Europe "0,5" is a half. In a TOML file it is
+a syntax error ("Expected newline or end of document after a statement"), and in
+``--angles 0:90:22,5`` it read as a second range: the messages now ask whether a
+decimal comma was meant.
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["HINT", "comma_at", "has_decimal_comma", "range_hint"]
+
+HINT = "; a decimal comma? decimals are written with a point (0.5, not 0,5)"
+"""The words added to a message where a decimal comma may be the fault."""
+
+_DIGITS_COMMA_DIGITS = re.compile(r"\d,\d")
+_PLACE = re.compile(r"at line (\d+), column (\d+)")
+
+
+def has_decimal_comma(text: str) -> bool:
+    """Whether ``text`` holds a digit, a comma and a digit, with no space between.
+
+    Examples
+    --------
+    >>> has_decimal_comma("0:90:22,5"), has_decimal_comma("0:90:10,0:90:10")
+    (True, True)
+    >>> has_decimal_comma("10, 20")
+    False
+    """
+    return _DIGITS_COMMA_DIGITS.search(text) is not None
+
+
+def range_hint(parts: list[str]) -> str:
+    """Return :data:`HINT` for ``--angles`` split at its commas into ``parts``, or "".
+
+    Only where a part is no range of its own: "0:90:22,5" is a step of 22.5 deg
+    to a Russian reader, "0:90:10,0:90:10" two ranges.
+
+    Examples
+    --------
+    >>> range_hint(["0:90:22", "5"]) == HINT, range_hint(["0:90:10", "0:90:10"])
+    (True, '')
+    """
+    joined = ",".join(parts)
+    return (
+        HINT if has_decimal_comma(joined) and not all(":" in p for p in parts) else ""
+    )
+
+
+def comma_at(text: str, message: str) -> bool:
+    r"""Whether a parser's ``message`` points at a comma between two digits of ``text``.
+
+    ``message`` names the place as tomllib does: "(at line 15, column 9)", both
+    counted from 1.
+
+    Examples
+    --------
+    >>> comma_at("a = 1\nmass = 0,5\n", "Expected newline (at line 2, column 9)")
+    True
+    """
+    place = _PLACE.search(message)
+    if place is None:
+        return False
+    lines = text.splitlines()
+    row, column = int(place.group(1)) - 1, int(place.group(2)) - 1
+    if not 0 <= row < len(lines):
+        return False
+    line = lines[row]
+    return 0 < column < len(line) - 1 and has_decimal_comma(
+        line[column - 1 : column + 2]
+    )
