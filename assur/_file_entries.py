@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Any, NoReturn
 
 from assur._checks import JOINT_KINDS, LARGEST
+from assur._decimal_comma import HINT
 from assur._points import PointSpec
 from assur._text import describe, key_text, spoken, suggest
 from assur.errors import ModelError
@@ -117,7 +118,11 @@ def _vec(entry: str, value: Any) -> tuple[float, float]:
         and len(value) == 2
         and all(isinstance(v, int | float) and not isinstance(v, bool) for v in value)
     ):
-        _fail(entry, f"expected two numbers [x, y], got {_echo(value)}")
+        # [0,052, 0,052], two decimals with commas, reads as four whole numbers
+        commas = isinstance(value, list) and len(value) in (3, 4)
+        commas = commas and all(type(v) is int for v in value)
+        hint = HINT if commas else ""
+        _fail(entry, f"expected two numbers [x, y], got {_echo(value)}{hint}")
     return (_number(entry, value[0]), _number(entry, value[1]))
 
 

@@ -291,3 +291,16 @@ def test_a_decimal_comma_in_an_angle_is_asked_about(capsys, argv, asked):
     err = capsys.readouterr().err.splitlines()
     assert len(err) == 1
     assert ("a decimal comma?" in err[0]) is asked
+
+
+def test_a_point_with_decimal_commas_is_asked_about(tmp_path, capsys):
+    # "at = [0,052, 0,052]": four whole numbers to TOML, two decimals to the writer
+    text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
+    path = tmp_path / "comma.toml"
+    path.write_text(text.replace("at = [0.0, 0.0]", "at = [0,0, 0,0]"), "utf-8")
+    assert main(["structure", str(path)]) == 2
+    assert capsys.readouterr().err.splitlines() == [
+        f"assur: error: {path}: joints.A.at: expected two numbers [x, y], got "
+        "[0, 0, 0, 0]; a decimal comma? decimals are written with a point (0.5, not "
+        "0,5)"
+    ]
