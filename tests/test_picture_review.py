@@ -354,7 +354,8 @@ def test_the_lever_s_loads_kept_apart_keep_their_moments(
 ) -> None:
     import matplotlib.pyplot as plt
 
-    from assur.plotting.plans import _perp, _scale, images
+    from assur.explain._position import perp
+    from assur.plotting.plans import _scale, images
 
     from .test_plans import _segments
 
@@ -373,7 +374,7 @@ def test_the_lever_s_loads_kept_apart_keep_their_moments(
         turned = dataclasses.replace(pos, bodies=bodies)
         terms = lever.lever_parts(pos, bodies)
         arrows = lever._lever_arrows(turned, terms, lever._apart(turned, terms))
-        found = [_perp(v) for v in images(turned, 1).values()]
+        found = [perp(v) for v in images(turned, 1).values()]
         mu = _scale(found)
         largest = max(np.hypot(*f) for _, f, _, _ in arrows)
         fmu = _scale([f for _, f, _, _ in arrows]) * 2.0

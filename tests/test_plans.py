@@ -12,6 +12,7 @@ import pytest
 
 import assur
 from assur.explain._lever import lever_parts, lever_rates
+from assur.explain._position import cross, perp
 from assur.explain._solve import position, table_at
 from assur.plotting import lever, plans, polygons
 
@@ -21,6 +22,15 @@ matplotlib.use("Agg")
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 STEMS = ["slider_crank_exercise", "six_bar_lecture", "whitworth", "class3", "tenbar"]
+
+
+@pytest.mark.parametrize("angle", [0.0, 0.5, 2.0, -2.9])
+def test_perp_turns_a_vector_a_quarter_turn_counter_clockwise(angle: float) -> None:
+    # the plans, the lever and the note draw k x r with this one function
+    v = 0.3 * np.array([np.cos(angle), np.sin(angle)])
+    turned = 0.3 * np.array([np.cos(angle + np.pi / 2), np.sin(angle + np.pi / 2)])
+    np.testing.assert_allclose(perp(v), turned, rtol=0.0, atol=1e-15)
+    assert cross(v, perp(v)) == pytest.approx(0.09, rel=1e-14)  # CCW, |v|^2
 
 
 @pytest.mark.parametrize("stem", STEMS)

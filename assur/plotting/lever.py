@@ -19,7 +19,7 @@ from assur._vec import integer
 from assur.errors import UsageError
 from assur.explain._friction_text import power_rows
 from assur.explain._lever import LeverTerm, lever_load, lever_parts, lever_rates
-from assur.explain._position import Position
+from assur.explain._position import Position, perp
 from assur.explain._tex import name as tex_name
 from assur.plotting._apart import slid
 from assur.plotting._drawing import (
@@ -36,7 +36,6 @@ from assur.plotting._numbers import quantity
 from assur.plotting._placing import Name, place_names
 from assur.plotting._style import INERTIA_COLOR, LOAD_COLOR, literal, load_colour
 from assur.plotting.plans import (
-    _perp,
     _pos,
     _scale,
     _title,
@@ -152,7 +151,7 @@ def zhukovsky_lever(
     bodies, speed, _ = lever_rates(pos, driver)
     unit_speed = bodies is not pos.bodies
     lever = dataclasses.replace(pos, bodies=bodies)
-    found = {n: _perp(v) for n, v in images(lever, 1).items()}
+    found = {n: perp(v) for n, v in images(lever, 1).items()}
     mu = _scale(list(found.values()))
     d = pos.plan.drivers[driver]
     whose = f" of driver {d.pair.name}" if len(pos.plan.drivers) > 1 else ""
@@ -269,7 +268,7 @@ def _lever_arrows(
     out = []
     for t in terms:
         if not t.couple:
-            image = _perp(t.velocity)
+            image = perp(t.velocity)
             out.append((image, t.load.force, _symbol(t.load.tex), False))
             continue
         ends = apart[t.body]
@@ -277,10 +276,10 @@ def _lever_arrows(
             continue
         (p, at_p), (q, at_q) = ends
         d = at_p - at_q
-        force = t.load.couple * _perp(d) / float(np.dot(d, d))
+        force = t.load.couple * perp(d) / float(np.dot(d, d))
         label = f"{t.load.tex}/l_{{{tex_name(p)}{tex_name(q)}}}"
         for point, sign, text in ((at_p, 1.0, label), (at_q, -1.0, f"-{label}")):
-            image = _perp(lever.coincident(t.body, point, 1))
+            image = perp(lever.coincident(t.body, point, 1))
             out.append((image, sign * force, _symbol(text), True))
     return out
 
@@ -304,7 +303,7 @@ def _name_pair_points(
     names = []
     for body, ends in apart.items():
         for name, at in ends or ():
-            image = _perp(lever.coincident(body, at, 1))
+            image = perp(lever.coincident(body, at, 1))
             if any(np.hypot(*(image - v)) <= 1e-9 * size for v in found.values()):
                 continue
             tip = image / mu

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur.explain._position import Position, from_table
+from assur.explain._position import Position, from_table, perp
 from assur.explain._rates import _sides
 from assur.explain._tex import name as tex_name
 from assur.groups._dyad import DyadSolver
@@ -201,7 +201,7 @@ def _crank_parts(
         for r in {tuple(place - pivot) for place in places}:
             if not any(r):
                 continue
-            normal, tangential = -w * w * np.array(r), eps * _perp(np.array(r))
+            normal, tangential = -w * w * np.array(r), eps * perp(np.array(r))
             if _arrow(ax, np.zeros(2), normal / mu, palette["n"], lw=1.8):
                 kinds["n"] = palette["n"]
             if _arrow(
@@ -337,8 +337,3 @@ def _pos(table: Table, angle: Any) -> Position:
 
     whole(table, "the plans")
     return from_table(table, _row(table, angle))
-
-
-def _perp(v: np.ndarray) -> np.ndarray:
-    """Return ``v`` turned by +90 degrees."""
-    return np.array([-v[1], v[0]])
