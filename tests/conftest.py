@@ -38,6 +38,41 @@ def data_dir() -> Path:
     return DATA
 
 
+def load_example(name: str) -> assur.Mechanism:
+    """The bundled example ``examples/<name>.toml``."""
+    return assur.load(EXAMPLES / f"{name}.toml")
+
+
+def run_cli(capsys: pytest.CaptureFixture[str], *args: Any) -> tuple[int, str, str]:
+    """Run ``assur ARGS`` (paths and numbers as text); return status, out and err."""
+    from assur.cli import main
+
+    status = main([str(a) for a in args])
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def file_names(folder: Path) -> set[str]:
+    """The names of what ``folder`` holds."""
+    return {p.name for p in folder.iterdir()}
+
+
+@pytest.fixture
+def double_rocker(tmp_path: Path) -> Path:
+    """A four-bar whose input link cannot turn fully, saved in ``tmp_path``.
+
+    It assembles from about 17.3 to 81.1 degrees (the reference pose's circuit) and
+    from 278.9 to 342.7 (another circuit, which the mechanism cannot reach from its
+    reference pose), with dead centres at the ends of both ranges.
+    """
+    mech = assur.catalog.four_bar(
+        crank=0.1, coupler=0.05, rocker=0.08, frame=0.1, angle=60.0
+    )
+    path = tmp_path / "double_rocker.toml"
+    assur.save(mech, path)
+    return path
+
+
 @contextlib.contextmanager
 def local_client(
     workers: int = 1, processes: bool = False, threads: int = 1

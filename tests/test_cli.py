@@ -661,19 +661,6 @@ def test_two_drivers_with_comma_ranges(capsys):
 # --- positions that cannot be assembled --------------------------------------------
 
 
-@pytest.fixture
-def double_rocker(tmp_path: Path) -> Path:
-    """A four-bar whose input link cannot turn fully: it assembles from about 24 to 96
-    degrees (the reference pose's circuit) and from 264 to 336 (another circuit,
-    which the mechanism cannot reach)."""
-    mech = assur.catalog.four_bar(
-        crank=0.1, coupler=0.05, rocker=0.08, frame=0.1, angle=60.0
-    )
-    path = tmp_path / "double_rocker.toml"
-    assur.save(mech, path)
-    return path
-
-
 def test_unassembled_positions_fail(double_rocker, capsys):
     text = fails(
         capsys, ["kinematics", double_rocker, "--angles", "0:360:30"], double_rocker

@@ -26,16 +26,11 @@ from assur._cli_common import MAX_POSITIONS, parse_angles
 from assur.errors import ModelError, UsageError
 
 from .conftest import EXAMPLES
+from .conftest import run_cli as run
 
 ROOT = Path(__file__).resolve().parent.parent
 FOUR_BAR = EXAMPLES / "four_bar.toml"
 SLIDER = EXAMPLES / "slider_crank_exercise.toml"
-
-
-def run(capsys, *argv) -> tuple[int, str, str]:
-    status = cli.main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return status, out, err
 
 
 def one_error(capsys, *argv) -> str:

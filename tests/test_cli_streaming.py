@@ -21,6 +21,8 @@ import assur
 from assur import _cli_summary, _cli_sweep, _sliced, cli
 from assur._cli_common import parse_angles
 
+from .conftest import run_cli as run
+
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 SLIDER_CRANK = EXAMPLES / "slider_crank_exercise.toml"
 SKIP_HINT = " (--skip-unassembled leaves such positions out)"
@@ -31,25 +33,6 @@ WHITWORTH = EXAMPLES / "whitworth.toml"  # its block and lever turn round and ro
 @pytest.fixture
 def small_slices(monkeypatch):
     monkeypatch.setattr(_sliced, "CHUNK", 8192)
-
-
-@pytest.fixture
-def double_rocker(tmp_path: Path) -> Path:
-    """A four-bar whose input link cannot turn fully, near dead centres at the ends
-    of its ranges (about 17.3, 81.1, 278.9 and 342.7 degrees; the last two are on
-    another circuit, which the mechanism cannot reach from its reference pose)."""
-    mech = assur.catalog.four_bar(
-        crank=0.1, coupler=0.05, rocker=0.08, frame=0.1, angle=60.0
-    )
-    path = tmp_path / "double_rocker.toml"
-    assur.save(mech, path)
-    return path
-
-
-def run(capsys, *args) -> tuple[int, str, str]:
-    status = cli.main([str(a) for a in args])
-    out, err = capsys.readouterr()
-    return status, out, err
 
 
 def whole(command: str, path: Path, spec: str, skip: bool = False):

@@ -14,9 +14,9 @@ import numpy as np
 import pytest
 
 import assur
-from assur.cli import main
 
 from .conftest import EXAMPLES
+from .conftest import run_cli as run
 from .test_cli_robustness import shell, subprocess_env
 
 WHITWORTH = EXAMPLES / "whitworth.toml"
@@ -26,12 +26,6 @@ EPSILON_NOTE = (
     "out: the crank's acceleration is its equation of motion's (driver.epsilon)\n"
 )
 """What ``assur dynamics`` tells of the four-bar's file (its crank accelerates)."""
-
-
-def run(capsys, *args) -> tuple[int, str, str]:
-    status = main([str(a) for a in args])
-    out, err = capsys.readouterr()
-    return status, out, err
 
 
 def one_error(capsys, *args) -> str:

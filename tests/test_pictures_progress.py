@@ -7,16 +7,10 @@ from pathlib import Path
 
 import pytest
 
-from assur import cli
+from .conftest import run_cli as run
 
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 FOUR_BAR = EXAMPLES / "four_bar.toml"
-
-
-def run(capsys, *args) -> tuple[int, str, str]:
-    status = cli.main([str(a) for a in args])
-    out, err = capsys.readouterr()
-    return status, out, err
 
 
 @pytest.mark.pictures
