@@ -33,7 +33,7 @@ import assur
 from assur import Driver, Joint, Link, Load, LoadTable, Mechanism, Point
 
 from . import oracle
-from .conftest import EXAMPLES
+from .conftest import load_example
 
 DYNAMIC = (
     "four_bar",
@@ -51,9 +51,8 @@ DELTA = 0.05
 flywheel at their nominal speed."""
 
 
-@functools.cache
-def example(name: str) -> assur.Mechanism:
-    return assur.load(EXAMPLES / f"{name}.toml")
+example = functools.cache(load_example)
+"""An example mechanism loaded once (a frozen model, shared by the tests)."""
 
 
 @functools.cache
@@ -499,16 +498,12 @@ def test_a_prismatic_driver_is_refused():
 
 def test_several_drivers_are_refused():
     with pytest.raises(assur.ModelError, match="2 drivers; expected one driving crank"):
-        assur.dynamics(example_file("five_bar_two_cranks"))
-
-
-def example_file(name: str) -> Mechanism:
-    return assur.load(EXAMPLES / f"{name}.toml")
+        assur.dynamics(load_example("five_bar_two_cranks"))
 
 
 def test_a_mechanism_without_mass_is_refused():
     with pytest.raises(assur.ModelError, match="no link has a mass"):
-        assur.dynamics(example_file("tenbar"))
+        assur.dynamics(load_example("tenbar"))
 
 
 @pytest.mark.parametrize("delta", [1e-9, 1.99])

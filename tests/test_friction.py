@@ -31,16 +31,13 @@ import assur
 from assur.cli import main
 
 from . import oracle
+from .conftest import load_example as example
 from .mechanisms import any_case, bounded
 from .test_kinetostatics import needs_forces, steady
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 RUBBING = ["slider_crank_friction", "four_bar_bearings", "slider_crank_locking"]
 RTOL = 1e-9
-
-
-def example(name: str) -> assur.Mechanism:
-    return assur.load(EXAMPLES / f"{name}.toml")
 
 
 def with_friction(

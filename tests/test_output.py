@@ -31,13 +31,10 @@ from assur._output import (
 from assur.errors import AssurError, ModelError, OutputError
 
 from .conftest import EXAMPLES
+from .conftest import file_names as names
 
 ROOT = Path(__file__).resolve().parent.parent
 OLD = "the old contents\n"
-
-
-def names(folder: Path) -> set[str]:
-    return {p.name for p in folder.iterdir()}
 
 
 @pytest.fixture

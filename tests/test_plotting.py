@@ -22,6 +22,7 @@ from assur.analysis import default_positions
 from assur.errors import UsageError
 from assur.plan import compile_plan
 
+from .conftest import load_example as _load
 from .test_imports import names_imported
 
 matplotlib.use("Agg")
@@ -46,10 +47,6 @@ def _reaction(table: assur.Table, joint: str, sign: float = 1.0) -> str:
     pair = plan.pairs[joint]
     by, on = plan.bodies[pair.first], plan.bodies[pair.second]
     return reaction_symbol(by, on) if sign > 0 else reaction_symbol(on, by)
-
-
-def _load(name: str) -> assur.Mechanism:
-    return assur.load(EXAMPLES / f"{name}.toml")
 
 
 @pytest.fixture(scope="module")

@@ -17,6 +17,8 @@ import assur
 from assur import _output, _stdout, _tableio
 from assur.errors import OutputError
 
+from .conftest import file_names as names
+
 EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
 
 
@@ -189,10 +191,6 @@ def test_parquet_without_pyarrow_says_how_to_get_it(tmp_path, monkeypatch):
     with pytest.raises(ImportError, match=r"needs pyarrow.*pip install"):
         table.to_parquet(tmp_path / "t.parquet")
     assert names(tmp_path) == set()
-
-
-def names(folder: Path) -> set[str]:
-    return {p.name for p in folder.iterdir()}
 
 
 def test_outputs_name_their_own_file(tmp_path, monkeypatch):
