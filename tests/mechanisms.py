@@ -301,6 +301,34 @@ def reference_drive(mech: assur.Mechanism) -> np.ndarray:
     return np.array(out)
 
 
+def steady(mech: assur.Mechanism, **changes: Any) -> assur.Mechanism:
+    """``mech`` with its drivers at constant speed (epsilon 0) or as ``changes`` say."""
+    changes = {"epsilon": 0.0, **changes}
+    drivers = tuple(dataclasses.replace(d, **changes) for d in mech.drivers)
+    return dataclasses.replace(mech, drivers=drivers)
+
+
+def one_turn(
+    mech: assur.Mechanism, count: int, *, endpoint: bool = True
+) -> tuple[np.ndarray, float]:
+    """One turn of the fastest crank from the reference pose, every driver at its own
+    rate: ``count`` positions (deg) and the time between rows (s).
+
+    With ``endpoint`` the last row closes the turn, as ``numpy.linspace`` does;
+    without, the rows are 1/count turn apart and the last is one step short of it.
+    """
+    rates = np.degrees([d.omega for d in mech.drivers])
+    period = 360.0 / float(np.max(np.abs(rates)))
+    if endpoint:
+        t = np.linspace(0.0, period, count)[:, None]
+        step = period / (count - 1)
+    else:
+        t = np.arange(count)[:, None] * (period / count)
+        step = period / count
+    out = reference_drive(mech) + rates * t
+    return (out[:, 0] if out.shape[1] == 1 else out), step
+
+
 def _point_at(mech: assur.Mechanism, name: str) -> tuple[float, float]:
     for item in (*mech.joints, *mech.points):
         if item.name == name:

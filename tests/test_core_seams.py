@@ -29,13 +29,13 @@ from assur.plan import cached_plan, compile_plan, plan_of
 
 from . import oracle
 from .groups import dense_rrr
+from .mechanisms import one_turn
 from .test_kinematics import long_crank_four_bar
 from .test_kinetostatics import (
     assert_balancing_check,
     assert_links_in_equilibrium,
     assert_matches_global_solve,
     needs_forces,
-    turn,
 )
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
@@ -47,7 +47,7 @@ def magnitude(values: np.ndarray) -> float:
 
 
 def positions(mech: assur.Mechanism, count: int = 24) -> np.ndarray:
-    return turn(mech, count)[0]
+    return one_turn(mech, count, endpoint=False)[0]
 
 
 def forced(mech: assur.Mechanism) -> bool:

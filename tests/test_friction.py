@@ -32,8 +32,8 @@ from assur.cli import main
 
 from . import oracle
 from .conftest import load_example as example
-from .mechanisms import any_case, bounded
-from .test_kinetostatics import needs_forces, steady
+from .mechanisms import any_case, bounded, steady
+from .test_kinetostatics import needs_forces
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 RUBBING = ["slider_crank_friction", "four_bar_bearings", "slider_crank_locking"]

@@ -29,29 +29,14 @@ from .mechanisms import (
     bounded,
     five_bar_cases,
     moved,
+    one_turn,
     reference_drive,
     slider_cases,
+    steady,
     triad_cases,
 )
 
 SETTINGS = bounded(12)
-
-
-def steady(mech: assur.Mechanism, **changes) -> assur.Mechanism:
-    """``mech`` with its drivers at constant speed (epsilon 0) or as ``changes`` say."""
-    changes = {"epsilon": 0.0, **changes}
-    drivers = tuple(dataclasses.replace(d, **changes) for d in mech.drivers)
-    return dataclasses.replace(mech, drivers=drivers)
-
-
-def turn_path(mech: assur.Mechanism, count: int) -> tuple[np.ndarray, float]:
-    """One turn of the fastest crank from the reference pose, every driver at its own
-    rate: positions (deg) and the time between rows."""
-    rates = np.degrees([d.omega for d in mech.drivers])
-    duration = 360.0 / float(np.max(np.abs(rates)))
-    t = np.linspace(0.0, duration, count)[:, None]
-    out = reference_drive(mech) + rates * t
-    return (out[:, 0] if out.shape[1] == 1 else out), duration / (count - 1)
 
 
 def driven_links(mech: assur.Mechanism) -> set[str]:
@@ -68,7 +53,7 @@ def driven_links(mech: assur.Mechanism) -> set[str]:
 
 def test_example_rigid_links_and_slides(example):
     mech = steady(example)
-    positions, dt = turn_path(mech, 361)
+    positions, dt = one_turn(mech, 361)
     table = assur.kinematics(mech, positions)
     oracle.assert_rigid(mech, table)
     oracle.assert_slides(mech, table)
@@ -82,7 +67,7 @@ def test_example_reference_pose(example):
 
 def test_example_derivatives_are_time_differences(example):
     mech = steady(example)
-    positions, _ = turn_path(mech, 25)
+    positions, _ = one_turn(mech, 25)
     oracle.assert_differences(mech, oracle.si(mech, positions[:-1]))
 
 
@@ -91,7 +76,7 @@ def test_example_angle_columns_continuous(example, start):
     """Angles of links that are not driven start in (-180, 180] and never jump by a
     turn; a driven crank's angle is the driver position itself."""
     mech = steady(example)
-    positions, dt = turn_path(mech, 181)
+    positions, dt = one_turn(mech, 181)
     positions = np.concatenate(
         [positions, positions[1:] + (positions[-1] - positions[0])]
     )
@@ -186,7 +171,7 @@ def test_example_epsilon_superposition(example):
     mech = example
     if example.drivers[0].epsilon == 0.0:
         mech = steady(example, omega=-7.0, epsilon=13.0)
-    positions, _ = turn_path(mech, 37)
+    positions, _ = one_turn(mech, 37)
     assert_superposition(mech, positions)
 
 

@@ -36,9 +36,10 @@ from .mechanisms import (
     bounded,
     five_bar_cases,
     moved,
-    reference_drive,
+    one_turn,
     slider_cases,
     slot_cases,
+    steady,
     triad_cases,
 )
 
@@ -55,22 +56,6 @@ def crank_cases() -> st.SearchStrategy[Case]:
         five_bar_cases(),
         triad_cases(),
     )
-
-
-def turn(mech: assur.Mechanism, count: int) -> tuple[np.ndarray, float]:
-    """One turn of the fastest crank from the reference pose at the drivers' rates:
-    positions (deg), one row per 1/count turn (the last row before a whole turn), and
-    the time between rows (s)."""
-    rates = np.degrees([d.omega for d in mech.drivers])
-    period = 360.0 / float(np.max(np.abs(rates)))
-    t = np.arange(count)[:, None] * (period / count)
-    out = reference_drive(mech) + rates * t
-    return (out[:, 0] if out.shape[1] == 1 else out), period / count
-
-
-def steady(mech: assur.Mechanism) -> assur.Mechanism:
-    drivers = tuple(dataclasses.replace(d, epsilon=0.0) for d in mech.drivers)
-    return dataclasses.replace(mech, drivers=drivers)
 
 
 def needs_forces(mech: assur.Mechanism) -> bool:
@@ -252,7 +237,7 @@ def assert_all(mech: assur.Mechanism, table: assur.Table) -> None:
 def cycle_work(mech: assur.Mechanism, count: int = 1440) -> tuple[float, float, float]:
     """Work over one turn at constant speed (periodic trapezoidal rule) of the balancing
     loads and of gravity and external loads; and the work of the loads' magnitudes."""
-    positions, dt = turn(mech, count)
+    positions, dt = one_turn(mech, count, endpoint=False)
     table = assur.forces(mech, positions)
     balancing = sum(
         oracle.balancing_column(mech, table, i) * d.omega
@@ -280,7 +265,7 @@ def test_example_over_a_turn(example):
         pytest.skip("no masses and no loads: nothing to analyse")
     if rubbing(example):
         pytest.skip("friction: tests/test_friction.py solves it globally with friction")
-    positions, _ = turn(example, 180)
+    positions, _ = one_turn(example, 180, endpoint=False)
     assert_all(example, assur.forces(example, positions))
 
 
@@ -309,7 +294,7 @@ def test_flipped_driver_joint_changes_only_the_sign_of_its_reaction():
             for j in mech.joints
         ),
     )
-    positions, _ = turn(mech, 24)
+    positions, _ = one_turn(mech, 24, endpoint=False)
     a = assur.forces(mech, positions)
     b = assur.forces(flipped, positions)
     for column in a.columns:

@@ -22,7 +22,8 @@ from assur.cli import main
 from assur.summary import Summary, efficiency
 
 from . import oracle
-from .test_kinetostatics import needs_forces, steady
+from .mechanisms import steady
+from .test_kinetostatics import needs_forces
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 DATA = Path(__file__).parent / "data"
