@@ -23,7 +23,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._follow import drivers
+from assur._follow import BranchOf, drivers
 from assur._kinematics import continuation
 from assur._vec import Array
 from assur._walk import flipped
@@ -32,6 +32,7 @@ from assur.plan import Plan
 __all__ = [
     "ChangePoints",
     "at_change_point",
+    "branch_function",
     "branches",
     "change_points",
     "closed",
@@ -311,6 +312,15 @@ def branches(
             if (ref - tol <= c < hi - tol) or (lo + tol < c <= ref + tol)
         ]
     return out, passed
+
+
+def branch_function(plan: Plan) -> BranchOf:
+    """Return the groups' branches past change points as a function of position.
+
+    One driver: ``f(drive, upto)`` is :func:`branches`' first item at ``drive`` (n, 1),
+    SI units; ``upto`` is not needed, since one scan gives every group's branches.
+    """
+    return lambda drive, upto: branches(plan, drive)[0]
 
 
 def at_change_point(plan: Plan, g: int, x: float) -> bool:

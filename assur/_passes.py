@@ -14,7 +14,7 @@ import numpy as np
 
 from assur import _kinematics as _kin
 from assur import kinetostatics as _kst
-from assur._branches import branches
+from assur._branches import branch_function
 from assur._drive import Rates, _at
 from assur._evaluate import SHORT
 from assur._loads import compile_loads
@@ -170,4 +170,4 @@ def _branch_of(plan: Plan) -> _kin.BranchOf:
     """Return the groups' branches past change points as a function of position."""
     if len(plan.drivers) > 1:
         return PathBranches(plan)
-    return lambda at, upto: branches(plan, at)[0]
+    return branch_function(plan)

@@ -22,7 +22,7 @@ from assur._branches import (
     SIZES,
     SLIDER_POINTS,
     STEP,
-    branches,
+    branch_function,
     change_points,
     gaps,
 )
@@ -132,7 +132,7 @@ def beyond(plan: Plan, drive: Array) -> Mask:
         return np.zeros(drive.shape[0], dtype=bool)
     out = ~span.reached(drive[:, 0])
     if out.any():
-        branch_of = _branches_of(plan) if change_points(plan) is not None else None
+        branch_of = branch_function(plan) if change_points(plan) is not None else None
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             found = solve(plan, drive[out], (0.0,), (0.0,), 0, branch_of)[1]
         far = np.ones(int(out.sum()), dtype=bool)
@@ -160,7 +160,7 @@ def _scan(plan: Plan) -> Reach | None:
     points = change_points(plan)
     cps = np.zeros(0) if points is None else np.concatenate(points.points)
     # the sweeps' own branches past change points (see assur._passes)
-    branch_of = _branches_of(plan) if cps.size else None
+    branch_of = branch_function(plan) if cps.size else None
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         bodies, found = solve(plan, grid[:, None], (0.0,), (0.0,), 0, branch_of)
     barriers = _failed(plan, grid, found, cps)
@@ -177,15 +177,6 @@ def _scan(plan: Plan) -> Reach | None:
             x = _refine(plan, g, a, b, branch_of)
             barriers.append(Barrier(g, "singular", x, x))
     return _bounded(plan, grid, period, barriers)
-
-
-def _branches_of(plan: Plan) -> BranchOf:
-    """Return the groups' branches past change points as a function of position."""
-
-    def branch_of(at: Array, upto: int) -> dict[int, Array]:
-        return branches(plan, at)[0]
-
-    return branch_of
 
 
 def _failed(plan: Plan, grid: Array, found: list[Trouble], cps: Array) -> list[Barrier]:

@@ -96,3 +96,20 @@ def test_a_sweep_ending_on_a_change_point_is_not_told_it_is_carried_through(angl
     carried = [str(w.message) for w in caught if "carried through" in str(w.message)]
     # 250 deg lies past the change point: carried through to it, rightly said
     assert len(carried) == (1 if 250.0 in angles else 0), carried
+
+
+def test_the_branch_function_flips_a_parallelogram_past_its_change_points():
+    """The sweep's and the reach's branches past change points (one function): a
+    parallelogram's dyad keeps its branch between 0 and 180 deg, where the reference
+    pose (45 deg) is, takes the other past either, and is back a turn later."""
+    from assur._branches import branch_function
+    from assur.plan import plan_of
+
+    from .test_numbers import PARALLELOGRAM
+
+    plan = plan_of(assur.loads(PARALLELOGRAM))
+    own = plan.solvers[0].branch
+    drive = np.radians([[90.0], [200.0], [-90.0], [400.0]])
+    for upto in range(len(plan.solvers)):  # one scan gives every group's branches
+        found = branch_function(plan)(drive, upto)
+        np.testing.assert_array_equal(found[0], [own, -own, -own, own])
