@@ -17,6 +17,10 @@ HINT = "; a decimal comma? decimals are written with a point (0.5, not 0,5)"
 
 _DIGITS_COMMA_DIGITS = re.compile(r"\d,\d")
 _PLACE = re.compile(r"at line (\d+), column (\d+)")
+_COMMA_BEFORE = re.compile(r"\d,\d+$")
+"""A decimal comma whose digits end where the parser stopped: "[0,052" stops at
+the 5, since TOML reads the 0 after the comma as a whole number, then refuses its
+leading zero."""
 
 
 def has_decimal_comma(text: str) -> bool:
@@ -52,13 +56,18 @@ def range_hint(parts: list[str]) -> str:
 def comma_at(text: str, message: str) -> bool:
     r"""Whether a parser's ``message`` points at a comma between two digits of ``text``.
 
-    ``message`` names the place as tomllib does: "(at line 15, column 9)", both
-    counted from 1.
+    Or just past the digits after such a comma, where a decimal with a leading zero
+    ("0,052") stopped the parser. ``message`` names the place as tomllib does:
+    "(at line 15, column 9)", both counted from 1.
 
     Examples
     --------
     >>> comma_at("a = 1\nmass = 0,5\n", "Expected newline (at line 2, column 9)")
     True
+    >>> comma_at("at = [0,052, 0,052]", "Unclosed array (at line 1, column 10)")
+    True
+    >>> comma_at("at = [0, 52", "Unclosed array (at line 1, column 12)")
+    False
     """
     place = _PLACE.search(message)
     if place is None:
@@ -68,6 +77,7 @@ def comma_at(text: str, message: str) -> bool:
     if not 0 <= row < len(lines):
         return False
     line = lines[row]
-    return 0 < column < len(line) - 1 and has_decimal_comma(
+    at_comma = 0 < column < len(line) - 1 and has_decimal_comma(
         line[column - 1 : column + 2]
     )
+    return at_comma or _COMMA_BEFORE.search(line[:column]) is not None

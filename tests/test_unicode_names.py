@@ -294,7 +294,7 @@ def test_a_decimal_comma_in_an_angle_is_asked_about(capsys, argv, asked):
 
 
 def test_a_point_with_decimal_commas_is_asked_about(tmp_path, capsys):
-    # "at = [0,052, 0,052]": four whole numbers to TOML, two decimals to the writer
+    # "at = [0,0, 0,0]": four whole numbers to TOML, two decimals to the writer
     text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
     path = tmp_path / "comma.toml"
     path.write_text(text.replace("at = [0.0, 0.0]", "at = [0,0, 0,0]"), "utf-8")
