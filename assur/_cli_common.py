@@ -68,8 +68,9 @@ def parse_angles(spec: str, drivers: int = 1, option: str = "--angles") -> np.nd
     ranges = [_one_range(part, option) for part in parts]
     if len({len(r) for r in ranges}) != 1:
         counts = spoken([str(len(r)) for r in ranges])
+        # two drivers: "0:90:22,5" splits into a range and a value, never equal
         msg = f"{option}: the ranges have {counts} positions; expected equal counts"
-        raise UsageError(msg)
+        raise UsageError(msg + range_hint(parts))
     return ranges[0] if drivers == 1 else np.stack(ranges, axis=-1)
 
 

@@ -45,3 +45,18 @@ def test_an_unclosed_array_of_whole_numbers_is_not_asked_about(tmp_path, capsys)
     err = capsys.readouterr().err
     assert "not valid TOML" in err
     assert "decimal comma" not in err
+
+
+@pytest.mark.parametrize(
+    ("angles", "asked"),
+    [("0:90:22,5", True), ("0:90:10,0:40:10", False)],  # the second: two ranges
+)
+def test_a_decimal_comma_in_two_drivers_angles_is_asked_about(capsys, angles, asked):
+    # two drivers take two ranges: "0:90:22,5" is one range (5 positions) and the
+    # single value 5, told as unequal counts
+    path = str(EXAMPLES / "five_bar_two_cranks.toml")
+    assert main(["kinematics", path, "--angles", angles]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1
+    assert "the ranges have " in err[0]
+    assert err[0].endswith(HINT) is asked
