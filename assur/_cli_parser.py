@@ -52,7 +52,9 @@ class _Parser(argparse.ArgumentParser):
         written = arg_strings[0]
         if action in self._given:
             first, earlier = self._given[action]
-            if earlier != values:
+            # the same text is the same value, even where it reads as NaN (which
+            # equals nothing): 'nan' and 'nan' are not two values
+            if written != first and earlier != values:
                 msg = (
                     f"given twice, {describe(first)} and {describe(written)}; "
                     "expected one value"

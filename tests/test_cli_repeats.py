@@ -8,6 +8,7 @@ the parser itself, so that a new command or option is covered without a new line
 from __future__ import annotations
 
 import argparse
+import math
 
 import pytest
 
@@ -128,3 +129,12 @@ def test_a_second_parse_starts_with_no_option_given():
     parser.add_argument("--angles")
     assert parser.parse_args(["--angles", "1"]).angles == "1"
     assert parser.parse_args(["--angles", "2"]).angles == "2"
+
+
+def test_the_same_text_again_is_taken_even_where_it_is_nan():
+    # NaN equals nothing, not even itself: the value is refused for its range by
+    # the command, not as a second value
+    parser = _Parser(prog="assur")
+    parser.add_argument("--delta", type=float)
+    args = parser.parse_args(["--delta", "nan", "--delta", "nan"])
+    assert math.isnan(args.delta)
