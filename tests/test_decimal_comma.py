@@ -21,6 +21,8 @@ HINT = "; a decimal comma? decimals are written with a point (0.5, not 0,5)"
         # "0,052": TOML reads the 0 after the comma, then stops at its leading zero
         ("at = [0.0, 0.0]", "at = [0,052, 0,052]"),
         ("at = [0.0, 0.0]", "at = [0.0, 0,05]"),
+        # in an inline table "05" reads as the next key, refused at the brace
+        ("at = [0.0, 0.0]", 'at = {from = "A", toward = "B", distance = 0,05}'),
     ],
 )
 def test_a_decimal_with_a_leading_zero_in_an_array_is_asked_about(
