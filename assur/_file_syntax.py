@@ -31,7 +31,12 @@ def file_data(text: str, json_format: bool) -> Any:
         )
     except (tomllib.TOMLDecodeError, json.JSONDecodeError) as err:
         msg = f"not valid {kind}: {_one_line(str(err))}"
-        if not json_format and comma_at(text, str(err)):
+        place = str(err)
+        if isinstance(err, json.JSONDecodeError):
+            # JSON stops at the digit after the comma ("0,5": a property name
+            # expected at the 5); the place is given as tomllib gives it
+            place = f"(at line {err.lineno}, column {err.colno - 1})"
+        if comma_at(text, place):
             msg += HINT  # "mass = 0,5": a half, to a Russian or a German reader
         raise ModelError(msg) from err
     except RecursionError as err:

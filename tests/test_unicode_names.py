@@ -304,3 +304,22 @@ def test_a_point_with_decimal_commas_is_asked_about(tmp_path, capsys):
         "[0, 0, 0, 0]; a decimal comma? decimals are written with a point (0.5, not "
         "0,5)"
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "asked"),
+    [
+        ('{"mass": 0,5}', True),
+        ('{"links": {"crank": {"mass": 0,052, "length": 1}}}', True),
+        ('{"mass": 1,}', False),  # a comma too many
+        ('{"at": [1, 2}', False),
+    ],
+)
+def test_a_decimal_comma_in_a_json_file_is_asked_about(text, asked):
+    # JSON said only "Expecting property name enclosed in double quotes"
+    from assur._file_syntax import file_data
+    from assur.errors import ModelError
+
+    with pytest.raises(ModelError, match=r"^not valid JSON: ") as err:
+        file_data(text, json_format=True)
+    assert ("; a decimal comma? decimals are written" in str(err.value)) is asked
