@@ -21,6 +21,8 @@ GROUND = "ground"
 """Name of the frame (public as :data:`assur.model.GROUND`)."""
 
 JOINT_KINDS = ("revolute", "prismatic", "slot")
+POINT_FORMS = "[x, y], a joint's name or {from, toward, distance}"
+"""The forms of a point (FORMAT.md, "File"), said where one is missing."""
 RESERVED = ("~", ".", ",")
 RESERVED_NAMES = ("angle", "driver", "shaking", "residual")
 """Names the tables use for their own columns."""

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Any, NoReturn
 
-from assur._checks import JOINT_KINDS, LARGEST
+from assur._checks import JOINT_KINDS, LARGEST, POINT_FORMS
 from assur._decimal_comma import HINT
 from assur._points import PointSpec
 from assur._text import describe, key_text, spoken, suggest
@@ -91,8 +91,7 @@ def _check_keys(entry: str, data: Any, allowed: tuple[str, ...]) -> dict[str, An
 NEEDED = {
     "kind": f"the joint's kind: {spoken(JOINT_KINDS, 'or')}",
     "links": "the two links it joins, [first, second]",
-    "at": "where it is in the reference pose: [x, y], a joint's name or "
-    "{from, toward, distance}",
+    "at": f"where it is in the reference pose: {POINT_FORMS}",
     "joint": "the name of the joint it drives",
     "omega": "the driver's speed, rad/s (m/s for a prismatic joint)",
     "link": "the name of a moving link",

@@ -13,6 +13,7 @@ import numpy as np
 
 from assur._checks import (
     GROUND,
+    POINT_FORMS,
     _check_vec,
     _fail,
     _finite,
@@ -140,7 +141,10 @@ def _validate_load(
         _fail(entry, "expected a 'force' or a 'torque'")
     if load.force is not None:
         if load.at is None:
-            _fail(entry, "a force needs its point of application 'at'")
+            _fail(
+                entry,
+                f"a force needs its point of application 'at'; expected {POINT_FORMS}",
+            )
         if isinstance(load.force, LoadTable):
             _validate_table(f"{entry}.force", load.force, 2, mech)
         else:

@@ -97,3 +97,15 @@ def test_a_missing_key_says_what_it_holds(where, key, words):
 def test_a_name_taken_says_what_is_expected(change, message):
     with pytest.raises(ModelError, match=f"^{re.escape(message)}$"):
         change(_read(SLIDER))
+
+
+def test_a_force_without_its_point_says_what_a_point_is() -> None:
+    # "a force needs its point of application 'at'" named the key, not its forms
+    data = copy.deepcopy(SLIDER)
+    data["loads"] = [{"link": "rod", "force": [10.0, 0.0]}]
+    with pytest.raises(ModelError) as err:
+        _read(data)
+    assert str(err.value).endswith(
+        "loads[0]: a force needs its point of application 'at'; expected [x, y], a "
+        "joint's name or {from, toward, distance}"
+    )
