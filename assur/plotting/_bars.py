@@ -72,6 +72,18 @@ def settled_renderer(ax: Any) -> Any:
     return renderer
 
 
+def settle_without(ax: Any, texts: list[Any]) -> Any:
+    """Return a settled renderer of ``ax``'s figure, ``texts`` left out of its layout.
+
+    Names placed on the drawing do not resize the axes: they are placed in the
+    layout made without them, which placing them (each inside its axes) leaves as
+    it is.
+    """
+    for text in texts:
+        text.set_in_layout(False)
+    return settled_renderer(ax)
+
+
 def lay_out(fig: Any, engine: Any) -> None:
     """Run the layout ``engine`` on ``fig`` as ``Figure.draw`` does.
 

@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from assur.plotting._bars import label_box, root_figure, settled_renderer
+from assur.plotting._bars import label_box, root_figure, settle_without
 
 BARRED = 1e6
 """Cost of a place that cuts a name off at the axes' frame."""
@@ -66,6 +66,7 @@ def place_names(
     lines: np.ndarray | None = None,
     avoid: list[Any] | None = None,
     width: float = 0.0,
+    renderer: Any = None,
 ) -> None:
     """Put every name of ``names`` at its best place on ``ax``, in turn (twice).
 
@@ -73,13 +74,14 @@ def place_names(
     beside the named sides themselves; the other texts of ``ax``, its legend and
     the artists ``avoid`` (markers, small patches) are kept clear of, and the
     lines by half their ``width`` (points: a link's bar is broad). The names do
-    not resize the axes.
+    not resize the axes. ``renderer``, when given, is a renderer of the figure
+    laid out without ``names`` (``_bars.settle_without``'s): the names of many
+    axes of one figure are then placed in one layout.
     """
     if not names:
         return
-    for name in names:
-        name.text.set_in_layout(False)
-    renderer = settled_renderer(ax)
+    if renderer is None:
+        renderer = settle_without(ax, [n.text for n in names])
     to_display = ax.transData.transform
     own = np.array([to_display([n.start, n.end]) for n in names])
     others = np.empty((0, 2, 2)) if lines is None else np.asarray(lines, float)

@@ -18,6 +18,7 @@ from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
 from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
+from assur.plotting._bars import settle_without
 from assur.plotting._drawing import _arrow_apart, _legend
 from assur.plotting._mathtext import _symbol, reaction_symbol
 from assur.plotting._numbers import quantity
@@ -77,9 +78,12 @@ def force_polygons(table: Table, angle: Any = None) -> Figure:
         solved |= set(rec.bodies)
     fig.suptitle(_title(pos, "force polygons"), fontsize=10)
     # the sides meet at the polygon's corners: each name beside its own side,
-    # outside the polygon, clear of the other sides and names
+    # outside the polygon, clear of the other sides and names; one layout for
+    # every polygon (laying the whole figure out again for each polygon made the
+    # time grow as the square of the number of groups)
+    renderer = settle_without(axes.flat[0], [n.text for own in names for n in own])
     for ax, own in zip(axes.flat, names, strict=True):
-        place_names(ax, own)
+        place_names(ax, own, renderer=renderer)
     return fig
 
 
