@@ -1,8 +1,8 @@
 """The work ``assur plans`` takes grows with what it draws, not faster.
 
 A long chain of dyads (``tests/test_long_chains.py``'s) has one force polygon per
-group: the figure of the polygons is laid out once for all of them, not once per
-polygon. The places chosen
+group and many symbols: the figure of the polygons is laid out once for all of
+them, not once per polygon, and each symbol is checked once. The places chosen
 are those the former work chose, the axes where it put them to round-off.
 """
 
@@ -12,7 +12,7 @@ import matplotlib
 import numpy as np
 
 import assur
-from assur.plotting import _bars, polygons
+from assur.plotting import _bars, _mathtext, polygons
 
 from .test_long_chains import chain
 
@@ -59,3 +59,26 @@ def test_the_force_polygons_are_laid_out_once_for_every_group(monkeypatch) -> No
         np.testing.assert_allclose(again, laid, rtol=0.0, atol=1e-12)
     finally:
         plt.close(fig)
+
+
+def test_a_symbol_is_checked_once_however_often_it_is_asked_for(monkeypatch) -> None:
+    parser = _mathtext._parser()
+    parses = []
+
+    class Counted:
+        def parse(self, text, dpi):
+            parses.append(text)
+            return parser.parse(text, dpi)
+
+    _mathtext._symbol.cache_clear()
+    monkeypatch.setattr(_mathtext, "_parser", Counted)
+    first = _mathtext.reaction_symbol("u7", "v7")
+    assert _mathtext.reaction_symbol("u7", "v7") == first
+    assert _mathtext.centre_symbol("v7", "u7") != first
+    assert _mathtext.centre_symbol("v7", "u7") == _mathtext.centre_symbol("v7", "u7")
+    assert len(parses) == 2
+    # a symbol mathtext cannot set is written plain, the second time too
+    plain = _mathtext._symbol("\\frac{")
+    assert _mathtext._symbol("\\frac{") == plain
+    assert "$" not in plain
+    assert len(parses) == 3

@@ -13,12 +13,20 @@ from assur.explain._tex import TEX_SPECIAL
 from assur.explain._tex import name as tex_name
 from assur.plotting._style import literal, math_name
 
+SYMBOLS = 4096
+"""Symbols whose form for a picture is kept (a chain of 40 dyads has some 3300
+instant centres, each with a symbol)."""
 
+
+@functools.lru_cache(maxsize=SYMBOLS)
 def _symbol(tex: str) -> str:
     """Return a load's TeX symbol (as the note writes it) for a picture, as mathtext.
 
     The names in it are drawn as written (:func:`~assur.plotting._style.math_name`);
-    a symbol mathtext still cannot set is written plain.
+    a symbol mathtext still cannot set is written plain. Each symbol is tried once:
+    the trial is a whole mathtext parse, the pictures ask for the same symbols many
+    times (the lever for each load's arrow, colour and line of its list), and
+    matplotlib keeps only its last 50 parses.
     """
     math_text = f"${_names(tex)}$"
     try:
