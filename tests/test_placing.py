@@ -183,3 +183,32 @@ def test_the_measures_taken_for_a_name_do_not_grow_with_the_names(monkeypatch) -
             assert frame[1] < y < frame[3]
     finally:
         plt.close(fig)
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_a_place_is_measured_against_the_named_sides_near_it_only(
+    seed: int, monkeypatch
+) -> None:
+    """The places round one side of a crowd spread far: only the nearby sides are
+    measured, and the costs are those of every side measured, to the bit."""
+    rng = np.random.default_rng(seed)
+    named = _segments(rng, 400) * 10.0  # over 4000 display units
+    segments = np.concatenate([named, _segments(rng, 100) * 10.0])
+    boxes = np.concatenate(_boxes(rng, 30), axis=1) * 10.0
+    frame = np.array([1.0, 1.0, 3999.0, 3999.0])
+    size = np.array([24.0, 11.5])
+    measured = []
+    distances = _placing._box_distances
+
+    def counted(low, high, segments):
+        measured.append(len(segments))
+        return distances(low, high, segments)
+
+    monkeypatch.setattr(_placing, "_box_distances", counted)
+    for own in (0, 123, 399):
+        centres = _placing._candidates(named[own], size, None, 4.0)
+        args = (centres, size, frame, boxes, segments, own, named, 10.0, 3.0)
+        new = _costs(*args)
+        np.testing.assert_array_equal(new, _old_costs(*args))
+    # the own side and those round it, not the 400
+    assert max(measured) < len(named) / 4

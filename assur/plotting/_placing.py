@@ -239,15 +239,37 @@ def _costs(
     low, high = centres - size / 2, centres + size / 2
     cost = _framed(low, high, frame, boxes)
     cost += CLASH * _crossed(low - half, high + half, segments).sum(axis=1)
-    # how far each place's box is from each named side or point
-    apart = _box_distances(low, high, named)
-    mine = apart[own]
-    if len(named) > 1:
-        rival = np.delete(apart, own, axis=0).min(axis=0)
+    # how far each place's box is from its own side or point, and from the others
+    # that may be nearer than it or than clear (a box is no farther from its own
+    # side than its centre is): a farther one costs no place anything
+    centred = _distance(centres, named[own])
+    reach = max(centred.max(), clear)
+    others = _within(low, high, np.delete(named, own, axis=0), reach)
+    apart = _box_distances(low, high, np.concatenate([named[own : own + 1], others]))
+    mine = apart[0]
+    if len(apart) > 1:
+        rival = apart[1:].min(axis=0)
         cost += RIVAL * (rival <= mine)
         # where two sides cross, a name by either is read as the other's too
         cost += 20.0 * np.clip(clear - rival, 0.0, None)
-    return cost + 0.05 * _distance(centres, named[own]) + np.arange(len(centres)) * 1e-3
+    return cost + 0.05 * centred + np.arange(len(centres)) * 1e-3
+
+
+def _within(
+    low: np.ndarray, high: np.ndarray, segments: np.ndarray, reach: float
+) -> np.ndarray:
+    """Return those of ``segments`` that may come within ``reach`` of a box.
+
+    One whose bounds are farther than ``reach`` (and a display unit for rounding)
+    from those of all the boxes (``low``, ``high``) is farther from each: with
+    ``reach`` past :data:`CLEAR` and a place's own side, it costs no place
+    anything: a name among many is measured against those round it only.
+    """
+    if not np.isfinite(reach):
+        return segments
+    first, last = segments.min(axis=1), segments.max(axis=1)
+    gap = np.maximum(np.maximum(first - high.max(axis=0), low.min(axis=0) - last), 0)
+    return segments[np.hypot(gap[:, 0], gap[:, 1]) <= reach + 1.0]
 
 
 def _crossed(low: np.ndarray, high: np.ndarray, segments: np.ndarray) -> np.ndarray:
