@@ -138,3 +138,12 @@ def test_the_same_text_again_is_taken_even_where_it_is_nan():
     parser.add_argument("--delta", type=float)
     args = parser.parse_args(["--delta", "nan", "--delta", "nan"])
     assert math.isnan(args.delta)
+
+
+def test_the_same_value_written_twice_otherwise_is_taken():
+    # "--driver A,B" and "--driver 'A, B'" name the same joints: the values are
+    # compared, not the text that gave them
+    parser, _ = cli._parser()
+    given = ["structure", str(FOUR_BAR), "--driver", "A,B"]
+    again = parser.parse_args([*given, "--driver", "A, B"])
+    assert again == parser.parse_args(given)
