@@ -72,7 +72,9 @@ def comma_at(text: str, message: str) -> bool:
     place = _PLACE.search(message)
     if place is None:
         return False
-    lines = text.splitlines()
+    # lines as tomllib counts them, at "\n" alone: splitlines() also splits at
+    # U+2028 and U+2029, which a comment or a string may hold
+    lines = text.split("\n")
     row, column = int(place.group(1)) - 1, int(place.group(2)) - 1
     if not 0 <= row < len(lines):
         return False
