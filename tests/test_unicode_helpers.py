@@ -101,3 +101,14 @@ def test_no_fallback_font_installed_changes_nothing(monkeypatch):
 
     monkeypatch.setattr(_fonts, "FALLBACKS", ())
     assert _fonts.fallback_fonts() == {}
+
+
+@pytest.mark.parametrize(
+    "mark", list("\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
+)
+def test_every_embedding_override_and_isolate_is_a_control(mark):
+    # Unicode's explicit directional formatting characters, all nine: each one
+    # turns the text after it around
+    from assur._checks import _control
+
+    assert _control(f"rod{mark}_1") == mark

@@ -161,13 +161,19 @@ def test_a_latex_note_of_cyrillic_names_says_pdflatex_cannot_set_them(renamed):
     # (U+043A) not set up for use with LaTeX"), and nothing had said so
     import assur
     from assur.errors import AssurWarning
+    from assur.explain._latex_chars import unset
 
     note = assur.explain(assur.load(renamed), 45.0)
     with pytest.warns(AssurWarning, match=r"pdflatex cannot set .*\(U\+043A\)"):
         text = note.to_latex()
-    first = text.splitlines()[0]
+    first, _, body = text.partition("\n")
     assert first.startswith("% pdflatex cannot set these characters: U+043A, ")
     assert first.isascii()  # code points only, whatever TeX makes of a comment
+    # the first six of them, and "..." for the rest
+    missing = unset(body)
+    assert len(missing) > 6
+    listed = ", ".join(f"U+{ord(c):04X}" for c in missing[:6])
+    assert first.endswith(f": {listed}, ...")
 
 
 def test_a_latex_note_of_accented_latin_names_compiles(tmp_path, capsys):
@@ -214,6 +220,16 @@ def test_a_file_saved_in_a_code_page_is_told_where(tmp_path, capsys, encoding, b
         f"assur: error: {path}: not UTF-8 text (byte {byte} at line 2, column 9 "
         "cannot be decoded); expected a TOML or JSON file saved as UTF-8"
     ]
+
+
+def test_a_bad_byte_after_a_letter_of_two_bytes_is_told_by_its_column(tmp_path, capsys):
+    # an editor counts "é" as one column, not as its two bytes in UTF-8
+    before = 'format = 1\nname = "é'
+    path = tmp_path / "mixed.toml"
+    path.write_bytes(before.encode("utf-8") + b'\xff"\n')
+    assert main(["structure", str(path)]) == 2
+    column = len(before.rpartition("\n")[2]) + 1
+    assert f"(byte 0xFF at line 2, column {column} cannot" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("mark", ["\u202e", "\u2067"])
@@ -293,15 +309,19 @@ def test_a_decimal_comma_in_an_angle_is_asked_about(capsys, argv, asked):
     assert ("a decimal comma?" in err[0]) is asked
 
 
-def test_a_point_with_decimal_commas_is_asked_about(tmp_path, capsys):
-    # "at = [0,0, 0,0]": four whole numbers to TOML, two decimals to the writer
+@pytest.mark.parametrize(
+    ("at", "read"), [("[0,0, 0,0]", "[0, 0, 0, 0]"), ("[0,5, 0]", "[0, 5, 0]")]
+)
+def test_a_point_with_decimal_commas_is_asked_about(tmp_path, capsys, at, read):
+    # "at = [0,0, 0,0]": four whole numbers to TOML, two decimals to the
+    # writer; "[0,5, 0]" three
     text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
     path = tmp_path / "comma.toml"
-    path.write_text(text.replace("at = [0.0, 0.0]", "at = [0,0, 0,0]"), "utf-8")
+    path.write_text(text.replace("at = [0.0, 0.0]", f"at = {at}"), "utf-8")
     assert main(["structure", str(path)]) == 2
     assert capsys.readouterr().err.splitlines() == [
         f"assur: error: {path}: joints.A.at: expected two numbers [x, y], got "
-        "[0, 0, 0, 0]; a decimal comma? decimals are written with a point (0.5, not "
+        f"{read}; a decimal comma? decimals are written with a point (0.5, not "
         "0,5)"
     ]
 
