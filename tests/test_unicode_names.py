@@ -52,7 +52,12 @@ def test_a_readable_table_of_wide_names_stays_aligned(renamed, capsys, command):
     assert len({shown_width(line) for line in lines}) == 1
 
 
-def test_a_summary_of_wide_names_stays_aligned(renamed, capsys):
+@pytest.mark.parametrize("guide", ["направляющая_e\u0301", "g_e\u0301"])
+def test_a_summary_of_wide_names_stays_aligned(renamed, capsys, guide):
+    # the guide's name the longest of the summary, or shorter than others: the
+    # padding after it is counted in columns either way
+    text = renamed.read_text(encoding="utf-8")
+    renamed.write_text(text.replace("направляющая_e\u0301", guide), encoding="utf-8")
     assert main(["forces", str(renamed), "--angles", "0:90:45", "--summary"]) == 0
     rows = [r for r in capsys.readouterr().out.splitlines() if r.startswith("  ")]
     rows = [r for r in rows if not r.startswith("  (")]
