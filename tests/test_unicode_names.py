@@ -68,7 +68,7 @@ def test_a_summary_of_wide_names_stays_aligned(renamed, capsys, guide):
 
 
 @pytest.mark.filterwarnings("default::UserWarning")  # as python runs the command
-def test_glyphs_no_font_has_are_one_warning_line(renamed, capsys):
+def test_glyphs_no_font_has_are_one_warning_line(renamed, capsys, recwarn):
     # a CJK name was one matplotlib UserWarning per character and per drawing,
     # each with the package's file and line; its subscripts' boxes went unsaid
     text = renamed.read_text(encoding="utf-8").replace("滑块", "滑块\u0c85")
@@ -80,6 +80,28 @@ def test_glyphs_no_font_has_are_one_warning_line(renamed, capsys):
     assert len(err) == 1, err
     assert err[0].startswith(f"assur: warning: {renamed}: the pictures' fonts ")
     assert "'\u0c85' (U+0C85)" in err[0]  # Kannada: in no font of this machine
+    # matplotlib's own warnings on the glyphs are not shown beside the line
+    assert [str(w.message) for w in recwarn if "Glyph" in str(w.message)] == []
+
+
+def test_an_installed_cjk_font_draws_the_pictures_text(renamed, monkeypatch):
+    # the pictures take the fallback fonts: matplotlib's text then warns of no
+    # CJK glyph (mathtext's subscripts, which take no fallback, still may)
+    from assur import _fonts, cli
+
+    if not _fonts.fallback_fonts():
+        pytest.skip("no font with CJK glyphs installed")
+    heard: list[str] = []
+
+    def gather(messages: list[str]) -> str | None:
+        heard.extend(messages)
+        return _fonts.missing_glyphs(messages)
+
+    monkeypatch.setattr(cli, "missing_glyphs", gather)
+    out = renamed.parent / "p.png"
+    assert main(["plot", str(renamed), "-o", str(out), "--forces"]) == 0
+    glyphs = [m for m in heard if _fonts.GLYPH_MISSING.fullmatch(m)]
+    assert not any("CJK" in m for m in glyphs), glyphs
 
 
 def test_missing_glyphs_are_told_once_each():
