@@ -274,3 +274,50 @@ def test_a_dead_centre_between_the_scan_s_grid_points_is_found_where_it_is():
     with pytest.raises(assur.AssemblyError) as caught:
         assur.kinematics(mech, [60.0, 185.5])
     assert "the group is at a dead centre at about 180.3 deg" in str(caught.value)
+
+
+def _parallelogram_and_dyad() -> assur.Mechanism:
+    """A parallelogram four-bar (crank 0.1, coupler 0.3) and a dyad on its coupler.
+
+    The arm (0.3) hangs on E, the coupler's point 0.15 from A; the lever (0.27) on
+    G = (0.15, 0.5). While the four-bar stays a parallelogram, E = (0.15 +
+    0.1 cos t, 0.1 sin t) and |EG|^2 = 0.26 - 0.1 sin t: beyond the dyad's reach
+    0.57 for sin t < -0.649, t from 220.47 to 319.53 deg. Past its change points
+    (0 and 180 deg) a four-bar followed on one sign of its closed form crosses over
+    (an antiparallelogram), where the dyad reaches at every angle.
+    """
+    t = math.radians(45.0)
+    ax, ay = 0.1 * math.cos(t), 0.1 * math.sin(t)
+    ex, ey, gx, gy, arm, lever = ax + 0.15, ay, 0.15, 0.5, 0.3, 0.27
+    dx, dy = gx - ex, gy - ey
+    r = math.hypot(dx, dy)
+    along = (arm * arm - lever * lever + r * r) / (2 * r)
+    h = math.sqrt(arm * arm - along * along)
+    fx, fy = ex + (along * dx - h * dy) / r, ey + (along * dy + h * dx) / r
+    joints = {
+        "O": ("ground", "crank", 0.0, 0.0),
+        "A": ("crank", "coupler", ax, ay),
+        "B": ("coupler", "rocker", ax + 0.3, ay),
+        "Q": ("ground", "rocker", 0.3, 0.0),
+        "E": ("coupler", "arm", ex, ey),
+        "F": ("arm", "lever", fx, fy),
+        "G": ("ground", "lever", gx, gy),
+    }
+    # the crank's angle is that of O -> A (45 deg here)
+    links = "".join(f"[links.{k}]\n" for k in ("coupler", "rocker", "arm", "lever"))
+    text = 'format = 1\n[links.crank]\naxis = ["O", "A"]\n' + links
+    for j, (a, b, x, y) in joints.items():
+        text += f'[joints.{j}]\nkind = "revolute"\nlinks = ["{a}", "{b}"]\n'
+        text += f"at = [{x!r}, {y!r}]\n"
+    return assur.loads(text + '[[drivers]]\njoint = "O"\nomega = 10.0\n')
+
+
+def test_the_reach_past_a_change_point_follows_the_sweep_s_branch():
+    # scanned on one sign of the four-bar's closed form, the scan crossed over at
+    # 180 deg to the antiparallelogram, where the dyad reaches at every angle, and
+    # found no barrier: the sweep, on the parallelogram, fails from 220.47 deg
+    span = reach(plan_of(_parallelogram_and_dyad()))
+    assert span is not None
+    edge = math.degrees(math.asin(0.0649 / 0.1))  # sin t = -0.649
+    assert math.degrees(span.high) == pytest.approx(180.0 + edge, abs=0.1)
+    assert math.degrees(span.low) == pytest.approx(-edge, abs=0.1)
