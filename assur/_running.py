@@ -17,7 +17,7 @@ import numpy as np
 
 from assur._vec import Array
 
-__all__ = ["Running", "lasts", "per_variant", "sums"]
+__all__ = ["Running", "lasts", "per_variant", "settled_mean", "sums"]
 
 
 @dataclass
@@ -104,3 +104,35 @@ def sums(values: Array, weights: Array | None) -> Array:
 def per_variant(value: Any, variants: int) -> Array:
     """Return a value as one number per variant (a sum of none is the float 0)."""
     return np.broadcast_to(np.asarray(value, dtype=float), (variants,)).copy()
+
+
+def settled_mean(mean: Array, low: Array, high: Array, share: float) -> Array:
+    """Return ``mean``, 0 where it is round-off of values from ``low`` to ``high``.
+
+    A turn's mean of a load that does no net work (the driving torque of a
+    mechanism with inertia loads alone, 0.23 N m at its peak) sums terms that
+    cancel: -1.5e-16 N m on one machine, +3e-17 on another, by the summation
+    order and the BLAS kernels of each. Below ``share`` of the largest
+    magnitude, ``max(|low|, |high|)``, it is that round-off and is +0.
+
+    Parameters
+    ----------
+    mean, low, high : ndarray, shape (variants,)
+        The mean, the smallest and the largest value, one per variant, in the
+        quantity's unit (N m, N or W).
+    share : float
+        The fraction of the largest magnitude below which the mean is round-off.
+
+    Returns
+    -------
+    ndarray, shape (variants,)
+        The mean, with +0.0 where it is round-off (NaN stays NaN).
+
+    Examples
+    --------
+    >>> settled_mean(np.array([-1.5e-16, 0.05]), np.array([-0.1, -0.1]),
+    ...              np.array([0.2, 0.2]), 1e-12)
+    array([0.  , 0.05])
+    """
+    size = np.maximum(np.abs(low), np.abs(high))
+    return np.where(np.abs(mean) <= share * size, 0.0, mean)

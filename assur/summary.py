@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from assur._efficiency import efficiency
-from assur._running import Running, lasts, per_variant, sums
+from assur._running import Running, lasts, per_variant, settled_mean, sums
 from assur._summary_rows import rows_of
 from assur._timing import Clock
 from assur._undefined import undefined
@@ -37,8 +37,8 @@ __all__ = ["Summary", "efficiency", "summarize", "undefined"]
 
 ROUND_OFF = 1e-12
 """A couple or shaking load below this share of the largest reaction (times the
-mechanism's size, for a moment), or a mean power below this share of the driver's
-peak power, is round-off: the summary gives 0."""
+mechanism's size, for a moment), or a mean power or balancing load below this
+share of its own peak, is round-off: the summary gives 0."""
 
 
 @dataclass
@@ -287,18 +287,20 @@ class Summary:
         for name, r in self._drivers.items():
             out[f"{name}.max"] = r.top
             out[f"{name}.min"] = r.bottom
-            out[f"{name}.mean"] = less(r.total, r.last) / n
+            mean = less(r.total, r.last) / n
+            out[f"{name}.mean"] = settled_mean(mean, r.bottom, r.top, ROUND_OFF)
             out[f"{name}.rms"] = np.sqrt(less(r.squares, r.last_squares) / n)
         power = less(self._power, self._tail.get("power"))
-        out["driver.power.mean"] = per_variant(power / n, self.variants)
-        out["driver.power.max"] = self._peaks["driver"].top
-        out["driver.power.min"] = self._peaks["driver"].bottom
-        for name, own in self._own.items():
-            out[f"{name}.power.mean"] = per_variant(
-                less(own, self._tail.get(name)) / n, self.variants
+        for name, total in [("driver", power)] + [
+            (k, less(own, self._tail.get(k))) for k, own in self._own.items()
+        ]:
+            peak = self._peaks[name]
+            mean = per_variant(total / n, self.variants)
+            out[f"{name}.power.mean"] = settled_mean(
+                mean, peak.bottom, peak.top, ROUND_OFF
             )
-            out[f"{name}.power.max"] = self._peaks[name].top
-            out[f"{name}.power.min"] = self._peaks[name].bottom
+            out[f"{name}.power.max"] = peak.top
+            out[f"{name}.power.min"] = peak.bottom
         for part, r in self._shaking.items():
             size = force * (self._size if part == "M" else 1.0)
             out[f"shaking.{part}.max"], out[f"shaking.{part}.at"] = self._settled(

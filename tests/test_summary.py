@@ -733,3 +733,37 @@ def test_the_cranks_turning_clockwise_are_listed_as_a_sentence():
 
     three = SimpleNamespace(clockwise=("A", "E", "F"), drivers=3)
     assert turning(three)[0].startswith("the cranks at A, E and F turn clockwise")
+
+
+def test_a_mean_that_is_round_off_is_plus_zero(capsys):
+    # inertia alone does no work over a turn: the means of the driving torque
+    # and power were -1.5e-16 N m and -1.5e-15 W here, of the sign and digits of
+    # the machine's summation order, printed so by "assur forces --summary"
+    path = EXAMPLES / "class3.toml"
+    table = assur.forces(assur.load(path), default_positions(assur.load(path), 1.0))
+    torque = np.asarray(table["driver.torque"])
+    peak = float(np.max(np.abs(torque)))
+    assert peak > 0.1
+    assert abs(float(np.mean(torque))) < 1e-12 * peak  # round-off only
+    got = table.summary()
+    for name in ("driver.torque.mean", "driver.power.mean"):
+        assert got[name] == 0.0, name
+        assert not math.copysign(1.0, got[name]) < 0.0, name
+    assert main(["forces", str(path), "--summary"]) == 0
+    shown = {
+        line.split()[0]: line.split()[1]
+        for line in capsys.readouterr().out.splitlines()[1:]
+    }
+    assert shown["driver.torque.mean"] == shown["driver.power.mean"] == "0"
+
+
+def test_a_mean_is_kept_where_it_is_more_than_round_off():
+    from assur._running import settled_mean
+
+    low, high = np.array([-0.1, -0.1, -0.1]), np.array([0.2, 0.2, 0.2])
+    mean = np.array([-1.5e-16, 3e-12, np.nan])
+    got = settled_mean(mean, low, high, 1e-12)
+    assert got[0] == 0.0
+    assert not np.signbit(got[0])
+    assert got[1] == 3e-12  # above 1e-12 of 0.2: the mechanism's own
+    assert np.isnan(got[2])
