@@ -38,6 +38,12 @@ __all__ = [
 SUMMARY_ROWS = 400
 """Most rows of the readable table; --csv, --json and --parquet give them all."""
 
+ROUND_OFF = 1e-9
+"""A value of the readable table below this share of the largest magnitude of its
+unit there is round-off and shows as 0, as in the HTML report's tables: a slider's
+speed at its dead centre (1.6e-14 m/s beside 22 m/s) has the sign and the digits
+of the machine's arithmetic (its BLAS kernels, FMA, summation order)."""
+
 
 ABOUT = "about the origin of the file's coordinates"
 """What the summary's shaking moment is taken about, said beside it."""
@@ -177,6 +183,19 @@ def _blocks(widths: list[int], width: int | None) -> list[list[int]]:
     return blocks
 
 
+def _cleaned(units: list[str], columns: list[Array]) -> list[Array]:
+    """Return ``columns`` with their round-off set to +0 (see :data:`ROUND_OFF`)."""
+    most: dict[str, float] = {}
+    for unit, values in zip(units, columns, strict=True):
+        size = np.abs(np.asarray(values, dtype=float))
+        top = float(np.max(size, where=np.isfinite(size), initial=0.0))
+        most[unit] = max(most.get(unit, 0.0), top)
+    return [
+        np.where(np.abs(values) < ROUND_OFF * most[unit], 0.0, values)
+        for unit, values in zip(units, columns, strict=True)
+    ]
+
+
 def format_table(
     names: list[str],
     units: list[str],
@@ -195,7 +214,10 @@ def format_table(
     heads = [as_written(name) for name in names]  # as standard output shows them
     marks = [f"[{u}]" if u else "" for u in units]
     cells = (
-        [[number_text(v) for v in values] for values in zip(*columns, strict=True)]
+        [
+            [number_text(v) for v in values]
+            for values in zip(*_cleaned(units, columns), strict=True)
+        ]
         if columns
         else []
     )

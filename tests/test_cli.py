@@ -756,6 +756,43 @@ def test_minus_zero_is_shown_as_zero(capsys):
     assert "-0 " not in out
 
 
+def test_round_off_is_shown_as_zero_in_the_readable_table(capsys):
+    # at its dead centres the slider-crank's rod turned at -1.49379e-14 rad/s
+    # beside 74 rad/s: the sign and digits of this machine's arithmetic, other
+    # ones on another CPU or BLAS; 0 on every one, as in the HTML report
+    path = EXAMPLES / "slider_crank_exercise.toml"
+    angles = [0.0, 90.0, 180.0, 270.0, 360.0]
+    omega = np.asarray(assur.kinematics(assur.load(path), angles)["rod.omega"])
+    assert abs(omega[1]) < 1e-12 * np.max(np.abs(omega))  # round-off there
+    out, _ = succeeds(capsys, ["kinematics", path, "--angles", "0:360:90"])
+    lines = out.splitlines()
+    rows = [dict(zip(lines[0].split(), r.split(), strict=True)) for r in lines[2:7]]
+    assert [r["rod.omega"] for r in rows] == ["-74", "0", "74", "0", "-74"]
+    # the dynamic model's table: the acceleration at the largest speed
+    out, _ = succeeds(capsys, ["dynamics", path])
+    lines = out.splitlines()
+    (heads,) = [r.split() for r in lines if r.startswith("angle ")]
+    (row,) = [r.split() for r in lines if r.startswith("  180  ")]
+    # 3e-12 rad/s^2 beside 1e4 rad/s^2
+    assert dict(zip(heads, row, strict=True))["driver.epsilon"] == "0"
+
+
+def test_round_off_is_told_by_the_largest_value_of_its_unit():
+    from assur._cli_summary import format_table
+
+    columns = [
+        np.array([1000.0, 1e-8]),
+        np.array([1e-8, -2e-6]),
+        np.array([-1e-7, 3e-7]),
+    ]
+    text = format_table(["F", "x", "y"], ["N", "m", "m"], columns, 2)
+    # 1e-8 N beside 1000 N is round-off; a small mechanism's 1e-8 m is its own
+    assert [r.split() for r in text.splitlines()[2:]] == [
+        ["1000", "1e-08", "-1e-07"],
+        ["0", "-2e-06", "3e-07"],
+    ]
+
+
 @pytest.mark.parametrize("width", [30, 44, 80, 1000])
 def test_a_wide_table_is_cut_to_the_terminal_s_width(width):
     # six_bar_lecture's 19 columns ran 156 characters wide, each row wrapped
