@@ -20,6 +20,7 @@ from assur.plotting import lever, plans, polygons
 matplotlib.use("Agg")
 
 TRIAL = Path(__file__).parent / "data" / "plans"
+EXAMPLES = Path(__file__).parent.parent / "examples"
 
 
 def _box(fig, text) -> np.ndarray:
@@ -149,6 +150,25 @@ def test_the_instant_centres_names_are_apart_inside_the_frame(stem: str) -> None
                 assert not any(_overlap(box, b) for b in small), text.get_text()
     finally:
         plt.close(fig)
+
+
+def test_a_far_centre_s_coordinate_that_is_round_off_is_written_0() -> None:
+    # the four-bar at 90 deg: the coupler's centre is straight above the crank's
+    # pivot, x = 0 but for round-off, and was named "(3.47e-18, 1.41) m"
+    import matplotlib.pyplot as plt
+
+    from assur.explain._solve import position
+
+    mech = assur.load(EXAMPLES / "four_bar.toml")
+    far = plans.relative_centres(position(mech, 90.0))[(0, 2)]
+    assert far is not None
+    assert abs(far[0]) < 1e-12 * abs(far[1])
+    ax = plans.instant_centres(assur.kinematics(mech, [90.0]))
+    try:
+        named = [t.get_text() for t in _texts(ax) if t.get_text().endswith(") m")]
+        assert named == [rf"$I_{{\text{{coupler}}}}$ (0, {far[1]:.3g}) m"]
+    finally:
+        plt.close(ax.figure)
 
 
 def test_a_far_centre_is_shown_at_the_edge_with_its_coordinates() -> None:
