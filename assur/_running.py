@@ -17,7 +17,11 @@ import numpy as np
 
 from assur._vec import Array
 
-__all__ = ["Running", "lasts", "per_variant", "settled_mean", "sums"]
+__all__ = ["TIE", "Running", "lasts", "per_variant", "settled_mean", "sums"]
+
+TIE = 1e-12
+"""Largest values closer than this share of their size are a tie, and the first
+position of them is where the largest occurs."""
 
 
 @dataclass
@@ -65,17 +69,27 @@ class Running:
         rows = np.arange(values.shape[0])
         # a NaN is no number to be largest or smallest: argmax took it for the
         # largest, and the slice's own largest was lost (the sums do carry it)
-        k = np.argmax(np.where(np.isnan(values), -np.inf, values), axis=1)
-        best = values[rows, k]
-        better = best > self.top
-        self.top = np.where(better, best, self.top)
+        clean = np.where(np.isnan(values), -np.inf, values)
+        best = np.max(clean, axis=1)
+        # the first position within round-off of the largest: poses alike by
+        # symmetry (a centred slider-crank's guide at 41 and 319 deg) tie but for
+        # the last bit, which the machine's arithmetic gives to either
+        k = np.argmax(clean >= _less_tie(best)[:, None], axis=1)
+        better = _less_tie(best) > self.top
         self.at = np.where(better, where[rows, k], self.at)
+        self.top = np.fmax(self.top, best)
         self.bottom = np.fmin(self.bottom, np.fmin.reduce(values, axis=1))
         self.total = self.total + sums(values, weights)
         square = values * values
         self.squares = self.squares + sums(square, weights)
         self.last = lasts(values, weights, last)
         self.last_squares = lasts(square, weights, last)
+
+
+def _less_tie(best: Array) -> Array:
+    """Return the least value that ties with ``best`` (see :data:`TIE`)."""
+    with np.errstate(invalid="ignore"):  # an infinite best ties with itself alone
+        return np.where(np.isfinite(best), best - TIE * np.abs(best), best)
 
 
 def lasts(values: Array, weights: Array | None, last: Array) -> Array:
