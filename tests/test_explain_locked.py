@@ -150,6 +150,21 @@ def test_the_lock_sets_in_where_f_tan_beta_reaches_one(share):
         assert "friction locks the group here" in text
 
 
+@pytest.mark.parametrize("ulps", [-2, -1, 1, 2])
+def test_the_threshold_is_said_alike_an_ulp_either_side(ulps):
+    # f tan(beta) = 1 but for its last bits, which the machine's sin, cos and
+    # BLAS set: an ulp more of f gave a step ratio of 0.9999999999999984 and the
+    # note said the substitution "settles slowly" instead of the threshold
+    f = 1.0 / _tan_beta(_guide_only(0.0))
+    for _ in range(abs(ulps)):
+        f = float(np.nextafter(f, math.inf if ulps > 0 else -math.inf))
+    note, said = _locked_note(_guide_only(f))
+    text = str(note)
+    assert len(said) == 1
+    assert "so the steps do not shrink" in text
+    assert "settles slowly" not in text
+
+
 SIX_BAR = """
 [links.l5]
 axis = ["E", "F"]

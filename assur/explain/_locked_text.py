@@ -23,7 +23,7 @@ from assur.explain._group_friction_text import (
 )
 from assur.explain._note import Block, Grid, Para
 from assur.explain._position import Position, unit
-from assur.explain._tex import num, plain
+from assur.explain._tex import ZERO, num, plain
 from assur.groups._dyad import DyadSolver
 from assur.groups._protocol import Equilibrium, GroupSolver
 
@@ -138,7 +138,9 @@ def _steps(tried: list[dict[str, float]]) -> str:
     if len(tried) < 3:
         return f"{newton}: the group is at self-locking or too near it."
     r, steady, _ = steps_ratio(tried)
-    if steady and r >= 1.0:
+    # at the lock's threshold (f tan(beta) = 1) the ratio is 1 but for round-off:
+    # 0.9999999999999984 here, 1.0 there, by the last bit of f and the geometry
+    if steady and r >= 1.0 - ZERO:
         # at the lock's threshold the steps keep their size: they do not grow
         grow = "grow" if f"{r:.3f}" != "1.000" else "do not shrink"
         return (
