@@ -165,7 +165,10 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     )
     size = _size(pos, i)
     if abs(value) > ZERO * size:
-        diff = 100.0 * abs(lever - value) / abs(value)
+        # two ways that agree but for round-off differ by 1e-14 of the load or by
+        # nothing, as the machine's arithmetic has it: 0 %, as at a dead centre
+        gap = abs(lever - value)
+        diff = 0.0 if gap <= ZERO * size else 100.0 * gap / abs(value)
         lines.append(
             f"\\frac{{|{sym}{LEVER} - {sym}|}}{{|{sym}|}} = {_percent(diff)}\\,\\%"
         )
