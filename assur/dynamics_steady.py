@@ -27,6 +27,9 @@ ANGLE_ATOL = 1e-11
 """Tolerance (rad) of the crank angles where the speed is largest and smallest."""
 RTOL = 1e-15
 """Relative tolerance of the energy ``E0`` found by Brent's method."""
+TIE = 1e-12
+"""Grid values closer than this share of the largest magnitude tie: the first is the
+extreme."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -102,7 +105,7 @@ def steady_state(model: Reduced, omega: float, flywheel: float = 0.0) -> Steady:
         raise ModelError(msg)
     inertia = model.inertia + flywheel
     check_inertia(model, inertia, flywheel)
-    rest_angle = _extreme(model.work_at, model, int(np.argmin(model.work)))
+    rest_angle = _extreme(model.work_at, model, _first(model.work, -1.0))
     lowest = -float(model.work_at(rest_angle))
 
     def gap(energy: float) -> float:
@@ -154,7 +157,7 @@ def _least(model: Reduced, inertia: Array) -> tuple[float, float]:
     millionth of the largest. The parabola through the grid's smallest value and its
     two neighbours (the grid closes on itself over the turn) gives the minimum.
     """
-    i = int(np.argmin(inertia))
+    i = _first(inertia, -1.0)
     here, angle = float(inertia[i]), float(model.angle[i])
     low, shift = _vertex(inertia, i)
     if not low <= here:  # the parabola has its top there, or no number
@@ -176,6 +179,20 @@ def _grid_extremes(
     top = _vertex(square, int(np.argmax(square)))[0]
     bottom = _vertex(square, int(np.argmin(square)))[0]
     return math.sqrt(max(top, 0.0)), math.sqrt(max(bottom, 0.0))
+
+
+def _first(values: Array, sign: float) -> int:
+    """Return the index of the first largest (``sign`` 1) or smallest (-1) value.
+
+    Values within :data:`TIE` of the extreme tie with it: poses alike by symmetry
+    (a centred slider-crank at its slowest, 73 and 287 deg) differ in their last
+    bits alone, which the machine's arithmetic gives to either.
+    """
+    signed = sign * np.asarray(values, dtype=float)
+    # told by the size of the values, not of the extreme: a work of 0 at the
+    # turn's start ties with the round-off of the work at its end
+    size = float(np.max(np.abs(signed)))
+    return int(np.argmax(signed >= float(np.max(signed)) - TIE * size))
 
 
 def _vertex(values: Array, i: int) -> tuple[float, float]:
@@ -229,8 +246,8 @@ def _refined(
         return _speeds(model, model.inertia_at(phi) + flywheel, e, phi)
 
     grid = _speeds(model, model.inertia + flywheel, energy)
-    top = _extreme(lambda phi: square(phi, energy), model, int(np.argmax(grid)), -1.0)
-    bottom = _extreme(lambda phi: square(phi, energy), model, int(np.argmin(grid)), 1.0)
+    top = _extreme(lambda phi: square(phi, energy), model, _first(grid, 1.0), -1.0)
+    bottom = _extreme(lambda phi: square(phi, energy), model, _first(grid, -1.0), 1.0)
 
     def gap(e: float) -> float:
         mean = 0.5 * (math.sqrt(square(top, e)) + math.sqrt(square(bottom, e)))

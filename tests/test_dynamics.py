@@ -407,6 +407,23 @@ def test_the_energy_swing_misses_where_the_links_own_inertia_varies():
 # --------------------------------------------------------------- cases checked by hand
 
 
+def test_extremes_that_tie_but_for_round_off_are_the_first():
+    # the centred slider-crank is slowest at 73.056 and 286.944 deg alike: the
+    # grid's two values differ in their last bit by the machine's arithmetic,
+    # and "smallest speed ... at" named either angle
+    from assur.dynamics_steady import _first
+
+    tie = 30380.25
+    grid = np.array([40000.0, tie, 50000.0, np.nextafter(tie, 0.0), 45000.0])
+    assert _first(grid, -1.0) == 1  # not 3, an ulp smaller
+    assert _first(-grid, 1.0) == 1
+    assert _first(np.array([1.0, 3.0, 3.0 - 1e-6, 2.0]), 1.0) == 1
+    # a work of 0 at the turn's start and its round-off at the end tie too
+    assert _first(np.array([0.0, 5.0, 3.0, -1e-17]), -1.0) == 0
+    t = assur.dynamics(example("slider_crank_exercise"))
+    assert t.angle_min == pytest.approx(73.056, abs=1e-3)
+
+
 def test_a_crank_with_a_point_mass_turns_evenly():
     """No load: J = m r^2 + J_G at every angle, the speed is the file's, delta 0."""
     t = assur.dynamics(crank(), [0.0, 45.0, 90.0, 300.0])
