@@ -439,6 +439,18 @@ def test_round_off_is_told_as_zero() -> None:
     assert tiny == []
 
 
+def test_a_load_s_point_of_round_off_is_told_as_zero() -> None:
+    # the Scotch yoke at 180 deg: its yoke's centre, on the slide's axis, was
+    # "at G = (-1.388 \cdot 10^{-17}, 0)", the machine's round-off of x = 0
+    mech = assur.load(EXAMPLES / "scotch_yoke.toml")
+    table = assur.kinematics(mech, [180.0])
+    x = table["yoke.G.x"][0]
+    assert abs(x) < 1e-12 * table.plan.scale  # round-off, of either sign
+    note = str(explain(mech, 180.0))
+    assert r"\text{at}\ G_{\mathrm{yoke}} = (0,\ 0)" in note
+    assert not re.search(r"10\^\{-(1\d|9)\}", note)
+
+
 def test_a_small_rate_the_user_gave_is_kept() -> None:
     # an epsilon of 1e-7 beside an omega of 20 was written 0 as round-off
     mech = assur.load(EXAMPLES / "four_bar.toml")

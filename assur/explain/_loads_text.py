@@ -19,7 +19,7 @@ from assur._loads import table_reading, table_step, table_values
 from assur._tables import Reading
 from assur._vec import Array
 from assur.explain._position import ROUND_OFF, Position, at, cross, value
-from assur.explain._tex import kept, name, num, par, point_name, text, vec
+from assur.explain._tex import FLOOR, kept, name, num, par, point_name, text, vec
 from assur.groups._pairs import PairPlan
 from assur.model import LoadTable
 
@@ -341,7 +341,10 @@ def force_lines(loads: list[Load]) -> list[str]:
         if math.hypot(*x.force) > 0:
             text += f" = {vec(x.force)}\\ \\mathrm{{N}}"
             if x.where:
-                text += f",\\quad \\text{{at}}\\ {x.where} = {vec(x.point)}"
+                # a coordinate of round-off (a yoke's centre on the axis,
+                # -1.4e-17 m) is 0 beside the mechanism's size, not beside itself
+                at = vec(x.point, max(FLOOR.get(), *map(abs, x.point)))
+                text += f",\\quad \\text{{at}}\\ {x.where} = {at}"
         if x.couple:  # a load's own couple (cleaned, or a datum), however small
             text += (
                 f" = {kept(x.couple)}\\ \\mathrm{{N\\,m}}"
