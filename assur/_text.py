@@ -14,6 +14,7 @@ import numbers
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import Any
 
+from assur._digits import settled
 from assur._lookalike import lookalike, spelled_apart
 
 __all__ = [
@@ -51,12 +52,17 @@ LISTING_LIMIT = 160
 def number_text(value: float, spec: str = ".6g") -> str:
     """Return ``value`` formatted by ``spec``; minus zero shows as 0.
 
+    The value is :func:`settled` first: a decimal tie rounds alike on every
+    machine.
+
     Examples
     --------
     >>> number_text(-0.0), number_text(-1.5), number_text(2.0, ">6.3g")
     ('0', '-1.5', '     2')
+    >>> number_text(364.05750000000006), number_text(364.05749999999995)
+    ('364.058', '364.058')
     """
-    return format(value + 0.0, spec)  # -0.0 + 0.0 is +0.0
+    return format(settled(value), spec)
 
 
 def crank_angle_text(

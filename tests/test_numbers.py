@@ -565,3 +565,33 @@ def test_a_mechanism_drawn_in_millimetres_is_warned_of():
         warnings.simplefilter("error")
         assur.forces(mech, [30.0])
         assur.kinematics(assur.io.parse(scaled(mech, 160.0)), [30.0])
+
+
+@pytest.mark.parametrize(
+    ("tie", "digits"), [(3.3075, "3.308"), (364.0575, "364.058"), (0.15625, "0.1562")]
+)
+def test_a_decimal_tie_is_written_alike_an_ulp_either_side(tie, digits):
+    # 0.147 kg * 22.5 m/s^2 = 3.3075 N, the Scotch yoke's crank: an ulp either
+    # side of it by the machine's arithmetic, and the note wrote 3.307 on one
+    # machine and 3.308 on another (364.057 N and 364.058 N in the tables): now
+    # as the tie's own double rounds, on every machine
+    from assur._text import number_text
+    from assur.explain._tex import num
+
+    spec = f".{len(digits.replace('.', '').lstrip('0'))}g"  # the tie's digits less one
+    near = [float(np.nextafter(tie, -np.inf)), tie, float(np.nextafter(tie, np.inf))]
+    assert [number_text(v, spec) for v in near] == [digits] * 3
+    assert len({num(v) for v in near}) == 1
+
+
+@pytest.mark.parametrize(("tie", "digits"), [(3.3075, "3.308"), (0.15625, "0.1562")])
+def test_the_report_and_the_pictures_write_a_decimal_tie_alike(tie, digits):
+    from assur.html._sections import number as html_number
+    from assur.plotting._numbers import number as picture_number
+
+    near = [float(np.nextafter(tie, -np.inf)), tie, float(np.nextafter(tie, np.inf))]
+    assert [picture_number(v, 4) for v in near] == [digits] * 3
+    # the report's 5 digits: a tie of the sixth
+    fine = float(f"{tie:.5g}") + 5e-5 * 10.0 ** math.floor(math.log10(tie))
+    near = [float(np.nextafter(fine, -np.inf)), fine, float(np.nextafter(fine, np.inf))]
+    assert len({html_number(v) for v in near}) == 1

@@ -13,6 +13,8 @@ from typing import Any
 
 import numpy as np
 
+from assur._digits import settled
+
 __all__ = [
     "LENGTH",
     "ROTATION",
@@ -84,13 +86,14 @@ def num(x: float, scale: float | None = None, least: int = 0) -> str:
     if not SCIENTIFIC[0] <= size < SCIENTIFIC[1]:
         return _powered(x)
     decimals = max(DECIMALS, SIGNIFICANT - 1 - math.floor(math.log10(size)), least)
-    text = _trim(f"{x:.{decimals}f}")
+    # a decimal tie (0.147 * 22.5 = 3.3075) rounds alike on every machine
+    text = _trim(f"{settled(x):.{decimals}f}")
     return "0" if text in ("-0", "0") else text
 
 
 def _powered(x: float) -> str:
     """Return ``x`` (not 0) with a power of ten, :data:`SIGNIFICANT` digits (TeX)."""
-    mantissa, exponent = f"{x:.{SIGNIFICANT - 1}e}".split("e")
+    mantissa, exponent = f"{settled(x):.{SIGNIFICANT - 1}e}".split("e")
     return f"{_trim(mantissa)} \\cdot 10^{{{int(exponent)}}}"
 
 

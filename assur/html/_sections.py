@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._digits import settled
 from assur._structure import Structure
 from assur._text import roman, row_position
 from assur._troubles import skipped_why
@@ -61,7 +62,7 @@ def number(v: float, scale: float | None = None) -> str:
         return "–"
     if v == 0.0 or (scale is not None and abs(v) < ROUND_OFF * scale):
         return "0"
-    return f"{v:.5g}"
+    return f"{settled(v):.5g}"  # a decimal tie rounds alike on every machine
 
 
 def largest(values: Any) -> float:

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 import math
 
+from assur._digits import settled
+
 PLAIN_RANGE = (1e-4, 1e6)
 """Magnitudes written in plain digits: up to six digits before the point."""
 PREFIXED = ("N", "N·m", "W", "J")
@@ -32,6 +34,7 @@ def number(value: float, digits: int = 4) -> str:
     >>> number(2.5e7, 3), number(0.0), number(999999.7)
     ('2.5e+07', '0', '1e+06')
     """
+    value = settled(value)  # a decimal tie rounds alike on every machine
     size = abs(value)
     if not math.isfinite(value) or size == 0.0:
         return f"{value + 0.0:g}"
