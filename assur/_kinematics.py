@@ -347,7 +347,7 @@ def _straight(
 
 def _too_far(plan: Plan, drive: Array, counts: Array) -> None:
     """Raise the error of a position too far from the reference pose to walk to."""
-    from assur._text import position_text
+    from assur._position_titles import position_text
     from assur.errors import ConvergenceError
 
     row = int(np.argmax(counts > MAX_STEPS))

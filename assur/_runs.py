@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from assur._text import counted, position_text
+from assur._position_titles import position_text
+from assur._text import counted
 from assur._vec import Array, Mask
 from assur.plan import Plan
 

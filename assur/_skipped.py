@@ -8,9 +8,10 @@ from typing import Any
 
 import numpy as np
 
+from assur._position_titles import position_text
 from assur._runs import runs_text, telling_apart
 from assur._stdin import input_text
-from assur._text import counted, position_text
+from assur._text import counted
 from assur._troubles import skipped_why
 from assur._vec import Array, Mask
 from assur.errors import AssemblyError

@@ -164,7 +164,7 @@ def test_the_first_position_is_written_with_its_unit() -> None:
 
     import numpy as np
 
-    from assur._text import row_position
+    from assur._position_titles import row_position
     from assur.html._sections import first_position
 
     def table(*kinds: str) -> SimpleNamespace:

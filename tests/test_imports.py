@@ -27,6 +27,8 @@ RANKS = {
     "assur._lookalike": 0,
     "assur._text": 0,
     "assur._width": 0,
+    "assur._position_titles": 0,
+    "assur._digits": 0,
     "assur._decimal_comma": 0,
     "assur._fonts": 0,
     "assur._optional": 0,

@@ -171,7 +171,7 @@ def test_nearest_row_with_two_drivers(five_bar: assur.Table) -> None:
 
 
 def test_titles_word_the_driver_positions(five_bar: assur.Table) -> None:
-    from assur._text import position_title
+    from assur._position_titles import position_title
 
     a, e = five_bar.given[1]
     title = f"A: φ = {a:.1f}°, E: φ = {e:.1f}°"

@@ -13,8 +13,9 @@ from typing import Any
 import numpy as np
 
 from assur._digits import settled
+from assur._position_titles import row_position
 from assur._structure import Structure
-from assur._text import roman, row_position
+from assur._text import roman
 from assur._troubles import skipped_why
 from assur.analysis import Table
 from assur.columns import pretty_unit

@@ -13,8 +13,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._position_titles import row_position
 from assur._style import link_colours
-from assur._text import counted, describe, roman, row_position
+from assur._text import counted, describe, roman
 from assur._vec import real
 from assur.columns import pretty_unit, schema
 from assur.errors import UsageError
