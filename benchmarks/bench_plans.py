@@ -18,7 +18,6 @@ figures.
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import resource
 import subprocess
@@ -34,38 +33,10 @@ except ImportError:  # run from a source tree without the package installed
     sys.path.insert(0, str(ROOT))
     import assur
 
-Driver, Joint, Link, Mechanism = assur.Driver, assur.Joint, assur.Link, assur.Mechanism
+sys.path.insert(0, str(ROOT))  # tests/ holds the chain the long-chain tests use
+from tests.test_long_chains import chain  # noqa: E402
+
 SIZES = (10, 20, 40)
-
-
-def chain(count: int) -> Mechanism:
-    """A crank driving ``count`` RRR dyads in a row, each on the one before."""
-    links = [Link("crank", mass=1.0, center="B", inertia=0.01)]
-    half = 0.5
-    joints = [
-        Joint("A", "revolute", ("ground", "crank"), (0.0, 0.0)),
-        Joint(
-            "B",
-            "revolute",
-            ("crank", "u0"),
-            (0.1 * math.cos(half), 0.1 * math.sin(half)),
-        ),
-    ]
-    for i in range(count):
-        x = 0.3 * i
-        links += [
-            Link(f"u{i}", mass=0.5, center=f"C{i}", inertia=0.001),
-            Link(f"v{i}", mass=0.5, center=f"G{i}", inertia=0.001),
-        ]
-        joints += [
-            Joint(f"C{i}", "revolute", (f"u{i}", f"v{i}"), (x + 0.32, 0.25)),
-            Joint(f"G{i}", "revolute", (f"v{i}", "ground"), (x + 0.35, 0.0)),
-        ]
-        if i + 1 < count:
-            joints.append(
-                Joint(f"D{i}", "revolute", (f"v{i}", f"u{i + 1}"), (x + 0.4, 0.15))
-            )
-    return Mechanism(tuple(links), tuple(joints), (Driver("A", 10.0),), name="chain")
 
 
 def timed(path: Path, out: Path) -> tuple[float, float]:
