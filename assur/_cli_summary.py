@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._digits import ROUND_OFF, by_unit
 from assur._sliced import Slice
 from assur._stdout import as_written
 from assur._text import counted, number_text
@@ -37,12 +38,6 @@ __all__ = [
 
 SUMMARY_ROWS = 400
 """Most rows of the readable table; --csv, --json and --parquet give them all."""
-
-ROUND_OFF = 1e-9
-"""A value of the readable table below this share of the largest magnitude of its
-unit there is round-off and shows as 0, as in the HTML report's tables: a slider's
-speed at its dead centre (1.6e-14 m/s beside 22 m/s) has the sign and the digits
-of the machine's arithmetic (its BLAS kernels, FMA, summation order)."""
 
 
 ABOUT = "about the origin of the file's coordinates"
@@ -184,15 +179,15 @@ def _blocks(widths: list[int], width: int | None) -> list[list[int]]:
 
 
 def _cleaned(units: list[str], columns: list[Array]) -> list[Array]:
-    """Return ``columns`` with their round-off set to +0 (see :data:`ROUND_OFF`)."""
-    most: dict[str, float] = {}
-    for unit, values in zip(units, columns, strict=True):
-        size = np.abs(np.asarray(values, dtype=float))
-        top = float(np.max(size, where=np.isfinite(size), initial=0.0))
-        most[unit] = max(most.get(unit, 0.0), top)
+    """Return ``columns`` with their round-off set to +0, as the HTML report does.
+
+    Round-off is below :data:`~assur._digits.ROUND_OFF` of the largest magnitude of
+    its unit in the table.
+    """
+    scales = by_unit(units, columns)
     return [
-        np.where(np.abs(values) < ROUND_OFF * most[unit], 0.0, values)
-        for unit, values in zip(units, columns, strict=True)
+        np.where(np.abs(values) < ROUND_OFF * scale, 0.0, values)
+        for values, scale in zip(columns, scales, strict=True)
     ]
 
 

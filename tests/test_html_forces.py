@@ -246,7 +246,8 @@ def test_a_table_s_round_off_is_told_by_the_largest_value_of_its_unit() -> None:
 
 
 def test_the_largest_value_of_a_column_is_its_largest_finite_one() -> None:
-    from assur.html._sections import largest, number
+    from assur._digits import largest
+    from assur.html._sections import number
 
     assert largest([1.0, math.inf, math.nan, -3.0]) == 3.0
     assert largest([]) == 0.0

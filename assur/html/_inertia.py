@@ -11,9 +11,10 @@ from __future__ import annotations
 import math
 from html import escape
 
+from assur._digits import largest
 from assur.analysis import Table
 from assur.html._data import public
-from assur.html._sections import first_position, largest, number, wide_card
+from assur.html._sections import first_position, number, wide_card
 from assur.html._series import massive_links
 
 __all__ = ["inertia_html"]

@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._digits import settled
+from assur._digits import ROUND_OFF, by_unit, settled
 from assur._position_titles import row_position
 from assur._structure import Structure
 from assur._text import roman
@@ -23,9 +23,6 @@ from assur.html._data import all_groups, public
 from assur.html._series import table_columns
 from assur.plan import Plan
 
-ROUND_OFF = 1e-9
-"""Values below this fraction of the largest of their kind in the same table are
-round-off and show as 0."""
 LONG_TABLE = 60
 """Tables with more rows than this show every 10th row."""
 GROUP_HEADINGS = (
@@ -64,24 +61,6 @@ def number(v: float, scale: float | None = None) -> str:
     if v == 0.0 or (scale is not None and abs(v) < ROUND_OFF * scale):
         return "0"
     return f"{settled(v):.5g}"  # a decimal tie rounds alike on every machine
-
-
-def largest(values: Any) -> float:
-    """Return the largest finite magnitude among ``values`` (0 for none)."""
-    found = np.abs(np.asarray(values, dtype=float))
-    return float(np.max(found, where=np.isfinite(found), initial=0.0))
-
-
-def by_unit(units: list[str], values: list[Any]) -> list[float]:
-    """Return, for each of ``values``, the largest magnitude among those of its unit.
-
-    What a value is told from round-off by: a joint's reaction of 1e-14 N beside
-    others' 3000 N, not a small mechanism's 1e-10 N.
-    """
-    most: dict[str, float] = {}
-    for unit, value in zip(units, values, strict=True):
-        most[unit] = max(most.get(unit, 0.0), largest(value))
-    return [most[unit] for unit in units]
 
 
 def meta_html(struct: Structure, table: Table, data: dict[str, Any]) -> str:
