@@ -14,6 +14,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._running import TIE
 from assur._text import crank_angle_text
 from assur._vec import Array
 from assur.dynamics_reduced import Reduced
@@ -27,9 +28,6 @@ ANGLE_ATOL = 1e-11
 """Tolerance (rad) of the crank angles where the speed is largest and smallest."""
 RTOL = 1e-15
 """Relative tolerance of the energy ``E0`` found by Brent's method."""
-TIE = 1e-12
-"""Grid values closer than this share of the largest magnitude tie: the first is the
-extreme."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -184,9 +182,10 @@ def _grid_extremes(
 def _first(values: Array, sign: float) -> int:
     """Return the index of the first largest (``sign`` 1) or smallest (-1) value.
 
-    Values within :data:`TIE` of the extreme tie with it: poses alike by symmetry
-    (a centred slider-crank at its slowest, 73 and 287 deg) differ in their last
-    bits alone, which the machine's arithmetic gives to either.
+    Values within :data:`~assur._running.TIE` (the summary's share) of the grid's
+    largest magnitude from the extreme tie with it: poses alike by symmetry (a
+    centred slider-crank at its slowest, 73 and 287 deg) differ in their last bits
+    alone, which the machine's arithmetic gives to either.
     """
     signed = sign * np.asarray(values, dtype=float)
     # told by the size of the values, not of the extreme: a work of 0 at the
