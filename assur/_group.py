@@ -81,7 +81,7 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
     external = [p for p in counted if p not in internal]
     if len(links) == 2:
         return _describe_dyad(links, internal[0], external, known)
-    attached = _known_links(external, known)
+    carriers = _carriers(external, known)
     import networkx as nx
 
     g = nx.Graph()
@@ -120,11 +120,11 @@ def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:
         tuple(links),
         tuple(p.name for p in internal),
         tuple(p.name for p in external),
-        attached,
+        _known_links(carriers),
         base,
         basis,
         tuple(p.name for p in counted if p.kind == "P"),
-        _carriers(external, known),
+        carriers,
     )
 
 
@@ -139,7 +139,7 @@ def _describe_dyad(
     if forward[::-1] > forward:
         first, second, e1, e2 = second, first, e2, e1
     kind = max(forward, forward[::-1])
-    attached = _known_links([e1, e2], known)
+    carriers = _carriers([e1, e2], known)
     return Group(
         2,
         2,
@@ -147,8 +147,8 @@ def _describe_dyad(
         (first, second),
         (middle.name,),
         (e1.name, e2.name),
-        attached,
-        carriers=_carriers([e1, e2], known),
+        _known_links(carriers),
+        carriers=carriers,
     )
 
 
@@ -157,10 +157,9 @@ def _carriers(external: list[Pair], known: set[str]) -> tuple[str, ...]:
     return tuple(next(x for x in p.links if x in known) for p in external)
 
 
-def _known_links(external: list[Pair], known: set[str]) -> tuple[str, ...]:
-    """Return the known links the ``external`` pairs join, in the pairs' order.
+def _known_links(carriers: tuple[str, ...]) -> tuple[str, ...]:
+    """Return the known links of a group's external pairs' ``carriers``, in order.
 
     Each link once: a dyad on two links reads "on X, Y through P, Q" with P on X.
     """
-    found = (x for p in external for x in p.links if x in known)
-    return tuple(dict.fromkeys(found))
+    return tuple(dict.fromkeys(carriers))
