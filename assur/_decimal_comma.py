@@ -76,7 +76,9 @@ def comma_at(text: str, message: str) -> bool:
     # U+2028 and U+2029, which a comment or a string may hold
     lines = text.split("\n")
     row, column = int(place.group(1)) - 1, int(place.group(2)) - 1
-    if not 0 <= row < len(lines):
+    # a place before the line's start (JSON's column 1, one back) names no comma:
+    # line[:-1] would read the rest of the line as before it
+    if not 0 <= row < len(lines) or column < 0:
         return False
     line = lines[row]
     at_comma = 0 < column < len(line) - 1 and has_decimal_comma(

@@ -112,3 +112,10 @@ def test_every_embedding_override_and_isolate_is_a_control(mark):
     from assur._checks import _control
 
     assert _control(f"rod{mark}_1") == mark
+
+
+def test_a_place_before_a_line_s_start_names_no_decimal_comma():
+    # a JSON fault at a line's first column is given one column back, column 0:
+    # the slice up to it read the whole line as lying before the place
+    assert not comma_at('{"a": 1,\n"mass": 1,5}', "(at line 2, column 0)")
+    assert comma_at('{"a": 1,\n"mass": 1,5}', "(at line 2, column 10)")
