@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._digits import ROUND_OFF
 from assur.explain._position import cross, perp
 from assur.plotting._drawing import _place
 from assur.plotting._heads import fitted_arrow
@@ -32,10 +33,6 @@ MARGIN = 0.08
 SAME_RATE = 1e-9
 """Two links whose angular speeds differ by less than this times the fastest link's
 turn together: their relative instant centre is at infinity."""
-ROUND_OFF = 1e-9
-"""A far centre's coordinate below this share of its distance from the origin is
-round-off and is written 0: the four-bar's coupler centre at 90 deg was named
-"(3.47e-18, 1.41) m", the sign and digits of the machine's arithmetic."""
 ABSOLUTE = {"marker": "s", "ms": 6, "color": "#d62728"}
 RELATIVE = {"marker": "o", "ms": 4, "color": "#1f77b4"}
 """How an absolute centre (a link's about the frame) and a relative one are drawn."""
@@ -238,6 +235,8 @@ def _far_centre(ax: Any, p: np.ndarray, label: str, absolute: bool) -> Name:
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     middle = np.array([x0 + x1, y0 + y1]) / 2
     u = (p - middle) / float(np.hypot(*(p - middle)))
+    # a coordinate of round-off beside the centre's distance from the origin is 0:
+    # the four-bar's coupler centre at 90 deg was named "(3.47e-18, 1.41) m"
     x, y = np.where(np.abs(p) < ROUND_OFF * float(np.hypot(*p)), 0.0, p) + 0.0
     return _edge_arrow(ax, u, f"{label} ({x:.3g}, {y:.3g}) m", absolute)
 
