@@ -232,7 +232,11 @@ def answer_blocks(
             f"above (an answer within {100 * AGREE:g} % of the note's value, the "
             "digits such answers are printed with, is taken to agree):"
         ),
-        Grid(("quantity", "given", "here", "unit", "difference", ""), tuple(rows)),
+        Grid(
+            ("quantity", "given", "here", "unit", "difference", ""),
+            tuple(rows),
+            "The given answers against the note's values",
+        ),
     ]
     links = {k[: -len(".Fi")] for k in given if k.endswith(".Fi")}
     for link in sorted(links):

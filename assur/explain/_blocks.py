@@ -37,10 +37,16 @@ class Display:
 
 @dataclass(frozen=True, slots=True)
 class Grid:
-    """A table: a heading row and rows of cells (text with inline mathematics)."""
+    """A table: a heading row and rows of cells (text with inline mathematics).
+
+    Each row is named by its first cell. ``caption`` says what the table holds, in
+    words a screen reader reads before it (the HTML's hidden ``<caption>``; the
+    paragraph before the table says it to the eye, and Markdown has no caption).
+    """
 
     head: tuple[str, ...]
     rows: tuple[tuple[str, ...], ...]
+    caption: str
 
 
 @dataclass(frozen=True, slots=True)

@@ -38,6 +38,7 @@ __all__ = [
     "newton_start",
     "steps_ratio",
     "substitution",
+    "substitution_caption",
     "substitution_grid",
     "without_own",
 ]
@@ -158,7 +159,7 @@ def group_friction_blocks(
         how = _unsettled(tried, _newton_steps(steps, raised))
     return [
         method(pairs),
-        Grid(head, tuple(rows)),
+        Grid(head, tuple(rows), substitution_caption(rec)),
         Para(how + " The friction loads of these sizes:"),
         Display(tuple(lines)),
         Para(
@@ -218,6 +219,11 @@ def substitution_grid(
         for i, sizes in enumerate(tried)
     ]
     return head, rows
+
+
+def substitution_caption(rec: Equilibrium) -> str:
+    """Return the caption of the table of repeated substitution in ``rec``'s group."""
+    return f"Repeated substitution in group {plain(rec.label)}: the sizes at each step"
 
 
 def _newton_steps(steps: int, raised: bool = False) -> str:

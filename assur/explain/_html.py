@@ -32,6 +32,14 @@ math[display="block"] { margin: 0.4rem 0; padding-block: 0.25em; overflow-x: aut
 .note-eq mtd { text-align: left; padding-inline: 0; }
 table { border-collapse: collapse; margin: 0.6rem 0; }
 td, th { border: 1px solid #d1d5db; padding: 0.2rem 0.5rem; text-align: left; }
+/* a row's name is its heading for a screen reader, set as the cells beside it */
+th[scope="row"] { font-weight: normal; }
+/* read by a screen reader, not shown: a table's caption, the text before it says it */
+.unseen { position: absolute; width: 1px; height: 1px; overflow: hidden;
+  clip: rect(0 0 0 0); clip-path: inset(50%); white-space: nowrap; }
+/* a caption set apart (Chromium) opened a pixel between the table's head and body:
+   in flow, its pixel taken back */
+caption.unseen { position: static; margin-bottom: -1px; }
 /* a table wider than the screen scrolls in its box, a table still */
 .grid { max-width: 100%; overflow-x: auto; }
 /* on paper a heading stays with what follows it, a table row and an equation whole */
@@ -81,6 +89,21 @@ def inline(text: str) -> str:
     )
 
 
+def _table(grid: Grid) -> str:
+    """Return a table: its caption for a screen reader, rows named by a first cell."""
+    head = "".join(f'<th scope="col">{inline(c)}</th>' for c in grid.head)
+    rows = "".join(
+        f'<tr><th scope="row">{inline(row[0])}</th>'
+        + "".join(f"<td>{inline(c)}</td>" for c in row[1:])
+        + "</tr>"
+        for row in grid.rows
+    )
+    return (
+        f'<table><caption class="unseen">{inline(grid.caption)}</caption>'
+        f"<thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>"
+    )
+
+
 def _block(block: Block, deeper: int = 0) -> str:
     """Return one block as HTML, its heading ``deeper`` levels down."""
     if isinstance(block, Heading):
@@ -92,13 +115,7 @@ def _block(block: Block, deeper: int = 0) -> str:
         lines = "\n".join(display(line) for line in block.lines)
         return f'<div class="note-eq">\n{lines}\n</div>'
     if isinstance(block, Grid):
-        head = "".join(f"<th>{inline(c)}</th>" for c in block.head)
-        rows = "".join(
-            "<tr>" + "".join(f"<td>{inline(c)}</td>" for c in row) + "</tr>"
-            for row in block.rows
-        )
-        table = f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>"
-        return f'<div class="grid">{table}</div>'
+        return f'<div class="grid">{_table(block)}</div>'
     assert isinstance(block, Items)
     return "<ul>" + "".join(f"<li>{inline(x)}</li>" for x in block.items) + "</ul>"
 

@@ -130,7 +130,11 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
     arm = "arm h (m/s)" if actual else f"arm h per unit speed ({per_speed})"
     blocks: list[Block] = [
         Para(f"With {note} (driver {plain(d.pair.name)}):"),
-        Grid(("load", "force (N) or couple (N·m)", "velocity", arm, head), tuple(rows)),
+        Grid(
+            ("load", "force (N) or couple (N·m)", "velocity", arm, head),
+            tuple(rows),
+            f"Power of each load on the lever of driver {plain(d.pair.name)}",
+        ),
     ]
     lines = [f"\\sum P{tick} = {num(power)}{unit}"]
     rubbed, lost = power_rows(pos, bodies, actual)
@@ -147,7 +151,11 @@ def _driver_lever(pos: Position, i: int) -> list[Block]:
                     "speed of this driver: of either sign):"
                 )
             ),
-            Grid(("pair", "friction load", "relative motion", head), tuple(rubbed)),
+            Grid(
+                ("pair", "friction load", "relative motion", head),
+                tuple(rubbed),
+                f"Power of friction in each pair for driver {plain(d.pair.name)}",
+            ),
         ]
         lines += [
             f"{sym}{IDEAL} = -\\frac{{\\sum P{tick}}}{{{rate}}} = -\\frac{{"

@@ -18,6 +18,7 @@ from assur.explain._group_friction_text import (
     method,
     steps_ratio,
     substitution,
+    substitution_caption,
     substitution_grid,
     without_own,
 )
@@ -44,7 +45,7 @@ def locked_blocks(
     head, rows = substitution_grid(pos, pairs, tried)
     return [
         method(pairs),
-        Grid(head, tuple(rows)),
+        Grid(head, tuple(rows), substitution_caption(rec)),
         Para(_steps(tried)),
         *_cone(pos, solver),
         Para(

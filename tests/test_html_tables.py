@@ -1,0 +1,104 @@
+"""The pages' tables for a screen reader: a caption, and headings that say their way.
+
+Every table the package writes (the report's, the explanatory note's, the live
+tables the report's script builds) names what it holds in a ``<caption>``, marks
+its column headings ``scope="col"`` and names each of its rows by a ``<th
+scope="row">``: every one of them has rows named by a cell (a group by its step, a
+joint, link or figure by its name, a position by the driver's value, a step of
+the friction's iteration by its number).
+"""
+
+from __future__ import annotations
+
+import warnings
+from html.parser import HTMLParser
+from pathlib import Path
+from typing import Any
+
+import assur
+from assur.explain import explain
+
+EXAMPLES = Path(__file__).parent.parent / "examples"
+LOCKING = Path(__file__).parent.parent / "docs" / "files" / "errors" / "locking.toml"
+
+
+class _Tables(HTMLParser):
+    """Collect each table's caption, column headings and body rows' cells."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.tables: list[dict[str, Any]] = []
+        self.part = ""
+        self.in_caption = False
+
+    def handle_starttag(self, tag: str, attrs: list[tuple[str, str | None]]) -> None:
+        found = dict(attrs)
+        if tag == "table":
+            kind = found.get("class") or "note"
+            self.tables.append({"kind": kind, "caption": "", "heads": [], "rows": []})
+        elif tag in ("thead", "tbody"):
+            self.part = tag
+        elif tag == "caption":
+            self.in_caption = True
+        elif tag == "tr" and self.part == "tbody":
+            self.tables[-1]["rows"].append([])
+        elif tag in ("th", "td"):
+            if self.part == "thead":
+                self.tables[-1]["heads"].append(found.get("scope"))
+            else:
+                self.tables[-1]["rows"][-1].append((tag, found.get("scope")))
+
+    def handle_endtag(self, tag: str) -> None:
+        if tag == "caption":
+            self.in_caption = False
+        elif tag in ("thead", "tbody"):
+            self.part = ""
+
+    def handle_data(self, data: str) -> None:
+        if self.in_caption:
+            self.tables[-1]["caption"] += data
+
+
+def _tables(page: str) -> list[dict[str, Any]]:
+    """Return the tables of ``page``'s HTML (its script and its data left out)."""
+    parser = _Tables()
+    parser.feed(page.split('<script type="application/json"')[0])
+    return parser.tables
+
+
+def _check(table: dict[str, Any]) -> None:
+    """Assert ``table`` has a caption, column and row headings, as the module says."""
+    assert table["caption"].strip()
+    assert all(scope == "col" for scope in table["heads"])
+    assert table["rows"]
+    for row in table["rows"]:
+        named = [cell for cell in row if cell[0] == "th"]
+        assert named == [("th", "row")]
+
+
+def _pages() -> dict[str, str]:
+    """Return a page of each kind the package writes, by a name of its own."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)
+        locked = explain(assur.load(LOCKING), 250.0)
+    friction = assur.load(EXAMPLES / "slider_crank_friction.toml")
+    answers = {"crank.omega": 200.0, "rod.omega": -50.0}
+    return {
+        # the note's tables: the lever's, friction's, a locked group's, the answers'
+        "note, friction": explain(friction, 45.0).to_html(),
+        "note, locked": locked.to_html(),
+        "note, answers": explain(friction, 45.0, answers, "the book").to_html(),
+    }
+
+
+def test_every_table_of_every_page_has_a_caption_and_scoped_headings() -> None:
+    # a screen reader met tables named by nothing, their headings' way unknown:
+    # a value was read without its joint or its position
+    kinds = set()
+    for name, page in _pages().items():
+        tables = _tables(page)
+        assert tables, name
+        for table in tables:
+            _check(table)
+            kinds.add(table["kind"])
+    assert kinds == {"note"}
