@@ -144,7 +144,9 @@ def test_force_report_shows_the_summary(pages: dict[str, str]) -> None:
     text = pages["slider_crank_exercise"]
     assert '<section class="card wide" id="summary">' in text
     shown = re.findall(
-        r'<tr data-key="([^"]+)"><th>[^<]+</th><td>([^<]+)</td><td>([^<]*)</td>', text
+        r'<tr data-key="([^"]+)"><th scope="row">[^<]+</th><td>([^<]+)</td>'
+        r"<td>([^<]*)</td>",
+        text,
     )
     assert [key for key, _, _ in shown] == list(summary)
     for key, value, unit in shown:
@@ -264,8 +266,9 @@ def test_every_unit_is_the_schema_s(path: Path) -> None:
             assert [h.rsplit(" (", 1)[1] for h in headings] == [
                 f"{units[key]})" for key in row["keys"]
             ]
-    headings = re.findall(r'<th data-key="([^"]+)">[^<]*\(([^()]+)\)</th>', text)
-    assert len(headings) == text.count("<th data-key=")
+    head = r'<th scope="col" data-key="([^"]+)">[^<]*\(([^()]+)\)</th>'
+    headings = re.findall(head, text)
+    assert len(headings) == text.count('<th scope="col" data-key=')
     assert headings
     for key, unit in headings:
         assert unit == units[html.unescape(key)]
@@ -370,7 +373,8 @@ eval(script);
 const heads = [];
 (function walk(n) {
   if (n.tag === "th") heads.push(n.textContent);
-  n.children.forEach(walk);
+  // the column headings: a row's name is a heading too, in the table's body
+  if (n.tag !== "tbody") n.children.forEach(walk);
 })(byId.current);
 console.log(JSON.stringify({ready: document.documentElement.dataset.ready,
   errors: window.assurErrors, readout: byId.readout.textContent, heads: heads,

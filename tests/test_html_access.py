@@ -114,7 +114,8 @@ def test_the_row_shown_is_marked_by_more_than_its_tint() -> None:
     page = render_report(assur.load(EXAMPLES / "four_bar.toml"), [0.0, 90.0])
     css = _style(page)
     assert "font-weight: 600" in _rule(css, "table.values tr.shown td")
-    assert "box-shadow" in _rule(css, "table.values tr.shown td:first-child")
+    assert "font-weight: 600" in _rule(css, "#values tr.shown th")
+    assert "box-shadow" in _rule(css, "#values tr.shown th")
 
 
 def _four_bar_page(driver: Any, folder: Path) -> None:
@@ -142,7 +143,7 @@ def test_the_colour_column_of_the_groups_has_a_heading() -> None:
     # its heading was an empty cell: a screen reader named the column by nothing
     page = render_report(assur.load(EXAMPLES / "four_bar.toml"), [0.0, 90.0])
     table = page.split('<table class="groups"')[1].split("</thead>")[0]
-    first = re.findall(r"<th>(.*?)</th>", table)[0]
+    first = re.findall(r'<th scope="col">(.*?)</th>', table)[0]
     assert re.sub(r"<[^>]+>", "", first) == "Colour in the drawing"
     assert "position: absolute" in _rule(_style(page), ".unseen")
 

@@ -25,6 +25,10 @@ EXAMPLES = Path(__file__).parent.parent / "examples"
 ANGLES = [30.0, 75.0, 140.0]
 
 
+LINK_ROW = r'<tr data-link="([^"]+)"><th scope="row">[^<]*</th>(.*?)</tr>'
+"""A row of the inertia table: its link's key and its cells after the link's name."""
+
+
 def section(page: str, name: str) -> str:
     """The HTML of the section ``id=name``."""
     start = page.index(f'id="{name}"')
@@ -51,7 +55,7 @@ def test_inertia_loads_agree_with_the_table(report) -> None:
     page, table = report
     part = section(page, "inertia")
     assert "(φ = 30.0°)" in part  # the report's first position, with its unit
-    rows = re.findall(r'<tr data-link="([^"]+)"><th>[^<]*</th>(.*?)</tr>', part)
+    rows = re.findall(LINK_ROW, part)
     massive = [link.name for link in table.mechanism.links if link.mass]
     assert [name for name, _ in rows] == massive
     for name, cells in rows:
@@ -204,14 +208,14 @@ def test_a_small_link_s_inertia_loads_are_its_own_not_round_off() -> None:
     small = text.replace("inertia = 5.16e-05", "inertia = 5.16e-13")
     mech = assur.loads(small)
     page = render_report(mech, [0.0, 90.0])
-    rows = dict(re.findall(r'<tr data-link="([^"]+)"><th>[^<]*</th>(.*?)</tr>', page))
+    rows = dict(re.findall(LINK_ROW, page))
     cells = re.findall(r"<td>([^<]*)</td>", rows["crank"])
     # J_G, epsilon (the driver's 10 rad/s^2), M_i = -J_G epsilon
     assert cells[4:7] == ["5.16e-13", "10", "-5.16e-12"]
 
 
 def _cells(page: str, link: str) -> list[str]:
-    rows = dict(re.findall(r'<tr data-link="([^"]+)"><th>[^<]*</th>(.*?)</tr>', page))
+    rows = dict(re.findall(LINK_ROW, page))
     return re.findall(r"<td>([^<]*)</td>", rows[link])
 
 
@@ -233,14 +237,17 @@ def test_a_table_s_round_off_is_told_by_the_largest_value_of_its_unit() -> None:
     mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
     page = render_report(mech, [180.0, 45.0])
     part = section(page, "table")
-    keys = re.findall(r'<th data-key="([^"]+)">', part)
-    first = re.findall(r"<td>([^<]*)</td>", part.split('data-row="0">')[1])
+    keys = re.findall(r'<th scope="col" data-key="([^"]+)">', part)
+    row = part.split('data-row="0">')[1].split("</tr>")[0]
+    first = re.findall(r"<t[hd][^>]*>([^<]*)</t[hd]>", row)
     shown = dict(zip(keys, first, strict=False))
     assert shown["guide.F"] == "0"
     assert shown["driver.torque"] == "0"
     # and a summary's mean torque of a turn that does no net work: 1.5e-16 N m
     page = render_report(assur.load(EXAMPLES / "class3.toml"))
-    mean = re.search(r'data-key="driver.torque.mean"><th>[^<]*</th><td>([^<]*)', page)
+    mean = re.search(
+        r'data-key="driver.torque.mean"><th scope="row">[^<]*</th><td>([^<]*)', page
+    )
     assert mean is not None
     assert mean[1] == "0"
 

@@ -10,13 +10,20 @@ the friction's iteration by its number).
 
 from __future__ import annotations
 
+import json
+import subprocess
 import warnings
 from html.parser import HTMLParser
 from pathlib import Path
 from typing import Any
 
+import pytest
+
 import assur
 from assur.explain import explain
+from assur.html import render_report, write_report
+
+from .test_html import FAKE_DOM, _executable
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 LOCKING = Path(__file__).parent.parent / "docs" / "files" / "errors" / "locking.toml"
@@ -88,6 +95,11 @@ def _pages() -> dict[str, str]:
         "note, friction": explain(friction, 45.0).to_html(),
         "note, locked": locked.to_html(),
         "note, answers": explain(friction, 45.0, answers, "the book").to_html(),
+        # the report's: structure, dynamics, inertia, summary, values, its note
+        "report, friction": render_report(friction, [45.0, 90.0]),
+        "report, kinematics": render_report(
+            assur.load(EXAMPLES / "lever_var9.toml"), [0.0, 30.0]
+        ),
     }
 
 
@@ -101,4 +113,44 @@ def test_every_table_of_every_page_has_a_caption_and_scoped_headings() -> None:
         for table in tables:
             _check(table)
             kinds.add(table["kind"])
-    assert kinds == {"note"}
+    assert kinds == {
+        "groups",
+        "figures",
+        "note",
+        "values inertia",
+        "values summary",
+        "values",
+    }
+
+
+LIVE_TABLES = r"""
+const tables = [];
+for (const table of byId.current.children) {
+  const caption = table.children.find((c) => c.tag === "caption");
+  const part = (tag) => table.children.filter((c) => c.tag === tag)
+    .flatMap((p) => p.children);
+  tables.push({caption: caption ? caption.textContent : "",
+    heads: part("thead").flatMap((tr) => tr.children).map((c) => c.attrs.scope),
+    rows: part("tbody").map((tr) => tr.children.map((c) => [c.tag, c.attrs.scope]))});
+}
+console.log(JSON.stringify(tables));
+"""
+"""The live tables the script wrote, as :func:`_check` reads them."""
+
+
+def test_the_live_tables_of_the_position_shown_are_alike(tmp_path: Path) -> None:
+    node = _executable("node", "nodejs")
+    if node is None:
+        pytest.skip("node not found")
+    path = tmp_path / "slider_crank.html"
+    write_report(assur.load(EXAMPLES / "slider_crank_exercise.toml"), path, [45.0])
+    script = FAKE_DOM.split("const heads = [];")[0] + LIVE_TABLES
+    out = subprocess.run(
+        [node, "-e", script, str(path)], capture_output=True, text=True, check=True
+    )
+    tables = json.loads(out.stdout)
+    assert len(tables) == 4  # links, slides, joints, inertia loads
+    for table in tables:
+        _check({**table, "rows": [[tuple(c) for c in r] for r in table["rows"]]})
+    captions = [t["caption"] for t in tables]
+    assert len(set(captions)) == len(captions)

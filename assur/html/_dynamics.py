@@ -19,7 +19,7 @@ from assur.columns import pretty_unit
 from assur.dynamics_shown import SHOWN_DELTA, has_dynamics, shown
 from assur.errors import AssurError
 from assur.html._data import floats
-from assur.html._sections import number, wide_card
+from assur.html._sections import caption, number, wide_card
 
 __all__ = ["dynamics_part"]
 
@@ -33,6 +33,8 @@ CHARTS = (
     ("chart-speed", "Crank speed in the steady state", (("ω", "driver.omega", False),)),
 )
 """The section's diagrams: id, title, and each series' name, column and dashing."""
+FIGURES_CAPTION = "Figures of the steady state"
+"""What the section's table holds, said to a screen reader."""
 
 
 def dynamics_part(
@@ -103,7 +105,8 @@ def _figures_html(result: Any) -> str:
         # nothing varies over the turn: no place of the largest or smallest speed
         rows[3:5] = [("crank speed", f"constant, {number(abs(result.omega))} rad/s")]
     cells = "".join(
-        f"<tr><th>{escape(k)}</th><td>{escape(v)}</td></tr>" for k, v in rows
+        f'<tr><th scope="row">{escape(k)}</th><td>{escape(v)}</td></tr>'
+        for k, v in rows
     )
     why = (
         f"with the flywheel that holds δ to {SHOWN_DELTA:g} (the mechanism alone "
@@ -124,5 +127,6 @@ def _figures_html(result: Any) -> str:
         )
     return (
         f'<p class="note">{escape(note)}</p>\n'
-        f'<table class="figures"><tbody>{cells}</tbody></table>'
+        f'<table class="figures">{caption(FIGURES_CAPTION)}<tbody>{cells}</tbody>'
+        "</table>"
     )

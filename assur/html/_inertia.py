@@ -12,9 +12,10 @@ import math
 from html import escape
 
 from assur._digits import largest
+from assur._position_titles import row_position
 from assur.analysis import Table
 from assur.html._data import public
-from assur.html._sections import first_position, number, wide_card
+from assur.html._sections import caption, columns_row, number, wide_card
 from assur.html._series import massive_links
 
 __all__ = ["inertia_html"]
@@ -109,14 +110,13 @@ def inertia_html(table: Table) -> str:
     rows = inertia_rows(table)
     if not rows:
         return ""
-    head = "".join(
-        f"<th>{escape(title)}{f' ({unit})' if unit else ''}</th>"
-        for title, unit in HEADINGS
+    head = columns_row(
+        [f"{escape(title)}{f' ({unit})' if unit else ''}" for title, unit in HEADINGS]
     )
     turn = largest([table[f"{x.name}.omega"][0] for x in table.mechanism.links])
     scales = _scales(rows, turn, float(table.plan.scale))
     body = "\n".join(
-        f'<tr data-link="{escape(name)}"><th>{escape(public(name))}</th>'
+        f'<tr data-link="{escape(name)}"><th scope="row">{escape(public(name))}</th>'
         + "".join(
             f"<td>{number(v, s)}</td>"
             for v, s in zip(values, _sizes(scales, values), strict=True)
@@ -124,14 +124,15 @@ def inertia_html(table: Table) -> str:
         + "</tr>"
         for name, values in rows
     )
+    title = f"Inertia loads at the first position ({row_position(table, 0)})"
     return wide_card(
         "inertia",
-        f"Inertia loads at the first position ({first_position(table)})",
+        escape(title),
         '<p class="note">Each link with a mass carries the inertia force F_i = '
         "−m a_G at its centre of mass and the inertia torque M_i = −J_G ε; together "
         "they are one force of size F_i moved off the centre of mass by h, to the "
         "side where its moment about G turns like M_i. Directions are measured "
         "from +x, counter-clockwise.</p>\n"
         '<div class="table-wrap"><table class="values inertia">'
-        f"<thead><tr>{head}</tr></thead>\n<tbody>\n{body}\n</tbody></table></div>",
+        f"{caption(title)}{head}\n<tbody>\n{body}\n</tbody></table></div>",
     )

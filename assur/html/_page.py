@@ -26,6 +26,7 @@ from assur.html._sections import (
     structure_html,
     summary_html,
     table_html,
+    table_title,
     wide_card,
 )
 from assur.plan import Plan
@@ -68,7 +69,7 @@ def assemble_page(
         "force_note": '<p class="note" id="force-note"></p>' if forced else "",
         "structure": structure_html(struct, data),
         "dynamics": dynamics,
-        "table_title": "Reactions and balancing load" if forced else "Kinematics",
+        "table_title": table_title(table),
         "table": table_html(plan, table),
         "note": note,
         "inertia": inertia_html(table),

@@ -37,6 +37,33 @@ GROUP_HEADINGS = (
 )
 """Column headings of the table of groups (HTML); the first column holds the colour,
 its heading read by a screen reader alone."""
+GROUPS_CAPTION = "Assur groups in the order they are solved, each named by its step"
+"""What the table of groups holds, said to a screen reader (its card says Structure)."""
+SUMMARY_TITLE = "Summary over the sweep"
+"""The summary's heading, and its table's caption."""
+
+
+def caption(text: str) -> str:
+    """Return a table's caption, read by a screen reader and not shown.
+
+    ``text`` is plain text; the card's heading above the table says it to the eye.
+    """
+    return f'<caption class="unseen">{escape(text)}</caption>'
+
+
+def columns_row(headings: list[str]) -> str:
+    """Return a table's head: a row of column headings (each HTML)."""
+    cells = "".join(f'<th scope="col">{h}</th>' for h in headings)
+    return f"<thead><tr>{cells}</tr></thead>"
+
+
+def table_title(table: Table) -> str:
+    """Return the heading of the table of values over the sweep, and its caption."""
+    return (
+        "Reactions and balancing load"
+        if table.force_state is not None
+        else "Kinematics"
+    )
 
 
 def wide_card(ident: str, title: str, body: str) -> str:
@@ -112,17 +139,18 @@ def structure_html(struct: Structure, data: dict[str, Any]) -> str:
             ", ".join(public(x) for x in g.external),
         ]
         swatch = f'<span class="swatch" style="background:{info["colour"]}"></span>'
+        # the step names the group's row, its colour before it
         rows.append(
-            f"<tr><td>{swatch}</td>"
-            + "".join(f"<td>{escape(c)}</td>" for c in cells)
+            f'<tr><td>{swatch}</td><th scope="row">{escape(cells[0])}</th>'
+            + "".join(f"<td>{escape(c)}</td>" for c in cells[1:])
             + "</tr>"
         )
-    head = "".join(f"<th>{h}</th>" for h in GROUP_HEADINGS)
+    head = columns_row(list(GROUP_HEADINGS))
     formula = escape(struct.formula.replace(" -> ", " → "))
     return (
         f'<p class="formula">{formula}</p>\n'
-        f'<div class="scroll"><table class="groups"><thead><tr>{head}</tr></thead>\n'
-        "<tbody>"
+        f'<div class="scroll"><table class="groups">{caption(GROUPS_CAPTION)}'
+        f"{head}\n<tbody>"
         + "\n".join(rows)
         + "</tbody></table></div>\n"
         + _report_html(str(struct))
@@ -163,7 +191,7 @@ def summary_html(table: Table) -> str:
     # does no net work) is round-off
     sizes = by_unit([units[key] for key in found], list(found.values()))
     rows = "\n".join(
-        f'<tr data-key="{escape(key)}"><th>{escape(key)}</th>'
+        f'<tr data-key="{escape(key)}"><th scope="row">{escape(key)}</th>'
         f"<td>{number(value, size)}</td>"
         f"<td>{escape(pretty_unit(units[key]))}</td></tr>"
         for (key, value), size in zip(found.items(), sizes, strict=True)
@@ -175,7 +203,7 @@ def summary_html(table: Table) -> str:
     )
     return wide_card(
         "summary",
-        "Summary over the sweep",
+        SUMMARY_TITLE,
         '<p class="note">Largest and RMS reaction in every joint and where the '
         "largest occurs, a sliding pair's largest couple, the balancing load's "
         "extremes, mean and RMS, the drivers' mean, largest and smallest power, the "
@@ -183,7 +211,8 @@ def summary_html(table: Table) -> str:
         "coordinates) and where; means over the positions shown, or over time as "
         "said below.</p>\n"
         f"{told}"
-        '<div class="table-wrap"><table class="values summary"><tbody>\n'
+        '<div class="table-wrap"><table class="values summary">'
+        f"{caption(SUMMARY_TITLE)}<tbody>\n"
         f"{rows}\n</tbody></table></div>",
     )
 
@@ -199,17 +228,20 @@ def table_html(plan: Plan, table: Table) -> str:
     values = [np.asarray(table[key]) for key, _ in columns]
     sizes = by_unit([table.column(key).unit for key, _ in columns], values)
     head = "".join(
-        f'<th data-key="{escape(key)}">{escape(title)}</th>' for key, title in columns
+        f'<th scope="col" data-key="{escape(key)}">{escape(title)}</th>'
+        for key, title in columns
     )
-    rows = [
-        f'<tr data-row="{i}">'
-        + "".join(
-            f"<td>{number(float(v[i]), size)}</td>"
-            for v, size in zip(values, sizes, strict=True)
+    rows = []
+    for i in range(0, len(table), step):
+        first, *rest = (
+            number(float(v[i]), size) for v, size in zip(values, sizes, strict=True)
         )
-        + "</tr>"
-        for i in range(0, len(table), step)
-    ]
+        # the driver's position names the row
+        rows.append(
+            f'<tr data-row="{i}"><th scope="row">{first}</th>'
+            + "".join(f"<td>{t}</td>" for t in rest)
+            + "</tr>"
+        )
     note = (
         f"Every {step}th of {len(table)} positions."
         if step > 1
@@ -218,7 +250,7 @@ def table_html(plan: Plan, table: Table) -> str:
     return (
         f'<p class="note">{note} The highlighted row is the position shown in the '
         'drawing.</p>\n<div class="table-wrap"><table class="values" id="values">'
-        f"<thead><tr>{head}</tr></thead>\n<tbody>"
+        f"{caption(table_title(table))}<thead><tr>{head}</tr></thead>\n<tbody>"
         + "\n".join(rows)
         + "</tbody></table></div>"
     )

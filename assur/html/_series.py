@@ -103,9 +103,10 @@ def massive_links(table: Table) -> list[str]:
 
 
 def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
-    """Return the live tables of values at the shown position: head and rows each.
+    """Return the live tables of values at the shown position.
 
-    A row names a link or joint and the column keys of its values; a head's
+    Each has a caption (what it holds, for a screen reader), a head and rows. A
+    row names a link or joint and the column keys of its values; a head's
     headings carry the units of the first row's columns.
     """
     joints = visible_pairs(plan)
@@ -136,8 +137,18 @@ def current(plan: Plan, table: Table) -> dict[str, dict[str, Any]]:
         "joints": ("joint", ("Fx", "Fy", "|F|") if forced else ("x", "y"), points),
         "inertia": ("inertia of", ("Fi,x", "Fi,y", "Mi"), inertia),
     }
+    captions = {
+        "links": "Angle and its rates of each link",
+        "slides": "Slide and its rates in each sliding pair",
+        "joints": "Reaction in each joint" if forced else "Place of each joint",
+        "inertia": "Inertia loads of each link with a mass",
+    }
     return {
-        part: {"head": _head(table, first, symbols, rows), "rows": rows}
+        part: {
+            "caption": f"{captions[part]} at the position shown",
+            "head": _head(table, first, symbols, rows),
+            "rows": rows,
+        }
         for part, (first, symbols, rows) in parts.items()
     }
 

@@ -392,26 +392,34 @@
   const live = [];
   const value = (key, i) => key in data.columns ? data.columns[key][i]
     : data.points[key.slice(0, -2)][key.slice(-1)][i];
-  function liveTable(head, rows) {
-    if (!rows.length) return;
+  // a header cell of a live table: a column's heading or a row's name
+  function heading(text, scope, line) {
+    const th = document.createElement("th");
+    th.setAttribute("scope", scope);
+    th.textContent = text;
+    line.appendChild(th);
+  }
+  function liveTable(part) {
+    if (!part.rows.length) return;
     const table = document.createElement("table");
+    // what the table holds, for a screen reader: the card's heading says it to the eye
+    const caption = document.createElement("caption");
+    caption.className = "unseen";
+    caption.textContent = part.caption;
+    table.appendChild(caption);
     const tr = table.createTHead().insertRow();
-    for (const text of head) {
-      const th = document.createElement("th");
-      th.textContent = text;
-      tr.appendChild(th);
-    }
+    for (const text of part.head) heading(text, "col", tr);
     const body = table.createTBody();
-    for (const row of rows) {
+    for (const row of part.rows) {
       const line = body.insertRow();
-      line.insertCell().textContent = row.name;
+      heading(row.name, "row", line);
       for (const key of row.keys) live.push({cell: line.insertCell(), key: key});
     }
     document.getElementById("current").appendChild(table);
   }
   for (const part of [data.current.links, data.current.slides, data.current.joints,
     data.current.inertia]) {
-    liveTable(part.head, part.rows);
+    liveTable(part);
   }
 
   const rows = {};
