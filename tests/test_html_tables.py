@@ -23,7 +23,12 @@ import assur
 from assur.explain import explain
 from assur.html import render_report, write_report
 
-from .test_html import FAKE_DOM, _executable
+from .test_html import (
+    FAKE_DOM,
+    _executable,
+    _open,
+    browser,  # noqa: F401 (the headless Chromium fixture)
+)
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 LOCKING = Path(__file__).parent.parent / "docs" / "files" / "errors" / "locking.toml"
@@ -154,3 +159,28 @@ def test_the_live_tables_of_the_position_shown_are_alike(tmp_path: Path) -> None
         _check({**table, "rows": [[tuple(c) for c in r] for r in table["rows"]]})
     captions = [t["caption"] for t in tables]
     assert len(set(captions)) == len(captions)
+
+
+ROW_AND_NAME = """
+const wrap = document.querySelector(arguments[0]).parentElement;
+wrap.scrollTop = 200;
+const row = wrap.querySelector("tbody tr");
+return [row.children[0], row.children[1]].map((c) => c.getBoundingClientRect().top);
+"""
+"""Scroll a table's box by 200 px; return its first row's name's and value's tops."""
+
+
+@pytest.mark.browser
+def test_a_row_s_name_scrolls_with_its_values(
+    browser: Any,  # noqa: F811
+    tmp_path: Path,
+) -> None:
+    # the column headings stay at the top of a scrolled table, and so did every
+    # row's name in the summary (sticky too): the names piled up at the top, each
+    # beside the values of another row
+    path = tmp_path / "slider_crank.html"
+    write_report(assur.load(EXAMPLES / "slider_crank_friction.toml"), path)
+    _open(browser, path)
+    for table in ("table.summary", "#values"):
+        name, value = browser.execute_script(ROW_AND_NAME, table)
+        assert name == pytest.approx(value)
