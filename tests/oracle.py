@@ -349,15 +349,21 @@ def load_value(
         vals = np.atleast_1d(np.asarray(value, dtype=float))
         return [np.full(n, v) for v in vals[:components]]
     xs = np.asarray(value.table, dtype=float)
+    values = [np.asarray(v, dtype=float) for v in value.values]
     if value.over == "driver":
         at = table["angle"]
-        periodic = mech.joint(mech.drivers[0].joint).kind == "revolute"
-        return [
-            np.interp(at, xs, np.asarray(v), period=360.0 if periodic else None)
-            for v in value.values
-        ]
+        if mech.joint(mech.drivers[0].joint).kind == "revolute":
+            # read within the turn from the table's first position, closed one turn
+            # on by its first value; np.interp's own period= would sort the steps'
+            # twin positions apart and merge 0 with 360
+            start = xs[0]
+            at = start + np.mod(at - start, 360.0)
+            if xs[-1] < start + 360.0:
+                xs = np.append(xs, start + 360.0)
+                values = [np.append(v, v[0]) for v in values]
+        return [np.interp(at, xs, v) for v in values]
     at = table[f"{value.over}.s"]
-    return [np.interp(at, xs, np.asarray(v)) for v in value.values]
+    return [np.interp(at, xs, v) for v in values]
 
 
 @dataclass
@@ -392,7 +398,8 @@ def applied_loads(
             g_at = column_pair(table, f"{name}.G", 0)
             g_vel = column_pair(table, f"{name}.G", 1)
             fi[name] = -link.mass * column_pair(table, f"{name}.G", 2)
-            mi[name] = -link.inertia * table[f"{name}.alpha"]
+            # a link that only translates may leave its inertia out (it never enters)
+            mi[name] = -(link.inertia or 0.0) * table[f"{name}.alpha"]
             total = link.mass * gravity + (fi[name] if inertia else np.zeros((n, 2)))
             couple = mi[name] if inertia else np.zeros(n)
             f += total
@@ -1031,7 +1038,8 @@ def kinetic_energy(mech: assur.Mechanism, table: assur.Table) -> np.ndarray:
         if link.mass:
             v = column_pair(table, f"{link.name}.G", 1)
             w = table[f"{link.name}.omega"]
-            energy += 0.5 * (link.mass * np.sum(v * v, axis=-1) + link.inertia * w * w)
+            inertia = link.inertia or 0.0  # left out only where the link never turns
+            energy += 0.5 * (link.mass * np.sum(v * v, axis=-1) + inertia * w * w)
     return energy
 
 
