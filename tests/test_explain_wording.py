@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 import itertools
+import math
 import re
 from pathlib import Path
 
@@ -576,3 +577,34 @@ def test_the_title_of_a_note_at_minus_zero_reads_zero() -> None:
     assert str(note).splitlines()[0] == (
         "# Crank-rocker four-bar at crank angle 0 deg: the analysis explained"
     )
+
+
+# a step "a ± b = c" of angles in degrees, as printed; a left edge so that no step
+# starts inside a number
+ANGLE_STEP = re.compile(
+    r"(?<![\d.-])(?=(-?[\d.]+)\^\\circ ([+-]) \(?(-?[\d.]+)\^\\circ\)? = "
+    r"(-?[\d.]+)\^\\circ)"
+)
+
+
+@pytest.mark.parametrize(
+    ("path", "angle"),
+    [(EXAMPLES / "whitworth.toml", 160.0), (DATA / "crank_shaper.toml", 100.0)],
+)
+def test_the_slotted_lever_s_turn_adds_up_in_degrees(path: Path, angle: float) -> None:
+    # the RPR dyad's turn printed "theta_n = theta_D + psi = -177.5" for 92.5 + 90
+    # and "theta_n - nu = -177.5 - 166.1 = 16.39": both right only modulo 360
+    mech = assur.load(path)
+    note = str(explain(mech, angle))
+    line = next(x for x in note.splitlines() if "\\theta_n = \\theta_D" in x)
+    steps = [m.groups() for m in ANGLE_STEP.finditer(line)]
+    assert len(steps) >= 2, line
+    for a, sign, b, c in steps:
+        total = float(a) + float(b) if sign == "+" else float(a) - float(b)
+        # each of the three printed to 0.01 at least: half of it each way
+        assert total == pytest.approx(float(c), abs=0.015 + 1e-9), line
+    # the last value is the block's turn from the reference pose (it has no axis)
+    turn = float(assur.kinematics(mech, [angle])["block.angle"][0])
+    last = float(steps[-1][3])
+    assert -180.0 < last <= 180.0
+    assert abs(math.remainder(last - turn, 360.0)) < 0.01

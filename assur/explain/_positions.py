@@ -213,8 +213,10 @@ def _rpr(pos: Position, s: DyadSolver) -> list[Block]:
                 "\\psi = \\arccos\\frac{c_0}{|\\vec D|} = "
                 f"\\arccos\\frac{{{num(c0)}}}"
                 f"{{{num(dist)}}} = {deg(psi)}",
-                f"\\theta_n = \\theta_D {sign} \\psi = {deg(normal)},\\quad "
-                f"\\Delta\\varphi = \\theta_n - \\nu = {deg(normal - nu)}",
+                f"\\theta_n = \\theta_D {sign} \\psi = "
+                f"{_angle_sum(theta, sign, psi, wrap=False)},\\quad "
+                "\\Delta\\varphi = \\theta_n - \\nu = "
+                f"{_angle_sum(normal, '-', nu, wrap=True)}",
             )
         ),
         Para(
@@ -222,6 +224,27 @@ def _rpr(pos: Position, s: DyadSolver) -> list[Block]:
             "sign before $\\psi$ is the reference pose's branch."
         ),
     ]
+
+
+def _angle_sum(a: float, sign: str, b: float, wrap: bool) -> str:
+    r"""Return ``a + b`` (``sign`` "+") or ``a - b`` in degrees, worked out.
+
+    The operands (``b`` within (-180, 180], ``a`` as the line before left it), their
+    plain sum, and with ``wrap``, where that leaves (-180, 180], the whole turn that
+    brings it back: a reader adding 92.5 and 90 must find 182.5, not the -177.5 it
+    stands for.
+    """
+    total = a + b if sign == "+" else a - b
+    first = f"{num(math.degrees(a))}^\\circ"
+    second = deg(b)
+    if second.startswith("-"):
+        second = f"({second})"
+    text = f"{first} {sign} {second} = {num(math.degrees(total))}^\\circ"
+    turns = math.degrees(total - math.remainder(total, 2 * math.pi))
+    if wrap and abs(turns) > 1.0:  # a whole turn, never a fraction of one
+        back = "-" if turns > 0 else "+"
+        text += f" {back} {num(abs(turns))}^\\circ = {deg(total)}"
+    return text
 
 
 def _rpp(pos: Position, s: DyadSolver) -> list[Block]:
