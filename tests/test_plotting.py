@@ -49,6 +49,14 @@ def _reaction(table: assur.Table, joint: str, sign: float = 1.0) -> str:
     return reaction_symbol(by, on) if sign > 0 else reaction_symbol(on, by)
 
 
+def _couple(table: assur.Table, joint: str) -> str:
+    """The pictures' name of a sliding joint's reaction couple on its second link."""
+    from assur.plotting._mathtext import couple_symbol
+
+    pair = table.plan.pairs[joint]
+    return couple_symbol(table.plan.bodies[pair.first], table.plan.bodies[pair.second])
+
+
 @pytest.fixture(scope="module")
 def slider_crank() -> assur.Table:
     mech = _load("slider_crank_exercise")
@@ -461,9 +469,26 @@ def test_free_body_couple_of_a_guide_in_newton_metres() -> None:
     (guide,) = [a for a in arrows if a.label == _reaction(table, "guide")]
     assert guide.couple == pytest.approx(table["guide.M"][0], rel=1e-12)
     assert guide.units == ("N", "N·m")
+    # named as a couple: the force's name over N m read as a force
+    assert guide.couple_label == _couple(table, "guide")
     ax = plotting.draw_free_body(table, 0)
-    (text,) = [t.get_text() for t in ax.texts if t.get_text().startswith(guide.label)]
-    assert text == f"{guide.label} = {guide.couple:.3g} N·m"
+    (text,) = [
+        t.get_text() for t in ax.texts if t.get_text().startswith(guide.couple_label)
+    ]
+    assert text == f"{guide.couple_label} = {guide.couple:.3g} N·m"
+
+
+def test_a_guide_s_couple_drawn_apart_is_named_as_a_couple() -> None:
+    # the crank shaper's cut, 0.1 m below the ram's guide, loads the guide with a
+    # couple of 200 N m; its normal force would act 1 m away, so the couple is drawn
+    # as an arc at the ram: it bore the force's name, twice beside the ram
+    path = Path(__file__).parent / "data" / "explain" / "crank_shaper.toml"
+    table = assur.forces(assur.load(path), [100.0])
+    ax = plotting.draw(table, forces=True)
+    texts = [t.get_text() for t in ax.texts if t.get_visible()]
+    assert texts.count(_reaction(table, "guide")) == 1
+    assert texts.count(_couple(table, "guide")) == 1
+    assert abs(table["guide.M"][0]) > 0.0
 
 
 def test_free_body_errors(six_bar: assur.Table, tenbar: assur.Table) -> None:

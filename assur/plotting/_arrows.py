@@ -153,7 +153,8 @@ def _draw_couple(
     if text:
         # the balancing torque always shows its value
         value = text == "values" or a.kind == "balancing"
-        words = f"{a.label} = {quantity(couple, a.units[1], 3)}" if value else a.label
+        name = a.label if a.couple_label is None else a.couple_label
+        words = f"{name} = {quantity(couple, a.units[1], 3)}" if value else name
         label = ax.text(
             *(a.point + rad * np.array([0.7, 0.8])),
             words,

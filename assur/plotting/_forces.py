@@ -18,7 +18,7 @@ from assur._vec import full
 from assur.plotting._context import _unit
 from assur.plotting._friction import shown_point
 from assur.plotting._geometry import _anchor, _nice, _public
-from assur.plotting._mathtext import reaction_symbol
+from assur.plotting._mathtext import couple_symbol, reaction_symbol
 from assur.plotting._numbers import quantity
 from assur.plotting._style import (
     ARROW_LENGTH,
@@ -54,6 +54,9 @@ class _Arrow:
     shown: np.ndarray | None = None
     """Where the force is drawn, when not at ``point``: a reaction tangent to its
     enlarged friction circle (:mod:`assur.plotting._friction`)."""
+    couple_label: str | None = None
+    """The couple's own name when it has one beside the force's (a sliding pair's
+    reaction); ``label`` otherwise."""
 
     @property
     def at(self) -> np.ndarray:
@@ -279,12 +282,16 @@ def _reaction_arrow(
     pair = ctx.plan.pairs[name]
     q, f, m = _reaction(ctx, pose, row, name, sign)
     by, on = (ctx.plan.bodies[b] for b in (pair.first, pair.second))
-    label = reaction_symbol(by, on) if sign > 0 else reaction_symbol(on, by)
+    ends = (by, on) if sign > 0 else (on, by)
     units = _reaction_units(ctx.table, name)
     shown = None
     if pair.kind == "R" and name in ctx.forces.friction:
         shown = shown_point(ctx, pose.at(pair.second, pair.d_second), q)
-    return _Arrow(label, q, f, m, REACTION_COLOUR, units, kind, shown)
+    # a couple drawn apart is named as one: "F = -200 N m" read as a force
+    couple = couple_symbol(*ends) if m is not None else None
+    return _Arrow(
+        reaction_symbol(*ends), q, f, m, REACTION_COLOUR, units, kind, shown, couple
+    )
 
 
 def _balancing_arrows(ctx: _Context, pose: _Pose, row: int) -> list[_Arrow]:

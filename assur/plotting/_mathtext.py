@@ -52,6 +52,21 @@ def reaction_symbol(by: str, on: str) -> str:
     return _symbol(f"\\vec F_{{{tex_name(by)},{tex_name(on)}}}")
 
 
+def couple_symbol(by: str, on: str) -> str:
+    r"""Return the name of the couple of link ``by`` on link ``on`` in every picture.
+
+    A sliding pair's reaction couple (the table's ``J.M``) beside its force
+    :func:`reaction_symbol`: the same subscripts under an :math:`M`, so that a
+    couple drawn apart from its force is not read as a force in N m.
+
+    Examples
+    --------
+    >>> couple_symbol("ground", "ram")
+    '$M_{\\text{ground},\\text{ram}}$'
+    """
+    return _symbol(f"M_{{{tex_name(by)},{tex_name(on)}}}")
+
+
 def centre_symbol(link: str, other: str | None = None) -> str:
     r"""Return the name of an instant centre: ``link``'s, or of ``other`` and ``link``.
 
