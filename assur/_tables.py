@@ -105,6 +105,10 @@ class Reading:
     below: tuple[float, ...]
     above: tuple[float, ...]
     fraction: float
+    held: tuple[float, float, float | None] | None = None
+    """Where the table holds the value read here, on a flat stretch: from, to and
+    the turn's end it runs through (over a crank, a stretch such as 350 to 190 deg
+    through 360), or None for that end; None off a flat stretch."""
 
 
 def reading(xs: Array, values: Any, at: float, turning: bool) -> Reading:
@@ -120,7 +124,42 @@ def reading(xs: Array, values: Any, at: float, turning: bool) -> Reading:
     j, w = int(found[0]), float(fraction[0])
     below = tuple(float(g[1][j]) for g in grids)
     above = tuple(float(g[1][j + 1]) for g in grids)
-    return Reading(t, float(grid[j]), float(grid[j + 1]), below, above, w)
+    held = _held(grids, j, turning) if below == above else None
+    return Reading(t, float(grid[j]), float(grid[j + 1]), below, above, w, held)
+
+
+def _held(
+    grids: list[tuple[Array, Array]], j: int, turning: bool
+) -> tuple[float, float, float | None]:
+    """Return the flat stretch of closed ``grids`` around segment ``j`` (see Reading).
+
+    Over a crank the stretch runs on past the turn's end into its start, and back
+    past its start into its end: a cut on from 350 deg and off at 190 deg holds
+    from 350 through 360 to 190, read at 355 as at 100.
+    """
+    grid, count = grids[0][0], len(grids[0][0]) - 1
+    value = [g[1][j] for g in grids]
+
+    def flat(k: int) -> bool:
+        return all(
+            g[1][k] == v == g[1][k + 1] for g, v in zip(grids, value, strict=True)
+        )
+
+    if all(flat(k) for k in range(count)):
+        return float(grid[0]), float(grid[-1]), None
+    ends = []
+    for step in (-1, 1):
+        # round the turn, a stretch ends where the table is not flat, as it is
+        # somewhere: not everywhere
+        k = j
+        while turning or 0 <= k + step < count:
+            if not flat((k + step) % count):
+                break
+            k = (k + step) % count
+        ends.append(k)
+    low, high = float(grid[ends[0]]), float(grid[ends[1] + 1])
+    through = float(grid[-1]) if turning and ends[0] > ends[1] else None
+    return low, high, through
 
 
 def step_before(xs: Array, values: Any, at: float, turning: bool) -> list[float] | None:

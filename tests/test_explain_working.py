@@ -205,9 +205,30 @@ def test_a_tabulated_load_says_where_its_table_is_read(angle: float, said: str) 
 
 
 def test_a_flat_stretch_of_a_load_table_is_said_to_hold() -> None:
+    # the cut holds from 165 deg on through the turn's end to 10 deg: "from 165 to
+    # 360" left its hold past 0 unsaid
     note = str(explain(assur.load(EXAMPLES / "whitworth.toml"), 210.0))
-    assert "(its table holds this value from } 165 \\text{ to } 360" in note
+    assert (
+        "(its table holds this value from } 165 \\text{ through } 360 \\text{ to } 10"
+        in note
+    )
     assert "\\frac{210 - 165}" not in note
+    # read in the turn's first stretch, the same stretch
+    early = str(explain(assur.load(EXAMPLES / "whitworth.toml"), 5.0))
+    assert "holds this value from } 165 \\text{ through } 360 \\text{ to } 10" in early
+
+
+def test_a_flat_stretch_across_the_turn_s_end_is_said_whole() -> None:
+    # the crank shaper's cut steps on at 350 deg and off at 190 deg: at 355 deg it
+    # was said to hold "from 350 to 360", at 100 deg "from 0 to 190"
+    mech = assur.load(DATA / "crank_shaper.toml")
+    (cut,) = (x.force for x in mech.loads)
+    on, off = (cut.table[k] for k in (3, 2))  # the steps, as the file gives them
+    said = f"from }} {on:g} \\text{{ through }} 360 \\text{{ to }} {off:g}"
+    for angle in (355.0, 100.0, -5.0):
+        note = str(explain(mech, angle))
+        assert said in note, angle
+        assert pieces_checked(note)[1] == []
 
 
 @pytest.mark.parametrize(

@@ -168,11 +168,13 @@ def _read(found: Reading, over: tuple[str, str, str], steps: bool) -> tuple[str,
             "",
             f"\\text{{(the entry of its table{words} at }} {num(x)}{u}\\text{{)}}",
         )
-    if found.below == found.above:
-        # a flat stretch of the table: nothing to interpolate
+    if found.held is not None:
+        # a flat stretch of the table, over a crank perhaps across its turn's end
+        low, high, through = found.held
+        across = "" if through is None else f"\\text{{ through }} {num(through)} "
         return "", (
-            f"\\text{{(its table{words} holds this value from }} {num(found.low)} "
-            f"\\text{{ to }} {num(found.high)}{u}\\text{{)}}"
+            f"\\text{{(its table{words} holds this value from }} {num(low)} "
+            f"{across}\\text{{ to }} {num(high)}{u}\\text{{)}}"
         )
 
     def value_(v: tuple[float, ...], lead: bool = False) -> str:
