@@ -608,3 +608,18 @@ def test_the_slotted_lever_s_turn_adds_up_in_degrees(path: Path, angle: float) -
     last = float(steps[-1][3])
     assert -180.0 < last <= 180.0
     assert abs(math.remainder(last - turn, 360.0)) < 0.01
+
+
+def test_a_load_table_s_words_are_set_off_alike() -> None:
+    # on a step the words followed the value with a bare \quad, off a step with
+    # ",\quad": "(0, 0) N\quad (its table steps here" beside "N,\quad (its table"
+    mech = assur.load(DATA / "crank_shaper.toml")
+    (cut,) = (x.force for x in mech.loads)
+    for angle in (100.0, *cut.table[1:4]):
+        note = str(explain(mech, angle))
+        said = [x for x in note.splitlines() if "\\text{(its table" in x]
+        assert said, angle
+        for line in said:
+            assert line.count("\\text{(its table") == line.count(
+                ",\\quad \\text{(its table"
+            ), line

@@ -370,7 +370,8 @@ def force_lines(loads: list[Load]) -> list[str]:
             # at the step's position is the one on the side of larger positions
             said = "(its table steps here, from "
             rest = " below this position to the value above it, which holds here)"
-            text += f"\\quad \\text{{{said}}}{was}\\text{{{rest}}}"
+            # set off as a table's reading is (",\quad"), whichever it is
+            text += f",\\quad \\text{{{said}}}{was}\\text{{{rest}}}"
         if words:
             text += f",\\quad {words}"
         lines.append(text)
