@@ -6,7 +6,6 @@ as CSV.
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
@@ -14,6 +13,7 @@ import numpy as np
 from assur._startup_turns import PERIODIC_RTOL
 from assur._text import crank_angle_text, number_text, spoken
 from assur._width import ljust, shown_width
+from assur.dynamics_shown import motor_note, motor_shown
 
 
 def _head(result: Any, sizing: Any, run: Any) -> dict[str, Any]:
@@ -48,49 +48,16 @@ def startup_csv(run: Any) -> str:
     return "\n".join(rows) + "\n"
 
 
-def _motor_shown(result: Any) -> float:
-    """Return the motor torque to print (N m): 0 where it is the mean's round-off.
-
-    Loads that do no net work (gravity alone) leave a mean of a few ulps of their
-    torques: a turn's work that is not 10^-12 of the energy swing is none.
-    """
-    if abs(result.motor) * 2.0 * math.pi <= 1e-12 * result.energy_swing:
-        return 0.0
-    return float(result.motor)
-
-
-def _motor_note(motor: float, result: Any) -> str:
-    """Return what the motor torque's sign means, beside "constant"."""
-    note = "constant"
-    if result.omega < 0:
-        # torques are counter-clockwise positive: a clockwise crank's motor
-        # drives it with a negative torque
-        note += ", counter-clockwise positive"
-    if motor * result.omega < 0:
-        note += "; it brakes: the loads drive the crank"
-    found = result.mechanism.motor
-    if found is not None and found.no_load_speed is not None:
-        # the steady state is the contract's: a constant torque at the nominal
-        # speed; the file's motor, whose torque falls with speed, runs the start-up
-        w = abs(result.omega)
-        note += (
-            f"; it balances the loads' work over a turn at the nominal {w:.6g} "
-            f"rad/s; the file's [motor], {number_text(found.at(result.omega))} N m at "
-            "that speed, drives the start-up alone"
-        )
-    return note
-
-
 def _figures(result: Any, sizing: Any, run: Any) -> str:
     """Return the figures of the steady state (and start-up) as aligned lines."""
     # plain ASCII, as the tables' units rows and the options' messages write units
     kgm2 = "kg m^2"
     turning = " (clockwise)" if result.omega < 0 else ""
-    motor = _motor_shown(result)
+    motor = motor_shown(result)
     lines: list[tuple[str, str]] = [
         ("nominal crank speed", f"{result.omega:.6g} rad/s{turning}"),
         ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
-        ("motor torque", f"{number_text(motor)} N m ({_motor_note(motor, result)})"),
+        ("motor torque", f"{number_text(motor)} N m ({motor_note(motor, result)})"),
         ("coefficient of speed fluctuation", f"delta = {_delta(result.delta)}"),
         (
             "largest speed",

@@ -82,3 +82,27 @@ def test_a_crank_that_cannot_turn_round_is_noted():
         "No steady state to show: dynamics: the crank cannot make a full turn" in part
     )
     assert page_data(text)["dynamics"] is None
+
+
+def test_a_clockwise_crank_s_figures_read_as_the_command_line_s(tmp_path):
+    text = (EXAMPLES / "whitworth.toml").read_text(encoding="utf-8")
+    assert text.count("omega = 5.0") == 1
+    path = tmp_path / "clockwise.toml"
+    path.write_text(text.replace("omega = 5.0", "omega = -5.0"), encoding="utf-8")
+    mech = assur.load(path)
+    angles = default_positions(mech)[::30]
+    part = html.unescape(section(render_report(mech, angles)))
+    t = assur.dynamics(mech, angles, assur.flywheel(mech, SHOWN_DELTA))
+    # the largest and smallest speeds are sizes: the nominal one is one too, turning
+    # clockwise, and the mean of the two
+    assert t.omega < 0 < t.speed_min
+    assert "nominal speed 5 rad/s, clockwise (the mean of the largest" in part
+    assert "nominal speed -5" not in part
+    # torques are counter-clockwise positive: the motor's sign is told, as the
+    # command line tells it
+    row = re.search(r'<th scope="row">motor torque</th><td>(.*?)</td>', part)
+    assert row is not None
+    assert row[1].startswith(f"{t.motor:.5g} N·m (constant, counter-clockwise positive")
+    assert "it brakes: the loads drive the crank" in row[1]
+    # the file's motor is quoted in the page's unit
+    assert "N m" not in row[1]

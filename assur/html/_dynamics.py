@@ -16,7 +16,13 @@ import numpy as np
 from assur._text import crank_angle_text
 from assur.analysis import Table
 from assur.columns import pretty_unit
-from assur.dynamics_shown import SHOWN_DELTA, has_dynamics, shown
+from assur.dynamics_shown import (
+    SHOWN_DELTA,
+    has_dynamics,
+    motor_note,
+    motor_shown,
+    shown,
+)
 from assur.errors import AssurError
 from assur.html._data import floats
 from assur.html._sections import caption, number, wide_card
@@ -84,13 +90,17 @@ def _section(body: str) -> str:
 def _figures_html(result: Any) -> str:
     """Return the figures of the steady state as a small table, and a note."""
     kgm2 = pretty_unit("kg m^2")
+    motor = motor_shown(result)
     top, low = (
         crank_angle_text(a, "°", number) for a in (result.angle_max, result.angle_min)
     )
     rows = [
         ("coefficient of speed fluctuation δ", number(result.delta)),
         ("flywheel on the crank", f"{number(result.flywheel)} {kgm2}"),
-        ("motor torque (constant)", f"{number(result.motor)} N·m"),
+        (
+            "motor torque",
+            f"{number(motor)} N·m ({motor_note(motor, result, 'N·m')})",
+        ),
         (
             "largest speed",
             f"{number(result.speed_max)} rad/s at {top}",
@@ -115,8 +125,10 @@ def _figures_html(result: Any) -> str:
         else "without a flywheel"
     )
     note = (
-        f"Steady state at the nominal speed {result.omega:.5g} rad/s (the mean of "
-        f"the largest and the smallest), {why}, under the constant motor torque "
+        # the largest and smallest speeds are sizes: the nominal one is told alike
+        f"Steady state at the nominal speed {abs(result.omega):.5g} rad/s"
+        f"{', clockwise' if result.omega < 0 else ''} (the mean of the largest and "
+        f"the smallest), {why}, under the constant motor torque "
         "whose work over a turn is the work the loads take."
     )
     if any(j.friction for j in result.mechanism.joints):
