@@ -7,7 +7,6 @@ Every name's box is measured on the figure as drawn.
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 import matplotlib
@@ -109,9 +108,7 @@ def test_a_side_of_round_off_is_neither_drawn_nor_named() -> None:
         assert min(lengths) > 1e-6 * max(lengths)
         # the polygon still closes: the sides left out are nothing (the note's
         # inertia force of round-off is zero, the table's reactions hold 1e-11 N)
-        gap = re.search(r"closes within (\S+) mm", ax.get_title())
-        assert gap is not None
-        assert float(gap.group(1)) < 1e-9
+        assert ": closes\n" in ax.get_title()
     finally:
         plt.close(fig)
 

@@ -229,8 +229,8 @@ def test_force_polygons_close_with_friction(path: Path, angle: float) -> None:
     fig = polygons.force_polygons(assur.forces(assur.load(path), [angle]))
     try:
         for ax in fig.axes:
-            gap = float(ax.get_title().split("closes within ")[1].split(" mm")[0])
-            assert gap <= 1e-9 * plans.PLAN_SIZE, ax.get_title()
+            # open by more than round-off, the title gives the gap in mm
+            assert ": closes\n" in ax.get_title(), ax.get_title()
     finally:
         plt.close(fig)
 

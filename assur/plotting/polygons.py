@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._digits import ROUND_OFF
 from assur._style import REACTION_COLOUR
 from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
@@ -48,8 +49,8 @@ def force_polygons(table: Table, angle: Any = None) -> Figure:
 
     Each polygon runs through the known loads on the group's first link and its
     outer reaction (with its friction force), then those of the next link: the
-    group is in equilibrium, so the polygon closes at its start (the title gives
-    the gap, round-off).
+    group is in equilibrium, so the polygon closes at its start (the title says
+    so, or gives the gap where it is more than round-off, see :func:`_closing`).
 
     Returns
     -------
@@ -135,7 +136,7 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> list[Name]:
     ax.grid(True, lw=0.4, alpha=0.4)
     ax.set_xlabel("mm of the polygon")
     ax.set_title(
-        f"group {literal(rec.label)}: closes within {float(np.hypot(*tip)):.1e} mm\n"
+        f"group {literal(rec.label)}: {_closing(float(np.hypot(*tip)), longest)}\n"
         f"scale: μF = {quantity(mu, 'N/mm', 6)}",
         fontsize=9,
     )
@@ -149,6 +150,23 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> list[Name]:
     entries = [(text, c) for c, text in kinds.items() if c in shown]
     _legend(ax, entries, f"μF = {quantity(mu, 'N/mm', 6)}")
     return names
+
+
+def _closing(gap: float, longest: float) -> str:
+    """Return how a polygon closes: its ``gap`` (mm), told from round-off.
+
+    A gap below :data:`assur._digits.ROUND_OFF` of the ``longest`` side (mm) is
+    round-off, 7.1e-15 mm on one machine and 0 on another by the order of the
+    sums: the polygon "closes". A larger one is a polygon left open, written out.
+
+    Examples
+    --------
+    >>> _closing(7.1e-15, 60.0), _closing(0.0, 60.0), _closing(0.25, 60.0)
+    ('closes', 'closes', 'open by 0.25 mm')
+    """
+    if gap <= ROUND_OFF * longest:
+        return "closes"
+    return f"open by {gap:.2g} mm"
 
 
 def _outer(pos: Position, rec: Any, body: int) -> list[Any]:

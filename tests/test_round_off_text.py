@@ -1,0 +1,72 @@
+"""Text outputs print no round-off: the same words on every machine.
+
+The last bits of a result are the machine's arithmetic's (its BLAS kernels, FMA,
+the order of the sums). A mechanism whose lengths are scaled by ``1 + 2e-15``, or
+a driver position moved by 1e-13 deg, has results that differ in those bits alone:
+whatever the text outputs print of it must read the same.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import matplotlib
+import pytest
+
+import assur
+from assur.plotting import polygons
+
+matplotlib.use("Agg")
+
+DATA = Path(__file__).parent / "data"
+EXAMPLES = Path(__file__).parent.parent / "examples"
+
+
+def scaled(path: Path, factor: float) -> assur.Mechanism:
+    """Return the mechanism of ``path`` with its joints and centres ``factor`` apart."""
+
+    def times(found: re.Match[str]) -> str:
+        return repr(float(found.group(0)) * factor)
+
+    number = r"-?[\d.]+(?:[eE][-+]?\d+)?"
+    text = path.read_text(encoding="utf-8")
+    text = re.sub(
+        r"(?m)^at = \[[^\]]*\]", lambda m: re.sub(number, times, m.group(0)), text
+    )
+    text = re.sub(rf"distance = {number}", lambda m: re.sub(number, times, m[0]), text)
+    return assur.loads(text)
+
+
+def variants(path: Path, angle: float) -> list[tuple[assur.Mechanism, float]]:
+    """Return the mechanism at ``angle`` and at round-off from it, three ways."""
+    mech = assur.load(path)
+    return [
+        (mech, angle),
+        (mech, angle + 1e-13),
+        (scaled(path, 1.0 + 2e-15), angle),
+        (scaled(path, 1.0 - 3e-15), angle),
+    ]
+
+
+def test_scaled_moves_every_joint() -> None:
+    path = DATA / "plans" / "fourbar.toml"
+    mech, bigger = assur.load(path), scaled(path, 2.0)
+    for joint, twice in zip(mech.joints, bigger.joints, strict=True):
+        assert tuple(2.0 * x for x in joint.at) == tuple(twice.at)
+
+
+@pytest.mark.parametrize(
+    ("stem", "angle"), [("fourbar", 90.0), ("inverted", 45.0), ("shaper", 180.0)]
+)
+def test_a_force_polygon_s_title_closes_alike(stem: str, angle: float) -> None:
+    # its gap was written 8.9e-16 mm, or 0.0e+00 mm, or 7.9e-15 mm: round-off
+    import matplotlib.pyplot as plt
+
+    titles = set()
+    for mech, at in variants(DATA / "plans" / f"{stem}.toml", angle):
+        fig = polygons.force_polygons(assur.forces(mech, [at]))
+        titles.add(tuple(ax.get_title() for ax in fig.axes))
+        plt.close(fig)
+    (found,) = titles
+    assert all(": closes\n" in title for title in found)
