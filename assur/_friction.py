@@ -40,9 +40,12 @@ if TYPE_CHECKING:
 __all__ = [
     "STILL",
     "GroupFriction",
+    "Sizing",
     "Still",
     "friction_wrench",
+    "newton_steps",
     "rate",
+    "sizing",
     "solve_group",
     "still",
     "substituted",
@@ -204,19 +207,31 @@ def _reaction(pair: PairPlan, bodies: list[Motion], record: Equilibrium, n: int)
     return full(dot((r.fx, r.fy), (nx, ny)), n)[:, None]
 
 
-def solve_group(
+@dataclass(frozen=True, slots=True)
+class Sizing:
+    """A group's system ``s = |R(s)|`` for the sizes of its pairs' reactions.
+
+    ``pairs`` are its pairs with friction; ``inside`` its links; ``units`` each
+    pair's friction wrench per unit of its reaction (see :func:`_unit`); ``start``
+    each pair's reaction without the group's friction (see :func:`_reaction`);
+    ``response[p][q]`` pair q's reaction for a unit of pair p's friction alone.
+    """
+
+    pairs: list[PairPlan]
+    inside: set[int]
+    units: dict[str, Wrench]
+    start: list[Any]
+    response: list[list[Any]]
+
+
+def sizing(
     solver: GroupSolver,
     bodies: list[Motion],
     loads: list[Wrench],
     n: int,
     rest: Still,
-) -> GroupFriction | None:
-    """Solve a group's equilibrium with the friction of its pairs (None: it has none).
-
-    The friction of the group's own pairs, internal and external, loads its links;
-    the known links' share of the external pairs' friction is passed to them with
-    their reactions.
-    """
+) -> Sizing | None:
+    """Return a group's system for its reactions' sizes (None: it has no friction)."""
     base = solver.equilibrium(bodies, loads)
     pairs = [p for p in base.pairs if p.friction > 0.0]
     if not pairs:
@@ -239,6 +254,27 @@ def solve_group(
         ]
         for p in pairs
     ]
+    return Sizing(pairs, inside, units, start, response)
+
+
+def solve_group(
+    solver: GroupSolver,
+    bodies: list[Motion],
+    loads: list[Wrench],
+    n: int,
+    rest: Still,
+) -> GroupFriction | None:
+    """Solve a group's equilibrium with the friction of its pairs (None: it has none).
+
+    The friction of the group's own pairs, internal and external, loads its links;
+    the known links' share of the external pairs' friction is passed to them with
+    their reactions.
+    """
+    system = sizing(solver, bodies, loads, n, rest)
+    if system is None:
+        return None
+    pairs, inside, units = system.pairs, system.inside, system.units
+    start, response = system.start, system.response
     first = np.stack([_norm(r) for r in start], axis=-1)
     scale = np.max(first, axis=-1) + 1e-300
     # Coulomb's law may hold twice: beside the solution that grows from the
@@ -306,3 +342,29 @@ def _along(pair: PairPlan, bodies: list[Motion], unit: Wrench) -> Leaf:
     assert pair.axis is not None
     ex, ey = direction(bodies[pair.first], pair.axis, 0)
     return dot((unit[0], unit[1]), (ex, ey))
+
+
+def newton_steps(
+    system: Sizing, bodies: list[Motion], found: Equilibrium, tolerance: float
+) -> int | None:
+    """Return how many Newton steps lead from the frictionless sizes to ``found``'s.
+
+    One position. The steps are :func:`solve_group`'s at full friction, each
+    sliding pair's normal force held on the side it has in ``found``, the
+    solution: the frictionless one's side is round-off at a dead centre (1.6e-14
+    N beside 1622 N), the machine's to choose, and on the wrong side the analysis
+    solved a second time. A step that moves no size by more than ``tolerance``
+    of the largest ends the count, a share well above round-off; steps to one
+    near it (the solve's :data:`assur._newton.TOLERANCE`) are as many as its
+    last bits allow. None where the steps do not settle on a solution that grows
+    from the frictionless one (the analysis raised the friction from zero there).
+    """
+    held = [_reaction(p, bodies, found, 1) if p.kind == "P" else None
+            for p in system.pairs]  # fmt: skip
+    signed, start, response = _signs(system.start, system.response, held)
+    first = np.stack([_norm(r) for r in system.start], axis=-1)
+    scale = np.max(first, axis=-1) + 1e-300
+    _, settled, growing, count = _sizes(
+        start, response, first.copy(), scale, 1.0, signed, tolerance=tolerance
+    )
+    return count if bool(settled[0] and growing[0]) else None

@@ -74,6 +74,7 @@ def _sizes(
     weight: float = 1.0,
     signed: tuple[bool, ...] = (),
     most: int = MAX_ITERATIONS,
+    tolerance: float = TOLERANCE,
 ) -> tuple[Any, Any, Any, int]:
     """Solve ``s = |R(s)|`` by Newton's method from ``sizes`` (changed in place).
 
@@ -81,8 +82,9 @@ def _sizes(
 
     Returns the sizes, where they settled, whether they grow from no friction (the
     determinant of the last step's Jacobian, at the solution to rounding, see
-    :func:`_growing`) and the number of steps. A step below :data:`TOLERANCE` of the
-    larger of ``scale`` and the sizes found settles.
+    :func:`_growing`) and the number of steps. A step below ``tolerance`` (a
+    share, :data:`TOLERANCE` by default) of the larger of ``scale`` and the sizes
+    found settles.
     """
     n = sizes.shape[0]
     settled = np.zeros(n, dtype=bool)
@@ -105,10 +107,10 @@ def _sizes(
         moved[~good & np.isfinite(sum(left))] = np.inf
         # the tolerance is relative to the frictionless reactions, or to the sizes
         # found where friction makes them far larger
-        done = moved <= TOLERANCE * scale[rows]
+        done = moved <= tolerance * scale[rows]
         if not done.all():
             big = functools.reduce(np.maximum, [np.abs(x) for x in here.T])
-            done |= moved <= TOLERANCE * big
+            done |= moved <= tolerance * big
         if done.any():
             settled[rows[done]] = True
             determinant[rows[done]] = det[done]
@@ -195,18 +197,20 @@ def _followed(
 
 
 def _signs(
-    start: list[Any], response: list[list[Any]]
+    start: list[Any], response: list[list[Any]], held: list[Any] | None = None
 ) -> tuple[tuple[bool, ...], list[Any], list[list[Any]]]:
     """Return which pairs' normal forces are held on their frictionless side.
 
     A sliding pair's reaction is its normal force ``N``, one component: with ``N``
     turned to the sign it has without friction, its size ``|N|`` is ``N`` itself
-    while the motion keeps it there. Returns the pairs so marked and the start
-    and responses so turned.
+    while the motion keeps it there. ``held``, if given, holds each pair's normal
+    force of the side to keep instead (None for a revolute pair). Returns the
+    pairs so marked and the start and responses so turned.
     """
     signed = tuple(a.shape[-1] == 1 for a in start)
+    held = start if held is None else held
     sides = [np.where(a[:, :1] < 0.0, -1.0, 1.0) if one else None
-             for a, one in zip(start, signed, strict=True)]  # fmt: skip
+             for a, one in zip(held, signed, strict=True)]  # fmt: skip
     turned_start = [
         a if side is None else side * a for a, side in zip(start, sides, strict=True)
     ]

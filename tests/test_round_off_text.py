@@ -15,6 +15,7 @@ import matplotlib
 import pytest
 
 import assur
+from assur.explain import explain
 from assur.plotting import polygons
 
 matplotlib.use("Agg")
@@ -70,3 +71,20 @@ def test_a_force_polygon_s_title_closes_alike(stem: str, angle: float) -> None:
         plt.close(fig)
     (found,) = titles
     assert all(": closes\n" in title for title in found)
+
+
+def _newton_words(mech: assur.Mechanism, angle: float) -> list[str]:
+    """Return the note's sentences on how Newton's method found the sizes."""
+    note = str(explain(mech, angle)).replace("\n", " ")
+    return re.findall(r"[^.]*Newton's method on them[^.]*\.", note)
+
+
+@pytest.mark.parametrize("angle", [0.0, 180.0])
+def test_newton_s_steps_at_a_dead_centre_are_counted_alike(angle: float) -> None:
+    # the slider at rest: its frictionless normal force is round-off (1.6e-14 N
+    # beside 1622 N), and on the side of its sign the analysis solved once or
+    # twice: "in 4 steps", or "in 2 steps"
+    path = EXAMPLES / "slider_crank_friction.toml"
+    said = {tuple(_newton_words(mech, at)) for mech, at in variants(path, angle)}
+    (words,) = said
+    assert re.search(r"finds the same in \d+ steps?\.", words[0]), words

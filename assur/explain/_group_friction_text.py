@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from assur._friction import solve_group, substituted
+from assur._friction import newton_steps, sizing, solve_group, substituted
 from assur._text import spoken
 from assur.explain._friction_text import (
     at_rest,
@@ -52,18 +52,24 @@ MOST_STEPS = 12
 
 def newton_start(
     pos: Position, rec: Equilibrium, solver: GroupSolver, loads: list[Wrench]
-) -> tuple[dict[str, float], int, bool]:
+) -> tuple[dict[str, float], int | None, bool]:
     """Return Newton's start (sizes, N), its steps, and whether it raised friction.
 
     Friction is raised from zero step by step where Newton from the frictionless
-    sizes does not settle. The start is :func:`frictionless`; the iteration is run
-    again from there, as the reverse pass ran it.
+    sizes does not settle, and the steps are then not counted (None). The start
+    is :func:`frictionless`; the steps are counted to the measure the hand
+    method's are, a step below :data:`SETTLED` of the largest size (see
+    :func:`assur._friction.newton_steps`): to the solve's own tolerance, near
+    round-off, their count is the machine's arithmetic's at a dead centre.
     """
     sizes = frictionless(pos, rec, solver, loads)
     found = solve_group(solver, pos.bodies, loads, 1, at_rest(pos))
-    if found is None:
+    system = sizing(solver, pos.bodies, loads, 1, at_rest(pos))
+    if found is None or system is None:
         return sizes, 0, False
-    return sizes, found.iterations, found.raised
+    if found.raised:
+        return sizes, None, True
+    return sizes, newton_steps(system, pos.bodies, rec, SETTLED), False
 
 
 def frictionless(
@@ -152,7 +158,7 @@ def group_friction_blocks(
     if settled:
         how = (
             "The sizes settle; Newton's method on them, which the analysis uses, "
-            f"finds the same in {_newton_steps(steps, raised)}."
+            f"finds the same{_spaced(_newton_steps(steps, raised))}."
         )
     else:
         rows.append(("found", *(f"${num(final[p.name])}$" for p in pairs)))
@@ -226,12 +232,24 @@ def substitution_caption(rec: Equilibrium) -> str:
     return f"Repeated substitution in group {plain(rec.label)}: the sizes at each step"
 
 
-def _newton_steps(steps: int, raised: bool = False) -> str:
-    """Return how many steps Newton's method took, and how, in words."""
+def _newton_steps(steps: int | None, raised: bool = False) -> str:
+    """Return how Newton's method found the sizes, in words ("in 3 steps").
+
+    Empty where its steps from the frictionless sizes, counted as the note counts
+    them (see :func:`newton_start`), do not settle and the analysis did not raise
+    the friction either: it found them on its second try.
+    """
     if raised:
         # from the frictionless sizes it did not settle: the friction was raised
-        return f"{steps} steps, the friction raised step by step"
-    return f"{steps} step{'s' if steps != 1 else ''}"
+        return "with the friction raised from zero step by step"
+    if steps is None:
+        return ""
+    return f"in {steps} step{'s' if steps != 1 else ''}"
+
+
+def _spaced(words: str) -> str:
+    """Return ``words`` after a space, or nothing for none."""
+    return f" {words}" if words else ""
 
 
 def steps_ratio(tried: list[dict[str, float]]) -> tuple[float, bool, list[float]]:
@@ -256,9 +274,10 @@ def _unsettled(tried: list[dict[str, float]], newton: str) -> str:
     locking; not steady, they jump about.
     """
     r, steady, moves = steps_ratio(tried)
+    how = f" ({newton})" if newton else ""
     found = (
-        f" The sizes found (last row) are those of Newton's method on them "
-        f"({newton}), which the analysis uses: of the solutions "
+        f" The sizes found (last row) are those of Newton's method on them{how}, "
+        "which the analysis uses: of the solutions "
         "Coulomb's law allows (with large friction it can allow two), the one reached "
         "from the frictionless solution as the friction is raised from zero."
     )
