@@ -88,3 +88,21 @@ def test_newton_s_steps_at_a_dead_centre_are_counted_alike(angle: float) -> None
     said = {tuple(_newton_words(mech, at)) for mech, at in variants(path, angle)}
     (words,) = said
     assert re.search(r"finds the same in \d+ steps?\.", words[0]), words
+
+
+@pytest.mark.parametrize(
+    ("stem", "angle"),
+    [("prp_tangent", 0.0), ("prp_tangent", 30.0), ("slot_in_crank", 330.0)],
+)
+def test_a_slot_s_note_reads_alike(stem: str, angle: float) -> None:
+    # a slot's pin carries no couple, "-M_slot = -8.882e-16 N m" or none by
+    # machine; the sum of moments about the pin, [0 . 18.78 - 0 . 0] =
+    # 5.214e-16 or 0; two slide lines' offset w = (9.714e-17, -1.804e-16) m or
+    # (0, 0): round-off, told as round-off
+    notes = {
+        str(explain(m, at)).split("\n", 1)[1]
+        for m, at in variants(DATA / "explain" / f"{stem}.toml", angle)
+    }
+    (note,) = notes
+    assert r"-M_{\mathrm{slot}} = " not in note  # the pin's couple, 0, not written
+    assert r"M_{\mathrm{slot}} = -\sum M_{\mathrm{slot}} = 0\ " in note

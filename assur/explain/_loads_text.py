@@ -245,6 +245,11 @@ def link_loads(
         force = sign * at(r.fx, r.fy)
         couple = sign * value(r.couple) if pair.kind == "P" else 0.0
         p = pos.pair_point(pair)
+        # a slot's pin carries none: the solve leaves round-off (8.9e-16 N m beside
+        # 18.78 N at 0.23 m), of the machine's sign and digits
+        arm = max(pos.size(), *map(abs, p))
+        if abs(couple) <= ROUND_OFF * arm * float(np.hypot(*force)):
+            couple = 0.0
         label = f"\\vec F_{{{name(pos.link(other))},{name(pos.link(body))}}}"
         if pair.kind == "P" and pair.friction > 0.0:
             # the friction force along the slide is listed apart: the normal part
@@ -315,7 +320,10 @@ def moment_line(loads: list[Load], about: Array, label: str) -> tuple[str, float
     for x in loads:
         m = moment(x, about)
         total_moment += m
-        scale = max(scale, math.hypot(*(x.point - about)) * math.hypot(*x.force))
+        # the arm's round-off is its points' (a force at the point summed about,
+        # 1e-17 m off it): an arm no shorter than they are far from the origin
+        arm = max(math.hypot(*(x.point - about)), *map(abs, x.point), *map(abs, about))
+        scale = max(scale, arm * math.hypot(*x.force))
         scale = max(scale, abs(x.couple))
         pieces = []
         if math.hypot(*x.force) > 0:

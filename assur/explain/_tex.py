@@ -145,14 +145,21 @@ def vec(v: Any, scale: float | None = None) -> str:
     r"""Return a vector's components in parentheses.
 
     A small component is written as its neighbour is, with a power of ten, where
-    that one has one: one form within a vector.
+    that one has one: one form within a vector. A component is told from
+    round-off by ``scale``; by default by the larger of its neighbour and the
+    note's :data:`FLOOR`, as :func:`num` tells a number: a difference of two
+    points that coincide, (9.7e-17, -1.8e-16) m, is (0, 0), not round-off's
+    digits as its own scale.
 
     Examples
     --------
     >>> vec((0.0001456, 6.575e-5)), vec((0.2665, 3e-5))
     ('(1.456 \\cdot 10^{-4},\\ 6.575 \\cdot 10^{-5})', '(0.2665,\\ 3 \\cdot 10^{-5})')
+    >>> vec((9.714e-17, -1.804e-16)), vec((9.714e-17, -1.804e-16), 1e-16)
+    ('(0,\\ 0)', '(9.714 \\cdot 10^{-17},\\ -1.804 \\cdot 10^{-16})')
     """
-    ref = max(abs(float(v[0])), abs(float(v[1]))) if scale is None else scale
+    own = max(abs(float(v[0])), abs(float(v[1])))
+    ref = max(own, FLOOR.get()) if scale is None else scale
     texts = [num(v[0], ref), num(v[1], ref)]
     if any("\\cdot" in s for s in texts):
         texts = [
