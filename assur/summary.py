@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from assur._efficiency import efficiency
-from assur._running import Running, lasts, per_variant, settled_mean, sums
+from assur._running import Running, lasts, peaks, per_variant, settled_mean, sums
 from assur._summary_rows import rows_of
 from assur._timing import Clock
 from assur._undefined import undefined
@@ -120,17 +120,22 @@ class Summary:
         self.landed |= rows.landed
         self.one_sided = self.one_sided or rows.one_sided
         where, w, last = rows.where, rows.weights, rows.last
+        forces = {name: rows.column(f"{name}.F") for name in self._joints}
+        # where a force or moment ties, its round-off is the reactions' (see
+        # Running.add): the slice's largest, per variant
+        big = np.fmax.reduce([peaks(f) for f in forces.values()], initial=0.0)
         for name, running in self._joints.items():
-            running.add(rows.column(f"{name}.F"), where, w, last)
+            running.add(forces[name], where, w, last, big)
         for name, running in self._couples.items():
-            running.add(rows.size(f"{name}.M"), where, w, last)
+            running.add(rows.size(f"{name}.M"), where, w, last, big * self._size)
         for name, running in self._drivers.items():
             running.add(rows.column(name), where, w, last)
         if "F" in self._shaking:
             shaking = rows.size("shaking.Fx", "shaking.Fy")
-            self._shaking["F"].add(shaking, where, w, last)
+            self._shaking["F"].add(shaking, where, w, last, big)
         if "M" in self._shaking:
-            self._shaking["M"].add(rows.size("shaking.M"), where, w, last)
+            moment = rows.size("shaking.M")
+            self._shaking["M"].add(moment, where, w, last, big * self._size)
         ones = np.ones(where.shape)
         tail: dict[str, Any] = {
             "power": 0.0,
