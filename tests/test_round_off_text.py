@@ -119,3 +119,21 @@ def test_a_small_couple_s_largest_is_found_alike() -> None:
         summary = assur.forces(mech, angles).summary()
         found.add((summary["slot.M.at"], summary["slot.F.at"]))
     assert len(found) == 1, found
+
+
+@pytest.mark.parametrize(("stem", "angle"), [("fourbar", 0.0), ("shaper", 180.0)])
+def test_the_lever_s_terms_round_alike(stem: str, angle: float) -> None:
+    # a share at a decimal tie, 0.009375 N m (written to five decimals), or the
+    # block's weight's 0.04905: "+0.00937" or "+0.00938" by the last bit
+    import matplotlib.pyplot as plt
+
+    from assur.plotting import lever
+
+    found = set()
+    for mech, at in variants(DATA / "plans" / f"{stem}.toml", angle):
+        ax = lever.zhukovsky_lever(assur.forces(mech, [at]))
+        found.add(tuple(t.get_text() for t in ax.texts if "/ ω" in t.get_text()))
+        plt.close(ax.figure)
+    assert len(found) == 1, found
+    ((terms,),) = found
+    assert "sum = balancing load:" in terms

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._digits import settled
 from assur._text import describe
 from assur._vec import integer
 from assur.errors import UsageError
@@ -376,15 +377,16 @@ def _list_terms(
             ratio = t.omega / speed
             # a link at rest in its turning (a rocker at its dead centre) has a
             # speed of round-off: 2.7e-16 of the driver's is 0
-            ratio = 0.0 if abs(ratio) < 1e-12 else ratio
+            ratio = 0.0 if abs(ratio) < 1e-12 else settled(ratio)
             couple = quantity(t.load.couple, "N·m", 6)
             head += f" ({couple}, $\\omega_L$/{rate} = {ratio:.6g}"
             head += ")" if apart[t.body] else "; listed only)"
         # a share that rounds to nothing is written 0 (a dead centre's round-off),
-        # not +0.000 or -0.000
-        rounded = round(share, places + 1) + 0.0
+        # not +0.000 or -0.000; a decimal tie (0.009375 N m) rounds alike on
+        # every machine, read first to 12 digits
+        rounded = round(settled(share), places + 1) + 0.0
         lines.append(f"{head}:  {f'{rounded:+.{places + 1}f}' if rounded else '0'}")
-    total = round(balancing, places) + 0.0
+    total = round(settled(balancing), places) + 0.0
     lines.append(
         f"sum = balancing load: {f'{total:.{places}f}' if total else '0'} {unit}"
     )
