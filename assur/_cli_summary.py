@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._digits import ROUND_OFF, by_unit
+from assur._digits import cleaned
 from assur._sliced import Slice
 from assur._stdout import as_written
 from assur._text import counted, number_text
@@ -178,19 +178,6 @@ def _blocks(widths: list[int], width: int | None) -> list[list[int]]:
     return blocks
 
 
-def _cleaned(units: list[str], columns: list[Array]) -> list[Array]:
-    """Return ``columns`` with their round-off set to +0, as the HTML report does.
-
-    Round-off is below :data:`~assur._digits.ROUND_OFF` of the largest magnitude of
-    its unit in the table.
-    """
-    scales = by_unit(units, columns)
-    return [
-        np.where(np.abs(values) < ROUND_OFF * scale, 0.0, values)
-        for values, scale in zip(columns, scales, strict=True)
-    ]
-
-
 def format_table(
     names: list[str],
     units: list[str],
@@ -211,7 +198,7 @@ def format_table(
     cells = (
         [
             [number_text(v) for v in values]
-            for values in zip(*_cleaned(units, columns), strict=True)
+            for values in zip(*cleaned(units, columns), strict=True)
         ]
         if columns
         else []

@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["ROUND_OFF", "by_unit", "largest", "settled"]
+__all__ = ["ROUND_OFF", "by_unit", "cleaned", "largest", "settled"]
 
 ROUND_OFF = 1e-9
 """A value below this fraction of the largest of its unit in the same table is
@@ -56,3 +56,17 @@ def by_unit(units: list[str], values: list[Any]) -> list[float]:
     for unit, value in zip(units, values, strict=True):
         most[unit] = max(most.get(unit, 0.0), largest(value))
     return [most[unit] for unit in units]
+
+
+def cleaned(units: list[str], columns: list[Any]) -> list[Any]:
+    """Return ``columns`` with their round-off set to +0, as the HTML report does.
+
+    Round-off is below :data:`ROUND_OFF` of the largest magnitude of its unit among
+    the ``columns`` (what the command line's readable table and a notebook's
+    display show alike).
+    """
+    scales = by_unit(units, columns)
+    return [
+        np.where(np.abs(values) < ROUND_OFF * scale, 0.0, values)
+        for values, scale in zip(columns, scales, strict=True)
+    ]
