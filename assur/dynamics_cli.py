@@ -41,11 +41,11 @@ from assur._dynamics_figures import (
     _head,
     _header,
     _startup_data,
-    _startup_lines,
     startup_csv,
 )
 from assur._dynamics_files import SLICE, stream, write_files
 from assur._dynamics_options import _check_options
+from assur._dynamics_text import startup_lines
 from assur._output import (
     StdoutError,
     stdout_writer,
@@ -173,7 +173,7 @@ def _cmd_dynamics(args: argparse.Namespace) -> int:
             document = {"name": mech.name, "startup": _startup_data(run)}
             write_stdout(json.dumps(document) + "\n")
         else:
-            write_stdout(_header(mech, _startup_lines(run)) + "\n")
+            write_stdout(_header(mech, startup_lines(run)) + "\n")
         return 0
     rows = _Rows(mech, state, angles, args.forces)
     rows.check()

@@ -749,7 +749,7 @@ def test_a_constant_speed_turning_clockwise_is_its_size(capsys, tmp_path):
 
 
 def test_a_periodic_delta_is_none_only_below_ten_times_the_tolerance():
-    from assur._dynamics_figures import _run_delta
+    from assur._dynamics_text import _run_delta
     from assur._startup_turns import PERIODIC_RTOL
 
     assert _run_delta(5.0 * PERIODIC_RTOL).endswith(

@@ -154,6 +154,8 @@ RANKS = {
     "assur._startup_turns": 10,
     "assur._startup_settle": 10,
     "assur.dynamics_shown": 10,
+    # the figures of the dynamic model and of a start-up, as lines: below the model
+    "assur._dynamics_text": 10,
     "assur.html": 10,
     # the explanatory note reads the analysis like the pictures do
     "assur.explain": 10,

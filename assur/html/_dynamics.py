@@ -13,16 +13,11 @@ from typing import Any
 
 import numpy as np
 
+from assur._dynamics_text import motor_note, motor_shown
 from assur._text import crank_angle_text
 from assur.analysis import Table
 from assur.columns import pretty_unit
-from assur.dynamics_shown import (
-    SHOWN_DELTA,
-    has_dynamics,
-    motor_note,
-    motor_shown,
-    shown,
-)
+from assur.dynamics_shown import SHOWN_DELTA, has_dynamics, shown
 from assur.errors import AssurError
 from assur.html._data import floats
 from assur.html._sections import caption, number, wide_card

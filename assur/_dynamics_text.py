@@ -1,0 +1,195 @@
+"""The figures of the dynamic model and of a start-up, as labelled lines of text.
+
+The figures ``assur dynamics`` prints (:mod:`assur._dynamics_figures` aligns them),
+and the motor torque as the HTML report's figures print it too. Below the dynamic
+model (no import of it): its result's methods may import this module.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from assur._startup_turns import PERIODIC_RTOL
+from assur._text import crank_angle_text, number_text, spoken
+
+__all__ = [
+    "figure_lines",
+    "motor_note",
+    "motor_shown",
+    "startup_lines",
+]
+
+
+def motor_shown(result: Any) -> float:
+    """Return the motor torque to print (N m): 0 where it is the mean's round-off.
+
+    Loads that do no net work (gravity alone) leave a mean of a few ulps of their
+    torques: a turn's work that is not 10^-12 of the energy swing is none.
+    """
+    if abs(result.motor) * 2.0 * math.pi <= 1e-12 * result.energy_swing:
+        return 0.0
+    return float(result.motor)
+
+
+def motor_note(motor: float, result: Any, unit: str = "N m") -> str:
+    """Return what the motor torque's sign means, beside "constant".
+
+    ``unit`` is the torque's unit as the text around it writes it.
+    """
+    note = "constant"
+    if result.omega < 0:
+        # torques are counter-clockwise positive: a clockwise crank's motor
+        # drives it with a negative torque
+        note += ", counter-clockwise positive"
+    if motor * result.omega < 0:
+        note += "; it brakes: the loads drive the crank"
+    found = result.mechanism.motor
+    if found is not None and found.no_load_speed is not None:
+        # the steady state is the contract's: a constant torque at the nominal
+        # speed; the file's motor, whose torque falls with speed, runs the start-up
+        w = abs(result.omega)
+        note += (
+            f"; it balances the loads' work over a turn at the nominal {w:.6g} "
+            f"rad/s; the file's [motor], {number_text(found.at(result.omega))} "
+            f"{unit} at that speed, drives the start-up alone"
+        )
+    return note
+
+
+def figure_lines(
+    result: Any, sizing: Any = None, run: Any = None
+) -> list[tuple[str, str]]:
+    """Return the figures of the steady state (and start-up), as (label, value) lines.
+
+    What ``assur dynamics`` prints (aligned) and a notebook shows (a table).
+    ``sizing`` is a flywheel's sizing (``assur dynamics --delta``), ``run`` a
+    start-up; a line with an empty label goes on from the one above.
+    """
+    # plain ASCII, as the tables' units rows and the options' messages write units
+    kgm2 = "kg m^2"
+    turning = " (clockwise)" if result.omega < 0 else ""
+    motor = motor_shown(result)
+    lines: list[tuple[str, str]] = [
+        ("nominal crank speed", f"{result.omega:.6g} rad/s{turning}"),
+        ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
+        ("motor torque", f"{number_text(motor)} N m ({motor_note(motor, result)})"),
+        ("coefficient of speed fluctuation", f"delta = {_delta(result.delta)}"),
+        (
+            "largest speed",
+            f"{result.speed_max:.6g} rad/s at {crank_angle_text(result.angle_max)}",
+        ),
+        (
+            "smallest speed",
+            f"{result.speed_min:.6g} rad/s at {crank_angle_text(result.angle_min)}",
+        ),
+        ("energy swing", f"{result.energy_swing:.6g} J"),
+        ("kinetic energy at the reference pose", f"{result.energy:.6g} J"),
+        (
+            "internal grid",
+            f"{result.grid} positions a turn (the work's relative error "
+            f"{result.tolerance:.1g})",
+        ),
+    ]
+    if not result.speed_max > result.speed_min:
+        # nothing varies over the turn: no place of the largest or smallest speed
+        lines[4:6] = [("crank speed", f"constant, {abs(result.omega):.6g} rad/s")]
+    if sizing is not None:
+        gaps = {k: f"{100 * v:+.3g} %" for k, v in sizing.differences().items()}
+        lines[1] = (
+            "flywheel",
+            f"{sizing.exact:.6g} {kgm2} (exact, for delta = {_delta(sizing.delta)})",
+        )
+        # the classical estimates drop terms of the order of the mechanism's own
+        # fluctuation: close to it they fail, even below zero
+        names = {
+            "wittenbauer": "Wittenbauer",
+            "mertsalov": "Mertsalov",
+            "energy_swing": "energy swing",
+        }
+        good = [
+            f"{label} {getattr(sizing, k):.6g} ({gaps[k]})"
+            for k, label in names.items()
+            if getattr(sizing, k) >= 0
+        ]
+        failed = [label for k, label in names.items() if not getattr(sizing, k) >= 0]
+        if failed:
+            good.append(
+                f"{spoken(failed)} none (below zero this close to the "
+                "mechanism's own delta)"
+            )
+        lines.insert(2, ("classical estimates", ", ".join(good)))
+    if run is not None:
+        lines += startup_lines(run, result)
+    return lines
+
+
+def startup_lines(run: Any, result: Any = None) -> list[tuple[str, str]]:
+    """Return the figures of a start-up, as (label, value) lines.
+
+    A periodic motion whose mean speed is not the steady state's nominal one (a
+    motor whose torque falls with speed) is set against it.
+    """
+    # the crank's turns until it settles, not those integrated to tell it has
+    turned = abs(float(np.interp(run.settle_time, run.time, run.angle)) - run.angle[0])
+    middle = 0.5 * (run.speed_max + run.speed_min)
+    lines = [
+        (
+            "start-up",
+            f"settles in {run.settle_time:.6g} s ({turned / 360.0:.3g} turns; "
+            f"{run.turns} turns integrated)",
+        ),
+        (
+            "periodic motion",
+            # magnitudes, as the steady state's extremes are
+            f"speed {run.speed_min:.6g} to {run.speed_max:.6g} rad/s, time-mean "
+            f"{abs(run.mean_speed):.6g} rad/s (2 pi / period {run.period:.6g} s)"
+            + (", clockwise" if run.mean_speed < 0 else ""),
+        ),
+        (
+            "",
+            # the steady state's definition: over the mean of the extreme speeds
+            f"delta = {_run_delta(run.delta)} (max - min over w_m = (max + min) / 2 "
+            f"= {middle:.6g} rad/s)",
+        ),
+    ]
+    if result is None:  # the start-up alone: no steady state to set it against
+        return lines
+    gap = abs(run.mean_speed) / abs(result.omega) - 1.0
+    if abs(gap) > 0.005:
+        lines.append(
+            (
+                "",
+                f"the time-mean speed is {100.0 * gap:+.3g} % from the nominal "
+                f"{abs(result.omega):.6g} rad/s, at which the steady state above "
+                "and its delta hold",
+            )
+        )
+    return lines
+
+
+def _run_delta(value: float) -> str:
+    """Return a periodic motion's delta: none where the integration cannot tell it.
+
+    The periodic speed is found to ``PERIODIC_RTOL`` of itself: a fluctuation below
+    ten times that is the integration's, not the machine's.
+    """
+    if value < 10.0 * PERIODIC_RTOL:
+        return f"{value:.2g}, none within the periodic speed's tolerance"
+    return _delta(value)
+
+
+def _delta(value: float) -> str:
+    """Return a coefficient of speed fluctuation with 6 significant digits.
+
+    More where those round it up to 2, the crank at rest, which no steady motion
+    reaches and ``--delta`` refuses: ``--delta 1.999999`` was told "delta = 2".
+    """
+    text = f"{value:.6g}"
+    digits = 6
+    while float(text) >= 2.0 > value and digits < 17:
+        digits += 1
+        text = f"{value:.{digits}g}"
+    return text
