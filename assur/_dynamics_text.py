@@ -1,8 +1,9 @@
 """The figures of the dynamic model and of a start-up, as labelled lines of text.
 
-The figures ``assur dynamics`` prints (:mod:`assur._dynamics_figures` aligns them),
+The figures ``assur dynamics`` prints (:mod:`assur._dynamics_figures` aligns them)
+and a notebook shows as a table (``Dynamics._repr_html_``, ``Startup._repr_html_``),
 and the motor torque as the HTML report's figures print it too. Below the dynamic
-model (no import of it): its result's methods may import this module.
+model (no import of it): its result's methods import this module.
 """
 
 from __future__ import annotations
@@ -16,9 +17,11 @@ from assur._startup_turns import PERIODIC_RTOL
 from assur._text import crank_angle_text, number_text, spoken
 
 __all__ = [
+    "dynamics_html",
     "figure_lines",
     "motor_note",
     "motor_shown",
+    "startup_html",
     "startup_lines",
 ]
 
@@ -193,3 +196,20 @@ def _delta(value: float) -> str:
         digits += 1
         text = f"{value:.{digits}g}"
     return text
+
+
+def dynamics_html(result: Any) -> str:
+    """Return the steady state's figures as a notebook shows them (HTML)."""
+    from assur._display import figures_html
+
+    name = result.mechanism.name or "Mechanism"
+    caption = f"{name}: dynamic model reduced to the crank"
+    return figures_html(caption, figure_lines(result))
+
+
+def startup_html(run: Any) -> str:
+    """Return a start-up's figures as a notebook shows them (HTML)."""
+    from assur._display import figures_html
+
+    name = run.mechanism.name or "Mechanism"
+    return figures_html(f"{name}: start-up of the crank", startup_lines(run))

@@ -129,6 +129,12 @@ class Structure:
 
         return structure_report(self)
 
+    def _repr_html_(self) -> str:
+        """Return the structure as a notebook shows it: W, formula, groups (HTML)."""
+        from assur._structure_display import structure_html
+
+        return structure_html(self)
+
 
 def mobility(mechanism: Mechanism) -> int:
     """Return the degrees of freedom by the Chebyshev-Gruebler formula.

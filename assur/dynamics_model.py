@@ -161,6 +161,13 @@ class Dynamics(Columns):
         """Crank angles left out: none, every angle has its steady motion (deg)."""
         return NONE_SKIPPED
 
+    def _repr_html_(self) -> str:
+        """Return the result as a notebook shows it: its figures, some rows (HTML)."""
+        from assur._dynamics_text import dynamics_html
+        from assur._table_display import table_html
+
+        return dynamics_html(self) + table_html(self, "dynamic model")
+
     def to_dict(self) -> dict[str, Any]:
         """Return JSON-ready data: name, the steady state's figures, columns, rows."""
         data = super().to_dict()

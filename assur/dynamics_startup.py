@@ -105,6 +105,12 @@ class Startup:
             2.0 * (self.speed_max - self.speed_min) / (self.speed_max + self.speed_min)
         )
 
+    def _repr_html_(self) -> str:
+        """Return the start-up as a notebook shows it: its figures (HTML)."""
+        from assur._dynamics_text import startup_html
+
+        return startup_html(self)
+
     def plot(self, **kwargs: Any) -> Any:
         """Draw the speed against time (see :func:`assur.plotting.plot_startup`)."""
         from assur.plotting import plot_startup

@@ -14,7 +14,7 @@ from assur._text import counted, public_name, roman, spelt, spoken
 if TYPE_CHECKING:
     from assur._structure import Group, Structure
 
-__all__ = ["structure_report"]
+__all__ = ["freedom_lines", "structure_report"]
 
 
 def _names(items: tuple[str, ...]) -> str:
@@ -134,18 +134,21 @@ def _class_reason(s: Structure) -> str:
     return f"the frame and {inputs} alone, no Assur group"
 
 
+def freedom_lines(s: Structure) -> list[str]:
+    """Return the degrees of freedom counted, and what was counted (two lines)."""
+    n, p5, p4 = s.links, s.lower_pairs, s.higher_pairs
+    return [
+        f"Degrees of freedom (Chebyshev-Gruebler): W = 3n - 2p5 - p4 = 3*{n} - "
+        f"2*{p5} - {p4} = {s.dof}",
+        f"  n = {counted(n, 'moving link')}, p5 = {counted(p5, 'lower pair')}, p4 = "
+        f"{counted(p4, 'higher pair')}; {counted(len(s.drivers), 'driver')}.",
+    ]
+
+
 def structure_report(s: Structure) -> str:
     """Return the teaching report of a structural analysis."""
-    n, p5, p4 = s.links, s.lower_pairs, s.higher_pairs
     lines = [f"Structure of {s.name or 'the mechanism'}", ""]
-    lines.append(
-        f"Degrees of freedom (Chebyshev-Gruebler): W = 3n - 2p5 - p4 = 3*{n} - "
-        f"2*{p5} - {p4} = {s.dof}"
-    )
-    lines.append(
-        f"  n = {counted(n, 'moving link')}, p5 = {counted(p5, 'lower pair')}, p4 = "
-        f"{counted(p4, 'higher pair')}; {counted(len(s.drivers), 'driver')}."
-    )
+    lines += freedom_lines(s)
     for slot in s.slots:
         lines.append(
             f"  Slot {slot} (a pin in a slot, a higher pair) is replaced by an "

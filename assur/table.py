@@ -274,6 +274,13 @@ class Table(Columns):
         size = f"{rows} x {len(self.columns)} columns"
         return f"<assur.Table: {kind} of {name!r}, {size}>"
 
+    def _repr_html_(self) -> str:
+        """Return the table as a notebook shows it: some rows and columns (HTML)."""
+        from assur._table_display import table_html
+
+        kind = "forces" if self.force_state is not None else "kinematics"
+        return table_html(self, kind)
+
     def __len__(self) -> int:
         return int(self.given.shape[0])
 

@@ -29,6 +29,9 @@ RANKS = {
     "assur._width": 0,
     "assur._position_titles": 0,
     "assur._digits": 0,
+    # the results' rich display in a notebook: HTML pieces, a table's rows shown
+    "assur._display": 0,
+    "assur._table_display": 8,
     "assur._decimal_comma": 0,
     "assur._fonts": 0,
     "assur._optional": 0,
@@ -58,6 +61,8 @@ RANKS = {
     "assur._group": 2,
     "assur._structure": 2,
     "assur.report": 2,
+    # a structure as a notebook shows it: the report's counts, the groups' table
+    "assur._structure_display": 2,
     "assur.groups": 3,
     "assur._metres": 3,
     "assur.plan": 4,

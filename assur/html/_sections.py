@@ -15,11 +15,11 @@ import numpy as np
 from assur._digits import ROUND_OFF, by_unit, settled
 from assur._position_titles import row_position
 from assur._structure import Structure
+from assur._structure_display import group_cells
 from assur._text import roman
 from assur._troubles import skipped_why
 from assur.analysis import Table
 from assur.columns import pretty_unit
-from assur.html._data import all_groups, public
 from assur.html._series import table_columns
 from assur.plan import Plan
 
@@ -125,19 +125,8 @@ def legend_html(data: dict[str, Any]) -> str:
 def structure_html(struct: Structure, data: dict[str, Any]) -> str:
     """Return the structure section: formula, table of groups and teaching report."""
     rows = []
-    for step, (g, info) in enumerate(
-        zip(all_groups(struct), data["groups"], strict=True), 1
-    ):
-        kind = "input link" if g.group_class == 1 else g.kind
-        cells = [
-            str(step),
-            info["roman"],
-            str(g.order),
-            kind,
-            ", ".join(info["links"]),
-            ", ".join(public(x) for x in g.internal),
-            ", ".join(public(x) for x in g.external),
-        ]
+    # the cells a notebook's display shows too (one spelling of the groups)
+    for cells, info in zip(group_cells(struct), data["groups"], strict=True):
         swatch = f'<span class="swatch" style="background:{info["colour"]}"></span>'
         # the step names the group's row, its colour before it
         rows.append(
