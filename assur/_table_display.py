@@ -71,7 +71,7 @@ def table_html(table: Any, kind: str) -> str:
     Parameters
     ----------
     table : Table
-        A table of results (:class:`assur.Table`, or the dynamic model's).
+        A table of results (:class:`~assur.analysis.Table`, or the dynamic model's).
     kind : str
         What it holds, in the caption: ``"forces"``, ``"kinematics"``, ...
     """
