@@ -58,14 +58,18 @@ def by_unit(units: list[str], values: list[Any]) -> list[float]:
     return [most[unit] for unit in units]
 
 
-def cleaned(units: list[str], columns: list[Any]) -> list[Any]:
+def cleaned(
+    units: list[str], columns: list[Any], scales: list[float] | None = None
+) -> list[Any]:
     """Return ``columns`` with their round-off set to +0, as the HTML report does.
 
     Round-off is below :data:`ROUND_OFF` of the largest magnitude of its unit among
     the ``columns`` (what the command line's readable table and a notebook's
-    display show alike).
+    display show alike), or among the whole columns ``columns`` were cut from:
+    their ``scales`` (:func:`by_unit`).
     """
-    scales = by_unit(units, columns)
+    if scales is None:
+        scales = by_unit(units, columns)
     return [
         np.where(np.abs(values) < ROUND_OFF * scale, 0.0, values)
         for values, scale in zip(columns, scales, strict=True)

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._digits import cleaned
+from assur._digits import by_unit, cleaned
 from assur._display import STYLE, note_html
 from assur._text import counted, number_text
 from assur._vec import Array
@@ -82,9 +82,11 @@ def table_html(table: Any, kind: str) -> str:
     picked = [names[i] for i in (*left, *right)]
     units = [table.column(name).unit for name in picked]
     at = np.array([*top, *bottom], dtype=np.intp)
-    # round-off against the largest value of its unit among those shown, as the
-    # command line's readable table tells it among its rows
-    values = cleaned(units, [column[at] for column in read(table, picked)])
+    # round-off against the largest value of its unit in the whole columns, as the
+    # command line's readable table tells it among all its rows
+    columns = read(table, picked)
+    scales = by_unit(units, columns)
+    values = cleaned(units, [column[at] for column in columns], scales)
     texts = [[number_text(v) for v in column.tolist()] for column in values]
     gap = len(left) if right else None  # where the column of "…" goes
 
