@@ -268,7 +268,7 @@ class Table(Columns):
 
     def __repr__(self) -> str:
         # the dataclass's repr spelt out every state array (20 000 characters)
-        kind = "forces" if self.force_state is not None else "kinematics"
+        kind = "forces" if self._forces else "kinematics"
         name = self.plan.mechanism.name or "mechanism"
         rows = "1 row" if len(self) == 1 else f"{len(self)} rows"
         size = f"{rows} x {len(self.columns)} columns"
@@ -278,8 +278,14 @@ class Table(Columns):
         """Return the table as a notebook shows it: some rows and columns (HTML)."""
         from assur._table_display import table_html
 
-        kind = "forces" if self.force_state is not None else "kinematics"
-        return table_html(self, kind)
+        return table_html(self, "forces" if self._forces else "kinematics")
+
+    @property
+    def _forces(self) -> bool:
+        """Whether the table has a force state, told without solving one again."""
+        if self._again is not None:  # what force_state would be solved with
+            return bool(self._again.with_forces)
+        return self._kept_forces is not None
 
     def __len__(self) -> int:
         return int(self.given.shape[0])

@@ -175,6 +175,17 @@ def test_a_narrow_table_shows_every_column():
     assert "small" not in page.blocks  # no column left out
 
 
+def test_a_table_of_few_columns_is_shown_without_solving_it_again():
+    mech = assur.load(DATA / "slider_crank_exercise.toml")
+    t = assur.forces(mech, np.linspace(0.0, 360.0, 3000), columns=["driver.torque"])
+    page = Page(t._repr_html_())
+    assert page.captions[0].startswith("forces of ")
+    assert repr(t).startswith("<assur.Table: forces of ")
+    # the links' motions and reactions it did not keep are not solved to say so
+    assert t._whole == []
+    assert t.force_state is not None  # as the caption says
+
+
 def test_names_are_escaped():
     mech = hostile_mechanism()
     t = assur.forces(mech, [0.0, 90.0])
