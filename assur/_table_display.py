@@ -91,10 +91,13 @@ def table_html(table: Any, kind: str) -> str:
     gap = len(left) if right else None  # where the column of "…" goes
 
     def line(cells: list[str], head: str, tag: str) -> str:
-        cells = [f"<{tag}>{escape(c)}</{tag}>" for c in cells]
+        # a screen reader names each value by its column and its row's number
+        col, row = '<th scope="col">', '<th scope="row">'
+        opening, first = (col, "<th>") if tag == "th" else ("<td>", row)
+        cells = [f"{opening}{escape(c)}</{tag}>" for c in cells]
         if gap is not None:
-            cells.insert(gap, f"<{tag}>{MORE}</{tag}>")
-        return f"<tr><th>{escape(head)}</th>{''.join(cells)}</tr>"
+            cells.insert(gap, f"{opening}{MORE}</{tag}>")
+        return f"<tr>{first}{escape(head)}</th>{''.join(cells)}</tr>"
 
     heads = [line(picked, "", "th")]
     heads.append(line([pretty_unit(u) for u in units], "", "th"))

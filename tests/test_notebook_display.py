@@ -250,3 +250,14 @@ def test_import_assur_loads_no_display_module():
         [sys.executable, "-c", code], capture_output=True, text=True, check=True
     )
     assert out.stdout.strip() == "[]"
+
+
+def test_a_table_s_cells_are_named_by_their_column_and_row_for_a_screen_reader():
+    t = assur.forces(assur.catalog.slider_crank(), np.arange(0.0, 360.0, 10.0))
+    head, body = t._repr_html_().split("<tbody>")
+    # two rows of headings (names, units), each after a corner cell: every other
+    # heading, the column of "..." too, heads its column
+    assert head.count("<tr>") == 2 == head.count("<th>")
+    assert head.count('<th scope="col">') == head.count("</th>") - 2 > 20
+    # each row is named by its number (or "..." where rows are left out)
+    assert body.count('<th scope="row">') == body.count("<tr>") == 11
