@@ -9,7 +9,7 @@ residuals need the links' motions rebuilt: those are computed slice by slice
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from assur.kinetostatics import ForceState
     from assur.table import Table
 
-__all__ = ["evaluate", "materialize"]
+__all__ = ["evaluate", "grouped", "materialize"]
 
 TRANSLATION = 1e-12
 """A link whose angular speed times the mechanism's size is below this fraction of
@@ -74,16 +74,26 @@ def materialize(table: Table, columns: Iterable[Column]) -> dict[str, Array]:
 
     Returns every column asked for, and those computed along with them.
     """
-    out: dict[str, Array] = {}
-    chunked: list[Column] = []
     families: dict[str, list[Column]] = {}
     for column in columns:
         families.setdefault(column.family, []).append(column)
+    return grouped(table, families)
+
+
+def grouped(table: Table, families: Mapping[str, Sequence[Column]]) -> dict[str, Array]:
+    """Compute the columns of ``families`` (columns by family), as :func:`materialize`.
+
+    A table's own grouping (``Table._families``) serves every column at once with no
+    pass over the columns.
+    """
+    out: dict[str, Array] = {}
+    chunked: list[Column] = []
     for family in CHUNKED:
-        chunked += families.pop(family, ())
+        chunked += families.get(family, ())
     # a family's columns at once: those of several links or joints share each step
     for family, members in families.items():
-        out.update(SIMPLE[family](table, members))
+        if family not in CHUNKED:
+            out.update(SIMPLE[family](table, list(members)))
     if chunked:
         out.update(_chunked(table, chunked, out))
     return out

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._evaluate import CHUNKED, SHORT, evaluate, materialize
+from assur._evaluate import CHUNKED, SHORT, evaluate, grouped, materialize
 from assur._exports import Columns
 from assur._kinematics import KinematicState
 from assur._loads import compile_loads
@@ -299,7 +299,11 @@ class Table(Columns):
         One pass serves them all: cheaper than reading each by name.
         """
         cache = self._cache
-        if len(cache) < len(self._index):
+        if not cache:
+            # the table's own grouping by family: no pass over its columns
+            with np.errstate(all="ignore"):  # as in __getitem__
+                self._store(grouped(self, self._families))
+        elif len(cache) < len(self._index):
             self._compute(c for c in self.schema if c.name not in cache)
         return [cache[name] for name in self._index]
 
@@ -311,32 +315,36 @@ class Table(Columns):
     def _store(self, found: dict[str, Array]) -> None:
         """Keep the columns ``found`` together, read-only for good.
 
-        The arrays that own their memory (a block of columns computed together) are
-        made read-only first, once each: a view's flag could else be set back. A
-        column that owns its memory (a state's array) is kept as a read-only view,
+        Every array that owns the memory of one of ``found`` (a block of columns
+        computed together) is made read-only: a view's flag could else be set back.
+        A column that owns its memory (a state's array) is kept as a read-only view,
         whose flag cannot be set back while the array's is not.
         """
-        owners = {}
-        for values in found.values():
-            base = values if values.base is None else values.base
-            if isinstance(base, np.ndarray) and base.flags.writeable:
-                while isinstance(base.base, np.ndarray):
-                    base = base.base
-                owners[id(base)] = base
-        for owner in owners.values():
-            owner.flags.writeable = False
         index, cache = self._index, self._cache
+        # the rows of a block share its owner: its flag is looked at once
+        seen: set[int] = set()
         for key, values in found.items():
-            if key not in index or key in cache:
+            base = values.base
+            if base is None:
+                if values.flags.writeable:
+                    values.flags.writeable = False
+                if key in index and key not in cache:
+                    values = values.view()
+                    values.flags.writeable = False
+                    cache[key] = values
                 continue
-            if values.base is None:
-                values = values.view()
-                values.flags.writeable = False
-            elif values.flags.writeable:
-                # a view made for this column (a row of a block): its owner is
-                # read-only now, so its own flag is set once, with no new view
-                values.flags.writeable = False
-            cache[key] = values
+            if id(base) not in seen:
+                seen.add(id(base))
+                if isinstance(base, np.ndarray) and base.flags.writeable:
+                    while isinstance(base.base, np.ndarray):
+                        base = base.base
+                    base.flags.writeable = False
+            if key in index and key not in cache:
+                if values.flags.writeable:
+                    # a view made for this column (a row of a block): its owner is
+                    # read-only now, so its own flag is set once, with no new view
+                    values.flags.writeable = False
+                cache[key] = values
 
     def summary(self) -> dict[str, float]:
         """Return the few numbers joints and motors are sized on, by name.
