@@ -89,6 +89,8 @@ RANKS = {
     "assur._evaluate": 7,
     # the columns computed slice by slice from the links' rebuilt motions
     "assur._chunks": 7,
+    # what a pass over slices computes, per plan and set of columns
+    "assur._recipe": 7,
     # a sweep's troubles: errors, positions left out, warnings (change points too)
     "assur._runs": 6,
     "assur._troubles": 7,
