@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._kinematics import velocity_coefficients
-from assur._vec import Array, add, cross
+from assur._vec import Array, add, cross, full
 from assur.groups._motion import point
 
 if TYPE_CHECKING:
@@ -100,15 +100,14 @@ def residual(
             total[0, d.body] += fx
             total[1, d.body] += fy
             total[2, d.body] += m.ox[0] * fy - m.oy[0] * fx
-    out[...] = 0.0
-    force, moment = out
-    spare = np.empty(n)
-    for b in range(1, len(bodies)):
-        fx, fy, tau = total[:, b]
-        m = bodies[b]
-        np.maximum(force, np.abs(fx, out=spare), out=force)
-        np.maximum(force, np.abs(fy, out=spare), out=force)
-        # the moment about the link's origin: tau - o x F, in place
-        tau -= np.multiply(m.ox[0], fy, out=spare)
-        tau += np.multiply(m.oy[0], fx, out=spare)
-        np.maximum(moment, np.abs(tau, out=spare), out=moment)
+    # every moving link at once, a row each: the largest is exact in any order
+    loads = total[:, 1:]
+    fx, fy, tau = loads
+    ox = np.array([full(m.ox[0], n) for m in bodies[1:]])
+    oy = np.array([full(m.oy[0], n) for m in bodies[1:]])
+    # the moments about the links' origins: tau - o x F, in place
+    tau -= np.multiply(ox, fy, out=ox)
+    tau += np.multiply(oy, fx, out=oy)
+    np.abs(loads, out=loads)
+    np.max(loads[:2], axis=(0, 1), out=out[0])
+    np.max(tau, axis=0, out=out[1])

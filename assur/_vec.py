@@ -212,10 +212,21 @@ def write_rows(target: Any, piece: Any, rows: slice) -> None:
 
 
 def freeze(tree: Any) -> Any:
-    """Make every array leaf of ``tree`` read-only; return ``tree``."""
-    for x in leaves(tree):
-        if x.__class__ is np.ndarray:
-            x.flags.writeable = False
+    """Make every array leaf of ``tree`` read-only; return ``tree``.
+
+    Only the containers go through the stack, in no particular order: a table's
+    states hold about a hundred leaves, each looked at once.
+    """
+    stack: list[Iterable[Any]] = [(tree,)]
+    while stack:
+        for x in stack.pop():
+            kind = x.__class__
+            if kind is np.ndarray:
+                x.flags.writeable = False
+            elif kind is tuple or kind is list:
+                stack.append(x)
+            elif kind is dict:
+                stack.append(x.values())
     return tree
 
 
