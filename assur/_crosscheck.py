@@ -73,41 +73,40 @@ def residual(
     ``out`` is an array (2, n): the forces are written into its first row, the
     moments into its second.
     """
-    n = out.shape[1]
-    # the sums of the moving links only (the frame takes what they pass to it)
-    total = np.empty((3, len(plan.bodies), n))
-    for b in range(1, len(plan.bodies)):
-        for i, value in enumerate(applied.wrenches[b]):
-            total[i, b] = value
+    n, count = out.shape[1], len(plan.bodies)
+    # the sums of the moving links only (the frame takes what they pass to it): a
+    # link's force and moment are one array (3, n), added to in one operation
+    total = np.empty((count, 3, n))
+    total[1:] = [[full(v, n) for v in applied.wrenches[b]] for b in range(1, count)]
     for name, (fx, fy, couple) in forces.reactions.items():
         pair = plan.pairs[name]
         qx, qy = point(bodies[pair.second], pair.d_second, 0)
         tau = cross(qx, qy, fx, fy)
         if pair.kind == "P":
             tau = add(tau, couple)
-        for i, value in enumerate((fx, fy, tau)):
-            total[i, pair.second] += value
-            if pair.first:
-                total[i, pair.first] -= value
+        load = np.array((full(fx, n), full(fy, n), full(tau, n)))
+        total[pair.second] += load
+        if pair.first:
+            total[pair.first] -= load
     for d, value in zip(plan.drivers, forces.balancing, strict=True):
         if d.kind == "R":
-            total[2, d.body] += value
+            total[d.body, 2] += value
         else:
             assert d.pair.axis is not None
             ex, ey = d.pair.axis
             fx, fy = value * ex, value * ey
             m = bodies[d.body]
-            total[0, d.body] += fx
-            total[1, d.body] += fy
-            total[2, d.body] += m.ox[0] * fy - m.oy[0] * fx
+            total[d.body, 0] += fx
+            total[d.body, 1] += fy
+            total[d.body, 2] += m.ox[0] * fy - m.oy[0] * fx
     # every moving link at once, a row each: the largest is exact in any order
-    loads = total[:, 1:]
-    fx, fy, tau = loads
+    loads = total[1:]
+    fx, fy, tau = loads[:, 0], loads[:, 1], loads[:, 2]
     ox = np.array([full(m.ox[0], n) for m in bodies[1:]])
     oy = np.array([full(m.oy[0], n) for m in bodies[1:]])
     # the moments about the links' origins: tau - o x F, in place
     tau -= np.multiply(ox, fy, out=ox)
     tau += np.multiply(oy, fx, out=oy)
     np.abs(loads, out=loads)
-    np.max(loads[:2], axis=(0, 1), out=out[0])
+    np.max(loads[:, :2], axis=(0, 1), out=out[0])
     np.max(tau, axis=0, out=out[1])
