@@ -90,8 +90,8 @@ def _chunked(
             rubbed = with_friction(plan, bodies, applied, friction, "R")
             residual(plan, bodies, rubbed, forces, left[:, rows])
     for _, targets in points:
-        out.update((x, values_x) for _, x, values_x, _, _ in targets)
-        out.update((y, values_y) for _, _, _, y, values_y in targets)
+        for _, x, values_x, y, values_y in targets:
+            out[x], out[y] = values_x, values_y
     out.update((name, out[same]) for name, same in how.aliases)
     if how.jerks:
         out.update(_jerks(table, list(how.jerks)))

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._kinematics import velocity_coefficients
-from assur._vec import Array, add, cross, full
+from assur._vec import Array, add, cross, full, is_array
 from assur.groups._motion import point
 
 if TYPE_CHECKING:
@@ -50,7 +50,7 @@ def virtual_power(
     total: Any = 0.0
     for b in range(1, len(plan.bodies)):
         fx, fy, tau = applied.wrenches[b]
-        if not (np.ndim(fx) or np.ndim(fy) or np.ndim(tau) or fx or fy or tau):
+        if not (is_array(fx) or is_array(fy) or is_array(tau) or fx or fy or tau):
             continue  # a massless, unloaded link does no work
         m, v = bodies[b], coeff[b]
         w = v.phi[1]

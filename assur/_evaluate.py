@@ -176,7 +176,7 @@ def _ic(table: Table, columns: list[Column]) -> dict[str, Array]:
     out: dict[str, Array] = {}
     moving: list[tuple[str, list[Any]]] = []
     # the variants of a study stack their plans: a size and a shift per row
-    per_row = np.ndim(plan.scale) or any(np.ndim(v) for v in plan.shift)
+    per_row = is_array(plan.scale) or any(is_array(v) for v in plan.shift)
     for b in dict.fromkeys(c.key[0] for c in columns):
         name = plan.bodies[b]
         leaves = [state.rotation(b, 1), *state.origin(b, 0), *state.origin(b, 1)]

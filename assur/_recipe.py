@@ -66,7 +66,7 @@ def recipe(plan: Any, columns: list[Column], top: int, short: bool) -> Recipe:
     jerks when a column needs them). Kept in ``plan.memo``.
     """
     kept = plan.memo.setdefault("recipes", {})
-    key = (tuple(c.name for c in columns), top, short)
+    key = (tuple([c.name for c in columns]), top, short)
     found = kept.get(key)
     if found is None:
         found = _recipe(plan, columns, top, short)

@@ -73,8 +73,8 @@ def full(value: Leaf, n: int) -> Array:
     A constant is one value seen through a stride of zero: nothing is written per
     position, whatever ``n``.
     """
-    if is_array(value):
-        return value  # type: ignore[no-any-return]
+    if isinstance(value, np.ndarray) and value.ndim > 0:  # is_array, called often
+        return value
     number = np.nan if value is None else float(value)
     # -0.0 == 0.0 (one key): the sign goes into the key, or the first made would
     # serve both, and which one came first would change the results (atan2, 1/x)

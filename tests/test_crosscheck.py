@@ -81,3 +81,15 @@ def test_freeze_reaches_every_array_of_nested_containers():
     assert freeze(arrays[3]) is arrays[3]
     assert freeze(2.0) == 2.0
     assert not any(a.flags.writeable for a in arrays)
+
+
+def test_full_gives_an_array_as_it_is_and_repeats_anything_else():
+    values = np.arange(3.0)
+    assert full(values, 3) is values
+    for leaf, want in ((2.5, 2.5), (np.float64(-0.0), -0.0), (np.array(4.0), 4.0)):
+        found = full(leaf, 3)
+        assert found.shape == (3,)
+        assert not found.flags.writeable
+        assert np.array_equal(np.signbit(found), np.signbit([want] * 3))
+        assert np.array_equal(found, [want] * 3)
+    assert np.isnan(full(None, 2)).all()

@@ -14,7 +14,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._vec import add
+from assur._vec import add, is_array
 
 __all__ = ["Motion", "direction", "point", "point_into", "rotated"]
 
@@ -158,7 +158,7 @@ def point_into(
     motion keeps ``x`` and ``y`` as the point's value (they must not change after).
     """
     memo = m.memo
-    if d == ORIGIN or np.ndim(m.phi[0]) == 0:
+    if d == ORIGIN or not is_array(m.phi[0]):
         x[...], y[...] = point(m, d, k)
         return
     if memo is not None:
