@@ -18,7 +18,7 @@ from assur._exports import Columns
 from assur._kinematics import KinematicState
 from assur._loads import compile_loads
 from assur._text import describe, suggest
-from assur._vec import Array, ArrayLike, freeze
+from assur._vec import Array, ArrayLike, freeze, set_writeable
 from assur.columns import Column, families, schema
 from assur.errors import UnknownNameError, UsageError
 from assur.kinetostatics import ForceState
@@ -326,24 +326,22 @@ class Table(Columns):
         for key, values in found.items():
             base = values.base
             if base is None:
-                if values.flags.writeable:
-                    values.flags.writeable = False
+                set_writeable(values, False)
                 if key in index and key not in cache:
-                    values = values.view()
-                    values.flags.writeable = False
-                    cache[key] = values
+                    # a view of a read-only array is read-only, and cannot be made
+                    # writeable again
+                    cache[key] = values.view()
                 continue
             if id(base) not in seen:
                 seen.add(id(base))
                 if isinstance(base, np.ndarray) and base.flags.writeable:
                     while isinstance(base.base, np.ndarray):
                         base = base.base
-                    base.flags.writeable = False
+                    set_writeable(base, False)
             if key in index and key not in cache:
-                if values.flags.writeable:
-                    # a view made for this column (a row of a block): its owner is
-                    # read-only now, so its own flag is set once, with no new view
-                    values.flags.writeable = False
+                # a view made for this column (a row of a block): its owner is
+                # read-only now, so its own flag is set once, with no new view
+                set_writeable(values, False)
                 cache[key] = values
 
     def summary(self) -> dict[str, float]:
