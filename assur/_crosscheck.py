@@ -43,7 +43,7 @@ def virtual_power(
     origin about which :math:`\tau_{b,O}` is taken.
     """
     scale: Any
-    if len(plan.drivers) == 1 and np.all(np.abs(speed) > SLOW):
+    if len(plan.drivers) == 1 and (np.abs(speed) > SLOW).all():
         coeff, scale = bodies, 1.0 / speed  # velocities are linear in the one speed
     else:
         coeff, scale = velocity_coefficients(plan, bodies, which), 1.0
@@ -108,5 +108,6 @@ def residual(
     tau -= np.multiply(ox, fy, out=ox)
     tau += np.multiply(oy, fx, out=oy)
     np.abs(loads, out=loads)
-    np.max(loads[:, :2], axis=(0, 1), out=out[0])
-    np.max(tau, axis=0, out=out[1])
+    # the ufuncs' own reductions: np.max would reach them through Python
+    np.maximum.reduce(loads[:, :2], axis=(0, 1), out=out[0])
+    np.maximum.reduce(tau, axis=0, out=out[1])

@@ -146,14 +146,15 @@ def _continuous(angle: Array) -> Array:
     first = angle[..., :1]
     shift = first - (math.pi - np.remainder(math.pi - first, 2.0 * math.pi))
     # the turns between neighbours, then their running sum, in one array: a long
-    # sweep's angles pass through memory a few times instead of nine
-    turns = np.diff(angle)
+    # sweep's angles pass through memory a few times instead of nine (np.diff,
+    # np.any and np.cumsum's own operations, without numpy's Python-level dispatch)
+    turns = np.subtract(angle[..., 1:], angle[..., :-1])
     turns *= 0.5 / math.pi
     with np.errstate(invalid="ignore"):
         np.rint(turns, out=turns)
-    if np.any(turns):
+    if turns.any():
         np.nan_to_num(turns, copy=False)
-        np.cumsum(turns, axis=-1, out=turns)
+        np.add.accumulate(turns, axis=-1, out=turns)
         turns *= 2.0 * math.pi
         angle[..., 1:] -= turns
     angle -= shift

@@ -140,7 +140,12 @@ def norm(x: Array, y: Array, out: Array | None = None) -> Array:
         s = np.multiply(x, x, out=out)
         s += y * y
     # two reductions find the rare odd square without a mask over every element
-    fine = not s.size or (SQUARE_RANGE[0] <= s.min() and s.max() <= SQUARE_RANGE[1])
+    low, high = SQUARE_RANGE
+    # the ufuncs' reductions called directly: s.min() reaches them through Python
+    fine = not s.size or (
+        low <= np.minimum.reduce(s, axis=None)
+        and np.maximum.reduce(s, axis=None) <= high
+    )
     if fine:
         return np.sqrt(s, out=s)
     with np.errstate(invalid="ignore"):

@@ -49,3 +49,19 @@ def test_storing_a_read_only_view_makes_its_owner_read_only():
     assert not block.flags.writeable
     assert table["crank.omega"] is view
     assert "not a column" not in table._cache
+
+
+def test_angles_lose_their_turns_row_by_row():
+    from assur._evaluate import _continuous
+
+    rng = np.random.default_rng(3)
+    smooth = np.cumsum(rng.uniform(-2.0, 2.0, (3, 50)), axis=-1)
+    wrapped = np.angle(np.exp(1j * smooth))
+    found = _continuous(wrapped.copy())
+    # each row as np.unwrap gives it, the first angle kept within (-pi, pi]
+    np.testing.assert_allclose(found, np.unwrap(wrapped), rtol=0, atol=1e-12)
+    holed = wrapped.copy()
+    holed[1, 20] = np.nan
+    found = _continuous(holed)
+    assert np.isnan(found[1, 20])
+    np.testing.assert_allclose(found[1, :20], np.unwrap(wrapped[1, :20]), atol=1e-12)
