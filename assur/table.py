@@ -15,10 +15,11 @@ import numpy as np
 
 from assur._evaluate import CHUNKED, SHORT, evaluate, grouped, materialize
 from assur._exports import Columns
+from assur._keep import keep
 from assur._kinematics import KinematicState
 from assur._loads import compile_loads
 from assur._text import describe, suggest
-from assur._vec import Array, ArrayLike, freeze, set_writeable
+from assur._vec import Array, ArrayLike, freeze
 from assur.columns import Column, families, schema
 from assur.errors import UnknownNameError, UsageError
 from assur.kinetostatics import ForceState
@@ -313,36 +314,8 @@ class Table(Columns):
             self._store(materialize(self, columns))
 
     def _store(self, found: dict[str, Array]) -> None:
-        """Keep the columns ``found`` together, read-only for good.
-
-        Every array that owns the memory of one of ``found`` (a block of columns
-        computed together) is made read-only: a view's flag could else be set back.
-        A column that owns its memory (a state's array) is kept as a read-only view,
-        whose flag cannot be set back while the array's is not.
-        """
-        index, cache = self._index, self._cache
-        # the rows of a block share its owner: its flag is looked at once
-        seen: set[int] = set()
-        for key, values in found.items():
-            base = values.base
-            if base is None:
-                set_writeable(values, False)
-                if key in index and key not in cache:
-                    # a view of a read-only array is read-only, and cannot be made
-                    # writeable again
-                    cache[key] = values.view()
-                continue
-            if id(base) not in seen:
-                seen.add(id(base))
-                if isinstance(base, np.ndarray) and base.flags.writeable:
-                    while isinstance(base.base, np.ndarray):
-                        base = base.base
-                    set_writeable(base, False)
-            if key in index and key not in cache:
-                # a view made for this column (a row of a block): its owner is
-                # read-only now, so its own flag is set once, with no new view
-                set_writeable(values, False)
-                cache[key] = values
+        """Keep the columns ``found``, read-only for good (see :func:`keep`)."""
+        keep(found, self._index, self._cache)
 
     def summary(self) -> dict[str, float]:
         """Return the few numbers joints and motors are sized on, by name.

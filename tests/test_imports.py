@@ -96,6 +96,8 @@ RANKS = {
     "assur._troubles": 7,
     "assur._unexplained": 8,
     "assur.table": 8,
+    # a table's columns kept read-only
+    "assur._keep": 8,
     # what every table of results offers: its columns by name, and their export
     "assur._exports": 8,
     "assur.summary": 8,
