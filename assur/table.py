@@ -18,7 +18,7 @@ from assur._exports import Columns
 from assur._keep import keep
 from assur._kinematics import KinematicState
 from assur._loads import compile_loads
-from assur._text import describe, suggest
+from assur._text import counted, describe, suggest
 from assur._vec import Array, ArrayLike, freeze
 from assur.columns import Column, families, schema
 from assur.errors import UnknownNameError, UsageError
@@ -271,8 +271,8 @@ class Table(Columns):
         # the dataclass's repr spelt out every state array (20 000 characters)
         kind = "forces" if self._forces else "kinematics"
         name = self.plan.mechanism.name or "mechanism"
-        rows = "1 row" if len(self) == 1 else f"{len(self)} rows"
-        size = f"{rows} x {len(self.columns)} columns"
+        # "1 column", as the notebook's caption counts it
+        size = f"{counted(len(self), 'row')} x {counted(len(self.columns), 'column')}"
         return f"<assur.Table: {kind} of {name!r}, {size}>"
 
     def _repr_html_(self) -> str:

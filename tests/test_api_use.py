@@ -433,6 +433,10 @@ def test_a_table_s_repr_is_a_line() -> None:
     assert repr(kinematics).endswith(", 72 rows x 83 columns>")
     one = assur.kinematics(assur.catalog.four_bar(), [0.0])
     assert repr(one).endswith(", 1 row x 83 columns>")
+    # a table of the driver's position alone: one column, as its caption says
+    alone = assur.kinematics(assur.catalog.four_bar(), [0.0, 5.0], columns=[])
+    assert alone.columns == ("angle",)
+    assert repr(alone).endswith(", 2 rows x 1 column>")
     # the dynamics table: its figures, not its mechanism and columns
     whitworth = assur.load(EXAMPLES / "whitworth.toml")
     dynamics = assur.dynamics(whitworth, [0.0], flywheel=20.0)
