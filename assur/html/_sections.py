@@ -15,6 +15,7 @@ import numpy as np
 from assur._digits import ROUND_OFF, by_unit, settled
 from assur._position_titles import row_position
 from assur._structure import Structure
+from assur._structure_display import GROUP_HEADINGS as NOTEBOOK_GROUP_HEADINGS
 from assur._structure_display import group_cells
 from assur._text import roman
 from assur._troubles import skipped_why
@@ -27,16 +28,10 @@ LONG_TABLE = 60
 """Tables with more rows than this show every 10th row."""
 GROUP_HEADINGS = (
     '<span class="unseen">Colour in the drawing</span>',
-    "Step",
-    "Class",
-    "Order",
-    "Kind",
-    "Links",
-    "Internal pairs",
-    "External pairs",
+    *NOTEBOOK_GROUP_HEADINGS,
 )
 """Column headings of the table of groups (HTML); the first column holds the colour,
-its heading read by a screen reader alone."""
+its heading read by a screen reader alone, the others a notebook's too."""
 GROUPS_CAPTION = "Assur groups in the order they are solved, each named by its step"
 """What the table of groups holds, said to a screen reader (its card says Structure)."""
 SUMMARY_TITLE = "Summary over the sweep"
