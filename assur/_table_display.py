@@ -3,7 +3,10 @@
 Its first and last rows, its first and last columns with their units, the numbers
 as the command line's readable table prints them (:func:`assur._text.number_text`,
 round-off shown as 0). Only the columns shown are read: a long table's other
-columns are not computed for a look at it.
+columns are not computed for a look at it, so round-off is told against the
+largest of its unit among the columns shown. Where those of a unit are round-off
+alone (a balanced scotch yoke's ``shaking.M`` and ``residual.moment``), their
+digits show, which the command line's table of every column writes as 0.
 """
 
 from __future__ import annotations
