@@ -137,3 +137,38 @@ def test_the_lever_s_terms_round_alike(stem: str, angle: float) -> None:
     assert len(found) == 1, found
     ((terms,),) = found
     assert "sum = balancing load:" in terms
+
+
+def test_the_lever_s_sum_and_speed_ratios_round_alike() -> None:
+    # the sum (to four decimals here) and a couple's speed ratio (to six digits) at
+    # a decimal tie were written 1.2344 or 1.2345, 1.23457 or 1.23456, by the
+    # last bit, as the shares were
+    from types import SimpleNamespace
+
+    import numpy as np
+
+    from assur.plotting.lever import _list_terms
+
+    class Axes:
+        transAxes = None  # noqa: N815 (matplotlib's name)
+
+        def __init__(self) -> None:
+            self.texts: list[str] = []
+
+        def text(self, x: float, y: float, words: str, **kwargs: object) -> None:
+            self.texts.append(words)
+
+    found = set()
+    for way in (0.0, 9.0):  # an ulp below each tie, and one above
+        balancing = float(np.nextafter(1.23445, way))
+        load = SimpleNamespace(couple=1.0, force=(0.0, 0.0))
+        term = SimpleNamespace(
+            couple=True, omega=float(np.nextafter(1.234565, way)), load=load, body=0
+        )
+        ax = Axes()
+        _list_terms(ax, {0: None}, "R", [("M", 0.5, term)], (1.0, balancing), False)
+        found.add(tuple(ax.texts))
+    assert len(found) == 1, found
+    ((text,),) = found
+    assert "= 1.23456; listed only)" in text
+    assert "sum = balancing load: 1.2345 N·m" in text
