@@ -6,7 +6,9 @@ round-off shown as 0). Only the columns shown are read: a long table's other
 columns are not computed for a look at it, so round-off is told against the
 largest of its unit among the columns shown. Where those of a unit are round-off
 alone (a balanced scotch yoke's ``shaking.M`` and ``residual.moment``), their
-digits show, which the command line's table of every column writes as 0.
+digits show, which the command line's table beside the driver's torque writes as 0.
+A table of up to :data:`WHOLE` rows reads every column of the units it shows, to
+tell round-off among them all.
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._digits import by_unit, cleaned
+from assur._digits import by_unit, cleaned, largest
 from assur._display import STYLE, note_html
 from assur._text import counted, number_text
 from assur._vec import Array
@@ -34,6 +36,9 @@ TAIL_COLUMNS = 4
 """Columns shown on its right, after a column of "…"."""
 MORE = "…"
 """What stands for the rows or columns left out."""
+WHOLE = 2048
+"""Rows up to which round-off is told among every column of a unit shown: reading
+them costs about what the display does, where a long table's would be a sweep."""
 
 
 def cut(count: int, head: int, tail: int) -> tuple[list[int], list[int]]:
@@ -89,6 +94,14 @@ def table_html(table: Any, kind: str) -> str:
     # command line's readable table tells it among all its rows
     columns = read(table, picked)
     scales = by_unit(units, columns)
+    if rows <= WHOLE:
+        # the residuals are round-off beside the driver's torque left out
+        kept = [n for n in names if n not in picked and table.column(n).unit in units]
+        most = dict(zip(units, scales, strict=True))
+        for name, column in zip(kept, read(table, kept), strict=True):
+            unit = table.column(name).unit
+            most[unit] = max(most[unit], largest(column))
+        scales = [most[unit] for unit in units]
     values = cleaned(units, [column[at] for column in columns], scales)
     texts = [[number_text(v) for v in column.tolist()] for column in values]
     gap = len(left) if right else None  # where the column of "…" goes

@@ -22,6 +22,7 @@ from assur.columns import pretty_unit
 from .test_dynamics import crank
 
 DATA = Path(__file__).parent / "data"
+EXAMPLES = Path(__file__).parent.parent / "examples"
 HOSTILE = "<script>alert('x')</script> & <b>co</b>"
 """A mechanism's name that would run, or bolden, if it were not escaped."""
 
@@ -261,3 +262,19 @@ def test_a_table_s_cells_are_named_by_their_column_and_row_for_a_screen_reader()
     assert head.count('<th scope="col">') == head.count("</th>") - 2 > 20
     # each row is named by its number (or "..." where rows are left out)
     assert body.count('<th scope="row">') == body.count("<tr>") == 11
+
+
+def test_a_short_table_tells_round_off_among_every_column_of_its_unit():
+    # a balanced scotch yoke shakes its frame with no moment: the columns of N m
+    # shown (its shaking moment, its residual) are round-off alone, beside the
+    # driver's torque left out of the display
+    t = assur.forces(assur.load(EXAMPLES / "scotch_yoke.toml"), np.arange(0, 360, 7.5))
+    page = Page(t._repr_html_())
+    names = [text for _, text in page.tables[0][0]]
+    body = [[text for _, text in row] for row in page.tables[0][2:]]
+    k = names.index("residual.moment")
+    at = shown_rows(len(t))
+    raw = np.asarray(t["residual.moment"])[at]
+    assert np.any(raw != 0.0)
+    assert "driver.torque" not in names
+    assert {row[k] for row in body} == {"0", "…"}
