@@ -11,6 +11,7 @@ the friction's iteration by its number).
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import warnings
 from html.parser import HTMLParser
@@ -78,14 +79,19 @@ def _tables(page: str) -> list[dict[str, Any]]:
     return parser.tables
 
 
-def _check(table: dict[str, Any]) -> None:
-    """Assert ``table`` has a caption, column and row headings, as the module says."""
+def _check(table: dict[str, Any], named: int = 1) -> None:
+    """Assert ``table`` has a caption, column and row headings, as the module says.
+
+    Each row is named by one cell (a group's step, after its colour), or by its
+    first ``named`` cells (the drivers' positions).
+    """
     assert table["caption"].strip()
     assert all(scope == "col" for scope in table["heads"])
     assert table["rows"]
     for row in table["rows"]:
-        named = [cell for cell in row if cell[0] == "th"]
-        assert named == [("th", "row")]
+        heads = [cell for cell in row if cell[0] == "th"]
+        assert heads == [("th", "row")] * named
+        assert named == 1 or row[:named] == heads
 
 
 def _pages() -> dict[str, str]:
@@ -126,6 +132,21 @@ def test_every_table_of_every_page_has_a_caption_and_scoped_headings() -> None:
         "values summary",
         "values",
     }
+
+
+def test_a_row_of_two_drivers_is_named_by_both_positions() -> None:
+    # the first crank's position alone named a row: where it stays, the rows of
+    # the second's sweep had one name
+    mech = assur.load(EXAMPLES / "five_bar_two_cranks.toml")
+    angles = [[0.0, 0.0], [0.0, 10.0], [0.0, 20.0]]
+    (values,) = [
+        t for t in _tables(render_report(mech, angles)) if t["kind"] == "values"
+    ]
+    _check(values, named=2)
+    page = render_report(mech, angles)
+    rows = re.findall(r'<tr data-row="\d+">(.*?)</tr>', page)
+    names = [tuple(re.findall(r'<th scope="row">(.*?)</th>', row)) for row in rows]
+    assert len(set(names)) == len(names) == 3
 
 
 LIVE_TABLES = r"""

@@ -215,15 +215,17 @@ def table_html(plan: Plan, table: Table) -> str:
         f'<th scope="col" data-key="{escape(key)}">{escape(title)}</th>'
         for key, title in columns
     )
+    # the drivers' positions name the row: with several drivers, one alone repeats
+    named = len(plan.drivers)
     rows = []
     for i in range(0, len(table), step):
-        first, *rest = (
+        texts = [
             number(float(v[i]), size) for v, size in zip(values, sizes, strict=True)
-        )
-        # the driver's position names the row
+        ]
         rows.append(
-            f'<tr data-row="{i}"><th scope="row">{first}</th>'
-            + "".join(f"<td>{t}</td>" for t in rest)
+            f'<tr data-row="{i}">'
+            + "".join(f'<th scope="row">{t}</th>' for t in texts[:named])
+            + "".join(f"<td>{t}</td>" for t in texts[named:])
             + "</tr>"
         )
     note = (
