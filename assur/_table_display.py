@@ -21,6 +21,7 @@ import numpy as np
 from assur._digits import by_unit, cleaned, largest
 from assur._display import STYLE, note_html
 from assur._text import counted, number_text
+from assur._troubles import skipped_why
 from assur._vec import Array
 from assur.columns import pretty_unit
 
@@ -133,5 +134,12 @@ def table_html(table: Any, kind: str) -> str:
             f"{counted(hidden, 'column')} not shown: table[name] gives one, "
             "table.to_pandas() or table.arrays() all of them (table.columns "
             "names them)"
+        )
+    skipped = getattr(table, "skipped", None)
+    if skipped is not None and skipped.size:
+        # the rows are numbered among those kept: say which positions are not there
+        out += note_html(
+            f"{skipped.shape[0]} of {counted(rows + skipped.shape[0], 'position')} "
+            f"left out ({skipped_why(table.plan, skipped)}): table.skipped gives them"
         )
     return out

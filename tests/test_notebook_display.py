@@ -278,3 +278,22 @@ def test_a_short_table_tells_round_off_among_every_column_of_its_unit():
     assert np.any(raw != 0.0)
     assert "driver.torque" not in names
     assert {row[k] for row in body} == {"0", "…"}
+
+
+def test_a_table_with_positions_left_out_says_so():
+    # a crank-rocker whose crank cannot turn round: the positions it does not
+    # reach are left out, and its rows are numbered among those kept
+    rocker = assur.catalog.four_bar(crank=0.09, coupler=0.06, rocker=0.08)
+    angles = np.arange(0.0, 360.0, 10.0)
+    t = assur.kinematics(rocker, angles, skip_unassembled=True)
+    assert 0 < t.skipped.shape[0] < len(angles)
+    page = Page(t._repr_html_())
+    (said,) = [b for b in page.blocks.get("small", []) if "left out" in b]
+    assert said.startswith(
+        f"{t.skipped.shape[0]} of {len(angles)} positions left out ("
+    )
+    assert said.endswith("): table.skipped gives them")
+    # a table of every position says nothing of it
+    whole = assur.kinematics(rocker, t.given[:, 0])
+    shown = Page(whole._repr_html_()).blocks.get("small", [])
+    assert not [b for b in shown if "left out" in b]
