@@ -16,7 +16,13 @@ from assur import Motor
 from assur._cli_summary import format_table
 from assur._dynamics_text import figure_lines, startup_lines
 from assur._structure_display import GROUP_HEADINGS, group_cells
-from assur._table_display import HEAD_COLUMNS, HEAD_ROWS, TAIL_COLUMNS, TAIL_ROWS
+from assur._table_display import (
+    HEAD_COLUMNS,
+    HEAD_ROWS,
+    TAIL_COLUMNS,
+    TAIL_ROWS,
+    table_html,
+)
 from assur.columns import pretty_unit
 
 from .test_dynamics import crank
@@ -174,6 +180,56 @@ def test_a_narrow_table_shows_every_column():
     assert names == ["", "angle", "C.vx"]
     assert units == ["", "deg", "m/s"]
     assert "small" not in page.blocks  # no column left out
+
+
+def test_one_column_left_out_is_counted():
+    mech = assur.load(DATA / "slider_crank_exercise.toml")
+    names = list(assur.kinematics(mech, [0.0]).columns)
+    wanted = names[: HEAD_COLUMNS + TAIL_COLUMNS + 1]  # one more than are shown
+    page = Page(assur.kinematics(mech, [0.0, 90.0], columns=wanted)._repr_html_())
+    (note,) = page.blocks["small"]
+    assert note.startswith("1 column not shown")
+
+
+class _Column:
+    """A column's unit, as a table's ``column(name)`` gives it."""
+
+    def __init__(self, unit: str) -> None:
+        self.unit = unit
+
+
+class _Stub:
+    """A table of given columns: the little the display reads of one."""
+
+    def __init__(self, columns: dict[str, tuple[str, np.ndarray]]) -> None:
+        self._columns = columns
+        self.columns = list(columns)
+        self.mechanism = assur.load(DATA / "slider_crank_exercise.toml")
+
+    def __len__(self) -> int:
+        return len(next(iter(self._columns.values()))[1])
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self._columns[name][1]
+
+    def column(self, name: str) -> _Column:
+        return _Column(self._columns[name][0])
+
+
+def test_round_off_is_told_against_the_rows_left_out_too():
+    # small values in the rows shown, a million times a million larger between
+    # them: among the whole column they are round-off, as the command line says
+    count = HEAD_ROWS + TAIL_ROWS + 5
+    small = np.full(count, 1e-3)
+    small[HEAD_ROWS : count - TAIL_ROWS] = 1e7
+    stub = _Stub({"a.F": ("N", small), "a.x": ("m", np.linspace(0.1, 0.2, count))})
+    page = Page(table_html(stub, "forces"))
+    printed = format_table(stub.columns, ["N", "m"], [small, stub["a.x"]], count)
+    lines = [line.split() for line in printed.splitlines()[2:]]
+    body = [[text for _, text in row] for row in page.tables[0][2:]]
+    del body[HEAD_ROWS]  # the row of "…"
+    assert [row[1:] for row in body] == [lines[k] for k in shown_rows(count)]
+    assert {row[1] for row in body} == {"0"}
 
 
 def test_a_table_of_few_columns_is_shown_without_solving_it_again():
