@@ -17,6 +17,7 @@ import pytest
 
 import assur
 from assur.explain import explain
+from assur.explain._group_friction_text import _newton_steps, _spaced, _unsettled
 
 from .test_explain import EXAMPLES, check, printed, statements, tex
 
@@ -336,3 +337,15 @@ def test_an_input_slider_s_guide_is_written_in_the_order_it_is_found() -> None:
     ]
     assert order == sorted(order)
     assert "an efficiency means little there" in driver
+
+
+def test_newton_s_steps_left_uncounted_leave_no_words() -> None:
+    # where Newton's steps from the frictionless sizes do not settle and the
+    # friction was not raised (the analysis found the sizes on its second try)
+    # the note counts none: no "in None steps", no empty brackets or spaces
+    assert _spaced(_newton_steps(None)) == ""
+    assert _spaced(_newton_steps(3)) == " in 3 steps"
+    tried = [{"A": 1.0}, {"A": 2.0}, {"A": 2.5}, {"A": 2.8}, {"A": 3.0}]
+    said = _unsettled(tried, _newton_steps(None))
+    assert "Newton's method on them, which the analysis uses" in said
+    assert "()" not in said
