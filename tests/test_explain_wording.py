@@ -20,6 +20,7 @@ import pytest
 
 import assur
 from assur.explain import explain
+from assur.explain._positions import _angle_sum
 
 matplotlib.use("Agg")
 
@@ -623,3 +624,15 @@ def test_a_load_table_s_words_are_set_off_alike() -> None:
             assert line.count("\\text{(its table") == line.count(
                 ",\\quad \\text{(its table"
             ), line
+
+
+def test_an_angle_sum_is_wrapped_only_where_asked_and_brackets_a_negative() -> None:
+    # theta_n is left as its sum gives it (the next line subtracts from it as
+    # printed); a negative operand is bracketed, "a - (-b)", never "a - -b"
+    a, b = math.radians(150.0), math.radians(60.0)
+    kept = _angle_sum(a, "+", b, wrap=False)
+    wrapped = _angle_sum(a, "+", b, wrap=True)
+    assert wrapped.startswith(kept)
+    assert "360" not in kept
+    assert "360" in wrapped
+    assert re.search(r"- \(-[\d.]+\^\\circ\)", _angle_sum(a, "-", -b, wrap=True))
