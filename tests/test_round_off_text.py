@@ -15,6 +15,7 @@ import matplotlib
 import pytest
 
 import assur
+from assur._digits import ROUND_OFF
 from assur.explain import explain
 from assur.plotting import polygons
 
@@ -172,3 +173,11 @@ def test_the_lever_s_sum_and_speed_ratios_round_alike() -> None:
     ((text,),) = found
     assert "= 1.23456; listed only)" in text
     assert "sum = balancing load: 1.2345 N·m" in text
+
+
+def test_a_polygon_s_gap_is_round_off_of_its_longest_side() -> None:
+    # round-off is a share of the sides (3e-8 mm of 60 mm closes, where a gap
+    # of one millimetre's share would be an opening); twice that share is open
+    longest = 60.0
+    assert polygons._closing(0.5 * ROUND_OFF * longest, longest) == "closes"
+    assert polygons._closing(2.0 * ROUND_OFF * longest, longest).startswith("open by")
