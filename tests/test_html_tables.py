@@ -23,6 +23,7 @@ import pytest
 import assur
 from assur.explain import explain
 from assur.html import render_report, write_report
+from assur.html._series import current
 
 from .test_html import (
     FAKE_DOM,
@@ -92,6 +93,8 @@ def _check(table: dict[str, Any], named: int = 1) -> None:
         heads = [cell for cell in row if cell[0] == "th"]
         assert heads == [("th", "row")] * named
         assert named == 1 or row[:named] == heads
+        # a cell under each heading: the row's names are among its cells, not more
+        assert not table["heads"] or len(row) == len(table["heads"])
 
 
 def _pages() -> dict[str, str]:
@@ -205,3 +208,16 @@ def test_a_row_s_name_scrolls_with_its_values(
     for table in ("table.summary", "#values"):
         name, value = browser.execute_script(ROW_AND_NAME, table)
         assert name == pytest.approx(value)
+
+
+def test_a_live_joints_table_s_caption_says_what_its_columns_hold() -> None:
+    # the joints' table holds reactions in a force analysis, places in a kinematic
+    # one: its caption, read before its cells, says which
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    seen = set()
+    for table in (assur.kinematics(mech, [45.0]), assur.forces(mech, [45.0])):
+        joints = current(table.plan, table)["joints"]
+        forced = joints["head"][1].startswith("Fx")
+        seen.add(forced)
+        assert joints["caption"].startswith("Reaction" if forced else "Place")
+    assert seen == {False, True}
