@@ -221,3 +221,14 @@ def test_a_live_joints_table_s_caption_says_what_its_columns_hold() -> None:
         seen.add(forced)
         assert joints["caption"].startswith("Reaction" if forced else "Place")
     assert seen == {False, True}
+
+
+def test_a_caption_that_names_a_joint_escapes_it() -> None:
+    # the inertia table's caption names each driver's joint (several drivers): a
+    # name in HTML is shown as written, not read as markup
+    text = (EXAMPLES / "five_bar_two_cranks.toml").read_text(encoding="utf-8")
+    name = "<i>A</i>"
+    text = text.replace('"A"', f'"{name}"').replace("[joints.A]", f'[joints."{name}"]')
+    page = render_report(assur.loads(text), [[0.0, 30.0]])
+    (inertia,) = (t for t in _tables(page) if t["kind"] == "values inertia")
+    assert f"({name}: " in inertia["caption"]
