@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 import assur
+from assur._running import Running
 from assur.analysis import default_positions
 from assur.cli import main
 from assur.summary import Summary, efficiency
@@ -802,3 +803,13 @@ def test_a_mean_is_kept_where_it_is_more_than_round_off():
     assert not np.signbit(got[0])
     assert got[1] == 3e-12  # above 1e-12 of 0.2: the mechanism's own
     assert np.isnan(got[2])
+
+
+def test_a_largest_of_exactly_zero_is_found_where_it_is() -> None:
+    # a value that peaks at 0 (a driver's power, no floor): the tie with it is 0
+    # itself, and its first position is where the values reach it, not the first
+    running = Running.start(1)
+    where = np.array([[10.0, 20.0, 30.0]])
+    running.add(np.array([[-1.0, 0.0, -2.0]]), where, None, np.array([2]))
+    assert running.at[0] == where[0, 1]
+    assert running.top[0] == 0.0
