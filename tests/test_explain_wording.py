@@ -636,3 +636,34 @@ def test_an_angle_sum_is_wrapped_only_where_asked_and_brackets_a_negative() -> N
     assert "360" not in kept
     assert "360" in wrapped
     assert re.search(r"- \(-[\d.]+\^\\circ\)", _angle_sum(a, "-", -b, wrap=True))
+
+
+def _degrees(member: str) -> float | None:
+    """Return a member of an equality chain worked out (deg), or None for a symbol."""
+    text = member.replace("^\\circ", "").replace("(", "").replace(")", "").strip()
+    if not re.fullmatch(r"-?[\d.]+(?: [+-] -?[\d.]+)*", text):
+        return None
+    parts = text.split(" ")
+    total = float(parts[0])
+    for sign, value in zip(parts[1::2], parts[2::2], strict=True):
+        total += float(value) if sign == "+" else -float(value)
+    return total
+
+
+@pytest.mark.parametrize(
+    ("a", "sign", "b"), [(150.0, "+", 60.0), (-80.46, "-", 106.32)]
+)
+def test_a_wrapped_angle_sum_equates_only_equal_angles(
+    a: float, sign: str, b: float
+) -> None:
+    # it read "-80.46 - 106.32 = -186.78 + 360 = 173.22": the chain's middle
+    # equated -186.78 deg with 173.22 deg, a whole turn apart
+    text = _angle_sum(math.radians(a), sign, math.radians(b), wrap=True)
+    assert "360" in text
+    for chain in text.split(","):
+        chain = re.sub(r"\\ \\text\{[^}]*\}\\ ", "", chain)
+        values = [_degrees(m) for m in chain.split(" = ")]
+        worked = [v for v in values if v is not None]
+        assert len(worked) >= 2, text
+        for x, y in itertools.pairwise(worked):
+            assert x == pytest.approx(y, abs=0.015), text

@@ -230,9 +230,12 @@ def _angle_sum(a: float, sign: str, b: float, wrap: bool) -> str:
     r"""Return ``a + b`` (``sign`` "+") or ``a - b`` in degrees, worked out.
 
     The operands (``b`` within (-180, 180], ``a`` as the line before left it), their
-    plain sum, and with ``wrap``, where that leaves (-180, 180], the whole turn that
-    brings it back: a reader adding 92.5 and 90 must find 182.5, not the -177.5 it
-    stands for.
+    plain sum, and with ``wrap``, where that leaves (-180, 180], the same turn with
+    the whole turn that brings it back: a reader adding 92.5 and 90 must find 182.5,
+    not the -177.5 it stands for. The whole turn is added after the sum, as a turn
+    of its own ("-186.78, the same turn as -186.78 + 360 = 173.22"): written on in
+    the chain of equalities, "= -186.78 + 360 = 173.22" equated two angles a whole
+    turn apart.
     """
     total = a + b if sign == "+" else a - b
     first = f"{num(math.degrees(a))}^\\circ"
@@ -243,7 +246,11 @@ def _angle_sum(a: float, sign: str, b: float, wrap: bool) -> str:
     turns = math.degrees(total - math.remainder(total, 2 * math.pi))
     if wrap and abs(turns) > 1.0:  # a whole turn, never a fraction of one
         back = "-" if turns > 0 else "+"
-        text += f" {back} {num(abs(turns))}^\\circ = {deg(total)}"
+        summed = f"{num(math.degrees(total))}^\\circ"
+        text += (
+            f",\\ \\text{{the same turn as}}\\ {summed} {back} "
+            f"{num(abs(turns))}^\\circ = {deg(total)}"
+        )
     return text
 
 
