@@ -258,6 +258,18 @@ def test_the_documented_friction_numbers_are_the_note_s() -> None:
     assert r"-0.15 \cdot 17.93 \cdot 0 = 0" in zero
 
 
+def test_the_documented_count_of_substitution_steps_is_the_note_s() -> None:
+    # docs/explain.rst said "in four steps" beside Newton's "2, its steps counted
+    # alike", where the note's table, counted alike, ends on its fifth step
+    note, _ = _note_and_table(FRICTION, 45.0)
+    steps = re.findall(r"^\| (\d+) \| \$", note, flags=re.MULTILINE)
+    docs = (EXAMPLES.parent / "docs" / "explain.rst").read_text(encoding="utf-8")
+    said = re.search(r"473\.94 N in (\w+) steps", " ".join(docs.split()))
+    assert said is not None
+    words = ("one", "two", "three", "four", "five", "six", "seven", "eight")
+    assert words.index(said.group(1)) + 1 == int(steps[-1]), said.group(0)
+
+
 def test_a_group_rubbing_in_its_guide_alone_states_the_sliding_law_alone() -> None:
     """Its paragraph opened with a revolute pair's couple, which it has none of."""
     import dataclasses
