@@ -230,7 +230,7 @@ def test_force_polygons_close_with_friction(path: Path, angle: float) -> None:
     try:
         for ax in fig.axes:
             # open by more than round-off, the title gives the gap in mm
-            assert ": closes\n" in ax.get_title(), ax.get_title()
+            assert ": the polygon closes\n" in ax.get_title(), ax.get_title()
     finally:
         plt.close(fig)
 

@@ -71,7 +71,7 @@ def test_a_force_polygon_s_title_closes_alike(stem: str, angle: float) -> None:
         titles.add(tuple(ax.get_title() for ax in fig.axes))
         plt.close(fig)
     (found,) = titles
-    assert all(": closes\n" in title for title in found)
+    assert all(": the polygon closes\n" in title for title in found)
 
 
 def _newton_words(mech: assur.Mechanism, angle: float) -> list[str]:
@@ -179,5 +179,7 @@ def test_a_polygon_s_gap_is_round_off_of_its_longest_side() -> None:
     # round-off is a share of the sides (3e-8 mm of 60 mm closes, where a gap
     # of one millimetre's share would be an opening); twice that share is open
     longest = 60.0
-    assert polygons._closing(0.5 * ROUND_OFF * longest, longest) == "closes"
-    assert polygons._closing(2.0 * ROUND_OFF * longest, longest).startswith("open by")
+    assert polygons._closing(0.5 * ROUND_OFF * longest, longest) == "the polygon closes"
+    assert polygons._closing(2.0 * ROUND_OFF * longest, longest).startswith(
+        "the polygon is open by"
+    )

@@ -157,16 +157,17 @@ def _closing(gap: float, longest: float) -> str:
 
     A gap below :data:`assur._digits.ROUND_OFF` of the ``longest`` side (mm) is
     round-off, 7.1e-15 mm on one machine and 0 on another by the order of the
-    sums: the polygon "closes". A larger one is a polygon left open, written out.
+    sums: the polygon closes. A larger one is a polygon left open, written out.
 
     Examples
     --------
     >>> _closing(7.1e-15, 60.0), _closing(0.0, 60.0), _closing(0.25, 60.0)
-    ('closes', 'closes', 'open by 0.25 mm')
+    ('the polygon closes', 'the polygon closes', 'the polygon is open by 0.25 mm')
     """
+    # "group RRP (rod, slider): closes" read as if the group closed
     if gap <= ROUND_OFF * longest:
-        return "closes"
-    return f"open by {gap:.2g} mm"
+        return "the polygon closes"
+    return f"the polygon is open by {gap:.2g} mm"
 
 
 def _outer(pos: Position, rec: Any, body: int) -> list[Any]:
