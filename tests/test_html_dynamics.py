@@ -106,3 +106,9 @@ def test_a_clockwise_crank_s_figures_read_as_the_command_line_s(tmp_path):
     assert "it brakes: the loads drive the crank" in row[1]
     # the file's motor is quoted in the page's unit
     assert "N m" not in row[1]
+    # the note above the figures said the motor does "the work the loads take",
+    # where the figures say it brakes: the loads give the work it takes
+    note = re.search(r'<p class="note">(.*?)</p>', part, re.S)
+    assert note is not None
+    assert "the work the loads take" not in note[1]
+    assert "balances the loads'" in note[1]

@@ -124,7 +124,8 @@ def _figures_html(result: Any) -> str:
         f"Steady state at the nominal speed {abs(result.omega):.5g} rad/s"
         f"{', clockwise' if result.omega < 0 else ''} (the mean of the largest and "
         f"the smallest), {why}, under the constant motor torque "
-        "whose work over a turn is the work the loads take."
+        # a motor that brakes (the loads drive the crank) takes work, it gives none
+        "whose work over a turn balances the loads'."
     )
     if any(j.friction for j in result.mechanism.joints):
         # the summary above counts friction's loss: say why the motor does not
