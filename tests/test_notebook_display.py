@@ -353,3 +353,15 @@ def test_a_table_with_positions_left_out_says_so():
     whole = assur.kinematics(rocker, t.given[:, 0])
     shown = Page(whole._repr_html_()).blocks.get("small", [])
     assert not [b for b in shown if "left out" in b]
+
+
+def test_getting_started_says_what_each_result_shows():
+    # it said "the dynamic model and a start-up show their figures", where the
+    # dynamic model shows its table of rows too
+    page = (EXAMPLES.parent / "docs" / "getting_started.rst").read_text("utf-8")
+    said = " ".join(page.split())
+    model = Page(assur.dynamics(crank(), flywheel=0.5)._repr_html_())
+    run = Page(assur.startup(crank(motor=Motor(2.0, 10.0)))._repr_html_())
+    assert (len(model.tables), len(run.tables)) == (2, 1)
+    assert "the dynamic model shows its figures and its table" in said
+    assert "a start-up its figures" in said
