@@ -288,6 +288,16 @@ def test_a_group_rubbing_in_its_guide_alone_states_the_sliding_law_alone() -> No
     assert "relative to its first); a sliding pair's force" in both
 
 
+def test_the_friction_laws_read_without_brackets_side_by_side() -> None:
+    # "... its couple $M$ makes none in this model) (kinetic friction only: a pair
+    # at rest has none)": two brackets in a row, the first's "none" of no noun
+    note = " ".join(str(explain(assur.load(FRICTION), 45.0)).split())
+    start = note.index("Friction in ")
+    paragraph = note[start : note.index("(sizes in N)", start)]
+    assert ") (" not in paragraph
+    assert "its couple $M$ adds no friction in this model)" in paragraph
+
+
 def test_near_self_locking_the_substitution_is_said_to_settle_slowly() -> None:
     import dataclasses
 

@@ -195,13 +195,14 @@ def method(pairs: list[PairPlan]) -> Para:
             "a sliding pair's force of its first link on its second $F_f = "
             "-f\\,|N|\\,\\mathrm{sgn}\\,\\dot s$ along its slide line ($\\dot s$ "
             "the slide of its second link relative to its first; its couple $M$ "
-            "makes none in this model)"
+            "adds no friction in this model)"
         )
     return Para(
-        # each law holds commas of its own: the laws are apart by a semicolon
-        f"Friction in {listed}: {'; '.join(laws)} (kinetic friction only: a "
-        "pair at rest has none). Each depends on the size of a reaction not "
-        "yet known. With the senses of the relative motions known, each "
+        # each law holds commas of its own: the laws are apart by a semicolon;
+        # the last law ends in brackets: the kinetic rule is a sentence of its own
+        f"Friction in {listed}: {'; '.join(laws)}. The friction is kinetic only: "
+        "a pair at rest has none. Each friction load depends on the size of a "
+        "reaction not yet known. With the senses of the relative motions known, each "
         "friction load is its size times a known factor, and the reactions "
         "are linear in the friction loads; but a reaction's size is not linear "
         "in its components, so the sizes are found by repeated substitution. "
