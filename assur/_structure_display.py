@@ -35,9 +35,10 @@ GROUP_HEADINGS = (
 def group_cells(struct: Structure) -> list[list[str]]:
     """Return a row of plain-text cells per driver and group, in order of attachment.
 
-    Under :data:`GROUP_HEADINGS`: the step, the class (a Roman numeral), the order,
-    the kind ("input link" for a driver), the moving links and the pairs, named as
-    the reader knows them ("B (block)").
+    Under :data:`GROUP_HEADINGS`: the step, the class (a Roman numeral), the order
+    ("—" for a driver: an input link is of no order), the kind ("input link" for a
+    driver), the moving links and the pairs, named as the reader knows them ("B
+    (block)").
     """
     rows = []
     for step, g in enumerate((*struct.drivers, *struct.groups), 1):
@@ -45,7 +46,7 @@ def group_cells(struct: Structure) -> list[list[str]]:
             [
                 str(step),
                 roman(g.group_class),
-                str(g.order),
+                "—" if g.group_class == 1 else str(g.order),
                 "input link" if g.group_class == 1 else g.kind,
                 ", ".join(public_name(x) for x in g.links if x != GROUND),
                 ", ".join(public_name(x) for x in g.internal),

@@ -269,6 +269,13 @@ def test_the_structure_shows_its_formula_and_groups():
     cells = group_cells(struct)
     assert len(cells) == len(struct.drivers) + len(struct.groups)
     assert [[text for _, text in row] for row in groups[1:]] == cells
+    # the input link is of no order (it read 0); a group's order is its count of
+    # external pairs
+    order = GROUP_HEADINGS.index("Order")
+    assert [row[order] for row in cells] == ["—"] + [
+        str(g.order) for g in struct.groups
+    ]
+    assert [g.order for g in struct.groups] == [2]
     # the teaching report whole, as str() gives it
     assert page.blocks["pre"] == [str(struct)]
 
