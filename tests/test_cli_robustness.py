@@ -94,7 +94,7 @@ def test_a_stop_during_an_animation_keeps_the_old_file(
             str(target),
         ],
         cwd=tmp_path,
-        env=subprocess_env(),
+        env=subprocess_env(PYTHONFAULTHANDLER="1"),
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
@@ -106,8 +106,16 @@ def test_a_stop_during_an_animation_keeps_the_old_file(
     process.send_signal(stop)
     try:
         _out, err = process.communicate(timeout=60)
+    except subprocess.TimeoutExpired:
+        # the command went on after the stop: where it was, for the report (its
+        # faulthandler writes every thread's stack on SIGABRT)
+        process.send_signal(signal.SIGABRT)
+        _out, err = process.communicate()
+        pytest.fail(f"still running 60 s after {stop!r}; its stacks:\n{err[-4000:]}")
     finally:
+        # ended and waited for: a process left running failed the next test too
         process.kill()
+        process.wait()
     assert process.returncode == (128 + stop if status is None else status), err
     assert err == f"assur: {said}\n"
     assert target.read_bytes() == b"the old film"
