@@ -269,24 +269,23 @@ class Table(Columns):
 
     def __repr__(self) -> str:
         # the dataclass's repr spelt out every state array (20 000 characters)
-        kind = "forces" if self._forces else "kinematics"
         name = self.plan.mechanism.name or "mechanism"
         # "1 column", as the notebook's caption counts it
         size = f"{counted(len(self), 'row')} x {counted(len(self.columns), 'column')}"
-        return f"<assur.Table: {kind} of {name!r}, {size}>"
+        return f"<assur.Table: {self._kind} of {name!r}, {size}>"
 
     def _repr_html_(self) -> str:
         """Return the table as a notebook shows it: some rows and columns (HTML)."""
         from assur._table_display import table_html
 
-        return table_html(self, "forces" if self._forces else "kinematics")
+        return table_html(self, self._kind)
 
     @property
-    def _forces(self) -> bool:
-        """Whether the table has a force state, told without solving one again."""
-        if self._again is not None:  # what force_state would be solved with
-            return bool(self._again.with_forces)
-        return self._kept_forces is not None
+    def _kind(self) -> str:
+        """What the table holds, "forces" or "kinematics", told without solving."""
+        again = self._again  # what force_state would be solved with
+        forces = again.with_forces if again else self._kept_forces is not None
+        return "forces" if forces else "kinematics"
 
     def __len__(self) -> int:
         return int(self.given.shape[0])
