@@ -31,8 +31,8 @@ __all__ = [
 
 
 RESEND = 0.5
-"""Seconds after which Ctrl-C, SIGTERM or SIGHUP is sent again when Python ignored
-the exception it raised."""
+"""Seconds after which Ctrl-C, SIGTERM or SIGHUP is sent again while the command it
+stopped still runs: the exception it raised was lost."""
 POSIX = os.name == "posix"
 
 
@@ -56,22 +56,61 @@ class _Stopped(BaseException):
         self.signum = signum
 
 
+def _unwinding() -> bool:
+    """Whether a stop raised before is being handled where this runs.
+
+    Called in a signal handler: the exception being handled by the code the signal
+    cut into (an ``except`` or ``finally`` block, a context manager's exit), or one
+    that exception arose from, is a stop.
+    """
+    seen = sys.exc_info()[1]
+    chain: set[int] = set()
+    while seen is not None and id(seen) not in chain:
+        if isinstance(seen, _Stopped | KeyboardInterrupt):
+            return True
+        chain.add(id(seen))
+        seen = seen.__context__
+    return False
+
+
 @contextlib.contextmanager
 def _stoppable() -> Iterator[None]:
     """Let SIGTERM and SIGHUP end the command as Ctrl-C does, while it runs.
 
     By default they end the process at once, leaving an output's temporary file
     behind; raised as an exception, they remove it and keep the old file. A stop
-    (Ctrl-C too) whose exception Python ignored, raised in a ``__del__``, is sent
-    again. (Only the main thread can take signals; SIGKILL cannot be taken at all.)
+    (Ctrl-C too) is sent again every :data:`RESEND` seconds while the command runs
+    on: its exception can be lost (Python ignores one raised in a ``__del__``; C
+    code calling back into Python may clear one). One that comes while a stop
+    unwinds the command is passed over, so that its cleanup runs to the end.
+    (Only the main thread can take signals; SIGKILL cannot be taken at all.)
     """
     if threading.current_thread() is not threading.main_thread():
         yield
         return
 
     again: list[threading.Timer] = []
+    over = threading.Lock()  # held once the command is over: nothing is sent then
+    ended = [False]
+
+    def send(signum: int) -> None:
+        with over:
+            if not ended[0]:
+                _resend(signum)
+
+    def arm(signum: int) -> None:
+        timer = threading.Timer(RESEND, send, (signum,))
+        timer.daemon = True
+        again.append(timer)
+        timer.start()
 
     def stop(signum: int, frame: Any) -> None:
+        if _unwinding():
+            return
+        # should this exception be lost, the stop comes again while the command runs
+        arm(signum)
+        if signum == signal.SIGINT:
+            raise KeyboardInterrupt
         raise _Stopped(signum)
 
     previous = sys.unraisablehook
@@ -87,14 +126,15 @@ def _stoppable() -> Iterator[None]:
             return
         # raised where Python ignores an exception (a __del__, a weakref callback
         # of matplotlib's), the stop left the command running (an animation of
-        # a thousand frames went on to its end after Ctrl-C): it comes again
-        # shortly, unreported, until one lands where it unwinds the command
-        timer = threading.Timer(RESEND, _resend, (signum,))
-        timer.daemon = True
-        again.append(timer)
-        timer.start()
+        # a thousand frames went on to its end after Ctrl-C): unreported, it comes
+        # again shortly, until one lands where it unwinds the command
+        if signum not in saved:  # raised by a handler not ours: it is not armed
+            arm(signum)
 
-    saved = {}
+    saved: dict[int, Any] = {}
+    if signal.getsignal(signal.SIGINT) is signal.default_int_handler:
+        saved[signal.SIGINT] = signal.default_int_handler  # another's is left alone
+        signal.signal(signal.SIGINT, stop)
     for name in ("SIGTERM", "SIGHUP"):
         number = getattr(signal, name, None)
         if number is not None:
@@ -103,6 +143,8 @@ def _stoppable() -> Iterator[None]:
     try:
         yield
     finally:
+        with over:  # a stop being sent is sent whole, and none after
+            ended[0] = True
         for timer in again:
             timer.cancel()
         for number, handler in saved.items():

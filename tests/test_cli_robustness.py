@@ -160,6 +160,54 @@ def test_a_stop_that_python_ignores_comes_again(
     time.sleep(2 * _cli_process.RESEND)
 
 
+@pytest.mark.parametrize("stop", [signal.SIGTERM, signal.SIGINT])
+def test_a_stop_whose_exception_is_lost_comes_again(stop):
+    # C code calling back into Python may clear the exception a stop raised there,
+    # with no report at all: the command ran on; the stop is sent again while it does
+    lost = []
+
+    def command() -> None:
+        with _cli_process._stoppable():
+            try:
+                os.kill(os.getpid(), stop)
+                time.sleep(1.0)  # the handler runs here
+            except BaseException as swallowed:  # as such code does, silently
+                lost.append(swallowed)
+            started = time.monotonic()
+            while time.monotonic() - started < 10.0:
+                time.sleep(0.01)
+
+    started = time.monotonic()
+    with pytest.raises((_cli_process._Stopped, KeyboardInterrupt)) as caught:
+        command()
+    assert time.monotonic() - started < 5.0
+    assert len(lost) == 1
+    assert type(caught.value) is type(lost[0])
+    time.sleep(2 * _cli_process.RESEND)
+
+
+def test_a_stop_during_the_cleanup_of_another_lets_it_end():
+    # a second stop (the watchdog's, or the user's) while the first one unwinds the
+    # command is passed over: the temporary file's removal is not cut short
+    cleaned = []
+
+    def command() -> None:
+        with _cli_process._stoppable():
+            try:
+                os.kill(os.getpid(), signal.SIGTERM)
+                time.sleep(1.0)
+            finally:
+                os.kill(os.getpid(), signal.SIGTERM)
+                # longer than RESEND: the first stop's own resend comes here too
+                time.sleep(3 * _cli_process.RESEND)
+                cleaned.append(True)
+
+    with pytest.raises(_cli_process._Stopped):
+        command()
+    assert cleaned == [True]
+    time.sleep(2 * _cli_process.RESEND)
+
+
 # --- outputs that fail ----------------------------------------------------------
 
 
