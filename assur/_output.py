@@ -131,16 +131,18 @@ def output_path(
         with _reported(where, any_error, standard_output(target)):
             yield target
         return
-    with _reported(where, any_error):
-        temporary = _reserve(target)
+    reserved: list[Path] = []
     try:
+        with _reported(where, any_error):
+            temporary = _reserve(target, reserved)
         with _reported(where, any_error):
             yield temporary
             _sync(temporary)
             if not defer(temporary, target, where):  # else it lands with its set
                 os.replace(temporary, target)
     except BaseException:
-        _remove(temporary)
+        for made in reserved:
+            _remove(made)
         raise
 
 
@@ -162,7 +164,6 @@ def output_folder(
         When ``path`` is a file or the files cannot be written.
     """
     import shutil
-    import tempfile
     from pathlib import Path
 
     target = Path(path)
@@ -172,17 +173,17 @@ def output_folder(
         raise OutputError(msg)
     # only the last folder is made, as a file's folder must be there already
     base = target if target.is_dir() else target.parent
-    with _reported(where, any_error):
-        temporary = Path(
-            tempfile.mkdtemp(prefix=f".{target.name[:NAME_KEPT]}.", dir=base)
-        )
+    reserved: list[Path] = []
     try:
+        with _reported(where, any_error):
+            temporary = _reserve(base / target.name, reserved, folder=True)
         with _reported(where, any_error):
             yield temporary
             target.mkdir(exist_ok=True)
             _move_all(sorted(temporary.iterdir()), target, temporary)
     finally:
-        shutil.rmtree(temporary, ignore_errors=True)
+        for made in reserved:
+            shutil.rmtree(made, ignore_errors=True)
 
 
 def _move_all(items: list[Path], target: Path, temporary: Path) -> None:
@@ -235,22 +236,35 @@ def _keep_old(place: Path, temporary: Path) -> tuple[bool, Path | None]:
     return True, kept
 
 
-def _reserve(target: Path) -> Path:
-    """Create an empty temporary file beside ``target``, with its permissions."""
+def _reserve(target: Path, reserved: list[Path], folder: bool = False) -> Path:
+    """Create an empty temporary file beside ``target``, with its permissions.
+
+    With ``folder``, an empty temporary folder (only its owner may enter it). Its
+    path is put in ``reserved`` before it is made, so that a stop (Ctrl-C, SIGTERM)
+    coming as it is made still finds it to remove.
+    """
     import secrets
 
     try:
-        mode = stat.S_IMODE(os.stat(target).st_mode)
+        mode = None if folder else stat.S_IMODE(os.stat(target).st_mode)
     except OSError:
         mode = None
     flags = os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_CLOEXEC", 0)
     while True:
-        name = f".{target.name[:NAME_KEPT]}.{secrets.token_hex(4)}.tmp{target.suffix}"
+        tail = "" if folder else f".tmp{target.suffix}"
+        name = f".{target.name[:NAME_KEPT]}.{secrets.token_hex(4)}{tail}"
         temporary = target.with_name(name)
+        # told before it exists: Python runs a signal's handler as soon as the
+        # call that makes it returns, before its result is kept anywhere
+        reserved[:] = [temporary]
         try:
+            if folder:
+                os.mkdir(temporary, 0o700)
+                return temporary
             # 0o666 less the umask, as a new file gets; an old file's own mode
             descriptor = os.open(temporary, flags, 0o666)
         except FileExistsError:
+            reserved.clear()  # another's: not to be removed
             continue
         os.close(descriptor)
         if mode is not None:
