@@ -9,6 +9,7 @@ model (no import of it): its result's methods import this module.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -21,9 +22,21 @@ __all__ = [
     "figure_lines",
     "motor_note",
     "motor_shown",
+    "speed_text",
     "startup_html",
     "startup_lines",
 ]
+
+
+def speed_text(omega: float, number: Callable[[float], str] = number_text) -> str:
+    """Return the nominal crank speed ``omega`` (rad/s) as a size and a direction.
+
+    ``"5 rad/s, clockwise"`` for ``omega = -5``: the largest and smallest speeds
+    beside it are sizes, and a student reads the direction as a word. The tables'
+    and the JSON's numbers keep their signs.
+    """
+    turning = ", clockwise" if omega < 0 else ""
+    return f"{number(abs(omega))} rad/s{turning}"
 
 
 def motor_shown(result: Any) -> float:
@@ -73,10 +86,9 @@ def figure_lines(
     """
     # plain ASCII, as the tables' units rows and the options' messages write units
     kgm2 = "kg m^2"
-    turning = " (clockwise)" if result.omega < 0 else ""
     motor = motor_shown(result)
     lines: list[tuple[str, str]] = [
-        ("nominal crank speed", f"{result.omega:.6g} rad/s{turning}"),
+        ("nominal crank speed", speed_text(result.omega)),
         ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
         ("motor torque", f"{number_text(motor)} N m ({motor_note(motor, result)})"),
         ("coefficient of speed fluctuation", f"delta = {_delta(result.delta)}"),

@@ -495,7 +495,9 @@ def test_the_motor_torque_s_sign_is_told_for_a_clockwise_crank(capsys, tmp_path)
     status, out, _ = run(capsys, "dynamics", path, "--flywheel", "20", "--angles", "0")
     assert status == 0
     lines = {line[:38].strip(): line[38:].strip() for line in out.splitlines()[1:4]}
-    assert lines["nominal crank speed"] == "-5 rad/s (clockwise)"
+    # a size and a direction word, as the report and the notebook write it
+    assert lines["nominal crank speed"] == "5 rad/s, clockwise"
+    assert '<td style="text-align:left">5 rad/s, clockwise</td>' in t._repr_html_()
     motor = assur.load(path).motor
     assert lines["motor torque"] == (
         f"{t.motor:.6g} N m (constant, counter-clockwise positive; it brakes: the "
@@ -568,7 +570,9 @@ def test_a_clockwise_start_up_prints_its_speeds_as_magnitudes(capsys) -> None:
     run_ = assur.startup(assur.load(path), 0.01)
     assert run_.mean_speed < 0 < run_.speed_min < run_.speed_max
     assert f"mean {-run_.mean_speed:.6g} rad/s (2 pi / period" in out
-    assert out.count(", clockwise\n") == 1
+    # the steady state's nominal speed and the start-up's mean, each said once
+    assert "nominal crank speed                   25 rad/s, clockwise\n" in out
+    assert out.count(", clockwise\n") == 2
 
 
 def test_a_motor_against_omega_is_told(capsys, tmp_path: Path) -> None:

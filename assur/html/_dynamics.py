@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._dynamics_text import motor_note, motor_shown
+from assur._dynamics_text import motor_note, motor_shown, speed_text
 from assur._text import crank_angle_text
 from assur.analysis import Table
 from assur.columns import pretty_unit
@@ -121,8 +121,8 @@ def _figures_html(result: Any) -> str:
     )
     note = (
         # the largest and smallest speeds are sizes: the nominal one is told alike
-        f"Steady state at the nominal speed {abs(result.omega):.5g} rad/s"
-        f"{', clockwise' if result.omega < 0 else ''} (the mean of the largest and "
+        f"Steady state at the nominal speed {speed_text(result.omega, number)} "
+        "(the mean of the largest and "
         f"the smallest), {why}, under the constant motor torque "
         # a motor that brakes (the loads drive the crank) takes work, it gives none
         "whose work over a turn balances the loads'."
