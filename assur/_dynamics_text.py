@@ -14,14 +14,15 @@ from typing import Any
 
 import numpy as np
 
+from assur._motor import against_omega
 from assur._startup_turns import PERIODIC_RTOL
 from assur._text import crank_angle_text, number_text, spoken
 
 __all__ = [
     "dynamics_html",
     "figure_lines",
-    "motor_note",
     "motor_shown",
+    "motor_text",
     "speed_text",
     "startup_html",
     "startup_lines",
@@ -50,11 +51,8 @@ def motor_shown(result: Any) -> float:
     return float(result.motor)
 
 
-def motor_note(motor: float, result: Any, unit: str = "N m") -> str:
-    """Return what the motor torque's sign means, beside "constant".
-
-    ``unit`` is the torque's unit as the text around it writes it.
-    """
+def _motor_note(motor: float, result: Any) -> str:
+    """Return what the motor torque's sign means, beside "constant"."""
     note = "constant"
     if result.omega < 0:
         # torques are counter-clockwise positive: a clockwise crank's motor
@@ -62,17 +60,35 @@ def motor_note(motor: float, result: Any, unit: str = "N m") -> str:
         note += ", counter-clockwise positive"
     if motor * result.omega < 0:
         note += "; it brakes: the loads drive the crank"
-    found = result.mechanism.motor
-    if found is not None and found.no_load_speed is not None:
-        # the steady state is the contract's: a constant torque at the nominal
-        # speed; the file's motor, whose torque falls with speed, runs the start-up
-        w = abs(result.omega)
-        note += (
-            f"; it balances the loads' work over a turn at the nominal {w:.6g} "
-            f"rad/s; the file's [motor], {number_text(found.at(result.omega))} "
-            f"{unit} at that speed, drives the start-up alone"
-        )
     return note
+
+
+def motor_text(
+    result: Any, unit: str = "N m", number: Callable[[float], str] = number_text
+) -> str:
+    """Return the motor torque's row: the steady state's, then the file's motor.
+
+    One sentence for the constant torque of the steady state and, where the file
+    has a motor, one for it. ``unit`` is the torque's unit as the text around it
+    writes it, ``number`` how it writes a number.
+    """
+    motor = motor_shown(result)
+    text = f"{number(motor)} {unit} ({_motor_note(motor, result)})"
+    found = result.mechanism.motor
+    if found is None:
+        return text
+    against = against_omega(found, result.omega, unit)
+    if against is not None:
+        # the start-up warns of it: the report and the notebook have no warnings
+        return f"{text}. The file's [motor] drives the start-up alone, but {against}."
+    if found.no_load_speed is None:
+        return text
+    # the steady state is the contract's: a constant torque at the nominal
+    # speed; the file's motor, whose torque falls with speed, runs the start-up
+    return (
+        f"{text}. The file's [motor], {number(found.at(result.omega))} {unit} at "
+        f"the nominal {number(abs(result.omega))} rad/s, drives the start-up alone."
+    )
 
 
 def figure_lines(
@@ -86,11 +102,10 @@ def figure_lines(
     """
     # plain ASCII, as the tables' units rows and the options' messages write units
     kgm2 = "kg m^2"
-    motor = motor_shown(result)
     lines: list[tuple[str, str]] = [
         ("nominal crank speed", speed_text(result.omega)),
         ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
-        ("motor torque", f"{number_text(motor)} N m ({motor_note(motor, result)})"),
+        ("motor torque", motor_text(result)),
         ("coefficient of speed fluctuation", f"delta = {_delta(result.delta)}"),
         (
             "largest speed",

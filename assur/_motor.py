@@ -63,3 +63,20 @@ def validate_motor(motor: object) -> None:
             f"{describe(speed)} rad/s against a torque of {describe(motor.torque)} "
             "N m; expected a speed of the torque's sign (the way the motor turns)",
         )
+
+
+def against_omega(motor: Motor, omega: float, unit: str = "N m") -> str | None:
+    """Return what a motor turning the crank against ``omega`` (rad/s) does, or None.
+
+    The words of the start-up's warning, which the dynamic model's figures repeat
+    beside the file's motor; ``unit`` is the torque's unit as the text around it
+    writes it. None for a motor of ``omega``'s sign.
+    """
+    if omega * motor.torque >= 0:
+        return None
+    sense = "counter-clockwise" if motor.torque > 0 else "clockwise"
+    return (
+        f"the motor turns the crank {sense} (torque {motor.torque:g} {unit}), "
+        f"against the driver's omega = {omega:g} rad/s: the start-up runs the other "
+        "way than every analysis at omega"
+    )

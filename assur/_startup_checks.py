@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-from assur._motor import validate_motor
+from assur._motor import against_omega, validate_motor
 from assur._text import describe
 from assur._vec import integer, real
 from assur._warn import warn
@@ -78,15 +78,10 @@ def _against_omega(mechanism: Mechanism, motor: Motor) -> None:
     The start-up then runs the other way than the steady state, the flywheel's
     sizing and the forces at ``omega``, all shown beside it by ``assur dynamics``.
     """
-    omega = float(mechanism.drivers[0].omega)
-    if omega * motor.torque >= 0:
+    said = against_omega(motor, float(mechanism.drivers[0].omega))
+    if said is None:
         return
-    sense = "counter-clockwise" if motor.torque > 0 else "clockwise"
-    msg = (
-        f"startup: the motor turns the crank {sense} (torque {motor.torque:g} N m), "
-        f"against the driver's omega = {omega:g} rad/s: the start-up runs the other "
-        "way than every analysis at omega; expected a motor of omega's sign"
-    )
+    msg = f"startup: {said}; expected a motor of omega's sign"
     warn(msg, AssurWarning, stacklevel=3)
 
 

@@ -498,17 +498,28 @@ def test_the_motor_torque_s_sign_is_told_for_a_clockwise_crank(capsys, tmp_path)
     # a size and a direction word, as the report and the notebook write it
     assert lines["nominal crank speed"] == "5 rad/s, clockwise"
     assert '<td style="text-align:left">5 rad/s, clockwise</td>' in t._repr_html_()
-    motor = assur.load(path).motor
+    # two sentences: the steady state's torque, then the file's motor, which
+    # turns the crank counter-clockwise, told in the start-up's warning's words
+    from assur._startup_checks import _against_omega
+
+    mech = assur.load(path)
+    with pytest.warns(assur.AssurWarning) as said:
+        _against_omega(mech, mech.motor)
+    warning = str(said[0].message).removeprefix("startup: ").split("; expected")[0]
+    assert warning.startswith("the motor turns the crank counter-clockwise")
     assert lines["motor torque"] == (
         f"{t.motor:.6g} N m (constant, counter-clockwise positive; it brakes: the "
-        "loads drive the crank; it balances the loads' work over a turn at the "
-        f"nominal 5 rad/s; the file's [motor], {motor.at(-5.0):.6g} N m at that "
-        "speed, drives the start-up alone)"
+        f"loads drive the crank). The file's [motor] drives the start-up alone, but "
+        f"{warning}."
     )
     # turning counter-clockwise, the same loads take work: the motor drives
     status, out, _ = run(capsys, "dynamics", WHITWORTH, "--delta", "0.05")
-    assert "(clockwise)" not in out
-    assert "N m (constant; it balances the loads' work over a turn" in out
+    assert ", clockwise" not in out
+    motor = assur.load(WHITWORTH).motor
+    assert (
+        f"N m (constant). The file's [motor], {motor.at(5.0):.6g} N m at the nominal "
+        "5 rad/s, drives the start-up alone.\n"
+    ) in out
     assert "brakes" not in out
 
 
@@ -716,8 +727,8 @@ def test_a_constant_speed_and_a_motor_s_own_speed_are_said(capsys, tmp_path):
     assert "smallest speed" not in lines
     # the file's motor: 10 (1 - 50 / 60) N m at the nominal speed
     assert lines["motor torque"].endswith(
-        "(constant; it balances the loads' work over a turn at the nominal 50 rad/s; "
-        "the file's [motor], 1.66667 N m at that speed, drives the start-up alone)"
+        "(constant). The file's [motor], 1.66667 N m at the nominal 50 rad/s, "
+        "drives the start-up alone."
     )
     periodic = lines["periodic motion"]
     assert re.search(r"delta = [0-9.e-]+, none within the periodic speed's", periodic)

@@ -104,7 +104,13 @@ def test_a_clockwise_crank_s_figures_read_as_the_command_line_s(tmp_path):
     assert row is not None
     assert row[1].startswith(f"{t.motor:.5g} N·m (constant, counter-clockwise positive")
     assert "it brakes: the loads drive the crank" in row[1]
-    # the file's motor is quoted in the page's unit
+    # the file's motor turns the crank the other way: the page says it in the
+    # start-up's warning's words, with the page's unit
+    assert row[1].endswith(
+        "). The file's [motor] drives the start-up alone, but the motor turns the "
+        "crank counter-clockwise (torque 40 N·m), against the driver's omega = -5 "
+        "rad/s: the start-up runs the other way than every analysis at omega."
+    )
     assert "N m" not in row[1]
     # the note above the figures said the motor does "the work the loads take",
     # where the figures say it brakes: the loads give the work it takes

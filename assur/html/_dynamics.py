@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._dynamics_text import motor_note, motor_shown, speed_text
+from assur._dynamics_text import motor_text, speed_text
 from assur._text import crank_angle_text
 from assur.analysis import Table
 from assur.columns import pretty_unit
@@ -85,17 +85,13 @@ def _section(body: str) -> str:
 def _figures_html(result: Any) -> str:
     """Return the figures of the steady state as a small table, and a note."""
     kgm2 = pretty_unit("kg m^2")
-    motor = motor_shown(result)
     top, low = (
         crank_angle_text(a, "°", number) for a in (result.angle_max, result.angle_min)
     )
     rows = [
         ("coefficient of speed fluctuation δ", number(result.delta)),
         ("flywheel on the crank", f"{number(result.flywheel)} {kgm2}"),
-        (
-            "motor torque",
-            f"{number(motor)} N·m ({motor_note(motor, result, 'N·m')})",
-        ),
+        ("motor torque", motor_text(result, "N·m", number)),
         (
             "largest speed",
             f"{number(result.speed_max)} rad/s at {top}",
