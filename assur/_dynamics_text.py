@@ -92,20 +92,24 @@ def motor_text(
 
 
 def figure_lines(
-    result: Any, sizing: Any = None, run: Any = None
+    result: Any,
+    sizing: Any = None,
+    run: Any = None,
+    unit: Callable[[str], str] = str,
 ) -> list[tuple[str, str]]:
     """Return the figures of the steady state (and start-up), as (label, value) lines.
 
     What ``assur dynamics`` prints (aligned) and a notebook shows (a table).
     ``sizing`` is a flywheel's sizing (``assur dynamics --delta``), ``run`` a
-    start-up; a line with an empty label goes on from the one above.
+    start-up; a line with an empty label goes on from the one above. ``unit``
+    writes a plain ASCII unit (``"kg m^2"``) as the table beside the figures does:
+    unchanged on the command line, whose units rows are ASCII.
     """
-    # plain ASCII, as the tables' units rows and the options' messages write units
-    kgm2 = "kg m^2"
+    kgm2 = unit("kg m^2")
     lines: list[tuple[str, str]] = [
         ("nominal crank speed", speed_text(result.omega)),
         ("flywheel", f"{result.flywheel:.6g} {kgm2}"),
-        ("motor torque", motor_text(result)),
+        ("motor torque", motor_text(result, unit("N m"))),
         ("coefficient of speed fluctuation", f"delta = {_delta(result.delta)}"),
         (
             "largest speed",
@@ -228,10 +232,12 @@ def _delta(value: float) -> str:
 def dynamics_html(result: Any) -> str:
     """Return the steady state's figures as a notebook shows them (HTML)."""
     from assur._display import figures_html
+    from assur.columns import pretty_unit
 
     name = result.mechanism.name or "Mechanism"
     caption = f"{name}: dynamic model reduced to the crank"
-    return figures_html(caption, figure_lines(result))
+    # the units of the table below the figures: "kg·m²", not "kg m^2"
+    return figures_html(caption, figure_lines(result, unit=pretty_unit))
 
 
 def startup_html(run: Any) -> str:

@@ -284,7 +284,16 @@ def test_the_dynamic_model_shows_its_figures_and_rows():
     result = assur.dynamics(crank(omega=-10.0, gravity=(0.0, -9.81)), flywheel=0.5)
     page = Page(result._repr_html_())
     figures, rows = page.tables
-    assert [(a, b) for (_, a), (_, b) in figures] == figure_lines(result)
+    shown = [(a, b) for (_, a), (_, b) in figures]
+    assert shown == figure_lines(result, unit=pretty_unit)
+    # the figures write their units as the table below them does: "kg·m²" beside
+    # the column's "kg·m²", where they wrote "kg m^2"
+    units = dict(zip(list(result.columns), [t for _, t in rows[1]][1:], strict=True))
+    assert units["reduced.inertia"] == "kg·m²"
+    assert dict(shown)["flywheel"] == f"0.5 {units['reduced.inertia']}"
+    motor = dict(shown)["motor torque"]
+    assert motor.startswith(f"0 {units['driver.motor']} (constant")
+    assert not any("^" in v or " N m" in v for _, v in shown)
     assert page.captions[1].startswith("dynamic model of ")
     assert page.captions[1].endswith(
         f"{len(result)} rows × {len(result.columns)} columns"
