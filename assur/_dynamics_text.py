@@ -26,7 +26,11 @@ __all__ = [
     "speed_text",
     "startup_html",
     "startup_lines",
+    "swing_text",
 ]
+
+NO_WORK = 1e-12
+"""Work, relative to the kinetic energy, below which a turn's work is round-off."""
 
 
 def speed_text(omega: float, number: Callable[[float], str] = number_text) -> str:
@@ -91,6 +95,24 @@ def motor_text(
     )
 
 
+def swing_text(result: Any, number: Callable[[float], str] = number_text) -> str:
+    """Return the energy swing (J) and, where it is none, why the speed still varies.
+
+    Without loads that do work, the kinetic energy is constant over the turn and
+    the speed varies with the links' reduced inertia alone: a delta beside "0 J"
+    asks for the reason. A swing below 10^-12 of the kinetic energy is round-off.
+    """
+    text = f"{number(result.energy_swing)} J"
+    if result.speed_max > result.speed_min and (
+        result.energy_swing <= NO_WORK * result.energy
+    ):
+        text += (
+            ". No load does work: the speed varies with the links' reduced inertia "
+            "alone."
+        )
+    return text
+
+
 def figure_lines(
     result: Any,
     sizing: Any = None,
@@ -119,7 +141,7 @@ def figure_lines(
             "smallest speed",
             f"{result.speed_min:.6g} rad/s at {crank_angle_text(result.angle_min)}",
         ),
-        ("energy swing", f"{result.energy_swing:.6g} J"),
+        ("energy swing", swing_text(result)),
         ("kinetic energy at the reference pose", f"{result.energy:.6g} J"),
         (
             "internal grid",

@@ -824,3 +824,20 @@ def test_a_table_named_as_a_folder_is_refused_before_the_model(
     line = one_error(capsys, "dynamics", WHITWORTH, "--delta", "0.05", option, tmp_path)
     fault = "cannot write the file (it is a folder); expected a file"
     assert line == f"assur: error: {tmp_path}: {fault}"
+
+
+def test_a_speed_that_varies_without_work_is_explained(capsys):
+    # no loads: "energy swing 0 J" stood beside "delta = 0.254" with no word why
+    path = EXAMPLES / "slider_crank_exercise.toml"
+    t = assur.dynamics(assur.load(path), [0.0])
+    assert t.energy_swing == 0.0 < t.delta
+    status, out, _ = run(capsys, "dynamics", path, "--angles", "0")
+    assert status == 0
+    why = "No load does work: the speed varies with the links' reduced inertia alone."
+    assert figures(out)["energy swing"] == f"0 J. {why}"
+    # the notebook's figures say it too
+    assert f"0 J. {why}</td>" in t._repr_html_().replace("&#x27;", "'")
+    # loads that do work over the turn: the swing needs no word
+    status, out, _ = run(capsys, "dynamics", WHITWORTH, "--delta", "0.05")
+    assert figures(out)["energy swing"].endswith(" J")
+    assert "No load does work" not in out

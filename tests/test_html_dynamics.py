@@ -118,3 +118,18 @@ def test_a_clockwise_crank_s_figures_read_as_the_command_line_s(tmp_path):
     assert note is not None
     assert "the work the loads take" not in note[1]
     assert "balances the loads'" in note[1]
+
+
+def test_a_speed_that_varies_without_work_is_explained():
+    # no loads: the report's "energy swing 0 J" stood beside a delta of 0.254
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    angles = default_positions(mech)[::30]
+    part = html.unescape(section(render_report(mech, angles)))
+    t = assur.dynamics(mech, angles)
+    assert t.energy_swing == 0.0 < t.delta
+    row = re.search(r'<th scope="row">energy swing</th><td>(.*?)</td>', part)
+    assert row is not None
+    assert row[1] == (
+        "0 J. No load does work: the speed varies with the links' reduced inertia "
+        "alone."
+    )

@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from assur._dynamics_text import motor_text, speed_text
+from assur._dynamics_text import motor_text, speed_text, swing_text
 from assur._text import crank_angle_text
 from assur.analysis import Table
 from assur.columns import pretty_unit
@@ -100,7 +100,7 @@ def _figures_html(result: Any) -> str:
             "smallest speed",
             f"{number(result.speed_min)} rad/s at {low}",
         ),
-        ("energy swing", f"{number(result.energy_swing)} J"),
+        ("energy swing", swing_text(result, number)),
     ]
     if not result.speed_max > result.speed_min:
         # nothing varies over the turn: no place of the largest or smallest speed
