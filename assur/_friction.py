@@ -23,7 +23,9 @@ the group against its friction: it locks.
 from __future__ import annotations
 
 import functools
+from collections.abc import Mapping, Sequence, Set
 from dataclasses import dataclass
+from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -142,9 +144,9 @@ def friction_wrench(
 
 def _with(
     loads: list[Wrench],
-    pairs: list[PairPlan],
-    wrenches: dict[str, Wrench],
-    inside: set[int],
+    pairs: Sequence[PairPlan],
+    wrenches: Mapping[str, Sequence[Leaf]],
+    inside: Set[int],
 ) -> list[Wrench]:
     """Return ``loads`` with each pair's friction on those of its links in the group."""
     out = list(loads)
@@ -215,13 +217,33 @@ class Sizing:
     pair's friction wrench per unit of its reaction (see :func:`_unit`); ``start``
     each pair's reaction without the group's friction (see :func:`_reaction`);
     ``response[p][q]`` pair q's reaction for a unit of pair p's friction alone.
+    Its arrays are read-only: the solve and the note both read one record.
     """
 
-    pairs: list[PairPlan]
-    inside: set[int]
-    units: dict[str, Wrench]
-    start: list[Any]
-    response: list[list[Any]]
+    pairs: tuple[PairPlan, ...]
+    inside: frozenset[int]
+    units: Mapping[str, tuple[Leaf, ...]]
+    start: tuple[Any, ...]
+    response: tuple[tuple[Any, ...], ...]
+
+    def __post_init__(self) -> None:
+        """Store tuples, read-only views of the arrays and a read-only map of units."""
+        object.__setattr__(self, "pairs", tuple(self.pairs))
+        object.__setattr__(self, "inside", frozenset(self.inside))
+        units = {k: tuple(_fixed(a) for a in w) for k, w in self.units.items()}
+        object.__setattr__(self, "units", MappingProxyType(units))
+        object.__setattr__(self, "start", tuple(_fixed(a) for a in self.start))
+        response = tuple(tuple(_fixed(a) for a in r) for r in self.response)
+        object.__setattr__(self, "response", response)
+
+
+def _fixed(leaf: Leaf) -> Leaf:
+    """Return a read-only view of an array (a float as it is)."""
+    if not isinstance(leaf, np.ndarray):
+        return leaf
+    view = leaf.view()
+    view.flags.writeable = False
+    return view
 
 
 def sizing(
@@ -233,17 +255,17 @@ def sizing(
 ) -> Sizing | None:
     """Return a group's system for its reactions' sizes (None: it has no friction)."""
     base = solver.equilibrium(bodies, loads)
-    pairs = [p for p in base.pairs if p.friction > 0.0]
+    pairs = tuple(p for p in base.pairs if p.friction > 0.0)
     if not pairs:
         return None
-    inside = set(base.bodies)
-    units = {p.name: _unit(p, bodies, rate(p, bodies, rest)) for p in pairs}
-    start = [_reaction(p, bodies, base, n) for p in pairs]
+    inside = frozenset(base.bodies)
+    units = {p.name: tuple(_unit(p, bodies, rate(p, bodies, rest))) for p in pairs}
+    start = tuple(_reaction(p, bodies, base, n) for p in pairs)
     # each pair's reactions for a unit of one pair's friction alone: the reactions
     # are linear in the loads, and constant zero loads keep these solves cheap
     zero: list[Wrench] = [[0.0, 0.0, 0.0] for _ in loads]
-    response = [
-        [
+    response = tuple(
+        tuple(
             _reaction(
                 q,
                 bodies,
@@ -251,9 +273,9 @@ def sizing(
                 n,
             )
             for q in pairs
-        ]
+        )
         for p in pairs
-    ]
+    )
     return Sizing(pairs, inside, units, start, response)
 
 
@@ -337,7 +359,7 @@ def solve_group(
     )
 
 
-def _along(pair: PairPlan, bodies: list[Motion], unit: Wrench) -> Leaf:
+def _along(pair: PairPlan, bodies: list[Motion], unit: Sequence[Leaf]) -> Leaf:
     """Return a prismatic pair's unit friction force along its slide line (N)."""
     assert pair.axis is not None
     ex, ey = direction(bodies[pair.first], pair.axis, 0)

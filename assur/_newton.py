@@ -8,6 +8,7 @@ zero in steps and follows the solution that grows from the frictionless one.
 from __future__ import annotations
 
 import functools
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -197,7 +198,9 @@ def _followed(
 
 
 def _signs(
-    start: list[Any], response: list[list[Any]], held: list[Any] | None = None
+    start: Sequence[Any],
+    response: Sequence[Sequence[Any]],
+    held: Sequence[Any] | None = None,
 ) -> tuple[tuple[bool, ...], list[Any], list[list[Any]]]:
     """Return which pairs' normal forces are held on their frictionless side.
 

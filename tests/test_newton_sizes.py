@@ -12,6 +12,7 @@ from __future__ import annotations
 from types import SimpleNamespace
 
 import numpy as np
+import pytest
 
 from assur._friction import Sizing, newton_steps
 from assur._newton import TOLERANCE, _signs, _sizes
@@ -20,11 +21,11 @@ from assur._newton import TOLERANCE, _signs, _sizes
 def _revolute(start: tuple[float, float], response: tuple[float, float]) -> Sizing:
     """One revolute pair's system: its reaction ``start + s * response`` (N)."""
     return Sizing(
-        [SimpleNamespace(kind="R")],
-        set(),
+        (SimpleNamespace(kind="R"),),
+        frozenset(),
         {},
-        [np.array([start])],
-        [[np.array([response])]],
+        (np.array([start]),),
+        ((np.array([response]),),),
     )
 
 
@@ -88,3 +89,24 @@ def test_newton_steps_are_none_where_newton_does_not_settle() -> None:
     # s = |1 + 2 s| has no solution: Newton swings between -1 and -1/3
     system = _revolute((1.0, 0.0), (2.0, 0.0))
     assert newton_steps(system, [], None, 1e-6) is None
+
+
+def test_a_sizing_cannot_be_changed_once_made() -> None:
+    start, response = np.array([[3.0, 4.0]]), np.array([[0.5, 0.2]])
+    unit = np.array([-0.1])
+    system = Sizing(
+        [SimpleNamespace(kind="R", name="B")], {1, 2}, {"B": [0.0, 0.0, unit]},
+        [start], [[response]],
+    )  # fmt: skip
+    assert isinstance(system.pairs, tuple)
+    assert isinstance(system.inside, frozenset)
+    assert isinstance(system.start, tuple)
+    assert all(isinstance(row, tuple) for row in system.response)
+    with pytest.raises(TypeError):
+        system.units["C"] = (0.0, 0.0, 0.0)  # type: ignore[index]
+    for array in (system.start[0], system.response[0][0], system.units["B"][2]):
+        with pytest.raises(ValueError, match="read-only"):
+            array[0] = 0.0
+    # the record holds read-only views: the caller's own arrays are left as they were
+    assert start.flags.writeable
+    assert response.flags.writeable
