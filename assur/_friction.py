@@ -5,9 +5,9 @@ rotation of its links with a couple of magnitude f r |R| (R its reaction force):
 reaction is tangent to the friction circle of radius f r. A prismatic pair resists
 the slide with a force f |N| (N its normal force) along the slide line at the pair's
 point. Kinetic friction only: a pair whose links do not move relative to each other
-has none. "Do not move" has a tolerance: a relative speed below ``STILL`` times the
-mechanism's fastest motion at that position is rounding, not motion, and its sign
-would pick the friction's sense at random.
+has none. "Do not move" has a tolerance, :mod:`assur._still`'s: a relative speed
+below a small share of the mechanism's fastest motion at that position is rounding,
+not motion, and its sign would pick the friction's sense at random.
 
 Friction makes a group's equilibrium depend on the sizes ``s`` of its own reactions.
 Given the senses of the relative motions, the reactions are affine in those sizes:
@@ -22,7 +22,6 @@ the group against its friction: it locks.
 
 from __future__ import annotations
 
-import functools
 from collections.abc import Mapping, Sequence, Set
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -31,31 +30,24 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._newton import QUICK, TOLERANCE, _norm, _raised, _signs, _sizes
+from assur._still import Still, rate
 from assur._vec import Leaf, Mask, add, cross, dot, full, mul, norm, sub
 from assur.groups._motion import Motion, direction, point, rotated
-from assur.groups._pairs import PairPlan, slide
+from assur.groups._pairs import PairPlan
 from assur.groups._protocol import Equilibrium, Reaction, Wrench
 
 if TYPE_CHECKING:
     from assur.groups._protocol import GroupSolver
 
 __all__ = [
-    "STILL",
     "GroupFriction",
     "Sizing",
-    "Still",
     "friction_wrench",
     "newton_steps",
-    "rate",
     "sizing",
     "solve_group",
-    "still",
     "substituted",
 ]
-
-STILL = 1e-11
-"""A pair's relative speed, as a fraction of the fastest motion of the mechanism at
-that position (rad/s, or m/s per mechanism size), below which the pair is at rest."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -77,45 +69,6 @@ class GroupFriction:
     locked: Mask | None
     iterations: int
     raised: bool = False
-
-
-@dataclass(frozen=True, slots=True)
-class Still:
-    """The speeds below which a pair is at rest, per position.
-
-    ``turn`` is the relative angular speed (rad/s) below which a revolute pair is
-    at rest; a prismatic pair's slide speed is compared with ``turn * size`` (m/s).
-    """
-
-    turn: Leaf
-    size: float
-
-
-def still(bodies: list[Motion], size: float) -> Still:
-    """Return the rest thresholds of a batch whose motions are ``bodies``.
-
-    The fastest motion is the largest angular speed of a link or speed of a link's
-    origin per mechanism ``size`` (m); its ``STILL`` fraction is the threshold.
-    """
-    parts = [np.abs(b.phi[1]) for b in bodies]
-    # a mechanism with every joint at one point has no size to divide by
-    parts += [norm(b.ox[1], b.oy[1]) / max(size, 1e-12) for b in bodies]
-    return Still(STILL * functools.reduce(np.maximum, parts, 0.0), size)
-
-
-def rate(pair: PairPlan, bodies: list[Motion], rest: Still) -> Leaf:
-    """Return the relative speed a pair's friction opposes, zero where at rest.
-
-    The second link's angular speed relative to the first's (rad/s), or the slide's
-    speed (m/s); a speed below the ``rest`` threshold is returned as exactly zero.
-    """
-    if pair.kind == "R":
-        speed = sub(bodies[pair.second].phi[1], bodies[pair.first].phi[1])
-        limit = rest.turn
-    else:
-        speed = slide(pair, bodies, 1)
-        limit = mul(rest.turn, rest.size)
-    return np.where(np.abs(speed) > limit, speed, 0.0)
 
 
 def friction_wrench(

@@ -21,9 +21,10 @@ from typing import Any
 import numpy as np
 
 from assur._crosscheck import residual, virtual_power
-from assur._friction import Still, friction_wrench, rate, solve_group, still
+from assur._friction import friction_wrench, solve_group
 from assur._kinematics import KinematicState
 from assur._loads import LoadPlan, table_values
+from assur._still import Still, rate, still
 from assur._vec import Array, Leaf, Mask, add, cross, dot, full, mul, sub, take_rows
 from assur.groups._motion import Motion, direction, point, rotated
 from assur.groups._pairs import PairPlan

@@ -68,6 +68,8 @@ RANKS = {
     "assur.plan": 4,
     "assur._loads": 5,
     "assur._friction": 5,
+    # when a pair is at rest, below the friction that reads it
+    "assur._still": 5,
     # the sizes of a group's reactions with friction, by Newton's method
     "assur._newton": 5,
     "assur._follow": 5,

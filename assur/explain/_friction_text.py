@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from assur._friction import Still, rate, still
+from assur._still import Still, rate, still
 from assur._vec import Array
 from assur.explain._position import Position, at, perp, value
 from assur.explain._tex import name, num, par, plain, vec
