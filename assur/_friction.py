@@ -46,6 +46,7 @@ __all__ = [
     "newton_steps",
     "sizing",
     "solve_group",
+    "solve_sized",
     "substituted",
 ]
 
@@ -169,8 +170,9 @@ class Sizing:
     ``pairs`` are its pairs with friction; ``inside`` its links; ``units`` each
     pair's friction wrench per unit of its reaction (see :func:`_unit`); ``start``
     each pair's reaction without the group's friction (see :func:`_reaction`);
-    ``response[p][q]`` pair q's reaction for a unit of pair p's friction alone.
-    Its arrays are read-only: the solve and the note both read one record.
+    ``response[p][q]`` pair q's reaction for a unit of pair p's friction alone;
+    ``base`` the group's equilibrium without its own pairs' friction, solved once
+    for both the solve and the note. Its arrays are read-only.
     """
 
     pairs: tuple[PairPlan, ...]
@@ -178,6 +180,7 @@ class Sizing:
     units: Mapping[str, tuple[Leaf, ...]]
     start: tuple[Any, ...]
     response: tuple[tuple[Any, ...], ...]
+    base: Equilibrium
 
     def __post_init__(self) -> None:
         """Store tuples, read-only views of the arrays and a read-only map of units."""
@@ -229,7 +232,7 @@ def sizing(
         )
         for p in pairs
     )
-    return Sizing(pairs, inside, units, start, response)
+    return Sizing(pairs, inside, units, start, response, base)
 
 
 def solve_group(
@@ -246,8 +249,16 @@ def solve_group(
     their reactions.
     """
     system = sizing(solver, bodies, loads, n, rest)
-    if system is None:
-        return None
+    return None if system is None else solve_sized(solver, bodies, loads, system)
+
+
+def solve_sized(
+    solver: GroupSolver, bodies: list[Motion], loads: list[Wrench], system: Sizing
+) -> GroupFriction:
+    """Solve a group's equilibrium with friction from its :func:`sizing` ``system``.
+
+    ``loads`` are the ones ``system`` was made with.
+    """
     pairs, inside, units = system.pairs, system.inside, system.units
     start, response = system.start, system.response
     first = np.stack([_norm(r) for r in start], axis=-1)

@@ -17,7 +17,14 @@ import pytest
 
 import assur
 from assur.explain import explain
-from assur.explain._group_friction_text import _newton_steps, _spaced, _unsettled
+from assur.explain._friction_text import rubbing
+from assur.explain._group_friction_text import (
+    _newton_steps,
+    _spaced,
+    _unsettled,
+    newton_start,
+    without_own,
+)
 
 from .test_explain import EXAMPLES, check, printed, statements, tex
 
@@ -371,3 +378,28 @@ def test_newton_s_steps_left_uncounted_leave_no_words() -> None:
     said = _unsettled(tried, _newton_steps(None))
     assert "Newton's method on them, which the analysis uses" in said
     assert "()" not in said
+
+
+@pytest.mark.parametrize("path", [FRICTION, BEARINGS], ids=lambda p: p.stem)
+def test_the_note_solves_a_group_without_its_friction_once(monkeypatch, path) -> None:
+    from assur.explain._solve import position
+
+    pos = position(assur.load(path), 45.0)
+    assert pos.result is not None
+    solver_of = {s.bodies: s for s in pos.plan.solvers}
+    groups = [rec for rec in pos.result.groups if rubbing(rec.pairs)]
+    assert groups
+    for rec in groups:
+        solver, loads = solver_of[rec.bodies], without_own(pos, rec)
+        calls: list[bool] = []
+        solve = type(solver).equilibrium
+
+        def counted(self, bodies, given, solve=solve, calls=calls, loads=loads):
+            calls.append(given is loads)  # the loads without the group's friction
+            return solve(self, bodies, given)
+
+        monkeypatch.setattr(type(solver), "equilibrium", counted)
+        newton_start(pos, rec, solver, loads)
+        monkeypatch.undo()
+        # the start, Newton's solve and its steps read one solve without friction
+        assert calls.count(True) == 1

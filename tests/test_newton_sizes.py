@@ -26,6 +26,7 @@ def _revolute(start: tuple[float, float], response: tuple[float, float]) -> Sizi
         {},
         (np.array([start]),),
         ((np.array([response]),),),
+        SimpleNamespace(),
     )
 
 
@@ -96,7 +97,7 @@ def test_a_sizing_cannot_be_changed_once_made() -> None:
     unit = np.array([-0.1])
     system = Sizing(
         [SimpleNamespace(kind="R", name="B")], {1, 2}, {"B": [0.0, 0.0, unit]},
-        [start], [[response]],
+        [start], [[response]], SimpleNamespace(),
     )  # fmt: skip
     assert isinstance(system.pairs, tuple)
     assert isinstance(system.inside, frozenset)

@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from assur._friction import newton_steps, sizing, solve_group, substituted
+from assur._friction import newton_steps, sizing, solve_sized, substituted
 from assur._text import spoken
 from assur.explain._friction_text import (
     at_rest,
@@ -62,12 +62,12 @@ def newton_start(
     :func:`assur._friction.newton_steps`): to the solve's own tolerance, near
     round-off, their count is the machine's arithmetic's at a dead centre.
     """
-    sizes = frictionless(pos, rec, solver, loads)
-    found = solve_group(solver, pos.bodies, loads, 1, at_rest(pos))
+    # one solve without the group's friction serves the start, Newton and its steps
     system = sizing(solver, pos.bodies, loads, 1, at_rest(pos))
-    if found is None or system is None:
-        return sizes, 0, False
-    if found.raised:
+    if system is None:
+        return frictionless(pos, rec, solver, loads), 0, False
+    sizes = _sizes(pos, rec, system.base)
+    if solve_sized(solver, pos.bodies, loads, system).raised:
         return sizes, None, True
     return sizes, newton_steps(system, pos.bodies, rec, SETTLED), False
 
