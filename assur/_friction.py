@@ -220,17 +220,10 @@ def sizing(
     # each pair's reactions for a unit of one pair's friction alone: the reactions
     # are linear in the loads, and constant zero loads keep these solves cheap
     zero: list[Wrench] = [[0.0, 0.0, 0.0] for _ in loads]
+    # one solve per pair with friction, read at every pair
+    alone = [solver.equilibrium(bodies, _with(zero, [p], units, inside)) for p in pairs]
     response = tuple(
-        tuple(
-            _reaction(
-                q,
-                bodies,
-                solver.equilibrium(bodies, _with(zero, [p], units, inside)),
-                n,
-            )
-            for q in pairs
-        )
-        for p in pairs
+        tuple(_reaction(q, bodies, record, n) for q in pairs) for record in alone
     )
     return Sizing(pairs, inside, units, start, response, base)
 

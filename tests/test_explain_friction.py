@@ -401,5 +401,7 @@ def test_the_note_solves_a_group_without_its_friction_once(monkeypatch, path) ->
         monkeypatch.setattr(type(solver), "equilibrium", counted)
         newton_start(pos, rec, solver, loads)
         monkeypatch.undo()
-        # the start, Newton's solve and its steps read one solve without friction
+        # the start, Newton's solve and its steps read one solve without friction;
+        # then one per pair for a unit of its friction, one with the friction found
         assert calls.count(True) == 1
+        assert len(calls) == len(rubbing(rec.pairs)) + 2
