@@ -185,6 +185,8 @@ RANKS = {
     "assur._cli_summary": 12,
     "assur._cli_tables": 12,
     "assur._cli_sweep": 12,
+    # the command line's parser and its commands' options, below the dispatch
+    "assur._cli_commands": 12,
     "assur.cli": 12,
     # the dynamics command's parts: its options checked, the figures it gives, its
     # tables and files written
