@@ -25,12 +25,15 @@ from assur._loads import compile_loads
 from assur._stack import restack, stack_loads, stack_plans
 from assur._variants import Many
 from assur._vec import Array, Mask, is_array, leaves
-from assur.analysis import CHUNK
 from assur.columns import selection
 from assur.plan import Plan
 from assur.table import Table
 
 __all__ = ["CHUNK", "near_change_points", "stacked", "summaries"]
+
+CHUNK = 8192
+"""Rows solved at once in a batch of variants, or a part of a change-point grid: a
+row's temporaries stay below the allocator's mmap threshold (64 kB each)."""
 
 
 def stacked(plans: list[Plan], repeats: int) -> Many:

@@ -31,8 +31,9 @@ if TYPE_CHECKING:
 
 __all__ = ["CHUNK"]
 
-CHUNK = 8192
-"""Rows computed at once when a column needs the links' motions rebuilt."""
+CHUNK = 16384
+"""Rows computed at once when a column needs the links' motions rebuilt (as many as
+a sweep's slice, :data:`assur._state.CHUNK`)."""
 
 
 def _chunked(

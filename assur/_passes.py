@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from assur import _kinematics as _kin
+from assur import _state
 from assur import kinetostatics as _kst
 from assur._branches import branch_function
 from assur._drive import Rates, _at
@@ -21,13 +22,13 @@ from assur._loads import compile_loads
 from assur._paths import PathBranches
 from assur._progress import progress
 from assur._reach import unreached
-from assur._state import CHUNK, jerks
+from assur._state import jerks
 from assur._unexplained import _unexplained
 from assur._vec import Array, Mask, gather
 from assur._warn import held
 from assur.plan import Plan
 
-__all__ = ["CHUNK", "Again"]
+__all__ = ["Again"]
 
 
 def _passes(
@@ -53,8 +54,9 @@ def _passes(
     branch_of = _branch_of(plan) if passed else None
 
     def pieces() -> Iterator[tuple[slice, Any]]:
-        for start in range(0, max(n, 1), CHUNK):  # an empty sweep has one slice
-            rows = slice(start, min(start + CHUNK, n))
+        chunk = _state.CHUNK
+        for start in range(0, max(n, 1), chunk):  # an empty sweep has one slice
+            rows = slice(start, min(start + chunk, n))
             kin, fields, found = _solve_slice(
                 plan, drive[rows], _at(rates, rows), top, loads, branch_of
             )

@@ -18,9 +18,9 @@ from typing import Any, NoReturn
 
 import numpy as np
 
+from assur import _state
 from assur._drive import positions, to_si
 from assur._skipped import Skipped
-from assur._state import CHUNK as SWEEP_SLICE
 from assur._troubles import _change_points
 from assur._vec import Array, full
 from assur._warn import held, warn
@@ -38,9 +38,10 @@ __all__ = ["CHUNK", "Slice", "slices"]
 
 FAILURES = (AssemblyError, SingularConfigurationError, SelfLockingError)
 """The errors of a sweep that fails at some of its positions."""
-CHUNK = 8 * SWEEP_SLICE
+CHUNK = 65536
 """Most driver positions analysed and written at once (a multiple of the library's
-slice, so that every number is computed as in one call over the whole sweep): 65536."""
+slice, :data:`assur._state.CHUNK`, so that every number is computed as in one call
+over the whole sweep)."""
 SLICE_VALUES = 1 << 24
 """Most numbers of one slice's table (128 MB): a mechanism of very many columns
 takes fewer positions at a time (see :func:`_chunk`)."""
@@ -165,8 +166,9 @@ def _chunk(mech: Any, forces: bool) -> int:
     except AssurError:
         return CHUNK  # the analysis of the first slice says what is wrong
     rows = SLICE_VALUES // max(1, columns)
-    if rows >= SWEEP_SLICE:
-        return min(CHUNK, rows // SWEEP_SLICE * SWEEP_SLICE)
+    sweep_slice = _state.CHUNK
+    if rows >= sweep_slice:
+        return min(CHUNK, rows // sweep_slice * sweep_slice)
     return max(64, 1 << max(0, rows.bit_length() - 1))
 
 

@@ -16,10 +16,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
+from assur import _state
 from assur._drive import _at, _no_driver, driver_rates, positions, to_si
 from assur._loads import compile_loads
 from assur._passes import (
-    CHUNK,
     Again,
     _branch_of,
     _kept_rows,
@@ -298,20 +298,21 @@ def report_troubles(
     )
     rates = driver_rates(plan, None, None, n)
     loads = compile_loads(plan) if chosen.forces else None
-    starts = range(0, n, CHUNK)
+    chunk = _state.CHUNK
+    starts = range(0, n, chunk)
     troubles: list[Any] = []
     with held():  # the sweep's own warnings, told by it
         # a sweep passes a change point where one of its slices does (each slice's
         # range takes in the reference pose); each position's branch is its own
         passed = any(
             _change_points(
-                plan, given[a : a + CHUNK], to_si(plan, given[a : a + CHUNK])
+                plan, given[a : a + chunk], to_si(plan, given[a : a + chunk])
             )
             for a in starts
         )
         branch_of = _branch_of(plan) if passed else None
         for a in starts:
-            rows = slice(a, min(a + CHUNK, n))
+            rows = slice(a, min(a + chunk, n))
             drive = to_si(plan, given[rows])
             part = _at(rates, rows)
             _, _, found = _solve_slice(plan, drive, part, chosen.top, loads, branch_of)

@@ -1,7 +1,8 @@
 """Long sweeps on the command line: slice by slice, the same output as one table.
 
-The slices are made small here (8192 positions, the library's own slice) so that a
-sweep of a few tens of thousands of positions crosses several of them.
+The slices are made small here (8192 positions, and the library's own slice as
+many) so that a sweep of a few tens of thousands of positions crosses several of
+them.
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ import numpy as np
 import pytest
 
 import assur
-from assur import _cli_summary, _cli_sweep, _sliced, cli
+from assur import _cli_summary, _cli_sweep, _sliced, _state, cli
 from assur._cli_common import parse_angles
 
 from .conftest import run_cli as run
@@ -32,6 +33,7 @@ WHITWORTH = EXAMPLES / "whitworth.toml"  # its block and lever turn round and ro
 
 @pytest.fixture
 def small_slices(monkeypatch):
+    monkeypatch.setattr(_state, "CHUNK", 8192)
     monkeypatch.setattr(_sliced, "CHUNK", 8192)
 
 
@@ -606,7 +608,12 @@ def test_friction_of_a_prismatic_driver_is_checked_slice_by_slice(capsys, monkey
 
 @pytest.mark.parametrize(
     ("values", "chunk"),
-    [(1 << 24, 65536), (109 * 8192 * 3, 3 * 8192), (109 * 5000, 4096), (10, 64)],
+    [
+        (1 << 24, 65536),
+        (109 * _state.CHUNK * 3, 3 * _state.CHUNK),  # a whole number of the library's
+        (109 * 5000, 4096),
+        (10, 64),
+    ],
 )
 def test_a_slice_holds_a_bounded_number_of_values(monkeypatch, values, chunk):
     # a chain of 300 dyads (17 736 columns) took 65 536 positions a slice: 9 GB

@@ -445,10 +445,13 @@ def test_a_triad_near_a_change_point_folds_where_the_oracle_does():
 
 
 @pytest.mark.parametrize("step", [1.0, 0.04])
-def test_positions_reached_the_other_way_round_are_said_once(step):
+def test_positions_reached_the_other_way_round_are_said_once(monkeypatch, step):
     """A one-degree sweep got 215 deg as -145 deg, on the backward path, past the
     forward path's fold at 214.3 deg: the poses jumped between 214 and 215 deg
     without a word. Said once, for a sweep of several slices too (0.04 deg)."""
+    from assur import _state
+
+    monkeypatch.setattr(_state, "CHUNK", 4096)  # 9000 positions: three slices
     angles = np.arange(0.0, 360.0, step)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")

@@ -550,10 +550,13 @@ def test_a_journal_of_radius_zero_has_no_friction_couple():
         joint_a(radius=None)
 
 
-def test_a_lock_is_counted_over_every_slice():
+def test_a_lock_is_counted_over_every_slice(monkeypatch):
     # the message counted the positions of the first slice the group locked in
     import re
 
+    from assur import _state
+
+    monkeypatch.setattr(_state, "CHUNK", 8192)
     text = (EXAMPLES / "slider_crank_locking.toml").read_text(encoding="utf-8")
     mech = assur.loads(text.replace("friction = 0.8", "friction = 1.3"))
     # 36000 positions: slices of 8192 (81.92 deg), one of them ending at 270 deg
