@@ -1,15 +1,16 @@
 """The command line's parser: its commands and each command's options.
 
 :func:`_parser` builds it for :func:`assur.cli.main`, with the commands of
-:mod:`assur.dynamics_cli` and (when present) :mod:`assur.pictures_cli`, whose
-handlers it puts in :data:`COMMANDS`; the commands of :mod:`assur.cli` itself are
-its ``_cmd_*`` functions.
+:mod:`assur.dynamics_cli` and (when present) :mod:`assur.pictures_cli`, and returns
+every command's handler with it, a new mapping on every call: no registry is kept
+here. The commands of :mod:`assur.cli` itself are its ``_cmd_*`` functions, which
+that module passes in.
 """
 
 from __future__ import annotations
 
 import argparse
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from typing import Any
 
 from assur._cli_common import add_angle_option
@@ -24,14 +25,21 @@ from assur._cli_types import (
 )
 from assur._troubles import SKIPPED_WHY, UNREACHED_WHY
 
-__all__ = ["COMMANDS", "QUIET", "_parser"]
+__all__ = ["QUIET", "Handler", "_parser"]
 
-COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {}
+Handler = Callable[[argparse.Namespace], int]
+"""A command's function: its parsed arguments in, the exit status out."""
 QUIET = "no progress bars, no 'wrote ...' lines or notes (errors and warnings stay)"
 
 
-def _parser() -> tuple[_Parser, list[str]]:
-    """Return the parser and the names of its commands."""
+def _parser(own: Mapping[str, Handler]) -> tuple[_Parser, dict[str, Handler]]:
+    """Return the parser and every command's handler, by name, in the parser's order.
+
+    ``own`` holds the handlers of the commands of :mod:`assur.cli` itself (above
+    this module); the others are those of :mod:`assur.dynamics_cli` and
+    :mod:`assur.pictures_cli`. Every call builds a new parser and a new mapping, so
+    what one caller changes in its mapping no other call sees.
+    """
     parser = _Parser(
         prog="assur",
         description="Kinetostatic analysis of planar linkages, built on Assur groups.",
@@ -109,8 +117,7 @@ def _parser() -> tuple[_Parser, list[str]]:
     )
     from assur import dynamics_cli
 
-    COMMANDS.update(dynamics_cli.register(sub))
-    _add_picture_commands(sub)
+    handlers = {**own, **dynamics_cli.register(sub), **_picture_commands(sub)}
     for told in sub._choices_actions:  # else COMMAND --help lists options alone
         sub.choices[told.dest].description = told.help
     for p in sub.choices.values():
@@ -118,13 +125,14 @@ def _parser() -> tuple[_Parser, list[str]]:
         p.add_argument(
             "-q", "--quiet", action="store_true", default=argparse.SUPPRESS, help=QUIET
         )
-    return parser, list(sub.choices)
+    # in the parser's order, which its listings and hints follow
+    return parser, {name: handlers[name] for name in sub.choices}
 
 
-def _add_picture_commands(sub: Any) -> None:
-    """Register the commands of :mod:`assur.pictures_cli` when it is present."""
+def _picture_commands(sub: Any) -> dict[str, Handler]:
+    """Add the commands of :mod:`assur.pictures_cli`, when present; return handlers."""
     try:
         from assur import pictures_cli
     except ImportError:  # pragma: no cover - pictures are optional in a slim build
-        return
-    COMMANDS.update(pictures_cli.register(sub))
+        return {}
+    return pictures_cli.register(sub)

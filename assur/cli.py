@@ -18,8 +18,8 @@ import warnings
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from assur import _start
-from assur._cli_commands import COMMANDS, _parser
+from assur import _cli_commands, _start
+from assur._cli_commands import Handler
 from assur._cli_common import (
     check_not_input,
     is_stdout,
@@ -29,6 +29,7 @@ from assur._cli_common import (
     quiet,
     skip_hint,
 )
+from assur._cli_parser import _Parser
 from assur._cli_process import (
     _closed_streams,
     _lenient_streams,
@@ -102,7 +103,7 @@ def _main(argv: list[str]) -> int:
             # --help was printed (or a usage error): it must reach its reader
             status = int(exc.code or 0)
         else:
-            handler = COMMANDS.get(args.command) or globals()[f"_cmd_{args.command}"]
+            handler = commands[args.command]
         if handler is not None:
             status = _run(handler, args)
         sys.stdout.flush()
@@ -118,6 +119,21 @@ def _main(argv: list[str]) -> int:
         )
         return 2
     return status
+
+
+def _parser() -> tuple[_Parser, dict[str, Handler]]:
+    """Return the parser and every command's handler, by name, in the parser's order.
+
+    A new mapping on every call; the ``_cmd_*`` functions of this module are read
+    when it is built, so a test that replaces one is obeyed by the next run.
+    """
+    own = {
+        "structure": _cmd_structure,
+        "kinematics": _cmd_kinematics,
+        "forces": _cmd_forces,
+        "explain": _cmd_explain,
+    }
+    return _cli_commands._parser(own)
 
 
 def _joined_ranges(argv: list[str]) -> list[str]:
