@@ -216,6 +216,36 @@ def test_friction_s_power_is_said_as_the_driver_sees_it(
     assert a * b == pytest.approx(c, abs=0.005)  # to the last digit written
 
 
+@pytest.mark.parametrize(
+    ("stem", "angle"),
+    [
+        ("slider_crank_friction", 45.0),
+        ("slider_crank_locking", 90.0),
+        ("four_bar_bearings", 45.0),
+        ("omega = 209.4395102", 45.0),
+    ],
+)
+def test_friction_s_change_reads_alike_wherever_it_is_quoted(
+    stem: str, angle: float, tmp_path: Path
+) -> None:
+    # the difference read 16.2 in its subtraction and its share, and 16.19731 as
+    # the power's factor: a student took them for two torques
+    if stem.startswith("omega"):
+        path = _variant(tmp_path, "slider_crank_friction", ("omega = 200.0", stem))
+    else:
+        path = EXAMPLES / f"{stem}.toml"
+    note = str(explain(assur.load(path), angle))
+    sentence = next(x for x in note.splitlines() if "friction changes it by" in x)
+    said = re.search(r"= -?[0-9.]+ - \(?-?[0-9.]+\)? = (-?)([0-9.]+)\\ ", sentence)
+    share = re.search(r"\\frac\{([0-9.]+)\}", sentence)
+    factor = re.search(r"= (-?)([0-9.]+) \\cdot \(?-?[0-9.]+\)? = ", sentence)
+    assert said is not None, sentence
+    assert share is not None, sentence
+    assert factor is not None, sentence
+    assert said.groups() == factor.groups()
+    assert share.group(1) == said.group(2)
+
+
 def test_friction_rows_per_unit_speed_are_not_called_losses(tmp_path: Path) -> None:
     # per unit speed of one driver, a pair's friction power may be positive
     text = (EXAMPLES / "five_bar_two_cranks.toml").read_text(encoding="utf-8")

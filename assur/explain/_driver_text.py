@@ -91,15 +91,21 @@ def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
     extra = value - ideal
     d = pos.plan.drivers[i]
     speed = _speed(pos, d)
+    # the difference is quoted three times (its result, the share's numerator, the
+    # power's factor): written once, with the decimals its product needs, so that
+    # 16.2 and 16.19731 do not read as two torques
+    places = _decimals(speed)
     words = (
         f" Without friction the same motion needs ${sym}{IDEAL} = {num(ideal)}"
         f"{unit}$ (read off the lever below); friction changes it by ${sym} - "
-        f"{sym}{IDEAL} = {num(value)} - {par(ideal)} = {num(extra)}{unit}$"
+        f"{sym}{IDEAL} = {num(value)} - {par(ideal)} = "
+        f"{num(extra, least=places)}{unit}$"
     )
     # a frictionless load that is round-off (at a dead centre) has no size to compare
     if abs(ideal) > ZERO * _size(pos, i):
+        share = num(abs(extra), least=places)
         words += (
-            f" ($100 \\cdot \\frac{{{num(abs(extra))}}}{{{num(abs(ideal))}}} = "
+            f" ($100 \\cdot \\frac{{{share}}}{{{num(abs(ideal))}}} = "
             f"{num(100.0 * abs(extra) / abs(ideal))}\\,\\%$ of $|{sym}{IDEAL}|$)"
         )
     if not speed:
@@ -114,7 +120,7 @@ def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
     less = "less back" if value * speed < 0 else "more"
     return (
         words + f", and the driver {how} $({sym} - {sym}{IDEAL})\\,{rate} = "
-        f"{num(extra, least=_decimals(speed))} \\cdot "
+        f"{num(extra, least=places)} \\cdot "
         f"{par(speed, least=_decimals(extra))} = "
         f"{num(extra * speed)}$ W {less}:{whose} the power friction takes. (At one "
         "position the power may flow either way, so an efficiency means little "
