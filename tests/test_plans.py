@@ -230,7 +230,7 @@ def test_force_polygons_close_with_friction(path: Path, angle: float) -> None:
     try:
         for ax in fig.axes:
             # open by more than round-off, the title gives the gap in mm
-            assert ": the polygon closes\n" in ax.get_title(), ax.get_title()
+            assert ax.get_title().endswith(": the polygon closes"), ax.get_title()
     finally:
         plt.close(fig)
 
@@ -847,3 +847,23 @@ def test_a_dead_centre_s_polygon_draws_its_sides_apart(angle: float) -> None:
         np.testing.assert_allclose(tips[-1], 0.0, atol=1e-9)  # the polygon closes
     finally:
         plt.close(fig)
+
+
+@pytest.mark.parametrize("drawing", ["velocity", "acceleration", "polygons"])
+def test_a_plan_s_scale_is_written_once_in_its_key(drawing: str) -> None:
+    import matplotlib.pyplot as plt
+
+    # the force polygon wrote μF in its title and again in its legend
+    table = assur.forces(assur.load(EXAMPLES / "slider_crank_friction.toml"), [45.0])
+    if drawing == "polygons":
+        axes = polygons.force_polygons(table).axes
+    else:
+        axes = [getattr(plans, f"{drawing}_plan")(table)]
+    try:
+        for ax in axes:
+            key = [t.get_text() for t in ax.get_legend().get_texts()]
+            texts = [ax.get_title(), *key, *(t.get_text() for t in ax.texts)]
+            assert sum(t.count("μ") for t in texts) == 1, texts
+            assert any(t.startswith("scale: μ") for t in key), key
+    finally:
+        plt.close(axes[0].figure)

@@ -136,8 +136,7 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> list[Name]:
     ax.grid(True, lw=0.4, alpha=0.4)
     ax.set_xlabel("mm of the polygon")
     ax.set_title(
-        f"group {literal(rec.label)}: {_closing(float(np.hypot(*tip)), longest)}\n"
-        f"scale: μF = {quantity(mu, 'N/mm', 6)}",
+        f"group {literal(rec.label)}: {_closing(float(np.hypot(*tip)), longest)}",
         fontsize=9,
     )
     # the colours of the mechanism drawings, so a reaction reads alike in both
@@ -148,7 +147,10 @@ def _polygon(ax: Any, pos: Position, rec: Any, solved: set[int]) -> list[Name]:
     }
     shown = {c for _, _, c in sequence}
     entries = [(text, c) for c, text in kinds.items() if c in shown]
-    _legend(ax, entries, f"μF = {quantity(mu, 'N/mm', 6)}")
+    # the scale once, in the key beside the drawing, as a textbook writes μF by its
+    # polygon and as the velocity and acceleration plans write theirs: the title
+    # says what the drawing shows (its group, whether it closes)
+    _legend(ax, entries, f"scale: μF = {quantity(mu, 'N/mm', 6)}")
     return names
 
 
