@@ -135,20 +135,21 @@ def substituted(
     bodies: list[Motion],
     loads: list[Wrench],
     sizes: dict[str, float],
-    rest: Still,
+    system: Sizing,
 ) -> Equilibrium:
     """Return a group's equilibrium with its pairs' friction taken from ``sizes``.
 
     One step of repeated substitution, the hand method the note shows: each pair's
     friction load is its size (N, by pair name) times its law's factor, a known
     load, and the group is solved as without friction. ``loads`` are the links'
-    loads without the group's own friction (one position).
+    loads without the group's own friction (one position), those ``system`` (its
+    :func:`sizing`) was made with: its pairs, links and factors serve every step,
+    so that a step solves the group once, with the friction loads.
     """
-    base = solver.equilibrium(bodies, loads)
-    pairs = [p for p in base.pairs if p.name in sizes]
-    units = {p.name: _unit(p, bodies, rate(p, bodies, rest)) for p in pairs}
+    pairs = [p for p in system.pairs if p.name in sizes]
+    units = system.units
     friction = {p.name: [mul(sizes[p.name], w) for w in units[p.name]] for p in pairs}
-    return solver.equilibrium(bodies, _with(loads, pairs, friction, set(base.bodies)))
+    return solver.equilibrium(bodies, _with(loads, pairs, friction, system.inside))
 
 
 def _reaction(pair: PairPlan, bodies: list[Motion], record: Equilibrium, n: int) -> Any:

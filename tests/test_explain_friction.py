@@ -9,7 +9,9 @@ friction terms of the balancing load and of Zhukovsky's lever. The parser of
 
 from __future__ import annotations
 
+import functools
 import re
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -22,6 +24,7 @@ from assur.explain._group_friction_text import (
     _newton_steps,
     _spaced,
     _unsettled,
+    group_sizing,
     newton_start,
     without_own,
 )
@@ -399,9 +402,58 @@ def test_the_note_solves_a_group_without_its_friction_once(monkeypatch, path) ->
             return solve(self, bodies, given)
 
         monkeypatch.setattr(type(solver), "equilibrium", counted)
-        newton_start(pos, rec, solver, loads)
+        newton_start(pos, rec, solver, loads, group_sizing(pos, solver, loads))
         monkeypatch.undo()
         # the start, Newton's solve and its steps read one solve without friction;
         # then one per pair for a unit of its friction, one with the friction found
         assert calls.count(True) == 1
         assert len(calls) == len(rubbing(rec.pairs)) + 2
+
+
+@pytest.mark.parametrize(
+    ("path", "angle"),
+    [
+        (FRICTION, 45.0),
+        (BEARINGS, 100.0),
+        (EXAMPLES / "slider_crank_locking.toml", 240.0),  # settles slowly
+        (EXAMPLES.parent / "docs/files/errors/locking.toml", 250.0),  # it locks
+    ],
+    ids=lambda x: getattr(x, "stem", x),
+)
+def test_the_note_s_substitution_solves_without_friction_once_a_group(
+    monkeypatch, path: Path, angle: float
+) -> None:
+    from assur.explain import _group_friction_text as worked
+    from assur.explain import _locked_text as locked
+    from assur.explain._solve import position
+
+    # each step of repeated substitution solved the group without its friction
+    # again, only to read its pairs and links
+    mech = assur.load(path)
+    kinds = {type(s) for s in position(mech, 0.0).plan.solvers}
+    given: list[list] = []  # the loads without each group's friction, as made
+    solves: list[int] = []  # how often each was solved as it is
+
+    def kept(pos, rec, made=without_own):
+        given.append(made(pos, rec))
+        solves.append(0)
+        return given[-1]
+
+    def counted(self, bodies, loads, solve):
+        for k, own in enumerate(given):
+            solves[k] += loads is own
+        return solve(self, bodies, loads)
+
+    for kind in kinds:
+        wrapped = functools.partialmethod(counted, solve=kind.equilibrium)
+        monkeypatch.setattr(kind, "equilibrium", wrapped)
+    monkeypatch.setattr(worked, "without_own", kept)
+    monkeypatch.setattr(locked, "without_own", kept)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", assur.AssurWarning)  # where it locks
+        note = str(explain(mech, angle))
+    monkeypatch.undo()
+    assert given  # a group's friction was worked out by hand
+    steps = note.count("| 2 |")
+    assert steps >= 1, "the substitution took fewer than two steps"
+    assert solves == [1] * len(given)

@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from assur._friction import newton_steps, sizing, solve_sized, substituted
+from assur._friction import Sizing, newton_steps, sizing, solve_sized, substituted
 from assur._text import spoken
 from assur.explain._friction_text import (
     at_rest,
@@ -34,6 +34,7 @@ from assur.kinetostatics import Applied, with_friction
 __all__ = [
     "frictionless",
     "group_friction_blocks",
+    "group_sizing",
     "method",
     "newton_start",
     "steps_ratio",
@@ -50,37 +51,48 @@ MOST_STEPS = 12
 """Most steps of repeated substitution the note writes."""
 
 
+def group_sizing(pos: Position, solver: GroupSolver, loads: list[Wrench]) -> Sizing:
+    """Return the group's system for its sizes, at the note's one position.
+
+    ``loads`` are :func:`without_own`'s. Its solve without the group's friction
+    serves Newton's start, Newton's steps and every step of repeated substitution.
+    """
+    system = sizing(solver, pos.bodies, loads, 1, at_rest(pos))
+    # the note writes this only of a group with pairs that rub: it has a system
+    assert system is not None
+    return system
+
+
 def newton_start(
-    pos: Position, rec: Equilibrium, solver: GroupSolver, loads: list[Wrench]
+    pos: Position,
+    rec: Equilibrium,
+    solver: GroupSolver,
+    loads: list[Wrench],
+    system: Sizing,
 ) -> tuple[dict[str, float], int | None, bool]:
     """Return Newton's start (sizes, N), its steps, and whether it raised friction.
 
     Friction is raised from zero step by step where Newton from the frictionless
     sizes does not settle, and the steps are then not counted (None). The start
-    is :func:`frictionless`; the steps are counted to the measure the hand
-    method's are, a step below :data:`SETTLED` of the largest size (see
-    :func:`assur._friction.newton_steps`): to the solve's own tolerance, near
-    round-off, their count is the machine's arithmetic's at a dead centre.
+    is :func:`frictionless`, of ``system`` (:func:`group_sizing` of ``loads``);
+    the steps are counted to the measure the hand method's are, a step below
+    :data:`SETTLED` of the largest size (see :func:`assur._friction.newton_steps`):
+    to the solve's own tolerance, near round-off, their count is the machine's
+    arithmetic's at a dead centre.
     """
-    # one solve without the group's friction serves the start, Newton and its steps
-    system = sizing(solver, pos.bodies, loads, 1, at_rest(pos))
-    if system is None:
-        return frictionless(pos, rec, solver, loads), 0, False
-    sizes = _sizes(pos, rec, system.base)
+    sizes = frictionless(pos, rec, system)
     if solve_sized(solver, pos.bodies, loads, system).raised:
         return sizes, None, True
     return sizes, newton_steps(system, pos.bodies, rec, SETTLED), False
 
 
-def frictionless(
-    pos: Position, rec: Equilibrium, solver: GroupSolver, loads: list[Wrench]
-) -> dict[str, float]:
+def frictionless(pos: Position, rec: Equilibrium, system: Sizing) -> dict[str, float]:
     """Return the sizes (N) of the group solved without its own pairs' friction.
 
-    ``loads`` are :func:`without_own`'s: the friction the groups solved before
-    passed on is kept.
+    ``system`` is :func:`group_sizing`'s, which keeps that solve: its loads are
+    :func:`without_own`'s, the friction the groups solved before passed on kept.
     """
-    return _sizes(pos, rec, solver.equilibrium(pos.bodies, loads))
+    return _sizes(pos, rec, system.base)
 
 
 def _sizes(pos: Position, rec: Equilibrium, record: Equilibrium) -> dict[str, float]:
@@ -113,20 +125,21 @@ def substitution(
     rec: Equilibrium,
     solver: GroupSolver,
     loads: list[Wrench],
-    start: dict[str, float],
+    system: Sizing,
 ) -> list[dict[str, float]]:
-    """Return the sizes (N) of repeated substitution from ``start``, step by step.
+    """Return the sizes (N) of repeated substitution, step by step.
 
     Each step takes the friction loads of the sizes before, solves the group with
     them known and takes the sizes of the reactions it gives; it stops once a step
     changes no size by more than :data:`SETTLED` of the largest, or after
     :data:`MOST_STEPS` steps (near self-locking it settles slowly or not at all).
+    It starts from :func:`frictionless`; ``system`` (:func:`group_sizing` of
+    ``loads``) gives every step the group's pairs, links and friction factors.
     """
-    rest = at_rest(pos)
-    steps = [start]
+    steps = [frictionless(pos, rec, system)]
     for _ in range(MOST_STEPS):
         sizes = _sizes(
-            pos, rec, substituted(solver, pos.bodies, loads, steps[-1], rest)
+            pos, rec, substituted(solver, pos.bodies, loads, steps[-1], system)
         )
         steps.append(sizes)
         change = max(abs(sizes[k] - steps[-2][k]) for k in sizes)
@@ -143,14 +156,15 @@ def group_friction_blocks(
     if not pairs:
         return []
     loads = without_own(pos, rec)
-    start, steps, raised = newton_start(pos, rec, solver, loads)
+    system = group_sizing(pos, solver, loads)
+    _, steps, raised = newton_start(pos, rec, solver, loads, system)
     final = _sizes(pos, rec, rec)
     lines = [
         line
         for p in pairs
         for line in friction_lines(pos, p, size_symbol(pos, p), final[p.name])
     ]
-    tried = substitution(pos, rec, solver, loads, start)
+    tried = substitution(pos, rec, solver, loads, system)
     # settled where the last row reads as the sizes the friction loads below are
     # written from, each to its own digits (a small |N| beside a large journal's)
     settled = all(num(tried[-1][k]) == num(final[k]) for k in final)

@@ -14,7 +14,7 @@ import math
 
 from assur.explain._friction_text import rubbing
 from assur.explain._group_friction_text import (
-    frictionless,
+    group_sizing,
     method,
     steps_ratio,
     substitution,
@@ -41,7 +41,8 @@ def locked_blocks(
     pairs = rubbing(rec.pairs)
     loads = without_own(pos, rec)
     # from the frictionless sizes (Newton's method, which runs away here, not run)
-    tried = substitution(pos, rec, solver, loads, frictionless(pos, rec, solver, loads))
+    system = group_sizing(pos, solver, loads)
+    tried = substitution(pos, rec, solver, loads, system)
     head, rows = substitution_grid(pos, pairs, tried)
     return [
         method(pairs),
