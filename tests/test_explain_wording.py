@@ -21,6 +21,7 @@ import pytest
 import assur
 from assur.explain import explain
 from assur.explain._positions import _angle_sum
+from assur.explain._tex import deg, half_turn
 
 matplotlib.use("Agg")
 
@@ -639,6 +640,30 @@ def test_the_slotted_lever_s_turn_adds_up_in_degrees(path: Path, angle: float) -
     last = float(steps[-1][3])
     assert -180.0 < last <= 180.0
     assert abs(math.remainder(last - turn, 360.0)) < 0.01
+
+
+def test_a_half_turn_is_written_and_summed_alike(tmp_path: Path) -> None:
+    # the lever's pivot level with the crank's centre: at -180 deg D points left,
+    # 3.5e-18 below the axis; theta_D was written 180 deg and summed as -180 deg
+    pivot = 'links = ["ground", "lever"]\nat = '
+    path = _variant(tmp_path, "whitworth", (pivot + "[0.0, 0.03]", pivot + "[0.03, 0]"))
+    note = str(explain(assur.load(path), -180.0))
+    written = re.search(r"\\theta_D = (-?[\d.]+)\^\\circ", note)
+    summed = re.search(r"\\theta_D [+-] \\psi = (-?[\d.]+)\^\\circ", note)
+    assert written is not None
+    assert summed is not None
+    assert written.group(1) == summed.group(1) == "180"
+
+
+def test_an_angle_of_minus_zero_to_the_left_is_summed_as_written() -> None:
+    # atan2(-0.0, -1) is -pi: written 180 deg, it was summed as -180 deg
+    theta = math.atan2(-0.0, -1.0)
+    assert deg(half_turn(theta)) == deg(theta) == "180^\\circ"
+    assert _angle_sum(half_turn(theta), "+", 0.5, wrap=False).startswith("180^")
+    text = _angle_sum(0.5, "-", theta, wrap=False)
+    first, second, total = (float(x) for x in re.findall(r"-?[\d.]+(?=\^)", text))
+    assert second == 180.0
+    assert first - second == pytest.approx(total, abs=0.015)
 
 
 def test_a_load_table_s_words_are_set_off_alike() -> None:

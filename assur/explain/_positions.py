@@ -14,7 +14,18 @@ import numpy as np
 from assur._vec import Array
 from assur.explain._note import Block, Display, Para
 from assur.explain._position import Position, cross, perp
-from assur.explain._tex import LENGTH, deg, name, num, par, plain, squared, unit, vec
+from assur.explain._tex import (
+    LENGTH,
+    deg,
+    half_turn,
+    name,
+    num,
+    par,
+    plain,
+    squared,
+    unit,
+    vec,
+)
 from assur.groups._dyad import DyadSolver
 
 __all__ = ["dyad_positions"]
@@ -181,7 +192,8 @@ def _rpr(pos: Position, s: DyadSolver) -> list[Block]:
     dg, dh = s.d_mid[g], s.d_mid[h]
     c0 = n0[0] * (dg[0] - dh[0]) + n0[1] * (dg[1] - dh[1])
     psi = math.acos(max(-1.0, min(1.0, c0 / dist)))
-    theta = math.atan2(dvec[1], dvec[0])
+    # as the line below writes it: the sum with psi starts from the same angle
+    theta = half_turn(math.atan2(dvec[1], dvec[0]))
     nu = math.atan2(n0[1], n0[0])
     turn = pos.angle(s.bodies[g]) - float(pos.plan.angle0[s.bodies[g]])
     normal = theta - psi
@@ -237,6 +249,7 @@ def _angle_sum(a: float, sign: str, b: float, wrap: bool) -> str:
     the chain of equalities, "= -186.78 + 360 = 173.22" equated two angles a whole
     turn apart.
     """
+    b = half_turn(b)  # summed as it is written: -180 is written and summed 180
     total = a + b if sign == "+" else a - b
     first = f"{num(math.degrees(a))}^\\circ"
     second = deg(b)

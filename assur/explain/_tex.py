@@ -21,6 +21,7 @@ __all__ = [
     "ZERO",
     "cramer",
     "deg",
+    "half_turn",
     "kept",
     "name",
     "num",
@@ -171,11 +172,34 @@ def vec(v: Any, scale: float | None = None) -> str:
 
 def deg(radians: float) -> str:
     r"""Return an angle in degrees, within (-180, 180], with ``^\circ``."""
-    d = math.degrees(float(radians))
+    return f"{num(_within(math.degrees(float(radians))))}^\\circ"
+
+
+def _within(d: float) -> float:
+    """Return an angle ``d`` (deg) moved by whole turns into (-180, 180]."""
     d = (d + 180.0) % 360.0 - 180.0
+    # -180 (atan2 of -0.0 to the left) and its round-off are the half turn 180
     if d <= -180.0 + 1e-12:
         d += 360.0
-    return f"{num(d)}^\\circ"
+    return d
+
+
+def half_turn(radians: float) -> float:
+    """Return an angle (rad) moved by whole turns to the one :func:`deg` writes.
+
+    Within (-pi, pi]; an angle already there is returned as it is. A sum worked
+    out from an angle the line before wrote takes this value, so that both read
+    alike: atan2(-0.0, -1) = -pi is written 180 deg, and summed as 180 deg too.
+
+    Examples
+    --------
+    >>> half_turn(math.atan2(-0.0, -1.0)) == math.pi, half_turn(-1.0)
+    (True, -1.0)
+    """
+    r = float(radians)
+    d = math.degrees(r)
+    turns = round((d - _within(d)) / 360.0)
+    return r - turns * 2.0 * math.pi if turns else r
 
 
 TEX_SPECIAL = {
