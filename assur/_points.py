@@ -260,3 +260,18 @@ def point_links(mech: Mechanism) -> dict[str, tuple[str, ...]]:
     owners: dict[str, tuple[str, ...]] = {j.name: tuple(j.links) for j in mech.joints}
     owners.update({p.name: (p.link,) for p in mech.points})
     return owners
+
+
+def moves_with(mech: Mechanism, point: str, link: str) -> bool:
+    """Return whether the named point is one point of ``link`` at every position.
+
+    A revolute joint's point moves with both its links, a prismatic or slot joint's
+    with its second link only (it slides along the first), an extra point with its
+    link. Elsewhere the name stands for where the point is in the reference pose.
+    """
+    for joint in mech.joints:
+        if joint.name == point:
+            return link == joint.links[1] or (
+                joint.kind == "revolute" and link == joint.links[0]
+            )
+    return any(p.name == point and p.link == link for p in mech.points)

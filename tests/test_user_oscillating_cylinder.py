@@ -9,6 +9,7 @@ slide carries no force along its line.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -56,3 +57,26 @@ def test_frictionless_slide_pushes_only_across_its_line():
 def test_note_holds_at_two_angles():
     usercheck.assert_note(MECH, 100.0)
     usercheck.assert_note(MECH, 250.0)
+
+
+def _load_lines(mech: assur.Mechanism, link: str) -> list[str]:
+    """The note's lines (at 100 deg) that give an external force on ``link``."""
+    note = str(assur.explain(mech, 100.0))
+    tag = f"\\vec Q_{{\\mathrm{{{link}}},"
+    return [line for line in note.splitlines() if line.startswith(f"$$ {tag}")]
+
+
+def test_note_names_a_load_point_only_where_it_moves_with_the_link():
+    # "piston" on the cylinder is the cylinder's point where the piston was in the
+    # reference pose: it stays put on the cylinder while the piston slides away
+    pushed = assur.Load(link="cylinder", at="piston", force=(300.0, 200.0))
+    mech = dataclasses.replace(MECH, loads=(*MECH.loads, pushed))
+    (line,) = _load_lines(mech, "cylinder")
+    assert "\\mathrm{piston}" not in line
+    assert "P_{" in line
+    table = assur.forces(mech, [100.0])
+    here = f"({table['piston.x'][0]:.4g}"
+    assert here not in line
+    # the rod's load at its own pin A keeps the pin's name
+    (rod_line,) = _load_lines(mech, "rod")
+    assert "\\text{at}\\ \\mathrm{A} =" in rod_line

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from assur._loads import table_reading, table_step, table_values
+from assur._points import moves_with
 from assur._tables import Reading
 from assur._vec import Array
 from assur.explain._position import ROUND_OFF, Position, at, cross, value
@@ -129,7 +130,7 @@ def own_loads(pos: Position, body: int) -> list[Load]:
             before = _short_of(table_step(torque, pos.plan, state.drive, slides, entry))
             reading_here = table_reading(torque, pos.plan, state.drive, slides, entry)
             read = _read(reading_here, _over(pos, torque), before is not None)
-        tex, origin = f"T_{{{link},{count}}}", _origin(pos, body)
+        tex, origin = f"T_{{{link},{count}}}", pos.origin(body)
         out.append(Load(tex, "", origin, np.zeros(2), value(t), before, read))
     return out
 
@@ -210,13 +211,13 @@ def _short_of(before: list[float] | None) -> tuple[float, ...] | None:
 
 def _spot(pos: Position, entry: str, count: int) -> str:
     """Return the name of an external force's point: the file's, else P_count."""
-    at_ = pos.plan.mechanism.loads[int(entry.partition("[")[2].partition("]")[0])].at
-    return point_name(at_) if isinstance(at_, str) else f"P_{{{count}}}"
-
-
-def _origin(pos: Position, body: int) -> Array:
-    """Return a body's origin (m): where a couple is drawn."""
-    return pos.origin(body)
+    mech = pos.plan.mechanism
+    load = mech.loads[int(entry.partition("[")[2].partition("]")[0])]
+    # a name for a point that does not move with the link (a slide's first link, a
+    # joint elsewhere) stands for where it was in the reference pose: another point
+    if isinstance(load.at, str) and moves_with(mech, load.at, load.link):
+        return point_name(load.at)
+    return f"P_{{{count}}}"
 
 
 def link_loads(
