@@ -60,6 +60,9 @@ def test_a_light_mechanism_gets_the_flywheel_it_needs():
     text = render_report(mech, default_positions(mech)[::30])
     part = html.unescape(section(text))
     assert f"holds δ to {SHOWN_DELTA:g}" in part
+    # the reason for the flywheel: not "would stop at its nominal speed", which
+    # reads as if the crank stopped while turning at that speed
+    assert "without one, the crank would come to rest within a turn" in part
     inertia = assur.flywheel(mech, SHOWN_DELTA)
     assert f"{inertia:.5g} kg·m²" in part
     assert page_data(text)["dynamics"]["summary"]["delta"] == pytest.approx(SHOWN_DELTA)

@@ -110,8 +110,8 @@ def _figures_html(result: Any) -> str:
         for k, v in rows
     )
     why = (
-        f"with the flywheel that holds δ to {SHOWN_DELTA:g} (the mechanism alone "
-        "would stop at its nominal speed)"
+        f"with the flywheel that holds δ to {SHOWN_DELTA:g} (without one, the crank "
+        "would come to rest within a turn at this mean speed)"
         if result.flywheel
         else "without a flywheel"
     )
