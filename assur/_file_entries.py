@@ -133,8 +133,9 @@ def _point(entry: str, value: Any) -> PointSpec:
         d = _check_keys(entry, value, KEYS["toward"])
         _require(entry, d, *KEYS["toward"], what=" of a point {from, toward, distance}")
         return Toward(
-            _text(f"{entry}.from", d["from"]),
-            _text(f"{entry}.toward", d["toward"]),
+            # the two ends are named: [x, y] there would be a point of its own
+            _text(f"{entry}.from", d["from"], "a point's name"),
+            _text(f"{entry}.toward", d["toward"], "a point's name"),
             _number(f"{entry}.distance", d["distance"]),
         )
     if (

@@ -299,6 +299,12 @@ def test_a_joint_name_on_a_link_it_does_not_touch():
             '["A", { from = "A", toward = "B" }]',
             r"^links\.crank\.axis\[1\]: missing key 'distance' of a point",
         ),
+        (
+            # from and toward name points: coordinates are a point of their own
+            '["A", { from = "A", toward = [0.1, 0.3], distance = 0.01 }]',
+            r"^links\.crank\.axis\[1\]\.toward: expected a point's name in quotes, "
+            r"got \[0\.1, 0\.3\]$",
+        ),
     ],
 )
 def test_bad_axis(axis, message):
