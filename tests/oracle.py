@@ -219,6 +219,10 @@ def driver_rates(mech: assur.Mechanism) -> np.ndarray:
     return np.array([d.omega for d in mech.drivers])
 
 
+def driver_accelerations(mech: assur.Mechanism) -> np.ndarray:
+    return np.array([d.epsilon for d in mech.drivers])
+
+
 def driver_kinds(mech: assur.Mechanism) -> list[str]:
     return [mech.joint(d.joint).kind for d in mech.drivers]
 
@@ -236,11 +240,29 @@ def stencil_table(
     mech: assur.Mechanism, centres: np.ndarray, tau: float
 ) -> assur.Table:
     """Kinematics at ``centres`` (n, d) (SI) and a time step ``tau`` before and after,
-    along the motion at the drivers' constant rates: rows (-, 0, +) per centre."""
-    rates = driver_rates(mech)
-    offsets = np.array([-tau, 0.0, tau])[None, :, None] * rates[None, None, :]
-    drive = (centres[:, None, :] + offsets).reshape(-1, len(rates))
-    return assur.kinematics(mech, to_table_units(mech, drive))
+    along the drivers' motion: rows (-, 0, +) per centre.
+
+    Each driver moves at its ``omega`` and ``epsilon`` from the centre, its jerk zero
+    (the file's constants, as the contract has them): ``q + omega t + epsilon t^2 / 2``
+    at the speed ``omega + epsilon t``, which the rows are given.
+    """
+    rates, accels = driver_rates(mech), driver_accelerations(mech)
+    t = np.array([-tau, 0.0, tau])[None, :, None]
+    drive = (centres[:, None, :] + t * rates + 0.5 * t * t * accels).reshape(
+        -1, len(rates)
+    )
+    if not accels.any():  # the speed is the file's at every row
+        return assur.kinematics(mech, to_table_units(mech, drive))
+    shape = (len(centres), 3, len(rates))
+    speed = np.broadcast_to(rates + t * accels, shape).reshape(drive.shape)
+    rate = np.broadcast_to(accels, drive.shape)
+    one = len(rates) == 1
+    return assur.kinematics(
+        mech,
+        to_table_units(mech, drive),
+        omega=speed[:, 0] if one else speed,
+        epsilon=rate[:, 0] if one else rate,
+    )
 
 
 def difference_errors(
