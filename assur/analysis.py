@@ -35,29 +35,38 @@ from assur._vec import Array, is_flag
 from assur._warn import held
 from assur.columns import balancing_columns, selection
 from assur.errors import ModelError, UsageError
-from assur.model import Mechanism
-from assur.plan import plan_of
+from assur.model import Mechanism, mechanism_of
+from assur.plan import drawn_size, plan_of
 from assur.table import Columns, Table
 
 __all__ = ["Columns", "Table", "default_positions", "forces", "kinematics"]
 
 
+SIZELESS = 1e-12
+"""The size of a mechanism whose joints all lie at one point (m): its plan's floor."""
+
+
 def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
     """Return one full turn from the reference pose in steps of ``step`` degrees.
 
-    For a prismatic driver: 101 positions over +-20 % of the mechanism's size. With
-    several drivers, each its own, as many as the shortest has (a crank beside a
-    prismatic driver turns 100 steps of its turn).
+    For a prismatic driver: 101 positions over +-20 % of the mechanism's size (that
+    of its joints, or of every point the file places where the joints all meet at
+    one: a ram alone). With several drivers, each its own, as many as the shortest
+    has (a crank beside a prismatic driver turns 100 steps of its turn).
     """
     plan = plan_of(mech)
     if not plan.drivers:
         raise _no_driver(plan)
+    size = plan.scale
+    if size <= SIZELESS:
+        # one place for every joint: a stroke of 4e-13 m stood for "no size"
+        size = max(size, drawn_size(mechanism_of(mech)))
     starts = []
     for d in plan.drivers:
         if d.kind == "R":
             starts.append(math.degrees(d.angle0) + np.arange(0.0, 360.0, step))
         else:
-            starts.append(np.linspace(-0.2, 0.2, 101) * plan.scale)
+            starts.append(np.linspace(-0.2, 0.2, 101) * size)
     count = min(len(s) for s in starts)
     out = np.stack([s[:count] for s in starts], axis=-1)
     return out[:, 0] if out.shape[1] == 1 else out

@@ -12,6 +12,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -616,3 +617,20 @@ def test_a_five_bar_without_change_points_is_quiet_and_unchanged():
     ]
     got = np.stack([table["C.x"], table["C.y"], table["left_rod.omega"]], axis=1)
     np.testing.assert_allclose(got, want, rtol=1e-12)
+
+
+def test_a_ram_alone_moves_a_fifth_of_its_drawn_size_by_default():
+    # its one joint gives it no size: the default stroke was +-2e-13 m, 101 rows of
+    # one pose; its centre of mass 0.05 m off the slide line gives it one
+    from assur.analysis import default_positions
+
+    ram = assur.load(Path(__file__).parent / "data" / "explain" / "ram_only.toml")
+    positions = default_positions(ram)
+    assert len(positions) == 101
+    assert positions[0] == pytest.approx(-0.01, rel=1e-12)
+    assert positions[-1] == pytest.approx(0.01, rel=1e-12)
+    # a mechanism with a size keeps it: the drag link's joints span 0.3 m
+    drag = assur.load(
+        Path(__file__).parent / "data" / "edge" / "drag_link_beside_a_ram.toml"
+    )
+    assert default_positions(drag)[-1, 1] == pytest.approx(0.06, rel=1e-12)
