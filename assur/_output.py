@@ -253,7 +253,9 @@ def _reserve(target: Path, reserved: list[Path], folder: bool = False) -> Path:
     while True:
         tail = "" if folder else f".tmp{target.suffix}"
         name = f".{target.name[:NAME_KEPT]}.{secrets.token_hex(4)}{tail}"
-        temporary = target.with_name(name)
+        # in target's parent, not by ``with_name``: the folder "." (or "/") has no
+        # name, and output_folder reserves beside "./." to write into "." itself
+        temporary = target.parent / name
         # told before it exists: Python runs a signal's handler as soon as the
         # call that makes it returns, before its result is kept anywhere
         reserved[:] = [temporary]

@@ -142,6 +142,14 @@ def test_a_stop_as_the_temporary_folder_is_made_leaves_nothing(
     assert names(tmp_path) == set()
 
 
+def test_the_current_folder_takes_a_set_of_files(monkeypatch, tmp_path: Path):
+    # "." has no name: its temporary folder is made in it, as for any folder there
+    monkeypatch.chdir(tmp_path)
+    with output_folder(".") as folder:
+        (folder / "a.png").write_text("a", encoding="utf-8")
+    assert names(tmp_path) == {"a.png"}
+
+
 def test_save_and_csv_go_through_the_whole_or_nothing_writer(monkeypatch, old: Path):
     fail_midway(monkeypatch, OSError(errno.ENOSPC, "No space left on device"))
     table = assur.kinematics(assur.catalog.four_bar(), [0.0, 10.0])
