@@ -90,8 +90,8 @@ def _stoppable() -> Iterator[None]:
         return
 
     again: list[threading.Timer] = []
-    over = threading.Lock()  # held once the command is over: nothing is sent then
-    ended = [False]
+    over = threading.Lock()  # held while a stop is sent
+    ended = [False]  # the command is over: nothing is sent, no stop raised
 
     def send(signum: int) -> None:
         with over:
@@ -105,7 +105,7 @@ def _stoppable() -> Iterator[None]:
         timer.start()
 
     def stop(signum: int, frame: Any) -> None:
-        if _unwinding():
+        if ended[0] or _unwinding():
             return
         # should this exception be lost, the stop comes again while the command runs
         arm(signum)
@@ -143,8 +143,11 @@ def _stoppable() -> Iterator[None]:
     try:
         yield
     finally:
+        # the command is over: a stop coming in this block (a resend, a late
+        # Ctrl-C) is passed over, or the handlers would stay ours and the timers run
+        ended[0] = True
         with over:  # a stop being sent is sent whole, and none after
-            ended[0] = True
+            pass
         for timer in again:
             timer.cancel()
         for number, handler in saved.items():

@@ -208,6 +208,41 @@ def test_a_stop_during_the_cleanup_of_another_lets_it_end():
     time.sleep(2 * _cli_process.RESEND)
 
 
+def test_a_stop_as_the_command_ends_leaves_no_handler_behind(monkeypatch):
+    # a stop coming in the block that puts the handlers back (a resend whose
+    # command ended on its own) raised there: ours stayed, and the timers ran on
+    real = threading.Lock
+    before = signal.getsignal(signal.SIGTERM)
+
+    class Tripping:
+        """The lock the block takes: a stop lands as it is taken."""
+
+        def __init__(self) -> None:
+            self._lock = real()
+
+        def __enter__(self) -> Tripping:
+            self._lock.acquire()
+            signal.raise_signal(signal.SIGTERM)  # its handler runs on return
+            return self
+
+        def __exit__(self, *exc: object) -> None:
+            self._lock.release()
+
+    made = []
+
+    def lock() -> object:
+        made.append(True)
+        return Tripping() if len(made) == 1 else real()
+
+    monkeypatch.setattr(threading, "Lock", lock)
+    try:
+        with _cli_process._stoppable():
+            pass
+        assert signal.getsignal(signal.SIGTERM) is before
+    finally:
+        signal.signal(signal.SIGTERM, before)
+
+
 # --- outputs that fail ----------------------------------------------------------
 
 
