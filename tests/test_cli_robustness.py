@@ -8,6 +8,8 @@ output survives a failed write.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import errno
 import json
 import os
 import signal
@@ -16,6 +18,7 @@ import sys
 import threading
 import time
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -186,26 +189,102 @@ def test_a_stop_whose_exception_is_lost_comes_again(stop):
     time.sleep(2 * _cli_process.RESEND)
 
 
-def test_a_stop_during_the_cleanup_of_another_lets_it_end():
+@pytest.mark.parametrize("inner", [False, True], ids=["cleanup", "its-own-error"])
+@pytest.mark.parametrize(
+    ("stop", "raised"),
+    [(signal.SIGTERM, _cli_process._Stopped), (signal.SIGINT, KeyboardInterrupt)],
+)
+def test_a_stop_during_the_cleanup_of_another_lets_it_end(stop, raised, inner):
     # a second stop (the watchdog's, or the user's) while the first one unwinds the
-    # command is passed over: the temporary file's removal is not cut short
+    # command is passed over: the temporary file's removal is not cut short, nor
+    # where that removal handles an error of its own (a file already gone)
     cleaned = []
+
+    def second() -> None:
+        os.kill(os.getpid(), stop)
+        # longer than RESEND: the first stop's own resend comes here too
+        time.sleep(3 * _cli_process.RESEND)
 
     def command() -> None:
         with _cli_process._stoppable():
             try:
-                os.kill(os.getpid(), signal.SIGTERM)
+                os.kill(os.getpid(), stop)
                 time.sleep(1.0)
             finally:
-                os.kill(os.getpid(), signal.SIGTERM)
-                # longer than RESEND: the first stop's own resend comes here too
-                time.sleep(3 * _cli_process.RESEND)
+                if inner:
+                    try:
+                        raise FileNotFoundError(errno.ENOENT, "gone")
+                    except FileNotFoundError:
+                        second()
+                else:
+                    second()
                 cleaned.append(True)
 
-    with pytest.raises(_cli_process._Stopped):
+    with pytest.raises(raised):
         command()
     assert cleaned == [True]
     time.sleep(2 * _cli_process.RESEND)
+
+
+class _Timers:
+    """Stand-in for ``threading.Timer``: each one made is kept, none runs by itself."""
+
+    def __init__(self) -> None:
+        self.made: list[tuple[object, tuple[int, ...]]] = []
+
+    def __call__(self, interval: float, function: object, args: tuple[int, ...]):
+        self.made.append((function, args))
+        return SimpleNamespace(daemon=False, start=lambda: None, cancel=lambda: None)
+
+
+@pytest.fixture
+def timers(monkeypatch) -> tuple[list[tuple[object, tuple[int, ...]]], list[int]]:
+    """The timers armed (function, arguments) and the signals they sent."""
+    made = _Timers()
+    sent: list[int] = []
+    monkeypatch.setattr(threading, "Timer", made)
+    monkeypatch.setattr(_cli_process, "_resend", sent.append)
+    return made.made, sent
+
+
+def test_a_stop_is_sent_again_only_while_the_command_runs(timers):
+    # a resend already on its way when the command ends is dropped: the handlers
+    # are the caller's again, and SIGTERM's default would end the process
+    made, sent = timers
+    with _cli_process._stoppable():
+        with contextlib.suppress(_cli_process._Stopped):  # the exception lost
+            signal.raise_signal(signal.SIGTERM)
+        ((send, args),) = made
+        send(*args)
+        assert sent == [signal.SIGTERM]
+    send(*args)
+    assert sent == [signal.SIGTERM]
+
+
+@pytest.mark.parametrize(
+    ("stop", "own"), [(signal.SIGTERM, False), (signal.SIGINT, True)]
+)
+def test_a_stop_python_ignores_is_armed_once(timers, stop, own):
+    # ours arms a resend as it raises; one raised by the caller's own SIGINT
+    # handler is armed where Python reports it ignored, and that handler is kept
+    made, _ = timers
+
+    def theirs(signum: int, frame: object) -> None:
+        raise KeyboardInterrupt
+
+    class Finalized:
+        def __del__(self) -> None:
+            signal.raise_signal(stop)  # its exception ignored
+
+    before = signal.signal(signal.SIGINT, theirs if own else signal.default_int_handler)
+    try:
+        with _cli_process._stoppable():
+            if own:
+                assert signal.getsignal(signal.SIGINT) is theirs
+            Finalized()
+    finally:
+        signal.signal(signal.SIGINT, before)
+    assert [args for _, args in made] == [(stop,)]
 
 
 def test_a_stop_as_the_command_ends_leaves_no_handler_behind(monkeypatch):
