@@ -153,7 +153,9 @@ def output_folder(
     """Yield an empty temporary folder; on success its files move into ``path``.
 
     The writer puts a set of files (the diagrams of a sweep, say) in the yielded
-    folder, which lies beside ``path``. When the block ends without an exception the
+    folder, which lies in ``path`` when that folder is there already (on its file
+    system, should it be a mount point), else beside it, only its owner may enter
+    it. When the block ends without an exception the
     folder ``path`` is created if need be (in its parent, which must be there) and
     every file replaces its namesake
     there; otherwise none of them lands. The temporary folder is removed either way.

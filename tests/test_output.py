@@ -142,6 +142,40 @@ def test_a_stop_as_the_temporary_folder_is_made_leaves_nothing(
     assert names(tmp_path) == set()
 
 
+def test_a_name_taken_while_a_stop_comes_is_left_alone(monkeypatch, old: Path):
+    # the temporary name drawn first is another's file: should a stop come as
+    # the next is drawn, that file is not the one removed
+    import secrets
+
+    theirs = old.parent / ".table.csv.00000000.tmp.csv"
+    theirs.write_text("theirs", encoding="utf-8")
+    drawn = iter(["00000000"])
+
+    def draw(size: int) -> str:
+        for token in drawn:
+            return token
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(secrets, "token_hex", draw)
+    with pytest.raises(KeyboardInterrupt):
+        write_text(old, "new")
+    monkeypatch.undo()
+    assert theirs.read_text(encoding="utf-8") == "theirs"
+    assert old.read_text(encoding="utf-8") == OLD
+
+
+def test_a_set_s_temporary_folder_is_in_its_folder_and_private(tmp_path: Path):
+    # in the folder there already, on its file system (a mount point's)
+    target = tmp_path / "diagrams"
+    target.mkdir()
+    with output_folder(target) as folder:
+        assert folder.parent == target
+        if os.name == "posix":
+            assert stat.S_IMODE(folder.stat().st_mode) == 0o700
+    with output_folder(tmp_path / "new") as folder:
+        assert folder.parent == tmp_path
+
+
 def test_the_current_folder_takes_a_set_of_files(monkeypatch, tmp_path: Path):
     # "." has no name: its temporary folder is made in it, as for any folder there
     monkeypatch.chdir(tmp_path)
