@@ -623,6 +623,18 @@ def test_a_slice_holds_a_bounded_number_of_values(monkeypatch, values, chunk):
     assert _sliced._chunk(mech, True) == chunk
 
 
+@pytest.mark.parametrize(
+    ("library", "rows"), [(4096, 5 * 4096 + 7), (_state.CHUNK, 3 * _state.CHUNK + 5)]
+)
+def test_a_slice_is_a_whole_number_of_the_library_s(monkeypatch, library, rows):
+    # the library's slice as it is when called (a test's smaller one too), and
+    # whole ones of it: every number is then the one table's
+    mech = assur.load(SLIDER_CRANK)
+    monkeypatch.setattr(_state, "CHUNK", library)
+    monkeypatch.setattr(_sliced, "SLICE_VALUES", 109 * rows)
+    assert _sliced._chunk(mech, True) == rows // library * library
+
+
 def test_slices_smaller_than_the_library_s_give_its_numbers(
     capsys, monkeypatch, tmp_path
 ):
