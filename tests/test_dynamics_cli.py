@@ -841,3 +841,43 @@ def test_a_speed_that_varies_without_work_is_explained(capsys):
     status, out, _ = run(capsys, "dynamics", WHITWORTH, "--delta", "0.05")
     assert figures(out)["energy swing"].endswith(" J")
     assert "No load does work" not in out
+
+
+def test_a_clockwise_crank_s_file_motor_is_read_at_its_speed(capsys) -> None:
+    # the falling motor's torque at the crank's own speed (-25 rad/s), the speed
+    # itself written as a size beside "nominal"
+    from assur._text import number_text
+
+    path = Path(__file__).parent / "data" / "edge" / "four_bar_motor_clockwise.toml"
+    motor = assur.load(path).motor
+    assert motor is not None
+    assert motor.at(-25.0) != motor.at(25.0)
+    status, out, _ = run(capsys, "dynamics", path, "--flywheel", "0.01")
+    assert status == 0
+    torque = number_text(motor.at(-25.0))
+    assert f"The file's [motor], {torque} N m at the nominal 25 rad/s, drives" in out
+
+
+@pytest.mark.parametrize(
+    ("speeds", "swing", "energy", "said"),
+    [
+        ((11.0, 9.0), 0.0, 50.0, True),  # no work: the reduced inertia alone
+        ((10.0, 10.0), 0.0, 50.0, False),  # nothing varies: nothing to explain
+        ((11.0, 9.0), 1e-9 * 50.0, 50.0, False),  # a little work is work
+        ((11.0, 9.0), 1e-14 * 5e6, 5e6, True),  # round-off of a large energy
+    ],
+)
+def test_an_energy_swing_of_none_says_why_the_speed_varies(
+    speeds, swing, energy, said
+) -> None:
+    from types import SimpleNamespace
+
+    from assur._dynamics_text import swing_text
+    from assur._text import number_text
+
+    result = SimpleNamespace(
+        speed_max=speeds[0], speed_min=speeds[1], energy_swing=swing, energy=energy
+    )
+    text = swing_text(result)
+    assert text.startswith(f"{number_text(swing)} J")
+    assert ("No load does work" in text) is said

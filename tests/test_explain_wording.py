@@ -40,6 +40,19 @@ def _variant(tmp_path: Path, stem: str, *edits: tuple[str, str]) -> Path:
     return path
 
 
+def _friction_sentence(tmp_path: Path, stem: str, angle: float) -> str:
+    """Return the note's sentence on friction's change of the balancing load.
+
+    ``stem`` is an example's, or an ``omega = ...`` of the friction slider-crank.
+    """
+    if stem.startswith("omega"):
+        path = _variant(tmp_path, "slider_crank_friction", ("omega = 200.0", stem))
+    else:
+        path = EXAMPLES / f"{stem}.toml"
+    note = str(explain(assur.load(path), angle))
+    return next(x for x in note.splitlines() if "friction changes it by" in x)
+
+
 def _number(note: str, before: str) -> float:
     """Return the number printed right after ``before`` (a literal text)."""
     found = re.search(
@@ -203,12 +216,7 @@ def test_friction_s_power_is_said_as_the_driver_sees_it(
 ) -> None:
     # a braking driver "supplies 472 W more" read as if it drove; and 16.2 * 200
     # was written 3239.46, a product no hand gives (nor 17.76234 * 209.44)
-    if stem.startswith("omega"):
-        path = _variant(tmp_path, "slider_crank_friction", ("omega = 200.0", stem))
-    else:
-        path = EXAMPLES / f"{stem}.toml"
-    note = str(explain(assur.load(path), angle))
-    sentence = next(x for x in note.splitlines() if "friction changes it by" in x)
+    sentence = _friction_sentence(tmp_path, stem, angle)
     product = re.search(
         r"= (-?[0-9.]+) \\cdot \(?(-?[0-9.]+)\)? = (-?[0-9.]+)\$ " + said, sentence
     )
@@ -231,12 +239,7 @@ def test_friction_s_change_reads_alike_wherever_it_is_quoted(
 ) -> None:
     # the difference read 16.2 in its subtraction and its share, and 16.19731 as
     # the power's factor: a student took them for two torques
-    if stem.startswith("omega"):
-        path = _variant(tmp_path, "slider_crank_friction", ("omega = 200.0", stem))
-    else:
-        path = EXAMPLES / f"{stem}.toml"
-    note = str(explain(assur.load(path), angle))
-    sentence = next(x for x in note.splitlines() if "friction changes it by" in x)
+    sentence = _friction_sentence(tmp_path, stem, angle)
     said = re.search(r"= -?[0-9.]+ - \(?-?[0-9.]+\)? = (-?)([0-9.]+)\\ ", sentence)
     share = re.search(r"\\frac\{([0-9.]+)\}", sentence)
     factor = re.search(r"= (-?)([0-9.]+) \\cdot \(?-?[0-9.]+\)? = ", sentence)

@@ -136,3 +136,17 @@ def test_a_speed_that_varies_without_work_is_explained():
         "0 J. No load does work: the speed varies with the links' reduced inertia "
         "alone."
     )
+
+
+def test_the_speed_and_the_swing_are_written_as_the_report_s_figures(tmp_path):
+    # five digits, as every figure of the report: the nominal speed and the energy
+    # swing were written to the command line's six, beside "5.125 rad/s"
+    text = (EXAMPLES / "whitworth.toml").read_text(encoding="utf-8")
+    path = tmp_path / "whitworth.toml"
+    path.write_text(text.replace("omega = 5.0", "omega = -5.123456"), encoding="utf-8")
+    mech = assur.load(path)
+    page = render_report(mech, default_positions(mech)[::30])
+    part = html.unescape(section(page))
+    summary = page_data(page)["dynamics"]["summary"]
+    assert f"nominal speed {-summary['omega']:.5g} rad/s, clockwise (" in part
+    assert f"<td>{summary['energy_swing']:.5g} J</td>" in part
