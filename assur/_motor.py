@@ -72,7 +72,8 @@ def against_omega(motor: Motor, omega: float, unit: str = "N m") -> str | None:
     beside the file's motor; ``unit`` is the torque's unit as the text around it
     writes it. None for a motor of ``omega``'s sign.
     """
-    if omega * motor.torque >= 0:
+    # the signs compared, not the product: 1e-200 * -1e-200 is -0.0
+    if omega == 0 or (omega > 0) == (motor.torque > 0):
         return None
     sense = "counter-clockwise" if motor.torque > 0 else "clockwise"
     return (

@@ -881,3 +881,14 @@ def test_an_energy_swing_of_none_says_why_the_speed_varies(
     text = swing_text(result)
     assert text.startswith(f"{number_text(swing)} J")
     assert ("No load does work" in text) is said
+
+
+@pytest.mark.parametrize("size", [1.0, 1e-200])
+def test_a_motor_against_omega_is_told_at_any_size(size) -> None:
+    # the signs compared: the product of two small numbers underflowed to -0.0
+    from assur._motor import against_omega
+
+    assert against_omega(assur.Motor(-size), size) is not None
+    assert against_omega(assur.Motor(size), -size) is not None
+    assert against_omega(assur.Motor(size), size) is None
+    assert against_omega(assur.Motor(-size), -size) is None
