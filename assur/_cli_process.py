@@ -56,16 +56,18 @@ class _Stopped(BaseException):
         self.signum = signum
 
 
-def _unwinding() -> bool:
+def _unwinding(before: BaseException | None = None) -> bool:
     """Whether a stop raised before is being handled where this runs.
 
     Called in a signal handler: the exception being handled by the code the signal
     cut into (an ``except`` or ``finally`` block, a context manager's exit), or one
-    that exception arose from, is a stop.
+    that exception arose from, is a stop. ``before`` is the exception the caller of
+    the command was handling when it started (the command runs in its ``except``
+    block): it and those it arose from are the caller's, not the command's.
     """
     seen = sys.exc_info()[1]
     chain: set[int] = set()
-    while seen is not None and id(seen) not in chain:
+    while seen is not None and seen is not before and id(seen) not in chain:
         if isinstance(seen, _Stopped | KeyboardInterrupt):
             return True
         chain.add(id(seen))
@@ -89,6 +91,7 @@ def _stoppable() -> Iterator[None]:
         yield
         return
 
+    caller = sys.exc_info()[1]  # what the caller is handling, if anything
     again: list[threading.Timer] = []
     over = threading.Lock()  # held while a stop is sent
     ended = [False]  # the command is over: nothing is sent, no stop raised
@@ -105,7 +108,7 @@ def _stoppable() -> Iterator[None]:
         timer.start()
 
     def stop(signum: int, frame: Any) -> None:
-        if ended[0] or _unwinding():
+        if ended[0] or _unwinding(caller):
             return
         # should this exception be lost, the stop comes again while the command runs
         arm(signum)

@@ -247,6 +247,24 @@ def timers(monkeypatch) -> tuple[list[tuple[object, tuple[int, ...]]], list[int]
     return made.made, sent
 
 
+def test_a_command_run_while_its_caller_handles_a_stop_still_stops():
+    # the caller's own KeyboardInterrupt, being handled as the command runs, is not
+    # one of the command's: a stop then ends the command as always
+    def command() -> None:
+        with _cli_process._stoppable():
+            os.kill(os.getpid(), signal.SIGTERM)
+            time.sleep(2.0)
+
+    try:
+        raise KeyboardInterrupt
+    except KeyboardInterrupt:
+        started = time.monotonic()
+        with pytest.raises(_cli_process._Stopped):
+            command()
+        assert time.monotonic() - started < 1.0
+    time.sleep(2 * _cli_process.RESEND)
+
+
 def test_a_stop_is_sent_again_only_while_the_command_runs(timers):
     # a resend already on its way when the command ends is dropped: the handlers
     # are the caller's again, and SIGTERM's default would end the process
