@@ -21,6 +21,20 @@ from .notearith import pieces_checked
 
 USERS = Path(__file__).parent / "data" / "users"
 RTOL = 1e-9
+POSITIONS = {
+    "oscillating_cylinder": np.arange(30.0, 390.0, 11.0),  # deg: a turn
+    "stephenson_six_bar": np.arange(60.0, 420.0, 13.0),
+    "trammel_slider_driven": np.linspace(-0.06, 0.06, 13),  # m: the slider's stroke
+    "wedge_lifter": np.linspace(-0.02, 0.03, 6),
+}
+"""Each mechanism's driver positions the shared checks run at."""
+NOTED = {
+    "oscillating_cylinder": (100.0, 250.0),
+    "stephenson_six_bar": (100.0, 250.0),
+    "trammel_slider_driven": (-0.05, 0.04),
+    "wedge_lifter": (-0.02, 0.03),
+}
+"""The positions each mechanism's note is checked at."""
 
 
 def load(name: str) -> assur.Mechanism:
