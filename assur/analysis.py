@@ -36,14 +36,10 @@ from assur._warn import held
 from assur.columns import balancing_columns, selection
 from assur.errors import ModelError, UsageError
 from assur.model import Mechanism, mechanism_of
-from assur.plan import drawn_size, plan_of
+from assur.plan import SIZELESS, drawn_size, plan_of
 from assur.table import Columns, Table
 
 __all__ = ["Columns", "Table", "default_positions", "forces", "kinematics"]
-
-
-SIZELESS = 1e-12
-"""The size of a mechanism whose joints all lie at one point (m): its plan's floor."""
 
 
 def default_positions(mech: Mechanism, step: float = 1.0) -> Array:

@@ -237,7 +237,7 @@ def _near_enough(topo: Topology, scale: float) -> None:
     """Refuse a mechanism so far from the origin that its coordinates lose its shape."""
     far = max((max(abs(p.at[0]), abs(p.at[1])) for p in topo.pairs), default=0.0)
     # every joint at one point (a size of 1e-12) has no shape to lose
-    if far > FAR * scale and scale > 1e-12:
+    if far > FAR * scale and scale > SIZELESS:
         digits = max(0, int(16 - math.log10(far / scale)))
         msg = (
             f"joints: the mechanism ({scale:.3g} m across) lies {far:.3g} m from the "
@@ -288,8 +288,12 @@ FEW = 64
 """Points compared pair by pair without looking for their convex hull first."""
 
 
+SIZELESS = 1e-12
+"""The size of a mechanism whose joints all lie at one point (m): its plan's floor."""
+
+
 def _diameter(points: Array) -> float:
-    """Largest distance between two of ``points`` (m), at least 1e-12.
+    """Largest distance between two of ``points`` (m), at least :data:`SIZELESS`.
 
     The farthest pair lies on the convex hull (Andrew's monotone chain), so of many
     points only the hull's few corners are compared with each other; a few points
@@ -300,7 +304,7 @@ def _diameter(points: Array) -> float:
         corners = np.unique(corners, axis=0)
         corners = _hull(corners) if len(corners) > 3 else corners
     gap = corners[:, None, :] - corners[None, :, :]
-    return max(1e-12, float(np.sqrt((gap * gap).sum(axis=-1)).max()))
+    return max(SIZELESS, float(np.sqrt((gap * gap).sum(axis=-1)).max()))
 
 
 def _hull(points: Array) -> Array:
