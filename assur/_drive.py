@@ -14,7 +14,7 @@ import numpy as np
 
 from assur._checks import LARGEST
 from assur._text import counted, describe
-from assur._vec import Array
+from assur._vec import Array, set_writeable
 from assur.errors import ModelError, UsageError
 from assur.plan import Plan
 
@@ -89,12 +89,12 @@ def positions(plan: Plan, angles: Any, entry: str = "angles") -> Array:
             f"{arr.shape}"
         )
         raise UsageError(msg)
-    if not np.all(np.isfinite(arr)):
+    if not np.isfinite(arr).all():
         msg = f"{entry}: expected finite driver positions"
         raise UsageError(msg)
     # the table's own copy: the caller's array may change after the call
     arr = np.array(arr, dtype=float)
-    arr.flags.writeable = False
+    set_writeable(arr, False)
     return arr
 
 

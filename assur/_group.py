@@ -6,7 +6,7 @@ classified here: a dyad with its canonical signature, a triad or a general group
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from assur._text import roman, spoken
 from assur._topology import Pair, _public
@@ -51,6 +51,9 @@ class Group:
         (a dyad's kind names its own).
     carriers : tuple of str
         The known link each external pair joins, in the order of ``external``.
+    label : str
+        Short label such as ``"RRR (2, 3)"``; ``"class IV (...)"`` beyond triads.
+        Made from the fields above, once: every force record of a sweep carries it.
     """
 
     group_class: int
@@ -64,14 +67,14 @@ class Group:
     basis: tuple[str, ...] = ()
     sliding: tuple[str, ...] = ()
     carriers: tuple[str, ...] = ()
+    label: str = field(init=False, repr=False, compare=False)
 
-    @property
-    def label(self) -> str:
-        """Short label such as ``"RRR (2, 3)"``; ``"class IV (...)"`` beyond triads."""
+    def __post_init__(self) -> None:
         kind = self.kind
         if kind == "general":
             kind = f"class {roman(self.group_class)}"
-        return f"{kind} ({', '.join(_public(self.links))})"
+        label = f"{kind} ({', '.join(_public(self.links))})"
+        object.__setattr__(self, "label", label)
 
 
 def _describe(links: list[str], counted: list[Pair], known: set[str]) -> Group:

@@ -6,7 +6,7 @@ crank, or a prismatic joint's slide) and interpolated linearly over the batch.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -67,14 +67,23 @@ class LoadPlan:
         """Whether no link has a mass and no load is applied."""
         return not (self.mass.any() or self.forces or self.torques)
 
+    massive: tuple[tuple[int, Any, Any], ...] = field(
+        init=False, repr=False, compare=False
+    )
+    """What :meth:`bodies` returns, made once: every batch of a sweep asks for it."""
+
+    def __post_init__(self) -> None:
+        massive = self.stacked
+        if massive is None:
+            massive = tuple(
+                (b, float(self.mass[b]), float(self.inertia[b]))
+                for b in np.flatnonzero(self.mass).tolist()
+            )
+        object.__setattr__(self, "massive", massive)
+
     def bodies(self) -> tuple[tuple[int, Any, Any], ...]:
         """Return each body with a mass: its index, mass (kg) and inertia (kg m^2)."""
-        if self.stacked is not None:
-            return self.stacked
-        return tuple(
-            (b, float(self.mass[b]), float(self.inertia[b]))
-            for b in np.flatnonzero(self.mass).tolist()
-        )
+        return self.massive
 
 
 def compile_loads(plan: Plan) -> LoadPlan:

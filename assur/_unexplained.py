@@ -33,12 +33,11 @@ def _unexplained(
     if not arrays:
         return
     # one sum of them all is finite when each of them is (an overflow of the sum,
-    # or inf - inf, sends the search below, which looks at each)
+    # or inf - inf, sends the search below, which looks at each); the arrays laid
+    # end to end are summed in one call, where a sum per array cost one call each
     with np.errstate(invalid="ignore", over="ignore"):
-        total = arrays[0] + arrays[1] if len(arrays) > 1 else arrays[0].copy()
-        for x in arrays[2:]:
-            total += x
-    if np.isfinite(total).all():
+        total = np.add.reduce(np.concatenate(arrays, axis=None))
+    if np.isfinite(total):
         return
     explained = np.zeros(given.shape[0], dtype=bool)
     for trouble in found:

@@ -215,7 +215,7 @@ def reverse(
     """
     rubbing = friction and has_friction(plan)
     loads: list[Wrench] = list(applied.wrenches)
-    n = _size(plan, bodies)
+    n = _size(plan, bodies) if rubbing else 1  # for friction's iteration alone
     groups, values, locked = [], {}, []
     rest = still(bodies, plan.scale) if rubbing else None
     for solver in reversed(plan.solvers):
@@ -281,8 +281,13 @@ def with_friction(
 
 
 def has_friction(plan: Plan) -> bool:
-    """Whether some pair of ``plan`` has friction."""
-    return any(p.friction > 0.0 for p in plan.pairs.values())
+    """Whether some pair of ``plan`` has friction (looked at once per plan)."""
+    found = plan.memo.get("friction")
+    if found is None:
+        found = plan.memo["friction"] = any(
+            p.friction > 0.0 for p in plan.pairs.values()
+        )
+    return bool(found)
 
 
 def _size(plan: Plan, bodies: list[Motion]) -> int:
