@@ -62,7 +62,9 @@ def _motor_note(motor: float, result: Any) -> str:
         # torques are counter-clockwise positive: a clockwise crank's motor
         # drives it with a negative torque
         note += ", counter-clockwise positive"
-    if motor * result.omega < 0:
+    # the signs compared, not the product: 1e-200 * -1e-200 is -0.0, as in
+    # the motor's check (assur._motor.against_omega); a motor of 0 does neither
+    if (motor < 0 < result.omega) or (result.omega < 0 < motor):
         note += "; it brakes: the loads drive the crank"
     return note
 

@@ -892,3 +892,21 @@ def test_a_motor_against_omega_is_told_at_any_size(size) -> None:
     assert against_omega(assur.Motor(size), -size) is not None
     assert against_omega(assur.Motor(size), size) is None
     assert against_omega(assur.Motor(-size), -size) is None
+
+
+@pytest.mark.parametrize("size", [1.0, 1e-200])
+def test_a_braking_motor_torque_is_told_at_any_size(size) -> None:
+    # the signs compared: the product of two small numbers underflowed to -0.0
+    from types import SimpleNamespace
+
+    from assur._dynamics_text import _motor_note
+
+    def brakes(motor: float, omega: float) -> bool:
+        return "it brakes" in _motor_note(motor, SimpleNamespace(omega=omega))
+
+    assert brakes(-size, size)
+    assert brakes(size, -size)
+    assert not brakes(size, size)
+    assert not brakes(-size, -size)
+    assert not brakes(0.0, size)
+    assert not brakes(0.0, -size)
