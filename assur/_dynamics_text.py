@@ -31,6 +31,13 @@ __all__ = [
 
 NO_WORK = 1e-12
 """Work, relative to the kinetic energy, below which a turn's work is round-off."""
+NO_MEAN_TORQUE = (
+    "No load does net work over a turn: without a flywheel the motor "
+    "supplies the balancing torque (column driver.torque), sized on its peak and "
+    "RMS (summary of the forces: driver.torque.max, driver.torque.min, "
+    "driver.torque.rms)"
+)
+"""What sizes the motor where the steady state's mean torque is 0."""
 
 
 def speed_text(omega: float, number: Callable[[float], str] = number_text) -> str:
@@ -75,11 +82,15 @@ def motor_text(
     """Return the motor torque's row: the steady state's, then the file's motor.
 
     One sentence for the constant torque of the steady state and, where the file
-    has a motor, one for it. ``unit`` is the torque's unit as the text around it
-    writes it, ``number`` how it writes a number.
+    has a motor, one for it. A mean torque of 0 (loads that give back their work
+    over a turn: inertia and gravity alone) sizes no motor: a sentence points to
+    the balancing torque's peak and RMS, which do. ``unit`` is the torque's unit as
+    the text around it writes it, ``number`` how it writes a number.
     """
     motor = motor_shown(result)
     text = f"{number(motor)} {unit} ({_motor_note(motor, result)})"
+    if motor == 0.0:
+        text += f". {NO_MEAN_TORQUE}"
     found = result.mechanism.motor
     if found is None:
         return text

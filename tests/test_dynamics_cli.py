@@ -910,3 +910,35 @@ def test_a_braking_motor_torque_is_told_at_any_size(size) -> None:
     assert not brakes(-size, -size)
     assert not brakes(0.0, size)
     assert not brakes(0.0, -size)
+
+
+def test_a_mean_torque_of_none_points_to_what_sizes_the_motor(capsys):
+    from assur._dynamics_text import NO_MEAN_TORQUE
+    from assur.html import render_report
+
+    # masses only: inertia gives back its work, the mean torque is 0
+    mech = assur.load(FOUR_BAR)
+    t = assur.dynamics(mech, [0.0])
+    assert t.motor == 0.0
+    status, out, _ = run(capsys, "dynamics", FOUR_BAR, "--angles", "0")
+    assert status == 0
+    assert (
+        f"motor torque                          0 N m (constant). {NO_MEAN_TORQUE}"
+        in out
+    )
+    assert NO_MEAN_TORQUE in t._repr_html_()
+    report = render_report(mech, np.arange(0.0, 360.0, 30.0))
+    assert NO_MEAN_TORQUE in report
+    # the figures it names are the forces' summary's
+    summary = assur.forces(mech, np.arange(0.0, 360.0, 30.0)).summary()
+    named = re.findall(r"driver\.torque\.\w+", NO_MEAN_TORQUE)
+    assert named
+    assert set(named) <= set(summary)
+    # a cutting force takes work over a turn: the mean torque sizes the motor
+    status, out, _ = run(capsys, "dynamics", WHITWORTH, "--delta", "0.05")
+    assert status == 0
+    assert "No load does net work" not in out
+    whitworth = assur.load(WHITWORTH)
+    assert "No load does net work" not in render_report(
+        whitworth, np.arange(0.0, 360.0, 30.0)
+    )
