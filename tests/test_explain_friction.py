@@ -262,6 +262,8 @@ def test_the_documented_friction_numbers_are_the_note_s() -> None:
         r"91.55 - (-9.272) = 100.82\ \mathrm{N\,m}",
         r"-\frac{-16925 + (-3239.46)}{200} = 100.82",
         r"P_{f,\mathrm{guide}} = 71.09 \cdot (-13.3) = -945.64",
+        r"= 100.82231 - 84.625 = 16.19731\ \mathrm{N\,m}",
+        r"= 19.14\,\%$",
     ):
         assert text in note, text
     zero, _ = _note_and_table(FRICTION, 0.0)

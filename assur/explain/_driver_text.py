@@ -82,50 +82,83 @@ def _sense(pos: Position, i: int, value: float) -> str:
 
 
 def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
-    """Return the words comparing the balancing load with the frictionless one."""
+    """Return the words comparing the balancing load with the frictionless one.
+
+    Every operation is written with numbers that redo it: each result is the
+    rounding of the operation on the numbers written before it, not of the exact
+    values, so a reader who redoes it by hand gets its last digit.
+    """
     assert pos.result is not None
     if not pos.result.ideal:
         return ""
     ideal = float(np.ravel(pos.result.ideal[i])[0])
     value = _balancing(pos, i)
-    extra = value - ideal
     d = pos.plan.drivers[i]
     speed = _speed(pos, d)
-    # the difference is quoted three times (its result, the share's numerator, the
-    # power's factor): written once, with the decimals its product needs, so that
-    # 16.2 and 16.19731 do not read as two torques
+    # the difference cancels the loads' leading digits, and its product with the
+    # speed needs more of its own than the note's two decimals: the operands are
+    # written with those digits, so that the subtraction gives them
     places = _decimals(speed)
+    minuend, subtrahend = num(value, least=places), par(ideal, least=places)
+    extra = _written(minuend) - _written(subtrahend)
+    # written once, with those digits: 16.2 and 16.19731 read as two torques
+    change = num(extra, least=places)
     words = (
         f" Without friction the same motion needs ${sym}{IDEAL} = {num(ideal)}"
         f"{unit}$ (read off the lever below); friction changes it by ${sym} - "
-        f"{sym}{IDEAL} = {num(value)} - {par(ideal)} = "
-        f"{num(extra, least=places)}{unit}$"
+        f"{sym}{IDEAL} = {minuend} - {subtrahend} = {change}{unit}$"
     )
     # a frictionless load that is round-off (at a dead centre) has no size to compare
-    if abs(ideal) > ZERO * _size(pos, i):
-        share = num(abs(extra), least=places)
+    # the share of the same two numbers as the subtraction's
+    share, whole = change.lstrip("-"), subtrahend.strip("()").lstrip("-")
+    if abs(ideal) > ZERO * _size(pos, i) and _written(whole):
         words += (
-            f" ($100 \\cdot \\frac{{{share}}}{{{num(abs(ideal))}}} = "
-            f"{num(100.0 * abs(extra) / abs(ideal))}\\,\\%$ of $|{sym}{IDEAL}|$)"
+            f" ($100 \\cdot \\frac{{{share}}}{{{whole}}} = "
+            f"{num(100.0 * _written(share) / _written(whole))}\\,\\%$ of "
+            f"$|{sym}{IDEAL}|$)"
         )
     if not speed:
         return words + "."
-    # the difference times the driver's speed is the power friction takes from it,
-    # whatever the signs of the load and the speed
+    return words + _friction_power(pos, i, sym, change)
+
+
+def _friction_power(pos: Position, i: int, sym: str, change: str) -> str:
+    """Return the power friction takes: the written change times the driver's speed.
+
+    The speed is written as everywhere else in the note (209.44, not 209.4395
+    beside it), and the product is that of the written factors.
+    """
+    d = pos.plan.drivers[i]
+    speed = _speed(pos, d)
+    value = _balancing(pos, i)
     rate = "\\omega" if d.kind == "R" else "v"
     whose = "" if len(pos.plan.drivers) == 1 else " this driver's share of"
-    # a driver that brakes (its power negative) takes that much less back: "supplies
-    # more" read as if it drove
+    factor = par(speed)
+    # the difference times the driver's speed is the power friction takes from it,
+    # whatever the signs of the load and the speed; a driver that brakes (its
+    # power negative) takes that much less back: "supplies more" read as if it
+    # drove
     how = "takes" if value * speed < 0 else "supplies"
     less = "less back" if value * speed < 0 else "more"
     return (
-        words + f", and the driver {how} $({sym} - {sym}{IDEAL})\\,{rate} = "
-        f"{num(extra, least=places)} \\cdot "
-        f"{par(speed, least=_decimals(extra))} = "
-        f"{num(extra * speed)}$ W {less}:{whose} the power friction takes. (At one "
-        "position the power may flow either way, so an efficiency means little "
-        "there: the cycle's is given by the summary, assur forces FILE --summary.)"
+        f", and the driver {how} $({sym} - {sym}{IDEAL})\\,{rate} = "
+        f"{change} \\cdot {factor} = "
+        f"{num(_written(change) * _written(factor))}$ W {less}:{whose} the power "
+        "friction takes. (At one position the power may flow either way, so an "
+        "efficiency means little there: the cycle's is given by the summary, "
+        "assur forces FILE --summary.)"
     )
+
+
+def _written(text: str) -> float:
+    r"""Return the value a number written by :func:`num` or :func:`par` reads as.
+
+    ``"(-1.5 \cdot 10^{-5})"`` reads as -1.5e-5: an operation is redone on it.
+    """
+    if "undefined" in text:
+        return math.nan
+    mantissa, _, power = text.strip("()").partition(" \\cdot 10^{")
+    return float(mantissa) * 10.0 ** int(power.rstrip("}") or 0)
 
 
 def _decimals(other: float) -> int:
