@@ -134,7 +134,8 @@ ANGLES_HELP = (
     "driver positions, deg (m for a prismatic driver): START:STOP:STEP, STOP "
     "included when on the grid, or one value; several drivers: one range each, "
     "separated by commas; default: one turn from the reference pose in steps of 1 "
-    "deg (a prismatic driver: 101 positions over +-20 %% of the mechanism's size)"
+    "deg (a prismatic driver: 101 positions over a round stroke within +-20 %% of "
+    "the mechanism's size)"
 )
 """What ``--help`` says of ``--angles`` (argparse reads ``%%`` as ``%``)."""
 FILE_HELP = "the mechanism file, .toml or .json ('-': read from stdin)"

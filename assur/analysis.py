@@ -45,8 +45,9 @@ __all__ = ["Columns", "Table", "default_positions", "forces", "kinematics"]
 def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
     """Return one full turn from the reference pose in steps of ``step`` degrees.
 
-    For a prismatic driver: 101 positions over +-20 % of the mechanism's size (that
-    of its joints, or of every point the file places where the joints all meet at
+    For a prismatic driver: 101 positions over a round stroke (1, 2 or 5 times a
+    power of ten, m), the largest within +-20 % of the mechanism's size (that of
+    its joints, or of every point the file places where the joints all meet at
     one: a ram alone). With several drivers, each its own, as many as the shortest
     has (a crank beside a prismatic driver turns 100 steps of its turn).
     """
@@ -62,10 +63,28 @@ def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
         if d.kind == "R":
             starts.append(math.degrees(d.angle0) + np.arange(0.0, 360.0, step))
         else:
-            starts.append(np.linspace(-0.2, 0.2, 101) * size)
+            starts.append(np.linspace(-1.0, 1.0, 101) * round_stroke(0.2 * size))
     count = min(len(s) for s in starts)
     out = np.stack([s[:count] for s in starts], axis=-1)
     return out[:, 0] if out.shape[1] == 1 else out
+
+
+def round_stroke(bound: float) -> float:
+    """Return the largest of 1, 2 or 5 times a power of ten not above ``bound`` (m).
+
+    The default positions of a prismatic driver then read as typed ones: +-0.02 m
+    in steps of 0.0004 m, not +-0.0223607 m in steps of 0.000447214 m.
+
+    Examples
+    --------
+    >>> round_stroke(0.0223607), round_stroke(0.2), round_stroke(0.0499)
+    (0.02, 0.2, 0.02)
+    """
+    power = 10.0 ** math.floor(math.log10(bound))
+    # log10 rounds: 0.3 / 0.1 is 2.9999999999999996, which is still 2 of 0.1
+    first = bound / power * (1.0 + 1e-12)
+    factor = max((f for f in (1.0, 2.0, 5.0, 10.0) if f <= first), default=1.0)
+    return float(f"{factor * power:.1g}")
 
 
 def kinematics(

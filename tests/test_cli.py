@@ -380,7 +380,9 @@ def test_the_options_shared_by_commands_are_told_alike():
     angles = {_options(c)["--angles"].help for c in sweeps}
     assert len(angles) == 1
     # right for a prismatic driver too, whose default is no turn
-    assert "a prismatic driver: 101 positions over +-20 %%" in angles.pop()
+    assert "a prismatic driver: 101 positions over a round stroke within +-20 %%" in (
+        angles.pop()
+    )
     assert _options("plot")["--forces"].help == _options("animate")["--forces"].help
     assert "values" in _options("plot")["--no-labels"].help
     # not N, the unit of force

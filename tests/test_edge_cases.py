@@ -629,8 +629,54 @@ def test_a_ram_alone_moves_a_fifth_of_its_drawn_size_by_default():
     assert len(positions) == 101
     assert positions[0] == pytest.approx(-0.01, rel=1e-12)
     assert positions[-1] == pytest.approx(0.01, rel=1e-12)
-    # a mechanism with a size keeps it: the drag link's joints span 0.3 m
+    # a mechanism with a size keeps it: the drag link's joints span 0.3 m, a
+    # fifth of it 0.06 m, whose round stroke is 0.05 m
     drag = assur.load(
         Path(__file__).parent / "data" / "edge" / "drag_link_beside_a_ram.toml"
     )
-    assert default_positions(drag)[-1, 1] == pytest.approx(0.06, rel=1e-12)
+    assert default_positions(drag)[-1, 1] == pytest.approx(0.05, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "path",
+    [
+        "users/wedge_lifter.toml",
+        "explain/slider_driven.toml",
+        "users/trammel_slider_driven.toml",
+        "explain/ram_only.toml",
+    ],
+)
+def test_a_prismatic_driver_s_default_stroke_is_a_round_number(path: str) -> None:
+    # +-20 % of the wedge lifter's size gave -0.0223607 m in steps of 0.000447214
+    from assur.analysis import default_positions
+    from assur.plan import plan_of
+
+    mech = assur.load(Path(__file__).parent / "data" / path)
+    positions = default_positions(mech)
+    stroke = float(positions[-1])
+    mantissa = f"{stroke:e}".partition("e")[0]
+    assert float(mantissa) in (1.0, 2.0, 5.0)
+    # the largest so round within a fifth of the size, and symmetric about the
+    # reference pose in 100 equal steps
+    bound = 0.2 * plan_of(mech).scale
+    if bound > 1e-9:  # a ram alone: its drawn size, tested above
+        assert stroke <= bound < 2.5 * stroke
+    np.testing.assert_allclose(positions, np.linspace(-stroke, stroke, 101))
+    assert float(f"{positions[1]:.6g}") == float(f"{positions[1]:.3g}")
+
+
+@pytest.mark.parametrize(
+    ("bound", "stroke"),
+    [
+        (0.0223607, 0.02),
+        (0.06, 0.05),
+        (0.3, 0.2),
+        (0.5, 0.5),
+        (9.99, 5.0),
+        (1e-5, 1e-5),
+    ],
+)
+def test_the_round_stroke_is_the_largest_within_its_bound(bound, stroke) -> None:
+    from assur.analysis import round_stroke
+
+    assert round_stroke(bound) == stroke
