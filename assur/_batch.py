@@ -22,6 +22,7 @@ from assur import kinetostatics as _kst
 from assur._branches import CANDIDATE, STEP, TURNS
 from assur._drive import EXACT_DEGREES, driver_rates, to_si
 from assur._loads import compile_loads
+from assur._quiet import quiet
 from assur._stack import restack, stack_loads, stack_plans
 from assur._variants import Many
 from assur._vec import Array, Mask, is_array, leaves
@@ -66,7 +67,7 @@ def summaries(
     plan, loads = batch.plan, batch.loads
     drive = _drive(first, batch.references, given)
     rates = driver_rates(first, None, None, k * m)
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    with quiet():
         bodies, found = _kin.solve(plan, drive, rates[0], rates[1], top=2)
         state = _kin.state_of(plan, bodies, drive, rates, 2)
         forces, result = _kst.solve(plan, loads, bodies, state)
@@ -95,7 +96,7 @@ def summaries(
     from assur.summary import Summary
 
     summary = Summary(variants=k)
-    with np.errstate(invalid="ignore"):
+    with quiet():
         summary.add(table)
         values = summary.results()
     names = list(values)
@@ -195,7 +196,7 @@ def _below(plan: Plan, reference: Array, steps: Array) -> tuple[Mask, list[Array
     bodies = _kin.drivers(plan, grid, (0.0,), (0.0,))
     near = np.zeros(n, dtype=bool)
     signs = []
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    with quiet():
         last = len(plan.solvers) - 1
         for i, solver in enumerate(plan.solvers):
             values = solver.discriminant(bodies)

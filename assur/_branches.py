@@ -25,6 +25,7 @@ import numpy as np
 
 from assur._follow import BranchOf, drivers
 from assur._kinematics import continuation
+from assur._quiet import quiet
 from assur._vec import Array
 from assur._walk import flipped
 from assur.plan import Plan
@@ -172,7 +173,7 @@ def _scan(plan: Plan) -> ChangePoints | None:
     # points give it before the next group's discriminant is taken
     n = grid.shape[0]
     bodies = drivers(plan, grid[:, None], (0.0,), (0.0,))
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    with quiet():
         for g in groups:
             solver = plan.solvers[g]
             values = solver.discriminant(bodies)
@@ -203,7 +204,7 @@ def _discriminants(
     """
     n = at.shape[0]
     bodies = drivers(plan, at[:, None], (0.0,), (0.0,))
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    with quiet():
         for g, solver in enumerate(plan.solvers[: upto + 1]):
             if g == upto:
                 values = solver.discriminant(bodies)

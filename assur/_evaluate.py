@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._chunks import CHUNK, _chunked
+from assur._quiet import quiet
 from assur._vec import Array, full, is_array, norm
 from assur.columns import Column
 
@@ -150,7 +151,7 @@ def _continuous(angle: Array) -> Array:
     # np.any and np.cumsum's own operations, without numpy's Python-level dispatch)
     turns = np.subtract(angle[..., 1:], angle[..., :-1])
     turns *= 0.5 / math.pi
-    with np.errstate(invalid="ignore"):
+    with quiet():
         np.rint(turns, out=turns)
     if turns.any():
         np.nan_to_num(turns, copy=False)
@@ -233,7 +234,7 @@ def _centre(plan: Any, leaves: list[Array], x: Array, y: Array) -> None:
     """
     omega, ox, oy, vx, vy = leaves
     translating = ~(np.abs(omega) * plan.scale > TRANSLATION * norm(vx, vy))
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+    with quiet():
         np.divide(vy, omega, out=x)
         np.subtract(plan.shift[0] + ox, x, out=x)
         np.divide(vx, omega, out=y)

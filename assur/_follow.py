@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._quiet import quiet
 from assur._vec import Array, Mask
 from assur.groups._motion import Motion
 from assur.groups.driver import motion
@@ -143,7 +144,7 @@ def tangents(
     failed = []
     rates = []
     signs = []
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    with quiet():
         for index, solver in enumerate(plan.solvers[: last + 1]):
             if solver.newton:
                 start = None if guess is None else guess[len(found)]
@@ -265,7 +266,7 @@ def _accepted(
     driver = np.max(np.abs(move), axis=1) * dt
     along = np.sum(move * move, axis=1)
     out = []
-    with np.errstate(invalid="ignore"):
+    with quiet():
         for g in range(kept.shape[0]):
             mine = owner == g
             correction = np.max(np.abs(change[mine]), axis=0)

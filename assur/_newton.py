@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._quiet import quiet
 from assur._vec import norm
 
 TOLERANCE = 1e-13
@@ -59,7 +60,7 @@ def _system(
             size, along = value[:, 0], np.ones_like(value)
         else:
             size = _norm(value)
-            with np.errstate(invalid="ignore", divide="ignore"):
+            with quiet():
                 along = np.where(size[:, None] > 0.0, value / size[:, None], 0.0)
         left.append(here[:, j] - size)
         jac.append([-weight * _dot(along, response[k][j]) for k in range(m)])
@@ -245,7 +246,7 @@ def _newton_step(jac: list[list[Any]], left: list[Any]) -> tuple[Any, Any, Any]:
     is nearly singular: a reaction through zero, a group on the edge of locking.
     """
     m = len(left)
-    with np.errstate(invalid="ignore", over="ignore"):
+    with quiet():
         if m <= 3:
             adj, det = _adjugate(jac)
         else:

@@ -10,8 +10,6 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import Any
 
-import numpy as np
-
 from assur import _kinematics as _kin
 from assur import _state
 from assur import kinetostatics as _kst
@@ -21,6 +19,7 @@ from assur._evaluate import SHORT
 from assur._loads import compile_loads
 from assur._paths import PathBranches
 from assur._progress import progress
+from assur._quiet import quiet
 from assur._reach import unreached
 from assur._state import jerks
 from assur._unexplained import _unexplained
@@ -84,7 +83,7 @@ def _solve_slice(
 ) -> tuple[_kin.KinematicState, Any, list[Any]]:
     """Solve one slice of a sweep; return its state, force fields and troubles."""
     # failed or dead-centre positions carry NaN through; _report names them
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    with quiet():
         speed, acceleration, jerk = rates
         bodies, found = _kin.solve(
             plan, drive, speed, acceleration, top, branch_of, jerk

@@ -22,6 +22,7 @@ import numpy as np
 
 from assur._branches import CANDIDATE, TOUCH, closed, lowest
 from assur._follow import drivers, layout, tangents
+from assur._quiet import quiet
 from assur._vec import Array, Index
 from assur._walk import PAST, Met, flipped, stops, walk
 from assur.plan import Plan
@@ -212,7 +213,7 @@ def _counts(
     still = (0.0,) * len(plan.drivers)
     bodies = drivers(plan, paths.at(paths.s, paths.owner), still, still)
     out = {}
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    with quiet():
         for g in groups:
             solver = plan.solvers[g]
             if solver.newton:

@@ -28,6 +28,7 @@ from assur._branches import (
 )
 from assur._follow import BranchOf
 from assur._kinematics import Trouble, solve
+from assur._quiet import quiet
 from assur._vec import Array, Mask
 from assur.groups._motion import Motion
 from assur.plan import Plan
@@ -133,7 +134,7 @@ def beyond(plan: Plan, drive: Array) -> Mask:
     out = ~span.reached(drive[:, 0])
     if out.any():
         branch_of = branch_function(plan) if change_points(plan) is not None else None
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        with quiet():
             found = solve(plan, drive[out], (0.0,), (0.0,), 0, branch_of)[1]
         far = np.ones(int(out.sum()), dtype=bool)
         for trouble in found:
@@ -161,7 +162,7 @@ def _scan(plan: Plan) -> Reach | None:
     cps = np.zeros(0) if points is None else np.concatenate(points.points)
     # the sweeps' own branches past change points (see assur._passes)
     branch_of = branch_function(plan) if cps.size else None
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    with quiet():
         bodies, found = solve(plan, grid[:, None], (0.0,), (0.0,), 0, branch_of)
     barriers = _failed(plan, grid, found, cps)
     # gaps narrower than the grid's step, found where a discriminant dips below zero
@@ -171,7 +172,7 @@ def _scan(plan: Plan) -> Reach | None:
         # a family without a signed conditioning: only its failures are barriers
         if solver.newton or not hasattr(solver, "signed_conditioning"):
             continue
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        with quiet():
             det = _determinant(solver, bodies)
         for a, b in _sign_changes(grid, np.broadcast_to(det, grid.shape), cps):
             x = _refine(plan, g, a, b, branch_of)
@@ -224,7 +225,7 @@ def _determinant(solver: Any, bodies: list[Motion]) -> Any:
 
 def _sign_changes(grid: Array, det: Array, cps: Array) -> list[tuple[float, float]]:
     """Return the grid intervals where ``det`` changes sign with no change point."""
-    with np.errstate(invalid="ignore"):
+    with quiet():
         flip = np.sign(det[:-1]) * np.sign(det[1:]) < 0.0
     out = []
     for i in np.flatnonzero(flip).tolist():
@@ -243,7 +244,7 @@ def _refine(
     solver = plan.solvers[g]
 
     def det(x: float) -> float:
-        with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        with quiet():
             bodies = solve(plan, np.array([[x]]), (0.0,), (0.0,), 0, branch_of)[0]
             value = float(np.ravel(_determinant(solver, bodies))[0])
         # a pose that does not close is itself the dead centre

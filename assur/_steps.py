@@ -19,6 +19,7 @@ import numpy.typing as npt
 
 from assur import kinetostatics as _kst
 from assur._loads import compile_loads
+from assur._quiet import quiet
 from assur._state import KinematicState, motions
 from assur.plan import Plan
 
@@ -48,6 +49,6 @@ def before_steps(
     # the tables read the drive alone: the motion stays the position's own
     drive[:, 0] -= BEFORE * size
     nudged = dataclasses.replace(kin, drive=drive)
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+    with quiet():
         forces, _ = _kst.solve(plan, loads, motions(plan, kin), nudged)
     return _kst.ForceState(*forces.fields())

@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._quiet import quiet
 from assur._runs import positions_where
 from assur._text import listing
 from assur._troubles import NOTICES
@@ -35,7 +36,7 @@ def _unexplained(
     # one sum of them all is finite when each of them is (an overflow of the sum,
     # or inf - inf, sends the search below, which looks at each); the arrays laid
     # end to end are summed in one call, where a sum per array cost one call each
-    with np.errstate(invalid="ignore", over="ignore"):
+    with quiet():
         total = np.add.reduce(np.concatenate(arrays, axis=None))
     if np.isfinite(total):
         return

@@ -16,6 +16,8 @@ import numpy as np
 from numpy.typing import ArrayLike as ArrayLike  # the public signatures' inputs
 from numpy.typing import NDArray
 
+from assur._quiet import quiet
+
 Array = NDArray[np.float64]
 Mask = NDArray[np.bool_]
 Index = NDArray[np.integer[Any]]
@@ -136,7 +138,7 @@ def norm(x: Array, y: Array, out: Array | None = None) -> Array:
     """
     if np.ndim(x) == 0 and np.ndim(y) == 0:
         return np.hypot(x, y)  # type: ignore[no-any-return]
-    with np.errstate(over="ignore"):  # a huge square is redone by np.hypot below
+    with quiet():  # a huge square is redone by np.hypot below
         s = np.multiply(x, x, out=out)
         s += y * y
     # two reductions find the rare odd square without a mask over every element
@@ -148,7 +150,7 @@ def norm(x: Array, y: Array, out: Array | None = None) -> Array:
     )
     if fine:
         return np.sqrt(s, out=s)
-    with np.errstate(invalid="ignore"):
+    with quiet():
         odd = (s < SQUARE_RANGE[0]) | (s > SQUARE_RANGE[1])
     odd &= (x != 0.0) | (y != 0.0)
     np.sqrt(s, out=s)

@@ -24,6 +24,7 @@ from assur._crosscheck import residual, virtual_power
 from assur._friction import friction_wrench, solve_group
 from assur._kinematics import KinematicState
 from assur._loads import LoadPlan, table_values
+from assur._quiet import quiet
 from assur._still import Still, rate, still
 from assur._vec import Array, Leaf, Mask, add, cross, dot, full, mul, sub, take_rows
 from assur.groups._motion import Motion, direction, point, rotated
@@ -397,7 +398,7 @@ def offset(
     nx, ny = rotated(bodies[pair.first], pair.normal)
     normal = np.asarray(dot((fx, fy), (nx, ny)), dtype=float)
     couple = np.asarray(couple, dtype=float)
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+    with quiet():
         none = ~(np.abs(normal) > NO_FORCE * np.asarray(scale))
         none |= ~(np.abs(couple) <= FAR_FORCE * size * np.abs(normal))
         return np.where(none, np.nan, couple / np.where(none, 1.0, normal))

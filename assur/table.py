@@ -18,6 +18,7 @@ from assur._exports import Columns
 from assur._keep import keep
 from assur._kinematics import KinematicState
 from assur._loads import compile_loads
+from assur._quiet import quiet
 from assur._text import counted, describe, suggest
 from assur._vec import Array, ArrayLike, freeze
 from assur.columns import Column, families, schema
@@ -190,7 +191,7 @@ class Table(Columns):
         if found is None:
             from assur._kinematics import extend
 
-            with np.errstate(all="ignore"):  # the sweep's own troubles were told
+            with quiet():  # the sweep's own troubles were told
                 found = extend(self.plan, self.state)
             # read-only before it is kept: another thread may read it at once
             freeze((found.motion, found.slide))
@@ -263,7 +264,7 @@ class Table(Columns):
         else:
             # values that are not finite were named by the sweep (a warning):
             # the columns built from them say nothing more
-            with np.errstate(all="ignore"):
+            with quiet():
                 self._store(evaluate(self, column))
         return self._cache[name]
 
@@ -301,7 +302,7 @@ class Table(Columns):
         cache = self._cache
         if not cache:
             # the table's own grouping by family: no pass over its columns
-            with np.errstate(all="ignore"):  # as in __getitem__
+            with quiet():  # as in __getitem__
                 self._store(grouped(self, self._families))
         elif len(cache) < len(self._index):
             self._compute(c for c in self.schema if c.name not in cache)
@@ -309,7 +310,7 @@ class Table(Columns):
 
     def _compute(self, columns: Iterable[Column]) -> None:
         """Compute ``columns`` (and those computed along with them) into the cache."""
-        with np.errstate(all="ignore"):  # as in __getitem__
+        with quiet():  # as in __getitem__
             self._store(materialize(self, columns))
 
     def _store(self, found: dict[str, Array]) -> None:

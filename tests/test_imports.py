@@ -24,6 +24,7 @@ PACKAGE = Path(__file__).resolve().parent.parent / "assur"
 RANKS = {
     "assur.errors": 0,
     "assur._vec": 0,
+    "assur._quiet": 0,
     "assur._lookalike": 0,
     "assur._text": 0,
     "assur._width": 0,

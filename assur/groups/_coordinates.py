@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._quiet import quiet
 from assur._vec import add, dot, mul, sub
 from assur.groups._motion import Motion, Vec, direction, point
 from assur.groups._pairs import partials, residual
@@ -121,7 +122,7 @@ def signed_conditioning(plan: DyadSolver, jac: Jacobian) -> Any:
     j00, j01, j10, j11 = jac
     # a pose that does not close (parallel slide lines, say) has infinite entries:
     # its conditioning is NaN, below every threshold, and no warning is due
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+    with quiet():
         if plan.mid.kind == "P":
             # the group's lever arms, not the machine's: a slider 0.3 m across in a
             # chain 12 m long is no nearer its dead centre than on its own
@@ -133,7 +134,7 @@ def signed_conditioning(plan: DyadSolver, jac: Jacobian) -> Any:
 def solve2(jac: Jacobian, r0: Any, r1: Any) -> tuple[Any, Any]:
     """Solve ``J x = -r`` by Cramer's rule, element by element."""
     j00, j01, j10, j11 = jac
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+    with quiet():
         # numpy's division: a zero determinant gives inf or NaN, not an exception
         inv = np.divide(1.0, sub(mul(j00, j11), mul(j01, j10)))
         return mul(sub(mul(j01, r1), mul(j11, r0)), inv), mul(

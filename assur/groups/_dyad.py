@@ -19,6 +19,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
+from assur._quiet import quiet
 from assur._vec import add, cross, dot, mul, sub, wrap
 from assur.errors import ModelError
 from assur.groups._coordinates import (
@@ -74,7 +75,7 @@ def closing_root(square: Any, size: Any) -> Any:
 
     ``size`` is that of the terms ``square`` is the difference of.
     """
-    with np.errstate(invalid="ignore"):
+    with quiet():
         # one reduction (NaN passed over) tells the common case: a dyad that closes
         if not np.fmin.reduce(square, axis=None, initial=np.inf) < 0.0:
             return np.sqrt(square)

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._quiet import quiet
 from assur._vec import norm, wrap
 from assur.groups._dyad import DyadSolver, compile_dyad
 from assur.groups._motion import Motion, point
@@ -32,7 +33,7 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     :math:`|D|\cos(\angle D - \nu - \varphi) = n_0\cdot(d_g - d_h)`.
     """
     gx, gy, n0, c0 = _across(plan, bodies)
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with quiet():
         psi = np.arccos(c0 / norm(gx, gy))
     phi = wrap(np.arctan2(gy, gx) - math.atan2(n0[1], n0[0]) - branch * psi)
     return phi, phi
@@ -44,7 +45,7 @@ def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
     Negative where the dyad cannot close; zero where its two branches meet.
     """
     gx, gy, _, c0 = _across(plan, bodies)
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with quiet():
         return 1.0 - c0 * c0 / (gx * gx + gy * gy)
 
 

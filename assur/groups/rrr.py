@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._quiet import quiet
 from assur.groups._dyad import DyadSolver, closing_root, compile_dyad
 from assur.groups._motion import Motion, point
 from assur.groups._protocol import CompileContext
@@ -32,7 +33,7 @@ def assemble(plan: DyadSolver, bodies: list[Motion], branch: Any) -> tuple[Any, 
     """
     r1, r2, gx, gy = _pins(plan, bodies)
     d1, d2 = plan.d_mid
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+    with quiet():
         inv = np.divide(1.0, gx * gx + gy * gy)
         a = 0.5 + 0.5 * (r1 - r2) * inv
         h = branch * closing_root(r1 * inv - a * a, r1 * inv)
@@ -56,7 +57,7 @@ def discriminant(plan: DyadSolver, bodies: list[Motion]) -> Any:
     """
     r1, r2, gx, gy = _pins(plan, bodies)
     length = gx * gx + gy * gy
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+    with quiet():
         a = 0.5 + 0.5 * np.divide(r1 - r2, length)
         return (np.divide(r1, length) - a * a) * length * length / (r1 * r2)
 
