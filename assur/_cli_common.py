@@ -207,11 +207,12 @@ def one_position(mech: Any, spec: str | None) -> Any:
     >>> one_position(assur.catalog.four_bar(), "30").tolist()
     [30.0]
     """
-    from assur.analysis import default_positions
+    from assur.analysis import reference_position
 
     check_structure(mech)
     if spec is None:
-        return default_positions(mech)[0]
+        # a prismatic driver's default positions start a stroke below the pose
+        return reference_position(mech)
     drivers = max(1, len(mech.drivers))
     parts = spec.split(",")
     if ":" in spec:

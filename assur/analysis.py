@@ -69,6 +69,26 @@ def default_positions(mech: Mechanism, step: float = 1.0) -> Array:
     return out[:, 0] if out.shape[1] == 1 else out
 
 
+def reference_position(mech: Mechanism) -> Array:
+    """Return the driver positions of the reference pose, as :func:`default_positions`.
+
+    A crank's angle in the file (deg); 0 m for a prismatic driver, whose position
+    is its displacement from that pose. One value (0-d) for one driver, one per
+    driver (drivers,) for several.
+
+    Examples
+    --------
+    >>> from assur import catalog
+    >>> round(float(reference_position(catalog.four_bar())), 9)
+    60.0
+    """
+    plan = plan_of(mech)
+    if not plan.drivers:
+        raise _no_driver(plan)
+    values = [math.degrees(d.angle0) if d.kind == "R" else 0.0 for d in plan.drivers]
+    return np.array(values[0] if len(values) == 1 else values)
+
+
 def round_stroke(bound: float) -> float:
     """Return the largest of 1, 2 or 5 times a power of ten not above ``bound`` (m).
 

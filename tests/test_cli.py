@@ -951,3 +951,25 @@ def test_a_sweep_left_out_whole_says_one_expected(capsys):
     assert text.endswith(
         "; expected less friction, or positions where it can be driven"
     )
+
+
+def test_one_position_by_default_is_the_reference_pose(capsys):
+    # a prismatic driver's default positions start a stroke below the pose, and
+    # --angle's default ("the reference pose") took the first of them: -0.05 m
+    data = Path(__file__).parent / "data"
+    ram = str(data / "explain" / "slider_driven.toml")
+    assert main(["explain", ram]) == 0
+    heading = capsys.readouterr().out.splitlines()[0]
+    assert heading.endswith("at driver position 0 m: the analysis explained")
+    # the same pose as asked for by its value
+    assert main(["explain", ram, "--angle", "0"]) == 0
+    assert capsys.readouterr().out.splitlines()[0] == heading
+    # a crank's is its angle in the file; beside a ram, each driver its own
+    from assur._cli_common import one_position
+
+    assert float(one_position(assur.catalog.four_bar(), None)) == pytest.approx(60.0)
+    # (its crank drawn at 0 deg, then its ram)
+    both = assur.load(data / "edge" / "drag_link_beside_a_ram.toml")
+    assert [d.kind for d in assur.plan.plan_of(both).drivers] == ["R", "P"]
+    np.testing.assert_array_equal(one_position(both, None), [0.0, 0.0])
+    assert assur.analysis.default_positions(both)[0][1] < 0.0
