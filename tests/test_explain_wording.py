@@ -772,3 +772,19 @@ def test_a_wrapped_angle_sum_equates_only_equal_angles(
         assert len(worked) >= 2, text
         for x, y in itertools.pairwise(worked):
             assert x == pytest.approx(y, abs=0.015), text
+
+
+@pytest.mark.parametrize(("force", "word"), [(1e-170, "drives"), (-1e-170, "brakes")])
+def test_whether_the_balancing_load_drives_is_told_by_signs(tmp_path, force, word):
+    # the sign of value * speed was read, and 6.7e-172 * 1e-170 is 0: a crank that
+    # drives the slider against its load was said to brake
+    text = (EXAMPLES / "slider_crank_exercise.toml").read_text(encoding="utf-8")
+    text = text.replace("omega = 200.0", "omega = 1e-170")
+    text += f'\n[[loads]]\nlink = "slider"\nat = "C"\nforce = [{force}, 0.0]\n'
+    path = tmp_path / "tiny.toml"
+    path.write_text(text)
+    mech = assur.load(path)
+    # the slider moves to -x at 45 deg: a load to +x resists, and the crank drives
+    assert assur.kinematics(mech, [45.0])["C.vx"][0] < 0.0
+    note = str(explain(mech, 45.0))
+    assert f"It {word} the link" in note
