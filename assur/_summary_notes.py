@@ -71,7 +71,34 @@ def notes(summary: Summary) -> list[str]:
                 f"positions {step:.3g} deg apart: the largest values are those at "
                 "these positions, and a finer sweep may find larger ones between them"
             )
-    return out + _idle(summary) + _steps(summary)
+    return out + _idle(summary) + _turned(summary) + _steps(summary)
+
+
+def _turned(summary: Summary) -> list[str]:
+    """Return how to read a peak's position (deg) that lies outside 0 to 360.
+
+    A turn from a reference pose at 60 deg runs from 60 to 419 deg, as the table's
+    angles do, and the peaks' positions are the table's: 375 deg read as a fault to
+    an engineer looking for 15 deg on the crank.
+    """
+    if summary.variants != 1 or not summary.count:
+        return []
+    beyond = [
+        value
+        for key, value in summary.result().items()
+        if key.endswith(".at")
+        and summary.units.get(key) == "deg"
+        and math.isfinite(value)
+        and not 0.0 <= value < 360.0
+    ]
+    if not beyond:
+        return []
+    first = beyond[0]
+    within = first % 360.0
+    return [
+        "positions (.at) are the table's, which run on from the reference pose: "
+        f"{first:g} deg is the crank at {within:g} deg"
+    ]
 
 
 def _idle(summary: Summary) -> list[str]:

@@ -304,8 +304,10 @@ def test_cli_summary_text_and_json(capsys, tmp_path):
     lines = text.splitlines()
     assert lines[0].startswith("Summary over 360 positions")
     shown = {line.split()[0]: line.split()[1:] for line in lines[1:]}
-    # the values, then what is said of them (no load takes work: efficiency 0)
+    # the values, then what is said of them (no load takes work: efficiency 0; a
+    # peak past 360 deg)
     assert shown.pop("(efficiency")[0] == "0:"
+    assert "is the crank at" in " ".join(shown.pop("(positions"))
     assert list(shown) == list(summary)
     for key, (value, *_) in shown.items():
         assert float(value) == pytest.approx(summary[key], rel=1e-5, abs=1e-9), key
@@ -813,3 +815,20 @@ def test_a_largest_of_exactly_zero_is_found_where_it_is() -> None:
     running.add(np.array([[-1.0, 0.0, -2.0]]), where, None, np.array([2]))
     assert running.at[0] == where[0, 1]
     assert running.top[0] == 0.0
+
+
+def test_a_peak_s_position_past_a_turn_is_read_on_the_crank(capsys):
+    # a turn from the four-bar's reference pose runs from 60 to 419 deg, and its
+    # peaks were printed "375 deg" with nothing to say that is 15 deg on the crank
+    path = str(EXAMPLES / "four_bar.toml")
+    assert main(["forces", path, "--summary"]) == 0
+    out = capsys.readouterr().out
+    at = float(re.search(r"O2\.F\.at\s+(\S+)\s+deg", out).group(1))
+    assert not 0.0 <= at < 360.0
+    said = f"{at:g} deg is the crank at {at - 360.0:g} deg"
+    assert said in out
+    # the same peaks found within one turn of 0 deg need no word
+    assert main(["forces", path, "--summary", "--angles", "0:359:1"]) == 0
+    out = capsys.readouterr().out
+    assert float(re.search(r"O2\.F\.at\s+(\S+)\s+deg", out).group(1)) == at - 360.0
+    assert "is the crank at" not in out
