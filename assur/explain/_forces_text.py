@@ -212,7 +212,9 @@ def couple_blocks(
         line,
         f"M_{{{j}}} = {minus}\\sum M_{{{j}}} = {num(couple)}\\ \\mathrm{{N\\,m}}",
     ]
-    pressed = abs(across) > 1e-9 * max(1.0, math.hypot(*force))
+    # round-off is told against the loads at play, not against 1 N: a watch's
+    # guide pressed by 4e-10 N (or a crank turning at 1e-3 rad/s) is pressed
+    pressed = abs(across) > 1e-9 * max(pos.force_scale(), math.hypot(*force))
     if pressed:
         if normal:
             # the normal force, across the guide (n = k x e), said before it divides

@@ -58,11 +58,15 @@ def _draw_arrows(
     ``text`` is ``"values"`` (name and value), ``"names"`` or None (no labels).
     """
     seen = []
-    tiny = 1e-9 * max([abs(a.couple or 0) for a in arrows] + [1.0])
     # a force of round-off (a guide's at a dead centre, 1.6e-14 N beside 3266 N)
     # is none: not an arrow with "1.63e-14 N" on it
     sizes = [float(np.hypot(*a.force)) for a in arrows if a.force is not None]
-    least = 1e-9 * max([*sizes, 0.0])
+    largest_force = max([*sizes, 0.0])
+    least = 1e-9 * largest_force
+    # a couple's round-off is the forces' times the drawing's size, not 1e-9 N m:
+    # a watch's balancing torque of 9e-14 N m is drawn
+    moments = [abs(a.couple or 0.0) for a in arrows]
+    tiny = 1e-9 * max([*moments, largest_force * ctx.size])
     # a couple's arc grows with it: one of 0.0005 N m beside 0.16 N m was drawn
     # as large (no scale gives a couple a length; the size tells which matter)
     largest = max([abs(a.couple or 0.0) for a in arrows] + [0.0])

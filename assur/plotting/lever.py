@@ -33,7 +33,7 @@ from assur.plotting._drawing import (
     _legend,
 )
 from assur.plotting._mathtext import _symbol
-from assur.plotting._numbers import quantity
+from assur.plotting._numbers import PLAIN_RANGE, quantity
 from assur.plotting._placing import Name, place_names
 from assur.plotting._style import INERTIA_COLOR, LOAD_COLOR, literal, load_colour
 from assur.plotting.plans import (
@@ -366,10 +366,15 @@ def _list_terms(
         for _, _, t in shares if t is not None
     ])  # fmt: skip
     size = big if big > ROUND_OFF * reach else reach
+    # a watch's 1e-13 N m, a crane's 1e16: one power of ten, so no share reads 0
+    plain = size == 0 or PLAIN_RANGE[0] <= size < PLAIN_RANGE[1]
+    power = 0 if plain else 3 * math.floor(math.log10(size) / 3)
+    size /= 10.0**power
     places = 4 if size == 0 else min(8, max(0, 4 - math.floor(math.log10(size))))
+    shown = f"$10^{{{power}}}$ {unit}" if power else unit
     lines = [
         f"each load's moment about the pole / {rate}",
-        f"({given}; a couple: -M·$\\omega_L$/{rate}), {unit}:",
+        f"({given}; a couple: -M·$\\omega_L$/{rate}), {shown}:",
     ]
     for tex, share, t in shares:
         head = "friction" if t is None else _symbol(tex)
@@ -384,11 +389,11 @@ def _list_terms(
         # a share that rounds to nothing is written 0 (a dead centre's round-off),
         # not +0.000 or -0.000; a decimal tie (0.009375 N m) rounds alike on
         # every machine, read first to 12 digits
-        rounded = round(settled(share), places + 1) + 0.0
+        rounded = round(settled(share / 10.0**power), places + 1) + 0.0
         lines.append(f"{head}:  {f'{rounded:+.{places + 1}f}' if rounded else '0'}")
-    total = round(settled(balancing), places) + 0.0
-    lines.append(
-        f"sum = balancing load: {f'{total:.{places}f}' if total else '0'} {unit}"
-    )
+    total = round(settled(balancing / 10.0**power), places) + 0.0
+    times = "× " if power else ""
+    said = f"{total:.{places}f} {times}{shown}" if total else "0 " + unit
+    lines.append(f"sum = balancing load: {said}")
     ax.text(1.03, 1.0, "\n".join(lines), transform=ax.transAxes, fontsize=8,
             va="top", ha="left", linespacing=1.7)  # fmt: skip
