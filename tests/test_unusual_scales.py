@@ -28,9 +28,13 @@ EXAMPLES = Path(__file__).parent.parent / "examples"
 ANGLE = 30.0
 
 
-def _sized(scale: float) -> assur.Table:
-    """Return the forces at :data:`ANGLE` of the exercise at ``scale`` (see above)."""
-    mech = moved(assur.load(EXAMPLES / "slider_crank_exercise.toml"), scale=scale)
+def _sized(
+    scale: float, stem: str = "slider_crank_exercise", angle: float = ANGLE
+) -> assur.Table:
+    """Return the forces at ``angle`` (deg) of example ``stem`` at ``scale`` (see
+    above), without its loads and gravity (inertia loads alone)."""
+    mech = moved(assur.load(EXAMPLES / f"{stem}.toml"), scale=scale)
+    mech = dataclasses.replace(mech, loads=(), gravity=None)
     # moved() keeps the masses and scales inertias by scale**2: one material
     heavy = tuple(
         dataclasses.replace(
@@ -42,7 +46,7 @@ def _sized(scale: float) -> assur.Table:
     )
     with warnings.catch_warnings():
         warnings.filterwarnings("ignore", "joints: the mechanism", assur.AssurWarning)
-        return assur.forces(dataclasses.replace(mech, links=heavy), [ANGLE])
+        return assur.forces(dataclasses.replace(mech, links=heavy), [angle])
 
 
 def test_the_similarity_holds() -> None:
@@ -103,13 +107,20 @@ def test_the_lever_s_shares_keep_their_digits_at_any_size(
 
 
 @pytest.mark.parametrize("scale", [1e-3, 1e3])
-def test_the_picture_draws_the_couples_at_any_size(scale: float) -> None:
+@pytest.mark.parametrize(
+    ("stem", "angle"), [("slider_crank_exercise", ANGLE), ("whitworth", 100.0)]
+)
+def test_the_picture_draws_the_couples_at_any_size(
+    scale: float, stem: str, angle: float
+) -> None:
     import matplotlib.pyplot as plt
 
     from assur.plotting import mechanism
 
     # a watch's balancing torque (9e-14 N m) and the rod's inertia torque were
-    # not drawn: a couple below 1e-9 N m was taken for round-off
+    # not drawn: a couple below 1e-9 N m was taken for round-off; and the
+    # Whitworth lever's slot, pressed by 1e-10 N, was drawn as a couple beside
+    # its force, as if that force were round-off
     def names(table: assur.Table) -> list[str]:
         ax = mechanism.draw(table, forces=True)
         try:
@@ -117,6 +128,6 @@ def test_the_picture_draws_the_couples_at_any_size(scale: float) -> None:
         finally:
             plt.close(ax.figure)
 
-    full = names(_sized(1.0))
+    full = names(_sized(1.0, stem, angle))
     assert any(name.startswith("$M_") for name in full)
-    assert names(_sized(scale)) == full
+    assert names(_sized(scale, stem, angle)) == full

@@ -101,7 +101,9 @@ def _reaction(
     e = pose.turn(pair.first, pair.axis)
     normal = float(np.dot(f, np.array([-e[1], e[0]])))
     m = sign * float(couple[row])
-    if abs(normal) > 1e-9 and abs(m / normal) < 0.5 * ctx.size:
+    # a normal force of round-off is that of the reaction, not 1e-9 N: a watch's
+    # slot pressed by 1e-10 N is drawn where it acts, not as a couple beside it
+    if abs(normal) > 1e-9 * float(np.hypot(*f)) and abs(m / normal) < 0.5 * ctx.size:
         return q + (m / normal) * e, f, None
     return q, f, m
 
