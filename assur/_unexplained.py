@@ -34,11 +34,15 @@ def _unexplained(
     if not arrays:
         return
     # one sum of them all is finite when each of them is (an overflow of the sum,
-    # or inf - inf, sends the search below, which looks at each); the arrays laid
-    # end to end are summed in one call, where a sum per array cost one call each
+    # or inf - inf, sends the search below, which looks at each); summed in place
+    # into one array of a position each: the arrays laid end to end and summed in
+    # one call were a copy of the whole slice, out of the cache (a long four-bar
+    # sweep with every column read took 11 % longer)
     with quiet():
-        total = np.add.reduce(np.concatenate(arrays, axis=None))
-    if np.isfinite(total):
+        total = arrays[0] + arrays[1] if len(arrays) > 1 else arrays[0].copy()
+        for x in arrays[2:]:
+            total += x
+    if np.isfinite(total).all():
         return
     explained = np.zeros(given.shape[0], dtype=bool)
     for trouble in found:
