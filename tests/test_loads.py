@@ -276,8 +276,11 @@ def test_a_step_is_read_on_its_side(xs, ys, at, want):
         ((0.0, 0.0, 360.0, 360.0), (2, 1, 2, 1), None),
     ],
 )
-def test_a_step_a_whole_turn_on_agrees_with_the_first(table, values, refused):
-    load = LoadTable("driver", table, (tuple(map(float, values)),))
+@pytest.mark.parametrize("scale", [1.0, 1e-12, 1e12])
+def test_a_step_a_whole_turn_on_agrees_with_the_first(table, values, refused, scale):
+    # at every scale: a watch's torque table of 1e-12 N m was read against 1 N m,
+    # and its second turn's values were taken for the first's
+    load = LoadTable("driver", table, (tuple(scale * float(v) for v in values),))
     if refused is None:
         crank_slider(Load("crank", torque=load))  # checked as it is made
         return
@@ -294,3 +297,15 @@ def test_a_position_given_three_times_is_refused():
         "loads[0].torque.table: expected increasing positions, each at most twice "
         "(twice: a step, the value jumps there)"
     )
+
+
+@pytest.mark.parametrize("scale", [1.0, 1e-12, 1e12])
+def test_a_table_s_steps_are_found_at_every_scale(scale):
+    # a step of 1e-12 N m was under a slack of 1e-9 N m: read as no step
+    from assur._tables import step_before, steps
+
+    xs = np.array([0.0, 90.0, 90.0, 360.0])
+    values = [scale * np.array([0.0, 1.0, 2.0, 0.0])]
+    assert steps(xs, values, True).tolist() == [90.0]
+    assert step_before(xs, values, 90.0, True) == [scale * 1.0]
+    assert step_before(xs, values, 45.0, True) is None
