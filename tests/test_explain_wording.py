@@ -40,8 +40,8 @@ def _variant(tmp_path: Path, stem: str, *edits: tuple[str, str]) -> Path:
     return path
 
 
-def _friction_sentence(tmp_path: Path, stem: str, angle: float) -> str:
-    """Return the note's sentence on friction's change of the balancing load.
+def _friction_note(tmp_path: Path, stem: str, angle: float) -> tuple[str, str]:
+    """Return a note with friction and its sentence on the balancing load's change.
 
     ``stem`` is an example's, or an ``omega = ...`` of the friction slider-crank.
     """
@@ -50,7 +50,22 @@ def _friction_sentence(tmp_path: Path, stem: str, angle: float) -> str:
     else:
         path = EXAMPLES / f"{stem}.toml"
     note = str(explain(assur.load(path), angle))
-    return next(x for x in note.splitlines() if "friction changes it by" in x)
+    return note, next(x for x in note.splitlines() if "friction changes it by" in x)
+
+
+def _friction_sentence(tmp_path: Path, stem: str, angle: float) -> str:
+    """Return the note's sentence on friction's change of the balancing load."""
+    return _friction_note(tmp_path, stem, angle)[1]
+
+
+FRICTION_NOTES = [
+    ("slider_crank_friction", 45.0),
+    ("slider_crank_locking", 90.0),
+    ("four_bar_bearings", 45.0),
+    ("omega = 209.4395102", 45.0),
+]
+"""Notes whose friction changes the balancing load: examples, and a speed whose
+note writes fewer digits than it holds."""
 
 
 def _number(note: str, before: str) -> float:
@@ -225,15 +240,7 @@ def test_friction_s_power_is_said_as_the_driver_sees_it(
     assert a * b == pytest.approx(c, abs=0.005)  # to the last digit written
 
 
-@pytest.mark.parametrize(
-    ("stem", "angle"),
-    [
-        ("slider_crank_friction", 45.0),
-        ("slider_crank_locking", 90.0),
-        ("four_bar_bearings", 45.0),
-        ("omega = 209.4395102", 45.0),
-    ],
-)
+@pytest.mark.parametrize(("stem", "angle"), FRICTION_NOTES)
 def test_friction_s_change_reads_alike_wherever_it_is_quoted(
     stem: str, angle: float, tmp_path: Path
 ) -> None:
@@ -256,26 +263,13 @@ def _redone(exact: float, written: str) -> bool:
     return abs(exact - float(written)) <= 0.5 * 10.0**-places * (1 + 1e-9)
 
 
-@pytest.mark.parametrize(
-    ("stem", "angle"),
-    [
-        ("slider_crank_friction", 45.0),
-        ("slider_crank_locking", 90.0),
-        ("four_bar_bearings", 45.0),
-        ("omega = 209.4395102", 45.0),
-    ],
-)
+@pytest.mark.parametrize(("stem", "angle"), FRICTION_NOTES)
 def test_friction_s_change_is_redone_with_its_written_numbers(
     stem: str, angle: float, tmp_path: Path
 ) -> None:
     # "100.82 - 84.63 = 16.19731", and omega written 209.44 in the note but
     # 209.4395 in the power: no hand redoes either
-    if stem.startswith("omega"):
-        path = _variant(tmp_path, "slider_crank_friction", ("omega = 200.0", stem))
-    else:
-        path = EXAMPLES / f"{stem}.toml"
-    note = str(explain(assur.load(path), angle))
-    sentence = next(x for x in note.splitlines() if "friction changes it by" in x)
+    note, sentence = _friction_note(tmp_path, stem, angle)
     number = r"\(?(-?[0-9.]+)\)?"
     subtraction = re.search(rf"= {number} - {number} = {number}\\ ", sentence)
     share = re.search(rf"\\frac\{{{number}\}}\{{{number}\}} = {number}\\,\\%", sentence)
