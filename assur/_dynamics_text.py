@@ -17,6 +17,7 @@ import numpy as np
 from assur._motor import against_omega
 from assur._startup_turns import PERIODIC_RTOL
 from assur._text import crank_angle_text, number_text, spoken
+from assur._vec import opposed
 
 __all__ = [
     "dynamics_html",
@@ -69,9 +70,9 @@ def _motor_note(motor: float, result: Any) -> str:
         # torques are counter-clockwise positive: a clockwise crank's motor
         # drives it with a negative torque
         note += ", counter-clockwise positive"
-    # the signs compared, not the product: 1e-200 * -1e-200 is -0.0, as in
-    # the motor's check (assur._motor.against_omega); a motor of 0 does neither
-    if (motor < 0 < result.omega) or (result.omega < 0 < motor):
+    # the signs compared (a product of 1e-200 and -1e-200 is -0.0), as in the
+    # motor's check (assur._motor.against_omega); a motor of 0 does neither
+    if opposed(motor, result.omega):
         note += "; it brakes: the loads drive the crank"
     return note
 

@@ -64,6 +64,20 @@ def integer(value: Any) -> int | None:
     return int(value)
 
 
+def opposed(a: float, b: float) -> bool:
+    """Return whether ``a`` and ``b`` have opposite signs (a zero opposes nothing).
+
+    The signs compared, not the product: 1e-170 * -1e-170 is -0.0, which is not
+    below zero.
+
+    Examples
+    --------
+    >>> opposed(1e-170, -1e-170), opposed(-2.0, -3.0), opposed(0.0, -1.0)
+    (True, False, False)
+    """
+    return (a < 0.0 < b) or (b < 0.0 < a)
+
+
 def is_array(value: Leaf) -> bool:
     """Whether a leaf varies over the batch (an array) rather than being constant."""
     return isinstance(value, np.ndarray) and value.ndim > 0

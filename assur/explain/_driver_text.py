@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from assur._vec import opposed
 from assur.explain._forces_text import couple_blocks, force_symbol
 from assur.explain._friction_text import driver_friction, sliding_total
 from assur.explain._lever import _balancing, _size, _speed, _symbol
@@ -76,18 +77,9 @@ def _sense(pos: Position, i: int, value: float) -> str:
     speed = _speed(pos, d)
     if not speed or abs(value) <= ZERO * _size(pos, i):
         return ""
-    if not _opposed(value, speed):
+    if not opposed(value, speed):
         return " It drives the link: it acts the way the link moves."
     return " It brakes the link: it acts against the way the link moves."
-
-
-def _opposed(value: float, speed: float) -> bool:
-    """Whether a load and the speed of its link have opposite signs (it brakes).
-
-    The signs compared, not the product: 1e-170 * 1e-170 is 0, as in the
-    motor's check (:func:`assur._motor.against_omega`). A zero opposes nothing.
-    """
-    return (value < 0.0 < speed) or (speed < 0.0 < value)
 
 
 def _ideal(pos: Position, i: int, sym: str, unit: str) -> str:
@@ -147,7 +139,7 @@ def _friction_power(pos: Position, i: int, sym: str, change: str) -> str:
     # whatever the signs of the load and the speed; a driver that brakes (its
     # power negative) takes that much less back: "supplies more" read as if it
     # drove
-    brakes = _opposed(value, speed)
+    brakes = opposed(value, speed)
     how = "takes" if brakes else "supplies"
     less = "less back" if brakes else "more"
     return (
