@@ -105,19 +105,26 @@ def test_ctrl_c_midway_keeps_the_old_file(monkeypatch, old: Path):
     assert names(old.parent) == {"table.csv"}
 
 
-def test_a_stop_as_the_temporary_file_is_made_leaves_nothing(monkeypatch, old: Path):
-    # Python runs a signal's handler as soon as the call that made the file
-    # returns: the stop came before the file was known to be removed (the test of
-    # a stopped animation found it left, once in about thirty runs under load)
-    made = os.open
+def stop_once_made(monkeypatch, call: str) -> None:
+    """Make ``os.<call>`` stop (Ctrl-C) right after it made a temporary path.
 
-    def made_then_stopped(path, *args):
-        descriptor = made(path, *args)
-        if Path(path).name.startswith("."):
+    As Python runs a signal's handler as soon as the call that made it returns.
+    """
+    made = getattr(os, call)
+
+    def made_then_stopped(path, *args, **kwargs):
+        result = made(path, *args, **kwargs)
+        if Path(path).name.startswith("."):  # a temporary name, not the target's
             raise KeyboardInterrupt
-        return descriptor
+        return result
 
-    monkeypatch.setattr(os, "open", made_then_stopped)
+    monkeypatch.setattr(os, call, made_then_stopped)
+
+
+def test_a_stop_as_the_temporary_file_is_made_leaves_nothing(monkeypatch, old: Path):
+    # the stop came before the file was known to be removed (the test of a
+    # stopped animation found it left, once in about thirty runs under load)
+    stop_once_made(monkeypatch, "open")
     with pytest.raises(KeyboardInterrupt):
         write_text(old, "new")
     monkeypatch.undo()
@@ -128,14 +135,8 @@ def test_a_stop_as_the_temporary_file_is_made_leaves_nothing(monkeypatch, old: P
 def test_a_stop_as_the_temporary_folder_is_made_leaves_nothing(
     monkeypatch, tmp_path: Path
 ):
-    made = os.mkdir
-
-    def made_then_stopped(path, *args, **kwargs):
-        made(path, *args, **kwargs)
-        raise KeyboardInterrupt
-
     target = tmp_path / "diagrams"
-    monkeypatch.setattr(os, "mkdir", made_then_stopped)
+    stop_once_made(monkeypatch, "mkdir")
     with pytest.raises(KeyboardInterrupt), output_folder(target):
         pass
     monkeypatch.undo()
