@@ -10,18 +10,15 @@ inertia loads, joint reactions and balancing torque.
 I(ground, crank) -> II(rod, slider)
 """
 
-# Ctrl-C while the modules below load (numpy, scipy) ends the command line quietly,
-# when this import starts it (python -m assur, the assur script)
+# Ctrl-C while the command line's modules load (numpy, the analysis) ends it
+# quietly, when this import starts it (python -m assur, the assur script)
 from assur import _start
 
 _start.guard()
 
-from assur import catalog
-from assur._structure import Group, Structure, graph, mobility, structure
-from assur.analysis import Table, forces, kinematics
-from assur.dynamics_flywheel import FlywheelSizing, flywheel, flywheel_sizing
-from assur.dynamics_model import Dynamics, dynamics
-from assur.dynamics_startup import Startup, startup
+import typing as _typing
+
+from assur._lazy import names as _names
 from assur.errors import (
     AssemblyError,
     AssurError,
@@ -35,20 +32,67 @@ from assur.errors import (
     UnknownNameError,
     UsageError,
 )
-from assur.explain import Note, explain
-from assur.io import dumps, load, loads, save
-from assur.model import (
-    Driver,
-    Joint,
-    Link,
-    Load,
-    LoadTable,
-    Mechanism,
-    Motor,
-    Point,
-    Toward,
-)
-from assur.study import Study, sweep
+
+# ``explain`` is imported here, not at its first use: the package of that name would
+# otherwise stand in its place once anything imported it (``assur.explain._note``).
+# The package itself is light; it loads the analysis at the first note.
+from assur.explain import explain
+
+# the names below, for type checkers; loaded at their first use (_WHERE)
+if _typing.TYPE_CHECKING:
+    from assur import catalog
+    from assur._structure import Group, Structure, graph, mobility, structure
+    from assur.analysis import Table, forces, kinematics
+    from assur.dynamics_flywheel import FlywheelSizing, flywheel, flywheel_sizing
+    from assur.dynamics_model import Dynamics, dynamics
+    from assur.dynamics_startup import Startup, startup
+    from assur.explain import Note
+    from assur.io import dumps, load, loads, save
+    from assur.model import (
+        Driver,
+        Joint,
+        Link,
+        Load,
+        LoadTable,
+        Mechanism,
+        Motor,
+        Point,
+        Toward,
+    )
+    from assur.study import Study, sweep
+
+_WHERE = {
+    "catalog": "assur.catalog",
+    **dict.fromkeys(
+        ("Group", "Structure", "graph", "mobility", "structure"), "assur._structure"
+    ),
+    **dict.fromkeys(("Table", "forces", "kinematics"), "assur.analysis"),
+    **dict.fromkeys(
+        ("FlywheelSizing", "flywheel", "flywheel_sizing"), "assur.dynamics_flywheel"
+    ),
+    **dict.fromkeys(("Dynamics", "dynamics"), "assur.dynamics_model"),
+    **dict.fromkeys(("Startup", "startup"), "assur.dynamics_startup"),
+    "Note": "assur.explain",
+    **dict.fromkeys(("dumps", "load", "loads", "save"), "assur.io"),
+    **dict.fromkeys(
+        (
+            "Driver",
+            "Joint",
+            "Link",
+            "Load",
+            "LoadTable",
+            "Mechanism",
+            "Motor",
+            "Point",
+            "Toward",
+        ),
+        "assur.model",
+    ),
+    **dict.fromkeys(("Study", "sweep"), "assur.study"),
+}
+"""Each public name loaded at its first use, to the module that defines it."""
+
+__getattr__, __dir__ = _names(__name__, _WHERE, globals())
 
 __version__ = "0.1.0"
 

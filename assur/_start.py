@@ -1,13 +1,13 @@
 """The command line's first moments: Ctrl-C while assur's modules load.
 
-``python -m assur`` and the ``assur`` script import the package (numpy, scipy, the
-analysis) before :func:`assur.cli.main` runs and can catch Ctrl-C: a Ctrl-C there
-printed a traceback. The package's first lines call :func:`guard`; when the import
-starts the command line, Ctrl-C ends it as the command does (one line, status 130)
-until :func:`assur.cli.main` takes over and calls :func:`release`. A plain
-``import assur`` is left alone. Only modules that Python has loaded before any
-script here (``signal``, ``re`` and ``typing`` take milliseconds to load, time for a
-Ctrl-C to come with a traceback).
+``python -m assur`` and the ``assur`` script import the package and its command line
+(numpy, the analysis) before :func:`assur.cli.main` runs and can catch Ctrl-C: a Ctrl-C
+there printed a traceback. The package's first lines call :func:`guard`; when the import
+starts the command line, Ctrl-C ends it as the command does (one line, status 130) until
+:func:`assur.cli.main` takes over and calls :func:`release`. A plain ``import assur`` is
+left alone. Only modules that Python has loaded before any script here (``signal``,
+``re`` and ``typing`` take milliseconds to load, time for a Ctrl-C to come with a
+traceback).
 """
 
 import os

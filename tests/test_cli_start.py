@@ -87,9 +87,11 @@ def test_ctrl_c_while_the_assur_script_loads_is_one_line(tmp_path: Path, typed: 
 
 
 def test_a_plain_import_keeps_python_s_ctrl_c(tmp_path: Path):
-    # a program of the user's that imports assur gets its KeyboardInterrupt
+    # a program of the user's that imports assur gets its KeyboardInterrupt; the
+    # package loads numpy with its first name used, here the analysis
     code = (
-        "try:\n    import assur\nexcept KeyboardInterrupt:\n    print('caught')\n"
+        "try:\n    import assur\n    assur.forces\nexcept KeyboardInterrupt:\n"
+        "    print('caught')\n"
         "import signal; print(signal.getsignal(signal.SIGINT).__name__)\n"
     )
     result = run(tmp_path, "-c", code)

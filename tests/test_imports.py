@@ -25,6 +25,8 @@ RANKS = {
     "assur.errors": 0,
     "assur._vec": 0,
     "assur._quiet": 0,
+    # a package's names loaded at their first use
+    "assur._lazy": 0,
     "assur._lookalike": 0,
     "assur._text": 0,
     "assur._width": 0,

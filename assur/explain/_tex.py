@@ -61,7 +61,8 @@ def unit(symbol: str) -> str:
 FLOOR: ContextVar[float] = ContextVar("assur_note_floor", default=1.0)
 """The scale a value is told from round-off by where its line gives none: at most 1
 (in SI), less for a small mechanism (its forces, moments and powers are small, not
-round-off); set by the note for its mechanism (:func:`assur.explain._floor`)."""
+round-off); set by the note for its mechanism
+(:func:`assur.explain._explain._floor`)."""
 
 
 def num(x: float, scale: float | None = None, least: int = 0) -> str:
