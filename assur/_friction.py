@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from assur._newton import QUICK, TOLERANCE, _norm, _raised, _signs, _sizes
+from assur._newton import QUICK, TOLERANCE, _norm, _raised, _signs, _sizes, across
 from assur._still import Still, rate
 from assur._vec import Leaf, Mask, add, cross, dot, full, mul, norm, sub
 from assur.groups._motion import Motion, direction, point, rotated
@@ -256,7 +256,7 @@ def solve_sized(
     pairs, inside, units = system.pairs, system.inside, system.units
     start, response = system.start, system.response
     first = np.stack([_norm(r) for r in start], axis=-1)
-    scale = np.max(first, axis=-1) + 1e-300
+    scale = across(np.maximum, first) + 1e-300
     # Coulomb's law may hold twice: beside the solution that grows from the
     # frictionless one, a jammed one (a slider wedged in its guide, its normal
     # force reversed). The first is sought with each sliding pair's normal force
@@ -266,9 +266,9 @@ def solve_sized(
     sizes, settled, growing, count = _sizes(
         held_start, held_response, first.copy(), scale, 1.0, signed
     )
-    limit = TOLERANCE * np.maximum(scale, np.max(np.abs(sizes), axis=-1))
-    finite = np.isfinite(sizes).all(axis=-1)
-    ordinary = settled & growing & np.all(sizes >= -limit[:, None], axis=-1)
+    limit = TOLERANCE * np.maximum(scale, across(np.maximum, np.abs(sizes)))
+    finite = across(np.logical_and, np.isfinite(sizes))
+    ordinary = settled & growing & across(np.logical_and, sizes >= -limit[:, None])
     # elsewhere (a normal force that friction turns over, near where it is zero
     # without friction) the sizes themselves, then the friction raised from zero
     doubtful = np.flatnonzero(finite & ~ordinary)
@@ -294,10 +294,10 @@ def solve_sized(
         )
         sizes[doubtful], settled[doubtful] = found, kept
         count += more
-    finite = np.isfinite(sizes).all(axis=-1)
-    limit = TOLERANCE * np.maximum(scale, np.max(np.abs(sizes), axis=-1))
+    finite = across(np.logical_and, np.isfinite(sizes))
+    limit = TOLERANCE * np.maximum(scale, across(np.maximum, np.abs(sizes)))
     # no solution with every size positive: nothing drives the group (self-locking)
-    locked = finite & (~settled | np.any(sizes < -limit[:, None], axis=-1))
+    locked = finite & (~settled | across(np.logical_or, sizes < -limit[:, None]))
     friction = {
         p.name: [mul(sizes[:, k], w) for w in units[p.name]]
         for k, p in enumerate(pairs)
@@ -343,7 +343,7 @@ def newton_steps(
             for p in system.pairs]  # fmt: skip
     signed, start, response = _signs(system.start, system.response, held)
     first = np.stack([_norm(r) for r in system.start], axis=-1)
-    scale = np.max(first, axis=-1) + 1e-300
+    scale = across(np.maximum, first) + 1e-300
     _, settled, growing, count = _sizes(
         start, response, first.copy(), scale, 1.0, signed, tolerance=tolerance
     )
