@@ -26,6 +26,7 @@ from assur.groups._protocol import (
     Reaction,
     Wrench,
 )
+from assur.groups._rcond import reciprocal_condition
 
 if TYPE_CHECKING:
     from assur._structure import Group
@@ -109,7 +110,8 @@ class GeneralSolver:
     def linearize(self, bodies: list[Motion]) -> Linearization:
         """Return the Jacobian, with the rows of failed positions made harmless."""
         jac, failed = self._finite_jacobian(bodies)
-        cond = conditioning(self, jac)
+        # read against ``singular`` and ``near`` only (see assur._kinematics)
+        cond = conditioning(self, jac, above=self.near)
         singular = ~failed & ~(cond >= self.singular)
         jac[singular] = np.eye(jac.shape[-1])  # their derivatives are not defined
         return Linearization(jac, cond, singular)
@@ -172,12 +174,14 @@ def jacobian(plan: GeneralSolver, bodies: list[Motion], n: int) -> Array:
     return jac
 
 
-def conditioning(plan: GeneralSolver, jac: Array) -> Array:
+def conditioning(plan: GeneralSolver, jac: Array, above: float | None = None) -> Array:
     """Reciprocal condition number of the Jacobian made dimensionless.
 
     Origins are measured in units of the group's size and a prismatic pair's rotation
     equation multiplied by it, so that the measure depends neither on the units nor
-    on the size of the machine the group is part of.
+    on the size of the machine the group is part of. Exact wherever it may lie below
+    ``above`` (all of it without), a lower bound at least ``above`` elsewhere (see
+    :func:`~assur.groups._rcond.reciprocal_condition`).
     """
     # the group's size, not the machine's: a triad 0.3 m across in a chain 12 m long
     # weighed its rotations 40 times too little and looked near a dead centre
@@ -187,7 +191,7 @@ def conditioning(plan: GeneralSolver, jac: Array) -> Array:
     for j, pair in enumerate(plan.pairs):
         if pair.kind == "P":
             rows[2 * j] = plan.size
-    return 1.0 / np.linalg.cond(jac * rows[:, None] * cols[None, :])
+    return reciprocal_condition(jac * rows[:, None] * cols[None, :], above)
 
 
 def _residuals(plan: GeneralSolver, bodies: list[Motion], k: int, n: int) -> Array:
@@ -290,7 +294,7 @@ def equilibrium(
             # a couple in units of force times the mechanism's size, as moments are
             cols[2 * j + 1] = plan.scale
     scaled = mat * rows[:, None] * cols[None, :]
-    bad |= 1.0 / np.linalg.cond(scaled) < SINGULAR_FORCES
+    bad |= reciprocal_condition(scaled, above=SINGULAR_FORCES) < SINGULAR_FORCES
     scaled[bad] = np.eye(size)
     # solved as measured: unscaled, a group 1e13 m across mixed forces of 1 with
     # arms of 1e13 in one elimination and lost three digits of its reactions
