@@ -1,9 +1,9 @@
 """A package's names loaded at their first use (PEP 562's module ``__getattr__``).
 
 ``import assur`` loads the errors and the function :func:`assur.explain`, not the
-analysis behind them: a command that only prints its help, or a script that only
-reads a file, does not wait for the modules it never calls. A name is looked up in
-its module when first asked for and kept in the package's namespace, so it costs a
+modules behind the other names: a script that reads a mechanism file and prints its
+structure loads neither the sweeps nor the dynamic model. A name is looked up in its
+module when first asked for and kept in the package's namespace, so it costs a
 dictionary lookup afterwards, as an imported name does.
 """
 

@@ -91,3 +91,14 @@ def test_the_note_still_warns_at_the_callers_line():
         warnings.simplefilter("always")
         assur.explain(mech, ANGLE)
     assert [w.filename for w in caught] == [__file__]
+
+
+def test_reading_a_file_and_its_structure_load_no_sweep():
+    loaded = _fresh(
+        "mech = assur.load('examples/four_bar.toml')\n"
+        "str(assur.structure(mech))\n"
+        "sweeps = ('assur.analysis', 'assur._kinematics', 'assur.kinetostatics',\n"
+        "          'assur.dynamics_model')\n"
+        "print(json.dumps([m for m in sweeps if m in sys.modules]))\n"
+    )
+    assert loaded == []
