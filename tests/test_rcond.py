@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from assur.groups._rcond import reciprocal_condition
+from assur.groups._rcond import TRUSTED, reciprocal_condition
 
 
 def _matrices(seed: int, n: int = 400, m: int = 12) -> np.ndarray:
@@ -35,6 +35,11 @@ def test_every_comparison_at_or_below_the_threshold_is_the_exact_ones(seed, abov
     low = exact < above * 10.0
     assert np.array_equal(got[low & (got < above)], exact[low & (got < above)])
     assert np.all(got <= exact * (1.0 + 1e-12))
+    # worse conditioned than the inverse can be trusted, the SVD's value whatever
+    # the threshold (near 1e-12 both carry errors of 1e-4)
+    poor = exact < TRUSTED
+    assert poor.any()
+    assert np.array_equal(got[poor], exact[poor])
     # the bound is within the matrices' order of the value (m = 12 here)
     high = got >= above
     assert np.all(got[high] * 12.0 >= exact[high] * (1.0 - 1e-12))

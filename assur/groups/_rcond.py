@@ -23,9 +23,15 @@ from assur._vec import Array
 
 __all__ = ["reciprocal_condition"]
 
-MARGIN = 1e-8
-"""Share by which the bound must clear the threshold: the rounding of the inverse
-and its norms, at conditions where the bound can clear it, is some 1e-13."""
+TRUSTED = 1e-4
+"""Least bound taken for the value, whatever the threshold: the inverse of a matrix
+conditioned so well (cond at most 1e4 times its order) is exact to some 1e-10, and
+so is the SVD's value. Worse conditioned, both carry errors near ``cond * 1e-16``
+(1e-4 at the threshold 1e-12): only the SVD then says which side the value is on,
+as it did before the bound."""
+MARGIN = 1e-6
+"""Share by which the bound must clear the threshold, beyond the rounding of the
+inverse and its norms at :data:`TRUSTED`."""
 SANE = 1e100
 """Largest norm (and reciprocal of the smallest) trusted: beyond it the squares
 summed could overflow, or underflow to nothing."""
@@ -40,8 +46,9 @@ def reciprocal_condition(a: Array, above: float | None = None) -> Array:
         The matrices.
     above : float, optional
         The largest threshold the result is compared with. Where the bound shows
-        the value at least ``above``, the result is that bound, which is no larger
-        than the value. None: the exact value everywhere.
+        the value at least ``above`` (and at least :data:`TRUSTED`), the result is
+        that bound, which is no larger than the value. None: the exact value
+        everywhere.
 
     Returns
     -------
@@ -71,7 +78,8 @@ def reciprocal_condition(a: Array, above: float | None = None) -> Array:
             small = np.sqrt(np.einsum("nij,nij->n", inverse, inverse))
             bound = 1.0 / (big * small)
             sane = (big < SANE) & (big > 1.0 / SANE) & (small < SANE)
-            sure = sane & (small > 1.0 / SANE) & (bound >= above * (1.0 + MARGIN))
+            least = max(above, TRUSTED) * (1.0 + MARGIN)
+            sure = sane & (small > 1.0 / SANE) & (bound >= least)
             out[sure] = bound[sure]
     rest = ~sure
     if rest.any():
