@@ -61,36 +61,20 @@ if _typing.TYPE_CHECKING:
     )
     from assur.study import Study, sweep
 
-_WHERE = {
-    "catalog": "assur.catalog",
-    **dict.fromkeys(
-        ("Group", "Structure", "graph", "mobility", "structure"), "assur._structure"
-    ),
-    **dict.fromkeys(("Table", "forces", "kinematics"), "assur.analysis"),
-    **dict.fromkeys(
-        ("FlywheelSizing", "flywheel", "flywheel_sizing"), "assur.dynamics_flywheel"
-    ),
-    **dict.fromkeys(("Dynamics", "dynamics"), "assur.dynamics_model"),
-    **dict.fromkeys(("Startup", "startup"), "assur.dynamics_startup"),
-    "Note": "assur.explain",
-    **dict.fromkeys(("dumps", "load", "loads", "save"), "assur.io"),
-    **dict.fromkeys(
-        (
-            "Driver",
-            "Joint",
-            "Link",
-            "Load",
-            "LoadTable",
-            "Mechanism",
-            "Motor",
-            "Point",
-            "Toward",
-        ),
-        "assur.model",
-    ),
-    **dict.fromkeys(("Study", "sweep"), "assur.study"),
+_NAMES = {
+    "assur.catalog": "catalog",
+    "assur._structure": "Group Structure graph mobility structure",
+    "assur.analysis": "Table forces kinematics",
+    "assur.dynamics_flywheel": "FlywheelSizing flywheel flywheel_sizing",
+    "assur.dynamics_model": "Dynamics dynamics",
+    "assur.dynamics_startup": "Startup startup",
+    "assur.explain": "Note",
+    "assur.io": "dumps load loads save",
+    "assur.model": "Driver Joint Link Load LoadTable Mechanism Motor Point Toward",
+    "assur.study": "Study sweep",
 }
-"""Each public name loaded at its first use, to the module that defines it."""
+"""The public names loaded at their first use, by the module that defines them."""
+_WHERE = {name: module for module, names in _NAMES.items() for name in names.split()}
 
 __getattr__, __dir__ = _names(__name__, _WHERE, globals())
 

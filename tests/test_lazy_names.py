@@ -102,3 +102,15 @@ def test_reading_a_file_and_its_structure_load_no_sweep():
         "print(json.dumps([m for m in sweeps if m in sys.modules]))\n"
     )
     assert loaded == []
+
+
+def test_each_public_name_is_loaded_at_import_or_listed_once_to_load():
+    # a name both in the namespace at import and in the table would never load
+    # lazily; one in neither would be missing
+    at_import, listed, public = _fresh(
+        "print(json.dumps([sorted(vars(assur)), sorted(assur._WHERE),\n"
+        "                  sorted(assur.__all__)]))\n"
+    )
+    assert not set(at_import) & set(listed)
+    assert set(listed) <= set(public)
+    assert set(public) <= set(at_import) | set(listed)
