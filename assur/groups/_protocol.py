@@ -121,8 +121,10 @@ class Linearization:
     """The group's Jacobian at the solved pose and its conditioning.
 
     ``jacobian`` is in the family's own form; ``conditioning`` (n,) is dimensionless,
-    1 for a well-posed group and 0 at a dead centre; ``singular`` marks the positions
-    below the family's threshold, where derivatives are not defined.
+    1 for a well-posed group and 0 at a dead centre (above the family's ``near``, a
+    family may give a lower bound of it that is above ``near`` too: it is read
+    against the thresholds only); ``singular`` marks the positions below the family's
+    threshold, where derivatives are not defined.
     """
 
     jacobian: Any
