@@ -104,3 +104,30 @@ def test_a_legend_of_long_names_fits_the_frame(tmp_path, frames) -> None:
         legend, figure = frame["legend"], frame["figure"]
         assert legend[0] >= figure[0] - 1.0
         assert legend[2] <= figure[2] + 1.0
+
+
+@pytest.mark.pictures
+def test_wiping_a_frame_draws_the_film_that_clearing_its_axes_drew(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # each frame removes what the last one drew and keeps the axes' ticks, which
+    # clearing the axes made anew every frame: the same pixels, in less time
+    from PIL import Image
+
+    from assur.plotting import animation
+
+    table = assur.forces(assur.load(EXAMPLES / "class3.toml"), [10.0, 100.0, 250.0])
+    animate(table, tmp_path / "wiped.gif", forces=True)
+    monkeypatch.setattr(animation, "_wipe", lambda ax: ax.clear())
+    animate(table, tmp_path / "cleared.gif", forces=True)
+    films = []
+    for name in ("wiped", "cleared"):
+        with Image.open(tmp_path / f"{name}.gif") as gif:
+            films.append([])
+            for i in range(gif.n_frames):
+                gif.seek(i)
+                films[-1].append(np.asarray(gif.convert("RGBA")))
+    assert len(films[0]) == len(films[1]) == 3
+    for wiped, cleared in zip(*films, strict=True):
+        assert np.array_equal(wiped, cleared)
+    assert not np.array_equal(films[0][0], films[0][1])  # the frames move
