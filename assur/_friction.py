@@ -255,7 +255,7 @@ def solve_sized(
     """
     pairs, inside, units = system.pairs, system.inside, system.units
     start, response = system.start, system.response
-    first = np.stack([_norm(r) for r in start], axis=-1)
+    first = np.stack([_norm(r.T) for r in start], axis=-1)
     scale = across(np.maximum, first) + 1e-300
     # Coulomb's law may hold twice: beside the solution that grows from the
     # frictionless one, a jammed one (a slider wedged in its guide, its normal
@@ -342,7 +342,7 @@ def newton_steps(
     held = [_reaction(p, bodies, found, 1) if p.kind == "P" else None
             for p in system.pairs]  # fmt: skip
     signed, start, response = _signs(system.start, system.response, held)
-    first = np.stack([_norm(r) for r in system.start], axis=-1)
+    first = np.stack([_norm(r.T) for r in system.start], axis=-1)
     scale = across(np.maximum, first) + 1e-300
     _, settled, growing, count = _sizes(
         start, response, first.copy(), scale, 1.0, signed, tolerance=tolerance

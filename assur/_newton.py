@@ -62,7 +62,7 @@ def _system(
             size = value[0]
             row = [-weight * response[k][j][0] for k in range(m)]
         else:
-            size = norm(value[0], value[1]) if len(value) == 2 else np.abs(value[0])
+            size = _norm(value)
             with quiet():
                 along = np.where(size > 0.0, value / size, 0.0)
             row = [-weight * _dot(along, response[k][j]) for k in range(m)]
@@ -314,8 +314,11 @@ def across(ufunc: np.ufunc, a: Any) -> Any:
 
 
 def _norm(a: Any) -> Any:
-    """Return the length of each row of an (n, 2) or (n, 1) array."""
-    return norm(a[:, 0], a[:, 1]) if a.shape[-1] == 2 else np.abs(a[:, 0])
+    """Return the lengths of a (2, n) or (1, n) array's columns: a reaction's sizes.
+
+    A (n, c) array is read through its transpose, ``_norm(a.T)``.
+    """
+    return norm(a[0], a[1]) if len(a) == 2 else np.abs(a[0])
 
 
 def _dot(a: Any, b: Any) -> Any:
