@@ -66,21 +66,18 @@ def reciprocal_condition(a: Array, above: float | None = None) -> Array:
     """
     if above is None or not a.shape[0]:
         return 1.0 / np.linalg.cond(a)
-    out = np.empty(a.shape[0])
-    sure = np.zeros(a.shape[0], dtype=bool)
     with quiet():
         try:
             inverse = np.linalg.inv(a)
         except np.linalg.LinAlgError:  # a matrix exactly singular: the SVD for all
-            inverse = None
-        if inverse is not None:
-            big = np.sqrt(np.einsum("nij,nij->n", a, a))
-            small = np.sqrt(np.einsum("nij,nij->n", inverse, inverse))
-            bound = 1.0 / (big * small)
-            sane = (big < SANE) & (big > 1.0 / SANE) & (small < SANE)
-            least = max(above, TRUSTED) * (1.0 + MARGIN)
-            sure = sane & (small > 1.0 / SANE) & (bound >= least)
-            out[sure] = bound[sure]
+            return 1.0 / np.linalg.cond(a)
+        big = np.sqrt(np.einsum("nij,nij->n", a, a))
+        small = np.sqrt(np.einsum("nij,nij->n", inverse, inverse))
+        bound = 1.0 / (big * small)
+    sane = (big < SANE) & (big > 1.0 / SANE) & (small < SANE) & (small > 1.0 / SANE)
+    sure = sane & (bound >= max(above, TRUSTED) * (1.0 + MARGIN))
+    out = np.empty(a.shape[0])
+    out[sure] = bound[sure]
     rest = ~sure
     if rest.any():
         out[rest] = 1.0 / np.linalg.cond(a[rest])
