@@ -69,7 +69,7 @@ def _draw_arrows(
     tiny = 1e-9 * max([*moments, largest_force * ctx.size])
     # a couple's arc grows with it: one of 0.0005 N m beside 0.16 N m was drawn
     # as large (no scale gives a couple a length; the size tells which matter)
-    largest = max([abs(a.couple or 0.0) for a in arrows] + [0.0])
+    largest = max([*moments, 0.0])
     drawn: list[tuple[np.ndarray, np.ndarray]] = []
     for a in arrows:
         if a.force is not None and float(np.hypot(*a.force)) > least:
