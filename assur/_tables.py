@@ -36,6 +36,11 @@ apart agree. Relative alone: a watch's torque table of 1e-12 N m steps as a
 press's of 1e3 N m does (a floor of 1 N m read its steps as none)."""
 
 
+def _slack(ys: Any) -> float:
+    """Return the difference below which two values of a table agree (see AGREE)."""
+    return AGREE * max(float(np.max(np.abs(y))) for y in ys)
+
+
 def interpolate(at: Array, xs: Array, ys: Array) -> Array:
     """Interpolate ``ys`` over ``xs`` (increasing) linearly at ``at``; ends held.
 
@@ -177,7 +182,7 @@ def step_before(xs: Array, values: Any, at: float, turning: bool) -> list[float]
     grids = _grids(xs, values, turning)
     before = [_before(float(t[0]), *grid, turning=turning) for grid in grids]
     after = [float(interpolate(t, *grid)[0]) for grid in grids]
-    slack = AGREE * max(float(np.max(np.abs(y))) for y in ys)
+    slack = _slack(ys)
     if all(abs(b - a) <= slack for b, a in zip(before, after, strict=True)):
         return None
     return before
@@ -192,7 +197,7 @@ def steps(xs: Array, values: Any, turning: bool) -> Array:
     lands on exactly (:func:`_onto` puts an angle within round-off on them).
     """
     ys = [np.asarray(v, dtype=float) for v in values]
-    slack = AGREE * max(float(np.max(np.abs(y))) for y in ys)
+    slack = _slack(ys)
     grids = _grids(xs, values, turning)
     grid = grids[0][0]
     twice = np.flatnonzero(grid[:-1] == grid[1:])
@@ -254,7 +259,7 @@ def disagreement(xs: Array, ys: Array) -> tuple[float, float, str] | None:
     """
     first = _first_turn(xs)
     head, values = _closed(xs[first], ys[first])
-    slack = AGREE * float(np.max(np.abs(ys)))
+    slack = _slack([ys])
     start, end = head[0], head[0] + TURN
     if head[-1] >= end and len(head) > 2:
         # the turn's end is its start again: the value arriving there, and the
