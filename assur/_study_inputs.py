@@ -194,7 +194,11 @@ def _partitions(partitions: Any) -> None:
     refused the same way as on a cluster, not after its variants were run.
     """
     if partitions is not None and (integer(partitions) or 0) < 1:
-        msg = f"partitions: expected a positive number, got {describe(partitions)}"
+        # "a positive number" refused 2.0 in words that 2.0 meets: a count is asked
+        msg = (
+            "partitions: expected a positive whole number (a count), got "
+            f"{describe(partitions)}"
+        )
         raise UsageError(msg)
 
 
