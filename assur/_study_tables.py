@@ -179,6 +179,26 @@ def _known(names: list[str], tables: Sequence[Sequence[str]]) -> list[str]:
     return names
 
 
+def _wanted(columns: Sequence[str] | None) -> list[str] | None:
+    """Return the columns asked for as a list (None for all), a lone name refused.
+
+    Raises
+    ------
+    UsageError
+        For one name given as a string, which was walked letter by letter: "no
+        column 'B'" for ``columns="B.Fx"``.
+    """
+    if columns is None:
+        return None
+    if isinstance(columns, str | bytes):
+        msg = (
+            f"columns: expected a sequence of column names, got {describe(columns)}; "
+            f"write columns=[{describe(columns)}] for one column"
+        )
+        raise UsageError(msg)
+    return list(columns)
+
+
 def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:
     """Return the variants' numbers, checked to be the study's (0 to count - 1).
 

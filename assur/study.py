@@ -48,7 +48,7 @@ from assur._study_stacks import (
     _template,
     told,
 )
-from assur._study_tables import _chosen, _known, _names, _tables, ordered
+from assur._study_tables import _chosen, _known, _names, _tables, _wanted, ordered
 from assur._variants import Template, compile_many, form, numbers
 from assur._vec import Array
 from assur._warn import held
@@ -61,7 +61,9 @@ if TYPE_CHECKING:
 __all__ = ["Study", "sweep"]
 
 
-@dataclass(frozen=True)
+# compared by identity, as a Table is: the generated == compared the parameters'
+# arrays and the summary's DataFrame, and raised numpy's "truth value ... ambiguous"
+@dataclass(frozen=True, eq=False)
 class Study:
     """The summaries of a study's variants, and the means to recompute their tables.
 
@@ -130,15 +132,15 @@ class Study:
         ------
         UsageError
             For a variant number that is not one of the study's, a column that
-            none of the variants analysed has, or tables that would take more than
-            half the memory to be had (the machine's, or less: a container's
-            limit, ``ulimit -v``).
+            none of the variants analysed has, ``columns`` given as one string, or
+            tables that would take more than half the memory to be had (the
+            machine's, or less: a container's limit, ``ulimit -v``).
         ImportError
             When xarray is not installed.
         """
         xr = _optional("xarray")
         chosen = _chosen(variants, len(self))
-        wanted = None if columns is None else list(columns)
+        wanted = _wanted(columns)
         found, every = _tables(
             self.factory, self.parameters, self.angles, chosen, wanted
         )

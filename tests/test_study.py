@@ -634,6 +634,23 @@ def test_tables_say_which_variants_and_columns_there_are(slider_study):
             study.tables(variants=wrong)
     with pytest.raises(assur.UsageError, match=r"no column 'driver\.torq'.*torque'"):
         study.tables(variants=[0], columns=["driver.torq"])
+    # one name as a string was walked letter by letter: "no column 'B'"
+    with pytest.raises(
+        assur.UsageError,
+        match=r"columns: expected a sequence of column names, got 'B\.Fx'; write "
+        r"columns=\['B\.Fx'\]",
+    ):
+        study.tables(variants=[0], columns="B.Fx")
+
+
+def test_studies_compare_and_hash_as_objects(slider_study):
+    # the generated == compared arrays and DataFrames: numpy's "truth value of an
+    # array ... is ambiguous" for two studies of the same variants
+    parameters, study = slider_study
+    again = assur.sweep(catalog.slider_crank, parameters, ANGLES)
+    assert study == study
+    assert study != again
+    assert len({study, again, study}) == 2
 
 
 def test_an_undefined_efficiency_says_why_from_the_row():
