@@ -32,21 +32,12 @@ def _distributed(
     ``run`` is ``(summarise, factory, parameters, angles)``: each partition is
     ``summarise(factory, parameters, angles, start)`` on a worker
     (:func:`assur.study.summarise`). ``bar`` is told of each partition gathered.
+    The client and the factory were checked by :func:`ready`.
     """
     summarise, factory, parameters, angles = run
     import pandas as pd
-
-    _optional("distributed")
     from distributed import KilledWorker
 
-    if not all(callable(getattr(client, f, None)) for f in ("submit", "gather")):
-        msg = f"client: expected a dask.distributed Client, got {client!r}"
-        raise UsageError(msg)
-    if getattr(client, "status", None) in ("closing", "closed"):
-        # else an AttributeError from deep inside the client, or ClosedClientError
-        msg = f"client: {client!r} is closed; expected a running client"
-        raise UsageError(msg)
-    _sendable(factory)
     count = len(next(iter(parameters.values())))
     if partitions is None:
         threads = sum(client.nthreads().values()) or 1
@@ -73,6 +64,32 @@ def _distributed(
         raise
     # partitions of other topologies bring their own columns: ordered as one run's
     return ordered(pd.concat(frames), list(parameters))
+
+
+def ready(client: Any, factory: Factory) -> None:
+    """Refuse a client that cannot run a study, or a factory it cannot be sent.
+
+    Checked by :func:`assur.study.sweep` before any variant is built: a factory
+    may take minutes a variant, and the first variants were built (to check the
+    driver positions) before a closed client was refused.
+
+    Raises
+    ------
+    UsageError
+        For a ``client`` that is not a dask.distributed client or is closed, or a
+        factory that does not pickle.
+    ImportError
+        When dask.distributed is not installed.
+    """
+    _optional("distributed")
+    if not all(callable(getattr(client, f, None)) for f in ("submit", "gather")):
+        msg = f"client: expected a dask.distributed Client, got {client!r}"
+        raise UsageError(msg)
+    if getattr(client, "status", None) in ("closing", "closed"):
+        # else an AttributeError from deep inside the client, or ClosedClientError
+        msg = f"client: {client!r} is closed; expected a running client"
+        raise UsageError(msg)
+    _sendable(factory)
 
 
 def _sendable(factory: Factory) -> None:

@@ -242,10 +242,15 @@ def sweep(
     _takes(factory, values)
     given = _angles(angles)
     _partitions(partitions)
-    _fitting(factory, values, given)
     _optional("pandas")
+    if client is not None:
+        from assur._study_cluster import ready
+
+        ready(client, factory)
     count = len(next(iter(values.values())))
+    # the bar made first: it checks ``progress``, before any variant is built
     with counted("variants", count, progress) as bar:
+        _fitting(factory, values, given)
         if client is None:
             table = summarise(factory, values, given, bar=bar)
         else:

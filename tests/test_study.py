@@ -588,6 +588,36 @@ def test_the_cluster_arguments_are_checked(client, partitions, message):
         )
 
 
+class Closed(Synchronous):
+    """A stand-in for a client that was closed."""
+
+    status = "closed"
+
+
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        ({"progress": "yes"}, "progress: expected True, False or a callable"),
+        ({"client": 3}, "client: expected a dask.distributed Client, got 3"),
+        ({"client": Closed()}, "client: .* is closed; expected a running client"),
+    ],
+)
+def test_a_wrong_option_is_refused_before_any_variant_is_built(options, message):
+    # the first variants were built (to check the driver positions) before a
+    # wrong progress or client was refused: minutes with a slow factory
+    if "client" in options:
+        pytest.importorskip("distributed")
+    built = []
+
+    def counted(rod):
+        built.append(rod)
+        return catalog.slider_crank(rod=rod)
+
+    with pytest.raises(assur.UsageError, match=message):
+        assur.sweep(counted, {"rod": [0.2, 0.25]}, ANGLES, **options)
+    assert built == []
+
+
 @pytest.mark.parametrize("partitions", [0, -3, "x", 2.0])
 def test_partitions_are_checked_without_a_client_too(partitions):
     # accepted without a word on one machine, refused on a cluster; 2.0 was told
