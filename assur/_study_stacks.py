@@ -116,6 +116,23 @@ def _fill(
     return alone
 
 
+PACE = 1.0
+"""Seconds a block of variants should take at most, so that progress is told."""
+
+
+def paced(done: int, took: float, least: int, most: int) -> int:
+    """Return the variants of the next block, from the last's ``done`` in ``took`` s.
+
+    ``most`` (a few batches, up to 4096 variants) when they take less than
+    :data:`PACE`, fewer down to ``least`` (one batch) when the factory is slow: a
+    progress bar was told once a block, and a factory of 2 ms a variant left it
+    still for 8 s. The numbers do not depend on the blocks: each variant's are
+    those of a separate call.
+    """
+    fit = int(done * PACE / took) if took > 0.0 else most
+    return max(least, min(most, fit))
+
+
 HEAP = 2 * 1024 * 1024
 """Values in the block freed once before a study (16 MB; see ``_keep_the_heap``)."""
 

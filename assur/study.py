@@ -13,6 +13,7 @@ workers run. pandas, xarray and dask are imported only when a study needs them.
 
 from __future__ import annotations
 
+import time
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -46,6 +47,7 @@ from assur._study_stacks import (
     _keep_the_heap,
     _line,
     _template,
+    paced,
     told,
 )
 from assur._study_tables import _chosen, _known, _names, _tables, _wanted, ordered
@@ -198,8 +200,8 @@ def sweep(
         Number of partitions with ``client`` (default: two per worker thread).
     progress : bool or callable, optional
         Show a progress bar of the variants done on standard error (True), or call
-        ``progress(done, total)`` as they are (counted by batch, or by partition
-        with ``client``).
+        ``progress(done, total)`` as they are (counted by blocks of a batch or
+        more, about a second each at most, or by partition with ``client``).
 
     Returns
     -------
@@ -271,7 +273,7 @@ def summarise(
     """Return the summary DataFrame of variants numbered from ``start`` (one process).
 
     What :func:`sweep` runs, or each partition of it on a worker; ``bar`` is told
-    of each batch of variants done.
+    of each block of variants done (see :func:`assur._study_stacks.paced`).
     """
     import pandas as pd
 
@@ -280,14 +282,17 @@ def summarise(
     size = max(1, min(CHUNK // max(1, angles.shape[0]), BLOCK // GROUPED))
     templates: dict[Any, Template | None] = {}
     _keep_the_heap()
-    for first in range(0, count, GROUPED * size):
-        block = range(first, min(first + GROUPED * size, count))
+    first, step = 0, size  # one batch first, which times the factory
+    while first < count:
+        block = range(first, min(first + step, count))
+        began = time.monotonic()
         rows = _block(factory, parameters, angles, block, templates, size)
         # a block's rows as columns: a dict per variant costs ten times as much
-        index = pd.RangeIndex(block.start, block.stop)
-        frames.append(pd.DataFrame(rows, index=index))
+        frames.append(pd.DataFrame(rows, index=pd.RangeIndex(block.start, block.stop)))
         if bar is not None:
             bar.advance(len(block))
+        step = paced(len(block), time.monotonic() - began, size, GROUPED * size)
+        first = block.stop
     frame = ordered(pd.concat(frames), list(parameters))
     frame.index = pd.RangeIndex(start, start + count, name="variant")
     return frame
