@@ -149,6 +149,37 @@ def _table(
         return {c: table[c] for c in wanted if c in table}, table.columns
 
 
+def _columns(
+    wanted: list[str] | None,
+    tables: Sequence[Sequence[str]],
+    chosen: Sequence[int],
+    errors: Any,
+) -> list[str]:
+    """Return the columns of the Dataset: ``wanted``, checked, or every one found.
+
+    ``tables`` holds each chosen variant's column names (none for one that
+    fails) and ``errors`` the summary's ``error`` column.
+
+    Raises
+    ------
+    UsageError
+        For a name that no table has, or, without ``wanted``, when no chosen
+        variant was analysed: a Dataset without a column said nothing of why.
+    """
+    if wanted is not None:
+        return _known(wanted, tables)
+    if chosen and not any(tables):
+        first = chosen[0]
+        why = str(errors.loc[first]) or "it failed when analysed again"
+        msg = (
+            f"variants: none of the {len(chosen)} asked for was analysed (variant "
+            f"{first}: {why}); expected a variant with a table, or columns=[...] "
+            "for NaN tables"
+        )
+        raise UsageError(msg)
+    return _names(tables)
+
+
 def _names(tables: Sequence[Sequence[str]]) -> list[str]:
     """Return the columns of the tables' names, in the order they are first met."""
     out: dict[str, None] = {}

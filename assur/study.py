@@ -50,7 +50,7 @@ from assur._study_stacks import (
     paced,
     told,
 )
-from assur._study_tables import _chosen, _known, _names, _tables, _wanted, ordered
+from assur._study_tables import _chosen, _columns, _tables, _wanted, ordered
 from assur._variants import Template, compile_many, form, numbers
 from assur._vec import Array
 from assur._warn import held
@@ -133,10 +133,10 @@ class Study:
         Raises
         ------
         UsageError
-            For a variant number that is not one of the study's, a column that
-            none of the variants analysed has, ``columns`` given as one string, or
-            tables that would take more than half the memory to be had (the
-            machine's, or less: a container's limit, ``ulimit -v``).
+            For a variant number not the study's, a column none of the variants
+            analysed has, ``columns`` as one string, no variant analysed without
+            ``columns`` (no column known), or tables that would take more than half
+            the memory to be had (the machine's, a container's, ``ulimit -v``).
         ImportError
             When xarray is not installed.
         """
@@ -146,7 +146,7 @@ class Study:
         found, every = _tables(
             self.factory, self.parameters, self.angles, chosen, wanted
         )
-        names = _names(every) if wanted is None else _known(wanted, every)
+        names = _columns(wanted, every, chosen, self.summary["error"])
         data = np.full((len(chosen), self.angles.shape[0], len(names)), np.nan)
         for row, table in enumerate(found):
             for j, name in enumerate(names):

@@ -664,6 +664,15 @@ def test_tables_say_which_variants_and_columns_there_are(slider_study):
             study.tables(variants=wrong)
     with pytest.raises(assur.UsageError, match=r"no column 'driver\.torq'.*torque'"):
         study.tables(variants=[0], columns=["driver.torq"])
+    # variants that all failed gave a Dataset without a column, and no word why
+    with pytest.raises(
+        assur.UsageError,
+        match=r"variants: none of the 2 asked for was analysed \(variant 2: "
+        r"ModelError: slider_crank: the rod",
+    ):
+        study.tables(variants=[2, 2])
+    nan = study.tables(variants=[2], columns=["B.Fx"])
+    assert np.isnan(nan["values"]).all()
     # one name as a string was walked letter by letter: "no column 'B'"
     with pytest.raises(
         assur.UsageError,
