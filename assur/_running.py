@@ -150,6 +150,10 @@ def per_variant(value: Any, variants: int) -> Array:
 def settled_mean(mean: Array, low: Array, high: Array, share: float) -> Array:
     """Return ``mean``, 0 where it is round-off of values from ``low`` to ``high``.
 
+    The mean is also kept between ``low`` and ``high``: the sum of a constant's
+    values, divided by their count, came out one rounding step above the largest
+    (793.1034482758622 W against 793.1034482758621 W).
+
     A turn's mean of a load that does no net work (the driving torque of a
     mechanism with inertia loads alone, 0.23 N m at its peak) sums terms that
     cancel: -1.5e-16 N m on one machine, +3e-17 on another, by the summation
@@ -176,4 +180,6 @@ def settled_mean(mean: Array, low: Array, high: Array, share: float) -> Array:
     array([0.  , 0.05])
     """
     size = np.maximum(np.abs(low), np.abs(high))
-    return np.where(np.abs(mean) <= share * size, 0.0, mean)
+    # NaN stays NaN: np.maximum and np.minimum carry it through
+    inside = np.minimum(np.maximum(mean, low), high)
+    return np.where(np.abs(inside) <= share * size, 0.0, inside)

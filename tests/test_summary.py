@@ -8,6 +8,7 @@ steady cycle; a summary gathered slice by slice equals the summary of the whole.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import re
@@ -805,6 +806,30 @@ def test_a_mean_is_kept_where_it_is_more_than_round_off():
     assert not np.signbit(got[0])
     assert got[1] == 3e-12  # above 1e-12 of 0.2: the mechanism's own
     assert np.isnan(got[2])
+
+
+def test_a_constant_mean_is_not_past_its_largest_by_round_off():
+    # a constant torque over 72 positions: its sum divided by 72 came out one
+    # rounding step above the constant, a mean power above the largest
+    mech = assur.catalog.slider_crank()
+    massless = tuple(
+        dataclasses.replace(link, mass=None, center=None, inertia=0.0)
+        for link in mech.links
+    )
+    load = assur.model.Load(link="crank", torque=-3.9655172413793105)
+    mech = dataclasses.replace(mech, links=massless, loads=(load,))
+    table = assur.forces(mech, np.arange(0.0, 720.0, 10.0))
+    got = table.summary()
+    for name in ("driver.power", "driver.torque"):
+        assert got[f"{name}.min"] <= got[f"{name}.mean"] <= got[f"{name}.max"], name
+
+
+def test_a_mean_between_its_bounds_is_kept_and_one_past_them_is_clipped():
+    from assur._running import settled_mean
+
+    low, high = np.array([1.0, 1.0, 1.0]), np.array([2.0, 2.0, 2.0])
+    got = settled_mean(np.array([1.5, np.nextafter(2.0, 3.0), 0.5]), low, high, 1e-12)
+    assert list(got) == [1.5, 2.0, 1.0]
 
 
 def test_a_largest_of_exactly_zero_is_found_where_it_is() -> None:
