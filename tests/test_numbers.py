@@ -567,6 +567,26 @@ def test_a_mechanism_drawn_in_millimetres_is_warned_of():
         assur.kinematics(assur.io.parse(scaled(mech, 160.0)), [30.0])
 
 
+def test_a_mechanism_s_own_warning_is_given_when_it_is_compiled():
+    # as docs/conventions.rst says: once per mechanism (its compiled form is kept),
+    # again for a mechanism changed in any value
+    from assur.plan import cached_plan
+
+    mech = assur.load(EXAMPLES / "slider_crank_exercise.toml")
+    cached_plan.cache_clear()
+    big = assur.io.parse(scaled(mech, 1000.0))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assur.forces(big, [30.0])
+        assur.forces(big, [60.0])
+        assur.kinematics(big, [30.0])
+        assur.forces(assur.io.parse(scaled(mech, 1001.0)), [30.0])
+    said = [str(w.message) for w in caught if "millimetres" in str(w.message)]
+    assert len(said) == 2
+    assert "245.4 m across" in said[0]
+    assert "245.6 m across" in said[1]
+
+
 @pytest.mark.parametrize(
     ("tie", "digits"), [(3.3075, "3.308"), (364.0575, "364.058"), (0.15625, "0.1562")]
 )
