@@ -237,41 +237,54 @@ def to_table_units(mech: assur.Mechanism, drive: np.ndarray) -> np.ndarray:
 
 
 def stencil_table(
-    mech: assur.Mechanism, centres: np.ndarray, tau: float
+    mech: assur.Mechanism,
+    centres: np.ndarray,
+    tau: float,
+    jerk: np.ndarray | None = None,
 ) -> assur.Table:
     """Kinematics at ``centres`` (n, d) (SI) and a time step ``tau`` before and after,
     along the drivers' motion: rows (-, 0, +) per centre.
 
     Each driver moves at its ``omega`` and ``epsilon`` from the centre, its jerk zero
     (the file's constants, as the contract has them): ``q + omega t + epsilon t^2 / 2``
-    at the speed ``omega + epsilon t``, which the rows are given.
+    at the speed ``omega + epsilon t``, which the rows are given. With ``jerk`` (d,)
+    (rad/s^3, m/s^3) the drivers follow ``q + omega t + epsilon t^2/2 + jerk t^3/6``
+    instead, every row given its speed, acceleration and jerk.
     """
     rates, accels = driver_rates(mech), driver_accelerations(mech)
     t = np.array([-tau, 0.0, tau])[None, :, None]
-    drive = (centres[:, None, :] + t * rates + 0.5 * t * t * accels).reshape(
-        -1, len(rates)
-    )
-    if not accels.any():  # the speed is the file's at every row
+    cubic = np.zeros(len(rates)) if jerk is None else np.asarray(jerk, dtype=float)
+    drive = (
+        centres[:, None, :] + t * rates + 0.5 * t * t * accels + t**3 / 6.0 * cubic
+    ).reshape(-1, len(rates))
+    if not accels.any() and jerk is None:  # the speed is the file's at every row
         return assur.kinematics(mech, to_table_units(mech, drive))
     shape = (len(centres), 3, len(rates))
-    speed = np.broadcast_to(rates + t * accels, shape).reshape(drive.shape)
-    rate = np.broadcast_to(accels, drive.shape)
-    one = len(rates) == 1
+
+    def rows(value: np.ndarray) -> np.ndarray:
+        out = np.broadcast_to(value, shape).reshape(drive.shape)
+        return out[:, 0] if len(rates) == 1 else out
+
     return assur.kinematics(
         mech,
         to_table_units(mech, drive),
-        omega=speed[:, 0] if one else speed,
-        epsilon=rate[:, 0] if one else rate,
+        omega=rows(rates + t * accels + 0.5 * t * t * cubic),
+        epsilon=rows(accels + t * cubic),
+        jerk=None if jerk is None else rows(cubic),
     )
 
 
 def difference_errors(
-    mech: assur.Mechanism, centres: np.ndarray, h: float = 1e-3
+    mech: assur.Mechanism,
+    centres: np.ndarray,
+    h: float = 1e-3,
+    jerk: np.ndarray | None = None,
 ) -> dict[str, tuple[float, float]]:
     """Compare each derivative column with the central difference of the one below.
 
     ``centres`` are SI driver positions (n, d); the time step moves the fastest driver
-    by ``h`` (rad, or ``h`` times 0.1 m for a prismatic driver). Returns, per quantity
+    by ``h`` (rad, or ``h`` times 0.1 m for a prismatic driver); ``jerk`` (d,), the
+    drivers' own jerk (see :func:`stencil_table`). Returns, per quantity
     and level, the largest error and the tolerance: three times the difference's own
     truncation error ``tau^2/6 |x^(k+2)|`` (the fourth and fifth derivatives estimated
     from the jerk's own differences) plus a rounding allowance.
@@ -279,7 +292,7 @@ def difference_errors(
     rates = driver_rates(mech)
     moves = np.array([h if k == "revolute" else 0.1 * h for k in driver_kinds(mech)])
     tau = float(np.min(moves / np.maximum(np.abs(rates), 1e-300)))
-    table = stencil_table(mech, centres, tau)
+    table = stencil_table(mech, centres, tau, jerk)
     size = mechanism_size(mech)
     speed = float(
         np.max(
@@ -903,12 +916,16 @@ def assert_reference_pose(
 
 
 def assert_differences(
-    mech: assur.Mechanism, centres: np.ndarray, h: float = 1e-3
+    mech: assur.Mechanism,
+    centres: np.ndarray,
+    h: float = 1e-3,
+    jerk: np.ndarray | None = None,
 ) -> None:
     """Velocity, acceleration and jerk columns equal the central differences in time of
-    the columns below them (``centres``: SI driver positions (n, d))."""
+    the columns below them (``centres``: SI driver positions (n, d); ``jerk`` (d,):
+    the drivers' own jerk, SI, zero without it)."""
     errors = difference_errors(
-        mech, np.asarray(centres, dtype=float).reshape(len(centres), -1), h
+        mech, np.asarray(centres, dtype=float).reshape(len(centres), -1), h, jerk
     )
     bad = {k: v for k, v in errors.items() if not v[0] <= v[1]}
     assert not bad, f"derivative != finite difference (error, tolerance): {bad}"
