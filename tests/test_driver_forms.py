@@ -23,10 +23,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import assume, given
+from hypothesis import strategies as st
 
 import assur
 
 from . import oracle
+from .mechanisms import any_case, bounded
+from .test_friction import assert_matches_friction_solve
+from .test_friction import with_friction as rubbing
 
 ROOT = Path(__file__).parent.parent
 MIXED = ROOT / "tests" / "data" / "edge" / "slider_and_crank_one_dyad.toml"
@@ -137,6 +142,45 @@ def test_a_slider_and_a_crank_with_friction_match_the_global_solve():
         power = power + main * omega[:, i]
     speed = float(np.max(np.abs(omega[:, 1])))
     np.testing.assert_allclose(power, 0.0, atol=RTOL * force * size * speed)
+
+
+@bounded(12)
+@given(
+    case=any_case(),
+    coefficients=st.lists(st.floats(0.0, 0.25), min_size=12, max_size=12),
+    data=st.data(),
+)
+def test_random_friction_at_speeds_that_vary_row_by_row(case, coefficients, data):
+    """Random mechanisms of every builder (prismatic driver, two cranks, slots,
+    triads) with friction, each row at its own speeds: some drivers stopped, some
+    turned back. Friction follows each row's relative speeds, as the global solve
+    has it."""
+    mech = case.mechanism
+    assume(any(link.mass for link in mech.links) or mech.loads)
+    friction = dict(zip((j.name for j in mech.joints), coefficients, strict=False))
+    mech = rubbing(mech, friction, 0.01)
+    positions, _ = case.path(6)
+    count = len(mech.drivers)
+    factors = st.sampled_from([-1.8, -0.6, 0.0, 0.4, 1.0, 2.5])
+    scale = np.array(
+        data.draw(st.lists(factors, min_size=6 * count, max_size=6 * count))
+    )
+    omega = scale.reshape(6, count) * [d.omega for d in mech.drivers]
+    epsilon = np.array(
+        data.draw(
+            st.lists(st.floats(-50.0, 50.0), min_size=6 * count, max_size=6 * count)
+        )
+    ).reshape(6, count)
+    epsilon *= [
+        1.0 if mech.joint(d.joint).kind == "revolute" else 0.01 for d in mech.drivers
+    ]
+    if count == 1:
+        omega, epsilon = omega[:, 0], epsilon[:, 0]
+    try:
+        table = assur.forces(mech, positions, omega=omega, epsilon=epsilon)
+    except assur.SelfLockingError:
+        assume(False)
+    assert_matches_friction_solve(mech, table)
 
 
 # ------------------------------------------------------------------------------------
