@@ -867,3 +867,63 @@ def test_a_plan_s_scale_is_written_once_in_its_key(drawing: str) -> None:
             assert any(t.startswith("scale: μ") for t in key), key
     finally:
         plt.close(axes[0].figure)
+
+
+def _key_clear(ax) -> tuple[bool, bool]:
+    """Whether ``ax``'s key covers a drawn line, and whether it is inside the axes."""
+    from assur.plotting._bars import settled_renderer
+    from assur.plotting._key import covers
+
+    renderer = settled_renderer(ax)
+    box = ax.get_legend().get_window_extent(renderer)
+    return covers(ax, renderer), box.x0 < ax.bbox.x1
+
+
+@pytest.mark.parametrize("moved", [True, False])
+def test_a_key_over_a_polygon_s_sides_is_moved_beside_it(monkeypatch, moved) -> None:
+    # the class III example's triad at 30 deg fills its axes to every corner:
+    # loc="best" put the key over two of its sides (moved=False: as before)
+    import matplotlib.pyplot as plt
+
+    from assur.plotting._bars import settle_without
+
+    if not moved:
+        monkeypatch.setattr(
+            polygons,
+            "keys_clear",
+            lambda axes, texts, widen: settle_without(axes[0], texts),
+        )
+    table = table_at(assur.load(EXAMPLES / "class3.toml"), 30.0)
+    fig = polygons.force_polygons(table, 30.0)
+    try:
+        (ax,) = fig.axes
+        assert _key_clear(ax) == ((False, False) if moved else (True, True))
+        assert bool(fig.get_size_inches()[0] > 5.5 + 1.0) is moved  # grown by the key
+    finally:
+        plt.close(fig)
+
+
+@pytest.mark.parametrize("level", [1, 2])
+def test_a_plan_s_key_in_a_free_corner_stays_there(level: int) -> None:
+    import matplotlib.pyplot as plt
+
+    table = table_at(assur.load(EXAMPLES / "class3.toml"), 30.0)
+    draw = plans.acceleration_plan if level == 2 else plans.velocity_plan
+    ax = draw(table)
+    try:
+        assert _key_clear(ax) == (False, True)
+        assert tuple(ax.figure.get_size_inches()) == (7.5, 6.5)
+    finally:
+        plt.close(ax.figure)
+
+
+def test_a_plan_on_the_caller_s_axes_keeps_the_figure_s_size() -> None:
+    import matplotlib.pyplot as plt
+
+    table = table_at(assur.load(EXAMPLES / "class3.toml"), 30.0)
+    fig, ax = plt.subplots(figsize=(3.0, 3.0), layout="constrained")
+    try:
+        plans.acceleration_plan(table, ax=ax)
+        assert tuple(fig.get_size_inches()) == (3.0, 3.0)
+    finally:
+        plt.close(fig)

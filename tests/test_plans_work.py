@@ -49,7 +49,7 @@ def test_the_force_polygons_are_laid_out_once_for_every_group(monkeypatch) -> No
     finally:
         plt.close(fig)
     # as the figure laid out again before each polygon's names put them
-    monkeypatch.setattr(polygons, "settle_without", lambda ax, texts: None)
+    monkeypatch.setattr(polygons, "keys_clear", lambda axes, texts, widen: None)
     fig = polygons.force_polygons(table)
     try:
         assert len(calls) == 5

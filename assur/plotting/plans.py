@@ -29,6 +29,7 @@ from assur.plotting._drawing import (
     _legend,
 )
 from assur.plotting._geometry import _nice
+from assur.plotting._key import keys_clear
 from assur.plotting._mathtext import _symbol
 from assur.plotting._numbers import number, quantity
 from assur.plotting._placing import Name, place_names
@@ -284,26 +285,33 @@ def _plan(table: Table, angle: Any, ax: Any, level: int) -> Any:
     pos = _pos(table, angle)
     found = images(pos, level)
     mu = _scale(list(found.values()))
+    own = ax is None  # a figure made here may grow by its key
     ax = _axes(ax, _title(pos, what))
     IMAGE_NAMES.update(_images_plot(ax, found, mu, "#333333"))
     legend = _chains(ax, pos, level, mu, list(found.values()))
     _legend(ax, legend, f"scale: {symbol} = {quantity(mu, unit, 6)}")
-    _name_images(ax)
+    _name_images(ax, own)
     return ax
 
 
-def _name_images(ax: Any) -> None:
+def _name_images(ax: Any, widen: bool) -> None:
     """Put each image's name by its own image, off the arrows, dots and other names.
 
     Images close together (a link nearly still has its points' images by the
     pole) had their names pushed apart only until their boxes touched, over the
-    arrows and the dots beside them.
+    arrows and the dots beside them. A key over the arrows is moved beside the
+    axes first, the figure grown by it with ``widen`` (see
+    :func:`assur.plotting._key.keys_clear`).
     """
     texts = [t for t in ax.texts if t in IMAGE_NAMES and t.get_text()]
     names = [Name(t, np.asarray(t.xy, float), np.asarray(t.xy, float)) for t in texts]
     arrows = [np.asarray(p.points, float) for p in ax.patches if hasattr(p, "points")]
     dots = [line for line in ax.lines if line.get_marker() == "o"]
-    place_names(ax, names, np.array(arrows) if arrows else None, dots)
+    # a key over the arrows goes beside the plan (in the layout the names are put in)
+    renderer = keys_clear([ax], [n.text for n in names], widen)
+    place_names(
+        ax, names, np.array(arrows) if arrows else None, dots, renderer=renderer
+    )
 
 
 def instant_centres(table: Table, angle: Any = None, ax: Axes | None = None) -> Axes:

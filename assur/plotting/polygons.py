@@ -19,8 +19,8 @@ from assur.errors import ModelError
 from assur.explain._loads_text import link_loads
 from assur.explain._position import Position
 from assur.explain._tex import name as tex_name
-from assur.plotting._bars import settle_without
 from assur.plotting._drawing import _arrow_apart, _legend
+from assur.plotting._key import keys_clear
 from assur.plotting._mathtext import _symbol, reaction_symbol
 from assur.plotting._numbers import quantity
 from assur.plotting._placing import Name, place_names
@@ -82,7 +82,9 @@ def force_polygons(table: Table, angle: Any = None) -> Figure:
     # outside the polygon, clear of the other sides and names; one layout for
     # every polygon (laying the whole figure out again for each polygon made the
     # time grow as the square of the number of groups)
-    renderer = settle_without(axes.flat[0], [n.text for own in names for n in own])
+    # a key over the sides goes beside its polygon
+    texts = [n.text for own in names for n in own]
+    renderer = keys_clear(list(axes.flat), texts, widen=True)
     for ax, own in zip(axes.flat, names, strict=True):
         place_names(ax, own, renderer=renderer)
     return fig
