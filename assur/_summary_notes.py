@@ -59,7 +59,12 @@ def notes(summary: Summary) -> list[str]:
     covered = summary.covered()
     if covered is not None and summary.count > 1:
         turns = covered / 360.0
-        if turns < 1.0 - WHOLE or abs(turns - round(turns)) > WHOLE * turns:
+        # a span beyond the largest float (positions near it) is no whole turns
+        if (
+            not math.isfinite(turns)
+            or turns < 1.0 - WHOLE
+            or abs(turns - round(turns)) > WHOLE * turns
+        ):
             first, last = summary.span() or (0.0, 0.0)
             out.append(
                 f"positions from {first:g} to {last:g} deg, not whole turns: means, "

@@ -382,7 +382,9 @@ class Summary:
         if not self._crank or self.count < 2 or len(self._ends) != 2:
             return False
         first, last = self._ends
-        turns = (last - first) / 360.0
+        # in halves: positions near the largest float (-1.7e308:1.7e308:1e308) are
+        # a sound range whose span overflows, and round() of an inf raises
+        turns = (last / 2 - first / 2) / 180.0
         return last != first and abs(turns - round(turns)) <= 1e-12 * max(
             1.0, abs(turns)
         )
