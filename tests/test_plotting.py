@@ -569,6 +569,19 @@ def test_plot_torque(slider_crank: assur.Table) -> None:
     assert ax.get_ylabel() == "balancing load [N·m]"
 
 
+def test_a_sweep_of_many_turns_keeps_few_ticks() -> None:
+    # ticked every 90 deg, 100 turns drew 401 labels on top of one another (and
+    # 1000 turns took minutes in assur diagrams); a span of 1e20 deg failed
+    mech = _load("four_bar")
+    for angles, most in ((np.arange(0.0, 36001.0, 30.0), 12), ([0.0, 1e19, 1e20], 12)):
+        ax = plotting.plot_torque(assur.forces(mech, angles))
+        ax.figure.canvas.draw()
+        assert 2 <= len(ax.get_xticks()) <= most
+    ax = plotting.plot_torque(assur.forces(mech, np.arange(0.0, 361.0, 10.0)))
+    # one turn keeps its eighth turns
+    assert set(np.arange(0.0, 361.0, 45.0)) <= set(ax.get_xticks())
+
+
 def test_plot_torque_two_drivers(five_bar: assur.Table) -> None:
     ax = plotting.plot_torque(five_bar)
     np.testing.assert_array_equal(ax.lines[3].get_ydata(), five_bar["E.torque"])

@@ -72,10 +72,30 @@ def _frame_axes(
     ax.set_ylabel(f"y [{_unit(ctx.table, f'{point}.y')}]")
 
 
-def _driver_axis(ax: Any, table: Table) -> np.ndarray:
-    """Label the horizontal axis with the driver position; return its values."""
+TURN_TICKS_SPAN = 3600.0
+"""Widest span of crank angles (deg) ticked every 45 or 90 deg: ten turns, 41 ticks.
+
+Wider, matplotlib's own ticks: 90 deg over 1000 turns drew 4001 ticks and labels
+on top of one another (minutes for ``assur diagrams``), and over a span of 1e20
+deg failed ("Maximum allowed size exceeded")."""
+
+
+def turn_ticks(ax: Any, x: np.ndarray) -> None:
+    """Tick an axis of crank angles ``x`` (deg) at quarter or eighth turns.
+
+    Only over half a turn to :data:`TURN_TICKS_SPAN`; other spans keep
+    matplotlib's ticks.
+    """
     from matplotlib.ticker import MultipleLocator
 
+    # ptp in halves: a span of positions near the largest float overflows
+    span = 2.0 * float(np.max(x) / 2 - np.min(x) / 2) if len(x) else 0.0
+    if 180.0 <= span <= TURN_TICKS_SPAN:
+        ax.xaxis.set_major_locator(MultipleLocator(90.0 if span > 400 else 45.0))
+
+
+def _driver_axis(ax: Any, table: Table) -> np.ndarray:
+    """Label the horizontal axis with the driver position; return its values."""
     x = np.asarray(table["angle"])
     unit = _unit(table, "angle")
     drivers = table.mechanism.drivers
@@ -83,10 +103,7 @@ def _driver_axis(ax: Any, table: Table) -> np.ndarray:
     whose = f" {drivers[0].joint}" if len(drivers) > 1 else ""
     if _revolute(table):
         ax.set_xlabel(f"driver{whose} angle φ [{unit}]")
-        if np.ptp(x) >= 180.0:
-            ax.xaxis.set_major_locator(
-                MultipleLocator(90.0 if np.ptp(x) > 400 else 45.0)
-            )
+        turn_ticks(ax, x)
     else:
         ax.set_xlabel(f"driver{whose} position s [{unit}]")
     ax.grid(True, lw=0.5, alpha=0.5)

@@ -15,7 +15,7 @@ import numpy as np
 
 from assur.columns import pretty_unit
 from assur.errors import UsageError
-from assur.plotting._axes import _new_axes, labelled_legend
+from assur.plotting._axes import _new_axes, labelled_legend, turn_ticks
 from assur.plotting._numbers import number, quantity
 from assur.plotting._style import BALANCING_COLOR, PATH_COLORS, titled
 
@@ -63,12 +63,9 @@ def _expect(result: Any, kind: str, what: str) -> None:
 
 def _angle_axis(ax: Any, result: Dynamics) -> Any:
     """Label the horizontal axis with the crank angle; return the angles (deg)."""
-    from matplotlib.ticker import MultipleLocator
-
     x = np.asarray(result["angle"])
     ax.set_xlabel("crank angle φ [deg]")
-    if np.ptp(x) >= 180.0:
-        ax.xaxis.set_major_locator(MultipleLocator(90.0 if np.ptp(x) > 400 else 45.0))
+    turn_ticks(ax, x)
     ax.grid(True, lw=0.5, alpha=0.5)
     return x
 
