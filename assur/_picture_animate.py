@@ -99,8 +99,11 @@ def _frames(sweep: np.ndarray, count: int, crank: bool) -> np.ndarray:
     array([  0.,  90., 180., 270.])
     """
     n = len(sweep)
-    if crank and n >= 2:
-        span = float(sweep[-1] - sweep[0])
+    # in halves: positions near the largest float span more than a float holds
+    # (numpy's overflow warning, with its source line); such a sweep is no turn
+    half = float(sweep[-1]) / 2 - float(sweep[0]) / 2 if crank and n >= 2 else 0.0
+    if crank and n >= 2 and abs(half) <= 360.0:
+        span = 2.0 * half
         step = span / (n - 1)
         even = np.allclose(np.diff(sweep), step, rtol=0.0, atol=TURN_TOLERANCE)
         for closing, covered in ((True, span), (False, span + step)):

@@ -93,7 +93,7 @@ def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:
     loaded = not compile_loads(plan_of(mech)).empty
     return mech, _table(
         mech,
-        _drawn(positions(mech, args.angles), "diagrams draw every position"),
+        _on_axis(_drawn(positions(mech, args.angles), "diagrams draw every position")),
         loaded if forces is None else forces,
         getattr(args, "skip_unassembled", False),
     )
@@ -101,6 +101,28 @@ def _sweep(args: argparse.Namespace, forces: bool | None) -> tuple[Any, Any]:
 
 DRAWN_MOST = 100_000
 """Most positions of a sweep that diagrams or a report hold whole (every one)."""
+
+
+DRAWN_REACH = 1e300
+"""Largest driver position (deg, or m for a prismatic driver) a diagram's axis spans.
+
+Near the largest float (``--angles=-1.7e308:1.7e308:1e308``, a range a table takes)
+matplotlib's axis overflowed: numpy's warnings with their source lines, then the
+diagrams' folder named as the fault ("cannot write the file (ValueError: ...)")."""
+
+
+def _on_axis(sweep: Any) -> Any:
+    """Return ``sweep``; a UsageError for a position beyond :data:`DRAWN_REACH`."""
+    import numpy as np
+
+    farthest = float(np.max(np.abs(sweep))) if np.size(sweep) else 0.0
+    if farthest > DRAWN_REACH:
+        msg = (
+            f"--angles: a position of magnitude {farthest:g}; expected positions "
+            f"within +-{DRAWN_REACH:g}, which the diagrams' axes can span"
+        )
+        raise UsageError(msg)
+    return sweep
 
 
 def _drawn(sweep: Any, why: str) -> Any:

@@ -9,7 +9,10 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 import assur
+from assur._picture_animate import _frames
 
 from .conftest import EXAMPLES
 from .conftest import run_cli as run
@@ -28,3 +31,26 @@ def test_a_summary_over_positions_near_the_largest_float(capsys):
     assert out.startswith("Summary over 4 positions")
     table = assur.forces(assur.load(FOUR_BAR), [-1.7e308, -0.7e308, 0.3e308, 1.3e308])
     assert all(map(math.isfinite, table.summary().values()))
+
+
+def test_diagrams_of_positions_near_the_largest_float_are_refused_first(
+    capsys, tmp_path
+):
+    # matplotlib's axis overflowed: numpy's warnings with their source lines, then
+    # the folder named as the fault, "cannot write the file (ValueError: ...)"
+    out = tmp_path / "d"
+    argv = ["diagrams", FOUR_BAR, "-o", out, f"--angles={NEAR_THE_LARGEST}"]
+    status, _, err = run(capsys, *argv)
+    assert status == 2
+    assert err == (
+        f"assur: error: {FOUR_BAR}: --angles: a position of magnitude 1.7e+308; "
+        "expected positions within +-1e+300, which the diagrams' axes can span\n"
+    )
+    assert not out.exists()
+
+
+def test_the_frames_of_positions_near_the_largest_float(recwarn):
+    # the span of the sweep overflowed: numpy's RuntimeWarning on standard error
+    sweep = np.array([-1.7e308, -0.7e308, 0.3e308, 1.3e308])
+    np.testing.assert_array_equal(_frames(sweep, 2, True), sweep[[0, 3]])
+    assert not recwarn.list
