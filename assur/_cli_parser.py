@@ -108,6 +108,13 @@ class _Parser(argparse.ArgumentParser):
         if name in ("-o", "--output") and "--csv" in known:
             tables = [f"{o} PATH" for o in ("--csv", "--parquet") if o in known]
             return f"; a table is written to a file with {' or '.join(tables)}"
+        if option == "--" or name in known:
+            # after "--" every argument is read as a file: "did you mean '--json'?"
+            # was said of --json itself
+            return "; options go before '--', after which every argument is a file"
+        if parser is not self and name in self._option_string_actions:
+            # "did you mean '--json'?" was said of --version after the command
+            return f"; {name} is an option of assur itself, given before the command"
         if not option.startswith("--"):
             return ""
         return suggest(name, known, listing=False)

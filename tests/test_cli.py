@@ -274,6 +274,23 @@ def test_driver_option_off_the_frame(capsys):
             "forces: unrecognized arguments: --csvv=t.csv; did you mean '--csv'? (see "
             "'assur forces --help')",
         ),
+        # after "--" an option is a file: "did you mean '--json'?" of --json itself
+        (
+            ["forces", "--", "x.toml", "--json"],
+            "forces: unrecognized arguments: --json; options go before '--', after "
+            "which every argument is a file (see 'assur forces --help')",
+        ),
+        (
+            ["forces", "x.toml", "--json", "--", "--csv"],
+            "forces: unrecognized arguments: -- --csv; options go before '--', after "
+            "which every argument is a file (see 'assur forces --help')",
+        ),
+        # assur's own option after the command: "did you mean '--json'?"
+        (
+            ["forces", "x.toml", "--version"],
+            "forces: unrecognized arguments: --version; --version is an option of "
+            "assur itself, given before the command (see 'assur forces --help')",
+        ),
         # after assur's own options too: argparse's "invalid choice" had no hint
         (
             ["-q", "forcse", "x.toml"],
