@@ -270,8 +270,9 @@ def _exact(model: Reduced, omega: float, delta: float) -> float:
     low = 0.0 if float(np.min(model.inertia)) > 0 else 1e-9 * guess
     at_low = excess(low)
     if at_low <= 0:
+        # the value as given: "delta: 2" was said of 1.9999999, which is below 2
         msg = (
-            f"delta: {delta:g}; the mechanism alone runs with delta = "
+            f"delta: {float(delta)!r}; the mechanism alone runs with delta = "
             f"{at_low + delta:.6g}, so it needs no flywheel; expected a smaller delta"
         )
         raise UsageError(msg)

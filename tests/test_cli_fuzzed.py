@@ -54,3 +54,12 @@ def test_the_frames_of_positions_near_the_largest_float(recwarn):
     sweep = np.array([-1.7e308, -0.7e308, 0.3e308, 1.3e308])
     np.testing.assert_array_equal(_frames(sweep, 2, True), sweep[[0, 3]])
     assert not recwarn.list
+
+
+def test_a_delta_just_below_2_is_echoed_as_given(capsys):
+    # "delta: 2; ... expected a smaller delta": 2 itself is out of --delta's range
+    argv = ["dynamics", FOUR_BAR, "--delta", "1.9999999", "--angles", "0"]
+    status, out, err = run(capsys, *argv)
+    assert (status, out) == (2, "")
+    assert err.startswith(f"assur: error: {FOUR_BAR}: delta: 1.9999999; ")
+    assert err.count("\n") == 1
