@@ -12,6 +12,7 @@ commands' options are :mod:`assur._cli_commands`'s, the signals and streams
 from __future__ import annotations
 
 import argparse
+import errno
 import json
 import sys
 import warnings
@@ -182,6 +183,10 @@ def _run(handler: Callable[[argparse.Namespace], int], args: argparse.Namespace)
             reason = err.strerror or str(err)
             if err.filename:
                 failure = f"{path_text(err.filename)}: {reason}"
+                if err.errno == errno.ENAMETOOLONG:
+                    # from a check of an output's name (is it a folder?), before
+                    # any write: what would make it usable is said too
+                    failure += "; expected a shorter name"
             else:
                 failure = f"standard output: cannot write ({reason})"
         except MemoryError:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 
 import assur
 from assur._picture_animate import _frames
@@ -62,4 +63,20 @@ def test_a_delta_just_below_2_is_echoed_as_given(capsys):
     status, out, err = run(capsys, *argv)
     assert (status, out) == (2, "")
     assert err.startswith(f"assur: error: {FOUR_BAR}: delta: 1.9999999; ")
+    assert err.count("\n") == 1
+
+
+@pytest.mark.parametrize(
+    ("command", "option", "suffix"),
+    [("forces", "--csv", ".csv"), ("plot", "-o", ".png"), ("diagrams", "-o", "")],
+)
+def test_an_output_name_too_long_says_what_is_expected(
+    capsys, tmp_path, command, option, suffix
+):
+    # "NAME: File name too long", with no word of what would do
+    name = tmp_path / ("a" * 300 + suffix)
+    status, out, err = run(capsys, command, FOUR_BAR, option, name, "-q")
+    assert (status, out) == (2, "")
+    assert err.startswith(f"assur: error: {name}: ")  # the system's words next
+    assert err.endswith("; expected a shorter name\n")
     assert err.count("\n") == 1
