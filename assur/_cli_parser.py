@@ -44,6 +44,11 @@ class _Parser(argparse.ArgumentParser):
         (``--json``) and the same value again ask for the same result and pass; an
         option meant to repeat (an ``append`` action) is not a store and passes too.
         """
+        if arg_strings == ["--"] and action.option_strings and action.nargs is None:
+            # argparse drops a "--" it is given as the value (--flywheel=--) and
+            # stores an empty list: a traceback later, or --csv=-- printed the table
+            msg = "expected a value, got '--' (the end of the options)"
+            raise argparse.ArgumentError(action, msg)
         values = super()._get_values(action, arg_strings)
         if type(action) is not argparse._StoreAction or not action.option_strings:
             return values

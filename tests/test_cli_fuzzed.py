@@ -80,3 +80,26 @@ def test_an_output_name_too_long_says_what_is_expected(
     assert err.startswith(f"assur: error: {name}: ")  # the system's words next
     assert err.endswith("; expected a shorter name\n")
     assert err.count("\n") == 1
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["dynamics", "--flywheel=--"],
+        ["dynamics", "--delta=--"],
+        ["plot", "-o", "p.png", "--dpi=--"],
+        ["explain", "--angle=--"],
+        ["kinematics", "--angles", "--"],
+        # no traceback here: the table was printed and no file written
+        ["kinematics", "--csv=--"],
+    ],
+)
+def test_a_value_of_two_dashes_is_one_usage_error(capsys, argv):
+    # argparse dropped the "--" and stored an empty list: a traceback (TypeError)
+    command, *options = argv
+    status, out, err = run(capsys, command, FOUR_BAR, *options)
+    assert (status, out) == (2, "")
+    option = options[-1].partition("=")[0] if "=" in options[-1] else options[-2]
+    assert err.startswith(f"assur: error: {command}: argument {option}")
+    assert ": expected a value, got '--' (the end of the options) (see " in err
+    assert err.count("\n") == 1
