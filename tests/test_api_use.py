@@ -135,6 +135,8 @@ def test_a_table_made_with_columns_says_what_a_picture_lacks():
     [
         ({"angle": float("nan")}, "angle: expected a finite driver position"),
         ({"angle": "abc"}, "angle: expected a driver position"),
+        # too large for a float: a raw OverflowError
+        ({"angle": 10**400}, "angle: expected a driver position"),
         ({"angle": 30.0, "forces": True, "scale": -1.0}, "scale: -1.0; expected"),
         ({"angle": 30.0, "forces": True, "scale": 0.0}, "scale: 0.0; expected"),
     ],

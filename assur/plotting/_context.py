@@ -140,7 +140,8 @@ def _row(table: Table, angle: Any) -> int:
     plan = table.plan
     try:
         want = np.atleast_1d(np.asarray(angle, dtype=float))
-    except (TypeError, ValueError) as err:
+    except (TypeError, ValueError, OverflowError) as err:
+        # OverflowError: an integer too large for a float (10**400)
         msg = f"angle: expected a driver position (deg, or m), got {describe(angle)}"
         raise UsageError(msg) from err
     drive = table.given
