@@ -22,7 +22,7 @@ from assur.plotting._axes import (
     _new_axes,
     labelled_legend,
 )
-from assur.plotting._context import _Context, _context, _row, _unit, whole
+from assur.plotting._context import _Context, _context, _row, _unit, named, whole
 from assur.plotting._style import (
     PATH_COLORS,
     PATH_MARK_SPACING,
@@ -91,10 +91,11 @@ def plot_motion(
     >>> plt.close(ax.figure)
     """
     whole(table, "plot_motion")
-    if names is None:
-        names = _moving(table, quantity)
-    elif isinstance(names, str):
-        names = [names]
+    names = (
+        _moving(table, quantity)
+        if names is None
+        else named(names, "names", "link or point")
+    )
     ax = _new_axes(ax, (8.0, 4.5))
     # lines break where positions were left out, x and y alike
     x = _broken(table, _driver_axis(ax, table))
@@ -236,7 +237,10 @@ def plot_paths(
         ax, ctx, ctx.pose(row), set(), set(range(len(ctx.plan.bodies)))
     )
     extra = {p.name for p in table.mechanism.points}
-    names = list(points) if points is not None else _moving_points(table)
+    if points is None:
+        names = _moving_points(table)
+    else:
+        names = named(points, "points", "point")
     rows = gaps(table)
     for k, name in enumerate(names):
         if f"{name}.x" not in table:

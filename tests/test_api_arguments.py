@@ -1,0 +1,66 @@
+"""Library arguments of the wrong type or shape: one assur error, never Python's.
+
+Each case was found by calling the public functions with odd arguments (a number
+where names are expected, an empty list): a raw TypeError or ZeroDivisionError
+came out of the loop over them.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import assur
+
+
+@pytest.fixture(scope="module")
+def table() -> assur.Table:
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    return assur.forces(assur.catalog.slider_crank(), np.arange(0.0, 360.0, 30.0))
+
+
+@pytest.mark.parametrize(
+    ("draw", "message"),
+    [
+        (
+            lambda t: assur.plotting.plot_motion(t, 5),
+            "names: expected a list of link or point names, got int 5",
+        ),
+        (
+            lambda t: assur.plotting.plot_motion(t, [b"rod"]),
+            r"names: expected link or point names \(str\), got bytes b'rod'",
+        ),
+        (
+            lambda t: assur.plotting.plot_paths(t, 5),
+            "points: expected a list of point names, got int 5",
+        ),
+        (
+            lambda t: assur.plotting.plot_hodographs(t, 5),
+            "joints: expected a list of joint names, got int 5",
+        ),
+        (
+            lambda t: assur.plotting.plot_hodographs(t, []),
+            "joints: no names; expected at least one joint",
+        ),
+    ],
+)
+def test_names_a_picture_cannot_use_are_one_usage_error(table, draw, message):
+    import matplotlib.pyplot as plt
+
+    try:
+        with pytest.raises(assur.UsageError, match=message):
+            draw(table)
+    finally:
+        plt.close("all")
+
+
+def test_one_joint_name_is_one_joint_not_its_letters(table):
+    import matplotlib.pyplot as plt
+
+    fig = assur.plotting.plot_hodographs(table, "guide")
+    try:
+        drawn = [ax.get_title().split(":")[0] for ax in fig.axes if ax.axison]
+        assert drawn == ["guide"]
+    finally:
+        plt.close(fig)
