@@ -10,16 +10,16 @@ passes.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 from assur._diagnosis import _miscount, count_text, no_driver
 from assur._group import Group, _describe
 from assur._group_search import _attach
-from assur._text import counted, describe, noun_for, roman, suggest
+from assur._text import counted, describe, noun_for, python_value, roman, suggest
 from assur._topology import Pair, Topology, _index, _public, topology
-from assur.errors import DecompositionError, ModelError
+from assur.errors import DecompositionError, ModelError, UsageError
 from assur.model import GROUND, Driver, Mechanism, mechanism_of
 
 __all__ = [
@@ -228,6 +228,26 @@ class DriverChoiceError(DecompositionError):
         return f"{name}: {self.reason}{note}"
 
 
+def _chosen(driver: Any) -> list[str] | None:
+    """Return the joints ``driver=`` names; refuse what names none (5, b"A")."""
+    if driver is None:
+        return None
+    if isinstance(driver, str):
+        return [driver]
+    if not isinstance(driver, Iterable) or isinstance(driver, bytes | bytearray):
+        # the loop over it raised TypeError, or bytes were read as numbers
+        msg = (
+            f"driver: expected joint names (a list of str), got {python_value(driver)}"
+        )
+        raise UsageError(msg)
+    chosen = list(driver)
+    for name in chosen:
+        if not isinstance(name, str):
+            msg = f"driver: expected joint names (str), got {python_value(name)}"
+            raise UsageError(msg)
+    return chosen
+
+
 def structure(
     mechanism: Mechanism, driver: str | Sequence[str] | None = None
 ) -> Structure:
@@ -255,6 +275,8 @@ def structure(
         When the mobility differs from the number of drivers, links are left over,
         or the file has no driver and its links cannot move (a rigid structure,
         which is no mechanism).
+    UsageError
+        When ``driver`` is no joint name nor a list of them (a number, bytes).
 
     Examples
     --------
@@ -264,7 +286,7 @@ def structure(
     'I(ground, crank) -> II(coupler, rocker)'
     """
     mech = mechanism_of(mechanism)
-    chosen = [driver] if isinstance(driver, str) else driver
+    chosen = _chosen(driver)
     if chosen is not None:
         joints = {j.name for j in mech.joints}
         for name in chosen:

@@ -64,3 +64,18 @@ def test_one_joint_name_is_one_joint_not_its_letters(table):
         assert drawn == ["guide"]
     finally:
         plt.close(fig)
+
+
+@pytest.mark.parametrize(
+    ("driver", "message"),
+    [
+        # the loop over it raised a TypeError
+        (5, "driver: expected joint names \\(a list of str\\), got int 5"),
+        # bytes were read as numbers: "unknown joint 65"
+        (b"A", "driver: expected joint names \\(a list of str\\), got bytes b'A'"),
+        ([b"A"], "driver: expected joint names \\(str\\), got bytes b'A'"),
+    ],
+)
+def test_a_driver_that_names_no_joint_is_a_usage_error(driver, message):
+    with pytest.raises(assur.UsageError, match=message):
+        assur.structure(assur.catalog.four_bar(), driver)
