@@ -65,14 +65,16 @@ def four_bar(
     b = (crank * math.cos(a), crank * math.sin(a))
     dx, dy = frame - b[0], -b[1]
     dist = math.hypot(dx, dy)
-    if not abs(coupler - rocker) < dist < coupler + rocker:
+    along = (coupler**2 - rocker**2 + dist**2) / (2 * dist) if dist > 0 else 0.0
+    # h^2 is checked too: near one line, round-off passes the strict test and
+    # leaves h^2 just below 0 (frame=1e-20: a math domain error)
+    if not abs(coupler - rocker) < dist < coupler + rocker or coupler**2 <= along**2:
         msg = (
             f"four_bar: the coupler ({coupler:g} m) and the rocker ({rocker:g} m) "
             f"cannot join the crank's pin to the pivot D {dist:g} m away at "
             f"{angle:g} deg; expected the two to reach it, and not in one line"
         )
         raise ModelError(msg)
-    along = (coupler**2 - rocker**2 + dist**2) / (2 * dist)
     h = math.sqrt(coupler**2 - along**2)
     c = (b[0] + (along * dx - h * dy) / dist, b[1] + (along * dy + h * dx) / dist)
 

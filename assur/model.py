@@ -289,9 +289,13 @@ _PARTS = {
 
 def _parts(entry: str, value: Any, kind: type) -> tuple[Any, ...]:
     """Return a mechanism's collection ``value`` as a tuple of ``kind``."""
+    expected = f"expected a sequence of {kind.__name__}, got {describe(value)}"
     if isinstance(value, str | bytes | dict) or not isinstance(value, Iterable):
-        _fail(entry, f"expected a sequence of {kind.__name__}, got {describe(value)}")
-    items = tuple(value)
+        _fail(entry, expected)
+    try:
+        items = tuple(value)
+    except TypeError:  # Iterable, yet no sequence: a 0-d array
+        _fail(entry, expected)
     for index, item in enumerate(items):
         if not isinstance(item, kind):
             _fail(

@@ -79,3 +79,17 @@ def test_one_joint_name_is_one_joint_not_its_letters(table):
 def test_a_driver_that_names_no_joint_is_a_usage_error(driver, message):
     with pytest.raises(assur.UsageError, match=message):
         assur.structure(assur.catalog.four_bar(), driver)
+
+
+def test_a_zero_dimensional_array_is_no_sequence_of_parts():
+    # an array is Iterable, but iterating a 0-d one raised TypeError
+    mech = assur.catalog.four_bar()
+    with pytest.raises(assur.ModelError, match="links: expected a sequence of Link"):
+        assur.Mechanism(np.array(1.0), mech.joints, mech.drivers)
+
+
+def test_a_four_bar_in_one_line_by_round_off_is_a_model_error():
+    # coupler - rocker = crank: the pivot D at 1e-20 m passed the strict test by
+    # round-off, and the square root of a negative h^2 raised math's ValueError
+    with pytest.raises(assur.ModelError, match="expected the two to reach it"):
+        assur.catalog.four_bar(frame=1e-20)
