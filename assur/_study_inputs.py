@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from assur._drive import _real
 from assur._text import counted, describe, spoken
 from assur._vec import Array, integer
 from assur.errors import UsageError
@@ -235,14 +236,9 @@ def _fitting(factory: Factory, parameters: dict[str, Array], angles: Array) -> N
 
 def _angles(angles: Any) -> Array:
     """Check the driver positions; return them as a read-only float array."""
-    try:
-        arr = np.array(angles, dtype=float)
-    except (TypeError, ValueError) as err:
-        msg = (
-            "angles: expected real numbers (driver positions), got "
-            f"{type(angles).__name__}"
-        )
-        raise UsageError(msg) from err
+    # the check of assur.kinematics: a float conversion took "30", True and b"3"
+    # as numbers, and let an integer too large for a float raise OverflowError
+    arr = np.array(_real(angles, "angles", "driver positions"), dtype=float)
     if arr.ndim not in (1, 2) or not arr.shape[0]:
         msg = (
             "angles: expected driver positions of shape (n,) or (n, drivers), got "

@@ -93,3 +93,21 @@ def test_a_four_bar_in_one_line_by_round_off_is_a_model_error():
     # round-off, and the square root of a negative h^2 raised math's ValueError
     with pytest.raises(assur.ModelError, match="expected the two to reach it"):
         assur.catalog.four_bar(frame=1e-20)
+
+
+@pytest.mark.parametrize(
+    ("angles", "message"),
+    [
+        # numpy's OverflowError escaped
+        ([10**400], "angles: expected real numbers \\(driver positions\\), got object"),
+        # taken as numbers by a float conversion, where assur.forces refuses them
+        (["30"], "angles: expected real numbers \\(driver positions\\), got text"),
+        ([True, False], "angles: expected real numbers .* got True or False"),
+    ],
+)
+def test_a_study_checks_its_angles_as_an_analysis_does(angles, message):
+    def factory(crank: float) -> assur.Mechanism:
+        return assur.catalog.slider_crank(crank=crank)
+
+    with pytest.raises(assur.UsageError, match=message):
+        assur.sweep(factory, {"crank": [0.05]}, angles)
