@@ -13,14 +13,37 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._text import describe, python_value
 from assur._vec import Array
 from assur.columns import Column
+from assur.errors import UnknownNameError
 from assur.model import Mechanism
 
 if TYPE_CHECKING:  # pandas is an optional extra, imported when asked for
     import pandas as pd
 
-__all__ = ["Columns"]
+__all__ = ["Columns", "column_name"]
+
+
+def column_name(name: object) -> str:
+    """Return ``name`` as a table looks it up; refuse what is no str.
+
+    Raises
+    ------
+    UnknownNameError
+        For a value that is no column's name: a number, a slice, a list (which
+        as a dict key raised TypeError: unhashable), bytes (told as bytes, not as
+        the list of numbers they also are).
+    """
+    if isinstance(name, str):
+        return name
+    shown = (
+        python_value(name) if isinstance(name, bytes | bytearray) else describe(name)
+    )
+    msg = (
+        f"no column {shown}; expected a column's name, a str (table.columns lists them)"
+    )
+    raise UnknownNameError(msg)
 
 
 class Columns(metaclass=ABCMeta):

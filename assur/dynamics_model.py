@@ -20,6 +20,7 @@ from assur._change_limits import across_change_points
 from assur._checks import LARGEST
 from assur._drive import positions
 from assur._dynamic_checks import check_dynamic
+from assur._exports import column_name
 from assur._text import describe, suggest
 from assur._vec import Array, real
 from assur.analysis import default_positions
@@ -121,6 +122,7 @@ class Dynamics(Columns):
 
     def column(self, name: str) -> Column:
         """Return the description of column ``name`` (owner, quantity, unit)."""
+        name = column_name(name)
         for c in self.schema:
             if c.name == name:
                 return c
@@ -128,7 +130,7 @@ class Dynamics(Columns):
         raise UnknownNameError(msg)
 
     def __getitem__(self, name: str) -> Array:
-        if name not in self.values:
+        if name not in self:
             self.column(name)  # raises with a hint
         return self.values[name]
 
@@ -136,7 +138,7 @@ class Dynamics(Columns):
         return int(self.values["angle"].shape[0])
 
     def __contains__(self, name: object) -> bool:
-        return name in self.values
+        return isinstance(name, str) and name in self.values
 
     def summary(self) -> dict[str, float]:
         """Return the figures of the steady state by name (SI units, angles in deg)."""

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._evaluate import CHUNKED, SHORT, evaluate, grouped, materialize
-from assur._exports import Columns
+from assur._exports import Columns, column_name
 from assur._keep import keep
 from assur._kinematics import KinematicState
 from assur._loads import compile_loads
@@ -218,12 +218,7 @@ class Table(Columns):
             For a name the table has no column of, with the nearest names (a
             KeyError too).
         """
-        if not isinstance(name, str):
-            msg = (
-                f"no column {describe(name)}; expected a column's name, a str "
-                "(table.columns lists them)"
-            )
-            raise UnknownNameError(msg)
+        name = column_name(name)
         try:
             return self._index[name]
         except KeyError:
@@ -292,7 +287,8 @@ class Table(Columns):
         return int(self.given.shape[0])
 
     def __contains__(self, name: object) -> bool:
-        return name in self._index
+        # a list is in no table, where as a dict's key it raised TypeError
+        return isinstance(name, str) and name in self._index
 
     def arrays(self) -> list[Array]:
         """Return every column, in order; those not read yet are computed together.

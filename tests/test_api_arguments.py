@@ -111,3 +111,31 @@ def test_a_study_checks_its_angles_as_an_analysis_does(angles, message):
 
     with pytest.raises(assur.UsageError, match=message):
         assur.sweep(factory, {"crank": [0.05]}, angles)
+
+
+@pytest.fixture(scope="module")
+def tables() -> dict[str, object]:
+    mech = assur.catalog.slider_crank()
+    return {
+        "forces": assur.forces(mech, [0.0, 30.0]),
+        "dynamics": assur.dynamics(mech, np.arange(0.0, 360.0, 10.0)),
+    }
+
+
+@pytest.mark.parametrize("kind", ["forces", "dynamics"])
+@pytest.mark.parametrize(
+    ("key", "shown"),
+    [
+        # the dynamics' table raised TypeError (unhashable) for these
+        (["angle"], r"\['angle'\]"),
+        (slice(0, 2), "slice"),
+        # bytes were told as the list of their numbers, [97, 110, ...]
+        (b"angle", "bytes b'angle'"),
+    ],
+)
+def test_a_key_that_is_no_name_is_an_unknown_name(tables, kind, key, shown):
+    table = tables[kind]
+    message = f"no column .*{shown}.*; expected"
+    with pytest.raises(assur.UnknownNameError, match=message):
+        table[key]
+    assert key not in table
