@@ -7,7 +7,7 @@ the order of the summary's columns, one process's or many partitions'.
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from typing import Any
 
 import numpy as np
@@ -226,6 +226,10 @@ def _wanted(columns: Sequence[str] | None) -> list[str] | None:
             f"columns: expected a sequence of column names, got {describe(columns)}; "
             f"write columns=[{describe(columns)}] for one column"
         )
+        raise UsageError(msg)
+    if not isinstance(columns, Iterable):
+        # list() of it raised TypeError
+        msg = f"columns: expected a sequence of column names, got {describe(columns)}"
         raise UsageError(msg)
     return list(columns)
 

@@ -139,3 +139,14 @@ def test_a_key_that_is_no_name_is_an_unknown_name(tables, kind, key, shown):
     with pytest.raises(assur.UnknownNameError, match=message):
         table[key]
     assert key not in table
+
+
+def test_a_study_s_columns_that_are_no_sequence_are_a_usage_error():
+    def factory(crank: float) -> assur.Mechanism:
+        return assur.catalog.slider_crank(crank=crank)
+
+    study = assur.sweep(factory, {"crank": [0.05]}, [0.0, 90.0])
+    # list() of the number raised TypeError
+    message = "columns: expected a sequence of column names, got 5"
+    with pytest.raises(assur.UsageError, match=message):
+        study.tables(None, 5)
