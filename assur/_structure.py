@@ -10,16 +10,17 @@ passes.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 from assur._diagnosis import _miscount, count_text, no_driver
 from assur._group import Group, _describe
 from assur._group_search import _attach
-from assur._text import counted, describe, noun_for, python_value, roman, suggest
+from assur._listed import listed
+from assur._text import counted, describe, noun_for, roman, suggest
 from assur._topology import Pair, Topology, _index, _public, topology
-from assur.errors import DecompositionError, ModelError, UsageError
+from assur.errors import DecompositionError, ModelError
 from assur.model import GROUND, Driver, Mechanism, mechanism_of
 
 __all__ = [
@@ -230,22 +231,7 @@ class DriverChoiceError(DecompositionError):
 
 def _chosen(driver: Any) -> list[str] | None:
     """Return the joints ``driver=`` names; refuse what names none (5, b"A")."""
-    if driver is None:
-        return None
-    if isinstance(driver, str):
-        return [driver]
-    if not isinstance(driver, Iterable) or isinstance(driver, bytes | bytearray):
-        # the loop over it raised TypeError, or bytes were read as numbers
-        msg = (
-            f"driver: expected joint names (a list of str), got {python_value(driver)}"
-        )
-        raise UsageError(msg)
-    chosen = list(driver)
-    for name in chosen:
-        if not isinstance(name, str):
-            msg = f"driver: expected joint names (str), got {python_value(name)}"
-            raise UsageError(msg)
-    return chosen
+    return None if driver is None else listed(driver, "driver", "joint")
 
 
 def structure(

@@ -70,9 +70,9 @@ def test_one_joint_name_is_one_joint_not_its_letters(table):
     ("driver", "message"),
     [
         # the loop over it raised a TypeError
-        (5, "driver: expected joint names \\(a list of str\\), got int 5"),
+        (5, "driver: expected a list of joint names, got int 5"),
         # bytes were read as numbers: "unknown joint 65"
-        (b"A", "driver: expected joint names \\(a list of str\\), got bytes b'A'"),
+        (b"A", "driver: expected a list of joint names, got bytes b'A'"),
         ([b"A"], "driver: expected joint names \\(str\\), got bytes b'A'"),
     ],
 )

@@ -29,6 +29,8 @@ RANKS = {
     "assur._lazy": 0,
     "assur._lookalike": 0,
     "assur._text": 0,
+    # an argument's list of names, checked
+    "assur._listed": 0,
     "assur._width": 0,
     "assur._position_titles": 0,
     "assur._digits": 0,

@@ -15,7 +15,7 @@ import numpy as np
 
 from assur._position_titles import row_position
 from assur._style import link_colours
-from assur._text import counted, describe, python_value, roman
+from assur._text import counted, describe, roman
 from assur._vec import real
 from assur.columns import pretty_unit, schema
 from assur.errors import UsageError
@@ -280,28 +280,6 @@ def whole(table: Any, what: str) -> None:
         left = " (every position was left out)" if len(table.skipped) else ""
         msg = f"{what}: the table has no rows{left}; expected at least one to draw"
         raise UsageError(msg)
-
-
-def named(names: Any, entry: str, what: str) -> list[str]:
-    """Return the names a picture is asked to draw (one str stands for itself).
-
-    Raises
-    ------
-    UsageError
-        For a value that is no list of str (a number, bytes, a list holding one):
-        a raw TypeError of the loop over it.
-    """
-    if isinstance(names, str):
-        return [names]
-    if not isinstance(names, Iterable) or isinstance(names, bytes | bytearray):
-        msg = f"{entry}: expected a list of {what} names, got {python_value(names)}"
-        raise UsageError(msg)
-    listed = list(names)
-    for name in listed:
-        if not isinstance(name, str):
-            msg = f"{entry}: expected {what} names (str), got {python_value(name)}"
-            raise UsageError(msg)
-    return listed
 
 
 def _revolute(table: Table) -> bool:

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from assur._gaps import broken, gaps
+from assur._listed import listed
 from assur._text import spoken
 from assur.columns import LINK_PARTS, POINT_PARTS
 from assur.errors import UnknownNameError
@@ -22,7 +23,7 @@ from assur.plotting._axes import (
     _new_axes,
     labelled_legend,
 )
-from assur.plotting._context import _Context, _context, _row, _unit, named, whole
+from assur.plotting._context import _Context, _context, _row, _unit, whole
 from assur.plotting._style import (
     PATH_COLORS,
     PATH_MARK_SPACING,
@@ -94,7 +95,7 @@ def plot_motion(
     names = (
         _moving(table, quantity)
         if names is None
-        else named(names, "names", "link or point")
+        else listed(names, "names", "link or point")
     )
     ax = _new_axes(ax, (8.0, 4.5))
     # lines break where positions were left out, x and y alike
@@ -240,7 +241,7 @@ def plot_paths(
     if points is None:
         names = _moving_points(table)
     else:
-        names = named(points, "points", "point")
+        names = listed(points, "points", "point")
     rows = gaps(table)
     for k, name in enumerate(names):
         if f"{name}.x" not in table:

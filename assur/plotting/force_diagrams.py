@@ -12,9 +12,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from assur._listed import listed
 from assur.errors import UnknownNameError, UsageError
 from assur.plotting._axes import _broken, _driver_axis, _new_axes, labelled_legend
-from assur.plotting._context import _context, _need_forces, _unit, named
+from assur.plotting._context import _context, _need_forces, _unit
 from assur.plotting._geometry import _on
 from assur.plotting._numbers import quantity
 from assur.plotting._style import BALANCING_COLOR, literal, titled
@@ -194,7 +195,7 @@ def _joints(pairs: dict[str, Any], joints: Sequence[str] | None) -> list[str]:
     """Return ``joints`` (default: every joint) once checked against ``pairs``."""
     if joints is None:
         return [n for n, p in pairs.items() if not p.virtual]
-    names = named(joints, "joints", "joint")
+    names = listed(joints, "joints", "joint")
     if not names:
         # the grid of no panels divided by zero
         msg = "joints: no names; expected at least one joint, or None (every joint)"
