@@ -7,6 +7,7 @@ a terminal. The bar is tqdm's, imported only when a bar is shown.
 
 from __future__ import annotations
 
+import inspect
 import sys
 import time
 from collections.abc import Callable
@@ -48,6 +49,8 @@ class Progress:
                 )
                 raise UsageError(msg)
             show = bool(show)
+        else:
+            _two_arguments(show)
         self.total = total
         self.done = 0
         self._callback: Callback | None = show if callable(show) else None
@@ -95,6 +98,27 @@ class Progress:
         trace: TracebackType | None,
     ) -> None:
         self.close()
+
+
+def _two_arguments(callback: Callable[..., Any]) -> None:
+    """Refuse a callback that cannot be called as ``callback(done, total)``.
+
+    Else its TypeError came from the first report, deep in a sweep. A callable
+    whose signature cannot be read (some built-ins) is taken as it is.
+    """
+    try:
+        signature = inspect.signature(callback)
+    except (TypeError, ValueError):
+        return
+    try:
+        signature.bind(0, 0)
+    except TypeError as err:
+        name = getattr(callback, "__name__", type(callback).__name__)
+        msg = (
+            f"progress: expected a callable of two arguments (done, total), got "
+            f"{name}{signature} ({err})"
+        )
+        raise UsageError(msg) from None
 
 
 def progress(

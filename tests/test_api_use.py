@@ -578,6 +578,16 @@ def test_a_copied_table_keeps_its_arrays_read_only(copy_of):
             lambda m: assur.startup(m, motor=assur.Motor(50.0), progress=None),
             "progress: expected True",
         ),
+        # the callback's own TypeError came from the first report, inside the sweep
+        (
+            lambda m: assur.forces(m, [0.0], progress=lambda: None),
+            r"progress: expected a callable of two arguments \(done, total\), got "
+            r"<lambda>\(\) \(too many positional arguments\)",
+        ),
+        (
+            lambda m: assur.forces(m, [0.0], progress=lambda done: None),
+            r"got <lambda>\(done\)",
+        ),
     ],
 )
 def test_arguments_out_of_place_are_usage_errors(call, message):
