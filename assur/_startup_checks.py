@@ -85,6 +85,38 @@ def _against_omega(mechanism: Mechanism, motor: Motor) -> None:
     warn(msg, AssurWarning, stacklevel=3)
 
 
+BALANCED = 1e-9
+"""Share of the torques at play within which a constant motor torque balances the
+mean load (round-off of the mean): the start-up is then integrated."""
+
+
+def _gains(model: Reduced, motor: Motor) -> None:
+    """Refuse a constant torque larger than the mean load: its speed grows for good.
+
+    Asked once the crank has made a whole turn (before, it may stall short of its
+    peak load). The reduced model's torque depends on the crank angle alone, and
+    its inertia terms do no work over a turn: each turn the crank gains
+    ``2 pi (torque - model.motor)`` joules, the same every turn, so it makes every
+    next turn and never settles. It ran every turn asked for first (2 000 turns,
+    40 s).
+    """
+    if motor.no_load_speed is not None:
+        return
+    sense = math.copysign(1.0, motor.torque)
+    surplus = sense * (motor.torque - model.motor)
+    if not surplus > BALANCED * max(abs(motor.torque), abs(model.motor)):
+        return
+    msg = (
+        f"startup: a constant torque of {motor.torque:.6g} N m does "
+        f"{2.0 * math.pi * surplus:.6g} J more work a turn than the loads take, "
+        "so the crank's speed grows every turn without end; a constant torque "
+        f"settles only where it balances the mean load, at {model.motor:.6g} N m "
+        "(the steady state's motor torque, as assur dynamics prints it), so give "
+        "the motor a no_load_speed"
+    )
+    raise ModelError(msg)
+
+
 def _starts(model: Reduced, motor: Motor, omega0: float, curves: Curves) -> None:
     """Refuse a start from rest where the motor's torque does not beat the load's."""
     if omega0 != 0:

@@ -24,7 +24,14 @@ import numpy as np
 from assur._dynamic_checks import check_dynamic
 from assur._progress import BAR_DELAY, Callback
 from assur._progress import progress as show_progress
-from assur._startup_checks import _against_omega, _motor, _speed, _starts, _turns
+from assur._startup_checks import (
+    _against_omega,
+    _gains,
+    _motor,
+    _speed,
+    _starts,
+    _turns,
+)
 from assur._startup_curves import Curves
 from assur._startup_settle import extreme, periodic_speed, settle_time
 from assur._startup_steps import stepper
@@ -250,6 +257,10 @@ def _integrate(
         _keep(runs, sol, t)
         if advance is not None:
             advance(1)
+        if k == 1:
+            # a whole turn made, each next one gains as much: a constant torque
+            # above the mean load is told now, not after every turn asked for
+            _gains(model, motor)
         if _periodic(
             runs.crossings,
             lambda: _multiplier(runs.last, runs.span, model, curves.flywheel, motor),

@@ -124,12 +124,32 @@ def test_a_constant_torque_above_the_load_does_not_settle():
     # the torque to give is the steady motion's motor torque, with its sign: it was
     # printed as the load's, the sign turned (a crank turning the other way)
     assert t.motor > 0
-    assert "does not settle in 20 turns" in str(caught.value)
+    # refused before the turns: the crank gains 2 pi (2 M - M) joules every turn
+    gain = 2.0 * math.pi * t.motor
+    assert (
+        f"a constant torque of {2.0 * t.motor:.6g} N m does {gain:.6g} J more work a "
+        "turn than the loads take, so the crank's speed grows every turn without "
+        "end" in str(caught.value)
+    )
     assert (
         "a constant torque settles only where it balances the mean load, at "
         f"{t.motor:.6g} N m (the steady state's motor torque, as assur "
         "dynamics prints it)" in str(caught.value)
     )
+
+
+def test_a_constant_torque_that_gains_every_turn_is_refused_after_one_turn():
+    # it ran its 2 000 turns first: 40 s, to say the speed still changed
+    mech, t = example("whitworth"), steady("whitworth")
+    told: list[int] = []
+    with pytest.raises(assur.ModelError, match="grows every turn without end"):
+        assur.startup(
+            mech,
+            t.flywheel,
+            motor=Motor(1.5 * t.motor),
+            progress=lambda done, total: told.append(done),
+        )
+    assert told == [1]
 
 
 def test_the_shaper_example_starts_up_near_its_speed():
