@@ -7,11 +7,12 @@ the order of the summary's columns, one process's or many partitions'.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
+from assur._listed import listed
 from assur._study_inputs import Factory, _built, _variant
 from assur._text import describe, suggest
 from assur._vec import Array, integer
@@ -227,11 +228,7 @@ def _wanted(columns: Sequence[str] | None) -> list[str] | None:
             f"write columns=[{describe(columns)}] for one column"
         )
         raise UsageError(msg)
-    if not isinstance(columns, Iterable):
-        # list() of it raised TypeError
-        msg = f"columns: expected a sequence of column names, got {describe(columns)}"
-        raise UsageError(msg)
-    return list(columns)
+    return listed(columns, "columns", "column")
 
 
 def _chosen(variants: Sequence[int] | None, count: int) -> list[int]:

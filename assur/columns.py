@@ -14,11 +14,11 @@ reactions of a force analysis.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from assur._text import describe, python_value, suggest
+from assur._listed import listed
+from assur._text import describe, suggest
 from assur.errors import UsageError
 from assur.plan import Plan
 
@@ -301,17 +301,9 @@ def selection(plan: Plan, forces: bool, names: Any = None) -> Selection:
         if found is None:
             found = plan.memo[key] = _selection(full)
         return found  # type: ignore[no-any-return]
-    if isinstance(names, str):
-        names = [names]
-    if not isinstance(names, Iterable) or isinstance(names, bytes | bytearray):
-        msg = f"columns: expected a list of column names, got {python_value(names)}"
-        raise UsageError(msg)
     index = {c.name: c for c in full}
     wanted = {"angle"}
-    for name in names:
-        if not isinstance(name, str):
-            msg = f"columns: expected column names (str), got {python_value(name)}"
-            raise UsageError(msg)
+    for name in listed(names, "columns", "column"):
         if name not in index:
             extra = ""
             if not forces and name in {c.name for c in schema(plan, True)}:

@@ -146,7 +146,9 @@ def test_a_study_s_columns_that_are_no_sequence_are_a_usage_error():
         return assur.catalog.slider_crank(crank=crank)
 
     study = assur.sweep(factory, {"crank": [0.05]}, [0.0, 90.0])
-    # list() of the number raised TypeError
-    message = "columns: expected a sequence of column names, got 5"
+    # list() of the number raised TypeError; the names checked as assur.forces does
+    message = "columns: expected a list of column names, got int 5"
     with pytest.raises(assur.UsageError, match=message):
         study.tables(None, 5)
+    with pytest.raises(assur.UsageError, match=r"column names \(str\), got int 5"):
+        study.tables(None, [5])
